@@ -1,0 +1,110 @@
+/** Facts about the RBC the panel shows to people: names, codes and durations (PROTOCOL.md §2.2, §3). */
+
+export type Platform = "HUNO" | "DINO" | "DOGY" | "PF2";
+
+/** Platform byte of a reply → the robot's mode (PROTOCOL.md §2.2). */
+export function platformName(platform: number): Platform | `unknown (${number})` {
+  switch (platform) {
+    case 1:
+      return "HUNO";
+    case 2:
+      return "DINO";
+    case 3:
+      return "DOGY";
+    case 4:
+      return "PF2";
+    default:
+      return `unknown (${platform})`;
+  }
+}
+
+/** Error codes of 0x11 (PROTOCOL.md §3.2). */
+export const NO_ERROR = 0xff;
+const ERROR_TEXT: Record<number, string> = {
+  [NO_ERROR]: "no error",
+  1: "serial EEPROM write error",
+  2: "checksum error (a download chunk was corrupted)",
+  3: "too many motions, or motion memory full",
+  4: "too many actions, or action memory full",
+  5: "platform mismatch",
+  6: "frame interval error (frames closer than 20 ms)",
+  7: "zero-set error (a zero value was out of range)",
+  8: "stored zero data invalid",
+  9: "wrong servo count",
+  10: "servo position error",
+  11: "a servo did not answer",
+};
+
+export function errorCodeText(code: number): string {
+  return ERROR_TEXT[code] ?? `unknown error code ${code}`;
+}
+
+/** Sound lengths in ms for sounds 1..25 (PROTOCOL.md §3.3); index 0 is sound 1. */
+export const SOUND_LENGTHS_MS: readonly number[] = [
+  2268, 1001, 832, 365, 838, 417, 5671, 5916, 780, 2907, 552, 522, 1525, 2494, 438, 402, 433, 461, 343, 472, 354,
+  461, 458, 442, 371,
+];
+export const SOUND_COUNT = SOUND_LENGTHS_MS.length;
+/** The RBC answers a sound request 200 ms + the sound's length after it (PROTOCOL.md §3). */
+export const SOUND_REPLY_DELAY_MS = 200;
+
+export function soundLengthMs(sound: number): number | undefined {
+  return SOUND_LENGTHS_MS[sound - 1];
+}
+
+export const BASIC_POSTURE_MOTION = 7;
+
+export interface BuiltInMotion {
+  number: number;
+  name: string;
+  /** Simulator duration [decision] (PROTOCOL.md §3.1). */
+  durationMs: number;
+}
+
+/** Built-in motions 1-11 (PROTOCOL.md §3.1). */
+export const BUILT_IN_MOTIONS: readonly BuiltInMotion[] = [
+  { number: 1, name: "Get up A (from front)", durationMs: 5520 },
+  { number: 2, name: "Get up B (from back)", durationMs: 6600 },
+  { number: 3, name: "Turn left", durationMs: 1520 },
+  { number: 4, name: "Walk forward", durationMs: 1625 },
+  { number: 5, name: "Turn right", durationMs: 1520 },
+  { number: 6, name: "Sidestep left", durationMs: 1200 },
+  { number: 7, name: "Basic posture", durationMs: 1800 },
+  { number: 8, name: "Sidestep right", durationMs: 1150 },
+  { number: 9, name: "Punch left", durationMs: 1300 },
+  { number: 10, name: "Walk backward", durationMs: 2450 },
+  { number: 11, name: "Punch right", durationMs: 1300 },
+];
+
+/**
+ * Run Motion number of downloaded motion `slot` (1-20): 12-21 play downloads 1-10, 33-42 play 11-20.
+ */
+export function downloadedMotionNumber(slot: number): number {
+  if (!Number.isInteger(slot) || slot < 1 || slot > 20) throw new RangeError(`download slot ${slot} is not 1-20`);
+  return slot <= 10 ? 11 + slot : 22 + slot;
+}
+
+/** Download slot (1-20) played by Run Motion `number`, or undefined for a built-in or unknown number. */
+export function downloadSlotOf(number: number): number | undefined {
+  if (number >= 12 && number <= 21) return number - 11;
+  if (number >= 33 && number <= 42) return number - 22;
+  return undefined;
+}
+
+/** [decision] The numbers the panel offers: 1-11, 12-21 and 33-42. */
+export function isOfferedMotionNumber(number: number): boolean {
+  return (
+    Number.isInteger(number) &&
+    ((number >= 1 && number <= 11) || (number >= 12 && number <= 21) || (number >= 33 && number <= 42))
+  );
+}
+
+/** Memory areas of the serial EEPROM (PROTOCOL.md §6.1). */
+export const MOTION_AREA_BYTES = 0x6000;
+export const ACTION_AREA_BYTES = 0x2000;
+export const MAX_MOTIONS = 20;
+export const MAX_ACTIONS = 10;
+/** Download payload chunk size (PROTOCOL.md §6.2). */
+export const DOWNLOAD_CHUNK = 64;
+/** The single byte the RBC answers to each part of a download. */
+export const DOWNLOAD_ACK = 0x40;

@@ -1,0 +1,247 @@
+import { readI16LE, readU32BE } from "./bytes.ts";
+import { ProtocolError } from "./errors.ts";
+import { ZERO_COUNT } from "./zeros.ts";
+
+/**
+ * One row per RBC command of PROTOCOL.md §3: its type byte, how to build the request contents, how to decode
+ * the reply contents, how long to wait, and whether a retry is harmless.
+ */
+
+/** How long a reply may take: "quick" at once; "motion"/"sound" depend on the request; "event" never ends. */
+export type TimeoutClass = "quick" | "motion" | "sound" | "subscribe";
+
+export interface CommandSpec<Args, Reply> {
+  readonly type: number;
+  readonly name: string;
+  request(args: Args): Uint8Array;
+  /** Throws ProtocolError("bad-reply") if the contents do not fit. */
+  decode(contents: Uint8Array): Reply;
+  readonly timeout: TimeoutClass;
+  /** A read that changes nothing on the robot and may be sent again after a timeout. */
+  readonly idempotent: boolean;
+}
+
+export type MemoryArea = "motion" | "action";
+
+export class BadReplyError extends ProtocolError {
+  override name = "BadReplyError";
+  constructor(command: string, detail: string) {
+    super("bad-reply", `The robot's reply to "${command}" was not understood: ${detail}`);
+  }
+}
+
+const ONE = Uint8Array.of(1);
+
+function expectLength(name: string, contents: Uint8Array, length: number): void {
+  if (contents.length !== length) {
+    throw new BadReplyError(name, `expected ${length} bytes, got ${contents.length}.`);
+  }
+}
+
+function byteArg(name: string, value: number, min: number, max: number): Uint8Array {
+  if (!Number.isInteger(value) || value < min || value > max) {
+    throw new ProtocolError("bad-argument", `${name} must be ${min}-${max}, got ${value}.`);
+  }
+  return Uint8Array.of(value);
+}
+
+function areaByte(area: MemoryArea): Uint8Array {
+  return Uint8Array.of(area === "motion" ? 1 : 2);
+}
+
+/** A reply that must echo one byte of the request. */
+function echoByte(name: string) {
+  return (contents: Uint8Array): number => {
+    expectLength(name, contents, 1);
+    return contents[0]!;
+  };
+}
+
+/** A two-byte [value, 0] reply or event. */
+function firstOfTwo(name: string) {
+  return (contents: Uint8Array): number => {
+    expectLength(name, contents, 2);
+    return contents[0]!;
+  };
+}
+
+function define<Args, Reply>(spec: CommandSpec<Args, Reply>): CommandSpec<Args, Reply> {
+  return Object.freeze(spec);
+}
+
+export const COMMANDS = {
+  readZeros: define<void, number[]>({
+    type: 0x0b,
+    name: "Read zero positions",
+    request: () => ONE,
+    decode(c) {
+      expectLength(this.name, c, ZERO_COUNT);
+      return Array.from(c);
+    },
+    timeout: "quick",
+    idempotent: true,
+  }),
+  readSerialNumber: define<void, string>({
+    type: 0x0c,
+    name: "Read serial number",
+    request: () => ONE,
+    decode(c) {
+      expectLength(this.name, c, 13);
+      for (const b of c) {
+        if (b < 0x20 || b > 0x7e) throw new BadReplyError(this.name, "the serial number is not printable text.");
+      }
+      return String.fromCharCode(...c);
+    },
+    timeout: "quick",
+    idempotent: true,
+  }),
+  writeZeros: define<readonly number[], number[]>({
+    type: 0x0e,
+    name: "Write zero positions",
+    request: (zeros) => {
+      if (zeros.length !== ZERO_COUNT) throw new ProtocolError("bad-argument", "A zero table has 16 values.");
+      return Uint8Array.from(zeros);
+    },
+    decode(c) {
+      expectLength(this.name, c, ZERO_COUNT);
+      return Array.from(c);
+    },
+    timeout: "quick",
+    idempotent: false,
+  }),
+  readAvailableMemory: define<MemoryArea, number>({
+    type: 0x0f,
+    name: "Read available memory",
+    request: areaByte,
+    decode(c) {
+      expectLength(this.name, c, 4);
+      return readU32BE(c, 0);
+    },
+    timeout: "quick",
+    idempotent: true,
+  }),
+  enterDirectMode: define<void, number>({
+    type: 0x10,
+    name: "Direct control mode on",
+    request: () => ONE,
+    decode: echoByte("Direct control mode on"),
+    timeout: "quick",
+    idempotent: false,
+  }),
+  readErrorCode: define<void, { code: number; platform: number }>({
+    type: 0x11,
+    name: "Read error code",
+    request: () => ONE,
+    decode(c) {
+      expectLength(this.name, c, 2);
+      return { code: c[0]!, platform: c[1]! };
+    },
+    timeout: "quick",
+    idempotent: true,
+  }),
+  readFirmwareVersion: define<void, { major: number; minor: number }>({
+    type: 0x12,
+    name: "Read firmware version",
+    request: () => ONE,
+    decode(c) {
+      expectLength(this.name, c, 2);
+      return { major: c[0]!, minor: c[1]! };
+    },
+    timeout: "quick",
+    idempotent: true,
+  }),
+  runMotion: define<number, number>({
+    type: 0x14,
+    name: "Run motion",
+    request: (n) => byteArg("Motion number", n, 0, 63),
+    decode: echoByte("Run motion"),
+    timeout: "motion",
+    idempotent: false,
+  }),
+  runSound: define<number, number>({
+    type: 0x15,
+    name: "Run sound",
+    request: (n) => byteArg("Sound number", n, 1, 25),
+    decode: echoByte("Run sound"),
+    timeout: "sound",
+    idempotent: false,
+  }),
+  readDistance: define<void, number>({
+    type: 0x16,
+    name: "Distance sensor",
+    request: () => ONE,
+    decode: firstOfTwo("Distance sensor"),
+    timeout: "quick",
+    idempotent: true,
+  }),
+  subscribeSound: define<number, number>({
+    type: 0x17,
+    name: "Sound input",
+    request: (threshold) => Uint8Array.of(0, byteArg("Sound threshold", threshold, 0, 255)[0]!),
+    decode: firstOfTwo("Sound input"),
+    timeout: "subscribe",
+    idempotent: false,
+  }),
+  subscribeButtons: define<void, number>({
+    type: 0x18,
+    name: "Button press",
+    request: () => ONE,
+    decode: firstOfTwo("Button press"),
+    timeout: "subscribe",
+    idempotent: false,
+  }),
+  subscribeRemote: define<void, number>({
+    type: 0x19,
+    name: "Remote control",
+    request: () => ONE,
+    decode: firstOfTwo("Remote control"),
+    timeout: "subscribe",
+    idempotent: false,
+  }),
+  readAccelerometer: define<void, { x: number; y: number; z: number }>({
+    type: 0x1a,
+    name: "Accelerometer",
+    request: () => ONE,
+    decode(c) {
+      expectLength(this.name, c, 6);
+      return { x: readI16LE(c, 0), y: readI16LE(c, 2), z: readI16LE(c, 4) };
+    },
+    timeout: "quick",
+    idempotent: true,
+  }),
+  executionStatus: define<number, Uint8Array>({
+    type: 0x1e,
+    name: "Execution status",
+    request: (n) => byteArg("Motion number", n, 0, 63),
+    decode: (c) => c.slice(),
+    timeout: "quick",
+    idempotent: true,
+  }),
+  resetMemoryPointer: define<MemoryArea, number>({
+    type: 0x1f,
+    name: "Reset memory pointer",
+    request: areaByte,
+    decode: echoByte("Reset memory pointer"),
+    timeout: "quick",
+    idempotent: false,
+  }),
+} as const;
+
+export type CommandName = keyof typeof COMMANDS;
+
+/** Download types (PROTOCOL.md §6.2); they do not follow the request/reply packet pattern. */
+export const WRITE_MOTION_TYPE = 0x01;
+export const WRITE_ACTION_TYPE = 0x02;
+/** Types that arrive unsolicited while a subscription runs. */
+export const EVENT_TYPES: ReadonlySet<number> = new Set([0x17, 0x18, 0x19]);
+
+const NAMES = new Map<number, string>([
+  [WRITE_MOTION_TYPE, "Write motion"],
+  [WRITE_ACTION_TYPE, "Write action"],
+  ...Object.values(COMMANDS).map((c): [number, string] => [c.type, c.name]),
+]);
+
+/** A person-readable name for a packet type (for the packet log). */
+export function commandName(type: number): string {
+  return NAMES.get(type) ?? `Unknown 0x${type.toString(16).padStart(2, "0").toUpperCase()}`;
+}

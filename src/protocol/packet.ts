@@ -1,0 +1,74 @@
+import { writeU32BE, xorBytes } from "./bytes.ts";
+import { ProtocolError } from "./errors.ts";
+
+/** The 8-byte header that starts every RBC packet in both directions (PROTOCOL.md §2). */
+export const HEADER = Uint8Array.of(0xff, 0xff, 0xaa, 0x55, 0xaa, 0x55, 0x37, 0xba);
+export const HEADER_LENGTH = 8;
+/** Header + type + platform + 4-byte size. */
+export const PREFIX_LENGTH = 14;
+/** [decision] Larger sizes are treated as a corrupt frame (PROTOCOL.md §2.1). */
+export const MAX_CONTENT_LENGTH = 4096;
+
+/** The accelerometer reply whose firmware checksum covers only the low bytes (PROTOCOL.md §2.1). */
+export const ACCELEROMETER_TYPE = 0x1a;
+
+export interface Packet {
+  type: number;
+  platform: number;
+  contents: Uint8Array;
+}
+
+/** XOR of the content bytes: the packet checksum. */
+export function packetChecksum(contents: Uint8Array): number {
+  return xorBytes(contents);
+}
+
+/**
+ * Encodes one packet: header, type, platform, size (unsigned 32-bit big-endian), contents, checksum.
+ * Requests always use platform 0 (PROTOCOL.md §2.2); the simulator passes the robot's mode for replies.
+ */
+export function encodePacket(type: number, contents: Uint8Array, platform = 0): Uint8Array {
+  if (!Number.isInteger(type) || type < 0 || type > 0xff) {
+    throw new ProtocolError("bad-type", `Packet type must be a byte, got ${type}.`);
+  }
+  if (!Number.isInteger(platform) || platform < 0 || platform > 0xff) {
+    throw new ProtocolError("bad-platform", `Platform must be a byte, got ${platform}.`);
+  }
+  if (contents.length > MAX_CONTENT_LENGTH) {
+    throw new ProtocolError("too-long", `Packet contents of ${contents.length} bytes exceed ${MAX_CONTENT_LENGTH}.`);
+  }
+  const out = new Uint8Array(PREFIX_LENGTH + contents.length + 1);
+  out.set(HEADER, 0);
+  out[8] = type;
+  out[9] = platform;
+  writeU32BE(out, 10, contents.length);
+  out.set(contents, PREFIX_LENGTH);
+  out[PREFIX_LENGTH + contents.length] = packetChecksum(contents);
+  return out;
+}
+
+/**
+ * The first part of a download (PROTOCOL.md §6.2): header, type, platform 0 and the payload size
+ * (big-endian), with no contents and no checksum.
+ */
+export function encodeDownloadStart(type: number, payloadLength: number): Uint8Array {
+  const out = new Uint8Array(PREFIX_LENGTH);
+  out.set(HEADER, 0);
+  out[8] = type;
+  out[9] = 0;
+  writeU32BE(out, 10, payloadLength);
+  return out;
+}
+
+/**
+ * Checksums a receiver accepts for a packet. Only the accelerometer reply has a second valid value: the
+ * firmware XORs the three low bytes (X, Y, Z) and not the sign bytes.
+ */
+export function isChecksumAccepted(type: number, contents: Uint8Array, checksum: number): boolean {
+  const full = xorBytes(contents);
+  if (checksum === full) return true;
+  if (type === ACCELEROMETER_TYPE && contents.length === 6) {
+    return checksum === ((contents[0]! ^ contents[2]! ^ contents[4]!) & 0xff);
+  }
+  return false;
+}

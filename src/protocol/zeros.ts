@@ -1,0 +1,73 @@
+import { ProtocolError } from "./errors.ts";
+
+/** Zero positions of servo IDs 0-15 (PROTOCOL.md §4). */
+export const ZERO_COUNT = 16;
+/** The standard table the RBC checks writes against. */
+export const STANDARD_ZEROS: readonly number[] = [125, 202, 162, 66, 108, 124, 48, 88, 184, 142, 90, 40, 125, 161, 210, 127];
+/** The firmware's factory default. */
+export const FACTORY_ZEROS: readonly number[] = [124, 202, 162, 65, 108, 125, 46, 88, 184, 142, 90, 40, 125, 161, 210, 126];
+/** A written value must lie within ±ZERO_TOLERANCE of the standard table, or the RBC drops the write. */
+export const ZERO_TOLERANCE = 15;
+
+export function zeroRange(id: number): { min: number; max: number } {
+  const std = STANDARD_ZEROS[id];
+  if (std === undefined) throw new RangeError(`servo id ${id} has no zero (0-15)`);
+  return { min: std - ZERO_TOLERANCE, max: std + ZERO_TOLERANCE };
+}
+
+export interface ZeroProblem {
+  id: number;
+  value: unknown;
+  message: string;
+}
+
+/** Every reason the RBC would refuse this table (empty when it would accept it). */
+export function zeroProblems(zeros: readonly unknown[]): ZeroProblem[] {
+  const problems: ZeroProblem[] = [];
+  if (zeros.length !== ZERO_COUNT) {
+    problems.push({ id: -1, value: zeros.length, message: `A zero table has 16 values, not ${zeros.length}.` });
+    return problems;
+  }
+  zeros.forEach((value, id) => {
+    const { min, max } = zeroRange(id);
+    if (typeof value !== "number" || !Number.isInteger(value)) {
+      problems.push({ id, value, message: `Servo ${id}: "${String(value)}" is not a whole number.` });
+    } else if (value < min || value > max) {
+      problems.push({
+        id,
+        value,
+        message: `Servo ${id}: ${value} is outside ${min}-${max} (standard ${STANDARD_ZEROS[id]} ± ${ZERO_TOLERANCE}); the RBC would refuse the whole table.`,
+      });
+    }
+  });
+  return problems;
+}
+
+export function isAcceptedZeroTable(zeros: readonly unknown[]): zeros is number[] {
+  return zeroProblems(zeros).length === 0;
+}
+
+/** Throws a ProtocolError("zero-out-of-range") naming every bad value. */
+export function assertAcceptedZeros(zeros: readonly unknown[]): asserts zeros is number[] {
+  const problems = zeroProblems(zeros);
+  if (problems.length > 0) {
+    throw new ProtocolError("zero-out-of-range", problems.map((p) => p.message).join(" "));
+  }
+}
+
+export interface ZeroChange {
+  id: number;
+  from: number;
+  to: number;
+}
+
+/** The servos whose zero differs between two tables. */
+export function diffZeros(from: readonly number[], to: readonly number[]): ZeroChange[] {
+  const changes: ZeroChange[] = [];
+  for (let id = 0; id < Math.max(from.length, to.length); id++) {
+    const a = from[id];
+    const b = to[id];
+    if (a !== b && a !== undefined && b !== undefined) changes.push({ id, from: a, to: b });
+  }
+  return changes;
+}
