@@ -23,7 +23,9 @@ export interface WebSerialTransportOptions {
 const RECOVERABLE_READ_ERRORS = new Set(["BufferOverrunError", "BreakError", "FramingError", "ParityError"]);
 
 function errorName(e: unknown): string {
-  return e instanceof Error || (typeof DOMException !== "undefined" && e instanceof DOMException) ? e.name : "";
+  return e instanceof Error || (typeof DOMException !== "undefined" && e instanceof DOMException)
+    ? e.name
+    : "";
 }
 
 /**
@@ -104,9 +106,13 @@ export class WebSerialTransport implements Transport {
       await this.writer.write(bytes);
     } catch (e) {
       this.lost("Writing to the port failed; the adapter may have been unplugged.", e);
-      throw new LinkError("disconnected", "Writing to the port failed; the adapter may have been unplugged.", {
-        cause: e,
-      });
+      throw new LinkError(
+        "disconnected",
+        "Writing to the port failed; the adapter may have been unplugged.",
+        {
+          cause: e,
+        },
+      );
     }
   }
 

@@ -30,7 +30,10 @@ export function toHex(bytes: Uint8Array): string {
 
 /** Reads an unsigned 32-bit big-endian number. */
 export function readU32BE(bytes: Uint8Array, offset: number): number {
-  return ((bytes[offset]! << 24) | (bytes[offset + 1]! << 16) | (bytes[offset + 2]! << 8) | bytes[offset + 3]!) >>> 0;
+  return (
+    ((bytes[offset]! << 24) | (bytes[offset + 1]! << 16) | (bytes[offset + 2]! << 8) | bytes[offset + 3]!) >>>
+    0
+  );
 }
 
 /** Writes an unsigned 32-bit big-endian number. */

@@ -41,8 +41,8 @@ export function errorCodeText(code: number): string {
 
 /** Sound lengths in ms for sounds 1..25 (PROTOCOL.md §3.3); index 0 is sound 1. */
 export const SOUND_LENGTHS_MS: readonly number[] = [
-  2268, 1001, 832, 365, 838, 417, 5671, 5916, 780, 2907, 552, 522, 1525, 2494, 438, 402, 433, 461, 343, 472, 354,
-  461, 458, 442, 371,
+  2268, 1001, 832, 365, 838, 417, 5671, 5916, 780, 2907, 552, 522, 1525, 2494, 438, 402, 433, 461, 343, 472,
+  354, 461, 458, 442, 371,
 ];
 export const SOUND_COUNT = SOUND_LENGTHS_MS.length;
 /** The RBC answers a sound request 200 ms + the sound's length after it (PROTOCOL.md §3). */
@@ -80,7 +80,8 @@ export const BUILT_IN_MOTIONS: readonly BuiltInMotion[] = [
  * Run Motion number of downloaded motion `slot` (1-20): 12-21 play downloads 1-10, 33-42 play 11-20.
  */
 export function downloadedMotionNumber(slot: number): number {
-  if (!Number.isInteger(slot) || slot < 1 || slot > 20) throw new RangeError(`download slot ${slot} is not 1-20`);
+  if (!Number.isInteger(slot) || slot < 1 || slot > 20)
+    throw new RangeError(`download slot ${slot} is not 1-20`);
   return slot <= 10 ? 11 + slot : 22 + slot;
 }
 

@@ -88,7 +88,8 @@ export const COMMANDS = {
     decode(c) {
       expectLength(this.name, c, 13);
       for (const b of c) {
-        if (b < 0x20 || b > 0x7e) throw new BadReplyError(this.name, "the serial number is not printable text.");
+        if (b < 0x20 || b > 0x7e)
+          throw new BadReplyError(this.name, "the serial number is not printable text.");
       }
       return String.fromCharCode(...c);
     },

@@ -1,4 +1,11 @@
-import { HEADER, HEADER_LENGTH, isChecksumAccepted, MAX_CONTENT_LENGTH, type Packet, PREFIX_LENGTH } from "./packet.ts";
+import {
+  HEADER,
+  HEADER_LENGTH,
+  isChecksumAccepted,
+  MAX_CONTENT_LENGTH,
+  type Packet,
+  PREFIX_LENGTH,
+} from "./packet.ts";
 
 /** Why the parser threw bytes away. */
 export type DiscardReason = "garbage" | "bad-checksum" | "oversize";

@@ -35,7 +35,10 @@ export function encodePacket(type: number, contents: Uint8Array, platform = 0): 
     throw new ProtocolError("bad-platform", `Platform must be a byte, got ${platform}.`);
   }
   if (contents.length > MAX_CONTENT_LENGTH) {
-    throw new ProtocolError("too-long", `Packet contents of ${contents.length} bytes exceed ${MAX_CONTENT_LENGTH}.`);
+    throw new ProtocolError(
+      "too-long",
+      `Packet contents of ${contents.length} bytes exceed ${MAX_CONTENT_LENGTH}.`,
+    );
   }
   const out = new Uint8Array(PREFIX_LENGTH + contents.length + 1);
   out.set(HEADER, 0);

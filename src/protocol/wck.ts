@@ -74,7 +74,10 @@ export function wckBrakeAll(): Uint8Array {
 export function wckSyncMove(positions: readonly number[], speed: number): Uint8Array {
   checkTorque(speed, "Speed");
   if (positions.length < 1 || positions.length > WCK_MAX_ID + 1) {
-    throw new ProtocolError("wck-count", `A synchronised move takes 1-31 positions, got ${positions.length}.`);
+    throw new ProtocolError(
+      "wck-count",
+      `A synchronised move takes 1-31 positions, got ${positions.length}.`,
+    );
   }
   positions.forEach(checkPosition);
   const out = [WCK_START, (speed << 5) | WCK_BROADCAST_ID, positions.length, ...positions];
@@ -143,7 +146,8 @@ export class WckDecoder {
     if (mode === 5) return { kind: "read", id };
     if (mode === 6 && b[2] === 0x10) return { kind: "passive", id };
     if (mode === 6 && id === WCK_BROADCAST_ID && b[2] === 0x20) return { kind: "brake" };
-    if (mode === 7 && id === 0 && b[2] === 0xfb && b[3] === 0x01 && b[4] === 0x00) return { kind: "exit-direct" };
+    if (mode === 7 && id === 0 && b[2] === 0xfb && b[3] === 0x01 && b[4] === 0x00)
+      return { kind: "exit-direct" };
     if (mode === 7) return { kind: "parameter", id, data: [b[2]!, b[3]!, b[4]!] };
     return { kind: "other", bytes: Uint8Array.from(b) };
   }

@@ -3,9 +3,13 @@ import { ProtocolError } from "./errors.ts";
 /** Zero positions of servo IDs 0-15 (PROTOCOL.md §4). */
 export const ZERO_COUNT = 16;
 /** The standard table the RBC checks writes against. */
-export const STANDARD_ZEROS: readonly number[] = [125, 202, 162, 66, 108, 124, 48, 88, 184, 142, 90, 40, 125, 161, 210, 127];
+export const STANDARD_ZEROS: readonly number[] = [
+  125, 202, 162, 66, 108, 124, 48, 88, 184, 142, 90, 40, 125, 161, 210, 127,
+];
 /** The firmware's factory default. */
-export const FACTORY_ZEROS: readonly number[] = [124, 202, 162, 65, 108, 125, 46, 88, 184, 142, 90, 40, 125, 161, 210, 126];
+export const FACTORY_ZEROS: readonly number[] = [
+  124, 202, 162, 65, 108, 125, 46, 88, 184, 142, 90, 40, 125, 161, 210, 126,
+];
 /** A written value must lie within ±ZERO_TOLERANCE of the standard table, or the RBC drops the write. */
 export const ZERO_TOLERANCE = 15;
 
@@ -25,7 +29,11 @@ export interface ZeroProblem {
 export function zeroProblems(zeros: readonly unknown[]): ZeroProblem[] {
   const problems: ZeroProblem[] = [];
   if (zeros.length !== ZERO_COUNT) {
-    problems.push({ id: -1, value: zeros.length, message: `A zero table has 16 values, not ${zeros.length}.` });
+    problems.push({
+      id: -1,
+      value: zeros.length,
+      message: `A zero table has 16 values, not ${zeros.length}.`,
+    });
     return problems;
   }
   zeros.forEach((value, id) => {

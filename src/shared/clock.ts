@@ -99,7 +99,8 @@ export class VirtualClock implements Clock {
     while (!finished) {
       const next = this.earliest();
       if (!next || next.due > limit) {
-        if (!finished) throw new Error(`VirtualClock.run: nothing left to run after ${limitMs} ms and still pending`);
+        if (!finished)
+          throw new Error(`VirtualClock.run: nothing left to run after ${limitMs} ms and still pending`);
         break;
       }
       this.timers = this.timers.filter((t) => t !== next);

@@ -1,6 +1,12 @@
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
-import { type DiscardReason, encodePacket, fromHex, type Packet, PacketParser } from "../../src/protocol/index.ts";
+import {
+  type DiscardReason,
+  encodePacket,
+  fromHex,
+  type Packet,
+  PacketParser,
+} from "../../src/protocol/index.ts";
 import { EX } from "../fixtures/protocol-examples.ts";
 
 const plain = (p: Packet) => ({ type: p.type, platform: p.platform, contents: Array.from(p.contents) });
@@ -61,7 +67,9 @@ describe("PacketParser", () => {
 
   it("treats FF inside the contents as data (error code reply FF 01)", () => {
     const bytes = fromHex(EX.errorNone);
-    expect(feed(new PacketParser(), bytes, 1).map(plain)).toEqual([{ type: 0x11, platform: 1, contents: [0xff, 1] }]);
+    expect(feed(new PacketParser(), bytes, 1).map(plain)).toEqual([
+      { type: 0x11, platform: 1, contents: [0xff, 1] },
+    ]);
     const header = encodePacket(0x0b, fromHex("FF FF AA 55 AA 55 37 BA FF FF AA 55 AA 55 37 BA"), 1);
     expect(new PacketParser().push(header).map((p) => p.contents.length)).toEqual([16]);
   });

@@ -1,7 +1,13 @@
 import { describe, expect, it } from "vitest";
+import {
+  COMMANDS,
+  commandName,
+  encodeDownloadStart,
+  encodePacket,
+  fromHex,
+  toHex,
+} from "../../src/protocol/index.ts";
 import { EX } from "../fixtures/protocol-examples.ts";
-import { COMMANDS, commandName, encodeDownloadStart, encodePacket, fromHex, toHex } from "../../src/protocol/index.ts";
-
 
 describe("encodePacket (PROTOCOL.md §8 requests)", () => {
   it("builds example 1, read firmware version", () => {
@@ -24,7 +30,9 @@ describe("encodePacket (PROTOCOL.md §8 requests)", () => {
     expect(toHex(encodePacket(0x0e, COMMANDS.writeZeros.request(zeros)))).toBe(EX.writeStandardZeros);
   });
   it("builds example 15, reset motion pointer", () => {
-    expect(toHex(encodePacket(0x1f, COMMANDS.resetMemoryPointer.request("motion")))).toBe(EX.resetMotionPointer);
+    expect(toHex(encodePacket(0x1f, COMMANDS.resetMemoryPointer.request("motion")))).toBe(
+      EX.resetMotionPointer,
+    );
   });
   it("builds replies with the robot's platform byte (example 2, 16)", () => {
     expect(toHex(encodePacket(0x12, Uint8Array.of(2, 0x17), 1))).toBe(EX.version223);

@@ -1,0 +1,155 @@
+import {
+  HUNO_BASIC_POSTURE,
+  safeRange,
+  wckBrakeAll,
+  wckMove,
+  wckPassive,
+  wckReadStatus,
+  wckSyncMove,
+} from "../protocol/index.ts";
+import { RbcError, RbcInvalidArgumentError, RbcTimeoutError } from "./errors.ts";
+import type { RawChannel } from "./raw-channel.ts";
+import type { ServoStatus } from "./types.ts";
+
+/** What DirectMode needs from the client. */
+export interface DirectModeHost {
+  readonly mode: string;
+  readonly timeouts: { quickMs: number };
+  exclusive<T>(fn: () => Promise<T>): Promise<T>;
+}
+
+/** Servo ids the panel drives on a HUNO. */
+export const SERVO_IDS: readonly number[] = Array.from({ length: 16 }, (_, i) => i);
+
+/**
+ * Live servo control over the RBC's direct mode (PROTOCOL.md §5). Positions are kept inside each servo's
+ * safe range; the panel never changes a servo's id or baud rate.
+ */
+export class DirectMode {
+  constructor(
+    private readonly host: DirectModeHost,
+    private readonly raw: RawChannel,
+  ) {}
+
+  /** The safe range of servo `id` (PROTOCOL.md §5 for 0-15; other ids get the full 0-254). */
+  static safeRange(id: number): { min: number; max: number } {
+    return safeRange(id) ?? { min: 0, max: 254 };
+  }
+
+  move(id: number, position: number, torque: number): Promise<ServoStatus> {
+    const { min, max } = DirectMode.safeRange(id);
+    if (!Number.isInteger(position) || position < min || position > max) {
+      return Promise.reject(
+        new RbcInvalidArgumentError(
+          `Servo ${id} may only move within ${min}-${max}; ${position} was not sent.`,
+        ),
+      );
+    }
+    return this.ask(id, () => wckMove(id, position, torque), `move servo ${id} to ${position}`);
+  }
+
+  read(id: number): Promise<ServoStatus> {
+    return this.ask(id, () => wckReadStatus(id), `read servo ${id}`);
+  }
+
+  passive(id: number): Promise<ServoStatus> {
+    return this.ask(id, () => wckPassive(id), `servo ${id} limp`);
+  }
+
+  /** Reads every servo; a servo that does not answer is reported as missing instead of failing the lot. */
+  async readAll(ids: readonly number[] = SERVO_IDS): Promise<{ servos: ServoStatus[]; silent: number[] }> {
+    const servos: ServoStatus[] = [];
+    const silent: number[] = [];
+    for (const id of ids) {
+      try {
+        servos.push(await this.read(id));
+      } catch (e) {
+        if (!(e instanceof RbcTimeoutError)) throw e;
+        silent.push(id);
+      }
+    }
+    return { servos, silent };
+  }
+
+  /** Brakes every servo (holds position). */
+  brakeAll(): Promise<void> {
+    return this.host.exclusive(async () => {
+      this.requireDirect();
+      await this.raw.exchange(wckBrakeAll(), {
+        need: 2,
+        timeoutMs: this.host.timeouts.quickMs,
+        note: "brake all",
+      });
+    });
+  }
+
+  /** Synchronised move of ids 0..N-1 at speed 0 (fast) .. 4 (slow); no reply. Positions must be safe. */
+  syncMove(positions: readonly number[], speed: number): Promise<void> {
+    positions.forEach((p, id) => {
+      const { min, max } = DirectMode.safeRange(id);
+      if (p < min || p > max) {
+        throw new RbcInvalidArgumentError(
+          `Servo ${id} may only move within ${min}-${max}; nothing was sent.`,
+        );
+      }
+    });
+    return this.host.exclusive(async () => {
+      this.requireDirect();
+      await this.raw.exchange(wckSyncMove(positions, speed), {
+        need: 0,
+        timeoutMs: 0,
+        note: "synchronised move",
+      });
+    });
+  }
+
+  /** All 16 servos to the HUNO basic posture. */
+  basicPosture(speed = 4): Promise<void> {
+    return this.syncMove(HUNO_BASIC_POSTURE, speed);
+  }
+
+  /**
+   * Makes servos 0-15 passive. Runs outside the queue's order guarantees only through `RbcClient.stop()`;
+   * a servo that does not answer is listed as silent.
+   */
+  async limpAll(ids: readonly number[] = SERVO_IDS): Promise<{ confirmed: number[]; silent: number[] }> {
+    const confirmed: number[] = [];
+    const silent: number[] = [];
+    for (const id of ids) {
+      try {
+        await this.raw.exchange(wckPassive(id), {
+          need: 2,
+          timeoutMs: this.host.timeouts.quickMs,
+          note: `servo ${id} limp`,
+        });
+        confirmed.push(id);
+      } catch (e) {
+        if (!(e instanceof RbcTimeoutError)) throw e;
+        silent.push(id);
+      }
+    }
+    return { confirmed, silent };
+  }
+
+  private ask(id: number, build: () => Uint8Array, note: string): Promise<ServoStatus> {
+    let packet: Uint8Array;
+    try {
+      packet = build();
+    } catch (e) {
+      return Promise.reject(
+        new RbcInvalidArgumentError(`${e instanceof Error ? e.message : e} Nothing was sent.`),
+      );
+    }
+    return this.host.exclusive(async () => {
+      this.requireDirect();
+      const reply = await this.raw.exchange(packet, { need: 2, timeoutMs: this.host.timeouts.quickMs, note });
+      return { id, load: reply[0]!, position: reply[1]! };
+    });
+  }
+
+  private requireDirect(): void {
+    if (this.host.mode !== "direct") {
+      throw new RbcError("wrong-mode", "Servo control needs direct mode: press “Start servo control” first.");
+    }
+  }
+}

@@ -1,0 +1,125 @@
+/**
+ * Failures of RBC operations, as typed errors with a stable `code` and a message that says what happened and
+ * what to do next.
+ */
+
+export type RbcErrorCode =
+  | "timeout"
+  | "disconnected"
+  | "not-connected"
+  | "rejected"
+  | "bad-reply"
+  | "cancelled"
+  | "invalid-argument"
+  | "no-robot"
+  | "verify-failed"
+  | "upload-failed"
+  | "motion-ignored"
+  | "wrong-mode";
+
+export class RbcError extends Error {
+  override name = "RbcError";
+  constructor(
+    readonly code: RbcErrorCode,
+    message: string,
+    options?: { cause?: unknown },
+  ) {
+    super(message, options);
+  }
+}
+
+/** No reply within the command's time. The RBC drops requests it refuses without any answer. */
+export class RbcTimeoutError extends RbcError {
+  override name = "RbcTimeoutError";
+  constructor(
+    readonly command: string,
+    readonly waitedMs: number,
+  ) {
+    super(
+      "timeout",
+      `The robot did not answer "${command}" within ${Math.round(waitedMs)} ms. Check that it is switched on and the cable is plugged in; the RBC also stays silent when it refuses a request.`,
+    );
+  }
+}
+
+export class RbcDisconnectedError extends RbcError {
+  override name = "RbcDisconnectedError";
+  constructor(message = "The robot was disconnected. Check the cable, then connect again.", cause?: unknown) {
+    super("disconnected", message, { cause });
+  }
+}
+
+export class RbcNotConnectedError extends RbcError {
+  override name = "RbcNotConnectedError";
+  constructor() {
+    super("not-connected", "No robot is connected. Connect the robot (or the demo robot) first.");
+  }
+}
+
+/** The robot refused the request: it told us (error code) or the client knows it would. */
+export class RbcRejectedError extends RbcError {
+  override name = "RbcRejectedError";
+  constructor(
+    message: string,
+    readonly deviceErrorCode?: number,
+  ) {
+    super("rejected", message);
+  }
+}
+
+export class RbcBadReplyError extends RbcError {
+  override name = "RbcBadReplyError";
+  constructor(message: string, cause?: unknown) {
+    super("bad-reply", message, { cause });
+  }
+}
+
+export class RbcCancelledError extends RbcError {
+  override name = "RbcCancelledError";
+  constructor(message = "Cancelled.") {
+    super("cancelled", message);
+  }
+}
+
+export class RbcInvalidArgumentError extends RbcError {
+  override name = "RbcInvalidArgumentError";
+  constructor(message: string) {
+    super("invalid-argument", message);
+  }
+}
+
+/** The zeros were sent but the table read back differs. */
+export class RbcVerifyError extends RbcError {
+  override name = "RbcVerifyError";
+  constructor(
+    message: string,
+    readonly expected: readonly number[],
+    readonly readBack: readonly number[],
+  ) {
+    super("verify-failed", message);
+  }
+}
+
+/** What the robot's memory holds after a failed or cancelled download. */
+export type UploadOutcome =
+  /** Nothing was recorded; the memory count and free memory are as before. */
+  | "nothing-recorded"
+  /** Every byte was sent but the last acknowledgement never came: the file may or may not be recorded. */
+  | "unknown"
+  /** The robot is still waiting for download bytes (link lost mid-upload): switch it off and on. */
+  | "interrupted";
+
+export class RbcUploadError extends RbcError {
+  override name = "RbcUploadError";
+  constructor(
+    code: "upload-failed" | "cancelled" | "disconnected",
+    message: string,
+    readonly acknowledged: number,
+    readonly total: number,
+    readonly outcome: UploadOutcome,
+    readonly deviceErrorCode?: number,
+    cause?: unknown,
+  ) {
+    super(code, message, { cause });
+  }
+}

@@ -1,0 +1,80 @@
+import type { MemoryArea } from "../protocol/index.ts";
+
+export type ClientMode = "disconnected" | "connecting" | "packet" | "download" | "direct";
+
+export interface ClientState {
+  mode: ClientMode;
+  /** Why the client is disconnected, for a person (set after a loss). */
+  reason?: string;
+  /** The robot's mode from the platform byte of its last reply (1 HUNO, 2 DINO, 3 DOGY, 4 PF2). */
+  platform?: number;
+  /** A motion the client is waiting on, with when it started (clock ms) and how long it should take. */
+  playing?: { motion: number; startedAt: number; expectedMs: number };
+  /** A sound the client is waiting on. */
+  sounding?: { sound: number; startedAt: number; expectedMs: number };
+  /** True once motion 7 (basic posture) has answered in this session. */
+  basicPostureConfirmed: boolean;
+  /** The subscription the client keeps armed, if any. */
+  subscription?: SubscriptionKind;
+}
+
+/** One line of the packet log. */
+export interface LogEntry {
+  /** Clock time in ms. */
+  time: number;
+  direction: "out" | "in";
+  /** "packet": an RBC packet; "raw": download or servo-bus bytes; "discard": bytes the parser threw away. */
+  kind: "packet" | "raw" | "discard";
+  type?: number;
+  name: string;
+  bytes: Uint8Array;
+  note?: string;
+}
+
+export type SubscriptionKind = "sound" | "buttons" | "remote";
+
+export interface RbcEvent {
+  kind: SubscriptionKind;
+  /** Sound level, button (1 = PF1, 2 = PF2) or IR key code. */
+  value: number;
+  time: number;
+}
+
+export interface UploadProgress {
+  acknowledged: number;
+  total: number;
+}
+
+export interface UploadOptions {
+  onProgress?: (progress: UploadProgress) => void;
+  signal?: AbortSignal;
+}
+
+export interface UploadResult {
+  area: MemoryArea;
+  total: number;
+  chunks: number;
+  /** EEPROM bytes the file occupies (64-byte rounding). */
+  footprint: number;
+  freeBefore: number;
+  freeAfter: number;
+  /** The robot's error code after the upload (0xFF = none). */
+  errorCode: number;
+  elapsedMs: number;
+}
+
+export interface ServoStatus {
+  id: number;
+  load: number;
+  position: number;
+}
+
+export interface ZeroWriteResult {
+  written: number[];
+  readBack: number[];
+}
+
+export interface DeviceIdentity {
+  firmware: { major: number; minor: number };
+  platform: number;
+}

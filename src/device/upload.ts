@@ -1,0 +1,224 @@
+import {
+  ACTION_AREA_BYTES,
+  COMMANDS,
+  DOWNLOAD_ACK,
+  DOWNLOAD_CHUNK,
+  encodeDownloadStart,
+  errorCodeText,
+  type MemoryArea,
+  MOTION_AREA_BYTES,
+  memoryFootprint,
+  NO_ERROR,
+  WRITE_ACTION_TYPE,
+  WRITE_MOTION_TYPE,
+  xorBytes,
+} from "../protocol/index.ts";
+import {
+  RbcCancelledError,
+  RbcDisconnectedError,
+  RbcError,
+  RbcInvalidArgumentError,
+  RbcRejectedError,
+  RbcTimeoutError,
+  RbcUploadError,
+  type UploadOutcome,
+} from "./errors.ts";
+import type { RawChannel } from "./raw-channel.ts";
+import type { RbcClient } from "./rbc-client.ts";
+import type { UploadOptions, UploadResult } from "./types.ts";
+
+export interface UploadIo {
+  client: RbcClient;
+  raw: RawChannel;
+  now(): number;
+  sleep(ms: number): Promise<void>;
+}
+
+/** How long to wait for each `40` (the RBC writes a 64-byte EEPROM page first). */
+const ACK_TIMEOUT_EXTRA_MS = 100;
+
+/** One chunk of the payload followed by its XOR checksum (PROTOCOL.md §6.2). */
+export function downloadChunk(payload: Uint8Array, offset: number): Uint8Array {
+  const end = Math.min(offset + DOWNLOAD_CHUNK, payload.length);
+  const out = new Uint8Array(end - offset + 1);
+  out.set(payload.subarray(offset, end), 0);
+  out[out.length - 1] = xorBytes(payload, offset, end);
+  return out;
+}
+
+/**
+ * Sent after a cancelled or unacknowledged download. Whatever chunk length L (1-64) the RBC is waiting for,
+ * it reads L of these bytes and then a checksum byte that cannot match them (the prefix XOR is 00 for L = 1
+ * and 01 after that, and the byte that follows is 01 then 00): it abandons the download and records nothing.
+ * In packet mode the same bytes are harmless garbage (no header).
+ */
+export const ABANDON_DOWNLOAD: Uint8Array = (() => {
+  const out = new Uint8Array(DOWNLOAD_CHUNK + 1);
+  out[1] = 0x01;
+  return out;
+})();
+
+/**
+ * The download sequence of PROTOCOL.md §6.2 with the project's decisions: free memory checked first; one chunk
+ * in flight; no chunk retried; a missing `40` ends the upload with the count of acknowledged bytes, the robot's
+ * error code in words, and what its memory now holds (decided by reading free memory again).
+ * Must run inside the client's `exclusive`.
+ */
+export async function uploadFile(
+  io: UploadIo,
+  area: MemoryArea,
+  payload: Uint8Array,
+  options: UploadOptions,
+): Promise<UploadResult> {
+  const { client } = io;
+  const { signal, onProgress } = options;
+  const total = payload.length;
+  const areaBytes = area === "motion" ? MOTION_AREA_BYTES : ACTION_AREA_BYTES;
+  if (total < 1 || total > areaBytes) {
+    throw new RbcInvalidArgumentError(
+      `A ${area} file must be 1-${areaBytes} bytes; this one is ${total}. Nothing was sent.`,
+    );
+  }
+  if (signal?.aborted) throw new RbcCancelledError("Upload cancelled before any byte was sent.");
+  const started = io.now();
+  const footprint = memoryFootprint(total);
+  const readFree = () => client.transactDecoded(COMMANDS.readAvailableMemory, area, client.retries);
+  const readError = () =>
+    client.transactDecoded(COMMANDS.readErrorCode, undefined, client.retries).then((r) => r.code);
+
+  const freeBefore = await readFree();
+  if (footprint > freeBefore) {
+    throw new RbcRejectedError(
+      `Not enough ${area} memory: the file needs ${footprint} bytes, ${freeBefore} are free. Reset the ${area} memory (this forgets every downloaded ${area}) and try again. Nothing was sent.`,
+    );
+  }
+
+  const ackTimeout = client.timeouts.quickMs + ACK_TIMEOUT_EXTRA_MS;
+  const exchange = (bytes: Uint8Array, note: string) =>
+    io.raw.exchange(bytes, { need: 1, timeoutMs: ackTimeout, note, accept: (b) => b === DOWNLOAD_ACK });
+
+  let acknowledged = 0;
+  let chunks = 0;
+  onProgress?.({ acknowledged, total });
+  client.setMode("download");
+  try {
+    await exchange(
+      encodeDownloadStart(area === "motion" ? WRITE_MOTION_TYPE : WRITE_ACTION_TYPE, total),
+      "first part",
+    );
+    while (acknowledged < total) {
+      if (signal?.aborted) throw new RbcCancelledError();
+      const chunk = downloadChunk(payload, acknowledged);
+      await exchange(chunk, `chunk ${chunks + 1} (${chunk.length - 1} bytes)`);
+      acknowledged += chunk.length - 1;
+      chunks++;
+      onProgress?.({ acknowledged, total });
+    }
+  } catch (e) {
+    throw await explainFailure(io, e, {
+      area,
+      acknowledged,
+      total,
+      freeBefore,
+      footprint,
+      readFree,
+      readError,
+    });
+  } finally {
+    if (client.mode === "download") client.setMode("packet");
+  }
+
+  const errorCode = await readError();
+  const freeAfter = await readFree();
+  return { area, total, chunks, footprint, freeBefore, freeAfter, errorCode, elapsedMs: io.now() - started };
+}
+
+interface FailureContext {
+  area: MemoryArea;
+  acknowledged: number;
+  total: number;
+  freeBefore: number;
+  footprint: number;
+  readFree: () => Promise<number>;
+  readError: () => Promise<number>;
+}
+
+/** Works out what the robot holds after a failed or cancelled download and says so. */
+async function explainFailure(io: UploadIo, error: unknown, ctx: FailureContext): Promise<RbcError> {
+  const { client } = io;
+  const { area, acknowledged, total } = ctx;
+  const sent = `${acknowledged} of ${total} bytes were acknowledged`;
+  if (error instanceof RbcDisconnectedError) {
+    const outcome: UploadOutcome = acknowledged >= total ? "unknown" : "interrupted";
+    return new RbcUploadError(
+      "disconnected",
+      `The connection was lost during the upload (${sent}). The robot is probably still waiting for the rest of the file and has recorded nothing: switch it off and on before the next upload.`,
+      acknowledged,
+      total,
+      outcome,
+      undefined,
+      error,
+    );
+  }
+  if (!(error instanceof RbcTimeoutError) && !(error instanceof RbcCancelledError)) {
+    return error instanceof RbcError ? error : new RbcError("upload-failed", String(error), { cause: error });
+  }
+  const cancelled = error instanceof RbcCancelledError;
+  // After a cancel or a lost acknowledgement the RBC may be waiting at a chunk boundary: make it abandon the
+  // download instead of eating our next packets as payload.
+  await io.raw
+    .exchange(ABANDON_DOWNLOAD, { need: 0, timeoutMs: 0, note: "abandon download" })
+    .catch(() => {});
+  client.setMode("packet");
+  await io.sleep(client.timeouts.quickMs);
+  let deviceError: number | undefined;
+  let freeNow: number | undefined;
+  try {
+    deviceError = await ctx.readError();
+    freeNow = await ctx.readFree();
+  } catch {
+    // Reported below as an unknown state.
+  }
+  let outcome: UploadOutcome;
+  let state: string;
+  if (freeNow === ctx.freeBefore) {
+    outcome = "nothing-recorded";
+    state = `The robot recorded nothing: its free ${area} memory is unchanged (${freeNow} bytes).`;
+  } else if (freeNow === ctx.freeBefore - ctx.footprint) {
+    outcome = "unknown";
+    state = `The robot's free ${area} memory dropped by the file's size, so it may have recorded the file even so; upload it again to be sure.`;
+  } else {
+    outcome = "unknown";
+    state =
+      freeNow === undefined
+        ? "The robot did not answer afterwards; its memory state is unknown. Switch it off and on, then upload again."
+        : `The robot's free ${area} memory is now ${freeNow} bytes (was ${ctx.freeBefore}); its state is uncertain. Switch it off and on, then upload again.`;
+  }
+  const why =
+    deviceError !== undefined && deviceError !== NO_ERROR
+      ? ` The robot reports: ${errorCodeText(deviceError)}.`
+      : "";
+  if (cancelled) {
+    return new RbcUploadError(
+      "cancelled",
+      `Upload cancelled (${sent}). ${state}`,
+      acknowledged,
+      total,
+      outcome,
+      deviceError,
+    );
+  }
+  const where =
+    acknowledged === 0 && error.command === "first part"
+      ? "The robot refused the download."
+      : `The robot stopped acknowledging (${sent}).`;
+  return new RbcUploadError(
+    "upload-failed",
+    `${where}${why} ${state}`,
+    acknowledged,
+    total,
+    outcome,
+    deviceError,
+    error,
+  );
+}

@@ -1,0 +1,102 @@
+/**
+ * The binary motion image uploaded by Write Motion (PROTOCOL.md §6.3, a project decision): the layout of the
+ * firmware's motion and scene structures, multi-byte fields little-endian, listing only the file's W servos.
+ *
+ * | offset               | bytes | field                                     |
+ * |----------------------|-------|-------------------------------------------|
+ * | 0                    | 1     | platform                                  |
+ * | 1                    | 1     | motion index                              |
+ * | 2                    | 4     | absolute index, 0                         |
+ * | 6                    | 2     | scenes S                                  |
+ * | 8                    | 2     | servos W                                  |
+ * | 10 + 6i              | 6     | servo i: id, P, D, I, portEnable, zero    |
+ * | 10 + 6W              | 2     | image size                                |
+ * | B_k = 12+6W+k(6+5W)  | 6     | scene k: index, frames, time (ms), u16 LE |
+ * | B_k + 6 + 5i         | 5     | id, start, end, torque, port              |
+ */
+import { RbmError, type RbmMotion } from "./rbm.ts";
+
+/** Files start on 64-byte boundaries (PROTOCOL.md §6.1). */
+export const MEMORY_BLOCK_BYTES = 64;
+
+/** Image size for W servos and S scenes: 12 + 6W + S(6 + 5W). */
+export function motionImageSize(servoCount: number, sceneCount: number): number {
+  return 12 + 6 * servoCount + sceneCount * (6 + 5 * servoCount);
+}
+
+/**
+ * EEPROM taken by a file of `size` bytes under §6.1: `size + 64 − size mod 64` — a size that is already a
+ * multiple of 64 wastes one extra block (firmware quirk).
+ */
+export function memoryFootprint(size: number): number {
+  return size + MEMORY_BLOCK_BYTES - (size % MEMORY_BLOCK_BYTES);
+}
+
+/**
+ * Encodes a motion as its §6.3 image. Throws `RbmError("rbm-image-range")` if a value does not fit its byte
+ * field and `RbmError("rbm-servo-count")` if a scene does not list every servo. It does not apply the other
+ * rules of §7: call `validateRbm` first.
+ */
+export function motionImage(motion: RbmMotion): Uint8Array {
+  const W = motion.servos.length;
+  const S = motion.scenes.length;
+  const size = motionImageSize(W, S);
+  check(size, 0xffff, "The image size");
+  const out = new Uint8Array(size);
+  let o = 0;
+  const u8 = (value: number, what: string): void => {
+    check(value, 0xff, what);
+    out[o++] = value;
+  };
+  const u16le = (value: number, what: string): void => {
+    check(value, 0xffff, what);
+    out[o++] = value & 0xff;
+    out[o++] = value >>> 8;
+  };
+
+  u8(motion.platform, "The platform");
+  u8(motion.motionIndex, "The motion index");
+  o += 4; // absolute index, always 0
+  u16le(S, "The number of scenes");
+  u16le(W, "The number of servos");
+  for (const servo of motion.servos) {
+    const what = `Servo ${servo.id}:`;
+    u8(servo.id, `${what} id`);
+    u8(servo.p, `${what} P gain`);
+    u8(servo.d, `${what} D gain`);
+    u8(servo.i, `${what} I gain`);
+    u8(servo.portEnable, `${what} port enable`);
+    u8(servo.zero, `${what} zero position`);
+  }
+  u16le(size, "The image size");
+  motion.scenes.forEach((scene, k) => {
+    if (scene.servos.length !== W) {
+      throw new RbmError(
+        "rbm-servo-count",
+        `Scene ${k} has ${scene.servos.length} servo records but the motion has ${W} servos.`,
+      );
+    }
+    const what = `Scene ${k}:`;
+    u16le(scene.index, `${what} index`);
+    u16le(scene.frames, `${what} frames`);
+    u16le(scene.timeMs, `${what} time`);
+    for (const rec of scene.servos) {
+      const rw = `${what} servo ${rec.id}`;
+      u8(rec.id, `${rw} id`);
+      u8(rec.start, `${rw} start position`);
+      u8(rec.end, `${rw} end position`);
+      u8(rec.torque, `${rw} torque`);
+      u8(rec.port, `${rw} port`);
+    }
+  });
+  return out;
+}
+
+function check(value: number, max: number, what: string): void {
+  if (!Number.isInteger(value) || value < 0 || value > max) {
+    throw new RbmError(
+      "rbm-image-range",
+      `${what} is ${String(value)}; the motion image holds whole numbers from 0 to ${max} there.`,
+    );
+  }
+}
