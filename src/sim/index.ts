@@ -1,0 +1,37 @@
+/**
+ * The simulated RBC and its Web Serial look-alikes (PROTOCOL.md §9, DESIGN.md `src/sim/`).
+ *
+ * SimulatedRbc decisions where the protocol is silent:
+ * - Quick replies are sent synchronously from `receive`; the mock port adds wire time and latency.
+ * - Requests whose contents should be `01` are dropped with anything else; only the low size byte is checked.
+ * - While a motion plays, only 0x1E and a 7 (stop) are handled; everything else is dropped (not queued).
+ *   While a sound plays everything is dropped. A stop ends the motion within STOP_SCENE_MS, replies to it,
+ *   then plays 7. Run Motion numbers other than 1-11, 12-21 and 33-42 (0, 0x2B, 0x31, ...) get no reply.
+ * - An accepted zero write, download first part or motion start resets the error code to FF.
+ * - Any header from the PC ends the running subscription, 0x19 included.
+ * - A download abandons after 1 s of silence (no error code); downloaded files survive 0x1F and a power
+ *   cycle (EEPROM) until a later download into the same slot replaces them.
+ *
+ * MockSerialPort follows Chrome: open() rejects InvalidStateError when open, TypeError on bad options,
+ * NetworkError while unplugged; close() rejects TypeError while a stream is locked and InvalidStateError when
+ * the port is not open (also after a cable pull, which closes the port by itself).
+ */
+export { FakeSerial } from "./fake-serial.ts";
+export {
+  BYTE_TIME_MS,
+  DEFAULT_BUFFER_SIZE,
+  type MockSerialPortOptions,
+  type MockSerialPortStats,
+  type OpenedOptions,
+  RBC_BAUD_RATE,
+} from "./mock-serial-options.ts";
+export { MockSerialPort } from "./mock-serial-port.ts";
+export { type FaultedReply, PortFaults, type ReplyFault } from "./port-faults.ts";
+export type { DownloadProgress } from "./sim-downloader.ts";
+export type { StoredFile } from "./sim-downloads.ts";
+export { DEFAULT_DOWNLOADED_MOTION_MS, STOP_SCENE_MS } from "./sim-player.ts";
+export type { DropReason } from "./sim-receiver.ts";
+export type { AccelerometerNoise, SensorState, SubscriptionType } from "./sim-sensors.ts";
+export type { ServoState } from "./sim-servos.ts";
+export type { SimulatedRbcOptions, SimulatedRbcState, SimulatedRbcStats } from "./sim-types.ts";
+export { SimulatedRbc } from "./simulated-rbc.ts";

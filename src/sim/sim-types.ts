@@ -1,0 +1,88 @@
+import { FACTORY_ZEROS } from "../protocol/zeros.ts";
+import { type Clock, realClock } from "../shared/clock.ts";
+import type { DownloadProgress } from "./sim-downloader.ts";
+import type { StoredFile } from "./sim-downloads.ts";
+import type { DropReason } from "./sim-receiver.ts";
+import type { AccelerometerNoise, SensorState } from "./sim-sensors.ts";
+import type { ServoState } from "./sim-servos.ts";
+
+/** Options, statistics and the state snapshot of the simulated RBC. */
+
+export interface SimulatedRbcOptions {
+  clock?: Clock;
+  /** Firmware version answered to 0x12 (default 2.23). */
+  firmware?: { major: number; minor: number };
+  /** 13 ASCII characters (default "8958899989309"). */
+  serialNumber?: string;
+  /** Mode carried by every reply: 1 HUNO (default), 2 DINO, 3 DOGY, 4 PF2. */
+  platform?: number;
+  /** Zero table in EEPROM (default FACTORY_ZEROS). */
+  zeros?: readonly number[];
+  /** false (default): just powered up, so only motion 7 is accepted until it has run once. */
+  basicPostureDone?: boolean;
+  /** Seeded noise on accelerometer reads (off by default). */
+  accelerometerNoise?: AccelerometerNoise;
+  /** EEPROM page write per download chunk before its `40` (default 5 ms). */
+  pageWriteMs?: number;
+  /**
+   * Silence in the middle of a download after which it is abandoned. Off by default (Infinity): no source says
+   * the firmware gives up, so the simulator waits for the rest as the worst case, and the client must not
+   * rely on a timeout to get the RBC back to packet mode.
+   */
+  downloadIdleTimeoutMs?: number;
+}
+
+export interface SimulatedRbcStats {
+  bytesReceived: number;
+  bytesSent: number;
+  /** Packets (and download first parts) that arrived whole, whether handled or dropped afterwards. */
+  packetsReceived: number;
+  /** Frames and packets dropped without a reply, in total and by reason. */
+  packetsDropped: number;
+  drops: Partial<Record<DropReason, number>>;
+  /** Bytes skipped while looking for a header. */
+  garbageBytes: number;
+}
+
+export interface SimulatedRbcState {
+  firmware: { major: number; minor: number };
+  serialNumber: string;
+  platform: number;
+  zeros: number[];
+  errorCode: number;
+  directMode: boolean;
+  basicPostureDone: boolean;
+  playingMotion: number | undefined;
+  playingSound: number | undefined;
+  motionCount: number;
+  actionCount: number;
+  motions: StoredFile[];
+  actions: StoredFile[];
+  nextFreeMotion: number;
+  nextFreeAction: number;
+  download: DownloadProgress | undefined;
+  servos: ServoState[];
+  sensors: SensorState;
+  stats: SimulatedRbcStats;
+}
+
+/** The options with their defaults, checked. */
+export function resolveOptions(options: SimulatedRbcOptions) {
+  const serialNumber = options.serialNumber ?? "8958899989309";
+  if (!/^[\x20-\x7e]{13}$/.test(serialNumber)) {
+    throw new RangeError(`The serial number must be 13 printable ASCII characters, got "${serialNumber}".`);
+  }
+  const zeros = [...(options.zeros ?? FACTORY_ZEROS)];
+  if (zeros.length !== 16) throw new RangeError("A zero table has 16 values.");
+  return {
+    clock: options.clock ?? realClock,
+    firmware: { ...(options.firmware ?? { major: 2, minor: 23 }) },
+    serialNumber,
+    platform: options.platform ?? 1,
+    zeros,
+    basicPostureDone: options.basicPostureDone ?? false,
+    accelerometerNoise: options.accelerometerNoise,
+    pageWriteMs: options.pageWriteMs ?? 5,
+    downloadIdleTimeoutMs: options.downloadIdleTimeoutMs ?? Number.POSITIVE_INFINITY,
+  };
+}

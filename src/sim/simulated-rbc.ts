@@ -1,0 +1,326 @@
+import { NO_ERROR, SOUND_REPLY_DELAY_MS, soundLengthMs } from "../protocol/catalog.ts";
+import { COMMANDS as C } from "../protocol/commands.ts";
+import { ACCELEROMETER_TYPE, encodePacket } from "../protocol/packet.ts";
+import { HUNO_BASIC_POSTURE } from "../protocol/servo-limits.ts";
+import { isAcceptedZeroTable } from "../protocol/zeros.ts";
+import type { Clock } from "../shared/clock.ts";
+import { SimDownloader } from "./sim-downloader.ts";
+import type { StoredFile } from "./sim-downloads.ts";
+import { SimPlayer } from "./sim-player.ts";
+import { type DropReason, type ReceiverHandler, SimReceiver } from "./sim-receiver.ts";
+import { BUTTON_TYPE, REMOTE_TYPE, SimSensors, SOUND_TYPE } from "./sim-sensors.ts";
+import { ServoBus, type ServoState } from "./sim-servos.ts";
+import { SimTimers } from "./sim-timers.ts";
+import {
+  resolveOptions,
+  type SimulatedRbcOptions,
+  type SimulatedRbcState,
+  type SimulatedRbcStats,
+} from "./sim-types.ts";
+
+/**
+ * The simulated RBC (PROTOCOL.md §9): bytes from the PC go in through `receive`, bytes to the PC come out
+ * through `onTransmit` listeners (one Uint8Array per reply or event). All timing follows the injected clock.
+
+ * The decisions it makes where PROTOCOL.md is silent are listed in `index.ts`.
+ */
+
+const ERROR_ZERO_SET = 7;
+const BASIC_POSTURE = 7;
+const DIRECT_MODE_TYPE = C.enterDirectMode.type;
+
+export class SimulatedRbc {
+  readonly clock: Clock;
+  readonly firmware: { major: number; minor: number };
+  readonly serialNumber: string;
+  readonly platform: number;
+  private zeroTable: number[];
+  private error = NO_ERROR;
+  private direct = false;
+  private postureDone: boolean;
+  private readonly timers: SimTimers;
+  private readonly receiver: SimReceiver;
+  private readonly player: SimPlayer;
+  private readonly sensors: SimSensors;
+  private readonly servoBus = new ServoBus();
+  private readonly downloader: SimDownloader;
+  private readonly listeners = new Set<(bytes: Uint8Array) => void>();
+  private readonly counters = { bytesReceived: 0, bytesSent: 0, packetsReceived: 0, packetsDropped: 0 };
+  private readonly drops: Partial<Record<DropReason, number>> = {};
+
+  constructor(options: SimulatedRbcOptions = {}) {
+    const o = resolveOptions(options);
+    this.clock = o.clock;
+    this.firmware = o.firmware;
+    this.serialNumber = o.serialNumber;
+    this.platform = o.platform;
+    this.zeroTable = o.zeros;
+    this.postureDone = o.basicPostureDone;
+    this.timers = new SimTimers(this.clock);
+    this.player = new SimPlayer(this.timers, {
+      zeros: () => this.zeroTable,
+      storedMotion: (slot) => this.downloader.motionArea.fileInSlot(slot),
+      setError: (code) => (this.error = code),
+      motionEnded: (n, positions) => this.motionEnded(n, positions),
+    });
+    this.sensors = new SimSensors(this.timers, (type, c) => this.reply(type, c), o.accelerometerNoise);
+    this.receiver = new SimReceiver(this.handler);
+    this.downloader = new SimDownloader(
+      this.timers,
+      this.receiver,
+      { send: (b) => this.send(b), setError: (code) => (this.error = code), drop: (r) => this.drop(r) },
+      o.pageWriteMs,
+      o.downloadIdleTimeoutMs,
+    );
+  }
+
+  // ---- byte interface ----
+
+  /** Bytes from the PC, in any chunking. */
+  receive(bytes: Uint8Array): void {
+    this.counters.bytesReceived += bytes.length;
+    this.receiver.push(bytes);
+  }
+
+  /** Bytes to the PC: each reply or event is one call. Returns the unsubscribe function. */
+  onTransmit(listener: (bytes: Uint8Array) => void): () => void {
+    this.listeners.add(listener);
+    return () => this.listeners.delete(listener);
+  }
+
+  // ---- inspection ----
+
+  get zeros(): number[] {
+    return [...this.zeroTable];
+  }
+  get errorCode(): number {
+    return this.error;
+  }
+  get directMode(): boolean {
+    return this.direct;
+  }
+  get basicPostureDone(): boolean {
+    return this.postureDone;
+  }
+  get playingMotion(): number | undefined {
+    return this.player.motion?.number;
+  }
+  get motions(): StoredFile[] {
+    return [...this.downloader.motionArea.files];
+  }
+  get actions(): StoredFile[] {
+    return [...this.downloader.actionArea.files];
+  }
+  get servos(): ServoState[] {
+    return this.servoBus.snapshot();
+  }
+  get stats(): SimulatedRbcStats {
+    return { ...this.counters, drops: { ...this.drops }, garbageBytes: this.receiver.garbageBytes };
+  }
+
+  get state(): SimulatedRbcState {
+    return {
+      firmware: { ...this.firmware },
+      serialNumber: this.serialNumber,
+      platform: this.platform,
+      zeros: this.zeros,
+      errorCode: this.error,
+      directMode: this.direct,
+      basicPostureDone: this.postureDone,
+      playingMotion: this.player.motion?.number,
+      playingSound: this.player.sound?.number,
+      motionCount: this.downloader.motionArea.count,
+      actionCount: this.downloader.actionArea.count,
+      motions: this.motions,
+      actions: this.actions,
+      nextFreeMotion: this.downloader.motionArea.next,
+      nextFreeAction: this.downloader.actionArea.next,
+      download: this.downloader.progress,
+      servos: this.servos,
+      sensors: this.sensors.state,
+      stats: this.stats,
+    };
+  }
+
+  // ---- world controls ----
+
+  setDistance(cm: number): void {
+    this.sensors.distanceCm = cm;
+  }
+  setAccelerometer(x: number, y: number, z: number): void {
+    this.sensors.setAccelerometer(x, y, z);
+  }
+  setSoundLevel(level: number): void {
+    this.sensors.setSoundLevel(level);
+  }
+  pressButton(button: 1 | 2, holdMs = 300): void {
+    this.sensors.pressButton(button, holdMs);
+  }
+  pressRemoteKey(code: number): void {
+    this.sensors.pressRemoteKey(code);
+  }
+
+  /** Stops every timer and forgets the listeners (e.g. when the demo robot is put away). */
+  dispose(): void {
+    this.powerCycle();
+    this.listeners.clear();
+  }
+
+  /** Power off and on: volatile state resets; zeros and downloaded files (EEPROM) persist. */
+  powerCycle(): void {
+    this.player.reset();
+    this.sensors.stop();
+    this.timers.cancelAll();
+    this.receiver.packetMode();
+    this.downloader.powerCycle();
+    this.direct = false;
+    this.postureDone = false;
+    this.error = NO_ERROR;
+  }
+
+  // ---- receive handling ----
+
+  private readonly handler: ReceiverHandler = {
+    onHeader: () => this.sensors.stop(),
+    onDrop: (reason) => this.drop(reason),
+    onDownloadStart: (type, _platform, size) => {
+      this.counters.packetsReceived++;
+      if (this.player.busy) this.drop("busy");
+      else this.downloader.start(type, size);
+    },
+    onPacket: (type, _platform, contents) => {
+      this.counters.packetsReceived++;
+      this.packet(type, contents);
+    },
+  };
+
+  private drop(reason: DropReason): void {
+    this.counters.packetsDropped++;
+    this.drops[reason] = (this.drops[reason] ?? 0) + 1;
+  }
+
+  private reply(type: number, contents: Uint8Array): void {
+    this.send(encodePacket(type, contents, this.platform));
+  }
+
+  private send(bytes: Uint8Array): void {
+    this.counters.bytesSent += bytes.length;
+    for (const listener of [...this.listeners]) listener(bytes);
+  }
+
+  private packet(type: number, contents: Uint8Array): void {
+    const outcome = this.handle(type, contents);
+    if (typeof outcome === "string") this.drop(outcome);
+    else if (outcome) this.reply(type, outcome);
+  }
+
+  /** Handles one request: the reply contents to send at once, a reason to drop it, or undefined. */
+  private handle(type: number, contents: Uint8Array): Outcome {
+    const arg = contents[0]!;
+    const motion = this.player.motion;
+    if (this.player.sound) return "busy";
+    if (motion && !(type === C.executionStatus.type || (type === C.runMotion.type && arg === BASIC_POSTURE)))
+      return "busy";
+    switch (type) {
+      case C.readZeros.type:
+        return one(arg, () => Uint8Array.from(this.zeroTable));
+      case C.readSerialNumber.type:
+        return one(arg, () => new TextEncoder().encode(this.serialNumber));
+      case C.writeZeros.type:
+        return this.writeZeros(contents);
+      case C.readAvailableMemory.type: {
+        const area =
+          arg === 1 ? this.downloader.motionArea : arg === 2 ? this.downloader.actionArea : undefined;
+        if (!area) return "contents";
+        const free = area.free;
+        return Uint8Array.of(free >>> 24, (free >>> 16) & 0xff, (free >>> 8) & 0xff, free & 0xff);
+      }
+      case DIRECT_MODE_TYPE:
+        return one(arg, () => this.enterDirectMode());
+      case C.readErrorCode.type:
+        return one(arg, () => Uint8Array.of(this.error, this.platform));
+      case C.readFirmwareVersion.type:
+        return one(arg, () => Uint8Array.of(this.firmware.major, this.firmware.minor));
+      case C.runMotion.type:
+        if (!motion) return this.runMotion(arg);
+        return this.player.stopMotion(() => this.player.startMotion(BASIC_POSTURE)) ? undefined : "busy";
+      case C.runSound.type: {
+        const length = arg >= 1 ? soundLengthMs(arg) : undefined;
+        if (length === undefined) return "contents";
+        this.player.playSound(arg, SOUND_REPLY_DELAY_MS + length, () => this.reply(type, Uint8Array.of(arg)));
+        return undefined;
+      }
+      case C.readDistance.type:
+        return one(arg, () => Uint8Array.of(this.sensors.distanceReading(), 0));
+      case SOUND_TYPE:
+        this.sensors.subscribe(SOUND_TYPE, contents[1]!);
+        return undefined;
+      case BUTTON_TYPE:
+      case REMOTE_TYPE:
+        return one(arg, () => this.sensors.subscribe(type));
+      case ACCELEROMETER_TYPE:
+        return one(arg, () => this.send(this.sensors.accelerometerPacket(this.platform)));
+      case C.executionStatus.type:
+        return Uint8Array.of(arg, motion?.number === arg ? 1 : 0);
+      case C.resetMemoryPointer.type:
+        if (arg > 3) return "contents";
+        if (arg === 1) this.downloader.motionArea.resetPointer();
+        if (arg === 2) this.downloader.actionArea.resetPointer();
+        return Uint8Array.of(arg);
+      default:
+        return "unknown-type";
+    }
+  }
+
+  private writeZeros(contents: Uint8Array): Outcome {
+    const values = Array.from(contents);
+    if (!isAcceptedZeroTable(values)) {
+      this.error = ERROR_ZERO_SET;
+      return "zero-out-of-range";
+    }
+    this.error = NO_ERROR;
+    this.zeroTable = values;
+    return contents.slice();
+  }
+
+  private enterDirectMode(): void {
+    this.reply(DIRECT_MODE_TYPE, Uint8Array.of(1));
+    this.direct = true;
+    this.servoBus.resetDecoder();
+    this.receiver.rawMode((b) => {
+      for (const result of this.servoBus.push(b)) {
+        if (result.reply) this.send(result.reply);
+        if (result.exitDirectMode) {
+          this.direct = false;
+          this.receiver.packetMode();
+        }
+      }
+    });
+  }
+
+  // ---- motions ----
+
+  private runMotion(n: number): Outcome {
+    if (!this.postureDone && n !== BASIC_POSTURE) return "needs-basic-posture";
+    return this.player.startMotion(n);
+  }
+
+  private motionEnded(n: number, positions: ReadonlyMap<number, number> | undefined): void {
+    if (n === BASIC_POSTURE) {
+      this.servoBus.setPositions(HUNO_BASIC_POSTURE);
+      this.postureDone = true;
+    }
+    if (positions) for (const [id, p] of positions) this.servoBus.setPosition(id, p);
+    this.reply(C.runMotion.type, Uint8Array.of(n));
+  }
+}
+
+/** Reply contents to send at once, a reason the request is dropped, or undefined (handled, no reply now). */
+type Outcome = Uint8Array | DropReason | undefined;
+
+/** Requests whose contents must be the single byte `01` (PROTOCOL.md §3); anything else is dropped. */
+function one(arg: number, then: () => unknown): Outcome {
+  if (arg !== 1) return "contents";
+  const contents = then();
+  return contents instanceof Uint8Array ? contents : undefined;
+}

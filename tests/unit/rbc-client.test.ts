@@ -1,0 +1,219 @@
+import { readFileSync } from "node:fs";
+import { describe, expect, it } from "vitest";
+import { type LogEntry, RbcClient, type RbcEvent, type UploadProgress } from "../../src/device/index.ts";
+import { WebSerialTransport } from "../../src/link/index.ts";
+import {
+  FACTORY_ZEROS,
+  fromHex,
+  motionImage,
+  parseRbm,
+  STANDARD_ZEROS,
+  toHex,
+} from "../../src/protocol/index.ts";
+import { VirtualClock } from "../../src/shared/clock.ts";
+import { MockSerialPort, SimulatedRbc } from "../../src/sim/index.ts";
+import { EX } from "../fixtures/protocol-examples.ts";
+import { makeRig } from "../support/rig.ts";
+
+const FIXTURES = new URL("../../../shared/fixtures/", import.meta.url);
+const hiImage = () => fromHex(readFileSync(new URL("images/Hi.img.hex", FIXTURES), "utf8"));
+
+describe("RbcClient against the simulated RBC", () => {
+  it("connects: opens at 115200 with a 4 KiB buffer, leaves direct mode blindly, reads the version", async () => {
+    const clock = new VirtualClock();
+    const sim = new SimulatedRbc({ clock });
+    const port = new MockSerialPort(sim, { clock });
+    const client = new RbcClient(new WebSerialTransport(port, { clock }), { clock });
+    const log: LogEntry[] = [];
+    client.log.on((e) => log.push(e));
+    const identity = await clock.run(client.connect());
+    expect(identity).toEqual({ firmware: { major: 2, minor: 23 }, platform: 1 });
+    expect(port.openOptions).toMatchObject({ baudRate: 115200, dataBits: 8, stopBits: 1, parity: "none" });
+    expect(port.openOptions?.bufferSize).toBeGreaterThanOrEqual(4096);
+    const out = log.filter((e) => e.direction === "out").map((e) => toHex(e.bytes));
+    expect(out[0]).toBe("FF E0 FB 01 00 1A");
+    expect(out[1]).toBe(EX.readVersion);
+    expect(toHex(log.find((e) => e.direction === "in")!.bytes)).toBe(EX.version223);
+    expect(client.mode).toBe("packet");
+  });
+
+  it("reads serial number, zeros, memory, error code, distance, accelerometer", async () => {
+    const { client, run, sim } = await makeRig();
+    expect(await run(client.readSerialNumber())).toBe("8958899989309");
+    expect(await run(client.readZeros())).toEqual([...FACTORY_ZEROS]);
+    expect(await run(client.readAvailableMemory("motion"))).toBe(24576);
+    expect(await run(client.readAvailableMemory("action"))).toBe(8192);
+    expect(await run(client.readErrorCode())).toBe(0xff);
+    sim.setDistance(33);
+    expect(await run(client.readDistance())).toBe(33);
+    sim.setDistance(3);
+    expect(await run(client.readDistance())).toBe(10);
+    sim.setAccelerometer(4, 3, -6);
+    expect(await run(client.readAccelerometer())).toEqual({ x: 4, y: 3, z: -6 });
+    expect(Array.from(await run(client.executionStatus(7)))).toEqual([7, 0]);
+  });
+
+  it("writes zeros, checks the echo and verifies by reading back", async () => {
+    const { client, run, sim } = await makeRig();
+    const zeros = [...STANDARD_ZEROS];
+    zeros[4] = 120;
+    const result = await run(client.writeZeros(zeros));
+    expect(result.readBack).toEqual(zeros);
+    expect(sim.zeros).toEqual(zeros);
+  });
+
+  it("refuses a zero table the RBC would drop, without sending a byte", async () => {
+    const { client, run, sim, port } = await makeRig();
+    const before = port.stats.bytesFromPc;
+    const zeros = [...STANDARD_ZEROS];
+    zeros[0] = 141; // standard 125 + 16
+    const error = await run(client.writeZeros(zeros).catch((e) => e));
+    expect(error).toMatchObject({ code: "invalid-argument" });
+    expect(String(error.message)).toMatch(/Servo 0: 141 is outside 110-140/);
+    expect(port.stats.bytesFromPc).toBe(before);
+    expect(sim.zeros).toEqual([...FACTORY_ZEROS]);
+  });
+
+  it("runs basic posture, then other motions, replying after their duration", async () => {
+    const { client, clock, run, sim } = await makeRig();
+    const t0 = clock.now();
+    expect(await run(client.runMotion(7))).toBe(7);
+    expect(clock.now() - t0).toBeGreaterThanOrEqual(1800);
+    expect(client.state.basicPostureConfirmed).toBe(true);
+    expect(sim.basicPostureDone).toBe(true);
+    const t1 = clock.now();
+    expect(await run(client.runMotion(3))).toBe(3);
+    expect(clock.now() - t1).toBeGreaterThanOrEqual(1520);
+    expect(clock.now() - t1).toBeLessThan(1520 + 100);
+  });
+
+  it("explains that motion 7 must run first after power-up", async () => {
+    const { client, run } = await makeRig();
+    const error = await run(client.runMotion(4).catch((e) => e));
+    expect(error).toMatchObject({ code: "motion-ignored" });
+    expect(String(error.message)).toMatch(/Basic posture \(7\)/);
+  });
+
+  it("refuses motion numbers outside 0-63 and sounds outside 1-25 before sending", async () => {
+    const { client, run, port } = await makeRig();
+    const before = port.stats.bytesFromPc;
+    await expect(run(client.runMotion(64))).rejects.toMatchObject({ code: "invalid-argument" });
+    await expect(run(client.runSound(0))).rejects.toMatchObject({ code: "invalid-argument" });
+    await expect(run(client.runSound(26))).rejects.toMatchObject({ code: "invalid-argument" });
+    expect(port.stats.bytesFromPc).toBe(before);
+  });
+
+  it("plays a sound and resolves after 200 ms + its length", async () => {
+    const { client, clock, run } = await makeRig();
+    const t0 = clock.now();
+    expect(await run(client.runSound(3))).toBe(3);
+    expect(clock.now() - t0).toBeGreaterThanOrEqual(200 + 832);
+  });
+
+  it("resets the memory pointer", async () => {
+    const { client, run } = await makeRig();
+    expect(await run(client.resetMemoryPointer("motion"))).toBe(1);
+    expect(await run(client.resetMemoryPointer("action"))).toBe(2);
+  });
+
+  it("uploads Hi.rbm's image in 9 chunks with progress, and the simulator holds the bytes", async () => {
+    const { client, run, sim } = await makeRig();
+    const image = motionImage(parseRbm(readFileSync(new URL("rbm/Hi.rbm", FIXTURES), "latin1")));
+    expect(toHex(image)).toBe(toHex(hiImage()));
+    const progress: UploadProgress[] = [];
+    const result = await run(client.writeMotion(image, { onProgress: (p) => progress.push(p) }));
+    expect(result).toMatchObject({
+      total: 538,
+      chunks: 9,
+      footprint: 576,
+      freeBefore: 24576,
+      freeAfter: 24000,
+    });
+    expect(result.errorCode).toBe(0xff);
+    expect(progress.map((p) => p.acknowledged)).toEqual([0, 64, 128, 192, 256, 320, 384, 448, 512, 538]);
+    expect(sim.motions).toHaveLength(1);
+    expect(toHex(sim.motions[0]!.bytes)).toBe(toHex(image));
+  });
+
+  it("refuses an upload that does not fit, before the first byte", async () => {
+    const { client, run, sim } = await makeRig();
+    const big = new Uint8Array(6000);
+    await run(client.writeAction(big.subarray(0, 5000)));
+    const error = await run(client.writeAction(big.subarray(0, 4000)).catch((e) => e));
+    expect(error).toMatchObject({ code: "rejected" });
+    expect(String(error.message)).toMatch(/needs 4032 bytes, 3136 are free/);
+    expect(sim.actions).toHaveLength(1);
+  });
+
+  it("cancels an upload between chunks, leaves nothing recorded and says so", async () => {
+    const { client, run, sim } = await makeRig();
+    const controller = new AbortController();
+    const image = hiImage();
+    const error = await run(
+      client
+        .writeMotion(image, {
+          signal: controller.signal,
+          onProgress: (p) => {
+            if (p.acknowledged >= 192) controller.abort();
+          },
+        })
+        .catch((e) => e),
+    );
+    expect(error).toMatchObject({
+      code: "cancelled",
+      acknowledged: 192,
+      total: 538,
+      outcome: "nothing-recorded",
+    });
+    expect(String(error.message)).toMatch(/192 of 538 bytes/);
+    expect(String(error.message)).toMatch(/recorded nothing/);
+    expect(sim.motions).toHaveLength(0);
+    // Usable afterwards: the next upload succeeds.
+    expect((await run(client.writeMotion(image))).freeAfter).toBe(24000);
+  });
+
+  it("routes subscription events by type and keeps the subscription armed across requests", async () => {
+    const { client, run, sim, clock } = await makeRig();
+    const events: RbcEvent[] = [];
+    client.events.on((e) => events.push(e));
+    await run(client.subscribe("buttons"));
+    sim.pressButton(2, 450);
+    await clock.advance(500);
+    expect(events.length).toBeGreaterThanOrEqual(2);
+    expect(events.every((e) => e.kind === "buttons" && e.value === 2)).toBe(true);
+    expect(await run(client.readDistance())).toBe(10);
+    events.length = 0;
+    sim.pressButton(1, 250);
+    await clock.advance(300);
+    expect(events.map((e) => e.value)).toContain(1);
+    await run(client.unsubscribe());
+    events.length = 0;
+    sim.pressButton(1, 250);
+    await clock.advance(300);
+    expect(events).toEqual([]);
+  });
+
+  it("drives servos in direct mode and refuses RBC commands until it leaves", async () => {
+    const { client, run, sim } = await makeRig();
+    await run(client.enterDirectMode());
+    expect(sim.directMode).toBe(true);
+    const moved = await run(client.servos.move(5, 125, 2));
+    expect(moved.id).toBe(5);
+    expect(sim.servos[5]!.position).toBe(125);
+    await expect(run(client.servos.move(0, 200, 2))).rejects.toMatchObject({ code: "invalid-argument" });
+    await expect(run(client.readZeros())).rejects.toMatchObject({ code: "wrong-mode" });
+    const all = await run(client.servos.readAll());
+    expect(all.servos).toHaveLength(16);
+    await run(client.servos.basicPosture());
+    await run(client.exitDirectMode());
+    expect(sim.directMode).toBe(false);
+    expect(await run(client.readFirmwareVersion())).toEqual({ major: 2, minor: 23 });
+  });
+
+  it("Stop makes every servo limp, even from normal mode", async () => {
+    const { client, run, sim } = await makeRig();
+    const result = await run(client.stop());
+    expect(result.confirmed).toEqual(Array.from({ length: 16 }, (_, i) => i));
+    expect(sim.servos.slice(0, 16).every((s) => s.passive)).toBe(true);
+  });
+});
