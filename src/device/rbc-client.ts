@@ -66,6 +66,8 @@ const DEFAULT_TIMEOUTS: RbcTimeouts = { quickMs: 400, marginMs: 2000, unknownMot
 
 interface PacketWaiter {
   type: number;
+  /** Replies of the right type that this returns false for are ignored (e.g. a stopped motion's reply). */
+  accept?: (p: Packet) => boolean;
   resolve: (p: Packet) => void;
   reject: (e: unknown) => void;
 }
@@ -399,19 +401,51 @@ export class RbcClient {
   async stop(): Promise<{ confirmed: number[]; silent: number[] }> {
     if (this.mode === "disconnected" || this.mode === "connecting") throw new RbcNotConnectedError();
     this.epoch++;
+    const playing = this._state.playing;
     const cancelled = new RbcCancelledError("Stopped: every servo was made limp.");
     this.failPending(cancelled);
     this.raw.fail(cancelled);
     const epoch = this.epoch;
     return this.exclusive(async () => {
       if (this.mode !== "direct") {
-        // A playing motion may delay the RBC's answer; go on regardless and send the passive packets.
-        await this.transactDecoded(COMMANDS.enterDirectMode, undefined, 0).catch(() => undefined);
-        this.setState({ mode: "direct", subscription: undefined, playing: undefined });
+        if (playing) await this.endMotionForStop(playing);
+        const entered = await this.transactDecoded(COMMANDS.enterDirectMode, undefined, 1).then(
+          () => true,
+          () => false,
+        );
+        if (!entered) {
+          throw new RbcError(
+            "timeout",
+            "Stop: the robot did not switch to servo control, so its servos could not be made limp. Switch the robot off.",
+          );
+        }
         this.subscription = undefined;
+        this.setState({ mode: "direct", subscription: undefined, playing: undefined });
       }
       return this.servos.limpAll();
     }, epoch);
+  }
+
+  /**
+   * While a motion plays the RBC drops every request but 7, which ends the motion at the end of its scene and
+   * then plays basic posture (PROTOCOL.md §3.1). Waits for that to finish so the servos can be taken.
+   */
+  private async endMotionForStop(playing: NonNullable<ClientState["playing"]>): Promise<void> {
+    const posture = BUILT_IN_MOTIONS.find((m) => m.number === BASIC_POSTURE_MOTION)!.durationMs;
+    if (playing.motion === BASIC_POSTURE_MOTION) {
+      await this.sleep(Math.max(0, playing.startedAt + playing.expectedMs - this.clock.now()) + 50);
+      return;
+    }
+    const sceneEndMs = 1000;
+    await this.transactDecoded(
+      COMMANDS.runMotion,
+      BASIC_POSTURE_MOTION,
+      0,
+      sceneEndMs + posture + this.timeouts.marginMs,
+      {
+        accept: (p) => p.contents[0] === BASIC_POSTURE_MOTION,
+      },
+    ).catch(() => undefined);
   }
 
   // ---- Internals ---------------------------------------------------------------------------------------
@@ -440,7 +474,7 @@ export class RbcClient {
     args: A,
     retries: number,
     timeoutMs = this.timeouts.quickMs,
-    options: { signal?: AbortSignal } = {},
+    options: { signal?: AbortSignal; accept?: (p: Packet) => boolean } = {},
   ): Promise<R> {
     this.requirePacketMode(spec.name);
     let contents: Uint8Array;
@@ -451,7 +485,7 @@ export class RbcClient {
     }
     for (let attempt = 0; ; attempt++) {
       try {
-        const packet = await this.transact(spec.type, contents, spec.name, timeoutMs, options.signal);
+        const packet = await this.transact(spec.type, contents, spec.name, timeoutMs, options);
         try {
           return spec.decode(packet.contents);
         } catch (e) {
@@ -470,7 +504,7 @@ export class RbcClient {
     contents: Uint8Array,
     name: string,
     timeoutMs: number,
-    signal?: AbortSignal,
+    { signal, accept }: { signal?: AbortSignal; accept?: (p: Packet) => boolean },
   ) {
     return new Promise<Packet>((resolve, reject) => {
       if (signal?.aborted) return reject(new RbcCancelledError());
@@ -484,6 +518,7 @@ export class RbcClient {
       };
       const waiter: PacketWaiter = {
         type,
+        accept,
         resolve: (p) => finish(() => resolve(p)),
         reject: (e) => finish(() => reject(e)),
       };
@@ -553,7 +588,9 @@ export class RbcClient {
       this.events.emit({ kind, value: packet.contents[0]!, time: this.clock.now() });
       return;
     }
-    if (this.waiter && this.waiter.type === packet.type) this.waiter.resolve(packet);
+    if (this.waiter && this.waiter.type === packet.type && (this.waiter.accept?.(packet) ?? true)) {
+      this.waiter.resolve(packet);
+    }
     // Anything else is a late or unexpected reply: logged above, otherwise ignored.
   }
 

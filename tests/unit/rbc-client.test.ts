@@ -217,3 +217,18 @@ describe("RbcClient against the simulated RBC", () => {
     expect(sim.servos.slice(0, 16).every((s) => s.passive)).toBe(true);
   });
 });
+
+describe("Stop while a motion plays", () => {
+  it("ends the motion with 7 (the only request the RBC takes while playing), then makes every servo limp", async () => {
+    const { client, run, sim, clock } = await makeRig({ sim: { basicPostureDone: true } });
+    const walking = client.runMotion(4).catch((e) => e);
+    await clock.advance(300);
+    expect(sim.playingMotion).toBe(4);
+    const result = await run(client.stop());
+    expect(await walking).toMatchObject({ code: "cancelled" });
+    expect(result.confirmed).toHaveLength(16);
+    expect(sim.playingMotion).toBeUndefined();
+    expect(sim.directMode).toBe(true);
+    expect(sim.servos.slice(0, 16).every((s) => s.passive)).toBe(true);
+  });
+});
