@@ -1,12 +1,5 @@
-import {
-  HUNO_BASIC_POSTURE,
-  safeRange,
-  wckBrakeAll,
-  wckMove,
-  wckPassive,
-  wckReadStatus,
-  wckSyncMove,
-} from "../protocol/index.ts";
+import { HUNO_BASIC_POSTURE, safeRange } from "../protocol/servo-limits.ts";
+import { wckBrakeAll, wckMove, wckPassive, wckReadStatus, wckSyncMove } from "../protocol/wck.ts";
 import { RbcError, RbcInvalidArgumentError, RbcTimeoutError } from "./errors.ts";
 import type { RawChannel } from "./raw-channel.ts";
 import type { ServoStatus } from "./types.ts";

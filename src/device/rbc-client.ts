@@ -2,20 +2,21 @@ import type { Transport, TransportStatusEvent } from "../link/transport.ts";
 import {
   BASIC_POSTURE_MOTION,
   BUILT_IN_MOTIONS,
+  SOUND_REPLY_DELAY_MS,
+  soundLengthMs,
+} from "../protocol/catalog.ts";
+import {
   COMMANDS,
   type CommandSpec,
   commandName,
   EVENT_TYPES,
-  EXIT_DIRECT_MODE,
-  encodePacket,
   type MemoryArea,
-  type Packet,
-  PacketParser,
-  ProtocolError,
-  SOUND_REPLY_DELAY_MS,
-  soundLengthMs,
-  zeroProblems,
-} from "../protocol/index.ts";
+} from "../protocol/commands.ts";
+import { ProtocolError } from "../protocol/errors.ts";
+import { encodePacket, type Packet } from "../protocol/packet.ts";
+import { PacketParser } from "../protocol/packet-parser.ts";
+import { EXIT_DIRECT_MODE } from "../protocol/wck.ts";
+import { zeroProblems } from "../protocol/zeros.ts";
 import { type Clock, realClock } from "../shared/clock.ts";
 import { Emitter } from "../shared/emitter.ts";
 import { DirectMode } from "./direct-mode.ts";
@@ -378,7 +379,17 @@ export class RbcClient {
   enterDirectMode(): Promise<void> {
     return this.exclusive(async () => {
       if (this.mode === "direct") return;
-      await this.transactDecoded(COMMANDS.enterDirectMode, undefined, 0);
+      try {
+        await this.transactDecoded(COMMANDS.enterDirectMode, undefined, 0);
+      } catch (e) {
+        // The RBC may have switched even though its `01` was lost or garbled; it would then relay every later
+        // packet to the servo bus. The exit sequence is harmless garbage in packet mode, so send it blindly.
+        if (e instanceof RbcTimeoutError || e instanceof RbcBadReplyError) {
+          await this.writeRaw(EXIT_DIRECT_MODE, "leave direct mode (blind, after no reply)").catch(() => {});
+          this.parser.reset();
+        }
+        throw e;
+      }
       this.subscription = undefined;
       this.setState({ mode: "direct", subscription: undefined });
     });

@@ -1,4 +1,4 @@
-import type { MemoryArea } from "../protocol/index.ts";
+import type { MemoryArea } from "../protocol/commands.ts";
 
 export type ClientMode = "disconnected" | "connecting" | "packet" | "download" | "direct";
 

@@ -1,18 +1,15 @@
+import { xorBytes } from "../protocol/bytes.ts";
 import {
   ACTION_AREA_BYTES,
-  COMMANDS,
   DOWNLOAD_ACK,
   DOWNLOAD_CHUNK,
-  encodeDownloadStart,
   errorCodeText,
-  type MemoryArea,
   MOTION_AREA_BYTES,
   memoryFootprint,
   NO_ERROR,
-  WRITE_ACTION_TYPE,
-  WRITE_MOTION_TYPE,
-  xorBytes,
-} from "../protocol/index.ts";
+} from "../protocol/catalog.ts";
+import { COMMANDS, type MemoryArea, WRITE_ACTION_TYPE, WRITE_MOTION_TYPE } from "../protocol/commands.ts";
+import { encodeDownloadStart } from "../protocol/packet.ts";
 import {
   RbcCancelledError,
   RbcDisconnectedError,
@@ -99,6 +96,8 @@ export async function uploadFile(
 
   let acknowledged = 0;
   let chunks = 0;
+  /** Set once the last chunk's bytes have been handed to the link: the file may be complete on the robot. */
+  let lastChunkSent = false;
   onProgress?.({ acknowledged, total });
   client.setMode("download");
   try {
@@ -109,6 +108,7 @@ export async function uploadFile(
     while (acknowledged < total) {
       if (signal?.aborted) throw new RbcCancelledError();
       const chunk = downloadChunk(payload, acknowledged);
+      lastChunkSent = acknowledged + chunk.length - 1 >= total;
       await exchange(chunk, `chunk ${chunks + 1} (${chunk.length - 1} bytes)`);
       acknowledged += chunk.length - 1;
       chunks++;
@@ -119,6 +119,7 @@ export async function uploadFile(
       area,
       acknowledged,
       total,
+      lastChunkSent,
       freeBefore,
       footprint,
       readFree,
@@ -137,6 +138,7 @@ interface FailureContext {
   area: MemoryArea;
   acknowledged: number;
   total: number;
+  lastChunkSent: boolean;
   freeBefore: number;
   footprint: number;
   readFree: () => Promise<number>;
@@ -149,10 +151,15 @@ async function explainFailure(io: UploadIo, error: unknown, ctx: FailureContext)
   const { area, acknowledged, total } = ctx;
   const sent = `${acknowledged} of ${total} bytes were acknowledged`;
   if (error instanceof RbcDisconnectedError) {
-    const outcome: UploadOutcome = acknowledged >= total ? "unknown" : "interrupted";
+    // Once the last chunk was written the robot may have every byte (the link died before its `40` came back).
+    const outcome: UploadOutcome = acknowledged >= total || ctx.lastChunkSent ? "unknown" : "interrupted";
+    const state =
+      outcome === "unknown"
+        ? "The last chunk had been sent, so the robot may have recorded the file: switch it off and on, then check its free memory or upload again."
+        : "The robot is probably still waiting for the rest of the file and has recorded nothing: switch it off and on before the next upload.";
     return new RbcUploadError(
       "disconnected",
-      `The connection was lost during the upload (${sent}). The robot is probably still waiting for the rest of the file and has recorded nothing: switch it off and on before the next upload.`,
+      `The connection was lost during the upload (${sent}). ${state}`,
       acknowledged,
       total,
       outcome,
@@ -210,7 +217,7 @@ async function explainFailure(io: UploadIo, error: unknown, ctx: FailureContext)
   }
   const where =
     acknowledged === 0 && error.command === "first part"
-      ? "The robot refused the download."
+      ? `The robot did not acknowledge the start of the download (${sent}); it may have refused it.`
       : `The robot stopped acknowledging (${sent}).`;
   return new RbcUploadError(
     "upload-failed",

@@ -1,6 +1,6 @@
 /**
  * Transport over a serial device in Node, using the `serialport` package. Loaded only by the command line
- * (`bin/`); the web app never imports it.
+ * (`src/cli/`, started by `bin/rbc.mjs`); the web app never imports it (`src/link/index.ts` does not export it).
  */
 import { SerialPort } from "serialport";
 import { LinkError, type Transport, type TransportStatus, type TransportStatusEvent } from "./transport.ts";
@@ -8,6 +8,15 @@ import { LinkError, type Transport, type TransportStatus, type TransportStatusEv
 export interface NodeSerialTransportOptions {
   baudRate?: number;
 }
+
+export interface SerialPortListing {
+  path: string;
+  manufacturer?: string;
+  vendorId?: string;
+  productId?: string;
+}
+
+type CloseError = (Error & { disconnected?: boolean }) | null;
 
 export class NodeSerialTransport implements Transport {
   private _status: TransportStatus = "closed";
@@ -21,9 +30,7 @@ export class NodeSerialTransport implements Transport {
   ) {}
 
   /** Serial ports the operating system knows of. */
-  static async list(): Promise<
-    Array<{ path: string; manufacturer?: string; vendorId?: string; productId?: string }>
-  > {
+  static async list(): Promise<SerialPortListing[]> {
     return (await SerialPort.list()).map((p) => ({
       path: p.path,
       manufacturer: p.manufacturer,
@@ -36,6 +43,7 @@ export class NodeSerialTransport implements Transport {
     return this._status;
   }
 
+  /** Opens at 115200 8N1, no flow control, with an exclusive lock (a second program gets "port-busy"). */
   open(): Promise<void> {
     if (this._status === "open" || this._status === "opening") {
       return Promise.reject(new LinkError("open-failed", "The port is already open."));
@@ -48,6 +56,8 @@ export class NodeSerialTransport implements Transport {
       stopBits: 1,
       parity: "none",
       rtscts: false,
+      xon: false,
+      xoff: false,
       autoOpen: false,
     });
     return new Promise<void>((resolve, reject) => {
@@ -61,25 +71,34 @@ export class NodeSerialTransport implements Transport {
           reject(new LinkError(busy ? "port-busy" : "open-failed", reason, { cause: err }));
           return;
         }
+        if (this._status !== "opening") {
+          // close() was called while opening: release the port again.
+          port.close(() => {});
+          reject(new LinkError("open-failed", `Opening ${this.path} was cancelled.`));
+          return;
+        }
         this.port = port;
         port.on("data", (chunk: Buffer) => {
-          const bytes = new Uint8Array(chunk.buffer, chunk.byteOffset, chunk.byteLength);
+          if (this.port !== port) return;
+          // A copy: the chunk is a view into serialport's 64 KiB read pool, which listeners must not pin.
+          const bytes = Uint8Array.from(chunk);
           for (const l of this.dataListeners) l(bytes);
         });
-        port.on("close", (closeErr: (Error & { disconnected?: boolean }) | null) => {
-          if (this._status === "open") {
-            this.port = undefined;
-            this.setStatus({
-              status: "lost",
-              reason: closeErr?.disconnected
-                ? "The serial device was unplugged."
-                : "The serial port was closed unexpectedly.",
-              error: closeErr,
-            });
-          }
+        port.on("close", (closeErr: CloseError) => {
+          if (this.port !== port || this._status !== "open") return;
+          this.port = undefined;
+          this.setStatus({
+            status: "lost",
+            reason: closeErr?.disconnected
+              ? "The serial device was unplugged."
+              : "The serial port was closed unexpectedly.",
+            error: closeErr,
+          });
         });
         port.on("error", (e: Error) => {
-          if (this._status === "open") this.setStatus({ status: "lost", reason: e.message, error: e });
+          if (this.port === port && this._status === "open") {
+            this.setStatus({ status: "lost", reason: e.message, error: e });
+          }
         });
         this.setStatus({ status: "open" });
         resolve();
@@ -87,6 +106,11 @@ export class NodeSerialTransport implements Transport {
     });
   }
 
+  /**
+   * Resolves when the operating system has accepted the bytes (as Web Serial's writer does), not when they
+   * have left the wire: `drain` (tcdrain) would add a thread-pool round trip per packet, and it never returns
+   * on a pseudo terminal whose other end stops reading, which would hang the unguarded handshake write.
+   */
   write(bytes: Uint8Array): Promise<void> {
     const port = this.port;
     if (this._status !== "open" || !port) {
@@ -95,15 +119,13 @@ export class NodeSerialTransport implements Transport {
       );
     }
     return new Promise((resolve, reject) => {
-      port.write(Buffer.from(bytes.buffer, bytes.byteOffset, bytes.byteLength), (err) => {
-        if (err)
-          return reject(new LinkError("write-failed", `Writing to ${this.path} failed: ${err.message}`));
-        port.drain((drainErr) =>
-          drainErr
-            ? reject(new LinkError("write-failed", `Writing to ${this.path} failed: ${drainErr.message}`))
-            : resolve(),
-        );
-      });
+      port.write(Buffer.from(bytes), (err) =>
+        err
+          ? reject(
+              new LinkError("write-failed", `Writing to ${this.path} failed: ${err.message}`, { cause: err }),
+            )
+          : resolve(),
+      );
     });
   }
 

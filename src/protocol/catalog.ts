@@ -105,6 +105,17 @@ export const MOTION_AREA_BYTES = 0x6000;
 export const ACTION_AREA_BYTES = 0x2000;
 export const MAX_MOTIONS = 20;
 export const MAX_ACTIONS = 10;
+/** Files start on 64-byte boundaries (PROTOCOL.md §6.1). */
+export const MEMORY_BLOCK_BYTES = 64;
+
+/**
+ * EEPROM taken by a file of `size` bytes (PROTOCOL.md §6.1): the next free address is
+ * `start + size + 64 − size mod 64`, so a size that is already a multiple of 64 wastes one extra block.
+ */
+export function memoryFootprint(size: number): number {
+  return size + MEMORY_BLOCK_BYTES - (size % MEMORY_BLOCK_BYTES);
+}
+
 /** Download payload chunk size (PROTOCOL.md §6.2). */
 export const DOWNLOAD_CHUNK = 64;
 /** The single byte the RBC answers to each part of a download. */

@@ -16,20 +16,9 @@
  */
 import { RbmError, type RbmMotion } from "./rbm.ts";
 
-/** Files start on 64-byte boundaries (PROTOCOL.md §6.1). */
-export const MEMORY_BLOCK_BYTES = 64;
-
 /** Image size for W servos and S scenes: 12 + 6W + S(6 + 5W). */
 export function motionImageSize(servoCount: number, sceneCount: number): number {
   return 12 + 6 * servoCount + sceneCount * (6 + 5 * servoCount);
-}
-
-/**
- * EEPROM taken by a file of `size` bytes under §6.1: `size + 64 − size mod 64` — a size that is already a
- * multiple of 64 wastes one extra block (firmware quirk).
- */
-export function memoryFootprint(size: number): number {
-  return size + MEMORY_BLOCK_BYTES - (size % MEMORY_BLOCK_BYTES);
 }
 
 /**

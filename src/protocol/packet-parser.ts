@@ -45,6 +45,9 @@ const NEXT = (() => {
   return table;
 })();
 
+/** Below this many bytes a frame copy is a plain loop rather than `set(subarray(...))`. */
+const SMALL_COPY = 32;
+
 const NO_PACKETS: Packet[] = Object.freeze([]) as unknown as Packet[];
 
 /**
@@ -83,16 +86,23 @@ export class PacketParser {
   }
 
   push(chunk: Uint8Array): Packet[] {
-    let out = NO_PACKETS;
-    const emit = (p: Packet) => {
-      if (out === NO_PACKETS) out = [];
-      out.push(p);
-    };
-    this.consume(chunk, 0, chunk.length, emit);
+    const outer = this.out; // a push from inside onDiscard must not lose the outer push's packets
+    this.out = NO_PACKETS;
+    this.consume(chunk, 0, chunk.length);
+    const out = this.out;
+    this.out = outer;
     return out;
   }
 
-  private consume(bytes: Uint8Array, start: number, end: number, emit: (p: Packet) => void): void {
+  /** Packets completed during the current `push` (no closure or array is allocated until one completes). */
+  private out: Packet[] = NO_PACKETS;
+
+  private emit(packet: Packet): void {
+    if (this.out === NO_PACKETS) this.out = [packet];
+    else this.out.push(packet);
+  }
+
+  private consume(bytes: Uint8Array, start: number, end: number): void {
     const frame = this.frame;
     let i = start;
     while (i < end) {
@@ -121,39 +131,44 @@ export class PacketParser {
         const size = ((frame[10]! << 24) | (frame[11]! << 16) | (frame[12]! << 8) | frame[13]!) >>> 0;
         if (size > MAX_CONTENT_LENGTH) {
           this.stats.oversize++;
-          this.reject("oversize", emit);
+          this.reject("oversize");
           continue;
         }
         this.expected = PREFIX_LENGTH + size + 1;
       }
       const take = Math.min(this.expected - this.length, end - i);
-      frame.set(bytes.subarray(i, i + take), this.length);
-      this.length += take;
-      i += take;
+      if (take > SMALL_COPY) {
+        frame.set(bytes.subarray(i, i + take), this.length);
+        this.length += take;
+        i += take;
+      } else {
+        // A short copy byte by byte: cheaper than allocating a subarray view (1-byte chunks are common).
+        for (let k = 0; k < take; k++) frame[this.length++] = bytes[i++]!;
+      }
       if (this.length < this.expected) break;
       const size = this.expected - PREFIX_LENGTH - 1;
       const type = frame[8]!;
       const contents = frame.subarray(PREFIX_LENGTH, PREFIX_LENGTH + size);
       if (isChecksumAccepted(type, contents, frame[this.expected - 1]!)) {
         this.stats.packets++;
-        emit({ type, platform: frame[9]!, contents: contents.slice() });
+        this.emit({ type, platform: frame[9]!, contents: contents.slice() });
         this.length = 0;
         this.expected = 0;
       } else {
         this.stats.badChecksum++;
-        this.reject("bad-checksum", emit);
+        this.reject("bad-checksum");
       }
     }
   }
 
   /** Drops the current frame and rescans its bytes after the first header byte. */
-  private reject(reason: DiscardReason, emit: (p: Packet) => void): void {
+  private reject(reason: DiscardReason): void {
     const held = this.frame.slice(0, this.length);
     this.onDiscard?.(reason, held);
     this.length = 0;
     this.expected = 0;
     this.matched = 0;
-    this.consume(held, 1, held.length, emit);
+    this.consume(held, 1, held.length);
   }
 
   /** Counts `count` dropped bytes: the first ones of HEADER[0, held) followed by bytes[from, ...). */

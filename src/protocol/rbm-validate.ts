@@ -2,9 +2,10 @@
  * The rules of PROTOCOL.md §7 for a motion, whether parsed from an `.rbm` file or built in code. Errors make a
  * motion unusable on the RBC; warnings are worth telling the user about.
  */
-import { z } from "zod";
+
 import type { RbmMotion } from "./rbm.ts";
 import { HUNO_SERVO_COUNT, safeRange, servoLabel } from "./servo-limits.ts";
+import { z } from "./zod.ts";
 
 /** The RBC refuses frames closer than this (error 6). */
 export const RBC_MIN_FRAME_MS = 20;

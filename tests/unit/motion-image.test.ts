@@ -1,7 +1,8 @@
 import { readdirSync, readFileSync } from "node:fs";
 import { describe, expect, it } from "vitest";
 import { fromHex, toHex, writeU32BE, xorBytes } from "../../src/protocol/bytes.ts";
-import { memoryFootprint, motionImage, motionImageSize } from "../../src/protocol/motion-image.ts";
+import { memoryFootprint } from "../../src/protocol/catalog.ts";
+import { motionImage, motionImageSize } from "../../src/protocol/motion-image.ts";
 import { parseRbm, RbmError, type RbmMotion } from "../../src/protocol/rbm.ts";
 
 const SHARED = new URL("../../../shared/fixtures/", import.meta.url);

@@ -1,0 +1,171 @@
+import { spawn } from "node:child_process";
+import { existsSync, readFileSync } from "node:fs";
+import { dirname, join, normalize, relative, resolve } from "node:path";
+import { fileURLToPath } from "node:url";
+import { gzipSync } from "node:zlib";
+import { bytesBySource, groupShares, type SourceShare } from "./source-map.ts";
+
+/**
+ * Size of the JavaScript the first page load needs, from a production build: the module and classic scripts
+ * that `dist/index.html` loads (`<script src>`), the files it preloads (`<link rel="modulepreload">`), and —
+ * in case a preload link is missing — every chunk those import statically (never `import()`ed ones: views and
+ * the demo robot load later). Each file is gzipped on its own with node:zlib level 9 and the sizes summed.
+ * 1 KB = 1,000 bytes, as Vite prints sizes.
+ */
+
+export const PROJECT_ROOT = resolve(dirname(fileURLToPath(import.meta.url)), "..");
+export const INITIAL_JS_BUDGET_KB = 40;
+
+export interface InitialFile {
+  /** Path relative to the build folder. */
+  file: string;
+  bytes: number;
+  gzipBytes: number;
+  /** How index.html reaches it. */
+  via: "script" | "modulepreload" | "static import";
+}
+
+export interface BundleFigures {
+  outDir: string;
+  files: InitialFile[];
+  gzipBytes: number;
+  gzipKB: number;
+  rawBytes: number;
+  /** What fills the initial JavaScript, by package or src/ folder (generated characters, from source maps). */
+  contributors: SourceShare[];
+}
+
+/** Runs `vite build` into `outDir` (a child process; its output goes to this process's stderr). */
+export function viteBuild(outDir: string): Promise<void> {
+  const vite = join(PROJECT_ROOT, "node_modules", "vite", "bin", "vite.js");
+  return new Promise((resolveBuild, reject) => {
+    const child = spawn(process.execPath, [vite, "build", "--outDir", outDir, "--emptyOutDir"], {
+      cwd: PROJECT_ROOT,
+      stdio: ["ignore", "pipe", "pipe"],
+    });
+    let output = "";
+    const keep = (chunk: Buffer) => {
+      output += chunk.toString();
+      if (output.length > 20_000) output = output.slice(-20_000);
+    };
+    child.stdout.on("data", keep);
+    child.stderr.on("data", keep);
+    child.on("error", reject);
+    child.on("close", (code) => {
+      if (code === 0) resolveBuild();
+      else
+        reject(
+          new Error(`vite build failed (exit ${code}):\n${output.trim().split("\n").slice(-25).join("\n")}`),
+        );
+    });
+  });
+}
+
+const ATTRIBUTE = (name: string) => new RegExp(`\\b${name}\\s*=\\s*(?:"([^"]*)"|'([^']*)'|([^\\s>]+))`, "i");
+
+function attribute(tag: string, name: string): string | undefined {
+  const m = ATTRIBUTE(name).exec(tag);
+  return m ? (m[1] ?? m[2] ?? m[3]) : undefined;
+}
+
+/** Same-origin script and modulepreload URLs of an HTML page, in document order. */
+export function initialScripts(html: string): { url: string; via: "script" | "modulepreload" }[] {
+  const found: { url: string; via: "script" | "modulepreload" }[] = [];
+  const withoutComments = html.replace(/<!--[\s\S]*?-->/g, "");
+  for (const m of withoutComments.matchAll(/<(script|link)\b[^>]*>/gi)) {
+    const tag = m[0];
+    if (m[1]!.toLowerCase() === "script") {
+      const src = attribute(tag, "src");
+      if (src) found.push({ url: src, via: "script" });
+    } else if ((attribute(tag, "rel") ?? "").toLowerCase() === "modulepreload") {
+      const href = attribute(tag, "href");
+      if (href) found.push({ url: href, via: "modulepreload" });
+    }
+  }
+  return found.filter(({ url }) => !/^[a-z][a-z0-9+.-]*:|^\/\//i.test(url));
+}
+
+/** Relative specifiers of the static imports in a built chunk (`import x from"./a.js"`, `import"./b.js"`). */
+export function staticImports(code: string): string[] {
+  const out: string[] = [];
+  for (const m of code.matchAll(
+    /(?:^|[;\s}])import\s*(?:[\w$*{}\s,]+?\s*from\s*)?["'](\.{1,2}\/[^"']+)["']/g,
+  )) {
+    out.push(m[1]!);
+  }
+  for (const m of code.matchAll(
+    /(?:^|[;\s}])export\s*(?:\*|\{[^}]*\})\s*from\s*["'](\.{1,2}\/[^"']+)["']/g,
+  )) {
+    out.push(m[1]!);
+  }
+  return out;
+}
+
+function toFile(outDir: string, from: string, url: string): string {
+  const clean = url.split(/[?#]/)[0]!;
+  const abs = clean.startsWith("/") ? join(outDir, clean) : resolve(dirname(from), clean);
+  return normalize(abs);
+}
+
+/** Measures the initial JavaScript of a build folder. Throws with a clear message if it is not a build. */
+export function measureBundle(outDir: string): BundleFigures {
+  const indexHtml = join(outDir, "index.html");
+  if (!existsSync(indexHtml))
+    throw new Error(`${indexHtml} does not exist: build the app first (npm run build).`);
+  const html = readFileSync(indexHtml, "utf8");
+  const entries = initialScripts(html);
+  if (!entries.some((e) => e.via === "script")) throw new Error(`${indexHtml} loads no script.`);
+  const seen = new Map<string, InitialFile>();
+  const contributors: SourceShare[] = [];
+  const queue: { path: string; via: InitialFile["via"] }[] = entries.map((e) => ({
+    path: toFile(outDir, indexHtml, e.url),
+    via: e.via,
+  }));
+  while (queue.length > 0) {
+    const { path, via } = queue.shift()!;
+    if (seen.has(path)) continue;
+    if (!existsSync(path)) {
+      // A static-import match is a scan of minified code: skip what is not a file rather than fail on it.
+      if (via === "static import") continue;
+      throw new Error(`${relative(outDir, path)} is referenced by index.html but missing.`);
+    }
+    const bytes = readFileSync(path);
+    seen.set(path, {
+      file: relative(outDir, path),
+      bytes: bytes.length,
+      gzipBytes: gzipSync(bytes, { level: 9 }).length,
+      via,
+    });
+    const code = bytes.toString("utf8");
+    for (const spec of staticImports(code))
+      queue.push({ path: toFile(outDir, path, spec), via: "static import" });
+    const mapPath = `${path}.map`;
+    if (existsSync(mapPath)) {
+      try {
+        contributors.push(...bytesBySource(code, JSON.parse(readFileSync(mapPath, "utf8"))));
+      } catch {
+        // A map we cannot read only costs the breakdown.
+      }
+    }
+  }
+  const files = [...seen.values()];
+  const gzipBytes = files.reduce((n, f) => n + f.gzipBytes, 0);
+  return {
+    outDir,
+    files,
+    gzipBytes,
+    gzipKB: gzipBytes / 1000,
+    rawBytes: files.reduce((n, f) => n + f.bytes, 0),
+    contributors: groupShares(contributors),
+  };
+}
+
+/** "npm:zod 56%, src/device 11%, ..." for messages. */
+export function describeContributors(figures: BundleFigures, top = 6): string {
+  const total = figures.contributors.reduce((n, c) => n + c.chars, 0);
+  if (total === 0) return "(no source maps)";
+  return figures.contributors
+    .slice(0, top)
+    .map((c) => `${c.source} ${Math.round((100 * c.chars) / total)}%`)
+    .join(", ");
+}

@@ -1,0 +1,27 @@
+import type { CommandDef } from "../command.ts";
+import { infoCommand } from "./info.ts";
+import { logCommand } from "./log.ts";
+import { portsCommand } from "./ports.ts";
+import { runCommand } from "./run.ts";
+import { sensorsCommand } from "./sensors.ts";
+import { simCommand } from "./sim.ts";
+import { soundCommand } from "./sound.ts";
+import { uploadCommand } from "./upload.ts";
+import { zerosCommand } from "./zeros.ts";
+
+/** Every subcommand, in the order `rbc --help` lists them. */
+export const COMMAND_LIST: readonly CommandDef[] = [
+  portsCommand,
+  infoCommand,
+  zerosCommand,
+  uploadCommand,
+  runCommand,
+  soundCommand,
+  sensorsCommand,
+  logCommand,
+  simCommand,
+];
+
+export function findCommand(name: string): CommandDef | undefined {
+  return COMMAND_LIST.find((c) => c.name === name);
+}

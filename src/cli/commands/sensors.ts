@@ -1,0 +1,60 @@
+import { intOption, noExtraArguments, parseCommand } from "../args.ts";
+import type { CommandDef } from "../command.ts";
+import { connectRobot } from "../connect.ts";
+import { EXIT } from "../errors.ts";
+
+const OPTIONS = {
+  "interval-ms": { type: "string" },
+  count: { type: "string" },
+} as const;
+
+function sleep(ms: number, signal: AbortSignal): Promise<void> {
+  return new Promise((resolve) => {
+    if (signal.aborted) return resolve();
+    const timer = setTimeout(done, ms);
+    function done() {
+      clearTimeout(timer);
+      signal.removeEventListener("abort", done);
+      resolve();
+    }
+    signal.addEventListener("abort", done, { once: true });
+  });
+}
+
+export const sensorsCommand: CommandDef = {
+  name: "sensors",
+  summary: "stream the distance sensor and the accelerometer until Ctrl-C",
+  usage: "rbc sensors [--interval-ms MS] [--count N] (--port PATH | --demo)",
+  description: `
+Reads the distance sensor (cm, 10-50; 10 means nothing seen or no sensor) and the accelerometer (X, Y, Z,
+signed) every --interval-ms and prints one line per reading, until Ctrl-C (or --count readings). With
+--json each reading is one JSON object per line. Ctrl-C is the normal way to end it: exit code 0.`,
+  options: [
+    ["--interval-ms MS", "Time between readings (default 200, at least 20)."],
+    ["--count N", "Stop after N readings (default: until Ctrl-C)."],
+  ],
+  examples: ["rbc sensors --demo", "rbc sensors --port /dev/ttyUSB0 --interval-ms 500 --json"],
+  talksToRobot: true,
+  async run(env) {
+    const { values, positionals } = parseCommand("sensors", env.argv, OPTIONS);
+    noExtraArguments("sensors", positionals, 0);
+    const interval = intOption("sensors", "interval-ms", values["interval-ms"], 200, 20, 3_600_000);
+    const count = intOption("sensors", "count", values.count, Number.POSITIVE_INFINITY, 1, 1_000_000_000);
+    const robot = await connectRobot("sensors", values, env, { handlesInterrupt: true });
+    const started = performance.now();
+    if (!env.out.json) env.out.note("Reading the sensors; Ctrl-C to stop.");
+    for (let i = 0; i < count && !env.signal.aborted; i++) {
+      const distanceCm = await robot.client.readDistance();
+      const accelerometer = await robot.client.readAccelerometer();
+      const ms = Math.round(performance.now() - started);
+      env.out.jsonLine({ ms, distanceCm, accelerometer });
+      const { x, y, z } = accelerometer;
+      const axis = (v: number) => String(v).padStart(4);
+      env.out.line(
+        `${(ms / 1000).toFixed(1).padStart(7)} s  distance ${String(distanceCm).padStart(2)} cm   accel x ${axis(x)}  y ${axis(y)}  z ${axis(z)}`,
+      );
+      if (i + 1 < count) await sleep(interval, env.signal);
+    }
+    return EXIT.ok;
+  },
+};

@@ -1,0 +1,117 @@
+import { intOption, noExtraArguments, parseCommand } from "../args.ts";
+import type { CommandDef } from "../command.ts";
+import { EXIT, UsageError } from "../errors.ts";
+import { createPtyPair } from "../pty.ts";
+import { FAULT_KINDS, isFaultKind } from "../sim-faults.ts";
+
+const OPTIONS = {
+  pty: { type: "boolean" },
+  "latency-ms": { type: "string" },
+  "baud-pacing": { type: "boolean" },
+  fault: { type: "string" },
+  "fault-every": { type: "string" },
+  "fault-delay-ms": { type: "string" },
+  quiet: { type: "boolean" },
+} as const;
+
+export const simCommand: CommandDef = {
+  name: "sim",
+  summary: "serve the simulated RBC on a serial device (or a PTY pair it makes)",
+  usage: "rbc sim (--port PATH | --pty) [--latency-ms N] [--baud-pacing] [--fault KIND] [--quiet]",
+  description: `
+Runs the simulated RBC (firmware 2.23, serial 8958899989309, HUNO, just switched on) on a serial device,
+so that any program can talk to it as if it were a robot: rbc itself (\`rbc info --port …\`), the panel's
+tests, or other RBC software. It prints one line per request and per reply (hex and command name) until
+Ctrl-C. Exit code 0 on Ctrl-C.
+
+  --port PATH   serve this device, e.g. one end of a pair made with
+                socat -d -d pty,raw,echo=0 pty,raw,echo=0   (then connect clients to the other end)
+  --pty         make that pair with socat (if installed), serve one end and print the other end's path;
+                the pair goes away when rbc sim exits.
+
+Link modelling: --baud-pacing makes every byte take 86.8 µs (115200 baud) in each direction, and
+--latency-ms adds a USB adapter's delay to every reply (16 is a common FTDI setting), so uploads run at a
+realistic speed. --fault KIND disturbs the replies (every one, or every --fault-every N-th):
+  drop     the last content byte of a packet is lost (a download acknowledgement is lost)
+  corrupt  that byte is changed, so the checksum fails
+  split    the reply arrives byte by byte, 1 ms apart
+  delay    the reply arrives --fault-delay-ms late (default 500, beyond the client's 400 ms timeout)
+  silent   no reply at all
+  garbage  noise with a partial header arrives before the reply`,
+  options: [
+    ["--pty", "Create a PTY pair with socat and print the path for clients."],
+    ["--latency-ms N", "Delay every reply by N ms (default 0)."],
+    ["--baud-pacing", "Pace bytes at 115200 baud (86.8 µs per byte) in both directions."],
+    ["--fault KIND", `Disturb replies: ${FAULT_KINDS.join(", ")}.`],
+    ["--fault-every N", "Disturb only every N-th reply (default 1: all)."],
+    ["--fault-delay-ms N", "Delay of --fault delay (default 500)."],
+    ["--quiet", "Do not print the packet trace."],
+    ["-p, --port PATH", "The serial device to serve."],
+  ],
+  examples: [
+    "rbc sim --pty",
+    "rbc sim --port /dev/pts/5 --baud-pacing --latency-ms 16",
+    "rbc sim --pty --fault garbage --fault-every 3",
+  ],
+  talksToRobot: false,
+  async run(env) {
+    const { values, positionals } = parseCommand("sim", env.argv, OPTIONS);
+    noExtraArguments("sim", positionals, 0);
+    if (values.demo)
+      throw new UsageError("rbc sim serves the simulator itself; --demo is not needed.", "sim");
+    if (values.pty === (values.port !== undefined)) {
+      throw new UsageError("Give either --port PATH (a serial device to serve) or --pty.", "sim");
+    }
+    const fault = values.fault;
+    if (fault !== undefined && !isFaultKind(fault)) {
+      throw new UsageError(`Unknown --fault "${fault}"; use one of ${FAULT_KINDS.join(", ")}.`, "sim");
+    }
+    const link = {
+      latencyMs: intOption("sim", "latency-ms", values["latency-ms"], 0, 0, 10_000),
+      baudPacing: values["baud-pacing"] === true,
+      fault,
+      faultEvery: intOption("sim", "fault-every", values["fault-every"], 1, 1, 1_000_000),
+      faultDelayMs: intOption("sim", "fault-delay-ms", values["fault-delay-ms"], 500, 0, 60_000),
+    };
+    let path = values.port;
+    let clientPath: string | undefined;
+    if (values.pty) {
+      const pair = await createPtyPair();
+      env.onCleanup(() => pair.close());
+      path = pair.simPath;
+      clientPath = pair.clientPath;
+    }
+    if (path === undefined) throw new UsageError("Give --port PATH or --pty.", "sim");
+    const { serveSimulator } = await import("../sim-server.ts");
+    await serveSimulator({
+      ...link,
+      path,
+      quiet: values.quiet === true,
+      out: env.out,
+      signal: env.signal,
+      onReady: (sim) => {
+        const about = `firmware ${sim.firmware.major}.${sim.firmware.minor}, serial ${sim.serialNumber}`;
+        const model = [
+          link.baudPacing ? "115200 baud pacing" : undefined,
+          link.latencyMs > 0 ? `${link.latencyMs} ms latency` : undefined,
+          fault
+            ? `fault ${fault}${link.faultEvery > 1 ? ` on 1 reply in ${link.faultEvery}` : ""}`
+            : undefined,
+        ].filter((m) => m !== undefined);
+        env.out.jsonLine({
+          event: "ready",
+          path,
+          clientPath: clientPath ?? null,
+          ...link,
+          fault: fault ?? null,
+        });
+        env.out.line(
+          `Simulated RBC (${about}) listening on ${path}${model.length ? ` with ${model.join(", ")}` : ""}.`,
+        );
+        if (clientPath) env.out.line(`Clients connect to ${clientPath}, e.g.: rbc info --port ${clientPath}`);
+        env.out.line("Ctrl-C to stop.");
+      },
+    });
+    return EXIT.ok;
+  },
+};

@@ -1,0 +1,207 @@
+import { readFile } from "node:fs/promises";
+import { basename } from "node:path";
+import { RbcUploadError } from "../../device/errors.ts";
+import type { UploadResult } from "../../device/types.ts";
+import { motionImage } from "../../protocol/motion-image.ts";
+import { parseRbm, RbmError, type RbmMotion, type RbmValidation, validateRbm } from "../../protocol/rbm.ts";
+import { noExtraArguments, parseCommand } from "../args.ts";
+import type { CommandDef, RunEnv } from "../command.ts";
+import { confirm } from "../confirm.ts";
+import { connectRobot } from "../connect.ts";
+import { CliError, EXIT, UsageError } from "../errors.ts";
+import { ProgressBar } from "../progress.ts";
+import { issueLines, issuesJson, motionSummary, validationSummary } from "../upload-report.ts";
+import { errorCodeWords } from "./info.ts";
+
+const OPTIONS = {
+  reset: { type: "boolean" },
+  action: { type: "boolean" },
+  yes: { type: "boolean", short: "y" },
+} as const;
+
+/** Warnings listed in words; --json has them all. */
+const MAX_WARNINGS_SHOWN = 10;
+
+/** PROTOCOL.md §6.3 [decision] Safety: one sentence, before the first byte, on a real robot. */
+export const EXPERIMENTAL_NOTICE =
+  "Uploading to a real robot is experimental: the motion image layout rbc sends has not been verified on real RBC firmware.";
+export const HOLD_ADVICE =
+  "Run the uploaded motion first with the robot held or lying down, so that a wrong movement cannot make it fall.";
+
+interface Prepared {
+  area: "motion" | "action";
+  payload: Uint8Array;
+  motion: RbmMotion | undefined;
+}
+
+async function prepare(env: RunEnv, file: string, asAction: boolean): Promise<Prepared> {
+  let bytes: Uint8Array;
+  try {
+    bytes = new Uint8Array(await readFile(file));
+  } catch (e) {
+    const why = (e as NodeJS.ErrnoException).code === "ENOENT" ? "no such file" : String(e);
+    throw new CliError("file-unreadable", `Cannot read ${file}: ${why}.`);
+  }
+  if (asAction) {
+    env.out.note(
+      `${basename(file)}: uploaded as an action file, byte for byte (${bytes.length} bytes). No action file format is known, so its contents are not checked.`,
+    );
+    return { area: "action", payload: bytes, motion: undefined };
+  }
+  try {
+    const motion = parseRbm(new TextDecoder().decode(bytes));
+    return { area: "motion", payload: motionImage(motion), motion };
+  } catch (e) {
+    if (!(e instanceof RbmError)) throw e;
+    const validation: RbmValidation = { errors: [...e.issues], warnings: [] };
+    env.out.line(`${file} cannot be uploaded:`);
+    for (const line of issueLines("error", validation.errors)) env.out.line(line);
+    throw new CliError(
+      "rbm-invalid",
+      `${basename(file)} has ${e.issues.length} error${e.issues.length === 1 ? "" : "s"} (${e.message}); nothing was sent.`,
+      EXIT.failed,
+      { file, validation: issuesJson(validation) },
+    );
+  }
+}
+
+export const uploadCommand: CommandDef = {
+  name: "upload",
+  summary: "check a motion file (.rbm) and upload it to the robot's memory",
+  usage: "rbc upload FILE.rbm [--reset] [--action] [--yes] (--port PATH | --demo)",
+  description: `
+Reads a Motionbuilder motion file (.rbm), checks it against the RBC's rules (errors stop the upload;
+warnings are shown) and uploads it to the robot's motion memory, chunk by chunk, with a progress bar on
+stderr. Afterwards it reports the free memory and the robot's error code in words. The robot keeps up to
+20 downloaded motions: the first 10 play with \`rbc run 12\` … \`rbc run 21\`, the next ones with 33 … 42.
+
+On a real robot (not --demo) uploading is experimental: the byte layout of the uploaded motion is the
+project's reconstruction and has not been verified on real firmware. rbc says so and asks for
+confirmation (--yes, or y at the prompt); run the motion first with the robot held or lying down.
+
+Ctrl-C during the upload stops after the chunk in flight, makes the robot abandon the download, reports how
+many bytes were acknowledged and what the robot's memory holds, and exits with code 130.`,
+  options: [
+    [
+      "--reset",
+      "First reset the memory pointer: forgets every downloaded motion (or action), frees the memory.",
+    ],
+    ["--action", "Upload FILE byte for byte as an action file (format unverified; not checked)."],
+    ["-y, --yes", "Confirm an upload to a real robot without the prompt."],
+  ],
+  examples: [
+    "rbc upload ../shared/fixtures/rbm/Hi.rbm --demo",
+    "rbc upload Hi.rbm --reset --port /dev/ttyUSB0",
+    "rbc upload Hi.rbm --port /dev/ttyUSB0 --yes --json",
+  ],
+  talksToRobot: true,
+  async run(env) {
+    const { values, positionals } = parseCommand("upload", env.argv, OPTIONS);
+    noExtraArguments("upload", positionals, 1);
+    const file = positionals[0];
+    if (file === undefined)
+      throw new UsageError("Give the motion file to upload, e.g. rbc upload Hi.rbm.", "upload");
+    const prepared = await prepare(env, file, values.action === true);
+    const real = !values.demo;
+    if (real && !values.yes && !env.stdin.isTTY) {
+      throw new CliError(
+        "confirmation-required",
+        `${EXPERIMENTAL_NOTICE} Add --yes to upload anyway (nothing was sent).`,
+      );
+    }
+
+    const robot = await connectRobot("upload", values, env, { handlesInterrupt: true });
+    const { client } = robot;
+    const serialNumber = await client.readSerialNumber();
+    let validation: RbmValidation = { errors: [], warnings: [] };
+    if (prepared.motion) {
+      validation = validateRbm(prepared.motion, { connectedSerialNumber: serialNumber });
+      env.out.line(motionSummary(file, prepared.motion, prepared.payload.length));
+      env.out.line(validationSummary(validation));
+      const shown = issueLines("warning", validation.warnings);
+      for (const line of shown.slice(0, MAX_WARNINGS_SHOWN)) env.out.line(line);
+      if (shown.length > MAX_WARNINGS_SHOWN) {
+        env.out.line(`  … and ${shown.length - MAX_WARNINGS_SHOWN} more warnings (--json lists them all).`);
+      }
+    }
+
+    if (real) {
+      env.out.note(EXPERIMENTAL_NOTICE);
+      env.out.note(HOLD_ADVICE);
+      if (values.reset)
+        env.out.note(`--reset will first forget every downloaded ${prepared.area} on the robot.`);
+      if (!values.yes && !(await confirm(env, `Upload ${basename(file)} to the robot on ${robot.where}?`))) {
+        throw new CliError("not-confirmed", "Upload not confirmed; nothing was sent.");
+      }
+    }
+    if (env.signal.aborted) throw new CliError("interrupted", "Nothing was sent.", EXIT.interrupted);
+
+    if (values.reset) {
+      await client.resetMemoryPointer(prepared.area);
+      env.out.line(
+        `Reset the ${prepared.area} memory pointer: the robot's downloaded ${prepared.area}s are forgotten.`,
+      );
+    }
+
+    const bar = new ProgressBar(env.out);
+    let result: UploadResult;
+    try {
+      const options = {
+        signal: env.signal,
+        onProgress: (p: { acknowledged: number; total: number }) => bar.update(p.acknowledged, p.total),
+      };
+      result =
+        prepared.area === "motion"
+          ? await client.writeMotion(prepared.payload, options)
+          : await client.writeAction(prepared.payload, options);
+    } catch (e) {
+      bar.finish();
+      if (e instanceof RbcUploadError && e.code === "cancelled") {
+        env.out.note(
+          `rbc: upload interrupted: ${e.acknowledged} of ${e.total} bytes were acknowledged (outcome: ${e.outcome}). ${e.message}`,
+        );
+        env.out.result({
+          ok: false,
+          error: {
+            code: "interrupted",
+            message: e.message,
+            acknowledged: e.acknowledged,
+            total: e.total,
+            outcome: e.outcome,
+          },
+        });
+        return EXIT.interrupted;
+      }
+      throw e;
+    }
+    bar.finish();
+
+    const n = (v: number) => v.toLocaleString("en-US");
+    const seconds = result.elapsedMs / 1000;
+    const rate = seconds > 0 ? Math.round(result.total / seconds) : 0;
+    env.out.result({
+      ok: true,
+      file,
+      demo: robot.demo,
+      validation: issuesJson(validation),
+      ...result,
+      bytesPerSecond: rate,
+      error: errorCodeWords(result.errorCode),
+    });
+    env.out.line(
+      `Uploaded ${n(result.total)} bytes in ${result.chunks} chunks in ${seconds.toFixed(1)} s (${n(rate)} bytes/s).`,
+    );
+    env.out.line(`Free ${result.area} memory: ${n(result.freeAfter)} bytes (was ${n(result.freeBefore)}).`);
+    env.out.line(`Error code: ${errorCodeWords(result.errorCode)}.`);
+    if (values.reset && result.area === "motion") {
+      env.out.line(
+        `It is downloaded motion 1: play it with \`rbc run 12\`${real ? " — first with the robot held or lying down" : ""}.`,
+      );
+    } else if (result.area === "motion") {
+      env.out.line(
+        "Downloaded motions play with `rbc run 12` … `rbc run 21` (1-10) and 33 … 42 (11-20), in upload order.",
+      );
+    }
+    return EXIT.ok;
+  },
+};

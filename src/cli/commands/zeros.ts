@@ -1,0 +1,202 @@
+import type { ZeroWriteResult } from "../../device/types.ts";
+import { HUNO_JOINT_NAMES } from "../../protocol/servo-limits.ts";
+import { diffZeros, STANDARD_ZEROS, ZERO_COUNT, zeroProblems, zeroRange } from "../../protocol/zeros.ts";
+import { serialMismatchWarning } from "../../protocol/zeros-backup.ts";
+import { formatFirmware } from "../../shared/format.ts";
+import { type GlobalValues, noExtraArguments, parseCommand } from "../args.ts";
+import type { CommandDef, RunEnv } from "../command.ts";
+import { connectRobot, type Robot } from "../connect.ts";
+import { CliError, EXIT, UsageError } from "../errors.ts";
+import { readBackupFile, refuseExisting, writeAutomaticBackup, writeBackupFile } from "../zeros-files.ts";
+
+const OPTIONS = {
+  "backup-dir": { type: "string" },
+  force: { type: "boolean" },
+} as const;
+
+/** "125,202,162,…" or 16 separate words → numbers; a malformed list is a usage error. */
+export function parseZeroList(words: readonly string[]): number[] {
+  const parts = words.flatMap((w) => w.split(/[,\s]+/)).filter((p) => p !== "");
+  if (parts.length === 0) throw new UsageError("Give the 16 zero values, e.g. 125,202,162,66,…", "zeros");
+  return parts.map((p) => {
+    if (!/^\d{1,3}$/.test(p)) throw new UsageError(`"${p}" is not a whole number from 0 to 254.`, "zeros");
+    return Number(p);
+  });
+}
+
+function zerosTable(zeros: readonly number[]): string[] {
+  const lines = ["  servo  joint                 value  standard  allowed"];
+  zeros.forEach((v, id) => {
+    const { min, max } = zeroRange(id);
+    const d = v - STANDARD_ZEROS[id]!;
+    const delta = d === 0 ? "" : d > 0 ? ` (+${d})` : ` (${d})`;
+    const joint = (HUNO_JOINT_NAMES[id] ?? "").padEnd(20);
+    lines.push(
+      `  ${String(id).padStart(5)}  ${joint}  ${String(v).padStart(5)}${delta.padEnd(6)} ${String(STANDARD_ZEROS[id]).padStart(4)}    ${min}-${max}`,
+    );
+  });
+  return lines;
+}
+
+async function identify(robot: Robot) {
+  const serialNumber = await robot.client.readSerialNumber();
+  const zeros = await robot.client.readZeros();
+  return { serialNumber, firmware: formatFirmware(robot.identity.firmware), zeros };
+}
+
+/** Backup first, then write and verify (shared by `write` and `restore`). */
+async function backupAndWrite(
+  env: RunEnv,
+  robot: Robot,
+  values: { "backup-dir"?: string },
+  target: readonly number[],
+  current: { serialNumber: string; firmware: string; zeros: number[] },
+): Promise<{ backupFile: string | undefined; result: ZeroWriteResult | undefined }> {
+  const changes = diffZeros(current.zeros, target);
+  if (changes.length === 0) {
+    env.out.line(`The robot already holds these zeros (${target.join(",")}); nothing was written.`);
+    return { backupFile: undefined, result: undefined };
+  }
+  const backupFile = await writeAutomaticBackup(values["backup-dir"] ?? env.cwd, current);
+  env.out.note(
+    `Backed up the current zeros to ${backupFile} (restore with: rbc zeros restore ${backupFile}).`,
+  );
+  env.out.line(
+    `Changing ${changes.length} servo${changes.length > 1 ? "s" : ""}: ${changes.map((c) => `${c.id}: ${c.from} → ${c.to}`).join(", ")}`,
+  );
+  const result = await robot.client.writeZeros(target);
+  env.out.line(`Written and verified: the robot reads back ${result.readBack.join(",")}.`);
+  return { backupFile, result };
+}
+
+export const zerosCommand: CommandDef = {
+  name: "zeros",
+  summary: "read, write, back up or restore the servo zero positions",
+  usage: "rbc zeros (read | write V0,V1,…,V15 | backup [FILE] | restore FILE) (--port PATH | --demo)",
+  description: `
+The zero positions are 16 calibration values, one per servo 0-15, stored in the RBC. Every motion is
+shifted by them, so wrong values make the robot stand crooked.
+
+  read             Prints the 16 values beside the standard table and the allowed range.
+  write V0,…,V15   Writes 16 new values (comma separated, or 16 separate words). Each must lie within ±15
+                   of the standard table 125 202 162 66 108 124 48 88 184 142 90 40 125 161 210 127, or the
+                   RBC refuses the whole table: rbc checks this first and sends nothing if a value is out of
+                   range. Before writing it saves the current values to rbc-zeros-<serial>-<date>.json
+                   (in --backup-dir, default the current folder), and after writing it reads them back to
+                   verify.
+  backup [FILE]    Saves the current values to FILE (default rbc-zeros-<serial>-<date>.json), in the same
+                   format as the panel's backups.
+  restore FILE     Writes the values of a backup file (checked first; a warning if it was saved from
+                   another robot), with the same automatic backup and verification as write.`,
+  options: [
+    ["--backup-dir DIR", "Where write and restore save the automatic backup (default: the current folder)."],
+    ["--force", "Let backup replace an existing FILE."],
+  ],
+  examples: [
+    "rbc zeros read --demo",
+    "rbc zeros write 125,202,162,66,108,124,48,88,184,142,90,40,125,161,210,127 --demo",
+    "rbc zeros backup my-robot.json --port /dev/ttyUSB0",
+    "rbc zeros restore my-robot.json --port /dev/ttyUSB0",
+  ],
+  talksToRobot: true,
+  async run(env) {
+    const { values, positionals } = parseCommand("zeros", env.argv, OPTIONS);
+    const [action, ...args] = positionals;
+    switch (action) {
+      case "read":
+        return read(env, values, args);
+      case "write":
+        return write(env, values, args);
+      case "backup":
+        return backup(env, values, args);
+      case "restore":
+        return restore(env, values, args);
+      case undefined:
+        throw new UsageError(
+          "Say what to do: zeros read, zeros write, zeros backup or zeros restore.",
+          "zeros",
+        );
+      default:
+        throw new UsageError(`Unknown zeros action "${action}" (read, write, backup, restore).`, "zeros");
+    }
+  },
+};
+
+type Values = GlobalValues & { "backup-dir"?: string; force?: boolean };
+
+async function read(env: RunEnv, values: Values, args: string[]): Promise<number> {
+  noExtraArguments("zeros", args, 0);
+  const robot = await connectRobot("zeros", values, env);
+  const current = await identify(robot);
+  env.out.result({ serialNumber: current.serialNumber, zeros: current.zeros });
+  env.out.line(`Zero positions of robot ${current.serialNumber} (${robot.where}):`);
+  for (const line of zerosTable(current.zeros)) env.out.line(line);
+  env.out.line(`As a list: ${current.zeros.join(",")}`);
+  return EXIT.ok;
+}
+
+async function write(env: RunEnv, values: Values, args: string[]): Promise<number> {
+  const target = parseZeroList(args);
+  const problems = zeroProblems(target);
+  if (problems.length > 0) {
+    throw new CliError(
+      "zero-out-of-range",
+      `Not written: ${problems.map((p) => p.message).join(" ")} Nothing was sent to the robot.`,
+    );
+  }
+  const robot = await connectRobot("zeros", values, env);
+  const current = await identify(robot);
+  const { backupFile, result } = await backupAndWrite(env, robot, values, target, current);
+  env.out.result({
+    previous: current.zeros,
+    written: target,
+    readBack: result?.readBack ?? current.zeros,
+    backupFile: backupFile ?? null,
+    changed: result !== undefined,
+  });
+  return EXIT.ok;
+}
+
+async function backup(env: RunEnv, values: Values, args: string[]): Promise<number> {
+  noExtraArguments("zeros", args, 1);
+  const file = args[0];
+  if (file !== undefined) await refuseExisting(file, values.force === true);
+  const robot = await connectRobot("zeros", values, env);
+  const current = await identify(robot);
+  const path = file ?? (await writeAutomaticBackup(env.cwd, current));
+  const saved = file ? await writeBackupFile(file, current, values.force === true) : undefined;
+  env.out.result({
+    file: path,
+    zeros: current.zeros,
+    serialNumber: current.serialNumber,
+    savedAt: saved?.savedAt,
+  });
+  env.out.line(`Saved the zeros of robot ${current.serialNumber} to ${path}: ${current.zeros.join(",")}`);
+  return EXIT.ok;
+}
+
+async function restore(env: RunEnv, values: Values, args: string[]): Promise<number> {
+  noExtraArguments("zeros", args, 1);
+  const file = args[0];
+  if (file === undefined)
+    throw new UsageError("Give the backup file to restore: rbc zeros restore FILE.", "zeros");
+  const saved = await readBackupFile(file);
+  if (saved.zeros.length !== ZERO_COUNT)
+    throw new CliError("backup-wrong-count", `${file} does not hold 16 values.`);
+  const robot = await connectRobot("zeros", values, env);
+  const current = await identify(robot);
+  const warning = serialMismatchWarning(saved, current.serialNumber);
+  if (warning) env.out.note(`Warning: ${warning}`);
+  env.out.line(`Restoring ${file} (saved ${saved.savedAt} from robot ${saved.serialNumber || "(unknown)"}).`);
+  const { backupFile, result } = await backupAndWrite(env, robot, values, saved.zeros, current);
+  env.out.result({
+    file,
+    previous: current.zeros,
+    written: saved.zeros,
+    readBack: result?.readBack ?? current.zeros,
+    backupFile: backupFile ?? null,
+    changed: result !== undefined,
+    warning: warning ?? null,
+  });
+  return EXIT.ok;
+}

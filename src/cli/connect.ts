@@ -1,0 +1,104 @@
+import { RbcClient } from "../device/rbc-client.ts";
+import type { DeviceIdentity } from "../device/types.ts";
+import type { Transport } from "../link/transport.ts";
+import { WebSerialTransport } from "../link/web-serial-transport.ts";
+import { MockSerialPort } from "../sim/mock-serial-port.ts";
+import { SimulatedRbc } from "../sim/simulated-rbc.ts";
+import type { GlobalValues } from "./args.ts";
+import type { RunEnv } from "./command.ts";
+import { UsageError } from "./errors.ts";
+import { formatLogEntry, logEntryJson } from "./packet-trace.ts";
+
+/** A connected robot: the real one on a serial port, or the demo robot. */
+export interface Robot {
+  client: RbcClient;
+  identity: DeviceIdentity;
+  /** True for `--demo` (the built-in simulated RBC). */
+  demo: boolean;
+  /** "the demo robot" or the port path, for messages. */
+  where: string;
+  close(): Promise<void>;
+}
+
+export interface ConnectOptions {
+  /**
+   * The command reacts to Ctrl-C itself once connected (an upload must end its download cleanly). Otherwise
+   * Ctrl-C closes the connection, which ends whatever request is waiting.
+   */
+  handlesInterrupt?: boolean;
+}
+
+/** Which robot the options name: `--demo`, `--port PATH`, or the RBC_PORT environment variable. */
+export function robotTarget(command: string, values: GlobalValues, env: NodeJS.ProcessEnv) {
+  if (values.demo && values.port !== undefined) {
+    throw new UsageError("Use either --port or --demo, not both.", command);
+  }
+  if (values.demo) return { demo: true as const };
+  const port = values.port ?? env.RBC_PORT;
+  if (port === undefined || port === "") {
+    throw new UsageError(
+      "Say which robot: --port PATH (list ports with `rbc ports`), or --demo for the built-in simulated robot.",
+      command,
+    );
+  }
+  return { demo: false as const, port };
+}
+
+/**
+ * The demo robot: a SimulatedRbc (firmware 2.23, HUNO, just switched on) behind a MockSerialPort with 2 ms of
+ * adapter latency and a WebSerialTransport on the real clock — the same stack as the panel's "demo robot".
+ */
+function demoTransport(): { transport: Transport; dispose: () => void } {
+  const sim = new SimulatedRbc();
+  const port = new MockSerialPort(sim, { latencyMs: 2 });
+  return { transport: new WebSerialTransport(port), dispose: () => sim.dispose() };
+}
+
+/** Opens the named robot, handshakes (RbcClient.connect) and registers its closing with `env`. */
+export async function connectRobot(
+  command: string,
+  values: GlobalValues,
+  env: RunEnv,
+  options: ConnectOptions = {},
+): Promise<Robot> {
+  const target = robotTarget(command, values, env.env);
+  let transport: Transport;
+  let dispose = () => {};
+  if (target.demo) {
+    ({ transport, dispose } = demoTransport());
+  } else {
+    // Loaded here only: the native serialport binding is not needed for --demo (and never in the web app).
+    const { NodeSerialTransport } = await import("../link/node-serial-transport.ts");
+    transport = new NodeSerialTransport(target.port);
+  }
+  const client = new RbcClient(transport);
+  if (values.log) {
+    const t0 = client.clock.now();
+    client.log.on((entry) =>
+      env.out.err(`${values.json ? JSON.stringify(logEntryJson(entry, t0)) : formatLogEntry(entry, t0)}\n`),
+    );
+  }
+  let closed: Promise<void> | undefined;
+  const close = () => {
+    closed ??= client.close().finally(dispose);
+    return closed;
+  };
+  env.onCleanup(close);
+  const onAbort = () => void close();
+  env.signal.addEventListener("abort", onAbort, { once: true });
+  try {
+    const identity = await client.connect();
+    if (options.handlesInterrupt) env.signal.removeEventListener("abort", onAbort);
+    return {
+      client,
+      identity,
+      demo: target.demo,
+      where: target.demo ? "the demo robot" : target.port,
+      close,
+    };
+  } catch (e) {
+    env.signal.removeEventListener("abort", onAbort);
+    await close();
+    throw e;
+  }
+}

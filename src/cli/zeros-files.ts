@@ -1,0 +1,109 @@
+/**
+ * Zero backup files on disk, in the panel's format (`{ format: "rbc-zeros", version: 1, serialNumber,
+ * firmware, savedAt, zeros }`). The format, its zod schema and the ±15 check live in src/protocol/zeros-backup.ts,
+ * which is DOM-free; this module only adds the file system.
+ */
+import { constants } from "node:fs";
+import { access, readFile, writeFile } from "node:fs/promises";
+import { join } from "node:path";
+import {
+  createZerosBackup,
+  parseZerosBackup,
+  serializeZerosBackup,
+  type ZerosBackup,
+  zerosBackupFileName,
+} from "../protocol/zeros-backup.ts";
+import { CliError } from "./errors.ts";
+
+export interface BackupSource {
+  serialNumber: string;
+  firmware: string;
+  zeros: readonly number[];
+}
+
+async function exists(path: string): Promise<boolean> {
+  try {
+    await access(path, constants.F_OK);
+    return true;
+  } catch {
+    return false;
+  }
+}
+
+/**
+ * Writes the automatic backup taken before a zero write: `rbc-zeros-<serial>-<YYYY-MM-DD>.json` in `dir`, or
+ * `…-2.json`, `…-3.json` when that day's file exists (an earlier backup is never overwritten). Returns the path.
+ */
+export async function writeAutomaticBackup(
+  dir: string,
+  source: BackupSource,
+  now = new Date(),
+): Promise<string> {
+  const base = zerosBackupFileName(source.serialNumber, now).replace(/\.json$/, "");
+  const text = serializeZerosBackup(createZerosBackup({ ...source, savedAt: now }));
+  for (let n = 1; n < 1000; n++) {
+    const path = join(dir, n === 1 ? `${base}.json` : `${base}-${n}.json`);
+    try {
+      await writeFile(path, text, { flag: "wx" });
+      return path;
+    } catch (e) {
+      if ((e as NodeJS.ErrnoException).code !== "EEXIST") throw backupWriteError(path, e);
+    }
+  }
+  throw new CliError("backup-failed", `Could not find a free backup file name in ${dir}.`);
+}
+
+function backupWriteError(path: string, e: unknown): CliError {
+  const why = e instanceof Error ? e.message : String(e);
+  return new CliError(
+    "backup-failed",
+    `Could not write the zero backup ${path} (${why}); nothing was sent to the robot.`,
+  );
+}
+
+/** Refuses an existing `path` unless `overwrite` (checked before connecting, and again when writing). */
+export async function refuseExisting(path: string, overwrite: boolean): Promise<void> {
+  if (!overwrite && (await exists(path))) {
+    throw new CliError(
+      "file-exists",
+      `${path} already exists. Choose another name, or add --force to replace it.`,
+    );
+  }
+}
+
+/** Writes a backup to `path`; refuses to replace an existing file unless `overwrite`. */
+export async function writeBackupFile(
+  path: string,
+  source: BackupSource,
+  overwrite: boolean,
+  now = new Date(),
+): Promise<ZerosBackup> {
+  if (!overwrite && (await exists(path))) {
+    throw new CliError(
+      "file-exists",
+      `${path} already exists. Choose another name, or add --force to replace it.`,
+    );
+  }
+  const backup = createZerosBackup({ ...source, savedAt: now });
+  try {
+    await writeFile(path, serializeZerosBackup(backup));
+  } catch (e) {
+    const why = e instanceof Error ? e.message : String(e);
+    throw new CliError("backup-failed", `Could not write ${path} (${why}).`);
+  }
+  return backup;
+}
+
+/** Reads and checks a backup file (zod schema and the ±15 rule); a refusal says what is wrong. */
+export async function readBackupFile(path: string): Promise<ZerosBackup> {
+  let text: string;
+  try {
+    text = await readFile(path, "utf8");
+  } catch (e) {
+    const why = (e as NodeJS.ErrnoException).code === "ENOENT" ? "no such file" : String(e);
+    throw new CliError("file-unreadable", `Cannot read ${path}: ${why}.`);
+  }
+  const parsed = parseZerosBackup(text);
+  if (!parsed.ok) throw new CliError(`backup-${parsed.problem}`, `${path}: ${parsed.message}`);
+  return parsed.backup;
+}

@@ -1,0 +1,28 @@
+import type { TemplateResult } from "lit-html";
+import type { AppState } from "../app-state.ts";
+import type { PacketLog } from "../packet-log.ts";
+import type { Session } from "../session.ts";
+import type { Store } from "../store.ts";
+
+/** What every view gets to render and act. */
+export interface ViewContext {
+  state: AppState;
+  store: Store<AppState>;
+  session: Session;
+  packetLog: PacketLog;
+}
+
+export interface AppView {
+  /** When true, the connect card takes the view's place while no robot is connected. */
+  needsRobot: boolean;
+  render(ctx: ViewContext): TemplateResult;
+  /** Called when the view is shown with a robot connected (once per view and connection). */
+  activate?(ctx: ViewContext): void;
+}
+
+/** One entry of the side navigation. `load` may be a dynamic import, so the view's code arrives when needed. */
+export interface ViewRegistration {
+  id: string;
+  label: string;
+  load: () => Promise<{ default: AppView }>;
+}

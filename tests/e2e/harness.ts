@@ -1,0 +1,220 @@
+/**
+ * Shared set-up of the browser tests: the app built once (cached by a hash of its inputs, so the test files
+ * share one build), served by Vite's preview server on 127.0.0.1, the fake `navigator.serial` bundled to an
+ * IIFE string, and one Chromium per test file.
+ */
+import { createHash } from "node:crypto";
+import { existsSync } from "node:fs";
+import { mkdir, readdir, readFile, rename, rm, stat, writeFile } from "node:fs/promises";
+import { createServer } from "node:net";
+import { tmpdir } from "node:os";
+import { join, relative } from "node:path";
+import { fileURLToPath } from "node:url";
+import { type Browser, type BrowserContext, chromium, type Page } from "playwright-core";
+import { build, preview } from "vite";
+import type { RbcTestOptions } from "./rbc-test-globals.ts";
+
+export const ROOT = fileURLToPath(new URL("../..", import.meta.url));
+const CHROMIUM = process.env.CHROMIUM_PATH ?? "/usr/bin/chromium";
+const CACHE_PREFIX = "rbc-panel-e2e-";
+
+/** The files a build depends on. */
+const INPUTS = [
+  "src",
+  "public",
+  "index.html",
+  "vite.config.ts",
+  "package-lock.json",
+  "tests/e2e/fake-serial-entry.ts",
+];
+
+async function listFiles(path: string): Promise<string[]> {
+  const info = await stat(path).catch(() => undefined);
+  if (!info) return [];
+  if (info.isFile()) return [path];
+  const out: string[] = [];
+  for (const entry of await readdir(path)) out.push(...(await listFiles(join(path, entry))));
+  return out;
+}
+
+async function inputsHash(): Promise<string> {
+  const hash = createHash("sha256");
+  const files = (await Promise.all(INPUTS.map((p) => listFiles(join(ROOT, p))))).flat().sort();
+  for (const file of files) {
+    hash.update(relative(ROOT, file));
+    hash.update(await readFile(file));
+  }
+  return hash.digest("hex").slice(0, 16);
+}
+
+async function buildFakeSerial(): Promise<string> {
+  const result = await build({
+    configFile: false,
+    root: ROOT,
+    publicDir: false,
+    logLevel: "warn",
+    build: {
+      write: false,
+      minify: false,
+      target: "es2022",
+      lib: { entry: join(ROOT, "tests/e2e/fake-serial-entry.ts"), formats: ["iife"], name: "RbcFakeSerial" },
+    },
+  });
+  const outputs = Array.isArray(result) ? result : [result];
+  for (const output of outputs) {
+    if (!("output" in output)) continue;
+    for (const chunk of output.output) if (chunk.type === "chunk" && chunk.isEntry) return chunk.code;
+  }
+  throw new Error("the fake serial bundle produced no entry chunk");
+}
+
+/** Builds the app and the fake serial script once per set of inputs; later calls reuse the build. */
+export async function buildOnce(): Promise<{ outDir: string; fakeSerial: string }> {
+  const dir = join(tmpdir(), `${CACHE_PREFIX}${await inputsHash()}`);
+  const outDir = join(dir, "app");
+  const fakeFile = join(dir, "fake-serial.iife.js");
+  if (!existsSync(join(dir, ".complete"))) {
+    for (const entry of await readdir(tmpdir())) {
+      if (entry.startsWith(CACHE_PREFIX)) await rm(join(tmpdir(), entry), { recursive: true, force: true });
+    }
+    const work = `${dir}.tmp-${process.pid}`;
+    await mkdir(work, { recursive: true });
+    await build({
+      root: ROOT,
+      configFile: join(ROOT, "vite.config.ts"),
+      logLevel: "warn",
+      build: { outDir: join(work, "app"), emptyOutDir: true },
+    });
+    await writeFile(join(work, "fake-serial.iife.js"), await buildFakeSerial());
+    await writeFile(join(work, ".complete"), new Date().toISOString());
+    await rename(work, dir);
+  }
+  return { outDir, fakeSerial: await readFile(fakeFile, "utf8") };
+}
+
+function freePort(): Promise<number> {
+  return new Promise((resolve, reject) => {
+    const server = createServer();
+    server.unref();
+    server.on("error", reject);
+    server.listen(0, "127.0.0.1", () => {
+      const address = server.address();
+      const port = typeof address === "object" && address ? address.port : 0;
+      server.close(() => resolve(port));
+    });
+  });
+}
+
+export const CHROMIUM_ARGS = [
+  "--no-sandbox",
+  "--disable-gpu",
+  "--disable-quic",
+  "--no-first-run",
+  "--disable-background-networking",
+  "--disable-component-update",
+  "--disable-sync",
+];
+
+export interface PageOptions {
+  /** Install the fake navigator.serial (default true). */
+  fakeSerial?: boolean;
+  /** Remove navigator.serial entirely (a browser without Web Serial). */
+  noSerial?: boolean;
+  options?: RbcTestOptions;
+  viewport?: { width: number; height: number };
+  /** Service workers are blocked unless a test needs one (offline). */
+  serviceWorkers?: "allow" | "block";
+}
+
+export interface AppHarness {
+  url: string;
+  origin: string;
+  browser: Browser;
+  newPage(options?: PageOptions): Promise<{ context: BrowserContext; page: Page }>;
+  close(): Promise<void>;
+}
+
+/** Records CSP violations into window.__cspViolations, from the very start of every page. */
+const CSP_WATCH = `window.__cspViolations = [];
+document.addEventListener("securitypolicyviolation", (e) => {
+  window.__cspViolations.push(e.violatedDirective + " " + (e.blockedURI || "inline") + " " + e.sourceFile + ":" + e.lineNumber);
+});`;
+
+const NO_SERIAL = `delete Navigator.prototype.serial; delete navigator.serial;`;
+
+export async function startHarness(): Promise<AppHarness> {
+  const { outDir, fakeSerial } = await buildOnce();
+  const port = await freePort();
+  const server = await preview({
+    root: ROOT,
+    configFile: join(ROOT, "vite.config.ts"),
+    logLevel: "warn",
+    build: { outDir },
+    preview: { host: "127.0.0.1", port, strictPort: true, open: false },
+  });
+  const origin = `http://127.0.0.1:${port}`;
+  const browser = await chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS });
+  const contexts = new Set<BrowserContext>();
+  return {
+    url: `${origin}/`,
+    origin,
+    browser,
+    async newPage(options = {}) {
+      const context = await browser.newContext({
+        viewport: options.viewport ?? { width: 1280, height: 800 },
+        serviceWorkers: options.serviceWorkers ?? "block",
+        acceptDownloads: true,
+        reducedMotion: "reduce",
+      });
+      contexts.add(context);
+      context.on("close", () => contexts.delete(context));
+      await context.addInitScript({ content: CSP_WATCH });
+      if (options.noSerial) {
+        await context.addInitScript({ content: NO_SERIAL });
+      } else if (options.fakeSerial ?? true) {
+        await context.addInitScript({
+          content: `window.__rbcTestOptions = ${JSON.stringify(options.options ?? {})};`,
+        });
+        await context.addInitScript({ content: fakeSerial });
+      }
+      const page = await context.newPage();
+      return { context, page };
+    },
+    async close() {
+      for (const context of contexts) await context.close().catch(() => {});
+      await browser.close().catch(() => {});
+      await server.close();
+    },
+  };
+}
+
+/** Collects what a page should never do: requests to other origins, page errors, CSP violations. */
+export function watchPage(page: Page, origin: string): { foreignRequests: string[]; errors: string[] } {
+  const seen = { foreignRequests: [] as string[], errors: [] as string[] };
+  page.on("request", (request) => {
+    const url = request.url();
+    if (url.startsWith("blob:") || url.startsWith("data:")) return;
+    if (new URL(url).origin !== origin) seen.foreignRequests.push(url);
+  });
+  page.on("pageerror", (error) => seen.errors.push(`pageerror: ${error.message}`));
+  page.on("console", (message) => {
+    if (message.type() === "error") seen.errors.push(`console: ${message.text()}`);
+  });
+  return seen;
+}
+
+export async function cspViolations(page: Page): Promise<string[]> {
+  return page.evaluate(() => window.__cspViolations ?? []);
+}
+
+/** Loads the app and connects through "Connect robot" (the fake chooser grants the mock port). */
+export async function connectRobot(page: Page, url: string): Promise<void> {
+  await page.goto(url);
+  await page.getByRole("button", { name: "Connect robot" }).click();
+  await page.getByTestId("device-card").waitFor();
+}
+
+/** An element's text with runs of white space collapsed (templates indent their text). */
+export function squash(text: string | null): string {
+  return (text ?? "").replace(/\s+/g, " ").trim();
+}

@@ -1,0 +1,154 @@
+import { readFile } from "node:fs/promises";
+import { join } from "node:path";
+import { afterAll, afterEach, beforeAll, describe, expect, it } from "vitest";
+import { createPtyPair, type PtyPair } from "../../src/cli/pty.ts";
+import { RbcClient } from "../../src/device/index.ts";
+import { NodeSerialTransport } from "../../src/link/node-serial-transport.ts";
+import { FACTORY_ZEROS, motionImage, parseRbm, STANDARD_ZEROS } from "../../src/protocol/index.ts";
+import { type CliProcess, FIXTURES, killAll, startCli } from "../cli/spawn-cli.ts";
+
+/**
+ * NodeSerialTransport against a real serial device: a PTY pair made by socat, `rbc sim` serving one end (a
+ * separate process), and RbcClient on the other end — the same code the CLI runs against a robot.
+ */
+
+interface Rig {
+  pty: PtyPair;
+  sim: CliProcess;
+}
+
+/** A socat PTY pair with `rbc sim --port <one end> ARGS` running on it. */
+async function startSim(args: readonly string[] = []): Promise<Rig> {
+  const pty = await createPtyPair();
+  const sim = startCli(["sim", "--port", pty.simPath, ...args], { timeoutMs: 60_000 });
+  await sim.waitFor("stdout", /listening on/);
+  return { pty, sim };
+}
+
+async function stopSim(rig: Rig | undefined): Promise<void> {
+  if (!rig) return;
+  rig.sim.child.kill("SIGINT");
+  await rig.sim.done;
+  await rig.pty.close();
+}
+
+describe("NodeSerialTransport ↔ rbc sim over a PTY pair", () => {
+  let rig: Rig | undefined;
+  let client: RbcClient | undefined;
+
+  beforeAll(async () => {
+    rig = await startSim();
+  }, 15_000);
+  afterEach(async () => {
+    await client?.close();
+    client = undefined;
+  });
+  afterAll(async () => {
+    await stopSim(rig);
+    await killAll();
+  });
+
+  const connect = async () => {
+    client = new RbcClient(new NodeSerialTransport(rig!.pty.clientPath));
+    return { client, identity: await client.connect() };
+  };
+
+  it("info: firmware version, serial number and platform", async () => {
+    const { client, identity } = await connect();
+    expect(identity).toEqual({ firmware: { major: 2, minor: 23 }, platform: 1 });
+    expect(await client.readSerialNumber()).toBe("8958899989309");
+    expect(await client.readAvailableMemory("motion")).toBe(24576);
+    await rig!.sim.waitFor("stdout", /RBC→PC\s+0x0C Read serial number\s+FF FF AA 55 AA 55 37 BA 0C 01/);
+  });
+
+  it("zeros: write, echo, read back and verify", async () => {
+    const { client } = await connect();
+    expect(await client.readZeros()).toEqual([...FACTORY_ZEROS]);
+    const result = await client.writeZeros(STANDARD_ZEROS);
+    expect(result).toEqual({ written: [...STANDARD_ZEROS], readBack: [...STANDARD_ZEROS] });
+    expect(await client.readZeros()).toEqual([...STANDARD_ZEROS]);
+    await rig!.sim.waitFor(
+      "stdout",
+      /PC→RBC\s+0x0E Write zero positions\s+FF FF AA 55 AA 55 37 BA 0E 00 00 00 00 10 7D CA/,
+    );
+  });
+
+  it("uploads Hi.rbm: 9 chunks acknowledged, 576 bytes of memory used", async () => {
+    const { client } = await connect();
+    const image = motionImage(parseRbm(await readFile(join(FIXTURES, "rbm/Hi.rbm"), "utf8")));
+    const progress: number[] = [];
+    const result = await client.writeMotion(image, { onProgress: (p) => progress.push(p.acknowledged) });
+    expect(result).toMatchObject({
+      total: 538,
+      chunks: 9,
+      footprint: 576,
+      freeBefore: 24576,
+      freeAfter: 24000,
+      errorCode: 0xff,
+    });
+    expect(progress.at(-1)).toBe(538);
+    await rig!.sim.waitFor("stdout", /motion chunk 9\/9 \(26 bytes \+ checksum\)/);
+  });
+
+  it("rbc info --port works against the PTY, and a PTY with no robot behind it times out cleanly", {
+    timeout: 15_000,
+  }, async () => {
+    const info = startCli(["info", "--port", rig!.pty.clientPath, "--json"]);
+    const result = await info.done;
+    expect(result.code).toBe(0);
+    expect(JSON.parse(result.stdout)).toMatchObject({ firmware: "2.23", serialNumber: "8958899989309" });
+    const lonely = await createPtyPair();
+    try {
+      const silent = await startCli(["info", "--port", lonely.clientPath]).done;
+      expect(silent.code).toBe(1);
+      expect(silent.stderr).toContain("no robot answered");
+    } finally {
+      await lonely.close();
+    }
+  });
+});
+
+describe("Ctrl-C during an upload (rbc sim --baud-pacing --latency-ms 16)", () => {
+  let rig: Rig | undefined;
+
+  beforeAll(async () => {
+    rig = await startSim(["--baud-pacing", "--latency-ms", "16", "--quiet"]);
+  }, 15_000);
+  afterEach(killAll);
+  afterAll(async () => {
+    await stopSim(rig);
+    await killAll();
+  });
+
+  it("stops cleanly: exit 130, says how many bytes were acknowledged, the robot recorded nothing", {
+    timeout: 20_000,
+  }, async () => {
+    // WalkJump.rbm: a 4,322-byte image, about 2 s over the paced link.
+    const upload = startCli([
+      "upload",
+      join(FIXTURES, "rbm/WalkJump.rbm"),
+      "--port",
+      rig!.pty.clientPath,
+      "--yes",
+    ]);
+    await upload.waitFor("stderr", /\b[1-9]\d*\/4322 bytes/);
+    upload.child.kill("SIGINT");
+    const result = await upload.done;
+    expect(result.code).toBe(130);
+    const m = result.stderr.match(
+      /upload interrupted: (\d+) of 4322 bytes were acknowledged \(outcome: nothing-recorded\)/,
+    );
+    expect(m, result.stderr).not.toBeNull();
+    const acknowledged = Number(m![1]);
+    expect(acknowledged).toBeGreaterThan(0);
+    expect(acknowledged).toBeLessThan(4322);
+    // The port was closed and the robot is back in packet mode with its memory unchanged.
+    const client = new RbcClient(new NodeSerialTransport(rig!.pty.clientPath));
+    try {
+      await client.connect();
+      expect(await client.readAvailableMemory("motion")).toBe(24576);
+    } finally {
+      await client.close();
+    }
+  });
+});

@@ -1,0 +1,131 @@
+import { readdir, readFile } from "node:fs/promises";
+import { join } from "node:path";
+import { describe, expect, it } from "vitest";
+import { splitCommand, wantsHelp } from "../../src/cli/args.ts";
+import { parseZeroList } from "../../src/cli/commands/zeros.ts";
+import { UsageError } from "../../src/cli/errors.ts";
+import { Output } from "../../src/cli/output.ts";
+import { ProgressBar } from "../../src/cli/progress.ts";
+import { applyFault, GARBAGE } from "../../src/cli/sim-faults.ts";
+import { SimLink } from "../../src/cli/sim-link.ts";
+import { SimTrace, type SimTraceLine } from "../../src/cli/sim-trace.ts";
+import { encodeDownloadStart, fromHex, toHex } from "../../src/protocol/index.ts";
+import { VirtualClock } from "../../src/shared/clock.ts";
+import { SimulatedRbc } from "../../src/sim/index.ts";
+import { REPO } from "../cli/spawn-cli.ts";
+
+const VERSION_REPLY = fromHex("FF FF AA 55 AA 55 37 BA 12 01 00 00 00 02 02 17 15");
+
+describe("command line parsing", () => {
+  it("finds the subcommand wherever the global options are", () => {
+    expect(splitCommand(["--demo", "info", "--json"])).toEqual({
+      command: "info",
+      rest: ["--demo", "--json"],
+    });
+    expect(splitCommand(["-p", "/dev/ttyUSB0", "zeros", "read"])).toEqual({
+      command: "zeros",
+      rest: ["-p", "/dev/ttyUSB0", "read"],
+    });
+    expect(splitCommand(["--port=/dev/x", "run", "7"]).command).toBe("run");
+    expect(splitCommand(["--help"])).toEqual({ command: undefined, rest: ["--help"] });
+    expect(wantsHelp(["upload", "-h"])).toBe(true);
+    expect(wantsHelp(["--", "-h"])).toBe(false);
+  });
+
+  it("reads a zero list written with commas or as separate words", () => {
+    expect(parseZeroList(["125,202,162"])).toEqual([125, 202, 162]);
+    expect(parseZeroList(["125", "202,", "162"])).toEqual([125, 202, 162]);
+    expect(() => parseZeroList(["125,x"])).toThrow(UsageError);
+    expect(() => parseZeroList([])).toThrow(UsageError);
+  });
+});
+
+describe("upload progress bar", () => {
+  it("shows bytes, percent, bytes/s and time left", () => {
+    let t = 0;
+    const bar = new ProgressBar(new Output(false), () => t);
+    t = 500;
+    expect(bar.render(256, 538)).toBe("[##########----------] 256/538 bytes  47%     512 B/s  0.6 s left");
+    t = 1000;
+    expect(bar.render(538, 538)).toBe("[####################] 538/538 bytes 100%     538 B/s  done");
+  });
+});
+
+describe("rbc sim reply faults", () => {
+  it("maps each fault onto one reply", () => {
+    const n = VERSION_REPLY.length;
+    expect(toHex(applyFault("drop", VERSION_REPLY, 0).chunks[0]!)).toBe(
+      "FF FF AA 55 AA 55 37 BA 12 01 00 00 00 02 02 15",
+    );
+    expect(applyFault("corrupt", VERSION_REPLY, 0).chunks[0]![n - 2]).toBe(0x16);
+    expect(applyFault("split", VERSION_REPLY, 0).chunks).toHaveLength(n);
+    expect(applyFault("delay", VERSION_REPLY, 500).delayMs).toBe(500);
+    expect(applyFault("silent", VERSION_REPLY, 0).chunks).toEqual([]);
+    const garbage = applyFault("garbage", VERSION_REPLY, 0).chunks[0]!;
+    expect(garbage.subarray(0, GARBAGE.length)).toEqual(GARBAGE);
+    expect(toHex(applyFault("corrupt", Uint8Array.of(0x40), 0).chunks[0]!)).toBe("41");
+  });
+
+  it("applies a fault to every N-th reply only", () => {
+    const written: string[] = [];
+    const notes: Array<string | undefined> = [];
+    const link = new SimLink(
+      { baudPacing: false, latencyMs: 0, fault: "silent", faultEvery: 2, faultDelayMs: 0 },
+      () => {},
+      (b) => written.push(toHex(b)),
+      (_r, note) => notes.push(note),
+    );
+    for (let i = 0; i < 4; i++) link.fromRobot(Uint8Array.of(0x40 + i));
+    expect(written).toEqual(["40", "42"]);
+    expect(notes).toEqual([undefined, "fault: never sent", undefined, "fault: never sent"]);
+  });
+});
+
+describe("rbc sim packet trace", () => {
+  it("names requests, download parts, replies and what the simulator dropped", () => {
+    const sim = new SimulatedRbc({ clock: new VirtualClock() });
+    const lines: SimTraceLine[] = [];
+    const trace = new SimTrace(sim, (l) => lines.push(l));
+    sim.onTransmit((b) => trace.reply(b, undefined));
+    const feed = (bytes: Uint8Array) => {
+      trace.incoming(bytes);
+      sim.receive(bytes);
+      trace.afterReceive();
+    };
+    feed(fromHex("FF E0 FB 01 00 1A FF FF AA 55 AA 55 37 BA 12 00 00 00 00 01 01 01"));
+    feed(fromHex("FF FF AA 55 AA 55 37 BA 14 00 00 00 00 01 04 04")); // motion 4 before 7: ignored
+    feed(encodeDownloadStart(0x01, 3));
+    const labels = lines.map((l) => `${l.direction} ${l.label}`);
+    expect(labels).toEqual([
+      "pc-to-rbc leave direct mode (no effect now)",
+      "pc-to-rbc 0x12 Read firmware version",
+      "rbc-to-pc 0x12 Read firmware version",
+      "pc-to-rbc 0x14 Run motion",
+      "note ignored: motion 7 has not run since power-up",
+      "pc-to-rbc 0x01 Write motion: first part, 3 bytes",
+      "rbc-to-pc download acknowledged (40)",
+    ]);
+    feed(Uint8Array.of(1, 2, 3, 0)); // its `40` comes after a 5 ms page write (the clock stands still)
+    expect(lines.at(-1)).toMatchObject({
+      label: "motion chunk 1/1 (3 bytes + checksum)",
+      hex: "01 02 03 00",
+    });
+  });
+});
+
+describe("layering", () => {
+  async function sources(dir: string): Promise<string[]> {
+    const entries = await readdir(dir, { withFileTypes: true, recursive: true });
+    return entries.filter((e) => e.isFile() && e.name.endsWith(".ts")).map((e) => join(e.parentPath, e.name));
+  }
+
+  it("only the CLI loads the Node serial transport; the web app never imports it", async () => {
+    const offenders: string[] = [];
+    for (const file of await sources(join(REPO, "src"))) {
+      if (file.includes("/src/cli/") || file.endsWith("/link/node-serial-transport.ts")) continue;
+      const text = await readFile(file, "utf8");
+      if (/node-serial-transport|from "serialport"/.test(text)) offenders.push(file);
+    }
+    expect(offenders).toEqual([]);
+  });
+});
