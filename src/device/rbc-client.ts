@@ -148,7 +148,11 @@ export class RbcClient {
     try {
       await this.transport.open();
       // In case the RBC was left in direct mode (PROTOCOL.md §5): no reply.
-      await this.writeRaw(EXIT_DIRECT_MODE, "leave direct mode (blind)");
+      await this.withTimeout(
+        this.writeRaw(EXIT_DIRECT_MODE, "leave direct mode (blind)"),
+        this.timeouts.quickMs,
+        "leave direct mode",
+      );
       await this.sleep(this.timeouts.settleMs);
       this.parser.reset();
       this.setState({ mode: "packet" });
@@ -640,6 +644,23 @@ export class RbcClient {
       now: () => this.clock.now(),
       sleep: (ms: number) => this.sleep(ms),
     };
+  }
+
+  /** Rejects with RbcTimeoutError if `p` has not settled within `ms` (for writes that expect no reply). */
+  private withTimeout<T>(p: Promise<T>, ms: number, name: string): Promise<T> {
+    return new Promise<T>((resolve, reject) => {
+      const timer = this.clock.setTimeout(() => reject(new RbcTimeoutError(name, ms)), ms);
+      p.then(
+        (v) => {
+          this.clock.clearTimeout(timer);
+          resolve(v);
+        },
+        (e) => {
+          this.clock.clearTimeout(timer);
+          reject(e);
+        },
+      );
+    });
   }
 
   sleep(ms: number): Promise<void> {

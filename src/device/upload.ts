@@ -31,6 +31,9 @@ export interface UploadIo {
   sleep(ms: number): Promise<void>;
 }
 
+/** The RBC's error code for a bad chunk checksum (PROTOCOL.md §3.2). */
+const CHECKSUM_ERROR = 2;
+
 /** How long to wait for each `40` (the RBC writes a 64-byte EEPROM page first). */
 const ACK_TIMEOUT_EXTRA_MS = 100;
 
@@ -201,8 +204,9 @@ async function explainFailure(io: UploadIo, error: unknown, ctx: FailureContext)
         ? "The robot did not answer afterwards; its memory state is unknown. Switch it off and on, then upload again."
         : `The robot's free ${area} memory is now ${freeNow} bytes (was ${ctx.freeBefore}); its state is uncertain. Switch it off and on, then upload again.`;
   }
+  // Error 2 (checksum) is what the abandon bytes above make the RBC set, so it says nothing about the cause.
   const why =
-    deviceError !== undefined && deviceError !== NO_ERROR
+    deviceError !== undefined && deviceError !== NO_ERROR && deviceError !== CHECKSUM_ERROR
       ? ` The robot reports: ${errorCodeText(deviceError)}.`
       : "";
   if (cancelled) {

@@ -60,7 +60,6 @@ interface Settled {
 
 interface Op {
   name: string;
-  setup?: (rig: Rig) => Promise<void>;
   /** Starts the operation; the harness drives the clock until it settles. */
   run: (rig: Rig) => Promise<unknown>;
   /** The reply (1-based, counted from the operation's start) that the reply faults hit. */
@@ -361,7 +360,6 @@ async function cell(
   cleanMs: number,
 ): Promise<{ outcome: Outcome; elapsed: number }> {
   const rig = await newRig();
-  await op.setup?.(rig);
   const before: Snapshot = { zeros: rig.sim.zeros, motions: rig.sim.motions };
   if (fault) applyFault(rig, op, fault);
   const t0 = rig.clock.now();
@@ -405,6 +403,10 @@ async function cell(
     expect(next.error, "follow-up readFirmwareVersion").toBeUndefined();
     expect(next.value).toEqual({ major: 2, minor: 23 });
     await op.after?.(rig, settled);
+    // Nothing left behind fires later: after 10 s of quiet the client is still in packet mode and answers.
+    await rig.clock.advance(10_000);
+    expect(rig.client.mode).toBe("packet");
+    expect(await rig.run(rig.client.readFirmwareVersion())).toEqual({ major: 2, minor: 23 });
   }
   return { outcome, elapsed };
 }

@@ -1,7 +1,7 @@
 import { readFileSync } from "node:fs";
 import { describe, expect, it } from "vitest";
 import { type LogEntry, RbcClient, type RbcEvent, type UploadProgress } from "../../src/device/index.ts";
-import { WebSerialTransport } from "../../src/link/index.ts";
+import { type Transport, WebSerialTransport } from "../../src/link/index.ts";
 import {
   FACTORY_ZEROS,
   fromHex,
@@ -230,5 +230,31 @@ describe("Stop while a motion plays", () => {
     expect(sim.playingMotion).toBeUndefined();
     expect(sim.directMode).toBe(true);
     expect(sim.servos.slice(0, 16).every((s) => s.passive)).toBe(true);
+  });
+});
+
+describe("connect on a port that takes no bytes", () => {
+  it("gives up with a no-robot error instead of hanging on the blind exit sequence", async () => {
+    const clock = new VirtualClock();
+    let status: Transport["status"] = "closed";
+    const transport: Transport = {
+      get status() {
+        return status;
+      },
+      open: async () => {
+        status = "open";
+      },
+      write: () => new Promise<void>(() => {}),
+      onData: () => () => {},
+      onStatus: () => () => {},
+      close: async () => {
+        status = "closed";
+      },
+    };
+    const client = new RbcClient(transport, { clock });
+    const error = await clock.run(client.connect().catch((e) => e));
+    expect(error).toMatchObject({ code: "no-robot" });
+    expect(client.mode).toBe("disconnected");
+    expect(status).toBe("closed");
   });
 });
