@@ -1,6 +1,13 @@
 import { HUNO_BASIC_POSTURE, safeRange } from "../protocol/servo-limits.ts";
-import { wckBrakeAll, wckMove, wckPassive, wckReadStatus, wckSyncMove } from "../protocol/wck.ts";
-import { RbcError, RbcInvalidArgumentError, RbcTimeoutError } from "./errors.ts";
+import {
+  WCK_MAX_POSITION,
+  wckBrakeAll,
+  wckMove,
+  wckPassive,
+  wckReadStatus,
+  wckSyncMove,
+} from "../protocol/wck.ts";
+import { RbcBadReplyError, RbcError, RbcInvalidArgumentError, RbcTimeoutError } from "./errors.ts";
 import type { RawChannel } from "./raw-channel.ts";
 import type { ServoStatus } from "./types.ts";
 
@@ -136,6 +143,10 @@ export class DirectMode {
     return this.host.exclusive(async () => {
       this.requireDirect();
       const reply = await this.raw.exchange(packet, { need: 2, timeoutMs: this.host.timeouts.quickMs, note });
+      // Servo replies carry no checksum; a position above 254 can only be noise on the line.
+      if (reply[1]! > WCK_MAX_POSITION) {
+        throw new RbcBadReplyError(`Servo ${id} answered an impossible position (${reply[1]}); try again.`);
+      }
       return { id, load: reply[0]!, position: reply[1]! };
     });
   }

@@ -244,15 +244,20 @@ export class RbcClient {
         echo = await this.transactDecoded(COMMANDS.writeZeros, written, 0);
       } catch (e) {
         if (!(e instanceof RbcTimeoutError)) throw e;
+        // No echo (lost, garbled or late): the table read back tells whether the write happened.
         const stored = await this.transactDecoded(COMMANDS.readZeros, undefined, this.retries).catch(
           () => undefined,
         );
-        const state = !stored
-          ? "The robot did not answer a read either; its stored zeros are unknown. Read them again before anything else."
-          : stored.every((v, i) => v === written[i])
-            ? "Reading them back shows the new values are stored."
-            : "Reading them back shows the robot still holds its previous values: nothing changed.";
-        throw new RbcRejectedError(`The robot did not confirm the zero write. ${state}`);
+        if (stored?.every((v, i) => v === written[i])) return { written, readBack: stored };
+        if (!stored) {
+          throw new RbcError(
+            "timeout",
+            "The robot did not confirm the zero write and did not answer a read either; its stored zeros are unknown. Check the connection, then read them again before anything else.",
+          );
+        }
+        throw new RbcRejectedError(
+          "The robot did not confirm the zero write, and reading them back shows the new values were not stored (the robot refuses a table it considers out of range).",
+        );
       }
       if (echo.some((v, i) => v !== written[i])) {
         throw new RbcBadReplyError(

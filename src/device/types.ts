@@ -61,6 +61,11 @@ export interface UploadResult {
   /** The robot's error code after the upload (0xFF = none). */
   errorCode: number;
   elapsedMs: number;
+  /**
+   * True when the last acknowledgement never came but the robot's free memory shows the file was recorded
+   * (the RBC accounts memory only after a complete download with good checksums).
+   */
+  lastAckLost?: boolean;
 }
 
 export interface ServoStatus {

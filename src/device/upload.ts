@@ -118,7 +118,7 @@ export async function uploadFile(
       onProgress?.({ acknowledged, total });
     }
   } catch (e) {
-    throw await explainFailure(io, e, {
+    const failure = await explainFailure(io, e, {
       area,
       acknowledged,
       total,
@@ -128,6 +128,20 @@ export async function uploadFile(
       readFree,
       readError,
     });
+    if (!("recorded" in failure)) throw failure;
+    // Every chunk went through and the robot's memory shows the file: only the last `40` was lost.
+    onProgress?.({ acknowledged: total, total });
+    return {
+      area,
+      total,
+      chunks: Math.ceil(total / DOWNLOAD_CHUNK),
+      footprint,
+      freeBefore,
+      freeAfter: failure.freeAfter,
+      errorCode: failure.errorCode,
+      elapsedMs: io.now() - started,
+      lastAckLost: true,
+    };
   } finally {
     if (client.mode === "download") client.setMode("packet");
   }
@@ -149,7 +163,10 @@ interface FailureContext {
 }
 
 /** Works out what the robot holds after a failed or cancelled download and says so. */
-async function explainFailure(io: UploadIo, error: unknown, ctx: FailureContext): Promise<RbcError> {
+/** A failure explained as an error, or the news that the file was recorded after all. */
+type Explained = RbcError | { recorded: true; freeAfter: number; errorCode: number };
+
+async function explainFailure(io: UploadIo, error: unknown, ctx: FailureContext): Promise<Explained> {
   const { client } = io;
   const { area, acknowledged, total } = ctx;
   const sent = `${acknowledged} of ${total} bytes were acknowledged`;
@@ -194,9 +211,9 @@ async function explainFailure(io: UploadIo, error: unknown, ctx: FailureContext)
   if (freeNow === ctx.freeBefore) {
     outcome = "nothing-recorded";
     state = `The robot recorded nothing: its free ${area} memory is unchanged (${freeNow} bytes).`;
-  } else if (freeNow === ctx.freeBefore - ctx.footprint) {
-    outcome = "unknown";
-    state = `The robot's free ${area} memory dropped by the file's size, so it may have recorded the file even so; upload it again to be sure.`;
+  } else if (freeNow === ctx.freeBefore - ctx.footprint && ctx.lastChunkSent && !cancelled) {
+    // The RBC accounts memory only when the last chunk's checksum is right: the file is complete.
+    return { recorded: true, freeAfter: freeNow, errorCode: deviceError ?? NO_ERROR };
   } else {
     outcome = "unknown";
     state =
