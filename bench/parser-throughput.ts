@@ -1,5 +1,6 @@
 import { encodePacket, PacketParser } from "../src/protocol/index.ts";
-import { median, seededRandom } from "./stats.ts";
+import { seededRandom } from "../src/shared/random.ts";
+import { median } from "./stats.ts";
 
 /**
  * PacketParser throughput on a 4 MiB stream of valid packets, fed in 1-byte and in 4,096-byte chunks.

@@ -3,7 +3,7 @@
  * (`src/cli/`, started by `bin/rbc.mjs`); the web app never imports it (`src/link/index.ts` does not export it).
  */
 import { SerialPort } from "serialport";
-import { LinkError, type Transport, type TransportStatus, type TransportStatusEvent } from "./transport.ts";
+import { LinkError, type Transport, TransportBase } from "./transport.ts";
 
 export interface NodeSerialTransportOptions {
   baudRate?: number;
@@ -18,16 +18,15 @@ export interface SerialPortListing {
 
 type CloseError = (Error & { disconnected?: boolean }) | null;
 
-export class NodeSerialTransport implements Transport {
-  private _status: TransportStatus = "closed";
+export class NodeSerialTransport extends TransportBase implements Transport {
   private port: SerialPort | undefined;
-  private readonly dataListeners = new Set<(bytes: Uint8Array) => void>();
-  private readonly statusListeners = new Set<(event: TransportStatusEvent) => void>();
 
   constructor(
     readonly path: string,
     private readonly options: NodeSerialTransportOptions = {},
-  ) {}
+  ) {
+    super();
+  }
 
   /** Serial ports the operating system knows of. */
   static async list(): Promise<SerialPortListing[]> {
@@ -37,10 +36,6 @@ export class NodeSerialTransport implements Transport {
       vendorId: p.vendorId,
       productId: p.productId,
     }));
-  }
-
-  get status(): TransportStatus {
-    return this._status;
   }
 
   /** Opens at 115200 8N1, no flow control, with an exclusive lock (a second program gets "port-busy"). */
@@ -82,7 +77,7 @@ export class NodeSerialTransport implements Transport {
           if (this.port !== port) return;
           // A copy: the chunk is a view into serialport's 64 KiB read pool, which listeners must not pin.
           const bytes = Uint8Array.from(chunk);
-          for (const l of this.dataListeners) l(bytes);
+          this.deliver(bytes);
         });
         port.on("close", (closeErr: CloseError) => {
           if (this.port !== port || this._status !== "open") return;
@@ -129,16 +124,6 @@ export class NodeSerialTransport implements Transport {
     });
   }
 
-  onData(listener: (bytes: Uint8Array) => void): () => void {
-    this.dataListeners.add(listener);
-    return () => this.dataListeners.delete(listener);
-  }
-
-  onStatus(listener: (event: TransportStatusEvent) => void): () => void {
-    this.statusListeners.add(listener);
-    return () => this.statusListeners.delete(listener);
-  }
-
   async close(): Promise<void> {
     if (this._status === "closed" || this._status === "closing") return;
     this.setStatus({ status: "closing" });
@@ -146,10 +131,5 @@ export class NodeSerialTransport implements Transport {
     this.port = undefined;
     if (port?.isOpen) await new Promise<void>((resolve) => port.close(() => resolve()));
     this.setStatus({ status: "closed" });
-  }
-
-  private setStatus(event: TransportStatusEvent): void {
-    this._status = event.status;
-    for (const l of this.statusListeners) l(event);
   }
 }

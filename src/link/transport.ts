@@ -48,3 +48,36 @@ export class LinkError extends Error {
     super(message, options);
   }
 }
+
+/**
+ * What every Transport shares: its status and the two listener sets. Implementations call `deliver` with
+ * received bytes and `setStatus` on every change.
+ */
+export abstract class TransportBase {
+  protected _status: TransportStatus = "closed";
+  private readonly dataListeners = new Set<(bytes: Uint8Array) => void>();
+  private readonly statusListeners = new Set<(event: TransportStatusEvent) => void>();
+
+  get status(): TransportStatus {
+    return this._status;
+  }
+
+  onData(listener: (bytes: Uint8Array) => void): () => void {
+    this.dataListeners.add(listener);
+    return () => this.dataListeners.delete(listener);
+  }
+
+  onStatus(listener: (event: TransportStatusEvent) => void): () => void {
+    this.statusListeners.add(listener);
+    return () => this.statusListeners.delete(listener);
+  }
+
+  protected deliver(bytes: Uint8Array): void {
+    for (const l of this.dataListeners) l(bytes);
+  }
+
+  protected setStatus(event: TransportStatusEvent): void {
+    this._status = event.status;
+    for (const l of this.statusListeners) l(event);
+  }
+}

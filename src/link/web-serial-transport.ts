@@ -1,11 +1,5 @@
 import { type Clock, realClock } from "../shared/clock.ts";
-import {
-  LinkError,
-  RBC_SERIAL_OPTIONS,
-  type Transport,
-  type TransportStatus,
-  type TransportStatusEvent,
-} from "./transport.ts";
+import { LinkError, RBC_SERIAL_OPTIONS, type Transport, TransportBase } from "./transport.ts";
 
 /** The parts of a Web Serial `SerialPort` the transport uses (the real one, or `MockSerialPort`). */
 export type SerialPortLike = Pick<SerialPort, "open" | "close" | "readable" | "writable" | "getInfo"> &
@@ -33,10 +27,7 @@ function errorName(e: unknown): string {
  * that is still enumerating), one long-lived read loop, one writer, the close order (cancel reader → release
  * locks → close port), and disconnect detection (the port's `disconnect` event or a fatal read error).
  */
-export class WebSerialTransport implements Transport {
-  private _status: TransportStatus = "closed";
-  private readonly dataListeners = new Set<(bytes: Uint8Array) => void>();
-  private readonly statusListeners = new Set<(event: TransportStatusEvent) => void>();
+export class WebSerialTransport extends TransportBase implements Transport {
   private reader: ReadableStreamDefaultReader<Uint8Array> | undefined;
   private writer: WritableStreamDefaultWriter<Uint8Array> | undefined;
   private readLoop: Promise<void> | undefined;
@@ -49,13 +40,10 @@ export class WebSerialTransport implements Transport {
     readonly port: SerialPortLike,
     options: WebSerialTransportOptions = {},
   ) {
+    super();
     this.clock = options.clock ?? realClock;
     this.openAttempts = options.openAttempts ?? 4;
     this.openRetryDelayMs = options.openRetryDelayMs ?? 250;
-  }
-
-  get status(): TransportStatus {
-    return this._status;
   }
 
   async open(): Promise<void> {
@@ -116,16 +104,6 @@ export class WebSerialTransport implements Transport {
     }
   }
 
-  onData(listener: (bytes: Uint8Array) => void): () => void {
-    this.dataListeners.add(listener);
-    return () => this.dataListeners.delete(listener);
-  }
-
-  onStatus(listener: (event: TransportStatusEvent) => void): () => void {
-    this.statusListeners.add(listener);
-    return () => this.statusListeners.delete(listener);
-  }
-
   async close(): Promise<void> {
     if (this._status === "closed" || this._status === "closing") return;
     const wasLost = this._status === "lost";
@@ -156,7 +134,7 @@ export class WebSerialTransport implements Transport {
         for (;;) {
           const { value, done } = await reader.read();
           if (done) break;
-          if (value && value.length > 0) for (const l of this.dataListeners) l(value);
+          if (value && value.length > 0) this.deliver(value);
         }
       } catch (e) {
         if (!RECOVERABLE_READ_ERRORS.has(errorName(e))) {
@@ -202,10 +180,5 @@ export class WebSerialTransport implements Transport {
     this.setStatus({ status: "lost", reason, error });
     // Free the port so that a later connect can open it again; status stays "lost" until close().
     this.cleanup = this.shutDown();
-  }
-
-  private setStatus(event: TransportStatusEvent): void {
-    this._status = event.status;
-    for (const l of this.statusListeners) l(event);
   }
 }

@@ -1,5 +1,6 @@
 import { ACCELEROMETER_TYPE, encodePacket } from "../protocol/packet.ts";
 import type { TimerId } from "../shared/clock.ts";
+import { seededRandom } from "../shared/random.ts";
 import type { SimTimers } from "./sim-timers.ts";
 
 /**
@@ -36,18 +37,6 @@ export interface SensorState {
 
 function clampInt(value: number, min: number, max: number): number {
   return Math.max(min, Math.min(max, Math.round(value)));
-}
-
-/** mulberry32: a tiny deterministic generator in [0, 1). */
-function seededRandom(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
 }
 
 export class SimSensors {
