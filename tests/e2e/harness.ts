@@ -68,14 +68,21 @@ async function buildFakeSerial(): Promise<string> {
   throw new Error("the fake serial bundle produced no entry chunk");
 }
 
+/** A cached build older than this is removed when a new one is made. */
+const STALE_BUILD_MS = 6 * 60 * 60 * 1000;
+
 /** Builds the app and the fake serial script once per set of inputs; later calls reuse the build. */
 export async function buildOnce(): Promise<{ outDir: string; fakeSerial: string }> {
   const dir = join(tmpdir(), `${CACHE_PREFIX}${await inputsHash()}`);
   const outDir = join(dir, "app");
   const fakeFile = join(dir, "fake-serial.iife.js");
   if (!existsSync(join(dir, ".complete"))) {
+    // Clear out stale builds, but not ones another test run (other inputs) may be serving right now.
     for (const entry of await readdir(tmpdir())) {
-      if (entry.startsWith(CACHE_PREFIX)) await rm(join(tmpdir(), entry), { recursive: true, force: true });
+      const path = join(tmpdir(), entry);
+      if (entry.startsWith(CACHE_PREFIX) && Date.now() - (await stat(path)).mtimeMs > STALE_BUILD_MS) {
+        await rm(path, { recursive: true, force: true });
+      }
     }
     const work = `${dir}.tmp-${process.pid}`;
     await mkdir(work, { recursive: true });
