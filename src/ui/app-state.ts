@@ -1,5 +1,8 @@
-import type { ClientMode } from "../device/index.ts";
+import type { ClientMode, ClientState, SubscriptionKind } from "../device/index.ts";
+import type { MotionFilesState, MotionsState } from "./motions/motions-state.ts";
 import type { LogLine } from "./packet-log.ts";
+import type { SensorsState } from "./sensors/sensors-state.ts";
+import type { ServosState } from "./servos/servos-state.ts";
 
 /** Everything the panel shows, in one object (see store.ts). Views render from it; actions update it. */
 
@@ -25,8 +28,18 @@ export interface Notice {
 export interface ConnectionState {
   phase: ConnectionPhase;
   robot?: RobotLabel;
-  /** The client's mode once connected ("packet" normally, "direct" after Stop). */
+  /** The client's mode once connected ("packet" normally, "direct" after Stop or for servo control). */
   mode?: ClientMode;
+  /** True after Stop made every servo limp, until the panel moves a servo or leaves direct mode. */
+  limp?: boolean;
+  /** Mirrored from the client: motion 7 has answered in this connection (the 7-first rule is satisfied). */
+  basicPostureConfirmed?: boolean;
+  /** Mirrored from the client: the motion it is waiting on (clock ms of the client's clock). */
+  playing?: ClientState["playing"];
+  /** Mirrored from the client: the sound it is waiting on. */
+  sounding?: ClientState["sounding"];
+  /** Mirrored from the client: the event subscription it keeps armed. */
+  subscription?: SubscriptionKind;
   firmware?: { major: number; minor: number };
   serialNumber?: string;
   platform?: number;
@@ -92,6 +105,18 @@ export interface AppState {
   log: LogViewState;
   /** The outcome of Stop — limp, shown under the top bar. */
   stopNotice?: Notice;
+  /** Motion files opened in the Motions view (kept across connections: they are files on this computer). */
+  motionFiles?: MotionFilesState;
+  /** Uploads, runs and sounds of this connection (reset on every connection). */
+  motions?: MotionsState;
+  /** The Sensors view of this connection. */
+  sensors?: SensorsState;
+  /** The Servos view of this connection. */
+  servos?: ServosState;
+  /** Safety notices acknowledged in this connection (asked once per connection). */
+  acks?: { movement?: boolean; servos?: boolean };
+  /** Bumped a few times a second while a motion, sound or upload runs, so time-based progress redraws. */
+  tick?: number;
 }
 
 export function initialState(env: {

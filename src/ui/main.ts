@@ -8,7 +8,7 @@ import { Session } from "./session.ts";
 import { createStore, frameScheduler } from "./store.ts";
 import { appView } from "./views/app-view.ts";
 import { DEFAULT_VIEW, VIEWS } from "./views/registry.ts";
-import type { ViewContext } from "./views/view-types.ts";
+import type { AppView, ViewContext } from "./views/view-types.ts";
 
 const serial = webSerial();
 const store = createStore(
@@ -26,10 +26,11 @@ const root = document.getElementById("app");
 if (!root) throw new Error("index.html has no #app element");
 root.textContent = "";
 
-/** Counts connections, so that each view is activated once per view and connection. */
+/** Counts connections, so that each view is activated once per showing and connection. */
 let connectionCount = 0;
 let lastPhase = store.get().connection.phase;
-let activated = "";
+/** The view activated last, until it is deactivated (another view, or no robot). */
+let active: { key: string; view: AppView } | undefined;
 let renderedPhase = lastPhase;
 
 function renderNow(): void {
@@ -44,12 +45,12 @@ function renderNow(): void {
       document.getElementById("main")?.focus({ preventScroll: true });
   }
   const view = loader.get(state.route);
-  if (state.connection.phase === "connected" && view?.activate) {
-    const key = `${state.route}#${connectionCount}`;
-    if (key !== activated) {
-      activated = key;
-      view.activate(ctx);
-    }
+  const key = state.connection.phase === "connected" && view ? `${state.route}#${connectionCount}` : "";
+  if (key !== (active?.key ?? "")) {
+    const previous = active;
+    active = key && view ? { key, view } : undefined;
+    previous?.view.deactivate?.(ctx);
+    if (active) active.view.activate?.(ctx);
   }
 }
 

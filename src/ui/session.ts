@@ -9,6 +9,23 @@ import type { Store } from "./store.ts";
 
 export const DEMO_ROBOT: RobotLabel = { kind: "demo", name: "Demo robot" };
 
+/** The client state the views show (the 7-first rule, what is playing, the subscription). */
+function mirrored(state: ClientState): Partial<ConnectionState> {
+  return {
+    basicPostureConfirmed: state.basicPostureConfirmed,
+    playing: state.playing,
+    sounding: state.sounding,
+    subscription: state.subscription,
+  };
+}
+
+const NOTHING_RUNNING: Partial<ConnectionState> = {
+  limp: undefined,
+  playing: undefined,
+  sounding: undefined,
+  subscription: undefined,
+};
+
 /**
  * The connection to one robot (hardware or the demo) and everything that runs on it. It owns the RbcClient,
  * mirrors its state into the store, feeds the packet log, and tracks running operations so that a lost link
@@ -84,6 +101,11 @@ export class Session {
       phase: "connecting",
       robot,
       mode: undefined,
+      limp: undefined,
+      basicPostureConfirmed: undefined,
+      playing: undefined,
+      sounding: undefined,
+      subscription: undefined,
       firmware: undefined,
       serialNumber: undefined,
       platform: undefined,
@@ -97,6 +119,10 @@ export class Session {
       zeros: { draft: [], confirming: false },
       stopNotice: undefined,
       running: [],
+      motions: undefined,
+      sensors: undefined,
+      servos: undefined,
+      acks: undefined,
     });
     this.detachClient = [
       client.stateChanges.on((s) => this.onClientState(client, s)),
@@ -118,6 +144,7 @@ export class Session {
         platform: client.state.platform ?? identity.platform,
         serialNumber,
         mode: client.mode,
+        ...mirrored(client.state),
       });
       void this.refreshKnownPorts();
       return true;
@@ -137,7 +164,13 @@ export class Session {
     const client = this.client;
     if (!client) return;
     this.forgetClient();
-    this.setConnection({ phase: "disconnected", mode: undefined, problem: undefined, lostReason: undefined });
+    this.setConnection({
+      phase: "disconnected",
+      mode: undefined,
+      problem: undefined,
+      lostReason: undefined,
+      ...NOTHING_RUNNING,
+    });
     this.store.update({ running: [], stopNotice: undefined });
     await client.close().catch(() => {});
     void this.refreshKnownPorts();
@@ -184,7 +217,15 @@ export class Session {
     } catch (e) {
       notice = errorNotice("Stop failed. Switch the robot off.", e);
     }
-    if (this.client === client) this.store.update({ stopNotice: notice });
+    if (this.client === client) {
+      this.store.update({ stopNotice: notice });
+      if (client.mode === "direct") this.setConnection({ limp: true });
+    }
+  }
+
+  /** Tells the panel that a servo was moved or the user took servo control: the servos are no longer all limp. */
+  servosTaken(): void {
+    if (this.store.get().connection.limp) this.setConnection({ limp: false });
   }
 
   async refreshKnownPorts(): Promise<void> {
@@ -224,11 +265,22 @@ export class Session {
     if (phase === "connecting" && state.mode === "packet") this.setConnection({ phase: "handshaking" });
     if (phase === "connected") {
       const current = this.store.get().connection;
+      const next = mirrored(state);
       if (
         current.mode !== state.mode ||
-        (state.platform !== undefined && current.platform !== state.platform)
+        (state.platform !== undefined && current.platform !== state.platform) ||
+        current.basicPostureConfirmed !== next.basicPostureConfirmed ||
+        current.playing !== next.playing ||
+        current.sounding !== next.sounding ||
+        current.subscription !== next.subscription
       ) {
-        this.setConnection({ mode: state.mode, platform: state.platform ?? current.platform });
+        this.setConnection({
+          mode: state.mode,
+          platform: state.platform ?? current.platform,
+          ...next,
+          // Leaving direct mode (or a download) ends the "all limp" state the top bar reports.
+          limp: state.mode === "direct" ? current.limp : false,
+        });
       }
     }
   }
@@ -237,7 +289,13 @@ export class Session {
     const state = this.store.get();
     const interrupted = [...state.running];
     this.forgetClient();
-    this.setConnection({ phase: "disconnected", mode: undefined, lostReason: reason, interrupted });
+    this.setConnection({
+      phase: "disconnected",
+      mode: undefined,
+      lostReason: reason,
+      interrupted,
+      ...NOTHING_RUNNING,
+    });
     this.store.update((s) => ({
       running: [],
       stopNotice: undefined,

@@ -7,7 +7,10 @@ import "./rbc-test-globals.ts";
 
 const options = window.__rbcTestOptions ?? {};
 const sim = new SimulatedRbc();
-const port = new MockSerialPort(sim, { latencyMs: 2 });
+const port = new MockSerialPort(sim, {
+  latencyMs: options.latencyMs ?? 2,
+  baudPacing: options.baudPacing ?? false,
+});
 const serial = new FakeSerial([port], { granted: options.granted ?? false });
 serial.userCancels = options.userCancels ?? false;
 

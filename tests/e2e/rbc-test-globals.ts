@@ -13,6 +13,10 @@ export interface RbcTestOptions {
   granted?: boolean;
   /** requestPort() rejects as if the chooser was closed. */
   userCancels?: boolean;
+  /** Model 115200 baud on the mock port, so uploads take as long as on the wire (default off). */
+  baudPacing?: boolean;
+  /** USB adapter latency of the mock port in ms (default 2). */
+  latencyMs?: number;
 }
 
 declare global {

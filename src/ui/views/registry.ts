@@ -1,4 +1,3 @@
-import { comingSoon } from "./coming-soon-view.ts";
 import robotView from "./robot-view.ts";
 import type { ViewRegistration } from "./view-types.ts";
 
@@ -9,23 +8,9 @@ import type { ViewRegistration } from "./view-types.ts";
 export const VIEWS: readonly ViewRegistration[] = [
   { id: "robot", label: "Robot", load: async () => ({ default: robotView }) },
   { id: "zeros", label: "Zeros", load: () => import("./zeros-view.ts") },
-  {
-    id: "motions",
-    label: "Motions",
-    load: async () => comingSoon("Motions", "Run built-in and downloaded motions, and upload .rbm files."),
-  },
-  {
-    id: "sensors",
-    label: "Sensors",
-    load: async () =>
-      comingSoon("Sensors", "Distance, sound level, accelerometer, buttons and the IR remote, live."),
-  },
-  {
-    id: "servos",
-    label: "Servos",
-    load: async () =>
-      comingSoon("Servos", "Read and move single servos in direct mode, within their safe ranges."),
-  },
+  { id: "motions", label: "Motions", load: () => import("./motions-view.ts") },
+  { id: "sensors", label: "Sensors", load: () => import("./sensors-view.ts") },
+  { id: "servos", label: "Servos", load: () => import("./servos-view.ts") },
   { id: "log", label: "Log", load: () => import("./log-view.ts") },
 ];
 

@@ -21,7 +21,7 @@ export function connectionSummary(c: ConnectionState): string[] {
       if (c.platform !== undefined) parts.push(platformName(c.platform));
       if (c.firmware) parts.push(`fw ${formatFirmware(c.firmware)}`);
       if (c.serialNumber) parts.push(`SN ${c.serialNumber}`);
-      if (c.mode === "direct") parts.push("servos limp");
+      if (c.mode === "direct") parts.push(c.limp ? "servos limp" : "servo control");
       return parts;
     }
   }

@@ -16,8 +16,13 @@ export interface AppView {
   /** When true, the connect card takes the view's place while no robot is connected. */
   needsRobot: boolean;
   render(ctx: ViewContext): TemplateResult;
-  /** Called when the view is shown with a robot connected (once per view and connection). */
+  /** Called when the view is shown with a robot connected (each time it is shown, once per connection). */
   activate?(ctx: ViewContext): void;
+  /**
+   * Called when an activated view stops being shown: the user chose another view, or the robot was
+   * disconnected. Views stop their polling and subscriptions here.
+   */
+  deactivate?(ctx: ViewContext): void;
 }
 
 /** One entry of the side navigation. `load` may be a dynamic import, so the view's code arrives when needed. */

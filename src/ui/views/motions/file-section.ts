@@ -1,0 +1,293 @@
+import { html, nothing, type TemplateResult } from "lit-html";
+import { ref } from "lit-html/directives/ref.js";
+import { repeat } from "lit-html/directives/repeat.js";
+import type { RbmMotion } from "../../../protocol/rbm.ts";
+import type { RbmIssue } from "../../../protocol/rbm-validate.ts";
+import { seriesColour } from "../../charts/chart-loader.ts";
+import { type ChartContent, ChartSlot } from "../../charts/chart-slot.ts";
+import { formatCount } from "../../format.ts";
+import {
+  checkEntry,
+  entryFacts,
+  openMotionFiles,
+  removeMotionFile,
+  selectMotionFile,
+  setDragging,
+} from "../../motions/motion-files.ts";
+import type { MotionFileEntry } from "../../motions/motions-state.ts";
+import { formatSeconds, motionPlotData, sceneRows } from "../../motions/plot-data.ts";
+import { requestUpload, uploadBlocked } from "../../motions/upload-actions.ts";
+import { liveNotice } from "../notice.ts";
+import type { ViewContext } from "../view-types.ts";
+
+/** The Motions view's files: open (picker or drop), facts, errors and warnings, scenes and the chart. */
+
+const WARNINGS_SHOWN = 6;
+
+let shownEntry: MotionFileEntry | undefined;
+
+let cached: { entry: MotionFileEntry; content: ChartContent } | undefined;
+
+const motionChart = new ChartSlot(() => {
+  const entry = shownEntry;
+  if (!entry?.motion) return undefined;
+  if (cached?.entry === entry) return cached.content;
+  const content = motionChartContent(entry, entry.motion);
+  cached = { entry, content };
+  return content;
+});
+
+function motionChartContent(entry: MotionFileEntry, motion: RbmMotion): ChartContent {
+  const plot = motionPlotData(motion);
+  const n = plot.series.length;
+  return {
+    key: `motion-${entry.id}`,
+    spec: {
+      title: `Servo positions of ${motion.name} over ${formatSeconds(plot.x.at(-1) ?? 0)}, one line per servo`,
+      height: 300,
+      xLabel: "Time (ms)",
+      yLabel: "Position",
+      yRange: [0, 254],
+      liveLegend: false,
+      series: plot.series.map((s, i) => ({
+        label: s.label,
+        stroke: seriesColour(i, n),
+        // Left-side joints (5-9 legs, 13-15 arms) dashed, so that mirrored joints can be told apart.
+        dash: (s.id >= 5 && s.id <= 9) || s.id >= 13 ? [6, 3] : undefined,
+      })),
+    },
+    x: plot.x,
+    ys: plot.series.map((s) => s.values),
+  };
+}
+
+function filesFrom(list: FileList | null | undefined): File[] {
+  return list ? Array.from(list) : [];
+}
+
+function dropZone(ctx: ViewContext): TemplateResult {
+  const dragging = ctx.state.motionFiles?.dragging ?? false;
+  const pick = () => document.getElementById("rbm-input")?.click();
+  return html`
+    <div
+      class="drop-zone ${dragging ? "is-dragging" : ""}"
+      role="button"
+      tabindex="0"
+      aria-describedby="drop-hint"
+      data-testid="rbm-drop"
+      @click=${pick}
+      @keydown=${(e: KeyboardEvent) => {
+        if (e.key === "Enter" || e.key === " ") {
+          e.preventDefault();
+          pick();
+        }
+      }}
+      @dragenter=${(e: DragEvent) => {
+        e.preventDefault();
+        setDragging(ctx.store, true);
+      }}
+      @dragover=${(e: DragEvent) => {
+        e.preventDefault();
+        if (e.dataTransfer) e.dataTransfer.dropEffect = "copy";
+      }}
+      @dragleave=${(e: DragEvent) => {
+        const to = e.relatedTarget;
+        if (!(to instanceof Node) || !(e.currentTarget as HTMLElement).contains(to)) {
+          setDragging(ctx.store, false);
+        }
+      }}
+      @drop=${(e: DragEvent) => {
+        e.preventDefault();
+        setDragging(ctx.store, false);
+        void openMotionFiles(ctx.store, filesFrom(e.dataTransfer?.files));
+      }}
+    >
+      <span class="drop-title">Open motion files (.rbm)</span>
+      <span id="drop-hint" class="muted small">Drop Motionbuilder files here, or press to choose (several at once).</span>
+    </div>
+    <input
+      id="rbm-input"
+      class="sr-only"
+      type="file"
+      accept=".rbm,text/plain"
+      multiple
+      tabindex="-1"
+      aria-hidden="true"
+      data-testid="rbm-files"
+      @change=${(e: Event) => {
+        const input = e.target as HTMLInputElement;
+        const files = filesFrom(input.files);
+        input.value = "";
+        void openMotionFiles(ctx.store, files);
+      }}
+    />
+  `;
+}
+
+function where(issue: RbmIssue): string {
+  const parts = [
+    issue.scene === undefined ? undefined : `scene ${issue.scene}`,
+    issue.servo === undefined ? undefined : `servo ${issue.servo}`,
+  ].filter((p) => p !== undefined);
+  return parts.length > 0 ? `${parts.join(", ")}: ` : "";
+}
+
+function issueItem(kind: "error" | "warning", issue: RbmIssue): TemplateResult {
+  return html`<li class="issue issue--${kind}">
+    <span class="issue-kind">${kind === "error" ? "Error" : "Warning"}</span>
+    <span>${where(issue)}${issue.message}</span>
+  </li>`;
+}
+
+function issues(errors: readonly RbmIssue[], warnings: readonly RbmIssue[]): TemplateResult {
+  const first = warnings.slice(0, WARNINGS_SHOWN);
+  const rest = warnings.slice(WARNINGS_SHOWN);
+  const summary =
+    errors.length === 0 && warnings.length === 0
+      ? html`<p class="check-ok">Checked: no errors, no warnings.</p>`
+      : html`<p class="muted small">
+          Checked: ${errors.length} ${errors.length === 1 ? "error" : "errors"}, ${warnings.length}
+          ${warnings.length === 1 ? "warning" : "warnings"}.
+        </p>`;
+  return html`
+    ${summary}
+    ${
+      errors.length + first.length > 0
+        ? html`<ul class="issues" data-testid="rbm-issues">
+            ${errors.map((i) => issueItem("error", i))} ${first.map((i) => issueItem("warning", i))}
+          </ul>`
+        : nothing
+    }
+    ${
+      rest.length > 0
+        ? html`<details class="more-issues">
+            <summary>Show ${rest.length} more ${rest.length === 1 ? "warning" : "warnings"}</summary>
+            <ul class="issues">${rest.map((i) => issueItem("warning", i))}</ul>
+          </details>`
+        : nothing
+    }
+  `;
+}
+
+function fileCard(ctx: ViewContext, entry: MotionFileEntry, selected: boolean): TemplateResult {
+  const facts = entryFacts(entry);
+  const { errors, warnings } = checkEntry(entry, ctx.state.connection.serialNumber);
+  const target = { area: "motion" as const, entryId: entry.id };
+  const blocked = uploadBlocked(ctx.state, target);
+  const whyId = `upload-why-${entry.id}`;
+  return html`
+    <article class="motion-file ${selected ? "is-selected" : ""} ${errors.length > 0 ? "has-errors" : ""}" data-testid="motion-file" aria-labelledby=${`file-${entry.id}`}>
+      <div class="motion-file-head">
+        <h3 id=${`file-${entry.id}`}>
+          ${facts ? html`${facts.name} <span class="muted file-name">${entry.fileName}</span>` : entry.fileName}
+        </h3>
+        <div class="row-actions">
+          ${
+            facts
+              ? html`<button type="button" class="btn" aria-pressed=${selected ? "true" : "false"} @click=${() => selectMotionFile(ctx.store, entry.id)}>
+                  ${selected ? "Scenes and chart shown" : "Show scenes and chart"}
+                </button>`
+              : nothing
+          }
+          <button type="button" class="btn btn--quiet" aria-label=${`Remove ${entry.fileName}`} @click=${() => removeMotionFile(ctx.store, entry.id)}>
+            Remove
+          </button>
+        </div>
+      </div>
+      ${
+        facts
+          ? html`<dl class="file-facts num">
+              <div><dt>Scenes</dt><dd>${facts.scenes}</dd></div>
+              <div><dt>Servos</dt><dd>${facts.servos}</dd></div>
+              <div><dt>Plays for</dt><dd>${formatSeconds(facts.durationMs)}</dd></div>
+              <div><dt>Image</dt><dd>${formatCount(facts.imageBytes)} bytes</dd></div>
+              <div><dt>On the robot</dt><dd>${formatCount(facts.footprint)} bytes</dd></div>
+            </dl>`
+          : html`<p class="text-danger">This file cannot be used as a motion.</p>`
+      }
+      ${issues(errors, warnings)}
+      <div class="write-row">
+        <button
+          type="button"
+          class="btn btn--primary"
+          data-testid="upload-motion"
+          ?disabled=${blocked !== undefined}
+          aria-describedby=${whyId}
+          @click=${() => requestUpload(ctx, target)}
+        >
+          Upload to robot
+        </button>
+        <span id=${whyId} class=${errors.length > 0 ? "text-danger small" : "muted small"} data-testid="upload-why">
+          ${
+            blocked ??
+            (ctx.state.connection.robot?.kind === "demo"
+              ? "Uploads to the demo robot's simulated memory."
+              : "Asks for confirmation first: uploading to a real robot is experimental.")
+          }
+        </span>
+      </div>
+    </article>
+  `;
+}
+
+function sceneTable(entry: MotionFileEntry): TemplateResult | typeof nothing {
+  const motion = entry.motion;
+  if (!motion) return nothing;
+  const rows = sceneRows(motion);
+  return html`
+    <section class="scene-section" aria-labelledby="scenes-title" data-testid="scene-section">
+      <h3 id="scenes-title">Scenes of ${motion.name}</h3>
+      <div class="table-wrap">
+        <table class="data-table scene-table">
+          <thead>
+            <tr>
+              <th scope="col">#</th>
+              <th scope="col">Name</th>
+              <th scope="col" class="num-col">Frames</th>
+              <th scope="col" class="num-col">Time (ms)</th>
+              <th scope="col" class="num-col">Frame interval (ms)</th>
+            </tr>
+          </thead>
+          <tbody>
+            ${rows.map(
+              (r) => html`<tr>
+                <td class="num">${r.index}</td>
+                <td>${r.name}</td>
+                <td class="num num-col">${r.frames}</td>
+                <td class="num num-col">${formatCount(r.timeMs)}</td>
+                <td class="num num-col">${r.frameMs === undefined ? "—" : Number(r.frameMs.toFixed(1))}</td>
+              </tr>`,
+            )}
+          </tbody>
+        </table>
+      </div>
+      <figure class="chart">
+        <div class="chart-host chart-host--motion" data-testid="motion-chart" ${ref(motionChart.ref)}></div>
+        <figcaption class="muted small">
+          Each servo's position over the motion (x: ms from the start). Left-side joints are dashed; press a
+          joint in the legend to hide or show its line.
+        </figcaption>
+      </figure>
+    </section>
+  `;
+}
+
+export function fileSection(ctx: ViewContext): TemplateResult {
+  const files = ctx.state.motionFiles;
+  const entries = files?.entries ?? [];
+  const selected = entries.find((e) => e.id === files?.selected && e.motion);
+  shownEntry = selected;
+  if (selected) motionChart.refresh();
+  return html`
+    <section class="card" aria-labelledby="files-title" data-testid="motion-files">
+      <h2 id="files-title" class="card-title">Motion files</h2>
+      ${dropZone(ctx)} ${liveNotice(files?.notice, "Opened files")}
+      ${repeat(
+        entries,
+        (e) => e.id,
+        (e) => fileCard(ctx, e, e.id === selected?.id),
+      )}
+      ${selected ? sceneTable(selected) : nothing}
+    </section>
+  `;
+}

@@ -1,0 +1,274 @@
+import "../styles/tools.css";
+import { html, nothing, type TemplateResult } from "lit-html";
+import { live } from "lit-html/directives/live.js";
+import { ref } from "lit-html/directives/ref.js";
+import { repeat } from "lit-html/directives/repeat.js";
+import { BUILT_IN_MOTIONS } from "../../protocol/catalog.ts";
+import { prefersReducedMotion, seriesColour } from "../charts/chart-loader.ts";
+import { ChartSlot } from "../charts/chart-slot.ts";
+import { formatClockTime } from "../format.ts";
+import type { RingSeries } from "../sensors/ring-series.ts";
+import { describeEvent } from "../sensors/sensor-events.ts";
+import {
+  accelSeries,
+  distanceSeries,
+  effectiveRate,
+  sensorsOf,
+  sensorWatch,
+} from "../sensors/sensor-watch.ts";
+import { type ListenChoice, POLL_RATES, type PollRate } from "../sensors/sensors-state.ts";
+import { liveNotice, notice } from "./notice.ts";
+import { demoWorld } from "./sensors/demo-world.ts";
+import type { AppView, ViewContext } from "./view-types.ts";
+
+/** Sensors: distance and accelerometer polled live, and the sound / PF button / IR remote events (issue #4). */
+
+function seconds(v: number): string {
+  return v === 0 ? "now" : `${v} s`;
+}
+
+function liveSlot(
+  series: RingSeries,
+  key: string,
+  title: string,
+  yLabel: string,
+  labels: string[],
+  yRange: [number, number],
+) {
+  return new ChartSlot(
+    () => ({
+      key,
+      spec: {
+        title,
+        height: 180,
+        xLabel: "Seconds ago",
+        yLabel,
+        xRange: [-30, 0],
+        yRange,
+        xFormat: seconds,
+        liveLegend: false,
+        series: labels.map((label, i) => ({ label, stroke: seriesColour(i * 5, 16) })),
+      },
+      x: series.relativeSeconds(),
+      ys: series.values,
+    }),
+    prefersReducedMotion() ? 1000 : 0,
+  );
+}
+
+const distanceChart = liveSlot(
+  distanceSeries,
+  "distance",
+  "Distance in cm over the last 30 seconds",
+  "cm",
+  ["Distance (cm)"],
+  [10, 50],
+);
+const accelChart = liveSlot(
+  accelSeries,
+  "accel",
+  "Accelerometer X, Y and Z over the last 30 seconds",
+  "Reading",
+  ["X", "Y", "Z"],
+  [-10, 10],
+);
+
+sensorWatch.onSample = () => {
+  distanceChart.refresh();
+  accelChart.refresh();
+};
+
+const LISTEN: readonly [ListenChoice, string][] = [
+  ["none", "Nothing"],
+  ["sound", "Sound level"],
+  ["buttons", "PF buttons"],
+  ["remote", "IR remote"],
+];
+
+function pollCard(ctx: ViewContext): TemplateResult {
+  const s = sensorsOf(ctx.state);
+  const paused = s.pausedWhy;
+  const a = s.accel;
+  return html`
+    <section class="card" aria-labelledby="poll-title" data-testid="poll-card">
+      <div class="card-head">
+        <h2 id="poll-title" class="card-title">Distance and accelerometer</h2>
+        <div class="row-actions">
+          <label class="inline-field">
+            Read
+            <select
+              data-testid="poll-rate"
+              @change=${(e: Event) => sensorWatch.setRate(Number((e.target as HTMLSelectElement).value) as PollRate)}
+            >
+              ${POLL_RATES.map((r) => html`<option value=${r} ?selected=${r === s.rateHz}>${r} times a second</option>`)}
+            </select>
+          </label>
+          <button type="button" class="btn" data-testid="poll-toggle" aria-pressed=${s.polling ? "false" : "true"} @click=${() => sensorWatch.setPolling(!s.polling)}>
+            ${s.polling ? "Pause" : "Resume"}
+          </button>
+        </div>
+      </div>
+      <p class="muted small" role="status" data-testid="poll-status">
+        ${
+          s.running
+            ? `Reading ${effectiveRate(s)} times a second${
+                effectiveRate(s) < s.rateHz
+                  ? " (at most 5 while listening to sound, so the robot can report it)"
+                  : ""
+              }${s.readAt ? `; last reading at ${formatClockTime(s.readAt)}` : ""}.`
+            : s.polling
+              ? "Not reading right now."
+              : "Paused."
+        }
+      </p>
+      ${
+        paused
+          ? html`${notice(paused)}
+            ${
+              ctx.state.connection.mode === "direct"
+                ? html`<button type="button" class="btn" @click=${() => void sensorWatch.leaveDirectAndResume()}>Resume reading</button>`
+                : nothing
+            }`
+          : nothing
+      }
+      <div class="sensor-values">
+        <div class="sensor-value">
+          <span class="muted small">Distance</span>
+          <span class="big num" data-testid="distance-value">${s.distanceCm === undefined ? "—" : `${s.distanceCm} cm`}</span>
+          <span class="muted small">10 cm means nothing in front (or no sensor)</span>
+        </div>
+        <div class="sensor-value">
+          <span class="muted small">Accelerometer</span>
+          <span class="big num" data-testid="accel-value">${a ? html`X ${a.x} · Y ${a.y} · Z ${a.z}` : "—"}</span>
+          <span class="muted small">raw readings, signed</span>
+        </div>
+      </div>
+      <div class="chart-pair">
+        <figure class="chart">
+          <div class="chart-host" data-testid="distance-chart" data-samples=${distanceSeries.size} data-last=${distanceSeries.latest()?.join(",") ?? ""} ${ref(distanceChart.ref)}></div>
+          <figcaption class="muted small">Distance (cm), last 30 s</figcaption>
+        </figure>
+        <figure class="chart">
+          <div class="chart-host" data-testid="accel-chart" data-samples=${accelSeries.size} data-last=${accelSeries.latest()?.join(",") ?? ""} ${ref(accelChart.ref)}></div>
+          <figcaption class="muted small">Accelerometer X, Y, Z, last 30 s</figcaption>
+        </figure>
+      </div>
+    </section>
+  `;
+}
+
+function eventsCard(ctx: ViewContext): TemplateResult {
+  const s = sensorsOf(ctx.state);
+  const subscribed = ctx.state.connection.subscription;
+  return html`
+    <section class="card" aria-labelledby="events-title" data-testid="events-card">
+      <h2 id="events-title" class="card-title">Sound, PF buttons and IR remote</h2>
+      <p class="muted small">The robot reports only one of these at a time, so choose which one to listen to.</p>
+      <fieldset class="choice-row">
+        <legend class="sr-only">Listen to</legend>
+        ${LISTEN.map(
+          ([value, label]) => html`<label class="check">
+            <input
+              type="radio"
+              name="listen"
+              value=${value}
+              .checked=${live(s.listen === value)}
+              @change=${() => void sensorWatch.setListen(value, s.threshold)}
+            />
+            ${label}
+          </label>`,
+        )}
+      </fieldset>
+      ${
+        s.listen === "sound"
+          ? html`<div class="write-row">
+              <label for="sound-threshold">Report sound levels from</label>
+              <input
+                id="sound-threshold"
+                type="number"
+                min="0"
+                max="255"
+                step="1"
+                .value=${live(String(s.threshold))}
+                @change=${(e: Event) => {
+                  const v = Math.max(
+                    0,
+                    Math.min(255, Math.round(Number((e.target as HTMLInputElement).value) || 0)),
+                  );
+                  void sensorWatch.setListen("sound", v);
+                }}
+              />
+              <span class="muted small">(0-255; the robot sends the level about 10 times a second while it is at least this loud)</span>
+            </div>
+            <div class="memory-row sound-level">
+              <label for="sound-meter">Sound level</label>
+              <meter id="sound-meter" min="0" max="255" value=${s.soundLevel?.value ?? 0}></meter>
+              <span class="num" data-testid="sound-level">${s.soundLevel ? `${s.soundLevel.value} at ${formatClockTime(s.soundLevel.at)}` : "nothing heard yet"}</span>
+            </div>`
+          : nothing
+      }
+      <p class="muted small" data-testid="listen-status">
+        ${
+          s.listen === "none"
+            ? "Not listening."
+            : subscribed === s.listen
+              ? `Listening to ${LISTEN.find(([v]) => v === s.listen)?.[1]}.`
+              : "Not listening right now (paused)."
+        }
+      </p>
+      ${
+        s.listen !== "none" && s.running
+          ? html`<p class="muted small">
+              Each sensor reading interrupts the listening for a moment (the robot ends it at every request and
+              the panel starts it again). Pause the readings above to catch every event.
+            </p>`
+          : nothing
+      }
+      ${liveNotice(s.listenNotice, "Listening")}
+      <h3>Events</h3>
+      ${
+        s.events.length === 0
+          ? html`<p class="empty small">No events yet.</p>`
+          : html`<ol class="event-list" data-testid="event-list" aria-live="polite">
+              ${repeat(
+                s.events,
+                (e) => e.id,
+                (e) => html`<li>
+                  <span class="num muted">${formatClockTime(e.at)}</span>
+                  <span>${describeEvent(e)}</span>
+                  ${e.count > 1 ? html`<span class="num muted">×${e.count}</span>` : nothing}
+                </li>`,
+              )}
+            </ol>`
+      }
+    </section>
+  `;
+}
+
+function render(ctx: ViewContext): TemplateResult {
+  return html`
+    <div class="view-stack">
+      <header class="view-head">
+        <h1 id="view-title">Sensors</h1>
+        <p class="muted">Live readings from the robot. Reading stops when you leave this view or hide the tab.</p>
+      </header>
+      ${pollCard(ctx)} ${eventsCard(ctx)}
+      ${ctx.state.connection.robot?.kind === "demo" ? demoWorld(ctx, BUILT_IN_MOTIONS) : nothing}
+    </div>
+  `;
+}
+
+const sensorsView: AppView = {
+  needsRobot: true,
+  render,
+  activate(ctx) {
+    sensorWatch.activate(ctx);
+  },
+  deactivate() {
+    sensorWatch.deactivate();
+    distanceChart.destroy();
+    accelChart.destroy();
+  },
+};
+
+export default sensorsView;

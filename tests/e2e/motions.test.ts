@@ -1,0 +1,321 @@
+import type { Page } from "playwright-core";
+import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { type AppHarness, connectRobot, cspViolations, squash, startHarness, watchPage } from "./harness.ts";
+import { imageHex, longMotion, rbmFile, rbmText, withSerial, withShortFrames } from "./motion-fixtures.ts";
+import type { RbcTestOptions } from "./rbc-test-globals.ts";
+import "./rbc-test-globals.ts";
+
+let app: AppHarness;
+
+beforeAll(async () => {
+  app = await startHarness();
+});
+
+afterAll(async () => {
+  await app?.close();
+});
+
+/** A paced link (115200 baud, 16 ms FTDI latency), so uploads take as long as on the wire. */
+const PACED: RbcTestOptions = { baudPacing: true, latencyMs: 16 };
+
+async function openMotions(page: Page): Promise<void> {
+  await connectRobot(page, app.url);
+  await page.getByTestId("memory-motion-text").filter({ hasText: "24,576" }).waitFor();
+  await page.getByRole("link", { name: "Motions" }).click();
+  await page.getByTestId("memory-card").waitFor();
+  await page.getByTestId("mem-motion-text").filter({ hasText: "24,576 of 24,576" }).waitFor();
+}
+
+const bytesFromPc = (page: Page) => page.evaluate(() => window.__rbcTest?.port.stats.bytesFromPc ?? -1);
+const simMotionsHex = (page: Page) =>
+  page.evaluate(() =>
+    (window.__rbcTest?.sim.motions ?? []).map((m) =>
+      Array.from(m.bytes, (b) => b.toString(16).padStart(2, "0")).join(""),
+    ),
+  );
+
+/** Records every text the upload figures show, so a test can see the progress that flashed by. */
+async function recordFigures(page: Page): Promise<void> {
+  await page.evaluate(() => {
+    const seen: string[] = [];
+    (window as unknown as { __figures: string[] }).__figures = seen;
+    new MutationObserver(() => {
+      const el = document.querySelector('[data-testid="upload-figures"]');
+      const text = el?.textContent?.replace(/\s+/g, " ").trim();
+      if (text && seen.at(-1) !== text) seen.push(text);
+    }).observe(document.body, { subtree: true, childList: true, characterData: true });
+  });
+}
+
+describe("motions view", () => {
+  it("checks Hi.rbm, uploads it after the experimental notice, and the robot holds the exact image", async () => {
+    const { page, context } = await app.newPage({ options: PACED });
+    const seen = watchPage(page, app.origin);
+    await openMotions(page);
+    const hi = rbmText("Hi.rbm");
+    await page.getByTestId("rbm-files").setInputFiles(rbmFile("Hi.rbm", hi));
+    const card = page.getByTestId("motion-file");
+    await card.waitFor();
+    const facts = await card.textContent().then(squash);
+    expect(facts).toContain("HunoDemo_Hi");
+    expect(facts).toMatch(/Scenes\s*5 Servos\s*16/);
+    expect(facts).toMatch(/Plays for\s*3\.5 s/);
+    expect(facts).toMatch(/Image\s*538 bytes/);
+    expect(facts).toMatch(/On the robot\s*576 bytes/);
+    // The scene table and the chart (uPlot, loaded on demand).
+    await page.getByTestId("scene-section").waitFor();
+    expect(await page.locator(".scene-table tbody tr").count()).toBe(5);
+    await page.locator('[data-testid="motion-chart"][data-chart="drawn"]').waitFor();
+    expect(await page.locator('[data-testid="motion-chart"] canvas').count()).toBeGreaterThan(0);
+    expect(await page.locator('[data-testid="motion-chart"] .u-legend').textContent()).toContain(
+      "Right knee",
+    );
+
+    // A real robot (the fake port is hardware): the panel says it is experimental and asks first.
+    const before = await bytesFromPc(page);
+    await page.getByTestId("upload-motion").click();
+    const confirm = page.getByTestId("upload-confirm");
+    await confirm.waitFor();
+    const words = await confirm.textContent().then(squash);
+    expect(words).toContain("experimental");
+    expect(words).toContain("not been verified on real RBC firmware");
+    expect(words).toContain("held or lying down");
+    expect(await bytesFromPc(page)).toBe(before);
+
+    await recordFigures(page);
+    await page.getByRole("button", { name: "Upload (experimental)" }).click();
+    const result = page.getByText(/^Uploaded Hi\.rbm/);
+    await result.waitFor({ timeout: 15_000 });
+    const text = await result.textContent().then(squash);
+    expect(text).toMatch(/538 bytes in 9 chunks/);
+    expect(text).toMatch(/bytes\/s/);
+    expect(text).toContain("It is downloaded motion 1: run it as motion number 12");
+    expect(text).toContain("Free motion memory: 24,000 of 24,576 bytes (was 24,576");
+    expect(text).toContain("Error code after the upload: no error");
+    expect(text).toContain("held or lying down");
+    const figures = await page.evaluate(() => (window as unknown as { __figures: string[] }).__figures);
+    expect(figures.some((f) => f.includes("538 of 538 bytes (100%)"))).toBe(true);
+    expect(figures.some((f) => /bytes\/s/.test(f) && /left/.test(f))).toBe(true);
+
+    expect(await simMotionsHex(page)).toEqual([imageHex(hi)]);
+    // Memory figures refreshed, here and on the device card.
+    expect(await page.getByTestId("mem-motion-text").textContent().then(squash)).toBe(
+      "24,000 of 24,576 bytes free",
+    );
+    expect(await page.getByTestId("mem-motion-count").textContent().then(squash)).toMatch(/^1 of 20 motions/);
+    expect(await page.getByTestId("uploaded-list").textContent().then(squash)).toContain(
+      "slot 1 → motion number 12",
+    );
+    // Run offers it by name and length.
+    const download = page.locator('[data-testid="downloaded-motions"] [data-motion="12"]');
+    expect(await download.textContent().then(squash)).toBe("12 HunoDemo_Hi 3.5 s");
+    await page.getByRole("link", { name: "Robot" }).click();
+    expect(await page.getByTestId("memory-motion-text").textContent().then(squash)).toMatch(
+      /24,000 of 24,576/,
+    );
+
+    expect(seen.errors).toEqual([]);
+    expect(seen.foreignRequests).toEqual([]);
+    expect(await cspViolations(page)).toEqual([]);
+    await context.close();
+  });
+
+  it("cancels an upload: sending stops, the robot records nothing, and the panel says how much was acknowledged", async () => {
+    const { page, context } = await app.newPage({ options: PACED });
+    await openMotions(page);
+    const long = longMotion(rbmText("Hi.rbm"), 40);
+    await page.getByTestId("rbm-files").setInputFiles(rbmFile("Long.rbm", long));
+    await page.getByTestId("upload-motion").click();
+    await page.getByRole("button", { name: "Upload (experimental)" }).click();
+    const figures = page.getByTestId("upload-figures");
+    await figures.filter({ hasText: /\((?:[5-9]|[1-9]\d)%\)/ }).waitFor({ timeout: 15_000 });
+    await page.getByRole("button", { name: "Cancel upload" }).click();
+
+    const result = page.getByText(/^Upload cancelled/);
+    await result.waitFor({ timeout: 10_000 });
+    const text = await result.textContent().then(squash);
+    expect(text).toMatch(/Upload cancelled \([\d,]+ of 17,?308 bytes were acknowledged\)/);
+    expect(text).toContain("recorded nothing");
+    expect(await page.getByTestId("upload-progress").count()).toBe(0);
+    // Nothing more goes out, and the robot holds no motion.
+    const after = await bytesFromPc(page);
+    await page.waitForTimeout(400);
+    expect(await bytesFromPc(page)).toBe(after);
+    expect(await simMotionsHex(page)).toEqual([]);
+    await context.close();
+  });
+
+  it("never sends a byte of a file with errors and says why in words", async () => {
+    const { page, context } = await app.newPage();
+    await openMotions(page);
+    const before = await bytesFromPc(page);
+    await page
+      .getByTestId("rbm-files")
+      .setInputFiles(rbmFile("Edited.rbm", withShortFrames(rbmText("Hi.rbm"))));
+    const card = page.getByTestId("motion-file");
+    await card.waitFor();
+    const issues = await page.getByTestId("rbm-issues").textContent().then(squash);
+    expect(issues).toMatch(
+      /Error scene 0: Scene 0 has frames 10 ms apart \(100 ms \/ 10 frames\); the RBC needs at least 20 ms/,
+    );
+    const upload = page.getByTestId("upload-motion");
+    expect(await upload.isDisabled()).toBe(true);
+    expect(await page.getByTestId("upload-why").textContent().then(squash)).toBe(
+      "Cannot upload: the file has 1 error (listed above). Nothing is sent.",
+    );
+    await upload.click({ force: true }).catch(() => {});
+    await page.waitForTimeout(200);
+    expect(await bytesFromPc(page)).toBe(before);
+    expect(await simMotionsHex(page)).toEqual([]);
+    await context.close();
+  });
+
+  it("opens files by drop and by keyboard, and warns about a motion made for another robot", async () => {
+    const { page, context } = await app.newPage();
+    await openMotions(page);
+    const text = withSerial(rbmText("Punch.rbm"), "1234567890123");
+    const transfer = await page.evaluateHandle((t) => {
+      const dt = new DataTransfer();
+      dt.items.add(new File([t], "Other.rbm", { type: "text/plain" }));
+      return dt;
+    }, text);
+    await page.dispatchEvent('[data-testid="rbm-drop"]', "drop", { dataTransfer: transfer });
+    const card = page.getByTestId("motion-file");
+    await card.waitFor();
+    expect(await card.textContent().then(squash)).toContain(
+      "made for the robot with serial number 1234567890123, but the connected robot is 8958899989309",
+    );
+    // Warnings do not block an upload.
+    expect(await page.getByTestId("upload-motion").isEnabled()).toBe(true);
+
+    // The drop zone is a button for the keyboard too: Enter and Space open the (multiple) file picker.
+    expect(await page.getByTestId("rbm-files").getAttribute("multiple")).not.toBeNull();
+    await page.evaluate(() => {
+      const w = window as unknown as { __picks: number };
+      w.__picks = 0;
+      document.getElementById("rbm-input")?.addEventListener("click", (e) => {
+        w.__picks++;
+        e.preventDefault();
+      });
+    });
+    await page.getByTestId("rbm-drop").focus();
+    await page.keyboard.press("Enter");
+    await page.keyboard.press("Space");
+    await expect.poll(() => page.evaluate(() => (window as unknown as { __picks: number }).__picks)).toBe(2);
+    await context.close();
+  });
+
+  it("guides to basic posture first, asks once before moving, stops a motion with 7, and Stop makes every servo limp", async () => {
+    const { page, context } = await app.newPage();
+    await openMotions(page);
+    const guidance = page.getByTestId("posture-guidance");
+    expect(await guidance.textContent().then(squash)).toContain(
+      "After switching on, the robot only accepts Basic posture (7). Run it first.",
+    );
+    expect(await page.locator('[data-motion="7"]').getAttribute("class")).toContain("is-recommended");
+    // No UI for numbers outside the allowed list.
+    const offered = await page
+      .locator("[data-motion]")
+      .evaluateAll((els) => els.map((e) => Number(e.getAttribute("data-motion"))));
+    expect(offered).toEqual([1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11]);
+
+    // Motion 4 before 7: asked once, then the robot ignores it and the panel says what to do.
+    await page.locator('[data-motion="4"]').click();
+    const ask = page.getByTestId("move-confirm");
+    expect(await ask.textContent().then(squash)).toContain("The robot will move. Hold it or give it room.");
+    await page.getByRole("button", { name: "Run motion 4 (Walk forward)" }).click();
+    await page.getByTestId("running-motion").filter({ hasText: "Walk forward" }).waitFor();
+    const ignored = page.getByText(/The robot ignored motion 4/);
+    await ignored.waitFor({ timeout: 8000 });
+    expect(await ignored.textContent().then(squash)).toContain("Run it first.");
+
+    // 7 runs without asking again; afterwards the guidance is gone.
+    await page.locator('[data-motion="7"]').click();
+    expect(await page.getByTestId("move-confirm").count()).toBe(0);
+    await page.getByText("Motion 7 (Basic posture) finished. The robot now accepts every motion.").waitFor({
+      timeout: 6000,
+    });
+    expect(await guidance.count()).toBe(0);
+
+    // Stop motion sends 7: the robot ends the scene, then returns to basic posture.
+    await page.locator('[data-motion="2"]').click();
+    await page.getByTestId("stop-motion").click();
+    await page.getByText(/Motion 2 \(Get up B \(from back\)\) stopped at the end of its scene/).waitFor();
+    expect(await page.evaluate(() => window.__rbcTest?.sim.playingMotion)).toBe(7);
+    await expect.poll(() => page.locator('[data-motion="1"]').isEnabled(), { timeout: 5000 }).toBe(true);
+
+    // The global Stop during a motion: every servo limp.
+    await page.locator('[data-motion="1"]').click();
+    await page.getByTestId("running-motion").waitFor();
+    await page.getByRole("button", { name: /Stop — limp/ }).click();
+    await page.getByText(/Stopped: all 16 servos are limp/).waitFor({ timeout: 8000 });
+    const passive = await page.evaluate(() => window.__rbcTest?.sim.servos.map((s) => s.passive));
+    expect(passive).toEqual(Array(16).fill(true));
+    await page.getByText(/Motion 1 \(Get up A \(from front\)\) was interrupted by Stop — limp/).waitFor();
+    await context.close();
+  });
+
+  it("plays a sound and keeps other robot actions disabled while it plays", async () => {
+    const { page, context } = await app.newPage();
+    await openMotions(page);
+    await page.locator('[data-sound="1"]').click();
+    const playing = page.getByTestId("sound-playing");
+    await playing.waitFor();
+    expect(await playing.textContent().then(squash)).toContain(
+      "The robot does nothing else until the sound ends",
+    );
+    expect(await page.locator('[data-motion="7"]').isDisabled()).toBe(true);
+    expect(await page.locator('[data-sound="2"]').isDisabled()).toBe(true);
+    await page.getByText("Sound 1 played (2.3 s).").waitFor({ timeout: 6000 });
+    expect(await page.locator('[data-motion="7"]').isEnabled()).toBe(true);
+    await context.close();
+  });
+
+  it("on the demo robot uploads without asking, and a reset first puts the upload into slot 1", async () => {
+    const { page, context } = await app.newPage();
+    await page.goto(app.url);
+    await page.getByRole("button", { name: "Try the demo robot" }).click();
+    await page.getByTestId("device-card").waitFor();
+    await page.getByRole("link", { name: "Motions" }).click();
+    await page.getByTestId("mem-motion-text").filter({ hasText: "24,576 of 24,576" }).waitFor();
+    await page
+      .getByTestId("rbm-files")
+      .setInputFiles([rbmFile("Hi.rbm", rbmText("Hi.rbm")), rbmFile("Punch.rbm", rbmText("Punch.rbm"))]);
+    const cards = page.getByTestId("motion-file");
+    await cards.nth(1).waitFor();
+    await cards.nth(0).getByTestId("upload-motion").click();
+    expect(await page.getByTestId("upload-confirm").count()).toBe(0);
+    await page.getByText(/^Uploaded Hi\.rbm/).waitFor();
+    await cards.nth(1).getByTestId("upload-motion").click();
+    await page.getByText(/^Uploaded Punch\.rbm/).waitFor();
+    expect(await page.getByTestId("uploaded-list").textContent().then(squash)).toMatch(
+      /HunoDemo_Hi Hi\.rbm — slot 1 → motion number 12.*HunoDemo_Punch Punch\.rbm — slot 2 → motion number 13/,
+    );
+    await page.getByTestId("reset-first").check();
+    await cards.nth(1).getByTestId("upload-motion").click();
+    const result = page.getByText(/^Uploaded Punch\.rbm/);
+    await result.filter({ hasText: "Free motion memory: 24,000 of" }).waitFor();
+    const list = await page.getByTestId("uploaded-list").textContent().then(squash);
+    expect(list).toContain("HunoDemo_Punch Punch.rbm — slot 1 → motion number 12");
+    expect(list).not.toContain("HunoDemo_Hi");
+    expect(await page.getByTestId("mem-motion-text").textContent().then(squash)).toBe(
+      "24,000 of 24,576 bytes free",
+    );
+
+    // An action file goes up byte for byte, with the format called unverified.
+    expect(await page.getByTestId("memory-card").textContent().then(squash)).toContain(
+      "No action file format is known: the file's bytes are sent as they are",
+    );
+    await page.getByTestId("action-file").setInputFiles({
+      name: "wave.act",
+      mimeType: "application/octet-stream",
+      buffer: Buffer.from(Array.from({ length: 100 }, (_, i) => i)),
+    });
+    await page.getByTestId("upload-action").click();
+    await page.getByText(/^Uploaded wave\.act: 100 bytes in 2 chunks/).waitFor();
+    expect(await page.getByTestId("mem-action-text").textContent().then(squash)).toBe(
+      "8,064 of 8,192 bytes free",
+    );
+    await context.close();
+  });
+});

@@ -1,0 +1,151 @@
+import type { Page } from "playwright-core";
+import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { type AppHarness, connectRobot, cspViolations, startHarness, watchPage } from "./harness.ts";
+import "./rbc-test-globals.ts";
+
+let app: AppHarness;
+
+beforeAll(async () => {
+  app = await startHarness();
+});
+
+afterAll(async () => {
+  await app?.close();
+});
+
+async function openSensors(page: Page): Promise<void> {
+  await connectRobot(page, app.url);
+  await page.getByTestId("memory-motion-text").filter({ hasText: "24,576" }).waitFor();
+  await page.getByRole("link", { name: "Sensors" }).click();
+  await page.getByTestId("poll-card").waitFor();
+}
+
+const simSubscription = (page: Page) => page.evaluate(() => window.__rbcTest?.sim.state.sensors.subscription);
+
+/** Presses IR key `code` if the simulated RBC is listening to the remote at this moment. */
+const pressWhileListening = (page: Page, code: number) =>
+  page.evaluate((c) => {
+    const sim = window.__rbcTest?.sim;
+    if (sim?.state.sensors.subscription !== 0x19) return false;
+    sim.pressRemoteKey(c);
+    return true;
+  }, code);
+
+const bytesFromPc = (page: Page) => page.evaluate(() => window.__rbcTest?.port.stats.bytesFromPc ?? -1);
+
+async function expectQuiet(page: Page): Promise<void> {
+  // Let a request in flight finish, then nothing more may go out.
+  await page.waitForTimeout(300);
+  const before = await bytesFromPc(page);
+  await page.waitForTimeout(700);
+  expect(await bytesFromPc(page)).toBe(before);
+}
+
+describe("sensors view", () => {
+  it("polls distance and accelerometer into live charts, lists button and remote events, and stops when left", async () => {
+    const { page, context } = await app.newPage();
+    const seen = watchPage(page, app.origin);
+    await openSensors(page);
+    const distance = page.getByTestId("distance-value");
+    await distance.filter({ hasText: "10 cm" }).waitFor();
+    const chart = page.getByTestId("distance-chart");
+    await page.locator('[data-testid="distance-chart"][data-chart="drawn"]').waitFor();
+
+    await page.evaluate(() => window.__rbcTest?.sim.setDistance(30));
+    await distance.filter({ hasText: "30 cm" }).waitFor();
+    await expect.poll(() => chart.getAttribute("data-last")).toBe("30");
+    const samples = Number(await chart.getAttribute("data-samples"));
+    await expect.poll(async () => Number(await chart.getAttribute("data-samples"))).toBeGreaterThan(samples);
+
+    await page.evaluate(() => window.__rbcTest?.sim.setAccelerometer(4, 3, -6));
+    await page.getByTestId("accel-value").filter({ hasText: "X 4 · Y 3 · Z -6" }).waitFor();
+    await expect.poll(() => page.getByTestId("accel-chart").getAttribute("data-last")).toBe("4,3,-6");
+
+    // The rate select changes how often it reads.
+    await page.getByTestId("poll-rate").selectOption("10");
+    await page.getByTestId("poll-status").filter({ hasText: "Reading 10 times a second" }).waitFor();
+
+    // PF buttons: one subscription at a time.
+    expect(await page.getByText("The robot reports only one of these at a time").count()).toBe(1);
+    await page.getByRole("radio", { name: "PF buttons" }).check();
+    await page.getByTestId("listen-status").filter({ hasText: "Listening to PF buttons" }).waitFor();
+    await expect.poll(() => simSubscription(page)).toBe(0x18);
+    await page.evaluate(() => window.__rbcTest?.sim.pressButton(2, 300));
+    await page.getByTestId("event-list").filter({ hasText: "PF2 pressed" }).waitFor();
+
+    await page.getByRole("radio", { name: "IR remote" }).check();
+    await page.getByTestId("listen-status").filter({ hasText: "Listening to IR remote" }).waitFor();
+    // Each reading ends the RBC's subscription for a moment (the client re-arms it): press while it listens.
+    await expect.poll(() => pressWhileListening(page, 7), { timeout: 5000 }).toBe(true);
+    await page.getByTestId("event-list").filter({ hasText: "IR key 7 (Basic posture)" }).waitFor();
+
+    await page.getByRole("radio", { name: "Sound level" }).check();
+    await page.locator("#sound-threshold").fill("40");
+    await page.locator("#sound-threshold").press("Tab");
+    await expect.poll(() => page.evaluate(() => window.__rbcTest?.sim.state.sensors.soundThreshold)).toBe(40);
+    await page.evaluate(() => window.__rbcTest?.sim.setSoundLevel(55));
+    await page
+      .getByTestId("sound-level")
+      .filter({ hasText: /^55 at/ })
+      .waitFor();
+
+    // Leaving the view stops polling and the subscription.
+    await page.getByRole("link", { name: "Robot" }).click();
+    await page.getByTestId("device-card").waitFor();
+    await expectQuiet(page);
+    expect(await page.evaluate(() => window.__rbcTest?.sim.state.sensors.subscription)).toBeUndefined();
+
+    expect(seen.errors).toEqual([]);
+    expect(seen.foreignRequests).toEqual([]);
+    expect(await cspViolations(page)).toEqual([]);
+    await context.close();
+  });
+
+  it("stops polling while the tab is hidden and after Stop, and resumes", async () => {
+    const { page, context } = await app.newPage();
+    await openSensors(page);
+    await page.getByTestId("distance-value").filter({ hasText: "10 cm" }).waitFor();
+    await page.evaluate(() => {
+      Object.defineProperty(document, "hidden", { configurable: true, get: () => true });
+      document.dispatchEvent(new Event("visibilitychange"));
+    });
+    await page.getByText("Paused while this tab is hidden.").waitFor();
+    await expectQuiet(page);
+    await page.evaluate(() => {
+      Object.defineProperty(document, "hidden", { configurable: true, get: () => false });
+      document.dispatchEvent(new Event("visibilitychange"));
+    });
+    const before = await bytesFromPc(page);
+    await expect.poll(() => bytesFromPc(page)).toBeGreaterThan(before);
+
+    // Stop: the robot goes to servo control, polling pauses and says why; Resume returns to normal.
+    await page.keyboard.press("Escape");
+    await page.getByText(/Stopped: all 16 servos are limp/).waitFor();
+    await page.getByText(/Paused: Stop — limp switched the robot to servo control/).waitFor();
+    await page.getByRole("button", { name: "Resume reading" }).click();
+    await page.getByTestId("poll-status").filter({ hasText: "Reading 5 times a second" }).waitFor();
+    expect(await page.evaluate(() => window.__rbcTest?.sim.directMode)).toBe(false);
+    await context.close();
+  });
+
+  it("on the demo robot, its buttons and remote can be pressed from the panel", async () => {
+    const { page, context } = await app.newPage();
+    await page.goto(app.url);
+    await page.getByRole("button", { name: "Try the demo robot" }).click();
+    await page.getByTestId("device-card").waitFor();
+    await page.getByRole("link", { name: "Sensors" }).click();
+    await page.getByTestId("demo-world").waitFor();
+    // The demo accelerometer is alive (noise around an upright robot).
+    await page
+      .getByTestId("accel-value")
+      .filter({ hasText: /X -?\d+ · Y -?\d+ · Z \d+/ })
+      .waitFor();
+    await page.getByRole("radio", { name: "PF buttons" }).check();
+    await page.getByTestId("listen-status").filter({ hasText: "Listening to PF buttons" }).waitFor();
+    await page.getByRole("button", { name: "Press PF2" }).click();
+    await page.getByTestId("event-list").filter({ hasText: "PF2 pressed" }).waitFor();
+    await page.locator("#demo-distance").fill("42");
+    await page.getByTestId("distance-value").filter({ hasText: "42 cm" }).waitFor();
+    await context.close();
+  });
+});

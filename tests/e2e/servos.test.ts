@@ -1,0 +1,117 @@
+import type { Page } from "playwright-core";
+import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { HUNO_BASIC_POSTURE } from "../../src/protocol/index.ts";
+import { type AppHarness, connectRobot, cspViolations, squash, startHarness } from "./harness.ts";
+import "./rbc-test-globals.ts";
+
+let app: AppHarness;
+
+beforeAll(async () => {
+  app = await startHarness();
+});
+
+afterAll(async () => {
+  await app?.close();
+});
+
+const simServos = (page: Page) => page.evaluate(() => window.__rbcTest?.sim.servos ?? []);
+const simDirect = (page: Page) => page.evaluate(() => window.__rbcTest?.sim.directMode);
+
+async function openServos(page: Page): Promise<void> {
+  await connectRobot(page, app.url);
+  await page.getByTestId("memory-motion-text").filter({ hasText: "24,576" }).waitFor();
+  await page.getByRole("link", { name: "Servos" }).click();
+  await page.getByTestId("servo-card").waitFor();
+}
+
+async function startControl(page: Page): Promise<void> {
+  await page.getByRole("button", { name: "I understand: the robot is supported" }).click();
+  await page.getByTestId("enter-direct").click();
+  await page.getByText("Read all 16 servos.").waitFor();
+}
+
+describe("servos view", () => {
+  it("asks for the safety notice first, moves one servo in direct mode, and Stop makes all limp", async () => {
+    const { page, context } = await app.newPage();
+    await openServos(page);
+    const notice = page.getByTestId("servo-safety");
+    expect(await notice.textContent().then(squash)).toContain("Support the robot");
+    expect(await page.getByTestId("enter-direct").isDisabled()).toBe(true);
+    expect(await page.locator("#servo-3").isDisabled()).toBe(true);
+
+    await startControl(page);
+    expect(await notice.count()).toBe(0);
+    expect(await simDirect(page)).toBe(true);
+    expect(await page.getByTestId("servo-pos-3").textContent().then(squash)).toBe(
+      String(HUNO_BASIC_POSTURE[3]),
+    );
+    expect(await page.getByTestId("connection-status").textContent().then(squash)).toContain("servo control");
+
+    // The number input is limited to the safe range (servo 3: 40-130) and moves the servo on change.
+    expect(await page.locator("#servo-3").getAttribute("min")).toBe("40");
+    expect(await page.locator("#servo-3").getAttribute("max")).toBe("130");
+    await page.locator("#servo-3").fill("100");
+    await page.locator("#servo-3").press("Enter");
+    await expect.poll(async () => (await simServos(page))[3]?.position).toBe(100);
+    await page.getByTestId("servo-pos-3").filter({ hasText: "100" }).waitFor();
+    // Out of range is clamped, never sent as is.
+    await page.locator("#servo-3").fill("250");
+    await page.locator("#servo-3").press("Enter");
+    await expect.poll(async () => (await simServos(page))[3]?.position).toBe(130);
+
+    // The slider: arrow keys move it; many quick changes do not queue up.
+    const slider = page.getByLabel(/Right knee \(servo 2\), target/);
+    await slider.focus();
+    await page.keyboard.press("ArrowRight");
+    await expect.poll(async () => (await simServos(page))[2]?.position).toBe(HUNO_BASIC_POSTURE[2]! + 1);
+    const before = await page.evaluate(() => window.__rbcTest?.port.stats.bytesFromPc ?? 0);
+    await page.evaluate(() => {
+      const input = document.querySelector<HTMLInputElement>('tr[data-servo="5"] input[type="range"]');
+      if (!input) throw new Error("no slider for servo 5");
+      for (let v = 100; v < 160; v++) {
+        input.value = String(v);
+        input.dispatchEvent(new Event("input", { bubbles: true }));
+      }
+    });
+    await expect.poll(async () => (await simServos(page))[5]?.position).toBe(159);
+    const sent = (await page.evaluate(() => window.__rbcTest?.port.stats.bytesFromPc ?? 0)) - before;
+    // 60 changes, each move 4 bytes: latest-wins sends only a few of them.
+    expect(sent).toBeLessThan(20 * 4);
+
+    await page.getByRole("button", { name: /Stop — limp/ }).click();
+    await page.getByText(/Stopped: all 16 servos are limp/).waitFor();
+    expect((await simServos(page)).map((s) => s.passive)).toEqual(Array(16).fill(true));
+    await page.getByTestId("servo-mode").filter({ hasText: "every servo is limp" }).waitFor();
+    expect(await cspViolations(page)).toEqual([]);
+    await context.close();
+  });
+
+  it("moves all servos to the basic posture after confirming, and leaves direct mode on request and on disconnect", async () => {
+    const { page, context } = await app.newPage();
+    await openServos(page);
+    await startControl(page);
+    await page.locator("#servo-0").fill("140");
+    await page.locator("#servo-0").press("Enter");
+    await expect.poll(async () => (await simServos(page))[0]?.position).toBe(140);
+
+    await page.getByRole("button", { name: "All to basic posture…" }).click();
+    await page.getByText("All 16 servos move to the basic posture at speed 4. Hold the robot.").waitFor();
+    await page.getByRole("button", { name: "Move all servos" }).click();
+    await page.getByText(/Sent: all 16 servos move to the basic posture/).waitFor();
+    expect((await simServos(page)).map((s) => s.position)).toEqual([...HUNO_BASIC_POSTURE]);
+
+    await page.getByTestId("leave-direct").click();
+    await page.getByText(/Servo control ended/).waitFor();
+    expect(await simDirect(page)).toBe(false);
+
+    // Back in, then disconnect: the client sends the exit sequence on close.
+    await page.getByTestId("enter-direct").click();
+    await page.getByText("Read all 16 servos.").waitFor();
+    expect(await simDirect(page)).toBe(true);
+    await page.getByRole("link", { name: "Robot" }).click();
+    await page.getByRole("button", { name: "Disconnect" }).click();
+    await page.getByTestId("connect-card").waitFor();
+    await expect.poll(() => simDirect(page)).toBe(false);
+    await context.close();
+  });
+});
