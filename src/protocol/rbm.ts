@@ -150,6 +150,23 @@ const RECORD_LAYOUT: Layout<RbmSceneServo> = [
 
 /** Parses and checks an `.rbm` text. Throws `RbmError` (and nothing else) if the file cannot be used. */
 export function parseRbm(text: string): RbmMotion {
+  const motion = readRbm(text);
+  const { errors } = validateRbm(motion);
+  const first = errors[0];
+  if (first !== undefined) {
+    const n = errors.length - 1;
+    const more = n > 0 ? ` (${n} more problem${n > 1 ? "s" : ""} found)` : "";
+    throw new RbmError(first.code, first.message + more, errors);
+  }
+  return motion;
+}
+
+/**
+ * Reads the structure of an `.rbm` text (field count, numbers, length fields) without applying the RBC's rules,
+ * so that a file the robot would refuse can still be shown; pair it with `validateRbm`. Throws `RbmError` (and
+ * nothing else) if the text is not an `.rbm` file at all.
+ */
+export function readRbm(text: string): RbmMotion {
   if (typeof text !== "string") fail("rbm-not-text", "A motion file must be read as text.");
   let end = text.length;
   while (end > 0 && isSpace(text.charCodeAt(end - 1))) end--;
@@ -243,14 +260,6 @@ export function parseRbm(text: string): RbmMotion {
     motion.scenes.push(scene);
   }
   if (trailing !== "" || Object.keys(raw).length > 0) motion.raw = { fields: raw, trailing };
-
-  const { errors } = validateRbm(motion);
-  const first = errors[0];
-  if (first !== undefined) {
-    const n = errors.length - 1;
-    const more = n > 0 ? ` (${n} more problem${n > 1 ? "s" : ""} found)` : "";
-    throw new RbmError(first.code, first.message + more, errors);
-  }
   return motion;
 }
 

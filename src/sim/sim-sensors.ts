@@ -136,8 +136,9 @@ export class SimSensors {
     this.stop();
     this.subscription = type;
     if (type === SOUND_TYPE) {
+      // Reported at once, then every 100 ms: a client that re-arms the subscription often still hears it.
       this.threshold = threshold;
-      this.timer = this.timers.after(SOUND_EVENT_INTERVAL_MS, () => this.soundTick());
+      this.soundTick();
     } else if (type === BUTTON_TYPE) {
       this.buttonTick();
     }

@@ -158,6 +158,8 @@ describe("motions view", () => {
     expect(issues).toMatch(
       /Error scene 0: Scene 0 has frames 10 ms apart \(100 ms \/ 10 frames\); the RBC needs at least 20 ms/,
     );
+    // The file is still shown, so the person can see which scene is wrong.
+    expect(await page.getByTestId("scene-section").isVisible()).toBe(true);
     const upload = page.getByTestId("upload-motion");
     expect(await upload.isDisabled()).toBe(true);
     expect(await page.getByTestId("upload-why").textContent().then(squash)).toBe(

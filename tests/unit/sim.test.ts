@@ -209,6 +209,16 @@ describe("SimulatedRbc: subscriptions (PROTOCOL.md §3.4)", () => {
     expect(sim.state.sensors.subscription).toBeUndefined();
   });
 
+  it("reports a sound level already above the threshold at once, so frequent re-arming still hears it", async () => {
+    const { sim, clock, send, take } = rig();
+    sim.setSoundLevel(40);
+    for (let i = 0; i < 5; i++) {
+      send(EX9_SOUND_THRESHOLD_30);
+      await clock.advance(50);
+    }
+    expect(take()).toEqual(Array(5).fill(`${H} 17 01 00 00 00 02 28 00 28`));
+  });
+
   it("emits the held button (example 10) at once and every 200 ms while held", async () => {
     const { sim, clock, send, take } = rig();
     send(SUBSCRIBE_BUTTONS);

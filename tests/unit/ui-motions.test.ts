@@ -1,7 +1,7 @@
 import { readFileSync } from "node:fs";
 import { describe, expect, it } from "vitest";
 import { parseRbm, serializeRbm } from "../../src/protocol/rbm.ts";
-import { entryFacts, inspectMotionText } from "../../src/ui/motions/motion-files.ts";
+import { checkEntry, entryFacts, inspectMotionText } from "../../src/ui/motions/motion-files.ts";
 import { formatSeconds, motionPlotData, sceneRows } from "../../src/ui/motions/plot-data.ts";
 import {
   afterFailedUpload,
@@ -149,8 +149,14 @@ describe("motion files", () => {
     motion.scenes[0]!.timeMs = motion.scenes[0]!.frames * 10;
     motion.scenes[1]!.servos[2]!.torque = 7;
     const entry = inspectMotionText("Edited.rbm", serializeRbm(motion));
-    expect(entry.motion).toBeUndefined();
+    // Kept for the scene table and the chart, but with no image it can never be uploaded.
+    expect(entry.motion?.scenes).toHaveLength(5);
+    expect(entry.image).toBeUndefined();
     expect(entry.errors.map((e) => e.code)).toEqual(["rbm-frame-interval-short", "rbm-torque"]);
+    expect(checkEntry(entry, undefined).errors.map((e) => e.code)).toEqual([
+      "rbm-frame-interval-short",
+      "rbm-torque",
+    ]);
     expect(inspectMotionText("x.rbm", "not a motion").errors[0]?.message).toMatch(/should end with ":"/);
     expect(inspectMotionText("empty.rbm", "").errors[0]?.message).toBe("The motion file is empty.");
   });

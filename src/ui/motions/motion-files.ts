@@ -1,6 +1,6 @@
 import { memoryFootprint } from "../../protocol/catalog.ts";
 import { motionImage } from "../../protocol/motion-image.ts";
-import { motionDurationMs, parseRbm, RbmError } from "../../protocol/rbm.ts";
+import { motionDurationMs, RbmError, readRbm } from "../../protocol/rbm.ts";
 import { type RbmValidation, validateRbm } from "../../protocol/rbm-validate.ts";
 import type { AppState } from "../app-state.ts";
 import type { Store } from "../store.ts";
@@ -13,11 +13,17 @@ export const MAX_RBM_BYTES = 1_000_000;
 
 let nextId = 1;
 
-/** Reads one file's text as a motion. Never throws: what is wrong ends up in `errors`, in words. */
+/**
+ * Reads one file's text as a motion. Never throws: what is wrong ends up in `errors`, in words. A file that
+ * breaks the RBC's rules keeps its motion (so its scenes and chart can be shown) but gets no image, so it can
+ * never be uploaded.
+ */
 export function inspectMotionText(fileName: string, text: string, fileBytes = text.length): MotionFileEntry {
   const entry: MotionFileEntry = { id: nextId++, fileName, fileBytes, errors: [] };
   try {
-    entry.motion = parseRbm(text);
+    entry.motion = readRbm(text);
+    entry.errors = validateRbm(entry.motion).errors;
+    if (entry.errors.length > 0) return entry;
   } catch (e) {
     entry.errors =
       e instanceof RbmError
@@ -108,11 +114,16 @@ const validations = new Map<string, RbmValidation>();
  * robot"). Cached per file and serial number.
  */
 export function checkEntry(entry: MotionFileEntry, serialNumber: string | undefined): RbmValidation {
-  if (!entry.motion || entry.errors.length > 0) return { errors: entry.errors, warnings: [] };
+  if (!entry.motion) return { errors: entry.errors, warnings: [] };
   const key = `${entry.id}:${serialNumber ?? ""}`;
   let v = validations.get(key);
   if (!v) {
-    v = validateRbm(entry.motion, serialNumber ? { connectedSerialNumber: serialNumber } : {});
+    const checked = validateRbm(entry.motion, serialNumber ? { connectedSerialNumber: serialNumber } : {});
+    // Errors found while encoding the image are not rule errors: keep them too.
+    const extra = entry.errors.filter(
+      (e) => !checked.errors.some((c) => c.code === e.code && c.message === e.message),
+    );
+    v = { errors: [...checked.errors, ...extra], warnings: checked.warnings };
     if (validations.size > 200) validations.clear();
     validations.set(key, v);
   }
