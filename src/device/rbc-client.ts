@@ -83,6 +83,14 @@ const SUBSCRIPTION_BY_TYPE = new Map<number, SubscriptionKind>(
   Object.entries(SUBSCRIPTIONS).map(([kind, spec]) => [spec.type, kind as SubscriptionKind]),
 );
 
+/** The longest the RBC may take to reach the end of the current scene after a 7 (a scene is at most ~10 s in
+ * Motionbuilder, but the built-in motions' scenes are well under 1 s). */
+const SCENE_END_MS = 1000;
+
+function postureDurationMs(): number {
+  return BUILT_IN_MOTIONS.find((m) => m.number === BASIC_POSTURE_MOTION)!.durationMs;
+}
+
 /**
  * The RBC as typed operations (PROTOCOL.md §3-6). One request is in flight at a time; its waiter is
  * registered before its bytes are written; every request has a timeout; idempotent reads retry; unsolicited
@@ -297,9 +305,7 @@ export class RbcClient {
           motion,
           0,
           expectedMs + this.timeouts.marginMs,
-          {
-            signal: options.signal,
-          },
+          { signal: options.signal, accept: (p) => p.contents[0] === motion },
         );
         if (motion === BASIC_POSTURE_MOTION) this.setState({ basicPostureConfirmed: true });
         return n;
@@ -316,6 +322,41 @@ export class RbcClient {
           );
         }
         throw e;
+      } finally {
+        this.setState({ playing: undefined });
+      }
+    });
+  }
+
+  /**
+   * Ends the playing motion the only way the RBC allows: motion 7, which it takes even while playing. The
+   * robot finishes the current scene (the pending `runMotion` then resolves with its reply) and plays basic
+   * posture; this resolves when that has finished too. With nothing playing it simply runs motion 7.
+   */
+  async stopMotion(): Promise<void> {
+    const playing = this._state.playing;
+    if (!playing) {
+      await this.runMotion(BASIC_POSTURE_MOTION);
+      return;
+    }
+    this.requirePacketMode(COMMANDS.runMotion.name);
+    // Ahead of the queue: the running motion's request is still waiting for its reply.
+    await this.writePacket(
+      encodePacket(COMMANDS.runMotion.type, COMMANDS.runMotion.request(BASIC_POSTURE_MOTION)),
+      COMMANDS.runMotion.type,
+    );
+    await this.exclusive(async () => {
+      const expectedMs = postureDurationMs();
+      this.setState({ playing: { motion: BASIC_POSTURE_MOTION, startedAt: this.clock.now(), expectedMs } });
+      try {
+        await this.transact(
+          COMMANDS.runMotion.type,
+          COMMANDS.runMotion.request(BASIC_POSTURE_MOTION),
+          "Basic posture after Stop motion",
+          SCENE_END_MS + expectedMs + this.timeouts.marginMs,
+          { accept: (p) => p.contents[0] === BASIC_POSTURE_MOTION, send: false },
+        );
+        this.setState({ basicPostureConfirmed: true });
       } finally {
         this.setState({ playing: undefined });
       }
@@ -368,6 +409,7 @@ export class RbcClient {
           : COMMANDS.subscribeRemote.request();
     const request = encodePacket(spec.type, contents);
     return this.exclusive(async () => {
+      this.requirePacketMode(spec.name);
       this.subscription = { kind, request };
       this.setState({ subscription: kind });
       await this.writePacket(request, spec.type);
@@ -451,17 +493,15 @@ export class RbcClient {
    * then plays basic posture (PROTOCOL.md §3.1). Waits for that to finish so the servos can be taken.
    */
   private async endMotionForStop(playing: NonNullable<ClientState["playing"]>): Promise<void> {
-    const posture = BUILT_IN_MOTIONS.find((m) => m.number === BASIC_POSTURE_MOTION)!.durationMs;
     if (playing.motion === BASIC_POSTURE_MOTION) {
       await this.sleep(Math.max(0, playing.startedAt + playing.expectedMs - this.clock.now()) + 50);
       return;
     }
-    const sceneEndMs = 1000;
     await this.transactDecoded(
       COMMANDS.runMotion,
       BASIC_POSTURE_MOTION,
       0,
-      sceneEndMs + posture + this.timeouts.marginMs,
+      SCENE_END_MS + postureDurationMs() + this.timeouts.marginMs,
       {
         accept: (p) => p.contents[0] === BASIC_POSTURE_MOTION,
       },
@@ -524,7 +564,11 @@ export class RbcClient {
     contents: Uint8Array,
     name: string,
     timeoutMs: number,
-    { signal, accept }: { signal?: AbortSignal; accept?: (p: Packet) => boolean },
+    {
+      signal,
+      accept,
+      send = true,
+    }: { signal?: AbortSignal; accept?: (p: Packet) => boolean; send?: boolean },
   ) {
     return new Promise<Packet>((resolve, reject) => {
       if (signal?.aborted) return reject(new RbcCancelledError());
@@ -545,7 +589,7 @@ export class RbcClient {
       this.waiter = waiter; // registered before the write
       signal?.addEventListener("abort", onAbort);
       timer = this.clock.setTimeout(() => waiter.reject(new RbcTimeoutError(name, timeoutMs)), timeoutMs);
-      this.writePacket(encodePacket(type, contents), type).catch((e) => waiter.reject(e));
+      if (send) this.writePacket(encodePacket(type, contents), type).catch((e) => waiter.reject(e));
     });
   }
 

@@ -258,3 +258,31 @@ describe("connect on a port that takes no bytes", () => {
     expect(status).toBe("closed");
   });
 });
+
+describe("Stop motion", () => {
+  it("sends 7 ahead of the queue; the motion ends with its own reply, then basic posture plays out", async () => {
+    const { client, run, sim, clock } = await makeRig({ sim: { basicPostureDone: true } });
+    const t0 = clock.now();
+    const walking = client.runMotion(10); // walk backward, 2,450 ms
+    await clock.advance(300);
+    const stopping = client.stopMotion();
+    expect(await run(walking)).toBe(10);
+    expect(clock.now() - t0).toBeLessThan(2450);
+    expect(client.state.playing?.motion).toBe(7);
+    await run(stopping);
+    expect(client.state.playing).toBeUndefined();
+    expect(sim.playingMotion).toBeUndefined();
+    expect(sim.servos.slice(0, 16).map((s) => s.position)).toEqual([
+      125, 179, 199, 88, 108, 126, 72, 49, 163, 141, 51, 47, 49, 199, 205, 205,
+    ]);
+    expect(await run(client.readFirmwareVersion())).toEqual({ major: 2, minor: 23 });
+  });
+
+  it("refuses to subscribe in direct mode instead of writing a packet onto the servo bus", async () => {
+    const { client, run, port } = await makeRig();
+    await run(client.enterDirectMode());
+    const before = port.stats.bytesFromPc;
+    await expect(run(client.subscribe("buttons"))).rejects.toMatchObject({ code: "wrong-mode" });
+    expect(port.stats.bytesFromPc).toBe(before);
+  });
+});

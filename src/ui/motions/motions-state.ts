@@ -78,8 +78,6 @@ export interface MotionsState {
   run?: RunningMotion;
   /** A motion waiting for the once-per-connection "the robot will move" confirmation. */
   confirmMove?: number;
-  /** After "Stop motion": the robot returns to basic posture until this time (performance.now()). */
-  settleUntil?: number;
   runNotice?: Notice;
   soundNotice?: Notice;
 }

@@ -29,7 +29,7 @@ export function patchMotions(
  * Why robot actions (run, sound, upload) cannot start now, in words, or undefined when they can. The RBC
  * drops every request while a sound plays, and every request but 7 while a motion plays.
  */
-export function robotBusyReason(s: AppState, now = performance.now()): string | undefined {
+export function robotBusyReason(s: AppState): string | undefined {
   const c = s.connection;
   if (c.phase !== "connected") return "Connect a robot first.";
   const m = s.motions;
@@ -39,9 +39,6 @@ export function robotBusyReason(s: AppState, now = performance.now()): string | 
   if (m?.upload) return "An upload is in progress.";
   if (c.playing || m?.run) {
     return "A motion is playing: the robot ignores everything but Basic posture (7) until it ends.";
-  }
-  if (m?.settleUntil !== undefined && m.settleUntil > now) {
-    return "The robot is returning to Basic posture after Stop motion.";
   }
   if (s.running.length > 0) return `Busy: ${s.running.join(", ")}.`;
   return undefined;

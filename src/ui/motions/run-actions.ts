@@ -29,7 +29,6 @@ export const MOVEMENT_WARNING = "The robot will move. Hold it or give it room.";
 /** How long basic posture takes after a stopped motion (its simulator duration; PROTOCOL.md §3.1). */
 const BASIC_POSTURE_MS = BUILT_IN_MOTIONS.find((m) => m.number === BASIC_POSTURE_MOTION)?.durationMs ?? 1800;
 /** The RBC finishes the scene it is in before it obeys 7; scenes rarely last longer than this. */
-const SCENE_END_MS = 1000;
 
 export interface OfferedMotion {
   number: number;
@@ -111,14 +110,28 @@ export async function runMotionNow(ctx: Ctx, number: number): Promise<void> {
     run: { number, name: offer.name, expectedMs: offer.expectedMs, startedAt: performance.now() },
     runNotice: undefined,
     confirmMove: undefined,
-    settleUntil: undefined,
   });
   ensureTicker(store);
   try {
     await session.run(`Running motion ${number}`, (client) =>
       client.runMotion(number, { expectedMs: offer.expectedMs, signal: run.abort.signal }),
     );
-    if (!run.stopRequested) {
+    if (run.stopRequested) {
+      // "Stop motion" took effect: the motion ended with its scene; basic posture (7) plays now.
+      patchMotions(store, {
+        runNotice: {
+          tone: "ok",
+          text: `Motion ${number} (${offer.name}) stopped at the end of its scene. The robot now returns to Basic posture (about ${formatSeconds(BASIC_POSTURE_MS)}).`,
+        },
+        run: {
+          number: BASIC_POSTURE_MOTION,
+          name: "Basic posture (after Stop motion)",
+          expectedMs: BASIC_POSTURE_MS,
+          startedAt: performance.now(),
+          stopping: true,
+        },
+      });
+    } else {
       patchMotions(store, {
         runNotice: {
           tone: "ok",
@@ -162,8 +175,8 @@ function runFailure(offer: OfferedMotion, e: unknown) {
 }
 
 /**
- * "Stop motion": sends 7, which the RBC obeys at the end of the current scene; it then plays basic posture.
- * The wait for the running motion is abandoned first (the client runs one request at a time).
+ * "Stop motion": the client sends 7, which the RBC obeys at the end of the current scene; the running motion
+ * then reports its end (see runMotionNow) and the robot plays basic posture, which this waits for.
  */
 export async function stopMotion(ctx: Ctx): Promise<void> {
   const { store, session } = ctx;
@@ -172,18 +185,13 @@ export async function stopMotion(ctx: Ctx): Promise<void> {
   if (!run || run.stopRequested || !shown) return;
   run.stopRequested = true;
   patchMotions(store, { run: { ...shown, stopping: true } });
-  run.abort.abort();
   try {
-    const answered = await session.run("Stopping the motion", (client) =>
-      client.runMotion(BASIC_POSTURE_MOTION, { expectedMs: SCENE_END_MS + BASIC_POSTURE_MS }),
-    );
-    const text =
-      answered === BASIC_POSTURE_MOTION
-        ? `Motion ${run.number} had already ended; the robot ran Basic posture (7).`
-        : `Motion ${run.number} (${shown.name}) stopped at the end of its scene. The robot now returns to Basic posture (about ${formatSeconds(BASIC_POSTURE_MS)}).`;
+    await session.run("Stopping the motion", (client) => client.stopMotion());
     patchMotions(store, {
-      runNotice: { tone: "ok", text },
-      settleUntil: answered === BASIC_POSTURE_MOTION ? undefined : performance.now() + BASIC_POSTURE_MS,
+      runNotice: {
+        tone: "ok",
+        text: `Motion ${run.number} (${shown.name}) stopped at the end of its scene; the robot is back in Basic posture.`,
+      },
     });
   } catch (e) {
     patchMotions(store, {

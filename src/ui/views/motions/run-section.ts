@@ -79,12 +79,6 @@ function runningPanel(ctx: ViewContext, run: RunningMotion): TemplateResult {
   `;
 }
 
-function settlePanel(s: AppState): TemplateResult | typeof nothing {
-  const until = motionsOf(s).settleUntil;
-  if (until === undefined || until <= performance.now()) return nothing;
-  return html`<div class="progress-block"><p>The robot returns to Basic posture…</p><progress aria-label="Returning to basic posture"></progress></div>`;
-}
-
 function confirmMove(ctx: ViewContext, s: AppState): TemplateResult | typeof nothing {
   const number = motionsOf(s).confirmMove;
   if (number === undefined) return nothing;
@@ -144,7 +138,7 @@ export function runSection(ctx: ViewContext): TemplateResult {
             </div>`
           : nothing
       }
-      ${confirmMove(ctx, s)} ${m.run ? runningPanel(ctx, m.run) : nothing} ${settlePanel(s)}
+      ${confirmMove(ctx, s)} ${m.run ? runningPanel(ctx, m.run) : nothing}
       ${liveNotice(m.runNotice, "Motion result")}
       ${
         busyReason && !m.run && c.phase === "connected"
