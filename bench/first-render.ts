@@ -1,5 +1,5 @@
-import { chromium } from "playwright-core";
 import { preview } from "vite";
+import { launchChromium } from "../tests/support/chromium.ts";
 import { PROJECT_ROOT } from "./bundle-size.ts";
 import { median } from "./stats.ts";
 
@@ -15,16 +15,6 @@ import { median } from "./stats.ts";
  * Playwright then waits for the same button to be visible and enabled, as a cross-check.
  */
 
-export const CHROMIUM = "/usr/bin/chromium";
-export const CHROMIUM_ARGS = [
-  "--no-sandbox",
-  "--disable-gpu",
-  "--disable-quic",
-  "--no-first-run",
-  "--disable-background-networking",
-  "--disable-component-update",
-  "--disable-sync",
-];
 const BUTTON_TEXT = /^(Connect robot|Try the demo robot)$/;
 
 declare global {
@@ -84,7 +74,7 @@ export async function measureFirstRender(outDir: string, loads = 5): Promise<Fir
     build: { outDir },
     preview: { host: "127.0.0.1", port: 0, strictPort: true, open: false },
   });
-  const browser = await chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS, headless: true });
+  const browser = await launchChromium();
   try {
     const address = server.httpServer.address();
     if (!address || typeof address === "string") throw new Error("vite preview did not report its port");

@@ -10,12 +10,12 @@ import { createServer } from "node:net";
 import { tmpdir } from "node:os";
 import { join, relative } from "node:path";
 import { fileURLToPath } from "node:url";
-import { type Browser, type BrowserContext, chromium, type Page } from "playwright-core";
+import type { Browser, BrowserContext, Page } from "playwright-core";
 import { build, preview } from "vite";
+import { launchChromium } from "../support/chromium.ts";
 import type { RbcTestOptions } from "./rbc-test-globals.ts";
 
 export const ROOT = fileURLToPath(new URL("../..", import.meta.url));
-const CHROMIUM = process.env.CHROMIUM_PATH ?? "/usr/bin/chromium";
 const CACHE_PREFIX = "rbc-panel-e2e-";
 
 /** The files a build depends on. */
@@ -112,16 +112,6 @@ function freePort(): Promise<number> {
   });
 }
 
-export const CHROMIUM_ARGS = [
-  "--no-sandbox",
-  "--disable-gpu",
-  "--disable-quic",
-  "--no-first-run",
-  "--disable-background-networking",
-  "--disable-component-update",
-  "--disable-sync",
-];
-
 export interface PageOptions {
   /** Install the fake navigator.serial (default true). */
   fakeSerial?: boolean;
@@ -160,7 +150,7 @@ export async function startHarness(): Promise<AppHarness> {
     preview: { host: "127.0.0.1", port, strictPort: true, open: false },
   });
   const origin = `http://127.0.0.1:${port}`;
-  const browser = await chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS });
+  const browser = await launchChromium();
   const contexts = new Set<BrowserContext>();
   return {
     url: `${origin}/`,
