@@ -154,6 +154,14 @@ class SensorWatch {
     patch(this.ctx.store, { rateHz });
   }
 
+  /**
+   * Keeps the threshold being typed in the store, so that the redraws of live readings (5 a second) do not put
+   * the old value back into the input before the change is applied.
+   */
+  draftThreshold(threshold: number): void {
+    if (this.ctx) patch(this.ctx.store, { threshold });
+  }
+
   async setListen(listen: ListenChoice, threshold: number): Promise<void> {
     if (!this.ctx) return;
     patch(this.ctx.store, { listen, threshold, listenNotice: undefined });

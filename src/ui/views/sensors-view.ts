@@ -190,13 +190,8 @@ function eventsCard(ctx: ViewContext): TemplateResult {
                 max="255"
                 step="1"
                 .value=${live(String(s.threshold))}
-                @change=${(e: Event) => {
-                  const v = Math.max(
-                    0,
-                    Math.min(255, Math.round(Number((e.target as HTMLInputElement).value) || 0)),
-                  );
-                  void sensorWatch.setListen("sound", v);
-                }}
+                @input=${(e: Event) => sensorWatch.draftThreshold(thresholdOf(e))}
+                @change=${(e: Event) => void sensorWatch.setListen("sound", thresholdOf(e))}
               />
               <span class="muted small">(0-255; the robot sends the level about 10 times a second while it is at least this loud)</span>
             </div>
@@ -272,3 +267,8 @@ const sensorsView: AppView = {
 };
 
 export default sensorsView;
+
+/** The threshold typed into the input, as a whole number 0-255. */
+function thresholdOf(e: Event): number {
+  return Math.max(0, Math.min(255, Math.round(Number((e.target as HTMLInputElement).value) || 0)));
+}
