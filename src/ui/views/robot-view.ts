@@ -9,6 +9,7 @@ import {
 import { formatFirmware } from "../../shared/format.ts";
 import { refreshDeviceInfo } from "../device-info.ts";
 import { formatByteHex, formatClockTime, formatCount } from "../format.ts";
+import { memoryRow } from "./memory-row.ts";
 import { liveNotice } from "./notice.ts";
 import type { AppView, ViewContext } from "./view-types.ts";
 
@@ -19,18 +20,9 @@ const PLATFORM_WORDS: Record<string, string> = {
   PF2: "PF2 (user mode)",
 };
 
-function memoryRow(id: string, label: string, free: number | undefined, size: number): TemplateResult {
-  const used = free === undefined ? undefined : size - free;
-  return html`
-    <div class="memory-row">
-      <label for=${id}>${label}</label>
-      <meter id=${id} min="0" max=${size} value=${free ?? 0} low=${size * 0.1} optimum=${size}></meter>
-      <span class="num" data-testid=${`${id}-text`}>
-        ${free === undefined ? "—" : html`${formatCount(free)} of ${formatCount(size)} bytes free`}
-      </span>
-      <span class="muted small">${used === undefined ? "" : `${formatCount(used)} bytes used`}</span>
-    </div>
-  `;
+/** "1,024 bytes used", or nothing before the first read. */
+function usedText(free: number | undefined, size: number): string {
+  return free === undefined ? "" : `${formatCount(size - free)} bytes used`;
 }
 
 function errorCodeLine(code: number | undefined): TemplateResult | string {
@@ -86,8 +78,8 @@ function render(ctx: ViewContext): TemplateResult {
       </dl>
       <h2>Free memory for downloads</h2>
       <div class="memory">
-        ${memoryRow("memory-motion", "Motion area", d.freeMotion, MOTION_AREA_BYTES)}
-        ${memoryRow("memory-action", "Action area", d.freeAction, ACTION_AREA_BYTES)}
+        ${memoryRow("memory-motion", "Motion area", d.freeMotion, MOTION_AREA_BYTES, usedText(d.freeMotion, MOTION_AREA_BYTES))}
+        ${memoryRow("memory-action", "Action area", d.freeAction, ACTION_AREA_BYTES, usedText(d.freeAction, ACTION_AREA_BYTES))}
       </div>
       <p class="muted small">${d.readAt ? `Read from the robot at ${formatClockTime(d.readAt)}.` : nothing}</p>
       ${liveNotice(d.notice, "Device card result")}

@@ -25,6 +25,7 @@ import {
   uploadBlocked,
 } from "../../motions/upload-actions.ts";
 import { formatRate, formatTimeLeft, uploadFigures } from "../../motions/upload-rate.ts";
+import { memoryRow } from "../memory-row.ts";
 import { liveNotice } from "../notice.ts";
 import type { ViewContext } from "../view-types.ts";
 
@@ -34,26 +35,6 @@ function countText(book: SlotBook, what: string): string {
   return book.count === undefined
     ? `at most ${book.max} ${what}s (how many it holds now is not known)`
     : `${book.count} of ${book.max} ${what}s stored since the last reset or power-up`;
-}
-
-function memoryRow(
-  id: string,
-  label: string,
-  free: number | undefined,
-  size: number,
-  book: SlotBook,
-  what: string,
-): TemplateResult {
-  return html`
-    <div class="memory-row">
-      <label for=${id}>${label}</label>
-      <meter id=${id} min="0" max=${size} value=${free ?? 0} low=${size * 0.1} optimum=${size}></meter>
-      <span class="num" data-testid=${`${id}-text`}>
-        ${free === undefined ? "—" : html`${formatCount(free)} of ${formatCount(size)} bytes free`}
-      </span>
-      <span class="muted small" data-testid=${`${id}-count`}>${countText(book, what)}</span>
-    </div>
-  `;
 }
 
 function progress(ctx: ViewContext, up: UploadRun): TemplateResult {
@@ -194,8 +175,8 @@ export function uploadSection(ctx: ViewContext): TemplateResult {
     <section class="card" aria-labelledby="memory-title" data-testid="memory-card">
       <h2 id="memory-title" class="card-title">Robot memory and uploads</h2>
       <div class="memory">
-        ${memoryRow("mem-motion", "Motion area", d.freeMotion, MOTION_AREA_BYTES, m.motionBook, "motion")}
-        ${memoryRow("mem-action", "Action area", d.freeAction, ACTION_AREA_BYTES, m.actionBook, "action")}
+        ${memoryRow("mem-motion", "Motion area", d.freeMotion, MOTION_AREA_BYTES, countText(m.motionBook, "motion"), "mem-motion-count")}
+        ${memoryRow("mem-action", "Action area", d.freeAction, ACTION_AREA_BYTES, countText(m.actionBook, "action"), "mem-action-count")}
       </div>
       <p class="muted small">
         The robot keeps up to ${MAX_MOTIONS} downloaded motions (${formatCount(MOTION_AREA_BYTES)} bytes) and

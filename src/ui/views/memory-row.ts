@@ -1,0 +1,23 @@
+import { html, type TemplateResult } from "lit-html";
+import { formatCount } from "../format.ts";
+
+/** One memory area of the robot: a meter of the free bytes, the figures, and a note under them. */
+export function memoryRow(
+  id: string,
+  label: string,
+  free: number | undefined,
+  size: number,
+  note: string,
+  noteTestId?: string,
+): TemplateResult {
+  return html`
+    <div class="memory-row">
+      <label for=${id}>${label}</label>
+      <meter id=${id} min="0" max=${size} value=${free ?? 0} low=${size * 0.1} optimum=${size}></meter>
+      <span class="num" data-testid=${`${id}-text`}>
+        ${free === undefined ? "—" : html`${formatCount(free)} of ${formatCount(size)} bytes free`}
+      </span>
+      <span class="muted small" data-testid=${noteTestId ?? `${id}-note`}>${note}</span>
+    </div>
+  `;
+}
