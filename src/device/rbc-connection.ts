@@ -1,0 +1,373 @@
+import type { Transport, TransportStatusEvent } from "../link/transport.ts";
+import { COMMANDS, type CommandSpec, commandName, EVENT_TYPES } from "../protocol/commands.ts";
+import { ProtocolError } from "../protocol/errors.ts";
+import { encodePacket, type Packet } from "../protocol/packet.ts";
+import { PacketParser } from "../protocol/packet-parser.ts";
+import { EXIT_DIRECT_MODE } from "../protocol/wck.ts";
+import { type Clock, realClock } from "../shared/clock.ts";
+import { Emitter } from "../shared/emitter.ts";
+import {
+  RbcBadReplyError,
+  RbcCancelledError,
+  RbcDisconnectedError,
+  RbcError,
+  RbcInvalidArgumentError,
+  RbcNotConnectedError,
+  RbcTimeoutError,
+} from "./errors.ts";
+import { RawChannel } from "./raw-channel.ts";
+import type {
+  ClientMode,
+  ClientState,
+  DeviceIdentity,
+  LogEntry,
+  RbcEvent,
+  SubscriptionKind,
+} from "./types.ts";
+
+export interface RbcTimeouts {
+  /** A reply that comes "at once" (default 400 ms: USB adapters hold bytes up to 16 ms, Bluetooth longer). */
+  quickMs: number;
+  /** Added to a motion's or a sound's expected duration (default 2,000 ms). */
+  marginMs: number;
+  /** How long to wait for a downloaded motion whose duration is not given (default 60,000 ms). */
+  unknownMotionMs: number;
+  /** How long to wait after connecting before the handshake, so stray bytes can drain (default 50 ms). */
+  settleMs: number;
+}
+
+export interface RbcClientOptions {
+  clock?: Clock;
+  timeouts?: Partial<RbcTimeouts>;
+  /** Extra tries for idempotent reads after a timeout or a garbled reply (default 2). */
+  retries?: number;
+}
+
+const DEFAULT_TIMEOUTS: RbcTimeouts = { quickMs: 400, marginMs: 2000, unknownMotionMs: 60_000, settleMs: 50 };
+
+interface PacketWaiter {
+  type: number;
+  /** Replies of the right type that this returns false for are ignored (e.g. a stopped motion's reply). */
+  accept?: (p: Packet) => boolean;
+  resolve: (p: Packet) => void;
+  reject: (e: unknown) => void;
+}
+
+export const SUBSCRIPTIONS = {
+  sound: COMMANDS.subscribeSound,
+  buttons: COMMANDS.subscribeButtons,
+  remote: COMMANDS.subscribeRemote,
+} as const;
+
+const SUBSCRIPTION_BY_TYPE = new Map<number, SubscriptionKind>(
+  Object.entries(SUBSCRIPTIONS).map(([kind, spec]) => [spec.type, kind as SubscriptionKind]),
+);
+
+/**
+ * The conversation with an RBC under the typed operations of `RbcClient`: the link's life (connect, loss,
+ * close), one request in flight at a time with its waiter registered before its bytes are written, a timeout
+ * on every request, retries for idempotent reads, routing of unsolicited event packets to `events`, the raw
+ * byte channel for downloads and the servo bus, the packet log and the client state. A lost link rejects
+ * whatever is pending with `RbcDisconnectedError`.
+ */
+export class RbcConnection {
+  readonly clock: Clock;
+  readonly timeouts: RbcTimeouts;
+  readonly retries: number;
+  /** Every packet and raw chunk in and out, for the packet log. */
+  readonly log = new Emitter<LogEntry>();
+  readonly stateChanges = new Emitter<ClientState>();
+  readonly events = new Emitter<RbcEvent>();
+  protected readonly parser: PacketParser;
+  protected readonly raw: RawChannel;
+  private waiter: PacketWaiter | undefined;
+  private queue: Promise<unknown> = Promise.resolve();
+  /** Bumped by `stop()`: queued operations from an older epoch are cancelled. */
+  protected epoch = 0;
+  protected _state: ClientState = { mode: "disconnected", basicPostureConfirmed: false };
+  protected subscription: { kind: SubscriptionKind; request: Uint8Array } | undefined;
+  private unlisten: Array<() => void> = [];
+
+  constructor(
+    readonly transport: Transport,
+    options: RbcClientOptions = {},
+  ) {
+    this.clock = options.clock ?? realClock;
+    this.timeouts = { ...DEFAULT_TIMEOUTS, ...options.timeouts };
+    this.retries = options.retries ?? 2;
+    this.parser = new PacketParser({
+      onDiscard: (reason, bytes) =>
+        this.emitLog({ direction: "in", kind: "discard", name: reason, bytes, note: `discarded: ${reason}` }),
+    });
+    this.raw = new RawChannel(this.clock, (bytes, note) => this.writeRaw(bytes, note));
+  }
+
+  get state(): Readonly<ClientState> {
+    return this._state;
+  }
+
+  get mode(): ClientMode {
+    return this._state.mode;
+  }
+
+  /** Opens the transport (115200 8N1), leaves direct mode blindly, and reads the firmware version. */
+  async connect(): Promise<DeviceIdentity> {
+    if (this.mode !== "disconnected") throw new RbcError("wrong-mode", "Already connected.");
+    this.setState({
+      mode: "connecting",
+      reason: undefined,
+      basicPostureConfirmed: false,
+      subscription: undefined,
+    });
+    this.unlisten = [
+      this.transport.onData((bytes) => this.onBytes(bytes)),
+      this.transport.onStatus((e) => this.onTransportStatus(e)),
+    ];
+    try {
+      await this.transport.open();
+      // In case the RBC was left in direct mode (PROTOCOL.md §5): no reply.
+      await this.withTimeout(
+        this.writeRaw(EXIT_DIRECT_MODE, "leave direct mode (blind)"),
+        this.timeouts.quickMs,
+        "leave direct mode",
+      );
+      await this.sleep(this.timeouts.settleMs);
+      this.parser.reset();
+      this.setState({ mode: "packet" });
+      const firmware = await this.command(COMMANDS.readFirmwareVersion, undefined);
+      return { firmware, platform: this._state.platform ?? 0 };
+    } catch (e) {
+      await this.close();
+      if (e instanceof RbcTimeoutError) {
+        throw new RbcError(
+          "no-robot",
+          "The port opened but no robot answered. Check that the robot is switched on, that this is its port, and that no other program is using it.",
+          { cause: e },
+        );
+      }
+      throw e;
+    }
+  }
+
+  /** Closes the link. Pending requests are rejected. */
+  async close(): Promise<void> {
+    const wasDirect = this.mode === "direct";
+    if (wasDirect && this.transport.status === "open") {
+      await this.transport.write(EXIT_DIRECT_MODE).catch(() => {});
+    }
+    this.failPending(new RbcDisconnectedError("The connection was closed."));
+    for (const u of this.unlisten) u();
+    this.unlisten = [];
+    await this.transport.close();
+    this.setState({ mode: "disconnected", playing: undefined, sounding: undefined, subscription: undefined });
+    this.subscription = undefined;
+  }
+
+  // ---- Internals ---------------------------------------------------------------------------------------
+
+  /** Runs `fn` after everything queued before it; one operation at a time. */
+  exclusive<T>(fn: () => Promise<T>, epoch = this.epoch): Promise<T> {
+    const run = this.queue.then(() => {
+      if (epoch !== this.epoch) throw new RbcCancelledError("Cancelled by Stop.");
+      return fn();
+    });
+    this.queue = run.catch(() => {});
+    return run;
+  }
+
+  protected command<A, R>(spec: CommandSpec<A, R>, args: A): Promise<R> {
+    return this.exclusive(async () => {
+      const result = await this.transactDecoded(spec, args, spec.idempotent ? this.retries : 0);
+      await this.rearmSubscription();
+      return result;
+    });
+  }
+
+  /** One request/reply with retries for idempotent reads. Must run inside `exclusive`. */
+  async transactDecoded<A, R>(
+    spec: CommandSpec<A, R>,
+    args: A,
+    retries: number,
+    timeoutMs = this.timeouts.quickMs,
+    options: { signal?: AbortSignal; accept?: (p: Packet) => boolean } = {},
+  ): Promise<R> {
+    this.requirePacketMode(spec.name);
+    let contents: Uint8Array;
+    try {
+      contents = spec.request(args);
+    } catch (e) {
+      throw e instanceof ProtocolError ? new RbcInvalidArgumentError(`${e.message} Nothing was sent.`) : e;
+    }
+    for (let attempt = 0; ; attempt++) {
+      try {
+        const packet = await this.transact(spec.type, contents, spec.name, timeoutMs, options);
+        try {
+          return spec.decode(packet.contents);
+        } catch (e) {
+          throw new RbcBadReplyError(e instanceof Error ? e.message : String(e), e);
+        }
+      } catch (e) {
+        const retryable = e instanceof RbcTimeoutError || e instanceof RbcBadReplyError;
+        if (!retryable || attempt >= retries) throw e;
+        this.parser.reset();
+      }
+    }
+  }
+
+  protected transact(
+    type: number,
+    contents: Uint8Array,
+    name: string,
+    timeoutMs: number,
+    {
+      signal,
+      accept,
+      send = true,
+    }: { signal?: AbortSignal; accept?: (p: Packet) => boolean; send?: boolean },
+  ) {
+    return new Promise<Packet>((resolve, reject) => {
+      if (signal?.aborted) return reject(new RbcCancelledError());
+      let timer = 0;
+      const onAbort = () => finish(() => reject(new RbcCancelledError(`Stopped waiting for "${name}".`)));
+      const finish = (settle: () => void) => {
+        this.clock.clearTimeout(timer);
+        signal?.removeEventListener("abort", onAbort);
+        if (this.waiter === waiter) this.waiter = undefined;
+        settle();
+      };
+      const waiter: PacketWaiter = {
+        type,
+        accept,
+        resolve: (p) => finish(() => resolve(p)),
+        reject: (e) => finish(() => reject(e)),
+      };
+      this.waiter = waiter; // registered before the write
+      signal?.addEventListener("abort", onAbort);
+      timer = this.clock.setTimeout(() => waiter.reject(new RbcTimeoutError(name, timeoutMs)), timeoutMs);
+      if (send) this.writePacket(encodePacket(type, contents), type).catch((e) => waiter.reject(e));
+    });
+  }
+
+  protected requirePacketMode(what: string): void {
+    if (this.mode === "disconnected") throw new RbcNotConnectedError();
+    if (this.mode === "direct") {
+      throw new RbcError("wrong-mode", `"${what}" needs the normal mode: leave direct servo control first.`);
+    }
+  }
+
+  protected async rearmSubscription(): Promise<void> {
+    if (this.subscription && this.mode === "packet") {
+      await this.writePacket(this.subscription.request, this.subscription.request[8]!).catch(() => {});
+    }
+  }
+
+  protected async writePacket(bytes: Uint8Array, type: number): Promise<void> {
+    this.emitLog({ direction: "out", kind: "packet", type, name: commandName(type), bytes });
+    await this.send(bytes);
+  }
+
+  protected async writeRaw(bytes: Uint8Array, note: string): Promise<void> {
+    this.emitLog({ direction: "out", kind: "raw", name: note, bytes });
+    await this.send(bytes);
+  }
+
+  private async send(bytes: Uint8Array): Promise<void> {
+    try {
+      await this.transport.write(bytes);
+    } catch (e) {
+      throw new RbcDisconnectedError(e instanceof Error ? e.message : undefined, e);
+    }
+  }
+
+  private onBytes(bytes: Uint8Array): void {
+    if (this.mode === "download" || this.mode === "direct") {
+      this.emitLog({
+        direction: "in",
+        kind: "raw",
+        name: this.mode === "direct" ? "servo bus" : "download",
+        bytes,
+      });
+      this.raw.receive(bytes);
+      return;
+    }
+    for (const packet of this.parser.push(bytes)) this.route(packet);
+  }
+
+  private route(packet: Packet): void {
+    this.emitLog({
+      direction: "in",
+      kind: "packet",
+      type: packet.type,
+      name: commandName(packet.type),
+      bytes: encodePacket(packet.type, packet.contents, packet.platform),
+    });
+    if (packet.platform !== this._state.platform) this.setState({ platform: packet.platform });
+    const kind = SUBSCRIPTION_BY_TYPE.get(packet.type);
+    if (kind && EVENT_TYPES.has(packet.type) && packet.contents.length === 2) {
+      this.events.emit({ kind, value: packet.contents[0]!, time: this.clock.now() });
+      return;
+    }
+    if (this.waiter && this.waiter.type === packet.type && (this.waiter.accept?.(packet) ?? true)) {
+      this.waiter.resolve(packet);
+    }
+    // Anything else is a late or unexpected reply: logged above, otherwise ignored.
+  }
+
+  private onTransportStatus(event: TransportStatusEvent): void {
+    if (event.status !== "lost") return;
+    const reason = event.reason ?? "The connection to the robot was lost.";
+    this.failPending(new RbcDisconnectedError(`${reason} Check the cable, then connect again.`, event.error));
+    this.subscription = undefined;
+    this.setState({
+      mode: "disconnected",
+      reason,
+      playing: undefined,
+      sounding: undefined,
+      subscription: undefined,
+    });
+    for (const u of this.unlisten) u();
+    this.unlisten = [];
+    void this.transport.close();
+  }
+
+  protected failPending(error: RbcError): void {
+    this.waiter?.reject(error);
+    this.raw.fail(error);
+  }
+
+  /** Sets the client mode for the download and servo-bus phases. */
+  setMode(mode: ClientMode): void {
+    if (mode === "packet") this.parser.reset();
+    this.setState({ mode });
+  }
+
+  /** Rejects with RbcTimeoutError if `p` has not settled within `ms` (for writes that expect no reply). */
+  protected withTimeout<T>(p: Promise<T>, ms: number, name: string): Promise<T> {
+    return new Promise<T>((resolve, reject) => {
+      const timer = this.clock.setTimeout(() => reject(new RbcTimeoutError(name, ms)), ms);
+      p.then(
+        (v) => {
+          this.clock.clearTimeout(timer);
+          resolve(v);
+        },
+        (e) => {
+          this.clock.clearTimeout(timer);
+          reject(e);
+        },
+      );
+    });
+  }
+
+  sleep(ms: number): Promise<void> {
+    return new Promise((r) => this.clock.setTimeout(r, ms));
+  }
+
+  protected setState(patch: Partial<ClientState>): void {
+    this._state = { ...this._state, ...patch };
+    this.stateChanges.emit(this._state);
+  }
+
+  private emitLog(entry: Omit<LogEntry, "time">): void {
+    if (this.log.active) this.log.emit({ time: this.clock.now(), ...entry });
+  }
+}
