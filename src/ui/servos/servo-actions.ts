@@ -147,6 +147,7 @@ export async function readAllPositions(ctx: Ctx): Promise<void> {
         busy: undefined,
         positions,
         targets,
+        drafts: {},
         silent,
         readAt: Date.now(),
         notice:
@@ -167,8 +168,14 @@ export async function readAllPositions(ctx: Ctx): Promise<void> {
 export function moveServo(ctx: Ctx, id: number, position: number): void {
   const target = clampToSafe(id, position);
   const s = servosOf(ctx.store.get());
-  patchServos(ctx.store, { targets: setAt(s.targets, id, target), notice: undefined });
+  const { [id]: _typed, ...drafts } = s.drafts ?? {};
+  patchServos(ctx.store, { targets: setAt(s.targets, id, target), drafts, notice: undefined });
   moveSender(ctx).request(id, { position: target, torque: s.torques[id] ?? DEFAULT_TORQUE });
+}
+
+/** Keeps what is being typed into servo `id`'s number box until it is applied (change event). */
+export function draftTarget(store: Store<AppState>, id: number, text: string): void {
+  patchServos(store, (x) => ({ drafts: { ...x.drafts, [id]: text } }));
 }
 
 export function setTorque(store: Store<AppState>, id: number, torque: number): void {
@@ -188,6 +195,7 @@ export async function basicPosture(ctx: Ctx): Promise<void> {
     patchServos(store, {
       busy: undefined,
       targets: SERVO_IDS.map((id) => clampToSafe(id, HUNO_BASIC_POSTURE[id] ?? 127)),
+      drafts: {},
       notice: {
         tone: "ok",
         text: `Sent: all ${SERVO_IDS.length} servos move to the basic posture at speed ${speed}. The servos do not answer this command: press Read all positions to see where they are.`,

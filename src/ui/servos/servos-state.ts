@@ -6,6 +6,8 @@ export interface ServosState {
   positions: (number | undefined)[];
   /** Where each slider points. */
   targets: number[];
+  /** Text being typed into a servo's number box, not applied yet (so redraws do not reset it). */
+  drafts?: Partial<Record<number, string>>;
   /** Torque per servo for moves: 0 (strong) .. 4 (weak). */
   torques: number[];
   /** Servos that did not answer the last read. */

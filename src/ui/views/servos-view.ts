@@ -7,6 +7,7 @@ import { formatClockTime } from "../format.ts";
 import {
   acknowledgeSafety,
   basicPosture,
+  draftTarget,
   dropPendingMoves,
   leaveServoControl,
   moveServo,
@@ -64,7 +65,8 @@ function servoRow(ctx: ViewContext, id: number, enabled: boolean): TemplateResul
           step="1"
           ?disabled=${disabled}
           aria-describedby=${`servo-${id}-range`}
-          .value=${live(String(target))}
+          .value=${live(s.drafts?.[id] ?? String(target))}
+          @input=${(e: Event) => draftTarget(ctx.store, id, (e.target as HTMLInputElement).value)}
           @change=${(e: Event) => moveServo(ctx, id, Number((e.target as HTMLInputElement).value) || min)}
         />
         <span id=${`servo-${id}-range`} class="zero-hint">${min}–${max}</span>
