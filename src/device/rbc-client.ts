@@ -313,9 +313,21 @@ export class RbcClient extends RbcConnection {
 
   /**
    * Stop — all servos limp. Cancels whatever is pending or queued, enters direct mode if needed, and makes
-   * every servo 0-15 passive. Resolves with the ids that confirmed.
+   * every servo 0-15 passive. Resolves with the ids that confirmed. A Stop asked for while one is under way
+   * joins it (a second press must not cancel the first one's wait for the motion to end).
    */
-  async stop(): Promise<{ confirmed: number[]; silent: number[] }> {
+  stop(): Promise<{ confirmed: number[]; silent: number[] }> {
+    if (this.stopping) return this.stopping;
+    const stopping = this.startStop().finally(() => {
+      if (this.stopping === stopping) this.stopping = undefined;
+    });
+    this.stopping = stopping;
+    return stopping;
+  }
+
+  private stopping: Promise<{ confirmed: number[]; silent: number[] }> | undefined;
+
+  private async startStop(): Promise<{ confirmed: number[]; silent: number[] }> {
     if (this.mode === "disconnected" || this.mode === "connecting") throw new RbcNotConnectedError();
     this.epoch++;
     const playing = this._state.playing;

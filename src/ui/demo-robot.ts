@@ -1,4 +1,3 @@
-// First: zod must be told not to probe eval before any schema is built (CSP).
 import { MockSerialPort, SimulatedRbc } from "../sim/index.ts";
 
 let currentSim: SimulatedRbc | undefined;

@@ -68,7 +68,7 @@ window.addEventListener("hashchange", () => {
 
 // Escape = Stop (limp) while a robot is connected, wherever the focus is.
 document.addEventListener("keydown", (e) => {
-  if (e.key !== "Escape" || store.get().connection.phase !== "connected") return;
+  if (e.key !== "Escape" || e.repeat || store.get().connection.phase !== "connected") return;
   e.preventDefault();
   void session.stop();
 });

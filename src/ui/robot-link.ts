@@ -1,4 +1,3 @@
-// First: zod must be told not to probe eval before the protocol code builds its schemas (CSP).
 import { RbcClient } from "../device/rbc-client.ts";
 import { type SerialPortLike, WebSerialTransport } from "../link/web-serial-transport.ts";
 

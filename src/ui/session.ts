@@ -163,12 +163,20 @@ export class Session {
   async disconnect(): Promise<void> {
     const client = this.client;
     if (!client) return;
+    const interrupted = [...this.store.get().running];
     this.forgetClient();
     this.setConnection({
       phase: "disconnected",
       mode: undefined,
-      problem: undefined,
+      problem:
+        interrupted.length > 0
+          ? {
+              tone: "warning",
+              text: `Disconnected while this was running: ${interrupted.join(", ")}. It did not finish; check the result after reconnecting.`,
+            }
+          : undefined,
       lostReason: undefined,
+      interrupted,
       ...NOTHING_RUNNING,
     });
     this.store.update({ running: [], stopNotice: undefined });
@@ -192,7 +200,10 @@ export class Session {
       if ((options.packetMode ?? true) && client.mode === "direct") await client.exitDirectMode();
       return await fn(client);
     } finally {
-      this.store.update((s) => ({ running: s.running.filter((r) => r !== label) }));
+      this.store.update((s) => {
+        const i = s.running.indexOf(label);
+        return { running: i < 0 ? s.running : [...s.running.slice(0, i), ...s.running.slice(i + 1)] };
+      });
     }
   }
 
@@ -218,7 +229,8 @@ export class Session {
       notice = errorNotice("Stop failed. Switch the robot off.", e);
     }
     if (this.client === client) {
-      this.store.update({ stopNotice: notice });
+      // The robot is limp and someone is holding it: the next movement asks again.
+      this.store.update((s) => ({ stopNotice: notice, acks: { ...s.acks, movement: false } }));
       if (client.mode === "direct") this.setConnection({ limp: true });
     }
   }

@@ -86,6 +86,28 @@ describe("servos view", () => {
     await context.close();
   });
 
+  it("after a double Escape during a motion every servo is limp, and servo controls still wait for the safety notice", async () => {
+    const { page, context } = await app.newPage();
+    await connectRobot(page, app.url);
+    await page.getByTestId("memory-motion-text").filter({ hasText: "24,576" }).waitFor();
+    // Run basic posture (always accepted) and stop it with two quick presses of Escape.
+    await page.getByRole("link", { name: "Motions" }).click();
+    await page.locator('[data-motion="7"]').click();
+    await page.locator("#confirm-move").click();
+    await page.getByTestId("running-motion").waitFor();
+    await page.keyboard.press("Escape");
+    await page.keyboard.press("Escape");
+    await page.getByText(/Stopped: all 16 servos are limp/).waitFor({ timeout: 8000 });
+    expect((await simServos(page)).slice(0, 16).every((s) => s.passive)).toBe(true);
+    expect(await page.getByText(/Stop failed/).count()).toBe(0);
+
+    // Stop left the link in direct mode; the servo controls still need the safety notice first.
+    await page.getByRole("link", { name: "Servos" }).click();
+    await page.getByTestId("servo-safety").waitFor();
+    expect(await page.getByRole("button", { name: "Read all positions" }).isDisabled()).toBe(true);
+    await context.close();
+  });
+
   it("moves all servos to the basic posture after confirming, and leaves direct mode on request and on disconnect", async () => {
     const { page, context } = await app.newPage();
     await openServos(page);

@@ -286,3 +286,19 @@ describe("Stop motion", () => {
     expect(port.stats.bytesFromPc).toBe(before);
   });
 });
+
+describe("Stop pressed twice", () => {
+  it("joins the Stop under way instead of cancelling its wait for the motion to end", async () => {
+    const { client, run, sim, clock } = await makeRig({ sim: { basicPostureDone: true } });
+    const motion = client.runMotion(2).catch((e) => e);
+    await clock.advance(300);
+    const first = client.stop();
+    await clock.advance(30);
+    const second = client.stop();
+    expect(second).toBe(first);
+    const result = await run(second);
+    expect(result.confirmed).toHaveLength(16);
+    expect(await motion).toMatchObject({ code: "cancelled" });
+    expect(sim.servos.slice(0, 16).every((s) => s.passive)).toBe(true);
+  });
+});

@@ -4,7 +4,6 @@ import {
   BUILT_IN_MOTIONS,
   downloadSlotOf,
   isOfferedMotionNumber,
-  SOUND_REPLY_DELAY_MS,
   soundLengthMs,
 } from "../../protocol/catalog.ts";
 import type { AppState } from "../app-state.ts";
@@ -28,7 +27,6 @@ export const BASIC_POSTURE_GUIDANCE =
 export const MOVEMENT_WARNING = "The robot will move. Hold it or give it room.";
 /** How long basic posture takes after a stopped motion (its simulator duration; PROTOCOL.md §3.1). */
 const BASIC_POSTURE_MS = BUILT_IN_MOTIONS.find((m) => m.number === BASIC_POSTURE_MOTION)?.durationMs ?? 1800;
-/** The RBC finishes the scene it is in before it obeys 7; scenes rarely last longer than this. */
 
 export interface OfferedMotion {
   number: number;
@@ -66,7 +64,7 @@ export function offerFor(s: AppState, number: number): OfferedMotion | undefined
   return slot === undefined ? undefined : { number, name: `Download slot ${slot}`, slot };
 }
 
-let current: { number: number; abort: AbortController; stopRequested: boolean } | undefined;
+let current: { number: number; stopRequested: boolean } | undefined;
 
 /** A Run button: asks once per connection that the robot may move, then runs. */
 export function requestRun(ctx: Ctx, number: number): void {
@@ -103,7 +101,7 @@ export async function runMotionNow(ctx: Ctx, number: number): Promise<void> {
   const { store, session } = ctx;
   const offer = offerFor(store.get(), number);
   if (!offer || robotBusyReason(store.get())) return;
-  const run = { number, abort: new AbortController(), stopRequested: false };
+  const run = { number, stopRequested: false };
   current = run;
   const firstPosture = number === BASIC_POSTURE_MOTION && !store.get().connection.basicPostureConfirmed;
   patchMotions(store, {
@@ -114,7 +112,7 @@ export async function runMotionNow(ctx: Ctx, number: number): Promise<void> {
   ensureTicker(store);
   try {
     await session.run(`Running motion ${number}`, (client) =>
-      client.runMotion(number, { expectedMs: offer.expectedMs, signal: run.abort.signal }),
+      client.runMotion(number, { expectedMs: offer.expectedMs }),
     );
     if (run.stopRequested) {
       // "Stop motion" took effect: the motion ended with its scene; basic posture (7) plays now.
@@ -208,11 +206,6 @@ export async function stopMotion(ctx: Ctx): Promise<void> {
     if (current === run) current = undefined;
     ensureTicker(store);
   }
-}
-
-/** Length of sound `n` as the robot takes it (200 ms + the sound). */
-export function soundBusyMs(n: number): number {
-  return SOUND_REPLY_DELAY_MS + (soundLengthMs(n) ?? 0);
 }
 
 export async function playSound(ctx: Ctx, n: number): Promise<void> {

@@ -126,7 +126,8 @@ class SensorWatch {
     }
     const s = sensorsOf(ctx.store.get());
     await this.applyListen(s.listen, s.threshold);
-    if (s.polling) this.startLoop();
+    // The view may have been left, the tab hidden or polling paused while the subscription was sent.
+    if (this.ctx === ctx && !document.hidden && sensorsOf(ctx.store.get()).polling) this.startLoop();
   }
 
   /** Leaves servo control (after Stop) and resumes. */

@@ -173,6 +173,22 @@ export function moveServo(ctx: Ctx, id: number, position: number): void {
   moveSender(ctx).request(id, { position: target, torque: s.torques[id] ?? DEFAULT_TORQUE });
 }
 
+/**
+ * The number box of servo `id` was changed: move it to the typed position (clamped to its safe range). An empty
+ * or unreadable box moves nothing and shows the current target again.
+ */
+export function applyTypedTarget(ctx: Ctx, id: number, text: string): void {
+  const position = text.trim() === "" ? Number.NaN : Number(text);
+  if (Number.isFinite(position)) {
+    moveServo(ctx, id, Math.round(position));
+    return;
+  }
+  patchServos(ctx.store, (x) => {
+    const { [id]: _typed, ...drafts } = x.drafts ?? {};
+    return { drafts };
+  });
+}
+
 /** Keeps what is being typed into servo `id`'s number box until it is applied (change event). */
 export function draftTarget(store: Store<AppState>, id: number, text: string): void {
   patchServos(store, (x) => ({ drafts: { ...x.drafts, [id]: text } }));

@@ -108,7 +108,7 @@ function pollCard(ctx: ViewContext): TemplateResult {
           </button>
         </div>
       </div>
-      <p class="muted small" role="status" data-testid="poll-status">
+      <p class="muted small" data-testid="poll-status">
         ${
           s.running
             ? `Reading ${effectiveRate(s)} times a second${
@@ -224,7 +224,7 @@ function eventsCard(ctx: ViewContext): TemplateResult {
       ${
         s.events.length === 0
           ? html`<p class="empty small">No events yet.</p>`
-          : html`<ol class="event-list" data-testid="event-list" aria-live="polite">
+          : html`<ol class="event-list" data-testid="event-list" aria-live="polite" aria-relevant="additions">
               ${repeat(
                 s.events,
                 (e) => e.id,

@@ -2,10 +2,10 @@ import "../styles/tools.css";
 import { html, nothing, type TemplateResult } from "lit-html";
 import { live } from "lit-html/directives/live.js";
 import { DirectMode } from "../../device/direct-mode.ts";
-import { HUNO_JOINT_NAMES } from "../../protocol/servo-limits.ts";
 import { formatClockTime } from "../format.ts";
 import {
   acknowledgeSafety,
+  applyTypedTarget,
   basicPosture,
   draftTarget,
   dropPendingMoves,
@@ -18,6 +18,7 @@ import {
   setTorque,
   startServoControl,
 } from "../servos/servo-actions.ts";
+import { jointName } from "../zeros-editor.ts";
 import { liveNotice } from "./notice.ts";
 import type { AppView, ViewContext } from "./view-types.ts";
 
@@ -45,7 +46,7 @@ function safetyNotice(ctx: ViewContext): TemplateResult {
 function servoRow(ctx: ViewContext, id: number, enabled: boolean): TemplateResult {
   const s = servosOf(ctx.state);
   const { min, max } = DirectMode.safeRange(id);
-  const name = HUNO_JOINT_NAMES[id] ?? `Servo ${id}`;
+  const name = jointName(id);
   const position = s.positions[id];
   const silent = s.silent.includes(id);
   const target = s.targets[id] ?? min;
@@ -67,7 +68,7 @@ function servoRow(ctx: ViewContext, id: number, enabled: boolean): TemplateResul
           aria-describedby=${`servo-${id}-range`}
           .value=${live(s.drafts?.[id] ?? String(target))}
           @input=${(e: Event) => draftTarget(ctx.store, id, (e.target as HTMLInputElement).value)}
-          @change=${(e: Event) => moveServo(ctx, id, Number((e.target as HTMLInputElement).value) || min)}
+          @change=${(e: Event) => applyTypedTarget(ctx, id, (e.target as HTMLInputElement).value)}
         />
         <span id=${`servo-${id}-range`} class="zero-hint">${min}–${max}</span>
       </td>
@@ -142,7 +143,7 @@ function controlCard(ctx: ViewContext): TemplateResult {
   const direct = c.mode === "direct";
   const acked = ctx.state.acks?.servos === true;
   const busy = s.busy !== undefined || ctx.state.running.length > 0;
-  const enabled = direct && !busy;
+  const enabled = direct && acked && !busy;
   return html`
     <section class="card" aria-labelledby="servo-title" data-testid="servo-card">
       <div class="card-head">
