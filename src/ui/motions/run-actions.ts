@@ -8,6 +8,7 @@ import {
 } from "../../protocol/catalog.ts";
 import type { AppState } from "../app-state.ts";
 import { errorNotice, technicalDetail } from "../error-text.ts";
+import { focusSoon } from "../focus.ts";
 import type { Session } from "../session.ts";
 import type { Store } from "../store.ts";
 import { motionsOf, patchMotions, robotBusyReason } from "./motions-store.ts";
@@ -73,6 +74,7 @@ export function requestRun(ctx: Ctx, number: number): void {
   if (!isOfferedMotionNumber(number) || robotBusyReason(s)) return;
   if (!s.acks?.movement) {
     patchMotions(ctx.store, { confirmMove: number, runNotice: undefined });
+    focusSoon("confirm-move");
     return;
   }
   void runMotionNow(ctx, number);

@@ -8,6 +8,7 @@ import type { UploadResult } from "../../device/types.ts";
 import { ACTION_AREA_BYTES, errorCodeText, MOTION_AREA_BYTES, NO_ERROR } from "../../protocol/catalog.ts";
 import type { AppState, Notice } from "../app-state.ts";
 import { errorNotice, technicalDetail } from "../error-text.ts";
+import { focusSoon } from "../focus.ts";
 import { formatCount } from "../format.ts";
 import type { Session } from "../session.ts";
 import type { Store } from "../store.ts";
@@ -100,6 +101,7 @@ export function requestUpload(ctx: Ctx, target: UploadTarget): void {
     void startUpload(ctx, target);
   } else {
     patchMotions(ctx.store, { confirming: target, uploadResult: undefined });
+    focusSoon("confirm-upload");
   }
 }
 

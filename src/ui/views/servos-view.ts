@@ -2,6 +2,7 @@ import "../styles/tools.css";
 import { html, nothing, type TemplateResult } from "lit-html";
 import { live } from "lit-html/directives/live.js";
 import { DirectMode } from "../../device/direct-mode.ts";
+import { focusSoon } from "../focus.ts";
 import { formatClockTime } from "../format.ts";
 import {
   acknowledgeSafety,
@@ -129,7 +130,10 @@ function postureControls(ctx: ViewContext, enabled: boolean): TemplateResult {
         type="button"
         class="btn"
         ?disabled=${!enabled}
-        @click=${() => patchServos(ctx.store, { confirmingPosture: true })}
+        @click=${() => {
+          patchServos(ctx.store, { confirmingPosture: true });
+          focusSoon("confirm-posture");
+        }}
       >
         All to basic posture…
       </button>

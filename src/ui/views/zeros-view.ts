@@ -1,6 +1,7 @@
 import { html, nothing, type TemplateResult } from "lit-html";
 import { live } from "lit-html/directives/live.js";
 import { ZERO_COUNT, type ZeroChange, zeroRange } from "../../protocol/zeros.ts";
+import { focusSoon } from "../focus.ts";
 import { formatDelta } from "../format.ts";
 import {
   readZerosFromRobot,
@@ -112,9 +113,7 @@ function writeControls(ctx: ViewContext, check: DraftCheck, changes: readonly Ze
         aria-describedby="write-why"
         @click=${() => {
           ctx.store.update((s) => ({ zeros: { ...s.zeros, confirming: true } }));
-          requestAnimationFrame(() =>
-            requestAnimationFrame(() => document.getElementById("confirm-write")?.focus()),
-          );
+          focusSoon("confirm-write");
         }}
       >
         ${z.busy === "writing" ? "Writing…" : "Write to robot…"}
