@@ -9,7 +9,7 @@ import { COMMANDS, type MemoryArea } from "../protocol/commands.ts";
 import { encodePacket } from "../protocol/packet.ts";
 import { EXIT_DIRECT_MODE } from "../protocol/wck.ts";
 import { zeroProblems } from "../protocol/zeros.ts";
-import { DirectMode } from "./direct-mode.ts";
+import { DirectMode, SERVO_IDS } from "./direct-mode.ts";
 import {
   RbcBadReplyError,
   RbcCancelledError,
@@ -201,21 +201,35 @@ export class RbcClient extends RbcConnection {
       COMMANDS.runMotion.type,
     );
     await this.exclusive(async () => {
-      const expectedMs = postureDurationMs();
-      this.setState({ playing: { motion: BASIC_POSTURE_MOTION, startedAt: this.clock.now(), expectedMs } });
+      this.setState({
+        playing: {
+          motion: BASIC_POSTURE_MOTION,
+          startedAt: this.clock.now(),
+          expectedMs: postureDurationMs(),
+        },
+      });
       try {
-        await this.transact(
-          COMMANDS.runMotion.type,
-          COMMANDS.runMotion.request(BASIC_POSTURE_MOTION),
-          "Basic posture after Stop motion",
-          SCENE_END_MS + expectedMs + this.timeouts.marginMs,
-          { accept: (p) => p.contents[0] === BASIC_POSTURE_MOTION, send: false },
-        );
+        await this.awaitPostureAfter7({ send: false });
         this.setState({ basicPostureConfirmed: true });
       } finally {
         this.setState({ playing: undefined });
       }
     });
+  }
+
+  /**
+   * Waits for the reply to a 7 that ends a playing motion: the robot finishes its scene, then plays basic
+   * posture and answers 7 (the stopped motion's own reply comes first and is not this one). With `send` the
+   * 7 is sent here; otherwise it has been sent already, ahead of the queue.
+   */
+  private awaitPostureAfter7({ send }: { send: boolean }): Promise<unknown> {
+    return this.transact(
+      COMMANDS.runMotion.type,
+      COMMANDS.runMotion.request(BASIC_POSTURE_MOTION),
+      "Basic posture after a stopped motion",
+      SCENE_END_MS + postureDurationMs() + this.timeouts.marginMs,
+      { accept: (p) => p.contents[0] === BASIC_POSTURE_MOTION, send },
+    );
   }
 
   /** Plays sound 1-25 and resolves when the robot reports it finished (200 ms + its length). */
@@ -263,12 +277,16 @@ export class RbcClient extends RbcConnection {
           ? COMMANDS.subscribeButtons.request()
           : COMMANDS.subscribeRemote.request();
     const request = encodePacket(spec.type, contents);
-    return this.exclusive(async () => {
-      this.requirePacketMode(spec.name);
-      this.subscription = { kind, request };
-      this.setState({ subscription: kind });
-      await this.writePacket(request, spec.type);
-    });
+    return this.exclusive(
+      async () => {
+        this.requirePacketMode(spec.name);
+        this.subscription = { kind, request };
+        this.setState({ subscription: kind });
+        await this.writePacket(request, spec.type);
+      },
+      undefined,
+      { rearm: false },
+    );
   }
 
   /** Ends the subscription: the RBC stops when the next packet header arrives, so a harmless read is sent. */
@@ -330,49 +348,45 @@ export class RbcClient extends RbcConnection {
   private async startStop(): Promise<{ confirmed: number[]; silent: number[] }> {
     if (this.mode === "disconnected" || this.mode === "connecting") throw new RbcNotConnectedError();
     this.epoch++;
-    const playing = this._state.playing;
-    const cancelled = new RbcCancelledError("Stopped: every servo was made limp.");
-    this.failPending(cancelled);
-    this.raw.fail(cancelled);
+    const { playing, sounding } = this._state;
+    this.failPending(new RbcCancelledError("Cancelled by Stop: every servo is being made limp."));
     const epoch = this.epoch;
     return this.exclusive(async () => {
-      if (this.mode !== "direct") {
-        if (playing) await this.endMotionForStop(playing);
-        const entered = await this.transactDecoded(COMMANDS.enterDirectMode, undefined, 1).then(
-          () => true,
-          () => false,
-        );
-        if (!entered) {
-          throw new RbcError(
-            "timeout",
-            "Stop: the robot did not switch to servo control, so its servos could not be made limp. Switch the robot off.",
-          );
-        }
-        this.subscription = undefined;
-        this.setState({ mode: "direct", subscription: undefined, playing: undefined });
+      if (this.mode === "direct") return this.servos.limpAll();
+      // The RBC takes nothing while a sound plays, and nothing but 7 while a motion plays (PROTOCOL.md §3).
+      if (sounding)
+        await this.sleep(Math.max(0, sounding.startedAt + sounding.expectedMs - this.clock.now()) + 50);
+      if (playing) await this.endMotionForStop(playing);
+      const entered = await this.transactDecoded(COMMANDS.enterDirectMode, undefined, 1).then(
+        () => true,
+        () => false,
+      );
+      this.subscription = undefined;
+      this.setState({ mode: "direct", subscription: undefined, playing: undefined, sounding: undefined });
+      if (entered) return this.servos.limpAll();
+      // Its `01` may have been lost while the RBC did switch: try one servo (in normal mode the RBC ignores
+      // the wCK bytes, which carry no header).
+      const probe = await this.servos.limpAll([0]);
+      if (probe.confirmed.length > 0) {
+        const rest = await this.servos.limpAll(SERVO_IDS.slice(1));
+        return { confirmed: [...probe.confirmed, ...rest.confirmed], silent: rest.silent };
       }
-      return this.servos.limpAll();
+      await this.writeRaw(EXIT_DIRECT_MODE, "leave direct mode (blind)").catch(() => {});
+      this.setMode("packet");
+      throw new RbcError(
+        "timeout",
+        "Stop: the robot did not switch to servo control, so its servos could not be made limp. Switch the robot off.",
+      );
     }, epoch);
   }
 
-  /**
-   * While a motion plays the RBC drops every request but 7, which ends the motion at the end of its scene and
-   * then plays basic posture (PROTOCOL.md §3.1). Waits for that to finish so the servos can be taken.
-   */
+  /** Ends a playing motion for Stop and waits until the robot is still (see `awaitPostureAfter7`). */
   private async endMotionForStop(playing: NonNullable<ClientState["playing"]>): Promise<void> {
     if (playing.motion === BASIC_POSTURE_MOTION) {
       await this.sleep(Math.max(0, playing.startedAt + playing.expectedMs - this.clock.now()) + 50);
       return;
     }
-    await this.transactDecoded(
-      COMMANDS.runMotion,
-      BASIC_POSTURE_MOTION,
-      0,
-      SCENE_END_MS + postureDurationMs() + this.timeouts.marginMs,
-      {
-        accept: (p) => p.contents[0] === BASIC_POSTURE_MOTION,
-      },
-    ).catch(() => undefined);
+    await this.awaitPostureAfter7({ send: true }).catch(() => undefined);
   }
 
   private uploadIo() {

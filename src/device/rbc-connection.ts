@@ -1,4 +1,6 @@
 import type { Transport, TransportStatusEvent } from "../link/transport.ts";
+import { concatBytes } from "../protocol/bytes.ts";
+import { ABANDON_DOWNLOAD } from "../protocol/catalog.ts";
 import { COMMANDS, type CommandSpec, commandName, EVENT_TYPES } from "../protocol/commands.ts";
 import { ProtocolError } from "../protocol/errors.ts";
 import { encodePacket, type Packet } from "../protocol/packet.ts";
@@ -125,9 +127,13 @@ export class RbcConnection {
     ];
     try {
       await this.transport.open();
-      // In case the RBC was left in direct mode (PROTOCOL.md §5): no reply.
+      // In case the RBC was left in the middle of a download (by an earlier program that died) or in direct
+      // mode (PROTOCOL.md §5): neither gets a reply, and each is harmless garbage in the other states.
       await this.withTimeout(
-        this.writeRaw(EXIT_DIRECT_MODE, "leave direct mode (blind)"),
+        this.writeRaw(
+          concatBytes(ABANDON_DOWNLOAD, EXIT_DIRECT_MODE),
+          "abandon any download, leave direct mode",
+        ),
         this.timeouts.quickMs,
         "leave direct mode",
       );
@@ -151,9 +157,11 @@ export class RbcConnection {
 
   /** Closes the link. Pending requests are rejected. */
   async close(): Promise<void> {
-    const wasDirect = this.mode === "direct";
-    if (wasDirect && this.transport.status === "open") {
-      await this.transport.write(EXIT_DIRECT_MODE).catch(() => {});
+    // Leave the robot reading packets: end a download under way, or direct mode.
+    const farewell =
+      this.mode === "download" ? ABANDON_DOWNLOAD : this.mode === "direct" ? EXIT_DIRECT_MODE : undefined;
+    if (farewell && this.transport.status === "open") {
+      await this.withTimeout(this.transport.write(farewell), this.timeouts.quickMs, "close").catch(() => {});
     }
     this.failPending(new RbcDisconnectedError("The connection was closed."));
     for (const u of this.unlisten) u();
@@ -165,22 +173,25 @@ export class RbcConnection {
 
   // ---- Internals ---------------------------------------------------------------------------------------
 
-  /** Runs `fn` after everything queued before it; one operation at a time. */
-  exclusive<T>(fn: () => Promise<T>, epoch = this.epoch): Promise<T> {
-    const run = this.queue.then(() => {
+  /**
+   * Runs `fn` after everything queued before it; one operation at a time. Any packet `fn` sent ended the RBC's
+   * subscription, so it is armed again afterwards (unless `fn` is the subscribe itself).
+   */
+  exclusive<T>(fn: () => Promise<T>, epoch = this.epoch, { rearm = true } = {}): Promise<T> {
+    const run = this.queue.then(async () => {
       if (epoch !== this.epoch) throw new RbcCancelledError("Cancelled by Stop.");
-      return fn();
+      try {
+        return await fn();
+      } finally {
+        if (rearm) await this.rearmSubscription();
+      }
     });
     this.queue = run.catch(() => {});
     return run;
   }
 
   protected command<A, R>(spec: CommandSpec<A, R>, args: A): Promise<R> {
-    return this.exclusive(async () => {
-      const result = await this.transactDecoded(spec, args, spec.idempotent ? this.retries : 0);
-      await this.rearmSubscription();
-      return result;
-    });
+    return this.exclusive(() => this.transactDecoded(spec, args, spec.idempotent ? this.retries : 0));
   }
 
   /** One request/reply with retries for idempotent reads. Must run inside `exclusive`. */
@@ -249,13 +260,16 @@ export class RbcConnection {
   }
 
   protected requirePacketMode(what: string): void {
-    if (this.mode === "disconnected") throw new RbcNotConnectedError();
+    if (this.mode === "disconnected") {
+      const lost = this._state.reason;
+      throw lost ? new RbcDisconnectedError(`${lost} Connect again.`) : new RbcNotConnectedError();
+    }
     if (this.mode === "direct") {
       throw new RbcError("wrong-mode", `"${what}" needs the normal mode: leave direct servo control first.`);
     }
   }
 
-  protected async rearmSubscription(): Promise<void> {
+  private async rearmSubscription(): Promise<void> {
     if (this.subscription && this.mode === "packet") {
       await this.writePacket(this.subscription.request, this.subscription.request[8]!).catch(() => {});
     }

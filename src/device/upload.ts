@@ -1,5 +1,6 @@
 import { xorBytes } from "../protocol/bytes.ts";
 import {
+  ABANDON_DOWNLOAD,
   ACTION_AREA_BYTES,
   DOWNLOAD_ACK,
   DOWNLOAD_CHUNK,
@@ -45,18 +46,6 @@ export function downloadChunk(payload: Uint8Array, offset: number): Uint8Array {
   out[out.length - 1] = xorBytes(payload, offset, end);
   return out;
 }
-
-/**
- * Sent after a cancelled or unacknowledged download. Whatever chunk length L (1-64) the RBC is waiting for,
- * it reads L of these bytes and then a checksum byte that cannot match them (the prefix XOR is 00 for L = 1
- * and 01 after that, and the byte that follows is 01 then 00): it abandons the download and records nothing.
- * In packet mode the same bytes are harmless garbage (no header).
- */
-export const ABANDON_DOWNLOAD: Uint8Array = (() => {
-  const out = new Uint8Array(DOWNLOAD_CHUNK + 1);
-  out[1] = 0x01;
-  return out;
-})();
 
 /**
  * The download sequence of PROTOCOL.md §6.2 with the project's decisions: free memory checked first; one chunk

@@ -120,3 +120,15 @@ export function memoryFootprint(size: number): number {
 export const DOWNLOAD_CHUNK = 64;
 /** The single byte the RBC answers to each part of a download. */
 export const DOWNLOAD_ACK = 0x40;
+
+/**
+ * [decision] Sent after a cancelled or unacknowledged download, and before the handshake. Whatever chunk length L (1-64) the RBC is waiting for,
+ * it reads L of these bytes and then a checksum byte that cannot match them (the prefix XOR is 00 for L = 1
+ * and 01 after that, and the byte that follows is 01 then 00): it abandons the download and records nothing.
+ * In packet mode and on the servo bus the same bytes are harmless garbage (no header, no FF).
+ */
+export const ABANDON_DOWNLOAD: Uint8Array = (() => {
+  const out = new Uint8Array(DOWNLOAD_CHUNK + 1);
+  out[1] = 0x01;
+  return out;
+})();

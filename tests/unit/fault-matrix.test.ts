@@ -394,7 +394,8 @@ async function cell(
     const next = await settle(rig, rig.client.readFirmwareVersion());
     expect(next.ok).toBe(false);
     expect(next.error).toBeInstanceOf(RbcError);
-    expect((next.error as RbcError).code).toBe("not-connected");
+    // After a loss the reason stays: a typed "disconnected" error, at once.
+    expect((next.error as RbcError).code).toBe("disconnected");
     expect(rig.clock.now() - t1).toBeLessThanOrEqual(1);
   } else {
     expect(rig.client.mode).not.toBe("disconnected");
@@ -540,7 +541,8 @@ describe("fault matrix: writeMotion at each stage of an upload", () => {
       expect(rig.client.mode).toBe("disconnected");
       const t1 = rig.clock.now();
       const next = await settle(rig, rig.client.readFirmwareVersion());
-      expect((next.error as RbcError).code).toBe("not-connected");
+      // After a loss the reason stays: a typed "disconnected" error, at once.
+      expect((next.error as RbcError).code).toBe("disconnected");
       expect(rig.clock.now() - t1).toBeLessThanOrEqual(1);
     } else {
       expect(rig.client.mode).toBe("packet");

@@ -19,7 +19,7 @@ const FIXTURES = new URL("../../../shared/fixtures/", import.meta.url);
 const hiImage = () => fromHex(readFileSync(new URL("images/Hi.img.hex", FIXTURES), "utf8"));
 
 describe("RbcClient against the simulated RBC", () => {
-  it("connects: opens at 115200 with a 4 KiB buffer, leaves direct mode blindly, reads the version", async () => {
+  it("connects: opens at 115200 with a 4 KiB buffer, abandons any download, leaves direct mode blindly, reads the version", async () => {
     const clock = new VirtualClock();
     const sim = new SimulatedRbc({ clock });
     const port = new MockSerialPort(sim, { clock });
@@ -31,7 +31,9 @@ describe("RbcClient against the simulated RBC", () => {
     expect(port.openOptions).toMatchObject({ baudRate: 115200, dataBits: 8, stopBits: 1, parity: "none" });
     expect(port.openOptions?.bufferSize).toBeGreaterThanOrEqual(4096);
     const out = log.filter((e) => e.direction === "out").map((e) => toHex(e.bytes));
-    expect(out[0]).toBe("FF E0 FB 01 00 1A");
+    // 64 payload bytes and a checksum that cannot match (abandons a download left half done), then the
+    // direct-mode exit (PROTOCOL.md §5, example 5).
+    expect(out[0]).toBe(`00 01 ${Array(63).fill("00").join(" ")} FF E0 FB 01 00 1A`);
     expect(out[1]).toBe(EX.readVersion);
     expect(toHex(log.find((e) => e.direction === "in")!.bytes)).toBe(EX.version223);
     expect(client.mode).toBe("packet");
@@ -300,5 +302,53 @@ describe("Stop pressed twice", () => {
     expect(result.confirmed).toHaveLength(16);
     expect(await motion).toMatchObject({ code: "cancelled" });
     expect(sim.servos.slice(0, 16).every((s) => s.passive)).toBe(true);
+  });
+});
+
+describe("Stop while a sound plays", () => {
+  it("waits for the sound to end (the RBC takes nothing meanwhile), then makes every servo limp", async () => {
+    const { client, run, sim, clock } = await makeRig();
+    const sound = client.runSound(8).catch((e) => e); // 5,916 ms
+    await clock.advance(300);
+    const t0 = clock.now();
+    const result = await run(client.stop());
+    expect(result.confirmed).toHaveLength(16);
+    expect(clock.now() - t0).toBeGreaterThanOrEqual(200 + 5916 - 300);
+    expect(await sound).toMatchObject({ code: "cancelled" });
+    expect(sim.servos.slice(0, 16).every((s) => s.passive)).toBe(true);
+  });
+});
+
+describe("subscriptions across other operations", () => {
+  it("re-arms the subscription after a motion, whose packet ended it on the RBC", async () => {
+    const { client, run, sim, clock } = await makeRig();
+    const events: RbcEvent[] = [];
+    client.events.on((e) => events.push(e));
+    await run(client.subscribe("buttons"));
+    await run(client.runMotion(7));
+    sim.pressButton(1, 250);
+    await clock.advance(300);
+    expect(events.map((e) => e.value)).toContain(1);
+  });
+});
+
+describe("a robot left in the middle of a download by a program that died", () => {
+  it("is brought back to packet mode by the next connect, which records nothing", async () => {
+    const { client, run, sim, port, clock } = await makeRig();
+    const image = hiImage();
+    // The link dies after the first part and one chunk: the RBC waits for the rest.
+    const upload = client.writeMotion(image, {
+      onProgress: (p) => {
+        if (p.acknowledged >= 64) port.unplug();
+      },
+    });
+    await run(upload.catch((e) => e));
+    expect(sim.state.download).toBeDefined();
+    port.replug();
+    const again = new RbcClient(new WebSerialTransport(port, { clock }), { clock });
+    expect(await run(again.connect())).toMatchObject({ firmware: { major: 2, minor: 23 } });
+    expect(sim.state.download).toBeUndefined();
+    expect(sim.motions).toHaveLength(0);
+    expect(await run(again.readAvailableMemory("motion"))).toBe(24576);
   });
 });
