@@ -2,6 +2,9 @@ import type { Transport } from "../link/transport.ts";
 import {
   BASIC_POSTURE_MOTION,
   BUILT_IN_MOTIONS,
+  downloadSlotOf,
+  errorCodeText,
+  NO_ERROR,
   SOUND_REPLY_DELAY_MS,
   soundLengthMs,
 } from "../protocol/catalog.ts";
@@ -25,6 +28,11 @@ import type { ClientState, SubscriptionKind, UploadOptions, UploadResult, ZeroWr
 import { uploadFile } from "./upload.ts";
 
 export type { RbcClientOptions, RbcTimeouts } from "./rbc-connection.ts";
+
+/** How long after Run Motion the client checks whether the robot ignored it (see watchForIgnoredMotion). */
+const IGNORED_MOTION_PROBE_MS = 1000;
+/** Error 3 after Run Motion of a download slot: nothing was downloaded there (PROTOCOL.md §3.1). */
+const EMPTY_SLOT_ERROR = 3;
 
 /** The longest the RBC may take to reach the end of the current scene after a 7 (a scene is at most ~10 s in
  * Motionbuilder, but the built-in motions' scenes are well under 1 s). */
@@ -154,6 +162,7 @@ export class RbcClient extends RbcConnection {
     const expectedMs = options.expectedMs ?? builtIn?.durationMs ?? this.timeouts.unknownMotionMs;
     return this.exclusive(async () => {
       this.setState({ playing: { motion, startedAt: this.clock.now(), expectedMs } });
+      const watch = this.watchForIgnoredMotion();
       try {
         const n = await this.transactDecoded(
           COMMANDS.runMotion,
@@ -165,22 +174,68 @@ export class RbcClient extends RbcConnection {
         if (motion === BASIC_POSTURE_MOTION) this.setState({ basicPostureConfirmed: true });
         return n;
       } catch (e) {
-        if (
-          e instanceof RbcTimeoutError &&
-          motion !== BASIC_POSTURE_MOTION &&
-          !this._state.basicPostureConfirmed
-        ) {
-          throw new RbcError(
-            "motion-ignored",
-            `The robot did not run motion ${motion}. After it is switched on, the RBC ignores every motion until Basic posture (7) has run once: run motion 7 first.`,
-            { cause: e },
-          );
-        }
+        if (watch.code !== undefined || e instanceof RbcTimeoutError)
+          throw this.motionIgnored(motion, watch.code, e);
         throw e;
       } finally {
+        watch.dispose();
         this.setState({ playing: undefined });
       }
     });
+  }
+
+  /**
+   * While a motion plays the RBC answers nothing but 7, so a read of the error code sent a moment after Run
+   * Motion is answered only if the motion was ignored (not yet basic posture after power-up, an empty download
+   * slot). The answer ends the wait at once, instead of after the motion's whole expected duration.
+   */
+  private watchForIgnoredMotion(): { code: number | undefined; dispose(): void } {
+    const type = COMMANDS.readErrorCode.type;
+    let sent = false;
+    const watch = {
+      code: undefined as number | undefined,
+      dispose: () => {
+        this.clock.clearTimeout(timer);
+        this.unsolicited = undefined;
+      },
+    };
+    const timer = this.clock.setTimeout(() => {
+      sent = true;
+      this.writePacket(encodePacket(type, COMMANDS.readErrorCode.request()), type).catch(() => {});
+    }, IGNORED_MOTION_PROBE_MS);
+    this.unsolicited = (p) => {
+      if (!sent || p.type !== type || p.contents.length !== 2) return;
+      watch.code = p.contents[0];
+      this.failPending(new RbcError("motion-ignored", "The robot is not playing the motion."));
+    };
+    return watch;
+  }
+
+  /** Why Run Motion got no reply, in words (`code`: the robot's error code, if it answered meanwhile). */
+  private motionIgnored(motion: number, code: number | undefined, cause: unknown): RbcError {
+    const slot = downloadSlotOf(motion);
+    if (slot !== undefined && code === EMPTY_SLOT_ERROR) {
+      return new RbcRejectedError(
+        `Motion ${motion} did not run: download slot ${slot} holds no motion (the robot reports error 3). Upload a motion into it first.`,
+        code,
+      );
+    }
+    if (motion !== BASIC_POSTURE_MOTION && !this._state.basicPostureConfirmed) {
+      return new RbcError(
+        "motion-ignored",
+        `The robot did not run motion ${motion}. After it is switched on, the RBC ignores every motion until Basic posture (7) has run once: run motion 7 first.`,
+        { cause },
+      );
+    }
+    if (code === undefined) return cause instanceof RbcError ? cause : new RbcError("timeout", String(cause));
+    const reports = code === NO_ERROR ? "" : ` It reports: ${errorCodeText(code)}.`;
+    return new RbcError(
+      "motion-ignored",
+      `The robot did not run motion ${motion}: it is not playing anything.${reports}`,
+      {
+        cause,
+      },
+    );
   }
 
   /**

@@ -88,6 +88,8 @@ export class RbcConnection {
   protected epoch = 0;
   protected _state: ClientState = { mode: "disconnected", basicPostureConfirmed: false };
   protected subscription: { kind: SubscriptionKind; request: Uint8Array } | undefined;
+  /** Told about a reply no waiter takes (used to notice an ignored motion early). */
+  protected unsolicited: ((packet: Packet) => void) | undefined;
   private unlisten: Array<() => void> = [];
 
   constructor(
@@ -323,8 +325,10 @@ export class RbcConnection {
     }
     if (this.waiter && this.waiter.type === packet.type && (this.waiter.accept?.(packet) ?? true)) {
       this.waiter.resolve(packet);
+      return;
     }
-    // Anything else is a late or unexpected reply: logged above, otherwise ignored.
+    // Anything else is a late, unexpected or side-channel reply: logged above, and offered to `unsolicited`.
+    this.unsolicited?.(packet);
   }
 
   private onTransportStatus(event: TransportStatusEvent): void {

@@ -57,9 +57,10 @@ export interface UploadResult {
   /** EEPROM bytes the file occupies (64-byte rounding). */
   footprint: number;
   freeBefore: number;
-  freeAfter: number;
-  /** The robot's error code after the upload (0xFF = none). */
-  errorCode: number;
+  /** Free memory read after the upload; undefined if the robot did not answer that read. */
+  freeAfter: number | undefined;
+  /** The robot's error code after the upload (0xFF = none); undefined if it did not answer that read. */
+  errorCode: number | undefined;
   elapsedMs: number;
   /**
    * True when the last acknowledgement never came but the robot's free memory shows the file was recorded

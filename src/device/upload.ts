@@ -76,9 +76,11 @@ export async function uploadFile(
     client.transactDecoded(COMMANDS.readErrorCode, undefined, client.retries).then((r) => r.code);
 
   const freeBefore = await readFree();
-  if (footprint > freeBefore) {
+  // [decision] A file fits when its bytes do (the rounding only moves the next file's start), as the simulator
+  // decides too (PROTOCOL.md §6.1).
+  if (total > freeBefore) {
     throw new RbcRejectedError(
-      `Not enough ${area} memory: the file needs ${footprint} bytes, ${freeBefore} are free. Reset the ${area} memory (this forgets every downloaded ${area}) and try again. Nothing was sent.`,
+      `Not enough ${area} memory: the file has ${total} bytes, ${freeBefore} are free. Reset the ${area} memory (this forgets every downloaded ${area}) and try again. Nothing was sent.`,
     );
   }
 
@@ -135,8 +137,9 @@ export async function uploadFile(
     if (client.mode === "download") client.setMode("packet");
   }
 
-  const errorCode = await readError();
-  const freeAfter = await readFree();
+  // Every chunk was acknowledged: the file is recorded. A read that fails now does not undo that.
+  const errorCode = await readError().catch(() => undefined);
+  const freeAfter = await readFree().catch(() => undefined);
   return { area, total, chunks, footprint, freeBefore, freeAfter, errorCode, elapsedMs: io.now() - started };
 }
 
@@ -185,7 +188,7 @@ async function explainFailure(io: UploadIo, error: unknown, ctx: FailureContext)
   await io.raw
     .exchange(ABANDON_DOWNLOAD, { need: 0, timeoutMs: 0, note: "abandon download" })
     .catch(() => {});
-  client.setMode("packet");
+  if (client.mode === "download") client.setMode("packet");
   await io.sleep(client.timeouts.quickMs);
   let deviceError: number | undefined;
   let freeNow: number | undefined;
@@ -210,11 +213,13 @@ async function explainFailure(io: UploadIo, error: unknown, ctx: FailureContext)
         ? "The robot did not answer afterwards; its memory state is unknown. Switch it off and on, then upload again."
         : `The robot's free ${area} memory is now ${freeNow} bytes (was ${ctx.freeBefore}); its state is uncertain. Switch it off and on, then upload again.`;
   }
-  // Error 2 (checksum) is what the abandon bytes above make the RBC set, so it says nothing about the cause.
+  // Error 2 (checksum) is also what the abandon bytes above make the RBC set, so it is reported as such.
   const why =
-    deviceError !== undefined && deviceError !== NO_ERROR && deviceError !== CHECKSUM_ERROR
-      ? ` The robot reports: ${errorCodeText(deviceError)}.`
-      : "";
+    deviceError === undefined || deviceError === NO_ERROR
+      ? ""
+      : deviceError === CHECKSUM_ERROR
+        ? ` The robot reports: ${errorCodeText(deviceError)} (which the panel's own abandon bytes also cause).`
+        : ` The robot reports: ${errorCodeText(deviceError)}.`;
   if (cancelled) {
     return new RbcUploadError(
       "cancelled",

@@ -143,8 +143,12 @@ describe("RbcClient against the simulated RBC", () => {
     await run(client.writeAction(big.subarray(0, 5000)));
     const error = await run(client.writeAction(big.subarray(0, 4000)).catch((e) => e));
     expect(error).toMatchObject({ code: "rejected" });
-    expect(String(error.message)).toMatch(/needs 4032 bytes, 3136 are free/);
+    expect(String(error.message)).toMatch(/has 4000 bytes, 3136 are free/);
     expect(sim.actions).toHaveLength(1);
+    // Client and simulator agree on the edge: a file exactly as large as the free memory fits.
+    const exact = await run(client.writeAction(big.subarray(0, 3136)));
+    expect(exact).toMatchObject({ freeBefore: 3136, freeAfter: 0 });
+    expect(sim.actions).toHaveLength(2);
   });
 
   it("cancels an upload between chunks, leaves nothing recorded and says so", async () => {
@@ -350,5 +354,33 @@ describe("a robot left in the middle of a download by a program that died", () =
     expect(sim.state.download).toBeUndefined();
     expect(sim.motions).toHaveLength(0);
     expect(await run(again.readAvailableMemory("motion"))).toBe(24576);
+  });
+});
+
+describe("a motion the robot ignores is noticed at once", () => {
+  it("an empty download slot: error 3 in words after about a second, not after the whole wait", async () => {
+    const { client, run, clock } = await makeRig({ sim: { basicPostureDone: true } });
+    const t0 = clock.now();
+    const error = await run(client.runMotion(12).catch((e) => e));
+    expect(error).toMatchObject({ code: "rejected", deviceErrorCode: 3 });
+    expect(String(error.message)).toMatch(/download slot 1 holds no motion/);
+    expect(clock.now() - t0).toBeLessThan(1500);
+    expect(client.state.playing).toBeUndefined();
+    expect(await run(client.readFirmwareVersion())).toEqual({ major: 2, minor: 23 });
+  });
+
+  it("motion 4 right after power-up: the 7-first guidance after about a second", async () => {
+    const { client, run, clock } = await makeRig();
+    const t0 = clock.now();
+    await expect(run(client.runMotion(4))).rejects.toMatchObject({ code: "motion-ignored" });
+    expect(clock.now() - t0).toBeLessThan(1500);
+  });
+
+  it("does not disturb a motion that plays: the read is dropped and the reply comes at the end", async () => {
+    const { client, run, clock, sim } = await makeRig({ sim: { basicPostureDone: true } });
+    const t0 = clock.now();
+    expect(await run(client.runMotion(2))).toBe(2);
+    expect(clock.now() - t0).toBeGreaterThanOrEqual(6600);
+    expect(sim.stats.drops.busy).toBeGreaterThanOrEqual(1);
   });
 });

@@ -186,13 +186,19 @@ many bytes were acknowledged and what the robot's memory holds, and exits with c
       validation: issuesJson(validation),
       ...result,
       bytesPerSecond: rate,
-      error: errorCodeWords(result.errorCode),
+      error: result.errorCode === undefined ? "not read" : errorCodeWords(result.errorCode),
     });
     env.out.line(
       `Uploaded ${n(result.total)} bytes in ${result.chunks} chunks in ${seconds.toFixed(1)} s (${n(rate)} bytes/s).`,
     );
-    env.out.line(`Free ${result.area} memory: ${n(result.freeAfter)} bytes (was ${n(result.freeBefore)}).`);
-    env.out.line(`Error code: ${errorCodeWords(result.errorCode)}.`);
+    env.out.line(
+      result.freeAfter === undefined
+        ? `Free ${result.area} memory: not read (the robot did not answer); check with \`rbc info\`.`
+        : `Free ${result.area} memory: ${n(result.freeAfter)} bytes (was ${n(result.freeBefore)}).`,
+    );
+    env.out.line(
+      `Error code: ${result.errorCode === undefined ? "not read (the robot did not answer)" : errorCodeWords(result.errorCode)}.`,
+    );
     if (values.reset && result.area === "motion") {
       env.out.line(
         `It is downloaded motion 1: play it with \`rbc run 12\`${real ? " — first with the robot held or lying down" : ""}.`,

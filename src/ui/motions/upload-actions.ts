@@ -204,13 +204,17 @@ function uploadSucceeded(ctx: Ctx, payload: Payload, result: UploadResult, real:
         ? `It is downloaded motion ${entry.slot}: run it as motion number ${number} (Run, below).`
         : "The robot already held downloads the panel did not see arrive, so its motion number is not known; tick “Reset motion memory first” next time to know it.";
   const errorWords =
-    result.errorCode === NO_ERROR
-      ? "no error"
-      : `${errorCodeText(result.errorCode)} (code ${result.errorCode})`;
+    result.errorCode === undefined
+      ? "not read (the robot did not answer)"
+      : result.errorCode === NO_ERROR
+        ? "no error"
+        : `${errorCodeText(result.errorCode)} (code ${result.errorCode})`;
   const sentences = [
     `Uploaded ${payload.fileName}: ${formatCount(result.total)} bytes in ${result.chunks} chunks in ${formatSeconds(sendMs)} (${formatRate(rate)}), every chunk acknowledged.`,
     where,
-    `Free ${area} memory: ${formatCount(result.freeAfter)} of ${formatCount(areaBytes(area))} bytes (was ${formatCount(result.freeBefore)}; the file takes ${formatCount(result.footprint)}).`,
+    result.freeAfter === undefined
+      ? `Free ${area} memory was not read afterwards (the robot did not answer); press Refresh on the Robot view.`
+      : `Free ${area} memory: ${formatCount(result.freeAfter)} of ${formatCount(areaBytes(area))} bytes (was ${formatCount(result.freeBefore)}; the file takes ${formatCount(result.footprint)}).`,
     `Error code after the upload: ${errorWords}.`,
   ];
   if (real && area === "motion") sentences.push(HOLD_ADVICE);
@@ -221,8 +225,12 @@ function uploadSucceeded(ctx: Ctx, payload: Payload, result: UploadResult, real:
   store.update((s) => ({
     device: {
       ...s.device,
-      errorCode: result.errorCode,
-      ...(area === "motion" ? { freeMotion: result.freeAfter } : { freeAction: result.freeAfter }),
+      ...(result.errorCode === undefined ? {} : { errorCode: result.errorCode }),
+      ...(result.freeAfter === undefined
+        ? {}
+        : area === "motion"
+          ? { freeMotion: result.freeAfter }
+          : { freeAction: result.freeAfter }),
       readAt: Date.now(),
     },
   }));
