@@ -228,7 +228,10 @@ export class MockSerialPort extends EventTarget implements SerialPort {
     }
     const now = this.clock.now();
     this.txBusyUntil = Math.max(now, this.txBusyUntil) + bytes.length * BYTE_TIME_MS;
-    this.clock.setTimeout(() => this.sim.receive(bytes), this.txBusyUntil - now);
+    // Bytes on the wire still arrive after close() (the OS flushes them), but not after a cable pull.
+    this.clock.setTimeout(() => {
+      if (this.plugged) this.sim.receive(bytes);
+    }, this.txBusyUntil - now);
   }
 
   // ---- RBC → PC ----
