@@ -4,12 +4,20 @@ import type { Output } from "./output.ts";
 export interface RunEnv {
   /** The arguments after the subcommand's name (options included; the command parses them). */
   argv: string[];
-  /** Aborted on the first Ctrl-C (SIGINT). */
+  /**
+   * Aborted on the first Ctrl-C (SIGINT) or SIGTERM, and when stdout's reader goes away (EPIPE, e.g. `| head`):
+   * the command stops as cleanly as on Ctrl-C.
+   */
   signal: AbortSignal;
   /** Registers work to do before the process exits (closing ports); run in reverse order. */
   onCleanup(fn: () => Promise<void> | void): void;
   /** Set by `--json`, so that errors before parsing still come out in the right form. */
   out: Output;
+  /**
+   * What to tell the user if rbc must exit before the command has stopped by itself (a second Ctrl-C, or the
+   * grace period after the first one ran out) — e.g. that the zeros may have been written. `undefined` clears it.
+   */
+  setExitNote(note: string | undefined): void;
   stdin: NodeJS.ReadStream;
   cwd: string;
   env: NodeJS.ProcessEnv;
@@ -29,5 +37,10 @@ export interface CommandDef {
   examples: readonly string[];
   /** False for commands that do not talk to a robot (ports, sim): the global --port/--demo text is left out. */
   talksToRobot: boolean;
+  /**
+   * True for commands whose `--json` output is JSON lines (sensors, sim): a failure is then one compact JSON
+   * line as well, so that the stream stays JSON lines.
+   */
+  streams?: boolean;
   run(env: RunEnv): Promise<number>;
 }

@@ -1,23 +1,35 @@
 import { createInterface } from "node:readline/promises";
 import type { RunEnv } from "./command.ts";
 
+/** The answer at a y/N prompt: "interrupted" for Ctrl-C (at the prompt, or a signal while it waits). */
+export type ConfirmAnswer = "yes" | "no" | "interrupted";
+
 /**
- * Asks a yes/no question on the terminal (stderr), default no. Resolves false on anything but y/yes, on
- * Ctrl-C, and when stdin is not a terminal (callers should ask for --yes instead).
+ * Asks a yes/no question on the terminal (stderr), default no. "yes" only for y/yes; "no" for anything else,
+ * for end of input, and when stdin is not a terminal (callers should ask for --yes instead); "interrupted"
+ * for Ctrl-C — the terminal is in raw mode while the prompt reads, so Ctrl-C arrives here as a key, not as a
+ * SIGINT to the process, and callers must exit 130 as on any other interrupt.
  */
-export async function confirm(env: RunEnv, question: string): Promise<boolean> {
-  if (!env.stdin.isTTY || env.signal.aborted) return false;
-  const rl = createInterface({ input: env.stdin, output: process.stderr, terminal: true });
+export async function confirm(env: RunEnv, question: string): Promise<ConfirmAnswer> {
+  if (env.signal.aborted) return "interrupted";
+  if (!env.stdin.isTTY) return "no";
+  const stderr = env.out.streams.stderr;
+  const rl = createInterface({ input: env.stdin, output: stderr, terminal: true });
   const controller = new AbortController();
-  const onAbort = () => controller.abort();
+  let interrupted = false;
+  const onAbort = () => {
+    interrupted = true;
+    controller.abort();
+  };
   env.signal.addEventListener("abort", onAbort, { once: true });
-  rl.on("SIGINT", () => controller.abort());
+  rl.on("SIGINT", onAbort);
+  rl.on("close", () => controller.abort());
   try {
     const answer = await rl.question(`${question} [y/N] `, { signal: controller.signal });
-    return /^y(es)?$/i.test(answer.trim());
+    return /^y(es)?$/i.test(answer.trim()) ? "yes" : "no";
   } catch {
-    process.stderr.write("\n");
-    return false;
+    env.out.err("\n");
+    return interrupted ? "interrupted" : "no";
   } finally {
     env.signal.removeEventListener("abort", onAbort);
     rl.close();

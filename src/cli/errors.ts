@@ -11,6 +11,8 @@ export const EXIT = {
   usage: 2,
   /** Interrupted with Ctrl-C (128 + SIGINT). */
   interrupted: 130,
+  /** Stopped with SIGTERM (128 + 15), e.g. by `kill` or a service manager. */
+  terminated: 143,
 } as const;
 
 /** A mistake on the command line; main prints the message and a pointer to `--help`, exit code 2. */
@@ -53,8 +55,19 @@ export function errorCode(e: unknown): string {
   return "unexpected";
 }
 
+/**
+ * Added to the connect failure "no robot answered": the RBC also stays silent while it plays a motion or a
+ * sound (it handles no request then, the handshake's version read included), which a new rbc cannot tell apart.
+ */
+export const BUSY_HINT =
+  "or the robot is busy playing a motion or a sound: wait until it ends and try again.";
+
 /** One line for a person: typed errors already say what happened and what to do. */
 export function errorLine(e: unknown): string {
-  const text = e instanceof Error ? e.message : String(e);
-  return text.replace(/\s*\n\s*/g, " ").trim() || "Something unexpected went wrong.";
+  const text = (e instanceof Error ? e.message : String(e)).replace(/\s*\n\s*/g, " ").trim();
+  if (!text) return "Something unexpected went wrong.";
+  if (errorCode(e) === "no-robot" && !/busy playing/i.test(text)) {
+    return `${text.replace(/[.\s]+$/, "")}; ${BUSY_HINT}`;
+  }
+  return text;
 }

@@ -32,21 +32,49 @@ function table(rows: ReadonlyArray<readonly [string, string]>, indent = "  "): s
     .join("\n");
 }
 
+/** Wraps a paragraph at `width` columns, keeping `quoted commands` on one line. */
+function wrap(text: string, width = 108): string {
+  const KEEP = "\u0001";
+  const kept = text.replace(/`[^`]*`/g, (q) => q.replaceAll(" ", KEEP));
+  const lines: string[] = [];
+  let line = "";
+  for (const word of kept.split(/[ \n]+/).filter((w) => w !== "")) {
+    if (line && line.length + 1 + word.length > width) {
+      lines.push(line);
+      line = word;
+    } else {
+      line = line ? `${line} ${word}` : word;
+    }
+  }
+  if (line) lines.push(line);
+  return lines.join("\n").replaceAll(KEEP, " ");
+}
+
 export function globalHelp(commands: readonly CommandDef[]): string {
+  const robotCommands = commands
+    .filter((c) => c.talksToRobot)
+    .map((c) => c.name)
+    .join(", ");
   return `rbc — control a Robobuilder RBC robot controller from the command line
 
 Usage: rbc COMMAND [options]
 
-Every command that talks to a robot needs --port PATH (the robot's serial port) or --demo (a simulated
-robot built into rbc, to try things without hardware).
+${wrap(`The commands that talk to a robot (${robotCommands}) need --port PATH (the robot's serial port) or
+--demo (a simulated robot built into rbc, to try things without hardware). \`rbc ports\` takes neither;
+\`rbc sim\` takes --port PATH (the device to serve the simulator on) or --pty, and refuses --demo.`)}
 
 Commands:
 ${table(commands.map((c) => [c.name, c.summary]))}
 
-Options for every command:
-${table([...ROBOT_OPTIONS, ...COMMON_OPTIONS])}
+Options of the commands that talk to a robot:
+${table([...ROBOT_OPTIONS, LOG_OPTION])}
 
-Exit codes: 0 done, 1 failed (the reason is one line on stderr), 2 wrong command line, 130 interrupted (Ctrl-C).
+Options of every command:
+${table([JSON_OPTION, HELP_OPTION])}
+
+Exit codes: 0 done, 1 failed (the reason is one line on stderr), 2 wrong command line, 130 interrupted (Ctrl-C),
+143 stopped by SIGTERM (e.g. \`kill\`). With --json a failure is a JSON document on stdout too,
+{"ok":false,"error":{"code":…,"message":…}}: one line for the commands that stream JSON lines (sensors, sim).
 
 Examples:
   rbc ports                          find the robot's serial port

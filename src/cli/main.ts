@@ -2,10 +2,12 @@
  * `rbc`: the command line on the same core as the panel (protocol → device → link). Started by bin/rbc.mjs.
  * Parses the subcommand, runs it, turns failures into one line on stderr and an exit code, and handles
  * Ctrl-C: the first aborts the command (which stops cleanly and closes the port), a second one exits at once.
+ * A closed stdout (`rbc … | head -1`) stops the command the same way, without a word.
  */
 import { readFileSync } from "node:fs";
 import { RbcUploadError } from "../device/errors.ts";
 import { splitCommand, wantsHelp } from "./args.ts";
+import { Cleanups } from "./cleanups.ts";
 import type { CommandDef, RunEnv } from "./command.ts";
 import { COMMAND_LIST, findCommand } from "./commands/index.ts";
 import { CliError, EXIT, errorCode, errorLine, UsageError } from "./errors.ts";
@@ -14,8 +16,6 @@ import { Output } from "./output.ts";
 
 /** After Ctrl-C, how long a command may take to stop cleanly before rbc closes the port and exits anyway. */
 const INTERRUPT_GRACE_MS = 5000;
-/** How long closing the port may take at exit. */
-const CLEANUP_LIMIT_MS = 3000;
 
 function version(): string {
   const pkg: unknown = JSON.parse(readFileSync(new URL("../../package.json", import.meta.url), "utf8"));
@@ -27,6 +27,7 @@ function reportFailure(out: Output, e: unknown, command: CommandDef | undefined)
     const which = e.command ?? command?.name;
     out.note(`rbc: ${errorLine(e)}`);
     out.note(`Run "rbc ${which ? `${which} ` : ""}--help" for usage.`);
+    out.result({ ok: false, error: { code: errorCode(e), message: errorLine(e) } });
     return EXIT.usage;
   }
   out.note(`rbc: ${errorLine(e)}`);
@@ -40,41 +41,56 @@ function reportFailure(out: Output, e: unknown, command: CommandDef | undefined)
   return e instanceof CliError ? e.exitCode : EXIT.failed;
 }
 
-async function runCleanups(cleanups: Array<() => Promise<void> | void>): Promise<void> {
-  for (const fn of cleanups.reverse()) {
-    await Promise.race([
-      Promise.resolve()
-        .then(fn)
-        .catch(() => {}),
-      new Promise<void>((r) => setTimeout(r, CLEANUP_LIMIT_MS).unref()),
-    ]);
-  }
-  cleanups.length = 0;
-}
-
-async function main(argv: readonly string[]): Promise<number> {
+async function main(argv: readonly string[]): Promise<{ code: number; out: Output }> {
   const { command: name, rest } = splitCommand(argv);
   const out = new Output(rest.includes("--json"));
   const controller = new AbortController();
-  const cleanups: Array<() => Promise<void> | void> = [];
+  const cleanups = new Cleanups();
   let interruptCode: number = EXIT.interrupted;
   let interrupts = 0;
+  /** stdout's reader went away: stop quietly. */
+  let outputClosed = false;
+  let exitNote: string | undefined;
+  const tellExitNote = () => {
+    if (exitNote !== undefined) out.note(`rbc: ${exitNote}`);
+  };
+
+  // A command that does not stop by itself is given up on after the grace period.
+  let graceTimer: ReturnType<typeof setTimeout> | undefined;
+  const startGraceTimer = () => {
+    graceTimer ??= setTimeout(() => {
+      out.note("rbc: the command did not stop in time; closing the port.");
+      tellExitNote();
+      void cleanups.run().then(() => process.exit(interruptCode));
+    }, INTERRUPT_GRACE_MS);
+    graceTimer.unref();
+  };
   const onSignal = (signal: NodeJS.Signals) => {
     interrupts++;
-    interruptCode = signal === "SIGTERM" ? 143 : EXIT.interrupted;
+    interruptCode = signal === "SIGTERM" ? EXIT.terminated : EXIT.interrupted;
     if (interrupts > 1) {
       out.note("\nrbc: interrupted again; exiting without waiting.");
+      tellExitNote();
       process.exit(interruptCode);
     }
     controller.abort(new Error("Interrupted."));
-    // A command that does not stop by itself is given up on after the grace period.
-    setTimeout(() => {
-      out.note("rbc: the command did not stop in time; closing the port.");
-      void runCleanups(cleanups).then(() => process.exit(interruptCode));
-    }, INTERRUPT_GRACE_MS).unref();
+    startGraceTimer();
   };
   process.on("SIGINT", onSignal);
   process.on("SIGTERM", onSignal);
+
+  // A reader that goes away (EPIPE: `rbc info | head -1`) must not crash rbc with a stack trace: stop writing
+  // to that stream; when it is stdout, nobody wants the rest of the result, so stop the command as on Ctrl-C.
+  out.onBroken((which) => {
+    if (which !== "stdout") return;
+    outputClosed = true;
+    if (!controller.signal.aborted) {
+      controller.abort(new Error("The output was closed."));
+      startGraceTimer();
+    }
+  });
+  process.stdout.on("error", () => out.markBroken("stdout"));
+  process.stderr.on("error", () => out.markBroken("stderr"));
 
   let def: CommandDef | undefined;
   try {
@@ -83,48 +99,66 @@ async function main(argv: readonly string[]): Promise<number> {
       if (name === undefined && rest.includes("--version")) {
         out.line(version());
         out.result({ version: version() });
-        return EXIT.ok;
+        return { code: EXIT.ok, out };
       }
       if (name === undefined && rest.length > 0 && !wantsHelp(rest)) {
         throw new UsageError(`Missing a command (${COMMAND_LIST.map((c) => c.name).join(", ")}).`);
       }
       const about = topic === undefined ? undefined : findCommand(topic);
       if (topic !== undefined && !about) throw new UsageError(`Unknown command "${topic}".`);
-      process.stdout.write(about ? commandHelp(about) : globalHelp(COMMAND_LIST));
-      return EXIT.ok;
+      out.text(about ? commandHelp(about) : globalHelp(COMMAND_LIST));
+      return { code: EXIT.ok, out };
     }
     def = findCommand(name);
     if (!def) throw new UsageError(`Unknown command "${name}".`);
+    if (def.streams) out.streaming();
     if (wantsHelp(rest)) {
-      process.stdout.write(commandHelp(def));
-      return EXIT.ok;
+      out.text(commandHelp(def));
+      return { code: EXIT.ok, out };
     }
     const env: RunEnv = {
       argv: rest,
       signal: controller.signal,
-      onCleanup: (fn) => cleanups.push(fn),
+      onCleanup: (fn) => cleanups.add(fn),
       out,
+      setExitNote: (note) => {
+        exitNote = note;
+      },
       stdin: process.stdin,
       cwd: process.cwd(),
       env: process.env,
     };
     const code = await def.run(env);
     // Commands report an interruption as 130; after SIGTERM it is 143.
-    return code === EXIT.interrupted ? interruptCode : code;
+    return { code: code === EXIT.interrupted ? interruptCode : code, out };
   } catch (e) {
-    if (controller.signal.aborted && !(e instanceof UsageError)) {
-      out.note(`rbc: interrupted. ${e instanceof CliError ? errorLine(e) : ""}`.trim());
-      out.result({ ok: false, error: { code: "interrupted", message: "Interrupted." } });
-      return interruptCode;
+    const stopped = e instanceof CliError && e.exitCode === EXIT.interrupted;
+    if ((controller.signal.aborted || stopped) && !(e instanceof UsageError)) {
+      // Stopped because stdout's reader went away (and not by Ctrl-C): quietly.
+      if (outputClosed && interrupts === 0) return { code: EXIT.interrupted, out };
+      const why = e instanceof CliError ? errorLine(e) : "";
+      out.note(`rbc: interrupted. ${why}`.trim());
+      out.result({
+        ok: false,
+        error: { code: "interrupted", message: `Interrupted. ${why}`.trim() },
+      });
+      return { code: interruptCode, out };
     }
-    return reportFailure(out, e, def);
+    return { code: reportFailure(out, e, def), out };
   } finally {
-    await runCleanups(cleanups);
+    await cleanups.run();
   }
 }
 
-const flush = (stream: NodeJS.WriteStream) => new Promise<void>((r) => stream.write("", () => r()));
+/** Resolves once `stream` has taken everything written so far (at once if its reader went away). */
+function flush(stream: NodeJS.WriteStream, broken: boolean): Promise<void> {
+  if (broken || stream.destroyed) return Promise.resolve();
+  return new Promise<void>((r) => stream.write("", () => r()));
+}
 
-const code = await main(process.argv.slice(2));
-await Promise.all([flush(process.stdout), flush(process.stderr)]);
+const { code, out } = await main(process.argv.slice(2));
+await Promise.all([
+  flush(process.stdout, out.isBroken("stdout")),
+  flush(process.stderr, out.isBroken("stderr")),
+]);
 process.exit(code);

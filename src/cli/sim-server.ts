@@ -20,6 +20,11 @@ export interface SimServerOptions extends SimLinkOptions {
   onReady(sim: SimulatedRbc): void;
 }
 
+/**
+ * Opens the device the way NodeSerialTransport opens a robot's port (it exposes no shared options): 115200 8N1,
+ * no flow control. Without `rtscts`/`xon`/`xoff` off, a device left with flow control on by an earlier program
+ * would hold back or swallow bytes (0x11 and 0x13 are XON/XOFF).
+ */
 function openPort(path: string): Promise<SerialPort> {
   return new Promise((resolve, reject) => {
     const port = new SerialPort({
@@ -28,6 +33,9 @@ function openPort(path: string): Promise<SerialPort> {
       dataBits: 8,
       stopBits: 1,
       parity: "none",
+      rtscts: false,
+      xon: false,
+      xoff: false,
       autoOpen: false,
     });
     port.open((err) =>

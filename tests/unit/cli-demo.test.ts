@@ -47,6 +47,13 @@ describe.concurrent("rbc --demo", () => {
       expect(global.stdout).toContain(word);
     }
     expect(global.stdout).toMatch(/Exit codes: 0 .*130 interrupted/);
+    expect(global.stdout).toContain("143 stopped by SIGTERM");
+    expect(global.stdout).toMatch(
+      /`rbc ports` takes neither;\s+`rbc sim` takes --port PATH[\s\S]*refuses\s+--demo/,
+    );
+    const run = await runCli(["run", "--help"]);
+    expect(run.stdout).toContain("Wait until it ends before the next rbc command");
+    expect(run.stdout).not.toContain("`rbc run 7` ends");
     const upload = await runCli(["upload", "--help"]);
     expect(upload.code).toBe(0);
     expect(upload.stdout).toContain("Usage: rbc upload FILE.rbm");
@@ -68,6 +75,60 @@ describe.concurrent("rbc --demo", () => {
     expect(noRobot.stderr).toContain("--port PATH");
     const badOption = await runCli(["info", "--demo", "--colour"]);
     expect(badOption.code).toBe(2);
+  });
+
+  it("--json: a usage error prints the JSON error document too; a streaming command's failure is one line", {
+    timeout: T,
+  }, async ({ onTestFinished }) => {
+    const runCli = scoped(onTestFinished);
+    const usage = await runCli(["info", "--demo", "--json", "--colour"]);
+    expect(usage.code).toBe(2);
+    expect(JSON.parse(usage.stdout)).toEqual({
+      ok: false,
+      error: { code: "usage", message: "Unknown option '--colour'." },
+    });
+    expect(usage.stderr).toContain('Run "rbc info --help" for usage.');
+    const unknown = await runCli(["dance", "--json"]);
+    expect(unknown.code).toBe(2);
+    expect(JSON.parse(unknown.stdout).error.code).toBe("usage");
+    for (const args of [
+      ["sensors", "--demo", "--json", "--count", "0"],
+      ["log", "sensors", "--demo", "--json", "--count", "0"],
+    ]) {
+      const stream = await runCli(args);
+      expect(stream.code).toBe(2);
+      expect(stream.stdout).toMatch(/^\{.*\}\n$/); // exactly one JSON line
+      expect(JSON.parse(stream.stdout)).toMatchObject({ ok: false, error: { code: "usage" } });
+    }
+    const sim = await runCli(["sim", "--port", "/nonexistent/rbc-tty", "--json"]);
+    expect(sim.code).toBe(1);
+    expect(sim.stdout).toMatch(/^\{.*\}\n$/);
+    expect(JSON.parse(sim.stdout).error.code).toBe("open-failed");
+  });
+
+  it("a reader that goes away (| head -1) ends rbc quietly, without a stack trace", { timeout: T }, async ({
+    onTestFinished,
+  }) => {
+    const scope = new CliScope();
+    onTestFinished(scope.killAll);
+    // Nobody reads the result at all.
+    const info = scope.start(["info", "--demo"]);
+    info.child.stdout?.destroy();
+    // A stream whose reader leaves after the first line: stops like Ctrl-C, exit 0.
+    const sensors = scope.start(["sensors", "--demo", "--interval-ms", "20"]);
+    // Between two motions: the second one is not started.
+    const run = scope.start(["run", "7", "4", "--demo"]);
+    await Promise.all([
+      sensors.waitFor("stdout", /distance/).then(() => sensors.child.stdout?.destroy()),
+      run.waitFor("stdout", /Running 7/).then(() => run.child.stdout?.destroy()),
+    ]);
+    const [i, s, r] = await Promise.all([info.done, sensors.done, run.done]);
+    expect(i.code, i.stderr).toBe(0);
+    expect(i.stderr).toBe("");
+    expect(s.code, s.stderr).toBe(0);
+    expect(s.stderr).toBe("Reading the sensors; Ctrl-C to stop.\n");
+    expect(r.code, r.stderr).toBe(130);
+    expect(r.stderr).toBe("rbc: stopped before motion 4 (Walk forward); it was not started.\n");
   });
 
   it("info: firmware, serial, platform, error code in words, free memory (text and --json)", {

@@ -1,11 +1,13 @@
-import { readFile } from "node:fs/promises";
+import { spawn, spawnSync } from "node:child_process";
+import { mkdtemp, readdir, readFile, rm } from "node:fs/promises";
+import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { afterAll, afterEach, beforeAll, describe, expect, it } from "vitest";
 import { createPtyPair, type PtyPair } from "../../src/cli/pty.ts";
 import { RbcClient } from "../../src/device/index.ts";
 import { NodeSerialTransport } from "../../src/link/node-serial-transport.ts";
 import { FACTORY_ZEROS, motionImage, parseRbm, STANDARD_ZEROS } from "../../src/protocol/index.ts";
-import { type CliProcess, FIXTURES, killAll, startCli } from "../cli/spawn-cli.ts";
+import { BIN, type CliProcess, FIXTURES, killAll, REPO, startCli } from "../cli/spawn-cli.ts";
 
 /**
  * NodeSerialTransport against a real serial device: a PTY pair made by socat, `rbc sim` serving one end (a
@@ -30,6 +32,40 @@ async function stopSim(rig: Rig | undefined): Promise<void> {
   rig.sim.child.kill("SIGINT");
   await rig.sim.done;
   await rig.pty.close();
+}
+
+/** util-linux `script` runs a command on a pseudo terminal: the way to give rbc a terminal for its y/N prompt. */
+const HAS_SCRIPT = spawnSync("script", ["--version"]).status === 0;
+
+/**
+ * Runs `rbc ARGS` with a terminal on stdin/stdout/stderr (through `script`), types `keys` once `prompt` shows,
+ * and resolves with the exit code and everything the terminal showed.
+ */
+function runOnTerminal(args: readonly string[], prompt: RegExp, keys: string) {
+  const command = [process.execPath, BIN, ...args].map((a) => `'${a}'`).join(" ");
+  const child = spawn("script", ["-qec", command, "/dev/null"], {
+    cwd: REPO,
+    env: { ...process.env, RBC_PORT: "", NO_COLOR: "1" },
+    stdio: ["pipe", "pipe", "pipe"],
+  });
+  let screen = "";
+  let typed = false;
+  const onData = (d: Buffer) => {
+    screen += d.toString();
+    if (!typed && prompt.test(screen)) {
+      typed = true;
+      child.stdin.write(keys);
+    }
+  };
+  child.stdout.on("data", onData);
+  child.stderr.on("data", onData);
+  const timer = setTimeout(() => child.kill("SIGKILL"), 15_000);
+  return new Promise<{ code: number | null; screen: string }>((resolve) =>
+    child.on("close", (code) => {
+      clearTimeout(timer);
+      resolve({ code, screen });
+    }),
+  );
 }
 
 describe("NodeSerialTransport ↔ rbc sim over a PTY pair", () => {
@@ -102,8 +138,85 @@ describe("NodeSerialTransport ↔ rbc sim over a PTY pair", () => {
       const silent = await startCli(["info", "--port", lonely.clientPath]).done;
       expect(silent.code).toBe(1);
       expect(silent.stderr).toContain("no robot answered");
+      expect(silent.stderr).toContain(
+        "or the robot is busy playing a motion or a sound: wait until it ends and try again.",
+      );
     } finally {
       await lonely.close();
+    }
+  });
+
+  it.skipIf(!HAS_SCRIPT)(
+    "Ctrl-C at the upload's y/N prompt exits 130 like any interrupt, and nothing is sent",
+    { timeout: 15_000 },
+    async () => {
+      const { client } = await connect();
+      const free = await client.readAvailableMemory("motion");
+      await client.close(); // the port is rbc's now
+      const upload = join(FIXTURES, "rbm/Hi.rbm");
+      const result = await runOnTerminal(
+        ["upload", upload, "--port", rig!.pty.clientPath],
+        /\[y\/N\] /,
+        "\x03",
+      );
+      expect(result.code, result.screen).toBe(130);
+      expect(result.screen).toContain("rbc: interrupted. Nothing was sent.");
+      const again = await connect();
+      expect(await again.client.readAvailableMemory("motion")).toBe(free);
+    },
+  );
+});
+
+describe("Ctrl-C during a zero write (rbc sim --latency-ms 250)", () => {
+  let rig: Rig | undefined;
+  let dir: string;
+
+  beforeAll(async () => {
+    rig = await startSim(["--latency-ms", "250", "--quiet"]);
+    dir = await mkdtemp(join(tmpdir(), "rbc-zeros-"));
+  }, 15_000);
+  afterEach(killAll);
+  afterAll(async () => {
+    await stopSim(rig);
+    await killAll();
+    await rm(dir, { recursive: true, force: true });
+  });
+
+  it("lets the write and its check finish, says what the robot holds, then exits 130", {
+    timeout: 20_000,
+  }, async () => {
+    const write = startCli([
+      "zeros",
+      "write",
+      STANDARD_ZEROS.join(","),
+      "--port",
+      rig!.pty.clientPath,
+      "--backup-dir",
+      dir,
+      "--json",
+    ]);
+    // The 0x0E write goes out right after the backup is saved; its echo and the read-back take 500 ms here.
+    await write.waitFor("stderr", /Backed up the current zeros/);
+    write.child.kill("SIGINT");
+    const result = await write.done;
+    expect(result.code, result.stderr).toBe(130);
+    expect(result.stderr).toContain("finishing the zero write");
+    expect(result.stderr).toContain("interrupted after the write finished: the robot holds the new zeros");
+    const [backup] = await readdir(dir);
+    expect(JSON.parse(result.stdout)).toMatchObject({
+      ok: false,
+      error: { code: "interrupted" },
+      previous: [...FACTORY_ZEROS],
+      readBack: [...STANDARD_ZEROS],
+      backupFile: join(dir, backup!),
+      changed: true,
+    });
+    const client = new RbcClient(new NodeSerialTransport(rig!.pty.clientPath));
+    try {
+      await client.connect();
+      expect(await client.readZeros()).toEqual([...STANDARD_ZEROS]);
+    } finally {
+      await client.close();
     }
   });
 });

@@ -1,14 +1,19 @@
 import { readdir, readFile } from "node:fs/promises";
 import { join } from "node:path";
+import { PassThrough } from "node:stream";
 import { describe, expect, it } from "vitest";
 import { splitCommand, wantsHelp } from "../../src/cli/args.ts";
+import { Cleanups } from "../../src/cli/cleanups.ts";
+import type { RunEnv } from "../../src/cli/command.ts";
 import { parseZeroList } from "../../src/cli/commands/zeros.ts";
-import { UsageError } from "../../src/cli/errors.ts";
+import { type ConfirmAnswer, confirm } from "../../src/cli/confirm.ts";
+import { errorLine, UsageError } from "../../src/cli/errors.ts";
 import { Output } from "../../src/cli/output.ts";
 import { ProgressBar } from "../../src/cli/progress.ts";
 import { applyFault, GARBAGE } from "../../src/cli/sim-faults.ts";
 import { SimLink } from "../../src/cli/sim-link.ts";
 import { SimTrace, type SimTraceLine } from "../../src/cli/sim-trace.ts";
+import { RbcError } from "../../src/device/errors.ts";
 import { encodeDownloadStart, fromHex, toHex } from "../../src/protocol/index.ts";
 import { VirtualClock } from "../../src/shared/clock.ts";
 import { SimulatedRbc } from "../../src/sim/index.ts";
@@ -37,6 +42,139 @@ describe("command line parsing", () => {
     expect(parseZeroList(["125", "202,", "162"])).toEqual([125, 202, 162]);
     expect(() => parseZeroList(["125,x"])).toThrow(UsageError);
     expect(() => parseZeroList([])).toThrow(UsageError);
+  });
+});
+
+/** An Output that collects what it writes. */
+function collectingOutput(json: boolean) {
+  const text = { stdout: "", stderr: "" };
+  const stdout = new PassThrough();
+  const stderr = new PassThrough();
+  stdout.on("data", (d: Buffer) => {
+    text.stdout += d.toString();
+  });
+  stderr.on("data", (d: Buffer) => {
+    text.stderr += d.toString();
+  });
+  return { out: new Output(json, { stdout, stderr }), text };
+}
+
+describe("output", () => {
+  it("--json: one pretty document, but one compact line for a streaming command", async () => {
+    const plain = collectingOutput(true);
+    plain.out.result({ ok: false, error: { code: "no-robot" } });
+    const stream = collectingOutput(true);
+    stream.out.streaming();
+    stream.out.jsonLine({ ms: 0, distanceCm: 10 });
+    stream.out.result({ ok: false, error: { code: "timeout" } });
+    await new Promise((r) => setImmediate(r));
+    expect(plain.text.stdout.trim().split("\n").length).toBeGreaterThan(1);
+    const lines = stream.text.stdout.trim().split("\n");
+    expect(lines.map((l) => JSON.parse(l))).toEqual([
+      { ms: 0, distanceCm: 10 },
+      { ok: false, error: { code: "timeout" } },
+    ]);
+  });
+
+  it("writes nothing more to a stream whose reader went away", async () => {
+    const { out, text } = collectingOutput(false);
+    const told: string[] = [];
+    out.onBroken((which) => told.push(which));
+    out.line("one");
+    out.markBroken("stdout");
+    out.markBroken("stdout");
+    out.line("two");
+    out.note("still on stderr");
+    await new Promise((r) => setImmediate(r));
+    expect(text.stdout).toBe("one\n");
+    expect(text.stderr).toBe("still on stderr\n");
+    expect(told).toEqual(["stdout"]);
+  });
+
+  it("adds the busy-robot case to the connect failure 'no robot answered'", () => {
+    const line = errorLine(
+      new RbcError("no-robot", "The port opened but no robot answered. Check that the robot is switched on."),
+    );
+    expect(line).toBe(
+      "The port opened but no robot answered. Check that the robot is switched on; or the robot is busy playing a motion or a sound: wait until it ends and try again.",
+    );
+    expect(errorLine(new RbcError("timeout", "No reply."))).toBe("No reply.");
+  });
+});
+
+describe("cleanups", () => {
+  it("run once, in reverse order, however often and concurrently they are asked for", async () => {
+    const cleanups = new Cleanups(1000);
+    const ran: string[] = [];
+    cleanups.add(async () => {
+      await new Promise((r) => setTimeout(r, 10));
+      ran.push("port");
+    });
+    cleanups.add(() => {
+      ran.push("pty");
+    });
+    const first = cleanups.run();
+    const second = cleanups.run();
+    expect(second).toBe(first);
+    await Promise.all([first, second, cleanups.run()]);
+    expect(ran).toEqual(["pty", "port"]);
+    cleanups.add(() => {
+      ran.push("late");
+    });
+    await cleanups.run();
+    expect(ran).toEqual(["pty", "port", "late"]);
+  });
+
+  it("a cleanup that hangs or fails does not stop the others", async () => {
+    const cleanups = new Cleanups(20);
+    const ran: string[] = [];
+    cleanups.add(() => {
+      ran.push("first");
+    });
+    cleanups.add(() => new Promise<void>(() => {}));
+    cleanups.add(() => {
+      throw new Error("boom");
+    });
+    await cleanups.run();
+    expect(ran).toEqual(["first"]);
+  });
+});
+
+describe("y/N confirmation", () => {
+  /** Asks with a fake terminal on stdin and types `keys` once the prompt is shown. */
+  async function ask(keys: string, signal = new AbortController().signal): Promise<ConfirmAnswer> {
+    const stdin = Object.assign(new PassThrough(), { isTTY: true });
+    const { out, text } = collectingOutput(false);
+    const env: RunEnv = {
+      argv: [],
+      signal,
+      onCleanup: () => {},
+      out,
+      setExitNote: () => {},
+      stdin: stdin as unknown as NodeJS.ReadStream,
+      cwd: REPO,
+      env: {},
+    };
+    const answer = confirm(env, "Upload Hi.rbm?");
+    await new Promise((r) => setImmediate(r));
+    if (keys) stdin.write(keys);
+    const result = await answer;
+    expect(text.stderr).toContain("Upload Hi.rbm? [y/N] ");
+    return result;
+  }
+
+  it("y is yes, anything else no, Ctrl-C (a key in raw mode) an interrupt", async () => {
+    expect(await ask("y\r")).toBe("yes");
+    expect(await ask("\r")).toBe("no");
+    expect(await ask("nope\r")).toBe("no");
+    expect(await ask("\x04")).toBe("no"); // Ctrl-D: end of input
+    expect(await ask("\x03")).toBe("interrupted");
+  });
+
+  it("a SIGINT while the prompt waits is an interrupt too", async () => {
+    const controller = new AbortController();
+    setTimeout(() => controller.abort(), 20);
+    expect(await ask("", controller.signal)).toBe("interrupted");
   });
 });
 

@@ -30,6 +30,7 @@ the trace lines are JSON objects (one per line, on stderr). To keep a trace: rbc
     const target = findCommand(name);
     if (!target || target.name === "log") throw new UsageError(`Unknown command "${name}" to log.`, "log");
     if (target.name === "sim") throw new UsageError("rbc sim prints its own packet trace.", "log");
+    if (target.streams) env.out.streaming();
     return target.run({ ...env, argv: [...rest, ...(rest.includes("--log") ? [] : ["--log"])] });
   },
 };

@@ -37,8 +37,9 @@ After it is switched on, the RBC ignores every motion until 7 (basic posture) ha
 when that happens. The demo robot is switched on afresh by every rbc command, so put 7 first there:
 \`rbc run 7 4 --demo\`.
 
-Ctrl-C stops waiting (exit code 130); the robot finishes the motion by itself. \`rbc run 7\` ends a
-playing motion at the end of its current scene.`,
+Ctrl-C in the \`rbc run\` that started a motion stops waiting only (exit code 130): the robot plays the
+motion to its end. Wait until it ends before the next rbc command: while a motion or a sound plays the RBC
+answers nothing, so a new rbc cannot connect ("no robot answered").`,
   options: [],
   examples: [
     "rbc run 7 --port /dev/ttyUSB0",
@@ -63,6 +64,17 @@ playing motion at the end of its current scene.`,
     const results: Array<{ motion: number; name: string; elapsedMs: number }> = [];
     for (const motion of motions) {
       const name = motionName(motion);
+      if (results.length > 0) await env.out.settle();
+      if (env.signal.aborted) {
+        // Interrupted between two motions (or stdout was closed): do not start the next one.
+        env.out.note(`rbc: stopped before motion ${name}; it was not started.`);
+        env.out.result({
+          ok: false,
+          completed: results,
+          error: { code: "interrupted", message: "Interrupted." },
+        });
+        return EXIT.interrupted;
+      }
       env.out.line(`Running ${name}…`);
       const started = performance.now();
       try {
@@ -70,7 +82,7 @@ playing motion at the end of its current scene.`,
       } catch (e) {
         if (e instanceof RbcCancelledError && env.signal.aborted) {
           env.out.note(
-            `rbc: stopped waiting for motion ${name}; the robot finishes it by itself${motion === BASIC_POSTURE_MOTION ? "" : " (`rbc run 7` ends it at the end of the current scene)"}.`,
+            `rbc: stopped waiting for motion ${name}; the robot plays it to its end. Wait until it ends before the next rbc command (the robot answers nothing while it plays).`,
           );
           env.out.result({
             ok: false,

@@ -28,13 +28,15 @@ export const sensorsCommand: CommandDef = {
   description: `
 Reads the distance sensor (cm, 10-50; 10 means nothing seen or no sensor) and the accelerometer (X, Y, Z,
 signed) every --interval-ms and prints one line per reading, until Ctrl-C (or --count readings). With
---json each reading is one JSON object per line. Ctrl-C is the normal way to end it: exit code 0.`,
+--json each reading is one JSON object per line, and a failure one last line {"ok":false,"error":{…}}.
+Ctrl-C is the normal way to end it: exit code 0.`,
   options: [
     ["--interval-ms MS", "Time between readings (default 200, at least 20)."],
     ["--count N", "Stop after N readings (default: until Ctrl-C)."],
   ],
   examples: ["rbc sensors --demo", "rbc sensors --port /dev/ttyUSB0 --interval-ms 500 --json"],
   talksToRobot: true,
+  streams: true,
   async run(env) {
     const { values, positionals } = parseCommand("sensors", env.argv, OPTIONS);
     noExtraArguments("sensors", positionals, 0);

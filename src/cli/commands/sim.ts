@@ -54,6 +54,7 @@ realistic speed. --fault KIND disturbs the replies (every one, or every --fault-
     "rbc sim --pty --fault garbage --fault-every 3",
   ],
   talksToRobot: false,
+  streams: true,
   async run(env) {
     const { values, positionals } = parseCommand("sim", env.argv, OPTIONS);
     noExtraArguments("sim", positionals, 0);

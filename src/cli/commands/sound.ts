@@ -26,7 +26,9 @@ length, 0.3 to 5.9 s). The RBC handles nothing else while a sound plays. Ctrl-C 
       await robot.client.runSound(sound, { signal: env.signal });
     } catch (e) {
       if (e instanceof RbcCancelledError && env.signal.aborted) {
-        env.out.note("rbc: stopped waiting; the robot plays the sound to the end.");
+        env.out.note(
+          "rbc: stopped waiting; the robot plays the sound to the end. Wait until it ends before the next rbc command (the robot answers nothing while it plays).",
+        );
         env.out.result({ ok: false, sound, error: { code: "interrupted", message: "Interrupted." } });
         return EXIT.interrupted;
       }

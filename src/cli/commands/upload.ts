@@ -130,9 +130,13 @@ many bytes were acknowledged and what the robot's memory holds, and exits with c
       env.out.note(HOLD_ADVICE);
       if (values.reset)
         env.out.note(`--reset will first forget every downloaded ${prepared.area} on the robot.`);
-      if (!values.yes && !(await confirm(env, `Upload ${basename(file)} to the robot on ${robot.where}?`))) {
-        throw new CliError("not-confirmed", "Upload not confirmed; nothing was sent.");
+      const answer = values.yes
+        ? "yes"
+        : await confirm(env, `Upload ${basename(file)} to the robot on ${robot.where}?`);
+      if (answer === "interrupted") {
+        throw new CliError("interrupted", "Nothing was sent.", EXIT.interrupted);
       }
+      if (answer === "no") throw new CliError("not-confirmed", "Upload not confirmed; nothing was sent.");
     }
     if (env.signal.aborted) throw new CliError("interrupted", "Nothing was sent.", EXIT.interrupted);
 

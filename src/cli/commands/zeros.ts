@@ -6,7 +6,7 @@ import { formatFirmware } from "../../shared/format.ts";
 import { type GlobalValues, noExtraArguments, parseCommand } from "../args.ts";
 import type { CommandDef, RunEnv } from "../command.ts";
 import { connectRobot, type Robot } from "../connect.ts";
-import { CliError, EXIT, UsageError } from "../errors.ts";
+import { CliError, EXIT, errorCode, errorLine, UsageError } from "../errors.ts";
 import { readBackupFile, refuseExisting, writeAutomaticBackup, writeBackupFile } from "../zeros-files.ts";
 
 const OPTIONS = {
@@ -44,29 +44,71 @@ async function identify(robot: Robot) {
   return { serialNumber, firmware: formatFirmware(robot.identity.firmware), zeros };
 }
 
-/** Backup first, then write and verify (shared by `write` and `restore`). */
+/** Stops before anything is written when Ctrl-C came while reading or backing up. */
+function stopIfInterrupted(env: RunEnv, backupFile?: string): void {
+  if (!env.signal.aborted) return;
+  throw new CliError(
+    "interrupted",
+    `Nothing was written to the robot${backupFile ? ` (the backup ${backupFile} was saved)` : ""}.`,
+    EXIT.interrupted,
+  );
+}
+
+/** How to find out what the robot holds after a write that may or may not have happened. */
+function checkAdvice(backupFile: string): string {
+  return `Check with \`rbc zeros read\`; the previous zeros are saved in ${backupFile} (to put them back: rbc zeros restore ${backupFile}).`;
+}
+
+/**
+ * Backup first, then write and verify (shared by `write` and `restore`). The write and its verification take
+ * well under a second, so Ctrl-C during them lets them finish (the robot's zeros are then known) and the
+ * command exits 130 afterwards; Ctrl-C before the write stops without writing.
+ */
 async function backupAndWrite(
   env: RunEnv,
   robot: Robot,
   values: { "backup-dir"?: string },
   target: readonly number[],
   current: { serialNumber: string; firmware: string; zeros: number[] },
-): Promise<{ backupFile: string | undefined; result: ZeroWriteResult | undefined }> {
+): Promise<{ backupFile: string | undefined; result: ZeroWriteResult | undefined; interrupted: boolean }> {
+  stopIfInterrupted(env);
   const changes = diffZeros(current.zeros, target);
   if (changes.length === 0) {
     env.out.line(`The robot already holds these zeros (${target.join(",")}); nothing was written.`);
-    return { backupFile: undefined, result: undefined };
+    return { backupFile: undefined, result: undefined, interrupted: false };
   }
   const backupFile = await writeAutomaticBackup(values["backup-dir"] ?? env.cwd, current);
   env.out.note(
     `Backed up the current zeros to ${backupFile} (restore with: rbc zeros restore ${backupFile}).`,
   );
+  stopIfInterrupted(env, backupFile);
   env.out.line(
     `Changing ${changes.length} servo${changes.length > 1 ? "s" : ""}: ${changes.map((c) => `${c.id}: ${c.from} → ${c.to}`).join(", ")}`,
   );
-  const result = await robot.client.writeZeros(target);
+  const onAbort = () =>
+    env.out.note("rbc: finishing the zero write and its check (under a second), then stopping…");
+  env.signal.addEventListener("abort", onAbort, { once: true });
+  // If rbc has to exit before the write has finished (a second Ctrl-C), the robot's zeros are unknown.
+  env.setExitNote(`The zeros may have been written. ${checkAdvice(backupFile)}`);
+  let result: ZeroWriteResult;
+  try {
+    result = await robot.client.writeZeros(target);
+  } catch (e) {
+    throw new CliError(errorCode(e), `${errorLine(e)} ${checkAdvice(backupFile)}`, EXIT.failed, {
+      backupFile,
+    });
+  } finally {
+    env.signal.removeEventListener("abort", onAbort);
+    env.setExitNote(undefined);
+  }
   env.out.line(`Written and verified: the robot reads back ${result.readBack.join(",")}.`);
-  return { backupFile, result };
+  const interrupted = env.signal.aborted;
+  if (interrupted) {
+    env.out.note(
+      `rbc: interrupted after the write finished: the robot holds the new zeros (verified). The previous ones are in ${backupFile}.`,
+    );
+  }
+  return { backupFile, result, interrupted };
 }
 
 export const zerosCommand: CommandDef = {
@@ -87,7 +129,10 @@ shifted by them, so wrong values make the robot stand crooked.
   backup [FILE]    Saves the current values to FILE (default rbc-zeros-<serial>-<date>.json), in the same
                    format as the panel's backups.
   restore FILE     Writes the values of a backup file (checked first; a warning if it was saved from
-                   another robot), with the same automatic backup and verification as write.`,
+                   another robot), with the same automatic backup and verification as write.
+
+Ctrl-C during write or restore: before the write starts nothing is written; once it has started (it takes
+under a second) rbc lets the write and its check finish, says what the robot holds, then exits with 130.`,
   options: [
     ["--backup-dir DIR", "Where write and restore save the automatic backup (default: the current folder)."],
     ["--force", "Let backup replace an existing FILE."],
@@ -122,6 +167,15 @@ shifted by them, so wrong values make the robot stand crooked.
   },
 };
 
+/** Leads the `--json` result when Ctrl-C came during the write, which was allowed to finish. */
+const INTERRUPTED_AFTER_WRITE = {
+  ok: false,
+  error: {
+    code: "interrupted",
+    message: "Interrupted after the write finished; the new zeros are verified.",
+  },
+} as const;
+
 type Values = GlobalValues & { "backup-dir"?: string; force?: boolean };
 
 async function read(env: RunEnv, values: Values, args: string[]): Promise<number> {
@@ -144,17 +198,19 @@ async function write(env: RunEnv, values: Values, args: string[]): Promise<numbe
       `Not written: ${problems.map((p) => p.message).join(" ")} Nothing was sent to the robot.`,
     );
   }
-  const robot = await connectRobot("zeros", values, env);
+  // Ctrl-C must not close the port in the middle of the write: backupAndWrite handles it.
+  const robot = await connectRobot("zeros", values, env, { handlesInterrupt: true });
   const current = await identify(robot);
-  const { backupFile, result } = await backupAndWrite(env, robot, values, target, current);
+  const { backupFile, result, interrupted } = await backupAndWrite(env, robot, values, target, current);
   env.out.result({
+    ...(interrupted ? INTERRUPTED_AFTER_WRITE : {}),
     previous: current.zeros,
     written: target,
     readBack: result?.readBack ?? current.zeros,
     backupFile: backupFile ?? null,
     changed: result !== undefined,
   });
-  return EXIT.ok;
+  return interrupted ? EXIT.interrupted : EXIT.ok;
 }
 
 async function backup(env: RunEnv, values: Values, args: string[]): Promise<number> {
@@ -183,13 +239,15 @@ async function restore(env: RunEnv, values: Values, args: string[]): Promise<num
   const saved = await readBackupFile(file);
   if (saved.zeros.length !== ZERO_COUNT)
     throw new CliError("backup-wrong-count", `${file} does not hold 16 values.`);
-  const robot = await connectRobot("zeros", values, env);
+  // Ctrl-C must not close the port in the middle of the write: backupAndWrite handles it.
+  const robot = await connectRobot("zeros", values, env, { handlesInterrupt: true });
   const current = await identify(robot);
   const warning = serialMismatchWarning(saved, current.serialNumber);
   if (warning) env.out.note(`Warning: ${warning}`);
   env.out.line(`Restoring ${file} (saved ${saved.savedAt} from robot ${saved.serialNumber || "(unknown)"}).`);
-  const { backupFile, result } = await backupAndWrite(env, robot, values, saved.zeros, current);
+  const { backupFile, result, interrupted } = await backupAndWrite(env, robot, values, saved.zeros, current);
   env.out.result({
+    ...(interrupted ? INTERRUPTED_AFTER_WRITE : {}),
     file,
     previous: current.zeros,
     written: saved.zeros,
@@ -198,5 +256,5 @@ async function restore(env: RunEnv, values: Values, args: string[]): Promise<num
     changed: result !== undefined,
     warning: warning ?? null,
   });
-  return EXIT.ok;
+  return interrupted ? EXIT.interrupted : EXIT.ok;
 }
