@@ -1,4 +1,5 @@
 import { SerialPort } from "serialport";
+import { rbcSerialPortOptions } from "../link/node-serial-transport.ts";
 import { SimulatedRbc } from "../sim/simulated-rbc.ts";
 import { CliError } from "./errors.ts";
 import type { Output } from "./output.ts";
@@ -20,24 +21,10 @@ export interface SimServerOptions extends SimLinkOptions {
   onReady(sim: SimulatedRbc): void;
 }
 
-/**
- * Opens the device the way NodeSerialTransport opens a robot's port (it exposes no shared options): 115200 8N1,
- * no flow control. Without `rtscts`/`xon`/`xoff` off, a device left with flow control on by an earlier program
- * would hold back or swallow bytes (0x11 and 0x13 are XON/XOFF).
- */
+/** Opens the device with the same options NodeSerialTransport uses for a robot's port. */
 function openPort(path: string): Promise<SerialPort> {
   return new Promise((resolve, reject) => {
-    const port = new SerialPort({
-      path,
-      baudRate: 115200,
-      dataBits: 8,
-      stopBits: 1,
-      parity: "none",
-      rtscts: false,
-      xon: false,
-      xoff: false,
-      autoOpen: false,
-    });
+    const port = new SerialPort(rbcSerialPortOptions(path));
     port.open((err) =>
       err
         ? reject(new CliError("open-failed", `Cannot open ${path} for the simulator: ${err.message}`))

@@ -18,6 +18,25 @@ export interface SerialPortListing {
 
 type CloseError = (Error & { disconnected?: boolean }) | null;
 
+/**
+ * `serialport` options for the RBC link (PROTOCOL.md §1): 115200 8N1 and no flow control of either kind. With
+ * `rtscts` or `xon`/`xoff` left on by an earlier program, a device would hold back or swallow bytes (0x11 and
+ * 0x13 are XON/XOFF).
+ */
+export function rbcSerialPortOptions(path: string, baudRate = 115200) {
+  return {
+    path,
+    baudRate,
+    dataBits: 8,
+    stopBits: 1,
+    parity: "none",
+    rtscts: false,
+    xon: false,
+    xoff: false,
+    autoOpen: false,
+  } as const;
+}
+
 export class NodeSerialTransport extends TransportBase implements Transport {
   private port: SerialPort | undefined;
 
@@ -44,17 +63,7 @@ export class NodeSerialTransport extends TransportBase implements Transport {
       return Promise.reject(new LinkError("open-failed", "The port is already open."));
     }
     this.setStatus({ status: "opening" });
-    const port = new SerialPort({
-      path: this.path,
-      baudRate: this.options.baudRate ?? 115200,
-      dataBits: 8,
-      stopBits: 1,
-      parity: "none",
-      rtscts: false,
-      xon: false,
-      xoff: false,
-      autoOpen: false,
-    });
+    const port = new SerialPort(rbcSerialPortOptions(this.path, this.options.baudRate));
     return new Promise<void>((resolve, reject) => {
       port.open((err) => {
         if (err) {
