@@ -156,7 +156,7 @@ describe("motions view", () => {
     await card.waitFor();
     const issues = await page.getByTestId("rbm-issues").textContent().then(squash);
     expect(issues).toMatch(
-      /Error scene 0: Scene 0 has frames 10 ms apart \(100 ms \/ 10 frames\); the RBC needs at least 20 ms/,
+      /Error Scene 0 has frames 10 ms apart \(100 ms \/ 10 frames\); the RBC needs at least 20 ms/,
     );
     // The file is still shown, so the person can see which scene is wrong.
     expect(await page.getByTestId("scene-section").isVisible()).toBe(true);

@@ -124,10 +124,12 @@ function dropZone(ctx: ViewContext): TemplateResult {
   `;
 }
 
+/** "scene 3, servo 0: " before a message that does not already say where it is. */
 function where(issue: RbmIssue): string {
+  const said = (what: string) => new RegExp(`\\b${what}\\b`, "i").test(issue.message);
   const parts = [
-    issue.scene === undefined ? undefined : `scene ${issue.scene}`,
-    issue.servo === undefined ? undefined : `servo ${issue.servo}`,
+    issue.scene === undefined || said(`scene ${issue.scene}`) ? undefined : `scene ${issue.scene}`,
+    issue.servo === undefined || said(`servo ${issue.servo}`) ? undefined : `servo ${issue.servo}`,
   ].filter((p) => p !== undefined);
   return parts.length > 0 ? `${parts.join(", ")}: ` : "";
 }
