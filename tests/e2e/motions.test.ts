@@ -257,6 +257,27 @@ describe("motions view", () => {
     await context.close();
   });
 
+  it("says at once that an empty download slot holds no motion (the robot reports error 3)", async () => {
+    const { page, context } = await app.newPage();
+    await openMotions(page);
+    await page.locator('[data-motion="7"]').click();
+    await page.locator("#confirm-move").click();
+    await page.getByText("Motion 7 (Basic posture) finished. The robot now accepts every motion.").waitFor({
+      timeout: 6000,
+    });
+    await page.getByText(/Other download slots/).click();
+    const started = Date.now();
+    await page.locator('[data-slot-motion="12"]').click();
+    await page
+      .getByText(/download slot 1 holds no motion \(the robot reports error 3\)/)
+      .first()
+      .waitFor({ timeout: 5000 });
+    // Noticed within about a second, not after the 60 s an unknown motion may take.
+    expect(Date.now() - started).toBeLessThan(5000);
+    expect(await page.evaluate(() => window.__rbcTest?.sim.playingMotion)).toBeUndefined();
+    await context.close();
+  });
+
   it("plays a sound and keeps other robot actions disabled while it plays", async () => {
     const { page, context } = await app.newPage();
     await openMotions(page);

@@ -110,7 +110,14 @@ function otherSlots(ctx: ViewContext, s: AppState, busy: boolean): TemplateResul
       <div class="slot-grid">
         ${others.map((n) => {
           const offer = offerFor(s, n);
-          return html`<button type="button" class="btn slot-btn num" ?disabled=${busy} @click=${() => requestRun(ctx, n)}>
+          return html`<button
+            type="button"
+            class="btn slot-btn num"
+            data-slot-motion=${n}
+            aria-label=${`Run motion ${n}${offer?.slot === undefined ? "" : ` (download slot ${offer.slot})`}`}
+            ?disabled=${busy}
+            @click=${() => requestRun(ctx, n)}
+          >
             ${n} <span class="muted small">${offer?.slot === undefined ? "" : `slot ${offer.slot}`}</span>
           </button>`;
         })}
