@@ -19,6 +19,23 @@ export const realClock: Clock = {
   clearTimeout: (id) => globalThis.clearTimeout(id),
 };
 
+/**
+ * Real time running `scale` times faster: `now()` advances `scale` ms per real millisecond and a timer of `ms`
+ * fires after `ms / scale` real milliseconds. Tests and the demo robot share one such clock between the
+ * simulator and the client, so every duration and timeout keeps its proportions (durations read off it are
+ * robot time), while a 1.8 s motion takes 18 real ms at scale 100.
+ */
+export function scaledClock(scale: number, base: Clock = realClock): Clock {
+  if (!(scale > 0) || !Number.isFinite(scale)) throw new RangeError(`clock scale must be > 0, got ${scale}`);
+  if (scale === 1) return base;
+  const origin = base.now();
+  return {
+    now: () => origin + (base.now() - origin) * scale,
+    setTimeout: (fn, ms) => base.setTimeout(fn, Math.max(0, ms) / scale),
+    clearTimeout: (id) => base.clearTimeout(id),
+  };
+}
+
 interface Timer {
   id: TimerId;
   due: number;
