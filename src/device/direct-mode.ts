@@ -1,4 +1,4 @@
-import { HUNO_BASIC_POSTURE, safeRange } from "../protocol/servo-limits.ts";
+import { HUNO_BASIC_POSTURE, HUNO_SERVO_IDS, safeRange } from "../protocol/servo-limits.ts";
 import {
   WCK_MAX_POSITION,
   wckBrakeAll,
@@ -18,18 +18,22 @@ export interface DirectModeHost {
   exclusive<T>(fn: () => Promise<T>): Promise<T>;
 }
 
-/** Servo ids the panel drives on a HUNO. */
-export const SERVO_IDS: readonly number[] = Array.from({ length: 16 }, (_, i) => i);
+/** Servo ids the panel drives on a HUNO (the protocol layer's HUNO_SERVO_IDS). */
+export const SERVO_IDS: readonly number[] = HUNO_SERVO_IDS;
 
 /**
  * Live servo control over the RBC's direct mode (PROTOCOL.md §5). Positions are kept inside each servo's
  * safe range; the panel never changes a servo's id or baud rate.
  */
 export class DirectMode {
-  constructor(
-    private readonly host: DirectModeHost,
-    private readonly raw: RawChannel,
-  ) {}
+  // Private fields (not TypeScript `private`): the host is the client's conversation, which must stay out of reach.
+  readonly #host: DirectModeHost;
+  readonly #raw: RawChannel;
+
+  constructor(host: DirectModeHost, raw: RawChannel) {
+    this.#host = host;
+    this.#raw = raw;
+  }
 
   /** The safe range of servo `id` (PROTOCOL.md §5 for 0-15; other ids get the full 0-254). */
   static safeRange(id: number): { min: number; max: number } {
@@ -73,11 +77,11 @@ export class DirectMode {
 
   /** Brakes every servo (holds position). */
   brakeAll(): Promise<void> {
-    return this.host.exclusive(async () => {
+    return this.#host.exclusive(async () => {
       this.requireDirect();
-      await this.raw.exchange(wckBrakeAll(), {
+      await this.#raw.exchange(wckBrakeAll(), {
         need: 2,
-        timeoutMs: this.host.timeouts.quickMs,
+        timeoutMs: this.#host.timeouts.quickMs,
         note: "brake all",
       });
     });
@@ -93,9 +97,9 @@ export class DirectMode {
         );
       }
     });
-    return this.host.exclusive(async () => {
+    return this.#host.exclusive(async () => {
       this.requireDirect();
-      await this.raw.exchange(wckSyncMove(positions, speed), {
+      await this.#raw.exchange(wckSyncMove(positions, speed), {
         need: 0,
         timeoutMs: 0,
         note: "synchronised move",
@@ -117,9 +121,9 @@ export class DirectMode {
     const silent: number[] = [];
     for (const id of ids) {
       try {
-        await this.raw.exchange(wckPassive(id), {
+        await this.#raw.exchange(wckPassive(id), {
           need: 2,
-          timeoutMs: this.host.timeouts.quickMs,
+          timeoutMs: this.#host.timeouts.quickMs,
           note: `servo ${id} limp`,
         });
         confirmed.push(id);
@@ -140,9 +144,13 @@ export class DirectMode {
         new RbcInvalidArgumentError(`${e instanceof Error ? e.message : e} Nothing was sent.`),
       );
     }
-    return this.host.exclusive(async () => {
+    return this.#host.exclusive(async () => {
       this.requireDirect();
-      const reply = await this.raw.exchange(packet, { need: 2, timeoutMs: this.host.timeouts.quickMs, note });
+      const reply = await this.#raw.exchange(packet, {
+        need: 2,
+        timeoutMs: this.#host.timeouts.quickMs,
+        note,
+      });
       // Servo replies carry no checksum; a position above 254 can only be noise on the line.
       if (reply[1]! > WCK_MAX_POSITION) {
         throw new RbcBadReplyError(`Servo ${id} answered an impossible position (${reply[1]}); try again.`);
@@ -152,7 +160,7 @@ export class DirectMode {
   }
 
   private requireDirect(): void {
-    if (this.host.mode !== "direct") {
+    if (this.#host.mode !== "direct") {
       throw new RbcError("wrong-mode", "Servo control needs direct mode: press “Start servo control” first.");
     }
   }

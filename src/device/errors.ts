@@ -15,7 +15,9 @@ export type RbcErrorCode =
   | "verify-failed"
   | "upload-failed"
   | "motion-ignored"
-  | "wrong-mode";
+  | "wrong-mode"
+  | "port-unavailable"
+  | "port-busy";
 
 export class RbcError extends Error {
   override name = "RbcError";
@@ -53,6 +55,22 @@ export class RbcNotConnectedError extends RbcError {
   override name = "RbcNotConnectedError";
   constructor() {
     super("not-connected", "No robot is connected. Connect the robot (or the demo robot) first.");
+  }
+}
+
+/**
+ * The serial port could not be opened or used (it vanished, another program holds it, permissions). The
+ * link layer's `LinkError` comes out of `RbcClient.connect()` as this, so callers handle one error family;
+ * the original is the `cause`.
+ */
+export class RbcPortError extends RbcError {
+  override name = "RbcPortError";
+  constructor(code: "port-unavailable" | "port-busy", message: string, cause?: unknown) {
+    super(code, message, { cause });
+  }
+
+  static fromLink(e: { code: string; message: string }): RbcPortError {
+    return new RbcPortError(e.code === "port-busy" ? "port-busy" : "port-unavailable", e.message, e);
   }
 }
 

@@ -1,5 +1,19 @@
 export { DirectMode, SERVO_IDS } from "./direct-mode.ts";
 export * from "./errors.ts";
+export {
+  type FileUploadOptions,
+  type FileUploadResult,
+  motionPayload,
+  UPLOAD_NOTICES,
+  type UploadPhase,
+} from "./motion-upload.ts";
 export { RbcClient, type RbcClientOptions, type RbcTimeouts } from "./rbc-client.ts";
 export * from "./types.ts";
 export { downloadChunk } from "./upload.ts";
+export {
+  type SafeZeroWrite,
+  type SaveZerosBackup,
+  writeZerosWithBackup,
+  type ZeroPolicyOptions,
+  ZeroWriteFailedError,
+} from "./zero-policy.ts";

@@ -1,17 +1,12 @@
 import type { Transport } from "../link/transport.ts";
-import {
-  BASIC_POSTURE_MOTION,
-  BUILT_IN_MOTIONS,
-  downloadSlotOf,
-  errorCodeText,
-  NO_ERROR,
-  SOUND_REPLY_DELAY_MS,
-  soundLengthMs,
-} from "../protocol/catalog.ts";
+import { BASIC_POSTURE_MOTION, downloadSlotOf, errorCodeText, NO_ERROR } from "../protocol/catalog.ts";
 import { COMMANDS, type MemoryArea } from "../protocol/commands.ts";
 import { encodePacket } from "../protocol/packet.ts";
+import type { RbmMotion } from "../protocol/rbm.ts";
 import { EXIT_DIRECT_MODE } from "../protocol/wck.ts";
 import { zeroProblems } from "../protocol/zeros.ts";
+import type { Clock } from "../shared/clock.ts";
+import type { Emitter } from "../shared/emitter.ts";
 import { DirectMode, SERVO_IDS } from "./direct-mode.ts";
 import {
   RbcBadReplyError,
@@ -23,9 +18,27 @@ import {
   RbcTimeoutError,
   RbcVerifyError,
 } from "./errors.ts";
-import { type RbcClientOptions, RbcConnection, SUBSCRIPTIONS } from "./rbc-connection.ts";
-import type { ClientState, SubscriptionKind, UploadOptions, UploadResult, ZeroWriteResult } from "./types.ts";
-import { uploadFile } from "./upload.ts";
+import {
+  type FileUploadOptions,
+  type FileUploadResult,
+  motionPayload,
+  type UploadHost,
+  uploadFileTo,
+} from "./motion-upload.ts";
+import { type RbcClientOptions, RbcConnection, type RbcTimeouts, SUBSCRIPTIONS } from "./rbc-connection.ts";
+import type {
+  ClientMode,
+  ClientState,
+  DeviceIdentity,
+  LogEntry,
+  RbcEvent,
+  SubscriptionKind,
+  UploadOptions,
+  UploadResult,
+  ZeroWriteResult,
+} from "./types.ts";
+import { type UploadIo, uploadFile } from "./upload.ts";
+import { type SafeZeroWrite, writeZerosWithBackup, type ZeroPolicyOptions } from "./zero-policy.ts";
 
 export type { RbcClientOptions, RbcTimeouts } from "./rbc-connection.ts";
 
@@ -39,62 +52,128 @@ const EMPTY_SLOT_ERROR = 3;
 const SCENE_END_MS = 1000;
 
 function postureDurationMs(): number {
-  return BUILT_IN_MOTIONS.find((m) => m.number === BASIC_POSTURE_MOTION)!.durationMs;
+  return COMMANDS.runMotion.expectedMs?.(BASIC_POSTURE_MOTION) ?? 0;
+}
+
+/**
+ * A plain array of what `zeros` holds at indexes 0-15, each index read exactly once (holes read as undefined,
+ * which the zero rules refuse). A table of another length keeps its length so that the rules report it.
+ */
+function copyZeroTable(zeros: readonly number[]): number[] {
+  const length = Array.isArray(zeros) ? zeros.length : 0;
+  const copy: number[] = [];
+  for (let i = 0; i < length; i++) copy.push(zeros[i] as number);
+  return copy;
 }
 
 /**
  * The RBC as typed operations (PROTOCOL.md §3-6): reads, zero writes with read-back, motions and sounds that
  * resolve when the robot reports them finished, uploads, event subscriptions, direct servo control and Stop.
- * The conversation underneath (one request at a time, timeouts, retries, events) is `RbcConnection`'s.
+ * The conversation underneath (one request at a time, timeouts, retries, events) is an `RbcConnection` held
+ * in a private field: every request goes through an operation here, which validates what it sends.
  */
-export class RbcClient extends RbcConnection {
+export class RbcClient {
+  readonly #c: RbcConnection;
   /** Servo control; usable after `enterDirectMode()`. */
   readonly servos: DirectMode;
 
   constructor(transport: Transport, options: RbcClientOptions = {}) {
-    super(transport, options);
-    this.servos = new DirectMode(this, this.raw);
+    this.#c = new RbcConnection(transport, options);
+    this.servos = new DirectMode(this.#c, this.#c.raw);
+  }
+
+  // ---- The link ----------------------------------------------------------------------------------------
+
+  get transport(): Transport {
+    return this.#c.transport;
+  }
+
+  get clock(): Clock {
+    return this.#c.clock;
+  }
+
+  get timeouts(): Readonly<RbcTimeouts> {
+    return this.#c.timeouts;
+  }
+
+  /** Every packet and raw chunk in and out, for the packet log. */
+  get log(): Emitter<LogEntry> {
+    return this.#c.log;
+  }
+
+  get stateChanges(): Emitter<ClientState> {
+    return this.#c.stateChanges;
+  }
+
+  /** Unsolicited events of the running subscription (sound level, PF buttons, IR keys). */
+  get events(): Emitter<RbcEvent> {
+    return this.#c.events;
+  }
+
+  get state(): Readonly<ClientState> {
+    return this.#c.state;
+  }
+
+  get mode(): ClientMode {
+    return this.#c.mode;
+  }
+
+  /**
+   * Opens the port (115200 8N1), makes the robot read packets again (abandons a half-done download, leaves
+   * direct mode) and reads the firmware version. Fails with `RbcPortError` when the port cannot be used and
+   * `RbcError("no-robot")` when nothing answers.
+   */
+  connect(): Promise<DeviceIdentity> {
+    return this.#c.connect(async () => {
+      const firmware = await this.#c.request(COMMANDS.readFirmwareVersion, undefined);
+      return { firmware, platform: this.#c.state.platform ?? 0 };
+    });
+  }
+
+  /** Closes the link (ending a download or direct mode first). Pending requests are rejected. */
+  close(): Promise<void> {
+    return this.#c.close();
   }
 
   // ---- Reads -------------------------------------------------------------------------------------------
 
   readFirmwareVersion(): Promise<{ major: number; minor: number }> {
-    return this.command(COMMANDS.readFirmwareVersion, undefined);
+    return this.#c.command(COMMANDS.readFirmwareVersion, undefined);
   }
 
   readSerialNumber(): Promise<string> {
-    return this.command(COMMANDS.readSerialNumber, undefined);
+    return this.#c.command(COMMANDS.readSerialNumber, undefined);
   }
 
   readZeros(): Promise<number[]> {
-    return this.command(COMMANDS.readZeros, undefined);
+    return this.#c.command(COMMANDS.readZeros, undefined);
   }
 
   readAvailableMemory(area: MemoryArea): Promise<number> {
-    return this.command(COMMANDS.readAvailableMemory, area);
+    return this.#c.command(COMMANDS.readAvailableMemory, area);
   }
 
   async readErrorCode(): Promise<number> {
-    return (await this.command(COMMANDS.readErrorCode, undefined)).code;
+    return (await this.#c.command(COMMANDS.readErrorCode, undefined)).code;
   }
 
   readDistance(): Promise<number> {
-    return this.command(COMMANDS.readDistance, undefined);
+    return this.#c.command(COMMANDS.readDistance, undefined);
   }
 
   readAccelerometer(): Promise<{ x: number; y: number; z: number }> {
-    return this.command(COMMANDS.readAccelerometer, undefined);
+    return this.#c.command(COMMANDS.readAccelerometer, undefined);
   }
 
   /** 0x1E: the reply format is unknown, so its raw content bytes are returned (PROTOCOL.md §3.4). */
   executionStatus(motion: number): Promise<Uint8Array> {
-    return this.command(COMMANDS.executionStatus, motion);
+    return this.#c.command(COMMANDS.executionStatus, motion);
   }
 
   // ---- Writes ------------------------------------------------------------------------------------------
 
   resetMemoryPointer(area: MemoryArea): Promise<number> {
-    return this.command(COMMANDS.resetMemoryPointer, area);
+    return this.#c.command(COMMANDS.resetMemoryPointer, area);
   }
 
   /**
@@ -102,23 +181,23 @@ export class RbcClient extends RbcConnection {
    * table back and verifies it.
    */
   async writeZeros(zeros: readonly number[]): Promise<ZeroWriteResult> {
-    const problems = zeroProblems(zeros);
+    // Copied once into a fresh table, and only the copy is checked and sent: a sparse array, a getter or a
+    // Proxy cannot change a value between the check and the write.
+    const written = copyZeroTable(zeros);
+    const problems = zeroProblems(written);
     if (problems.length > 0) {
       throw new RbcInvalidArgumentError(
         `Not written: ${problems.map((p) => p.message).join(" ")} Nothing was sent to the robot.`,
       );
     }
-    const written = [...zeros];
-    return this.exclusive(async () => {
+    return this.#c.exclusive(async () => {
       let echo: number[];
       try {
-        echo = await this.transactDecoded(COMMANDS.writeZeros, written, 0);
+        echo = await this.#c.request(COMMANDS.writeZeros, written);
       } catch (e) {
         if (!(e instanceof RbcTimeoutError)) throw e;
         // No echo (lost, garbled or late): the table read back tells whether the write happened.
-        const stored = await this.transactDecoded(COMMANDS.readZeros, undefined, this.retries).catch(
-          () => undefined,
-        );
+        const stored = await this.#c.request(COMMANDS.readZeros, undefined).catch(() => undefined);
         if (stored?.every((v, i) => v === written[i])) return { written, readBack: stored };
         if (!stored) {
           throw new RbcError(
@@ -135,7 +214,7 @@ export class RbcClient extends RbcConnection {
           `The robot echoed different zeros (${echo.join(",")}); read them back to check.`,
         );
       }
-      const readBack = await this.transactDecoded(COMMANDS.readZeros, undefined, this.retries);
+      const readBack = await this.#c.request(COMMANDS.readZeros, undefined);
       if (readBack.some((v, i) => v !== written[i])) {
         throw new RbcVerifyError(
           `Zeros were sent, but the robot reads back ${readBack.join(",")} instead of ${written.join(",")}.`,
@@ -158,28 +237,26 @@ export class RbcClient extends RbcConnection {
     if (!Number.isInteger(motion) || motion < 0 || motion > 63) {
       throw new RbcInvalidArgumentError(`Motion number must be 0-63, got ${motion}. Nothing was sent.`);
     }
-    const builtIn = BUILT_IN_MOTIONS.find((m) => m.number === motion);
-    const expectedMs = options.expectedMs ?? builtIn?.durationMs ?? this.timeouts.unknownMotionMs;
-    return this.exclusive(async () => {
-      this.setState({ playing: { motion, startedAt: this.clock.now(), expectedMs } });
-      const watch = this.watchForIgnoredMotion();
+    const expectedMs =
+      options.expectedMs ?? COMMANDS.runMotion.expectedMs?.(motion) ?? this.#c.timeouts.unknownMotionMs;
+    return this.#c.exclusive(async () => {
+      this.#c.setState({ playing: { motion, startedAt: this.#c.clock.now(), expectedMs } });
+      const watch = this.#watchForIgnoredMotion();
       try {
-        const n = await this.transactDecoded(
-          COMMANDS.runMotion,
-          motion,
-          0,
-          expectedMs + this.timeouts.marginMs,
-          { signal: options.signal, accept: (p) => p.contents[0] === motion },
-        );
-        if (motion === BASIC_POSTURE_MOTION) this.setState({ basicPostureConfirmed: true });
+        const n = await this.#c.request(COMMANDS.runMotion, motion, {
+          expectedMs,
+          signal: options.signal,
+          accept: (p) => p.contents[0] === motion,
+        });
+        if (motion === BASIC_POSTURE_MOTION) this.#c.setState({ basicPostureConfirmed: true });
         return n;
       } catch (e) {
         if (watch.code !== undefined || e instanceof RbcTimeoutError)
-          throw this.motionIgnored(motion, watch.code, e);
+          throw this.#motionIgnored(motion, watch.code, e);
         throw e;
       } finally {
         watch.dispose();
-        this.setState({ playing: undefined });
+        this.#c.setState({ playing: undefined });
       }
     });
   }
@@ -189,30 +266,30 @@ export class RbcClient extends RbcConnection {
    * Motion is answered only if the motion was ignored (not yet basic posture after power-up, an empty download
    * slot). The answer ends the wait at once, instead of after the motion's whole expected duration.
    */
-  private watchForIgnoredMotion(): { code: number | undefined; dispose(): void } {
+  #watchForIgnoredMotion(): { code: number | undefined; dispose(): void } {
     const type = COMMANDS.readErrorCode.type;
     let sent = false;
     const watch = {
       code: undefined as number | undefined,
       dispose: () => {
-        this.clock.clearTimeout(timer);
-        this.unsolicited = undefined;
+        this.#c.clock.clearTimeout(timer);
+        this.#c.unsolicited = undefined;
       },
     };
-    const timer = this.clock.setTimeout(() => {
+    const timer = this.#c.clock.setTimeout(() => {
       sent = true;
-      this.writePacket(encodePacket(type, COMMANDS.readErrorCode.request()), type).catch(() => {});
+      this.#c.writePacket(encodePacket(type, COMMANDS.readErrorCode.request()), type).catch(() => {});
     }, IGNORED_MOTION_PROBE_MS);
-    this.unsolicited = (p) => {
+    this.#c.unsolicited = (p) => {
       if (!sent || p.type !== type || p.contents.length !== 2) return;
       watch.code = p.contents[0];
-      this.failPending(new RbcError("motion-ignored", "The robot is not playing the motion."));
+      this.#c.failPending(new RbcError("motion-ignored", "The robot is not playing the motion."));
     };
     return watch;
   }
 
   /** Why Run Motion got no reply, in words (`code`: the robot's error code, if it answered meanwhile). */
-  private motionIgnored(motion: number, code: number | undefined, cause: unknown): RbcError {
+  #motionIgnored(motion: number, code: number | undefined, cause: unknown): RbcError {
     const slot = downloadSlotOf(motion);
     if (slot !== undefined && code === EMPTY_SLOT_ERROR) {
       return new RbcRejectedError(
@@ -220,7 +297,7 @@ export class RbcClient extends RbcConnection {
         code,
       );
     }
-    if (motion !== BASIC_POSTURE_MOTION && !this._state.basicPostureConfirmed) {
+    if (motion !== BASIC_POSTURE_MOTION && !this.#c.state.basicPostureConfirmed) {
       return new RbcError(
         "motion-ignored",
         `The robot did not run motion ${motion}. After it is switched on, the RBC ignores every motion until Basic posture (7) has run once: run motion 7 first.`,
@@ -244,30 +321,30 @@ export class RbcClient extends RbcConnection {
    * posture; this resolves when that has finished too. With nothing playing it simply runs motion 7.
    */
   async stopMotion(): Promise<void> {
-    const playing = this._state.playing;
+    const playing = this.#c.state.playing;
     if (!playing) {
       await this.runMotion(BASIC_POSTURE_MOTION);
       return;
     }
-    this.requirePacketMode(COMMANDS.runMotion.name);
+    this.#c.requirePacketMode(COMMANDS.runMotion.name);
     // Ahead of the queue: the running motion's request is still waiting for its reply.
-    await this.writePacket(
+    await this.#c.writePacket(
       encodePacket(COMMANDS.runMotion.type, COMMANDS.runMotion.request(BASIC_POSTURE_MOTION)),
       COMMANDS.runMotion.type,
     );
-    await this.exclusive(async () => {
-      this.setState({
+    await this.#c.exclusive(async () => {
+      this.#c.setState({
         playing: {
           motion: BASIC_POSTURE_MOTION,
-          startedAt: this.clock.now(),
+          startedAt: this.#c.clock.now(),
           expectedMs: postureDurationMs(),
         },
       });
       try {
-        await this.awaitPostureAfter7({ send: false });
-        this.setState({ basicPostureConfirmed: true });
+        await this.#awaitPostureAfter7({ send: false });
+        this.#c.setState({ basicPostureConfirmed: true });
       } finally {
-        this.setState({ playing: undefined });
+        this.#c.setState({ playing: undefined });
       }
     });
   }
@@ -277,43 +354,71 @@ export class RbcClient extends RbcConnection {
    * posture and answers 7 (the stopped motion's own reply comes first and is not this one). With `send` the
    * 7 is sent here; otherwise it has been sent already, ahead of the queue.
    */
-  private awaitPostureAfter7({ send }: { send: boolean }): Promise<unknown> {
-    return this.transact(
+  #awaitPostureAfter7({ send }: { send: boolean }): Promise<unknown> {
+    return this.#c.transact(
       COMMANDS.runMotion.type,
       COMMANDS.runMotion.request(BASIC_POSTURE_MOTION),
       "Basic posture after a stopped motion",
-      SCENE_END_MS + postureDurationMs() + this.timeouts.marginMs,
+      SCENE_END_MS + postureDurationMs() + this.#c.timeouts.marginMs,
       { accept: (p) => p.contents[0] === BASIC_POSTURE_MOTION, send },
     );
   }
 
   /** Plays sound 1-25 and resolves when the robot reports it finished (200 ms + its length). */
   async runSound(sound: number, options: { signal?: AbortSignal } = {}): Promise<number> {
-    const length = soundLengthMs(sound);
-    if (length === undefined || !Number.isInteger(sound)) {
+    const expectedMs = Number.isInteger(sound) ? COMMANDS.runSound.expectedMs?.(sound) : undefined;
+    if (expectedMs === undefined) {
       throw new RbcInvalidArgumentError(`Sound number must be 1-25, got ${sound}. Nothing was sent.`);
     }
-    const expectedMs = SOUND_REPLY_DELAY_MS + length;
-    return this.exclusive(async () => {
-      this.setState({ sounding: { sound, startedAt: this.clock.now(), expectedMs } });
+    return this.#c.exclusive(async () => {
+      this.#c.setState({ sounding: { sound, startedAt: this.#c.clock.now(), expectedMs } });
       try {
-        return await this.transactDecoded(COMMANDS.runSound, sound, 0, expectedMs + this.timeouts.marginMs, {
-          signal: options.signal,
-        });
+        return await this.#c.request(COMMANDS.runSound, sound, { signal: options.signal });
       } finally {
-        this.setState({ sounding: undefined });
+        this.#c.setState({ sounding: undefined });
       }
     });
   }
 
-  /** Uploads a motion image (type 0x01) chunk by chunk (PROTOCOL.md §6.2). */
+  /**
+   * Uploads a motion file end to end (PROTOCOL.md §6): refuses a file with errors before anything is sent,
+   * builds its image, optionally resets the motion memory first, checks the free memory, downloads the image
+   * chunk by chunk and counts it done only when the robot's free memory dropped by exactly its footprint.
+   */
+  uploadMotion(motion: RbmMotion, options: FileUploadOptions = {}): Promise<FileUploadResult> {
+    const payload = motionPayload(motion);
+    return uploadFileTo(this.#uploadHost(), "motion", payload, options);
+  }
+
+  /** Uploads an action file's bytes as they are (type 0x02), like `uploadMotion` (the format is unverified). */
+  uploadAction(bytes: Uint8Array, options: FileUploadOptions = {}): Promise<FileUploadResult> {
+    return uploadFileTo(this.#uploadHost(), "action", bytes.slice(), options);
+  }
+
+  /**
+   * Writes a zero table under the project's policy: refuses a table the RBC would refuse, backs up the current
+   * zeros through `saveBackup` first, then writes, reads back and verifies (see `writeZerosWithBackup`).
+   */
+  writeZerosWithBackup(target: readonly number[], options: ZeroPolicyOptions): Promise<SafeZeroWrite> {
+    return writeZerosWithBackup(this, target, options);
+  }
+
+  #uploadHost(): UploadHost {
+    return {
+      resetMemoryPointer: (area) => this.resetMemoryPointer(area),
+      upload: (area, bytes, options) =>
+        this.#c.exclusive(() => uploadFile(this.#uploadIo(), area, bytes, options)),
+    };
+  }
+
+  /** Uploads a motion image (type 0x01) chunk by chunk (PROTOCOL.md §6.2); `uploadMotion` builds the image. */
   writeMotion(bytes: Uint8Array, options: UploadOptions = {}): Promise<UploadResult> {
-    return this.exclusive(() => uploadFile(this.uploadIo(), "motion", bytes, options));
+    return this.#c.exclusive(() => uploadFile(this.#uploadIo(), "motion", bytes, options));
   }
 
   /** Uploads an action file's bytes as they are (type 0x02); the action format is unverified. */
   writeAction(bytes: Uint8Array, options: UploadOptions = {}): Promise<UploadResult> {
-    return this.exclusive(() => uploadFile(this.uploadIo(), "action", bytes, options));
+    return this.#c.exclusive(() => uploadFile(this.#uploadIo(), "action", bytes, options));
   }
 
   // ---- Events ------------------------------------------------------------------------------------------
@@ -332,12 +437,12 @@ export class RbcClient extends RbcConnection {
           ? COMMANDS.subscribeButtons.request()
           : COMMANDS.subscribeRemote.request();
     const request = encodePacket(spec.type, contents);
-    return this.exclusive(
+    return this.#c.exclusive(
       async () => {
-        this.requirePacketMode(spec.name);
-        this.subscription = { kind, request };
-        this.setState({ subscription: kind });
-        await this.writePacket(request, spec.type);
+        this.#c.requirePacketMode(spec.name);
+        this.#c.subscription = { kind, request };
+        this.#c.setState({ subscription: kind });
+        await this.#c.writePacket(request, spec.type);
       },
       undefined,
       { rearm: false },
@@ -346,41 +451,43 @@ export class RbcClient extends RbcConnection {
 
   /** Ends the subscription: the RBC stops when the next packet header arrives, so a harmless read is sent. */
   async unsubscribe(): Promise<void> {
-    if (!this.subscription) return;
-    this.subscription = undefined;
-    this.setState({ subscription: undefined });
-    await this.command(COMMANDS.readErrorCode, undefined).catch(() => {});
+    if (!this.#c.subscription) return;
+    this.#c.subscription = undefined;
+    this.#c.setState({ subscription: undefined });
+    await this.#c.command(COMMANDS.readErrorCode, undefined).catch(() => {});
   }
 
   // ---- Direct mode and stop ----------------------------------------------------------------------------
 
   /** Switches the link to the servo bus (0x10). Until `exitDirectMode()`, RBC commands are refused. */
   enterDirectMode(): Promise<void> {
-    return this.exclusive(async () => {
-      if (this.mode === "direct") return;
+    return this.#c.exclusive(async () => {
+      if (this.#c.mode === "direct") return;
       try {
-        await this.transactDecoded(COMMANDS.enterDirectMode, undefined, 0);
+        await this.#c.request(COMMANDS.enterDirectMode, undefined);
       } catch (e) {
         // The RBC may have switched even though its `01` was lost or garbled; it would then relay every later
         // packet to the servo bus. The exit sequence is harmless garbage in packet mode, so send it blindly.
         if (e instanceof RbcTimeoutError || e instanceof RbcBadReplyError) {
-          await this.writeRaw(EXIT_DIRECT_MODE, "leave direct mode (blind, after no reply)").catch(() => {});
-          this.parser.reset();
+          await this.#c
+            .writeRaw(EXIT_DIRECT_MODE, "leave direct mode (blind, after no reply)")
+            .catch(() => {});
+          this.#c.parser.reset();
         }
         throw e;
       }
-      this.subscription = undefined;
-      this.setState({ mode: "direct", subscription: undefined });
+      this.#c.subscription = undefined;
+      this.#c.setState({ mode: "direct", subscription: undefined });
     });
   }
 
   /** Leaves direct mode with the 6-byte exit sequence (no reply). */
   exitDirectMode(): Promise<void> {
-    return this.exclusive(async () => {
-      if (this.mode !== "direct") return;
-      await this.writeRaw(EXIT_DIRECT_MODE, "leave direct mode");
-      this.parser.reset();
-      this.setState({ mode: "packet" });
+    return this.#c.exclusive(async () => {
+      if (this.#c.mode !== "direct") return;
+      await this.#c.writeRaw(EXIT_DIRECT_MODE, "leave direct mode");
+      this.#c.parser.reset();
+      this.#c.setState({ mode: "packet" });
     });
   }
 
@@ -390,34 +497,34 @@ export class RbcClient extends RbcConnection {
    * joins it (a second press must not cancel the first one's wait for the motion to end).
    */
   stop(): Promise<{ confirmed: number[]; silent: number[] }> {
-    if (this.stopping) return this.stopping;
-    const stopping = this.startStop().finally(() => {
-      if (this.stopping === stopping) this.stopping = undefined;
+    if (this.#stopping) return this.#stopping;
+    const stopping = this.#startStop().finally(() => {
+      if (this.#stopping === stopping) this.#stopping = undefined;
     });
-    this.stopping = stopping;
+    this.#stopping = stopping;
     return stopping;
   }
 
-  private stopping: Promise<{ confirmed: number[]; silent: number[] }> | undefined;
+  #stopping: Promise<{ confirmed: number[]; silent: number[] }> | undefined;
 
-  private async startStop(): Promise<{ confirmed: number[]; silent: number[] }> {
-    if (this.mode === "disconnected" || this.mode === "connecting") throw new RbcNotConnectedError();
-    this.epoch++;
-    const { playing, sounding } = this._state;
-    this.failPending(new RbcCancelledError("Cancelled by Stop: every servo is being made limp."));
-    const epoch = this.epoch;
-    return this.exclusive(async () => {
-      if (this.mode === "direct") return this.servos.limpAll();
+  async #startStop(): Promise<{ confirmed: number[]; silent: number[] }> {
+    if (this.#c.mode === "disconnected" || this.#c.mode === "connecting") throw new RbcNotConnectedError();
+    this.#c.epoch++;
+    const { playing, sounding } = this.#c.state;
+    this.#c.failPending(new RbcCancelledError("Cancelled by Stop: every servo is being made limp."));
+    const epoch = this.#c.epoch;
+    return this.#c.exclusive(async () => {
+      if (this.#c.mode === "direct") return this.servos.limpAll();
       // The RBC takes nothing while a sound plays, and nothing but 7 while a motion plays (PROTOCOL.md §3).
       if (sounding)
-        await this.sleep(Math.max(0, sounding.startedAt + sounding.expectedMs - this.clock.now()) + 50);
-      if (playing) await this.endMotionForStop(playing);
-      const entered = await this.transactDecoded(COMMANDS.enterDirectMode, undefined, 1).then(
+        await this.#c.sleep(Math.max(0, sounding.startedAt + sounding.expectedMs - this.#c.clock.now()) + 50);
+      if (playing) await this.#endMotionForStop(playing);
+      const entered = await this.#c.request(COMMANDS.enterDirectMode, undefined, { retries: 1 }).then(
         () => true,
         () => false,
       );
-      this.subscription = undefined;
-      this.setState({ mode: "direct", subscription: undefined, playing: undefined, sounding: undefined });
+      this.#c.subscription = undefined;
+      this.#c.setState({ mode: "direct", subscription: undefined, playing: undefined, sounding: undefined });
       if (entered) return this.servos.limpAll();
       // Its `01` may have been lost while the RBC did switch: try one servo (in normal mode the RBC ignores
       // the wCK bytes, which carry no header).
@@ -426,8 +533,8 @@ export class RbcClient extends RbcConnection {
         const rest = await this.servos.limpAll(SERVO_IDS.slice(1));
         return { confirmed: [...probe.confirmed, ...rest.confirmed], silent: rest.silent };
       }
-      await this.writeRaw(EXIT_DIRECT_MODE, "leave direct mode (blind)").catch(() => {});
-      this.setMode("packet");
+      await this.#c.writeRaw(EXIT_DIRECT_MODE, "leave direct mode (blind)").catch(() => {});
+      this.#c.setMode("packet");
       throw new RbcError(
         "timeout",
         "Stop: the robot did not switch to servo control, so its servos could not be made limp. Switch the robot off.",
@@ -436,20 +543,20 @@ export class RbcClient extends RbcConnection {
   }
 
   /** Ends a playing motion for Stop and waits until the robot is still (see `awaitPostureAfter7`). */
-  private async endMotionForStop(playing: NonNullable<ClientState["playing"]>): Promise<void> {
+  async #endMotionForStop(playing: NonNullable<ClientState["playing"]>): Promise<void> {
     if (playing.motion === BASIC_POSTURE_MOTION) {
-      await this.sleep(Math.max(0, playing.startedAt + playing.expectedMs - this.clock.now()) + 50);
+      await this.#c.sleep(Math.max(0, playing.startedAt + playing.expectedMs - this.#c.clock.now()) + 50);
       return;
     }
-    await this.awaitPostureAfter7({ send: true }).catch(() => undefined);
+    await this.#awaitPostureAfter7({ send: true }).catch(() => undefined);
   }
 
-  private uploadIo() {
+  #uploadIo(): UploadIo {
     return {
-      client: this,
-      raw: this.raw,
-      now: () => this.clock.now(),
-      sleep: (ms: number) => this.sleep(ms),
+      client: this.#c,
+      raw: this.#c.raw,
+      now: () => this.#c.clock.now(),
+      sleep: (ms: number) => this.#c.sleep(ms),
     };
   }
 }

@@ -1,4 +1,4 @@
-import type { Transport, TransportStatusEvent } from "../link/transport.ts";
+import { LinkError, type Transport, type TransportStatusEvent } from "../link/transport.ts";
 import { concatBytes } from "../protocol/bytes.ts";
 import { ABANDON_DOWNLOAD } from "../protocol/catalog.ts";
 import { COMMANDS, type CommandSpec, commandName, EVENT_TYPES } from "../protocol/commands.ts";
@@ -15,17 +15,11 @@ import {
   RbcError,
   RbcInvalidArgumentError,
   RbcNotConnectedError,
+  RbcPortError,
   RbcTimeoutError,
 } from "./errors.ts";
 import { RawChannel } from "./raw-channel.ts";
-import type {
-  ClientMode,
-  ClientState,
-  DeviceIdentity,
-  LogEntry,
-  RbcEvent,
-  SubscriptionKind,
-} from "./types.ts";
+import type { ClientMode, ClientState, LogEntry, RbcEvent, SubscriptionKind } from "./types.ts";
 
 export interface RbcTimeouts {
   /** A reply that comes "at once" (default 400 ms: USB adapters hold bytes up to 16 ms, Bluetooth longer). */
@@ -46,6 +40,19 @@ export interface RbcClientOptions {
 }
 
 const DEFAULT_TIMEOUTS: RbcTimeouts = { quickMs: 400, marginMs: 2000, unknownMotionMs: 60_000, settleMs: 50 };
+
+/** How one request waits for its reply (see `RbcConnection.request`). */
+export interface RequestOptions {
+  /** For "motion" and "sound" rows: how long the robot takes, when the table cannot tell from the request. */
+  expectedMs?: number;
+  /** Overrides the table's timeout (ms). */
+  timeoutMs?: number;
+  /** Extra tries after a timeout or a garbled reply (default: the client's retries for idempotent rows, else 0). */
+  retries?: number;
+  signal?: AbortSignal;
+  /** Replies of the right type that this returns false for are ignored (e.g. a stopped motion's reply). */
+  accept?: (p: Packet) => boolean;
+}
 
 interface PacketWaiter {
   type: number;
@@ -68,9 +75,12 @@ const SUBSCRIPTION_BY_TYPE = new Map<number, SubscriptionKind>(
 /**
  * The conversation with an RBC under the typed operations of `RbcClient`: the link's life (connect, loss,
  * close), one request in flight at a time with its waiter registered before its bytes are written, a timeout
- * on every request, retries for idempotent reads, routing of unsolicited event packets to `events`, the raw
- * byte channel for downloads and the servo bus, the packet log and the client state. A lost link rejects
- * whatever is pending with `RbcDisconnectedError`.
+ * on every request (from the command table's timeout class), retries for idempotent reads, routing of
+ * unsolicited event packets to `events`, the raw byte channel for downloads and the servo bus, the packet log
+ * and the client state. A lost link rejects whatever is pending with `RbcDisconnectedError`.
+ *
+ * Internal to `device/`: `RbcClient` holds one in a private field and is the only public way in, so no caller
+ * can send a request that skipped the client's validation (a zero table, a motion number, a servo position).
  */
 export class RbcConnection {
   readonly clock: Clock;
@@ -80,16 +90,16 @@ export class RbcConnection {
   readonly log = new Emitter<LogEntry>();
   readonly stateChanges = new Emitter<ClientState>();
   readonly events = new Emitter<RbcEvent>();
-  protected readonly parser: PacketParser;
-  protected readonly raw: RawChannel;
+  readonly parser: PacketParser;
+  readonly raw: RawChannel;
   private waiter: PacketWaiter | undefined;
   private queue: Promise<unknown> = Promise.resolve();
   /** Bumped by `stop()`: queued operations from an older epoch are cancelled. */
-  protected epoch = 0;
-  protected _state: ClientState = { mode: "disconnected", basicPostureConfirmed: false };
-  protected subscription: { kind: SubscriptionKind; request: Uint8Array } | undefined;
+  epoch = 0;
+  private _state: ClientState = { mode: "disconnected", basicPostureConfirmed: false };
+  subscription: { kind: SubscriptionKind; request: Uint8Array } | undefined;
   /** Told about a reply no waiter takes (used to notice an ignored motion early). */
-  protected unsolicited: ((packet: Packet) => void) | undefined;
+  unsolicited: ((packet: Packet) => void) | undefined;
   private unlisten: Array<() => void> = [];
 
   constructor(
@@ -114,8 +124,12 @@ export class RbcConnection {
     return this._state.mode;
   }
 
-  /** Opens the transport (115200 8N1), leaves direct mode blindly, and reads the firmware version. */
-  async connect(): Promise<DeviceIdentity> {
+  /**
+   * Opens the transport (115200 8N1), abandons any half-done download, leaves direct mode blindly, then runs
+   * `handshake` (the client reads the firmware version there). Link failures come out as `RbcPortError`, and a
+   * port that opens but where nothing answers as `RbcError("no-robot")`, so callers handle one error family.
+   */
+  async connect<T>(handshake: () => Promise<T>): Promise<T> {
     if (this.mode !== "disconnected") throw new RbcError("wrong-mode", "Already connected.");
     this.setState({
       mode: "connecting",
@@ -128,7 +142,11 @@ export class RbcConnection {
       this.transport.onStatus((e) => this.onTransportStatus(e)),
     ];
     try {
-      await this.transport.open();
+      try {
+        await this.transport.open();
+      } catch (e) {
+        throw e instanceof LinkError ? RbcPortError.fromLink(e) : e;
+      }
       // In case the RBC was left in the middle of a download (by an earlier program that died) or in direct
       // mode (PROTOCOL.md §5): neither gets a reply, and each is harmless garbage in the other states.
       await this.withTimeout(
@@ -142,8 +160,7 @@ export class RbcConnection {
       await this.sleep(this.timeouts.settleMs);
       this.parser.reset();
       this.setState({ mode: "packet" });
-      const firmware = await this.command(COMMANDS.readFirmwareVersion, undefined);
-      return { firmware, platform: this._state.platform ?? 0 };
+      return await handshake();
     } catch (e) {
       await this.close();
       if (e instanceof RbcTimeoutError) {
@@ -153,6 +170,7 @@ export class RbcConnection {
           { cause: e },
         );
       }
+      if (e instanceof LinkError) throw RbcPortError.fromLink(e);
       throw e;
     }
   }
@@ -192,18 +210,32 @@ export class RbcConnection {
     return run;
   }
 
-  protected command<A, R>(spec: CommandSpec<A, R>, args: A): Promise<R> {
-    return this.exclusive(() => this.transactDecoded(spec, args, spec.idempotent ? this.retries : 0));
+  /** One request of the table, queued behind everything before it (`exclusive`), with its reply decoded. */
+  command<A, R>(spec: CommandSpec<A, R>, args: A, options: RequestOptions = {}): Promise<R> {
+    return this.exclusive(() => this.request(spec, args, options));
   }
 
-  /** One request/reply with retries for idempotent reads. Must run inside `exclusive`. */
-  async transactDecoded<A, R>(
-    spec: CommandSpec<A, R>,
-    args: A,
-    retries: number,
-    timeoutMs = this.timeouts.quickMs,
-    options: { signal?: AbortSignal; accept?: (p: Packet) => boolean } = {},
-  ): Promise<R> {
+  /** How long to wait for a reply to `spec`, from its timeout class (PROTOCOL.md §3 "reply arrives"). */
+  timeoutFor<A>(spec: CommandSpec<A, unknown>, args: A, expectedMs?: number): number {
+    switch (spec.timeout) {
+      case "quick":
+        return this.timeouts.quickMs;
+      case "motion":
+        return (
+          (expectedMs ?? spec.expectedMs?.(args) ?? this.timeouts.unknownMotionMs) + this.timeouts.marginMs
+        );
+      case "sound":
+        return (expectedMs ?? spec.expectedMs?.(args) ?? 0) + this.timeouts.marginMs;
+      case "subscribe":
+        throw new RbcError("invalid-argument", `"${spec.name}" starts events and has no reply to wait for.`);
+    }
+  }
+
+  /**
+   * One request/reply of the table: builds the contents (a refused argument sends nothing), waits as long as
+   * the row's timeout class says, decodes the reply, and retries idempotent reads. Must run inside `exclusive`.
+   */
+  async request<A, R>(spec: CommandSpec<A, R>, args: A, options: RequestOptions = {}): Promise<R> {
     this.requirePacketMode(spec.name);
     let contents: Uint8Array;
     try {
@@ -211,6 +243,8 @@ export class RbcConnection {
     } catch (e) {
       throw e instanceof ProtocolError ? new RbcInvalidArgumentError(`${e.message} Nothing was sent.`) : e;
     }
+    const timeoutMs = options.timeoutMs ?? this.timeoutFor(spec, args, options.expectedMs);
+    const retries = options.retries ?? (spec.idempotent ? this.retries : 0);
     for (let attempt = 0; ; attempt++) {
       try {
         const packet = await this.transact(spec.type, contents, spec.name, timeoutMs, options);
@@ -227,7 +261,8 @@ export class RbcConnection {
     }
   }
 
-  protected transact(
+  /** Waits for a reply of `type` (sending `contents` first unless `send` is false). */
+  transact(
     type: number,
     contents: Uint8Array,
     name: string,
@@ -261,7 +296,7 @@ export class RbcConnection {
     });
   }
 
-  protected requirePacketMode(what: string): void {
+  requirePacketMode(what: string): void {
     if (this.mode === "disconnected") {
       const lost = this._state.reason;
       throw lost ? new RbcDisconnectedError(`${lost} Connect again.`) : new RbcNotConnectedError();
@@ -277,12 +312,12 @@ export class RbcConnection {
     }
   }
 
-  protected async writePacket(bytes: Uint8Array, type: number): Promise<void> {
+  async writePacket(bytes: Uint8Array, type: number): Promise<void> {
     this.emitLog({ direction: "out", kind: "packet", type, name: commandName(type), bytes });
     await this.send(bytes);
   }
 
-  protected async writeRaw(bytes: Uint8Array, note: string): Promise<void> {
+  async writeRaw(bytes: Uint8Array, note: string): Promise<void> {
     this.emitLog({ direction: "out", kind: "raw", name: note, bytes });
     await this.send(bytes);
   }
@@ -348,7 +383,7 @@ export class RbcConnection {
     void this.transport.close();
   }
 
-  protected failPending(error: RbcError): void {
+  failPending(error: RbcError): void {
     this.waiter?.reject(error);
     this.raw.fail(error);
   }
@@ -360,7 +395,7 @@ export class RbcConnection {
   }
 
   /** Rejects with RbcTimeoutError if `p` has not settled within `ms` (for writes that expect no reply). */
-  protected withTimeout<T>(p: Promise<T>, ms: number, name: string): Promise<T> {
+  withTimeout<T>(p: Promise<T>, ms: number, name: string): Promise<T> {
     return new Promise<T>((resolve, reject) => {
       const timer = this.clock.setTimeout(() => reject(new RbcTimeoutError(name, ms)), ms);
       p.then(
@@ -380,7 +415,7 @@ export class RbcConnection {
     return new Promise((r) => this.clock.setTimeout(r, ms));
   }
 
-  protected setState(patch: Partial<ClientState>): void {
+  setState(patch: Partial<ClientState>): void {
     this._state = { ...this._state, ...patch };
     this.stateChanges.emit(this._state);
   }

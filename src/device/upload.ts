@@ -22,11 +22,11 @@ import {
   type UploadOutcome,
 } from "./errors.ts";
 import type { RawChannel } from "./raw-channel.ts";
-import type { RbcClient } from "./rbc-client.ts";
+import type { RbcConnection } from "./rbc-connection.ts";
 import type { UploadOptions, UploadResult } from "./types.ts";
 
 export interface UploadIo {
-  client: RbcClient;
+  client: RbcConnection;
   raw: RawChannel;
   now(): number;
   sleep(ms: number): Promise<void>;
@@ -71,9 +71,8 @@ export async function uploadFile(
   if (signal?.aborted) throw new RbcCancelledError("Upload cancelled before any byte was sent.");
   const started = io.now();
   const footprint = memoryFootprint(total);
-  const readFree = () => client.transactDecoded(COMMANDS.readAvailableMemory, area, client.retries);
-  const readError = () =>
-    client.transactDecoded(COMMANDS.readErrorCode, undefined, client.retries).then((r) => r.code);
+  const readFree = () => client.request(COMMANDS.readAvailableMemory, area);
+  const readError = () => client.request(COMMANDS.readErrorCode, undefined).then((r) => r.code);
 
   const freeBefore = await readFree();
   // [decision] A file fits when its bytes do (the rounding only moves the next file's start), as the simulator
@@ -137,10 +136,56 @@ export async function uploadFile(
     if (client.mode === "download") client.setMode("packet");
   }
 
-  // Every chunk was acknowledged: the file is recorded. A read that fails now does not undo that.
-  const errorCode = await readError().catch(() => undefined);
+  // Every chunk was acknowledged. That alone proves little (a stray or duplicate `40` looks like an
+  // acknowledgement): the file counts as recorded only when the robot's own accounting shows it, its free
+  // memory having dropped by exactly the file's footprint (PROTOCOL.md §6.1).
   const freeAfter = await readFree().catch(() => undefined);
-  return { area, total, chunks, footprint, freeBefore, freeAfter, errorCode, elapsedMs: io.now() - started };
+  const errorCode = await readError().catch(() => undefined);
+  const result = {
+    area,
+    total,
+    chunks,
+    footprint,
+    freeBefore,
+    freeAfter,
+    errorCode,
+    elapsedMs: io.now() - started,
+  };
+  // [decision] A file that fits by its bytes but not by its 64-byte rounding leaves 0 free (as the simulator
+  // models it; PROTOCOL.md §6.1 does not say what the RBC answers past the end of the area).
+  if (freeAfter === Math.max(0, freeBefore - footprint)) return result;
+  throw unconfirmedUpload(result);
+}
+
+/** Every chunk was acknowledged but the robot's free memory does not show the file: say what is known. */
+function unconfirmedUpload(r: UploadResult): RbcUploadError {
+  const acked = `Every chunk of the ${r.total}-byte ${r.area} file was acknowledged`;
+  const why =
+    r.errorCode === undefined || r.errorCode === NO_ERROR
+      ? ""
+      : ` The robot reports: ${errorCodeText(r.errorCode)}.`;
+  if (r.freeAfter === r.freeBefore) {
+    return new RbcUploadError(
+      "upload-failed",
+      `${acked}, but the robot's free ${r.area} memory is unchanged (${r.freeAfter} bytes): it recorded nothing.${why} Upload it again.`,
+      r.total,
+      r.total,
+      "nothing-recorded",
+      r.errorCode,
+    );
+  }
+  const state =
+    r.freeAfter === undefined
+      ? `the robot did not answer the memory check afterwards, so whether it recorded the file is unknown`
+      : `the robot's free ${r.area} memory is now ${r.freeAfter} bytes (was ${r.freeBefore}; the file needs ${r.footprint}), so whether it recorded the file is unknown`;
+  return new RbcUploadError(
+    "upload-failed",
+    `${acked}, but ${state}.${why} Switch the robot off and on, reset its ${r.area} memory and upload again.`,
+    r.total,
+    r.total,
+    "unknown",
+    r.errorCode,
+  );
 }
 
 interface FailureContext {
@@ -203,7 +248,7 @@ async function explainFailure(io: UploadIo, error: unknown, ctx: FailureContext)
   if (freeNow === ctx.freeBefore) {
     outcome = "nothing-recorded";
     state = `The robot recorded nothing: its free ${area} memory is unchanged (${freeNow} bytes).`;
-  } else if (freeNow === ctx.freeBefore - ctx.footprint && ctx.lastChunkSent && !cancelled) {
+  } else if (freeNow === Math.max(0, ctx.freeBefore - ctx.footprint) && ctx.lastChunkSent && !cancelled) {
     // The RBC accounts memory only when the last chunk's checksum is right: the file is complete.
     return { recorded: true, freeAfter: freeNow, errorCode: deviceError ?? NO_ERROR };
   } else {

@@ -1,22 +1,39 @@
 import { readI16LE, readU32BE } from "./bytes.ts";
+import { BUILT_IN_MOTIONS, SOUND_REPLY_DELAY_MS, soundLengthMs } from "./catalog.ts";
 import { ProtocolError } from "./errors.ts";
 import { ZERO_COUNT } from "./zeros.ts";
 
 /**
- * One row per RBC command of PROTOCOL.md §3: its type byte, how to build the request contents, how to decode
- * the reply contents, how long to wait, and whether a retry is harmless.
+ * One row per RBC command of PROTOCOL.md §3, and the single source of what the rest of the project knows about
+ * a command: its type byte, the request's content size (the RBC checks it and drops anything else), how to
+ * build the request contents, the reply's content size and how to decode it, how long to wait for the reply,
+ * and whether a retry is harmless. The client (`device/`), the simulator (`sim/`), the packet log and the CLI's
+ * traces all read this table; docs/adding-a-command.md says what else a new row needs.
  */
 
-/** How long a reply may take: "quick" at once; "motion"/"sound" depend on the request; "event" never ends. */
+/**
+ * How long a reply may take: "quick" comes at once (the client's quick timeout); "motion" and "sound" come
+ * after the request's expected duration (`expectedMs`) plus a margin; "subscribe" starts events and has no
+ * reply of its own.
+ */
 export type TimeoutClass = "quick" | "motion" | "sound" | "subscribe";
 
 export interface CommandSpec<Args, Reply> {
   readonly type: number;
   readonly name: string;
+  /** Content bytes of the request (the RBC checks the size's low byte and drops a packet that differs). */
+  readonly requestSize: number;
   request(args: Args): Uint8Array;
+  /** Content bytes of a reply (or an event, for "subscribe"); undefined when the format is unknown (0x1E). */
+  readonly replySize: number | undefined;
   /** Throws ProtocolError("bad-reply") if the contents do not fit. */
   decode(contents: Uint8Array): Reply;
   readonly timeout: TimeoutClass;
+  /**
+   * For "motion" and "sound": how long the robot takes before it replies, when that is known from the request
+   * alone (a built-in motion, a sound); the caller supplies it otherwise (a downloaded motion).
+   */
+  expectedMs?(args: Args): number | undefined;
   /** A read that changes nothing on the robot and may be sent again after a timeout. */
   readonly idempotent: boolean;
 }
@@ -73,6 +90,8 @@ export const COMMANDS = {
   readZeros: define<void, number[]>({
     type: 0x0b,
     name: "Read zero positions",
+    requestSize: 1,
+    replySize: ZERO_COUNT,
     request: () => ONE,
     decode(c) {
       expectLength(this.name, c, ZERO_COUNT);
@@ -84,6 +103,8 @@ export const COMMANDS = {
   readSerialNumber: define<void, string>({
     type: 0x0c,
     name: "Read serial number",
+    requestSize: 1,
+    replySize: 13,
     request: () => ONE,
     decode(c) {
       expectLength(this.name, c, 13);
@@ -99,6 +120,8 @@ export const COMMANDS = {
   writeZeros: define<readonly number[], number[]>({
     type: 0x0e,
     name: "Write zero positions",
+    requestSize: ZERO_COUNT,
+    replySize: ZERO_COUNT,
     request: (zeros) => {
       if (zeros.length !== ZERO_COUNT) throw new ProtocolError("bad-argument", "A zero table has 16 values.");
       return Uint8Array.from(zeros);
@@ -113,6 +136,8 @@ export const COMMANDS = {
   readAvailableMemory: define<MemoryArea, number>({
     type: 0x0f,
     name: "Read available memory",
+    requestSize: 1,
+    replySize: 4,
     request: areaByte,
     decode(c) {
       expectLength(this.name, c, 4);
@@ -124,6 +149,8 @@ export const COMMANDS = {
   enterDirectMode: define<void, number>({
     type: 0x10,
     name: "Direct control mode on",
+    requestSize: 1,
+    replySize: 1,
     request: () => ONE,
     decode: echoByte("Direct control mode on"),
     timeout: "quick",
@@ -132,6 +159,8 @@ export const COMMANDS = {
   readErrorCode: define<void, { code: number; platform: number }>({
     type: 0x11,
     name: "Read error code",
+    requestSize: 1,
+    replySize: 2,
     request: () => ONE,
     decode(c) {
       expectLength(this.name, c, 2);
@@ -143,6 +172,8 @@ export const COMMANDS = {
   readFirmwareVersion: define<void, { major: number; minor: number }>({
     type: 0x12,
     name: "Read firmware version",
+    requestSize: 1,
+    replySize: 2,
     request: () => ONE,
     decode(c) {
       expectLength(this.name, c, 2);
@@ -154,22 +185,33 @@ export const COMMANDS = {
   runMotion: define<number, number>({
     type: 0x14,
     name: "Run motion",
+    requestSize: 1,
+    replySize: 1,
     request: (n) => byteArg("Motion number", n, 0, 63),
     decode: echoByte("Run motion"),
     timeout: "motion",
+    expectedMs: (n) => BUILT_IN_MOTIONS.find((m) => m.number === n)?.durationMs,
     idempotent: false,
   }),
   runSound: define<number, number>({
     type: 0x15,
     name: "Run sound",
+    requestSize: 1,
+    replySize: 1,
     request: (n) => byteArg("Sound number", n, 1, 25),
     decode: echoByte("Run sound"),
     timeout: "sound",
+    expectedMs: (n) => {
+      const length = soundLengthMs(n);
+      return length === undefined ? undefined : SOUND_REPLY_DELAY_MS + length;
+    },
     idempotent: false,
   }),
   readDistance: define<void, number>({
     type: 0x16,
     name: "Distance sensor",
+    requestSize: 1,
+    replySize: 2,
     request: () => ONE,
     decode: firstOfTwo("Distance sensor"),
     timeout: "quick",
@@ -178,7 +220,14 @@ export const COMMANDS = {
   subscribeSound: define<number, number>({
     type: 0x17,
     name: "Sound input",
-    request: (threshold) => Uint8Array.of(0, byteArg("Sound threshold", threshold, 0, 255)[0]!),
+    requestSize: 2,
+    replySize: 2,
+    // [decision] The threshold in both bytes: the official firmware reads the second, PCremote's peers send
+    // the first (PROTOCOL.md §3.5), so every firmware gets the same threshold.
+    request: (threshold) => {
+      const t = byteArg("Sound threshold", threshold, 0, 255)[0]!;
+      return Uint8Array.of(t, t);
+    },
     decode: firstOfTwo("Sound input"),
     timeout: "subscribe",
     idempotent: false,
@@ -186,6 +235,8 @@ export const COMMANDS = {
   subscribeButtons: define<void, number>({
     type: 0x18,
     name: "Button press",
+    requestSize: 1,
+    replySize: 2,
     request: () => ONE,
     decode: firstOfTwo("Button press"),
     timeout: "subscribe",
@@ -194,6 +245,8 @@ export const COMMANDS = {
   subscribeRemote: define<void, number>({
     type: 0x19,
     name: "Remote control",
+    requestSize: 1,
+    replySize: 2,
     request: () => ONE,
     decode: firstOfTwo("Remote control"),
     timeout: "subscribe",
@@ -202,6 +255,8 @@ export const COMMANDS = {
   readAccelerometer: define<void, { x: number; y: number; z: number }>({
     type: 0x1a,
     name: "Accelerometer",
+    requestSize: 1,
+    replySize: 6,
     request: () => ONE,
     decode(c) {
       expectLength(this.name, c, 6);
@@ -213,6 +268,8 @@ export const COMMANDS = {
   executionStatus: define<number, Uint8Array>({
     type: 0x1e,
     name: "Execution status",
+    requestSize: 1,
+    replySize: undefined,
     request: (n) => byteArg("Motion number", n, 0, 63),
     decode: (c) => c.slice(),
     timeout: "quick",
@@ -221,6 +278,8 @@ export const COMMANDS = {
   resetMemoryPointer: define<MemoryArea, number>({
     type: 0x1f,
     name: "Reset memory pointer",
+    requestSize: 1,
+    replySize: 1,
     request: areaByte,
     decode: echoByte("Reset memory pointer"),
     timeout: "quick",
@@ -233,8 +292,20 @@ export type CommandName = keyof typeof COMMANDS;
 /** Download types (PROTOCOL.md §6.2); they do not follow the request/reply packet pattern. */
 export const WRITE_MOTION_TYPE = 0x01;
 export const WRITE_ACTION_TYPE = 0x02;
-/** Types that arrive unsolicited while a subscription runs. */
-export const EVENT_TYPES: ReadonlySet<number> = new Set([0x17, 0x18, 0x19]);
+/** Types that arrive unsolicited while a subscription runs: the rows whose timeout class is "subscribe". */
+export const EVENT_TYPES: ReadonlySet<number> = new Set(
+  Object.values(COMMANDS)
+    .filter((c) => c.timeout === "subscribe")
+    .map((c) => c.type),
+);
+
+/** Every command row by type byte. */
+export const COMMAND_BY_TYPE: ReadonlyMap<number, CommandSpec<never, unknown>> = new Map(
+  Object.values(COMMANDS).map((c): [number, CommandSpec<never, unknown>] => [c.type, c]),
+);
+
+/** The largest content a reply of any command carries (PROTOCOL.md §3.5: no reply has more than 16). */
+export const MAX_REPLY_CONTENT = 16;
 
 const NAMES = new Map<number, string>([
   [WRITE_MOTION_TYPE, "Write motion"],

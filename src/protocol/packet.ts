@@ -1,4 +1,5 @@
 import { writeU32BE, xorBytes } from "./bytes.ts";
+import { COMMANDS } from "./commands.ts";
 import { ProtocolError } from "./errors.ts";
 
 /** The 8-byte header that starts every RBC packet in both directions (PROTOCOL.md §2). */
@@ -10,7 +11,7 @@ export const PREFIX_LENGTH = 14;
 export const MAX_CONTENT_LENGTH = 4096;
 
 /** The accelerometer reply whose firmware checksum covers only the low bytes (PROTOCOL.md §2.1). */
-export const ACCELEROMETER_TYPE = 0x1a;
+export const ACCELEROMETER_TYPE = COMMANDS.readAccelerometer.type;
 
 export interface Packet {
   type: number;

@@ -3,6 +3,9 @@
 /** Number of servos on a stock HUNO (ids 0-15). */
 export const HUNO_SERVO_COUNT = 16;
 
+/** The HUNO's servo ids, 0-15: the ids of the zero table and of every per-servo list in the project. */
+export const HUNO_SERVO_IDS: readonly number[] = Array.from({ length: HUNO_SERVO_COUNT }, (_, i) => i);
+
 /** Highest position each servo can safely reach (§5). */
 export const SAFE_UPPER: readonly number[] = [
   174, 228, 254, 130, 185, 254, 180, 126, 208, 208, 254, 224, 198, 254, 228, 254,

@@ -36,10 +36,12 @@ export function zeroProblems(zeros: readonly unknown[]): ZeroProblem[] {
     });
     return problems;
   }
-  zeros.forEach((value, id) => {
+  // A plain loop, not forEach: forEach skips the holes of a sparse array, and a hole is not a zero.
+  for (let id = 0; id < ZERO_COUNT; id++) {
+    const value = zeros[id];
     const { min, max } = zeroRange(id);
     if (typeof value !== "number" || !Number.isInteger(value)) {
-      problems.push({ id, value, message: `Servo ${id}: "${String(value)}" is not a whole number.` });
+      problems.push({ id, value, message: `Servo ${id}: ${describeValue(value)} is not a whole number.` });
     } else if (value < min || value > max) {
       problems.push({
         id,
@@ -47,8 +49,20 @@ export function zeroProblems(zeros: readonly unknown[]): ZeroProblem[] {
         message: `Servo ${id}: ${value} is outside ${min}-${max} (standard ${STANDARD_ZEROS[id]} ± ${ZERO_TOLERANCE}); the RBC would refuse the whole table.`,
       });
     }
-  });
+  }
   return problems;
+}
+
+/**
+ * A value as a person reads it in a message, never throwing: `String()` throws for objects whose `toString`
+ * is not a function (`{ toString: [] }` in a damaged backup file), and a message must not fail.
+ */
+function describeValue(value: unknown): string {
+  if (value === undefined) return "an empty value";
+  if (typeof value === "string") return JSON.stringify(value.length > 20 ? `${value.slice(0, 20)}…` : value);
+  if (typeof value === "number" || typeof value === "boolean" || value === null) return `"${value}"`;
+  if (Array.isArray(value)) return "a list";
+  return typeof value === "object" ? "an object" : `a ${typeof value}`;
 }
 
 export function isAcceptedZeroTable(zeros: readonly unknown[]): zeros is number[] {

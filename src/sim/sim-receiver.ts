@@ -1,6 +1,5 @@
 import { COMMANDS, WRITE_ACTION_TYPE, WRITE_MOTION_TYPE } from "../protocol/commands.ts";
 import { HEADER, HEADER_LENGTH, PREFIX_LENGTH } from "../protocol/packet.ts";
-import { ZERO_COUNT } from "../protocol/zeros.ts";
 
 /**
  * The simulated RBC's receive state machine (PROTOCOL.md §2.1, §5, §6.2). It is byte-level rather than a
@@ -24,15 +23,10 @@ export type DropReason =
   | "download-timeout"
   | "zero-out-of-range";
 
-/**
- * Content length the firmware expects for each request type it understands (PROTOCOL.md §3): one byte for every
- * command of the table except the zero write (16) and the sound subscription (2).
- */
-export const REQUEST_CONTENT_LENGTH: ReadonlyMap<number, number> = new Map([
-  ...Object.values(COMMANDS).map((c): [number, number] => [c.type, 1]),
-  [COMMANDS.writeZeros.type, ZERO_COUNT],
-  [COMMANDS.subscribeSound.type, 2],
-]);
+/** Content length the firmware expects for each request type it understands (the command table's). */
+export const REQUEST_CONTENT_LENGTH: ReadonlyMap<number, number> = new Map(
+  Object.values(COMMANDS).map((c): [number, number] => [c.type, c.requestSize]),
+);
 
 export interface ReceiverHandler {
   /** A complete 8-byte header was matched (subscriptions end here, PROTOCOL.md §3.4). */

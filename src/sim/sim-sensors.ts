@@ -1,3 +1,4 @@
+import { COMMANDS } from "../protocol/commands.ts";
 import { ACCELEROMETER_TYPE, encodePacket } from "../protocol/packet.ts";
 import type { TimerId } from "../shared/clock.ts";
 import { seededRandom } from "../shared/random.ts";
@@ -8,10 +9,11 @@ import type { SimTimers } from "./sim-timers.ts";
  * of PROTOCOL.md §3.4. At most one subscription runs: any packet header from the PC ends it.
  */
 
-export const SOUND_TYPE = 0x17;
-export const BUTTON_TYPE = 0x18;
-export const REMOTE_TYPE = 0x19;
-export type SubscriptionType = typeof SOUND_TYPE | typeof BUTTON_TYPE | typeof REMOTE_TYPE;
+export const SOUND_TYPE = COMMANDS.subscribeSound.type;
+export const BUTTON_TYPE = COMMANDS.subscribeButtons.type;
+export const REMOTE_TYPE = COMMANDS.subscribeRemote.type;
+/** The type byte of a subscription command (0x17, 0x18 or 0x19). */
+export type SubscriptionType = number;
 
 /** While subscribed, sound level events come this often (level >= threshold). */
 export const SOUND_EVENT_INTERVAL_MS = 100;

@@ -22,7 +22,7 @@ describe("encodePacket (PROTOCOL.md §8 requests)", () => {
   it("builds example 7, sound 3", () => {
     expect(toHex(encodePacket(0x15, COMMANDS.runSound.request(3)))).toBe(EX.sound3);
   });
-  it("builds example 9, sound threshold 30 in the second byte", () => {
+  it("builds example 9, sound threshold 30 in both bytes (PROTOCOL.md §3.5)", () => {
     expect(toHex(encodePacket(0x17, COMMANDS.subscribeSound.request(30)))).toBe(EX.soundThreshold30);
   });
   it("builds example 13, write standard zeros", () => {
