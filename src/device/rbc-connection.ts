@@ -1,7 +1,14 @@
 import { LinkError, type Transport, type TransportStatusEvent } from "../link/transport.ts";
 import { concatBytes } from "../protocol/bytes.ts";
 import { ABANDON_DOWNLOAD } from "../protocol/catalog.ts";
-import { COMMANDS, type CommandSpec, commandName, EVENT_TYPES } from "../protocol/commands.ts";
+import {
+  COMMAND_BY_TYPE,
+  COMMANDS,
+  type CommandSpec,
+  commandName,
+  EVENT_TYPES,
+  MAX_REPLY_CONTENT,
+} from "../protocol/commands.ts";
 import { ProtocolError } from "../protocol/errors.ts";
 import { encodePacket, type Packet } from "../protocol/packet.ts";
 import { PacketParser } from "../protocol/packet-parser.ts";
@@ -101,6 +108,14 @@ export class RbcConnection {
   /** Told about a reply no waiter takes (used to notice an ignored motion early). */
   unsolicited: ((packet: Packet) => void) | undefined;
   private unlisten: Array<() => void> = [];
+  /**
+   * Types of quick requests whose reply may still arrive (the request timed out or was cancelled, or a reply
+   * of that type came unasked). The next request of such a type is fenced first (see `fence`), so that a late
+   * reply can never answer a request sent after it: the protocol has no sequence numbers.
+   */
+  private readonly suspect = new Set<number>();
+  /** Replies no request took: late ones (discarded after a fence or a timeout) and unasked repeats. */
+  readonly stats = { unansweredReplies: 0, fences: 0, timeouts: 0 };
 
   constructor(
     readonly transport: Transport,
@@ -112,6 +127,8 @@ export class RbcConnection {
     this.parser = new PacketParser({
       onDiscard: (reason, bytes) =>
         this.emitLog({ direction: "in", kind: "discard", name: reason, bytes, note: `discarded: ${reason}` }),
+      // No reply carries more than its type can (PROTOCOL.md §3.5): a corrupted size byte costs one reply.
+      maxContent: (type) => COMMAND_BY_TYPE.get(type)?.replySize ?? MAX_REPLY_CONTENT,
     });
     this.raw = new RawChannel(this.clock, (bytes, note) => this.writeRaw(bytes, note));
   }
@@ -247,6 +264,7 @@ export class RbcConnection {
     const retries = options.retries ?? (spec.idempotent ? this.retries : 0);
     for (let attempt = 0; ; attempt++) {
       try {
+        if (this.suspect.has(spec.type)) await this.fence(spec.type, spec.name);
         const packet = await this.transact(spec.type, contents, spec.name, timeoutMs, options);
         try {
           return spec.decode(packet.contents);
@@ -259,6 +277,32 @@ export class RbcConnection {
         this.parser.reset();
       }
     }
+  }
+
+  /**
+   * Makes sure no late reply of `stale` is still on its way before a new request of that type is sent. The RBC
+   * answers quick requests in the order it gets them and the link keeps that order, so once the reply to a
+   * quick read of another, unsuspected type has arrived, every reply to a request sent before it has arrived
+   * too (and was discarded as unasked) or never will. If that read goes unanswered as well, the new request is
+   * not sent: it fails with the timeout, and both types stay suspect.
+   */
+  private async fence(stale: number, name: string): Promise<void> {
+    const fences = [COMMANDS.readFirmwareVersion, COMMANDS.readErrorCode, COMMANDS.readZeros];
+    const spec = fences.find((f) => f.type !== stale && !this.suspect.has(f.type));
+    this.stats.fences++;
+    if (!spec) {
+      // Every fence type is suspect: wait out a quick reply's time instead; what arrives meanwhile is discarded.
+      await this.sleep(this.timeouts.quickMs);
+      this.suspect.clear();
+      return;
+    }
+    try {
+      await this.transact(spec.type, spec.request(undefined), spec.name, this.timeouts.quickMs, {});
+    } catch (e) {
+      if (e instanceof RbcTimeoutError) throw new RbcTimeoutError(name, e.waitedMs);
+      throw e;
+    }
+    this.suspect.clear();
   }
 
   /** Waits for a reply of `type` (sending `contents` first unless `send` is false). */
@@ -276,7 +320,11 @@ export class RbcConnection {
     return new Promise<Packet>((resolve, reject) => {
       if (signal?.aborted) return reject(new RbcCancelledError());
       let timer = 0;
-      const onAbort = () => finish(() => reject(new RbcCancelledError(`Stopped waiting for "${name}".`)));
+      const onAbort = () =>
+        finish(() => {
+          if (send) this.expectLate(type);
+          reject(new RbcCancelledError(`Stopped waiting for "${name}".`));
+        });
       const finish = (settle: () => void) => {
         this.clock.clearTimeout(timer);
         signal?.removeEventListener("abort", onAbort);
@@ -291,9 +339,20 @@ export class RbcConnection {
       };
       this.waiter = waiter; // registered before the write
       signal?.addEventListener("abort", onAbort);
-      timer = this.clock.setTimeout(() => waiter.reject(new RbcTimeoutError(name, timeoutMs)), timeoutMs);
+      timer = this.clock.setTimeout(() => {
+        this.stats.timeouts++;
+        // A partial frame is not this reply's any more; the reply itself may still come later.
+        this.parser.reset();
+        if (send) this.expectLate(type);
+        waiter.reject(new RbcTimeoutError(name, timeoutMs));
+      }, timeoutMs);
       if (send) this.writePacket(encodePacket(type, contents), type).catch((e) => waiter.reject(e));
     });
+  }
+
+  /** A reply of `type` may still arrive for a request that no one waits for any more (quick types only). */
+  expectLate(type: number): void {
+    if (COMMAND_BY_TYPE.get(type)?.timeout === "quick") this.suspect.add(type);
   }
 
   requirePacketMode(what: string): void {
@@ -350,7 +409,7 @@ export class RbcConnection {
       kind: "packet",
       type: packet.type,
       name: commandName(packet.type),
-      bytes: encodePacket(packet.type, packet.contents, packet.platform),
+      bytes: packet.raw ?? encodePacket(packet.type, packet.contents, packet.platform),
     });
     if (packet.platform !== this._state.platform) this.setState({ platform: packet.platform });
     const kind = SUBSCRIPTION_BY_TYPE.get(packet.type);
@@ -362,7 +421,10 @@ export class RbcConnection {
       this.waiter.resolve(packet);
       return;
     }
-    // Anything else is a late, unexpected or side-channel reply: logged above, and offered to `unsolicited`.
+    // Anything else is a late, unexpected or side-channel reply: logged above, counted, offered to
+    // `unsolicited`, and its type fenced before its next request (a repeat may follow).
+    this.stats.unansweredReplies++;
+    this.expectLate(packet.type);
     this.unsolicited?.(packet);
   }
 
@@ -384,6 +446,7 @@ export class RbcConnection {
   }
 
   failPending(error: RbcError): void {
+    if (this.waiter) this.expectLate(this.waiter.type);
     this.waiter?.reject(error);
     this.raw.fail(error);
   }

@@ -13,6 +13,12 @@ export type DiscardReason = "garbage" | "bad-checksum" | "oversize";
 export interface ParserOptions {
   /** Told about every frame or run of bytes the parser rejects (for the packet log and diagnostics). */
   onDiscard?: (reason: DiscardReason, bytes: Uint8Array) => void;
+  /**
+   * The largest content a frame of `type` may carry (default: 4,096 for every type). A frame announcing more is
+   * rejected at once, before its bytes are awaited: the client bounds replies by what their type can carry
+   * (PROTOCOL.md §3.5), so a corrupted size byte costs one reply, not the replies after it.
+   */
+  maxContent?: (type: number) => number;
 }
 
 const FRAME_CAPACITY = PREFIX_LENGTH + MAX_CONTENT_LENGTH + 1;
@@ -53,7 +59,8 @@ const NO_PACKETS: Packet[] = Object.freeze([]) as unknown as Packet[];
 /**
  * Streaming RBC packet parser (PROTOCOL.md §2.1). Feed it bytes in any chunking; it returns the complete
  * packets whose checksum is valid. It scans for the header and drops what precedes it; once a header is
- * matched, `FF` inside the packet is data. A size above 4,096 or a bad checksum rejects the frame, and the
+ * matched, `FF` inside the packet is data. A size above 4,096 (or above what the frame's type may carry, see
+ * `maxContent`) or a bad checksum rejects the frame, and the
  * bytes after the rejected frame's first byte are scanned again, so a packet swallowed by a corrupt frame is
  * still found. Memory is bounded by one frame (4,111 bytes).
  */
@@ -66,11 +73,16 @@ export class PacketParser {
   /** Total frame length once the size is known, else 0. */
   private expected = 0;
   private readonly onDiscard: ParserOptions["onDiscard"];
+  private readonly maxContent: Uint16Array;
   /** Counters for diagnostics. */
   readonly stats = { packets: 0, badChecksum: 0, oversize: 0, garbageBytes: 0 };
 
   constructor(options: ParserOptions = {}) {
     this.onDiscard = options.onDiscard;
+    const limit = options.maxContent;
+    this.maxContent = new Uint16Array(256).map((_, type) =>
+      Math.min(MAX_CONTENT_LENGTH, Math.max(0, limit ? limit(type) : MAX_CONTENT_LENGTH)),
+    );
   }
 
   /** Bytes buffered toward a packet that has not completed yet. */
@@ -129,7 +141,7 @@ export class PacketParser {
         while (i < end && this.length < PREFIX_LENGTH) frame[this.length++] = bytes[i++]!;
         if (this.length < PREFIX_LENGTH) break;
         const size = ((frame[10]! << 24) | (frame[11]! << 16) | (frame[12]! << 8) | frame[13]!) >>> 0;
-        if (size > MAX_CONTENT_LENGTH) {
+        if (size > this.maxContent[frame[8]!]!) {
           this.stats.oversize++;
           this.reject("oversize");
           continue;
@@ -151,7 +163,12 @@ export class PacketParser {
       const contents = frame.subarray(PREFIX_LENGTH, PREFIX_LENGTH + size);
       if (isChecksumAccepted(type, contents, frame[this.expected - 1]!)) {
         this.stats.packets++;
-        this.emit({ type, platform: frame[9]!, contents: contents.slice() });
+        this.emit({
+          type,
+          platform: frame[9]!,
+          contents: contents.slice(),
+          raw: frame.slice(0, this.expected),
+        });
         this.length = 0;
         this.expected = 0;
       } else {

@@ -17,6 +17,8 @@ export interface Packet {
   type: number;
   platform: number;
   contents: Uint8Array;
+  /** The whole frame as it crossed the wire (set by the parser; the 0x1A firmware checksum stays as sent). */
+  raw?: Uint8Array;
 }
 
 /** XOR of the content bytes: the packet checksum. */
