@@ -6,30 +6,42 @@ import { gzipSync } from "node:zlib";
 import { bytesBySource, groupShares, type SourceShare } from "./source-map.ts";
 
 /**
- * Size of the JavaScript the first page load needs, from a production build: the module and classic scripts
- * that `dist/index.html` loads (`<script src>`), the files it preloads (`<link rel="modulepreload">`), and —
- * in case a preload link is missing — every chunk those import statically (never `import()`ed ones: views and
- * the demo robot load later). Each file is gzipped on its own with node:zlib level 9 and the sizes summed.
- * 1 KB = 1,000 bytes, as Vite prints sizes.
+ * Size of what the first page load needs, from a production build: JavaScript and CSS.
+ * - JavaScript: the module and classic scripts that `dist/index.html` loads (`<script src>`), the files it
+ *   preloads (`<link rel="modulepreload">`), and — in case a preload link is missing — every chunk those import
+ *   statically (never `import()`ed ones: views and the demo robot load later).
+ * - CSS: the style sheets `index.html` links (`<link rel="stylesheet">`) and any same-origin sheet those
+ *   `@import`. (CSS of lazily loaded views comes with those views, later.)
+ * Each file is gzipped on its own with node:zlib level 9 and the sizes summed. 1 KB = 1,000 bytes, as Vite
+ * prints sizes. The HTML page itself, icons and the web manifest are not counted.
  */
 
 export const PROJECT_ROOT = resolve(dirname(fileURLToPath(import.meta.url)), "..");
-export const INITIAL_JS_BUDGET_KB = 40;
+/** Budget for the first load, JavaScript + CSS, gzip (issue #5). */
+export const INITIAL_LOAD_BUDGET_KB = 40;
+
+export type InitialVia = "script" | "modulepreload" | "static import" | "stylesheet" | "css @import";
 
 export interface InitialFile {
   /** Path relative to the build folder. */
   file: string;
+  kind: "js" | "css";
   bytes: number;
   gzipBytes: number;
   /** How index.html reaches it. */
-  via: "script" | "modulepreload" | "static import";
+  via: InitialVia;
 }
 
 export interface BundleFigures {
   outDir: string;
   files: InitialFile[];
+  /** JavaScript + CSS. */
   gzipBytes: number;
   gzipKB: number;
+  jsGzipBytes: number;
+  jsGzipKB: number;
+  cssGzipBytes: number;
+  cssGzipKB: number;
   rawBytes: number;
   /** What fills the initial JavaScript, by package or src/ folder (generated characters, from source maps). */
   contributors: SourceShare[];
@@ -68,18 +80,25 @@ function attribute(tag: string, name: string): string | undefined {
   return m ? (m[1] ?? m[2] ?? m[3]) : undefined;
 }
 
-/** Same-origin script and modulepreload URLs of an HTML page, in document order. */
-export function initialScripts(html: string): { url: string; via: "script" | "modulepreload" }[] {
-  const found: { url: string; via: "script" | "modulepreload" }[] = [];
+type HtmlVia = "script" | "modulepreload" | "stylesheet";
+
+/** Same-origin script, modulepreload and style sheet URLs of an HTML page, in document order. */
+export function initialScripts(html: string): { url: string; via: HtmlVia }[] {
+  const found: { url: string; via: HtmlVia }[] = [];
   const withoutComments = html.replace(/<!--[\s\S]*?-->/g, "");
   for (const m of withoutComments.matchAll(/<(script|link)\b[^>]*>/gi)) {
     const tag = m[0];
     if (m[1]!.toLowerCase() === "script") {
       const src = attribute(tag, "src");
       if (src) found.push({ url: src, via: "script" });
-    } else if ((attribute(tag, "rel") ?? "").toLowerCase() === "modulepreload") {
+    } else {
+      const rel = (attribute(tag, "rel") ?? "").toLowerCase().split(/\s+/);
       const href = attribute(tag, "href");
-      if (href) found.push({ url: href, via: "modulepreload" });
+      if (!href) continue;
+      if (rel.includes("modulepreload")) found.push({ url: href, via: "modulepreload" });
+      // "alternate stylesheet" is not applied on load.
+      else if (rel.includes("stylesheet") && !rel.includes("alternate"))
+        found.push({ url: href, via: "stylesheet" });
     }
   }
   return found.filter(({ url }) => !/^[a-z][a-z0-9+.-]*:|^\/\//i.test(url));
@@ -101,13 +120,24 @@ export function staticImports(code: string): string[] {
   return out;
 }
 
+/** Relative URLs a style sheet `@import`s (`@import "./a.css";`, `@import url(b.css) screen;`). */
+export function cssImports(css: string): string[] {
+  const out: string[] = [];
+  const withoutComments = css.replace(/\/\*[\s\S]*?\*\//g, "");
+  for (const m of withoutComments.matchAll(/@import\s+(?:url\(\s*)?["']?([^"')\s;]+)["']?/gi)) {
+    const url = m[1]!;
+    if (!/^[a-z][a-z0-9+.-]*:|^\/\//i.test(url)) out.push(url);
+  }
+  return out;
+}
+
 function toFile(outDir: string, from: string, url: string): string {
   const clean = url.split(/[?#]/)[0]!;
   const abs = clean.startsWith("/") ? join(outDir, clean) : resolve(dirname(from), clean);
   return normalize(abs);
 }
 
-/** Measures the initial JavaScript of a build folder. Throws with a clear message if it is not a build. */
+/** Measures the first load (JavaScript and CSS) of a build folder. Throws with a clear message if it is not a build. */
 export function measureBundle(outDir: string): BundleFigures {
   const indexHtml = join(outDir, "index.html");
   if (!existsSync(indexHtml))
@@ -117,7 +147,7 @@ export function measureBundle(outDir: string): BundleFigures {
   if (!entries.some((e) => e.via === "script")) throw new Error(`${indexHtml} loads no script.`);
   const seen = new Map<string, InitialFile>();
   const contributors: SourceShare[] = [];
-  const queue: { path: string; via: InitialFile["via"] }[] = entries.map((e) => ({
+  const queue: { path: string; via: InitialVia }[] = entries.map((e) => ({
     path: toFile(outDir, indexHtml, e.url),
     via: e.via,
   }));
@@ -125,18 +155,24 @@ export function measureBundle(outDir: string): BundleFigures {
     const { path, via } = queue.shift()!;
     if (seen.has(path)) continue;
     if (!existsSync(path)) {
-      // A static-import match is a scan of minified code: skip what is not a file rather than fail on it.
-      if (via === "static import") continue;
+      // An import match is a scan of minified code: skip what is not a file rather than fail on it.
+      if (via === "static import" || via === "css @import") continue;
       throw new Error(`${relative(outDir, path)} is referenced by index.html but missing.`);
     }
     const bytes = readFileSync(path);
+    const kind = via === "stylesheet" || via === "css @import" ? "css" : "js";
     seen.set(path, {
       file: relative(outDir, path),
+      kind,
       bytes: bytes.length,
       gzipBytes: gzipSync(bytes, { level: 9 }).length,
       via,
     });
     const code = bytes.toString("utf8");
+    if (kind === "css") {
+      for (const url of cssImports(code)) queue.push({ path: toFile(outDir, path, url), via: "css @import" });
+      continue;
+    }
     for (const spec of staticImports(code))
       queue.push({ path: toFile(outDir, path, spec), via: "static import" });
     const mapPath = `${path}.map`;
@@ -149,12 +185,19 @@ export function measureBundle(outDir: string): BundleFigures {
     }
   }
   const files = [...seen.values()];
-  const gzipBytes = files.reduce((n, f) => n + f.gzipBytes, 0);
+  const sum = (list: InitialFile[]) => list.reduce((n, f) => n + f.gzipBytes, 0);
+  const jsGzipBytes = sum(files.filter((f) => f.kind === "js"));
+  const cssGzipBytes = sum(files.filter((f) => f.kind === "css"));
+  const gzipBytes = jsGzipBytes + cssGzipBytes;
   return {
     outDir,
     files,
     gzipBytes,
     gzipKB: gzipBytes / 1000,
+    jsGzipBytes,
+    jsGzipKB: jsGzipBytes / 1000,
+    cssGzipBytes,
+    cssGzipKB: cssGzipBytes / 1000,
     rawBytes: files.reduce((n, f) => n + f.bytes, 0),
     contributors: groupShares(contributors),
   };

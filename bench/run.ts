@@ -7,24 +7,31 @@
  *   --dist <dir>     measure an existing production build instead of building one into a temporary folder
  *   --no-build       skip the bundle and first-render figures (no build, no browser)
  *   --no-browser     skip the first-render figure only
- *   --quick          fewer repetitions (real-time upload 1 run instead of 5, 1 page load instead of 5)
+ *   --no-pty         skip the upload over a PTY (rbc sim --pty in a child process)
+ *   --quick          fewer repetitions (1 upload per path instead of 7, 4 CLI start-ups instead of 10, 1 page
+ *                    load instead of 5)
  */
 import { mkdtempSync, rmSync } from "node:fs";
 import { cpus, tmpdir } from "node:os";
 import { join } from "node:path";
 import { describeContributors, measureBundle, viteBuild } from "./bundle-size.ts";
+import { measureCliStartup } from "./cli-startup.ts";
 import { measureFirstRender } from "./first-render.ts";
 import { makeParserStream, measureParser } from "./parser-throughput.ts";
 import { type MetricKey, type Metrics, TARGETS, table, targetMet } from "./report.ts";
 import { measureRequestOverhead } from "./request-overhead.ts";
 import { round } from "./stats.ts";
 import { measureUpload } from "./upload-efficiency.ts";
+import { WIRE_BYTES_PER_SECOND } from "./upload-ideal.ts";
+import { measurePtyUpload, PtySkip } from "./upload-pty.ts";
+import type { TimedUpload } from "./upload-timing.ts";
 
 const args = process.argv.slice(2);
 const json = args.includes("--json");
 const quick = args.includes("--quick");
 const noBuild = args.includes("--no-build");
 const noBrowser = args.includes("--no-browser");
+const noPty = args.includes("--no-pty");
 const distIndex = args.indexOf("--dist");
 const distArg = distIndex >= 0 ? args[distIndex + 1] : undefined;
 
@@ -36,18 +43,20 @@ const progress = (text: string) => process.stderr.write(`bench: ${text}\n`);
 const errorText = (e: unknown) => (e instanceof Error ? e.message : String(e)).split("\n")[0] ?? "";
 
 const metrics: Metrics = {
+  uploadEfficiencyReal: null,
+  uploadEfficiencyPty: null,
+  uploadWirePercent: null,
+  uploadBytesPerSecondReal: null,
+  uploadEfficiencyWholeCallReal: null,
+  idleGapCheck: null,
   parserMBps1: null,
   parserMBps4096: null,
-  uploadEfficiency: null,
-  uploadEfficiencyVirtual: null,
-  uploadEfficiencyReal: null,
-  uploadEfficiencyWholeCallVirtual: null,
-  uploadEfficiencyWholeCallReal: null,
-  uploadBytesPerSecond: null,
-  uploadBytesPerSecondVirtual: null,
-  uploadBytesPerSecondReal: null,
   requestOverheadMs: null,
+  cliStartupMs: null,
+  cliStartupRatio: null,
   bundleGzipKB: null,
+  bundleJsGzipKB: null,
+  bundleCssGzipKB: null,
   firstRenderMs: null,
 };
 const skipped: Partial<Record<MetricKey, string>> = {};
@@ -58,7 +67,73 @@ function skip(keys: readonly MetricKey[], reason: string): void {
   progress(`skipped ${keys.join(", ")}: ${reason}`);
 }
 
+const BUNDLE_KEYS: MetricKey[] = ["bundleGzipKB", "bundleJsGzipKB", "bundleCssGzipKB"];
+
+const roundMs = (runs: readonly TimedUpload[]) => runs.map((r) => round(r.downloadMs, 1));
+
+const UPLOAD_KEYS: MetricKey[] = [
+  "uploadEfficiencyReal",
+  "uploadWirePercent",
+  "uploadBytesPerSecondReal",
+  "uploadEfficiencyWholeCallReal",
+  "idleGapCheck",
+];
+
 async function main(): Promise<void> {
+  const runs = quick ? 1 : 7;
+  progress("upload of a motion image in process (virtual clock once, then real time)");
+  try {
+    const upload = await measureUpload(runs);
+    const ideal = upload.ideal.download;
+    metrics.uploadEfficiencyReal = round(upload.efficiencyReal, 4);
+    metrics.uploadWirePercent = round((100 * upload.bytesPerSecondReal) / WIRE_BYTES_PER_SECOND, 2);
+    metrics.uploadBytesPerSecondReal = round(upload.bytesPerSecondReal, 1);
+    metrics.uploadEfficiencyWholeCallReal = round(upload.efficiencyWholeCallReal, 4);
+    metrics.idleGapCheck = round(upload.idleGapCheck, 4);
+    details.upload = {
+      motion: upload.motion,
+      imageBytes: upload.ideal.payloadBytes,
+      chunks: upload.ideal.chunks,
+      ideal: {
+        downloadMs: round(ideal.totalMs, 3),
+        wireMs: round(ideal.wireMs, 3),
+        latencyMs: ideal.latencyMs,
+        pageWriteMs: ideal.pageWriteMs,
+        pcBytes: ideal.pcBytes,
+        rbcBytes: ideal.rbcBytes,
+        acknowledgements: ideal.waits,
+        wholeCallMs: round(upload.ideal.wholeCall.totalMs, 3),
+      },
+      realDownloadMs: round(upload.realDownloadMs, 1),
+      realDownloadMsRuns: roundMs(upload.realRuns),
+      realWholeCallMsRuns: upload.realRuns.map((r) => round(r.wholeMs, 1)),
+      virtualDownloadMs: round(upload.virtual.downloadMs, 3),
+      countedBytes: { download: upload.virtual.download, wholeCall: upload.virtual.wholeCall },
+    };
+  } catch (e) {
+    skip(UPLOAD_KEYS, errorText(e));
+  }
+
+  if (noPty) {
+    skip(["uploadEfficiencyPty"], "--no-pty");
+  } else {
+    progress("upload over the Node serial path (rbc sim --pty --baud-pacing --latency-ms 16)");
+    try {
+      const pty = await measurePtyUpload(runs);
+      metrics.uploadEfficiencyPty = round(pty.efficiency, 4);
+      details.uploadPty = {
+        motion: pty.motion,
+        idealDownloadMs: round(pty.ideal.download.totalMs, 3),
+        downloadMs: round(pty.downloadMs, 1),
+        downloadMsRuns: roundMs(pty.runs),
+        payloadBytesPerSecond: round(pty.ideal.payloadBytes / (pty.downloadMs / 1000), 1),
+        simulatorStartupMs: round(pty.startupMs, 0),
+      };
+    } catch (e) {
+      skip(["uploadEfficiencyPty"], e instanceof PtySkip ? e.message : `failed: ${errorText(e)}`);
+    }
+  }
+
   progress("parser throughput (4 MiB stream)");
   const stream = makeParserStream();
   const p1 = measureParser(1, 5, stream);
@@ -72,29 +147,6 @@ async function main(): Promise<void> {
     runsMs4096: p4096.runsMs.map((v) => round(v, 2)),
   };
 
-  progress("upload of WalkJump.rbm's image (virtual clock, then real time)");
-  const upload = await measureUpload(quick ? 1 : 5);
-  metrics.uploadEfficiencyVirtual = round(upload.efficiencyVirtual, 4);
-  metrics.uploadEfficiency = metrics.uploadEfficiencyVirtual;
-  metrics.uploadEfficiencyReal = round(upload.efficiencyReal, 4);
-  metrics.uploadEfficiencyWholeCallVirtual = round(upload.efficiencyWholeCallVirtual, 4);
-  metrics.uploadEfficiencyWholeCallReal = round(upload.efficiencyWholeCallReal, 4);
-  metrics.uploadBytesPerSecondVirtual = round(upload.bytesPerSecondVirtual, 1);
-  metrics.uploadBytesPerSecond = metrics.uploadBytesPerSecondVirtual;
-  metrics.uploadBytesPerSecondReal = round(upload.bytesPerSecondReal, 1);
-  details.upload = {
-    imageBytes: upload.imageBytes,
-    chunks: upload.chunks,
-    idealDownloadMs: round(upload.idealDownloadMs, 3),
-    idealWholeCallMs: round(upload.idealWholeMs, 3),
-    virtualDownloadMs: round(upload.virtual.downloadMs, 3),
-    virtualWholeCallMs: round(upload.virtual.wholeMs, 3),
-    realDownloadMsRuns: upload.realRuns.map((r) => round(r.downloadMs, 1)),
-    realWholeCallMsRuns: upload.realRuns.map((r) => round(r.wholeMs, 1)),
-    downloadBytes: { pcToRbc: upload.virtual.downloadPcBytes, rbcToPc: upload.virtual.downloadRbcBytes },
-    wholeCallBytes: { pcToRbc: upload.virtual.wholePcBytes, rbcToPc: upload.virtual.wholeRbcBytes },
-  };
-
   progress("request overhead (1,000 version reads, unpaced mock)");
   const overhead = await measureRequestOverhead(1000);
   metrics.requestOverheadMs = round(overhead.overheadMs, 5);
@@ -104,8 +156,24 @@ async function main(): Promise<void> {
     samples: overhead.samples,
   };
 
+  progress("CLI start-up (node bin/rbc.mjs --help against node -e 0, interleaved)");
+  try {
+    const cli = measureCliStartup(quick ? 4 : 10);
+    metrics.cliStartupMs = round(cli.cliMs, 1);
+    metrics.cliStartupRatio = round(cli.ratio, 3);
+    details.cliStartup = {
+      command: cli.command,
+      ...(cli.stderr ? { cliStderr: cli.stderr.slice(0, 500) } : {}),
+      nodeMs: round(cli.nodeMs, 1),
+      cliRunsMs: cli.cliRunsMs.map((v) => round(v, 1)),
+      nodeRunsMs: cli.nodeRunsMs.map((v) => round(v, 1)),
+    };
+  } catch (e) {
+    skip(["cliStartupMs", "cliStartupRatio"], errorText(e));
+  }
+
   if (noBuild) {
-    skip(["bundleGzipKB", "firstRenderMs"], "--no-build");
+    skip([...BUNDLE_KEYS, "firstRenderMs"], "--no-build");
     return;
   }
   let outDir = distArg;
@@ -117,7 +185,7 @@ async function main(): Promise<void> {
     try {
       await viteBuild(outDir);
     } catch (e) {
-      skip(["bundleGzipKB", "firstRenderMs"], `the production build failed: ${errorText(e)}`);
+      skip([...BUNDLE_KEYS, "firstRenderMs"], `the production build failed: ${errorText(e)}`);
       details.buildError = e instanceof Error ? e.message : String(e);
       rmSync(temporary, { recursive: true, force: true });
       return;
@@ -127,14 +195,18 @@ async function main(): Promise<void> {
     try {
       const bundle = measureBundle(outDir);
       metrics.bundleGzipKB = round(bundle.gzipKB, 2);
+      metrics.bundleJsGzipKB = round(bundle.jsGzipKB, 2);
+      metrics.bundleCssGzipKB = round(bundle.cssGzipKB, 2);
       details.bundle = {
         files: bundle.files,
         rawBytes: bundle.rawBytes,
         gzipBytes: bundle.gzipBytes,
+        jsGzipBytes: bundle.jsGzipBytes,
+        cssGzipBytes: bundle.cssGzipBytes,
         contributors: describeContributors(bundle, 8),
       };
     } catch (e) {
-      skip(["bundleGzipKB"], errorText(e));
+      skip(BUNDLE_KEYS, errorText(e));
     }
     if (noBrowser) {
       skip(["firstRenderMs"], "--no-browser");
@@ -182,5 +254,16 @@ if (json) {
 } else {
   process.stdout.write(`${table(metrics, skipped)}\n`);
   const b = details.bundle as { contributors?: string } | undefined;
-  if (b?.contributors) process.stdout.write(`\nInitial JavaScript by source: ${b.contributors}\n`);
+  const u = details.upload as
+    | { motion: string; imageBytes: number; chunks: number; ideal: { downloadMs: number } }
+    | undefined;
+  if (u) {
+    process.stdout.write(
+      `\nUpload: ${u.motion}, ${u.imageBytes.toLocaleString("en-US")} bytes in ${u.chunks} chunks; first-principles ideal of the download phase ${u.ideal.downloadMs.toLocaleString("en-US")} ms.\n`,
+    );
+  }
+  if (b?.contributors) process.stdout.write(`First-load JavaScript by source: ${b.contributors}\n`);
+  const cli = details.cliStartup as { cliStderr?: string } | undefined;
+  if (cli?.cliStderr)
+    process.stdout.write(`CLI start-up measured while bin/rbc.mjs said: ${cli.cliStderr}\n`);
 }
