@@ -12,17 +12,16 @@
  * - the robot's stored state is the old or the new value, never a mix (zeros; downloaded motions, with the
  *   upload error's `outcome` and "acknowledged of total" message checked against what the simulator holds).
  */
-import { readFileSync } from "node:fs";
 import { beforeAll, describe, expect, it } from "vitest";
 import { RbcError, type RbcErrorCode, type RbcEvent, RbcUploadError } from "../../src/device/index.ts";
-import { FACTORY_ZEROS, fromHex, STANDARD_ZEROS } from "../../src/protocol/index.ts";
+import { FACTORY_ZEROS, STANDARD_ZEROS } from "../../src/protocol/index.ts";
 import type { StoredFile } from "../../src/sim/index.ts";
+import { goldenImage } from "../data/project-data.ts";
 import { armAtReply, LINE_NOISE } from "../support/faults.ts";
 import { makeRig, type Rig } from "../support/rig.ts";
 
-const FIXTURES = new URL("../../../shared/fixtures/", import.meta.url);
-/** Hi.rbm's 538-byte image: 8 chunks of 64 bytes and one of 26. */
-const IMAGE = fromHex(readFileSync(new URL("images/Hi.img.hex", FIXTURES), "utf8"));
+/** examples/wave.rbm's 624-byte image (tests/data/images/wave.img.hex): 9 chunks of 64 bytes and one of 48. */
+const IMAGE = goldenImage("wave.rbm");
 const CHUNKS = Math.ceil(IMAGE.length / 64);
 const CHUNK_WIRE = 65;
 const LAST_CHUNK_WIRE = IMAGE.length - 64 * (CHUNKS - 1) + 1;

@@ -1,6 +1,7 @@
 /**
  * Fuzzing parseRbm (PROTOCOL.md §7) harder than rbm.test.ts's fuzz section, which mutates a handful of
- * fixtures with a seven-character alphabet and times only three long inputs. Here: all 29 fixtures; field-level
+ * examples with a seven-character alphabet and times only three long inputs. Here: all the project's example
+ * motions (examples/*.rbm, from 6 to 284 scenes, 6 or 16 servos); field-level
  * mutations with hostile tokens (huge and negative numbers, exponents, hex, non-ASCII digits, NUL, thousands of
  * digits), the scene and servo counts and the length fields in particular; numeric nudges that keep a file
  * parseable but break a rule; structural edits (fields deleted, duplicated, swapped, inserted); character
@@ -11,18 +12,15 @@
  * validates without errors, serializes back to the very same text and encodes as a motion image (or refuses
  * with an RbmError). Anything else — another exception, an accepted invalid motion — is a violation.
  */
-import { readdirSync, readFileSync } from "node:fs";
 import fc from "fast-check";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { EXAMPLE_NAMES, exampleText } from "../data/project-data.ts";
 import { TimeBox } from "../support/time-box.ts";
 
-const FIXTURES = new URL("../../../shared/fixtures/rbm/", import.meta.url);
-const TEXTS = readdirSync(FIXTURES)
-  .filter((n) => n.endsWith(".rbm"))
-  .sort()
-  .map((n) => readFileSync(new URL(n, FIXTURES), "latin1"));
+/** The seeds: the project's example motions (wave.rbm first). */
+const TEXTS = EXAMPLE_NAMES.map(exampleText);
 
-/** Hard limit per input (a hang), and the soft limit a fixture-sized input must parse within. */
+/** Hard limit per input (a hang), and the soft limit an example-sized input must parse within. */
 const HANG_MS = 3000;
 const SLOW_MS = 500;
 
@@ -157,11 +155,11 @@ describe("parseRbm fuzz (time-boxed)", () => {
     return verdict;
   };
 
-  it("every fixture parses (control)", async () => {
+  it("every example parses (control)", async () => {
     for (const text of TEXTS) expect((await check(text)).kind).toBe("ok");
   });
 
-  it("mutated fixtures: an RbmError with an rbm- code, or a motion that validates and round-trips", async () => {
+  it("mutated examples: an RbmError with an rbm- code, or a motion that validates and round-trips", async () => {
     const seen = new Map<string, number>();
     await fc.assert(
       fc.asyncProperty(
@@ -197,9 +195,9 @@ describe("parseRbm fuzz (time-boxed)", () => {
   });
 
   it("huge declared counts and huge inputs finish quickly", async () => {
-    const hi = TEXTS[0]!.split(":");
+    const wave = TEXTS[0]!.split(":");
     const huge = (index: number, value: string) => {
-      const f = [...hi];
+      const f = [...wave];
       f[index] = value;
       return f.join(":");
     };

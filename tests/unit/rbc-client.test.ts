@@ -1,22 +1,15 @@
-import { readFileSync } from "node:fs";
 import { describe, expect, it } from "vitest";
 import { type LogEntry, RbcClient, type RbcEvent, type UploadProgress } from "../../src/device/index.ts";
 import { type Transport, WebSerialTransport } from "../../src/link/index.ts";
-import {
-  FACTORY_ZEROS,
-  fromHex,
-  motionImage,
-  parseRbm,
-  STANDARD_ZEROS,
-  toHex,
-} from "../../src/protocol/index.ts";
+import { FACTORY_ZEROS, motionImage, parseRbm, STANDARD_ZEROS, toHex } from "../../src/protocol/index.ts";
 import { VirtualClock } from "../../src/shared/clock.ts";
 import { MockSerialPort, SimulatedRbc } from "../../src/sim/index.ts";
+import { exampleText, goldenImage } from "../data/project-data.ts";
 import { EX } from "../fixtures/protocol-examples.ts";
 import { makeRig } from "../support/rig.ts";
 
-const FIXTURES = new URL("../../../shared/fixtures/", import.meta.url);
-const hiImage = () => fromHex(readFileSync(new URL("images/Hi.img.hex", FIXTURES), "utf8"));
+/** examples/wave.rbm's golden 624-byte image (tests/data/images/wave.img.hex). */
+const waveImage = () => goldenImage("wave.rbm");
 
 describe("RbcClient against the simulated RBC", () => {
   it("connects: opens at 115200 with a 4 KiB buffer, abandons any download, leaves direct mode blindly, reads the version", async () => {
@@ -118,21 +111,21 @@ describe("RbcClient against the simulated RBC", () => {
     expect(await run(client.resetMemoryPointer("action"))).toBe(2);
   });
 
-  it("uploads Hi.rbm's image in 9 chunks with progress, and the simulator holds the bytes", async () => {
+  it("uploads wave.rbm's image in 10 chunks with progress, and the simulator holds the bytes", async () => {
     const { client, run, sim } = await makeRig();
-    const image = motionImage(parseRbm(readFileSync(new URL("rbm/Hi.rbm", FIXTURES), "latin1")));
-    expect(toHex(image)).toBe(toHex(hiImage()));
+    const image = motionImage(parseRbm(exampleText("wave.rbm")));
+    expect(toHex(image)).toBe(toHex(waveImage()));
     const progress: UploadProgress[] = [];
     const result = await run(client.writeMotion(image, { onProgress: (p) => progress.push(p) }));
     expect(result).toMatchObject({
-      total: 538,
-      chunks: 9,
-      footprint: 576,
+      total: 624,
+      chunks: 10,
+      footprint: 640,
       freeBefore: 24576,
-      freeAfter: 24000,
+      freeAfter: 23936,
     });
     expect(result.errorCode).toBe(0xff);
-    expect(progress.map((p) => p.acknowledged)).toEqual([0, 64, 128, 192, 256, 320, 384, 448, 512, 538]);
+    expect(progress.map((p) => p.acknowledged)).toEqual([0, 64, 128, 192, 256, 320, 384, 448, 512, 576, 624]);
     expect(sim.motions).toHaveLength(1);
     expect(toHex(sim.motions[0]!.bytes)).toBe(toHex(image));
   });
@@ -154,7 +147,7 @@ describe("RbcClient against the simulated RBC", () => {
   it("cancels an upload between chunks, leaves nothing recorded and says so", async () => {
     const { client, run, sim } = await makeRig();
     const controller = new AbortController();
-    const image = hiImage();
+    const image = waveImage();
     const error = await run(
       client
         .writeMotion(image, {
@@ -168,14 +161,14 @@ describe("RbcClient against the simulated RBC", () => {
     expect(error).toMatchObject({
       code: "cancelled",
       acknowledged: 192,
-      total: 538,
+      total: 624,
       outcome: "nothing-recorded",
     });
-    expect(String(error.message)).toMatch(/192 of 538 bytes/);
+    expect(String(error.message)).toMatch(/192 of 624 bytes/);
     expect(String(error.message)).toMatch(/recorded nothing/);
     expect(sim.motions).toHaveLength(0);
     // Usable afterwards: the next upload succeeds.
-    expect((await run(client.writeMotion(image))).freeAfter).toBe(24000);
+    expect((await run(client.writeMotion(image))).freeAfter).toBe(23936);
   });
 
   it("routes subscription events by type and keeps the subscription armed across requests", async () => {
@@ -339,7 +332,7 @@ describe("subscriptions across other operations", () => {
 describe("a robot left in the middle of a download by a program that died", () => {
   it("is brought back to packet mode by the next connect, which records nothing", async () => {
     const { client, run, sim, port, clock } = await makeRig();
-    const image = hiImage();
+    const image = waveImage();
     // The link dies after the first part and one chunk: the RBC waits for the rest.
     const upload = client.writeMotion(image, {
       onProgress: (p) => {

@@ -1,23 +1,21 @@
-import { readFileSync } from "node:fs";
 import { describe, expect, it } from "vitest";
 import { fromHex, toHex } from "../../src/protocol/index.ts";
 import { VirtualClock } from "../../src/shared/clock.ts";
 import { SimulatedRbc, type SimulatedRbcOptions } from "../../src/sim/index.ts";
+import { goldenImage } from "../data/project-data.ts";
 
 const H = "FF FF AA 55 AA 55 37 BA";
-/** PROTOCOL.md §6.3: the first part of Hi.rbm's 538-byte image. */
-const HI_FIRST_PART = "FF FF AA 55 AA 55 37 BA 01 00 00 00 02 1A";
-const HI_CHUNK_CHECKSUMS = ["82", "66", "03", "4A", "F0", "61", "9A", "42", "05"];
+/** docs/protocol.md §6.3: the first part of examples/wave.rbm's 624-byte image. */
+const WAVE_FIRST_PART = "FF FF AA 55 AA 55 37 BA 01 00 00 00 02 70";
+const WAVE_CHUNK_CHECKSUMS = ["A4", "ED", "84", "9A", "BC", "5E", "C1", "94", "73", "ED"];
 const READ_FREE_MOTION = `${H} 0F 00 00 00 00 01 01 01`;
 const READ_FREE_ACTION = `${H} 0F 00 00 00 00 01 02 02`;
 const READ_ERROR = `${H} 11 00 00 00 00 01 01 01`;
 const READ_VERSION = `${H} 12 00 00 00 00 01 01 01`;
 const VERSION_REPLY = `${H} 12 01 00 00 00 02 02 17 15`;
 
-/** fixtures/images/Hi.img.hex from the shared project folder (16 hex bytes a line). */
-const HI_IMAGE = fromHex(
-  readFileSync(new URL("../../../shared/fixtures/images/Hi.img.hex", import.meta.url), "utf8"),
-);
+/** tests/data/images/wave.img.hex: the golden image of examples/wave.rbm (16 hex bytes a line). */
+const WAVE_IMAGE = goldenImage("wave.rbm");
 
 function rig(options: SimulatedRbcOptions = {}) {
   const clock = new VirtualClock();
@@ -72,15 +70,15 @@ function freeMemory(r: ReturnType<typeof rig>, area: 1 | 2): number {
 }
 
 describe("SimulatedRbc downloads (PROTOCOL.md §6.2)", () => {
-  it("downloads Hi.rbm's image: 40 to the first part, 9 chunks acknowledged, 24,000 bytes left", async () => {
+  it("downloads wave.rbm's image: 40 to the first part, 10 chunks acknowledged, 23,936 bytes left", async () => {
     const r = rig();
     const { sim, clock, send, take } = r;
-    expect(HI_IMAGE.length).toBe(538);
-    const parts = chunks(HI_IMAGE);
-    expect(parts.map((c) => c.length)).toEqual([65, 65, 65, 65, 65, 65, 65, 65, 27]);
-    expect(parts.map((c) => toHex(c.subarray(c.length - 1)))).toEqual(HI_CHUNK_CHECKSUMS);
+    expect(WAVE_IMAGE.length).toBe(624);
+    const parts = chunks(WAVE_IMAGE);
+    expect(parts.map((c) => c.length)).toEqual([65, 65, 65, 65, 65, 65, 65, 65, 65, 49]);
+    expect(parts.map((c) => toHex(c.subarray(c.length - 1)))).toEqual(WAVE_CHUNK_CHECKSUMS);
 
-    send(HI_FIRST_PART);
+    send(WAVE_FIRST_PART);
     expect(take()).toEqual(["40"]);
     for (const chunk of parts) {
       // Sent in two pieces: chunking does not matter.
@@ -92,13 +90,13 @@ describe("SimulatedRbc downloads (PROTOCOL.md §6.2)", () => {
       expect(take()).toEqual(["40"]);
     }
     send(READ_FREE_MOTION);
-    expect(take()).toEqual([`${H} 0F 01 00 00 00 04 00 00 5D C0 9D`]);
+    expect(take()).toEqual([`${H} 0F 01 00 00 00 04 00 00 5D 80 DD`]);
     expect(sim.motions).toHaveLength(1);
-    expect(sim.motions[0]).toMatchObject({ slot: 1, start: 0, size: 538 });
-    expect(toHex(sim.motions[0]!.bytes)).toBe(toHex(HI_IMAGE));
+    expect(sim.motions[0]).toMatchObject({ slot: 1, start: 0, size: 624 });
+    expect(toHex(sim.motions[0]!.bytes)).toBe(toHex(WAVE_IMAGE));
     expect(sim.state).toMatchObject({
       motionCount: 1,
-      nextFreeMotion: 576,
+      nextFreeMotion: 640,
       download: undefined,
       errorCode: 0xff,
     });
@@ -108,21 +106,24 @@ describe("SimulatedRbc downloads (PROTOCOL.md §6.2)", () => {
 
   it("plays the downloaded motion as 12 for the sum of its scene times, ending on its last scene", async () => {
     const r = rig({ basicPostureDone: true });
-    await download(r, 1, HI_IMAGE);
+    await download(r, 1, WAVE_IMAGE);
     r.send(`${H} 14 00 00 00 00 01 0C 0C`);
     expect(r.sim.playingMotion).toBe(12);
-    await r.clock.advance(3499); // scenes of 500 + 1000 + 500 + 500 + 1000 ms
+    await r.clock.advance(3199); // scenes of 800 + 400 + 400 + 400 + 400 + 800 ms
     expect(r.take()).toEqual([]);
     await r.clock.advance(1);
     expect(r.take()).toEqual([`${H} 14 01 00 00 00 01 0C 0C`]);
-    // Last scene ends servo 10 at 0x33 = 51, shifted by factory zero 90 - file zero 89.
-    expect(r.sim.servos[10]!.position).toBe(52);
+    // The last scene ends in the basic posture, shifted by the robot's factory zeros − the file's standard zeros:
+    // servo 6 ends at 72 + (46 − 48), servo 15 at 205 + (126 − 127), servo 10 at 51 + (90 − 90).
+    expect(r.sim.servos[6]!.position).toBe(70);
+    expect(r.sim.servos[15]!.position).toBe(204);
+    expect(r.sim.servos[10]!.position).toBe(51);
   });
 
   it("a chunk with a wrong checksum gets no 40, sets error 2 and records nothing", async () => {
     const r = rig();
-    const parts = chunks(HI_IMAGE);
-    r.send(HI_FIRST_PART);
+    const parts = chunks(WAVE_IMAGE);
+    r.send(WAVE_FIRST_PART);
     r.send(parts[0]!);
     await r.clock.advance(5);
     expect(r.take()).toEqual(["40", "40"]);
@@ -188,36 +189,36 @@ describe("SimulatedRbc downloads (PROTOCOL.md §6.2)", () => {
 
   it("0x1F resets the count and pointer but keeps the bytes; power cycle does the same", async () => {
     const r = rig({ basicPostureDone: true });
-    await download(r, 1, HI_IMAGE);
+    await download(r, 1, WAVE_IMAGE);
     r.send(`${H} 1F 00 00 00 00 01 01 01`);
     r.take();
     expect(freeMemory(r, 1)).toBe(0x6000);
     expect(r.sim.state.motionCount).toBe(0);
     r.send(`${H} 14 00 00 00 00 01 0C 0C`);
-    await r.clock.advance(3500);
+    await r.clock.advance(3200);
     expect(r.take()).toEqual([`${H} 14 01 00 00 00 01 0C 0C`]);
     await download(r, 1, new Uint8Array(10));
     expect(r.sim.motions.map((f) => f.size)).toEqual([10]);
-    await download(r, 1, HI_IMAGE);
+    await download(r, 1, WAVE_IMAGE);
     r.sim.powerCycle();
     expect(freeMemory(r, 1)).toBe(0x6000);
-    expect(r.sim.motions.map((f) => f.size)).toEqual([10, 538]);
+    expect(r.sim.motions.map((f) => f.size)).toEqual([10, 624]);
   });
 
   it("waits for the rest of a download by default, however long", async () => {
     const r = rig();
-    r.send(HI_FIRST_PART);
-    r.send(chunks(HI_IMAGE)[0]!.subarray(0, 30));
+    r.send(WAVE_FIRST_PART);
+    r.send(chunks(WAVE_IMAGE)[0]!.subarray(0, 30));
     await r.clock.advance(60_000);
-    expect(r.sim.state.download).toMatchObject({ area: "motion", size: 538, received: 0 });
+    expect(r.sim.state.download).toMatchObject({ area: "motion", size: 624, received: 0 });
   });
 
   it("with an idle timeout, abandons a download after that silence and understands packets again", async () => {
     const r = rig({ downloadIdleTimeoutMs: 1000 });
-    r.send(HI_FIRST_PART);
-    r.send(chunks(HI_IMAGE)[0]!.subarray(0, 30));
+    r.send(WAVE_FIRST_PART);
+    r.send(chunks(WAVE_IMAGE)[0]!.subarray(0, 30));
     await r.clock.advance(999);
-    expect(r.sim.state.download).toMatchObject({ area: "motion", size: 538, received: 0 });
+    expect(r.sim.state.download).toMatchObject({ area: "motion", size: 624, received: 0 });
     await r.clock.advance(1);
     expect(r.sim.state.download).toBeUndefined();
     r.take();
