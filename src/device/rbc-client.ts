@@ -227,8 +227,14 @@ export class RbcClient {
   }
 
   /**
-   * Runs a motion (0-63; the panel offers 1-11, 12-21, 33-42) and resolves when the robot reports it finished.
+   * Runs a motion (0-63; the panel offers 1-11, 12-21, 33-42) and resolves with the number the robot echoes
+   * when it reports the motion finished: `motion`, or 7 when `stopMotion()` ended it at the end of a scene.
    * `expectedMs` is the motion's duration when the caller knows it (a downloaded motion).
+   *
+   * The RBC does not say that it ignored a motion (PROTOCOL.md §3.6): an empty download slot sets error 3, which
+   * a read of the error code a second after the start notices (when the code was not 3 already); anything else
+   * shows only as no reply within the expected duration plus a margin, and the error then says what is known
+   * and what is not.
    */
   async runMotion(
     motion: number,
@@ -239,38 +245,67 @@ export class RbcClient {
     }
     const expectedMs =
       options.expectedMs ?? COMMANDS.runMotion.expectedMs?.(motion) ?? this.#c.timeouts.unknownMotionMs;
-    return this.#c.exclusive(async () => {
+    const slot = downloadSlotOf(motion);
+    const run = this.#c.exclusive(async () => {
+      // A fresh error 3 means an empty slot; one left from before tells nothing.
+      const codeBefore =
+        slot === undefined
+          ? undefined
+          : await this.#c.request(COMMANDS.readErrorCode, undefined).then(
+              (r) => r.code,
+              () => undefined,
+            );
+      this.#stopSent = false;
       this.#c.setState({ playing: { motion, startedAt: this.#c.clock.now(), expectedMs } });
-      const watch = this.#watchForIgnoredMotion();
+      const watch =
+        slot !== undefined && codeBefore !== undefined && codeBefore !== EMPTY_SLOT_ERROR
+          ? this.#watchForEmptySlot()
+          : undefined;
       try {
         const n = await this.#c.request(COMMANDS.runMotion, motion, {
           expectedMs,
           signal: options.signal,
-          accept: (p) => p.contents[0] === motion,
+          accept: (p) =>
+            p.contents[0] === motion || (this.#stopSent && p.contents[0] === BASIC_POSTURE_MOTION),
         });
         if (motion === BASIC_POSTURE_MOTION) this.#c.setState({ basicPostureConfirmed: true });
         return n;
       } catch (e) {
-        if (watch.code !== undefined || e instanceof RbcTimeoutError)
-          throw this.#motionIgnored(motion, watch.code, e);
+        if (watch?.emptySlot && slot !== undefined) {
+          throw new RbcRejectedError(
+            `Motion ${motion} did not run: download slot ${slot} holds no motion (the robot reports error 3). Upload a motion into it first.`,
+            EMPTY_SLOT_ERROR,
+          );
+        }
+        if (e instanceof RbcTimeoutError) throw this.#motionUnconfirmed(motion, expectedMs, e);
         throw e;
       } finally {
-        watch.dispose();
+        watch?.dispose();
         this.#c.setState({ playing: undefined });
       }
     });
+    this.#running = run;
+    const forget = () => {
+      if (this.#running === run) this.#running = undefined;
+    };
+    run.then(forget, forget);
+    return run;
   }
 
+  /** Set by `stopMotion()` while a motion plays: the running `runMotion` then takes the robot's `07` reply. */
+  #stopSent = false;
+  /** The `runMotion` under way, for `stopMotion()` to wait on. */
+  #running: Promise<number> | undefined;
+
   /**
-   * While a motion plays the RBC answers nothing but 7, so a read of the error code sent a moment after Run
-   * Motion is answered only if the motion was ignored (not yet basic posture after power-up, an empty download
-   * slot). The answer ends the wait at once, instead of after the motion's whole expected duration.
+   * A second after Run Motion of a download slot, reads the error code (the RBC answers it even while a motion
+   * plays, PROTOCOL.md §3.6): a new error 3 means the slot is empty, and the wait ends at once.
    */
-  #watchForIgnoredMotion(): { code: number | undefined; dispose(): void } {
+  #watchForEmptySlot(): { emptySlot: boolean; dispose(): void } {
     const type = COMMANDS.readErrorCode.type;
     let sent = false;
     const watch = {
-      code: undefined as number | undefined,
+      emptySlot: false,
       dispose: () => {
         this.#c.clock.clearTimeout(timer);
         this.#c.unsolicited = undefined;
@@ -281,86 +316,83 @@ export class RbcClient {
       this.#c.writePacket(encodePacket(type, COMMANDS.readErrorCode.request()), type).catch(() => {});
     }, IGNORED_MOTION_PROBE_MS);
     this.#c.unsolicited = (p) => {
-      if (!sent || p.type !== type || p.contents.length !== 2) return;
-      watch.code = p.contents[0];
+      if (!sent || p.type !== type || p.contents.length !== 2 || p.contents[0] !== EMPTY_SLOT_ERROR) return;
+      watch.emptySlot = true;
       this.#c.failPending(new RbcError("motion-ignored", "The robot is not playing the motion."));
     };
     return watch;
   }
 
-  /** Why Run Motion got no reply, in words (`code`: the robot's error code, if it answered meanwhile). */
-  #motionIgnored(motion: number, code: number | undefined, cause: unknown): RbcError {
-    const slot = downloadSlotOf(motion);
-    if (slot !== undefined && code === EMPTY_SLOT_ERROR) {
-      return new RbcRejectedError(
-        `Motion ${motion} did not run: download slot ${slot} holds no motion (the robot reports error 3). Upload a motion into it first.`,
-        code,
-      );
-    }
+  /** No end of motion within its expected time: say what is known (PROTOCOL.md §3.6), never more. */
+  #motionUnconfirmed(motion: number, expectedMs: number, cause: RbcTimeoutError): RbcError {
+    const waited = `${(cause.waitedMs / 1000).toFixed(1)} s`;
     if (motion !== BASIC_POSTURE_MOTION && !this.#c.state.basicPostureConfirmed) {
       return new RbcError(
         "motion-ignored",
-        `The robot did not run motion ${motion}. After it is switched on, the RBC ignores every motion until Basic posture (7) has run once: run motion 7 first.`,
+        `The robot did not report the end of motion ${motion} within ${waited}, so it probably ignored it: after it is switched on, the RBC ignores every motion until Basic posture (7) has run once. Run motion 7 first.`,
         { cause },
       );
     }
-    if (code === undefined) return cause instanceof RbcError ? cause : new RbcError("timeout", String(cause));
-    const reports = code === NO_ERROR ? "" : ` It reports: ${errorCodeText(code)}.`;
     return new RbcError(
-      "motion-ignored",
-      `The robot did not run motion ${motion}: it is not playing anything.${reports}`,
-      {
-        cause,
-      },
+      "timeout",
+      `The robot did not report the end of motion ${motion} within ${waited} (it should take about ${(expectedMs / 1000).toFixed(1)} s). It may have ignored the motion, or its reply was lost: whether it played is not known.`,
+      { cause },
     );
   }
 
   /**
-   * Ends the playing motion the only way the RBC allows: motion 7, which it takes even while playing. The
-   * robot finishes the current scene (the pending `runMotion` then resolves with its reply) and plays basic
-   * posture; this resolves when that has finished too. With nothing playing it simply runs motion 7.
+   * Ends the playing motion the only way the RBC allows: motion 7, which it takes even while playing
+   * (PROTOCOL.md §3.6). The robot stops at the end of the current scene and answers once, `07`; the stopped
+   * motion's own reply never comes and basic posture is not played (the robot holds the pose it stopped in).
+   * This resolves when that reply has come. With nothing playing it runs motion 7 (basic posture).
    */
   async stopMotion(): Promise<void> {
     const playing = this.#c.state.playing;
-    if (!playing) {
+    const running = this.#running;
+    if (!playing || !running) {
       await this.runMotion(BASIC_POSTURE_MOTION);
       return;
     }
+    if (playing.motion === BASIC_POSTURE_MOTION) {
+      await running.catch(() => undefined);
+      return;
+    }
     this.#c.requirePacketMode(COMMANDS.runMotion.name);
+    this.#stopSent = true;
     // Ahead of the queue: the running motion's request is still waiting for its reply.
     await this.#c.writePacket(
       encodePacket(COMMANDS.runMotion.type, COMMANDS.runMotion.request(BASIC_POSTURE_MOTION)),
       COMMANDS.runMotion.type,
     );
-    await this.#c.exclusive(async () => {
-      this.#c.setState({
-        playing: {
-          motion: BASIC_POSTURE_MOTION,
-          startedAt: this.#c.clock.now(),
-          expectedMs: postureDurationMs(),
-        },
-      });
-      try {
-        await this.#awaitPostureAfter7({ send: false });
-        this.#c.setState({ basicPostureConfirmed: true });
-      } finally {
-        this.#c.setState({ playing: undefined });
-      }
-    });
+    const ended = await running.catch(() => undefined);
+    if (ended === playing.motion) {
+      // The motion ended on its own just before the 7 arrived: the robot took the 7 as Run Motion 7 and now
+      // plays basic posture, which answers `07` when it is done.
+      await this.#c.exclusive(() =>
+        this.#c
+          .transact(
+            COMMANDS.runMotion.type,
+            COMMANDS.runMotion.request(BASIC_POSTURE_MOTION),
+            "Basic posture",
+            postureDurationMs() + this.#c.timeouts.marginMs,
+            { accept: (p) => p.contents[0] === BASIC_POSTURE_MOTION, send: false },
+          )
+          .then(() => this.#c.setState({ basicPostureConfirmed: true })),
+      );
+    }
   }
 
   /**
-   * Waits for the reply to a 7 that ends a playing motion: the robot finishes its scene, then plays basic
-   * posture and answers 7 (the stopped motion's own reply comes first and is not this one). With `send` the
-   * 7 is sent here; otherwise it has been sent already, ahead of the queue.
+   * Sends 7 to end a playing motion and waits for its single `07` reply (the robot finishes its scene first,
+   * PROTOCOL.md §3.6).
    */
-  #awaitPostureAfter7({ send }: { send: boolean }): Promise<unknown> {
+  #endMotionWith7(): Promise<unknown> {
     return this.#c.transact(
       COMMANDS.runMotion.type,
       COMMANDS.runMotion.request(BASIC_POSTURE_MOTION),
-      "Basic posture after a stopped motion",
-      SCENE_END_MS + postureDurationMs() + this.#c.timeouts.marginMs,
-      { accept: (p) => p.contents[0] === BASIC_POSTURE_MOTION, send },
+      "End of the stopped motion",
+      SCENE_END_MS + this.#c.timeouts.marginMs,
+      { accept: (p) => p.contents[0] === BASIC_POSTURE_MOTION },
     );
   }
 
@@ -548,7 +580,7 @@ export class RbcClient {
       await this.#c.sleep(Math.max(0, playing.startedAt + playing.expectedMs - this.#c.clock.now()) + 50);
       return;
     }
-    await this.#awaitPostureAfter7({ send: true }).catch(() => undefined);
+    await this.#endMotionWith7().catch(() => undefined);
   }
 
   #uploadIo(): UploadIo {

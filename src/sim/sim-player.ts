@@ -29,7 +29,7 @@ export interface PlayingMotion {
   number: number;
   startedAt: number;
   endsAt: number;
-  /** A 7 arrived: the motion ends early and basic posture follows. */
+  /** A 7 arrived: the motion ends at the end of its current scene, with one reply `07` (PROTOCOL.md §3.6). */
   stopping: boolean;
 }
 
@@ -98,25 +98,33 @@ export class SimPlayer {
   }
 
   /**
-   * A 7 arrived while a motion plays: it now ends within STOP_SCENE_MS and `then` runs after its own `onEnd`.
+   * A 7 arrived while a motion plays (PROTOCOL.md §3.6): the motion stops at the end of its current scene
+   * (within STOP_SCENE_MS), the stopped motion's own reply never comes, `instead` runs in its place (the
+   * robot's single `07` reply), and basic posture is not played: the robot holds the pose it stopped in.
    * Returns false if a stop was already requested (the extra 7 is dropped).
    */
-  stopMotion(then: () => void): boolean {
+  stopMotion(instead: () => void): boolean {
     const run = this.motionRun;
     if (!run || run.info.stopping) return false;
     const now = this.timers.clock.now();
-    const remaining = Math.max(0, run.info.endsAt - now);
-    const left = Math.min(remaining, STOP_SCENE_MS);
+    const left = Math.min(Math.max(0, run.info.endsAt - now), STOP_SCENE_MS);
     this.timers.cancel(run.timer);
     run.info.stopping = true;
     run.info.endsAt = now + left;
-    const onEnd = run.onEnd;
-    run.onEnd = () => {
-      onEnd();
-      then();
-    };
+    run.onEnd = instead;
     run.timer = this.timers.after(left, () => this.endMotion());
     return true;
+  }
+
+  /** A sound played during a motion stops the robot's timer: the motion ends `ms` later (PROTOCOL.md §3.6). */
+  stretchMotion(ms: number): void {
+    const run = this.motionRun;
+    if (!run) return;
+    this.timers.cancel(run.timer);
+    run.info.endsAt += ms;
+    run.timer = this.timers.after(Math.max(0, run.info.endsAt - this.timers.clock.now()), () =>
+      this.endMotion(),
+    );
   }
 
   playSound(number: number, durationMs: number, onEnd: () => void): void {

@@ -47,6 +47,8 @@ export class SimulatedRbc {
   private readonly listeners = new Set<(bytes: Uint8Array) => void>();
   private readonly counters = { bytesReceived: 0, bytesSent: 0, packetsReceived: 0, packetsDropped: 0 };
   private readonly drops: Partial<Record<DropReason, number>> = {};
+  /** Requests received during a motion that the firmware's main loop answers after it (0x16, 0x17-0x19). */
+  private readonly afterMotion: Array<() => void> = [];
 
   constructor(options: SimulatedRbcOptions = {}) {
     const o = resolveOptions(options);
@@ -63,7 +65,14 @@ export class SimulatedRbc {
       setError: (code) => (this.error = code),
       motionEnded: (n, positions) => this.motionEnded(n, positions),
     });
-    this.sensors = new SimSensors(this.timers, (type, c) => this.reply(type, c), o.accelerometerNoise);
+    // Events come from the firmware's main loop, which a playing motion keeps busy (PROTOCOL.md §3.6).
+    this.sensors = new SimSensors(
+      this.timers,
+      (type, c) => {
+        if (!this.player.motion) this.reply(type, c);
+      },
+      o.accelerometerNoise,
+    );
     this.receiver = new SimReceiver(this.handler);
     this.downloader = new SimDownloader(
       this.timers,
@@ -169,6 +178,7 @@ export class SimulatedRbc {
   /** Power off and on: volatile state resets; zeros and downloaded files (EEPROM) persist. */
   powerCycle(): void {
     this.player.reset();
+    this.afterMotion.length = 0;
     this.sensors.stop();
     this.timers.cancelAll();
     this.receiver.packetMode();
@@ -214,13 +224,31 @@ export class SimulatedRbc {
     else if (outcome) this.reply(type, outcome);
   }
 
-  /** Handles one request: the reply contents to send at once, a reason to drop it, or undefined. */
+  /**
+   * Handles one request: the reply contents to send at once, a reason to drop it, or undefined. While a motion
+   * plays (PROTOCOL.md §3.6) the requests the firmware answers from its receive interrupt are answered at once;
+   * the ones its main loop answers (0x16, the subscriptions) wait until the motion is over; another Run Motion
+   * is ignored, and 7 ends the motion at the end of its scene with a single `07` reply. While a sound plays
+   * nothing at all is received.
+   */
   private handle(type: number, contents: Uint8Array): Outcome {
     const arg = contents[0]!;
     const motion = this.player.motion;
     if (this.player.sound) return "busy";
-    if (motion && !(type === C.executionStatus.type || (type === C.runMotion.type && arg === BASIC_POSTURE)))
-      return "busy";
+    if (motion) {
+      if (type === C.runMotion.type) {
+        if (arg !== BASIC_POSTURE) return "busy";
+        const stopped = this.player.stopMotion(() => {
+          this.reply(C.runMotion.type, Uint8Array.of(BASIC_POSTURE));
+          this.runDeferred();
+        });
+        return stopped ? undefined : "busy";
+      }
+      if (MAIN_LOOP_TYPES.has(type)) {
+        this.afterMotion.push(() => this.packet(type, contents));
+        return undefined;
+      }
+    }
     switch (type) {
       case C.readZeros.type:
         return one(arg, () => Uint8Array.from(this.zeroTable));
@@ -242,11 +270,12 @@ export class SimulatedRbc {
       case C.readFirmwareVersion.type:
         return one(arg, () => Uint8Array.of(this.firmware.major, this.firmware.minor));
       case C.runMotion.type:
-        if (!motion) return this.runMotion(arg);
-        return this.player.stopMotion(() => this.player.startMotion(BASIC_POSTURE)) ? undefined : "busy";
+        return this.runMotion(arg);
       case C.runSound.type: {
         const length = arg >= 1 ? soundLengthMs(arg) : undefined;
         if (length === undefined) return "contents";
+        // Everything stops while a sound plays, the motion's frames included.
+        if (motion) this.player.stretchMotion(SOUND_REPLY_DELAY_MS + length);
         this.player.playSound(arg, SOUND_REPLY_DELAY_MS + length, () => this.reply(type, Uint8Array.of(arg)));
         return undefined;
       }
@@ -312,8 +341,23 @@ export class SimulatedRbc {
     }
     if (positions) for (const [id, p] of positions) this.servoBus.setPosition(id, p);
     this.reply(C.runMotion.type, Uint8Array.of(n));
+    this.runDeferred();
+  }
+
+  /** Requests the main loop answers only once a motion is over (PROTOCOL.md §3.6), in arrival order. */
+  private runDeferred(): void {
+    const waiting = this.afterMotion.splice(0);
+    for (const handle of waiting) handle();
   }
 }
+
+/** Answered by the firmware's main loop, so only after a playing motion (PROTOCOL.md §3.6). */
+const MAIN_LOOP_TYPES: ReadonlySet<number> = new Set([
+  C.readDistance.type,
+  C.subscribeSound.type,
+  C.subscribeButtons.type,
+  C.subscribeRemote.type,
+]);
 
 /** Reply contents to send at once, a reason the request is dropped, or undefined (handled, no reply now). */
 type Outcome = Uint8Array | DropReason | undefined;

@@ -15,7 +15,7 @@ const EX5_EXIT_DIRECT = "FF E0 FB 01 00 1A";
 const EX6_MOTION_7 = "FF FF AA 55 AA 55 37 BA 14 00 00 00 00 01 07 07";
 const EX7_SOUND_3 = "FF FF AA 55 AA 55 37 BA 15 00 00 00 00 01 03 03";
 const EX8_DISTANCE_10 = "FF FF AA 55 AA 55 37 BA 16 01 00 00 00 02 0A 00 0A";
-const EX9_SOUND_THRESHOLD_30 = "FF FF AA 55 AA 55 37 BA 17 00 00 00 00 02 00 1E 1E";
+const EX9_SOUND_THRESHOLD_30 = "FF FF AA 55 AA 55 37 BA 17 00 00 00 00 02 1E 1E 00";
 const EX10_BUTTON_PF2 = "FF FF AA 55 AA 55 37 BA 18 01 00 00 00 02 02 00 02";
 const EX11_ACCEL = "FF FF AA 55 AA 55 37 BA 1A 01 00 00 00 06 04 00 03 00 FA FF FD";
 const EX12_FACTORY_ZEROS =
@@ -300,22 +300,49 @@ describe("SimulatedRbc: motions and sounds (PROTOCOL.md §3.1)", () => {
     }
   });
 
-  it("drops other requests while a motion plays but answers execution status", async () => {
+  it("answers the interrupt-handled requests at once while a motion plays, and ignores another motion (PROTOCOL.md §3.6)", async () => {
     const { sim, clock, send, take } = rig({ basicPostureDone: true });
     send(RUN_MOTION("03"));
     send(EX1_READ_VERSION);
+    send(READ_ERROR);
+    send(READ_FREE_MOTION);
     send(RUN_MOTION("04"));
     send(STATUS("03"));
-    send(STATUS("04"));
-    expect(take()).toEqual([`${H} 1E 01 00 00 00 02 03 01 02`, `${H} 1E 01 00 00 00 02 04 00 04`]);
-    expect(sim.stats.drops.busy).toBe(2);
+    expect(take()).toEqual([
+      EX2_VERSION,
+      EX16_ERROR_NONE,
+      EX14_FREE_MOTION,
+      `${H} 1E 01 00 00 00 02 03 01 02`,
+    ]);
+    expect(sim.stats.drops.busy).toBe(1);
     await clock.advance(1520);
     expect(take()).toEqual([MOTION_REPLY("03")]);
     send(STATUS("03"));
     expect(take()).toEqual([`${H} 1E 01 00 00 00 02 03 00 03`]);
   });
 
-  it("stops a motion when 7 arrives (within 500 ms), then plays basic posture", async () => {
+  it("answers a distance read sent during a motion only when the motion has ended (main loop)", async () => {
+    const { clock, send, take } = rig({ basicPostureDone: true });
+    send(RUN_MOTION("03"));
+    await clock.advance(700);
+    send(READ_DISTANCE);
+    await clock.advance(819);
+    expect(take()).toEqual([]);
+    await clock.advance(1);
+    expect(take()).toEqual([MOTION_REPLY("03"), EX8_DISTANCE_10]);
+  });
+
+  it("sends no events while a motion plays", async () => {
+    const { sim, clock, send, take } = rig({ basicPostureDone: true });
+    send(SUBSCRIBE_BUTTONS);
+    sim.pressButton(2, 5000);
+    expect(take()).toEqual([EX10_BUTTON_PF2]);
+    send(RUN_MOTION("03")); // its header ends the subscription, and the main loop is busy
+    await clock.advance(1000);
+    expect(take()).toEqual([]);
+  });
+
+  it("a 7 during a motion ends it at the end of its scene with exactly one reply, 07, and no basic posture", async () => {
     const { sim, clock, send, take } = rig({ basicPostureDone: true });
     send(RUN_MOTION("02"));
     await clock.advance(1000);
@@ -324,10 +351,24 @@ describe("SimulatedRbc: motions and sounds (PROTOCOL.md §3.1)", () => {
     await clock.advance(499);
     expect(take()).toEqual([]);
     await clock.advance(1);
-    expect(take()).toEqual([MOTION_REPLY("02")]);
-    expect(sim.playingMotion).toBe(7);
-    await clock.advance(1800);
     expect(take()).toEqual([MOTION_REPLY("07")]);
+    expect(sim.playingMotion).toBeUndefined();
+    // The stopped motion's own reply never comes, and basic posture is not played.
+    await clock.advance(10_000);
+    expect(take()).toEqual([]);
+  });
+
+  it("a sound during a motion stretches the motion by the sound's length", async () => {
+    const { clock, send, take } = rig({ basicPostureDone: true });
+    send(RUN_MOTION("03")); // 1,520 ms
+    await clock.advance(100);
+    send(EX7_SOUND_3); // 200 + 832 ms
+    await clock.advance(1032);
+    expect(take()).toEqual([`${H} 15 01 00 00 00 01 03 03`]);
+    await clock.advance(1520 - 100 - 1);
+    expect(take()).toEqual([]);
+    await clock.advance(1);
+    expect(take()).toEqual([MOTION_REPLY("03")]);
   });
 
   it("ignores numbers that are neither built-in nor download slots (0, 0x2B, 0x31)", async () => {
