@@ -32,6 +32,7 @@ import type {
   DeviceIdentity,
   LogEntry,
   RbcEvent,
+  RobotIdentity,
   SubscriptionKind,
   UploadOptions,
   UploadResult,
@@ -114,6 +115,14 @@ export class RbcClient {
     return this.#c.state;
   }
 
+  /**
+   * Counters of the conversation: replies no request took (late ones and unasked repeats, discarded), fence
+   * reads sent before a request whose type had a reply outstanding, and timeouts.
+   */
+  get stats(): Readonly<{ unansweredReplies: number; fences: number; timeouts: number }> {
+    return { ...this.#c.stats };
+  }
+
   get mode(): ClientMode {
     return this.#c.mode;
   }
@@ -141,8 +150,32 @@ export class RbcClient {
     return this.#c.command(COMMANDS.readFirmwareVersion, undefined);
   }
 
+  /** 0x0C. Not every firmware answers it (PROTOCOL.md §3.5): `identify()` treats it as optional. */
   readSerialNumber(): Promise<string> {
     return this.#c.command(COMMANDS.readSerialNumber, undefined);
+  }
+
+  /**
+   * What the robot says about itself: firmware version and platform (required), serial number (optional:
+   * the official firmware source does not answer 0x0C, PROTOCOL.md §3.5; undefined then, "not reported").
+   * Values are reported as the robot gives them (9.99, platform 4), with `warnings` for implausible ones.
+   */
+  async identify(): Promise<RobotIdentity> {
+    const firmware = await this.readFirmwareVersion();
+    const serialNumber = await this.#c
+      .command(COMMANDS.readSerialNumber, undefined, { retries: 0 })
+      .catch((e: unknown) => {
+        if (e instanceof RbcTimeoutError || e instanceof RbcBadReplyError) return undefined;
+        throw e;
+      });
+    const platform = this.#c.state.platform ?? 0;
+    const warnings: string[] = [];
+    if (platform < 1 || platform > 4) {
+      warnings.push(
+        `The robot reports platform ${platform}; known platforms are 1-4 (HUNO, DINO, DOGY, PF2).`,
+      );
+    }
+    return { firmware, platform, serialNumber, warnings };
   }
 
   readZeros(): Promise<number[]> {

@@ -84,3 +84,11 @@ export interface DeviceIdentity {
   firmware: { major: number; minor: number };
   platform: number;
 }
+
+/** `RbcClient.identify()`: what the robot reported, as it reported it. */
+export interface RobotIdentity extends DeviceIdentity {
+  /** Undefined when the robot does not answer 0x0C (some firmware builds never do): "not reported". */
+  serialNumber: string | undefined;
+  /** Values that are reported as they are but look implausible (a platform outside 1-4). */
+  warnings: string[];
+}

@@ -107,6 +107,30 @@ export function motionDurationMs(motion: RbmMotion): number {
   return total;
 }
 
+/**
+ * [decision] Limits of the reader itself, far above any real file, so that a huge or hostile input fails fast
+ * and in bounded memory: the text (1 MiB; the largest motion that fits the robot is about 90 KB of text), the
+ * free texts of fields 3 and 4 (10 and 20 characters in Motionbuilder's files, PROTOCOL.md §7) and names
+ * (their length fields have 2 digits).
+ */
+export const RBM_MAX_TEXT_LENGTH = 1 << 20;
+export const RBM_TEXT1_MAX = 10;
+export const RBM_TEXT2_MAX = 20;
+export const RBM_NAME_MAX = 99;
+
+/** How every motion file starts: the format number and the serial number's length field ("1:13:"). */
+const RBM_START = /^\s*[0-9]{1,15}:[0-9]{1,15}:/;
+
+function capped(text: string, index: number, max: number, what: string): string {
+  if (text.length > max) {
+    fail(
+      "rbm-field-too-long",
+      `Field ${index} (${what}) has ${text.length} characters; it holds at most ${max}.`,
+    );
+  }
+  return text;
+}
+
 /** A numeric field: 1 to 15 ASCII digits (so that its value is exact). */
 function isDigits(text: string): boolean {
   return /^[0-9]{1,15}$/.test(text);
@@ -168,11 +192,23 @@ export function parseRbm(text: string): RbmMotion {
  */
 export function readRbm(text: string): RbmMotion {
   if (typeof text !== "string") fail("rbm-not-text", "A motion file must be read as text.");
+  if (text.length > RBM_MAX_TEXT_LENGTH) {
+    fail(
+      "rbm-too-large",
+      `The file has ${text.length.toLocaleString("en-US")} characters; a motion file is far smaller (the largest motion that fits the robot is about 90,000), so this is not one.`,
+    );
+  }
   let end = text.length;
   while (end > 0 && isSpace(text.charCodeAt(end - 1))) end--;
   const body = text.slice(0, end);
   const trailing = text.slice(end);
   if (body.length === 0) fail("rbm-empty", "The motion file is empty.");
+  if (!RBM_START.test(text)) {
+    fail(
+      "rbm-not-motion",
+      'This is not a Motionbuilder motion file (.rbm): such a file is one line of fields separated by ":", starting with "1:13:" and the 13-digit serial number of a robot.',
+    );
+  }
   if (!body.endsWith(":")) {
     fail(
       "rbm-end",
@@ -197,6 +233,12 @@ export function readRbm(text: string): RbmMotion {
   /** A text field preceded by its length field. */
   const sized = (lengthIndex: number, key: string, width: number, what: string): string => {
     const length = num(lengthIndex, key, width, `the length of ${what}`);
+    if (length > RBM_NAME_MAX) {
+      fail(
+        "rbm-field-too-long",
+        `The length of ${what} is ${length}; a name in a motion file has at most ${RBM_NAME_MAX} characters.`,
+      );
+    }
     const t = field(lengthIndex + 1);
     if (t.length !== length) {
       const message = `${what} ${shown(t)} has ${t.length} characters, but its length field says ${length}.`;
@@ -217,8 +259,8 @@ export function readRbm(text: string): RbmMotion {
   const motion: RbmMotion = {
     format: num(0, "h0", 1, "the format"),
     serialNumber: sized(1, "h1", 1, "the serial number"),
-    text1: field(3),
-    text2: field(4),
+    text1: capped(field(3), 3, RBM_TEXT1_MAX, "the 10-character text"),
+    text2: capped(field(4), 4, RBM_TEXT2_MAX, "the text"),
     name: sized(5, "h5", 1, "the motion name"),
     motionIndex: num(7, "h7", 1, "the motion index"),
     platform: num(8, "h8", 1, "the platform"),

@@ -18,6 +18,11 @@ export interface MockSerialPortOptions {
   latencyMs?: number;
   /** What getInfo() answers (default FTDI FT232R: vendor 0x0403, product 0x6001). */
   info?: SerialPortInfo;
+  /**
+   * Keep every chunk in `written` and `delivered` for tests to inspect (default true). The demo robot turns it
+   * off, so that hours of polling do not grow memory; `stats` still counts every byte.
+   */
+  record?: boolean;
 }
 
 export interface MockSerialPortStats {

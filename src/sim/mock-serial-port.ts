@@ -33,10 +33,11 @@ export class MockSerialPort extends EventTarget implements SerialPort {
     opens: 0,
     closes: 0,
   };
-  /** Every chunk the PC wrote, in order (copies). */
+  /** Every chunk the PC wrote, in order (copies); empty when the `record` option is off. */
   readonly written: Uint8Array[] = [];
-  /** Every chunk handed to the PC's readable, in order. */
+  /** Every chunk handed to the PC's readable, in order; empty when the `record` option is off. */
   readonly delivered: Uint8Array[] = [];
+  private readonly record: boolean;
   /** The options of the last successful open(), defaults filled in (kept after close). */
   openOptions: OpenedOptions | undefined;
   /** Set by forget(); FakeSerial no longer lists the port. */
@@ -71,6 +72,7 @@ export class MockSerialPort extends EventTarget implements SerialPort {
     this.pacing = options.baudPacing ?? false;
     this.latencyMs = options.latencyMs ?? 0;
     this.info = { ...(options.info ?? { usbVendorId: 0x0403, usbProductId: 0x6001 }) };
+    this.record = options.record ?? true;
     this.detach = sim.onTransmit((bytes) => this.fromRobot(bytes));
   }
 
@@ -207,7 +209,7 @@ export class MockSerialPort extends EventTarget implements SerialPort {
     const cut = limit !== undefined && this.stats.bytesFromPc + bytes.length >= limit;
     if (cut) bytes = bytes.slice(0, Math.max(0, limit - this.stats.bytesFromPc));
     this.stats.bytesFromPc += bytes.length;
-    this.written.push(bytes);
+    if (this.record) this.written.push(bytes);
     this.toRobot(bytes);
     if (cut) {
       this.faults.disconnectAtPcBytes = undefined;
@@ -266,7 +268,7 @@ export class MockSerialPort extends EventTarget implements SerialPort {
       return;
     }
     this.stats.bytesToPc += chunk.length;
-    this.delivered.push(chunk);
+    if (this.record) this.delivered.push(chunk);
     if (this.readController) this.readController.enqueue(chunk);
     else this.pendingRx.push(chunk);
   }

@@ -19,6 +19,16 @@ export interface ServoState {
   acceleration: number;
   lowerBound: number;
   upperBound: number;
+  /** P and D gains (read with parameter 0x0A) and the I gain (0x16). */
+  pGain: number;
+  dGain: number;
+  iGain: number;
+  /** Overload limit code (0x0F / 0x10). */
+  overload: number;
+  /** The two I/O output bits (0x64 / 0x65). */
+  io: number;
+  /** Baud rate code (0x08; 7 = 115200). The panel never changes it. */
+  baudCode: number;
 }
 
 /** What one decoded servo-bus command did. */
@@ -27,10 +37,22 @@ export interface BusResult {
   exitDirectMode?: boolean;
 }
 
-/** Parameter sub-commands (d2 of `FF (E0|id) d2 d3 d4 cs`). */
-const PARAM_SPEED_SET = 0x0d;
-const PARAM_BOUNDS_SET = 0x11;
-const PARAM_BOUNDS_READ = 0x12;
+/** Parameter sub-commands (d2 of `FF (E0|id) d2 d3 d4 cs`, PROTOCOL.md §5). */
+const PARAM = {
+  baudSet: 0x08,
+  position10: 0x09,
+  pdRead: 0x0a,
+  speedSet: 0x0d,
+  speedRead: 0x0e,
+  overloadSet: 0x0f,
+  overloadRead: 0x10,
+  boundsSet: 0x11,
+  boundsRead: 0x12,
+  iRead: 0x16,
+  ioWrite: 0x64,
+  ioRead: 0x65,
+  motionDataRead: 0x97,
+} as const;
 
 function initialServo(id: number): ServoState {
   return {
@@ -43,6 +65,13 @@ function initialServo(id: number): ServoState {
     acceleration: 0,
     lowerBound: SAFE_LOWER[id] ?? 1,
     upperBound: SAFE_UPPER[id] ?? 254,
+    // [decision] Gains as a wCK leaves the factory are not documented; these are typical motion-file values.
+    pGain: 20,
+    dGain: 30,
+    iGain: 0,
+    overload: 0,
+    io: 0,
+    baudCode: 7,
   };
 }
 
@@ -124,23 +153,56 @@ export class ServoBus {
     }
   }
 
+  /**
+   * The parameter table of PROTOCOL.md §5: a set stores its values and replies with them; a read replies with
+   * the values last set. [decision] The 10-bit position read (sent to id 0, the servo in d3) answers the
+   * position × 4 as two bytes, high first; motion data (0x97) answers `00 00`; unknown sub-commands get no
+   * reply.
+   */
   private parameter(id: number, [d2, d3, d4]: [number, number, number]): BusResult {
     const servo = this.servos[id];
     if (!servo) return {};
+    const reply = (a: number, b: number): BusResult => ({ reply: Uint8Array.of(a & 0xff, b & 0xff) });
     switch (d2) {
-      case PARAM_SPEED_SET:
+      case PARAM.baudSet:
+        servo.baudCode = d3;
+        return reply(d3, d4);
+      case PARAM.position10: {
+        const target = this.servos[d3];
+        if (!target) return {};
+        const p10 = target.position * 4;
+        return reply(p10 >> 8, p10);
+      }
+      case PARAM.pdRead:
+        return reply(servo.pGain, servo.dGain);
+      case PARAM.speedSet:
         servo.speed = d3;
         servo.acceleration = d4;
-        return { reply: Uint8Array.of(servo.speed, servo.acceleration) };
-      case PARAM_BOUNDS_SET:
-        servo.lowerBound = d3;
-        servo.upperBound = d4;
-        return { reply: Uint8Array.of(servo.lowerBound, servo.upperBound) };
-      case PARAM_BOUNDS_READ:
-        return { reply: Uint8Array.of(servo.lowerBound, servo.upperBound) };
+        return reply(servo.speed, servo.acceleration);
+      case PARAM.speedRead:
+        return reply(servo.speed, servo.acceleration);
+      case PARAM.overloadSet:
+        servo.overload = d3;
+        return reply(d3, d4);
+      case PARAM.overloadRead:
+        return reply(servo.overload, servo.overload);
+      case PARAM.boundsSet:
+        servo.upperBound = d3;
+        servo.lowerBound = d4;
+        return reply(servo.upperBound, servo.lowerBound);
+      case PARAM.boundsRead:
+        return reply(servo.upperBound, servo.lowerBound);
+      case PARAM.iRead:
+        return reply(servo.iGain, servo.iGain);
+      case PARAM.ioWrite:
+        servo.io = d3 & 0x03;
+        return reply(servo.io, servo.io);
+      case PARAM.ioRead:
+        return reply(servo.io, servo.io);
+      case PARAM.motionDataRead:
+        return reply(0, 0);
       default:
-        // Other parameters (I/O, baud rate, id, ...) are acknowledged but change nothing.
-        return { reply: Uint8Array.of(d3, d4) };
+        return {};
     }
   }
 }

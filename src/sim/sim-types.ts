@@ -30,6 +30,15 @@ export interface SimulatedRbcOptions {
    * rely on a timeout to get the RBC back to packet mode.
    */
   downloadIdleTimeoutMs?: number;
+  /**
+   * Firmware variants (PROTOCOL.md §3.5), for tests of what a client must tolerate: the official source and
+   * its homebrew port answer neither 0x0C nor 0x1E (set these to false), report 9.99 (`firmware`), the port
+   * reports platform 4 (`platform`) and repeats one reply type endlessly (`repeatReplies`).
+   */
+  answersSerialNumber?: boolean;
+  answersExecutionStatus?: boolean;
+  /** After its first reply of `type`, the robot sends that reply again every `intervalMs` (default 1 ms). */
+  repeatReplies?: { type: number; intervalMs?: number };
 }
 
 export interface SimulatedRbcStats {
@@ -84,5 +93,10 @@ export function resolveOptions(options: SimulatedRbcOptions) {
     accelerometerNoise: options.accelerometerNoise,
     pageWriteMs: options.pageWriteMs ?? 5,
     downloadIdleTimeoutMs: options.downloadIdleTimeoutMs ?? Number.POSITIVE_INFINITY,
+    answersSerialNumber: options.answersSerialNumber ?? true,
+    answersExecutionStatus: options.answersExecutionStatus ?? true,
+    repeatReplies: options.repeatReplies
+      ? { type: options.repeatReplies.type, intervalMs: Math.max(0.1, options.repeatReplies.intervalMs ?? 1) }
+      : undefined,
   };
 }

@@ -3,7 +3,7 @@ import { COMMANDS as C } from "../protocol/commands.ts";
 import { ACCELEROMETER_TYPE, encodePacket } from "../protocol/packet.ts";
 import { HUNO_BASIC_POSTURE } from "../protocol/servo-limits.ts";
 import { isAcceptedZeroTable } from "../protocol/zeros.ts";
-import type { Clock } from "../shared/clock.ts";
+import type { Clock, TimerId } from "../shared/clock.ts";
 import { SimDownloader } from "./sim-downloader.ts";
 import type { StoredFile } from "./sim-downloads.ts";
 import { SimPlayer } from "./sim-player.ts";
@@ -47,6 +47,11 @@ export class SimulatedRbc {
   private readonly listeners = new Set<(bytes: Uint8Array) => void>();
   private readonly counters = { bytesReceived: 0, bytesSent: 0, packetsReceived: 0, packetsDropped: 0 };
   private readonly drops: Partial<Record<DropReason, number>> = {};
+  private readonly variant: Pick<
+    ReturnType<typeof resolveOptions>,
+    "answersSerialNumber" | "answersExecutionStatus" | "repeatReplies"
+  >;
+  private repeating: TimerId | undefined;
   /** Requests received during a motion that the firmware's main loop answers after it (0x16, 0x17-0x19). */
   private readonly afterMotion: Array<() => void> = [];
 
@@ -58,6 +63,7 @@ export class SimulatedRbc {
     this.platform = o.platform;
     this.zeroTable = o.zeros;
     this.postureDone = o.basicPostureDone;
+    this.variant = o;
     this.timers = new SimTimers(this.clock);
     this.player = new SimPlayer(this.timers, {
       zeros: () => this.zeroTable,
@@ -178,6 +184,8 @@ export class SimulatedRbc {
   /** Power off and on: volatile state resets; zeros and downloaded files (EEPROM) persist. */
   powerCycle(): void {
     this.player.reset();
+    this.timers.cancel(this.repeating);
+    this.repeating = undefined;
     this.afterMotion.length = 0;
     this.sensors.stop();
     this.timers.cancelAll();
@@ -210,7 +218,17 @@ export class SimulatedRbc {
   }
 
   private reply(type: number, contents: Uint8Array): void {
-    this.send(encodePacket(type, contents, this.platform));
+    const bytes = encodePacket(type, contents, this.platform);
+    this.send(bytes);
+    const repeat = this.variant.repeatReplies;
+    if (repeat && repeat.type === type && this.repeating === undefined) {
+      // The homebrew port's bug (PROTOCOL.md §3.5): this reply is sent again and again, until power-off.
+      const again = () => {
+        this.send(bytes);
+        this.repeating = this.timers.after(repeat.intervalMs, again);
+      };
+      this.repeating = this.timers.after(repeat.intervalMs, again);
+    }
   }
 
   private send(bytes: Uint8Array): void {
@@ -253,6 +271,7 @@ export class SimulatedRbc {
       case C.readZeros.type:
         return one(arg, () => Uint8Array.from(this.zeroTable));
       case C.readSerialNumber.type:
+        if (!this.variant.answersSerialNumber) return "unknown-type";
         return one(arg, () => new TextEncoder().encode(this.serialNumber));
       case C.writeZeros.type:
         return this.writeZeros(contents);
@@ -290,6 +309,7 @@ export class SimulatedRbc {
       case ACCELEROMETER_TYPE:
         return one(arg, () => this.send(this.sensors.accelerometerPacket(this.platform)));
       case C.executionStatus.type:
+        if (!this.variant.answersExecutionStatus) return "unknown-type";
         return Uint8Array.of(arg, motion?.number === arg ? 1 : 0);
       case C.resetMemoryPointer.type:
         if (arg > 3) return "contents";

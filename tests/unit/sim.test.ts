@@ -473,9 +473,9 @@ describe("SimulatedRbc: direct mode (PROTOCOL.md §5)", () => {
     const { sim, send, take } = rig();
     send(EX4_DIRECT_ON);
     take();
-    // Bounds read of id 1 (d2 = 0x12): [lower, upper] = [70, 228].
+    // Bounds read of id 1 (d2 = 0x12): [upper, lower] = [228, 70] (PROTOCOL.md §5).
     send("FF E1 12 00 00 73");
-    expect(take()).toEqual(["46 E4"]);
+    expect(take()).toEqual(["E4 46"]);
     // Speed set of id 2 (d2 = 0x0D): speed 3, acceleration 2.
     send("FF E2 0D 03 02 6E");
     expect(take()).toEqual(["03 02"]);
@@ -487,6 +487,59 @@ describe("SimulatedRbc: direct mode (PROTOCOL.md §5)", () => {
     // The exit sequence works mid-stream, and a packet in the same chunk is understood.
     send(`${EX5_EXIT_DIRECT} ${EX1_READ_VERSION}`);
     expect(take()).toEqual([EX2_VERSION]);
+  });
+});
+
+describe("SimulatedRbc: wCK parameters answered from stored values (PROTOCOL.md §5)", () => {
+  /** `FF (E0|id) d2 d3 d4 cs`, cs = XOR of the 4 bytes after FF, AND 7F. */
+  const param = (id: number, d2: number, d3: number, d4: number) => {
+    const b = [0xe0 | id, d2, d3, d4];
+    const cs = b.reduce((x, v) => x ^ v, 0) & 0x7f;
+    return toHex(Uint8Array.of(0xff, ...b, cs));
+  };
+
+  it("a speed set to 20/50 reads back 20/50, not 00 00", () => {
+    const { send, take } = rig();
+    send(EX4_DIRECT_ON);
+    take();
+    send(param(3, 0x0d, 20, 50));
+    expect(take()).toEqual(["14 32"]);
+    send(param(3, 0x0e, 0, 0));
+    expect(take()).toEqual(["14 32"]);
+  });
+
+  it("I/O written 1 reads back 1; overload and bounds read back what was set", () => {
+    const { send, take } = rig();
+    send(EX4_DIRECT_ON);
+    take();
+    send(param(4, 0x64, 1, 1));
+    expect(take()).toEqual(["01 01"]);
+    send(param(4, 0x65, 0, 0));
+    expect(take()).toEqual(["01 01"]);
+    send(param(4, 0x0f, 3, 3));
+    send(param(4, 0x10, 0, 0));
+    expect(take()).toEqual(["03 03", "03 03"]);
+    send(param(4, 0x11, 180, 50));
+    send(param(4, 0x12, 0, 0));
+    expect(take()).toEqual(["B4 32", "B4 32"]);
+  });
+
+  it("the 10-bit position read (to id 0, servo in d3 and d4) answers a position, not the id", () => {
+    const { sim, send, take } = rig();
+    send(EX4_DIRECT_ON);
+    take();
+    send(param(0, 0x09, 5, 5));
+    const position = sim.servos[5]!.position * 4;
+    expect(take()).toEqual([toHex(Uint8Array.of(position >> 8, position & 0xff))]);
+  });
+
+  it("reads the P/D and I gains", () => {
+    const { send, take } = rig();
+    send(EX4_DIRECT_ON);
+    take();
+    send(param(2, 0x0a, 0, 0));
+    send(param(2, 0x16, 0, 0));
+    expect(take()).toEqual(["14 1E", "00 00"]);
   });
 });
 
