@@ -2,16 +2,23 @@ import { RbcClient } from "../device/rbc-client.ts";
 import type { DeviceIdentity } from "../device/types.ts";
 import type { Transport } from "../link/transport.ts";
 import { WebSerialTransport } from "../link/web-serial-transport.ts";
+import { type Clock, realClock } from "../shared/clock.ts";
 import { MockSerialPort } from "../sim/mock-serial-port.ts";
 import { SimulatedRbc } from "../sim/simulated-rbc.ts";
 import type { GlobalValues } from "./args.ts";
 import type { RunEnv } from "./command.ts";
+import { demoClock } from "./demo-clock.ts";
 import { UsageError } from "./errors.ts";
 import { formatLogEntry, logEntryJson } from "./packet-trace.ts";
 
 /** A connected robot: the real one on a serial port, or the demo robot. */
 export interface Robot {
   client: RbcClient;
+  /**
+   * The robot's time: the real clock, or for the demo robot the clock it shares with the client (faster under
+   * RBC_DEMO_TIME_SCALE). Durations rbc reports are read off it, so they are the robot's time.
+   */
+  clock: Clock;
   identity: DeviceIdentity;
   /** True for `--demo` (the built-in simulated RBC). */
   demo: boolean;
@@ -44,14 +51,35 @@ export function robotTarget(command: string, values: GlobalValues, env: NodeJS.P
   return { demo: false as const, port };
 }
 
+/** For tests and developers: the demo robot's time runs this many times faster than real time. */
+export const DEMO_TIME_SCALE_VAR = "RBC_DEMO_TIME_SCALE";
+
+/**
+ * RBC_DEMO_TIME_SCALE: how many times faster than real time the demo robot runs (default 1). The simulator
+ * and the client share that one clock (`demoClock`), so every duration and timeout keeps its proportions and
+ * the reported durations are the robot's time: `run 7` still reports about 1.8 s, after 0.18 real s at 10.
+ */
+export function demoTimeScale(env: NodeJS.ProcessEnv, command?: string): number {
+  const text = env[DEMO_TIME_SCALE_VAR]?.trim();
+  if (text === undefined || text === "") return 1;
+  const scale = Number(text);
+  if (!Number.isFinite(scale) || scale <= 0 || scale > 1000) {
+    throw new UsageError(
+      `${DEMO_TIME_SCALE_VAR} must be a number above 0 and at most 1000, not "${text}".`,
+      command,
+    );
+  }
+  return scale;
+}
+
 /**
  * The demo robot: a SimulatedRbc (firmware 2.23, HUNO, just switched on) behind a MockSerialPort with 2 ms of
- * adapter latency and a WebSerialTransport on the real clock — the same stack as the panel's "demo robot".
+ * adapter latency and a WebSerialTransport — the same stack as the panel's "demo robot" — all on `clock`.
  */
-function demoTransport(): { transport: Transport; dispose: () => void } {
-  const sim = new SimulatedRbc();
-  const port = new MockSerialPort(sim, { latencyMs: 2 });
-  return { transport: new WebSerialTransport(port), dispose: () => sim.dispose() };
+function demoTransport(clock: Clock): { transport: Transport; dispose: () => void } {
+  const sim = new SimulatedRbc({ clock });
+  const port = new MockSerialPort(sim, { latencyMs: 2, clock });
+  return { transport: new WebSerialTransport(port, { clock }), dispose: () => sim.dispose() };
 }
 
 /** Opens the named robot, handshakes (RbcClient.connect) and registers its closing with `env`. */
@@ -64,14 +92,16 @@ export async function connectRobot(
   const target = robotTarget(command, values, env.env);
   let transport: Transport;
   let dispose = () => {};
+  let clock = realClock;
   if (target.demo) {
-    ({ transport, dispose } = demoTransport());
+    clock = demoClock(demoTimeScale(env.env, command));
+    ({ transport, dispose } = demoTransport(clock));
   } else {
     // Loaded here only: the native serialport binding is not needed for --demo (and never in the web app).
     const { NodeSerialTransport } = await import("../link/node-serial-transport.ts");
     transport = new NodeSerialTransport(target.port);
   }
-  const client = new RbcClient(transport);
+  const client = new RbcClient(transport, { clock });
   if (values.log) {
     const t0 = client.clock.now();
     client.log.on((entry) =>
@@ -91,6 +121,7 @@ export async function connectRobot(
     if (options.handlesInterrupt) env.signal.removeEventListener("abort", onAbort);
     return {
       client,
+      clock,
       identity,
       demo: target.demo,
       where: target.demo ? "the demo robot" : target.port,

@@ -72,6 +72,8 @@ ${table([...ROBOT_OPTIONS, LOG_OPTION])}
 Options of every command:
 ${table([JSON_OPTION, HELP_OPTION])}
 
+For tests and developers: RBC_DEMO_TIME_SCALE=N runs the demo robot N times faster (durations stay robot time).
+
 Exit codes: 0 done, 1 failed (the reason is one line on stderr), 2 wrong command line, 130 interrupted (Ctrl-C),
 143 stopped by SIGTERM (e.g. \`kill\`). With --json a failure is a JSON document on stdout too,
 {"ok":false,"error":{"code":…,"message":…}}: one line for the commands that stream JSON lines (sensors, sim).

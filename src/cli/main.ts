@@ -4,7 +4,7 @@
  * Ctrl-C: the first aborts the command (which stops cleanly and closes the port), a second one exits at once.
  * A closed stdout (`rbc … | head -1`) stops the command the same way, without a word.
  */
-import { readFileSync } from "node:fs";
+import pkg from "../../package.json" with { type: "json" };
 import { RbcUploadError } from "../device/errors.ts";
 import { splitCommand, wantsHelp } from "./args.ts";
 import { Cleanups } from "./cleanups.ts";
@@ -17,9 +17,9 @@ import { Output } from "./output.ts";
 /** After Ctrl-C, how long a command may take to stop cleanly before rbc closes the port and exits anyway. */
 const INTERRUPT_GRACE_MS = 5000;
 
+/** From package.json, imported (not read at run time) so that the bundle in dist-cli/ carries it. */
 function version(): string {
-  const pkg: unknown = JSON.parse(readFileSync(new URL("../../package.json", import.meta.url), "utf8"));
-  return typeof pkg === "object" && pkg !== null && "version" in pkg ? String(pkg.version) : "unknown";
+  return pkg.version;
 }
 
 function reportFailure(out: Output, e: unknown, command: CommandDef | undefined): number {

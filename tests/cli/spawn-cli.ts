@@ -1,13 +1,47 @@
-import { type ChildProcess, spawn } from "node:child_process";
+import { type ChildProcess, execFileSync, spawn } from "node:child_process";
 import { fileURLToPath } from "node:url";
 
-/** Helpers for the CLI tests: spawn `node bin/rbc.mjs …`, collect its output, always clean up. */
+/**
+ * Helpers for the CLI tests: spawn the built `rbc` (dist-cli/main.js, what bin/rbc.mjs runs), collect its
+ * output, always clean up.
+ */
 
 export const REPO = fileURLToPath(new URL("../../", import.meta.url));
+/** The `rbc` command as installed: it runs dist-cli/main.js, or the sources through tsx when that is stale. */
 export const BIN = fileURLToPath(new URL("../../bin/rbc.mjs", import.meta.url));
-export const FIXTURES = fileURLToPath(new URL("../../../shared/fixtures/", import.meta.url));
-/** The fixture path the brief names, relative to the repository (the CLI is run from there). */
-export const HI_RBM = "../shared/fixtures/rbm/Hi.rbm";
+/** The built CLI, which the tests run (built on first use when missing or stale; see cliEntry). */
+export const CLI_MAIN = fileURLToPath(new URL("../../dist-cli/main.js", import.meta.url));
+const BUILD_SCRIPT = fileURLToPath(new URL("../../scripts/build-cli.mjs", import.meta.url));
+/** The project's own example motions (examples/README.md), relative to the repository (rbc runs there). */
+export const EXAMPLES = {
+  /** 16 servos, 6 scenes. */
+  wave: "examples/wave.rbm",
+  /** 16 servos, 284 scenes: nearly fills an empty robot's 24,576-byte motion memory. */
+  longWalk: "examples/long-walk.rbm",
+  /** 6 servos (a HUNO has 16). */
+  armsOnly: "examples/arms-only.rbm",
+} as const;
+
+/**
+ * For --demo: the demo robot's time runs this many times faster (RBC_DEMO_TIME_SCALE), so a 1.8 s motion takes
+ * 36 real ms while rbc still reports robot time. The demo clock keeps the order of events when the process
+ * stalls (src/cli/demo-clock.ts), so a loaded machine cannot turn a slow reply into a timeout; beyond about 50,
+ * Node's 1 ms timer resolution, not the scale, sets the pace.
+ */
+export const FAST_DEMO = { RBC_DEMO_TIME_SCALE: "50" } as const;
+
+let built = false;
+/**
+ * dist-cli/main.js, built first (once per test worker) if it is missing or older than its sources. The build
+ * replaces files atomically, so workers building at the same time do not disturb each other.
+ */
+export function cliEntry(): string {
+  if (!built) {
+    execFileSync(process.execPath, [BUILD_SCRIPT, "--if-stale", "--quiet"], { stdio: "inherit" });
+    built = true;
+  }
+  return CLI_MAIN;
+}
 
 export interface CliResult {
   code: number | null;
@@ -41,6 +75,8 @@ async function kill(running: Set<ChildProcess>): Promise<void> {
 
 export interface CliOptions {
   cwd?: string;
+  /** Extra environment variables (e.g. FAST_DEMO). */
+  env?: Readonly<Record<string, string>>;
   /** SIGKILL after this long (default 20 s). */
   timeoutMs?: number;
 }
@@ -63,9 +99,9 @@ export const startCli = defaultScope.start;
 export const runCli = defaultScope.run;
 
 function startIn(running: Set<ChildProcess>, args: readonly string[], options: CliOptions): CliProcess {
-  const child = spawn(process.execPath, [BIN, ...args], {
+  const child = spawn(process.execPath, [cliEntry(), ...args], {
     cwd: options.cwd ?? REPO,
-    env: { ...process.env, RBC_PORT: "", NO_COLOR: "1" },
+    env: { ...process.env, RBC_PORT: "", RBC_DEMO_TIME_SCALE: "", NO_COLOR: "1", ...options.env },
     stdio: ["ignore", "pipe", "pipe"],
   });
   running.add(child);
@@ -81,17 +117,26 @@ function startIn(running: Set<ChildProcess>, args: readonly string[], options: C
           if (!m) return false;
           clearTimeout(timer);
           child[stream]?.off("data", onData);
+          child.off("close", onClose);
           resolve(m);
           return true;
         };
         const onData = () => void check();
-        const timer = setTimeout(() => {
+        const fail = (why: string) => {
+          clearTimeout(timer);
           child[stream]?.off("data", onData);
+          child.off("close", onClose);
           reject(
-            new Error(`timed out waiting for ${pattern} on ${stream}; got:\n${proc[stream]}\n${proc.stderr}`),
+            new Error(`${why} waiting for ${pattern} on ${stream}; got:\n${proc[stream]}\n${proc.stderr}`),
           );
-        }, timeoutMs);
-        if (!check()) child[stream]?.on("data", onData);
+        };
+        // Output is all in once the process has closed: no point waiting for the timeout then.
+        const onClose = () => void (check() || fail("rbc exited"));
+        const timer = setTimeout(() => fail("timed out"), timeoutMs);
+        if (!check()) {
+          child[stream]?.on("data", onData);
+          child.once("close", onClose);
+        }
       });
     },
   };

@@ -1,12 +1,17 @@
-import { readdir, readFile } from "node:fs/promises";
-import { join } from "node:path";
+import { mkdtemp, readdir, readFile, rm, writeFile } from "node:fs/promises";
+import { tmpdir } from "node:os";
+import { dirname, join } from "node:path";
 import { PassThrough } from "node:stream";
 import { describe, expect, it } from "vitest";
+import { bundleState } from "../../scripts/build-cli.mjs";
 import { splitCommand, wantsHelp } from "../../src/cli/args.ts";
 import { Cleanups } from "../../src/cli/cleanups.ts";
 import type { RunEnv } from "../../src/cli/command.ts";
+import { runCommand } from "../../src/cli/commands/run.ts";
 import { parseZeroList } from "../../src/cli/commands/zeros.ts";
 import { type ConfirmAnswer, confirm } from "../../src/cli/confirm.ts";
+import { demoTimeScale } from "../../src/cli/connect.ts";
+import { OrderedClock } from "../../src/cli/demo-clock.ts";
 import { errorLine, UsageError } from "../../src/cli/errors.ts";
 import { Output } from "../../src/cli/output.ts";
 import { ProgressBar } from "../../src/cli/progress.ts";
@@ -15,9 +20,9 @@ import { SimLink } from "../../src/cli/sim-link.ts";
 import { SimTrace, type SimTraceLine } from "../../src/cli/sim-trace.ts";
 import { RbcError } from "../../src/device/errors.ts";
 import { encodeDownloadStart, fromHex, toHex } from "../../src/protocol/index.ts";
-import { VirtualClock } from "../../src/shared/clock.ts";
+import { type Clock, type TimerId, VirtualClock } from "../../src/shared/clock.ts";
 import { SimulatedRbc } from "../../src/sim/index.ts";
-import { REPO } from "../cli/spawn-cli.ts";
+import { cliEntry, REPO } from "../cli/spawn-cli.ts";
 
 const VERSION_REPLY = fromHex("FF FF AA 55 AA 55 37 BA 12 01 00 00 00 02 02 17 15");
 
@@ -265,5 +270,145 @@ describe("layering", () => {
       if (/node-serial-transport|from "serialport"/.test(text)) offenders.push(file);
     }
     expect(offenders).toEqual([]);
+  });
+});
+
+describe("demo robot time scale (RBC_DEMO_TIME_SCALE)", () => {
+  it("is 1 unless set, and refuses what is not a number above 0 (up to 1000)", () => {
+    expect(demoTimeScale({})).toBe(1);
+    expect(demoTimeScale({ RBC_DEMO_TIME_SCALE: "" })).toBe(1);
+    expect(demoTimeScale({ RBC_DEMO_TIME_SCALE: "10" })).toBe(10);
+    expect(demoTimeScale({ RBC_DEMO_TIME_SCALE: " 0.5 " })).toBe(0.5);
+    for (const bad of ["0", "-2", "fast", "Infinity", "1001"]) {
+      expect(() => demoTimeScale({ RBC_DEMO_TIME_SCALE: bad }, "run")).toThrow(UsageError);
+    }
+  });
+
+  /** A base clock that moves only when told, and whose timers fire only when told: a stalled process. */
+  class StallingClock implements Clock {
+    time = 0;
+    private readonly timers = new Map<TimerId, () => void>();
+    private id = 0;
+    now = () => this.time;
+    setTimeout = (fn: () => void): TimerId => {
+      this.timers.set(++this.id, fn);
+      return this.id;
+    };
+    clearTimeout = (id: TimerId) => void this.timers.delete(id);
+    /** Resumes at `time`: every timer set meanwhile fires now, at once. */
+    resume(time: number) {
+      this.time = time;
+      const due = [...this.timers.values()];
+      this.timers.clear();
+      for (const fn of due) fn();
+    }
+  }
+  const settled = async () => {
+    for (let i = 0; i < 20; i++) await new Promise((r) => setImmediate(r));
+  };
+
+  it("after a stall, a reply set off step by step still comes before a timeout that was due later", async () => {
+    const base = new StallingClock();
+    const clock = new OrderedClock(base);
+    const events: string[] = [];
+    const timeout = clock.setTimeout(() => events.push("timeout"), 400);
+    // The simulator's reply: a first step at 10 ms whose promise chain sets the last step, 5 ms later.
+    clock.setTimeout(() => {
+      events.push(`step at ${clock.now()}`);
+      void Promise.resolve().then(() =>
+        clock.setTimeout(() => {
+          events.push(`reply at ${clock.now()}`);
+          clock.clearTimeout(timeout);
+        }, 5),
+      );
+    }, 10);
+    expect(clock.now()).toBe(0);
+    base.resume(1000); // a stall: everything is overdue at once
+    expect(clock.now()).toBe(10); // robot time waits for the timer that has not run yet
+    await settled();
+    expect(events).toEqual(["step at 10", "reply at 15"]);
+    expect(clock.now()).toBe(1000); // nothing pending: robot time catches up with the base clock
+    base.resume(2000);
+    await settled();
+    expect(events).toHaveLength(2); // the timeout was cleared
+  });
+
+  it("runs the simulator and the client on one faster clock; rbc reports the robot's time", async () => {
+    const { out, text } = collectingOutput(true);
+    const cleanups = new Cleanups();
+    const env: RunEnv = {
+      argv: ["7", "--demo", "--json"],
+      signal: new AbortController().signal,
+      onCleanup: (fn) => cleanups.add(fn),
+      out,
+      setExitNote: () => {},
+      stdin: process.stdin,
+      cwd: REPO,
+      env: { RBC_DEMO_TIME_SCALE: "20" },
+    };
+    const started = performance.now();
+    try {
+      expect(await runCommand.run(env)).toBe(0);
+    } finally {
+      await cleanups.run();
+    }
+    const realMs = performance.now() - started;
+    await new Promise((r) => setImmediate(r));
+    const [done] = JSON.parse(text.stdout).completed;
+    // The basic posture takes about 1.8 s of robot time: about 90 real ms at 20 times.
+    expect(done.elapsedMs).toBeGreaterThanOrEqual(1700);
+    expect(realMs).toBeLessThan(done.elapsedMs / 2);
+  });
+});
+
+describe("the built CLI (dist-cli/)", () => {
+  it("is fresh, missing or stale by its manifest and the times of the files it was built from", async () => {
+    const dir = await mkdtemp(join(tmpdir(), "rbc-bundle-"));
+    try {
+      const manifest = (builtAt: number, inputs: string[]) =>
+        writeFile(join(dir, "manifest.json"), JSON.stringify({ entry: "main.js", builtAt, inputs }));
+      expect(bundleState(dir)).toBe("missing");
+      await manifest(Date.now(), ["package.json"]);
+      expect(bundleState(dir)).toBe("missing"); // no main.js
+      await writeFile(join(dir, "main.js"), "");
+      expect(bundleState(dir)).toBe("fresh");
+      await manifest(0, ["package.json"]);
+      expect(bundleState(dir)).toBe("stale"); // package.json changed after the build
+      await manifest(Date.now(), ["package.json", "src/cli/gone.ts"]);
+      expect(bundleState(dir)).toBe("stale"); // a source went away
+    } finally {
+      await rm(dir, { recursive: true, force: true });
+    }
+  });
+
+  it("--help and --demo never load serialport: only chunks reached by a dynamic import do", async () => {
+    const main = cliEntry(); // built if missing or stale
+    const outDir = dirname(main);
+    const STATIC = /(?:^|\n)\s*(?:import|export)\s[^;]*?from\s*"([^"]+)"|(?:^|\n)\s*import\s*"([^"]+)"/g;
+    const DYNAMIC = /\bimport\(\s*"([^"]+)"\s*\)/g;
+    /** The bare specifiers (packages) a module and its static imports load, and its dynamic imports. */
+    async function walk(files: string[]) {
+      const seen = new Set<string>();
+      const packages = new Set<string>();
+      const dynamic = new Set<string>();
+      const queue = [...files];
+      for (let file = queue.shift(); file !== undefined; file = queue.shift()) {
+        if (seen.has(file)) continue;
+        seen.add(file);
+        const code = await readFile(join(outDir, file), "utf8");
+        for (const m of code.matchAll(STATIC)) {
+          const spec = (m[1] ?? m[2])!;
+          if (spec.startsWith("./")) queue.push(spec.slice(2));
+          else packages.add(spec);
+        }
+        for (const m of code.matchAll(DYNAMIC)) if (m[1]!.startsWith("./")) dynamic.add(m[1]!.slice(2));
+      }
+      return { seen, packages, dynamic };
+    }
+    const start = await walk(["main.js"]);
+    expect(start.packages.has("serialport")).toBe(false);
+    expect([...start.packages].filter((p) => !p.startsWith("node:"))).toEqual([]); // all else is bundled
+    const later = await walk([...start.dynamic]);
+    expect(later.packages.has("serialport")).toBe(true);
   });
 });

@@ -76,7 +76,7 @@ answers nothing, so a new rbc cannot connect ("no robot answered").`,
         return EXIT.interrupted;
       }
       env.out.line(`Running ${name}…`);
-      const started = performance.now();
+      const started = robot.clock.now();
       try {
         await robot.client.runMotion(motion, { signal: env.signal });
       } catch (e) {
@@ -99,7 +99,7 @@ answers nothing, so a new rbc cannot connect ("no robot answered").`,
         }
         throw e;
       }
-      const elapsedMs = Math.round(performance.now() - started);
+      const elapsedMs = Math.round(robot.clock.now() - started);
       results.push({ motion, name, elapsedMs });
       env.out.line(`Done: ${name} in ${(elapsedMs / 1000).toFixed(1)} s.`);
     }

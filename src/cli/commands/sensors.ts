@@ -1,3 +1,4 @@
+import type { Clock } from "../../shared/clock.ts";
 import { intOption, noExtraArguments, parseCommand } from "../args.ts";
 import type { CommandDef } from "../command.ts";
 import { connectRobot } from "../connect.ts";
@@ -8,12 +9,13 @@ const OPTIONS = {
   count: { type: "string" },
 } as const;
 
-function sleep(ms: number, signal: AbortSignal): Promise<void> {
+/** Waits `ms` of the robot's time (see Robot.clock), or until `signal` aborts. */
+function sleep(clock: Clock, ms: number, signal: AbortSignal): Promise<void> {
   return new Promise((resolve) => {
     if (signal.aborted) return resolve();
-    const timer = setTimeout(done, ms);
+    const timer = clock.setTimeout(done, ms);
     function done() {
-      clearTimeout(timer);
+      clock.clearTimeout(timer);
       signal.removeEventListener("abort", done);
       resolve();
     }
@@ -43,19 +45,19 @@ Ctrl-C is the normal way to end it: exit code 0.`,
     const interval = intOption("sensors", "interval-ms", values["interval-ms"], 200, 20, 3_600_000);
     const count = intOption("sensors", "count", values.count, Number.POSITIVE_INFINITY, 1, 1_000_000_000);
     const robot = await connectRobot("sensors", values, env, { handlesInterrupt: true });
-    const started = performance.now();
+    const started = robot.clock.now();
     if (!env.out.json) env.out.note("Reading the sensors; Ctrl-C to stop.");
     for (let i = 0; i < count && !env.signal.aborted; i++) {
       const distanceCm = await robot.client.readDistance();
       const accelerometer = await robot.client.readAccelerometer();
-      const ms = Math.round(performance.now() - started);
+      const ms = Math.round(robot.clock.now() - started);
       env.out.jsonLine({ ms, distanceCm, accelerometer });
       const { x, y, z } = accelerometer;
       const axis = (v: number) => String(v).padStart(4);
       env.out.line(
         `${(ms / 1000).toFixed(1).padStart(7)} s  distance ${String(distanceCm).padStart(2)} cm   accel x ${axis(x)}  y ${axis(y)}  z ${axis(z)}`,
       );
-      if (i + 1 < count) await sleep(interval, env.signal);
+      if (i + 1 < count) await sleep(robot.clock, interval, env.signal);
     }
     return EXIT.ok;
   },

@@ -20,7 +20,7 @@ length, 0.3 to 5.9 s). The RBC handles nothing else while a sound plays. Ctrl-C 
     noExtraArguments("sound", positionals, 1);
     const sound = intArgument("sound", "The sound number", positionals[0], 1, SOUND_COUNT);
     const robot = await connectRobot("sound", values, env, { handlesInterrupt: true });
-    const started = performance.now();
+    const started = robot.clock.now();
     env.out.line(`Playing sound ${sound} (${soundLengthMs(sound)} ms)…`);
     try {
       await robot.client.runSound(sound, { signal: env.signal });
@@ -34,7 +34,7 @@ length, 0.3 to 5.9 s). The RBC handles nothing else while a sound plays. Ctrl-C 
       }
       throw e;
     }
-    const elapsedMs = Math.round(performance.now() - started);
+    const elapsedMs = Math.round(robot.clock.now() - started);
     env.out.result({ ok: true, sound, lengthMs: soundLengthMs(sound), elapsedMs });
     env.out.line(`Done in ${(elapsedMs / 1000).toFixed(1)} s.`);
     return EXIT.ok;
