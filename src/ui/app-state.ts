@@ -1,20 +1,33 @@
-import type { ClientMode, ClientState, SubscriptionKind } from "../device/index.ts";
-import type { MotionFilesState, MotionsState } from "./motions/motions-state.ts";
-import type { LogLine } from "./packet-log.ts";
-import type { SensorsState } from "./sensors/sensors-state.ts";
-import type { ServosState } from "./servos/servos-state.ts";
+import type { ConnectionState, KnownPort } from "./features/connection/state.ts";
+import { initialConnection } from "./features/connection/state.ts";
+import type { LogViewState } from "./features/log/state.ts";
+import { initialLogView } from "./features/log/state.ts";
+import type { MotionFilesState, MotionsState } from "./features/motions/state.ts";
+import type { DeviceInfoState } from "./features/robot/state.ts";
+import { initialDeviceInfo } from "./features/robot/state.ts";
+import type { SensorsState } from "./features/sensors/state.ts";
+import type { ServosState } from "./features/servos/state.ts";
+import type { ZerosState } from "./features/zeros/state.ts";
+import { initialZeros } from "./features/zeros/state.ts";
 
-/** Everything the panel shows, in one object (see store.ts). Views render from it; actions update it. */
+export type {
+  ConnectionPhase,
+  ConnectionState,
+  KnownPort,
+  RobotKind,
+  RobotLabel,
+} from "./features/connection/state.ts";
+export type { LogViewState } from "./features/log/state.ts";
+export type { DeviceInfoState } from "./features/robot/state.ts";
+export type { ZerosState } from "./features/zeros/state.ts";
 
-export type ConnectionPhase = "disconnected" | "choosing" | "connecting" | "handshaking" | "connected";
-
-export type RobotKind = "hardware" | "demo";
-
-export interface RobotLabel {
-  kind: RobotKind;
-  /** "Demo robot", or the port's description for hardware. */
-  name: string;
-}
+/**
+ * Everything the panel shows, in one object (see store.ts). Views render from it; actions, controllers and the
+ * session update it. Each feature (src/ui/features/<name>/) owns its part: its type, its initial value and
+ * how it is reset. The features whose code loads with their view (motions, sensors, servos) keep their part
+ * optional: undefined means "initial", filled in by the feature's own selector (`motionsOf`, `sensorsOf`,
+ * `servosOf`), so the first page load never carries their code.
+ */
 
 export type Tone = "info" | "ok" | "verified" | "warning" | "danger";
 
@@ -23,70 +36,6 @@ export interface Notice {
   tone: Tone;
   text: string;
   detail?: string;
-}
-
-export interface ConnectionState {
-  phase: ConnectionPhase;
-  robot?: RobotLabel;
-  /** The client's mode once connected ("packet" normally, "direct" after Stop or for servo control). */
-  mode?: ClientMode;
-  /** True after Stop made every servo limp, until the panel moves a servo or leaves direct mode. */
-  limp?: boolean;
-  /** Mirrored from the client: motion 7 has answered in this connection (the 7-first rule is satisfied). */
-  basicPostureConfirmed?: boolean;
-  /** Mirrored from the client: the motion it is waiting on (clock ms of the client's clock). */
-  playing?: ClientState["playing"];
-  /** Mirrored from the client: the sound it is waiting on. */
-  sounding?: ClientState["sounding"];
-  /** Mirrored from the client: the event subscription it keeps armed. */
-  subscription?: SubscriptionKind;
-  firmware?: { major: number; minor: number };
-  serialNumber?: string;
-  platform?: number;
-  /** Why the link was lost (cable pulled, …), shown on the disconnected card. */
-  lostReason?: string;
-  /** Operations that were running when the link was lost and so did not finish. */
-  interrupted: string[];
-  /** Why the last connect attempt failed. */
-  problem?: Notice;
-  /** Open the "Can't find your robot?" help (after a cancelled chooser). */
-  showHelp: boolean;
-}
-
-export interface KnownPort {
-  port: SerialPort;
-  label: string;
-}
-
-export interface DeviceInfoState {
-  errorCode?: number;
-  freeMotion?: number;
-  freeAction?: number;
-  loading: boolean;
-  readAt?: number;
-  notice?: Notice;
-}
-
-export interface ZerosState {
-  /** The table the robot holds, as last read or verified. */
-  stored?: number[];
-  /** The editor's text per servo 0-15 (text, so that a half-typed or invalid value can be shown). */
-  draft: string[];
-  /** Where the editor's values came from, for people ("the robot", "factory defaults", a file name). */
-  source?: string;
-  busy?: "reading" | "writing";
-  confirming: boolean;
-  result?: Notice;
-  fileNotice?: Notice;
-}
-
-export interface LogViewState {
-  paused: boolean;
-  /** Bumped when the packet log changes, so the view re-renders. */
-  revision: number;
-  /** What the view shows while paused (the newest lines at the moment of pausing). */
-  frozen?: readonly LogLine[];
-  notice?: Notice;
 }
 
 export interface AppState {
@@ -107,7 +56,7 @@ export interface AppState {
   stopNotice?: Notice;
   /** Motion files opened in the Motions view (kept across connections: they are files on this computer). */
   motionFiles?: MotionFilesState;
-  /** Uploads, runs and sounds of this connection (reset on every connection). */
+  /** Uploads, runs and sounds of this connection. */
   motions?: MotionsState;
   /** The Sensors view of this connection. */
   sensors?: SensorsState;
@@ -127,12 +76,30 @@ export function initialState(env: {
   return {
     ...env,
     viewsLoaded: 0,
-    connection: { phase: "disconnected", interrupted: [], showHelp: false },
+    connection: initialConnection(),
     knownPorts: [],
     showAllPorts: false,
     running: [],
-    device: { loading: false },
-    zeros: { draft: [], confirming: false },
-    log: { paused: false, revision: 0 },
+    device: initialDeviceInfo(),
+    zeros: initialZeros(),
+    log: initialLogView(),
+  };
+}
+
+/**
+ * The state of every feature that belongs to one connection, as a new connection starts it: the device card,
+ * the zeros editor, Stop's outcome, the running operations, uploads, runs, sensors, servos and the safety
+ * acknowledgements. Motion files and the packet log are kept (they are on this computer).
+ */
+export function freshConnectionState(): Partial<AppState> {
+  return {
+    device: initialDeviceInfo(),
+    zeros: initialZeros(),
+    stopNotice: undefined,
+    running: [],
+    motions: undefined,
+    sensors: undefined,
+    servos: undefined,
+    acks: undefined,
   };
 }

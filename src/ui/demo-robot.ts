@@ -1,23 +1,33 @@
+import { type Clock, realClock, scaledClock } from "../shared/clock.ts";
 import { MockSerialPort, SimulatedRbc } from "../sim/index.ts";
 
-let currentSim: SimulatedRbc | undefined;
+export interface DemoRobot {
+  port: MockSerialPort;
+  /** The simulated RBC, so that the Sensors view can press its buttons and change what its sensors see. */
+  sim: SimulatedRbc;
+  /** The time the simulator runs on; the client of this connection must use the same one. */
+  clock: Clock;
+}
+
+export interface DemoRobotOptions {
+  /**
+   * Runs the demo robot's time this many times faster than real time (browser tests only; people always get
+   * 1). The simulator, the mock port and the client share the clock, so every duration and timeout keeps its
+   * proportions.
+   */
+  timeScale?: number;
+}
 
 /**
  * The demo robot: a simulated RBC (firmware 2.23, HUNO) behind a mock serial port with a small adapter
  * latency. Its accelerometer reads with a little seeded noise around an upright robot, so the Sensors view
  * shows something alive. Loaded with a dynamic import, so the simulator is not part of the initial bundle.
+ * Every connection to the demo robot gets a new one.
  */
-export function createDemoPort(): MockSerialPort {
-  const sim = new SimulatedRbc({ accelerometerNoise: { seed: Date.now() & 0xffff, amplitude: 3 } });
+export function createDemoRobot(options: DemoRobotOptions = {}): DemoRobot {
+  const scale = options.timeScale ?? 1;
+  const clock = scale === 1 ? realClock : scaledClock(scale);
+  const sim = new SimulatedRbc({ clock, accelerometerNoise: { seed: Date.now() & 0xffff, amplitude: 3 } });
   sim.setAccelerometer(2, -4, 62);
-  currentSim = sim;
-  return new MockSerialPort(sim, { latencyMs: 2 });
-}
-
-/**
- * The simulated RBC of the demo robot created last, so that the Sensors view can "press" its buttons, send IR
- * keys and change what its sensors see. Only meaningful while the demo robot is the connected robot.
- */
-export function demoSim(): SimulatedRbc | undefined {
-  return currentSim;
+  return { port: new MockSerialPort(sim, { clock, latencyMs: 2 }), sim, clock };
 }

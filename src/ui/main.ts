@@ -1,85 +1,103 @@
 import "./styles.css";
 import { render } from "lit-html";
 import { initialState } from "./app-state.ts";
-import { LOG_CAPACITY, PacketLog } from "./packet-log.ts";
+import { refreshKnownPorts, stopAll } from "./features/connection/actions.ts";
+import { LOG_CAPACITY, PacketLog } from "./features/log/packet-log.ts";
 import { routeFromHash, ViewLoader } from "./router.ts";
 import { webSerial } from "./serial-ports.ts";
 import { Session } from "./session.ts";
+import { showRoute, viewArrived } from "./shell/actions.ts";
+import { appView } from "./shell/app-view.ts";
+import { DEFAULT_VIEW, VIEWS } from "./shell/registry.ts";
+import type { AppView, ViewContext } from "./shell/view-types.ts";
 import { createStore, frameScheduler } from "./store.ts";
-import { appView } from "./views/app-view.ts";
-import { DEFAULT_VIEW, VIEWS } from "./views/registry.ts";
-import type { AppView, ViewContext } from "./views/view-types.ts";
 
-const serial = webSerial();
-const store = createStore(
-  initialState({
-    serialSupported: serial !== undefined,
-    secureContext: window.isSecureContext,
-    route: routeFromHash(location.hash, VIEWS) ?? DEFAULT_VIEW,
-  }),
-);
-const packetLog = new PacketLog(LOG_CAPACITY, (clockMs) => performance.timeOrigin + clockMs);
-const session = new Session(store, packetLog);
-const loader = new ViewLoader(VIEWS, () => store.update((s) => ({ viewsLoaded: s.viewsLoaded + 1 })));
+/**
+ * Browser tests may run the demo robot faster (`timeScale` in tests/e2e/rbc-test-globals.ts, set before the
+ * page loads). Nothing else sets it, so people always get a demo robot on real time, and a robot on a cable is
+ * never affected.
+ */
+function demoTimeScaleForTests(): number | undefined {
+  const options = (window as unknown as { __rbcTestOptions?: { timeScale?: unknown } }).__rbcTestOptions;
+  const scale = options?.timeScale;
+  return typeof scale === "number" && Number.isFinite(scale) && scale > 0 ? scale : undefined;
+}
+
+/** Builds the panel into #app and wires it to the page: rendering, routes, Escape, the port list. */
+function startApp(root: HTMLElement): void {
+  const serial = webSerial();
+  const store = createStore(
+    initialState({
+      serialSupported: serial !== undefined,
+      secureContext: window.isSecureContext,
+      route: routeFromHash(location.hash, VIEWS) ?? DEFAULT_VIEW,
+    }),
+  );
+  const packetLog = new PacketLog(LOG_CAPACITY, (clockMs) => session.epochOf(clockMs));
+  const session = new Session(store, packetLog, { demo: { timeScale: demoTimeScaleForTests() } });
+  const app = { store, session, packetLog };
+  const loader = new ViewLoader(VIEWS, () => viewArrived(store));
+
+  /** Counts connections, so that each view is activated once per showing and connection. */
+  let connectionCount = 0;
+  let lastPhase = store.get().connection.phase;
+  /** The view activated last, until it is deactivated (another view, or no robot). */
+  let active: { key: string; view: AppView } | undefined;
+  let renderedPhase = lastPhase;
+
+  const renderNow = (): void => {
+    const state = store.get();
+    const ctx: ViewContext = { ...app, state };
+    render(appView(ctx, loader), root);
+    // When connecting or a lost link replaces the focused control, keep keyboard users in the main area.
+    if (state.connection.phase !== renderedPhase) {
+      renderedPhase = state.connection.phase;
+      const focused = document.activeElement;
+      if (!focused || focused === document.body)
+        document.getElementById("main")?.focus({ preventScroll: true });
+    }
+    const view = loader.get(state.route);
+    const key = state.connection.phase === "connected" && view ? `${state.route}#${connectionCount}` : "";
+    if (key !== (active?.key ?? "")) {
+      const previous = active;
+      active = key && view ? { key, view } : undefined;
+      previous?.view.deactivate?.(ctx);
+      if (active) active.view.activate?.(ctx);
+    }
+  };
+
+  const scheduleRender = frameScheduler(renderNow);
+  store.subscribe((state) => {
+    if (state.connection.phase === "connected" && lastPhase !== "connected") connectionCount++;
+    lastPhase = state.connection.phase;
+    scheduleRender();
+  });
+
+  window.addEventListener("hashchange", () => {
+    const route = routeFromHash(location.hash, VIEWS);
+    if (route) showRoute(store, route);
+  });
+
+  // Escape = Stop (limp) while a robot is connected, wherever the focus is.
+  document.addEventListener("keydown", (e) => {
+    if (e.key !== "Escape" || e.repeat || store.get().connection.phase !== "connected") return;
+    e.preventDefault();
+    void stopAll(app);
+  });
+
+  // Release the port when the page goes away, so the next page (or program) can open it.
+  window.addEventListener("pagehide", () => void session.disconnect());
+
+  if (serial) {
+    serial.addEventListener("connect", () => void refreshKnownPorts(store));
+    serial.addEventListener("disconnect", () => void refreshKnownPorts(store));
+    void refreshKnownPorts(store);
+  }
+
+  renderNow();
+}
 
 const root = document.getElementById("app");
 if (!root) throw new Error("index.html has no #app element");
 root.textContent = "";
-
-/** Counts connections, so that each view is activated once per showing and connection. */
-let connectionCount = 0;
-let lastPhase = store.get().connection.phase;
-/** The view activated last, until it is deactivated (another view, or no robot). */
-let active: { key: string; view: AppView } | undefined;
-let renderedPhase = lastPhase;
-
-function renderNow(): void {
-  const state = store.get();
-  const ctx: ViewContext = { state, store, session, packetLog };
-  render(appView(ctx, loader), root as HTMLElement);
-  // When connecting or a lost link replaces the focused control, keep keyboard users in the main area.
-  if (state.connection.phase !== renderedPhase) {
-    renderedPhase = state.connection.phase;
-    const focused = document.activeElement;
-    if (!focused || focused === document.body)
-      document.getElementById("main")?.focus({ preventScroll: true });
-  }
-  const view = loader.get(state.route);
-  const key = state.connection.phase === "connected" && view ? `${state.route}#${connectionCount}` : "";
-  if (key !== (active?.key ?? "")) {
-    const previous = active;
-    active = key && view ? { key, view } : undefined;
-    previous?.view.deactivate?.(ctx);
-    if (active) active.view.activate?.(ctx);
-  }
-}
-
-const scheduleRender = frameScheduler(renderNow);
-store.subscribe((state) => {
-  if (state.connection.phase === "connected" && lastPhase !== "connected") connectionCount++;
-  lastPhase = state.connection.phase;
-  scheduleRender();
-});
-
-window.addEventListener("hashchange", () => {
-  const route = routeFromHash(location.hash, VIEWS);
-  if (route && route !== store.get().route) store.update({ route });
-});
-
-// Escape = Stop (limp) while a robot is connected, wherever the focus is.
-document.addEventListener("keydown", (e) => {
-  if (e.key !== "Escape" || e.repeat || store.get().connection.phase !== "connected") return;
-  e.preventDefault();
-  void session.stop();
-});
-
-// Release the port when the page goes away, so the next page (or program) can open it.
-window.addEventListener("pagehide", () => void session.disconnect());
-
-if (serial) {
-  serial.addEventListener("connect", () => void session.refreshKnownPorts());
-  serial.addEventListener("disconnect", () => void session.refreshKnownPorts());
-  void session.refreshKnownPorts();
-}
-
-renderNow();
+startApp(root);

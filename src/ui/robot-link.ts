@@ -1,10 +1,14 @@
 import { RbcClient } from "../device/rbc-client.ts";
 import { type SerialPortLike, WebSerialTransport } from "../link/web-serial-transport.ts";
+import type { Clock } from "../shared/clock.ts";
+import { clockOfPort } from "./simulated-clock.ts";
 
 /**
- * The RbcClient over a Web Serial port (a real one or the demo's mock). Loaded with a dynamic import when the
- * first connection starts, so the device and protocol code stay out of the first page load.
+ * The RbcClient over a Web Serial port (a real one or the demo's mock), on the robot's clock: real time, or
+ * the clock of a simulated robot (`clock`, or the one a simulated port carries), shared so that durations and
+ * timeouts keep their proportions. Loaded with a dynamic import when the first connection starts, so the
+ * device and protocol code stay out of the first page load.
  */
-export function createRbcClient(port: SerialPortLike): RbcClient {
-  return new RbcClient(new WebSerialTransport(port));
+export function createRbcClient(port: SerialPortLike, clock: Clock = clockOfPort(port)): RbcClient {
+  return new RbcClient(new WebSerialTransport(port, { clock }), { clock });
 }

@@ -1,4 +1,4 @@
-import type { AppView, ViewRegistration } from "./views/view-types.ts";
+import type { AppView, ViewRegistration } from "./shell/view-types.ts";
 
 /** Hash routes: "#/zeros" → "zeros". Other hashes (in-page anchors) are not routes. */
 export function routeFromHash(hash: string, known: readonly ViewRegistration[]): string | undefined {

@@ -1,48 +1,89 @@
 import { RbcNotConnectedError } from "../device/errors.ts";
 import type { ClientState, RbcClient } from "../device/index.ts";
 import type { SerialPortLike } from "../link/index.ts";
-import type { AppState, ConnectionState, Notice, RobotLabel } from "./app-state.ts";
+import { type Clock, realClock } from "../shared/clock.ts";
+import type { SimulatedRbc } from "../sim/simulated-rbc.ts";
+import { type AppState, freshConnectionState } from "./app-state.ts";
+import type { AppContext } from "./context.ts";
+import type { DemoRobotOptions } from "./demo-robot.ts";
 import { chooserProblem, connectProblem, errorNotice } from "./error-text.ts";
-import type { PacketLog } from "./packet-log.ts";
-import { choosePort, describePort, forgetPort, grantedPorts, webSerial } from "./serial-ports.ts";
+import { refreshKnownPorts } from "./features/connection/actions.ts";
+import {
+  type ConnectionState,
+  connectingTo,
+  mirrored,
+  NOTHING_RUNNING,
+  type RobotLabel,
+} from "./features/connection/state.ts";
+import type { PacketLog } from "./features/log/packet-log.ts";
+import { Scope } from "./scope.ts";
+import { choosePort, describePort, webSerial } from "./serial-ports.ts";
 import type { Store } from "./store.ts";
 
 export const DEMO_ROBOT: RobotLabel = { kind: "demo", name: "Demo robot" };
 
-/** The client state the views show (the 7-first rule, what is playing, the subscription). */
-function mirrored(state: ClientState): Partial<ConnectionState> {
-  return {
-    basicPostureConfirmed: state.basicPostureConfirmed,
-    playing: state.playing,
-    sounding: state.sounding,
-    subscription: state.subscription,
-  };
+export interface SessionOptions {
+  /** How the demo robot is made (browser tests run it faster). */
+  demo?: DemoRobotOptions;
 }
 
-const NOTHING_RUNNING: Partial<ConnectionState> = {
-  limp: undefined,
-  playing: undefined,
-  sounding: undefined,
-  subscription: undefined,
-};
+/** A simulated robot in this page (the demo robot): its simulator and the clock it runs on. */
+interface Simulated {
+  sim: SimulatedRbc;
+  clock: Clock;
+}
 
 /**
  * The connection to one robot (hardware or the demo) and everything that runs on it. It owns the RbcClient,
  * mirrors its state into the store, feeds the packet log, and tracks running operations so that a lost link
- * can say which of them did not finish.
+ * can say which of them did not finish. It owns the scopes of the features' controllers: `pageScope` for the
+ * page's life, and `connectionScope`, a new one for every connection, ended (its controllers disposed) when
+ * the connection ends.
  */
 export class Session {
   private client: RbcClient | undefined;
+  private simulated: Simulated | undefined;
   private detachClient: Array<() => void> = [];
+  private readonly context: AppContext;
+  readonly pageScope: Scope<AppContext>;
+  private scope: Scope<AppContext>;
 
   constructor(
     private readonly store: Store<AppState>,
-    private readonly packetLog: PacketLog,
-  ) {}
+    packetLog: PacketLog,
+    private readonly options: SessionOptions = {},
+  ) {
+    this.context = { store, session: this, packetLog };
+    this.pageScope = new Scope(this.context, "page");
+    this.scope = new Scope(this.context, "connection");
+  }
 
   /** The connected client, or undefined. */
   get current(): RbcClient | undefined {
     return this.store.get().connection.phase === "connected" ? this.client : undefined;
+  }
+
+  /** The controllers of this connection (an empty scope while none is connected). */
+  get connectionScope(): Scope<AppContext> {
+    return this.scope;
+  }
+
+  /**
+   * The robot's time: real time, or the clock of the simulated robot of this connection. Durations the robot
+   * reports (`playing`, `sounding`) and progress shown against them are in this time.
+   */
+  get clock(): Clock {
+    return this.client?.clock ?? realClock;
+  }
+
+  /** Wall-clock ms (epoch) of a time of the robot's clock (packet log lines, sensor events). */
+  epochOf(clockMs: number): number {
+    return performance.timeOrigin + performance.now() - (this.clock.now() - clockMs);
+  }
+
+  /** The demo robot's simulator while the demo robot is the connected robot. */
+  get demoSim(): SimulatedRbc | undefined {
+    return this.current ? this.simulated?.sim : undefined;
   }
 
   /** Opens the chooser and connects to the chosen port. Call it straight from the click handler. */
@@ -69,8 +110,9 @@ export class Session {
   async connectDemo(): Promise<boolean> {
     this.setConnection({ phase: "connecting", robot: DEMO_ROBOT, problem: undefined, lostReason: undefined });
     try {
-      const { createDemoPort } = await import("./demo-robot.ts");
-      return await this.connectPort(createDemoPort(), DEMO_ROBOT);
+      const { createDemoRobot } = await import("./demo-robot.ts");
+      const demo = createDemoRobot(this.options.demo);
+      return await this.connectPort(demo.port, DEMO_ROBOT, demo);
     } catch (e) {
       this.setConnection({
         phase: "disconnected",
@@ -80,7 +122,7 @@ export class Session {
     }
   }
 
-  async connectPort(port: SerialPortLike, robot: RobotLabel): Promise<boolean> {
+  async connectPort(port: SerialPortLike, robot: RobotLabel, simulated?: Simulated): Promise<boolean> {
     await this.release();
     this.setConnection({ phase: "connecting", robot, problem: undefined, lostReason: undefined });
     let client: RbcClient;
@@ -88,7 +130,7 @@ export class Session {
       // The device and protocol code (and zod, through the .rbm validator) load with the first connection,
       // not with the first page.
       const { createRbcClient } = await import("./robot-link.ts");
-      client = createRbcClient(port);
+      client = createRbcClient(port, simulated?.clock);
     } catch (e) {
       this.setConnection({
         phase: "disconnected",
@@ -97,38 +139,14 @@ export class Session {
       return false;
     }
     this.client = client;
-    this.setConnection({
-      phase: "connecting",
-      robot,
-      mode: undefined,
-      limp: undefined,
-      basicPostureConfirmed: undefined,
-      playing: undefined,
-      sounding: undefined,
-      subscription: undefined,
-      firmware: undefined,
-      serialNumber: undefined,
-      platform: undefined,
-      lostReason: undefined,
-      interrupted: [],
-      problem: undefined,
-      showHelp: false,
-    });
-    this.store.update({
-      device: { loading: false },
-      zeros: { draft: [], confirming: false },
-      stopNotice: undefined,
-      running: [],
-      motions: undefined,
-      sensors: undefined,
-      servos: undefined,
-      acks: undefined,
-    });
+    this.simulated = simulated;
+    this.renewScope();
+    this.store.update({ connection: connectingTo(robot), ...freshConnectionState() });
     this.detachClient = [
       client.stateChanges.on((s) => this.onClientState(client, s)),
       client.log.on((entry) => {
-        this.packetLog.push(entry);
-        this.store.update((s) => ({ log: { ...s.log, revision: this.packetLog.revision } }));
+        this.context.packetLog.push(entry);
+        this.store.update((s) => ({ log: { ...s.log, revision: this.context.packetLog.revision } }));
       }),
     ];
     try {
@@ -146,7 +164,7 @@ export class Session {
         mode: client.mode,
         ...mirrored(client.state),
       });
-      void this.refreshKnownPorts();
+      void refreshKnownPorts(this.store);
       return true;
     } catch (e) {
       // If the link was lost meanwhile, onLost has already shown why.
@@ -181,7 +199,7 @@ export class Session {
     });
     this.store.update({ running: [], stopNotice: undefined });
     await client.close().catch(() => {});
-    void this.refreshKnownPorts();
+    void refreshKnownPorts(this.store);
   }
 
   /**
@@ -205,65 +223,6 @@ export class Session {
         return { running: i < 0 ? s.running : [...s.running.slice(0, i), ...s.running.slice(i + 1)] };
       });
     }
-  }
-
-  /** Stop — limp: every servo passive, whatever was running is cancelled. */
-  async stop(): Promise<void> {
-    const client = this.current;
-    if (!client) return;
-    this.store.update({ stopNotice: { tone: "warning", text: "Stopping: making every servo limp…" } });
-    let notice: Notice;
-    try {
-      const { confirmed, silent } = await client.stop();
-      notice =
-        silent.length === 0
-          ? {
-              tone: "warning",
-              text: `Stopped: all ${confirmed.length} servos are limp. Hold the robot, it cannot stand on its own now.`,
-            }
-          : {
-              tone: "danger",
-              text: `Stopped, but servo ${silent.join(", ")} did not confirm (${confirmed.length} limp). If anything still moves, switch the robot off.`,
-            };
-    } catch (e) {
-      notice = errorNotice("Stop failed. Switch the robot off.", e);
-    }
-    if (this.client === client) {
-      // The robot is limp and someone is holding it: the next movement asks again.
-      this.store.update((s) => ({ stopNotice: notice, acks: { ...s.acks, movement: false } }));
-      if (client.mode === "direct") this.setConnection({ limp: true });
-    }
-  }
-
-  /** Tells the panel that a servo was moved or the user took servo control: the servos are no longer all limp. */
-  servosTaken(): void {
-    if (this.store.get().connection.limp) this.setConnection({ limp: false });
-  }
-
-  async refreshKnownPorts(): Promise<void> {
-    const serial = webSerial();
-    if (!serial) return;
-    try {
-      this.store.update({ knownPorts: await grantedPorts(serial) });
-    } catch {
-      this.store.update({ knownPorts: [] });
-    }
-  }
-
-  async forget(port: SerialPort): Promise<void> {
-    try {
-      if (!(await forgetPort(port))) {
-        this.setConnection({
-          problem: {
-            tone: "warning",
-            text: "This browser cannot forget ports. Remove the permission in the site settings instead.",
-          },
-        });
-      }
-    } catch (e) {
-      this.setConnection({ problem: errorNotice("The port could not be forgotten.", e) });
-    }
-    await this.refreshKnownPorts();
   }
 
   private onClientState(client: RbcClient, state: ClientState): void {
@@ -314,13 +273,21 @@ export class Session {
       device: { ...s.device, loading: false },
       zeros: { ...s.zeros, busy: undefined, confirming: false },
     }));
-    void this.refreshKnownPorts();
+    void refreshKnownPorts(this.store);
+  }
+
+  /** The connection's controllers end with it: timers stop, an upload is cancelled, moves are dropped. */
+  private renewScope(): void {
+    this.scope.dispose();
+    this.scope = new Scope(this.context, "connection");
   }
 
   private forgetClient(): void {
     for (const detach of this.detachClient) detach();
     this.detachClient = [];
     this.client = undefined;
+    this.simulated = undefined;
+    this.renewScope();
   }
 
   private async release(): Promise<void> {

@@ -1,16 +1,22 @@
 /**
  * Bundled into an IIFE by the harness and injected before the app's scripts: a `navigator.serial` made of the
  * project's own FakeSerial, MockSerialPort and SimulatedRbc (headless Chromium's real chooser never settles).
+ * With `timeScale`, the simulated robot runs on a faster clock, which its port carries to the panel's client.
  */
+import { realClock, scaledClock } from "../../src/shared/clock.ts";
 import { FakeSerial, MockSerialPort, SimulatedRbc } from "../../src/sim/index.ts";
+import { SIMULATED_CLOCK } from "../../src/ui/simulated-clock.ts";
 import "./rbc-test-globals.ts";
 
 const options = window.__rbcTestOptions ?? {};
-const sim = new SimulatedRbc();
+const clock = (options.timeScale ?? 1) === 1 ? realClock : scaledClock(options.timeScale ?? 1);
+const sim = new SimulatedRbc({ clock });
 const port = new MockSerialPort(sim, {
+  clock,
   latencyMs: options.latencyMs ?? 2,
   baudPacing: options.baudPacing ?? false,
 });
+Object.defineProperty(port, SIMULATED_CLOCK, { value: clock });
 const serial = new FakeSerial([port], { granted: options.granted ?? false });
 serial.userCancels = options.userCancels ?? false;
 
@@ -19,4 +25,4 @@ Object.defineProperty(Navigator.prototype, "serial", {
   enumerable: true,
   get: () => serial,
 });
-window.__rbcTest = { sim, port, serial };
+window.__rbcTest = { sim, port, serial, clock };

@@ -9,6 +9,13 @@ export function rbmText(name: string): string {
   return readFileSync(new URL(name, FIXTURES), "utf8");
 }
 
+const EXAMPLES = new URL("../../examples/", import.meta.url);
+
+/** One of the project's example motions (examples/*.rbm), as the panel offers them. */
+export function exampleText(name: string): string {
+  return readFileSync(new URL(name, EXAMPLES), "latin1");
+}
+
 /** A file for the picker: name, MIME type and bytes. */
 export function rbmFile(name: string, text: string) {
   return { name, mimeType: "text/plain", buffer: Buffer.from(text, "latin1") };

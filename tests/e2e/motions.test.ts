@@ -1,7 +1,28 @@
 import type { Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { type AppHarness, connectRobot, cspViolations, squash, startHarness, watchPage } from "./harness.ts";
-import { imageHex, longMotion, rbmFile, rbmText, withSerial, withShortFrames } from "./motion-fixtures.ts";
+import { memoryFootprint } from "../../src/protocol/catalog.ts";
+import { motionImage } from "../../src/protocol/motion-image.ts";
+import { motionDurationMs, parseRbm } from "../../src/protocol/rbm.ts";
+import { formatSeconds } from "../../src/ui/features/motions/plot-data.ts";
+import {
+  type AppHarness,
+  connectRobot,
+  cspViolations,
+  FAST,
+  robotTime,
+  squash,
+  startHarness,
+  watchPage,
+} from "./harness.ts";
+import {
+  exampleText,
+  imageHex,
+  longMotion,
+  rbmFile,
+  rbmText,
+  withSerial,
+  withShortFrames,
+} from "./motion-fixtures.ts";
 import type { RbcTestOptions } from "./rbc-test-globals.ts";
 import "./rbc-test-globals.ts";
 
@@ -17,6 +38,8 @@ afterAll(async () => {
 
 /** A paced link (115200 baud, 16 ms FTDI latency), so uploads take as long as on the wire. */
 const PACED: RbcTestOptions = { baudPacing: true, latencyMs: 16 };
+/** The simulated robot's time (ms of its clock). */
+const robotNow = (page: Page) => page.evaluate(() => window.__rbcTest?.clock.now() ?? Number.NaN);
 
 async function openMotions(page: Page): Promise<void> {
   await connectRobot(page, app.url);
@@ -49,7 +72,8 @@ async function recordFigures(page: Page): Promise<void> {
 
 describe("motions view", () => {
   it("checks Hi.rbm, uploads it after the experimental notice, and the robot holds the exact image", async () => {
-    const { page, context } = await app.newPage({ options: PACED });
+    // The paced link 3 times faster: the progress of its 9 chunks still shows (figures, rate, time left).
+    const { page, context } = await app.newPage({ options: { ...PACED, timeScale: 3 } });
     const seen = watchPage(page, app.origin);
     await openMotions(page);
     const hi = rbmText("Hi.rbm");
@@ -121,7 +145,9 @@ describe("motions view", () => {
   });
 
   it("cancels an upload: sending stops, the robot records nothing, and the panel says how much was acknowledged", async () => {
-    const { page, context } = await app.newPage({ options: PACED });
+    // The paced link 4 times faster: the 17 KB upload still takes seconds of real time, and every timeout
+    // keeps a margin of at least 100 ms of real time on a busy machine.
+    const { page, context } = await app.newPage({ options: { ...PACED, timeScale: 4 } });
     await openMotions(page);
     const long = longMotion(rbmText("Hi.rbm"), 40);
     await page.getByTestId("rbm-files").setInputFiles(rbmFile("Long.rbm", long));
@@ -139,14 +165,14 @@ describe("motions view", () => {
     expect(await page.getByTestId("upload-progress").count()).toBe(0);
     // Nothing more goes out, and the robot holds no motion.
     const after = await bytesFromPc(page);
-    await page.waitForTimeout(400);
+    await robotTime(page, 400);
     expect(await bytesFromPc(page)).toBe(after);
     expect(await simMotionsHex(page)).toEqual([]);
     await context.close();
   });
 
   it("never sends a byte of a file with errors and says why in words", async () => {
-    const { page, context } = await app.newPage();
+    const { page, context } = await app.newPage({ options: FAST });
     await openMotions(page);
     const before = await bytesFromPc(page);
     await page
@@ -166,7 +192,7 @@ describe("motions view", () => {
       "Cannot upload: the file has 1 error (listed above). Nothing is sent.",
     );
     await upload.click({ force: true }).catch(() => {});
-    await page.waitForTimeout(200);
+    await robotTime(page, 200);
     expect(await bytesFromPc(page)).toBe(before);
     expect(await simMotionsHex(page)).toEqual([]);
     await context.close();
@@ -207,8 +233,61 @@ describe("motions view", () => {
     await context.close();
   });
 
+  it("opens one of the project's example motions from the keyboard, exactly like a picked file", async () => {
+    const { page, context } = await app.newPage({ options: FAST });
+    const seen = watchPage(page, app.origin);
+    const scripts: string[] = [];
+    page.on("request", (r) => {
+      if (r.resourceType() === "script") scripts.push(new URL(r.url()).pathname);
+    });
+    await openMotions(page);
+    const text = exampleText("squat.rbm");
+    const motion = parseRbm(text);
+    const image = motionImage(motion);
+    // The examples are not loaded until one is opened.
+    expect(scripts.some((s) => s.includes("squat"))).toBe(false);
+
+    // A disclosure, then one button per example that says what the motion does.
+    const examples = page.getByTestId("examples");
+    await examples.locator("summary").focus();
+    await page.keyboard.press("Enter");
+    const open = page.getByRole("button", { name: "Open squat.rbm" });
+    await open.waitFor();
+    const description = await open.getAttribute("aria-describedby");
+    expect(await page.locator(`#${description}`).textContent().then(squash)).toContain("squats twice");
+    await open.focus();
+    await page.keyboard.press("Enter");
+
+    const card = page.getByTestId("motion-file");
+    await card.waitFor();
+    expect(scripts.some((s) => s.includes("squat"))).toBe(true);
+    await page.getByText("Opened the example squat.rbm.").waitFor();
+    const facts = await card.textContent().then(squash);
+    const fact = (label: string, value: string | number) =>
+      expect(facts).toContain(`${label}${String(value)}`.replace(/\s+/g, " "));
+    expect(facts).toContain(`${motion.name} squat.rbm`);
+    fact("Scenes", motion.scenes.length);
+    fact("Servos", motion.servos.length);
+    fact("Plays for", formatSeconds(motionDurationMs(motion)));
+    fact("Image", `${image.length.toLocaleString("en-US")} bytes`);
+    fact("On the robot", `${memoryFootprint(image.length).toLocaleString("en-US")} bytes`);
+    expect(facts).toContain("Checked: no errors, no warnings.");
+    expect(await page.locator(".scene-table tbody tr").count()).toBe(motion.scenes.length);
+
+    // Uploaded like any other file: the robot holds exactly its image.
+    await card.getByTestId("upload-motion").click();
+    await page.getByRole("button", { name: "Upload (experimental)" }).click();
+    await page.getByText(/^Uploaded squat\.rbm/).waitFor();
+    expect(await simMotionsHex(page)).toEqual([imageHex(text)]);
+
+    expect(seen.errors).toEqual([]);
+    expect(seen.foreignRequests).toEqual([]);
+    expect(await cspViolations(page)).toEqual([]);
+    await context.close();
+  });
+
   it("guides to basic posture first, asks once before moving, stops a motion with 7, and Stop makes every servo limp", async () => {
-    const { page, context } = await app.newPage();
+    const { page, context } = await app.newPage({ options: FAST });
     await openMotions(page);
     const guidance = page.getByTestId("posture-guidance");
     expect(await guidance.textContent().then(squash)).toContain(
@@ -239,12 +318,20 @@ describe("motions view", () => {
     });
     expect(await guidance.count()).toBe(0);
 
-    // Stop motion sends 7: the robot ends the scene, then returns to basic posture.
+    // Stop motion sends 7: the robot ends the scene and holds that pose (no basic posture, PROTOCOL.md §3.6).
     await page.locator('[data-motion="2"]').click();
+    const motion2Started = await robotNow(page);
+    await page.getByTestId("running-motion").filter({ hasText: "Get up B" }).waitFor();
     await page.getByTestId("stop-motion").click();
-    await page.getByText(/Motion 2 \(Get up B \(from back\)\) stopped at the end of its scene/).waitFor();
-    expect(await page.evaluate(() => window.__rbcTest?.sim.playingMotion)).toBe(7);
-    await expect.poll(() => page.locator('[data-motion="1"]').isEnabled(), { timeout: 5000 }).toBe(true);
+    await page
+      .getByText(
+        /Motion 2 \(Get up B \(from back\)\) stopped at the end of its scene\. The robot holds the pose/,
+      )
+      .waitFor();
+    expect(await page.evaluate(() => window.__rbcTest?.sim.playingMotion)).toBeUndefined();
+    // Stopped well before motion 2's 6.6 s: the 7 took effect at the end of a scene.
+    expect((await robotNow(page)) - motion2Started).toBeLessThan(6600);
+    expect(await page.locator('[data-motion="1"]').isEnabled()).toBe(true);
 
     // The global Stop during a motion: every servo limp.
     await page.locator('[data-motion="1"]').click();
@@ -258,7 +345,7 @@ describe("motions view", () => {
   });
 
   it("says at once that an empty download slot holds no motion (the robot reports error 3)", async () => {
-    const { page, context } = await app.newPage();
+    const { page, context } = await app.newPage({ options: FAST });
     await openMotions(page);
     await page.locator('[data-motion="7"]').click();
     await page.locator("#confirm-move").click();
@@ -266,22 +353,23 @@ describe("motions view", () => {
       timeout: 6000,
     });
     await page.getByText(/Other download slots/).click();
-    const started = Date.now();
+    const started = await robotNow(page);
     await page.locator('[data-slot-motion="12"]').click();
     await page
       .getByText(/download slot 1 holds no motion \(the robot reports error 3\)/)
       .first()
       .waitFor({ timeout: 5000 });
-    // Noticed within about a second, not after the 60 s an unknown motion may take.
-    expect(Date.now() - started).toBeLessThan(5000);
+    // Noticed within about a second of the robot's time, not after the 60 s an unknown motion may take.
+    expect((await robotNow(page)) - started).toBeLessThan(5000);
     expect(await page.evaluate(() => window.__rbcTest?.sim.playingMotion)).toBeUndefined();
     await context.close();
   });
 
   it("plays a sound and keeps other robot actions disabled while it plays", async () => {
-    const { page, context } = await app.newPage();
+    const { page, context } = await app.newPage({ options: FAST });
     await openMotions(page);
-    await page.locator('[data-sound="1"]').click();
+    // Sound 7 (5.7 s of the robot's time) leaves time to look at the panel while it plays.
+    await page.locator('[data-sound="7"]').click();
     const playing = page.getByTestId("sound-playing");
     await playing.waitFor();
     expect(await playing.textContent().then(squash)).toContain(
@@ -289,13 +377,15 @@ describe("motions view", () => {
     );
     expect(await page.locator('[data-motion="7"]').isDisabled()).toBe(true);
     expect(await page.locator('[data-sound="2"]').isDisabled()).toBe(true);
-    await page.getByText("Sound 1 played (2.3 s).").waitFor({ timeout: 6000 });
+    expect(await page.evaluate(() => window.__rbcTest?.sim.state.playingSound)).toBe(7);
+    await page.getByText("Sound 7 played (5.7 s).").waitFor({ timeout: 6000 });
     expect(await page.locator('[data-motion="7"]').isEnabled()).toBe(true);
     await context.close();
   });
 
   it("on the demo robot uploads without asking, and a reset first puts the upload into slot 1", async () => {
-    const { page, context } = await app.newPage();
+    // The in-app demo robot on the faster clock too (its simulator and the panel's client share it).
+    const { page, context } = await app.newPage({ options: FAST });
     await page.goto(app.url);
     await page.getByRole("button", { name: "Try the demo robot" }).click();
     await page.getByTestId("device-card").waitFor();

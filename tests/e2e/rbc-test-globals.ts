@@ -1,3 +1,4 @@
+import type { Clock } from "../../src/shared/clock.ts";
 import type { FakeSerial, MockSerialPort, SimulatedRbc } from "../../src/sim/index.ts";
 
 /** What the injected fake `navigator.serial` exposes to tests (see fake-serial-entry.ts). */
@@ -5,6 +6,8 @@ export interface RbcTestHandle {
   sim: SimulatedRbc;
   port: MockSerialPort;
   serial: FakeSerial;
+  /** The simulated robot's clock (real time, or faster with `timeScale`), shared with the panel's client. */
+  clock: Clock;
 }
 
 /** Set by a test before the page loads, read by the fake. */
@@ -17,6 +20,12 @@ export interface RbcTestOptions {
   baudPacing?: boolean;
   /** USB adapter latency of the mock port in ms (default 2). */
   latencyMs?: number;
+  /**
+   * Runs the simulated robot's time this many times faster than real time (default 1): the fake port's robot
+   * and the in-app demo robot, each with the panel's client on the same clock, so every motion, sound, upload,
+   * timeout and polling period keeps its proportions. Never touches a real robot.
+   */
+  timeScale?: number;
 }
 
 declare global {

@@ -1,6 +1,14 @@
 import type { Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { type AppHarness, connectRobot, cspViolations, startHarness, watchPage } from "./harness.ts";
+import {
+  type AppHarness,
+  connectRobot,
+  cspViolations,
+  FAST,
+  robotTime,
+  startHarness,
+  watchPage,
+} from "./harness.ts";
 import "./rbc-test-globals.ts";
 
 let app: AppHarness;
@@ -33,17 +41,25 @@ const pressWhileListening = (page: Page, code: number) =>
 
 const bytesFromPc = (page: Page) => page.evaluate(() => window.__rbcTest?.port.stats.bytesFromPc ?? -1);
 
+/** Nothing goes out any more (polling and listening have stopped). Waits are in the robot's time. */
 async function expectQuiet(page: Page): Promise<void> {
-  // Let a request in flight finish, then nothing more may go out.
-  await page.waitForTimeout(300);
+  // A request in flight when polling stopped may still finish: first a poll period without a byte…
+  await expect
+    .poll(async () => {
+      const before = await bytesFromPc(page);
+      await robotTime(page, 300);
+      return (await bytesFromPc(page)) === before;
+    })
+    .toBe(true);
+  // …then nothing for a whole second (five poll periods).
   const before = await bytesFromPc(page);
-  await page.waitForTimeout(700);
+  await robotTime(page, 1000);
   expect(await bytesFromPc(page)).toBe(before);
 }
 
 describe("sensors view", () => {
   it("polls distance and accelerometer into live charts, lists button and remote events, and stops when left", async () => {
-    const { page, context } = await app.newPage();
+    const { page, context } = await app.newPage({ options: FAST });
     const seen = watchPage(page, app.origin);
     await openSensors(page);
     const distance = page.getByTestId("distance-value");
@@ -102,7 +118,7 @@ describe("sensors view", () => {
   });
 
   it("stops polling while the tab is hidden and after Stop, and resumes", async () => {
-    const { page, context } = await app.newPage();
+    const { page, context } = await app.newPage({ options: FAST });
     await openSensors(page);
     await page.getByTestId("distance-value").filter({ hasText: "10 cm" }).waitFor();
     await page.evaluate(() => {

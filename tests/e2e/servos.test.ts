@@ -87,6 +87,7 @@ describe("servos view", () => {
   });
 
   it("after a double Escape during a motion every servo is limp, and servo controls still wait for the safety notice", async () => {
+    // Real time: basic posture (1.8 s) must still be playing when the test presses Escape.
     const { page, context } = await app.newPage();
     await connectRobot(page, app.url);
     await page.getByTestId("memory-motion-text").filter({ hasText: "24,576" }).waitFor();

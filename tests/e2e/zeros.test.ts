@@ -3,7 +3,7 @@ import type { Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { FACTORY_ZEROS } from "../../src/protocol/index.ts";
 import { parseZerosBackup } from "../../src/protocol/zeros-backup.ts";
-import { type AppHarness, connectRobot, cspViolations, squash, startHarness } from "./harness.ts";
+import { type AppHarness, connectRobot, cspViolations, robotTime, squash, startHarness } from "./harness.ts";
 import "./rbc-test-globals.ts";
 
 let app: AppHarness;
@@ -85,7 +85,8 @@ describe("zeros editor", () => {
     expect(await slider.getAttribute("min")).toBe("51");
     expect(await slider.getAttribute("max")).toBe("81");
 
-    await page.waitForTimeout(100);
+    // Nothing can go out: a moment of the robot's time shows that nothing did.
+    await robotTime(page, 100);
     expect(await page.evaluate(() => window.__rbcTest?.port.written.length)).toBe(written);
     expect(await simZeros(page)).toEqual(before);
     await context.close();

@@ -2,11 +2,7 @@ import { describe, expect, it } from "vitest";
 import type { LogEntry } from "../../src/device/index.ts";
 import { FACTORY_ZEROS, fromHex } from "../../src/protocol/index.ts";
 import { formatFirmware, formatLocalDate } from "../../src/shared/format.ts";
-import { formatCount, formatDelta } from "../../src/ui/format.ts";
-import { formatLogLine, logAsText, PacketLog } from "../../src/ui/packet-log.ts";
-import { routeFromHash } from "../../src/ui/router.ts";
-import { describePort, PORT_FILTERS } from "../../src/ui/serial-ports.ts";
-import { createStore, frameScheduler } from "../../src/ui/store.ts";
+import { formatLogLine, logAsText, PacketLog } from "../../src/ui/features/log/packet-log.ts";
 import {
   checkDraft,
   clampZero,
@@ -14,7 +10,11 @@ import {
   factoryDraft,
   pendingChanges,
   toDraft,
-} from "../../src/ui/zeros-editor.ts";
+} from "../../src/ui/features/zeros/editor.ts";
+import { formatCount, formatDelta } from "../../src/ui/format.ts";
+import { routeFromHash } from "../../src/ui/router.ts";
+import { describePort, PORT_FILTERS } from "../../src/ui/serial-ports.ts";
+import { createStore, frameScheduler } from "../../src/ui/store.ts";
 
 function entry(n: number, direction: "in" | "out" = "out"): LogEntry {
   return {

@@ -1,9 +1,9 @@
 import { describe, expect, it } from "vitest";
-import { RingSeries } from "../../src/ui/sensors/ring-series.ts";
-import { addEvent, describeEvent, FOLD_MS } from "../../src/ui/sensors/sensor-events.ts";
-import { effectiveRate } from "../../src/ui/sensors/sensor-watch.ts";
-import { LatestMoveSender } from "../../src/ui/servos/move-sender.ts";
-import { clampToSafe } from "../../src/ui/servos/servo-actions.ts";
+import { addEvent, describeEvent, FOLD_MS } from "../../src/ui/features/sensors/events.ts";
+import { RingSeries } from "../../src/ui/features/sensors/ring-series.ts";
+import { effectiveRate } from "../../src/ui/features/sensors/watch.ts";
+import { LatestMoveSender } from "../../src/ui/features/servos/move-sender.ts";
+import { clampToSafe } from "../../src/ui/features/servos/state.ts";
 
 describe("rolling chart data", () => {
   it("keeps the last window of samples and gives x relative to the newest", () => {

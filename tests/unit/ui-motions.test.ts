@@ -1,8 +1,8 @@
 import { readFileSync } from "node:fs";
 import { describe, expect, it } from "vitest";
 import { parseRbm, serializeRbm } from "../../src/protocol/rbm.ts";
-import { checkEntry, entryFacts, inspectMotionText } from "../../src/ui/motions/motion-files.ts";
-import { formatSeconds, motionPlotData, sceneRows } from "../../src/ui/motions/plot-data.ts";
+import { checkEntry, entryFacts, inspectMotionText } from "../../src/ui/features/motions/files.ts";
+import { formatSeconds, motionPlotData, sceneRows } from "../../src/ui/features/motions/plot-data.ts";
 import {
   afterFailedUpload,
   afterReset,
@@ -13,14 +13,14 @@ import {
   observeFreeMemory,
   slotLabel,
   slotsLeft,
-} from "../../src/ui/motions/slot-book.ts";
+} from "../../src/ui/features/motions/slot-book.ts";
 import {
   addSample,
   formatRate,
   formatTimeLeft,
   type ProgressSample,
   uploadFigures,
-} from "../../src/ui/motions/upload-rate.ts";
+} from "../../src/ui/features/motions/upload-rate.ts";
 
 const HI = readFileSync(new URL("../../../shared/fixtures/rbm/Hi.rbm", import.meta.url), "utf8");
 
@@ -157,7 +157,10 @@ describe("motion files", () => {
       "rbm-frame-interval-short",
       "rbm-torque",
     ]);
-    expect(inspectMotionText("x.rbm", "not a motion").errors[0]?.message).toMatch(/should end with ":"/);
+    // Said in words (the exact sentence is the protocol layer's).
+    expect(inspectMotionText("x.rbm", "not a motion").errors[0]?.message).toMatch(
+      /not a Motionbuilder motion file|should end with ":"/,
+    );
     expect(inspectMotionText("empty.rbm", "").errors[0]?.message).toBe("The motion file is empty.");
   });
 

@@ -1,15 +1,13 @@
 /** Loads the chart module (uPlot and its CSS) on first use. */
 
 type ChartModule = typeof import("./uplot-charts.ts");
-let loading: Promise<ChartModule> | undefined;
 
+/**
+ * The browser keeps a module once it has loaded, so every call after the first resolves at once; a failed load
+ * (offline before the first visit) is simply tried again by the next chart that needs it.
+ */
 export function loadCharts(): Promise<ChartModule> {
-  loading ??= import("./uplot-charts.ts");
-  // A failed load (offline before the first visit) may be tried again later.
-  loading.catch(() => {
-    loading = undefined;
-  });
-  return loading;
+  return import("./uplot-charts.ts");
 }
 
 /** 16 distinguishable line colours: hue steps, two lightness levels. */

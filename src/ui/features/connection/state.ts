@@ -1,0 +1,74 @@
+import type { ClientMode, ClientState, SubscriptionKind } from "../../../device/index.ts";
+import type { Notice } from "../../app-state.ts";
+
+/** The connection's part of the app state: which robot, in which phase, and what its client reports. */
+
+export type ConnectionPhase = "disconnected" | "choosing" | "connecting" | "handshaking" | "connected";
+
+export type RobotKind = "hardware" | "demo";
+
+export interface RobotLabel {
+  kind: RobotKind;
+  /** "Demo robot", or the port's description for hardware. */
+  name: string;
+}
+
+export interface ConnectionState {
+  phase: ConnectionPhase;
+  robot?: RobotLabel;
+  /** The client's mode once connected ("packet" normally, "direct" after Stop or for servo control). */
+  mode?: ClientMode;
+  /** True after Stop made every servo limp, until the panel moves a servo or leaves direct mode. */
+  limp?: boolean;
+  /** Mirrored from the client: motion 7 has answered in this connection (the 7-first rule is satisfied). */
+  basicPostureConfirmed?: boolean;
+  /** Mirrored from the client: the motion it is waiting on (ms of the client's clock). */
+  playing?: ClientState["playing"];
+  /** Mirrored from the client: the sound it is waiting on. */
+  sounding?: ClientState["sounding"];
+  /** Mirrored from the client: the event subscription it keeps armed. */
+  subscription?: SubscriptionKind;
+  firmware?: { major: number; minor: number };
+  serialNumber?: string;
+  platform?: number;
+  /** Why the link was lost (cable pulled, …), shown on the disconnected card. */
+  lostReason?: string;
+  /** Operations that were running when the link was lost and so did not finish. */
+  interrupted: string[];
+  /** Why the last connect attempt failed. */
+  problem?: Notice;
+  /** Open the "Can't find your robot?" help (after a cancelled chooser). */
+  showHelp: boolean;
+}
+
+export interface KnownPort {
+  port: SerialPort;
+  label: string;
+}
+
+export function initialConnection(): ConnectionState {
+  return { phase: "disconnected", interrupted: [], showHelp: false };
+}
+
+/** A new connection starts from nothing the previous robot reported. */
+export function connectingTo(robot: RobotLabel): ConnectionState {
+  return { ...initialConnection(), phase: "connecting", robot };
+}
+
+/** The client state the views show (the 7-first rule, what is playing, the subscription). */
+export function mirrored(state: ClientState): Partial<ConnectionState> {
+  return {
+    basicPostureConfirmed: state.basicPostureConfirmed,
+    playing: state.playing,
+    sounding: state.sounding,
+    subscription: state.subscription,
+  };
+}
+
+/** What no longer runs once the link is gone. */
+export const NOTHING_RUNNING: Partial<ConnectionState> = {
+  limp: undefined,
+  playing: undefined,
+  sounding: undefined,
+  subscription: undefined,
+};

@@ -1,0 +1,66 @@
+import { html, nothing, type TemplateResult } from "lit-html";
+import { platformName } from "../../../protocol/catalog.ts";
+import { formatFirmware } from "../../../shared/format.ts";
+import type { ViewContext } from "../../shell/view-types.ts";
+import { stopAll } from "./actions.ts";
+import type { ConnectionState } from "./state.ts";
+
+/** The words of the connection state, as the top bar (and screen readers) say them. */
+export function connectionSummary(c: ConnectionState): string[] {
+  const robot = c.robot?.kind === "demo" ? "the demo robot" : "the robot";
+  switch (c.phase) {
+    case "disconnected":
+      return [c.lostReason ? "Disconnected — link lost" : "Not connected"];
+    case "choosing":
+      return ["Choosing a port…"];
+    case "connecting":
+      return [`Connecting to ${robot}: opening the port…`];
+    case "handshaking":
+      return [`Connecting to ${robot}: handshaking…`];
+    case "connected": {
+      const parts = c.robot?.kind === "demo" ? ["Demo robot", "Connected"] : ["Connected"];
+      if (c.platform !== undefined) parts.push(platformName(c.platform));
+      if (c.firmware) parts.push(`fw ${formatFirmware(c.firmware)}`);
+      if (c.serialNumber) parts.push(`SN ${c.serialNumber}`);
+      if (c.mode === "direct") parts.push(c.limp ? "servos limp" : "servo control");
+      return parts;
+    }
+  }
+}
+
+export function topBar(ctx: ViewContext): TemplateResult {
+  const c = ctx.state.connection;
+  const connected = c.phase === "connected";
+  const parts = connectionSummary(c);
+  return html`
+    <header class="top-bar">
+      <div class="brand">
+        <img src="./icon.svg" alt="" width="28" height="28" />
+        <span>RBC Panel</span>
+      </div>
+      <div class="status status--${c.phase === "disconnected" && c.lostReason ? "lost" : c.phase}" role="status" aria-live="polite" aria-atomic="true" data-testid="connection-status">
+        <span class="dot" aria-hidden="true"></span>
+        ${parts.map(
+          (p, i) =>
+            html`${i > 0 ? html`<span class="sep" aria-hidden="true">·</span>` : nothing}<span
+                class=${i === 0 && c.robot?.kind === "demo" && connected ? "demo-tag" : "status-part"}
+                >${p}</span
+              >`,
+        )}
+      </div>
+      ${
+        connected
+          ? html`<button
+              type="button"
+              class="btn btn--danger stop"
+              aria-keyshortcuts="Escape"
+              title="Make every servo limp at once (Escape)"
+              @click=${() => void stopAll(ctx)}
+            >
+              <span aria-hidden="true">■</span> Stop — limp <kbd aria-hidden="true">Esc</kbd>
+            </button>`
+          : nothing
+      }
+    </header>
+  `;
+}

@@ -1,0 +1,139 @@
+import type { RbmMotion } from "../../../protocol/rbm.ts";
+import type { RbmIssue } from "../../../protocol/rbm-validate.ts";
+import type { AppState, Notice } from "../../app-state.ts";
+import type { Store } from "../../store.ts";
+import { emptyBook, type SlotBook } from "./slot-book.ts";
+import type { ProgressSample } from "./upload-rate.ts";
+
+/**
+ * The Motions view's part of the app state: `motionFiles` (files opened on this computer, kept across
+ * connections) and `motions` (uploads, runs and sounds of this connection, reset with every connection). Both
+ * are undefined until first used; `motionFilesOf` and `motionsOf` give their initial values.
+ */
+
+/** One opened .rbm file. */
+export interface MotionFileEntry {
+  id: number;
+  fileName: string;
+  /** Size of the .rbm text. */
+  fileBytes: number;
+  /** The parsed motion; absent when the file could not be read as a motion. */
+  motion?: RbmMotion;
+  /** Its motion image (PROTOCOL.md §6.3), what an upload sends. */
+  image?: Uint8Array;
+  /** Errors that make the file unusable, found while reading it (the §7 rules that parseRbm enforces). */
+  errors: RbmIssue[];
+}
+
+export interface MotionFilesState {
+  entries: MotionFileEntry[];
+  /** The id the next opened file gets. */
+  nextId: number;
+  /** The file whose scenes and chart are shown. */
+  selected?: number;
+  /** What happened to the last files opened (e.g. one could not be read). */
+  notice?: Notice;
+  /** A drag with files is over the drop zone. */
+  dragging?: boolean;
+}
+
+/** An action file: uploaded byte for byte (no format is known). */
+export interface ActionFile {
+  fileName: string;
+  /** The file's size; its bytes are read only when it fits the action memory. */
+  size: number;
+  bytes: Uint8Array;
+}
+
+export type UploadTarget = { area: "motion"; entryId: number } | { area: "action" };
+
+export interface UploadRun {
+  target: UploadTarget;
+  fileName: string;
+  total: number;
+  /** Progress reports with their arrival time (robot-clock ms, the session's clock). */
+  samples: ProgressSample[];
+  /** What the panel is doing before the first byte ("Resetting the motion memory…"). */
+  phase: string;
+  /** Robot-clock ms (the session's clock) of the first progress report (the first byte is about to go out). */
+  sendingSince?: number;
+  cancelling?: boolean;
+}
+
+/** A motion the panel is waiting on. */
+export interface RunningMotion {
+  number: number;
+  name: string;
+  /** Known duration (built-in, or a motion uploaded in this connection). */
+  expectedMs?: number;
+  /** Robot-clock ms (the session's clock) when it was sent. */
+  startedAt: number;
+  /** "Stop motion" was pressed: 7 was sent and the robot finishes the current scene. */
+  stopping?: boolean;
+}
+
+export interface MotionsState {
+  resetMotionFirst: boolean;
+  resetActionFirst: boolean;
+  actionFile?: ActionFile;
+  /** An upload waiting for the user's confirmation (always for actions and for a real robot). */
+  confirming?: UploadTarget;
+  upload?: UploadRun;
+  uploadResult?: Notice;
+  motionBook: SlotBook;
+  actionBook: SlotBook;
+  run?: RunningMotion;
+  /** A motion waiting for the once-per-connection "the robot will move" confirmation. */
+  confirmMove?: number;
+  runNotice?: Notice;
+  soundNotice?: Notice;
+}
+
+export function motionFilesOf(s: AppState): MotionFilesState {
+  return s.motionFiles ?? { entries: [], nextId: 1 };
+}
+
+export function patchMotionFiles(store: Store<AppState>, patch: Partial<MotionFilesState>): void {
+  store.update((s) => ({ motionFiles: { ...motionFilesOf(s), ...patch } }));
+}
+
+/** The Motions view's state of this connection, created on first use. */
+export function motionsOf(s: AppState): MotionsState {
+  return (
+    s.motions ?? {
+      resetMotionFirst: false,
+      resetActionFirst: false,
+      motionBook: emptyBook("motion"),
+      actionBook: emptyBook("action"),
+    }
+  );
+}
+
+export function patchMotions(
+  store: Store<AppState>,
+  patch: Partial<MotionsState> | ((m: MotionsState) => Partial<MotionsState>),
+): void {
+  store.update((s) => {
+    const m = motionsOf(s);
+    return { motions: { ...m, ...(typeof patch === "function" ? patch(m) : patch) } };
+  });
+}
+
+/**
+ * Why robot actions (run, sound, upload) cannot start now, in words, or undefined when they can. The RBC
+ * drops every request while a sound plays, and every request but 7 while a motion plays.
+ */
+export function robotBusyReason(s: AppState): string | undefined {
+  const c = s.connection;
+  if (c.phase !== "connected") return "Connect a robot first.";
+  const m = s.motions;
+  if (c.sounding) {
+    return `Sound ${c.sounding.sound} is playing: the robot handles nothing else until it ends.`;
+  }
+  if (m?.upload) return "An upload is in progress.";
+  if (c.playing || m?.run) {
+    return "A motion is playing: the robot ignores everything but Basic posture (7) until it ends.";
+  }
+  if (s.running.length > 0) return `Busy: ${s.running.join(", ")}.`;
+  return undefined;
+}

@@ -1,0 +1,181 @@
+import { RbcCancelledError } from "../../../device/errors.ts";
+import type { RbcClient } from "../../../device/rbc-client.ts";
+import type { UploadOptions, UploadResult } from "../../../device/types.ts";
+import { ACTION_AREA_BYTES } from "../../../protocol/catalog.ts";
+import type { AppContext } from "../../context.ts";
+import { focusSoon } from "../../focus.ts";
+import { formatCount } from "../../format.ts";
+import { motionsController } from "./controllers.ts";
+import { checkedEntry, entryFacts } from "./files.ts";
+import { afterReset } from "./slot-book.ts";
+import { type ActionFile, motionsOf, patchMotions, robotBusyReason, type UploadTarget } from "./state.ts";
+import { addSample } from "./upload-rate.ts";
+import {
+  ACTION_SENTENCE,
+  bookKey,
+  EXPERIMENTAL_SENTENCE,
+  HOLD_ADVICE,
+  type Payload,
+  uploadFailed,
+  uploadSucceeded,
+} from "./upload-results.ts";
+
+export { ACTION_SENTENCE, EXPERIMENTAL_SENTENCE, HOLD_ADVICE };
+
+/** Uploads of motion images and action files (PROTOCOL.md §6), with the §6.3 safety decision. */
+
+/** What an upload would send, or why it must not (a file with errors never gets a byte sent). */
+export function uploadPayload(ctx: AppContext, target: UploadTarget): Payload | { refused: string } {
+  const s = ctx.store.get();
+  if (target.area === "action") {
+    const file: ActionFile | undefined = motionsOf(s).actionFile;
+    if (!file) return { refused: "Choose an action file first." };
+    if (file.size > ACTION_AREA_BYTES) {
+      return {
+        refused: `The file is ${formatCount(file.size)} bytes; the action memory holds ${formatCount(ACTION_AREA_BYTES)}. Nothing is sent.`,
+      };
+    }
+    if (file.bytes.length === 0) return { refused: "The action file is empty. Nothing is sent." };
+    return { area: "action", fileName: file.fileName, bytes: file.bytes, name: file.fileName };
+  }
+  const entry = s.motionFiles?.entries.find((e) => e.id === target.entryId);
+  if (!entry) return { refused: "The file is no longer open." };
+  const { errors } = checkedEntry(ctx, entry);
+  const facts = entryFacts(entry);
+  if (errors.length > 0 || !entry.image || !facts) {
+    const n = errors.length;
+    return {
+      refused: `Cannot upload: the file has ${n} ${n === 1 ? "error" : "errors"} (listed above). Nothing is sent.`,
+    };
+  }
+  return {
+    area: "motion",
+    fileName: entry.fileName,
+    bytes: entry.image,
+    name: facts.name,
+    durationMs: facts.durationMs,
+  };
+}
+
+/** Why the upload button is disabled, or undefined. */
+export function uploadBlocked(ctx: AppContext, target: UploadTarget): string | undefined {
+  const payload = uploadPayload(ctx, target);
+  if ("refused" in payload) return payload.refused;
+  return robotBusyReason(ctx.store.get());
+}
+
+/** Upload pressed: a real robot asks first (§6.3); the demo robot uploads at once. */
+export function requestUpload(ctx: AppContext, target: UploadTarget): void {
+  const s = ctx.store.get();
+  if (uploadBlocked(ctx, target)) return;
+  if (s.connection.robot?.kind === "demo") {
+    void startUpload(ctx, target);
+  } else {
+    patchMotions(ctx.store, { confirming: target, uploadResult: undefined });
+    focusSoon("confirm-upload");
+  }
+}
+
+export function cancelConfirm(ctx: AppContext): void {
+  patchMotions(ctx.store, { confirming: undefined });
+}
+
+export function cancelUpload(ctx: AppContext): void {
+  motionsController(ctx).upload?.abort();
+  patchMotions(ctx.store, (m) => (m.upload ? { upload: { ...m.upload, cancelling: true } } : {}));
+}
+
+/**
+ * The robot side of an upload: resets the area first if asked (telling `onReset` when it is done), then sends
+ * the bytes with progress until every chunk is acknowledged. One small function, so that a device-level
+ * upload (image, free memory, reset, upload, verify) can take its place.
+ */
+async function sendUpload(
+  client: RbcClient,
+  payload: Payload,
+  options: UploadOptions & { resetFirst: boolean; onReset: () => void },
+): Promise<UploadResult> {
+  const { area, bytes } = payload;
+  if (options.resetFirst) {
+    await client.resetMemoryPointer(area);
+    options.onReset();
+  }
+  if (options.signal?.aborted) throw new RbcCancelledError("Upload cancelled before any byte was sent.");
+  const sending = { signal: options.signal, onProgress: options.onProgress };
+  return area === "motion" ? client.writeMotion(bytes, sending) : client.writeAction(bytes, sending);
+}
+
+export async function startUpload(ctx: AppContext, target: UploadTarget): Promise<void> {
+  const { session, store } = ctx;
+  const s = store.get();
+  const payload = uploadPayload(ctx, target);
+  if ("refused" in payload || robotBusyReason(s)) return;
+  const { area, bytes, fileName } = payload;
+  const reset = area === "motion" ? motionsOf(s).resetMotionFirst : motionsOf(s).resetActionFirst;
+  const real = s.connection.robot?.kind !== "demo";
+  const abort = new AbortController();
+  const controller = motionsController(ctx);
+  controller.upload = abort;
+  let didReset = false;
+  patchMotions(store, {
+    confirming: undefined,
+    uploadResult: undefined,
+    upload: {
+      target,
+      fileName,
+      total: bytes.length,
+      samples: [],
+      phase: reset ? `Resetting the ${area} memory…` : `Checking free ${area} memory…`,
+    },
+  });
+  let result: UploadResult;
+  try {
+    result = await session.run(`Uploading ${fileName}`, (client) =>
+      sendUpload(client, payload, {
+        resetFirst: reset,
+        onReset: () => {
+          didReset = true;
+          patchMotions(store, (m) => ({
+            [bookKey(area)]: afterReset(m[bookKey(area)]),
+            ...(m.upload ? { upload: { ...m.upload, phase: `Checking free ${area} memory…` } } : {}),
+          }));
+        },
+        signal: abort.signal,
+        onProgress: (p) => {
+          const t = session.clock.now();
+          patchMotions(store, (m) =>
+            m.upload
+              ? {
+                  upload: {
+                    ...m.upload,
+                    phase: "Sending",
+                    samples: addSample(m.upload.samples, { t, acknowledged: p.acknowledged }),
+                    sendingSince: m.upload.sendingSince ?? t,
+                  },
+                }
+              : {},
+          );
+        },
+      }),
+    );
+  } catch (e) {
+    await uploadFailed(ctx, payload, e, didReset);
+    return;
+  } finally {
+    if (controller.upload === abort) controller.upload = undefined;
+  }
+  uploadSucceeded(ctx, payload, result, real);
+}
+
+export function setResetFirst(ctx: AppContext, area: "motion" | "action", on: boolean): void {
+  patchMotions(ctx.store, area === "motion" ? { resetMotionFirst: on } : { resetActionFirst: on });
+}
+
+export async function openActionFile(ctx: AppContext, file: File): Promise<void> {
+  const { store } = ctx;
+  const bytes = file.size <= ACTION_AREA_BYTES ? new Uint8Array(await file.arrayBuffer()) : new Uint8Array(0);
+  patchMotions(store, {
+    actionFile: { fileName: file.name, size: file.size, bytes },
+    uploadResult: undefined,
+  });
+}

@@ -1,0 +1,38 @@
+import type { AppContext } from "../../context.ts";
+import { errorNotice } from "../../error-text.ts";
+
+/** Reads what the device card shows: identity, error code and free memory of both areas. */
+export async function refreshDeviceInfo(ctx: AppContext): Promise<void> {
+  const { session, store } = ctx;
+  if (store.get().device.loading || !session.current) return;
+  store.update((s) => ({ device: { ...s.device, loading: true, notice: undefined } }));
+  try {
+    const info = await session.run("Reading device info", async (client) => {
+      const firmware = await client.readFirmwareVersion();
+      const serialNumber = await client.readSerialNumber();
+      const errorCode = await client.readErrorCode();
+      const freeMotion = await client.readAvailableMemory("motion");
+      const freeAction = await client.readAvailableMemory("action");
+      return { firmware, serialNumber, errorCode, freeMotion, freeAction, platform: client.state.platform };
+    });
+    store.update((s) => ({
+      connection: {
+        ...s.connection,
+        firmware: info.firmware,
+        serialNumber: info.serialNumber,
+        platform: info.platform ?? s.connection.platform,
+      },
+      device: {
+        loading: false,
+        errorCode: info.errorCode,
+        freeMotion: info.freeMotion,
+        freeAction: info.freeAction,
+        readAt: Date.now(),
+      },
+    }));
+  } catch (e) {
+    store.update((s) => ({
+      device: { ...s.device, loading: false, notice: errorNotice("Reading the robot's details failed.", e) },
+    }));
+  }
+}

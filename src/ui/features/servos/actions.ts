@@ -1,0 +1,228 @@
+import { RbcError } from "../../../device/errors.ts";
+import type { AppContext } from "../../context.ts";
+import { errorNotice } from "../../error-text.ts";
+import { focusSoon } from "../../focus.ts";
+import { type Controller, controllerKey } from "../../scope.ts";
+import { servosTaken } from "../connection/actions.ts";
+import { LatestMoveSender } from "./move-sender.ts";
+import {
+  basicPostureTargets,
+  clampToSafe,
+  DEFAULT_TORQUE,
+  patchServos,
+  SERVO_IDS,
+  servosOf,
+} from "./state.ts";
+
+/** The Servos view's actions: direct mode on and off, reading, moving within safe ranges, basic posture. */
+
+function setAt<T>(list: readonly T[], i: number, value: T): T[] {
+  const out = [...list];
+  out[i] = value;
+  return out;
+}
+
+export function acknowledgeSafety(ctx: AppContext): void {
+  ctx.store.update((s) => ({ acks: { ...s.acks, servos: true } }));
+}
+
+interface Move {
+  position: number;
+  torque: number;
+}
+
+/** The servo moves of this connection: one in flight at a time, the latest target per servo wins. */
+export class ServoMoves implements Controller {
+  readonly sender: LatestMoveSender<Move>;
+
+  constructor(ctx: AppContext) {
+    this.sender = new LatestMoveSender(async (id, { position, torque }) => {
+      const client = ctx.session.current;
+      if (client?.mode !== "direct") {
+        this.sender.clear();
+        return;
+      }
+      try {
+        const status = await client.servos.move(id, position, torque);
+        servosTaken(ctx);
+        patchServos(ctx.store, (x) => ({
+          positions: setAt(x.positions, id, status.position),
+          silent: x.silent.filter((s) => s !== id),
+        }));
+      } catch (e) {
+        if (e instanceof RbcError && e.code === "cancelled") {
+          this.sender.clear();
+          return;
+        }
+        patchServos(ctx.store, (x) => ({
+          notice: errorNotice(`Servo ${id} did not take the move.`, e),
+          silent:
+            e instanceof RbcError && e.code === "timeout" && !x.silent.includes(id)
+              ? [...x.silent, id]
+              : x.silent,
+        }));
+      }
+    });
+  }
+
+  dispose(): void {
+    this.sender.clear();
+  }
+}
+
+export const SERVO_MOVES = controllerKey("servo moves", (ctx: AppContext) => new ServoMoves(ctx));
+
+/** Drops the moves still waiting (the move in flight finishes). */
+function dropMoves(ctx: AppContext): void {
+  ctx.session.connectionScope.peek(SERVO_MOVES)?.sender.clear();
+}
+
+export async function startServoControl(ctx: AppContext): Promise<void> {
+  const { store, session } = ctx;
+  if (!store.get().acks?.servos || servosOf(store.get()).busy) return;
+  patchServos(store, { busy: "entering", notice: undefined });
+  try {
+    await session.run("Starting servo control", (client) => client.enterDirectMode(), { packetMode: false });
+    patchServos(store, { busy: undefined });
+  } catch (e) {
+    patchServos(store, { busy: undefined, notice: errorNotice("Servo control could not start.", e) });
+    return;
+  }
+  await readAllPositions(ctx);
+}
+
+export async function leaveServoControl(ctx: AppContext): Promise<void> {
+  const { store, session } = ctx;
+  dropMoves(ctx);
+  patchServos(store, { busy: "leaving", notice: undefined, confirmingPosture: false });
+  try {
+    await session.run("Leaving servo control", (client) => client.exitDirectMode(), { packetMode: false });
+    patchServos(store, {
+      busy: undefined,
+      notice: {
+        tone: "info",
+        text: "Servo control ended: the robot is back in its normal mode. The servos keep their last position.",
+      },
+    });
+  } catch (e) {
+    patchServos(store, { busy: undefined, notice: errorNotice("Leaving servo control failed.", e) });
+  }
+}
+
+export async function readAllPositions(ctx: AppContext): Promise<void> {
+  const { store, session } = ctx;
+  if (session.current?.mode !== "direct") return;
+  patchServos(store, { busy: "reading" });
+  try {
+    const { servos, silent } = await session.run(
+      "Reading servo positions",
+      (client) => client.servos.readAll(SERVO_IDS),
+      { packetMode: false },
+    );
+    patchServos(store, (x) => {
+      const positions = [...x.positions];
+      const targets = [...x.targets];
+      for (const s of servos) {
+        positions[s.id] = s.position;
+        targets[s.id] = clampToSafe(s.id, s.position);
+      }
+      for (const id of silent) positions[id] = undefined;
+      return {
+        busy: undefined,
+        positions,
+        targets,
+        drafts: {},
+        silent,
+        readAt: Date.now(),
+        notice:
+          silent.length === 0
+            ? { tone: "ok", text: `Read all ${servos.length} servos.` }
+            : {
+                tone: "warning",
+                text: `Servo ${silent.join(", ")} did not answer (${servos.length} of ${SERVO_IDS.length} read). Check their cables; their controls are disabled.`,
+              },
+      };
+    });
+  } catch (e) {
+    patchServos(store, { busy: undefined, notice: errorNotice("Reading the servos failed.", e) });
+  }
+}
+
+/** A slider or number changed: move that servo (clamped to its safe range), latest request wins. */
+export function moveServo(ctx: AppContext, id: number, position: number): void {
+  const target = clampToSafe(id, position);
+  const s = servosOf(ctx.store.get());
+  const { [id]: _typed, ...drafts } = s.drafts ?? {};
+  patchServos(ctx.store, { targets: setAt(s.targets, id, target), drafts, notice: undefined });
+  ctx.session.connectionScope
+    .get(SERVO_MOVES)
+    .sender.request(id, { position: target, torque: s.torques[id] ?? DEFAULT_TORQUE });
+}
+
+/**
+ * The number box of servo `id` was changed: move it to the typed position (clamped to its safe range). An empty
+ * or unreadable box moves nothing and shows the current target again.
+ */
+export function applyTypedTarget(ctx: AppContext, id: number, text: string): void {
+  const position = text.trim() === "" ? Number.NaN : Number(text);
+  if (Number.isFinite(position)) {
+    moveServo(ctx, id, Math.round(position));
+    return;
+  }
+  patchServos(ctx.store, (x) => {
+    const { [id]: _typed, ...drafts } = x.drafts ?? {};
+    return { drafts };
+  });
+}
+
+/** Keeps what is being typed into servo `id`'s number box until it is applied (change event). */
+export function draftTarget(ctx: AppContext, id: number, text: string): void {
+  patchServos(ctx.store, (x) => ({ drafts: { ...x.drafts, [id]: text } }));
+}
+
+export function setTorque(ctx: AppContext, id: number, torque: number): void {
+  patchServos(ctx.store, (x) => ({ torques: setAt(x.torques, id, Math.max(0, Math.min(4, torque))) }));
+}
+
+export async function basicPosture(ctx: AppContext): Promise<void> {
+  const { store, session } = ctx;
+  const speed = servosOf(store.get()).speed;
+  dropMoves(ctx);
+  patchServos(store, { busy: "posture", confirmingPosture: false, notice: undefined });
+  try {
+    await session.run("Moving to basic posture", (client) => client.servos.basicPosture(speed), {
+      packetMode: false,
+    });
+    servosTaken(ctx);
+    patchServos(store, {
+      busy: undefined,
+      targets: basicPostureTargets(),
+      drafts: {},
+      notice: {
+        tone: "ok",
+        text: `Sent: all ${SERVO_IDS.length} servos move to the basic posture at speed ${speed}. The servos do not answer this command: press Read all positions to see where they are.`,
+      },
+    });
+  } catch (e) {
+    patchServos(store, { busy: undefined, notice: errorNotice("The basic posture command failed.", e) });
+  }
+}
+
+/** "All to basic posture…": asks once, in place. */
+export function askForPosture(ctx: AppContext): void {
+  patchServos(ctx.store, { confirmingPosture: true });
+  focusSoon("confirm-posture");
+}
+
+export function cancelPosture(ctx: AppContext): void {
+  patchServos(ctx.store, { confirmingPosture: false });
+}
+
+export function setPostureSpeed(ctx: AppContext, speed: number): void {
+  patchServos(ctx.store, { speed });
+}
+
+/** The view is left (or the robot disconnected, which ends the sender with its scope): drop waiting moves. */
+export function dropPendingMoves(ctx: AppContext): void {
+  dropMoves(ctx);
+}

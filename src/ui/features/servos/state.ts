@@ -1,0 +1,70 @@
+import { HUNO_BASIC_POSTURE, HUNO_SERVO_COUNT, safeRange } from "../../../protocol/servo-limits.ts";
+import type { AppState, Notice } from "../../app-state.ts";
+import type { Store } from "../../store.ts";
+
+/**
+ * The Servos view's part of the app state, one per connection (the session resets it to undefined, which
+ * `servosOf` reads as the initial value).
+ */
+export interface ServosState {
+  /** Last known position per servo id 0-15 (from a read or a move's reply). */
+  positions: (number | undefined)[];
+  /** Where each slider points. */
+  targets: number[];
+  /** Text being typed into a servo's number box, not applied yet (so redraws do not reset it). */
+  drafts?: Partial<Record<number, string>>;
+  /** Torque per servo for moves: 0 (strong) .. 4 (weak). */
+  torques: number[];
+  /** Servos that did not answer the last read. */
+  silent: number[];
+  /** Wall-clock ms of the last "Read all positions". */
+  readAt?: number;
+  busy?: "entering" | "leaving" | "reading" | "posture";
+  confirmingPosture: boolean;
+  /** Speed of "All to basic posture": 0 (fast) .. 4 (slow). */
+  speed: number;
+  notice?: Notice;
+}
+
+export const SERVO_IDS: readonly number[] = Array.from({ length: HUNO_SERVO_COUNT }, (_, i) => i);
+export const DEFAULT_TORQUE = 2;
+
+/** The safe range of servo `id` (PROTOCOL.md §5 for 0-15; other ids get the full 0-254). */
+export function servoRange(id: number): { min: number; max: number } {
+  return safeRange(id) ?? { min: 0, max: 254 };
+}
+
+export function clampToSafe(id: number, position: number): number {
+  const { min, max } = servoRange(id);
+  return Math.max(min, Math.min(max, Math.round(position)));
+}
+
+/** Every slider at the basic posture. */
+export function basicPostureTargets(): number[] {
+  return SERVO_IDS.map((id) => clampToSafe(id, HUNO_BASIC_POSTURE[id] ?? 127));
+}
+
+export function initialServos(): ServosState {
+  return {
+    positions: SERVO_IDS.map(() => undefined),
+    targets: basicPostureTargets(),
+    torques: SERVO_IDS.map(() => DEFAULT_TORQUE),
+    silent: [],
+    confirmingPosture: false,
+    speed: 4,
+  };
+}
+
+export function servosOf(s: AppState): ServosState {
+  return s.servos ?? initialServos();
+}
+
+export function patchServos(
+  store: Store<AppState>,
+  p: Partial<ServosState> | ((x: ServosState) => Partial<ServosState>),
+): void {
+  store.update((s) => {
+    const cur = servosOf(s);
+    return { servos: { ...cur, ...(typeof p === "function" ? p(cur) : p) } };
+  });
+}

@@ -1,0 +1,70 @@
+import { html, nothing, type TemplateResult } from "lit-html";
+import { dismissStopNotice } from "../features/connection/actions.ts";
+import { connectCard } from "../features/connection/connect-card.ts";
+import { topBar } from "../features/connection/top-bar.ts";
+import { unsupportedCard } from "../features/connection/unsupported-card.ts";
+import type { ViewLoader } from "../router.ts";
+import { sideNav } from "./side-nav.ts";
+import type { ViewContext } from "./view-types.ts";
+
+function mainContent(ctx: ViewContext, loader: ViewLoader): TemplateResult {
+  const { route } = ctx.state;
+  const failure = loader.failure(route);
+  if (failure !== undefined) {
+    return html`
+      <section class="card">
+        <h1>This part of the panel did not load</h1>
+        <p>Its code could not be fetched. If you are offline, connect once so the panel can keep a copy.</p>
+        <button type="button" class="btn" @click=${() => loader.retry(route)}>Try again</button>
+      </section>
+    `;
+  }
+  const view = loader.get(route);
+  if (!view) return html`<p class="muted" aria-busy="true">Loading…</p>`;
+  if (view.needsRobot && ctx.state.connection.phase !== "connected") {
+    return ctx.state.serialSupported ? connectCard(ctx) : unsupportedCard(ctx);
+  }
+  return view.render(ctx);
+}
+
+function stopBanner(ctx: ViewContext): TemplateResult {
+  const n = ctx.state.stopNotice;
+  return html`
+    <div class="stop-banner" role="status" aria-live="assertive">
+      ${
+        n
+          ? html`<div class="notice notice--${n.tone} banner-notice">
+              <div class="banner-text">
+                <p>${n.text}</p>
+                ${
+                  n.detail
+                    ? html`<details class="detail"><summary>Technical detail</summary><pre>${n.detail}</pre></details>`
+                    : nothing
+                }
+              </div>
+              <button type="button" class="btn btn--quiet" @click=${() => dismissStopNotice(ctx)}>
+                Dismiss
+              </button>
+            </div>`
+          : nothing
+      }
+    </div>
+  `;
+}
+
+function focusMain(e: Event): void {
+  e.preventDefault();
+  document.getElementById("main")?.focus();
+}
+
+/** The whole page: top bar, Stop result, side navigation and the chosen view. */
+export function appView(ctx: ViewContext, loader: ViewLoader): TemplateResult {
+  return html`
+    <a class="skip-link" href="#main" @click=${focusMain}>Skip to content</a>
+    ${topBar(ctx)} ${stopBanner(ctx)}
+    <div class="layout">
+      ${sideNav(ctx)}
+      <main id="main" tabindex="-1">${mainContent(ctx, loader)}</main>
+    </div>
+  `;
+}
