@@ -17,7 +17,8 @@ export type RbcErrorCode =
   | "motion-ignored"
   | "wrong-mode"
   | "port-unavailable"
-  | "port-busy";
+  | "port-busy"
+  | "backup-failed";
 
 export class RbcError extends Error {
   override name = "RbcError";

@@ -14,6 +14,7 @@ export {
   type SafeZeroWrite,
   type SaveZerosBackup,
   writeZerosWithBackup,
+  ZeroBackupError,
   type ZeroPolicyOptions,
   ZeroWriteFailedError,
 } from "./zero-policy.ts";

@@ -1,5 +1,5 @@
 import type { Transport } from "../link/transport.ts";
-import { BASIC_POSTURE_MOTION, downloadSlotOf, errorCodeText, NO_ERROR } from "../protocol/catalog.ts";
+import { BASIC_POSTURE_MOTION, downloadSlotOf } from "../protocol/catalog.ts";
 import { COMMANDS, type MemoryArea } from "../protocol/commands.ts";
 import { encodePacket } from "../protocol/packet.ts";
 import type { RbmMotion } from "../protocol/rbm.ts";

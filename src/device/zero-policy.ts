@@ -1,6 +1,6 @@
 import { zeroProblems } from "../protocol/zeros.ts";
 import { createZerosBackup, type ZerosBackup, zerosBackupFileName } from "../protocol/zeros-backup.ts";
-import { RbcError, RbcInvalidArgumentError } from "./errors.ts";
+import { RbcCancelledError, RbcError, RbcInvalidArgumentError } from "./errors.ts";
 import type { ZeroWriteResult } from "./types.ts";
 
 /**
@@ -19,6 +19,14 @@ export interface ZeroPolicyOptions {
   robot?: { serialNumber?: string; firmware?: string };
   /** The backup's time stamp (default now). */
   now?: Date;
+  /**
+   * Checked after the backup is saved, just before the write: if aborted by then, nothing is written
+   * (`RbcCancelledError`). Once the write has started it runs to its end (under a second, with its read-back),
+   * so that what the robot holds is known.
+   */
+  signal?: AbortSignal;
+  /** Told just before the table is sent (after this, the robot's zeros may change). */
+  onWrite?: () => void;
 }
 
 /** `changed: false` when the robot already held the table (nothing saved, nothing written). */
@@ -30,6 +38,18 @@ export type SafeZeroWrite =
 export interface ZeroPolicyHost {
   readZeros(): Promise<number[]>;
   writeZeros(zeros: readonly number[]): Promise<ZeroWriteResult>;
+}
+
+/** The backup of the current zeros could not be saved, so nothing was written; `cause` says why. */
+export class ZeroBackupError extends RbcError {
+  override name = "ZeroBackupError";
+  constructor(cause: unknown) {
+    super(
+      "backup-failed",
+      `Nothing was written: the backup of the current zeros could not be saved (${cause instanceof Error ? cause.message : String(cause)}).`,
+      { cause },
+    );
+  }
 }
 
 /**
@@ -85,10 +105,12 @@ export async function writeZerosWithBackup(
   try {
     backupName = await options.saveBackup(backup, zerosBackupFileName(serialNumber, savedAt));
   } catch (e) {
-    throw new RbcInvalidArgumentError(
-      `Nothing was written: the backup of the current zeros could not be saved (${e instanceof Error ? e.message : String(e)}).`,
-    );
+    throw new ZeroBackupError(e);
   }
+  if (options.signal?.aborted) {
+    throw new RbcCancelledError(`Cancelled before the write: nothing was written (the backup ${backupName} was saved).`);
+  }
+  options.onWrite?.();
   try {
     const result = await client.writeZeros(target);
     return { changed: true, current, backupName, ...result };
