@@ -39,8 +39,13 @@ export async function writeAutomaticBackup(
   source: BackupSource,
   now = new Date(),
 ): Promise<string> {
-  const base = zerosBackupFileName(source.serialNumber, now).replace(/\.json$/, "");
-  const text = serializeZerosBackup(createZerosBackup({ ...source, savedAt: now }));
+  return saveAutomaticBackup(dir, createZerosBackup({ ...source, savedAt: now }));
+}
+
+/** Writes `backup` as the automatic backup file in `dir` (named by its robot and date). Returns the path. */
+export async function saveAutomaticBackup(dir: string, backup: ZerosBackup): Promise<string> {
+  const base = zerosBackupFileName(backup.serialNumber, new Date(backup.savedAt)).replace(/\.json$/, "");
+  const text = serializeZerosBackup(backup);
   for (let n = 1; n < 1000; n++) {
     const path = join(dir, n === 1 ? `${base}.json` : `${base}-${n}.json`);
     try {

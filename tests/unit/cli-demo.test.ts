@@ -200,6 +200,7 @@ describe.concurrent("rbc --demo", () => {
     expect(text.code).toBe(0);
     expect(text.stdout).toMatch(/Firmware\s+2\.23/);
     expect(text.stdout).toMatch(/Serial number\s+8958899989309/);
+    expect(text.stdout).toMatch(/Platform\s+HUNO \(1\)/);
     expect(text.stdout).toMatch(/Error code\s+no error/);
     expect(text.stdout).toContain("motion 24,576 of 24,576 bytes");
     expect(json.code).toBe(0);
@@ -213,6 +214,7 @@ describe.concurrent("rbc --demo", () => {
       errorCode: 0xff,
       error: "no error",
       freeMemory: { motion: 24576, action: 8192 },
+      warnings: [],
     });
   });
 
@@ -314,7 +316,13 @@ describe.concurrent("rbc --demo", () => {
       errorCode: 0xff,
       error: "no error",
       validation: { errors: [], warnings: [] },
+      // --reset: the robot forgot its downloads first, so the file is download 1, Run Motion 12.
+      reset: true,
+      slot: 1,
+      motionNumber: 12,
     });
+    // Without --reset the motion number is not known, and rbc does not pretend it is.
+    expect(r.stdout).not.toMatch(/It is downloaded motion/);
     // Robot time: every chunk waits for the simulated EEPROM page write (5 ms) before its acknowledgement.
     expect(JSON.parse(json.stdout).elapsedMs).toBeGreaterThanOrEqual(5 * wave.chunks);
   });

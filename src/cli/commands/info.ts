@@ -18,11 +18,11 @@ export function errorCodeWords(code: number): string {
 
 export const infoCommand: CommandDef = {
   name: "info",
-  summary: "firmware, serial number, mode, error code and free memory",
+  summary: "firmware, serial number, platform, error code and free memory",
   usage: "rbc info (--port PATH | --demo) [--json]",
   description: `
-Connects, then reads the firmware version, the 13-digit serial number, the robot's mode (HUNO, DINO, DOGY
-or PF2, from the platform byte of its replies), the last error code in words, and the free bytes of the
+Connects, then reads the firmware version, the 13-digit serial number (when the firmware answers it), the
+robot's platform (HUNO, DINO, DOGY or PF2, from the platform byte of its replies), the last error code in words, and the free bytes of the
 motion memory (24,576 when empty) and the action memory (8,192 when empty). Changes nothing on the robot.`,
   options: [],
   examples: ["rbc info --port /dev/ttyUSB0", "rbc info --demo --json"],
@@ -32,7 +32,8 @@ motion memory (24,576 when empty) and the action memory (8,192 when empty). Chan
     noExtraArguments("info", positionals, 0);
     const robot = await connectRobot("info", values, env);
     const { client } = robot;
-    const serialNumber = await client.readSerialNumber();
+    // 0x0C is optional: some firmware builds never answer it (PROTOCOL.md §3.5).
+    const { serialNumber, warnings } = await client.identify();
     const errorCode = await client.readErrorCode();
     const freeMotion = await client.readAvailableMemory("motion");
     const freeAction = await client.readAvailableMemory("action");
@@ -42,22 +43,24 @@ motion memory (24,576 when empty) and the action memory (8,192 when empty). Chan
       port: robot.demo ? "demo" : robot.where,
       firmware,
       firmwareVersion: robot.identity.firmware,
-      serialNumber,
+      serialNumber: serialNumber ?? null,
       platform,
       platformName: platformName(platform),
       errorCode,
       error: errorCodeWords(errorCode),
       freeMemory: { motion: freeMotion, action: freeAction },
+      warnings,
     });
     const n = (v: number) => v.toLocaleString("en-US");
     env.out.line(robot.demo ? "The demo robot (simulated)" : `Robot on ${robot.where}`);
     env.out.line(`  Firmware       ${firmware}`);
-    env.out.line(`  Serial number  ${serialNumber}`);
-    env.out.line(`  Mode           ${platformName(platform)} (platform ${platform})`);
+    env.out.line(`  Serial number  ${serialNumber ?? "not reported (this firmware does not answer 0x0C)"}`);
+    env.out.line(`  Platform       ${platformName(platform)} (${platform})`);
     env.out.line(`  Error code     ${errorCodeWords(errorCode)}`);
     env.out.line(
       `  Free memory    motion ${n(freeMotion)} of ${n(MOTION_AREA_BYTES)} bytes, action ${n(freeAction)} of ${n(ACTION_AREA_BYTES)} bytes`,
     );
+    for (const warning of warnings) env.out.note(`Warning: ${warning}`);
     return EXIT.ok;
   },
 };

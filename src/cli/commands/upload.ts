@@ -1,8 +1,8 @@
 import { readFile } from "node:fs/promises";
 import { basename } from "node:path";
 import { RbcUploadError } from "../../device/errors.ts";
-import type { UploadResult } from "../../device/types.ts";
-import { motionImage } from "../../protocol/motion-image.ts";
+import { type FileUploadResult, UPLOAD_NOTICES } from "../../device/index.ts";
+import { motionImageSize } from "../../protocol/motion-image.ts";
 import { parseRbm, RbmError, type RbmMotion, type RbmValidation, validateRbm } from "../../protocol/rbm.ts";
 import { noExtraArguments, parseCommand } from "../args.ts";
 import type { CommandDef, RunEnv } from "../command.ts";
@@ -22,17 +22,13 @@ const OPTIONS = {
 /** Warnings listed in words; --json has them all. */
 const MAX_WARNINGS_SHOWN = 10;
 
-/** PROTOCOL.md §6.3 [decision] Safety: one sentence, before the first byte, on a real robot. */
-export const EXPERIMENTAL_NOTICE =
-  "Uploading to a real robot is experimental: the motion image layout rbc sends has not been verified on real RBC firmware.";
-export const HOLD_ADVICE =
-  "Run the uploaded motion first with the robot held or lying down, so that a wrong movement cannot make it fall.";
+/** PROTOCOL.md §6.3 [decision] Safety: one sentence, before the first byte, on a real robot (the device's words). */
+export const EXPERIMENTAL_NOTICE = UPLOAD_NOTICES.experimental;
+export const HOLD_ADVICE = UPLOAD_NOTICES.holdAdvice;
 
-interface Prepared {
-  area: "motion" | "action";
-  payload: Uint8Array;
-  motion: RbmMotion | undefined;
-}
+type Prepared =
+  | { area: "motion"; motion: RbmMotion; imageBytes: number }
+  | { area: "action"; bytes: Uint8Array; imageBytes: number };
 
 async function prepare(env: RunEnv, file: string, asAction: boolean): Promise<Prepared> {
   let bytes: Uint8Array;
@@ -46,11 +42,15 @@ async function prepare(env: RunEnv, file: string, asAction: boolean): Promise<Pr
     env.out.note(
       `${basename(file)}: uploaded as an action file, byte for byte (${bytes.length} bytes). No action file format is known, so its contents are not checked.`,
     );
-    return { area: "action", payload: bytes, motion: undefined };
+    return { area: "action", bytes, imageBytes: bytes.length };
   }
   try {
     const motion = parseRbm(new TextDecoder().decode(bytes));
-    return { area: "motion", payload: motionImage(motion), motion };
+    return {
+      area: "motion",
+      motion,
+      imageBytes: motionImageSize(motion.servos.length, motion.scenes.length),
+    };
   } catch (e) {
     if (!(e instanceof RbmError)) throw e;
     const validation: RbmValidation = { errors: [...e.issues], warnings: [] };
@@ -90,9 +90,9 @@ many bytes were acknowledged and what the robot's memory holds, and exits with c
     ["-y, --yes", "Confirm an upload to a real robot without the prompt."],
   ],
   examples: [
-    "rbc upload ../shared/fixtures/rbm/Hi.rbm --demo",
-    "rbc upload Hi.rbm --reset --port /dev/ttyUSB0",
-    "rbc upload Hi.rbm --port /dev/ttyUSB0 --yes --json",
+    "rbc upload examples/wave.rbm --demo",
+    "rbc upload wave.rbm --reset --port /dev/ttyUSB0",
+    "rbc upload wave.rbm --port /dev/ttyUSB0 --yes --json",
   ],
   talksToRobot: true,
   async run(env) {
@@ -100,7 +100,7 @@ many bytes were acknowledged and what the robot's memory holds, and exits with c
     noExtraArguments("upload", positionals, 1);
     const file = positionals[0];
     if (file === undefined)
-      throw new UsageError("Give the motion file to upload, e.g. rbc upload Hi.rbm.", "upload");
+      throw new UsageError("Give the motion file to upload, e.g. rbc upload examples/wave.rbm.", "upload");
     const prepared = await prepare(env, file, values.action === true);
     const real = !values.demo;
     if (real && !values.yes && !env.stdin.isTTY) {
@@ -112,11 +112,15 @@ many bytes were acknowledged and what the robot's memory holds, and exits with c
 
     const robot = await connectRobot("upload", values, env, { handlesInterrupt: true });
     const { client } = robot;
-    const serialNumber = await client.readSerialNumber();
     let validation: RbmValidation = { errors: [], warnings: [] };
-    if (prepared.motion) {
+    if (prepared.area === "motion") {
+      // 0x0C is optional (PROTOCOL.md §3.5): without a serial number the file's robot check is skipped.
+      const { serialNumber } = await client.identify();
+      if (serialNumber === undefined) {
+        env.out.note("The robot does not report its serial number, so the file's robot check was skipped.");
+      }
       validation = validateRbm(prepared.motion, { connectedSerialNumber: serialNumber });
-      env.out.line(motionSummary(file, prepared.motion, prepared.payload.length));
+      env.out.line(motionSummary(file, prepared.motion, prepared.imageBytes));
       env.out.line(validationSummary(validation));
       const shown = issueLines("warning", validation.warnings);
       for (const line of shown.slice(0, MAX_WARNINGS_SHOWN)) env.out.line(line);
@@ -140,24 +144,25 @@ many bytes were acknowledged and what the robot's memory holds, and exits with c
     }
     if (env.signal.aborted) throw new CliError("interrupted", "Nothing was sent.", EXIT.interrupted);
 
-    if (values.reset) {
-      await client.resetMemoryPointer(prepared.area);
-      env.out.line(
-        `Reset the ${prepared.area} memory pointer: the robot's downloaded ${prepared.area}s are forgotten.`,
-      );
-    }
-
     const bar = new ProgressBar(env.out);
-    let result: UploadResult;
+    let result: FileUploadResult;
     try {
       const options = {
         signal: env.signal,
+        resetFirst: values.reset === true,
+        onPhase: (phase: string) => {
+          if (phase === "checking" && values.reset) {
+            env.out.line(
+              `Reset the ${prepared.area} memory pointer: the robot's downloaded ${prepared.area}s are forgotten.`,
+            );
+          }
+        },
         onProgress: (p: { acknowledged: number; total: number }) => bar.update(p.acknowledged, p.total),
       };
       result =
         prepared.area === "motion"
-          ? await client.writeMotion(prepared.payload, options)
-          : await client.writeAction(prepared.payload, options);
+          ? await client.uploadMotion(prepared.motion, options)
+          : await client.uploadAction(prepared.bytes, options);
     } catch (e) {
       bar.finish();
       if (e instanceof RbcUploadError && e.code === "cancelled") {
@@ -203,9 +208,9 @@ many bytes were acknowledged and what the robot's memory holds, and exits with c
     env.out.line(
       `Error code: ${result.errorCode === undefined ? "not read (the robot did not answer)" : errorCodeWords(result.errorCode)}.`,
     );
-    if (values.reset && result.area === "motion") {
+    if (result.motionNumber !== undefined) {
       env.out.line(
-        `It is downloaded motion 1: play it with \`rbc run 12\`${real ? " — first with the robot held or lying down" : ""}.`,
+        `It is downloaded motion ${result.slot}: play it with \`rbc run ${result.motionNumber}\`${real ? " — first with the robot held or lying down" : ""}.`,
       );
     } else if (result.area === "motion") {
       env.out.line(

@@ -1,3 +1,5 @@
+import { RbcCancelledError } from "../../device/errors.ts";
+import { type SafeZeroWrite, ZeroBackupError, ZeroWriteFailedError } from "../../device/index.ts";
 import type { ZeroWriteResult } from "../../device/types.ts";
 import { HUNO_JOINT_NAMES } from "../../protocol/servo-limits.ts";
 import { diffZeros, STANDARD_ZEROS, ZERO_COUNT, zeroProblems, zeroRange } from "../../protocol/zeros.ts";
@@ -7,7 +9,13 @@ import { type GlobalValues, noExtraArguments, parseCommand } from "../args.ts";
 import type { CommandDef, RunEnv } from "../command.ts";
 import { connectRobot, type Robot } from "../connect.ts";
 import { CliError, EXIT, errorCode, errorLine, UsageError } from "../errors.ts";
-import { readBackupFile, refuseExisting, writeAutomaticBackup, writeBackupFile } from "../zeros-files.ts";
+import {
+  readBackupFile,
+  refuseExisting,
+  saveAutomaticBackup,
+  writeAutomaticBackup,
+  writeBackupFile,
+} from "../zeros-files.ts";
 
 const OPTIONS = {
   "backup-dir": { type: "string" },
@@ -39,9 +47,15 @@ function zerosTable(zeros: readonly number[]): string[] {
 }
 
 async function identify(robot: Robot) {
-  const serialNumber = await robot.client.readSerialNumber();
+  // 0x0C is optional (PROTOCOL.md §3.5): a robot that does not answer it is "not reported".
+  const { serialNumber } = await robot.client.identify();
   const zeros = await robot.client.readZeros();
   return { serialNumber, firmware: formatFirmware(robot.identity.firmware), zeros };
+}
+
+/** The robot by its serial number, or in words when its firmware does not report one. */
+function robotName(serialNumber: string | undefined): string {
+  return serialNumber ?? "(serial number not reported)";
 }
 
 /** Stops before anything is written when Ctrl-C came while reading or backing up. */
@@ -60,47 +74,67 @@ function checkAdvice(backupFile: string): string {
 }
 
 /**
- * Backup first, then write and verify (shared by `write` and `restore`). The write and its verification take
- * well under a second, so Ctrl-C during them lets them finish (the robot's zeros are then known) and the
- * command exits 130 afterwards; Ctrl-C before the write stops without writing.
+ * The device's zero-write policy (backup first, then write and verify; `writeZerosWithBackup`), with the CLI's
+ * file for the backup and its words. Shared by `write` and `restore`. The write and its verification take well
+ * under a second, so Ctrl-C during them lets them finish (the robot's zeros are then known) and the command
+ * exits 130 afterwards; Ctrl-C before the write stops without writing.
  */
 async function backupAndWrite(
   env: RunEnv,
   robot: Robot,
   values: { "backup-dir"?: string },
   target: readonly number[],
-  current: { serialNumber: string; firmware: string; zeros: number[] },
+  current: { serialNumber: string | undefined; firmware: string; zeros: number[] },
 ): Promise<{ backupFile: string | undefined; result: ZeroWriteResult | undefined; interrupted: boolean }> {
   stopIfInterrupted(env);
-  const changes = diffZeros(current.zeros, target);
-  if (changes.length === 0) {
-    env.out.line(`The robot already holds these zeros (${target.join(",")}); nothing was written.`);
-    return { backupFile: undefined, result: undefined, interrupted: false };
-  }
-  const backupFile = await writeAutomaticBackup(values["backup-dir"] ?? env.cwd, current);
-  env.out.note(
-    `Backed up the current zeros to ${backupFile} (restore with: rbc zeros restore ${backupFile}).`,
-  );
-  stopIfInterrupted(env, backupFile);
-  env.out.line(
-    `Changing ${changes.length} servo${changes.length > 1 ? "s" : ""}: ${changes.map((c) => `${c.id}: ${c.from} → ${c.to}`).join(", ")}`,
-  );
+  let backupFile: string | undefined;
   const onAbort = () =>
     env.out.note("rbc: finishing the zero write and its check (under a second), then stopping…");
-  env.signal.addEventListener("abort", onAbort, { once: true });
-  // If rbc has to exit before the write has finished (a second Ctrl-C), the robot's zeros are unknown.
-  env.setExitNote(`The zeros may have been written. ${checkAdvice(backupFile)}`);
-  let result: ZeroWriteResult;
+  let outcome: SafeZeroWrite;
   try {
-    result = await robot.client.writeZeros(target);
-  } catch (e) {
-    throw new CliError(errorCode(e), `${errorLine(e)} ${checkAdvice(backupFile)}`, EXIT.failed, {
-      backupFile,
+    outcome = await robot.client.writeZerosWithBackup(target, {
+      robot: { serialNumber: current.serialNumber, firmware: current.firmware },
+      signal: env.signal,
+      saveBackup: async (backup) => {
+        backupFile = await saveAutomaticBackup(values["backup-dir"] ?? env.cwd, backup);
+        env.out.note(
+          `Backed up the current zeros to ${backupFile} (restore with: rbc zeros restore ${backupFile}).`,
+        );
+        const changes = diffZeros(backup.zeros, target);
+        env.out.line(
+          `Changing ${changes.length} servo${changes.length > 1 ? "s" : ""}: ${changes.map((c) => `${c.id}: ${c.from} → ${c.to}`).join(", ")}`,
+        );
+        return backupFile;
+      },
+      onWrite: () => {
+        env.signal.addEventListener("abort", onAbort, { once: true });
+        // If rbc has to exit before the write has finished (a second Ctrl-C), the robot's zeros are unknown.
+        if (backupFile) env.setExitNote(`The zeros may have been written. ${checkAdvice(backupFile)}`);
+      },
     });
+  } catch (e) {
+    if (e instanceof ZeroBackupError && e.cause instanceof CliError) throw e.cause;
+    if (e instanceof RbcCancelledError && env.signal.aborted) stopIfInterrupted(env, backupFile);
+    if (e instanceof ZeroWriteFailedError) {
+      throw new CliError(
+        errorCode(e.reason),
+        `${errorLine(e.reason)} ${checkAdvice(e.backupName)}`,
+        EXIT.failed,
+        {
+          backupFile: e.backupName,
+        },
+      );
+    }
+    throw e;
   } finally {
     env.signal.removeEventListener("abort", onAbort);
     env.setExitNote(undefined);
   }
+  if (!outcome.changed) {
+    env.out.line(`The robot already holds these zeros (${target.join(",")}); nothing was written.`);
+    return { backupFile: undefined, result: undefined, interrupted: false };
+  }
+  const result: ZeroWriteResult = outcome;
   env.out.line(`Written and verified: the robot reads back ${result.readBack.join(",")}.`);
   const interrupted = env.signal.aborted;
   if (interrupted) {
@@ -182,8 +216,8 @@ async function read(env: RunEnv, values: Values, args: string[]): Promise<number
   noExtraArguments("zeros", args, 0);
   const robot = await connectRobot("zeros", values, env);
   const current = await identify(robot);
-  env.out.result({ serialNumber: current.serialNumber, zeros: current.zeros });
-  env.out.line(`Zero positions of robot ${current.serialNumber} (${robot.where}):`);
+  env.out.result({ serialNumber: current.serialNumber ?? null, zeros: current.zeros });
+  env.out.line(`Zero positions of robot ${robotName(current.serialNumber)} (${robot.where}):`);
   for (const line of zerosTable(current.zeros)) env.out.line(line);
   env.out.line(`As a list: ${current.zeros.join(",")}`);
   return EXIT.ok;
@@ -219,15 +253,18 @@ async function backup(env: RunEnv, values: Values, args: string[]): Promise<numb
   if (file !== undefined) await refuseExisting(file, values.force === true);
   const robot = await connectRobot("zeros", values, env);
   const current = await identify(robot);
-  const path = file ?? (await writeAutomaticBackup(env.cwd, current));
-  const saved = file ? await writeBackupFile(file, current, values.force === true) : undefined;
+  const source = { ...current, serialNumber: current.serialNumber ?? "unknown" };
+  const path = file ?? (await writeAutomaticBackup(env.cwd, source));
+  const saved = file ? await writeBackupFile(file, source, values.force === true) : undefined;
   env.out.result({
     file: path,
     zeros: current.zeros,
-    serialNumber: current.serialNumber,
+    serialNumber: current.serialNumber ?? null,
     savedAt: saved?.savedAt,
   });
-  env.out.line(`Saved the zeros of robot ${current.serialNumber} to ${path}: ${current.zeros.join(",")}`);
+  env.out.line(
+    `Saved the zeros of robot ${robotName(current.serialNumber)} to ${path}: ${current.zeros.join(",")}`,
+  );
   return EXIT.ok;
 }
 
