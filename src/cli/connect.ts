@@ -78,7 +78,7 @@ export function demoTimeScale(env: NodeJS.ProcessEnv, command?: string): number 
  */
 function demoTransport(clock: Clock): { transport: Transport; dispose: () => void } {
   const sim = new SimulatedRbc({ clock });
-  const port = new MockSerialPort(sim, { latencyMs: 2, clock });
+  const port = new MockSerialPort(sim, { latencyMs: 2, clock, record: false });
   return { transport: new WebSerialTransport(port, { clock }), dispose: () => sim.dispose() };
 }
 

@@ -160,8 +160,9 @@ export class RbcClient {
    * the official firmware source does not answer 0x0C, PROTOCOL.md §3.5; undefined then, "not reported").
    * Values are reported as the robot gives them (9.99, platform 4), with `warnings` for implausible ones.
    */
-  async identify(): Promise<RobotIdentity> {
-    const firmware = await this.readFirmwareVersion();
+  async identify(known?: DeviceIdentity): Promise<RobotIdentity> {
+    // `connect()` has read the version already: pass what it returned to skip reading it again.
+    const firmware = known?.firmware ?? (await this.readFirmwareVersion());
     const serialNumber = await this.#c
       .command(COMMANDS.readSerialNumber, undefined, { retries: 0 })
       .catch((e: unknown) => {

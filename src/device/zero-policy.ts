@@ -108,7 +108,9 @@ export async function writeZerosWithBackup(
     throw new ZeroBackupError(e);
   }
   if (options.signal?.aborted) {
-    throw new RbcCancelledError(`Cancelled before the write: nothing was written (the backup ${backupName} was saved).`);
+    throw new RbcCancelledError(
+      `Cancelled before the write: nothing was written (the backup ${backupName} was saved).`,
+    );
   }
   options.onWrite?.();
   try {

@@ -29,5 +29,5 @@ export function createDemoRobot(options: DemoRobotOptions = {}): DemoRobot {
   const clock = scale === 1 ? realClock : scaledClock(scale);
   const sim = new SimulatedRbc({ clock, accelerometerNoise: { seed: Date.now() & 0xffff, amplitude: 3 } });
   sim.setAccelerometer(2, -4, 62);
-  return { port: new MockSerialPort(sim, { clock, latencyMs: 2 }), sim, clock };
+  return { port: new MockSerialPort(sim, { clock, latencyMs: 2, record: false }), sim, clock };
 }

@@ -150,8 +150,9 @@ export class Session {
       }),
     ];
     try {
-      const identity = await client.connect();
-      const serialNumber = this.client === client ? await client.readSerialNumber() : "";
+      // The serial number is optional (PROTOCOL.md §3.5): a firmware that does not answer 0x0C still connects.
+      const identity = await client.identify(await client.connect());
+      const serialNumber = identity.serialNumber;
       if (this.client !== client) {
         await client.close().catch(() => {});
         return false;

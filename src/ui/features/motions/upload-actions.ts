@@ -1,4 +1,5 @@
 import { RbcCancelledError } from "../../../device/errors.ts";
+import type { UploadPhase } from "../../../device/motion-upload.ts";
 import type { RbcClient } from "../../../device/rbc-client.ts";
 import type { UploadOptions, UploadResult } from "../../../device/types.ts";
 import { ACTION_AREA_BYTES } from "../../../protocol/catalog.ts";
@@ -52,6 +53,7 @@ export function uploadPayload(ctx: AppContext, target: UploadTarget): Payload | 
     area: "motion",
     fileName: entry.fileName,
     bytes: entry.image,
+    motion: entry.motion,
     name: facts.name,
     durationMs: facts.durationMs,
   };
@@ -86,23 +88,26 @@ export function cancelUpload(ctx: AppContext): void {
 }
 
 /**
- * The robot side of an upload: resets the area first if asked (telling `onReset` when it is done), then sends
- * the bytes with progress until every chunk is acknowledged. One small function, so that a device-level
- * upload (image, free memory, reset, upload, verify) can take its place.
+ * The robot side of an upload, the device's `uploadMotion`/`uploadAction` (reset if asked, free memory, the
+ * download, verification by the robot's memory accounting); `onReset` is told when the reset is done.
  */
 async function sendUpload(
   client: RbcClient,
   payload: Payload,
   options: UploadOptions & { resetFirst: boolean; onReset: () => void },
 ): Promise<UploadResult> {
-  const { area, bytes } = payload;
-  if (options.resetFirst) {
-    await client.resetMemoryPointer(area);
-    options.onReset();
-  }
-  if (options.signal?.aborted) throw new RbcCancelledError("Upload cancelled before any byte was sent.");
-  const sending = { signal: options.signal, onProgress: options.onProgress };
-  return area === "motion" ? client.writeMotion(bytes, sending) : client.writeAction(bytes, sending);
+  const { resetFirst, onReset, signal, onProgress } = options;
+  const device = {
+    resetFirst,
+    signal,
+    onProgress,
+    onPhase: (phase: UploadPhase) => {
+      if (phase === "checking" && resetFirst) onReset();
+    },
+  };
+  if (payload.area === "action") return client.uploadAction(payload.bytes, device);
+  if (!payload.motion) throw new RbcCancelledError("The motion file is no longer open; nothing was sent.");
+  return client.uploadMotion(payload.motion, device);
 }
 
 export async function startUpload(ctx: AppContext, target: UploadTarget): Promise<void> {

@@ -4,8 +4,10 @@ import {
   RbcRejectedError,
   RbcUploadError,
 } from "../../../device/errors.ts";
+import { UPLOAD_NOTICES } from "../../../device/motion-upload.ts";
 import type { UploadResult } from "../../../device/types.ts";
 import { ACTION_AREA_BYTES, errorCodeText, MOTION_AREA_BYTES, NO_ERROR } from "../../../protocol/catalog.ts";
+import type { RbmMotion } from "../../../protocol/rbm.ts";
 import type { Notice } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { errorNotice, technicalDetail } from "../../error-text.ts";
@@ -24,12 +26,9 @@ import { formatRate } from "./upload-rate.ts";
 /** How an upload ended, in sentences: what was sent, where it went, what the robot's memory says now. */
 
 /** PROTOCOL.md §6.3 [decision] Safety: said in one sentence before the first byte on a real robot. */
-export const EXPERIMENTAL_SENTENCE =
-  "Uploading to a real robot is experimental: the motion image format the panel sends has not been verified on real RBC firmware.";
-export const HOLD_ADVICE =
-  "Run the uploaded motion first with the robot held or lying down, so that a wrong movement cannot make it fall.";
-export const ACTION_SENTENCE =
-  "No action file format is known: the file's bytes are sent as they are, unchecked, and the result on the robot is unverified.";
+export const EXPERIMENTAL_SENTENCE = UPLOAD_NOTICES.experimental;
+export const HOLD_ADVICE = UPLOAD_NOTICES.holdAdvice;
+export const ACTION_SENTENCE = UPLOAD_NOTICES.action;
 
 export const bookKey = (area: "motion" | "action") => (area === "motion" ? "motionBook" : "actionBook");
 export const areaBytes = (area: "motion" | "action") =>
@@ -39,6 +38,8 @@ export interface Payload {
   area: "motion" | "action";
   fileName: string;
   bytes: Uint8Array;
+  /** The motion a motion upload sends (the device builds its image, `bytes`, again and checks it). */
+  motion?: RbmMotion;
   name: string;
   durationMs?: number;
 }

@@ -7,19 +7,16 @@ export async function refreshDeviceInfo(ctx: AppContext): Promise<void> {
   if (store.get().device.loading || !session.current) return;
   store.update((s) => ({ device: { ...s.device, loading: true, notice: undefined } }));
   try {
+    // Firmware and serial number were read when connecting; what changes is read here.
     const info = await session.run("Reading device info", async (client) => {
-      const firmware = await client.readFirmwareVersion();
-      const serialNumber = await client.readSerialNumber();
       const errorCode = await client.readErrorCode();
       const freeMotion = await client.readAvailableMemory("motion");
       const freeAction = await client.readAvailableMemory("action");
-      return { firmware, serialNumber, errorCode, freeMotion, freeAction, platform: client.state.platform };
+      return { errorCode, freeMotion, freeAction, platform: client.state.platform };
     });
     store.update((s) => ({
       connection: {
         ...s.connection,
-        firmware: info.firmware,
-        serialNumber: info.serialNumber,
         platform: info.platform ?? s.connection.platform,
       },
       device: {

@@ -66,7 +66,7 @@ function render(ctx: ViewContext): TemplateResult {
         </div>
         <div>
           <dt>Serial number</dt>
-          <dd class="num" data-testid="serial-number">${c.serialNumber ?? "—"}</dd>
+          <dd class="num" data-testid="serial-number">${c.serialNumber ?? "not reported"}</dd>
         </div>
         <div>
           <dt>Platform</dt>

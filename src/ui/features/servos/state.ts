@@ -1,4 +1,4 @@
-import { HUNO_BASIC_POSTURE, HUNO_SERVO_COUNT, safeRange } from "../../../protocol/servo-limits.ts";
+import { HUNO_BASIC_POSTURE, HUNO_SERVO_IDS, safeRange } from "../../../protocol/servo-limits.ts";
 import type { AppState, Notice } from "../../app-state.ts";
 import type { Store } from "../../store.ts";
 
@@ -26,7 +26,7 @@ export interface ServosState {
   notice?: Notice;
 }
 
-export const SERVO_IDS: readonly number[] = Array.from({ length: HUNO_SERVO_COUNT }, (_, i) => i);
+export const SERVO_IDS: readonly number[] = HUNO_SERVO_IDS;
 export const DEFAULT_TORQUE = 2;
 
 /** The safe range of servo `id` (PROTOCOL.md §5 for 0-15; other ids get the full 0-254). */

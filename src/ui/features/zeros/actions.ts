@@ -4,14 +4,12 @@ import {
   RbcRejectedError,
   RbcVerifyError,
 } from "../../../device/errors.ts";
-import type { RbcClient } from "../../../device/rbc-client.ts";
+import { ZeroWriteFailedError } from "../../../device/zero-policy.ts";
 import { ZERO_COUNT } from "../../../protocol/zeros.ts";
 import {
-  createZerosBackup,
   parseZerosBackup,
   serializeZerosBackup,
   serialMismatchWarning,
-  zerosBackupFileName,
 } from "../../../protocol/zeros-backup.ts";
 import { formatFirmware } from "../../../shared/format.ts";
 import type { AppState, Notice } from "../../app-state.ts";
@@ -144,20 +142,6 @@ function failureSentence(e: unknown, backupName: string): Notice {
   return { tone: "danger", text: `Writing the zeros failed. ${errorMessage(e)} ${backup}`, detail };
 }
 
-/**
- * The robot side of a write: reads the current zeros and hands them to `saveBackup` before anything is
- * written, then writes `table`, reads it back and verifies it. One small function, so that a device-level
- * zero-write policy can take its place.
- */
-async function backupAndWriteZeros(
-  client: RbcClient,
-  table: readonly number[],
-  saveBackup: (current: number[]) => void,
-): Promise<{ readBack: number[] }> {
-  saveBackup(await client.readZeros());
-  return client.writeZeros(table);
-}
-
 /** Backup first (the robot's current zeros, read fresh), then write, read back and verify. */
 export async function writeZerosToRobot(ctx: AppContext): Promise<void> {
   const { session, store } = ctx;
@@ -176,39 +160,56 @@ export async function writeZerosToRobot(ctx: AppContext): Promise<void> {
   }
   patchZeros(store, { busy: "writing", confirming: false, result: undefined });
   let backupName: string | undefined;
-  const saveBackup = (current: number[]) => {
-    const c = store.get().connection;
-    const serialNumber = c.serialNumber ?? "unknown";
-    const now = new Date();
-    const backup = createZerosBackup({
-      serialNumber,
-      firmware: c.firmware ? formatFirmware(c.firmware) : "unknown",
-      zeros: current,
-      savedAt: now,
-    });
-    backupName = zerosBackupFileName(serialNumber, now);
-    downloadTextFile(backupName, serializeZerosBackup(backup), "application/json");
-  };
+  const c = store.get().connection;
+  let readBack: number[];
   try {
-    const { readBack } = await session.run("Writing zeros", (client) =>
-      backupAndWriteZeros(client, table, saveBackup),
+    // The device's zero-write policy: check, read the current zeros, save them (here: a download), then
+    // write, read back and verify. The robot's zeros are never changed before the backup exists.
+    const outcome = await session.run("Writing zeros", (client) =>
+      client.writeZerosWithBackup(table, {
+        robot: {
+          serialNumber: c.serialNumber,
+          firmware: c.firmware ? formatFirmware(c.firmware) : undefined,
+        },
+        saveBackup: (backup, name) => {
+          downloadTextFile(name, serializeZerosBackup(backup), "application/json");
+          backupName = name;
+          return name;
+        },
+      }),
     );
-    const verified = readBack.filter((v, id) => v === table[id]).length;
-    patchZeros(store, {
-      busy: undefined,
-      stored: readBack,
-      draft: toDraft(readBack),
-      source: "the robot",
-      fileNotice: undefined,
-      result: {
-        tone: "verified",
-        text: `Zeros written and verified (read back ${verified}/${ZERO_COUNT}). Backup saved as ${backupName}.`,
-      },
-    });
+    if (!outcome.changed) {
+      patchZeros(store, {
+        busy: undefined,
+        stored: outcome.current,
+        draft: toDraft(outcome.current),
+        source: "the robot",
+        result: { tone: "ok", text: "The robot already holds these zeros: nothing was written." },
+      });
+      return;
+    }
+    readBack = outcome.readBack;
   } catch (e) {
+    const cause: unknown = e instanceof ZeroWriteFailedError ? e.reason : e;
     const result = backupName
-      ? failureSentence(e, backupName)
-      : errorNotice("Nothing was written: the robot's current zeros could not be read for the backup.", e);
+      ? failureSentence(cause, backupName)
+      : errorNotice(
+          "Nothing was written: the robot's current zeros could not be read for the backup.",
+          cause,
+        );
     patchZeros(store, { busy: undefined, result });
+    return;
   }
+  const verified = readBack.filter((v, id) => v === table[id]).length;
+  patchZeros(store, {
+    busy: undefined,
+    stored: readBack,
+    draft: toDraft(readBack),
+    source: "the robot",
+    fileNotice: undefined,
+    result: {
+      tone: "verified",
+      text: `Zeros written and verified (read back ${verified}/${ZERO_COUNT}). Backup saved as ${backupName}.`,
+    },
+  });
 }
