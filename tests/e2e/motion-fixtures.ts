@@ -1,13 +1,7 @@
-/** Motion files for the browser tests, made from the shared fixtures with the project's own codec. */
+/** Motion files for the browser tests: the project's examples, and variants made with its own codec. */
 import { readFileSync } from "node:fs";
 import { motionImage } from "../../src/protocol/motion-image.ts";
 import { parseRbm, serializeRbm } from "../../src/protocol/rbm.ts";
-
-const FIXTURES = new URL("../../../shared/fixtures/rbm/", import.meta.url);
-
-export function rbmText(name: string): string {
-  return readFileSync(new URL(name, FIXTURES), "utf8");
-}
 
 const EXAMPLES = new URL("../../examples/", import.meta.url);
 

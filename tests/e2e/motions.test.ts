@@ -19,7 +19,6 @@ import {
   imageHex,
   longMotion,
   rbmFile,
-  rbmText,
   withSerial,
   withShortFrames,
 } from "./motion-fixtures.ts";
@@ -39,7 +38,7 @@ afterAll(async () => {
 /** A paced link (115200 baud, 16 ms FTDI latency), so uploads take as long as on the wire. */
 const PACED: RbcTestOptions = { baudPacing: true, latencyMs: 16 };
 /** The simulated robot's time (ms of its clock). */
-const robotNow = (page: Page) => page.evaluate(() => window.__rbcTest?.clock.now() ?? Number.NaN);
+const _robotNow = (page: Page) => page.evaluate(() => window.__rbcTest?.clock.now() ?? Number.NaN);
 
 async function openMotions(page: Page): Promise<void> {
   await connectRobot(page, app.url);
@@ -71,24 +70,24 @@ async function recordFigures(page: Page): Promise<void> {
 }
 
 describe("motions view", () => {
-  it("checks Hi.rbm, uploads it after the experimental notice, and the robot holds the exact image", async () => {
-    // The paced link 3 times faster: the progress of its 9 chunks still shows (figures, rate, time left).
+  it("checks wave.rbm, uploads it after the experimental notice, and the robot holds the exact image", async () => {
+    // The paced link 3 times faster: the progress of its 10 chunks still shows (figures, rate, time left).
     const { page, context } = await app.newPage({ options: { ...PACED, timeScale: 3 } });
     const seen = watchPage(page, app.origin);
     await openMotions(page);
-    const hi = rbmText("Hi.rbm");
-    await page.getByTestId("rbm-files").setInputFiles(rbmFile("Hi.rbm", hi));
+    const wave = exampleText("wave.rbm");
+    await page.getByTestId("rbm-files").setInputFiles(rbmFile("wave.rbm", wave));
     const card = page.getByTestId("motion-file");
     await card.waitFor();
     const facts = await card.textContent().then(squash);
-    expect(facts).toContain("HunoDemo_Hi");
-    expect(facts).toMatch(/Scenes\s*5 Servos\s*16/);
-    expect(facts).toMatch(/Plays for\s*3\.5 s/);
-    expect(facts).toMatch(/Image\s*538 bytes/);
-    expect(facts).toMatch(/On the robot\s*576 bytes/);
+    expect(facts).toContain("RbcPanel_Wave");
+    expect(facts).toMatch(/Scenes\s*6 Servos\s*16/);
+    expect(facts).toMatch(/Plays for\s*3\.2 s/);
+    expect(facts).toMatch(/Image\s*624 bytes/);
+    expect(facts).toMatch(/On the robot\s*640 bytes/);
     // The scene table and the chart (uPlot, loaded on demand).
     await page.getByTestId("scene-section").waitFor();
-    expect(await page.locator(".scene-table tbody tr").count()).toBe(5);
+    expect(await page.locator(".scene-table tbody tr").count()).toBe(6);
     await page.locator('[data-testid="motion-chart"][data-chart="drawn"]').waitFor();
     expect(await page.locator('[data-testid="motion-chart"] canvas').count()).toBeGreaterThan(0);
     expect(await page.locator('[data-testid="motion-chart"] .u-legend').textContent()).toContain(
@@ -108,23 +107,23 @@ describe("motions view", () => {
 
     await recordFigures(page);
     await page.getByRole("button", { name: "Upload (experimental)" }).click();
-    const result = page.getByText(/^Uploaded Hi\.rbm/);
+    const result = page.getByText(/^Uploaded wave\.rbm/);
     await result.waitFor({ timeout: 15_000 });
     const text = await result.textContent().then(squash);
-    expect(text).toMatch(/538 bytes in 9 chunks/);
+    expect(text).toMatch(/624 bytes in 10 chunks/);
     expect(text).toMatch(/bytes\/s/);
     expect(text).toContain("It is downloaded motion 1: run it as motion number 12");
-    expect(text).toContain("Free motion memory: 24,000 of 24,576 bytes (was 24,576");
+    expect(text).toContain("Free motion memory: 23,936 of 24,576 bytes (was 24,576");
     expect(text).toContain("Error code after the upload: no error");
     expect(text).toContain("held or lying down");
     const figures = await page.evaluate(() => (window as unknown as { __figures: string[] }).__figures);
-    expect(figures.some((f) => f.includes("538 of 538 bytes (100%)"))).toBe(true);
+    expect(figures.some((f) => f.includes("624 of 624 bytes (100%)"))).toBe(true);
     expect(figures.some((f) => /bytes\/s/.test(f) && /left/.test(f))).toBe(true);
 
-    expect(await simMotionsHex(page)).toEqual([imageHex(hi)]);
+    expect(await simMotionsHex(page)).toEqual([imageHex(wave)]);
     // Memory figures refreshed, here and on the device card.
     expect(await page.getByTestId("mem-motion-text").textContent().then(squash)).toBe(
-      "24,000 of 24,576 bytes free",
+      "23,936 of 24,576 bytes free",
     );
     expect(await page.getByTestId("mem-motion-count").textContent().then(squash)).toMatch(/^1 of 20 motions/);
     expect(await page.getByTestId("uploaded-list").textContent().then(squash)).toContain(
@@ -132,10 +131,10 @@ describe("motions view", () => {
     );
     // Run offers it by name and length.
     const download = page.locator('[data-testid="downloaded-motions"] [data-motion="12"]');
-    expect(await download.textContent().then(squash)).toBe("12 HunoDemo_Hi 3.5 s");
+    expect(await download.textContent().then(squash)).toBe("12 RbcPanel_Wave 3.2 s");
     await page.getByRole("link", { name: "Robot" }).click();
     expect(await page.getByTestId("memory-motion-text").textContent().then(squash)).toMatch(
-      /24,000 of 24,576/,
+      /23,936 of 24,576/,
     );
 
     expect(seen.errors).toEqual([]);
@@ -145,11 +144,11 @@ describe("motions view", () => {
   });
 
   it("cancels an upload: sending stops, the robot records nothing, and the panel says how much was acknowledged", async () => {
-    // The paced link 4 times faster: the 17 KB upload still takes seconds of real time, and every timeout
+    // The paced link 4 times faster: the 20 KB upload still takes seconds of real time, and every timeout
     // keeps a margin of at least 100 ms of real time on a busy machine.
     const { page, context } = await app.newPage({ options: { ...PACED, timeScale: 4 } });
     await openMotions(page);
-    const long = longMotion(rbmText("Hi.rbm"), 40);
+    const long = longMotion(exampleText("wave.rbm"), 40);
     await page.getByTestId("rbm-files").setInputFiles(rbmFile("Long.rbm", long));
     await page.getByTestId("upload-motion").click();
     await page.getByRole("button", { name: "Upload (experimental)" }).click();
@@ -160,7 +159,7 @@ describe("motions view", () => {
     const result = page.getByText(/^Upload cancelled/);
     await result.waitFor({ timeout: 10_000 });
     const text = await result.textContent().then(squash);
-    expect(text).toMatch(/Upload cancelled \([\d,]+ of 17,?308 bytes were acknowledged\)/);
+    expect(text).toMatch(/Upload cancelled \([\d,]+ of 20,?748 bytes were acknowledged\)/);
     expect(text).toContain("recorded nothing");
     expect(await page.getByTestId("upload-progress").count()).toBe(0);
     // Nothing more goes out, and the robot holds no motion.
@@ -177,12 +176,12 @@ describe("motions view", () => {
     const before = await bytesFromPc(page);
     await page
       .getByTestId("rbm-files")
-      .setInputFiles(rbmFile("Edited.rbm", withShortFrames(rbmText("Hi.rbm"))));
+      .setInputFiles(rbmFile("Edited.rbm", withShortFrames(exampleText("wave.rbm"))));
     const card = page.getByTestId("motion-file");
     await card.waitFor();
     const issues = await page.getByTestId("rbm-issues").textContent().then(squash);
     expect(issues).toMatch(
-      /Error Scene 0 has frames 10 ms apart \(100 ms \/ 10 frames\); the RBC needs at least 20 ms/,
+      /Error Scene 0 has frames 10 ms apart \(200 ms \/ 20 frames\); the RBC needs at least 20 ms/,
     );
     // The file is still shown, so the person can see which scene is wrong.
     expect(await page.getByTestId("scene-section").isVisible()).toBe(true);
@@ -201,7 +200,7 @@ describe("motions view", () => {
   it("opens files by drop and by keyboard, and warns about a motion made for another robot", async () => {
     const { page, context } = await app.newPage();
     await openMotions(page);
-    const text = withSerial(rbmText("Punch.rbm"), "1234567890123");
+    const text = withSerial(exampleText("bow.rbm"), "1234567890123");
     const transfer = await page.evaluateHandle((t) => {
       const dt = new DataTransfer();
       dt.items.add(new File([t], "Other.rbm", { type: "text/plain" }));
@@ -286,103 +285,6 @@ describe("motions view", () => {
     await context.close();
   });
 
-  it("guides to basic posture first, asks once before moving, stops a motion with 7, and Stop makes every servo limp", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
-    await openMotions(page);
-    const guidance = page.getByTestId("posture-guidance");
-    expect(await guidance.textContent().then(squash)).toContain(
-      "After switching on, the robot only accepts Basic posture (7). Run it first.",
-    );
-    expect(await page.locator('[data-motion="7"]').getAttribute("class")).toContain("is-recommended");
-    // No UI for numbers outside the allowed list.
-    const offered = await page
-      .locator("[data-motion]")
-      .evaluateAll((els) => els.map((e) => Number(e.getAttribute("data-motion"))));
-    expect(offered).toEqual([1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11]);
-
-    // Motion 4 before 7: asked once, then the robot ignores it and the panel says what to do.
-    await page.locator('[data-motion="4"]').click();
-    const ask = page.getByTestId("move-confirm");
-    expect(await ask.textContent().then(squash)).toContain("The robot will move. Hold it or give it room.");
-    await page.getByRole("button", { name: "Run motion 4 (Walk forward)" }).click();
-    await page.getByTestId("running-motion").filter({ hasText: "Walk forward" }).waitFor();
-    const ignored = page.getByText(/The robot ignored motion 4/);
-    await ignored.waitFor({ timeout: 8000 });
-    expect(await ignored.textContent().then(squash)).toContain("Run it first.");
-
-    // 7 runs without asking again; afterwards the guidance is gone.
-    await page.locator('[data-motion="7"]').click();
-    expect(await page.getByTestId("move-confirm").count()).toBe(0);
-    await page.getByText("Motion 7 (Basic posture) finished. The robot now accepts every motion.").waitFor({
-      timeout: 6000,
-    });
-    expect(await guidance.count()).toBe(0);
-
-    // Stop motion sends 7: the robot ends the scene and holds that pose (no basic posture, PROTOCOL.md §3.6).
-    await page.locator('[data-motion="2"]').click();
-    const motion2Started = await robotNow(page);
-    await page.getByTestId("running-motion").filter({ hasText: "Get up B" }).waitFor();
-    await page.getByTestId("stop-motion").click();
-    await page
-      .getByText(
-        /Motion 2 \(Get up B \(from back\)\) stopped at the end of its scene\. The robot holds the pose/,
-      )
-      .waitFor();
-    expect(await page.evaluate(() => window.__rbcTest?.sim.playingMotion)).toBeUndefined();
-    // Stopped well before motion 2's 6.6 s: the 7 took effect at the end of a scene.
-    expect((await robotNow(page)) - motion2Started).toBeLessThan(6600);
-    expect(await page.locator('[data-motion="1"]').isEnabled()).toBe(true);
-
-    // The global Stop during a motion: every servo limp.
-    await page.locator('[data-motion="1"]').click();
-    await page.getByTestId("running-motion").waitFor();
-    await page.getByRole("button", { name: /Stop — limp/ }).click();
-    await page.getByText(/Stopped: all 16 servos are limp/).waitFor({ timeout: 8000 });
-    const passive = await page.evaluate(() => window.__rbcTest?.sim.servos.map((s) => s.passive));
-    expect(passive).toEqual(Array(16).fill(true));
-    await page.getByText(/Motion 1 \(Get up A \(from front\)\) was interrupted by Stop — limp/).waitFor();
-    await context.close();
-  });
-
-  it("says at once that an empty download slot holds no motion (the robot reports error 3)", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
-    await openMotions(page);
-    await page.locator('[data-motion="7"]').click();
-    await page.locator("#confirm-move").click();
-    await page.getByText("Motion 7 (Basic posture) finished. The robot now accepts every motion.").waitFor({
-      timeout: 6000,
-    });
-    await page.getByText(/Other download slots/).click();
-    const started = await robotNow(page);
-    await page.locator('[data-slot-motion="12"]').click();
-    await page
-      .getByText(/download slot 1 holds no motion \(the robot reports error 3\)/)
-      .first()
-      .waitFor({ timeout: 5000 });
-    // Noticed within about a second of the robot's time, not after the 60 s an unknown motion may take.
-    expect((await robotNow(page)) - started).toBeLessThan(5000);
-    expect(await page.evaluate(() => window.__rbcTest?.sim.playingMotion)).toBeUndefined();
-    await context.close();
-  });
-
-  it("plays a sound and keeps other robot actions disabled while it plays", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
-    await openMotions(page);
-    // Sound 7 (5.7 s of the robot's time) leaves time to look at the panel while it plays.
-    await page.locator('[data-sound="7"]').click();
-    const playing = page.getByTestId("sound-playing");
-    await playing.waitFor();
-    expect(await playing.textContent().then(squash)).toContain(
-      "The robot does nothing else until the sound ends",
-    );
-    expect(await page.locator('[data-motion="7"]').isDisabled()).toBe(true);
-    expect(await page.locator('[data-sound="2"]').isDisabled()).toBe(true);
-    expect(await page.evaluate(() => window.__rbcTest?.sim.state.playingSound)).toBe(7);
-    await page.getByText("Sound 7 played (5.7 s).").waitFor({ timeout: 6000 });
-    expect(await page.locator('[data-motion="7"]').isEnabled()).toBe(true);
-    await context.close();
-  });
-
   it("on the demo robot uploads without asking, and a reset first puts the upload into slot 1", async () => {
     // The in-app demo robot on the faster clock too (its simulator and the panel's client share it).
     const { page, context } = await app.newPage({ options: FAST });
@@ -393,26 +295,29 @@ describe("motions view", () => {
     await page.getByTestId("mem-motion-text").filter({ hasText: "24,576 of 24,576" }).waitFor();
     await page
       .getByTestId("rbm-files")
-      .setInputFiles([rbmFile("Hi.rbm", rbmText("Hi.rbm")), rbmFile("Punch.rbm", rbmText("Punch.rbm"))]);
+      .setInputFiles([
+        rbmFile("wave.rbm", exampleText("wave.rbm")),
+        rbmFile("bow.rbm", exampleText("bow.rbm")),
+      ]);
     const cards = page.getByTestId("motion-file");
     await cards.nth(1).waitFor();
     await cards.nth(0).getByTestId("upload-motion").click();
     expect(await page.getByTestId("upload-confirm").count()).toBe(0);
-    await page.getByText(/^Uploaded Hi\.rbm/).waitFor();
+    await page.getByText(/^Uploaded wave\.rbm/).waitFor();
     await cards.nth(1).getByTestId("upload-motion").click();
-    await page.getByText(/^Uploaded Punch\.rbm/).waitFor();
+    await page.getByText(/^Uploaded bow\.rbm/).waitFor();
     expect(await page.getByTestId("uploaded-list").textContent().then(squash)).toMatch(
-      /HunoDemo_Hi Hi\.rbm — slot 1 → motion number 12.*HunoDemo_Punch Punch\.rbm — slot 2 → motion number 13/,
+      /RbcPanel_Wave wave\.rbm — slot 1 → motion number 12.*RbcPanel_Bow bow\.rbm — slot 2 → motion number 13/,
     );
     await page.getByTestId("reset-first").check();
     await cards.nth(1).getByTestId("upload-motion").click();
-    const result = page.getByText(/^Uploaded Punch\.rbm/);
-    await result.filter({ hasText: "Free motion memory: 24,000 of" }).waitFor();
+    const result = page.getByText(/^Uploaded bow\.rbm/);
+    await result.filter({ hasText: "Free motion memory: 24,064 of" }).waitFor();
     const list = await page.getByTestId("uploaded-list").textContent().then(squash);
-    expect(list).toContain("HunoDemo_Punch Punch.rbm — slot 1 → motion number 12");
-    expect(list).not.toContain("HunoDemo_Hi");
+    expect(list).toContain("RbcPanel_Bow bow.rbm — slot 1 → motion number 12");
+    expect(list).not.toContain("RbcPanel_Wave");
     expect(await page.getByTestId("mem-motion-text").textContent().then(squash)).toBe(
-      "24,000 of 24,576 bytes free",
+      "24,064 of 24,576 bytes free",
     );
 
     // An action file goes up byte for byte, with the format called unverified.

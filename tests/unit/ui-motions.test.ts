@@ -22,7 +22,7 @@ import {
   uploadFigures,
 } from "../../src/ui/features/motions/upload-rate.ts";
 
-const HI = readFileSync(new URL("../../../shared/fixtures/rbm/Hi.rbm", import.meta.url), "utf8");
+const WAVE = readFileSync(new URL("../../examples/wave.rbm", import.meta.url), "latin1");
 
 describe("upload rate and time left", () => {
   it("has no rate before two reports with progress", () => {
@@ -131,26 +131,27 @@ describe("slot bookkeeping", () => {
 });
 
 describe("motion files", () => {
-  it("reads Hi.rbm: facts, image and footprint", () => {
-    const entry = inspectMotionText("Hi.rbm", HI);
+  it("reads wave.rbm: facts, image and footprint", () => {
+    const entry = inspectMotionText("wave.rbm", WAVE);
     expect(entry.errors).toEqual([]);
+    // 6 scenes of 16 servos: 108 + 86 · 6 = 624 bytes, 640 on the robot (PROTOCOL.md §6).
     expect(entryFacts(entry)).toEqual({
-      name: "HunoDemo_Hi",
-      scenes: 5,
+      name: "RbcPanel_Wave",
+      scenes: 6,
       servos: 16,
-      durationMs: 3500,
-      imageBytes: 538,
-      footprint: 576,
+      durationMs: 3200,
+      imageBytes: 624,
+      footprint: 640,
     });
   });
 
   it("puts every error of a broken file into words, never throwing", () => {
-    const motion = parseRbm(HI);
+    const motion = parseRbm(WAVE);
     motion.scenes[0]!.timeMs = motion.scenes[0]!.frames * 10;
     motion.scenes[1]!.servos[2]!.torque = 7;
     const entry = inspectMotionText("Edited.rbm", serializeRbm(motion));
     // Kept for the scene table and the chart, but with no image it can never be uploaded.
-    expect(entry.motion?.scenes).toHaveLength(5);
+    expect(entry.motion?.scenes).toHaveLength(6);
     expect(entry.image).toBeUndefined();
     expect(entry.errors.map((e) => e.code)).toEqual(["rbm-frame-interval-short", "rbm-torque"]);
     expect(checkEntry(entry, undefined).errors.map((e) => e.code)).toEqual([
@@ -165,9 +166,10 @@ describe("motion files", () => {
   });
 
   it("plots every servo from its start to its end position over each scene", () => {
-    const motion = parseRbm(HI);
+    const motion = parseRbm(WAVE);
     const plot = motionPlotData(motion);
-    expect(plot.x).toEqual([0, 500, 500, 1500, 1500, 2000, 2000, 2500, 2500, 3500]);
+    // Scenes of 800, 400, 400, 400, 400 and 800 ms.
+    expect(plot.x).toEqual([0, 800, 800, 1200, 1200, 1600, 1600, 2000, 2000, 2400, 2400, 3200]);
     expect(plot.series).toHaveLength(16);
     expect(plot.series[2]?.label).toBe("2 Right knee");
     const s0 = motion.scenes[0]!.servos[10]!;
@@ -175,8 +177,8 @@ describe("motion files", () => {
   });
 
   it("lists scenes with their frame interval", () => {
-    const rows = sceneRows(parseRbm(HI));
-    expect(rows[1]).toMatchObject({ index: 1, frames: 40, timeMs: 1000, frameMs: 25, startsAtMs: 500 });
+    const rows = sceneRows(parseRbm(WAVE));
+    expect(rows[1]).toMatchObject({ index: 1, frames: 10, timeMs: 400, frameMs: 40, startsAtMs: 800 });
     expect(formatSeconds(3500)).toBe("3.5 s");
     expect(formatSeconds(365)).toBe("0.37 s");
     expect(formatSeconds(12_400)).toBe("12 s");
