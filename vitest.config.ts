@@ -1,5 +1,8 @@
 import { defineConfig } from "vitest/config";
 
+/** Unit tests that open serial ports (over socat PTYs) in the test process itself. */
+const SERIAL_PORT_TESTS = "tests/unit/cli-serial.test.ts";
+
 export default defineConfig({
   test: {
     // Vitest's default on a 2-core machine is one worker (cores - 1), which runs every file one after another;
@@ -14,7 +17,23 @@ export default defineConfig({
         test: {
           name: "unit",
           include: ["tests/unit/**/*.test.ts", "tests/interop/**/*.test.ts"],
+          exclude: [SERIAL_PORT_TESTS],
           environment: "node",
+          // Worker threads start faster than forked processes, and these files need no process of their own
+          // (the CLI tests spawn theirs).
+          pool: "threads",
+          testTimeout: 10_000,
+        },
+      },
+      {
+        extends: true,
+        test: {
+          // The serialport package's native addon crashes inside a worker thread, so the one file that opens
+          // ports in its own process runs in a forked process.
+          name: "serial",
+          include: [SERIAL_PORT_TESTS],
+          environment: "node",
+          pool: "forks",
           testTimeout: 10_000,
         },
       },
