@@ -244,3 +244,15 @@ export async function robotTime(page: Page, ms: number): Promise<void> {
 export function squash(text: string | null): string {
   return (text ?? "").replace(/\s+/g, " ").trim();
 }
+
+/** Connects the fake robot and opens the Motions view once the memory figures have been read. */
+export async function openMotions(page: Page, url: string): Promise<void> {
+  await connectRobot(page, url);
+  await page.getByTestId("memory-motion-text").filter({ hasText: "24,576" }).waitFor();
+  await page.getByRole("link", { name: "Motions" }).click();
+  await page.getByTestId("memory-card").waitFor();
+  await page.getByTestId("mem-motion-text").filter({ hasText: "24,576 of 24,576" }).waitFor();
+}
+
+/** The simulated robot's time (ms of its clock). */
+export const robotNow = (page: Page) => page.evaluate(() => window.__rbcTest?.clock.now() ?? Number.NaN);

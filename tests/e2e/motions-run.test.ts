@@ -1,6 +1,5 @@
-import type { Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { type AppHarness, connectRobot, FAST, squash, startHarness } from "./harness.ts";
+import { type AppHarness, FAST, openMotions, robotNow, squash, startHarness } from "./harness.ts";
 import "./rbc-test-globals.ts";
 
 // The Motions view's run and sound tests, in a file of their own so that two browser files can share the
@@ -16,21 +15,10 @@ afterAll(async () => {
   await app?.close();
 });
 
-/** The simulated robot's time (ms of its clock). */
-const robotNow = (page: Page) => page.evaluate(() => window.__rbcTest?.clock.now() ?? Number.NaN);
-
-async function openMotions(page: Page): Promise<void> {
-  await connectRobot(page, app.url);
-  await page.getByTestId("memory-motion-text").filter({ hasText: "24,576" }).waitFor();
-  await page.getByRole("link", { name: "Motions" }).click();
-  await page.getByTestId("memory-card").waitFor();
-  await page.getByTestId("mem-motion-text").filter({ hasText: "24,576 of 24,576" }).waitFor();
-}
-
 describe("motions view: running motions and sounds", () => {
   it("guides to basic posture first, asks once before moving, stops a motion with 7, and Stop makes every servo limp", async () => {
     const { page, context } = await app.newPage({ options: FAST });
-    await openMotions(page);
+    await openMotions(page, app.url);
     const guidance = page.getByTestId("posture-guidance");
     expect(await guidance.textContent().then(squash)).toContain(
       "After switching on, the robot only accepts Basic posture (7). Run it first.",
@@ -88,7 +76,7 @@ describe("motions view: running motions and sounds", () => {
 
   it("says at once that an empty download slot holds no motion (the robot reports error 3)", async () => {
     const { page, context } = await app.newPage({ options: FAST });
-    await openMotions(page);
+    await openMotions(page, app.url);
     await page.locator('[data-motion="7"]').click();
     await page.locator("#confirm-move").click();
     await page.getByText("Motion 7 (Basic posture) finished. The robot now accepts every motion.").waitFor({
@@ -109,7 +97,7 @@ describe("motions view: running motions and sounds", () => {
 
   it("plays a sound and keeps other robot actions disabled while it plays", async () => {
     const { page, context } = await app.newPage({ options: FAST });
-    await openMotions(page);
+    await openMotions(page, app.url);
     // Sound 7 (5.7 s of the robot's time) leaves time to look at the panel while it plays.
     await page.locator('[data-sound="7"]').click();
     const playing = page.getByTestId("sound-playing");

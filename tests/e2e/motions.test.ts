@@ -6,9 +6,9 @@ import { motionDurationMs, parseRbm } from "../../src/protocol/rbm.ts";
 import { formatSeconds } from "../../src/ui/features/motions/plot-data.ts";
 import {
   type AppHarness,
-  connectRobot,
   cspViolations,
   FAST,
+  openMotions,
   robotTime,
   squash,
   startHarness,
@@ -40,14 +40,6 @@ const PACED: RbcTestOptions = { baudPacing: true, latencyMs: 16 };
 /** The simulated robot's time (ms of its clock). */
 const _robotNow = (page: Page) => page.evaluate(() => window.__rbcTest?.clock.now() ?? Number.NaN);
 
-async function openMotions(page: Page): Promise<void> {
-  await connectRobot(page, app.url);
-  await page.getByTestId("memory-motion-text").filter({ hasText: "24,576" }).waitFor();
-  await page.getByRole("link", { name: "Motions" }).click();
-  await page.getByTestId("memory-card").waitFor();
-  await page.getByTestId("mem-motion-text").filter({ hasText: "24,576 of 24,576" }).waitFor();
-}
-
 const bytesFromPc = (page: Page) => page.evaluate(() => window.__rbcTest?.port.stats.bytesFromPc ?? -1);
 const simMotionsHex = (page: Page) =>
   page.evaluate(() =>
@@ -74,7 +66,7 @@ describe("motions view", () => {
     // The paced link 3 times faster: the progress of its 10 chunks still shows (figures, rate, time left).
     const { page, context } = await app.newPage({ options: { ...PACED, timeScale: 3 } });
     const seen = watchPage(page, app.origin);
-    await openMotions(page);
+    await openMotions(page, app.url);
     const wave = exampleText("wave.rbm");
     await page.getByTestId("rbm-files").setInputFiles(rbmFile("wave.rbm", wave));
     const card = page.getByTestId("motion-file");
@@ -147,7 +139,7 @@ describe("motions view", () => {
     // The paced link 4 times faster: the 20 KB upload still takes seconds of real time, and every timeout
     // keeps a margin of at least 100 ms of real time on a busy machine.
     const { page, context } = await app.newPage({ options: { ...PACED, timeScale: 4 } });
-    await openMotions(page);
+    await openMotions(page, app.url);
     const long = longMotion(exampleText("wave.rbm"), 40);
     await page.getByTestId("rbm-files").setInputFiles(rbmFile("Long.rbm", long));
     await page.getByTestId("upload-motion").click();
@@ -172,7 +164,7 @@ describe("motions view", () => {
 
   it("never sends a byte of a file with errors and says why in words", async () => {
     const { page, context } = await app.newPage({ options: FAST });
-    await openMotions(page);
+    await openMotions(page, app.url);
     const before = await bytesFromPc(page);
     await page
       .getByTestId("rbm-files")
@@ -199,7 +191,7 @@ describe("motions view", () => {
 
   it("opens files by drop and by keyboard, and warns about a motion made for another robot", async () => {
     const { page, context } = await app.newPage();
-    await openMotions(page);
+    await openMotions(page, app.url);
     const text = withSerial(exampleText("bow.rbm"), "1234567890123");
     const transfer = await page.evaluateHandle((t) => {
       const dt = new DataTransfer();
@@ -239,7 +231,7 @@ describe("motions view", () => {
     page.on("request", (r) => {
       if (r.resourceType() === "script") scripts.push(new URL(r.url()).pathname);
     });
-    await openMotions(page);
+    await openMotions(page, app.url);
     const text = exampleText("squat.rbm");
     const motion = parseRbm(text);
     const image = motionImage(motion);
