@@ -151,9 +151,7 @@ export async function uploadFile(
     errorCode,
     elapsedMs: io.now() - started,
   };
-  // [decision] A file that fits by its bytes but not by its 64-byte rounding leaves 0 free (as the simulator
-  // models it; PROTOCOL.md §6.1 does not say what the RBC answers past the end of the area).
-  if (freeAfter === Math.max(0, freeBefore - footprint)) return result;
+  if (freeAfter === freeAfterRecording(freeBefore, footprint)) return result;
   throw unconfirmedUpload(result);
 }
 
@@ -199,10 +197,20 @@ interface FailureContext {
   readError: () => Promise<number>;
 }
 
-/** Works out what the robot holds after a failed or cancelled download and says so. */
+/**
+ * The free memory the robot reports once it has recorded a file of `footprint` bytes: the robot's own
+ * accounting, which is what confirms an upload. [decision] A file that fits by its bytes but not by its 64-byte
+ * rounding leaves 0 free (as the simulator models it; PROTOCOL.md §6.1 does not say what the RBC answers past
+ * the end of the area).
+ */
+function freeAfterRecording(freeBefore: number, footprint: number): number {
+  return Math.max(0, freeBefore - footprint);
+}
+
 /** A failure explained as an error, or the news that the file was recorded after all. */
 type Explained = RbcError | { recorded: true; freeAfter: number; errorCode: number };
 
+/** Works out what the robot holds after a failed or cancelled download and says so. */
 async function explainFailure(io: UploadIo, error: unknown, ctx: FailureContext): Promise<Explained> {
   const { client } = io;
   const { area, acknowledged, total } = ctx;
@@ -248,7 +256,11 @@ async function explainFailure(io: UploadIo, error: unknown, ctx: FailureContext)
   if (freeNow === ctx.freeBefore) {
     outcome = "nothing-recorded";
     state = `The robot recorded nothing: its free ${area} memory is unchanged (${freeNow} bytes).`;
-  } else if (freeNow === Math.max(0, ctx.freeBefore - ctx.footprint) && ctx.lastChunkSent && !cancelled) {
+  } else if (
+    freeNow === freeAfterRecording(ctx.freeBefore, ctx.footprint) &&
+    ctx.lastChunkSent &&
+    !cancelled
+  ) {
     // The RBC accounts memory only when the last chunk's checksum is right: the file is complete.
     return { recorded: true, freeAfter: freeNow, errorCode: deviceError ?? NO_ERROR };
   } else {
