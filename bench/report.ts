@@ -15,7 +15,13 @@ export type MetricKey =
   | "bundleGzipKB"
   | "bundleJsGzipKB"
   | "bundleCssGzipKB"
-  | "firstRenderMs";
+  | "firstRenderMs"
+  | "logPollHeapMB"
+  | "logPollHeapMBBefore"
+  | "logGarbageEntries"
+  | "logGarbageEntriesBefore"
+  | "logGarbageHeapMB"
+  | "logGarbageHeapMBBefore";
 
 export interface Target {
   op: ">=" | "<=";
@@ -30,6 +36,10 @@ export const TARGETS: Partial<Record<MetricKey, Target>> = {
   idleGapCheck: { op: ">=", value: 0.999 },
   bundleGzipKB: { op: "<=", value: 40 },
   firstRenderMs: { op: "<=", value: 300 },
+  // Issue #10 item 6 (bench/log-memory.ts).
+  logPollHeapMB: { op: "<=", value: 2 },
+  logGarbageEntries: { op: "<=", value: 100 },
+  logGarbageHeapMB: { op: "<=", value: 5 },
 };
 
 interface Row {
@@ -75,6 +85,12 @@ export const ROWS: readonly Row[] = [
   { key: "bundleJsGzipKB", label: "  of which JavaScript", unit: "KB", digits: 2 },
   { key: "bundleCssGzipKB", label: "  of which CSS", unit: "KB", digits: 2 },
   { key: "firstRenderMs", label: "First render to usable connect button", unit: "ms", digits: 0 },
+  { key: "logPollHeapMB", label: "Heap growth, 1 h of 10 Hz polling, packet log on", unit: "MB", digits: 2 },
+  { key: "logPollHeapMBBefore", label: "  the same with the old log (before)", unit: "MB", digits: 2 },
+  { key: "logGarbageEntries", label: "Log entries for 1 MiB of garbage", unit: "", digits: 0 },
+  { key: "logGarbageEntriesBefore", label: "  the same with the old log (before)", unit: "", digits: 0 },
+  { key: "logGarbageHeapMB", label: "Heap growth, 1 MiB of garbage, packet log on", unit: "MB", digits: 2 },
+  { key: "logGarbageHeapMBBefore", label: "  the same with the old log (before)", unit: "MB", digits: 2 },
 ];
 
 export type Metrics = Record<MetricKey, number | null>;

@@ -8,6 +8,7 @@
  *   --no-build       skip the bundle and first-render figures (no build, no browser)
  *   --no-browser     skip the first-render figure only
  *   --no-pty         skip the upload over a PTY (rbc sim --pty in a child process)
+ *   --no-log-memory  skip the packet log's memory figures (nine `node --expose-gc` children, about 20 s)
  *   --quick          fewer repetitions (1 upload per path instead of 7, 4 CLI start-ups instead of 10, 1 page
  *                    load instead of 5)
  */
@@ -17,6 +18,7 @@ import { join } from "node:path";
 import { describeContributors, measureBundle, viteBuild } from "./bundle-size.ts";
 import { measureCliStartup } from "./cli-startup.ts";
 import { measureFirstRender } from "./first-render.ts";
+import { describeLogMemory, measureLogMemory } from "./log-memory.ts";
 import { makeParserStream, measureParser } from "./parser-throughput.ts";
 import { type MetricKey, type Metrics, TARGETS, table, targetMet } from "./report.ts";
 import { measureRequestOverhead } from "./request-overhead.ts";
@@ -32,6 +34,7 @@ const quick = args.includes("--quick");
 const noBuild = args.includes("--no-build");
 const noBrowser = args.includes("--no-browser");
 const noPty = args.includes("--no-pty");
+const noLogMemory = args.includes("--no-log-memory");
 const distIndex = args.indexOf("--dist");
 const distArg = distIndex >= 0 ? args[distIndex + 1] : undefined;
 
@@ -58,6 +61,12 @@ const metrics: Metrics = {
   bundleJsGzipKB: null,
   bundleCssGzipKB: null,
   firstRenderMs: null,
+  logPollHeapMB: null,
+  logPollHeapMBBefore: null,
+  logGarbageEntries: null,
+  logGarbageEntriesBefore: null,
+  logGarbageHeapMB: null,
+  logGarbageHeapMBBefore: null,
 };
 const skipped: Partial<Record<MetricKey, string>> = {};
 const details: Record<string, unknown> = {};
@@ -68,6 +77,15 @@ function skip(keys: readonly MetricKey[], reason: string): void {
 }
 
 const BUNDLE_KEYS: MetricKey[] = ["bundleGzipKB", "bundleJsGzipKB", "bundleCssGzipKB"];
+
+const LOG_MEMORY_KEYS: MetricKey[] = [
+  "logPollHeapMB",
+  "logPollHeapMBBefore",
+  "logGarbageEntries",
+  "logGarbageEntriesBefore",
+  "logGarbageHeapMB",
+  "logGarbageHeapMBBefore",
+];
 
 const roundMs = (runs: readonly TimedUpload[]) => runs.map((r) => round(r.downloadMs, 1));
 
@@ -155,6 +173,25 @@ async function main(): Promise<void> {
     transportAloneMedianMs: round(overhead.transportMedianMs, 5),
     samples: overhead.samples,
   };
+
+  if (noLogMemory) {
+    skip(LOG_MEMORY_KEYS, "--no-log-memory");
+  } else {
+    progress("packet log memory (1 virtual hour of 10 Hz polling; 1 MiB of garbage; before and after)");
+    try {
+      const log = measureLogMemory(progress);
+      metrics.logPollHeapMB = round(log.poll.after.heapGrowthMB, 3);
+      metrics.logPollHeapMBBefore = round(log.poll.before.heapGrowthMB, 3);
+      metrics.logGarbageEntries = log.garbage.after.entriesMade;
+      metrics.logGarbageEntriesBefore = log.garbage.before.entriesMade;
+      metrics.logGarbageHeapMB = round(log.garbage.after.heapGrowthMB, 3);
+      metrics.logGarbageHeapMBBefore = round(log.garbage.before.heapGrowthMB, 3);
+      details.logMemory = log;
+      details.logMemoryTable = describeLogMemory(log);
+    } catch (e) {
+      skip(LOG_MEMORY_KEYS, errorText(e));
+    }
+  }
 
   progress("CLI start-up (node bin/rbc.mjs --help against node -e 0, interleaved)");
   try {
@@ -262,6 +299,8 @@ if (json) {
       `\nUpload: ${u.motion}, ${u.imageBytes.toLocaleString("en-US")} bytes in ${u.chunks} chunks; first-principles ideal of the download phase ${u.ideal.downloadMs.toLocaleString("en-US")} ms.\n`,
     );
   }
+  const logTable = details.logMemoryTable as string | undefined;
+  if (logTable) process.stdout.write(`\n${logTable}\n`);
   if (b?.contributors) process.stdout.write(`First-load JavaScript by source: ${b.contributors}\n`);
   const cli = details.cliStartup as { cliStderr?: string } | undefined;
   if (cli?.cliStderr)

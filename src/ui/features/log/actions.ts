@@ -5,14 +5,19 @@ import { downloadTextFile } from "../../download-file.ts";
 import { errorNotice } from "../../error-text.ts";
 import { formatCount } from "../../format.ts";
 import { logAsText } from "./packet-log.ts";
+import type { LogViewState } from "./state.ts";
 
-/** The Log view's actions: pause, clear, copy and download the packet log. */
+/** The Log view's actions: pause, page, clear, copy and download the packet log. */
 
-/** Lines drawn on screen; copy and download always take the whole log. */
-export const SHOWN = 500;
+/** Rows drawn on one page (hex is rendered for these only); copy and download always take the whole log. */
+export const PAGE_ROWS = 100;
+
+function setLog(ctx: AppContext, patch: Partial<LogViewState>): void {
+  ctx.store.update((s) => ({ log: { ...s.log, ...patch } }));
+}
 
 function setNotice(ctx: AppContext, notice: Notice | undefined): void {
-  ctx.store.update((s) => ({ log: { ...s.log, notice } }));
+  setLog(ctx, { notice });
 }
 
 function header(ctx: AppContext): string {
@@ -38,21 +43,36 @@ export function downloadLog(ctx: AppContext): void {
   setNotice(ctx, { tone: "ok", text: `Saved ${formatCount(lines.length)} lines as ${name}.` });
 }
 
-/** While paused, the view keeps showing what it showed; capture goes on underneath. */
+/** While paused, the view keeps showing the same entries; capture goes on underneath. */
 export function togglePause(ctx: AppContext): void {
-  const paused = !ctx.store.get().log.paused;
-  const frozen = paused ? ctx.packetLog.newest(SHOWN) : undefined;
-  ctx.store.update((s) => ({ log: { ...s.log, paused, frozen, notice: undefined } }));
+  const log = ctx.store.get().log;
+  if (log.paused) setLog(ctx, { paused: false, upTo: undefined, offset: 0, notice: undefined });
+  else setLog(ctx, { paused: true, upTo: log.upTo ?? ctx.packetLog.newestSeq, notice: undefined });
+}
+
+/** The next page of older entries; the view stops following new ones so the rows do not move. */
+export function olderPage(ctx: AppContext): void {
+  const log = ctx.store.get().log;
+  const upTo = log.upTo ?? ctx.packetLog.newestSeq;
+  const total = ctx.packetLog.countUpTo(upTo);
+  const offset = Math.min(log.offset + PAGE_ROWS, Math.max(0, total - 1));
+  setLog(ctx, { upTo, offset });
+}
+
+/** The next page of newer entries; back on the first page, the view follows new entries again unless paused. */
+export function newerPage(ctx: AppContext): void {
+  const log = ctx.store.get().log;
+  const offset = Math.max(0, log.offset - PAGE_ROWS);
+  setLog(ctx, { offset, upTo: offset === 0 && !log.paused ? undefined : log.upTo });
 }
 
 export function clearLog(ctx: AppContext): void {
   ctx.packetLog.clear();
-  ctx.store.update((s) => ({
-    log: {
-      ...s.log,
-      revision: ctx.packetLog.revision,
-      frozen: s.log.frozen ? [] : undefined,
-      notice: undefined,
-    },
-  }));
+  const log = ctx.store.get().log;
+  setLog(ctx, {
+    revision: ctx.packetLog.revision,
+    offset: 0,
+    upTo: log.paused ? ctx.packetLog.newestSeq : undefined,
+    notice: undefined,
+  });
 }

@@ -1,16 +1,20 @@
 import type { Notice } from "../../app-state.ts";
-import type { LogLine } from "./packet-log.ts";
 
-/** The Log view's part of the app state (the log itself is the PacketLog ring buffer). Kept across connections. */
+/** The Log view's part of the app state (the log itself is the PacketLog ring). Kept across connections. */
 export interface LogViewState {
   paused: boolean;
   /** Bumped when the packet log changes, so the view re-renders. */
   revision: number;
-  /** What the view shows while paused (the newest lines at the moment of pausing). */
-  frozen?: readonly LogLine[];
+  /**
+   * The newest entry the view shows (a sequence number): set while paused or while an older page is shown, so
+   * the rows on screen stay put while capture goes on; undefined when the view follows the newest entries.
+   */
+  upTo?: number;
+  /** Rows skipped from the newest shown (0 on the first page). */
+  offset: number;
   notice?: Notice;
 }
 
 export function initialLogView(): LogViewState {
-  return { paused: false, revision: 0 };
+  return { paused: false, revision: 0, offset: 0 };
 }
