@@ -117,6 +117,61 @@ describe("sensors view", () => {
     await context.close();
   });
 
+  it("draws the distance axis from 0 to 60 cm, lines with 3:1 contrast in dark and light mode, times to the second", async () => {
+    const { page, context } = await app.newPage({ options: FAST });
+    await page.emulateMedia({ colorScheme: "dark" });
+    await openSensors(page);
+    await page.getByTestId("distance-value").filter({ hasText: "10 cm" }).waitFor();
+    const distance = page.getByTestId("distance-chart");
+    const accel = page.getByTestId("accel-chart");
+    // The reading of 10 cm lies inside the axis (it began at 20 before), with room above the sensor's 50 cm.
+    await expect.poll(() => distance.getAttribute("data-y-axis")).toBe("0 to 60");
+
+    /** The contrast of each line of a chart against the background of the card it is drawn on. */
+    const contrasts = (testId: string) =>
+      page.evaluate((id) => {
+        const host = document.querySelector<HTMLElement>(`[data-testid="${id}"]`);
+        const card = host?.closest(".card");
+        if (!host || !card) return [];
+        const ctx = document.createElement("canvas").getContext("2d");
+        const rgb = (css: string) => {
+          if (!ctx) return [0, 0, 0];
+          ctx.fillStyle = "#000";
+          ctx.fillStyle = css;
+          ctx.fillRect(0, 0, 1, 1);
+          return [...ctx.getImageData(0, 0, 1, 1).data.slice(0, 3)];
+        };
+        const lum = (c: number[]) => {
+          const [r, g, b] = c.map((v) => {
+            const s = v / 255;
+            return s <= 0.03928 ? s / 12.92 : ((s + 0.055) / 1.055) ** 2.4;
+          });
+          return 0.2126 * (r ?? 0) + 0.7152 * (g ?? 0) + 0.0722 * (b ?? 0);
+        };
+        const bg = lum(rgb(getComputedStyle(card).backgroundColor));
+        return (host.dataset.lineColours ?? "").split(" ").map((c) => {
+          const l = lum(rgb(c));
+          return Math.round(((Math.max(l, bg) + 0.05) / (Math.min(l, bg) + 0.05)) * 100) / 100;
+        });
+      }, testId);
+    await accel.locator("canvas").first().waitFor();
+    const dark = await contrasts("accel-chart");
+    expect(dark).toHaveLength(3);
+    for (const c of dark) expect(c).toBeGreaterThanOrEqual(3);
+    expect(Math.min(...(await contrasts("distance-chart")))).toBeGreaterThanOrEqual(3);
+    // The colours follow a change of scheme without leaving the view.
+    const darkColours = await accel.getAttribute("data-line-colours");
+    await page.emulateMedia({ colorScheme: "light" });
+    await expect.poll(() => accel.getAttribute("data-line-colours")).not.toBe(darkColours);
+    for (const c of await contrasts("accel-chart")) expect(c).toBeGreaterThanOrEqual(3);
+
+    // "last reading at 14:02:11", not "14:02:11.045".
+    const status = await page.getByTestId("poll-status").textContent();
+    expect(status).toMatch(/last reading at \d{1,2}:\d{2}:\d{2}( [AP]M)?\./);
+    expect(status).not.toMatch(/\d{2}:\d{2}:\d{2}\.\d/);
+    await context.close();
+  });
+
   it("stops polling while the tab is hidden and after Stop, and resumes", async () => {
     const { page, context } = await app.newPage({ options: FAST });
     await openSensors(page);

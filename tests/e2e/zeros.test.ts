@@ -1,7 +1,7 @@
 import { readFile } from "node:fs/promises";
 import type { Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { FACTORY_ZEROS } from "../../src/protocol/index.ts";
+import { FACTORY_ZEROS, STANDARD_ZEROS } from "../../src/protocol/index.ts";
 import { parseZerosBackup } from "../../src/protocol/zeros-backup.ts";
 import { type AppHarness, connectRobot, cspViolations, robotTime, squash, startHarness } from "./harness.ts";
 import "./rbc-test-globals.ts";
@@ -135,7 +135,7 @@ describe("zeros editor", () => {
     await context.close();
   });
 
-  it("restores a backup into the editor, warning when it comes from another robot; factory defaults fill it", async () => {
+  it("restores a backup into the editor, warning when it comes from another robot; the factory zeros fill it", async () => {
     const { page, context } = await app.newPage();
     await openZeros(page);
     const zeros = FACTORY_ZEROS.map((v, i) => (i === 0 ? v + 3 : v));
@@ -158,9 +158,64 @@ describe("zeros editor", () => {
     expect(await simZeros(page)).toEqual([...FACTORY_ZEROS]);
 
     await page.locator("#zero-0").fill("130");
-    await page.getByRole("button", { name: "Factory defaults" }).click();
-    await page.getByText(/Factory defaults are in the editor/).waitFor();
+    await page.getByRole("button", { name: "Load factory zeros" }).click();
+    await page.getByText(/The factory zeros are in the editor/).waitFor();
     expect(await page.locator("#zero-0").inputValue()).toBe(String(FACTORY_ZEROS[0]));
+    await context.close();
+  });
+
+  it("backs up the robot's zeros on their own, in the write path's format and name, writing nothing", async () => {
+    const { page, context } = await app.newPage();
+    await openZeros(page);
+    // The editor has an unsaved edit: the backup holds what the robot holds, not the editor.
+    const onRobot = [...FACTORY_ZEROS];
+    await page.locator("#zero-7").fill("90");
+    const written = await page.evaluate(() => window.__rbcTest?.port.written.length ?? 0);
+
+    const downloadPromise = page.waitForEvent("download");
+    await page.getByRole("button", { name: "Back up zeros" }).click();
+    const download = await downloadPromise;
+    const name = download.suggestedFilename();
+    expect(name).toMatch(/^rbc-zeros-8958899989309-\d{4}-\d{2}-\d{2}\.json$/);
+    const saved = page.getByText(/^Backup saved as/);
+    await saved.waitFor();
+    expect(await saved.textContent().then(squash)).toBe(
+      `Backup saved as ${name}, 16 zeros read from the robot. To put them back later: Restore from backup.`,
+    );
+    const parsed = parseZerosBackup(await readFile(await download.path(), "utf8"));
+    expect(parsed.ok && parsed.backup).toMatchObject({
+      format: "rbc-zeros",
+      version: 1,
+      serialNumber: "8958899989309",
+      firmware: "2.23",
+      zeros: onRobot,
+    });
+
+    // Only the read went out (one request): nothing was written, and the edit is still in the editor.
+    expect(await simZeros(page)).toEqual(onRobot);
+    const sent = await page.evaluate((from) => window.__rbcTest?.port.written.slice(from), written);
+    expect(sent?.map((bytes) => bytes[8])).toEqual([0x0b]);
+    expect(await page.locator("#zero-7").inputValue()).toBe("90");
+    await context.close();
+  });
+
+  it("names the factory and reference zeros and says which is which", async () => {
+    const { page, context } = await app.newPage();
+    await openZeros(page);
+    const tables = await page.getByTestId("zero-tables").textContent().then(squash);
+    expect(tables).toContain(
+      `Factory zeros The values the robot's firmware holds when it is new: ${FACTORY_ZEROS.join(" ")}.`,
+    );
+    expect(tables).toContain(
+      `Reference zeros The table the robot checks every write against: ${STANDARD_ZEROS.join(" ")}. Each zero must stay within ±15 of it`,
+    );
+    // The button's description is the explanation beside it.
+    const button = page.getByRole("button", { name: "Load factory zeros" });
+    expect(await button.getAttribute("aria-describedby")).toBe("factory-zeros-why");
+    // An unchanged row says so to a screen reader with text, not with a label on a plain span.
+    const unchanged = page.locator('tr[data-servo="1"] .zero-diff');
+    expect(await unchanged.locator("[aria-label]").count()).toBe(0);
+    expect(await unchanged.locator(".sr-only").textContent()).toBe("unchanged");
     await context.close();
   });
 

@@ -2,7 +2,15 @@ import { RbcCancelledError } from "../../device/errors.ts";
 import { type SafeZeroWrite, ZeroBackupError, ZeroWriteFailedError } from "../../device/index.ts";
 import type { ZeroWriteResult } from "../../device/types.ts";
 import { HUNO_JOINT_NAMES } from "../../protocol/servo-limits.ts";
-import { diffZeros, STANDARD_ZEROS, ZERO_COUNT, zeroProblems, zeroRange } from "../../protocol/zeros.ts";
+import {
+  diffZeros,
+  FACTORY_ZEROS,
+  STANDARD_ZEROS,
+  ZERO_COUNT,
+  ZERO_TOLERANCE,
+  zeroProblems,
+  zeroRange,
+} from "../../protocol/zeros.ts";
 import { serialMismatchWarning } from "../../protocol/zeros-backup.ts";
 import { formatFirmware } from "../../shared/format.ts";
 import { type GlobalValues, noExtraArguments, parseCommand } from "../args.ts";
@@ -32,17 +40,50 @@ export function parseZeroList(words: readonly string[]): number[] {
   });
 }
 
-function zerosTable(zeros: readonly number[]): string[] {
-  const lines = ["  servo  joint                 value  standard  allowed"];
-  zeros.forEach((v, id) => {
+/** Headers, then one row per servo; each cell is text. */
+type Column = { header: string; align: "left" | "right"; cells: string[] };
+
+/** Lays columns out so that every cell lines up under its header, whatever the width of a value. */
+export function alignColumns(columns: readonly Column[], indent = "  ", gap = "  "): string[] {
+  const widths = columns.map((c) => Math.max(c.header.length, ...c.cells.map((t) => t.length)));
+  const pad = (text: string, i: number) =>
+    columns[i]!.align === "right" ? text.padStart(widths[i]!) : text.padEnd(widths[i]!);
+  const rows = Math.max(0, ...columns.map((c) => c.cells.length));
+  const line = (cell: (c: Column) => string) =>
+    `${indent}${columns.map((c, i) => pad(cell(c), i)).join(gap)}`.trimEnd();
+  const lines = [line((c) => c.header)];
+  for (let r = 0; r < rows; r++) lines.push(line((c) => c.cells[r] ?? ""));
+  return lines;
+}
+
+/**
+ * The robot's zeros beside the two tables people mix up, named as in the panel: the reference zeros (what the
+ * RBC checks every write against, ±15) and the factory zeros (what the firmware holds when new).
+ */
+export function zerosTable(zeros: readonly number[]): string[] {
+  const ids = zeros.map((_, id) => id);
+  const diff = (id: number) => {
+    const d = zeros[id]! - STANDARD_ZEROS[id]!;
+    return d === 0 ? "0" : d > 0 ? `+${d}` : String(d);
+  };
+  const range = (id: number) => {
     const { min, max } = zeroRange(id);
-    const d = v - STANDARD_ZEROS[id]!;
-    const delta = d === 0 ? "" : d > 0 ? ` (+${d})` : ` (${d})`;
-    const joint = (HUNO_JOINT_NAMES[id] ?? "").padEnd(20);
-    lines.push(
-      `  ${String(id).padStart(5)}  ${joint}  ${String(v).padStart(5)}${delta.padEnd(6)} ${String(STANDARD_ZEROS[id]).padStart(4)}    ${min}-${max}`,
-    );
-  });
+    return `${min}-${max}`;
+  };
+  const lines = alignColumns([
+    { header: "servo", align: "right", cells: ids.map(String) },
+    { header: "joint", align: "left", cells: ids.map((id) => HUNO_JOINT_NAMES[id] ?? "") },
+    { header: "zero", align: "right", cells: zeros.map(String) },
+    { header: "reference", align: "right", cells: ids.map((id) => String(STANDARD_ZEROS[id])) },
+    { header: "difference", align: "right", cells: ids.map(diff) },
+    { header: "allowed", align: "right", cells: ids.map(range) },
+    { header: "factory", align: "right", cells: ids.map((id) => String(FACTORY_ZEROS[id])) },
+  ]);
+  lines.push(
+    "",
+    `  reference: the table the RBC checks every write against; each zero must stay within ±${ZERO_TOLERANCE} of it`,
+    "  (allowed), or the RBC refuses the whole table. factory: the zeros the firmware holds when new.",
+  );
   return lines;
 }
 
@@ -151,17 +192,24 @@ export const zerosCommand: CommandDef = {
   usage: "rbc zeros (read | write V0,V1,…,V15 | backup [FILE] | restore FILE) (--port PATH | --demo)",
   description: `
 The zero positions are 16 calibration values, one per servo 0-15, stored in the RBC. Every motion is
-shifted by them, so wrong values make the robot stand crooked.
+shifted by them, so wrong values make the robot stand crooked. Two fixed tables matter (the panel uses the
+same names):
 
-  read             Prints the 16 values beside the standard table and the allowed range.
-  write V0,…,V15   Writes 16 new values (comma separated, or 16 separate words). Each must lie within ±15
-                   of the standard table 125 202 162 66 108 124 48 88 184 142 90 40 125 161 210 127, or the
-                   RBC refuses the whole table: rbc checks this first and sends nothing if a value is out of
-                   range. Before writing it saves the current values to rbc-zeros-<serial>-<date>.json
-                   (in --backup-dir, default the current folder), and after writing it reads them back to
-                   verify.
+  reference zeros  125 202 162 66 108 124 48 88 184 142 90 40 125 161 210 127
+                   The table the RBC checks every write against: each zero must lie within ±15 of it, or
+                   the RBC refuses the whole table. rbc checks this first and sends nothing if a value is
+                   out of range.
+  factory zeros    124 202 162 65 108 125 46 88 184 142 90 40 125 161 210 126
+                   What the firmware holds when the robot is new (a starting point, not a calibration).
+
+  read             Prints the 16 values beside the reference zeros, the allowed range and the factory
+                   zeros.
+  write V0,…,V15   Writes 16 new values (comma separated, or 16 separate words), each within ±15 of the
+                   reference zeros. Before writing it saves the current values to
+                   rbc-zeros-<serial>-<date>.json (in --backup-dir, default the current folder), and after
+                   writing it reads them back to verify.
   backup [FILE]    Saves the current values to FILE (default rbc-zeros-<serial>-<date>.json), in the same
-                   format as the panel's backups.
+                   format as the panel's backups ("Back up zeros" there).
   restore FILE     Writes the values of a backup file (checked first; a warning if it was saved from
                    another robot), with the same automatic backup and verification as write.
 
@@ -263,7 +311,7 @@ async function backup(env: RunEnv, values: Values, args: string[]): Promise<numb
     savedAt: saved?.savedAt,
   });
   env.out.line(
-    `Saved the zeros of robot ${robotName(current.serialNumber)} to ${path}: ${current.zeros.join(",")}`,
+    `Backup saved as ${path}, ${current.zeros.length} zeros read from robot ${robotName(current.serialNumber)}: ${current.zeros.join(",")}`,
   );
   return EXIT.ok;
 }

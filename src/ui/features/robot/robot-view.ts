@@ -7,12 +7,12 @@ import {
   platformName,
 } from "../../../protocol/catalog.ts";
 import { formatFirmware } from "../../../shared/format.ts";
-import { formatByteHex, formatClockTime, formatCount } from "../../format.ts";
-import { memoryRow } from "../../shell/memory-row.ts";
+import { formatByteHex } from "../../format.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
 import { disconnect } from "../connection/actions.ts";
 import { refreshDeviceInfo } from "./actions.ts";
+import { memoryUsedRow } from "./memory-used.ts";
 
 const PLATFORM_WORDS: Record<string, string> = {
   HUNO: "HUNO (humanoid)",
@@ -20,11 +20,6 @@ const PLATFORM_WORDS: Record<string, string> = {
   DOGY: "DOGY (dog)",
   PF2: "PF2 (user mode)",
 };
-
-/** "1,024 bytes used", or nothing before the first read. */
-function usedText(free: number | undefined, size: number): string {
-  return free === undefined ? "" : `${formatCount(size - free)} bytes used`;
-}
 
 function errorCodeLine(code: number | undefined): TemplateResult | string {
   if (code === undefined) return "—";
@@ -77,12 +72,12 @@ function render(ctx: ViewContext): TemplateResult {
           <dd data-testid="error-code">${errorCodeLine(d.errorCode)}</dd>
         </div>
       </dl>
-      <h2>Free memory for downloads</h2>
+      <h2>Memory on the robot</h2>
       <div class="memory">
-        ${memoryRow("memory-motion", "Motion area", d.freeMotion, MOTION_AREA_BYTES, usedText(d.freeMotion, MOTION_AREA_BYTES))}
-        ${memoryRow("memory-action", "Action area", d.freeAction, ACTION_AREA_BYTES, usedText(d.freeAction, ACTION_AREA_BYTES))}
+        ${memoryUsedRow("memory-motion", "Motion area", d.freeMotion, MOTION_AREA_BYTES)}
+        ${memoryUsedRow("memory-action", "Action area", d.freeAction, ACTION_AREA_BYTES)}
       </div>
-      <p class="muted small">${d.readAt ? `Read from the robot at ${formatClockTime(d.readAt)}.` : nothing}</p>
+      <p class="muted small">${d.readAt ? `Read from the robot at ${new Date(d.readAt).toLocaleTimeString()}.` : nothing}</p>
       ${liveNotice(d.notice, "Device card result")}
     </section>
   `;

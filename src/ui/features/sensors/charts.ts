@@ -1,5 +1,6 @@
-import { prefersReducedMotion, seriesColour } from "../../charts/chart-loader.ts";
+import { prefersReducedMotion } from "../../charts/chart-loader.ts";
 import { ChartSlot } from "../../charts/chart-slot.ts";
+import type { ChartSeries } from "../../charts/uplot-charts.ts";
 import type { AppContext } from "../../context.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
 import type { RingSeries } from "./ring-series.ts";
@@ -11,27 +12,48 @@ function seconds(v: number): string {
   return v === 0 ? "now" : `${v} s`;
 }
 
+/**
+ * Line colours are theme tokens, each with at least 3:1 contrast against the chart's background in light and in
+ * dark mode (the hue wheel's blue for Z had about 2:1 on the dark background); Z is dashed as well, so the three
+ * lines differ in more than colour.
+ */
+const DISTANCE_LINE: ChartSeries[] = [{ label: "Distance (cm)", stroke: "--accent" }];
+const ACCEL_LINES: ChartSeries[] = [
+  { label: "X", stroke: "--accent" },
+  { label: "Y", stroke: "--warning" },
+  { label: "Z", stroke: "--text", dash: [6, 3] },
+];
+
+/**
+ * The distance axis is fixed at 0-60 cm with a label every 10 cm: the sensor reports 10 to 50 cm (10 when it
+ * sees nothing), and uPlot's own ticks left the lowest reading, 10, below the first label (20).
+ */
+const DISTANCE_RANGE: [number, number] = [0, 60];
+const DISTANCE_TICKS = [0, 10, 20, 30, 40, 50, 60];
+
 function liveSlot(
   series: RingSeries,
   key: string,
   title: string,
   yLabel: string,
-  labels: string[],
+  lines: ChartSeries[],
   yRange: [number, number],
+  ySplits?: number[],
 ): ChartSlot {
   return new ChartSlot(
     () => ({
       key,
       spec: {
         title,
-        height: 180,
+        height: 220,
         xLabel: "Seconds ago",
         yLabel,
         xRange: [-30, 0],
         yRange,
+        ...(ySplits ? { ySplits } : {}),
         xFormat: seconds,
         liveLegend: false,
-        series: labels.map((label, i) => ({ label, stroke: seriesColour(i * 5, 16) })),
+        series: lines,
       },
       x: series.relativeSeconds(),
       ys: series.values,
@@ -51,15 +73,16 @@ export class SensorCharts implements Controller {
       "distance",
       "Distance in cm over the last 30 seconds",
       "cm",
-      ["Distance (cm)"],
-      [10, 50],
+      DISTANCE_LINE,
+      DISTANCE_RANGE,
+      DISTANCE_TICKS,
     );
     this.accel = liveSlot(
       watch.accel,
       "accel",
       "Accelerometer X, Y and Z over the last 30 seconds",
       "Reading",
-      ["X", "Y", "Z"],
+      ACCEL_LINES,
       [-10, 10],
     );
   }

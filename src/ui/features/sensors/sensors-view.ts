@@ -4,7 +4,6 @@ import { live } from "lit-html/directives/live.js";
 import { ref } from "lit-html/directives/ref.js";
 import { repeat } from "lit-html/directives/repeat.js";
 import { BUILT_IN_MOTIONS } from "../../../protocol/catalog.ts";
-import { formatClockTime } from "../../format.ts";
 import { liveNotice, notice } from "../../shell/notice.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
 import {
@@ -63,7 +62,7 @@ function pollCard(ctx: ViewContext): TemplateResult {
                 effectiveRate(s) < s.rateHz
                   ? " (at most 5 while listening to sound, so the robot can report it)"
                   : ""
-              }${s.readAt ? `; last reading at ${formatClockTime(s.readAt)}` : ""}.`
+              }${s.readAt ? `; last reading at ${clockTime(s.readAt)}` : ""}.`
             : s.polling
               ? "Not reading right now."
               : "Paused."
@@ -146,7 +145,7 @@ function eventsCard(ctx: ViewContext): TemplateResult {
             <div class="memory-row sound-level">
               <label for="sound-meter">Sound level</label>
               <meter id="sound-meter" min="0" max="255" value=${s.soundLevel?.value ?? 0}></meter>
-              <span class="num" data-testid="sound-level">${s.soundLevel ? `${s.soundLevel.value} at ${formatClockTime(s.soundLevel.at)}` : "nothing heard yet"}</span>
+              <span class="num" data-testid="sound-level">${s.soundLevel ? `${s.soundLevel.value} at ${clockTime(s.soundLevel.at)}` : "nothing heard yet"}</span>
             </div>`
           : nothing
       }
@@ -177,7 +176,7 @@ function eventsCard(ctx: ViewContext): TemplateResult {
                 s.events,
                 (e) => e.id,
                 (e) => html`<li>
-                  <span class="num muted">${formatClockTime(e.at)}</span>
+                  <span class="num muted">${clockTime(e.at)}</span>
                   <span>${describeEvent(e)}</span>
                   ${e.count > 1 ? html`<span class="num muted">×${e.count}</span>` : nothing}
                 </li>`,
@@ -215,6 +214,14 @@ const sensorsView: AppView = {
 };
 
 export default sensorsView;
+
+/**
+ * A time of day to the second in the reader's locale ("2:41:07 PM"): readings come several times a second, and
+ * milliseconds on screen only flicker.
+ */
+function clockTime(epochMs: number): string {
+  return new Date(epochMs).toLocaleTimeString();
+}
 
 /** The threshold typed into the input, as a whole number 0-255. */
 function thresholdOf(e: Event): number {

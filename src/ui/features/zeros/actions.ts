@@ -7,9 +7,11 @@ import {
 import { ZeroWriteFailedError } from "../../../device/zero-policy.ts";
 import { ZERO_COUNT } from "../../../protocol/zeros.ts";
 import {
+  createZerosBackup,
   parseZerosBackup,
   serializeZerosBackup,
   serialMismatchWarning,
+  zerosBackupFileName,
 } from "../../../protocol/zeros-backup.ts";
 import { formatFirmware } from "../../../shared/format.ts";
 import type { AppState, Notice } from "../../app-state.ts";
@@ -21,7 +23,7 @@ import type { Store } from "../../store.ts";
 import { checkDraft, draftTable, factoryDraft, toDraft } from "./editor.ts";
 import type { ZerosState } from "./state.ts";
 
-/** What the zeros view does: read, edit, back up and write, restore, factory defaults. */
+/** What the zeros view does: read, edit, back up, write (after a backup), restore, factory zeros. */
 
 function patchZeros(store: Store<AppState>, patch: Partial<ZerosState>): void {
   store.update((s) => ({ zeros: { ...s.zeros, ...patch } }));
@@ -61,15 +63,58 @@ export async function readZerosFromRobot(ctx: AppContext): Promise<void> {
   }
 }
 
-export function useFactoryDefaults(ctx: AppContext): void {
+export function useFactoryZeros(ctx: AppContext): void {
   patchZeros(ctx.store, {
     draft: factoryDraft(),
-    source: "factory defaults",
+    source: "the factory zeros",
     confirming: false,
     result: undefined,
     fileNotice: {
       tone: "info",
-      text: "Factory defaults are in the editor. Nothing is written until you press Write.",
+      text: "The factory zeros are in the editor. Nothing is written until you press Write.",
+    },
+  });
+}
+
+/**
+ * "Back up zeros": reads the table the robot holds now and saves it in the panel's backup format, under the
+ * same name the write path uses (rbc-zeros-<serial>-<date>.json). The editor's unsaved edits are kept; the
+ * "Stored" column shows what was just read.
+ */
+export async function backUpZeros(ctx: AppContext): Promise<void> {
+  const { session, store } = ctx;
+  if (store.get().zeros.busy) return;
+  patchZeros(store, { busy: "backing-up", confirming: false, fileNotice: undefined });
+  let zeros: number[];
+  try {
+    zeros = await session.run("Backing up zeros", (client) => client.readZeros());
+  } catch (e) {
+    patchZeros(store, {
+      busy: undefined,
+      fileNotice: errorNotice("No backup was saved: the zeros could not be read from the robot.", e),
+    });
+    return;
+  }
+  const c = store.get().connection;
+  const savedAt = new Date();
+  const serialNumber = c.serialNumber ?? "unknown";
+  const backup = createZerosBackup({
+    serialNumber,
+    firmware: c.firmware ? formatFirmware(c.firmware) : "unknown",
+    zeros,
+    savedAt,
+  });
+  const name = zerosBackupFileName(serialNumber, savedAt);
+  downloadTextFile(name, serializeZerosBackup(backup), "application/json");
+  const z = store.get().zeros;
+  patchZeros(store, {
+    busy: undefined,
+    stored: zeros,
+    // Before the first read the editor is empty: fill it with what was read.
+    ...(z.draft.length === ZERO_COUNT ? {} : { draft: toDraft(zeros), source: "the robot" }),
+    fileNotice: {
+      tone: "ok",
+      text: `Backup saved as ${name}, ${zeros.length} zeros read from the robot. To put them back later: Restore from backup.`,
     },
   });
 }

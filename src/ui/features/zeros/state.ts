@@ -6,9 +6,9 @@ export interface ZerosState {
   stored?: number[];
   /** The editor's text per servo 0-15 (text, so that a half-typed or invalid value can be shown). */
   draft: string[];
-  /** Where the editor's values came from, for people ("the robot", "factory defaults", a file name). */
+  /** Where the editor's values came from, for people ("the robot", "the factory zeros", a backup file). */
   source?: string;
-  busy?: "reading" | "writing";
+  busy?: "reading" | "writing" | "backing-up";
   confirming: boolean;
   result?: Notice;
   fileNotice?: Notice;

@@ -1,16 +1,24 @@
 import { html, nothing, type TemplateResult } from "lit-html";
 import { live } from "lit-html/directives/live.js";
-import { ZERO_COUNT, type ZeroChange, zeroRange } from "../../../protocol/zeros.ts";
+import {
+  FACTORY_ZEROS,
+  STANDARD_ZEROS,
+  ZERO_COUNT,
+  ZERO_TOLERANCE,
+  type ZeroChange,
+  zeroRange,
+} from "../../../protocol/zeros.ts";
 import { formatDelta } from "../../format.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
 import {
   askToWrite,
+  backUpZeros,
   cancelWrite,
   readZerosFromRobot,
   restoreFromFile,
   setZeroText,
-  useFactoryDefaults,
+  useFactoryZeros,
   writeZerosToRobot,
 } from "./actions.ts";
 import { checkDraft, type DraftCheck, draftTable, jointName, pendingChanges } from "./editor.ts";
@@ -62,7 +70,7 @@ function row(ctx: ViewContext, id: number, check: DraftCheck, stored: readonly n
       </td>
       <td class="num zero-stored" data-label="Stored">${storedValue ?? "—"}</td>
       <td class="num zero-diff ${delta === 0 ? "" : "has-diff"}" data-label="Change">
-        ${delta === 0 ? html`<span class="muted" aria-label="unchanged">·</span>` : formatDelta(delta)}
+        ${delta === 0 ? html`<span class="muted" aria-hidden="true">·</span><span class="sr-only">unchanged</span>` : formatDelta(delta)}
       </td>
     </tr>
   `;
@@ -121,6 +129,43 @@ function writeControls(ctx: ViewContext, check: DraftCheck, changes: readonly Ze
   `;
 }
 
+/**
+ * The two tables people confuse, under the names the CLI uses too: the factory zeros (what a new robot holds)
+ * and the reference zeros (what the robot checks every write against).
+ */
+function zeroTables(disabled: boolean, ctx: ViewContext): TemplateResult {
+  return html`
+    <dl class="zero-tables" data-testid="zero-tables">
+      <div>
+        <dt>Factory zeros</dt>
+        <dd>
+          <span id="factory-zeros-why">
+            The values the robot's firmware holds when it is new:
+            <span class="num zero-list">${FACTORY_ZEROS.join(" ")}</span>.
+          </span>
+          <button
+            type="button"
+            class="btn"
+            ?disabled=${disabled}
+            aria-describedby="factory-zeros-why"
+            @click=${() => useFactoryZeros(ctx)}
+          >
+            Load factory zeros
+          </button>
+        </dd>
+      </div>
+      <div>
+        <dt>Reference zeros</dt>
+        <dd>
+          The table the robot checks every write against:
+          <span class="num zero-list">${STANDARD_ZEROS.join(" ")}</span>. Each zero must stay within
+          ±${ZERO_TOLERANCE} of it (the range beside each field), or the robot refuses the whole table.
+        </dd>
+      </div>
+    </dl>
+  `;
+}
+
 function render(ctx: ViewContext): TemplateResult {
   const z = ctx.state.zeros;
   const stored = z.stored;
@@ -136,8 +181,15 @@ function render(ctx: ViewContext): TemplateResult {
           <button type="button" class="btn" ?disabled=${busy} @click=${() => void readZerosFromRobot(ctx)}>
             ${z.busy === "reading" ? "Reading…" : "Read from robot"}
           </button>
-          <button type="button" class="btn" ?disabled=${busy || !ready} @click=${() => useFactoryDefaults(ctx)}>
-            Factory defaults
+          <button
+            type="button"
+            class="btn"
+            data-testid="backup-zeros"
+            ?disabled=${busy}
+            aria-describedby="backup-why"
+            @click=${() => void backUpZeros(ctx)}
+          >
+            ${z.busy === "backing-up" ? "Backing up…" : "Back up zeros"}
           </button>
           <label class="btn file-button ${busy || !ready ? "is-disabled" : ""}">
             Restore from backup…
@@ -158,10 +210,11 @@ function render(ctx: ViewContext): TemplateResult {
         </div>
       </div>
       <p class="muted">
-        The robot adds each servo's zero to every motion it plays. A value must stay within ±15 of the standard
-        table, or the robot refuses the whole table.
+        The robot adds each servo's zero to every motion it plays.
+        <span id="backup-why">Back up zeros saves the robot's current zeros to a file you can restore later.</span>
         ${z.source ? html`Values in the editor come from <strong>${z.source}</strong>.` : nothing}
       </p>
+      ${zeroTables(busy || !ready, ctx)}
       ${liveNotice(z.fileNotice, "Backup file")}
       ${
         ready
