@@ -1,0 +1,421 @@
+import { ProtocolError } from "./errors.ts";
+
+/**
+ * The RBC bootloader's dialogue (PROTOCOL.md §11) as a pure state machine: bytes from the robot and timeouts
+ * go in, bytes to send come out. The device layer (`device/firmware-update.ts`) owns the port, the timers and
+ * the user; the simulated bootloader (`sim/sim-bootloader.ts`) plays the other side.
+ *
+ *   robot `^` → host `40 26 24` → robot `?` → for each line: host `:…` CR LF → robot one status character
+ *
+ * Status characters: `~` line done, `-` line checksum error (the line is sent again, at most
+ * MAX_LINE_RESENDS times), `%` flash page error, `@` file complete, `#` file complete with errors. XOFF (0x13)
+ * pauses the host's sending and XON (0x11) resumes it, at any point; they are never status characters.
+ */
+
+export const BOOTLOADER_ACTIVE = 0x5e; // "^"
+export const BOOTLOADER_READY = 0x3f; // "?"
+export const BOOTLOADER_ENTRY = Uint8Array.of(0x40, 0x26, 0x24); // "@&$"
+export const LINE_DONE = 0x7e; // "~"
+export const LINE_CHECKSUM_ERROR = 0x2d; // "-"
+export const PAGE_ERROR = 0x25; // "%"
+export const FILE_COMPLETE = 0x40; // "@"
+export const FILE_COMPLETE_WITH_ERRORS = 0x23; // "#"
+export const XOFF = 0x13;
+export const XON = 0x11;
+/** A line answered `-` is sent again at most this many times (PROTOCOL.md §11 [decision]). */
+export const MAX_LINE_RESENDS = 3;
+/** Times the host answers a `^` that is then not followed by `?` before it gives up (see `timeout`). */
+export const MAX_ENTRY_TRIES = 3;
+
+export type BootloaderFailure =
+  /** No `^`: the robot was not switched off and on, or its bootloader did not start. */
+  | "no-bootloader"
+  /** `^` came, but `?` never followed the entry bytes. */
+  | "not-ready"
+  /** A line was answered `-` once more than it may be resent. */
+  | "checksum"
+  /** `%`: a flash page could not be written. */
+  | "page-error"
+  /** `#`: the bootloader reached the end of the file with errors. */
+  | "completed-with-errors"
+  /** `@` before the last line was sent. */
+  | "early-complete"
+  /** No status character for a line in time. */
+  | "no-status"
+  /** XOFF and no XON in time. */
+  | "stalled"
+  /** `^` in the middle of the file: the robot restarted. */
+  | "restarted"
+  | "cancelled"
+  | "disconnected"
+  /** `@`, but the new firmware does not answer afterwards (device layer). */
+  | "no-answer";
+
+/** What the robot's application flash holds after the dialogue ended. */
+export type RobotHolds =
+  /** No line of the file was sent: nothing can have been written. */
+  | "previous-firmware"
+  /** Lines were sent and the file did not complete: part of it may have been written. */
+  | "incomplete-firmware"
+  /** The bootloader reported the whole file written without errors (`@`). */
+  | "new-firmware";
+
+/** One sentence on what the robot holds, for the panel and the CLI (cancel, failure, result). */
+export function robotHoldsSentence(holds: RobotHolds): string {
+  switch (holds) {
+    case "previous-firmware":
+      return "Nothing was written: the robot still holds its previous firmware.";
+    case "incomplete-firmware":
+      return "The robot's firmware may now be incomplete, and the robot may not work until an update succeeds.";
+    case "new-firmware":
+      return "The bootloader reported the new firmware written without errors.";
+  }
+}
+
+/** What to do next, given what the robot holds. */
+export function recoverySentence(holds: RobotHolds): string {
+  return holds === "new-firmware"
+    ? "Switch the robot off and on; if it still does not answer, run the update again with a firmware file you trust (the bootloader is never overwritten)."
+    : "The bootloader is never overwritten: switch the robot off and on and run the update again.";
+}
+
+export class BootloaderError extends ProtocolError {
+  override name = "BootloaderError";
+  constructor(
+    override readonly code: BootloaderFailure,
+    readonly holds: RobotHolds,
+    message: string,
+    /** The file's line (1-based) the failure is about, when there is one. */
+    readonly line?: number,
+  ) {
+    super(code, message);
+  }
+}
+
+/** Builds the error for a failure: what happened, what the robot holds, what to do. */
+export function bootloaderError(
+  code: BootloaderFailure,
+  holds: RobotHolds,
+  detail: { line?: number; waitedMs?: number } = {},
+): BootloaderError {
+  const at = detail.line !== undefined ? ` (line ${detail.line} of the file)` : "";
+  const waited = detail.waitedMs !== undefined ? ` within ${formatSeconds(detail.waitedMs)}` : "";
+  const what: Record<BootloaderFailure, string> = {
+    "no-bootloader": `The robot's bootloader did not announce itself${waited} after the robot was to be switched off and on.`,
+    "not-ready": "The robot's bootloader did not answer the request to take a new firmware.",
+    checksum: `The bootloader reported a checksum error on a line${at} ${MAX_LINE_RESENDS + 1} times in a row; the link is garbling data.`,
+    "page-error": `The bootloader could not write a flash page${at}.`,
+    "completed-with-errors": "The bootloader reached the end of the file but reported errors.",
+    "early-complete": `The bootloader reported the file complete before its last line was sent${at}.`,
+    "no-status": `The bootloader did not answer a line${at}${waited}.`,
+    stalled: `The bootloader asked to pause${at} and did not ask to go on${waited}.`,
+    restarted: `The robot restarted in the middle of the update${at}.`,
+    cancelled: "The firmware update was cancelled.",
+    disconnected: "The connection to the robot was lost during the firmware update.",
+    "no-answer": `The robot does not answer after the update${waited}.`,
+  };
+  const todo =
+    code === "no-bootloader"
+      ? "Switch the robot off, then on again while the update waits for it, and run the update again; keep the cable plugged in."
+      : recoverySentence(holds);
+  return new BootloaderError(code, holds, `${what[code]} ${robotHoldsSentence(holds)} ${todo}`, detail.line);
+}
+
+function formatSeconds(ms: number): string {
+  return ms >= 1000 ? `${(ms / 1000).toFixed(ms % 1000 === 0 ? 0 : 1)} s` : `${Math.round(ms)} ms`;
+}
+
+/** A line as the bootloader gets it: its ASCII text followed by CR LF. */
+export function lineBytes(text: string): Uint8Array {
+  const out = new Uint8Array(text.length + 2);
+  for (let i = 0; i < text.length; i++) out[i] = text.charCodeAt(i) & 0x7f;
+  out[text.length] = 0x0d;
+  out[text.length + 1] = 0x0a;
+  return out;
+}
+
+/** What the host is waiting for; each kind has its own timeout in the device layer. */
+export type BootloaderWait = "bootloader" | "ready" | "status" | "xon";
+
+export type DialoguePhase = "waiting-for-bootloader" | "entering" | "sending" | "complete" | "failed";
+
+export interface DialogueProgress {
+  phase: DialoguePhase;
+  /** Lines the bootloader answered `~` (the end-of-file line counts when `@` or `~` answered it). */
+  linesDone: number;
+  lines: number;
+  /** Wire bytes (text + CR LF) of the lines done, and of the whole file. */
+  bytesDone: number;
+  bytes: number;
+  /** Lines sent again after a `-`. */
+  resends: number;
+  /** The bootloader sent XOFF and not yet XON. */
+  paused: boolean;
+}
+
+/** A record to send: its text (without CR LF) and its line in the file (for messages). */
+export interface DialogueLine {
+  text: string;
+  line: number;
+}
+
+/**
+ * The host's side of the dialogue. Feed it every byte from the robot (`receive`) and tell it when the
+ * current wait ran out (`timeout`); each returns the byte strings to write, in order. `wait` says what it is
+ * waiting for; its `seq` changes whenever a new wait starts, which is when the caller restarts its timer.
+ *
+ * A `^` may come from the running application (a sound level of 94 is 0x5E), so a `^` not followed by `?`
+ * sends the host back to waiting for another `^` (at most MAX_ENTRY_TRIES times), and any byte other than
+ * `?`, `^`, XON or XOFF after the entry bytes does so at once.
+ */
+export class BootloaderDialogue {
+  private state: DialoguePhase = "waiting-for-bootloader";
+  private readonly lines: Uint8Array[];
+  private readonly fileLines: number[];
+  private index = 0;
+  private tries = 0;
+  private entryTries = 0;
+  private resendCount = 0;
+  /** A line is on its way and its status not yet in. */
+  private outstanding = false;
+  /** The end-of-file line was answered `~`; `@` or `#` is still to come. */
+  private lastLineDone = false;
+  private pending: Uint8Array | undefined;
+  private paused = false;
+  private sentAnyLine = false;
+  private doneBytes = 0;
+  private doneLines = 0;
+  private failure: BootloaderError | undefined;
+  private waitKey = "";
+  private waitSeq = 0;
+  /** Bytes that were neither a status nor flow control where one was expected (for diagnostics). */
+  strayBytes = 0;
+
+  constructor(
+    lines: readonly DialogueLine[],
+    private readonly options: { maxResends?: number; maxEntryTries?: number } = {},
+  ) {
+    if (lines.length === 0) throw new RangeError("A bootloader dialogue needs at least one line.");
+    this.lines = lines.map((l) => lineBytes(l.text));
+    this.fileLines = lines.map((l) => l.line);
+    this.updateWait();
+  }
+
+  get phase(): DialoguePhase {
+    return this.state;
+  }
+
+  get error(): BootloaderError | undefined {
+    return this.failure;
+  }
+
+  get done(): boolean {
+    return this.state === "complete" || this.state === "failed";
+  }
+
+  /** What the host waits for now and a number that changes with every new wait; undefined once over. */
+  get wait(): { for: BootloaderWait; seq: number } | undefined {
+    const kind = this.waitKind();
+    return kind ? { for: kind, seq: this.waitSeq } : undefined;
+  }
+
+  get holds(): RobotHolds {
+    if (this.state === "complete") return "new-firmware";
+    return this.sentAnyLine ? "incomplete-firmware" : "previous-firmware";
+  }
+
+  get progress(): DialogueProgress {
+    return {
+      phase: this.state,
+      linesDone: this.doneLines,
+      lines: this.lines.length,
+      bytesDone: this.doneBytes,
+      bytes: this.lines.reduce((n, l) => n + l.length, 0),
+      resends: this.resendCount,
+      paused: this.paused,
+    };
+  }
+
+  /** Bytes from the robot, in any chunking. Returns what to write now. */
+  receive(bytes: Uint8Array): Uint8Array[] {
+    for (const b of bytes) {
+      if (this.done) break;
+      this.byte(b);
+    }
+    return this.flush();
+  }
+
+  /** The current wait ran out (see `wait`). `waitedMs` is used in the message. Returns what to write now. */
+  timeout(waitedMs?: number): Uint8Array[] {
+    const kind = this.waitKind();
+    if (!kind) return [];
+    const line = this.fileLines[this.index];
+    switch (kind) {
+      case "bootloader":
+        // After a `^` that was answered, the bootloader was there: it is the entry that failed.
+        this.fail(this.entryTries > 0 ? "not-ready" : "no-bootloader", { waitedMs });
+        break;
+      case "ready":
+        if (this.entryTries >= (this.options.maxEntryTries ?? MAX_ENTRY_TRIES)) this.fail("not-ready", {});
+        else this.backToWaiting();
+        break;
+      case "status":
+        this.fail("no-status", { line, waitedMs });
+        break;
+      case "xon":
+        this.fail("stalled", { line, waitedMs });
+        break;
+    }
+    return this.flush();
+  }
+
+  /** Ends the dialogue from outside (Cancel, a lost link) and returns the error saying what the robot holds. */
+  abort(code: "cancelled" | "disconnected"): BootloaderError {
+    if (!this.done) this.fail(code, {});
+    return this.failure ?? bootloaderError(code, this.holds);
+  }
+
+  private byte(b: number): void {
+    switch (this.state) {
+      case "waiting-for-bootloader":
+        if (b === BOOTLOADER_ACTIVE) {
+          this.entryTries++;
+          this.paused = false;
+          this.pending = BOOTLOADER_ENTRY;
+          this.state = "entering";
+        }
+        return;
+      case "entering":
+        if (b === XOFF || b === XON) this.paused = b === XOFF;
+        else if (b === BOOTLOADER_READY) {
+          this.state = "sending";
+          this.pending = this.lines[0];
+        } else if (b === BOOTLOADER_ACTIVE) {
+          this.entryTries++;
+          this.pending = BOOTLOADER_ENTRY;
+        } else {
+          // Not the bootloader talking (the application, or noise): wait for a real `^`.
+          this.strayBytes++;
+          this.backToWaiting();
+        }
+        return;
+      case "sending":
+        this.sendingByte(b);
+        return;
+      default:
+        return;
+    }
+  }
+
+  private sendingByte(b: number): void {
+    const line = this.fileLines[this.index];
+    if (b === XOFF || b === XON) {
+      this.paused = b === XOFF;
+      return;
+    }
+    if (b === BOOTLOADER_ACTIVE) {
+      this.fail("restarted", { line });
+      return;
+    }
+    if (!this.outstanding) {
+      this.strayBytes++;
+      return;
+    }
+    const last = this.index === this.lines.length - 1;
+    switch (b) {
+      case LINE_DONE:
+        if (last) {
+          if (!this.lastLineDone) this.lineDone();
+          this.lastLineDone = true;
+          return;
+        }
+        this.lineDone();
+        this.index++;
+        this.tries = 0;
+        this.outstanding = false;
+        this.pending = this.lines[this.index];
+        return;
+      case LINE_CHECKSUM_ERROR:
+        if (this.tries >= (this.options.maxResends ?? MAX_LINE_RESENDS)) {
+          this.fail("checksum", { line });
+          return;
+        }
+        this.tries++;
+        this.resendCount++;
+        this.outstanding = false;
+        this.pending = this.lines[this.index];
+        return;
+      case PAGE_ERROR:
+        this.fail("page-error", { line });
+        return;
+      case FILE_COMPLETE_WITH_ERRORS:
+        this.fail("completed-with-errors", {});
+        return;
+      case FILE_COMPLETE:
+        if (!last) {
+          this.fail("early-complete", { line });
+          return;
+        }
+        if (!this.lastLineDone) this.lineDone();
+        this.outstanding = false;
+        this.state = "complete";
+        return;
+      default:
+        this.strayBytes++;
+    }
+  }
+
+  private lineDone(): void {
+    this.doneLines++;
+    this.doneBytes += this.lines[this.index]!.length;
+  }
+
+  private backToWaiting(): void {
+    this.state = "waiting-for-bootloader";
+    this.pending = undefined;
+    this.paused = false;
+  }
+
+  private fail(code: BootloaderFailure, detail: { line?: number; waitedMs?: number }): void {
+    this.failure = bootloaderError(code, this.holds, detail);
+    this.state = "failed";
+    this.pending = undefined;
+    this.outstanding = false;
+  }
+
+  /** Sends what is pending unless paused (the entry bytes go regardless: nothing is paused before `?`). */
+  private flush(): Uint8Array[] {
+    const out: Uint8Array[] = [];
+    if (this.pending && !this.done && (!this.paused || this.state === "entering")) {
+      out.push(this.pending);
+      if (this.state === "sending") {
+        this.outstanding = true;
+        this.sentAnyLine = true;
+      }
+      this.pending = undefined;
+    }
+    this.updateWait();
+    return out;
+  }
+
+  private waitKind(): BootloaderWait | undefined {
+    switch (this.state) {
+      case "waiting-for-bootloader":
+        return "bootloader";
+      case "entering":
+        return "ready";
+      case "sending":
+        return this.paused ? "xon" : "status";
+      default:
+        return undefined;
+    }
+  }
+
+  private updateWait(): void {
+    const key = `${this.waitKind()}:${this.index}:${this.tries}:${this.lastLineDone}:${this.entryTries}`;
+    if (key !== this.waitKey) {
+      this.waitKey = key;
+      this.waitSeq++;
+    }
+  }
+}

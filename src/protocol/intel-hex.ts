@@ -1,0 +1,278 @@
+import { ProtocolError } from "./errors.ts";
+
+/**
+ * Intel HEX files for the RBC's bootloader (PROTOCOL.md §11): read, validate and summarise a firmware file
+ * before a single byte goes to the robot. Pure: text in, records and a summary out.
+ *
+ * Written here rather than taken from a library (nrf-intel-hex was considered): the bootloader is sent the
+ * file line by line, so the validator has to keep every line with its number, and the rules that matter
+ * (ATmega128 flash, a boot section that must never be addressed, only record types 00/01/02/04) are ours
+ * anyway. What the generic parsers add (memory maps, start-address records) is what this file refuses.
+ */
+
+/** The ATmega128 on the RBC: 128 KiB of flash, the bootloader in the top 8 KiB, 256-byte flash pages. */
+export const ATMEGA128 = {
+  flashBytes: 0x20000,
+  /** First byte of the boot section (at most the top 8 KiB); a firmware file must stay below it. */
+  bootSectionStart: 0x1e000,
+  pageBytes: 256,
+} as const;
+
+/**
+ * The longest HEX text accepted. A firmware filling all 120 KiB of application flash is about 350,000
+ * characters with 16-byte records; 1 MiB leaves room for 8-byte records and comments' worth of slack, and
+ * refuses a wrong file (a video, a disk image) before it is read line by line.
+ */
+export const MAX_HEX_TEXT_CHARS = 1024 * 1024;
+
+export const HEX_RECORD = {
+  data: 0x00,
+  endOfFile: 0x01,
+  extendedSegment: 0x02,
+  extendedLinear: 0x04,
+} as const;
+
+export type IntelHexErrorCode =
+  | "too-large"
+  | "no-records"
+  | "no-colon"
+  | "not-hex"
+  | "length-mismatch"
+  | "checksum"
+  | "record-type"
+  | "bad-record"
+  | "crosses-64k"
+  | "outside-flash"
+  | "boot-section"
+  | "overlap"
+  | "after-end"
+  | "no-end";
+
+/** A HEX file the bootloader must not be given; `line` is the 1-based line of the file, when one is to blame. */
+export class IntelHexError extends ProtocolError {
+  override name = "IntelHexError";
+  constructor(
+    override readonly code: IntelHexErrorCode,
+    readonly line: number | undefined,
+    message: string,
+  ) {
+    super(code, message);
+  }
+}
+
+export interface IntelHexRecord {
+  /** 1-based line of the file. */
+  line: number;
+  type: number;
+  /** Data records: the absolute flash address of the first byte; other records: the 16-bit address field. */
+  address: number;
+  data: Uint8Array;
+  /** The record as the bootloader gets it: `:` and upper-case hex digits, without CR LF. */
+  text: string;
+}
+
+export interface IntelHexSummary {
+  /** Data bytes in the file. */
+  bytes: number;
+  /** Lowest and highest flash address written (inclusive). */
+  firstAddress: number;
+  lastAddress: number;
+  /** 256-byte flash pages touched. */
+  pages: number;
+  /** Records, i.e. lines sent to the bootloader (blank lines are not sent). */
+  lines: number;
+  /** Bytes on the wire for the whole file: every record's text plus CR LF. */
+  wireBytes: number;
+}
+
+export interface IntelHexImage {
+  records: IntelHexRecord[];
+  summary: IntelHexSummary;
+}
+
+const RECORD_NAMES: Record<number, string> = {
+  3: "start segment address",
+  5: "start linear address",
+};
+
+const hex2 = (n: number) => n.toString(16).toUpperCase().padStart(2, "0");
+const hexAddress = (n: number) => `0x${n.toString(16).toUpperCase().padStart(5, "0")}`;
+
+/**
+ * Reads and checks a whole HEX file for the ATmega128's application flash. Throws an `IntelHexError` naming
+ * the line and what is wrong with it; a file that passes can be sent to the bootloader as it is.
+ */
+export function parseIntelHex(text: string): IntelHexImage {
+  if (text.length > MAX_HEX_TEXT_CHARS) {
+    throw new IntelHexError(
+      "too-large",
+      undefined,
+      `The file is ${text.length.toLocaleString("en")} characters long; a firmware for the RBC's 120 KiB of application flash is under ${MAX_HEX_TEXT_CHARS.toLocaleString("en")}. It is not an RBC firmware file.`,
+    );
+  }
+  const lines = text.replace(/^\uFEFF/, "").split(/\r\n|\n|\r/);
+  const written = new Uint8Array(ATMEGA128.flashBytes);
+  const records: IntelHexRecord[] = [];
+  let base = 0;
+  let endLine: number | undefined;
+  let bytes = 0;
+  let first = Number.POSITIVE_INFINITY;
+  let last = -1;
+  let lastNonBlank = 0;
+
+  lines.forEach((raw, index) => {
+    const line = index + 1;
+    const trimmed = raw.trim();
+    if (trimmed === "") return;
+    lastNonBlank = line;
+    const fail = (code: IntelHexErrorCode, what: string): never => {
+      throw new IntelHexError(code, line, `Line ${line}: ${what}`);
+    };
+    if (endLine !== undefined) {
+      fail("after-end", `there is more after the end-of-file record on line ${endLine}.`);
+    }
+    if (!trimmed.startsWith(":")) fail("no-colon", "a record starts with ':'.");
+    const digits = trimmed.slice(1);
+    if (!/^[0-9A-Fa-f]*$/.test(digits) || digits.length % 2 !== 0 || digits.length < 10) {
+      fail("not-hex", "a record is ':' followed by pairs of hex digits (at least 5 bytes).");
+    }
+    const b = new Uint8Array(digits.length / 2);
+    for (let i = 0; i < b.length; i++) b[i] = Number.parseInt(digits.slice(2 * i, 2 * i + 2), 16);
+    const count = b[0]!;
+    if (b.length !== count + 5) {
+      fail("length-mismatch", `the record says ${count} data bytes but holds ${b.length - 5}.`);
+    }
+    let sum = 0;
+    for (let i = 0; i < b.length - 1; i++) sum += b[i]!;
+    const expected = (0x100 - (sum & 0xff)) & 0xff;
+    const got = b[b.length - 1]!;
+    if (got !== expected) {
+      fail(
+        "checksum",
+        `the checksum is ${hex2(got)} but the record's bytes add up to need ${hex2(expected)}.`,
+      );
+    }
+    const field = (b[1]! << 8) | b[2]!;
+    const type = b[3]!;
+    const data = b.slice(4, 4 + count);
+    let address = field;
+    switch (type) {
+      case HEX_RECORD.data: {
+        if (field + count > 0x10000) {
+          fail("crosses-64k", "the record runs past the end of its 64 KiB segment.");
+        }
+        address = base + field;
+        const end = address + count; // exclusive
+        if (address >= ATMEGA128.flashBytes || end > ATMEGA128.flashBytes) {
+          fail(
+            "outside-flash",
+            `the record writes ${hexAddress(address)}-${hexAddress(end - 1)}, outside the ATmega128's 128 KiB of flash (0x00000-0x1FFFF).`,
+          );
+        }
+        if (end > ATMEGA128.bootSectionStart) {
+          fail(
+            "boot-section",
+            `the record writes ${hexAddress(address)}-${hexAddress(end - 1)}, inside the boot section (from 0x1E000) where the bootloader lives. A firmware for the RBC must end below 0x1E000.`,
+          );
+        }
+        for (let a = address; a < end; a++) {
+          if (written[a])
+            fail("overlap", `the record writes ${hexAddress(a)} again; an earlier line wrote it.`);
+          written[a] = 1;
+        }
+        if (count > 0) {
+          first = Math.min(first, address);
+          last = Math.max(last, end - 1);
+        }
+        bytes += count;
+        break;
+      }
+      case HEX_RECORD.endOfFile:
+        if (count !== 0) fail("bad-record", "an end-of-file record carries no data (:00000001FF).");
+        endLine = line;
+        break;
+      case HEX_RECORD.extendedSegment:
+      case HEX_RECORD.extendedLinear: {
+        if (count !== 2 || field !== 0) {
+          fail(
+            "bad-record",
+            `an extended address record (type ${hex2(type)}) has 2 data bytes and address 0000.`,
+          );
+        }
+        const value = (data[0]! << 8) | data[1]!;
+        base = type === HEX_RECORD.extendedSegment ? value << 4 : value * 0x10000;
+        break;
+      }
+      default: {
+        const name = RECORD_NAMES[type];
+        fail(
+          "record-type",
+          `record type ${hex2(type)}${name ? ` (${name})` : ""} is not accepted: the RBC bootloader takes only types 00, 01, 02 and 04.`,
+        );
+      }
+    }
+    records.push({ line, type, address, data, text: `:${digits.toUpperCase()}` });
+  });
+
+  if (endLine === undefined) {
+    throw new IntelHexError(
+      "no-end",
+      lastNonBlank || undefined,
+      lastNonBlank
+        ? `Line ${lastNonBlank}: the file ends without an end-of-file record (:00000001FF); it may have been cut short.`
+        : "The file is empty.",
+    );
+  }
+  if (bytes === 0) {
+    throw new IntelHexError(
+      "no-records",
+      undefined,
+      "The file holds no data records: there is nothing to write.",
+    );
+  }
+  let pages = 0;
+  for (let p = 0; p < ATMEGA128.flashBytes; p += ATMEGA128.pageBytes) {
+    if (written.subarray(p, p + ATMEGA128.pageBytes).includes(1)) pages++;
+  }
+  const wireBytes = records.reduce((n, r) => n + r.text.length + 2, 0);
+  return {
+    records,
+    summary: { bytes, firstAddress: first, lastAddress: last, pages, lines: records.length, wireBytes },
+  };
+}
+
+/**
+ * Encodes `bytes` at flash address `address` as an Intel HEX file (records of `recordSize` data bytes, an
+ * extended linear address record (04) wherever a 64 KiB segment starts, the end-of-file record, CR LF line
+ * ends). For the demo robot's firmware files and the benchmark; it does not check the ATmega128's limits
+ * (`parseIntelHex` does).
+ */
+export function encodeIntelHex(
+  bytes: Uint8Array,
+  options: { address?: number; recordSize?: number } = {},
+): string {
+  const start = options.address ?? 0;
+  const size = options.recordSize ?? 16;
+  if (!Number.isInteger(size) || size < 1 || size > 255) throw new RangeError("recordSize must be 1-255.");
+  const out: string[] = [];
+  const record = (count: number, field: number, type: number, data: Uint8Array) => {
+    const b = [count, field >> 8, field & 0xff, type, ...data];
+    const sum = b.reduce((s, v) => s + v, 0);
+    out.push(`:${[...b, (0x100 - (sum & 0xff)) & 0xff].map(hex2).join("")}`);
+  };
+  let segment = 0;
+  let offset = 0;
+  while (offset < bytes.length) {
+    const address = start + offset;
+    if (Math.floor(address / 0x10000) !== segment) {
+      segment = Math.floor(address / 0x10000);
+      record(2, 0, HEX_RECORD.extendedLinear, Uint8Array.of(segment >> 8, segment & 0xff));
+    }
+    const room = 0x10000 - (address & 0xffff);
+    const n = Math.min(size, bytes.length - offset, room);
+    record(n, address & 0xffff, HEX_RECORD.data, bytes.subarray(offset, offset + n));
+    offset += n;
+  }
+  record(0, 0, HEX_RECORD.endOfFile, new Uint8Array(0));
+  return `${out.join("\r\n")}\r\n`;
+}
