@@ -1,15 +1,18 @@
+import { RbcPortError } from "../device/errors.ts";
 import { RbcClient } from "../device/rbc-client.ts";
 import type { DeviceIdentity } from "../device/types.ts";
-import type { Transport } from "../link/transport.ts";
+import { LinkError, type Transport } from "../link/transport.ts";
 import { WebSerialTransport } from "../link/web-serial-transport.ts";
 import { type Clock, realClock } from "../shared/clock.ts";
+import { createDemoRbc } from "../sim/demo-world.ts";
 import { MockSerialPort } from "../sim/mock-serial-port.ts";
-import { SimulatedRbc } from "../sim/simulated-rbc.ts";
 import type { GlobalValues } from "./args.ts";
 import type { RunEnv } from "./command.ts";
 import { demoClock } from "./demo-clock.ts";
-import { UsageError } from "./errors.ts";
+import { CliError, UsageError } from "./errors.ts";
 import { formatLogEntry, logEntryJson } from "./packet-trace.ts";
+import { portOpenMessage } from "./port-errors.ts";
+import { demoVariant, type SimVariant } from "./sim-variant.ts";
 
 /** A connected robot: the real one on a serial port, or the demo robot. */
 export interface Robot {
@@ -73,13 +76,21 @@ export function demoTimeScale(env: NodeJS.ProcessEnv, command?: string): number 
 }
 
 /**
- * The demo robot: a SimulatedRbc (firmware 2.23, HUNO, just switched on) behind a MockSerialPort with 2 ms of
- * adapter latency and a WebSerialTransport — the same stack as the panel's "demo robot" — all on `clock`.
+ * The demo robot: a SimulatedRbc in the demo world the panel's demo robot lives in (firmware 2.23, HUNO, just
+ * switched on, standing upright: its accelerometer reads with a little noise), or the firmware variant of
+ * RBC_DEMO_VARIANT, behind a MockSerialPort with 2 ms of adapter latency and a WebSerialTransport — the same
+ * stack as the panel's "demo robot" — all on `clock`.
  */
-function demoTransport(clock: Clock): { transport: Transport; dispose: () => void } {
-  const sim = new SimulatedRbc({ clock });
+function demoTransport(clock: Clock, variant: SimVariant): { transport: Transport; dispose: () => void } {
+  const sim = createDemoRbc({ clock, ...variant });
   const port = new MockSerialPort(sim, { latencyMs: 2, clock, record: false });
   return { transport: new WebSerialTransport(port, { clock }), dispose: () => sim.dispose() };
+}
+
+/** The port could not be opened at all (not lost later): the link's "open-failed" or "port-busy". */
+function isOpenFailure(e: RbcPortError): boolean {
+  const cause = e.cause;
+  return cause instanceof LinkError && (cause.code === "open-failed" || cause.code === "port-busy");
 }
 
 /** Opens the named robot, handshakes (RbcClient.connect) and registers its closing with `env`. */
@@ -95,7 +106,7 @@ export async function connectRobot(
   let clock = realClock;
   if (target.demo) {
     clock = demoClock(demoTimeScale(env.env, command));
-    ({ transport, dispose } = demoTransport(clock));
+    ({ transport, dispose } = demoTransport(clock, demoVariant(env.env, command)));
   } else {
     // Loaded here only: the native serialport binding is not needed for --demo (and never in the web app).
     const { NodeSerialTransport } = await import("../link/node-serial-transport.ts");
@@ -110,7 +121,16 @@ export async function connectRobot(
   }
   let closed: Promise<void> | undefined;
   const close = () => {
-    closed ??= client.close().finally(dispose);
+    closed ??= client.close().finally(() => {
+      dispose();
+      const unasked = client.stats.unansweredReplies;
+      // Said once, at the end: a firmware that repeats a reply (PROTOCOL.md §3.5) is worth knowing about.
+      if (unasked > 0) {
+        env.out.note(
+          `rbc: the robot sent ${unasked.toLocaleString("en-US")} ${unasked === 1 ? "reply" : "replies"} that no request asked for (late or repeated); ${unasked === 1 ? "it was" : "they were"} discarded.`,
+        );
+      }
+    });
     return closed;
   };
   env.onCleanup(close);
@@ -130,6 +150,9 @@ export async function connectRobot(
   } catch (e) {
     env.signal.removeEventListener("abort", onAbort);
     await close();
+    if (!target.demo && e instanceof RbcPortError && isOpenFailure(e)) {
+      throw new CliError(e.code, portOpenMessage(target.port, e, e.code));
+    }
     throw e;
   }
 }

@@ -72,7 +72,8 @@ ${table([...ROBOT_OPTIONS, LOG_OPTION])}
 Options of every command:
 ${table([JSON_OPTION, HELP_OPTION])}
 
-For tests and developers: RBC_DEMO_TIME_SCALE=N runs the demo robot N times faster (durations stay robot time).
+For tests and developers: RBC_DEMO_TIME_SCALE=N runs the demo robot N times faster (durations stay robot time);
+RBC_DEMO_VARIANT="--no-serial --firmware 9.99 …" makes it one of the firmware variants of \`rbc sim\` (see its help).
 
 Exit codes: 0 done, 1 failed (the reason is one line on stderr), 2 wrong command line, 130 interrupted (Ctrl-C),
 143 stopped by SIGTERM (e.g. \`kill\`). With --json a failure is a JSON document on stdout too,

@@ -3,8 +3,10 @@ import { rbcSerialPortOptions } from "../link/node-serial-transport.ts";
 import { SimulatedRbc } from "../sim/simulated-rbc.ts";
 import { CliError } from "./errors.ts";
 import type { Output } from "./output.ts";
+import { portOpenMessage } from "./port-errors.ts";
 import { SimLink, type SimLinkOptions } from "./sim-link.ts";
 import { formatSimTraceLine, SimTrace } from "./sim-trace.ts";
+import type { SimVariant } from "./sim-variant.ts";
 
 /**
  * `rbc sim`: the simulated RBC served on a serial device (one end of a PTY pair, or a real serial port wired
@@ -13,6 +15,8 @@ import { formatSimTraceLine, SimTrace } from "./sim-trace.ts";
  */
 export interface SimServerOptions extends SimLinkOptions {
   path: string;
+  /** The firmware variant to simulate (PROTOCOL.md §3.5); empty for the standard robot. */
+  variant?: SimVariant;
   /** Print nothing per packet. */
   quiet: boolean;
   out: Output;
@@ -26,9 +30,7 @@ function openPort(path: string): Promise<SerialPort> {
   return new Promise((resolve, reject) => {
     const port = new SerialPort(rbcSerialPortOptions(path));
     port.open((err) =>
-      err
-        ? reject(new CliError("open-failed", `Cannot open ${path} for the simulator: ${err.message}`))
-        : resolve(port),
+      err ? reject(new CliError("open-failed", portOpenMessage(path, err))) : resolve(port),
     );
   });
 }
@@ -37,7 +39,7 @@ function openPort(path: string): Promise<SerialPort> {
 export async function serveSimulator(options: SimServerOptions): Promise<void> {
   const { out } = options;
   const port = await openPort(options.path);
-  const sim = new SimulatedRbc();
+  const sim = new SimulatedRbc({ ...options.variant });
   const trace = new SimTrace(sim, (line) => {
     if (options.quiet) return;
     if (out.json) out.jsonLine(line);

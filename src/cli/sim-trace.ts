@@ -2,7 +2,7 @@ import { toHex } from "../protocol/bytes.ts";
 import { DOWNLOAD_ACK, DOWNLOAD_CHUNK } from "../protocol/catalog.ts";
 import { commandName } from "../protocol/commands.ts";
 import { encodeDownloadStart, encodePacket, HEADER, PREFIX_LENGTH } from "../protocol/packet.ts";
-import { EXIT_DIRECT_MODE } from "../protocol/wck.ts";
+import { EXIT_DIRECT_MODE, WckDecoder } from "../protocol/wck.ts";
 import type { DropReason } from "../sim/sim-receiver.ts";
 import { SimReceiver } from "../sim/sim-receiver.ts";
 import type { SimulatedRbc } from "../sim/simulated-rbc.ts";
@@ -38,10 +38,13 @@ const DROP_WORDS: Record<DropReason, string> = {
   "zero-out-of-range": "refused: a zero value is out of range (error 7)",
 };
 
+/** A reply sent again and again unasked is counted, and the count printed at least this often. */
+const REPEAT_SUMMARY_EVERY = 1000;
+
 type Mode =
   | { kind: "packet" }
   | { kind: "download"; area: string; size: number; received: number; chunk: number[]; index: number }
-  | { kind: "servo"; bytes: number[] };
+  | { kind: "servo"; bytes: number[]; decoder: WckDecoder };
 
 export class SimTrace {
   private readonly mirror: SimReceiver;
@@ -50,6 +53,8 @@ export class SimTrace {
   private pending: number[] = [];
   private drops: Partial<Record<DropReason, number>>;
   private readonly t0 = performance.now();
+  /** The last reply printed, while the simulator keeps sending the same bytes again. */
+  private lastReply: { hex: string; label: string; repeats: number } | undefined;
 
   constructor(
     private readonly sim: SimulatedRbc,
@@ -80,17 +85,36 @@ export class SimTrace {
     });
   }
 
-  /** Request bytes, just before the simulator receives them. */
+  /**
+   * Request bytes, just before the simulator receives them. In direct mode the servo-bus bytes are decoded
+   * as the simulator decodes them, so that the "leave direct mode" command ends the servo-bus line and a
+   * request written right after it, in the same write, gets a packet line of its own.
+   */
   incoming(bytes: Uint8Array): void {
     for (const b of bytes) {
-      if (this.mode.kind === "servo") this.mode.bytes.push(b);
-      else if (this.mode.kind === "packet") this.pending.push(b);
+      const mode = this.mode;
+      if (mode.kind === "servo") {
+        mode.bytes.push(b);
+        const exits = mode.decoder.push(Uint8Array.of(b)).some((c) => c.kind === "exit-direct");
+        if (exits) {
+          // The exit is the last 6 bytes; servo commands written before it keep a line of their own.
+          const exit = mode.bytes.splice(mode.bytes.length - EXIT_DIRECT_MODE.length);
+          this.flushServo("servo bus (direct mode)");
+          this.line("pc-to-rbc", "servo bus: leave direct mode", Uint8Array.from(exit));
+          this.toPacketMode();
+        }
+        continue;
+      }
+      if (mode.kind === "packet") this.pending.push(b);
       this.mirror.push(Uint8Array.of(b));
     }
-    if (this.mode.kind === "servo" && this.mode.bytes.length > 0) {
-      this.line("pc-to-rbc", "servo bus (direct mode)", Uint8Array.from(this.mode.bytes));
-      this.mode.bytes = [];
-    }
+    this.flushServo("servo bus (direct mode)");
+  }
+
+  private flushServo(label: string): void {
+    if (this.mode.kind !== "servo" || this.mode.bytes.length === 0) return;
+    this.line("pc-to-rbc", label, Uint8Array.from(this.mode.bytes));
+    this.mode.bytes = [];
   }
 
   /** After the simulator handled the bytes: report its drops and follow its mode changes. */
@@ -108,7 +132,7 @@ export class SimTrace {
     ) {
       this.toPacketMode();
     } else if (this.mode.kind === "packet" && this.sim.directMode) {
-      this.mode = { kind: "servo", bytes: [] };
+      this.mode = { kind: "servo", bytes: [], decoder: new WckDecoder() };
       this.mirror.rawMode(() => {});
     } else if (this.mode.kind === "servo" && !this.sim.directMode) {
       this.toPacketMode();
@@ -123,7 +147,30 @@ export class SimTrace {
     } else if (bytes.length === 1 && bytes[0] === DOWNLOAD_ACK) {
       label = "download acknowledged (40)";
     }
+    const hex = toHex(bytes);
+    // A transmission repeated unasked (the --repeat-replies flood, an event while its condition holds): one
+    // line, then a count instead of a line each (a thousand a second would bury everything else).
+    if (note === undefined && this.lastReply?.hex === hex) {
+      this.lastReply.repeats++;
+      if (this.lastReply.repeats >= REPEAT_SUMMARY_EVERY) this.flushRepeats();
+      return;
+    }
     this.line("rbc-to-pc", label, bytes, note);
+    this.lastReply = note === undefined ? { hex, label, repeats: 0 } : undefined;
+  }
+
+  /** Says how often the last reply was sent again since its line (or the previous count). */
+  private flushRepeats(): void {
+    const last = this.lastReply;
+    if (!last || last.repeats === 0) return;
+    const times = `${last.repeats} more time${last.repeats === 1 ? "" : "s"}`;
+    last.repeats = 0;
+    this.print({
+      ms: this.ms(),
+      direction: "note",
+      label: `${last.label}: the same reply ${times}, unasked`,
+      hex: "",
+    });
   }
 
   private toPacketMode(): void {
@@ -168,10 +215,13 @@ export class SimTrace {
   }
 
   private note(text: string): void {
+    this.flushRepeats();
     this.print({ ms: this.ms(), direction: "note", label: text, hex: "" });
   }
 
   private line(direction: SimTraceLine["direction"], label: string, bytes: Uint8Array, note?: string): void {
+    this.flushRepeats();
+    if (direction === "pc-to-rbc") this.lastReply = undefined;
     this.print({ ms: this.ms(), direction, label, hex: toHex(bytes), ...(note ? { note } : {}) });
   }
 

@@ -16,6 +16,12 @@
  * NetworkError while unplugged; close() rejects TypeError while a stream is locked and InvalidStateError when
  * the port is not open (also after a cable pull, which closes the port by itself).
  */
+export {
+  createDemoRbc,
+  DEMO_ACCELEROMETER,
+  DEMO_ACCELEROMETER_NOISE,
+  demoWorldOptions,
+} from "./demo-world.ts";
 export { FakeSerial } from "./fake-serial.ts";
 export {
   BYTE_TIME_MS,
@@ -27,6 +33,15 @@ export {
 } from "./mock-serial-options.ts";
 export { MockSerialPort } from "./mock-serial-port.ts";
 export { type FaultedReply, PortFaults, type ReplyFault } from "./port-faults.ts";
+export {
+  type BootloaderFaults,
+  type BootloaderMode,
+  BootloaderRbc,
+  type BootloaderRbcOptions,
+  type BootloaderStats,
+  demoFirmwareHex,
+  firmwareMarker,
+} from "./sim-bootloader.ts";
 export type { DownloadProgress } from "./sim-downloader.ts";
 export type { StoredFile } from "./sim-downloads.ts";
 export { DEFAULT_DOWNLOADED_MOTION_MS, STOP_SCENE_MS } from "./sim-player.ts";

@@ -1,7 +1,8 @@
 /**
  * Bundled into an IIFE by the harness and injected before the app's scripts: a `navigator.serial` made of the
  * project's own FakeSerial, MockSerialPort and SimulatedRbc (headless Chromium's real chooser never settles).
- * With `timeScale`, the simulated robot runs on a faster clock, which its port carries to the panel's client.
+ * With `timeScale`, the simulated robot runs on a faster clock, which its port carries to the panel's client;
+ * with `variant`, it is one of the firmware builds of PROTOCOL.md §3.5.
  */
 import { realClock, scaledClock } from "../../src/shared/clock.ts";
 import { FakeSerial, MockSerialPort, SimulatedRbc } from "../../src/sim/index.ts";
@@ -10,7 +11,7 @@ import "./rbc-test-globals.ts";
 
 const options = window.__rbcTestOptions ?? {};
 const clock = (options.timeScale ?? 1) === 1 ? realClock : scaledClock(options.timeScale ?? 1);
-const sim = new SimulatedRbc({ clock });
+const sim = new SimulatedRbc({ clock, ...options.variant });
 const port = new MockSerialPort(sim, {
   clock,
   latencyMs: options.latencyMs ?? 2,

@@ -1,5 +1,5 @@
 import type { Clock } from "../../src/shared/clock.ts";
-import type { FakeSerial, MockSerialPort, SimulatedRbc } from "../../src/sim/index.ts";
+import type { FakeSerial, MockSerialPort, SimulatedRbc, SimulatedRbcOptions } from "../../src/sim/index.ts";
 
 /** What the injected fake `navigator.serial` exposes to tests (see fake-serial-entry.ts). */
 export interface RbcTestHandle {
@@ -26,6 +26,14 @@ export interface RbcTestOptions {
    * timeout and polling period keeps its proportions. Never touches a real robot.
    */
   timeScale?: number;
+  /**
+   * A firmware variant of the fake port's robot (PROTOCOL.md §3.5): no answer to 0x0C or 0x1E, another
+   * version or platform byte, a reply repeated endlessly. Default: the standard robot.
+   */
+  variant?: Pick<
+    SimulatedRbcOptions,
+    "answersSerialNumber" | "answersExecutionStatus" | "firmware" | "platform" | "repeatReplies"
+  >;
 }
 
 declare global {

@@ -93,7 +93,8 @@ describe.concurrent("rbc --demo", () => {
       /`rbc ports` takes neither;\s+`rbc sim` takes --port PATH[\s\S]*refuses\s+--demo/,
     );
     expect(global.stdout).toContain("RBC_DEMO_TIME_SCALE=N runs the demo robot N times faster");
-    expect(run.stdout).toContain("Wait until it ends before the next rbc command");
+    // Ctrl-C stops the motion and keeps the robot standing (issue #11 item 1; run.ts belongs to the stop work).
+    expect(run.stdout).toContain("No servo is made passive");
     expect(run.stdout).not.toContain("`rbc run 7` ends");
     expect(upload.code).toBe(0);
     expect(upload.stdout).toContain("Usage: rbc upload FILE.rbm");
@@ -201,6 +202,7 @@ describe.concurrent("rbc --demo", () => {
     expect(text.stdout).toMatch(/Firmware\s+2\.23/);
     expect(text.stdout).toMatch(/Serial number\s+8958899989309/);
     expect(text.stdout).toMatch(/Platform\s+HUNO \(1\)/);
+    expect(text.stdout).not.toMatch(/\bMode\b/); // the panel says "Platform" too
     expect(text.stdout).toMatch(/Error code\s+no error/);
     expect(text.stdout).toContain("motion 24,576 of 24,576 bytes");
     expect(json.code).toBe(0);
@@ -215,6 +217,8 @@ describe.concurrent("rbc --demo", () => {
       error: "no error",
       freeMemory: { motion: 24576, action: 8192 },
       warnings: [],
+      // The standard robot sends no reply that was not asked for.
+      unaskedReplies: 0,
     });
   });
 
@@ -321,8 +325,8 @@ describe.concurrent("rbc --demo", () => {
       slot: 1,
       motionNumber: 12,
     });
-    // Without --reset the motion number is not known, and rbc does not pretend it is.
-    expect(r.stdout).not.toMatch(/It is downloaded motion/);
+    // Without --reset: the demo robot's motion memory was empty (free 24,576 before), so the file is download 1.
+    expect(r.stdout).toContain("It became motion 12 (downloaded motion 1): play it with `rbc run 12`.");
     // Robot time: every chunk waits for the simulated EEPROM page write (5 ms) before its acknowledgement.
     expect(JSON.parse(json.stdout).elapsedMs).toBeGreaterThanOrEqual(5 * wave.chunks);
   });
@@ -408,16 +412,29 @@ describe.concurrent("rbc --demo", () => {
     expect(JSON.parse(r.stdout).elapsedMs).toBeGreaterThanOrEqual(1000);
   });
 
-  it("sensors --count streams JSON lines", { timeout: T }, async ({ onTestFinished }) => {
+  it("sensors --count streams JSON lines: the demo world's upright robot, its accelerometer with noise", {
+    timeout: T,
+  }, async ({ onTestFinished }) => {
     const runCli = scoped(onTestFinished);
-    const r = await runCli(["sensors", "--demo", "--json", "--count", "2", "--interval-ms", "20"]);
-    expect(r.code).toBe(0);
+    const r = await runCli(["sensors", "--demo", "--json", "--count", "12", "--interval-ms", "20"]);
+    expect(r.code, r.stderr).toBe(0);
     const lines = r.stdout
       .trim()
       .split("\n")
       .map((l) => JSON.parse(l));
-    expect(lines).toHaveLength(2);
-    expect(lines[0]).toMatchObject({ distanceCm: 10, accelerometer: { x: 0, y: 0, z: 0 } });
+    expect(lines).toHaveLength(12);
+    // The panel's demo robot's world (src/sim/demo-world.ts): upright, gravity on Z, each axis within ±3.
+    for (const line of lines) {
+      expect(line.distanceCm).toBe(10);
+      expect(line.warnings).toBeUndefined();
+      const { x, y, z } = line.accelerometer;
+      expect(Math.abs(x - 2)).toBeLessThanOrEqual(3);
+      expect(Math.abs(y + 4)).toBeLessThanOrEqual(3);
+      expect(Math.abs(z - 62)).toBeLessThanOrEqual(3);
+    }
+    // Alive, not a dead sensor: the readings are not all the same (36 draws of 7 values each).
+    const distinct = new Set(lines.map((l) => JSON.stringify(l.accelerometer)));
+    expect(distinct.size).toBeGreaterThan(1);
   });
 
   it("log info: the packet trace in hex with command names on stderr, the result on stdout", {

@@ -8,12 +8,14 @@ import { splitCommand, wantsHelp } from "../../src/cli/args.ts";
 import { Cleanups } from "../../src/cli/cleanups.ts";
 import type { RunEnv } from "../../src/cli/command.ts";
 import { runCommand } from "../../src/cli/commands/run.ts";
+import { uploadedSlot } from "../../src/cli/commands/upload.ts";
 import { parseZeroList } from "../../src/cli/commands/zeros.ts";
 import { type ConfirmAnswer, confirm } from "../../src/cli/confirm.ts";
 import { demoTimeScale } from "../../src/cli/connect.ts";
 import { OrderedClock } from "../../src/cli/demo-clock.ts";
 import { errorLine, UsageError } from "../../src/cli/errors.ts";
 import { Output } from "../../src/cli/output.ts";
+import { portOpenMessage } from "../../src/cli/port-errors.ts";
 import { ProgressBar } from "../../src/cli/progress.ts";
 import { applyFault, GARBAGE } from "../../src/cli/sim-faults.ts";
 import { SimLink } from "../../src/cli/sim-link.ts";
@@ -253,6 +255,119 @@ describe("rbc sim packet trace", () => {
       label: "motion chunk 1/1 (3 bytes + checksum)",
       hex: "01 02 03 00",
     });
+  });
+});
+
+describe("rbc sim packet trace in direct mode", () => {
+  it("a request written right after the exit bytes, in the same write, gets its own line", () => {
+    const sim = new SimulatedRbc({ clock: new VirtualClock() });
+    const lines: SimTraceLine[] = [];
+    const trace = new SimTrace(sim, (l) => lines.push(l));
+    sim.onTransmit((b) => trace.reply(b, undefined));
+    const feed = (hex: string) => {
+      const bytes = fromHex(hex);
+      trace.incoming(bytes);
+      sim.receive(bytes);
+      trace.afterReceive();
+    };
+    feed("FF FF AA 55 AA 55 37 BA 10 00 00 00 00 01 01 01"); // 0x10: direct mode on
+    feed("FF A5 00 25"); // wCK: read servo 5's position
+    // One write: a wCK move of servo 5, the exit (PROTOCOL.md §5), then 0x12.
+    feed("FF 05 7F 7A FF E0 FB 01 00 1A FF FF AA 55 AA 55 37 BA 12 00 00 00 00 01 01 01");
+    const shown = lines.map((l) => [l.direction, l.label, l.hex]);
+    // Requests are traced as they arrive, before the simulator answers them: the move's reply (servo 5 at
+    // 127, load 0) follows the lines of the whole write.
+    expect(shown.slice(2)).toEqual([
+      ["pc-to-rbc", "servo bus (direct mode)", "FF A5 00 25"],
+      ["rbc-to-pc", "servo bus reply", expect.stringMatching(/^00 [0-9A-F]{2}$/)],
+      ["pc-to-rbc", "servo bus (direct mode)", "FF 05 7F 7A"],
+      ["pc-to-rbc", "servo bus: leave direct mode", "FF E0 FB 01 00 1A"],
+      ["pc-to-rbc", "0x12 Read firmware version", "FF FF AA 55 AA 55 37 BA 12 00 00 00 00 01 01 01"],
+      ["rbc-to-pc", "servo bus reply", "00 7F"],
+      ["rbc-to-pc", "0x12 Read firmware version", "FF FF AA 55 AA 55 37 BA 12 01 00 00 00 02 02 17 15"],
+    ]);
+    expect(sim.directMode).toBe(false);
+  });
+});
+
+describe("rbc sim packet trace of a reply repeated unasked", () => {
+  it("prints the reply once, then how many times it came again, before the next request's line", async () => {
+    const clock = new VirtualClock();
+    const sim = new SimulatedRbc({ clock, repeatReplies: { type: 0x16, intervalMs: 1 } });
+    const lines: SimTraceLine[] = [];
+    const trace = new SimTrace(sim, (l) => lines.push(l));
+    sim.onTransmit((b) => trace.reply(b, undefined));
+    const feed = (hex: string) => {
+      const bytes = fromHex(hex);
+      trace.incoming(bytes);
+      sim.receive(bytes);
+      trace.afterReceive();
+    };
+    feed("FF FF AA 55 AA 55 37 BA 16 00 00 00 00 01 01 01"); // distance: 10 cm
+    await clock.advance(25);
+    feed("FF FF AA 55 AA 55 37 BA 11 00 00 00 00 01 01 01");
+    expect(lines.map((l) => [l.direction, l.label, l.hex])).toEqual([
+      ["pc-to-rbc", "0x16 Distance sensor", "FF FF AA 55 AA 55 37 BA 16 00 00 00 00 01 01 01"],
+      ["rbc-to-pc", "0x16 Distance sensor", "FF FF AA 55 AA 55 37 BA 16 01 00 00 00 02 0A 00 0A"],
+      ["note", "0x16 Distance sensor: the same reply 25 more times, unasked", ""],
+      ["pc-to-rbc", "0x11 Read error code", "FF FF AA 55 AA 55 37 BA 11 00 00 00 00 01 01 01"],
+      ["rbc-to-pc", "0x11 Read error code", "FF FF AA 55 AA 55 37 BA 11 01 00 00 00 02 FF 01 FE"],
+    ]);
+  });
+});
+
+describe("a port that cannot be opened", () => {
+  it("one sentence that names the port and points to `rbc ports`, without serialport's 'Error: '", () => {
+    // What NodeSerialTransport passes on: RbcPortError → LinkError → serialport's Error.
+    const chain = (message: string) =>
+      new Error("wrapper", { cause: new Error("link", { cause: new Error(message) }) });
+    expect(
+      portOpenMessage("/dev/ttyUSB0", chain("Error: No such file or directory, cannot open /dev/ttyUSB0")),
+    ).toBe(
+      "Cannot open /dev/ttyUSB0 (no such file or directory). Run `rbc ports` to list the serial ports on this computer.",
+    );
+    expect(
+      portOpenMessage(
+        "/dev/ttyUSB0",
+        chain("Error: Permission denied, cannot open /dev/ttyUSB0"),
+        "port-busy",
+      ),
+    ).toBe(
+      "Cannot open /dev/ttyUSB0 (permission denied): another program may be using it, or you may not have permission (on Linux, join the dialout group). Run `rbc ports` to list the serial ports.",
+    );
+    expect(portOpenMessage("COM3", new Error("Error: Opening COM3: File not found\n"))).toBe(
+      "Cannot open COM3 (opening COM3: File not found). Run `rbc ports` to list the serial ports on this computer.",
+    );
+  });
+});
+
+describe("which motion number an upload became", () => {
+  const base = {
+    area: "motion" as const,
+    total: 624,
+    chunks: 10,
+    footprint: 640,
+    freeAfter: 23_936,
+    errorCode: 0xff,
+    elapsedMs: 100,
+    reset: false,
+  };
+  it("known after --reset, or when the motion memory was empty before; otherwise not guessed", () => {
+    expect(uploadedSlot({ ...base, freeBefore: 24_576, slot: 1, motionNumber: 12, reset: true })).toEqual({
+      slot: 1,
+      motionNumber: 12,
+    });
+    expect(uploadedSlot({ ...base, freeBefore: 24_576, slot: undefined, motionNumber: undefined })).toEqual({
+      slot: 1,
+      motionNumber: 12,
+    });
+    expect(uploadedSlot({ ...base, freeBefore: 23_936, slot: undefined, motionNumber: undefined })).toEqual({
+      slot: undefined,
+      motionNumber: undefined,
+    });
+    expect(
+      uploadedSlot({ ...base, area: "action", freeBefore: 8192, slot: undefined, motionNumber: undefined }),
+    ).toEqual({ slot: undefined, motionNumber: undefined });
   });
 });
 

@@ -50,12 +50,15 @@ motion memory (24,576 when empty) and the action memory (8,192 when empty). Chan
       error: errorCodeWords(errorCode),
       freeMemory: { motion: freeMotion, action: freeAction },
       warnings,
+      // Replies no request asked for (late, or repeated by a firmware that repeats them), discarded so far.
+      unaskedReplies: client.stats.unansweredReplies,
     });
     const n = (v: number) => v.toLocaleString("en-US");
     env.out.line(robot.demo ? "The demo robot (simulated)" : `Robot on ${robot.where}`);
     env.out.line(`  Firmware       ${firmware}`);
-    env.out.line(`  Serial number  ${serialNumber ?? "not reported (this firmware does not answer 0x0C)"}`);
-    env.out.line(`  Platform       ${platformName(platform)} (${platform})`);
+    env.out.line(`  Serial number  ${serialNumber ?? "not reported (the robot did not answer 0x0C)"}`);
+    const name = platformName(platform);
+    env.out.line(`  Platform       ${name.startsWith("unknown") ? name : `${name} (${platform})`}`);
     env.out.line(`  Error code     ${errorCodeWords(errorCode)}`);
     env.out.line(
       `  Free memory    motion ${n(freeMotion)} of ${n(MOTION_AREA_BYTES)} bytes, action ${n(freeAction)} of ${n(ACTION_AREA_BYTES)} bytes`,

@@ -2,6 +2,7 @@ import { readFile } from "node:fs/promises";
 import { basename } from "node:path";
 import { RbcUploadError } from "../../device/errors.ts";
 import { type FileUploadResult, UPLOAD_NOTICES } from "../../device/index.ts";
+import { downloadedMotionNumber, MOTION_AREA_BYTES } from "../../protocol/catalog.ts";
 import { motionImageSize } from "../../protocol/motion-image.ts";
 import { parseRbm, RbmError, type RbmMotion, type RbmValidation, validateRbm } from "../../protocol/rbm.ts";
 import { noExtraArguments, parseCommand } from "../args.ts";
@@ -30,6 +31,31 @@ type Prepared =
   | { area: "motion"; motion: RbmMotion; imageBytes: number }
   | { area: "action"; bytes: Uint8Array; imageBytes: number };
 
+/**
+ * A file that does not parse, said once: one error is the failure's one-line reason itself; several are
+ * listed on stdout (or in --json's `validation.errors`) and the reason only counts them. The reason never
+ * quotes the file's contents beyond what the parser's message shows (one line, at most a few characters).
+ */
+export function rbmInvalid(env: Pick<RunEnv, "out">, file: string, e: RbmError): CliError {
+  const validation: RbmValidation = { errors: [...e.issues], warnings: [] };
+  const details = { file, validation: issuesJson(validation) };
+  const name = basename(file);
+  const first = e.issues[0]?.message ?? e.message;
+  if (e.issues.length <= 1) {
+    const reason = first.replace(/\s*\n\s*/g, " ").replace(/[.\s]+$/, "");
+    return new CliError("rbm-invalid", `${name}: ${reason}. Nothing was sent.`, EXIT.failed, details);
+  }
+  env.out.line(`${file} cannot be uploaded:`);
+  for (const line of issueLines("error", validation.errors)) env.out.line(line);
+  const where = env.out.json ? "in validation.errors" : "listed above";
+  return new CliError(
+    "rbm-invalid",
+    `${name} has ${e.issues.length} errors (${where}); nothing was sent.`,
+    EXIT.failed,
+    details,
+  );
+}
+
 async function prepare(env: RunEnv, file: string, asAction: boolean): Promise<Prepared> {
   let bytes: Uint8Array;
   try {
@@ -53,16 +79,24 @@ async function prepare(env: RunEnv, file: string, asAction: boolean): Promise<Pr
     };
   } catch (e) {
     if (!(e instanceof RbmError)) throw e;
-    const validation: RbmValidation = { errors: [...e.issues], warnings: [] };
-    env.out.line(`${file} cannot be uploaded:`);
-    for (const line of issueLines("error", validation.errors)) env.out.line(line);
-    throw new CliError(
-      "rbm-invalid",
-      `${basename(file)} has ${e.issues.length} error${e.issues.length === 1 ? "" : "s"} (${e.message}); nothing was sent.`,
-      EXIT.failed,
-      { file, validation: issuesJson(validation) },
-    );
+    throw rbmInvalid(env, file, e);
   }
+}
+
+/**
+ * Which slot, and so which Run Motion number, the file became. After --reset it is the first (12); when the
+ * robot's motion memory was empty before the upload (free memory = the whole area, so no file was stored),
+ * it is the first as well. Otherwise the robot does not say how many files it holds, so it is not known.
+ */
+export function uploadedSlot(result: FileUploadResult): {
+  slot: number | undefined;
+  motionNumber: number | undefined;
+} {
+  if (result.slot !== undefined) return { slot: result.slot, motionNumber: result.motionNumber };
+  if (result.area === "motion" && result.freeBefore === MOTION_AREA_BYTES) {
+    return { slot: 1, motionNumber: downloadedMotionNumber(1) };
+  }
+  return { slot: undefined, motionNumber: undefined };
 }
 
 export const uploadCommand: CommandDef = {
@@ -194,6 +228,7 @@ many bytes were acknowledged and what the robot's memory holds, and exits with c
       demo: robot.demo,
       validation: issuesJson(validation),
       ...result,
+      ...uploadedSlot(result),
       bytesPerSecond: rate,
       error: result.errorCode === undefined ? "not read" : errorCodeWords(result.errorCode),
     });
@@ -208,13 +243,14 @@ many bytes were acknowledged and what the robot's memory holds, and exits with c
     env.out.line(
       `Error code: ${result.errorCode === undefined ? "not read (the robot did not answer)" : errorCodeWords(result.errorCode)}.`,
     );
-    if (result.motionNumber !== undefined) {
+    const placed = uploadedSlot(result);
+    if (placed.motionNumber !== undefined) {
       env.out.line(
-        `It is downloaded motion ${result.slot}: play it with \`rbc run ${result.motionNumber}\`${real ? " — first with the robot held or lying down" : ""}.`,
+        `It became motion ${placed.motionNumber} (downloaded motion ${placed.slot}): play it with \`rbc run ${placed.motionNumber}\`${real ? " — first with the robot held or lying down" : ""}.`,
       );
     } else if (result.area === "motion") {
       env.out.line(
-        "Downloaded motions play with `rbc run 12` … `rbc run 21` (1-10) and 33 … 42 (11-20), in upload order.",
+        "The robot already held downloaded motions and does not say how many, so this one's number is not known: the first 10 uploads play with `rbc run 12` … `rbc run 21`, the next 10 with 33 … 42. Upload with --reset to make it motion 12 (the others are forgotten).",
       );
     }
     return EXIT.ok;

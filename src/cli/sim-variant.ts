@@ -1,0 +1,160 @@
+import { parseArgs } from "node:util";
+import { platformName } from "../protocol/catalog.ts";
+import { commandName } from "../protocol/commands.ts";
+import { formatFirmware } from "../shared/format.ts";
+import type { SimulatedRbcOptions } from "../sim/sim-types.ts";
+import { UsageError } from "./errors.ts";
+
+/**
+ * Firmware variants of the simulated RBC (PROTOCOL.md §3.5), as command-line switches: `rbc sim` takes them as
+ * options, and the demo robot of `--demo` takes the same switches from the RBC_DEMO_VARIANT environment
+ * variable (e.g. `RBC_DEMO_VARIANT="--no-serial --firmware 9.99" rbc info --demo`). An environment variable
+ * rather than more global options: the variants are for trying a client against odd firmware, not something
+ * every command's help should list, and one variable reaches every command (info, zeros, upload, sensors, …).
+ */
+
+export const VARIANT_OPTIONS = {
+  "no-serial": { type: "boolean" },
+  "no-status": { type: "boolean" },
+  firmware: { type: "string" },
+  platform: { type: "string" },
+  "repeat-replies": { type: "boolean" },
+  "repeat-type": { type: "string" },
+} as const;
+
+/** The demo robot's variant switches (same syntax as `rbc sim`'s). */
+export const DEMO_VARIANT_VAR = "RBC_DEMO_VARIANT";
+
+/** The reply the homebrew port repeats endlessly (PROTOCOL.md §3.5): the distance sensor's. */
+export const DEFAULT_REPEAT_TYPE = 0x16;
+/**
+ * Its pace: one 17-byte 0x16 reply about every 0.95 ms, 17.8 KB/s as measured on the homebrew port. Over a
+ * paced wire (--baud-pacing) a reply cannot leave faster than its bytes take, so the interval grows to that.
+ */
+export const REPEAT_INTERVAL_MS = 0.955;
+
+export const VARIANT_HELP: ReadonlyArray<readonly [string, string]> = [
+  ["--no-serial", "Do not answer 0x0C (Read serial number), like the official firmware source."],
+  ["--no-status", "Do not answer 0x1E (Execution status)."],
+  ["--firmware X.Y", "Answer 0x12 with this version (default 2.23; the firmware sources say 9.99)."],
+  ["--platform N", "Platform byte of every reply, 0-255 (default 1 HUNO; the homebrew port sends 4)."],
+  [
+    "--repeat-replies",
+    "Repeat the first 0x16 (distance) reply endlessly, every 0.95 ms (17.8 KB/s), like the homebrew port.",
+  ],
+  ["--repeat-type 0xNN", "Repeat this reply type instead of 0x16 (implies --repeat-replies)."],
+];
+
+export type SimVariant = Pick<
+  SimulatedRbcOptions,
+  "answersSerialNumber" | "answersExecutionStatus" | "firmware" | "platform" | "repeatReplies"
+>;
+
+interface VariantValues {
+  "no-serial"?: boolean;
+  "no-status"?: boolean;
+  firmware?: string;
+  platform?: string;
+  "repeat-replies"?: boolean;
+  "repeat-type"?: string;
+}
+
+function parseFirmware(text: string, command: string): { major: number; minor: number } {
+  const m = /^(\d{1,3})\.(\d{1,3})$/.exec(text.trim());
+  const major = m ? Number(m[1]) : Number.NaN;
+  const minor = m ? Number(m[2]) : Number.NaN;
+  if (!m || major > 255 || minor > 255) {
+    throw new UsageError(
+      `--firmware must be MAJOR.MINOR with each part 0-255 (e.g. 2.23 or 9.99), got "${text}".`,
+      command,
+    );
+  }
+  return { major, minor };
+}
+
+function parsePlatform(text: string, command: string): number {
+  const n = Number(text);
+  if (!/^\d{1,3}$/.test(text.trim()) || n > 255) {
+    throw new UsageError(`--platform must be a whole number from 0 to 255, got "${text}".`, command);
+  }
+  return n;
+}
+
+function parseType(text: string, command: string): number {
+  const m = /^0x([0-9a-f]{1,2})$/i.exec(text.trim());
+  if (!m) throw new UsageError(`--repeat-type must be a reply type such as 0x16, got "${text}".`, command);
+  return Number.parseInt(m[1]!, 16);
+}
+
+/**
+ * The simulator options the switches ask for (only those given: the rest keep the simulator's defaults).
+ * `paced`: replies cross a wire modelled at 115200 baud, so repeats come no faster than it carries them.
+ */
+export function variantFromValues(values: VariantValues, command: string, paced = false): SimVariant {
+  const variant: SimVariant = {};
+  if (values["no-serial"]) variant.answersSerialNumber = false;
+  if (values["no-status"]) variant.answersExecutionStatus = false;
+  if (values.firmware !== undefined) variant.firmware = parseFirmware(values.firmware, command);
+  if (values.platform !== undefined) variant.platform = parsePlatform(values.platform, command);
+  if (values["repeat-replies"] || values["repeat-type"] !== undefined) {
+    const type =
+      values["repeat-type"] === undefined ? DEFAULT_REPEAT_TYPE : parseType(values["repeat-type"], command);
+    // A 0x16 reply is 17 bytes; 86.8 µs each at 115200 baud.
+    variant.repeatReplies = {
+      type,
+      intervalMs: paced ? Math.max(REPEAT_INTERVAL_MS, 17 * 0.0868) : REPEAT_INTERVAL_MS,
+    };
+  }
+  return variant;
+}
+
+/** RBC_DEMO_VARIANT, parsed with the switches of `rbc sim`; empty when unset. */
+export function demoVariant(env: NodeJS.ProcessEnv, command?: string): SimVariant {
+  const text = env[DEMO_VARIANT_VAR]?.trim();
+  if (text === undefined || text === "") return {};
+  const where = command ?? "sim";
+  let values: VariantValues;
+  try {
+    ({ values } = parseArgs({
+      args: text.split(/\s+/),
+      options: VARIANT_OPTIONS,
+      allowPositionals: false,
+      strict: true,
+    }));
+  } catch (e) {
+    const why = e instanceof Error ? e.message.replace(/\. To specify a positional.*$/s, ".") : String(e);
+    throw new UsageError(
+      `${DEMO_VARIANT_VAR} takes the variant switches of \`rbc sim\` (e.g. "--no-serial --firmware 9.99"): ${why}`,
+      command,
+    );
+  }
+  try {
+    return variantFromValues(values, where);
+  } catch (e) {
+    if (e instanceof UsageError) throw new UsageError(`${DEMO_VARIANT_VAR}: ${e.message}`, command);
+    throw e;
+  }
+}
+
+/** The variant in words, for `rbc sim`'s ready line: empty for the standard robot. */
+export function describeVariant(variant: SimVariant): string[] {
+  const words: string[] = [];
+  if (variant.answersSerialNumber === false) words.push("no answer to 0x0C (serial number)");
+  if (variant.answersExecutionStatus === false) words.push("no answer to 0x1E (execution status)");
+  if (variant.repeatReplies) {
+    const type = variant.repeatReplies.type;
+    words.push(
+      `the first 0x${type.toString(16).toUpperCase().padStart(2, "0")} (${commandName(type)}) reply repeated endlessly`,
+    );
+  }
+  return words;
+}
+
+/** "firmware 9.99, serial not reported, platform 4 (PF2)": what the simulated robot says about itself. */
+export function aboutRobot(
+  firmware: { major: number; minor: number },
+  serialNumber: string | undefined,
+  platform: number,
+): string {
+  return `firmware ${formatFirmware(firmware)}, serial ${serialNumber ?? "not reported"}, platform ${platform} (${platformName(platform)})`;
+}

@@ -1,0 +1,99 @@
+import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { type AppHarness, connectRobot, squash, startHarness, watchPage } from "./harness.ts";
+import "./rbc-test-globals.ts";
+
+/**
+ * The panel against firmware builds that differ from the standard one (PROTOCOL.md §3.5): the fake port's
+ * simulated robot with a `variant` (tests/e2e/fake-serial-entry.ts). Each connects, shows what the robot
+ * said as it said it, and stays usable.
+ */
+
+/** An empty memory area, read from the robot (the bar shows what is used; it used to show what is free). */
+const EMPTY_MOTION = /^0 of 24,576 bytes used|24,576 of 24,576 bytes free/;
+const EMPTY_ACTION = /^0 of 8,192 bytes used|8,192 of 8,192 bytes free/;
+
+let app: AppHarness;
+
+beforeAll(async () => {
+  app = await startHarness();
+});
+
+afterAll(async () => {
+  await app?.close();
+});
+
+describe("firmware variants", () => {
+  it("a robot that answers neither 0x0C nor 0x1E connects; its serial number is 'not reported'", async () => {
+    const { page, context } = await app.newPage({
+      options: { variant: { answersSerialNumber: false, answersExecutionStatus: false } },
+    });
+    const seen = watchPage(page, app.origin);
+    await connectRobot(page, app.url);
+
+    await expect
+      .poll(() => page.getByTestId("serial-number").textContent().then(squash))
+      .toBe("not reported");
+    const status = await page.getByTestId("connection-status").textContent().then(squash);
+    expect(status).toMatch(/Connected\s*·\s*HUNO\s*·\s*fw 2\.23/);
+    expect(status).not.toContain("SN");
+    // The panel is usable: the Robot view's reads after the identity went through.
+    await expect
+      .poll(() => page.getByTestId("memory-motion-text").textContent().then(squash))
+      .toMatch(EMPTY_MOTION);
+    expect(await page.getByTestId("error-code").textContent().then(squash)).toMatch(/No error/);
+    // The robot really was asked for its serial number and stayed silent.
+    const drops = await page.evaluate(() => window.__rbcTest?.sim.stats.drops["unknown-type"]);
+    expect(drops).toBeGreaterThanOrEqual(1);
+    expect(seen.errors).toEqual([]);
+    await context.close();
+  });
+
+  it("firmware 9.99 and platform 4 are shown as the robot reports them", async () => {
+    const { page, context } = await app.newPage({
+      options: { variant: { firmware: { major: 9, minor: 99 }, platform: 4 } },
+    });
+    await connectRobot(page, app.url);
+    await expect.poll(() => page.getByTestId("firmware").textContent().then(squash)).toBe("9.99");
+    const status = await page.getByTestId("connection-status").textContent().then(squash);
+    expect(status).toMatch(/Connected\s*·\s*PF2\s*·\s*fw 9\.99\s*·\s*SN 8958899989309/);
+    const facts = await page.getByTestId("device-card").textContent().then(squash);
+    expect(facts).toContain("Platform PF2 (user mode)");
+    await expect
+      .poll(() => page.getByTestId("memory-action-text").textContent().then(squash))
+      .toMatch(EMPTY_ACTION);
+    await context.close();
+  });
+
+  it("a robot that repeats a reply endlessly: the panel still connects and reads", async () => {
+    // The homebrew port's bug with the reply the panel reads first (0x12, the version), about every 1 ms: every
+    // later request meets a flood of unasked replies.
+    const { page, context } = await app.newPage({
+      options: { variant: { repeatReplies: { type: 0x12, intervalMs: 1 } } },
+    });
+    const seen = watchPage(page, app.origin);
+    await connectRobot(page, app.url);
+    await expect.poll(() => page.getByTestId("firmware").textContent().then(squash)).toBe("2.23");
+    expect(await page.getByTestId("serial-number").textContent().then(squash)).toBe("8958899989309");
+    await expect
+      .poll(() => page.getByTestId("memory-motion-text").textContent().then(squash))
+      .toMatch(EMPTY_MOTION);
+    expect(await page.getByTestId("error-code").textContent().then(squash)).toMatch(/No error/);
+    // The flood is real: the robot goes on sending the version reply, hundreds of times unasked.
+    await expect
+      .poll(() => page.evaluate(() => window.__rbcTest?.sim.stats.bytesSent ?? 0))
+      .toBeGreaterThan(200 * 17);
+    // Reading again (Refresh) in the middle of it still works: the requests go out and their replies count.
+    const before = await page.evaluate(() => window.__rbcTest?.sim.stats.packetsReceived ?? 0);
+    await page.getByRole("button", { name: "Refresh" }).click();
+    // The error code and the two memory areas are asked for again, and the reading ends.
+    await expect
+      .poll(() => page.evaluate(() => window.__rbcTest?.sim.stats.packetsReceived ?? 0))
+      .toBeGreaterThanOrEqual(before + 3);
+    await expect.poll(() => page.getByRole("button", { name: "Refresh" }).isEnabled()).toBe(true);
+    expect(await page.getByTestId("memory-motion-text").textContent().then(squash)).toMatch(EMPTY_MOTION);
+    expect(await page.getByTestId("error-code").textContent().then(squash)).toMatch(/No error/);
+    expect(await page.getByTestId("connection-status").textContent().then(squash)).toMatch(/Connected/);
+    expect(seen.errors).toEqual([]);
+    await context.close();
+  });
+});
