@@ -1,12 +1,25 @@
 export { DirectMode, SERVO_IDS } from "./direct-mode.ts";
 export * from "./errors.ts";
 export {
+  DEFAULT_FIRMWARE_TIMEOUTS,
+  type FirmwareIo,
+  type FirmwareTimeouts,
+  FirmwareUpdateError,
+  type FirmwareUpdateOptions,
+  type FirmwareUpdatePhase,
+  type FirmwareUpdateProgress,
+  type FirmwareUpdateResult,
+  transportFirmwareIo,
+  updateFirmware,
+} from "./firmware-update.ts";
+export {
   type FileUploadOptions,
   type FileUploadResult,
   motionPayload,
   UPLOAD_NOTICES,
   type UploadPhase,
 } from "./motion-upload.ts";
+export { RbcUnexpectedAckError } from "./raw-channel.ts";
 export { RbcClient, type RbcClientOptions, type RbcTimeouts } from "./rbc-client.ts";
 export * from "./types.ts";
 export { downloadChunk } from "./upload.ts";

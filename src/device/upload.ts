@@ -21,7 +21,7 @@ import {
   RbcUploadError,
   type UploadOutcome,
 } from "./errors.ts";
-import type { RawChannel } from "./raw-channel.ts";
+import { type RawChannel, RbcUnexpectedAckError } from "./raw-channel.ts";
 import type { RbcConnection } from "./rbc-connection.ts";
 import type { UploadOptions, UploadResult } from "./types.ts";
 
@@ -38,6 +38,9 @@ const CHECKSUM_ERROR = 2;
 /** How long to wait for each `40` (the RBC writes a 64-byte EEPROM page first). */
 const ACK_TIMEOUT_EXTRA_MS = 100;
 
+/** Allowance for a clock that ticks in whole milliseconds when timing an acknowledgement against the wire. */
+const CLOCK_SLACK_MS = 1;
+
 /** One chunk of the payload followed by its XOR checksum (PROTOCOL.md §6.2). */
 export function downloadChunk(payload: Uint8Array, offset: number): Uint8Array {
   const end = Math.min(offset + DOWNLOAD_CHUNK, payload.length);
@@ -50,7 +53,9 @@ export function downloadChunk(payload: Uint8Array, offset: number): Uint8Array {
 /**
  * The download sequence of PROTOCOL.md §6.2 with the project's decisions: free memory checked first; one chunk
  * in flight; no chunk retried; a missing `40` ends the upload with the count of acknowledged bytes, the robot's
- * error code in words, and what its memory now holds (decided by reading free memory again).
+ * error code in words, and what its memory now holds (decided by reading free memory again). A `40` that was
+ * not due (a stray, a duplicate, one too early: see `RawChannel.guardAcks`) stops the upload the same way, and
+ * the result is only ever what the robot's free memory confirms.
  * Must run inside the client's `exclusive`.
  */
 export async function uploadFile(
@@ -84,42 +89,58 @@ export async function uploadFile(
   }
 
   const ackTimeout = client.timeouts.quickMs + ACK_TIMEOUT_EXTRA_MS;
-  const exchange = (bytes: Uint8Array, note: string) =>
-    io.raw.exchange(bytes, { need: 1, timeoutMs: ackTimeout, note, accept: (b) => b === DOWNLOAD_ACK });
-
-  let acknowledged = 0;
+  const ctx: FailureContext = {
+    area,
+    acknowledged: 0,
+    total,
+    lastChunkSent: false,
+    freeBefore,
+    footprint,
+    readFree,
+    readError,
+  };
   let chunks = 0;
-  /** Set once the last chunk's bytes have been handed to the link: the file may be complete on the robot. */
-  let lastChunkSent = false;
-  onProgress?.({ acknowledged, total });
+  onProgress?.({ acknowledged: 0, total });
   client.setMode("download");
   try {
-    await exchange(
-      encodeDownloadStart(area === "motion" ? WRITE_MOTION_TYPE : WRITE_ACTION_TYPE, total),
-      "first part",
-    );
-    while (acknowledged < total) {
-      if (signal?.aborted) throw new RbcCancelledError();
-      const chunk = downloadChunk(payload, acknowledged);
-      lastChunkSent = acknowledged + chunk.length - 1 >= total;
-      await exchange(chunk, `chunk ${chunks + 1} (${chunk.length - 1} bytes)`);
-      acknowledged += chunk.length - 1;
-      chunks++;
-      onProgress?.({ acknowledged, total });
+    // Every `40` is counted against the parts written (see `RawChannel.guardAcks`); one that was not due is
+    // counted with the replies no request took, and stops the upload.
+    io.raw.guardAcks(DOWNLOAD_ACK, () => client.stats.unansweredReplies++);
+    try {
+      const firstPart = encodeDownloadStart(area === "motion" ? WRITE_MOTION_TYPE : WRITE_ACTION_TYPE, total);
+      const sentAt = io.now();
+      await io.raw.ackExchange(firstPart, { timeoutMs: ackTimeout, note: "first part", notBeforeMs: 0 });
+      // [decision] The wire-time rule needs a link that takes wire time: a real 115200-baud line always
+      // does. A link that answered the first part sooner than its own bytes take on the wire is not one (an
+      // unpaced simulator, where every byte arrives at once), and there the rule would refuse genuine
+      // answers; the counting rules still apply.
+      const paced = io.now() - sentAt >= wireMs(firstPart.length);
+      while (ctx.acknowledged < total) {
+        if (signal?.aborted) throw new RbcCancelledError();
+        io.raw.checkAcks();
+        const chunk = downloadChunk(payload, ctx.acknowledged);
+        ctx.lastChunkSent = ctx.acknowledged + chunk.length - 1 >= total;
+        await io.raw.ackExchange(chunk, {
+          timeoutMs: ackTimeout,
+          note: `chunk ${chunks + 1} (${chunk.length - 1} bytes)`,
+          notBeforeMs: paced ? Math.max(0, wireMs(chunk.length) - CLOCK_SLACK_MS) : 0,
+        });
+        ctx.acknowledged += chunk.length - 1;
+        chunks++;
+        onProgress?.({ acknowledged: ctx.acknowledged, total });
+      }
+    } catch (e) {
+      io.raw.endAckGuard();
+      throw e;
     }
+    // A second `40` in the same read as the last chunk's own is seen here.
+    const { fault } = io.raw.endAckGuard();
+    if (fault) throw fault;
   } catch (e) {
-    const failure = await explainFailure(io, e, {
-      area,
-      acknowledged,
-      total,
-      lastChunkSent,
-      freeBefore,
-      footprint,
-      readFree,
-      readError,
-    });
+    const failure = await explainFailure(io, e, ctx);
     if (!("recorded" in failure)) throw failure;
-    // Every chunk went through and the robot's memory shows the file: only the last `40` was lost.
+    // Every chunk went through and the robot's memory shows the file (its last `40` was lost, or an
+    // unexpected one came after the last chunk): the robot's own accounting confirms it.
     onProgress?.({ acknowledged: total, total });
     return {
       area,
@@ -130,17 +151,26 @@ export async function uploadFile(
       freeAfter: failure.freeAfter,
       errorCode: failure.errorCode,
       elapsedMs: io.now() - started,
-      lastAckLost: true,
+      ...(e instanceof RbcTimeoutError ? { lastAckLost: true } : {}),
     };
   } finally {
     if (client.mode === "download") client.setMode("packet");
   }
 
-  // Every chunk was acknowledged. That alone proves little (a stray or duplicate `40` looks like an
-  // acknowledgement): the file counts as recorded only when the robot's own accounting shows it, its free
-  // memory having dropped by exactly the file's footprint (PROTOCOL.md §6.1).
-  const freeAfter = await readFree().catch(() => undefined);
-  const errorCode = await readError().catch(() => undefined);
+  // Every chunk was acknowledged. That alone proves little (a stray `40` later than a chunk's wire time looks
+  // like its acknowledgement): the file counts as recorded only when the robot's own accounting shows it, its
+  // free memory having dropped by exactly the file's footprint (PROTOCOL.md §6.1).
+  let freeAfter = await readFree().catch(() => undefined);
+  let errorCode = await readError().catch(() => undefined);
+  const expected = freeAfterRecording(freeBefore, footprint);
+  if (freeAfter !== expected) {
+    // Not confirmed yet. If a stray `40` made the client run one chunk ahead, the robot may still be writing
+    // the last chunk (and answer the memory read before it accounts the file), or still be waiting for
+    // bytes: make it abandon any download, give it time, and ask again before saying what it holds.
+    const settled = await settleAndRead(io, ctx);
+    freeAfter = settled.freeNow;
+    errorCode = settled.deviceError ?? errorCode;
+  }
   const result = {
     area,
     total,
@@ -151,8 +181,13 @@ export async function uploadFile(
     errorCode,
     elapsedMs: io.now() - started,
   };
-  if (freeAfter === freeAfterRecording(freeBefore, footprint)) return result;
+  if (freeAfter === expected) return result;
   throw unconfirmedUpload(result);
+}
+
+/** Time `bytes` take on the wire at 115200 baud, 8N1 (10 bits a byte), in ms. */
+function wireMs(bytes: number): number {
+  return (bytes * 10_000) / 115_200;
 }
 
 /** Every chunk was acknowledged but the robot's free memory does not show the file: say what is known. */
@@ -210,9 +245,34 @@ function freeAfterRecording(freeBefore: number, footprint: number): number {
 /** A failure explained as an error, or the news that the file was recorded after all. */
 type Explained = RbcError | { recorded: true; freeAfter: number; errorCode: number };
 
+/**
+ * After a failed, cancelled or unconfirmed download: makes the RBC abandon any download it is still in (it may
+ * be waiting at a chunk boundary, and would eat our next packets as payload), gives it time to finish a page
+ * write, and reads its error code and free memory (undefined when it does not answer).
+ */
+async function settleAndRead(
+  io: UploadIo,
+  ctx: FailureContext,
+): Promise<{ deviceError: number | undefined; freeNow: number | undefined }> {
+  const { client } = io;
+  await io.raw
+    .exchange(ABANDON_DOWNLOAD, { need: 0, timeoutMs: 0, note: "abandon download" })
+    .catch(() => {});
+  if (client.mode === "download") client.setMode("packet");
+  await io.sleep(client.timeouts.quickMs);
+  let deviceError: number | undefined;
+  let freeNow: number | undefined;
+  try {
+    deviceError = await ctx.readError();
+    freeNow = await ctx.readFree();
+  } catch {
+    // Reported by the caller as an unknown state.
+  }
+  return { deviceError, freeNow };
+}
+
 /** Works out what the robot holds after a failed or cancelled download and says so. */
 async function explainFailure(io: UploadIo, error: unknown, ctx: FailureContext): Promise<Explained> {
-  const { client } = io;
   const { area, acknowledged, total } = ctx;
   const sent = `${acknowledged} of ${total} bytes were acknowledged`;
   if (error instanceof RbcDisconnectedError) {
@@ -232,25 +292,12 @@ async function explainFailure(io: UploadIo, error: unknown, ctx: FailureContext)
       error,
     );
   }
-  if (!(error instanceof RbcTimeoutError) && !(error instanceof RbcCancelledError)) {
+  const unexpected = error instanceof RbcUnexpectedAckError ? error : undefined;
+  if (!(error instanceof RbcTimeoutError) && !(error instanceof RbcCancelledError) && !unexpected) {
     return error instanceof RbcError ? error : new RbcError("upload-failed", String(error), { cause: error });
   }
   const cancelled = error instanceof RbcCancelledError;
-  // After a cancel or a lost acknowledgement the RBC may be waiting at a chunk boundary: make it abandon the
-  // download instead of eating our next packets as payload.
-  await io.raw
-    .exchange(ABANDON_DOWNLOAD, { need: 0, timeoutMs: 0, note: "abandon download" })
-    .catch(() => {});
-  if (client.mode === "download") client.setMode("packet");
-  await io.sleep(client.timeouts.quickMs);
-  let deviceError: number | undefined;
-  let freeNow: number | undefined;
-  try {
-    deviceError = await ctx.readError();
-    freeNow = await ctx.readFree();
-  } catch {
-    // Reported below as an unknown state.
-  }
+  const { deviceError, freeNow } = await settleAndRead(io, ctx);
   let outcome: UploadOutcome;
   let state: string;
   if (freeNow === ctx.freeBefore) {
@@ -287,8 +334,9 @@ async function explainFailure(io: UploadIo, error: unknown, ctx: FailureContext)
       deviceError,
     );
   }
-  const where =
-    acknowledged === 0 && error.command === "first part"
+  const where = unexpected
+    ? `${unexpected.message} The upload stopped there (${sent}).`
+    : acknowledged === 0 && error instanceof RbcTimeoutError && error.command === "first part"
       ? `The robot did not acknowledge the start of the download (${sent}); it may have refused it.`
       : `The robot stopped acknowledging (${sent}).`;
   return new RbcUploadError(

@@ -260,6 +260,23 @@ export class MockSerialPort extends EventTarget implements SerialPort {
     };
     if (at <= now) deliver();
     else this.timers.after(at - now, deliver);
+    for (const extra of reply.after) this.deliverAt(at + extra.afterMs, extra.bytes);
+  }
+
+  /**
+   * `bytes` reach the PC `afterMs` from now as if the robot had sent them unasked (a stray acknowledgement,
+   * noise): no fault applies to them, and replies already on their way are not held back.
+   */
+  injectToPc(bytes: ArrayLike<number>, afterMs = 0): void {
+    if (!(afterMs >= 0)) throw new RangeError(`afterMs must be 0 or more, got ${afterMs}.`);
+    this.deliverAt(this.clock.now() + afterMs, Uint8Array.from(bytes));
+  }
+
+  private deliverAt(at: number, bytes: Uint8Array): void {
+    if (bytes.length === 0) return;
+    const now = this.clock.now();
+    if (at <= now) this.toPc(bytes);
+    else this.timers.after(at - now, () => this.toPc(bytes));
   }
 
   private toPc(chunk: Uint8Array): void {

@@ -2,7 +2,8 @@
  * Fault injection for MockSerialPort (PROTOCOL.md §9, last sentence). A "reply" is one transmission of the
  * simulated RBC (a reply packet, an event packet, a download `40`, a servo answer). Each fault applies to the
  * next `replies` replies (default 1; `Infinity` until cleared) and is then used up, except the disconnect,
- * which acts on PC→RBC traffic.
+ * which acts on PC→RBC traffic. A late reply is `delay`; bytes that arrive unasked are `stray` (after a reply)
+ * or `MockSerialPort.injectToPc` (at a chosen moment); a reply that arrives twice or more is `duplicate`.
  */
 
 export type ReplyFault =
@@ -17,12 +18,18 @@ export type ReplyFault =
   /** The reply never arrives. */
   | { kind: "swallow"; remaining: number }
   /** `bytes` arrive just before the reply (they count as part of it for pacing). */
-  | { kind: "garbage"; bytes: Uint8Array; remaining: number };
+  | { kind: "garbage"; bytes: Uint8Array; remaining: number }
+  /** `bytes` arrive unasked `afterMs` after the reply (a stray download `40`, noise); later replies do not wait. */
+  | { kind: "stray"; bytes: Uint8Array; afterMs: number; remaining: number }
+  /** The reply arrives again `copies` times, `afterMs` apart (an echo, a firmware that repeats its replies). */
+  | { kind: "duplicate"; afterMs: number; copies: number; remaining: number };
 
-/** How one reply reaches the PC after the faults: its chunks and its extra delay. */
+/** How one reply reaches the PC after the faults: its chunks, its extra delay and what arrives after it. */
 export interface FaultedReply {
   chunks: Uint8Array[];
   delayMs: number;
+  /** Bytes that arrive `afterMs` after the reply itself (strays and duplicates), in no particular order. */
+  after: { bytes: Uint8Array; afterMs: number }[];
 }
 
 function count(replies: number): number {
@@ -78,6 +85,28 @@ export class PortFaults {
     return this;
   }
 
+  /**
+   * `bytes` arrive unasked `afterMs` after each of the next `replies` replies (0: right behind it, as a separate read). With a
+   * `40` during a download this is a stray acknowledgement at a chosen chunk boundary.
+   */
+  strayAfterReply(bytes: ArrayLike<number>, afterMs = 0, replies = 1): this {
+    if (!(afterMs >= 0)) throw new RangeError(`A stray's delay must be 0 or more, got ${afterMs}.`);
+    this.list.push({ kind: "stray", bytes: Uint8Array.from(bytes), afterMs, remaining: count(replies) });
+    return this;
+  }
+
+  /**
+   * Each of the next `replies` replies arrives again `copies` times (default once), the first copy `afterMs`
+   * after the reply (0: right behind it, as a separate read) and the next ones `afterMs` apart: a duplicated reply, or
+   * unsolicited repeats of it.
+   */
+  duplicateReplies(afterMs = 0, replies = 1, copies = 1): this {
+    if (!(afterMs >= 0)) throw new RangeError(`A duplicate's delay must be 0 or more, got ${afterMs}.`);
+    if (!(copies >= 1)) throw new RangeError(`A duplicate needs at least 1 copy, got ${copies}.`);
+    this.list.push({ kind: "duplicate", afterMs, copies: Math.floor(copies), remaining: count(replies) });
+    return this;
+  }
+
   /** Unplug the port once the PC has written `totalBytes` bytes in all (counted since the port was made). */
   disconnectAfterPcBytes(totalBytes: number): this {
     this.disconnectAtPcBytes = totalBytes;
@@ -106,6 +135,8 @@ export class PortFaults {
     const dropped = new Set<number>();
     let garbage: Uint8Array[] = [];
     let delayMs = 0;
+    const after: FaultedReply["after"] = [];
+    const duplicates: { afterMs: number; copies: number }[] = [];
     let chunkSize = Number.POSITIVE_INFINITY;
     for (const f of [...this.list]) {
       switch (f.kind) {
@@ -124,6 +155,12 @@ export class PortFaults {
         case "split":
           chunkSize = Math.min(chunkSize, f.chunkSize);
           break;
+        case "stray":
+          after.push({ bytes: f.bytes.slice(), afterMs: f.afterMs });
+          break;
+        case "duplicate":
+          duplicates.push({ afterMs: f.afterMs, copies: f.copies });
+          break;
         case "swallow":
           break;
       }
@@ -140,7 +177,11 @@ export class PortFaults {
     const chunks: Uint8Array[] = [];
     if (!Number.isFinite(chunkSize) || chunkSize >= whole.length) chunks.push(whole);
     else for (let i = 0; i < whole.length; i += chunkSize) chunks.push(whole.slice(i, i + chunkSize));
-    return { chunks, delayMs };
+    // A copy is the reply as it went out (its damage included), without the garbage that preceded it.
+    for (const d of duplicates) {
+      for (let i = 1; i <= d.copies; i++) after.push({ bytes: bytes.slice(), afterMs: d.afterMs * i });
+    }
+    return { chunks, delayMs, after };
   }
 
   private use(f: ReplyFault): void {

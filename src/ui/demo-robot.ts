@@ -1,5 +1,5 @@
 import { type Clock, realClock, scaledClock } from "../shared/clock.ts";
-import { MockSerialPort, SimulatedRbc } from "../sim/index.ts";
+import { createDemoRbc, MockSerialPort, type SimulatedRbc } from "../sim/index.ts";
 
 export interface DemoRobot {
   port: MockSerialPort;
@@ -20,14 +20,14 @@ export interface DemoRobotOptions {
 
 /**
  * The demo robot: a simulated RBC (firmware 2.23, HUNO) behind a mock serial port with a small adapter
- * latency. Its accelerometer reads with a little seeded noise around an upright robot, so the Sensors view
- * shows something alive. Loaded with a dynamic import, so the simulator is not part of the initial bundle.
+ * latency, in the demo world the CLI's --demo shares: its accelerometer reads with a little seeded noise around an
+ * upright robot, so the Sensors view shows something alive. Loaded with a dynamic import, so the simulator is not part of the initial bundle.
  * Every connection to the demo robot gets a new one.
  */
 export function createDemoRobot(options: DemoRobotOptions = {}): DemoRobot {
   const scale = options.timeScale ?? 1;
   const clock = scale === 1 ? realClock : scaledClock(scale);
-  const sim = new SimulatedRbc({ clock, accelerometerNoise: { seed: Date.now() & 0xffff, amplitude: 3 } });
-  sim.setAccelerometer(2, -4, 62);
+  // The same world as the CLI's --demo (src/sim/demo-world.ts).
+  const sim = createDemoRbc({ clock });
   return { port: new MockSerialPort(sim, { clock, latencyMs: 2, record: false }), sim, clock };
 }

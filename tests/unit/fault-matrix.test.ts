@@ -1,5 +1,8 @@
 /**
- * The fault matrix (issue #5): every RbcClient operation against every injected link fault, on the whole stack
+ * The fault matrix (issues #5 and #10): every RbcClient operation against every injected link fault — a byte
+ * dropped or corrupted, a reply late or lost, 1-byte reads, noise, a cable pull, a stray download `40`, a reply
+ * delivered twice or repeated unasked, a corrupted size byte — plus rows for firmware that leaves 0x0C or 0x1E
+ * unanswered (PROTOCOL.md §3.5), on the whole stack
  * (RbcClient → WebSerialTransport → MockSerialPort with 115200 baud pacing and 16 ms adapter latency →
  * SimulatedRbc) under a VirtualClock. Each cell asserts:
  *
@@ -14,8 +17,8 @@
  */
 import { beforeAll, describe, expect, it } from "vitest";
 import { RbcError, type RbcErrorCode, type RbcEvent, RbcUploadError } from "../../src/device/index.ts";
-import { FACTORY_ZEROS, STANDARD_ZEROS } from "../../src/protocol/index.ts";
-import type { StoredFile } from "../../src/sim/index.ts";
+import { DOWNLOAD_ACK, FACTORY_ZEROS, STANDARD_ZEROS } from "../../src/protocol/index.ts";
+import type { SimulatedRbcOptions, StoredFile } from "../../src/sim/index.ts";
 import { goldenImage } from "../data/project-data.ts";
 import { armAtReply, LINE_NOISE } from "../support/faults.ts";
 import { makeRig, type Rig } from "../support/rig.ts";
@@ -34,6 +37,8 @@ const ACK = Q + 100;
 const MARGIN_MS = 100;
 /** A request packet with one content byte (16 bytes on the wire); a version reply is 17. */
 const REQUEST = 16;
+/** The reply byte that holds the second-lowest byte of the packet's size field (PROTOCOL.md §2). */
+const SIZE_BYTE = 12;
 
 const NEW_ZEROS = [...STANDARD_ZEROS];
 const OLD_ZEROS = [...FACTORY_ZEROS];
@@ -48,6 +53,10 @@ const FAULTS = [
   "1-byte chunks",
   "garbage before header",
   "disconnect",
+  "stray ack",
+  "duplicate reply",
+  "unsolicited repeats",
+  "corrupt size byte",
 ] as const;
 type FaultName = (typeof FAULTS)[number];
 
@@ -59,6 +68,8 @@ interface Settled {
 
 interface Op {
   name: string;
+  /** A firmware variant of the simulated robot for this row (PROTOCOL.md §3.5). */
+  sim?: SimulatedRbcOptions;
   /** Starts the operation; the harness drives the clock until it settles. */
   run: (rig: Rig) => Promise<unknown>;
   /** The reply (1-based, counted from the operation's start) that the reply faults hit. */
@@ -84,7 +95,11 @@ interface Snapshot {
   motions: StoredFile[];
 }
 
-/** Idempotent reads: one damaged reply costs a retry, not the read. */
+/**
+ * Idempotent reads: one damaged reply costs a retry, not the read. A stray `40` in packet mode is line noise;
+ * a reply that arrives again (once or five times) is counted and discarded, never taken as the answer to a
+ * later request; a corrupted size byte is bounded by the type's reply size and costs that one reply.
+ */
 const READ: Op["expect"] = {
   "drop a byte": "ok",
   "corrupt a byte": "ok",
@@ -93,6 +108,10 @@ const READ: Op["expect"] = {
   "1-byte chunks": "ok",
   "garbage before header": "ok",
   disconnect: "disconnected",
+  "stray ack": "ok",
+  "duplicate reply": "ok",
+  "unsolicited repeats": "ok",
+  "corrupt size byte": "ok",
 };
 
 /** Requests that are not retried (they change something, or take long): a damaged or late reply is a timeout. */
@@ -101,6 +120,7 @@ const ONCE: Op["expect"] = {
   "drop a byte": "timeout",
   "corrupt a byte": "timeout",
   "delay past timeout": "timeout",
+  "corrupt size byte": "timeout",
 };
 
 function quickRead(name: string, run: Op["run"]): Op {
@@ -182,6 +202,7 @@ const OPS: Op[] = [
       "no reply": "timeout",
       "drop a byte": "ok",
       "corrupt a byte": "ok",
+      "corrupt size byte": "ok",
     },
     check: checkZeros,
   },
@@ -244,6 +265,12 @@ const OPS: Op[] = [
       "1-byte chunks": "ok",
       "garbage before header": "ok",
       disconnect: "disconnected",
+      // A `40` that was not due stops the upload; the robot then records nothing (issue #10, item 1).
+      "stray ack": "upload-failed",
+      "duplicate reply": "upload-failed",
+      "unsolicited repeats": "upload-failed",
+      // A download acknowledgement is one bare byte: it has no size byte to corrupt.
+      "corrupt size byte": "ok",
     },
     check: checkMotions,
   },
@@ -258,7 +285,9 @@ const OPS: Op[] = [
     cutAfter: 5,
     lateMs: Q + 50,
     penaltyMs: Q,
-    expect: ONCE,
+    // A copy of the 0x10 reply that arrives once direct mode has begun reaches the servo bus while the servo's
+    // answer is awaited: its first bytes (FF FF) are no position, and the read is refused as a bad reply.
+    expect: { ...ONCE, "duplicate reply": "bad-reply", "unsolicited repeats": "bad-reply" },
   },
   {
     name: "enterDirectMode + servos.read(5) (fault on the servo's answer)",
@@ -274,7 +303,55 @@ const OPS: Op[] = [
     // A wCK answer is two bare bytes with no header or checksum: a corrupted byte is taken as the answer (the
     // client cannot tell; the cell "succeeds" with a wrong value). Noise before it (FF bytes here) gives an
     // impossible position above 254, which the client refuses as a bad reply.
-    expect: { ...ONCE, "corrupt a byte": "ok", "garbage before header": "bad-reply" },
+    // A duplicated answer or a stray byte after it comes with no exchange waiting and is dropped; a wCK
+    // answer has no size byte.
+    expect: {
+      ...ONCE,
+      "corrupt a byte": "ok",
+      "garbage before header": "bad-reply",
+      "corrupt size byte": "ok",
+    },
+  },
+  {
+    // PROTOCOL.md §3.5: the serial number is optional. Replies: the version, then 0x0C goes unanswered.
+    name: "identify() on a robot that does not answer 0x0C",
+    sim: { answersSerialNumber: false },
+    run: ({ client }) => client.identify(),
+    reply: 1,
+    byte: 14,
+    cutAfter: 5,
+    lateMs: Q + 50,
+    // The version read with retries, then one unanswered 0x0C (not retried).
+    penaltyMs: Q * TRIES + Q,
+    expect: READ,
+    check: (_rig, _before, settled) => {
+      if (settled.ok) expect(settled.value).toMatchObject({ serialNumber: undefined, platform: 1 });
+    },
+  },
+  {
+    // 0x1E unanswered costs its own request only: it times out, and the next request (the error code, which
+    // the faults hit) is answered as usual.
+    name: "executionStatus(12) unanswered (no 0x1E), then readErrorCode",
+    sim: { answersExecutionStatus: false },
+    run: async ({ client }) => {
+      const answered = await client.executionStatus(12).then(
+        () => true,
+        (e: unknown) => {
+          // A cut cable is reported as such; anything but a timeout fails the cell with its own error.
+          if (e instanceof RbcError && e.code === "timeout") return false;
+          throw e;
+        },
+      );
+      expect(answered).toBe(false);
+      return client.readErrorCode();
+    },
+    reply: 1,
+    byte: 14,
+    cutAfter: 5,
+    lateMs: Q + 50,
+    // The error read's tries, and the pauses between them.
+    penaltyMs: Q * (TRIES + 1),
+    expect: READ,
   },
   {
     name: 'subscribe("buttons") and a press of PF2',
@@ -334,11 +411,24 @@ function applyFault(rig: Rig, op: Op, fault: FaultName): void {
     case "disconnect":
       port.faults.disconnectAfterPcBytes(port.stats.bytesFromPc + op.cutAfter);
       break;
+    case "stray ack":
+      armAtReply(port, op.reply, (f) => f.strayAfterReply([DOWNLOAD_ACK], 2));
+      break;
+    case "duplicate reply":
+      armAtReply(port, op.reply, (f) => f.duplicateReplies(3));
+      break;
+    case "unsolicited repeats":
+      armAtReply(port, op.reply, (f) => f.duplicateReplies(2, 1, 5));
+      break;
+    case "corrupt size byte":
+      // Byte 12 is the second-lowest byte of the 4-byte size: 00 00 00 n becomes 00 00 01 n (256 + n).
+      armAtReply(port, op.reply, (f) => f.corruptByte(SIZE_BYTE, { xor: 0x01 }));
+      break;
   }
 }
 
-async function newRig(): Promise<Rig> {
-  return makeRig({ port: { baudPacing: true, latencyMs: 16 } });
+async function newRig(op?: Op): Promise<Rig> {
+  return makeRig({ port: { baudPacing: true, latencyMs: 16 }, sim: op?.sim });
 }
 
 async function settle(rig: Rig, p: Promise<unknown>): Promise<Settled> {
@@ -361,7 +451,7 @@ async function cell(
   fault: FaultName | undefined,
   cleanMs: number,
 ): Promise<{ outcome: Outcome; elapsed: number }> {
-  const rig = await newRig();
+  const rig = await newRig(op);
   const before: Snapshot = { zeros: rig.sim.zeros, motions: rig.sim.motions };
   if (fault) applyFault(rig, op, fault);
   const t0 = rig.clock.now();

@@ -236,6 +236,74 @@ describe("MockSerialPort: faults (PROTOCOL.md §9)", () => {
     expect(second).toEqual([VERSION_REPLY]);
   });
 
+  it("delivers a stray byte unasked a set time after the next reply, without holding later replies", async () => {
+    const { port, clock } = rig();
+    port.faults.strayAfterReply([0x40], 5);
+    const io = await openAndRead(port);
+    await io.write(READ_VERSION);
+    await clock.advance(4);
+    expect(io.chunks).toEqual([VERSION_REPLY]);
+    await io.write(READ_VERSION);
+    await clock.advance(0);
+    // The second reply is not held back behind the stray.
+    expect(io.chunks).toEqual([VERSION_REPLY, VERSION_REPLY]);
+    await clock.advance(1);
+    expect(io.chunks).toEqual([VERSION_REPLY, VERSION_REPLY, "40"]);
+    expect(port.faults.active).toEqual([]);
+  });
+
+  it("delivers the next reply twice, the copy a set time later (as sent, damage included)", async () => {
+    const { port, clock } = rig();
+    port.faults.duplicateReplies(3).corruptByte(16);
+    const io = await openAndRead(port);
+    await io.write(READ_VERSION);
+    await clock.advance(2);
+    const damaged = "FF FF AA 55 AA 55 37 BA 12 01 00 00 00 02 02 17 14";
+    expect(io.chunks).toEqual([damaged]);
+    await clock.advance(1);
+    expect(io.chunks).toEqual([damaged, damaged]);
+    await io.write(READ_VERSION);
+    await clock.advance(10);
+    expect(io.chunks).toEqual([damaged, damaged, VERSION_REPLY]);
+  });
+
+  it("repeats a reply unasked: copies at every interval", async () => {
+    const { port, clock } = rig();
+    port.faults.duplicateReplies(2, 1, 3);
+    const io = await openAndRead(port);
+    await io.write(READ_VERSION);
+    await clock.advance(0);
+    expect(io.chunks).toHaveLength(1);
+    await clock.advance(4);
+    expect(io.chunks).toHaveLength(3);
+    await clock.advance(2);
+    expect(io.chunks).toEqual([VERSION_REPLY, VERSION_REPLY, VERSION_REPLY, VERSION_REPLY]);
+    expect(port.stats.bytesToPc).toBe(4 * 17);
+  });
+
+  it("a download acknowledgement duplicated at once arrives as a second 40", async () => {
+    const { port, clock } = rig();
+    port.faults.duplicateReplies(0);
+    const io = await openAndRead(port);
+    // The first part of a 538-byte motion download (PROTOCOL.md §6.3): the robot answers one 40.
+    await io.write("FF FF AA 55 AA 55 37 BA 01 00 00 00 02 1A");
+    await clock.advance(0);
+    expect(io.chunks).toEqual(["40", "40"]);
+  });
+
+  it("injects bytes to the PC at a chosen moment, whatever the robot does", async () => {
+    const { port, clock } = rig();
+    const io = await openAndRead(port);
+    port.injectToPc([0x40, 0x40], 7);
+    await clock.advance(6);
+    expect(io.chunks).toEqual([]);
+    await clock.advance(1);
+    expect(io.chunks).toEqual(["40 40"]);
+    expect(() => port.injectToPc([0x40], -1)).toThrow(RangeError);
+    expect(() => port.faults.duplicateReplies(1, 1, 0)).toThrow(RangeError);
+    expect(() => port.faults.strayAfterReply([0x40], -2)).toThrow(RangeError);
+  });
+
   it("unplugs once the PC has written a given byte count (mid-write)", async () => {
     const { port, sim, clock } = rig();
     const disconnects: Event[] = [];

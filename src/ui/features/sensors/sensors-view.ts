@@ -4,6 +4,7 @@ import { live } from "lit-html/directives/live.js";
 import { ref } from "lit-html/directives/ref.js";
 import { repeat } from "lit-html/directives/repeat.js";
 import { BUILT_IN_MOTIONS } from "../../../protocol/catalog.ts";
+import { distanceWarning } from "../../../protocol/plausibility.ts";
 import { liveNotice, notice } from "../../shell/notice.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
 import {
@@ -82,7 +83,11 @@ function pollCard(ctx: ViewContext): TemplateResult {
         <div class="sensor-value">
           <span class="muted small">Distance</span>
           <span class="big num" data-testid="distance-value">${s.distanceCm === undefined ? "—" : `${s.distanceCm} cm`}</span>
-          <span class="muted small">10 cm means nothing in front (or no sensor)</span>
+          ${
+            s.distanceCm !== undefined && distanceWarning(s.distanceCm)
+              ? html`<span class="small text-warning" data-testid="distance-warning">${distanceWarning(s.distanceCm)}</span>`
+              : html`<span class="muted small">10 cm means nothing in front (or no sensor)</span>`
+          }
         </div>
         <div class="sensor-value">
           <span class="muted small">Accelerometer</span>
