@@ -74,8 +74,7 @@ async function run(imageBytes: number, latencyMs: number, virtual: boolean): Pro
   const linkClock: Clock = v ?? wireClock();
   const sim = new SimulatedRbc({ clock: linkClock });
   const boot = new BootloaderRbc(sim, { pageWriteMs: FIRMWARE_PAGE_WRITE_MS });
-  // MockSerialPort uses only `receive` and `onTransmit`, which BootloaderRbc has.
-  const port = new MockSerialPort(boot as unknown as SimulatedRbc, {
+  const port = new MockSerialPort(boot, {
     clock: linkClock,
     baudPacing: true,
     latencyMs,

@@ -31,7 +31,7 @@ export {
   type OpenedOptions,
   RBC_BAUD_RATE,
 } from "./mock-serial-options.ts";
-export { MockSerialPort } from "./mock-serial-port.ts";
+export { MockSerialPort, type SimEndpoint } from "./mock-serial-port.ts";
 export { type FaultedReply, PortFaults, type ReplyFault } from "./port-faults.ts";
 export {
   type BootloaderFaults,

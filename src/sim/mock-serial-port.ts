@@ -21,7 +21,16 @@ const DEVICE_LOST = "The device has been lost.";
  * latency) follows the injected clock, and faults can be injected (`faults`).
  */
 
-export class MockSerialPort extends EventTarget implements SerialPort {
+/**
+ * What the mock port needs of the robot behind it: bytes in, and a way to hear what it sends. A SimulatedRbc,
+ * or something in front of one (the bootloader of PROTOCOL.md §11, `BootloaderRbc`).
+ */
+export interface SimEndpoint {
+  receive(bytes: Uint8Array): void;
+  onTransmit(listener: (bytes: Uint8Array) => void): () => void;
+}
+
+export class MockSerialPort<S extends SimEndpoint = SimulatedRbc> extends EventTarget implements SerialPort {
   onconnect: ((this: SerialPort, ev: Event) => void) | null = null;
   ondisconnect: ((this: SerialPort, ev: Event) => void) | null = null;
   readonly faults = new PortFaults();
@@ -63,7 +72,7 @@ export class MockSerialPort extends EventTarget implements SerialPort {
   private readonly detach: () => void;
 
   constructor(
-    readonly sim: SimulatedRbc,
+    readonly sim: S,
     options: MockSerialPortOptions = {},
   ) {
     super();

@@ -380,8 +380,7 @@ export class BootloaderRbc {
     this.counters.updates++;
     this.applicationWorks = !this.faults.silentFirmware;
     const version = firmwareMarker(this.flashBytes);
-    // SimulatedRbc answers 0x12 from its `firmware` object, so the flashed version is set there.
-    if (version) Object.assign(this.rbc.firmware, version);
+    if (version) this.rbc.setFirmwareVersion(version);
     this.currentMode = "starting";
     this.timers.after(this.o.appStartMs, () => this.startApplication());
   }

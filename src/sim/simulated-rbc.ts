@@ -181,6 +181,12 @@ export class SimulatedRbc {
     this.listeners.clear();
   }
 
+  /** The firmware now in flash reports this version (after an update through the bootloader, PROTOCOL.md §11). */
+  setFirmwareVersion(version: { major: number; minor: number }): void {
+    this.firmware.major = version.major;
+    this.firmware.minor = version.minor;
+  }
+
   /** Power off and on: volatile state resets; zeros and downloaded files (EEPROM) persist. */
   powerCycle(): void {
     this.player.reset();

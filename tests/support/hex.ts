@@ -69,7 +69,7 @@ export interface BootloaderRig {
   clock: VirtualClock;
   sim: SimulatedRbc;
   boot: BootloaderRbc;
-  port: MockSerialPort;
+  port: MockSerialPort<BootloaderRbc>;
   transport: WebSerialTransport;
   connection: RbcConnection;
   /** Connects (again) over a new transport on the same port. */
@@ -104,9 +104,7 @@ export async function makeBootloaderRig(
   const clock = new VirtualClock();
   const sim = new SimulatedRbc({ clock, ...options.sim });
   const boot = new BootloaderRbc(sim, options.boot);
-  // MockSerialPort only uses `receive` and `onTransmit`, which BootloaderRbc has (see the report: its
-  // constructor is to take that surface instead of a SimulatedRbc).
-  const port = new MockSerialPort(boot as unknown as SimulatedRbc, { clock, ...options.port });
+  const port = new MockSerialPort(boot, { clock, ...options.port });
   const run = <T>(p: Promise<T>) => clock.run(p);
   const fail = async (p: Promise<unknown>) => {
     try {
