@@ -49,9 +49,21 @@ export interface BundleFigures {
 
 /** Runs `vite build` into `outDir` (a child process; its output goes to this process's stderr). */
 export function viteBuild(outDir: string): Promise<void> {
+  return runVite(["build", "--outDir", outDir, "--emptyOutDir"]);
+}
+
+/**
+ * Runs `vite build --mode single` (`npm run build:single`): writes the one-file panel, rbc-panel.html, into
+ * `outDir` beside whatever is there (so after viteBuild(outDir) the hosted build stays as it is).
+ */
+export function viteBuildSingle(outDir: string): Promise<void> {
+  return runVite(["build", "--mode", "single", "--outDir", outDir]);
+}
+
+function runVite(args: string[]): Promise<void> {
   const vite = join(PROJECT_ROOT, "node_modules", "vite", "bin", "vite.js");
   return new Promise((resolveBuild, reject) => {
-    const child = spawn(process.execPath, [vite, "build", "--outDir", outDir, "--emptyOutDir"], {
+    const child = spawn(process.execPath, [vite, ...args], {
       cwd: PROJECT_ROOT,
       stdio: ["ignore", "pipe", "pipe"],
     });
@@ -67,7 +79,9 @@ export function viteBuild(outDir: string): Promise<void> {
       if (code === 0) resolveBuild();
       else
         reject(
-          new Error(`vite build failed (exit ${code}):\n${output.trim().split("\n").slice(-25).join("\n")}`),
+          new Error(
+            `vite ${args.join(" ")} failed (exit ${code}):\n${output.trim().split("\n").slice(-25).join("\n")}`,
+          ),
         );
     });
   });
@@ -211,4 +225,34 @@ export function describeContributors(figures: BundleFigures, top = 6): string {
     .slice(0, top)
     .map((c) => `${c.source} ${Math.round((100 * c.chars) / total)}%`)
     .join(", ");
+}
+
+/** The one-file panel's name (vite.config.ts SINGLE_FILE_NAME; not imported, so the bench loads no Vite plugin). */
+export const SINGLE_FILE_NAME = "rbc-panel.html";
+
+export interface SingleFileFigures {
+  path: string;
+  bytes: number;
+  /** Everything the panel is (every view, the demo robot, the examples, styles and icon): 1 KB = 1,000 bytes. */
+  kB: number;
+  gzipBytes: number;
+  gzipKB: number;
+}
+
+/**
+ * Size of the one-file panel in `outDir` (after viteBuildSingle): the whole file as it is downloaded from a
+ * release, and gzipped at level 9 as the first-load figure is. Throws with a clear message if it is missing.
+ */
+export function measureSingleFile(outDir: string): SingleFileFigures {
+  const path = join(outDir, SINGLE_FILE_NAME);
+  if (!existsSync(path))
+    throw new Error(`${path} does not exist: build the one-file panel first (npm run build:single).`);
+  const bytes = readFileSync(path);
+  const gzipBytes = gzipSync(bytes, { level: 9 }).length;
+  return { path, bytes: bytes.length, kB: bytes.length / 1000, gzipBytes, gzipKB: gzipBytes / 1000 };
+}
+
+/** "rbc-panel.html: 485.52 KB (135.78 KB gzip)". */
+export function describeSingleFile(figures: SingleFileFigures): string {
+  return `${SINGLE_FILE_NAME}: ${figures.kB.toFixed(2)} KB (${figures.gzipKB.toFixed(2)} KB gzip)`;
 }

@@ -1,0 +1,41 @@
+import { html, nothing, type TemplateResult } from "lit-html";
+
+/**
+ * Which panel this is: the package version and the commit it was built from, and where its changes are
+ * listed (CHANGELOG.md in the repository at that commit). vite.config.ts fills these in at build time
+ * (`define`); where they are not defined (unit tests), the panel says "development".
+ */
+declare const __RBC_VERSION__: string;
+declare const __RBC_COMMIT__: string;
+declare const __RBC_CHANGELOG_URL__: string;
+
+export interface PanelVersion {
+  version: string;
+  commit: string;
+  /** Empty when the build did not know its repository (a local build without a GitHub remote). */
+  changelogUrl: string;
+}
+
+export const PANEL_VERSION: PanelVersion = {
+  version: typeof __RBC_VERSION__ === "string" ? __RBC_VERSION__ : "development",
+  commit: typeof __RBC_COMMIT__ === "string" ? __RBC_COMMIT__ : "unknown",
+  changelogUrl: typeof __RBC_CHANGELOG_URL__ === "string" ? __RBC_CHANGELOG_URL__ : "",
+};
+
+/** "Version 0.1.0 (67f4344)". */
+export function versionText(info: PanelVersion = PANEL_VERSION): string {
+  return info.commit === "unknown" ? `Version ${info.version}` : `Version ${info.version} (${info.commit})`;
+}
+
+/** A small line for the foot of the side navigation or the Robot view: the version and "What changed". */
+export function versionFooter(info: PanelVersion = PANEL_VERSION): TemplateResult {
+  return html`
+    <p class="muted panel-version" data-testid="panel-version">
+      RBC Panel · ${versionText(info)}${
+        info.changelogUrl
+          ? html` · <a href=${info.changelogUrl} target="_blank" rel="noopener noreferrer">What changed</a>`
+          : nothing
+      }
+    </p>
+  `;
+}
