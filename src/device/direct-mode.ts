@@ -113,7 +113,7 @@ export class DirectMode {
   }
 
   /**
-   * Makes servos 0-15 passive. Runs outside the queue's order guarantees only through `RbcClient.stop()`;
+   * Makes servos 0-15 passive. Runs outside the queue's order guarantees only through `RbcClient.limp()`;
    * a servo that does not answer is listed as silent.
    */
   async limpAll(ids: readonly number[] = SERVO_IDS): Promise<{ confirmed: number[]; silent: number[] }> {

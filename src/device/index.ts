@@ -20,7 +20,12 @@ export {
   type UploadPhase,
 } from "./motion-upload.ts";
 export { RbcUnexpectedAckError } from "./raw-channel.ts";
-export { RbcClient, type RbcClientOptions, type RbcTimeouts } from "./rbc-client.ts";
+export {
+  RbcClient,
+  type RbcClientOptions,
+  type RbcTimeouts,
+  type StopActivityResult,
+} from "./rbc-client.ts";
 export * from "./types.ts";
 export { downloadChunk } from "./upload.ts";
 export {

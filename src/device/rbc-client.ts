@@ -52,6 +52,32 @@ const EMPTY_SLOT_ERROR = 3;
  * Motionbuilder, but the built-in motions' scenes are well under 1 s). */
 const SCENE_END_MS = 1000;
 
+/**
+ * What `stopActivity()` found under way and what came of it, no more certain than the robot confirmed. Nothing
+ * in it makes a servo passive: that is `limp()`.
+ */
+export interface StopActivityResult {
+  /**
+   * The motion that was playing. `stopped`: the robot answered `07` (it ends at the end of the current scene
+   * and holds that pose). `ended-then-posture`: the motion had just ended on its own, so the robot took the 7
+   * as Basic posture and confirmed that. `posture`: Basic posture itself was playing (it cannot be stopped) and
+   * the robot confirmed its end. `unconfirmed`: 7 was sent but no `07` came in time.
+   */
+  motion?: { number: number; outcome: "stopped" | "ended-then-posture" | "posture" | "unconfirmed" };
+  /**
+   * The sound that was playing: the RBC receives nothing while a sound plays, so Stop waits it out.
+   * `endsInMs` is how long that was expected to take; `confirmed` whether the robot reported the sound's end.
+   */
+  sound?: { number: number; endsInMs: number; confirmed: boolean };
+  /** An upload was under way and was cancelled (as its own Cancel does: the download is abandoned). */
+  uploadCancelled: boolean;
+  /**
+   * The client was in direct mode: servo moves not yet sent were dropped, the one on the wire finished. The
+   * servos hold their last position (a servo holds with torque on after a move; Limp is what makes them passive).
+   */
+  servoMovesDropped: boolean;
+}
+
 function postureDurationMs(): number {
   return COMMANDS.runMotion.expectedMs?.(BASIC_POSTURE_MOTION) ?? 0;
 }
@@ -69,7 +95,8 @@ function copyZeroTable(zeros: readonly number[]): number[] {
 
 /**
  * The RBC as typed operations (PROTOCOL.md §3-6): reads, zero writes with read-back, motions and sounds that
- * resolve when the robot reports them finished, uploads, event subscriptions, direct servo control and Stop.
+ * resolve when the robot reports them finished, uploads, event subscriptions, direct servo control, Stop (ends
+ * what runs, the robot keeps standing) and Limp (every servo passive).
  * The conversation underneath (one request at a time, timeouts, retries, events) is an `RbcConnection` held
  * in a private field: every request goes through an operation here, which validates what it sends.
  */
@@ -281,6 +308,7 @@ export class RbcClient {
       options.expectedMs ?? COMMANDS.runMotion.expectedMs?.(motion) ?? this.#c.timeouts.unknownMotionMs;
     const slot = downloadSlotOf(motion);
     const run = this.#c.exclusive(async () => {
+      const epoch = this.#c.epoch;
       // A fresh error 3 means an empty slot; one left from before tells nothing.
       const codeBefore =
         slot === undefined
@@ -289,7 +317,11 @@ export class RbcClient {
               (r) => r.code,
               () => undefined,
             );
+      // Stop (or Limp) came during that read: the motion is not started.
+      if (epoch !== this.#c.epoch)
+        throw new RbcCancelledError(`Motion ${motion} was not started: Stop came first.`);
       this.#stopSent = false;
+      this.#stoppedByStop = false;
       this.#c.setState({ playing: { motion, startedAt: this.#c.clock.now(), expectedMs } });
       const watch =
         slot !== undefined && codeBefore !== undefined && codeBefore !== EMPTY_SLOT_ERROR
@@ -323,11 +355,25 @@ export class RbcClient {
       if (this.#running === run) this.#running = undefined;
     };
     run.then(forget, forget);
-    return run;
+    // Ended by `stopActivity()` (Stop), not by the caller's own `stopMotion()`: the caller learns that the
+    // motion did not finish. Stop itself reports what the robot confirmed.
+    return run.then((n) => {
+      if (n === BASIC_POSTURE_MOTION && motion !== BASIC_POSTURE_MOTION && this.#stoppedByStop) {
+        throw new RbcCancelledError(
+          `Stopped by Stop: motion ${motion} ended at the end of its scene (the robot confirmed with 07) and the robot holds that pose.`,
+        );
+      }
+      return n;
+    });
   }
 
-  /** Set by `stopMotion()` while a motion plays: the running `runMotion` then takes the robot's `07` reply. */
+  /**
+   * Set by `stopMotion()` or `stopActivity()` once 7 has been sent while a motion plays: the running
+   * `runMotion` then takes the robot's `07` reply, and no second 7 is sent (it would start Basic posture).
+   */
   #stopSent = false;
+  /** The 7 was sent by `stopActivity()`: the running `runMotion` rejects with `RbcCancelledError`. */
+  #stoppedByStop = false;
   /** The `runMotion` under way, for `stopMotion()` to wait on. */
   #running: Promise<number> | undefined;
 
@@ -387,7 +433,8 @@ export class RbcClient {
       await this.runMotion(BASIC_POSTURE_MOTION);
       return;
     }
-    if (playing.motion === BASIC_POSTURE_MOTION) {
+    if (playing.motion === BASIC_POSTURE_MOTION || this.#stopSent) {
+      // Basic posture cannot be stopped; a 7 already sent (by Stop) must not be sent again.
       await running.catch(() => undefined);
       return;
     }
@@ -436,7 +483,7 @@ export class RbcClient {
     if (expectedMs === undefined) {
       throw new RbcInvalidArgumentError(`Sound number must be 1-25, got ${sound}. Nothing was sent.`);
     }
-    return this.#c.exclusive(async () => {
+    const run = this.#c.exclusive(async () => {
       this.#c.setState({ sounding: { sound, startedAt: this.#c.clock.now(), expectedMs } });
       try {
         return await this.#c.request(COMMANDS.runSound, sound, { signal: options.signal });
@@ -444,7 +491,16 @@ export class RbcClient {
         this.#c.setState({ sounding: undefined });
       }
     });
+    this.#sounding = run;
+    const forget = () => {
+      if (this.#sounding === run) this.#sounding = undefined;
+    };
+    run.then(forget, forget);
+    return run;
   }
+
+  /** The `runSound` under way, for `stopActivity()` to wait out. */
+  #sounding: Promise<number> | undefined;
 
   /**
    * Uploads a motion file end to end (PROTOCOL.md §6): refuses a file with errors before anything is sent,
@@ -453,12 +509,25 @@ export class RbcClient {
    */
   uploadMotion(motion: RbmMotion, options: FileUploadOptions = {}): Promise<FileUploadResult> {
     const payload = motionPayload(motion);
-    return uploadFileTo(this.#uploadHost(), "motion", payload, options);
+    return this.#stoppableUpload((host) => uploadFileTo(host, "motion", payload, options));
   }
 
   /** Uploads an action file's bytes as they are (type 0x02), like `uploadMotion` (the format is unverified). */
   uploadAction(bytes: Uint8Array, options: FileUploadOptions = {}): Promise<FileUploadResult> {
-    return uploadFileTo(this.#uploadHost(), "action", bytes.slice(), options);
+    return this.#stoppableUpload((host) => uploadFileTo(host, "action", bytes.slice(), options));
+  }
+
+  /** Aborted by `stopActivity()`: the uploads under way end as their own Cancel ends them. */
+  readonly #uploadAborts = new Set<AbortController>();
+
+  async #stoppableUpload<T>(upload: (host: UploadHost) => Promise<T>): Promise<T> {
+    const abort = new AbortController();
+    this.#uploadAborts.add(abort);
+    try {
+      return await upload(this.#uploadHost(abort.signal));
+    } finally {
+      this.#uploadAborts.delete(abort);
+    }
   }
 
   /**
@@ -469,22 +538,27 @@ export class RbcClient {
     return writeZerosWithBackup(this, target, options);
   }
 
-  #uploadHost(): UploadHost {
+  #uploadHost(stop: AbortSignal): UploadHost {
     return {
       resetMemoryPointer: (area) => this.resetMemoryPointer(area),
       upload: (area, bytes, options) =>
-        this.#c.exclusive(() => uploadFile(this.#uploadIo(), area, bytes, options)),
+        this.#c.exclusive(() =>
+          uploadFile(this.#uploadIo(), area, bytes, {
+            ...options,
+            signal: eitherSignal(options.signal, stop),
+          }),
+        ),
     };
   }
 
   /** Uploads a motion image (type 0x01) chunk by chunk (PROTOCOL.md §6.2); `uploadMotion` builds the image. */
   writeMotion(bytes: Uint8Array, options: UploadOptions = {}): Promise<UploadResult> {
-    return this.#c.exclusive(() => uploadFile(this.#uploadIo(), "motion", bytes, options));
+    return this.#stoppableUpload((host) => host.upload("motion", bytes, options));
   }
 
   /** Uploads an action file's bytes as they are (type 0x02); the action format is unverified. */
   writeAction(bytes: Uint8Array, options: UploadOptions = {}): Promise<UploadResult> {
-    return this.#c.exclusive(() => uploadFile(this.#uploadIo(), "action", bytes, options));
+    return this.#stoppableUpload((host) => host.upload("action", bytes, options));
   }
 
   // ---- Events ------------------------------------------------------------------------------------------
@@ -523,7 +597,7 @@ export class RbcClient {
     await this.#c.command(COMMANDS.readErrorCode, undefined).catch(() => {});
   }
 
-  // ---- Direct mode and stop ----------------------------------------------------------------------------
+  // ---- Direct mode, Stop and Limp ----------------------------------------------------------------------------
 
   /** Switches the link to the servo bus (0x10). Until `exitDirectMode()`, RBC commands are refused. */
   enterDirectMode(): Promise<void> {
@@ -558,11 +632,131 @@ export class RbcClient {
   }
 
   /**
-   * Stop — all servos limp. Cancels whatever is pending or queued, enters direct mode if needed, and makes
-   * every servo 0-15 passive. Resolves with the ids that confirmed. A Stop asked for while one is under way
-   * joins it (a second press must not cancel the first one's wait for the motion to end).
+   * Stop: ends what the robot is doing and keeps it standing. Never makes a servo passive (that is `limp()`).
+   * - A motion ends with 7, the only request the RBC takes while playing (PROTOCOL.md §3.6): it stops at the end
+   *   of the current scene and answers once, `07`; the robot holds that pose. The `runMotion` waiting for it
+   *   rejects with `RbcCancelledError`. Basic posture (7) itself cannot be stopped and is waited out.
+   * - A sound is waited out: the RBC receives nothing while a sound plays (PROTOCOL.md §3.6).
+   * - An upload is cancelled as its own Cancel does (the download is abandoned; the robot's memory is checked).
+   * - In direct mode, servo moves not yet sent are dropped; the servos hold their last position.
+   * - Operations queued behind these are cancelled (`RbcCancelledError`); nothing is sent in their place.
+   * Resolves with what was found and what the robot confirmed (see `StopActivityResult`). A Stop asked for
+   * while one is under way joins it.
    */
-  stop(): Promise<{ confirmed: number[]; silent: number[] }> {
+  stopActivity(): Promise<StopActivityResult> {
+    if (this.#halting) return this.#halting;
+    const halting = this.#startHalt().finally(() => {
+      if (this.#halting === halting) this.#halting = undefined;
+    });
+    this.#halting = halting;
+    return halting;
+  }
+
+  #halting: Promise<StopActivityResult> | undefined;
+
+  async #startHalt(): Promise<StopActivityResult> {
+    const mode = this.#c.mode;
+    if (mode === "disconnected" || mode === "connecting") throw new RbcNotConnectedError();
+    const { playing, sounding } = this.#c.state;
+    const running = this.#running;
+    const soundRun = this.#sounding;
+    const uploads = [...this.#uploadAborts];
+    // Nothing queued starts after Stop: a motion or moves waiting their turn are cancelled, not sent.
+    this.#c.epoch++;
+    const epoch = this.#c.epoch;
+    const result: StopActivityResult = {
+      uploadCancelled: uploads.length > 0,
+      servoMovesDropped: mode === "direct",
+    };
+    for (const upload of uploads) upload.abort();
+    // A download waits for the robot's acknowledgement of a chunk: end that wait now, as its Cancel would.
+    if (uploads.length > 0 && mode === "download")
+      this.#c.failPending(new RbcCancelledError("Upload cancelled by Stop."));
+    if (sounding && soundRun) {
+      const endsInMs = Math.max(0, sounding.startedAt + sounding.expectedMs - this.#c.clock.now());
+      const confirmed = await soundRun.then(
+        () => true,
+        () => false,
+      );
+      result.sound = { number: sounding.sound, endsInMs, confirmed };
+    }
+    if (playing && running) result.motion = await this.#endMotionForHalt(playing.motion, running);
+    // Let what was on the wire finish (an upload's clean-up, the servo move in flight), so that the result
+    // describes a robot that is done.
+    if (uploads.length > 0 || mode === "direct")
+      await this.#c.exclusive(async () => {}, epoch, { rearm: false }).catch(() => {});
+    return result;
+  }
+
+  /** Ends the playing motion for `stopActivity()` and says what the robot confirmed. */
+  async #endMotionForHalt(
+    motion: number,
+    running: Promise<number>,
+  ): Promise<NonNullable<StopActivityResult["motion"]>> {
+    const ended = (wait: number) =>
+      new Promise<number | undefined>((resolve) => {
+        const timer = this.#c.clock.setTimeout(() => resolve(undefined), wait);
+        running.then(
+          (n) => {
+            this.#c.clock.clearTimeout(timer);
+            resolve(n);
+          },
+          () => {
+            this.#c.clock.clearTimeout(timer);
+            resolve(undefined);
+          },
+        );
+      });
+    if (motion === BASIC_POSTURE_MOTION) {
+      const n = await running.catch(() => undefined);
+      return { number: motion, outcome: n === BASIC_POSTURE_MOTION ? "posture" : "unconfirmed" };
+    }
+    if (!this.#stopSent) {
+      this.#stopSent = true;
+      this.#stoppedByStop = true;
+      // Ahead of the queue: the running motion's request is still waiting for its reply.
+      const sent = await this.#c
+        .writePacket(
+          encodePacket(COMMANDS.runMotion.type, COMMANDS.runMotion.request(BASIC_POSTURE_MOTION)),
+          COMMANDS.runMotion.type,
+        )
+        .then(
+          () => true,
+          () => false,
+        );
+      if (!sent) return { number: motion, outcome: "unconfirmed" };
+    }
+    // The robot answers at the end of the current scene; a motion of unknown length is not waited out.
+    const n = await ended(SCENE_END_MS + this.#c.timeouts.marginMs);
+    if (n === BASIC_POSTURE_MOTION) return { number: motion, outcome: "stopped" };
+    if (n !== motion) return { number: motion, outcome: "unconfirmed" };
+    // It ended on its own just before the 7 arrived: the robot took the 7 as Run Motion 7 (basic posture).
+    const posture = await this.#c
+      .exclusive(() =>
+        this.#c.transact(
+          COMMANDS.runMotion.type,
+          COMMANDS.runMotion.request(BASIC_POSTURE_MOTION),
+          "Basic posture",
+          postureDurationMs() + this.#c.timeouts.marginMs,
+          { accept: (p) => p.contents[0] === BASIC_POSTURE_MOTION, send: false },
+        ),
+      )
+      .then(
+        () => true,
+        () => false,
+      );
+    if (posture) this.#c.setState({ basicPostureConfirmed: true });
+    return { number: motion, outcome: posture ? "ended-then-posture" : "unconfirmed" };
+  }
+
+  /**
+   * Limp: makes every servo passive. The robot falls unless someone holds it, so callers ask first. Cancels
+   * whatever is pending or queued (a motion is ended with 7 and a sound waited out first, as the RBC takes
+   * nothing else meanwhile), enters direct mode if needed, and makes servos 0-15 passive. Resolves with the
+   * ids that confirmed. A Limp asked for while one is under way joins it (a second press must not cancel the
+   * first one's wait for the motion to end). The client stays in direct mode afterwards.
+   */
+  limp(): Promise<{ confirmed: number[]; silent: number[] }> {
     if (this.#stopping) return this.#stopping;
     const stopping = this.#startStop().finally(() => {
       if (this.#stopping === stopping) this.#stopping = undefined;
@@ -571,13 +765,22 @@ export class RbcClient {
     return stopping;
   }
 
+  /**
+   * The same as `limp()`, under its first name. Kept for compatibility: it never meant "stop and keep standing";
+   * use `stopActivity()` for that, and `limp()` where every servo must go passive.
+   * @deprecated Use `limp()` (every servo passive) or `stopActivity()` (ends what runs, keeps the robot standing).
+   */
+  stop(): Promise<{ confirmed: number[]; silent: number[] }> {
+    return this.limp();
+  }
+
   #stopping: Promise<{ confirmed: number[]; silent: number[] }> | undefined;
 
   async #startStop(): Promise<{ confirmed: number[]; silent: number[] }> {
     if (this.#c.mode === "disconnected" || this.#c.mode === "connecting") throw new RbcNotConnectedError();
     this.#c.epoch++;
     const { playing, sounding } = this.#c.state;
-    this.#c.failPending(new RbcCancelledError("Cancelled by Stop: every servo is being made limp."));
+    this.#c.failPending(new RbcCancelledError("Cancelled by Limp: every servo is being made limp."));
     const epoch = this.#c.epoch;
     return this.#c.exclusive(async () => {
       if (this.#c.mode === "direct") return this.servos.limpAll();
@@ -603,12 +806,12 @@ export class RbcClient {
       this.#c.setMode("packet");
       throw new RbcError(
         "timeout",
-        "Stop: the robot did not switch to servo control, so its servos could not be made limp. Switch the robot off.",
+        "Limp: the robot did not switch to servo control, so its servos could not be made limp. Switch the robot off.",
       );
     }, epoch);
   }
 
-  /** Ends a playing motion for Stop and waits until the robot is still (see `awaitPostureAfter7`). */
+  /** Ends a playing motion for Limp and waits until the robot is still. */
   async #endMotionForStop(playing: NonNullable<ClientState["playing"]>): Promise<void> {
     if (playing.motion === BASIC_POSTURE_MOTION) {
       await this.#c.sleep(Math.max(0, playing.startedAt + playing.expectedMs - this.#c.clock.now()) + 50);
@@ -625,4 +828,15 @@ export class RbcClient {
       sleep: (ms: number) => this.#c.sleep(ms),
     };
   }
+}
+
+/** An AbortSignal that aborts when either does (`AbortSignal.any` is not in every browser the panel supports). */
+function eitherSignal(a: AbortSignal | undefined, b: AbortSignal): AbortSignal {
+  if (!a || b.aborted) return b;
+  if (a.aborted) return a;
+  const both = new AbortController();
+  const abort = () => both.abort();
+  a.addEventListener("abort", abort, { once: true });
+  b.addEventListener("abort", abort, { once: true });
+  return both.signal;
 }

@@ -3,7 +3,7 @@ import type { MockSerialPort } from "./mock-serial-port.ts";
 /**
  * A `navigator.serial` look-alike backed by MockSerialPort instances, for e2e tests and the demo robot.
  * requestPort() "shows the chooser": it grants the first known port that matches the filters (or any port
- * without filters), unless the user is set to cancel. Connect and disconnect events of the ports are
+ * without filters), unless the user is set to cancel (or the chooser to hang). Connect and disconnect events of the ports are
  * re-dispatched here, as Chrome bubbles them from the port to `navigator.serial`.
  */
 export class FakeSerial extends EventTarget implements Serial {
@@ -11,6 +11,12 @@ export class FakeSerial extends EventTarget implements Serial {
   ondisconnect: ((this: Serial, ev: Event) => void) | null = null;
   /** When true, every requestPort() rejects as if the user closed the chooser. */
   userCancels = false;
+  /**
+   * When true, requestPort() never settles by itself (a chooser that hangs), until `answerHeldRequests()`:
+   * the page must offer a way back.
+   */
+  chooserHangs = false;
+  private readonly held: Array<() => void> = [];
   private readonly ports: MockSerialPort[] = [];
   private readonly granted = new Set<MockSerialPort>();
   private nextError: DOMException | undefined;
@@ -36,8 +42,16 @@ export class FakeSerial extends EventTarget implements Serial {
     this.nextError = error;
   }
 
+  /** Lets every requestPort() held by `chooserHangs` answer now (as the chooser would have). */
+  answerHeldRequests(): number {
+    const held = this.held.splice(0);
+    for (const answer of held) answer();
+    return held.length;
+  }
+
   async requestPort(options?: SerialPortRequestOptions): Promise<SerialPort> {
     this.requests.push(options);
+    if (this.chooserHangs) await new Promise<void>((resolve) => this.held.push(resolve));
     const error = this.nextError;
     this.nextError = undefined;
     if (error) throw error;

@@ -52,8 +52,10 @@ export interface AppState {
   device: DeviceInfoState;
   zeros: ZerosState;
   log: LogViewState;
-  /** The outcome of Stop — limp, shown under the top bar. */
+  /** The outcome of Stop or Limp, shown under the top bar. */
   stopNotice?: Notice;
+  /** "Limp…" was pressed: the top bar asks "hold the robot" before any servo goes passive. */
+  limpAsked?: boolean;
   /** Motion files opened in the Motions view (kept across connections: they are files on this computer). */
   motionFiles?: MotionFilesState;
   /** Uploads, runs and sounds of this connection. */
@@ -88,14 +90,15 @@ export function initialState(env: {
 
 /**
  * The state of every feature that belongs to one connection, as a new connection starts it: the device card,
- * the zeros editor, Stop's outcome, the running operations, uploads, runs, sensors, servos and the safety
- * acknowledgements. Motion files and the packet log are kept (they are on this computer).
+ * the zeros editor, Stop's outcome and Limp's question, the running operations, uploads, runs, sensors, servos
+ * and the safety acknowledgements. Motion files and the packet log are kept (they are on this computer).
  */
 export function freshConnectionState(): Partial<AppState> {
   return {
     device: initialDeviceInfo(),
     zeros: initialZeros(),
     stopNotice: undefined,
+    limpAsked: undefined,
     running: [],
     motions: undefined,
     sensors: undefined,

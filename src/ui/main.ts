@@ -1,13 +1,14 @@
 import "./styles.css";
 import { render } from "lit-html";
 import { initialState } from "./app-state.ts";
-import { refreshKnownPorts, stopAll } from "./features/connection/actions.ts";
+import { refreshKnownPorts, stopActivity } from "./features/connection/actions.ts";
 import { LOG_CAPACITY, PacketLog } from "./features/log/packet-log.ts";
 import { routeFromHash, ViewLoader } from "./router.ts";
 import { webSerial } from "./serial-ports.ts";
 import { Session } from "./session.ts";
 import { showRoute, viewArrived } from "./shell/actions.ts";
 import { appView } from "./shell/app-view.ts";
+import { escapeTakenElsewhere } from "./shell/escape.ts";
 import { DEFAULT_VIEW, VIEWS } from "./shell/registry.ts";
 import type { AppView, ViewContext } from "./shell/view-types.ts";
 import { createStore, frameScheduler } from "./store.ts";
@@ -23,7 +24,7 @@ function demoTimeScaleForTests(): number | undefined {
   return typeof scale === "number" && Number.isFinite(scale) && scale > 0 ? scale : undefined;
 }
 
-/** Builds the panel into #app and wires it to the page: rendering, routes, Escape, the port list. */
+/** Builds the panel into #app and wires it to the page: rendering, routes, Escape (Stop), the port list. */
 function startApp(root: HTMLElement): void {
   const serial = webSerial();
   const store = createStore(
@@ -78,11 +79,13 @@ function startApp(root: HTMLElement): void {
     if (route) showRoute(store, route);
   });
 
-  // Escape = Stop (limp) while a robot is connected, wherever the focus is.
+  // Escape = Stop (ends what runs, the robot keeps standing) while a robot is connected, unless a field, a
+  // dialog, a menu or an open popup takes it. Never Limp.
   document.addEventListener("keydown", (e) => {
-    if (e.key !== "Escape" || e.repeat || store.get().connection.phase !== "connected") return;
+    if (e.key !== "Escape" || e.repeat || e.defaultPrevented) return;
+    if (store.get().connection.phase !== "connected" || escapeTakenElsewhere(e.target, document)) return;
     e.preventDefault();
-    void stopAll(app);
+    void stopActivity(app);
   });
 
   // Release the port when the page goes away, so the next page (or program) can open it.

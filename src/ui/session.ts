@@ -86,6 +86,9 @@ export class Session {
     return this.current ? this.simulated?.sim : undefined;
   }
 
+  /** Bumped by every chooser opened and by `cancelChoosing()`: a chooser's answer counts only while current. */
+  private chooser = 0;
+
   /** Opens the chooser and connects to the chosen port. Call it straight from the click handler. */
   chooseAndConnect(): void {
     const serial = webSerial();
@@ -96,14 +99,39 @@ export class Session {
     } catch (e) {
       request = Promise.reject(e);
     }
+    const chooser = ++this.chooser;
     this.setConnection({ phase: "choosing", problem: undefined, lostReason: undefined, showHelp: false });
     request.then(
-      (port) => this.connectPort(port, { kind: "hardware", name: describePort(port.getInfo()) }),
+      (port) => {
+        // Abandoned with Cancel: the port the chooser gave late is not opened (it only joins the known ports).
+        if (chooser !== this.chooser) {
+          void refreshKnownPorts(this.store);
+          return;
+        }
+        void this.connectPort(port, { kind: "hardware", name: describePort(port.getInfo()) });
+      },
       (e: unknown) => {
+        if (chooser !== this.chooser) return;
         const { notice, showHelp } = chooserProblem(e);
         this.setConnection({ phase: "disconnected", problem: notice, showHelp });
       },
     );
+  }
+
+  /**
+   * Gives up waiting for the browser's port chooser. The chooser is the browser's own, but its promise may
+   * never settle (it can hang): the page must offer a way back. A port it gives later is not opened.
+   */
+  cancelChoosing(): void {
+    if (this.store.get().connection.phase !== "choosing") return;
+    this.chooser++;
+    this.setConnection({
+      phase: "disconnected",
+      problem: {
+        tone: "info",
+        text: "Stopped waiting for the port chooser. Connect robot opens it again; if the browser's list is still open, close it first.",
+      },
+    });
   }
 
   /** Connects the same UI to a simulated RBC behind a mock serial port (loaded on demand). */
@@ -205,7 +233,7 @@ export class Session {
 
   /**
    * Runs an operation on the connected robot, listed in `running` while it lasts. By default it first leaves
-   * direct mode (after Stop the client is on the servo bus; the servos stay limp).
+   * direct mode (after Limp or servo control the client is on the servo bus; limp servos stay limp).
    */
   async run<T>(
     label: string,

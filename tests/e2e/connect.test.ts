@@ -26,13 +26,14 @@ describe("connecting a robot", () => {
     expect(await page.getByTestId("serial-number").textContent().then(squash)).toBe("8958899989309");
     await expect
       .poll(() => page.getByTestId("memory-motion-text").textContent().then(squash))
-      .toMatch(/24,576 of 24,576 bytes free/);
+      .toMatch(/0 of 24,576 bytes used/);
     expect(await page.getByTestId("memory-action-text").textContent().then(squash)).toMatch(
-      /8,192 of 8,192 bytes free/,
+      /0 of 8,192 bytes used/,
     );
     expect(await page.locator("#memory-motion").getAttribute("max")).toBe("24576");
     expect(await page.getByTestId("error-code").textContent().then(squash)).toMatch(/No error/);
-    await expect.poll(() => page.getByRole("button", { name: /Stop — limp/ }).isVisible()).toBe(true);
+    await expect.poll(() => page.getByRole("button", { name: "Stop", exact: true }).isVisible()).toBe(true);
+    expect(await page.getByRole("button", { name: "Limp…" }).isVisible()).toBe(true);
 
     // The chooser was asked for the four USB serial vendors.
     const filters = await page.evaluate(() => window.__rbcTest?.serial.requests[0]?.filters);
@@ -114,7 +115,8 @@ describe("connecting a robot", () => {
     expect(await page.getByTestId("connection-status").textContent().then(squash)).toMatch(/Disconnected/);
     // No spinner or progress left, no Stop button, and the connect buttons work again.
     expect(await page.locator("progress").count()).toBe(0);
-    expect(await page.getByRole("button", { name: /Stop — limp/ }).count()).toBe(0);
+    expect(await page.getByRole("button", { name: "Stop", exact: true }).count()).toBe(0);
+    expect(await page.getByRole("button", { name: "Limp…" }).count()).toBe(0);
     expect(await page.getByRole("button", { name: "Connect robot" }).isEnabled()).toBe(true);
 
     // Plugged back in, it connects again.
@@ -125,20 +127,55 @@ describe("connecting a robot", () => {
     await context.close();
   });
 
-  it("Escape makes every servo limp while connected", async () => {
+  it("Escape while connected is Stop, never Limp: with nothing running no servo goes passive", async () => {
     const { page, context } = await app.newPage();
     await connectRobot(page, app.url);
     await page.getByTestId("memory-motion-text").filter({ hasText: "24,576" }).waitFor();
     await page.keyboard.press("Escape");
-    await page.getByText(/Stopped: all 16 servos are limp/).waitFor();
-    const servos = await page.evaluate(() => window.__rbcTest?.sim.servos.map((s) => s.passive));
-    expect(servos).toEqual(Array(16).fill(true));
-    expect(await page.getByTestId("connection-status").textContent().then(squash)).toContain("servos limp");
-    // Refresh still works afterwards: the panel leaves direct mode first.
-    await page.getByRole("button", { name: "Refresh" }).click();
-    await expect
-      .poll(() => page.getByTestId("connection-status").textContent().then(squash))
-      .not.toContain("servos limp");
+    await page.getByText("Nothing was running; the robot keeps its pose.").waitFor();
+    const servos = await page.evaluate(() => window.__rbcTest?.sim.servos.slice(0, 16).map((s) => s.passive));
+    expect(servos).toEqual(Array(16).fill(false));
+    expect(await page.evaluate(() => window.__rbcTest?.sim.directMode)).toBe(false);
+    expect(await page.getByTestId("connection-status").textContent().then(squash)).not.toMatch(
+      /servo control|limp/,
+    );
+    await context.close();
+  });
+
+  it("offers Cancel while the port chooser is open; a port the chooser gives later is not opened", async () => {
+    const { page, context } = await app.newPage();
+    await page.goto(app.url, { waitUntil: "domcontentloaded" });
+    // A chooser that never answers by itself (requestPort can hang).
+    await page.evaluate(() => {
+      const serial = window.__rbcTest?.serial;
+      if (serial) serial.chooserHangs = true;
+    });
+    const connect = page.getByRole("button", { name: "Connect robot" });
+    const demo = page.getByRole("button", { name: "Try the demo robot" });
+    await connect.click();
+    await page.getByText("Waiting for you to choose a port in the browser's list…").waitFor();
+    expect(await connect.isDisabled()).toBe(true);
+    expect(await demo.isDisabled()).toBe(true);
+
+    await page.getByTestId("cancel-choosing").click();
+    await expect.poll(() => connect.isEnabled()).toBe(true);
+    expect(await demo.isEnabled()).toBe(true);
+    expect(await page.getByTestId("connect-progress").count()).toBe(0);
+    await page.getByText(/Stopped waiting for the port chooser/).waitFor();
+
+    // The chooser answers late: the page no longer waits for it, and does not open the port.
+    expect(await page.evaluate(() => window.__rbcTest?.serial.answerHeldRequests())).toBe(1);
+    await page.getByRole("heading", { name: "Ports used before" }).waitFor();
+    expect(await page.evaluate(() => window.__rbcTest?.port.openOptions)).toBeUndefined();
+    expect(await page.getByTestId("connection-status").textContent().then(squash)).toBe("Not connected");
+
+    // Connect works again with a chooser that answers.
+    await page.evaluate(() => {
+      const serial = window.__rbcTest?.serial;
+      if (serial) serial.chooserHangs = false;
+    });
+    await connect.click();
+    await page.getByTestId("device-card").waitFor();
     await context.close();
   });
 });

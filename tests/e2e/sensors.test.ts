@@ -172,7 +172,7 @@ describe("sensors view", () => {
     await context.close();
   });
 
-  it("stops polling while the tab is hidden and after Stop, and resumes", async () => {
+  it("stops polling while the tab is hidden and after Limp (not after Stop), and resumes", async () => {
     const { page, context } = await app.newPage({ options: FAST });
     await openSensors(page);
     await page.getByTestId("distance-value").filter({ hasText: "10 cm" }).waitFor();
@@ -189,10 +189,17 @@ describe("sensors view", () => {
     const before = await bytesFromPc(page);
     await expect.poll(() => bytesFromPc(page)).toBeGreaterThan(before);
 
-    // Stop: the robot goes to servo control, polling pauses and says why; Resume returns to normal.
+    // Stop (Escape) keeps the robot as it is: nothing was running, and polling goes on in normal mode.
     await page.keyboard.press("Escape");
-    await page.getByText(/Stopped: all 16 servos are limp/).waitFor();
-    await page.getByText(/Paused: Stop — limp switched the robot to servo control/).waitFor();
+    await page.getByText("Nothing was running; the robot keeps its pose.").waitFor();
+    const afterStop = await bytesFromPc(page);
+    await expect.poll(() => bytesFromPc(page)).toBeGreaterThan(afterStop);
+    expect(await page.evaluate(() => window.__rbcTest?.sim.directMode)).toBe(false);
+    // Limp: the robot goes to servo control, polling pauses and says why; Resume returns to normal.
+    await page.getByRole("button", { name: "Limp…" }).click();
+    await page.getByRole("alertdialog").getByRole("button", { name: "Limp", exact: true }).click();
+    await page.getByText(/Limp: all 16 servos confirmed passive/).waitFor();
+    await page.getByText(/Paused: the robot is in servo control/).waitFor();
     await page.getByRole("button", { name: "Resume reading" }).click();
     await page.getByTestId("poll-status").filter({ hasText: "Reading 5 times a second" }).waitFor();
     expect(await page.evaluate(() => window.__rbcTest?.sim.directMode)).toBe(false);

@@ -31,7 +31,7 @@ async function startControl(page: Page): Promise<void> {
 }
 
 describe("servos view", () => {
-  it("asks for the safety notice first, moves one servo in direct mode, and Stop makes all limp", async () => {
+  it("asks for the safety notice first, moves one servo in direct mode, Stop keeps the servos holding, Limp makes all limp", async () => {
     const { page, context } = await app.newPage();
     await openServos(page);
     const notice = page.getByTestId("servo-safety");
@@ -54,10 +54,30 @@ describe("servos view", () => {
     await page.locator("#servo-3").press("Enter");
     await expect.poll(async () => (await simServos(page))[3]?.position).toBe(100);
     await page.getByTestId("servo-pos-3").filter({ hasText: "100" }).waitFor();
-    // Out of range is clamped, never sent as is.
+    // Out of range is refused with a sentence (as in the zeros editor), never clamped and never sent.
+    const sentBeforeRefusal = await page.evaluate(() => window.__rbcTest?.port.stats.bytesFromPc ?? 0);
+    await page.locator("#servo-12").fill("300");
+    await page.locator("#servo-12").press("Enter");
+    const refusal = page.getByTestId("servo-refused-12");
+    await refusal.waitFor();
+    expect(await refusal.textContent().then(squash)).toBe(
+      "Servo 12: 300 is outside its safe range 1–198. Nothing was sent; the servo stays where it is.",
+    );
+    expect(await page.locator("#servo-12").getAttribute("aria-invalid")).toBe("true");
     await page.locator("#servo-3").fill("250");
     await page.locator("#servo-3").press("Enter");
-    await expect.poll(async () => (await simServos(page))[3]?.position).toBe(130);
+    await page
+      .getByTestId("servo-refused-3")
+      .filter({ hasText: "250 is outside its safe range 40–130" })
+      .waitFor();
+    expect(await page.evaluate(() => window.__rbcTest?.port.stats.bytesFromPc ?? 0)).toBe(sentBeforeRefusal);
+    expect((await simServos(page))[12]?.position).toBe(HUNO_BASIC_POSTURE[12]);
+    expect((await simServos(page))[3]?.position).toBe(100);
+    // A value within the range is taken again and clears the refusal.
+    await page.locator("#servo-3").fill("110");
+    await page.locator("#servo-3").press("Enter");
+    await expect.poll(async () => (await simServos(page))[3]?.position).toBe(110);
+    expect(await page.getByTestId("servo-refused-3").count()).toBe(0);
 
     // The slider: arrow keys move it; many quick changes do not queue up.
     const slider = page.getByLabel(/Right knee \(servo 2\), target/);
@@ -78,31 +98,43 @@ describe("servos view", () => {
     // 60 changes, each move 4 bytes: latest-wins sends only a few of them.
     expect(sent).toBeLessThan(20 * 4);
 
-    await page.getByRole("button", { name: /Stop — limp/ }).click();
-    await page.getByText(/Stopped: all 16 servos are limp/).waitFor();
+    // Stop: no further move is sent, the servos keep holding (torque on), servo control stays on.
+    await page.getByRole("button", { name: "Stop", exact: true }).click();
+    await page.getByTestId("stop-banner").filter({ hasText: "Servo moves stopped" }).waitFor();
+    expect((await simServos(page)).map((s) => s.passive)).toEqual(Array(16).fill(false));
+    expect(await simDirect(page)).toBe(true);
+
+    // Limp, after its question: every servo passive.
+    await page.getByRole("button", { name: "Limp…" }).click();
+    await page.getByRole("alertdialog").getByRole("button", { name: "Limp", exact: true }).click();
+    await page.getByText(/Limp: all 16 servos confirmed passive/).waitFor();
     expect((await simServos(page)).map((s) => s.passive)).toEqual(Array(16).fill(true));
     await page.getByTestId("servo-mode").filter({ hasText: "every servo is limp" }).waitFor();
     expect(await cspViolations(page)).toEqual([]);
     await context.close();
   });
 
-  it("after a double Escape during a motion every servo is limp, and servo controls still wait for the safety notice", async () => {
-    // Real time: basic posture (1.8 s) must still be playing when the test presses Escape.
+  it("after Limp during a motion every servo is limp, and servo controls still wait for the safety notice", async () => {
+    // Real time: basic posture (1.8 s) should still be playing when Limp is confirmed (it waits for it if not).
     const { page, context } = await app.newPage();
     await connectRobot(page, app.url);
     await page.getByTestId("memory-motion-text").filter({ hasText: "24,576" }).waitFor();
     // Run basic posture (always accepted) and stop it with two quick presses of Escape.
     await page.getByRole("link", { name: "Motions" }).click();
+    // The Run tab, where the Motions view has tabs (it loads lazily: wait for it first).
+    await page.locator('[role="tablist"][aria-label="Motions"], [data-motion="7"]').first().waitFor();
+    const runTab = page.getByRole("tab", { name: "Run" });
+    if (await runTab.count()) await runTab.click();
     await page.locator('[data-motion="7"]').click();
     await page.locator("#confirm-move").click();
     await page.getByTestId("running-motion").waitFor();
-    await page.keyboard.press("Escape");
-    await page.keyboard.press("Escape");
-    await page.getByText(/Stopped: all 16 servos are limp/).waitFor({ timeout: 8000 });
+    await page.getByRole("button", { name: "Limp…" }).click();
+    await page.getByRole("alertdialog").getByRole("button", { name: "Limp", exact: true }).click();
+    await page.getByText(/Limp: all 16 servos confirmed passive/).waitFor({ timeout: 8000 });
     expect((await simServos(page)).slice(0, 16).every((s) => s.passive)).toBe(true);
-    expect(await page.getByText(/Stop failed/).count()).toBe(0);
+    expect(await page.getByText(/Limp failed/).count()).toBe(0);
 
-    // Stop left the link in direct mode; the servo controls still need the safety notice first.
+    // Limp left the link in direct mode; the servo controls still need the safety notice first.
     await page.getByRole("link", { name: "Servos" }).click();
     await page.getByTestId("servo-safety").waitFor();
     expect(await page.getByRole("button", { name: "Read all positions" }).isDisabled()).toBe(true);

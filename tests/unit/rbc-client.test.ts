@@ -209,21 +209,102 @@ describe("RbcClient against the simulated RBC", () => {
     expect(await run(client.readFirmwareVersion())).toEqual({ major: 2, minor: 23 });
   });
 
-  it("Stop makes every servo limp, even from normal mode", async () => {
+  it("Limp makes every servo limp, even from normal mode (stop(), its old name, still does the same)", async () => {
     const { client, run, sim } = await makeRig();
-    const result = await run(client.stop());
+    const result = await run(client.limp());
     expect(result.confirmed).toEqual(Array.from({ length: 16 }, (_, i) => i));
     expect(sim.servos.slice(0, 16).every((s) => s.passive)).toBe(true);
+    const again = await makeRig();
+    expect((await again.run(again.client.stop())).confirmed).toHaveLength(16);
+    expect(again.sim.servos.slice(0, 16).every((s) => s.passive)).toBe(true);
+  });
+
+  it("Stop with nothing running sends nothing and makes no servo passive", async () => {
+    const { client, run, sim, port } = await makeRig();
+    const before = port.stats.bytesFromPc;
+    const result = await run(client.stopActivity());
+    expect(result).toEqual({ uploadCancelled: false, servoMovesDropped: false });
+    expect(port.stats.bytesFromPc).toBe(before);
+    expect(sim.directMode).toBe(false);
+    expect(sim.servos.slice(0, 16).some((s) => s.passive)).toBe(false);
   });
 });
 
-describe("Stop while a motion plays", () => {
+describe("Stop (stopActivity) keeps the robot standing", () => {
+  it("ends a motion with one 7, reports the robot's 07, and leaves the servos holding in packet mode", async () => {
+    const { client, run, sim, clock } = await makeRig({ sim: { basicPostureDone: true } });
+    const log: LogEntry[] = [];
+    client.log.on((e) => log.push(e));
+    const walking = client.runMotion(4).catch((e) => e);
+    await clock.advance(300);
+    expect(sim.playingMotion).toBe(4);
+    const result = await run(client.stopActivity());
+    expect(result.motion).toEqual({ number: 4, outcome: "stopped" });
+    expect(await walking).toMatchObject({ code: "cancelled" });
+    expect(sim.playingMotion).toBeUndefined();
+    expect(sim.directMode).toBe(false);
+    expect(client.mode).toBe("packet");
+    expect(sim.servos.slice(0, 16).some((s) => s.passive)).toBe(false);
+    // Exactly one Run Motion 7 went out (the literal bytes of PROTOCOL.md §8).
+    const sevens = log.filter((e) => e.direction === "out" && toHex(e.bytes) === EX.runMotion7);
+    expect(sevens).toHaveLength(1);
+    // No second motion (basic posture) is played afterwards.
+    await clock.advance(3000);
+    expect(sim.playingMotion).toBeUndefined();
+  });
+
+  it("waits a sound out (the RBC takes nothing meanwhile) and sends nothing", async () => {
+    const { client, run, sim, clock, port } = await makeRig();
+    const sound = client.runSound(8); // 5,916 ms + 200
+    await clock.advance(300);
+    const before = port.stats.bytesFromPc;
+    const result = await run(client.stopActivity());
+    expect(result.sound).toMatchObject({ number: 8, confirmed: true });
+    expect(result.sound!.endsInMs).toBe(200 + 5916 - 300);
+    expect(await sound).toBe(8);
+    expect(port.stats.bytesFromPc).toBe(before);
+    expect(sim.servos.slice(0, 16).some((s) => s.passive)).toBe(false);
+  });
+
+  it("in servo control drops the moves not yet sent; no servo is made passive and direct mode stays", async () => {
+    const { client, run, sim, clock } = await makeRig({ port: { latencyMs: 5 } });
+    await run(client.enterDirectMode());
+    const first = client.servos.move(5, 140, 2);
+    const queued = client.servos.move(6, 100, 2).catch((e) => e);
+    await clock.advance(1); // the first move is on the wire, the second waits its turn
+    const result = await run(client.stopActivity());
+    expect(result.servoMovesDropped).toBe(true);
+    expect((await run(first)).position).toBe(140);
+    expect(await run(queued)).toMatchObject({ code: "cancelled" });
+    expect(sim.servos[5]!.position).toBe(140);
+    expect(sim.servos[6]!.position).not.toBe(100);
+    expect(sim.servos.slice(0, 16).some((s) => s.passive)).toBe(false);
+    expect(sim.directMode).toBe(true);
+  });
+
+  it("cancels an upload as its Cancel does: the download is abandoned and nothing is recorded", async () => {
+    const { client, run, sim, clock } = await makeRig({ port: { baudPacing: true } });
+    const upload = client.writeMotion(waveImage()).catch((e) => e);
+    // Until the download has started.
+    for (let i = 0; i < 100 && client.mode !== "download"; i++) await clock.advance(1);
+    expect(client.mode).toBe("download");
+    const result = await run(client.stopActivity());
+    expect(result.uploadCancelled).toBe(true);
+    const error = await upload;
+    expect(error).toMatchObject({ code: "cancelled", outcome: "nothing-recorded" });
+    expect(sim.motions).toHaveLength(0);
+    expect(client.mode).toBe("packet");
+    expect(sim.servos.slice(0, 16).some((s) => s.passive)).toBe(false);
+  });
+});
+
+describe("Limp while a motion plays", () => {
   it("ends the motion with 7 (the only request the RBC takes while playing), then makes every servo limp", async () => {
     const { client, run, sim, clock } = await makeRig({ sim: { basicPostureDone: true } });
     const walking = client.runMotion(4).catch((e) => e);
     await clock.advance(300);
     expect(sim.playingMotion).toBe(4);
-    const result = await run(client.stop());
+    const result = await run(client.limp());
     expect(await walking).toMatchObject({ code: "cancelled" });
     expect(result.confirmed).toHaveLength(16);
     expect(sim.playingMotion).toBeUndefined();
@@ -286,7 +367,7 @@ describe("Stop motion", () => {
   });
 });
 
-describe("Stop pressed twice", () => {
+describe("Limp pressed twice", () => {
   it("joins the Stop under way instead of cancelling its wait for the motion to end", async () => {
     const { client, run, sim, clock } = await makeRig({ sim: { basicPostureDone: true } });
     const motion = client.runMotion(2).catch((e) => e);
@@ -302,7 +383,7 @@ describe("Stop pressed twice", () => {
   });
 });
 
-describe("Stop while a sound plays", () => {
+describe("Limp while a sound plays", () => {
   it("waits for the sound to end (the RBC takes nothing meanwhile), then makes every servo limp", async () => {
     const { client, run, sim, clock } = await makeRig();
     const sound = client.runSound(8).catch((e) => e); // 5,916 ms

@@ -3,7 +3,7 @@ import { addEvent, describeEvent, FOLD_MS } from "../../src/ui/features/sensors/
 import { RingSeries } from "../../src/ui/features/sensors/ring-series.ts";
 import { effectiveRate } from "../../src/ui/features/sensors/watch.ts";
 import { LatestMoveSender } from "../../src/ui/features/servos/move-sender.ts";
-import { clampToSafe } from "../../src/ui/features/servos/state.ts";
+import { checkTypedTarget, clampToSafe } from "../../src/ui/features/servos/state.ts";
 
 describe("rolling chart data", () => {
   it("keeps the last window of samples and gives x relative to the newest", () => {
@@ -110,5 +110,24 @@ describe("servo moves", () => {
     expect(clampToSafe(3, 250)).toBe(130);
     expect(clampToSafe(3, 0)).toBe(40);
     expect(clampToSafe(2, 200.4)).toBe(200);
+  });
+
+  it("refuses a typed target outside the safe range instead of clamping it (PROTOCOL.md §5 ranges)", () => {
+    // Servo 12: lower 1, upper 198.
+    expect(checkTypedTarget(12, "300")).toEqual({
+      problem:
+        "Servo 12: 300 is outside its safe range 1–198. Nothing was sent; the servo stays where it is.",
+    });
+    expect(checkTypedTarget(12, "0")).toMatchObject({
+      problem: expect.stringContaining("outside its safe range 1–198"),
+    });
+    expect(checkTypedTarget(12, "198")).toEqual({ position: 198 });
+    expect(checkTypedTarget(12, " 1 ")).toEqual({ position: 1 });
+    expect(checkTypedTarget(3, "12.5")).toEqual({
+      problem: 'Servo 3: "12.5" is not a whole number; use 40 to 130. Nothing was sent.',
+    });
+    expect(checkTypedTarget(3, "")).toEqual({
+      problem: "Servo 3: enter a position from 40 to 130. Nothing was sent.",
+    });
   });
 });

@@ -1,11 +1,13 @@
 import type { CommandDef } from "../command.ts";
 import { infoCommand } from "./info.ts";
+import { limpCommand } from "./limp.ts";
 import { logCommand } from "./log.ts";
 import { portsCommand } from "./ports.ts";
 import { runCommand } from "./run.ts";
 import { sensorsCommand } from "./sensors.ts";
 import { simCommand } from "./sim.ts";
 import { soundCommand } from "./sound.ts";
+import { stopCommand } from "./stop.ts";
 import { uploadCommand } from "./upload.ts";
 import { zerosCommand } from "./zeros.ts";
 
@@ -16,6 +18,8 @@ export const COMMAND_LIST: readonly CommandDef[] = [
   zerosCommand,
   uploadCommand,
   runCommand,
+  stopCommand,
+  limpCommand,
   soundCommand,
   sensorsCommand,
   logCommand,

@@ -1,4 +1,5 @@
-import { RbcCancelledError, RbcError } from "../../device/errors.ts";
+import { RbcError } from "../../device/errors.ts";
+import type { StopActivityResult } from "../../device/rbc-client.ts";
 import {
   BASIC_POSTURE_MOTION,
   BUILT_IN_MOTIONS,
@@ -9,6 +10,7 @@ import { parseCommand } from "../args.ts";
 import type { CommandDef } from "../command.ts";
 import { connectRobot } from "../connect.ts";
 import { CliError, EXIT, UsageError } from "../errors.ts";
+import { stoppedMotionSentence } from "./stop.ts";
 
 /** "7 (Basic posture)", "12 (downloaded motion 1)". */
 export function motionName(n: number): string {
@@ -37,9 +39,9 @@ After it is switched on, the RBC ignores every motion until 7 (basic posture) ha
 when that happens. The demo robot is switched on afresh by every rbc command, so put 7 first there:
 \`rbc run 7 4 --demo\`.
 
-Ctrl-C in the \`rbc run\` that started a motion stops waiting only (exit code 130): the robot plays the
-motion to its end. Wait until it ends before the next rbc command: while a motion or a sound plays the RBC
-answers nothing, so a new rbc cannot connect ("no robot answered").`,
+Ctrl-C stops the motion as \`rbc stop\` does (exit code 130): rbc sends 7, the robot ends the motion at the
+end of its current scene and keeps standing in that pose, and rbc says whether the robot confirmed (07).
+No servo is made passive, and the motions after it are not started. A second Ctrl-C exits at once.`,
   options: [],
   examples: [
     "rbc run 7 --port /dev/ttyUSB0",
@@ -77,20 +79,37 @@ answers nothing, so a new rbc cannot connect ("no robot answered").`,
       }
       env.out.line(`Running ${name}…`);
       const started = robot.clock.now();
+      // Ctrl-C: end the motion with 7 (Stop), never limp; the robot keeps standing.
+      let stopping: Promise<StopActivityResult | undefined> | undefined;
+      const onInterrupt = () => {
+        env.setExitNote(
+          `motion ${name} was being stopped with 7; whether the robot confirmed is not known. If it still moves, hold it (rbc limp makes every servo passive).`,
+        );
+        stopping = robot.client.stopActivity().catch(() => undefined);
+      };
+      env.signal.addEventListener("abort", onInterrupt, { once: true });
+      let failure: unknown;
       try {
-        await robot.client.runMotion(motion, { signal: env.signal });
+        await robot.client.runMotion(motion);
       } catch (e) {
-        if (e instanceof RbcCancelledError && env.signal.aborted) {
-          env.out.note(
-            `rbc: stopped waiting for motion ${name}; the robot plays it to its end. Wait until it ends before the next rbc command (the robot answers nothing while it plays).`,
-          );
-          env.out.result({
-            ok: false,
-            completed: results,
-            error: { code: "interrupted", message: "Interrupted." },
-          });
-          return EXIT.interrupted;
-        }
+        failure = e;
+      } finally {
+        env.signal.removeEventListener("abort", onInterrupt);
+      }
+      if (stopping) {
+        const result = await stopping;
+        env.setExitNote(undefined);
+        env.out.note(`rbc: interrupted: ${stoppedMotionSentence(result, name)}`);
+        env.out.result({
+          ok: false,
+          completed: results,
+          stopped: { motion, outcome: result?.motion?.outcome ?? "not-playing" },
+          error: { code: "interrupted", message: "Interrupted." },
+        });
+        return EXIT.interrupted;
+      }
+      if (failure !== undefined) {
+        const e = failure;
         if (e instanceof RbcError && e.code === "motion-ignored") {
           const hint = robot.demo
             ? ` The demo robot is switched on afresh by every rbc command: put 7 first, e.g. rbc run 7 ${motion} --demo.`

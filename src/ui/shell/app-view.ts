@@ -30,7 +30,7 @@ function mainContent(ctx: ViewContext, loader: ViewLoader): TemplateResult {
 function stopBanner(ctx: ViewContext): TemplateResult {
   const n = ctx.state.stopNotice;
   return html`
-    <div class="stop-banner" role="status" aria-live="assertive">
+    <div class="stop-banner" role="status" aria-live="assertive" data-testid="stop-banner">
       ${
         n
           ? html`<div class="notice notice--${n.tone} banner-notice">

@@ -2,6 +2,7 @@ import { html, nothing, type TemplateResult } from "lit-html";
 import { notice } from "../../shell/notice.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
 import {
+  cancelChoosing,
   chooseAndConnect,
   connectDemo,
   connectKnownPort,
@@ -28,7 +29,9 @@ function progress(ctx: ViewContext, c: ConnectionState): TemplateResult | typeof
       <progress aria-label="Connecting"></progress>
       ${
         c.phase === "choosing"
-          ? nothing
+          ? html`<button type="button" class="btn btn--quiet" data-testid="cancel-choosing" @click=${() => cancelChoosing(ctx)}>
+              Cancel
+            </button>`
           : html`<button type="button" class="btn btn--quiet" @click=${() => disconnect(ctx)}>
               Cancel
             </button>`

@@ -16,9 +16,9 @@ export interface RobotLabel {
 export interface ConnectionState {
   phase: ConnectionPhase;
   robot?: RobotLabel;
-  /** The client's mode once connected ("packet" normally, "direct" after Stop or for servo control). */
+  /** The client's mode once connected ("packet" normally, "direct" after Limp or for servo control). */
   mode?: ClientMode;
-  /** True after Stop made every servo limp, until the panel moves a servo or leaves direct mode. */
+  /** True after Limp made every servo passive, until the panel moves a servo or leaves direct mode. */
   limp?: boolean;
   /** Mirrored from the client: motion 7 has answered in this connection (the 7-first rule is satisfied). */
   basicPostureConfirmed?: boolean;

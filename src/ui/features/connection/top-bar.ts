@@ -2,7 +2,7 @@ import { html, nothing, type TemplateResult } from "lit-html";
 import { platformName } from "../../../protocol/catalog.ts";
 import { formatFirmware } from "../../../shared/format.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
-import { stopAll } from "./actions.ts";
+import { askLimp, cancelLimp, limpAll, stopActivity } from "./actions.ts";
 import type { ConnectionState } from "./state.ts";
 
 /** The words of the connection state, as the top bar (and screen readers) say them. */
@@ -50,17 +50,62 @@ export function topBar(ctx: ViewContext): TemplateResult {
       </div>
       ${
         connected
-          ? html`<button
-              type="button"
-              class="btn btn--danger stop"
-              aria-keyshortcuts="Escape"
-              title="Make every servo limp at once (Escape)"
-              @click=${() => void stopAll(ctx)}
-            >
-              <span aria-hidden="true">■</span> Stop — limp <kbd aria-hidden="true">Esc</kbd>
-            </button>`
+          ? html`<div class="safety-buttons">
+              <button
+                type="button"
+                class="btn btn--danger stop"
+                aria-keyshortcuts="Escape"
+                title="End what the robot is doing; it keeps standing (Escape)"
+                @click=${() => void stopActivity(ctx)}
+              >
+                <span aria-hidden="true">■</span> Stop <kbd aria-hidden="true">Esc</kbd>
+              </button>
+              <button
+                type="button"
+                id="limp-button"
+                class="btn limp"
+                aria-haspopup="dialog"
+                aria-expanded=${ctx.state.limpAsked ? "true" : "false"}
+                title="Make every servo passive: the robot falls unless someone holds it (asks first)"
+                @click=${() => askLimp(ctx)}
+              >
+                Limp…
+              </button>
+            </div>`
           : nothing
       }
     </header>
+    ${connected && ctx.state.limpAsked ? limpQuestion(ctx) : nothing}
+  `;
+}
+
+/**
+ * Limp asks first, in place under the top bar: every servo goes passive and a standing robot falls. Escape or
+ * Cancel closes the question (Escape never makes a servo limp); the safe choice is the one focused first.
+ */
+function limpQuestion(ctx: ViewContext): TemplateResult {
+  const onKey = (e: KeyboardEvent) => {
+    if (e.key !== "Escape") return;
+    e.preventDefault();
+    cancelLimp(ctx);
+  };
+  return html`
+    <div
+      id="limp-confirm"
+      class="limp-confirm"
+      role="alertdialog"
+      aria-labelledby="limp-title"
+      aria-describedby="limp-text"
+      @keydown=${onKey}
+    >
+      <p id="limp-title"><strong>Hold the robot: every servo will go passive and it will fall if nobody holds it.</strong></p>
+      <p id="limp-text" class="small">Stop (Esc) ends a motion and keeps the robot standing; Limp is for when the robot must go slack.</p>
+      <div class="actions">
+        <button type="button" class="btn" id="cancel-limp" @click=${() => cancelLimp(ctx)}>Cancel</button>
+        <button type="button" class="btn btn--danger" id="confirm-limp" @click=${() => void limpAll(ctx)}>
+          Limp
+        </button>
+      </div>
+    </div>
   `;
 }

@@ -138,7 +138,7 @@ function runFailure(offer: OfferedMotion, e: unknown) {
   if (e instanceof RbcError && e.code === "cancelled") {
     return {
       tone: "warning" as const,
-      text: `${capitalised(label(offer))} was interrupted by Stop — limp: every servo is limp now. Hold the robot.`,
+      text: `${capitalised(label(offer))} did not finish. ${e.message}`,
     };
   }
   if (e instanceof RbcError && e.code === "timeout" && offer.expectedMs === undefined) {
@@ -177,9 +177,9 @@ export async function stopMotion(ctx: AppContext): Promise<void> {
         e instanceof RbcError && e.code === "cancelled"
           ? {
               tone: "warning",
-              text: `Motion ${run.number} was interrupted by Stop — limp: every servo is limp now.`,
+              text: `Motion ${run.number} was ended by Stop or Limp; the banner under the top bar says what the robot confirmed.`,
             }
-          : errorNotice("Stop motion failed. If the robot still moves, press Stop — limp (Esc).", e),
+          : errorNotice("Stop motion failed. If the robot still moves, hold it and press Limp (top bar).", e),
     });
   } finally {
     patchMotions(store, { run: undefined });
@@ -203,7 +203,10 @@ export async function playSound(ctx: AppContext, n: number): Promise<void> {
     patchMotions(store, {
       soundNotice:
         e instanceof RbcError && e.code === "cancelled"
-          ? { tone: "warning", text: `Sound ${n} was interrupted by Stop — limp.` }
+          ? {
+              tone: "warning",
+              text: `Sound ${n}: its wait was cancelled by Limp (the robot plays a sound to its end).`,
+            }
           : errorNotice(`Sound ${n} failed.`, e),
     });
   }

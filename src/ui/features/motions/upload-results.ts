@@ -134,10 +134,10 @@ export async function uploadFailed(
     notice = { tone: "danger", text: `Upload refused. ${e.message}${resetNote}`, detail: technicalDetail(e) };
   } else if (e instanceof RbcCancelledError) {
     outcome = "nothing-recorded";
-    const byStop = e.message.startsWith("Stopped");
+    const byStop = e.message.includes("by Stop");
     notice = {
       tone: "warning",
-      text: `${byStop ? "Upload stopped by Stop — limp before any byte was sent." : "Upload cancelled before any byte was sent."}${resetNote}`,
+      text: `${byStop ? "Upload cancelled by Stop before any byte was sent." : "Upload cancelled before any byte was sent."}${resetNote}`,
     };
   } else {
     notice = errorNotice("The upload failed.", e);

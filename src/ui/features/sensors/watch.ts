@@ -29,9 +29,9 @@ export function effectiveRate(s: Pick<SensorsState, "rateHz" | "listen">): numbe
   return s.listen === "sound" ? Math.min(s.rateHz, SOUND_LISTEN_MAX_HZ) : s.rateHz;
 }
 
-const STOPPED_BY_STOP: Notice = {
+const IN_SERVO_CONTROL: Notice = {
   tone: "warning",
-  text: "Paused: Stop — limp switched the robot to servo control, where it reads no sensors. Resume returns it to normal mode (the servos stay limp).",
+  text: "Paused: the robot is in servo control (the Servos view, or Limp), where it reads no sensors. Resume returns it to normal mode (the servos keep their state).",
 };
 
 export class SensorWatch implements Controller {
@@ -100,7 +100,7 @@ export class SensorWatch implements Controller {
     const client = this.ctx.session.current;
     if (!this.shown || !client || document.hidden) return;
     if (client.mode === "direct") {
-      patchSensors(this.ctx.store, { pausedWhy: STOPPED_BY_STOP, running: false });
+      patchSensors(this.ctx.store, { pausedWhy: IN_SERVO_CONTROL, running: false });
       return;
     }
     const s = sensorsOf(this.ctx.store.get());
@@ -109,7 +109,7 @@ export class SensorWatch implements Controller {
     if (this.shown && !document.hidden && sensorsOf(this.ctx.store.get()).polling) this.startLoop();
   }
 
-  /** Leaves servo control (after Stop) and resumes. */
+  /** Leaves servo control (after Limp or the Servos view) and resumes. */
   async leaveDirectAndResume(): Promise<void> {
     if (!this.shown) return;
     try {
@@ -144,7 +144,7 @@ export class SensorWatch implements Controller {
     if (!this.shown) return;
     patchSensors(this.ctx.store, { listen, threshold, listenNotice: undefined });
     if (this.ctx.session.current?.mode === "direct") {
-      patchSensors(this.ctx.store, { pausedWhy: STOPPED_BY_STOP });
+      patchSensors(this.ctx.store, { pausedWhy: IN_SERVO_CONTROL });
       return;
     }
     await this.applyListen(listen, threshold);
@@ -203,13 +203,16 @@ export class SensorWatch implements Controller {
         this.onSample?.();
       } catch (e) {
         if (token !== this.token) break;
-        if (e instanceof RbcError && (e.code === "wrong-mode" || e.code === "cancelled")) {
-          patchSensors(store, { pausedWhy: STOPPED_BY_STOP, running: false });
+        if (e instanceof RbcError && e.code === "wrong-mode") {
+          patchSensors(store, { pausedWhy: IN_SERVO_CONTROL, running: false });
           this.token++;
           break;
         }
+        // Stop cancels the requests waiting their turn, a reading among them: polling goes on (Stop keeps the
+        // robot in its normal mode). Limp switches it to servo control, which the next reading finds.
+        const cancelled = e instanceof RbcError && e.code === "cancelled";
         if (e instanceof RbcError && (e.code === "disconnected" || e.code === "not-connected")) break;
-        failures++;
+        if (!cancelled) failures++;
         if (failures >= FAILURES_BEFORE_PAUSE) {
           patchSensors(store, {
             pausedWhy: errorNotice(`Paused: reading the sensors failed ${failures} times in a row.`, e),

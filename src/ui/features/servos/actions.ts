@@ -7,6 +7,7 @@ import { servosTaken } from "../connection/actions.ts";
 import { LatestMoveSender } from "./move-sender.ts";
 import {
   basicPostureTargets,
+  checkTypedTarget,
   clampToSafe,
   DEFAULT_TORQUE,
   patchServos,
@@ -148,31 +149,37 @@ export async function readAllPositions(ctx: AppContext): Promise<void> {
   }
 }
 
-/** A slider or number changed: move that servo (clamped to its safe range), latest request wins. */
+/**
+ * The slider moved (or a checked typed value): move that servo, latest request wins. The slider only gives
+ * positions within the safe range; the clamp guards the command layer all the same.
+ */
 export function moveServo(ctx: AppContext, id: number, position: number): void {
   const target = clampToSafe(id, position);
   const s = servosOf(ctx.store.get());
   const { [id]: _typed, ...drafts } = s.drafts ?? {};
-  patchServos(ctx.store, { targets: setAt(s.targets, id, target), drafts, notice: undefined });
+  const { [id]: _refused, ...refused } = s.refused ?? {};
+  patchServos(ctx.store, { targets: setAt(s.targets, id, target), drafts, refused, notice: undefined });
   ctx.session.connectionScope
     .get(SERVO_MOVES)
     .sender.request(id, { position: target, torque: s.torques[id] ?? DEFAULT_TORQUE });
 }
 
 /**
- * The number box of servo `id` was changed: move it to the typed position (clamped to its safe range). An empty
- * or unreadable box moves nothing and shows the current target again.
+ * The number box of servo `id` was changed: move it to the typed position. A value outside the servo's safe
+ * range, or not a whole number, is refused with a sentence that says why (as the zeros editor does): nothing
+ * is sent, and the typed text stays so it can be corrected.
  */
 export function applyTypedTarget(ctx: AppContext, id: number, text: string): void {
-  const position = text.trim() === "" ? Number.NaN : Number(text);
-  if (Number.isFinite(position)) {
-    moveServo(ctx, id, Math.round(position));
+  const checked = checkTypedTarget(id, text);
+  if ("position" in checked) {
+    moveServo(ctx, id, checked.position);
     return;
   }
-  patchServos(ctx.store, (x) => {
-    const { [id]: _typed, ...drafts } = x.drafts ?? {};
-    return { drafts };
-  });
+  patchServos(ctx.store, (x) => ({
+    drafts: { ...x.drafts, [id]: text },
+    refused: { ...x.refused, [id]: checked.problem },
+    notice: { tone: "danger", text: checked.problem },
+  }));
 }
 
 /** Keeps what is being typed into servo `id`'s number box until it is applied (change event). */

@@ -34,7 +34,7 @@ function safetyNotice(ctx: ViewContext): TemplateResult {
       <ul>
         <li><strong>Support the robot:</strong> hold it, or lay it on its back, so it cannot fall when a joint moves or goes limp.</li>
         <li><strong>Keep clear:</strong> fingers, cables and objects away from the joints.</li>
-        <li>A servo moves as soon as you move its slider. <strong>Stop — all servos limp</strong> (top bar, or Esc) works at any moment.</li>
+        <li>A servo moves as soon as you move its slider. <strong>Stop</strong> (top bar, or Esc outside a field) stops sending moves at any moment: the servos hold where they are. <strong>Limp…</strong> (top bar) makes every servo passive, after asking.</li>
       </ul>
       <button type="button" class="btn btn--primary" @click=${() => acknowledgeSafety(ctx)}>
         I understand: the robot is supported
@@ -51,8 +51,9 @@ function servoRow(ctx: ViewContext, id: number, enabled: boolean): TemplateResul
   const silent = s.silent.includes(id);
   const target = s.targets[id] ?? min;
   const disabled = !enabled || silent || position === undefined;
+  const refused = s.refused?.[id];
   return html`
-    <tr class=${silent ? "is-invalid" : ""} data-servo=${id}>
+    <tr class=${silent || refused ? "is-invalid" : ""} data-servo=${id}>
       <td class="num servo-id">${id}</td>
       <th scope="row" class="servo-name"><label for=${`servo-${id}`}>${name}</label></th>
       <td class="num servo-pos" data-testid=${`servo-pos-${id}`}>${silent ? html`<span class="text-danger">silent</span>` : (position ?? "—")}</td>
@@ -65,12 +66,14 @@ function servoRow(ctx: ViewContext, id: number, enabled: boolean): TemplateResul
           max=${max}
           step="1"
           ?disabled=${disabled}
-          aria-describedby=${`servo-${id}-range`}
+          aria-describedby=${refused ? `servo-${id}-range servo-${id}-refused` : `servo-${id}-range`}
+          aria-invalid=${refused ? "true" : "false"}
           .value=${live(s.drafts?.[id] ?? String(target))}
           @input=${(e: Event) => draftTarget(ctx, id, (e.target as HTMLInputElement).value)}
           @change=${(e: Event) => applyTypedTarget(ctx, id, (e.target as HTMLInputElement).value)}
         />
         <span id=${`servo-${id}-range`} class="zero-hint">${min}–${max}</span>
+        ${refused ? html`<span id=${`servo-${id}-refused`} class="text-danger small" data-testid=${`servo-refused-${id}`}>${refused}</span>` : nothing}
       </td>
       <td class="servo-slider">
         <input
@@ -167,7 +170,7 @@ function controlCard(ctx: ViewContext): TemplateResult {
         ${
           direct
             ? c.limp
-              ? "Servo control is on and every servo is limp (Stop). Moving a slider makes that servo hold again."
+              ? "Servo control is on and every servo is limp (Limp). Moving a slider makes that servo hold again."
               : "Servo control is on: the controller passes commands straight to the servos and runs no motions, sounds or sensors until you leave it (running a motion leaves it too)."
             : "Servo control is off. Start it to read and move single servos; the controller then does nothing else until you leave it."
         }

@@ -13,6 +13,8 @@ export interface ServosState {
   targets: number[];
   /** Text being typed into a servo's number box, not applied yet (so redraws do not reset it). */
   drafts?: Partial<Record<number, string>>;
+  /** Why a typed target was refused, by servo id (nothing was sent for it). */
+  refused?: Partial<Record<number, string>>;
   /** Torque per servo for moves: 0 (strong) .. 4 (weak). */
   torques: number[];
   /** Servos that did not answer the last read. */
@@ -32,6 +34,28 @@ export const DEFAULT_TORQUE = 2;
 /** The safe range of servo `id` (PROTOCOL.md §5 for 0-15; other ids get the full 0-254). */
 export function servoRange(id: number): { min: number; max: number } {
   return safeRange(id) ?? { min: 0, max: 254 };
+}
+
+/**
+ * A target typed into servo `id`'s number box: a whole number within its safe range, or the sentence that says
+ * why it is refused. Like the zeros editor, a value outside the range is refused, never clamped: 300 typed for
+ * a servo whose range is 1-198 must not move it to 198.
+ */
+export function checkTypedTarget(id: number, text: string): { position: number } | { problem: string } {
+  const { min, max } = servoRange(id);
+  const trimmed = text.trim();
+  const who = `Servo ${id}`;
+  if (trimmed === "") return { problem: `${who}: enter a position from ${min} to ${max}. Nothing was sent.` };
+  if (!/^-?\d+$/.test(trimmed)) {
+    return { problem: `${who}: "${trimmed}" is not a whole number; use ${min} to ${max}. Nothing was sent.` };
+  }
+  const position = Number(trimmed);
+  if (position < min || position > max) {
+    return {
+      problem: `${who}: ${position} is outside its safe range ${min}–${max}. Nothing was sent; the servo stays where it is.`,
+    };
+  }
+  return { position };
 }
 
 export function clampToSafe(id: number, position: number): number {
