@@ -21,7 +21,12 @@ export type MetricKey =
   | "logGarbageEntries"
   | "logGarbageEntriesBefore"
   | "logGarbageHeapMB"
-  | "logGarbageHeapMBBefore";
+  | "logGarbageHeapMBBefore"
+  | "firmwareLinesPerSecond"
+  | "firmwareWireBytesPerSecond"
+  | "firmwareWirePercent"
+  | "singleFileKB"
+  | "singleFileGzipKB";
 
 export interface Target {
   op: ">=" | "<=";
@@ -84,6 +89,8 @@ export const ROWS: readonly Row[] = [
   { key: "bundleGzipKB", label: "First load, JS + CSS, gzip", unit: "KB", digits: 2 },
   { key: "bundleJsGzipKB", label: "  of which JavaScript", unit: "KB", digits: 2 },
   { key: "bundleCssGzipKB", label: "  of which CSS", unit: "KB", digits: 2 },
+  { key: "singleFileKB", label: "One-file panel (rbc-panel.html)", unit: "KB", digits: 2 },
+  { key: "singleFileGzipKB", label: "  of which gzip", unit: "KB", digits: 2 },
   { key: "firstRenderMs", label: "First render to usable connect button", unit: "ms", digits: 0 },
   { key: "logPollHeapMB", label: "Heap growth, 1 h of 10 Hz polling, packet log on", unit: "MB", digits: 2 },
   { key: "logPollHeapMBBefore", label: "  the same with the old log (before)", unit: "MB", digits: 2 },
@@ -91,6 +98,14 @@ export const ROWS: readonly Row[] = [
   { key: "logGarbageEntriesBefore", label: "  the same with the old log (before)", unit: "", digits: 0 },
   { key: "logGarbageHeapMB", label: "Heap growth, 1 MiB of garbage, packet log on", unit: "MB", digits: 2 },
   { key: "logGarbageHeapMBBefore", label: "  the same with the old log (before)", unit: "MB", digits: 2 },
+  {
+    key: "firmwareLinesPerSecond",
+    label: "Firmware update, 64 KiB, 16 ms latency: lines per second",
+    unit: "lines/s",
+    digits: 1,
+  },
+  { key: "firmwareWireBytesPerSecond", label: "  wire bytes per second", unit: "B/s", digits: 0 },
+  { key: "firmwareWirePercent", label: "  share of the 11,520 B/s wire", unit: "%", digits: 1 },
 ];
 
 export type Metrics = Record<MetricKey, number | null>;

@@ -9,14 +9,22 @@
  *   --no-browser     skip the first-render figure only
  *   --no-pty         skip the upload over a PTY (rbc sim --pty in a child process)
  *   --no-log-memory  skip the packet log's memory figures (nine `node --expose-gc` children, about 20 s)
+ *   --no-firmware    skip the firmware update figures (three simulated flashes, about 12 s)
  *   --quick          fewer repetitions (1 upload per path instead of 7, 4 CLI start-ups instead of 10, 1 page
  *                    load instead of 5)
  */
 import { mkdtempSync, rmSync } from "node:fs";
 import { cpus, tmpdir } from "node:os";
 import { join } from "node:path";
-import { describeContributors, measureBundle, viteBuild } from "./bundle-size.ts";
+import {
+  describeContributors,
+  measureBundle,
+  measureSingleFile,
+  viteBuild,
+  viteBuildSingle,
+} from "./bundle-size.ts";
 import { measureCliStartup } from "./cli-startup.ts";
+import { describeFirmwareRun, measureFirmwareUpdate } from "./firmware-update.ts";
 import { measureFirstRender } from "./first-render.ts";
 import { describeLogMemory, measureLogMemory } from "./log-memory.ts";
 import { makeParserStream, measureParser } from "./parser-throughput.ts";
@@ -35,6 +43,7 @@ const noBuild = args.includes("--no-build");
 const noBrowser = args.includes("--no-browser");
 const noPty = args.includes("--no-pty");
 const noLogMemory = args.includes("--no-log-memory");
+const noFirmware = args.includes("--no-firmware");
 const distIndex = args.indexOf("--dist");
 const distArg = distIndex >= 0 ? args[distIndex + 1] : undefined;
 
@@ -67,6 +76,11 @@ const metrics: Metrics = {
   logGarbageEntriesBefore: null,
   logGarbageHeapMB: null,
   logGarbageHeapMBBefore: null,
+  firmwareLinesPerSecond: null,
+  firmwareWireBytesPerSecond: null,
+  firmwareWirePercent: null,
+  singleFileKB: null,
+  singleFileGzipKB: null,
 };
 const skipped: Partial<Record<MetricKey, string>> = {};
 const details: Record<string, unknown> = {};
@@ -193,6 +207,31 @@ async function main(): Promise<void> {
     }
   }
 
+  const FIRMWARE_KEYS: MetricKey[] = [
+    "firmwareLinesPerSecond",
+    "firmwareWireBytesPerSecond",
+    "firmwareWirePercent",
+  ];
+  if (noFirmware) {
+    skip(FIRMWARE_KEYS, "--no-firmware");
+  } else {
+    progress("firmware update (64 KiB through the simulated bootloader on the paced wire)");
+    try {
+      const fw = await measureFirmwareUpdate();
+      metrics.firmwareLinesPerSecond = round(fw.virtual16.linesPerSecond, 1);
+      metrics.firmwareWireBytesPerSecond = round(fw.virtual16.wireBytesPerSecond, 0);
+      metrics.firmwareWirePercent = round(fw.virtual16.wirePercent, 1);
+      details.firmwareUpdate = fw;
+      details.firmwareUpdateLines = [
+        describeFirmwareRun("virtual clock, 16 ms latency", fw.virtual16),
+        describeFirmwareRun("virtual clock, 1 ms latency", fw.virtual1),
+        describeFirmwareRun("real time, 1 ms latency", fw.real1),
+      ];
+    } catch (e) {
+      skip(FIRMWARE_KEYS, errorText(e));
+    }
+  }
+
   progress("CLI start-up (node bin/rbc.mjs --help against node -e 0, interleaved)");
   try {
     const cli = measureCliStartup(quick ? 4 : 10);
@@ -210,7 +249,7 @@ async function main(): Promise<void> {
   }
 
   if (noBuild) {
-    skip([...BUNDLE_KEYS, "firstRenderMs"], "--no-build");
+    skip([...BUNDLE_KEYS, "firstRenderMs", "singleFileKB", "singleFileGzipKB"], "--no-build");
     return;
   }
   let outDir = distArg;
@@ -244,6 +283,15 @@ async function main(): Promise<void> {
       };
     } catch (e) {
       skip(BUNDLE_KEYS, errorText(e));
+    }
+    progress(`one-file panel (vite build --mode single → ${outDir})`);
+    try {
+      await viteBuildSingle(outDir);
+      const single = measureSingleFile(outDir);
+      metrics.singleFileKB = round(single.kB, 2);
+      metrics.singleFileGzipKB = round(single.gzipKB, 2);
+    } catch (e) {
+      skip(["singleFileKB", "singleFileGzipKB"], errorText(e));
     }
     if (noBrowser) {
       skip(["firstRenderMs"], "--no-browser");
@@ -301,6 +349,9 @@ if (json) {
   }
   const logTable = details.logMemoryTable as string | undefined;
   if (logTable) process.stdout.write(`\n${logTable}\n`);
+  const firmwareLines = details.firmwareUpdateLines as string[] | undefined;
+  if (firmwareLines)
+    process.stdout.write(`\nFirmware update:\n${firmwareLines.map((l) => `  ${l}`).join("\n")}\n`);
   if (b?.contributors) process.stdout.write(`First-load JavaScript by source: ${b.contributors}\n`);
   const cli = details.cliStartup as { cliStderr?: string } | undefined;
   if (cli?.cliStderr)
