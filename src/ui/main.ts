@@ -7,7 +7,7 @@ import { routeFromHash, ViewLoader } from "./router.ts";
 import { webSerial } from "./serial-ports.ts";
 import { Session } from "./session.ts";
 import { showRoute, viewArrived } from "./shell/actions.ts";
-import { appView } from "./shell/app-view.ts";
+import { appView, pageTitle } from "./shell/app-view.ts";
 import { escapeTakenElsewhere } from "./shell/escape.ts";
 import { DEFAULT_VIEW, VIEWS } from "./shell/registry.ts";
 import type { AppView, ViewContext } from "./shell/view-types.ts";
@@ -50,6 +50,8 @@ function startApp(root: HTMLElement): void {
     const state = store.get();
     const ctx: ViewContext = { ...app, state };
     render(appView(ctx, loader), root);
+    const title = pageTitle(ctx);
+    if (document.title !== title) document.title = title;
     // When connecting or a lost link replaces the focused control, keep keyboard users in the main area.
     if (state.connection.phase !== renderedPhase) {
       renderedPhase = state.connection.phase;

@@ -178,4 +178,19 @@ describe("connecting a robot", () => {
     await page.getByTestId("device-card").waitFor();
     await context.close();
   });
+
+  it("names the view and the robot in the page title, and says which version the panel is", async () => {
+    const { page, context } = await app.newPage();
+    await page.goto(app.url, { waitUntil: "domcontentloaded" });
+    await page.getByRole("button", { name: "Try the demo robot" }).click();
+    await page.getByTestId("device-card").waitFor();
+    await expect.poll(() => page.title()).toBe("Robot · Demo robot · RBC Panel");
+    await page.getByRole("link", { name: "Zeros" }).click();
+    await expect.poll(() => page.title()).toBe("Zeros · Demo robot · RBC Panel");
+    // The build stamps its version and commit (vite.config.ts), shown at the foot of every view.
+    expect(await page.getByTestId("panel-version").textContent().then(squash)).toMatch(
+      /^RBC Panel · Version \d+\.\d+\.\d+ \([0-9a-f]{7,}\)/,
+    );
+    await context.close();
+  });
 });

@@ -4,6 +4,8 @@ import { connectCard } from "../features/connection/connect-card.ts";
 import { topBar } from "../features/connection/top-bar.ts";
 import { unsupportedCard } from "../features/connection/unsupported-card.ts";
 import type { ViewLoader } from "../router.ts";
+import { versionFooter } from "../version.ts";
+import { VIEWS } from "./registry.ts";
 import { sideNav } from "./side-nav.ts";
 import type { ViewContext } from "./view-types.ts";
 
@@ -66,5 +68,14 @@ export function appView(ctx: ViewContext, loader: ViewLoader): TemplateResult {
       ${sideNav(ctx)}
       <main id="main" tabindex="-1">${mainContent(ctx, loader)}</main>
     </div>
+    <footer class="page-footer">${versionFooter()}</footer>
   `;
+}
+
+/** The page title: the view first (what a tab strip or a screen reader shows), then the robot, then the panel. */
+export function pageTitle(ctx: Pick<ViewContext, "state">): string {
+  const view = VIEWS.find((v) => v.id === ctx.state.route)?.label;
+  const { phase, robot: label } = ctx.state.connection;
+  const robot = phase === "connected" && label?.kind === "demo" ? "Demo robot" : undefined;
+  return [view, robot, "RBC Panel"].filter((part) => part).join(" · ");
 }
