@@ -190,6 +190,7 @@ export class Session {
         firmware: identity.firmware,
         platform: client.state.platform ?? identity.platform,
         serialNumber,
+        identityWarnings: identity.warnings,
         mode: client.mode,
         ...mirrored(client.state),
       });

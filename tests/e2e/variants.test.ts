@@ -64,6 +64,17 @@ describe("firmware variants", () => {
     await context.close();
   });
 
+  it("a platform outside 1-4 is shown as reported, with a warning on the device card", async () => {
+    const { page, context } = await app.newPage({ options: { variant: { platform: 9 } } });
+    await connectRobot(page, app.url);
+    const warning = page.getByTestId("identity-warnings");
+    await warning.waitFor();
+    expect(await warning.textContent().then(squash)).toBe(
+      "The robot reports platform 9; known platforms are 1-4 (HUNO, DINO, DOGY, PF2).",
+    );
+    await context.close();
+  });
+
   it("a robot that repeats a reply endlessly: the panel still connects and reads", async () => {
     // The homebrew port's bug with the reply the panel reads first (0x12, the version), about every 1 ms: every
     // later request meets a flood of unasked replies.

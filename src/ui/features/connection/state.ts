@@ -31,6 +31,8 @@ export interface ConnectionState {
   firmware?: { major: number; minor: number };
   serialNumber?: string;
   platform?: number;
+  /** What the robot reported that is implausible (a platform outside 1-4), shown on the device card. */
+  identityWarnings?: string[];
   /** Why the link was lost (cable pulled, …), shown on the disconnected card. */
   lostReason?: string;
   /** Operations that were running when the link was lost and so did not finish. */

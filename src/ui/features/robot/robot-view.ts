@@ -72,6 +72,13 @@ function render(ctx: ViewContext): TemplateResult {
           <dd data-testid="error-code">${errorCodeLine(d.errorCode)}</dd>
         </div>
       </dl>
+      ${
+        c.identityWarnings?.length
+          ? html`<div class="notice notice--warning" data-testid="identity-warnings">
+              ${c.identityWarnings.map((w) => html`<p>${w}</p>`)}
+            </div>`
+          : nothing
+      }
       <h2>Memory on the robot</h2>
       <div class="memory">
         ${memoryUsedRow("memory-motion", "Motion area", d.freeMotion, MOTION_AREA_BYTES)}
