@@ -54,6 +54,8 @@ export class MockSerialPort<S extends SimEndpoint = SimulatedRbc> extends EventT
 
   private readonly clock: Clock;
   private readonly timers: SimTimers;
+  /** Bytes on their way to the robot: they still arrive after close() (the OS flushes them). */
+  private readonly wireToRobot: SimTimers;
   private readonly pacing: boolean;
   private readonly latencyMs: number;
   private readonly info: SerialPortInfo;
@@ -78,6 +80,7 @@ export class MockSerialPort<S extends SimEndpoint = SimulatedRbc> extends EventT
     super();
     this.clock = options.clock ?? realClock;
     this.timers = new SimTimers(this.clock);
+    this.wireToRobot = new SimTimers(this.clock);
     this.pacing = options.baudPacing ?? false;
     this.latencyMs = options.latencyMs ?? 0;
     this.info = { ...(options.info ?? { usbVendorId: 0x0403, usbProductId: 0x6001 }) };
@@ -200,6 +203,7 @@ export class MockSerialPort<S extends SimEndpoint = SimulatedRbc> extends EventT
   dispose(): void {
     this.detach();
     this.timers.cancelAll();
+    this.wireToRobot.cancelAll();
   }
 
   override dispatchEvent(event: Event): boolean {
@@ -240,9 +244,9 @@ export class MockSerialPort<S extends SimEndpoint = SimulatedRbc> extends EventT
     const now = this.clock.now();
     this.txBusyUntil = Math.max(now, this.txBusyUntil) + bytes.length * BYTE_TIME_MS;
     // Bytes on the wire still arrive after close() (the OS flushes them), but not after a cable pull.
-    this.clock.setTimeout(() => {
+    this.wireToRobot.after(this.txBusyUntil - now, () => {
       if (this.plugged) this.sim.receive(bytes);
-    }, this.txBusyUntil - now);
+    });
   }
 
   // ---- RBC → PC ----

@@ -1,5 +1,6 @@
 /** Motion files for the browser tests: the project's examples, and variants made with its own codec. */
 import { readFileSync } from "node:fs";
+import type { Page } from "playwright-core";
 import { motionImage } from "../../src/protocol/motion-image.ts";
 import { parseRbm, serializeRbm } from "../../src/protocol/rbm.ts";
 
@@ -44,4 +45,38 @@ export function longMotion(text: string, copies: number): string {
     .map((s, index) => ({ ...s, index, servos: s.servos.map((r) => ({ ...r })) }));
   motion.sceneCount = motion.scenes.length;
   return serializeRbm(motion);
+}
+
+/** The same motion under another name (Motionbuilder's field 4), e.g. one too long for a button. */
+export function withName(text: string, name: string): string {
+  const motion = parseRbm(text);
+  motion.name = name;
+  return serializeRbm(motion);
+}
+
+/** Scene-jump warnings: every servo of scene 1 starts `steps` away from where scene 0 left it. */
+export function withJumps(text: string, steps: number): string {
+  const motion = parseRbm(text);
+  const before = motion.scenes[0]!;
+  const scene = motion.scenes[1]!;
+  scene.servos = scene.servos.map((r, i) => ({
+    ...r,
+    start: Math.min(254, Math.max(0, before.servos[i]!.end + steps)),
+  }));
+  return serializeRbm(motion);
+}
+
+/** A serious warning: servo 0 (safe range up to 174, PROTOCOL.md §5) ends scene 0 at 254. */
+export function withUnsafePosition(text: string): string {
+  const motion = parseRbm(text);
+  motion.scenes[0]!.servos[0]!.end = 254;
+  return serializeRbm(motion);
+}
+
+const TAB_IDS = { Files: "files", Memory: "uploads", Run: "run", Sounds: "sounds" } as const;
+
+/** Chooses a tab of the Motions view and waits until its panel is shown. */
+export async function showTab(page: Page, tab: keyof typeof TAB_IDS): Promise<void> {
+  await page.getByRole("tab", { name: tab, exact: true }).click();
+  await page.locator(`#motions-panel-${TAB_IDS[tab]}`).waitFor();
 }

@@ -1,5 +1,7 @@
+import type { Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { type AppHarness, FAST, openMotions, robotNow, squash, startHarness } from "./harness.ts";
+import { showTab } from "./motion-fixtures.ts";
 import "./rbc-test-globals.ts";
 
 // The Motions view's run and sound tests, in a file of their own so that two browser files can share the
@@ -15,10 +17,25 @@ afterAll(async () => {
   await app?.close();
 });
 
+/** The Motions view's Run or Sounds tab, with the fake robot connected. */
+async function openTab(page: Page, tab: "Run" | "Sounds"): Promise<void> {
+  await openMotions(page, app.url);
+  await showTab(page, tab);
+}
+
+/** The element's box lies wholly inside the viewport (seen without scrolling). */
+async function inViewport(page: Page, testId: string, within?: string): Promise<boolean> {
+  const scope = within ? page.getByTestId(within) : page;
+  const box = await scope.getByTestId(testId).first().boundingBox();
+  const size = page.viewportSize();
+  if (!box || !size) return false;
+  return box.y >= 0 && box.x >= 0 && box.y + box.height <= size.height && box.x + box.width <= size.width;
+}
+
 describe("motions view: running motions and sounds", () => {
-  it("guides to basic posture first, asks once before moving, stops a motion with 7, and Stop makes every servo limp", async () => {
+  it("guides to basic posture first, asks once before moving, and both Stop motion and Stop end a motion with 7, the robot standing", async () => {
     const { page, context } = await app.newPage({ options: FAST });
-    await openMotions(page, app.url);
+    await openTab(page, "Run");
     const guidance = page.getByTestId("posture-guidance");
     expect(await guidance.textContent().then(squash)).toContain(
       "After switching on, the robot only accepts Basic posture (7). Run it first.",
@@ -63,20 +80,26 @@ describe("motions view: running motions and sounds", () => {
     expect((await robotNow(page)) - motion2Started).toBeLessThan(6600);
     expect(await page.locator('[data-motion="1"]').isEnabled()).toBe(true);
 
-    // The global Stop during a motion: every servo limp.
+    // The top bar's Stop during a motion ends it with 7 as well: no servo goes limp. The running panel says so.
     await page.locator('[data-motion="1"]').click();
-    await page.getByTestId("running-motion").waitFor();
-    await page.getByRole("button", { name: /Stop — limp/ }).click();
-    await page.getByText(/Stopped: all 16 servos are limp/).waitFor({ timeout: 8000 });
+    const running = page.getByTestId("running-motion");
+    await running.waitFor();
+    expect(await running.textContent().then(squash)).toContain(
+      "Stop (Esc) ends the motion and keeps the robot standing",
+    );
+    expect(await running.textContent().then(squash)).not.toContain("Stop — limp");
+    await page.getByRole("button", { name: "Stop", exact: true }).click();
+    await running.waitFor({ state: "detached", timeout: 8000 });
+    expect(await page.evaluate(() => window.__rbcTest?.sim.playingMotion)).toBeUndefined();
     const passive = await page.evaluate(() => window.__rbcTest?.sim.servos.map((s) => s.passive));
-    expect(passive).toEqual(Array(16).fill(true));
-    await page.getByText(/Motion 1 \(Get up A \(from front\)\) was interrupted by Stop — limp/).waitFor();
+    expect(passive).toEqual(Array(16).fill(false));
     await context.close();
   });
 
-  it("says at once that an empty download slot holds no motion (the robot reports error 3)", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
-    await openMotions(page, app.url);
+  it("says at once, beside the slot button pressed, that an empty download slot holds no motion (error 3)", async () => {
+    // A phone: the slot buttons are far below the top of the Run card there.
+    const { page, context } = await app.newPage({ options: FAST, viewport: { width: 390, height: 844 } });
+    await openTab(page, "Run");
     await page.locator('[data-motion="7"]').click();
     await page.locator("#confirm-move").click();
     await page.getByText("Motion 7 (Basic posture) finished. The robot now accepts every motion.").waitFor({
@@ -84,20 +107,30 @@ describe("motions view: running motions and sounds", () => {
     });
     await page.getByText(/Other download slots/).click();
     const started = await robotNow(page);
-    await page.locator('[data-slot-motion="12"]').click();
-    await page
-      .getByText(/download slot 1 holds no motion \(the robot reports error 3\)/)
+    await page.locator('[data-slot-motion="42"]').click();
+    const slots = page.getByTestId("run-place-slots");
+    await slots
+      .getByText(/download slot 20 holds no motion \(the robot reports error 3\)/)
       .first()
       .waitFor({ timeout: 5000 });
+    // Shown under the slot buttons, in view, and not at the top of the card.
+    expect(await page.getByTestId("run-place-built-in").textContent().then(squash)).toBe("");
+    expect(
+      await page.evaluate(() => {
+        const n = document.querySelector('[data-testid="run-place-slots"] .notice');
+        const r = n?.getBoundingClientRect();
+        return r ? r.top >= 0 && r.bottom <= window.innerHeight : false;
+      }),
+    ).toBe(true);
     // Noticed within about a second of the robot's time, not after the 60 s an unknown motion may take.
     expect((await robotNow(page)) - started).toBeLessThan(5000);
     expect(await page.evaluate(() => window.__rbcTest?.sim.playingMotion)).toBeUndefined();
     await context.close();
   });
 
-  it("plays a sound and keeps other robot actions disabled while it plays", async () => {
+  it("plays a sound, shows its own length while it plays, and keeps other robot actions disabled", async () => {
     const { page, context } = await app.newPage({ options: FAST });
-    await openMotions(page, app.url);
+    await openTab(page, "Sounds");
     // Sound 7 (5.7 s of the robot's time) leaves time to look at the panel while it plays.
     await page.locator('[data-sound="7"]').click();
     const playing = page.getByTestId("sound-playing");
@@ -105,10 +138,17 @@ describe("motions view: running motions and sounds", () => {
     expect(await playing.textContent().then(squash)).toContain(
       "The robot does nothing else until the sound ends",
     );
-    expect(await page.locator('[data-motion="7"]').isDisabled()).toBe(true);
+    // The same length as on its button (5.7 s), not the robot's reply time (5.9 s with its 200 ms delay).
+    expect(await page.locator('[data-sound="7"]').textContent().then(squash)).toBe("7 5.7 s");
+    expect(await page.getByTestId("sound-time").textContent().then(squash)).toMatch(/ of 5\.7 s$/);
+    expect(await inViewport(page, "sound-playing")).toBe(true);
     expect(await page.locator('[data-sound="2"]').isDisabled()).toBe(true);
+    await showTab(page, "Run");
+    expect(await page.locator('[data-motion="7"]').isDisabled()).toBe(true);
     expect(await page.evaluate(() => window.__rbcTest?.sim.state.playingSound)).toBe(7);
+    await showTab(page, "Sounds");
     await page.getByText("Sound 7 played (5.7 s).").waitFor({ timeout: 6000 });
+    await showTab(page, "Run");
     expect(await page.locator('[data-motion="7"]').isEnabled()).toBe(true);
     await context.close();
   });

@@ -19,6 +19,7 @@ import {
   imageHex,
   longMotion,
   rbmFile,
+  showTab,
   withSerial,
   withShortFrames,
 } from "./motion-fixtures.ts";
@@ -99,7 +100,8 @@ describe("motions view", () => {
 
     await recordFigures(page);
     await page.getByRole("button", { name: "Upload (experimental)" }).click();
-    const result = page.getByText(/^Uploaded wave\.rbm/);
+    // The result shows in the file's card, where the upload was started.
+    const result = card.getByText(/^Uploaded wave\.rbm/);
     await result.waitFor({ timeout: 15_000 });
     const text = await result.textContent().then(squash);
     expect(text).toMatch(/624 bytes in 10 chunks/);
@@ -113,20 +115,26 @@ describe("motions view", () => {
     expect(figures.some((f) => /bytes\/s/.test(f) && /left/.test(f))).toBe(true);
 
     expect(await simMotionsHex(page)).toEqual([imageHex(wave)]);
-    // Memory figures refreshed, here and on the device card.
+    // Memory figures refreshed: used and free on the Files tab, the counts on the Memory tab, and the device card.
+    expect(await page.getByTestId("mem-motion-used").textContent().then(squash)).toBe("640 bytes used");
     expect(await page.getByTestId("mem-motion-text").textContent().then(squash)).toBe(
       "23,936 of 24,576 bytes free",
+    );
+    await showTab(page, "Memory");
+    expect(await page.getByTestId("mem-motion-used").textContent().then(squash)).toBe(
+      "640 of 24,576 bytes used",
     );
     expect(await page.getByTestId("mem-motion-count").textContent().then(squash)).toMatch(/^1 of 20 motions/);
     expect(await page.getByTestId("uploaded-list").textContent().then(squash)).toContain(
       "slot 1 → motion number 12",
     );
     // Run offers it by name and length.
+    await showTab(page, "Run");
     const download = page.locator('[data-testid="downloaded-motions"] [data-motion="12"]');
     expect(await download.textContent().then(squash)).toBe("12 RbcPanel_Wave 3.2 s");
     await page.getByRole("link", { name: "Robot" }).click();
     expect(await page.getByTestId("memory-motion-text").textContent().then(squash)).toMatch(
-      /23,936 of 24,576/,
+      /640 of 24,576 bytes used|23,936 of 24,576 bytes free/,
     );
 
     expect(seen.errors).toEqual([]);
@@ -301,22 +309,25 @@ describe("motions view", () => {
     await page.getByText(/^Uploaded wave\.rbm/).waitFor();
     await cards.nth(1).getByTestId("upload-motion").click();
     await page.getByText(/^Uploaded bow\.rbm/).waitFor();
+    await showTab(page, "Memory");
     expect(await page.getByTestId("uploaded-list").textContent().then(squash)).toMatch(
       /RbcPanel_Wave wave\.rbm — slot 1 → motion number 12.*RbcPanel_Bow bow\.rbm — slot 2 → motion number 13/,
     );
+    await showTab(page, "Files");
     await page.getByTestId("reset-first").check();
     await cards.nth(1).getByTestId("upload-motion").click();
     const result = page.getByText(/^Uploaded bow\.rbm/);
     await result.filter({ hasText: "Free motion memory: 24,064 of" }).waitFor();
-    const list = await page.getByTestId("uploaded-list").textContent().then(squash);
-    expect(list).toContain("RbcPanel_Bow bow.rbm — slot 1 → motion number 12");
-    expect(list).not.toContain("RbcPanel_Wave");
     expect(await page.getByTestId("mem-motion-text").textContent().then(squash)).toBe(
       "24,064 of 24,576 bytes free",
     );
+    await showTab(page, "Memory");
+    const list = await page.getByTestId("uploaded-list").textContent().then(squash);
+    expect(list).toContain("RbcPanel_Bow bow.rbm — slot 1 → motion number 12");
+    expect(list).not.toContain("RbcPanel_Wave");
 
-    // An action file goes up byte for byte, with the format called unverified.
-    expect(await page.getByTestId("memory-card").textContent().then(squash)).toContain(
+    // An action file goes up byte for byte, with the format called unverified; its result shows beside it.
+    expect(await page.getByTestId("action-card").textContent().then(squash)).toContain(
       "No action file format is known: the file's bytes are sent as they are",
     );
     await page.getByTestId("action-file").setInputFiles({
@@ -325,7 +336,10 @@ describe("motions view", () => {
       buffer: Buffer.from(Array.from({ length: 100 }, (_, i) => i)),
     });
     await page.getByTestId("upload-action").click();
-    await page.getByText(/^Uploaded wave\.act: 100 bytes in 2 chunks/).waitFor();
+    await page
+      .getByTestId("action-card")
+      .getByText(/^Uploaded wave\.act: 100 bytes in 2 chunks/)
+      .waitFor();
     expect(await page.getByTestId("mem-action-text").textContent().then(squash)).toBe(
       "8,064 of 8,192 bytes free",
     );

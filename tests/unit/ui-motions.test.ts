@@ -179,8 +179,15 @@ describe("motion files", () => {
   it("lists scenes with their frame interval", () => {
     const rows = sceneRows(parseRbm(WAVE));
     expect(rows[1]).toMatchObject({ index: 1, frames: 10, timeMs: 400, frameMs: 40, startsAtMs: 800 });
+  });
+
+  it("writes durations in seconds with one decimal, never to the millisecond (issue #11)", () => {
     expect(formatSeconds(3500)).toBe("3.5 s");
-    expect(formatSeconds(365)).toBe("0.37 s");
+    expect(formatSeconds(365)).toBe("0.4 s");
+    expect(formatSeconds(5671)).toBe("5.7 s");
+    expect(formatSeconds(9960)).toBe("10 s");
     expect(formatSeconds(12_400)).toBe("12 s");
+    expect(formatSeconds(40)).toBe("40 ms");
+    expect(formatSeconds(0)).toBe("0 s");
   });
 });

@@ -3,34 +3,84 @@ import { html, nothing, type TemplateResult } from "lit-html";
 import { hrefFor } from "../../router.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
 import { showMemory } from "./memory.ts";
+import { type MotionsTab, motionFilesOf } from "./state.ts";
+import { MOTIONS_TABS, panelId, showMotionsTab, tabAfterKey, tabId } from "./view-actions.ts";
 import { fileSection } from "./views/files-section.ts";
+import { memoryCard } from "./views/memory-card.ts";
 import { runSection, soundSection } from "./views/run-section.ts";
 import { uploadSection } from "./views/upload-section.ts";
 
-/** Motions: open and check .rbm files, upload them, run motions and play sounds (issue #4). */
+/**
+ * Motions: open and check .rbm files, upload them, run motions and play sounds (issue #4). One tab per task,
+ * each about one screen (issue #11: the single page had grown to 2,600 px, and Run and Sounds were hard to
+ * find). Without a robot only the files can be used, so no tabs are shown.
+ */
+
+function tabList(ctx: ViewContext, current: MotionsTab): TemplateResult {
+  return html`
+    <div class="motions-tabs" role="tablist" aria-label="Motions">
+      ${MOTIONS_TABS.map(
+        (t) => html`<button
+          type="button"
+          role="tab"
+          class="motions-tab"
+          id=${tabId(t.id)}
+          aria-selected=${t.id === current ? "true" : "false"}
+          aria-controls=${t.id === current ? panelId(t.id) : nothing}
+          tabindex=${t.id === current ? "0" : "-1"}
+          @click=${() => showMotionsTab(ctx, t.id)}
+          @keydown=${(e: KeyboardEvent) => {
+            const next = tabAfterKey(t.id, e.key);
+            if (next === undefined) return;
+            e.preventDefault();
+            showMotionsTab(ctx, next, true);
+          }}
+        >
+          ${t.label}
+        </button>`,
+      )}
+    </div>
+  `;
+}
+
+function panel(ctx: ViewContext, tab: MotionsTab): TemplateResult {
+  switch (tab) {
+    case "files":
+      return fileSection(ctx);
+    case "uploads":
+      return html`${memoryCard(ctx)} ${uploadSection(ctx)}`;
+    case "run":
+      return runSection(ctx);
+    case "sounds":
+      return soundSection(ctx);
+  }
+}
 
 function render(ctx: ViewContext): TemplateResult {
   const connected = ctx.state.connection.phase === "connected";
+  const tab = connected ? (motionFilesOf(ctx.state).tab ?? "files") : "files";
   return html`
     <div class="view-stack">
       <header class="view-head">
         <h1 id="view-title">Motions</h1>
         <p class="muted">
-          Open Motionbuilder files to check them and see their scenes, upload them to the robot, and run the
-          robot's motions and sounds.
+          Check Motionbuilder files and upload them, run the robot's motions and play its sounds.
         </p>
       </header>
       ${
         connected
-          ? nothing
+          ? html`${tabList(ctx, tab)}
+              <div class="view-stack motions-panel" role="tabpanel" id=${panelId(tab)} aria-labelledby=${tabId(tab)} data-testid="motions-panel">
+                ${panel(ctx, tab)}
+              </div>`
           : html`<div class="notice notice--info">
-              <p>
-                No robot is connected: you can open and check motion files. To upload or run them,
-                <a href=${hrefFor("robot")}>connect a robot or the demo robot</a>.
-              </p>
-            </div>`
+                <p>
+                  No robot is connected: you can open and check motion files. To upload or run them,
+                  <a href=${hrefFor("robot")}>connect a robot or the demo robot</a>.
+                </p>
+              </div>
+              ${fileSection(ctx)}`
       }
-      ${fileSection(ctx)} ${connected ? html`${uploadSection(ctx)} ${runSection(ctx)} ${soundSection(ctx)}` : nothing}
     </div>
   `;
 }

@@ -61,10 +61,14 @@ export function sceneRows(motion: RbmMotion): SceneRow[] {
   });
 }
 
-/** "1.8 s", "0.45 s", "12 s". */
+/**
+ * A duration as people read it: "12 s" from 10 s on, "1.8 s" and "0.4 s" with one decimal, "40 ms" below
+ * a tenth of a second (milliseconds are more precision than a motion or a sound needs).
+ */
 export function formatSeconds(ms: number): string {
+  if (ms === 0) return "0 s";
   const s = ms / 1000;
-  if (s >= 10) return `${Math.round(s)} s`;
-  if (s >= 1) return `${(Math.round(s * 10) / 10).toFixed(1)} s`;
-  return `${Math.round(ms / 10) / 100} s`;
+  if (s >= 9.95) return `${Math.round(s)} s`;
+  if (ms >= 95) return `${(Math.round(s * 10) / 10).toFixed(1)} s`;
+  return `${Math.round(ms)} ms`;
 }

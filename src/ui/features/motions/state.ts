@@ -25,12 +25,20 @@ export interface MotionFileEntry {
   errors: RbmIssue[];
 }
 
+/** The Motions view's tabs, each one task that fits on about one screen. */
+export type MotionsTab = "files" | "uploads" | "run" | "sounds";
+
 export interface MotionFilesState {
   entries: MotionFileEntry[];
   /** The id the next opened file gets. */
   nextId: number;
-  /** The file whose scenes and chart are shown. */
+  /** The file whose scenes and chart are shown (none when the person hid them). */
   selected?: number;
+  /**
+   * The tab shown. Kept here, with the files, because both outlive a connection (the files tab stays where it
+   * was when the robot is reconnected).
+   */
+  tab?: MotionsTab;
   /** What happened to the last files opened (e.g. one could not be read). */
   notice?: Notice;
   /** A drag with files is over the drop zone. */
@@ -80,12 +88,16 @@ export interface MotionsState {
   confirming?: UploadTarget;
   upload?: UploadRun;
   uploadResult?: Notice;
+  /** Where the last upload was started, so its result shows there (the file card or the action files). */
+  resultFor?: UploadTarget;
   motionBook: SlotBook;
   actionBook: SlotBook;
   run?: RunningMotion;
   /** A motion waiting for the once-per-connection "the robot will move" confirmation. */
   confirmMove?: number;
   runNotice?: Notice;
+  /** The motion number whose button was pressed last, so the run's progress and result show beside it. */
+  runFrom?: number;
   soundNotice?: Notice;
 }
 

@@ -73,7 +73,7 @@ export function requestUpload(ctx: AppContext, target: UploadTarget): void {
   if (s.connection.robot?.kind === "demo") {
     void startUpload(ctx, target);
   } else {
-    patchMotions(ctx.store, { confirming: target, uploadResult: undefined });
+    patchMotions(ctx.store, { confirming: target, uploadResult: undefined, resultFor: target });
     focusSoon("confirm-upload");
   }
 }
@@ -125,6 +125,7 @@ export async function startUpload(ctx: AppContext, target: UploadTarget): Promis
   patchMotions(store, {
     confirming: undefined,
     uploadResult: undefined,
+    resultFor: target,
     upload: {
       target,
       fileName,

@@ -73,7 +73,7 @@ export function uploadSucceeded(
         ? `It is downloaded action ${entry.slot}.`
         : ""
       : number !== undefined && entry?.slot !== undefined
-        ? `It is downloaded motion ${entry.slot}: run it as motion number ${number} (Run, below).`
+        ? `It is downloaded motion ${entry.slot}: run it as motion number ${number} (on the Run tab).`
         : "The robot already held downloads the panel did not see arrive, so its motion number is not known; tick “Reset motion memory first” next time to know it.";
   const errorWords =
     result.errorCode === undefined

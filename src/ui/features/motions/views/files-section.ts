@@ -5,23 +5,18 @@ import type { RbmIssue } from "../../../../protocol/rbm-validate.ts";
 import { formatCount } from "../../../format.ts";
 import { liveNotice } from "../../../shell/notice.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
-import {
-  checkedEntry,
-  entryFacts,
-  openMotionFiles,
-  removeMotionFile,
-  selectMotionFile,
-  setDragging,
-} from "../files.ts";
+import { checkedEntry, entryFacts, openMotionFiles, removeMotionFile, setDragging } from "../files.ts";
+import { groupWarnings, type WarningGroup, WEIGHT_WORDS } from "../issue-groups.ts";
 import { formatSeconds, sceneRows } from "../plot-data.ts";
 import type { MotionFileEntry } from "../state.ts";
 import { requestUpload, uploadBlocked } from "../upload-actions.ts";
+import { toggleScenes } from "../view-actions.ts";
 import { examplesPicker } from "./examples-picker.ts";
+import { motionMemoryStrip } from "./memory-card.ts";
 import { MOTION_CHART, shownEntry } from "./motion-chart.ts";
+import { uploadInPlace } from "./upload-in-place.ts";
 
 /** The Motions view's files: open (picker or drop), facts, errors and warnings, scenes and the chart. */
-
-const WARNINGS_SHOWN = 6;
 
 function filesFrom(list: FileList | null | undefined): File[] {
   return list ? Array.from(list) : [];
@@ -98,38 +93,53 @@ function where(issue: RbmIssue): string {
 
 function issueItem(kind: "error" | "warning", issue: RbmIssue): TemplateResult {
   return html`<li class="issue issue--${kind}">
-    <span class="issue-kind">${kind === "error" ? "Error" : "Warning"}</span>
+    ${kind === "error" ? html`<span class="issue-kind">Error</span>` : nothing}
     <span>${where(issue)}${issue.message}</span>
   </li>`;
 }
 
-function issues(errors: readonly RbmIssue[], warnings: readonly RbmIssue[]): TemplateResult {
-  const first = warnings.slice(0, WARNINGS_SHOWN);
-  const rest = warnings.slice(WARNINGS_SHOWN);
+/** One kind of warning: its weight, what it means, how many, and the single warnings on demand. */
+function warningGroup(group: WarningGroup): TemplateResult {
+  const n = group.issues.length;
+  return html`<li class="warning-group warning-group--${group.weight}" data-testid="warning-group" data-code=${group.code}>
+    <p class="warning-head">
+      <span class="weight weight--${group.weight}">${WEIGHT_WORDS[group.weight]}</span>
+      <strong>${group.title}</strong> <span class="num muted">(${n})</span>
+    </p>
+    <p class="small warning-meaning">${group.meaning}</p>
+    <details class="warning-details">
+      <summary>${n === 1 ? "Show where" : `Show all ${n}`}</summary>
+      <ul class="issues">${group.issues.map((i) => issueItem("warning", i))}</ul>
+    </details>
+  </li>`;
+}
+
+function issues(
+  entry: MotionFileEntry,
+  errors: readonly RbmIssue[],
+  warnings: readonly RbmIssue[],
+): TemplateResult {
+  const groups = groupWarnings(warnings, entry.motion);
+  const serious = groups.filter((g) => g.weight === "serious").reduce((n, g) => n + g.issues.length, 0);
   const summary =
     errors.length === 0 && warnings.length === 0
       ? html`<p class="check-ok">Checked: no errors, no warnings.</p>`
-      : html`<p class="muted small">
+      : html`<p class="small" data-testid="check-summary">
           Checked: ${errors.length} ${errors.length === 1 ? "error" : "errors"}, ${warnings.length}
-          ${warnings.length === 1 ? "warning" : "warnings"}.
+          ${warnings.length === 1 ? "warning" : "warnings"}${
+            warnings.length > 0
+              ? ` of ${groups.length} ${groups.length === 1 ? "kind" : "kinds"}${serious > 0 ? `, ${serious} serious` : ", none serious"}`
+              : ""
+          }.
         </p>`;
   return html`
     ${summary}
     ${
-      errors.length + first.length > 0
-        ? html`<ul class="issues" data-testid="rbm-issues">
-            ${errors.map((i) => issueItem("error", i))} ${first.map((i) => issueItem("warning", i))}
-          </ul>`
+      errors.length > 0
+        ? html`<ul class="issues" data-testid="rbm-issues">${errors.map((i) => issueItem("error", i))}</ul>`
         : nothing
     }
-    ${
-      rest.length > 0
-        ? html`<details class="more-issues">
-            <summary>Show ${rest.length} more ${rest.length === 1 ? "warning" : "warnings"}</summary>
-            <ul class="issues">${rest.map((i) => issueItem("warning", i))}</ul>
-          </details>`
-        : nothing
-    }
+    ${groups.length > 0 ? html`<ul class="warning-groups" data-testid="rbm-warnings">${groups.map(warningGroup)}</ul>` : nothing}
   `;
 }
 
@@ -142,14 +152,21 @@ function fileCard(ctx: ViewContext, entry: MotionFileEntry, selected: boolean): 
   return html`
     <article class="motion-file ${selected ? "is-selected" : ""} ${errors.length > 0 ? "has-errors" : ""}" data-testid="motion-file" aria-labelledby=${`file-${entry.id}`}>
       <div class="motion-file-head">
-        <h3 id=${`file-${entry.id}`}>
+        <h3 id=${`file-${entry.id}`} class="long-text">
           ${facts ? html`${facts.name} <span class="muted file-name">${entry.fileName}</span>` : entry.fileName}
         </h3>
         <div class="row-actions">
           ${
             facts
-              ? html`<button type="button" class="btn" aria-pressed=${selected ? "true" : "false"} @click=${() => selectMotionFile(ctx, entry.id)}>
-                  ${selected ? "Scenes and chart shown" : "Show scenes and chart"}
+              ? html`<button
+                  type="button"
+                  class="btn"
+                  data-testid="scenes-toggle"
+                  aria-expanded=${selected ? "true" : "false"}
+                  aria-controls=${selected ? "scene-section" : nothing}
+                  @click=${() => toggleScenes(ctx, entry.id)}
+                >
+                  ${selected ? "Hide scenes and chart" : "Show scenes and chart"}
                 </button>`
               : nothing
           }
@@ -169,7 +186,7 @@ function fileCard(ctx: ViewContext, entry: MotionFileEntry, selected: boolean): 
             </dl>`
           : html`<p class="text-danger">This file cannot be used as a motion.</p>`
       }
-      ${issues(errors, warnings)}
+      ${issues(entry, errors, warnings)}
       <div class="write-row">
         <button
           type="button"
@@ -190,6 +207,7 @@ function fileCard(ctx: ViewContext, entry: MotionFileEntry, selected: boolean): 
           }
         </span>
       </div>
+      ${uploadInPlace(ctx, target)} ${selected ? sceneTable(ctx, entry) : nothing}
     </article>
   `;
 }
@@ -199,8 +217,9 @@ function sceneTable(ctx: ViewContext, entry: MotionFileEntry): TemplateResult | 
   if (!motion) return nothing;
   const rows = sceneRows(motion);
   return html`
-    <section class="scene-section" aria-labelledby="scenes-title" data-testid="scene-section">
-      <h3 id="scenes-title">Scenes of ${motion.name}</h3>
+    <section class="scene-section" id="scene-section" aria-labelledby="scenes-title" data-testid="scene-section">
+      <h4 id="scenes-title" class="long-text">Scenes of ${motion.name}</h4>
+      <div class="scene-body">
       <div class="table-wrap">
         <table class="data-table scene-table">
           <thead>
@@ -208,8 +227,9 @@ function sceneTable(ctx: ViewContext, entry: MotionFileEntry): TemplateResult | 
               <th scope="col">#</th>
               <th scope="col">Name</th>
               <th scope="col" class="num-col">Frames</th>
-              <th scope="col" class="num-col">Time (ms)</th>
-              <th scope="col" class="num-col">Frame interval (ms)</th>
+              <th scope="col" class="num-col col-starts">Starts</th>
+              <th scope="col" class="num-col">Lasts</th>
+              <th scope="col" class="num-col">Frames every</th>
             </tr>
           </thead>
           <tbody>
@@ -218,8 +238,9 @@ function sceneTable(ctx: ViewContext, entry: MotionFileEntry): TemplateResult | 
                 <td class="num">${r.index}</td>
                 <td>${r.name}</td>
                 <td class="num num-col">${r.frames}</td>
-                <td class="num num-col">${formatCount(r.timeMs)}</td>
-                <td class="num num-col">${r.frameMs === undefined ? "—" : Number(r.frameMs.toFixed(1))}</td>
+                <td class="num num-col col-starts">${formatSeconds(r.startsAtMs)}</td>
+                <td class="num num-col">${formatSeconds(r.timeMs)}</td>
+                <td class="num num-col">${r.frameMs === undefined ? "—" : `${Math.round(r.frameMs)} ms`}</td>
               </tr>`,
             )}
           </tbody>
@@ -228,10 +249,10 @@ function sceneTable(ctx: ViewContext, entry: MotionFileEntry): TemplateResult | 
       <figure class="chart">
         <div class="chart-host chart-host--motion" data-testid="motion-chart" ${ref(ctx.session.pageScope.get(MOTION_CHART).slot.ref)}></div>
         <figcaption class="muted small">
-          Each servo's position over the motion (x: ms from the start). Left-side joints are dashed; press a
-          joint in the legend to hide or show its line.
+          Each servo's position over time; left-side joints dashed. Press a joint to hide or show its line.
         </figcaption>
       </figure>
+      </div>
     </section>
   `;
 }
@@ -240,17 +261,18 @@ export function fileSection(ctx: ViewContext): TemplateResult {
   const files = ctx.state.motionFiles;
   const entries = files?.entries ?? [];
   const selected = shownEntry(ctx.state);
+  const connected = ctx.state.connection.phase === "connected";
   if (selected) ctx.session.pageScope.get(MOTION_CHART).slot.refresh();
   return html`
-    <section class="card" aria-labelledby="files-title" data-testid="motion-files">
+    <section class="card motion-files" aria-labelledby="files-title" data-testid="motion-files">
       <h2 id="files-title" class="card-title">Motion files</h2>
       ${dropZone(ctx)} ${examplesPicker(ctx)} ${liveNotice(files?.notice, "Opened files")}
+      ${connected ? motionMemoryStrip(ctx) : nothing}
       ${repeat(
         entries,
         (e) => e.id,
         (e) => fileCard(ctx, e, e.id === selected?.id),
       )}
-      ${selected ? sceneTable(ctx, selected) : nothing}
     </section>
   `;
 }

@@ -20,8 +20,8 @@ function motionChartContent(entry: MotionFileEntry, motion: RbmMotion): ChartCon
     key: `motion-${entry.id}`,
     spec: {
       title: `Servo positions of ${motion.name} over ${formatSeconds(plot.x.at(-1) ?? 0)}, one line per servo`,
-      height: 300,
-      xLabel: "Time (ms)",
+      height: 220,
+      xLabel: "Time (s)",
       yLabel: "Position",
       yRange: [0, 254],
       liveLegend: false,
@@ -32,7 +32,8 @@ function motionChartContent(entry: MotionFileEntry, motion: RbmMotion): ChartCon
         dash: (s.id >= 5 && s.id <= 9) || s.id >= 13 ? [6, 3] : undefined,
       })),
     },
-    x: plot.x,
+    // Seconds on the axis (milliseconds were more precision than anyone reads off a chart).
+    x: plot.x.map((ms) => ms / 1000),
     ys: plot.series.map((s) => s.values),
   };
 }

@@ -1,5 +1,5 @@
 import { html, nothing, type TemplateResult } from "lit-html";
-import { BASIC_POSTURE_MOTION, SOUND_LENGTHS_MS } from "../../../../protocol/catalog.ts";
+import { BASIC_POSTURE_MOTION, SOUND_LENGTHS_MS, soundLengthMs } from "../../../../protocol/catalog.ts";
 import type { AppState } from "../../../app-state.ts";
 import { liveNotice } from "../../../shell/notice.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
@@ -14,13 +14,30 @@ import {
   type OfferedMotion,
   offerFor,
   playSound,
-  requestRun,
   stopMotion,
 } from "../run-actions.ts";
 import { DOWNLOAD_MOTION_NUMBERS } from "../slot-book.ts";
 import { motionsOf, type RunningMotion, robotBusyReason } from "../state.ts";
+import { pressRun } from "../view-actions.ts";
+import { keepInView } from "./keep-in-view.ts";
 
-/** Run built-in and downloaded motions; play sounds. */
+/**
+ * Run built-in and downloaded motions; play sounds. A run's confirmation, progress and result show right under
+ * the group of buttons that holds the one pressed (built-in, downloaded, or the other download slots), never at
+ * the top of a long card.
+ */
+
+/** What Stop in the top bar (and Escape) does, and what Limp does, in the words of the panel's model. */
+export const STOP_SENTENCE = "Stop (Esc) ends the motion and keeps the robot standing.";
+export const LIMP_SENTENCE = "Limp, in the top bar, makes every servo passive: hold the robot first.";
+
+type Group = "built-in" | "downloaded" | "slots";
+
+function groupOf(s: AppState, number: number): Group {
+  if (BUILT_IN_OFFERS.some((o) => o.number === number)) return "built-in";
+  if (downloadedOffers(motionsOf(s).motionBook).some((o) => o.number === number)) return "downloaded";
+  return "slots";
+}
 
 function motionButton(ctx: ViewContext, offer: OfferedMotion, busy: boolean, recommended: boolean) {
   return html`
@@ -30,7 +47,7 @@ function motionButton(ctx: ViewContext, offer: OfferedMotion, busy: boolean, rec
       data-motion=${offer.number}
       ?disabled=${busy}
       aria-describedby=${recommended ? "posture-guidance" : nothing}
-      @click=${() => requestRun(ctx, offer.number)}
+      @click=${() => pressRun(ctx, offer.number)}
     >
       <span class="motion-num num">${offer.number}</span>
       <span class="motion-name">${offer.name}</span>
@@ -47,7 +64,7 @@ function runningPanel(ctx: ViewContext, run: RunningMotion): TemplateResult {
   return html`
     <div class="progress-block running" data-testid="running-motion">
       <p>
-        <strong>${run.stopping ? "Stopping" : "Running"} motion ${run.number} — ${run.name}</strong>
+        <strong class="long-text">${run.stopping ? "Stopping" : "Running"} motion ${run.number} — ${run.name}</strong>
         <span class="num muted">
           ${
             known
@@ -63,35 +80,57 @@ function runningPanel(ctx: ViewContext, run: RunningMotion): TemplateResult {
       }
       ${
         run.number === BASIC_POSTURE_MOTION
-          ? html`<p class="muted small">To make every servo limp at once, press Stop — limp (Esc).</p>`
+          ? html`<p class="muted small">${LIMP_SENTENCE}</p>`
           : html`<div class="actions">
               <button type="button" class="btn" data-testid="stop-motion" ?disabled=${run.stopping} @click=${() => void stopMotion(ctx)}>
                 Stop motion
               </button>
             </div>
             <p class="muted small">
-              Stop motion sends Basic posture (7): the robot finishes the scene it is in and stops there, holding
-              that pose. To make every servo limp at once, press Stop — limp (Esc).
+              Stop motion, like ${STOP_SENTENCE.replace(/\.$/, "")}: it sends Basic posture (7), and the robot
+              finishes the scene it is in and holds that pose with its servos on. ${LIMP_SENTENCE}
             </p>`
       }
     </div>
   `;
 }
 
-function confirmMove(ctx: ViewContext, s: AppState): TemplateResult | typeof nothing {
-  const number = motionsOf(s).confirmMove;
-  if (number === undefined) return nothing;
+function confirmMove(ctx: ViewContext, s: AppState, number: number): TemplateResult {
   const offer = offerFor(s, number);
   return html`
-    <div class="confirm confirm--warning" role="alertdialog" aria-labelledby="move-title" data-testid="move-confirm">
+    <div class="confirm confirm--warning" role="alertdialog" aria-labelledby="move-title" aria-describedby="move-stop" data-testid="move-confirm">
       <p id="move-title"><strong>${MOVEMENT_WARNING}</strong></p>
-      <p>The panel asks this once per connection. Stop — limp (Esc) makes every servo limp at any moment.</p>
+      <p id="move-stop">The panel asks this once per connection. ${STOP_SENTENCE}</p>
       <div class="actions">
-        <button type="button" class="btn btn--primary" id="confirm-move" @click=${() => confirmMovement(ctx)}>
+        <button type="button" class="btn btn--primary long-label" id="confirm-move" @click=${() => confirmMovement(ctx)}>
           Run motion ${number}${offer ? ` (${offer.name})` : ""}
         </button>
         <button type="button" class="btn" @click=${() => cancelMovement(ctx)}>Cancel</button>
       </div>
+    </div>
+  `;
+}
+
+/** The confirmation, progress and result of the run started from `group`; only the live region elsewhere. */
+function runInPlace(ctx: ViewContext, group: Group): TemplateResult {
+  const s = ctx.state;
+  const m = motionsOf(s);
+  const from = m.run?.number ?? m.confirmMove ?? m.runFrom;
+  const here = from !== undefined && groupOf(s, from) === group;
+  const shown = !here
+    ? undefined
+    : m.confirmMove !== undefined
+      ? `confirm-${m.confirmMove}`
+      : m.run
+        ? `run-${m.run.number}-${m.run.startedAt}${m.run.stopping ? "-stopping" : ""}`
+        : m.runNotice
+          ? `notice-${m.runNotice.text}`
+          : undefined;
+  return html`
+    <div class="run-in-place" data-testid=${`run-place-${group}`} ${keepInView(shown)}>
+      ${here && m.confirmMove !== undefined ? confirmMove(ctx, s, m.confirmMove) : nothing}
+      ${here && m.run ? runningPanel(ctx, m.run) : nothing}
+      ${liveNotice(here ? m.runNotice : undefined, "Motion result")}
     </div>
   `;
 }
@@ -111,16 +150,17 @@ function otherSlots(ctx: ViewContext, s: AppState, busy: boolean): TemplateResul
           const offer = offerFor(s, n);
           return html`<button
             type="button"
-            class="btn slot-btn num"
+            class="btn slot-btn"
             data-slot-motion=${n}
-            aria-label=${`Run motion ${n}${offer?.slot === undefined ? "" : ` (download slot ${offer.slot})`}`}
             ?disabled=${busy}
-            @click=${() => requestRun(ctx, n)}
+            @click=${() => pressRun(ctx, n)}
           >
-            ${n} <span class="muted small">${offer?.slot === undefined ? "" : `slot ${offer.slot}`}</span>
+            <span class="slot-num num"><span class="sr-only">Run motion </span>${n}</span>
+            <span class="muted small">${offer?.slot === undefined ? "" : `slot ${offer.slot}`}</span>
           </button>`;
         })}
       </div>
+      ${runInPlace(ctx, "slots")}
     </details>
   `;
 }
@@ -144,8 +184,6 @@ export function runSection(ctx: ViewContext): TemplateResult {
             </div>`
           : nothing
       }
-      ${confirmMove(ctx, s)} ${m.run ? runningPanel(ctx, m.run) : nothing}
-      ${liveNotice(m.runNotice, "Motion result")}
       ${
         busyReason && !m.run && c.phase === "connected"
           ? html`<p class="muted small" data-testid="busy-why">${busyReason}</p>`
@@ -155,6 +193,7 @@ export function runSection(ctx: ViewContext): TemplateResult {
       <div class="motion-grid">
         ${BUILT_IN_OFFERS.map((o) => motionButton(ctx, o, busy, needsPosture && o.number === BASIC_POSTURE_MOTION))}
       </div>
+      ${runInPlace(ctx, "built-in")}
       <h3>Downloaded motions</h3>
       ${
         downloads.length > 0
@@ -163,7 +202,7 @@ export function runSection(ctx: ViewContext): TemplateResult {
             </div>`
           : html`<p class="muted small">Motions you upload in this connection appear here with their names and motion numbers.</p>`
       }
-      ${otherSlots(ctx, s, busy)}
+      ${runInPlace(ctx, "downloaded")} ${otherSlots(ctx, s, busy)}
     </section>
   `;
 }
@@ -174,26 +213,13 @@ export function soundSection(ctx: ViewContext): TemplateResult {
   const m = motionsOf(s);
   const busyReason = robotBusyReason(s);
   const sounding = c.sounding;
-  const elapsed = sounding ? ctx.session.clock.now() - sounding.startedAt : 0;
+  // The sound's own length, as on its button: the client's expectedMs also counts the RBC's 200 ms reply delay.
+  const length = sounding ? (soundLengthMs(sounding.sound) ?? sounding.expectedMs) : 0;
+  const elapsed = sounding ? Math.min(ctx.session.clock.now() - sounding.startedAt, length) : 0;
   return html`
     <section class="card" aria-labelledby="sound-title" data-testid="sound-card">
       <h2 id="sound-title" class="card-title">Sounds</h2>
       <p class="muted small">One sound at a time. While a sound plays the robot handles nothing else.</p>
-      ${
-        sounding
-          ? html`<div class="progress-block" data-testid="sound-playing">
-              <p>
-                <strong>Sound ${sounding.sound} is playing</strong>
-                <span class="num muted">${formatSeconds(Math.min(elapsed, sounding.expectedMs))} of ${formatSeconds(sounding.expectedMs)}</span>
-              </p>
-              <progress max=${sounding.expectedMs} value=${Math.min(elapsed, sounding.expectedMs)} aria-label=${`Sound ${sounding.sound}`}></progress>
-              <p class="small">The robot does nothing else until the sound ends, so the other robot actions are disabled meanwhile.</p>
-            </div>`
-          : busyReason && c.phase === "connected"
-            ? html`<p class="muted small">${busyReason}</p>`
-            : nothing
-      }
-      ${liveNotice(m.soundNotice, "Sound result")}
       <div class="sound-grid">
         ${SOUND_LENGTHS_MS.map(
           (ms, i) => html`<button
@@ -207,6 +233,23 @@ export function soundSection(ctx: ViewContext): TemplateResult {
             <span class="num">${i + 1}</span> <span class="muted small num">${formatSeconds(ms)}</span>
           </button>`,
         )}
+      </div>
+      <div ${keepInView(sounding ? `sound-${sounding.sound}-${sounding.startedAt}` : m.soundNotice?.text)}>
+      ${
+        sounding
+          ? html`<div class="progress-block" data-testid="sound-playing">
+              <p>
+                <strong>Sound ${sounding.sound} is playing</strong>
+                <span class="num muted" data-testid="sound-time">${formatSeconds(elapsed)} of ${formatSeconds(length)}</span>
+              </p>
+              <progress max=${length} value=${elapsed} aria-label=${`Sound ${sounding.sound}`}></progress>
+              <p class="small">The robot does nothing else until the sound ends, so the other robot actions are disabled meanwhile.</p>
+            </div>`
+          : busyReason && c.phase === "connected"
+            ? html`<p class="muted small">${busyReason}</p>`
+            : nothing
+      }
+      ${liveNotice(m.soundNotice, "Sound result")}
       </div>
     </section>
   `;

@@ -1,0 +1,50 @@
+import type { AppContext } from "../../context.ts";
+import { focusSoon } from "../../focus.ts";
+import { requestRun } from "./run-actions.ts";
+import { type MotionsTab, motionFilesOf, patchMotionFiles, patchMotions } from "./state.ts";
+
+/** What the Motions view's own controls do: choose a tab, show or hide a file's scenes, press a Run button. */
+
+export const MOTIONS_TABS: readonly { id: MotionsTab; label: string }[] = [
+  { id: "files", label: "Files" },
+  { id: "uploads", label: "Memory" },
+  { id: "run", label: "Run" },
+  { id: "sounds", label: "Sounds" },
+];
+
+export const tabId = (tab: MotionsTab) => `motions-tab-${tab}`;
+export const panelId = (tab: MotionsTab) => `motions-panel-${tab}`;
+
+export function showMotionsTab(ctx: AppContext, tab: MotionsTab, focus = false): void {
+  if (motionFilesOf(ctx.store.get()).tab !== tab) patchMotionFiles(ctx.store, { tab });
+  if (focus) focusSoon(tabId(tab));
+}
+
+/** The tab list's arrow keys (WAI-ARIA tabs pattern, automatic activation): the next, previous, first or last tab. */
+export function tabAfterKey(current: MotionsTab, key: string): MotionsTab | undefined {
+  const i = MOTIONS_TABS.findIndex((t) => t.id === current);
+  const n = MOTIONS_TABS.length;
+  const to =
+    key === "ArrowRight"
+      ? (i + 1) % n
+      : key === "ArrowLeft"
+        ? (i - 1 + n) % n
+        : key === "Home"
+          ? 0
+          : key === "End"
+            ? n - 1
+            : undefined;
+  return to === undefined ? undefined : MOTIONS_TABS[to]?.id;
+}
+
+/** "Show scenes and chart" / "Hide scenes and chart" on a file card: one file's scenes are shown at a time. */
+export function toggleScenes(ctx: AppContext, id: number): void {
+  const files = motionFilesOf(ctx.store.get());
+  patchMotionFiles(ctx.store, { selected: files.selected === id ? undefined : id });
+}
+
+/** A Run button: remembers which one, so that the confirmation, progress and result show beside it. */
+export function pressRun(ctx: AppContext, number: number): void {
+  patchMotions(ctx.store, { runFrom: number });
+  requestRun(ctx, number);
+}
