@@ -7,6 +7,7 @@ import { createRequire } from "node:module";
 import type { BrowserContext, Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { type AppHarness, buildOnce, startHarness } from "./harness.ts";
+import { exampleText, rbmFile, showTab } from "./motion-fixtures.ts";
 import "./rbc-test-globals.ts";
 
 const require = createRequire(import.meta.url);
@@ -148,5 +149,23 @@ for (const scheme of ["light", "dark"] as const) {
         await expectNoViolations(page, `the ${name} view, ${scheme} mode`);
       });
     }
+
+    it("every Motions tab, with a motion file open and its scenes shown", async () => {
+      await page.getByRole("link", { name: "Motions", exact: true }).click();
+      await page.getByTestId("rbm-files").setInputFiles(rbmFile("wave.rbm", exampleText("wave.rbm")));
+      await page.getByTestId("scene-section").waitFor();
+      await expectNoViolations(page, `the Motions Files tab with wave.rbm open, ${scheme} mode`);
+      for (const tab of ["Memory", "Run", "Sounds"] as const) {
+        await showTab(page, tab);
+        await expectNoViolations(page, `the Motions ${tab} tab, ${scheme} mode`);
+      }
+    });
+
+    it("the Limp question", async () => {
+      await page.getByRole("button", { name: "Limp…" }).click();
+      await page.getByRole("alertdialog").waitFor();
+      await expectNoViolations(page, `the Limp question, ${scheme} mode`);
+      await page.getByRole("alertdialog").getByRole("button", { name: "Cancel" }).click();
+    });
   });
 }
