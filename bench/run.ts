@@ -27,6 +27,7 @@ import { measureCliStartup } from "./cli-startup.ts";
 import { describeFirmwareRun, measureFirmwareUpdate } from "./firmware-update.ts";
 import { measureFirstRender } from "./first-render.ts";
 import { describeLogMemory, measureLogMemory } from "./log-memory.ts";
+import { describeMotionEdit, measureMotionEdit } from "./motion-edit.ts";
 import { makeParserStream, measureParser } from "./parser-throughput.ts";
 import { type MetricKey, type Metrics, TARGETS, table, targetMet } from "./report.ts";
 import { measureRequestOverhead } from "./request-overhead.ts";
@@ -81,6 +82,7 @@ const metrics: Metrics = {
   firmwareWirePercent: null,
   singleFileKB: null,
   singleFileGzipKB: null,
+  motionEditMs: null,
 };
 const skipped: Partial<Record<MetricKey, string>> = {};
 const details: Record<string, unknown> = {};
@@ -232,6 +234,16 @@ async function main(): Promise<void> {
     }
   }
 
+  progress("motion editing (long-walk.rbm, 284 scenes)");
+  try {
+    const motionEdit = measureMotionEdit(quick ? 100 : 500);
+    metrics.motionEditMs = motionEdit.edit.medianMs;
+    details.motionEdit = motionEdit;
+    details.motionEditTable = describeMotionEdit(motionEdit);
+  } catch (e) {
+    skip(["motionEditMs"], errorText(e));
+  }
+
   progress("CLI start-up (node bin/rbc.mjs --help against node -e 0, interleaved)");
   try {
     const cli = measureCliStartup(quick ? 4 : 10);
@@ -349,6 +361,8 @@ if (json) {
   }
   const logTable = details.logMemoryTable as string | undefined;
   if (logTable) process.stdout.write(`\n${logTable}\n`);
+  const motionEditTable = details.motionEditTable as string | undefined;
+  if (motionEditTable) process.stdout.write(`\nMotion editing:\n${motionEditTable}\n`);
   const firmwareLines = details.firmwareUpdateLines as string[] | undefined;
   if (firmwareLines)
     process.stdout.write(`\nFirmware update:\n${firmwareLines.map((l) => `  ${l}`).join("\n")}\n`);

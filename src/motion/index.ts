@@ -1,0 +1,13 @@
+/**
+ * The motion layer (pure: no I/O, no timers, no DOM; imports only from protocol/): the motion document and its
+ * operations, undo history, and the frames of PROTOCOL.md §10 for tethered play and the simulator.
+ * See docs/motion-document.md.
+ */
+export * from "./document.ts";
+export * from "./edits.ts";
+export * from "./errors.ts";
+export * from "./frames.ts";
+export * from "./history.ts";
+export * from "./mirror.ts";
+export * from "./retime.ts";
+export * from "./scenes.ts";
