@@ -6,6 +6,7 @@ import { WebSerialTransport } from "../link/web-serial-transport.ts";
 import { type Clock, realClock } from "../shared/clock.ts";
 import { createDemoRbc } from "../sim/demo-world.ts";
 import { MockSerialPort } from "../sim/mock-serial-port.ts";
+import { BootloaderRbc } from "../sim/sim-bootloader.ts";
 import type { GlobalValues } from "./args.ts";
 import type { RunEnv } from "./command.ts";
 import { demoClock } from "./demo-clock.ts";
@@ -27,6 +28,21 @@ export interface Robot {
   demo: boolean;
   /** "the demo robot" or the port path, for messages. */
   where: string;
+  /**
+   * The demo robot's bootloader (PROTOCOL.md §11), which sits in front of its simulated RBC: `rbc flash --demo`
+   * switches the demo robot off and on with its `powerCycle()`, as a person would switch a real one.
+   */
+  bootloader?: BootloaderRbc;
+  close(): Promise<void>;
+}
+
+/** A port opened without a handshake (`rbc flash --recover`: a robot whose firmware does not answer). */
+export interface OpenedPort {
+  transport: Transport;
+  clock: Clock;
+  demo: boolean;
+  where: string;
+  bootloader?: BootloaderRbc;
   close(): Promise<void>;
 }
 
@@ -78,13 +94,65 @@ export function demoTimeScale(env: NodeJS.ProcessEnv, command?: string): number 
 /**
  * The demo robot: a SimulatedRbc in the demo world the panel's demo robot lives in (firmware 2.23, HUNO, just
  * switched on, standing upright: its accelerometer reads with a little noise), or the firmware variant of
- * RBC_DEMO_VARIANT, behind a MockSerialPort with 2 ms of adapter latency and a WebSerialTransport — the same
- * stack as the panel's "demo robot" — all on `clock`.
+ * RBC_DEMO_VARIANT, with its bootloader in front (so that `rbc flash --demo` works), behind a MockSerialPort
+ * with 2 ms of adapter latency and a WebSerialTransport — the same stack as the panel's "demo robot" — all on
+ * `clock`.
  */
-function demoTransport(clock: Clock, variant: SimVariant): { transport: Transport; dispose: () => void } {
+function demoTransport(
+  clock: Clock,
+  variant: SimVariant,
+): { transport: Transport; dispose: () => void; bootloader: BootloaderRbc } {
   const sim = createDemoRbc({ clock, ...variant });
-  const port = new MockSerialPort(sim, { latencyMs: 2, clock, record: false });
-  return { transport: new WebSerialTransport(port, { clock }), dispose: () => sim.dispose() };
+  const bootloader = new BootloaderRbc(sim);
+  const port = new MockSerialPort(bootloader, { latencyMs: 2, clock, record: false });
+  return {
+    transport: new WebSerialTransport(port, { clock }),
+    dispose: () => bootloader.dispose(),
+    bootloader,
+  };
+}
+
+/**
+ * Opens the named robot's port and nothing more: no handshake, so it works with a robot whose firmware does
+ * not answer (`rbc flash --recover`). The port is closed by `close()` or when rbc exits.
+ */
+export async function openRobotPort(command: string, values: GlobalValues, env: RunEnv): Promise<OpenedPort> {
+  const target = robotTarget(command, values, env.env);
+  let transport: Transport;
+  let dispose = () => {};
+  let clock = realClock;
+  let bootloader: BootloaderRbc | undefined;
+  if (target.demo) {
+    clock = demoClock(demoTimeScale(env.env, command));
+    ({ transport, dispose, bootloader } = demoTransport(clock, demoVariant(env.env, command)));
+  } else {
+    const { NodeSerialTransport } = await import("../link/node-serial-transport.ts");
+    transport = new NodeSerialTransport(target.port);
+  }
+  let closed: Promise<void> | undefined;
+  const close = () => {
+    closed ??= transport.close().finally(dispose);
+    return closed;
+  };
+  env.onCleanup(close);
+  try {
+    await transport.open();
+  } catch (e) {
+    await close().catch(() => {});
+    if (!target.demo && e instanceof LinkError) {
+      const error = RbcPortError.fromLink(e);
+      throw new CliError(error.code, portOpenMessage(target.port, error, error.code));
+    }
+    throw e;
+  }
+  return {
+    transport,
+    clock,
+    demo: target.demo,
+    where: target.demo ? "the demo robot" : target.port,
+    bootloader,
+    close,
+  };
 }
 
 /** The port could not be opened at all (not lost later): the link's "open-failed" or "port-busy". */
@@ -104,9 +172,10 @@ export async function connectRobot(
   let transport: Transport;
   let dispose = () => {};
   let clock = realClock;
+  let bootloader: BootloaderRbc | undefined;
   if (target.demo) {
     clock = demoClock(demoTimeScale(env.env, command));
-    ({ transport, dispose } = demoTransport(clock, demoVariant(env.env, command)));
+    ({ transport, dispose, bootloader } = demoTransport(clock, demoVariant(env.env, command)));
   } else {
     // Loaded here only: the native serialport binding is not needed for --demo (and never in the web app).
     const { NodeSerialTransport } = await import("../link/node-serial-transport.ts");
@@ -145,6 +214,7 @@ export async function connectRobot(
       identity,
       demo: target.demo,
       where: target.demo ? "the demo robot" : target.port,
+      bootloader,
       close,
     };
   } catch (e) {

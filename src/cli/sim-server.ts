@@ -1,17 +1,24 @@
+import { createInterface } from "node:readline";
 import { SerialPort } from "serialport";
 import { rbcSerialPortOptions } from "../link/node-serial-transport.ts";
+import { toHex } from "../protocol/bytes.ts";
+import { BootloaderRbc } from "../sim/sim-bootloader.ts";
 import { SimulatedRbc } from "../sim/simulated-rbc.ts";
 import { CliError } from "./errors.ts";
 import type { Output } from "./output.ts";
 import { portOpenMessage } from "./port-errors.ts";
 import { SimLink, type SimLinkOptions } from "./sim-link.ts";
-import { formatSimTraceLine, SimTrace } from "./sim-trace.ts";
+import { formatSimTraceLine, SimTrace, type SimTraceLine } from "./sim-trace.ts";
 import type { SimVariant } from "./sim-variant.ts";
 
 /**
  * `rbc sim`: the simulated RBC served on a serial device (one end of a PTY pair, or a real serial port wired
- * to a PC running other software). Bytes read from the device go to `SimulatedRbc.receive`; what the
- * simulator transmits is written to the device, through SimLink (pacing, latency, faults).
+ * to a PC running other software). Bytes read from the device go to the simulator's bootloader
+ * (`BootloaderRbc`, PROTOCOL.md §11), which hands them to `SimulatedRbc.receive` while the application runs;
+ * what they transmit is written to the device, through SimLink (pacing, latency, faults).
+ *
+ * The robot is switched off and on (for `rbc flash`) by SIGUSR1, or by a line "p" on stdin when stdin is a
+ * terminal: a person presses p and Enter where they would press the robot's power switch.
  */
 export interface SimServerOptions extends SimLinkOptions {
   path: string;
@@ -23,6 +30,65 @@ export interface SimServerOptions extends SimLinkOptions {
   signal: AbortSignal;
   /** Called once the device is open and the simulator answers. */
   onReady(sim: SimulatedRbc): void;
+  /** A terminal to read "p" lines from (power cycle); none when stdin is not a terminal. */
+  stdin?: NodeJS.ReadStream;
+}
+
+const BOOTLOADER_CHARS: Record<number, string> = {
+  94: "^ bootloader active",
+  63: "? ready",
+  126: "~ line done",
+  45: "- line checksum error",
+  37: "% flash page error",
+  64: "@ file complete",
+  35: "# file complete with errors",
+  19: "XOFF (page write)",
+  17: "XON",
+};
+
+/** The trace while the bootloader has the link: one line per HEX line received and per status sent. */
+class BootloaderTrace {
+  private line: number[] = [];
+  private lines = 0;
+  private readonly t0 = performance.now();
+
+  constructor(private readonly print: (line: SimTraceLine) => void) {}
+
+  reset(): void {
+    this.line = [];
+    this.lines = 0;
+  }
+
+  incoming(bytes: Uint8Array, mode: string): void {
+    if (mode !== "loading") {
+      this.emit("pc-to-rbc", mode === "entry" ? "bootloader entry" : `to the bootloader (${mode})`, bytes);
+      return;
+    }
+    for (const b of bytes) {
+      this.line.push(b);
+      if (b !== 0x0a) continue;
+      this.lines++;
+      this.emit("pc-to-rbc", `firmware line ${this.lines}`, Uint8Array.from(this.line));
+      this.line = [];
+    }
+  }
+
+  reply(bytes: Uint8Array, note: string | undefined): void {
+    const label = [...bytes].map((b) => BOOTLOADER_CHARS[b] ?? "bootloader byte").join(", ");
+    this.emit("rbc-to-pc", label, bytes, note);
+  }
+
+  note(label: string): void {
+    this.print({ ms: this.ms(), direction: "note", label, hex: "" });
+  }
+
+  private emit(direction: SimTraceLine["direction"], label: string, bytes: Uint8Array, note?: string) {
+    this.print({ ms: this.ms(), direction, label, hex: toHex(bytes), ...(note ? { note } : {}) });
+  }
+
+  private ms(): number {
+    return Math.round((performance.now() - this.t0) * 10) / 10;
+  }
 }
 
 /** Opens the device with the same options NodeSerialTransport uses for a robot's port. */
@@ -40,23 +106,44 @@ export async function serveSimulator(options: SimServerOptions): Promise<void> {
   const { out } = options;
   const port = await openPort(options.path);
   const sim = new SimulatedRbc({ ...options.variant });
-  const trace = new SimTrace(sim, (line) => {
+  const boot = new BootloaderRbc(sim);
+  const print = (line: SimTraceLine) => {
     if (options.quiet) return;
     if (out.json) out.jsonLine(line);
     else out.line(formatSimTraceLine(line));
-  });
+  };
+  const trace = new SimTrace(sim, print);
+  const bootTrace = new BootloaderTrace(print);
   const link = new SimLink(
     options,
     (bytes) => {
+      if (boot.mode !== "application") {
+        bootTrace.incoming(bytes, boot.mode);
+        boot.receive(bytes);
+        return;
+      }
       trace.incoming(bytes);
-      sim.receive(bytes);
+      boot.receive(bytes);
       trace.afterReceive();
     },
     (bytes) => port.write(Buffer.from(bytes)),
-    (reply, note) => trace.reply(reply, note),
+    (reply, note) => (boot.mode === "application" ? trace.reply(reply, note) : bootTrace.reply(reply, note)),
   );
-  const detach = sim.onTransmit((bytes) => link.fromRobot(bytes));
+  // What the bootloader sends, and what the application sends while it runs (the bootloader passes it on).
+  const detach = boot.onTransmit((bytes) => link.fromRobot(bytes));
   port.on("data", (chunk: Buffer) => link.fromDevice(Uint8Array.from(chunk)));
+  const powerCycle = () => {
+    bootTrace.reset();
+    // Said even with --quiet: it is what the person (or the test) asked for.
+    if (out.json) out.jsonLine({ event: "power-cycle" });
+    else out.line("Power cycle: the simulated robot was switched off and on; its bootloader starts.");
+    boot.powerCycle();
+  };
+  process.on("SIGUSR1", powerCycle);
+  const lines = options.stdin?.isTTY ? createInterface({ input: options.stdin, terminal: false }) : undefined;
+  lines?.on("line", (text) => {
+    if (/^\s*p(ower)?\s*$/i.test(text)) powerCycle();
+  });
   options.onReady(sim);
 
   try {
@@ -78,9 +165,11 @@ export async function serveSimulator(options: SimServerOptions): Promise<void> {
       );
     });
   } finally {
+    process.off("SIGUSR1", powerCycle);
+    lines?.close();
     detach();
     link.stop();
-    sim.dispose();
+    boot.dispose();
     if (port.isOpen) await new Promise<void>((r) => port.close(() => r()));
   }
 }

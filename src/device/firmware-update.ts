@@ -410,3 +410,42 @@ function runDialogue(
     after([]);
   });
 }
+
+/**
+ * What the panel and `rbc flash` say before a firmware update (PROTOCOL.md §11 [decision]), in these words in
+ * both places.
+ */
+export const FIRMWARE_NOTICES = {
+  experimental:
+    "Updating the firmware is experimental on real robots: the bootloader dialogue follows RBCLoader (the Java loader) and has not been verified on a real RBC by this project.",
+  recovery:
+    "The bootloader itself is never written, so a failed or interrupted update is fixed by running the update again.",
+  keepPowered:
+    "Keep the robot powered (a charged battery or the adapter) and lying down, and the cable plugged in, until the update has finished.",
+  askPowerCycle: "Switch the robot off and on now; the update waits for its bootloader.",
+  demoRestarts: "The demo robot restarts by itself.",
+} as const;
+
+const count = (n: number) => n.toLocaleString("en-US");
+const address = (n: number) => `0x${n.toString(16).toUpperCase().padStart(5, "0")}`;
+
+/** "16,384 bytes at 0x00000-0x03FFF: 64 flash pages, 1,025 lines (46,137 bytes to send)". */
+export function firmwareFileSummary(summary: IntelHexImage["summary"]): string {
+  return `${count(summary.bytes)} bytes at ${address(summary.firstAddress)}-${address(summary.lastAddress)}: ${count(summary.pages)} flash ${summary.pages === 1 ? "page" : "pages"}, ${count(summary.lines)} lines (${count(summary.wireBytes)} bytes to send)`;
+}
+
+/**
+ * The result in a sentence: "Firmware updated: the robot now reports 2.50 (was 2.23). 4,097 lines in 83 s."
+ * `before` is the version the robot reported before the update, when it answered then.
+ */
+export function firmwareResultSentence(
+  result: FirmwareUpdateResult,
+  before: { major: number; minor: number } | undefined,
+): string {
+  const v = (f: { major: number; minor: number }) => `${f.major}.${String(f.minor).padStart(2, "0")}`;
+  const seconds = result.sendingMs / 1000;
+  const time = seconds >= 10 ? `${Math.round(seconds)} s` : `${seconds.toFixed(1)} s`;
+  const was = before ? ` (was ${v(before)})` : "";
+  const resent = result.resends > 0 ? ` ${count(result.resends)} resent after a checksum error.` : "";
+  return `Firmware updated: the robot now reports ${v(result.firmware)}${was}. ${count(result.lines)} lines in ${time}.${resent}`;
+}

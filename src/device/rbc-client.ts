@@ -1,6 +1,7 @@
 import type { Transport } from "../link/transport.ts";
 import { BASIC_POSTURE_MOTION, downloadSlotOf } from "../protocol/catalog.ts";
 import { COMMANDS, type MemoryArea } from "../protocol/commands.ts";
+import { type IntelHexImage, parseIntelHex } from "../protocol/intel-hex.ts";
 import { encodePacket } from "../protocol/packet.ts";
 import type { RbmMotion } from "../protocol/rbm.ts";
 import { EXIT_DIRECT_MODE } from "../protocol/wck.ts";
@@ -18,6 +19,12 @@ import {
   RbcTimeoutError,
   RbcVerifyError,
 } from "./errors.ts";
+import {
+  connectionFirmwareIo,
+  type FirmwareUpdateOptions,
+  type FirmwareUpdateResult,
+  updateFirmware,
+} from "./firmware-update.ts";
 import {
   type FileUploadOptions,
   type FileUploadResult,
@@ -528,6 +535,42 @@ export class RbcClient {
     } finally {
       this.#uploadAborts.delete(abort);
     }
+  }
+
+  /**
+   * Replaces the robot's firmware through its bootloader (PROTOCOL.md §11; see `updateFirmware`): the file is
+   * checked first (an `IntelHexError` naming the line, nothing sent), then, with nothing else on the link,
+   * `onAskPowerCycle` asks the user to switch the robot off and on, the file goes line by line, and the version
+   * the new firmware reports is read. Failures are `FirmwareUpdateError`s saying what the robot holds.
+   *
+   * Whatever the outcome the robot was (or may have been) restarted: the client no longer counts Basic posture
+   * as done, forgets the subscription it kept armed (a restarted RBC runs none) and resets its packet parser.
+   */
+  async updateFirmware(
+    hex: string | IntelHexImage,
+    options: FirmwareUpdateOptions = {},
+  ): Promise<FirmwareUpdateResult> {
+    // Checked before the queue: a bad file rejects at once and changes nothing.
+    const image = typeof hex === "string" ? parseIntelHex(hex) : hex;
+    return this.#c.exclusive(
+      async () => {
+        const io = connectionFirmwareIo(this.#c);
+        try {
+          return await updateFirmware(io, image, options);
+        } finally {
+          this.#c.parser.reset();
+          this.#c.subscription = undefined;
+          this.#c.setState({
+            basicPostureConfirmed: false,
+            subscription: undefined,
+            playing: undefined,
+            sounding: undefined,
+          });
+        }
+      },
+      undefined,
+      { rearm: false },
+    );
   }
 
   /**

@@ -119,6 +119,12 @@ export function demoFirmwareHex(version: { major: number; minor: number }, sizeB
   return encodeIntelHex(image);
 }
 
+/**
+ * The bootloader in front of each SimulatedRbc, so that code holding only the simulator (the panel's session
+ * keeps the demo robot's SimulatedRbc) can switch that robot off and on. Weak: it ends with the simulator.
+ */
+const BOOTLOADERS = new WeakMap<SimulatedRbc, BootloaderRbc>();
+
 interface PageBuffer {
   page: number;
   data: Uint8Array;
@@ -151,6 +157,7 @@ export class BootloaderRbc {
     options: BootloaderRbcOptions = {},
   ) {
     this.clock = rbc.clock;
+    BOOTLOADERS.set(rbc, this);
     this.timers = new SimTimers(this.clock);
     this.faults = { ...options.faults };
     this.o = {
@@ -163,6 +170,11 @@ export class BootloaderRbc {
     rbc.onTransmit((bytes) => {
       if (this.currentMode === "application") this.send(bytes);
     });
+  }
+
+  /** The bootloader in front of `rbc`, if one was made for it. */
+  static of(rbc: SimulatedRbc): BootloaderRbc | undefined {
+    return BOOTLOADERS.get(rbc);
   }
 
   // ---- the simulator's byte surface ----

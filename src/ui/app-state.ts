@@ -1,5 +1,6 @@
 import type { ConnectionState, KnownPort } from "./features/connection/state.ts";
 import { initialConnection } from "./features/connection/state.ts";
+import type { FirmwareState } from "./features/firmware/state.ts";
 import type { LogViewState } from "./features/log/state.ts";
 import { initialLogView } from "./features/log/state.ts";
 import type { MotionFilesState, MotionsState } from "./features/motions/state.ts";
@@ -64,6 +65,8 @@ export interface AppState {
   sensors?: SensorsState;
   /** The Servos view of this connection. */
   servos?: ServosState;
+  /** The Firmware view: the opened file and the last update's outcome (kept across connections). */
+  firmware?: FirmwareState;
   /** Safety notices acknowledged in this connection (asked once per connection). */
   acks?: { movement?: boolean; servos?: boolean };
   /** Bumped a few times a second while a motion, sound or upload runs, so time-based progress redraws. */

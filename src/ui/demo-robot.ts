@@ -1,8 +1,13 @@
 import { type Clock, realClock, scaledClock } from "../shared/clock.ts";
-import { createDemoRbc, MockSerialPort, type SimulatedRbc } from "../sim/index.ts";
+import { BootloaderRbc, createDemoRbc, MockSerialPort, type SimulatedRbc } from "../sim/index.ts";
 
 export interface DemoRobot {
-  port: MockSerialPort;
+  port: MockSerialPort<BootloaderRbc>;
+  /**
+   * The bootloader in front of the simulated RBC (PROTOCOL.md §11), so that a firmware update works on the demo
+   * robot: the Firmware view switches the robot off and on with its `powerCycle()` when it asks the user to.
+   */
+  boot: BootloaderRbc;
   /** The simulated RBC, so that the Sensors view can press its buttons and change what its sensors see. */
   sim: SimulatedRbc;
   /** The time the simulator runs on; the client of this connection must use the same one. */
@@ -19,7 +24,7 @@ export interface DemoRobotOptions {
 }
 
 /**
- * The demo robot: a simulated RBC (firmware 2.23, HUNO) behind a mock serial port with a small adapter
+ * The demo robot: a simulated RBC (firmware 2.23, HUNO) with its bootloader in front, behind a mock serial port with a small adapter
  * latency, in the demo world the CLI's --demo shares: its accelerometer reads with a little seeded noise around an
  * upright robot, so the Sensors view shows something alive. Loaded with a dynamic import, so the simulator is not part of the initial bundle.
  * Every connection to the demo robot gets a new one.
@@ -29,5 +34,6 @@ export function createDemoRobot(options: DemoRobotOptions = {}): DemoRobot {
   const clock = scale === 1 ? realClock : scaledClock(scale);
   // The same world as the CLI's --demo (src/sim/demo-world.ts).
   const sim = createDemoRbc({ clock });
-  return { port: new MockSerialPort(sim, { clock, latencyMs: 2, record: false }), sim, clock };
+  const boot = new BootloaderRbc(sim);
+  return { port: new MockSerialPort(boot, { clock, latencyMs: 2, record: false }), boot, sim, clock };
 }

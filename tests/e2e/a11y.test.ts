@@ -73,7 +73,7 @@ async function violations(page: Page): Promise<string[]> {
     return { violations: result.violations, incomplete: result.incomplete };
   });
   const line = (v: AxeViolation, kind: string) =>
-    `${v.id} (${v.impact ?? "?"}${kind}): ${v.help} — ${v.nodes.map((n) => JSON.stringify(n.target)).join(", ")}`;
+    `${v.id} (${v.impact ?? "?"}${kind}): ${v.help} — ${v.nodes.map((n) => `${JSON.stringify(n.target)} ${(n.failureSummary ?? "").replace(/\s+/g, " ")}`).join(", ")}`;
   return [
     ...(found.violations as AxeViolation[]).map((v) => line(v, "")),
     ...(found.incomplete as AxeViolation[])
@@ -105,6 +105,19 @@ const VIEWS: readonly [string, (page: Page) => Promise<void>][] = [
     async (page) => {
       await heading(page, "Zero positions");
       await page.locator("#zero-15").waitFor();
+      // Idle: the table was read. While it is read, buttons are disabled and faded, and axe measures a button
+      // that is disabled in the middle of its run as if it were active.
+      await page.waitForFunction(() => {
+        const field = document.querySelector<HTMLInputElement>("#zero-15");
+        const read = document.querySelector("button:not([disabled])");
+        return (
+          field !== null &&
+          field.value !== "" &&
+          read !== null &&
+          !document.body.textContent?.includes("Reading…")
+        );
+      });
+      await page.locator("button:not([disabled])", { hasText: "Load factory zeros" }).waitFor();
     },
   ],
   ["Motions", (page) => heading(page, /^Motions/)],
@@ -116,6 +129,19 @@ const VIEWS: readonly [string, (page: Page) => Promise<void>][] = [
     },
   ],
   ["Servos", (page) => heading(page, /^Servos/)],
+  [
+    "Firmware",
+    async (page) => {
+      await heading(page, /^Firmware/);
+      await page.getByRole("button", { name: "Use the demo firmware file (2.50)" }).click();
+      await page
+        .getByText(/16,384 bytes|16 KiB/)
+        .first()
+        .waitFor();
+      await page.locator('[data-testid="flash-start"]:not([disabled])').waitFor();
+      await page.locator('[data-testid="fw-demo-file"]:not([disabled])').waitFor();
+    },
+  ],
   ["Log", (page) => heading(page, "Packet log")],
 ];
 

@@ -43,7 +43,16 @@ describe("the panel's structure", () => {
 
   it("gives every feature its state, actions and views in src/ui/features/<name>/", () => {
     const features = readdirSync(join(UI, "features"));
-    expect(features.sort()).toEqual(["connection", "log", "motions", "robot", "sensors", "servos", "zeros"]);
+    expect(features.sort()).toEqual([
+      "connection",
+      "firmware",
+      "log",
+      "motions",
+      "robot",
+      "sensors",
+      "servos",
+      "zeros",
+    ]);
     for (const feature of features) {
       const names = readdirSync(join(UI, "features", feature));
       expect(names, feature).toContain("state.ts");

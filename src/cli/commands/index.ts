@@ -1,4 +1,5 @@
 import type { CommandDef } from "../command.ts";
+import { flashCommand } from "./flash.ts";
 import { infoCommand } from "./info.ts";
 import { limpCommand } from "./limp.ts";
 import { logCommand } from "./log.ts";
@@ -23,6 +24,7 @@ export const COMMAND_LIST: readonly CommandDef[] = [
   soundCommand,
   sensorsCommand,
   logCommand,
+  flashCommand,
   simCommand,
 ];
 

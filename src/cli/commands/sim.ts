@@ -49,6 +49,14 @@ realistic speed. --fault KIND disturbs the replies (every one, or every --fault-
   silent   no reply at all
   garbage  noise with a partial header arrives before the reply
 
+Firmware updates (rbc flash, PROTOCOL.md §11): the simulated RBC has the bootloader of a real one. When a
+client asks you to switch the robot off and on, send the simulator SIGUSR1 (kill -USR1 PID), or type p and
+Enter in its terminal: it restarts, its bootloader sends ^ and waits 300 ms for the entry bytes, then takes
+the HEX file line by line (4.5 ms per 256-byte page write, between XOFF and XON). A file carrying the marker
+"RBCFW M.mm" makes the robot report version M.mm afterwards; docs/firmware-update.md has the details.
+  rbc sim --pty                                      # prints the client end, e.g. /dev/pts/7
+  rbc flash examples/firmware/demo-2.50.hex --port /dev/pts/7 --yes    # then: kill -USR1 <rbc sim's pid>
+
 Firmware variants (PROTOCOL.md §3.5), to try a client against the builds that differ from the standard one:
 --no-serial and --no-status leave 0x0C and 0x1E unanswered (neither firmware source answers them),
 --firmware 9.99 and --platform 4 report what the homebrew port reports, and --repeat-replies repeats the
@@ -111,6 +119,7 @@ ${DEMO_VARIANT_VAR}="--no-serial --firmware 9.99" rbc info --demo`,
       quiet: values.quiet === true,
       out: env.out,
       signal: env.signal,
+      stdin: env.stdin,
       onReady: (sim) => {
         const about = aboutRobot(
           sim.firmware,
@@ -127,6 +136,7 @@ ${DEMO_VARIANT_VAR}="--no-serial --firmware 9.99" rbc info --demo`,
         ].filter((m) => m !== undefined);
         env.out.jsonLine({
           event: "ready",
+          pid: process.pid,
           path,
           clientPath: clientPath ?? null,
           ...link,
@@ -144,7 +154,9 @@ ${DEMO_VARIANT_VAR}="--no-serial --firmware 9.99" rbc info --demo`,
           `Simulated RBC (${about}) listening on ${path}${model.length ? ` with ${model.join(", ")}` : ""}.`,
         );
         if (clientPath) env.out.line(`Clients connect to ${clientPath}, e.g.: rbc info --port ${clientPath}`);
-        env.out.line("Ctrl-C to stop.");
+        env.out.line(
+          `Power cycle (for rbc flash): kill -USR1 ${process.pid}${env.stdin.isTTY ? ", or p and Enter here" : ""}. Ctrl-C to stop.`,
+        );
       },
     });
     return EXIT.ok;

@@ -11,6 +11,7 @@ export const VIEWS: readonly ViewRegistration[] = [
   { id: "motions", label: "Motions", load: () => import("../features/motions/motions-view.ts") },
   { id: "sensors", label: "Sensors", load: () => import("../features/sensors/sensors-view.ts") },
   { id: "servos", label: "Servos", load: () => import("../features/servos/servos-view.ts") },
+  { id: "firmware", label: "Firmware", load: () => import("../features/firmware/firmware-view.ts") },
   { id: "log", label: "Log", load: () => import("../features/log/log-view.ts") },
 ];
 

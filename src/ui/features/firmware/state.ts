@@ -1,0 +1,65 @@
+import type { FirmwareUpdateProgress } from "../../../device/firmware-update.ts";
+import type { IntelHexImage } from "../../../protocol/intel-hex.ts";
+import type { AppState, Notice } from "../../app-state.ts";
+import type { Store } from "../../store.ts";
+
+/**
+ * The Firmware view's part of the app state, kept across connections: the opened file is a file on this
+ * computer, and an update's outcome still matters after the robot was reconnected. An update in flight ends
+ * with its connection (its controller aborts it), and says so.
+ */
+
+/** A checked firmware file. */
+export interface FirmwareFile {
+  fileName: string;
+  /** Size of the file on disk. */
+  fileBytes: number;
+  image: IntelHexImage;
+  /** The demo firmware (2.50) the panel made, rather than a file of this computer. */
+  demo?: boolean;
+}
+
+export type FirmwareStep =
+  /** "Update firmware…" was pressed: the one confirmation is shown. */
+  | "confirming"
+  /** Waiting for the robot to be switched off and on and its bootloader to answer. */
+  | "power-cycle"
+  /** The bootloader takes the file. */
+  | "sending"
+  /** `@` came: the new firmware starts and its version is read. */
+  | "starting";
+
+export interface FirmwareRun {
+  step: FirmwareStep;
+  fileName: string;
+  /** The version the robot reported before the update. */
+  before?: { major: number; minor: number };
+  progress?: FirmwareUpdateProgress;
+  /** Cancel was pressed; the update is ending. */
+  cancelling?: boolean;
+  /** The update runs on a bare port (Recover), not on the connected robot. */
+  recovery?: boolean;
+}
+
+export interface FirmwareState {
+  file?: FirmwareFile;
+  /** Why the last file was not opened (with the line to blame). */
+  fileProblem?: Notice;
+  /** The demo firmware is being made. */
+  loadingFile?: boolean;
+  run?: FirmwareRun;
+  /** The last update's outcome, in a sentence. */
+  result?: Notice;
+}
+
+export function initialFirmware(): FirmwareState {
+  return {};
+}
+
+export function firmwareOf(state: AppState): FirmwareState {
+  return state.firmware ?? initialFirmware();
+}
+
+export function patchFirmware(store: Store<AppState>, patch: Partial<FirmwareState>): void {
+  store.update((s) => ({ firmware: { ...firmwareOf(s), ...patch } }));
+}

@@ -1,0 +1,114 @@
+import { describe, expect, it } from "vitest";
+import { FirmwareUpdateError, RbcClient } from "../../src/device/index.ts";
+import { WebSerialTransport } from "../../src/link/index.ts";
+import { IntelHexError } from "../../src/protocol/intel-hex.ts";
+import { VirtualClock } from "../../src/shared/clock.ts";
+import { BootloaderRbc, MockSerialPort, SimulatedRbc } from "../../src/sim/index.ts";
+import { firmwareHex } from "../support/hex.ts";
+
+/**
+ * `RbcClient.updateFirmware`: the client's own method on the whole stack (RbcClient → WebSerialTransport →
+ * MockSerialPort → simulated bootloader → SimulatedRbc, firmware 2.23) on a virtual clock, with the robot
+ * switched off and on 1.5 s after the client asks for it.
+ */
+
+async function rig(options: { powerCycle?: boolean } = {}) {
+  const clock = new VirtualClock();
+  const sim = new SimulatedRbc({ clock });
+  const boot = new BootloaderRbc(sim);
+  const port = new MockSerialPort(boot, { clock });
+  const client = new RbcClient(new WebSerialTransport(port, { clock }), { clock });
+  await clock.run(client.connect());
+  let asked = 0;
+  const onAskPowerCycle = () => {
+    asked++;
+    if (options.powerCycle !== false) clock.setTimeout(() => boot.powerCycle(), 1500);
+  };
+  const fail = async (p: Promise<unknown>) => {
+    try {
+      await clock.run(p);
+    } catch (e) {
+      return e;
+    }
+    throw new Error("expected the operation to fail, but it succeeded");
+  };
+  return { clock, sim, boot, port, client, onAskPowerCycle, asked: () => asked, fail };
+}
+
+describe("RbcClient.updateFirmware", () => {
+  it("flashes the file, reports the new version, and no longer counts Basic posture as done", async () => {
+    const r = await rig();
+    await r.clock.run(r.client.runMotion(7));
+    await r.clock.run(r.client.subscribe("buttons"));
+    expect(r.client.state).toMatchObject({ basicPostureConfirmed: true, subscription: "buttons" });
+
+    const result = await r.clock.run(
+      r.client.updateFirmware(firmwareHex("2.50", 2048), { onAskPowerCycle: r.onAskPowerCycle }),
+    );
+    expect(result.firmware).toEqual({ major: 2, minor: 50 });
+    expect(result.lines).toBe(129);
+    expect(r.asked()).toBe(1);
+    expect(r.boot.stats.updates).toBe(1);
+    // The robot was restarted: Basic posture must run again, and no subscription runs on it.
+    expect(r.client.state.basicPostureConfirmed).toBe(false);
+    expect(r.client.state.subscription).toBeUndefined();
+    expect(r.client.mode).toBe("packet");
+    // The same client goes on talking to the new firmware.
+    expect(await r.clock.run(r.client.readFirmwareVersion())).toEqual({ major: 2, minor: 50 });
+    // A motion before Basic posture is ignored by the restarted robot, and the client says why.
+    const ignored = await r.fail(r.client.runMotion(1));
+    expect(ignored).toMatchObject({ code: "motion-ignored" });
+  });
+
+  it("refuses a bad file before queueing anything: nothing sent, nothing forgotten", async () => {
+    const r = await rig();
+    await r.clock.run(r.client.runMotion(7));
+    const sent = r.port.stats.bytesFromPc;
+    const lines = firmwareHex("2.50", 512).split("\r\n");
+    lines[3] = `${lines[3]!.slice(0, -2)}00`; // a wrong checksum on line 4
+    const error = await r.fail(
+      r.client.updateFirmware(lines.join("\r\n"), { onAskPowerCycle: r.onAskPowerCycle }),
+    );
+    expect(error).toBeInstanceOf(IntelHexError);
+    expect(error).toMatchObject({ code: "checksum", line: 4 });
+    expect((error as Error).message).toMatch(/^Line 4: /);
+    expect(r.port.stats.bytesFromPc).toBe(sent);
+    expect(r.asked()).toBe(0);
+    expect(r.client.state.basicPostureConfirmed).toBe(true);
+  });
+
+  it("a robot never switched off and on ends in a typed error saying nothing was written", async () => {
+    const r = await rig({ powerCycle: false });
+    const error = await r.fail(
+      r.client.updateFirmware(firmwareHex("2.50", 512), {
+        onAskPowerCycle: r.onAskPowerCycle,
+        timeouts: { powerCycleMs: 5000 },
+      }),
+    );
+    expect(error).toBeInstanceOf(FirmwareUpdateError);
+    expect(error).toMatchObject({ failure: "no-bootloader", holds: "previous-firmware" });
+    expect((error as Error).message).toContain("Nothing was written");
+    // The connection is still usable and the robot still runs its old firmware.
+    expect(await r.clock.run(r.client.readFirmwareVersion())).toEqual({ major: 2, minor: 23 });
+  });
+
+  it("Cancel mid-file says the firmware may be incomplete; a second run recovers", async () => {
+    const r = await rig();
+    const abort = new AbortController();
+    const error = await r.fail(
+      r.client.updateFirmware(firmwareHex("2.50", 4096), {
+        signal: abort.signal,
+        onAskPowerCycle: r.onAskPowerCycle,
+        onProgress: (p) => {
+          if (p.linesDone >= 100) abort.abort();
+        },
+      }),
+    );
+    expect(error).toMatchObject({ failure: "cancelled", holds: "incomplete-firmware" });
+    expect((error as Error).message).toContain("may now be incomplete");
+    const result = await r.clock.run(
+      r.client.updateFirmware(firmwareHex("2.51", 4096), { onAskPowerCycle: r.onAskPowerCycle }),
+    );
+    expect(result.firmware).toEqual({ major: 2, minor: 51 });
+  });
+});
