@@ -112,23 +112,28 @@ function demoTransport(
   };
 }
 
+/** The transport to the named robot (not opened yet): the demo robot, or a serial port. */
+async function robotTransport(
+  target: ReturnType<typeof robotTarget>,
+  command: string,
+  env: RunEnv,
+): Promise<{ transport: Transport; dispose: () => void; clock: Clock; bootloader?: BootloaderRbc }> {
+  if (target.demo) {
+    const clock = demoClock(demoTimeScale(env.env, command));
+    return { clock, ...demoTransport(clock, demoVariant(env.env, command)) };
+  }
+  // Loaded here only: the native serialport binding is not needed for --demo (and never in the web app).
+  const { NodeSerialTransport } = await import("../link/node-serial-transport.ts");
+  return { transport: new NodeSerialTransport(target.port), dispose: () => {}, clock: realClock };
+}
+
 /**
  * Opens the named robot's port and nothing more: no handshake, so it works with a robot whose firmware does
  * not answer (`rbc flash --recover`). The port is closed by `close()` or when rbc exits.
  */
 export async function openRobotPort(command: string, values: GlobalValues, env: RunEnv): Promise<OpenedPort> {
   const target = robotTarget(command, values, env.env);
-  let transport: Transport;
-  let dispose = () => {};
-  let clock = realClock;
-  let bootloader: BootloaderRbc | undefined;
-  if (target.demo) {
-    clock = demoClock(demoTimeScale(env.env, command));
-    ({ transport, dispose, bootloader } = demoTransport(clock, demoVariant(env.env, command)));
-  } else {
-    const { NodeSerialTransport } = await import("../link/node-serial-transport.ts");
-    transport = new NodeSerialTransport(target.port);
-  }
+  const { transport, dispose, clock, bootloader } = await robotTransport(target, command, env);
   let closed: Promise<void> | undefined;
   const close = () => {
     closed ??= transport.close().finally(dispose);
@@ -169,18 +174,7 @@ export async function connectRobot(
   options: ConnectOptions = {},
 ): Promise<Robot> {
   const target = robotTarget(command, values, env.env);
-  let transport: Transport;
-  let dispose = () => {};
-  let clock = realClock;
-  let bootloader: BootloaderRbc | undefined;
-  if (target.demo) {
-    clock = demoClock(demoTimeScale(env.env, command));
-    ({ transport, dispose, bootloader } = demoTransport(clock, demoVariant(env.env, command)));
-  } else {
-    // Loaded here only: the native serialport binding is not needed for --demo (and never in the web app).
-    const { NodeSerialTransport } = await import("../link/node-serial-transport.ts");
-    transport = new NodeSerialTransport(target.port);
-  }
+  const { transport, dispose, clock, bootloader } = await robotTransport(target, command, env);
   const client = new RbcClient(transport, { clock });
   if (values.log) {
     const t0 = client.clock.now();

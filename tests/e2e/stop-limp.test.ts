@@ -3,7 +3,7 @@ import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { type AppHarness, connectRobot, FAST, openMotions, squash, startHarness } from "./harness.ts";
 import "./rbc-test-globals.ts";
 
-// Stop and Limp are two things (shared/UI.md "Behaviour", issue #11 item 1): Stop ends what the robot is doing
+// Stop and Limp are two things (issue #11 item 1): Stop ends what the robot is doing
 // and keeps it standing (a motion ends with 7); Limp makes every servo passive, only after asking. Escape keeps
 // its meaning in a field, a dialog or a menu, and otherwise means Stop, never Limp.
 
