@@ -1,5 +1,7 @@
 import type { ConnectionState, KnownPort } from "./features/connection/state.ts";
 import { initialConnection } from "./features/connection/state.ts";
+import type { EditorLiveState } from "./features/editor/live-state.ts";
+import type { EditorState } from "./features/editor/state.ts";
 import type { FirmwareState } from "./features/firmware/state.ts";
 import type { LogViewState } from "./features/log/state.ts";
 import { initialLogView } from "./features/log/state.ts";
@@ -67,6 +69,10 @@ export interface AppState {
   servos?: ServosState;
   /** The Firmware view: the opened file and the last update's outcome (kept across connections). */
   firmware?: FirmwareState;
+  /** The motion editor (kept across connections: the motion being made is on this computer). */
+  editor?: EditorState;
+  /** The editor's teach-in and tethered play on this connection. */
+  editorLive?: EditorLiveState;
   /** Safety notices acknowledged in this connection (asked once per connection). */
   acks?: { movement?: boolean; servos?: boolean };
   /** Bumped a few times a second while a motion, sound or upload runs, so time-based progress redraws. */
@@ -106,6 +112,7 @@ export function freshConnectionState(): Partial<AppState> {
     motions: undefined,
     sensors: undefined,
     servos: undefined,
+    editorLive: undefined,
     acks: undefined,
   };
 }
