@@ -45,6 +45,9 @@ export default defineConfig({
           environment: "node",
           testTimeout: 60_000,
           hookTimeout: 120_000,
+          // expect.poll waits for what the page or the demo robot does next. Its default of 1 s is short on a
+          // starved 2-core machine (the Servos test once missed it in CI); a poll that succeeds returns at once.
+          expect: { poll: { timeout: 10_000 } },
           // Two browser files at a time (one per core): each has its own Chromium and page, and the app build
           // they share is made once (tests/e2e/harness.ts is safe when two files start together).
           fileParallelism: true,
