@@ -1,5 +1,6 @@
 import { html, nothing, render, type TemplateResult } from "lit-html";
 import type { RegisterSWOptions } from "vite-plugin-pwa/types";
+import { whatIsBusy } from "./busy.ts";
 
 /**
  * The hosted panel's service worker updates only when the owner says so. A new version is downloaded in the
@@ -32,8 +33,8 @@ export interface UpdatePromptState {
 
 export interface UpdatePromptOptions {
   /**
-   * Says what a reload would interrupt right now (e.g. "An upload to the robot is under way."), or undefined
-   * when reloading is safe. Asked when "Reload" is pressed.
+   * Says what a reload would interrupt right now (e.g. "Still running: Uploading wave.rbm."), or undefined
+   * when reloading is safe. Asked when "Reload" is pressed. By default, what the app registered in `busy.ts`.
    */
   busy?: () => string | undefined;
   /** Where the notice is drawn (default: a live region inserted before #app). */
@@ -105,7 +106,7 @@ export function startUpdatePrompt(
 
   const actions: UpdatePromptActions = {
     reload() {
-      const blockedBy = options.busy?.();
+      const blockedBy = (options.busy ?? whatIsBusy)();
       if (blockedBy) {
         state.blockedBy = blockedBy;
         show();

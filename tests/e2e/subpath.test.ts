@@ -124,6 +124,28 @@ describe("the hosted panel under a sub-path", () => {
         true,
       );
 
+      // While something runs on the robot, Reload says what and leaves the page as it is: sound 7 plays 5.7 s.
+      await page.getByRole("link", { name: "Motions", exact: true }).click();
+      await page.getByRole("tab", { name: "Sounds" }).click();
+      await page.locator('[data-sound="7"]').click();
+      await page.getByTestId("sound-playing").waitFor();
+      await notice.getByRole("button", { name: "Reload" }).click();
+      await notice.getByText("Still running: Playing sound 7. Reload when it has finished.").waitFor();
+      expect(
+        await page.evaluate(() => (window as unknown as { __sameDocument?: boolean }).__sameDocument),
+      ).toBe(true);
+      // The browser's own reload or close asks first ("Leave site?") while it runs, and not after.
+      const leaveAsks = () =>
+        page.evaluate(() => {
+          const e = new Event("beforeunload", { cancelable: true });
+          window.dispatchEvent(e);
+          return e.defaultPrevented;
+        });
+      expect(await leaveAsks()).toBe(true);
+      await page.getByText("Sound 7 played (5.7 s).").waitFor({ timeout: 15_000 });
+      expect(await leaveAsks()).toBe(false);
+      await page.getByRole("link", { name: "Robot", exact: true }).click();
+
       // The owner chooses to reload: the new worker takes over and the page reloads once.
       await Promise.all([page.waitForEvent("load"), notice.getByRole("button", { name: "Reload" }).click()]);
       await page.getByRole("button", { name: "Try the demo robot" }).waitFor();
