@@ -231,7 +231,6 @@ function progressBlock(ctx: ViewContext, run: FirmwareRun): TemplateResult {
 function updateSection(ctx: ViewContext): TemplateResult {
   const s = ctx.state;
   const f = firmwareOf(s);
-  const run = f.run;
   const version = s.connection.firmware;
   return html`
     <section class="card fw-update" aria-labelledby="fw-update-title">
@@ -241,33 +240,35 @@ function updateSection(ctx: ViewContext): TemplateResult {
         <strong class="num" data-testid="fw-version">${version ? formatFirmware(version) : "—"}</strong>.
       </p>
       ${noticeBlock()}
-      ${
-        run?.step === "confirming"
-          ? confirmBlock(ctx, run)
-          : run
-            ? progressBlock(ctx, run)
-            : html`<div class="actions">
-                <button
-                  type="button"
-                  class="btn btn--primary"
-                  data-testid="flash-start"
-                  ?disabled=${!f.file}
-                  @click=${() => askToFlash(ctx)}
-                >
-                  Update firmware…
-                </button>
-                ${f.file ? nothing : html`<span class="muted">Open a firmware file first.</span>`}
-              </div>`
-      }
+      ${runOrStart(ctx, false)}
       <div id="flash-result" tabindex="-1" data-testid="flash-result">${liveNotice(f.result, "Firmware update")}</div>
     </section>
   `;
 }
 
+/** The update's confirmation or progress while one runs; otherwise the button that starts it (or Recover). */
+function runOrStart(ctx: ViewContext, recover: boolean): TemplateResult {
+  const f = firmwareOf(ctx.state);
+  const run = f.run;
+  if (run?.step === "confirming") return confirmBlock(ctx, run);
+  if (run) return progressBlock(ctx, run);
+  return html`<div class="actions">
+    <button
+      type="button"
+      class=${recover ? "btn" : "btn btn--primary"}
+      data-testid=${recover ? "recover-start" : "flash-start"}
+      ?disabled=${!f.file}
+      @click=${() => askToFlash(ctx, recover)}
+    >
+      ${recover ? "Recover…" : "Update firmware…"}
+    </button>
+    ${f.file ? nothing : html`<span class="muted">Open a firmware file first.</span>`}
+  </div>`;
+}
+
 function recoverySection(ctx: ViewContext): TemplateResult {
   const s = ctx.state;
   const f = firmwareOf(s);
-  const run = f.run;
   return html`
     <section class="card fw-update" aria-labelledby="fw-recover-title">
       <h2 id="fw-recover-title" class="card-title">Recover: update a robot that does not answer</h2>
@@ -280,22 +281,7 @@ function recoverySection(ctx: ViewContext): TemplateResult {
       ${
         !s.serialSupported
           ? html`<p class="muted">This browser has no Web Serial: use Chrome or Edge on a computer, or <code>rbc flash --recover</code>.</p>`
-          : run?.step === "confirming"
-            ? confirmBlock(ctx, run)
-            : run
-              ? progressBlock(ctx, run)
-              : html`<div class="actions">
-                  <button
-                    type="button"
-                    class="btn"
-                    data-testid="recover-start"
-                    ?disabled=${!f.file}
-                    @click=${() => askToFlash(ctx, true)}
-                  >
-                    Recover…
-                  </button>
-                  ${f.file ? nothing : html`<span class="muted">Open a firmware file first.</span>`}
-                </div>`
+          : runOrStart(ctx, true)
       }
       <div id="flash-result" tabindex="-1" data-testid="flash-result">${liveNotice(f.result, "Firmware update")}</div>
     </section>
