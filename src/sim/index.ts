@@ -11,6 +11,11 @@
  * - Any header from the PC ends the running subscription, 0x19 included.
  * - A download abandons after 1 s of silence (no error code); downloaded files survive 0x1F and a power
  *   cycle (EEPROM) until a later download into the same slot replaces them.
+ * - A playing motion moves the servos frame by frame (PROTOCOL.md §10; `sim-motion-playback.ts`): downloaded
+ *   motions from their image, built-in motions 1-11 from a few keyframes each (`sim-builtin-motions.ts`). Wire
+ *   commands (wCK moves, synchronised moves) move servos at once. A passive servo can be posed by hand
+ *   (`poseByHand`); `onServos` tells watchers of every change. See docs/architecture.md, "The simulated robot
+ *   moves".
  *
  * MockSerialPort follows Chrome: open() rejects InvalidStateError when open, TypeError on bad options,
  * NetworkError while unplugged; close() rejects TypeError while a stream is locked and InvalidStateError when
@@ -42,11 +47,21 @@ export {
   demoFirmwareHex,
   firmwareMarker,
 } from "./sim-bootloader.ts";
+export { BUILT_IN_KEYFRAMES, builtInPlayback } from "./sim-builtin-motions.ts";
 export type { DownloadProgress } from "./sim-downloader.ts";
 export type { StoredFile } from "./sim-downloads.ts";
+export {
+  buildPlayback,
+  imagePlayback,
+  type PlaybackInput,
+  type SimFrame,
+  type SimPlayback,
+  type SimScene,
+} from "./sim-motion-playback.ts";
 export { DEFAULT_DOWNLOADED_MOTION_MS, STOP_SCENE_MS } from "./sim-player.ts";
 export type { DropReason } from "./sim-receiver.ts";
 export type { AccelerometerNoise, SensorState, SubscriptionType } from "./sim-sensors.ts";
+export type { ServoListener } from "./sim-servo-watch.ts";
 export type { ServoState } from "./sim-servos.ts";
 export type { SimulatedRbcOptions, SimulatedRbcState, SimulatedRbcStats } from "./sim-types.ts";
 export { SimulatedRbc } from "./simulated-rbc.ts";

@@ -3,7 +3,9 @@ import { type WckCommand, WckDecoder } from "../protocol/wck.ts";
 
 /**
  * The servo bus behind the RBC in direct control mode (PROTOCOL.md §5): 16 simulated wCK servos, ids 0-15.
- * Servos move instantly; ids 16-30 do not exist and never answer.
+ * A command moves a servo instantly (a synchronised move too: tethered play's frames are the movement over
+ * time); a playing motion moves them frame by frame (`applyFrame`, from `SimPlayer`); a passive servo can be
+ * posed by hand. Ids 16-30 do not exist and never answer.
  */
 
 export interface ServoState {
@@ -105,6 +107,29 @@ export class ServoBus {
     if (!servo) return;
     servo.position = Math.max(0, Math.min(254, Math.round(position)));
     servo.passive = false;
+  }
+
+  /** A frame of a playing motion (PROTOCOL.md §10): each servo moves with its torque and holds. */
+  applyFrame(ids: readonly number[], positions: readonly number[], torques: readonly number[]): void {
+    ids.forEach((id, i) => {
+      const servo = this.servos[id];
+      const position = positions[i];
+      if (!servo || position === undefined) return;
+      servo.position = Math.max(0, Math.min(254, Math.round(position)));
+      servo.torque = torques[i] ?? servo.torque;
+      servo.passive = false;
+    });
+  }
+
+  /**
+   * A hand turns a passive servo to `position` (rounded, clamped to 0-254). A servo holding torque resists:
+   * nothing changes. Returns whether the servo took the position (false for an unknown id).
+   */
+  poseByHand(id: number, position: number): boolean {
+    const servo = this.servos[id];
+    if (!servo?.passive || !Number.isFinite(position)) return false;
+    servo.position = Math.max(0, Math.min(254, Math.round(position)));
+    return true;
   }
 
   snapshot(): ServoState[] {

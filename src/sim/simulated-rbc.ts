@@ -9,6 +9,7 @@ import type { StoredFile } from "./sim-downloads.ts";
 import { SimPlayer } from "./sim-player.ts";
 import { type DropReason, type ReceiverHandler, SimReceiver } from "./sim-receiver.ts";
 import { BUTTON_TYPE, REMOTE_TYPE, SimSensors, SOUND_TYPE } from "./sim-sensors.ts";
+import { type ServoListener, ServoWatch } from "./sim-servo-watch.ts";
 import { ServoBus, type ServoState } from "./sim-servos.ts";
 import { SimTimers } from "./sim-timers.ts";
 import {
@@ -43,6 +44,7 @@ export class SimulatedRbc {
   private readonly player: SimPlayer;
   private readonly sensors: SimSensors;
   private readonly servoBus = new ServoBus();
+  private readonly servoWatch = new ServoWatch(this.servoBus.servos);
   private readonly downloader: SimDownloader;
   private readonly listeners = new Set<(bytes: Uint8Array) => void>();
   private readonly counters = { bytesReceived: 0, bytesSent: 0, packetsReceived: 0, packetsDropped: 0 };
@@ -69,6 +71,12 @@ export class SimulatedRbc {
       zeros: () => this.zeroTable,
       storedMotion: (slot) => this.downloader.motionArea.fileInSlot(slot),
       setError: (code) => (this.error = code),
+      platform: () => this.platform,
+      servoPositions: () => this.servoPositions(),
+      applyFrame: (ids, frame) => {
+        this.servoBus.applyFrame(ids, frame.positions, frame.torques);
+        this.servoWatch.changed();
+      },
       motionEnded: (n, positions) => this.motionEnded(n, positions),
     });
     // Events come from the firmware's main loop, which a playing motion keeps busy (PROTOCOL.md §3.6).
@@ -129,6 +137,32 @@ export class SimulatedRbc {
   get servos(): ServoState[] {
     return this.servoBus.snapshot();
   }
+
+  /** The 16 servos' positions by id, now. */
+  servoPositions(): number[] {
+    return this.servoBus.servos.map((s) => s.position);
+  }
+
+  /**
+   * Calls `listener` with the 16 positions and passive flags by id after every change of any of them (motion
+   * frames, wCK moves and synchronised moves, passive commands, brakes, hand poses) and after a power cycle;
+   * at most once per command or frame. A listener that throws is ignored. Returns the unsubscribe function.
+   */
+  onServos(listener: ServoListener): () => void {
+    return this.servoWatch.add(listener);
+  }
+
+  /**
+   * A hand poses servo `id` (teach-in on the demo robot): a passive servo (after a wCK passive command or
+   * Limp) takes `position` (rounded, clamped to 0-254), and later reads report it. A servo holding torque
+   * refuses, as do unknown ids: false, and nothing changes.
+   */
+  poseByHand(id: number, position: number): boolean {
+    const posed = this.servoBus.poseByHand(id, position);
+    if (posed) this.servoWatch.changed();
+    return posed;
+  }
+
   get stats(): SimulatedRbcStats {
     return { ...this.counters, drops: { ...this.drops }, garbageBytes: this.receiver.garbageBytes };
   }
@@ -179,6 +213,7 @@ export class SimulatedRbc {
   dispose(): void {
     this.powerCycle();
     this.listeners.clear();
+    this.servoWatch.clear();
   }
 
   /** The firmware now in flash reports this version (after an update through the bootloader, PROTOCOL.md §11). */
@@ -200,6 +235,8 @@ export class SimulatedRbc {
     this.direct = false;
     this.postureDone = false;
     this.error = NO_ERROR;
+    // A motion's frames stop where they were: the servos hold that pose.
+    this.servoWatch.changed(true);
   }
 
   // ---- receive handling ----
@@ -343,13 +380,15 @@ export class SimulatedRbc {
     this.direct = true;
     this.servoBus.resetDecoder();
     this.receiver.rawMode((b) => {
-      for (const result of this.servoBus.push(b)) {
+      const results = this.servoBus.push(b);
+      for (const result of results) {
         if (result.reply) this.send(result.reply);
         if (result.exitDirectMode) {
           this.direct = false;
           this.receiver.packetMode();
         }
       }
+      if (results.length > 0) this.servoWatch.changed();
     });
   }
 
@@ -366,6 +405,7 @@ export class SimulatedRbc {
       this.postureDone = true;
     }
     if (positions) for (const [id, p] of positions) this.servoBus.setPosition(id, p);
+    this.servoWatch.changed();
     this.reply(C.runMotion.type, Uint8Array.of(n));
     this.runDeferred();
   }
