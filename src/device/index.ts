@@ -26,6 +26,14 @@ export {
   type RbcTimeouts,
   type StopActivityResult,
 } from "./rbc-client.ts";
+export {
+  frameLabel,
+  TetheredPlayError,
+  type TetheredPlayHolds,
+  type TetheredPlayOptions,
+  type TetheredPlayProgress,
+  type TetheredPlayResult,
+} from "./tethered-play.ts";
 export * from "./types.ts";
 export { downloadChunk } from "./upload.ts";
 export {

@@ -1,4 +1,5 @@
 import type { Transport } from "../link/transport.ts";
+import type { Motion } from "../motion/index.ts";
 import { BASIC_POSTURE_MOTION, downloadSlotOf } from "../protocol/catalog.ts";
 import { COMMANDS, type MemoryArea } from "../protocol/commands.ts";
 import { type IntelHexImage, parseIntelHex } from "../protocol/intel-hex.ts";
@@ -33,6 +34,14 @@ import {
   uploadFileTo,
 } from "./motion-upload.ts";
 import { type RbcClientOptions, RbcConnection, type RbcTimeouts, SUBSCRIPTIONS } from "./rbc-connection.ts";
+import {
+  checkTetheredPlay,
+  runTetheredPlay,
+  stoppedBeforeStart,
+  TetheredPlayControl,
+  type TetheredPlayOptions,
+  type TetheredPlayResult,
+} from "./tethered-play.ts";
 import type {
   ClientMode,
   ClientState,
@@ -83,6 +92,11 @@ export interface StopActivityResult {
    * servos hold their last position (a servo holds with torque on after a move; Limp is what makes them passive).
    */
   servoMovesDropped: boolean;
+  /**
+   * Tethered play was under way and was stopped: how many of its frames were sent and the last one (undefined
+   * when none was), which the servos hold with torque on. Sync moves have no reply: "sent", not "confirmed".
+   */
+  tetheredPlay?: { framesSent: number; totalFrames: number; lastFrame?: { scene: number; frame: number } };
 }
 
 function postureDurationMs(): number {
@@ -644,35 +658,82 @@ export class RbcClient {
 
   /** Switches the link to the servo bus (0x10). Until `exitDirectMode()`, RBC commands are refused. */
   enterDirectMode(): Promise<void> {
-    return this.#c.exclusive(async () => {
-      if (this.#c.mode === "direct") return;
-      try {
-        await this.#c.request(COMMANDS.enterDirectMode, undefined);
-      } catch (e) {
-        // The RBC may have switched even though its `01` was lost or garbled; it would then relay every later
-        // packet to the servo bus. The exit sequence is harmless garbage in packet mode, so send it blindly.
-        if (e instanceof RbcTimeoutError || e instanceof RbcBadReplyError) {
-          await this.#c
-            .writeRaw(EXIT_DIRECT_MODE, "leave direct mode (blind, after no reply)")
-            .catch(() => {});
-          this.#c.parser.reset();
-        }
-        throw e;
+    return this.#c.exclusive(() => this.#enterDirect());
+  }
+
+  /** The body of `enterDirectMode()`, for operations that need it within their own turn. */
+  async #enterDirect(): Promise<void> {
+    if (this.#c.mode === "direct") return;
+    try {
+      await this.#c.request(COMMANDS.enterDirectMode, undefined);
+    } catch (e) {
+      // The RBC may have switched even though its `01` was lost or garbled; it would then relay every later
+      // packet to the servo bus. The exit sequence is harmless garbage in packet mode, so send it blindly.
+      if (e instanceof RbcTimeoutError || e instanceof RbcBadReplyError) {
+        await this.#c.writeRaw(EXIT_DIRECT_MODE, "leave direct mode (blind, after no reply)").catch(() => {});
+        this.#c.parser.reset();
       }
-      this.#c.subscription = undefined;
-      this.#c.setState({ mode: "direct", subscription: undefined });
-    });
+      throw e;
+    }
+    this.#c.subscription = undefined;
+    this.#c.setState({ mode: "direct", subscription: undefined });
   }
 
   /** Leaves direct mode with the 6-byte exit sequence (no reply). */
   exitDirectMode(): Promise<void> {
-    return this.#c.exclusive(async () => {
-      if (this.#c.mode !== "direct") return;
-      await this.#c.writeRaw(EXIT_DIRECT_MODE, "leave direct mode");
-      this.#c.parser.reset();
-      this.#c.setState({ mode: "packet" });
-    });
+    return this.#c.exclusive(() => this.#exitDirect());
   }
+
+  async #exitDirect(): Promise<void> {
+    if (this.#c.mode !== "direct") return;
+    await this.#c.writeRaw(EXIT_DIRECT_MODE, "leave direct mode");
+    this.#c.parser.reset();
+    this.#c.setState({ mode: "packet" });
+  }
+
+  /**
+   * Tethered play (PROTOCOL.md §10, docs/tethered-play.md): plays `doc` (or `options.range` of its scenes) on the
+   * robot in direct mode, one synchronised move of servos 0..max per frame at the frame's time, the robot's zero
+   * deltas applied, every position inside the safe ranges. A motion the RBC would refuse is refused before
+   * anything is sent (`TetheredPlayError`, `invalid-argument`). The zeros (0x0B) and platform are read when not
+   * given, then direct mode is entered and the servos read (a silent one stops play before it starts; servos
+   * the motion does not list hold that position); far from the first pose, transition frames lead there first.
+   * The whole play is one turn of the queue: nothing else interleaves.
+   *
+   * Resolves `finished` after the last frame, with the pose read back; the client stays in direct mode and the
+   * servos hold the last frame (leave with `exitDirectMode()`). Stop (`stopActivity()`), Limp or `signal`
+   * end it after the frame on the wire, send nothing more and resolve `stopped`; no servo is made passive
+   * (Limp then does that). A lost link or a silent robot rejects with a `TetheredPlayError` saying how far it
+   * got and what the servos hold.
+   */
+  playTethered(doc: Motion, options: TetheredPlayOptions = {}): Promise<TetheredPlayResult> {
+    try {
+      checkTetheredPlay(doc, options);
+    } catch (e) {
+      return Promise.reject(e);
+    }
+    const control = new TetheredPlayControl(options.signal);
+    this.#plays.add(control);
+    const host = {
+      c: this.#c,
+      enterDirect: () => this.#enterDirect(),
+      exitDirect: () => this.#exitDirect(),
+    };
+    return this.#c
+      .exclusive(() => runTetheredPlay(host, doc, options, control))
+      .catch((e: unknown) => {
+        // Stopped while it waited for its turn: nothing was sent.
+        if (e instanceof RbcCancelledError && control.signal.aborted) return stoppedBeforeStart(doc);
+        throw e;
+      })
+      .finally(() => {
+        control.dispose();
+        this.#plays.delete(control);
+      });
+  }
+
+  /** Tethered plays under way or queued, for Stop and Limp to end. */
+  readonly #plays = new Set<TetheredPlayControl>();
 
   /**
    * Stop: ends what the robot is doing and keeps it standing. Never makes a servo passive (that is `limp()`).
@@ -682,6 +743,7 @@ export class RbcClient {
    * - A sound is waited out: the RBC receives nothing while a sound plays (PROTOCOL.md §3.6).
    * - An upload is cancelled as its own Cancel does (the download is abandoned; the robot's memory is checked).
    * - In direct mode, servo moves not yet sent are dropped; the servos hold their last position.
+   * - Tethered play (`playTethered`) stops after the frame on the wire; the servos hold that frame.
    * - Operations queued behind these are cancelled (`RbcCancelledError`); nothing is sent in their place.
    * Resolves with what was found and what the robot confirmed (see `StopActivityResult`). A Stop asked for
    * while one is under way joins it.
@@ -704,6 +766,8 @@ export class RbcClient {
     const running = this.#running;
     const soundRun = this.#sounding;
     const uploads = [...this.#uploadAborts];
+    const plays = [...this.#plays];
+    for (const play of plays) play.stop();
     // Nothing queued starts after Stop: a motion or moves waiting their turn are cancelled, not sent.
     this.#c.epoch++;
     const epoch = this.#c.epoch;
@@ -726,8 +790,16 @@ export class RbcClient {
     if (playing && running) result.motion = await this.#endMotionForHalt(playing.motion, running);
     // Let what was on the wire finish (an upload's clean-up, the servo move in flight), so that the result
     // describes a robot that is done.
-    if (uploads.length > 0 || mode === "direct")
+    if (uploads.length > 0 || mode === "direct" || plays.length > 0)
       await this.#c.exclusive(async () => {}, epoch, { rearm: false }).catch(() => {});
+    const play = plays.find((p) => p.framesSent > 0) ?? plays[0];
+    if (play) {
+      result.tetheredPlay = {
+        framesSent: play.framesSent,
+        totalFrames: play.totalFrames,
+        lastFrame: play.lastFrame,
+      };
+    }
     return result;
   }
 
@@ -821,6 +893,8 @@ export class RbcClient {
 
   async #startStop(): Promise<{ confirmed: number[]; silent: number[] }> {
     if (this.#c.mode === "disconnected" || this.#c.mode === "connecting") throw new RbcNotConnectedError();
+    // Tethered play stops first (after the frame on the wire); the servos are then made limp.
+    for (const play of this.#plays) play.stop();
     this.#c.epoch++;
     const { playing, sounding } = this.#c.state;
     this.#c.failPending(new RbcCancelledError("Cancelled by Limp: every servo is being made limp."));

@@ -16,6 +16,8 @@ export interface ClientState {
   basicPostureConfirmed: boolean;
   /** The subscription the client keeps armed, if any. */
   subscription?: SubscriptionKind;
+  /** Tethered play under way (`RbcClient.playTethered`): when its schedule started (clock ms), its length. */
+  tethered?: { startedAt: number; durationMs: number; totalFrames: number };
 }
 
 /** One line of the packet log. */

@@ -3,6 +3,7 @@ import { flashCommand } from "./flash.ts";
 import { infoCommand } from "./info.ts";
 import { limpCommand } from "./limp.ts";
 import { logCommand } from "./log.ts";
+import { playCommand } from "./play.ts";
 import { portsCommand } from "./ports.ts";
 import { runCommand } from "./run.ts";
 import { sensorsCommand } from "./sensors.ts";
@@ -19,6 +20,7 @@ export const COMMAND_LIST: readonly CommandDef[] = [
   zerosCommand,
   uploadCommand,
   runCommand,
+  playCommand,
   stopCommand,
   limpCommand,
   soundCommand,

@@ -1,0 +1,313 @@
+/**
+ * Tethered play (PROTOCOL.md §10): the PC plays a motion on the robot in direct mode, frame by frame, one
+ * synchronised move of servos 0..max per frame, at the times `playFrames` (src/motion/frames.ts) computes. It
+ * needs no motion image, so it works on any firmware. See docs/tethered-play.md for the decisions:
+ * - [decision] The sync move carries one speed/torque for all servos: the strongest (lowest number) of the
+ *   frame's torques, so that no servo is driven weaker than its scene asks.
+ * - [decision] Step 1 of §10 (runtime P/D and I gains) and the per-scene port values are not sent: §5 documents
+ *   no parameter set for the gains, and the port writes' replies would share the servo bus's reply channel
+ *   with the pose reads.
+ * - Servos 0..max that the motion does not list hold the position read before playing (clamped to the safe
+ *   range, as is every position sent). A servo of 0..max that does not answer that read stops play before it
+ *   starts: its position would have to be guessed.
+ * - Frame times are an absolute schedule on the client's clock (no drift); a frame the link is late for is
+ *   sent at once and the lateness reported (`maxLateMs`).
+ */
+import type { Motion } from "../motion/index.ts";
+import { clampPosition, MotionError, PLATFORM_PF2, playFrames } from "../motion/index.ts";
+import { COMMANDS } from "../protocol/commands.ts";
+import { WCK_MAX_POSITION, wckReadStatus, wckSyncMove } from "../protocol/wck.ts";
+import { STANDARD_ZEROS } from "../protocol/zeros.ts";
+import { RbcCancelledError, RbcDisconnectedError, RbcNotConnectedError, RbcTimeoutError } from "./errors.ts";
+import type { RbcConnection } from "./rbc-connection.ts";
+import {
+  byId,
+  frameLabel,
+  type TetheredPlayControl,
+  TetheredPlayError,
+  type TetheredPlayOptions,
+  type TetheredPlayResult,
+} from "./tethered-play-types.ts";
+
+export {
+  frameLabel,
+  TetheredPlayControl,
+  TetheredPlayError,
+  type TetheredPlayHolds,
+  type TetheredPlayOptions,
+  type TetheredPlayProgress,
+  type TetheredPlayResult,
+} from "./tethered-play-types.ts";
+
+/** What tethered play needs from the client, inside the client's one turn (`exclusive`). */
+export interface TetheredPlayHost {
+  readonly c: RbcConnection;
+  /** The client's 0x10 (enter direct mode), within the turn. */
+  enterDirect(): Promise<void>;
+  /** The client's exit sequence (leave direct mode), within the turn. */
+  exitDirect(): Promise<void>;
+}
+
+/**
+ * Checks, before anything is sent, that the RBC would play the range (frames at least 20 ms apart, error 6) and
+ * that the given zeros and platform have the right shape. Throws `TetheredPlayError("invalid-argument")`.
+ */
+export function checkTetheredPlay(doc: Motion, options: TetheredPlayOptions): void {
+  const platform = options.platform;
+  if (platform !== undefined && !(Number.isInteger(platform) && platform >= 0 && platform <= 255)) {
+    throw refused(`The platform must be a whole number 0-255, got ${platform}.`);
+  }
+  try {
+    playFrames(doc, {
+      range: options.range,
+      robotZeros: options.robotZeros ?? STANDARD_ZEROS,
+      platform: platform ?? PLATFORM_PF2,
+    });
+  } catch (e) {
+    if (e instanceof MotionError) throw refused(e.message, e);
+    throw e;
+  }
+}
+
+function refused(message: string, cause?: unknown): TetheredPlayError {
+  return new TetheredPlayError(
+    "invalid-argument",
+    `${message.replace(/\s+$/, "")} Nothing was sent to the robot.`,
+    0,
+    0,
+    undefined,
+    "nothing-sent",
+    cause,
+  );
+}
+
+/** Plays `doc` on the robot; runs inside the client's turn. See the module comment and `RbcClient.playTethered`. */
+export async function runTetheredPlay(
+  host: TetheredPlayHost,
+  doc: Motion,
+  options: TetheredPlayOptions,
+  control: TetheredPlayControl,
+): Promise<TetheredPlayResult> {
+  const { c } = host;
+  const signal = control.signal;
+  const maxId = Math.max(...doc.servos.map((s) => s.id));
+  const busIds = Array.from({ length: maxId + 1 }, (_, id) => id);
+  const started = { at: c.clock.now(), late: 0 };
+  let lastPositions: (number | undefined)[] = [];
+  let transition = 0;
+  let plannedMs = 0;
+  const result = (outcome: TetheredPlayResult["outcome"]): TetheredPlayResult => ({
+    outcome,
+    framesSent: control.framesSent,
+    totalFrames: control.totalFrames,
+    transitionFrames: transition,
+    lastFrame: control.lastFrame,
+    lastPositions: byId(lastPositions, maxId),
+    durationMs: control.framesSent > 0 ? c.clock.now() - started.at : 0,
+    plannedMs,
+    maxLateMs: started.late,
+  });
+  if (c.mode === "disconnected" || c.mode === "connecting") throw new RbcNotConnectedError();
+  try {
+    // Zeros and platform come from packet mode (the servo bus does not know them).
+    let zeros = options.robotZeros;
+    let platform = options.platform ?? c.state.platform;
+    if (zeros === undefined || platform === undefined) {
+      if (signal.aborted) return result("stopped");
+      if (c.mode === "direct") await host.exitDirect();
+      if (zeros === undefined) zeros = await c.request(COMMANDS.readZeros, undefined, { signal });
+      if (platform === undefined) {
+        await c.request(COMMANDS.readErrorCode, undefined, { signal });
+        platform = c.state.platform ?? 0;
+      }
+    }
+    if (signal.aborted) return result("stopped");
+    let entered = false;
+    if (c.mode !== "direct") {
+      await host.enterDirect();
+      entered = true;
+    }
+    const read = await readPose(c, busIds, signal);
+    if (signal.aborted) return result("stopped");
+    if (read.silent.length > 0) {
+      if (entered) await host.exitDirect().catch(() => {});
+      throw new TetheredPlayError(
+        "timeout",
+        `${servoList(read.silent)} did not answer in servo control, so ${read.silent.length === 1 ? "its" : "their"} position is not known (the synchronised move drives every servo from 0 to ${maxId}). Nothing was moved. Check the servo cables and that the robot is switched on.`,
+        0,
+        0,
+        undefined,
+        "nothing-sent",
+      );
+    }
+    const plan = playFrames(doc, {
+      range: options.range,
+      robotZeros: zeros,
+      platform,
+      currentPose: read.pose,
+    });
+    control.totalFrames = plan.frames.length;
+    transition = plan.transition.length;
+    plannedMs = plan.durationMs;
+    const held = busIds.map((id) => clampPosition(id, read.pose[id]!));
+    const slot = new Map(plan.ids.map((id, i) => [id, i]));
+    started.at = c.clock.now();
+    c.setState({
+      tethered: { startedAt: started.at, durationMs: plan.durationMs, totalFrames: control.totalFrames },
+    });
+    for (const [index, frame] of plan.frames.entries()) {
+      const due = started.at + frame.atMs;
+      await waitUntil(c, due, signal);
+      if (signal.aborted) return result("stopped");
+      if (c.mode !== "direct") throw linkLost(control, undefined);
+      started.late = Math.max(started.late, c.clock.now() - due);
+      const positions = busIds.map((id) => {
+        const k = slot.get(id);
+        return clampPosition(id, k === undefined ? held[id]! : frame.positions[k]!);
+      });
+      const speed = Math.min(...frame.torques);
+      await c
+        .withTimeout(
+          c.writeRaw(wckSyncMove(positions, speed), `tethered play, ${frameLabel(frame)}`),
+          c.timeouts.quickMs,
+          "tethered play frame",
+        )
+        .catch((e: unknown) => {
+          throw linkLost(control, e);
+        });
+      control.framesSent++;
+      control.lastFrame = { scene: frame.scene, frame: frame.frame };
+      lastPositions = positions;
+      options.onFrame?.({
+        index,
+        total: control.totalFrames,
+        frame,
+        scene: frame.scene,
+        positions: byId(positions, maxId),
+        elapsedMs: c.clock.now() - started.at,
+        durationMs: plan.durationMs,
+      });
+    }
+    const done = result("finished");
+    // Sync moves have no reply: what the robot confirms is the pose read afterwards.
+    const back = await readPose(c, busIds, undefined).catch((e: unknown) => {
+      // Limp came during the read: the frames were all sent, only the confirmation is missing.
+      if (e instanceof RbcCancelledError) return undefined;
+      throw linkLost(control, e);
+    });
+    if (!back) return done;
+    if (back.silent.length === busIds.length) {
+      throw new TetheredPlayError(
+        "timeout",
+        `All ${control.framesSent} frames were sent (the last: ${frameLabel(control.lastFrame!)}), but no servo answered afterwards, so whether the robot played them is not known. If it is powered, its servos hold the last frame they got. Check the robot and its cable.`,
+        control.framesSent,
+        control.totalFrames,
+        control.lastFrame,
+        "last-frame",
+      );
+    }
+    const deviations = busIds
+      .filter((id) => back.pose[id] !== undefined)
+      .map((id) => Math.abs(back.pose[id]! - lastPositions[id]!));
+    done.readBack = {
+      positions: byId(back.pose, maxId),
+      silent: back.silent,
+      maxDeviation: Math.max(0, ...deviations),
+    };
+    return done;
+  } catch (e) {
+    if (signal.aborted && e instanceof RbcCancelledError) return result("stopped");
+    if (e instanceof MotionError) throw refused(e.message, e);
+    if (e instanceof RbcDisconnectedError) throw linkLost(control, e);
+    throw e;
+  } finally {
+    if (c.state.tethered) c.setState({ tethered: undefined });
+  }
+}
+
+/** The result of a play that Stop ended while it waited for its turn: nothing was sent. */
+export function stoppedBeforeStart(doc: Motion): TetheredPlayResult {
+  return {
+    outcome: "stopped",
+    framesSent: 0,
+    totalFrames: 0,
+    transitionFrames: 0,
+    lastPositions: byId([], Math.max(...doc.servos.map((s) => s.id))),
+    durationMs: 0,
+    plannedMs: 0,
+    maxLateMs: 0,
+  };
+}
+
+/** A lost link or a write that never completed, mid-play. */
+function linkLost(control: TetheredPlayControl, cause: unknown): TetheredPlayError {
+  const where =
+    control.lastFrame === undefined
+      ? "before the first frame"
+      : `after ${control.framesSent} of ${control.totalFrames} frames (the last: ${frameLabel(control.lastFrame)})`;
+  const timedOut = cause instanceof RbcTimeoutError;
+  const what = timedOut ? "A frame could not be written within its time" : "The connection was lost";
+  return new TetheredPlayError(
+    timedOut ? "timeout" : "disconnected",
+    `${what} during tethered play, ${where}. The robot's state is unknown: its servos may hold the last frame they got, or be limp if it lost power. Check the robot and the cable, then connect again.`,
+    control.framesSent,
+    control.totalFrames,
+    control.lastFrame,
+    "unknown",
+    cause,
+  );
+}
+
+/** Resolves at `due` on the client's clock, at once on abort or when the link is lost. */
+function waitUntil(c: RbcConnection, due: number, signal: AbortSignal): Promise<void> {
+  const ms = due - c.clock.now();
+  if (ms <= 0 || signal.aborted) return Promise.resolve();
+  return new Promise((resolve) => {
+    const done = () => {
+      c.clock.clearTimeout(timer);
+      signal.removeEventListener("abort", done);
+      off();
+      resolve();
+    };
+    const timer = c.clock.setTimeout(done, ms);
+    signal.addEventListener("abort", done, { once: true });
+    const off = c.stateChanges.on((s) => {
+      if (s.mode === "disconnected") done();
+    });
+  });
+}
+
+/** Reads servos `ids` (status read, PROTOCOL.md §5); a silent one is tried once more unless all were silent. */
+async function readPose(
+  c: RbcConnection,
+  ids: readonly number[],
+  signal: AbortSignal | undefined,
+): Promise<{ pose: (number | undefined)[]; silent: number[] }> {
+  const pose: (number | undefined)[] = [];
+  const readOne = async (id: number): Promise<number | undefined> => {
+    try {
+      const reply = await c.raw.exchange(wckReadStatus(id), {
+        need: 2,
+        timeoutMs: c.timeouts.quickMs,
+        note: `read servo ${id}`,
+        signal,
+      });
+      // Servo replies carry no checksum; a position above 254 can only be noise on the line.
+      return reply[1]! <= WCK_MAX_POSITION ? reply[1] : undefined;
+    } catch (e) {
+      if (e instanceof RbcTimeoutError) return undefined;
+      throw e;
+    }
+  };
+  for (const id of ids) pose[id] = await readOne(id);
+  let silent = ids.filter((id) => pose[id] === undefined);
+  if (silent.length > 0 && silent.length < ids.length) {
+    for (const id of silent) pose[id] = await readOne(id);
+    silent = ids.filter((id) => pose[id] === undefined);
+  }
+  return { pose, silent };
+}
+
+function servoList(ids: readonly number[]): string {
+  return ids.length === 1 ? `Servo ${ids[0]}` : `Servos ${ids.slice(0, -1).join(", ")} and ${ids.at(-1)}`;
+}
