@@ -1,7 +1,7 @@
 import "./styles.css";
 import { render } from "lit-html";
 import { initialState } from "./app-state.ts";
-import { busySentence, setBusyProbe } from "./busy.ts";
+import { answerBusyQueries, busySentence } from "./busy.ts";
 import { refreshKnownPorts, stopActivity } from "./features/connection/actions.ts";
 import { LOG_CAPACITY, PacketLog } from "./features/log/packet-log.ts";
 import { routeFromHash, ViewLoader } from "./router.ts";
@@ -94,7 +94,7 @@ function startApp(root: HTMLElement): void {
   // A reload (the update prompt's, or the browser's) or a closed tab would cut short what runs on the robot: an
   // upload would leave its download half done. The update prompt asks this before reloading; the browser asks
   // the person ("Leave site?") while something runs.
-  setBusyProbe(() => busySentence(store.get().running));
+  answerBusyQueries(() => busySentence(store.get().running));
   window.addEventListener("beforeunload", (e) => {
     if (store.get().running.length > 0) e.preventDefault();
   });

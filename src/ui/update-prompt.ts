@@ -34,7 +34,7 @@ export interface UpdatePromptState {
 export interface UpdatePromptOptions {
   /**
    * Says what a reload would interrupt right now (e.g. "Still running: Uploading wave.rbm."), or undefined
-   * when reloading is safe. Asked when "Reload" is pressed. By default, what the app registered in `busy.ts`.
+   * when reloading is safe. Asked when "Reload" is pressed. By default, what the app answers (`busy.ts`).
    */
   busy?: () => string | undefined;
   /** Where the notice is drawn (default: a live region inserted before #app). */
@@ -106,7 +106,7 @@ export function startUpdatePrompt(
 
   const actions: UpdatePromptActions = {
     reload() {
-      const blockedBy = (options.busy ?? whatIsBusy)();
+      const blockedBy = options.busy ? options.busy() : whatIsBusy();
       if (blockedBy) {
         state.blockedBy = blockedBy;
         show();

@@ -45,6 +45,7 @@ describe("the panel's structure", () => {
     const features = readdirSync(join(UI, "features"));
     expect(features.sort()).toEqual([
       "connection",
+      "editor",
       "firmware",
       "log",
       "motions",
