@@ -35,5 +35,8 @@ export function createDemoRobot(options: DemoRobotOptions = {}): DemoRobot {
   // The same world as the CLI's --demo (src/sim/demo-world.ts).
   const sim = createDemoRbc({ clock });
   const boot = new BootloaderRbc(sim);
+  // Browser tests (tests/e2e/rbc-test-globals.ts: `__rbcTestOptions` is set only by them) watch its servos.
+  const page = globalThis as { __rbcTestOptions?: unknown; __rbcDemoSim?: SimulatedRbc };
+  if (page.__rbcTestOptions !== undefined) page.__rbcDemoSim = sim;
   return { port: new MockSerialPort(boot, { clock, latencyMs: 2, record: false }), boot, sim, clock };
 }

@@ -40,6 +40,8 @@ declare global {
   interface Window {
     __rbcTest?: RbcTestHandle;
     __rbcTestOptions?: RbcTestOptions;
+    /** The demo robot's simulator ("Try the demo robot"), set by src/ui/demo-robot.ts in browser tests only. */
+    __rbcDemoSim?: SimulatedRbc;
     /** CSP violations seen by the page (recorded by an init script). */
     __cspViolations?: string[];
   }

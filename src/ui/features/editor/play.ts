@@ -1,0 +1,172 @@
+/**
+ * Tethered play's actions (issue #12 item 4, PROTOCOL.md §10): play the selected scene, a range or the whole
+ * motion on the robot in direct mode, after one question; progress in place; Stop (top bar, Escape or the
+ * panel's own button) holds the last frame; one sentence of what the robot confirmed.
+ */
+import { RbcCancelledError, RbcDisconnectedError, RbcNotConnectedError } from "../../../device/errors.ts";
+import { TetheredPlayError } from "../../../device/tethered-play.ts";
+import { type Motion, MotionError } from "../../../motion/index.ts";
+import type { AppContext } from "../../context.ts";
+import { errorMessage, technicalDetail } from "../../error-text.ts";
+import { focusSoon } from "../../focus.ts";
+import { type Controller, controllerKey } from "../../scope.ts";
+import { servosTaken, stopActivity } from "../connection/actions.ts";
+import type { EditorHost } from "./host.ts";
+import { liveOf, type PlayChoice, type PlayProgress, patchPlay, patchTeachIn } from "./live-state.ts";
+import { type PlayHolds, playFailureText, playRange, playResultNotice, playSpan } from "./play-model.ts";
+
+/** The play of this connection: aborted when the connection ends. */
+export class PlayControl implements Controller {
+  abort: AbortController | undefined;
+
+  dispose(): void {
+    this.abort?.abort();
+    this.abort = undefined;
+  }
+}
+
+export const PLAY_CONTROL = controllerKey("tethered play", () => new PlayControl());
+
+export function setPlayChoice(ctx: AppContext, choice: PlayChoice): void {
+  patchPlay(ctx.store, { choice, confirming: undefined });
+}
+
+export function setPlayRange(ctx: AppContext, end: "from" | "to", scene: number): void {
+  if (!Number.isFinite(scene)) return;
+  patchPlay(
+    ctx.store,
+    end === "from" ? { rangeFrom: scene, confirming: undefined } : { rangeTo: scene, confirming: undefined },
+  );
+}
+
+/** The scenes the panel's current choice plays in `doc`. */
+export function chosenRange(ctx: AppContext, host: EditorHost): { from: number; to: number } {
+  const p = liveOf(ctx.store.get()).play;
+  return playRange(host.doc, p.choice, host.scene, p.rangeFrom, p.rangeTo);
+}
+
+/**
+ * "Play on robot…": checks the scenes as the RBC would (frames under 20 ms apart: the core's message, nothing
+ * moves) and asks once, Cancel focused first.
+ */
+export function askPlay(ctx: AppContext, host: EditorHost): void {
+  const state = ctx.store.get();
+  if (!ctx.session.current || liveOf(state).play.running) return;
+  const { from, to } = chosenRange(ctx, host);
+  try {
+    const { frames, durationMs } = playSpan(host.doc, from, to);
+    patchPlay(ctx.store, { confirming: { from, to, frames, durationMs }, notice: undefined });
+    focusSoon("cancel-play");
+  } catch (e) {
+    patchPlay(ctx.store, {
+      confirming: undefined,
+      notice: {
+        tone: "danger",
+        text: `${e instanceof MotionError ? e.message : errorMessage(e)} Nothing was sent; the robot did not move.`,
+        detail: technicalDetail(e),
+      },
+    });
+  }
+}
+
+export function cancelPlay(ctx: AppContext): void {
+  patchPlay(ctx.store, { confirming: undefined });
+  focusSoon("play-button");
+}
+
+/** The positions of a frame, by servo id 0-15. */
+function byId(positions: readonly (number | undefined)[]): (number | undefined)[] {
+  return Array.from({ length: 16 }, (_, id) => positions[id]);
+}
+
+/** What the servos hold after play failed with `e`, and the last frame sent. */
+function failure(
+  e: unknown,
+  last: PlayProgress | undefined,
+): { holds: PlayHolds; lastFrame?: { scene: number; frame: number } } {
+  if (e instanceof TetheredPlayError) return { holds: e.holds, lastFrame: e.lastFrame };
+  const lastFrame = last ? { scene: last.scene, frame: last.frame } : undefined;
+  if (e instanceof RbcDisconnectedError || e instanceof RbcNotConnectedError)
+    return { holds: "unknown", lastFrame };
+  return { holds: last ? "last-frame" : "nothing-sent", lastFrame };
+}
+
+/** Confirmed: plays the scenes asked about (the document as it is now; edits during play do not change it). */
+export async function confirmPlay(ctx: AppContext, host: EditorHost): Promise<void> {
+  const { store, session } = ctx;
+  const play = liveOf(store.get()).play;
+  const asked = play.confirming;
+  if (!asked || play.running) return;
+  const client = session.current;
+  if (!client) {
+    patchPlay(store, { confirming: undefined });
+    return;
+  }
+  const doc: Motion = host.doc;
+  const { from, to } = asked;
+  const control = session.connectionScope.get(PLAY_CONTROL);
+  const abort = new AbortController();
+  control.abort = abort;
+  const state = store.get();
+  // Zeros read in this connection (teach-in, the Zeros view); otherwise tethered play reads them itself.
+  const robotZeros = liveOf(state).teach.robotZeros ?? state.zeros.stored;
+  const platform = state.connection.platform;
+  let last: PlayProgress | undefined;
+  patchPlay(store, { confirming: undefined, running: { from, to }, notice: undefined });
+  try {
+    const result = await session.run(
+      "Tethered play",
+      (c) =>
+        c.playTethered(doc, {
+          range: { from, to },
+          ...(robotZeros ? { robotZeros } : {}),
+          ...(platform !== undefined ? { platform } : {}),
+          signal: abort.signal,
+          onFrame: (p) => {
+            last = {
+              index: p.index + 1,
+              total: p.total,
+              scene: p.scene,
+              frame: p.frame.frame,
+              positions: byId(p.positions),
+              elapsedMs: p.elapsedMs,
+              durationMs: p.durationMs,
+            };
+            patchPlay(store, (x) => (x.running ? { running: { ...x.running, progress: last } } : {}));
+          },
+        }),
+      { packetMode: false },
+    );
+    patchPlay(store, { running: undefined, notice: playResultNotice(result, from, to) });
+  } catch (e) {
+    const connected = session.current === client;
+    if (e instanceof RbcCancelledError && connected) {
+      const lastFrame = last ? { scene: last.scene, frame: last.frame } : undefined;
+      const framesSent = last?.index ?? 0;
+      patchPlay(store, {
+        running: undefined,
+        notice: playResultNotice({ outcome: "stopped", framesSent, durationMs: 0, lastFrame }, from, to),
+      });
+    } else {
+      const { holds, lastFrame } = failure(e, last);
+      const text =
+        e instanceof MotionError
+          ? `${e.message} Nothing was sent; the robot did not move.`
+          : `${playFailureText(connected ? holds : "unknown", lastFrame, client.mode === "direct")} ${errorMessage(e)}`;
+      patchPlay(store, { running: undefined, notice: { tone: "danger", text, detail: technicalDetail(e) } });
+    }
+  } finally {
+    if (control.abort === abort) control.abort = undefined;
+    if (last && session.current === client) {
+      // Every servo took a synchronised move: none is limp any more (teach-in's limp servos hold too).
+      servosTaken(ctx);
+      patchTeachIn(store, { passive: [] });
+    }
+  }
+}
+
+/** The panel's Stop: the same as the top bar's (the robot holds the last frame; nothing goes limp). */
+export function stopPlay(ctx: AppContext): void {
+  patchPlay(ctx.store, (x) => (x.running ? { running: { ...x.running, stopping: true } } : {}));
+  void stopActivity(ctx);
+}

@@ -1,0 +1,124 @@
+/**
+ * Teach-in's end: "Hold" makes the limp servos hold where the hand left them (a move of each to the position it
+ * reads, torque on); "End teach-in" holds first, then leaves direct mode.
+ */
+import { RbcCancelledError, RbcTimeoutError } from "../../../device/errors.ts";
+import { HUNO_SERVO_IDS } from "../../../protocol/servo-limits.ts";
+import type { AppContext } from "../../context.ts";
+import { errorNotice } from "../../error-text.ts";
+import { servosTaken } from "../connection/actions.ts";
+import { clampToSafe, DEFAULT_TORQUE } from "../servos/state.ts";
+import { liveOf, patchTeachIn, teachInOn } from "./live-state.ts";
+import { TEACH_IN_WATCH } from "./teach-in.ts";
+import { type HeldServo, holdNotice } from "./teach-in-model.ts";
+
+/**
+ * Makes the limp servos hold where they are: reads each and moves it to that position (within its safe range)
+ * with torque on. After Limp (top bar) every servo is limp, so every servo is held.
+ */
+async function holdLimp(ctx: AppContext): Promise<{ held: HeldServo[]; silent: number[]; stopped: boolean }> {
+  const { store, session } = ctx;
+  const state = store.get();
+  const ids = state.connection.limp ? [...HUNO_SERVO_IDS] : [...liveOf(state).teach.passive];
+  const held: HeldServo[] = [];
+  const silent: number[] = [];
+  let stopped = false;
+  try {
+    await session.run(
+      "Teach-in: holding the servos",
+      async (c) => {
+        for (const id of ids) {
+          try {
+            const read = (await c.servos.read(id)).position;
+            const target = clampToSafe(id, read);
+            await c.servos.move(id, target, DEFAULT_TORQUE);
+            held.push({ id, read, held: target });
+          } catch (e) {
+            if (!(e instanceof RbcTimeoutError)) throw e;
+            silent.push(id);
+          }
+        }
+      },
+      { packetMode: false },
+    );
+  } catch (e) {
+    if (!(e instanceof RbcCancelledError)) throw e;
+    stopped = true;
+  } finally {
+    if (held.length > 0) servosTaken(ctx);
+    const heldIds = new Set(held.map((h) => h.id));
+    patchTeachIn(store, (t) => ({ passive: t.passive.filter((id) => !heldIds.has(id)) }));
+  }
+  return { held, silent, stopped };
+}
+
+/** "Hold": the limp servos hold where they were posed. */
+export async function holdPassive(ctx: AppContext): Promise<void> {
+  const { store } = ctx;
+  if (!teachInOn(store.get()) || liveOf(store.get()).teach.busy) return;
+  patchTeachIn(store, { busy: "holding", notice: undefined });
+  try {
+    const { held, silent, stopped } = await holdLimp(ctx);
+    patchTeachIn(store, { busy: undefined, notice: holdNotice(held, silent, stopped) });
+  } catch (e) {
+    patchTeachIn(store, {
+      busy: undefined,
+      notice: errorNotice("Holding failed: servos that were limp may still be limp. Hold the robot.", e),
+    });
+  }
+}
+
+/** "End teach-in": holds the limp servos first, then leaves direct mode (the servos keep holding). */
+export async function endTeachIn(ctx: AppContext): Promise<void> {
+  const { store, session } = ctx;
+  if (!teachInOn(store.get()) || liveOf(store.get()).teach.busy) return;
+  patchTeachIn(store, { phase: "ending", busy: "holding", notice: undefined });
+  let held: Awaited<ReturnType<typeof holdLimp>>;
+  try {
+    held = await holdLimp(ctx);
+  } catch (e) {
+    patchTeachIn(store, {
+      phase: "on",
+      busy: undefined,
+      notice: errorNotice(
+        "Teach-in did not end: holding the limp servos failed, so the robot stays in servo control. Hold the robot.",
+        e,
+      ),
+    });
+    return;
+  }
+  if (held.stopped) {
+    const stoppedNotice = holdNotice(held.held, held.silent, true);
+    patchTeachIn(store, {
+      phase: "on",
+      busy: undefined,
+      notice: {
+        ...stoppedNotice,
+        text: `${stoppedNotice.text} Teach-in stays on: press End teach-in again.`,
+      },
+    });
+    return;
+  }
+  session.connectionScope.peek(TEACH_IN_WATCH)?.end();
+  try {
+    await session.run("Ending teach-in", (c) => c.exitDirectMode(), { packetMode: false });
+  } catch (e) {
+    patchTeachIn(store, {
+      phase: "off",
+      busy: undefined,
+      notice: errorNotice("The servos hold, but leaving servo control failed.", e),
+    });
+    return;
+  }
+  const heldText =
+    held.held.length > 0 || held.silent.length > 0 ? `${holdNotice(held.held, held.silent).text} ` : "";
+  patchTeachIn(store, {
+    phase: "off",
+    busy: undefined,
+    passive: [],
+    notice: {
+      tone: held.silent.length > 0 ? "warning" : "ok",
+      text: `${heldText}Teach-in ended: the robot is back in its normal mode${held.silent.length > 0 ? "" : ", every servo holding its position"}.`,
+    },
+  });
+}
