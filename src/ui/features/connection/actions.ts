@@ -1,4 +1,5 @@
 import type { StopActivityResult } from "../../../device/rbc-client.ts";
+import { frameLabel } from "../../../device/tethered-play-types.ts";
 import type { AppState, Notice } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { errorNotice } from "../../error-text.ts";
@@ -126,7 +127,14 @@ export function stopOutcome(result: StopActivityResult, limp: boolean): Notice {
         break;
     }
   }
-  if (result.servoMovesDropped) {
+  if (result.tetheredPlay) {
+    const { framesSent, totalFrames, lastFrame } = result.tetheredPlay;
+    parts.push(
+      lastFrame
+        ? `Tethered play stopped after ${frameLabel(lastFrame)} (${framesSent} of ${totalFrames} frames sent); the servos hold that frame.`
+        : `Tethered play stopped before its first frame; nothing moved.`,
+    );
+  } else if (result.servoMovesDropped) {
     parts.push(
       limp
         ? "Servo moves stopped. The servos stay limp (Limp); moving a slider makes that servo hold again."
