@@ -222,12 +222,17 @@ export default defineConfig(({ command, mode }) => {
           sourcemap: false,
           // No preload links to polyfill: every module is in the page.
           modulePreload: false,
+          // One page holds everything, three.js (the 3D robot) included.
+          chunkSizeWarningLimit: 2000,
         }
       : {
           target: "es2022",
           sourcemap: true,
           // The CSP forbids data: scripts and inline styles, so never inline assets as data URLs.
           assetsInlineLimit: 0,
+          // three.js (the 3D robot, 536 KB, 131 KB gzip) is one lazily loaded chunk, loaded only by the views
+          // that show the robot; the first page load stays within its 40 KB budget (npm run check:bundle).
+          chunkSizeWarningLimit: 600,
         },
     plugins: single
       ? [

@@ -31,6 +31,7 @@ import { describeMotionEdit, measureMotionEdit } from "./motion-edit.ts";
 import { makeParserStream, measureParser } from "./parser-throughput.ts";
 import { type MetricKey, type Metrics, TARGETS, table, targetMet } from "./report.ts";
 import { measureRequestOverhead } from "./request-overhead.ts";
+import { describeRobot3d, measureRobot3d } from "./robot3d-fps.ts";
 import { round } from "./stats.ts";
 import { measureUpload } from "./upload-efficiency.ts";
 import { WIRE_BYTES_PER_SECOND } from "./upload-ideal.ts";
@@ -316,6 +317,14 @@ async function main(): Promise<void> {
       } catch (e) {
         skip(["firstRenderMs"], errorText(e));
       }
+      progress("3D preview frame rate and 3D chunk size (headless Chromium, software WebGL)");
+      try {
+        const robot3d = await measureRobot3d(outDir, quick ? 2 : 4);
+        details.robot3d = robot3d;
+        details.robot3dText = describeRobot3d(robot3d);
+      } catch (e) {
+        details.robot3dSkipped = errorText(e);
+      }
     }
   } finally {
     if (temporary) rmSync(temporary, { recursive: true, force: true });
@@ -366,6 +375,8 @@ if (json) {
   const firmwareLines = details.firmwareUpdateLines as string[] | undefined;
   if (firmwareLines)
     process.stdout.write(`\nFirmware update:\n${firmwareLines.map((l) => `  ${l}`).join("\n")}\n`);
+  const robot3dText = details.robot3dText as string | undefined;
+  if (robot3dText) process.stdout.write(`\n${robot3dText}\n`);
   if (b?.contributors) process.stdout.write(`First-load JavaScript by source: ${b.contributors}\n`);
   const cli = details.cliStartup as { cliStderr?: string } | undefined;
   if (cli?.cliStderr)

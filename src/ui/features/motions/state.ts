@@ -34,6 +34,8 @@ export interface MotionFilesState {
   nextId: number;
   /** The file whose scenes and chart are shown (none when the person hid them). */
   selected?: number;
+  /** The file whose 3D preview is open (one at a time: each holds a WebGL context). */
+  previewed?: number;
   /**
    * The tab shown. Kept here, with the files, because both outlive a connection (the files tab stays where it
    * was when the robot is reconnected).

@@ -43,6 +43,12 @@ export function toggleScenes(ctx: AppContext, id: number): void {
   patchMotionFiles(ctx.store, { selected: files.selected === id ? undefined : id });
 }
 
+/** "Preview in 3D" / "Close 3D preview" on a file card: one file's preview is open at a time. */
+export function togglePreview(ctx: AppContext, id: number): void {
+  const files = motionFilesOf(ctx.store.get());
+  patchMotionFiles(ctx.store, { previewed: files.previewed === id ? undefined : id });
+}
+
 /** A Run button: remembers which one, so that the confirmation, progress and result show beside it. */
 export function pressRun(ctx: AppContext, number: number): void {
   patchMotions(ctx.store, { runFrom: number });

@@ -3,6 +3,7 @@ import { ref } from "lit-html/directives/ref.js";
 import { repeat } from "lit-html/directives/repeat.js";
 import type { RbmIssue } from "../../../../protocol/rbm-validate.ts";
 import { formatCount } from "../../../format.ts";
+import { motionPreview } from "../../../robot3d/robot-view.ts";
 import { liveNotice } from "../../../shell/notice.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
 import { checkedEntry, entryFacts, openMotionFiles, removeMotionFile, setDragging } from "../files.ts";
@@ -10,7 +11,7 @@ import { groupWarnings, type WarningGroup, WEIGHT_WORDS } from "../issue-groups.
 import { formatSeconds, sceneRows } from "../plot-data.ts";
 import type { MotionFileEntry } from "../state.ts";
 import { requestUpload, uploadBlocked } from "../upload-actions.ts";
-import { toggleScenes } from "../view-actions.ts";
+import { togglePreview, toggleScenes } from "../view-actions.ts";
 import { examplesPicker } from "./examples-picker.ts";
 import { motionMemoryStrip } from "./memory-card.ts";
 import { MOTION_CHART, shownEntry } from "./motion-chart.ts";
@@ -149,6 +150,7 @@ function fileCard(ctx: ViewContext, entry: MotionFileEntry, selected: boolean): 
   const target = { area: "motion" as const, entryId: entry.id };
   const blocked = uploadBlocked(ctx, target);
   const whyId = `upload-why-${entry.id}`;
+  const previewing = ctx.state.motionFiles?.previewed === entry.id && entry.motion !== undefined;
   return html`
     <article class="motion-file ${selected ? "is-selected" : ""} ${errors.length > 0 ? "has-errors" : ""}" data-testid="motion-file" aria-labelledby=${`file-${entry.id}`}>
       <div class="motion-file-head">
@@ -170,6 +172,19 @@ function fileCard(ctx: ViewContext, entry: MotionFileEntry, selected: boolean): 
                 </button>`
               : nothing
           }
+          ${
+            facts
+              ? html`<button
+                  type="button"
+                  class="btn"
+                  data-testid="preview-toggle"
+                  aria-expanded=${previewing ? "true" : "false"}
+                  @click=${() => togglePreview(ctx, entry.id)}
+                >
+                  ${previewing ? "Close 3D preview" : "Preview in 3D"}
+                </button>`
+              : nothing
+          }
           <button type="button" class="btn btn--quiet" aria-label=${`Remove ${entry.fileName}`} @click=${() => removeMotionFile(ctx, entry.id)}>
             Remove
           </button>
@@ -185,6 +200,15 @@ function fileCard(ctx: ViewContext, entry: MotionFileEntry, selected: boolean): 
               <div><dt>On the robot</dt><dd>${formatCount(facts.footprint)} bytes</dd></div>
             </dl>`
           : html`<p class="text-danger">This file cannot be used as a motion.</p>`
+      }
+      ${
+        previewing && entry.motion
+          ? motionPreview({
+              motion: entry.motion,
+              label: `3D preview of ${entry.motion.name}; the scene table (Show scenes and chart) lists the same motion in numbers.`,
+              testId: "motion-preview",
+            })
+          : nothing
       }
       ${issues(entry, errors, warnings)}
       <div class="write-row">
