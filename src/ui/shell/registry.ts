@@ -9,6 +9,7 @@ export const VIEWS: readonly ViewRegistration[] = [
   { id: "robot", label: "Robot", load: async () => ({ default: robotView }) },
   { id: "zeros", label: "Zeros", load: () => import("../features/zeros/zeros-view.ts") },
   { id: "motions", label: "Motions", load: () => import("../features/motions/motions-view.ts") },
+  { id: "editor", label: "Editor", load: () => import("../features/editor/editor-view.ts") },
   { id: "sensors", label: "Sensors", load: () => import("../features/sensors/sensors-view.ts") },
   { id: "servos", label: "Servos", load: () => import("../features/servos/servos-view.ts") },
   { id: "firmware", label: "Firmware", load: () => import("../features/firmware/firmware-view.ts") },

@@ -1,0 +1,149 @@
+import { type Motion, newMotion, openMotion, saveMotion } from "../../../motion/index.ts";
+import type { AppContext } from "../../context.ts";
+import { editorController } from "./controller.ts";
+import {
+  type BrokenDraft,
+  type DraftRecord,
+  type DraftStorage,
+  type DraftSummary,
+  draftRecord,
+  listDrafts,
+  loadDraft,
+  newDraftId,
+  recoverPending,
+} from "./drafts.ts";
+import { liveOf } from "./live-state.ts";
+import { formatSavedAt } from "./saved-at.ts";
+import { docOf, editorOf, patchEditor, startDocument } from "./state.ts";
+
+/** Drafts: autosave, the draft restored when the editor opens, and the Drafts list (open, rename, export, delete). */
+
+function message(e: unknown): string {
+  return e instanceof Error ? e.message : String(e);
+}
+
+function randomUnit(): number {
+  const buf = new Uint32Array(1);
+  crypto.getRandomValues(buf);
+  return buf[0]! / 0x1_0000_0000;
+}
+
+/** The zero table of the connected robot if it has been read (Zeros view, or teach-in), for a new motion. */
+export function robotZeros(ctx: AppContext): readonly number[] | undefined {
+  const state = ctx.store.get();
+  if (state.connection.phase !== "connected") return undefined;
+  const zeros = state.zeros.stored ?? liveOf(state).teach.robotZeros;
+  return zeros && zeros.length === 16 ? zeros : undefined;
+}
+
+/** Saves the document as its draft ~300 ms after the last change (a draft id is given on the first save). */
+export function scheduleAutosave(ctx: AppContext): void {
+  const s = editorOf(ctx.store.get());
+  const doc = docOf(s);
+  if (!doc) return;
+  let id = s.draftId;
+  if (id === undefined) {
+    id = newDraftId(Date.now(), randomUnit);
+    patchEditor(ctx.store, { draftId: id });
+  }
+  const draftId = id;
+  editorController(ctx).autosaver.schedule(() => draftRecord(draftId, doc.name, saveMotion(doc), Date.now()));
+}
+
+/** Saves a waiting change at once (before another document replaces this one, or the page goes away). */
+export function flushAutosave(ctx: AppContext): Promise<void> {
+  return editorController(ctx).autosaver.flush();
+}
+
+/** A stored draft as a document, or why it cannot be opened. */
+export async function readDraftDocument(
+  storage: DraftStorage,
+  id: string,
+): Promise<{ record: DraftRecord; doc: Motion } | { problem: string }> {
+  const read = await loadDraft(storage, id);
+  if (read === undefined) return { problem: "It is no longer stored (deleted in another tab?)." };
+  if (!read.ok) return { problem: read.problem };
+  try {
+    return { record: read.record, doc: openMotion(read.record.rbm) };
+  } catch (e) {
+    return { problem: `Its motion cannot be read: ${message(e)}` };
+  }
+}
+
+export interface LatestDraft {
+  /** The newest draft that opens, if any. */
+  restored?: { record: DraftRecord; doc: Motion };
+  /** The drafts that can be listed. */
+  drafts: DraftSummary[];
+  /** Records that cannot be used, with why (a newer draft whose motion does not open is one). */
+  broken: BrokenDraft[];
+}
+
+/** The newest draft whose motion opens; newer ones that do not are reported as broken and skipped. */
+export async function findLatestDraft(storage: DraftStorage): Promise<LatestDraft> {
+  const listing = await listDrafts(storage);
+  const broken = [...listing.broken];
+  let restored: LatestDraft["restored"];
+  for (const draft of listing.drafts) {
+    const read = await readDraftDocument(storage, draft.id);
+    if ("doc" in read) {
+      restored = read;
+      break;
+    }
+    broken.push({ key: draft.id, problem: read.problem });
+  }
+  const drafts = listing.drafts.filter((d) => !broken.some((b) => b.key === d.id));
+  return restored ? { restored, drafts, broken } : { drafts, broken };
+}
+
+function brokenNotice(broken: readonly BrokenDraft[]): string | undefined {
+  if (broken.length === 0) return undefined;
+  return broken.length === 1
+    ? "1 stored draft could not be read and was skipped (see below)."
+    : `${broken.length} stored drafts could not be read and were skipped (see below).`;
+}
+
+/**
+ * Opens the editor: reopens the last saved draft that can be read ("Draft restored: NAME, saved HH:MM"), or
+ * starts from the template. Runs once per page; broken records are listed, never opened.
+ */
+export async function startEditor(ctx: AppContext): Promise<void> {
+  const first = editorOf(ctx.store.get());
+  if (first.history || first.starting) return;
+  patchEditor(ctx.store, { starting: true });
+  const controller = editorController(ctx);
+  let latest: LatestDraft = { drafts: [], broken: [] };
+  let listProblem: string | undefined;
+  try {
+    const storage = await controller.storage;
+    const lost = await recoverPending(storage, controller.pending);
+    latest = await findLatestDraft(storage);
+    if (lost) latest = { ...latest, broken: [...latest.broken, lost] };
+  } catch (e) {
+    listProblem = `The drafts could not be read (${message(e)}).`;
+  }
+  const { restored, drafts, broken } = latest;
+  const problem = listProblem ?? controller.storageProblem ?? brokenNotice(broken);
+  patchEditor(ctx.store, (s) => {
+    if (s.history) return { starting: false };
+    const common = {
+      starting: false,
+      drafts,
+      brokenDrafts: broken,
+      draftsNotice: problem ? { tone: "warning" as const, text: problem } : undefined,
+    };
+    if (!restored) {
+      return { ...startDocument(s, newMotion({ zeros: robotZeros(ctx) }), undefined), ...common };
+    }
+    const { record, doc } = restored;
+    return {
+      ...startDocument(s, doc, record.id),
+      ...common,
+      savedAt: record.savedAt,
+      notice: {
+        tone: "info",
+        text: `Draft restored: ${doc.name}, saved ${formatSavedAt(record.savedAt, Date.now())}.`,
+      },
+    };
+  });
+}

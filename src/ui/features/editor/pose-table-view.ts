@@ -1,0 +1,148 @@
+import { html, nothing, type TemplateResult } from "lit-html";
+import type { Motion, MotionScene, SceneRecord } from "../../../motion/index.ts";
+import { safeRange } from "../../../protocol/servo-limits.ts";
+import type { ViewContext } from "../../shell/view-types.ts";
+import { jointName } from "../zeros/editor.ts";
+import { choosePort, chooseTorque, endSlide, slidePosition, typePosition } from "./actions.ts";
+import type { EditorState, FieldProblem } from "./state.ts";
+import { inputValue, PORT_VALUES, TORQUE_VALUES } from "./view-parts.ts";
+
+/**
+ * The pose table of the selected scene: every servo with its joint name, start and end positions (number
+ * fields; a slider for the end, the key pose), torque and port. A refused value stays in its field, marked,
+ * with the reason on the line below it.
+ */
+
+function positionField(
+  ctx: ViewContext,
+  rec: SceneRecord,
+  side: "start" | "end",
+  problem: FieldProblem | undefined,
+  unsafe: boolean,
+): TemplateResult {
+  const name = jointName(rec.id);
+  const value = side === "end" ? rec.end : rec.start;
+  const describedBy = [problem ? `problem-${side}-${rec.id}` : "", unsafe ? `unsafe-${side}-${rec.id}` : ""]
+    .filter((x) => x !== "")
+    .join(" ");
+  return html`<input
+    id=${`${side}-${rec.id}`}
+    class="num ${unsafe ? "is-unsafe" : ""}"
+    type="number"
+    inputmode="numeric"
+    min="0"
+    max="254"
+    step="1"
+    data-testid=${`${side}-${rec.id}`}
+    aria-label=${`${name} (servo ${rec.id}), ${side} position`}
+    aria-invalid=${problem ? "true" : "false"}
+    aria-describedby=${describedBy === "" ? nothing : describedBy}
+    .value=${problem?.text ?? String(value)}
+    @change=${(e: Event) => typePosition(ctx, rec.id, side, inputValue(e))}
+  />`;
+}
+
+function outsideSafe(id: number, p: number): boolean {
+  const r = safeRange(id);
+  return r !== undefined && (p < r.min || p > r.max);
+}
+
+function poseRow(
+  ctx: ViewContext,
+  s: EditorState,
+  rec: SceneRecord,
+  previous: SceneRecord | undefined,
+): TemplateResult {
+  const id = rec.id;
+  const name = jointName(id);
+  const range = safeRange(id) ?? { min: 0, max: 254 };
+  const startProblem = s.problems[`start:${id}`];
+  const endProblem = s.problems[`end:${id}`];
+  const unsafeStart = outsideSafe(id, rec.start);
+  const unsafeEnd = outsideSafe(id, rec.end);
+  const jump = previous !== undefined && previous.end !== rec.start ? previous.end : undefined;
+  return html`
+    <tr class=${startProblem || endProblem ? "is-invalid" : ""} data-servo=${id}>
+      <td class="num pose-id">${id}</td>
+      <th scope="row" class="pose-name">${name}</th>
+      <td class="pose-start">
+        ${positionField(ctx, rec, "start", startProblem, unsafeStart)}
+        ${
+          jump === undefined
+            ? nothing
+            : html`<span class="pose-jump small" data-testid=${`jump-${id}`}>
+                <span aria-hidden="true">≠</span><span class="sr-only">jumps: the scene before ends at</span>
+                <span class="num">${jump}</span>
+              </span>`
+        }
+      </td>
+      <td class="pose-end">${positionField(ctx, rec, "end", endProblem, unsafeEnd)}</td>
+      <td class="pose-slider">
+        <input
+          type="range"
+          min=${range.min}
+          max=${range.max}
+          step="1"
+          data-testid=${`slider-${id}`}
+          aria-label=${`${name} (servo ${id}), end position slider, safe range ${range.min} to ${range.max}`}
+          .value=${String(rec.end)}
+          @input=${(e: Event) => slidePosition(ctx, id, Number(inputValue(e)))}
+          @change=${() => endSlide(ctx)}
+        />
+      </td>
+      <td class="pose-torque">
+        <select
+          aria-label=${`Torque of ${name} (0 strong to 4 weak)`}
+          @change=${(e: Event) => chooseTorque(ctx, id, Number(inputValue(e)))}
+        >
+          ${TORQUE_VALUES.map((t) => html`<option value=${t} ?selected=${t === rec.torque}>${t}</option>`)}
+        </select>
+      </td>
+      <td class="pose-port">
+        <select aria-label=${`Port value of ${name}`} @change=${(e: Event) => choosePort(ctx, id, Number(inputValue(e)))}>
+          ${PORT_VALUES.map((p) => html`<option value=${p} ?selected=${p === rec.port}>${p}</option>`)}
+        </select>
+      </td>
+    </tr>
+    ${
+      startProblem || endProblem || unsafeStart || unsafeEnd
+        ? html`<tr class="pose-note" data-servo-note=${id}>
+            <td></td>
+            <td colspan="6">
+              ${startProblem ? html`<p id=${`problem-start-${id}`} class="text-danger small field-problem" data-testid="field-problem">${startProblem.message}</p>` : nothing}
+              ${endProblem ? html`<p id=${`problem-end-${id}`} class="text-danger small field-problem" data-testid="field-problem">${endProblem.message}</p>` : nothing}
+              ${unsafeStart ? html`<p id=${`unsafe-start-${id}`} class="text-warning small">Start ${rec.start} is outside the safe range ${range.min}–${range.max}.</p>` : nothing}
+              ${unsafeEnd ? html`<p id=${`unsafe-end-${id}`} class="text-warning small">End ${rec.end} is outside the safe range ${range.min}–${range.max}.</p>` : nothing}
+            </td>
+          </tr>`
+        : nothing
+    }
+  `;
+}
+
+export function poseTable(ctx: ViewContext, s: EditorState, doc: Motion, scene: MotionScene): TemplateResult {
+  const previous = doc.scenes[s.scene - 1];
+  return html`
+    <div class="table-wrap pose-wrap">
+      <table class="data-table pose-table" data-testid="pose-table">
+        <caption class="sr-only">
+          Scene ${s.scene}: each servo's start and end position (0 to 254), torque (0 strong to 4 weak) and port value
+        </caption>
+        <thead>
+          <tr>
+            <th scope="col">ID</th>
+            <th scope="col">Joint</th>
+            <th scope="col">Start</th>
+            <th scope="col">End</th>
+            <th scope="col"><span class="sr-only">End slider</span></th>
+            <th scope="col" title="0 strong to 4 weak">Torque</th>
+            <th scope="col">Port</th>
+          </tr>
+        </thead>
+        <tbody>
+          ${scene.servos.map((rec, i) => poseRow(ctx, s, rec, previous?.servos[i]))}
+        </tbody>
+      </table>
+    </div>
+  `;
+}

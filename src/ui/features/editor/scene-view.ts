@@ -1,0 +1,171 @@
+import { html, nothing, type TemplateResult } from "lit-html";
+import type { Motion, MotionScene } from "../../../motion/index.ts";
+import type { ViewContext } from "../../shell/view-types.ts";
+import { chooseSceneTorque, typeSceneName, typeTiming } from "./actions.ts";
+import { detachBoundary, joinSelected } from "./pose-actions.ts";
+import { poseTable } from "./pose-table-view.ts";
+import type { EditorState } from "./state.ts";
+import { inputValue, problemText, TORQUE_WORDS } from "./view-parts.ts";
+
+/**
+ * The selected scene: its name, frames, time and torque; its two boundaries (continuity on by default, with a
+ * visible "detach" and "join" for each); the robot in 3D, when present; and the pose table.
+ */
+
+function jumpsAt(doc: Motion, k: number): number {
+  const before = doc.scenes[k - 1];
+  const scene = doc.scenes[k];
+  if (!before || !scene) return 0;
+  return scene.servos.filter((r, i) => before.servos[i]?.end !== r.start).length;
+}
+
+function detachBox(ctx: ViewContext, s: EditorState, b: number, text: string): TemplateResult {
+  return html`<label class="check small">
+    <input
+      type="checkbox"
+      data-testid=${`detach-${b}`}
+      .checked=${s.detached.includes(b)}
+      @change=${(e: Event) => detachBoundary(ctx, b, (e.target as HTMLInputElement).checked)}
+    />
+    ${text}
+  </label>`;
+}
+
+function boundaries(ctx: ViewContext, s: EditorState, doc: Motion): TemplateResult {
+  const k = s.scene;
+  const last = doc.scenes.length - 1;
+  const servos = doc.servos.length;
+  const jumpsBefore = jumpsAt(doc, k);
+  const jumpsAfter = jumpsAt(doc, k + 1);
+  return html`
+    <div class="continuity" role="group" aria-labelledby="continuity-title" data-testid="continuity">
+      <h3 id="continuity-title" class="continuity-title">Continuity</h3>
+      <div class="boundary">
+        ${
+          k === 0
+            ? html`<p class="small">Starts from the motion's first pose (scene 0's start).</p>`
+            : html`<p class="small" data-testid="boundary-start">
+                  ${
+                    jumpsBefore === 0
+                      ? `Starts where scene ${k - 1} ends (all ${servos} servos joined).`
+                      : `Starts where scene ${k - 1} ends, except ${jumpsBefore} ${jumpsBefore === 1 ? "servo that jumps" : "servos that jump"} (≠ in the table).`
+                  }
+                </p>
+                <div class="row-actions">
+                  ${detachBox(ctx, s, k, `Detach from scene ${k - 1}`)}
+                  ${
+                    jumpsBefore > 0
+                      ? html`<button type="button" class="btn" data-testid="join-scene" @click=${() => joinSelected(ctx)}>
+                          Join to scene ${k - 1}
+                        </button>`
+                      : nothing
+                  }
+                </div>`
+        }
+      </div>
+      <div class="boundary">
+        ${
+          k === last
+            ? html`<p class="small">The last scene: the motion ends in its end pose.</p>`
+            : html`<p class="small" data-testid="boundary-end">
+                  ${
+                    jumpsAfter === 0
+                      ? `Scene ${k + 1} starts where this one ends (all ${servos} servos joined).`
+                      : `Scene ${k + 1} starts where this one ends, except ${jumpsAfter} ${jumpsAfter === 1 ? "servo" : "servos"}.`
+                  }
+                </p>
+                ${detachBox(ctx, s, k + 1, `Detach from scene ${k + 1}`)}`
+        }
+      </div>
+      <p class="muted small">
+        Joined: changing a start also moves the end of the scene before, and changing an end also moves the start of
+        the scene after, so the motion stays smooth. Detached: only the side you change moves (the servo then jumps).
+      </p>
+      ${problemText("join-problem", s.problems.join)}
+    </div>
+  `;
+}
+
+function sceneTorque(scene: MotionScene): number | undefined {
+  const first = scene.servos[0]?.torque;
+  return scene.servos.every((r) => r.torque === first) ? first : undefined;
+}
+
+function fields(ctx: ViewContext, s: EditorState, scene: MotionScene): TemplateResult {
+  const p = s.problems;
+  const torque = sceneTorque(scene);
+  const every = scene.frames > 0 ? Math.floor(scene.timeMs / scene.frames) : 0;
+  return html`
+    <div class="scene-fields">
+      <label class="editor-field scene-name-field">
+        <span>Name</span>
+        <input
+          type="text"
+          data-testid="scene-name"
+          maxlength="99"
+          spellcheck="false"
+          aria-invalid=${p["scene-name"] ? "true" : "false"}
+          aria-describedby=${p["scene-name"] ? "scene-name-problem" : nothing}
+          .value=${p["scene-name"]?.text ?? scene.name}
+          @change=${(e: Event) => typeSceneName(ctx, inputValue(e))}
+        />
+      </label>
+      <label class="editor-field">
+        <span>Frames</span>
+        <input
+          type="number"
+          class="num"
+          min="1"
+          step="1"
+          data-testid="scene-frames"
+          aria-invalid=${p.frames ? "true" : "false"}
+          aria-describedby=${p.frames ? "frames-problem" : "frame-every"}
+          .value=${p.frames?.text ?? String(scene.frames)}
+          @change=${(e: Event) => typeTiming(ctx, "frames", inputValue(e))}
+        />
+      </label>
+      <label class="editor-field">
+        <span>Time (ms)</span>
+        <input
+          type="number"
+          class="num"
+          min="20"
+          step="10"
+          data-testid="scene-time"
+          aria-invalid=${p.timeMs ? "true" : "false"}
+          aria-describedby=${p.timeMs ? "time-problem" : "frame-every"}
+          .value=${p.timeMs?.text ?? String(scene.timeMs)}
+          @change=${(e: Event) => typeTiming(ctx, "timeMs", inputValue(e))}
+        />
+      </label>
+      <label class="editor-field">
+        <span>Torque (all servos)</span>
+        <select data-testid="scene-torque" @change=${(e: Event) => chooseSceneTorque(ctx, Number(inputValue(e)))}>
+          ${torque === undefined ? html`<option value="" selected disabled>mixed</option>` : nothing}
+          ${TORQUE_WORDS.map((t, i) => html`<option value=${i} ?selected=${i === torque}>${t}</option>`)}
+        </select>
+      </label>
+      <p id="frame-every" class="muted small scene-every">A frame every ${every} ms.</p>
+    </div>
+    ${problemText("scene-name-problem", p["scene-name"])} ${problemText("frames-problem", p.frames)}
+    ${problemText("time-problem", p.timeMs)} ${problemText("scene-torque-problem", p["scene-torque"])}
+  `;
+}
+
+export function sceneCard(
+  ctx: ViewContext,
+  s: EditorState,
+  doc: Motion,
+  robot: TemplateResult | typeof nothing,
+) {
+  const scene = doc.scenes[s.scene]!;
+  return html`
+    <section class="card editor-scene" aria-labelledby="scene-title" data-testid="scene-card">
+      <div class="card-head">
+        <h2 id="scene-title" class="card-title long-text">Scene ${s.scene}: ${scene.name}</h2>
+      </div>
+      ${fields(ctx, s, scene)} ${boundaries(ctx, s, doc)}
+      <div class="editor-pose">${robot} ${poseTable(ctx, s, doc, scene)}</div>
+    </section>
+  `;
+}

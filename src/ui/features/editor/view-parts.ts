@@ -1,0 +1,19 @@
+import { html, nothing, type TemplateResult } from "lit-html";
+import type { FieldProblem } from "./state.ts";
+
+/** Small pieces the editor's views share. */
+
+/** The message of a refused edit, under its control (its id goes into the control's aria-describedby). */
+export function problemText(id: string, problem: FieldProblem | undefined): TemplateResult | typeof nothing {
+  if (!problem) return nothing;
+  return html`<p id=${id} class="text-danger small field-problem" data-testid="field-problem">${problem.message}</p>`;
+}
+
+export const TORQUE_WORDS: readonly string[] = ["0 (strong)", "1", "2", "3", "4 (weak)"];
+export const TORQUE_VALUES: readonly number[] = [0, 1, 2, 3, 4];
+export const PORT_VALUES: readonly number[] = [0, 1, 2, 3];
+
+/** The number typed into a number field, from its event. */
+export function inputValue(e: Event): string {
+  return (e.target as HTMLInputElement | HTMLSelectElement).value;
+}
