@@ -122,6 +122,14 @@ const VIEWS: readonly [string, (page: Page) => Promise<void>][] = [
   ],
   ["Motions", (page) => heading(page, /^Motions/)],
   [
+    "Editor",
+    async (page) => {
+      await heading(page, "Motion editor");
+      // With a robot connected, teach-in and tethered play are offered too; the 3D robot is drawn.
+      await page.getByRole("button", { name: /teach-in/i }).first().waitFor();
+    },
+  ],
+  [
     "Sensors",
     async (page) => {
       await heading(page, "Sensors");
