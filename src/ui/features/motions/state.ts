@@ -101,6 +101,8 @@ export interface MotionsState {
   /** The motion number whose button was pressed last, so the run's progress and result show beside it. */
   runFrom?: number;
   soundNotice?: Notice;
+  /** The Run tab shows the robot in 3D ("Show the robot in 3D"; kept for the connection). */
+  robot3dShown?: boolean;
 }
 
 export function motionFilesOf(s: AppState): MotionFilesState {

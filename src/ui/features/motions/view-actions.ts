@@ -49,6 +49,11 @@ export function togglePreview(ctx: AppContext, id: number): void {
   patchMotionFiles(ctx.store, { previewed: files.previewed === id ? undefined : id });
 }
 
+/** The Run tab's "Show the robot in 3D" / "Hide the robot in 3D" (kept for the connection). */
+export function toggleLiveRobot(ctx: AppContext): void {
+  patchMotions(ctx.store, (m) => ({ robot3dShown: !m.robot3dShown }));
+}
+
 /** A Run button: remembers which one, so that the confirmation, progress and result show beside it. */
 export function pressRun(ctx: AppContext, number: number): void {
   patchMotions(ctx.store, { runFrom: number });

@@ -48,6 +48,7 @@ export class ServoMoves implements Controller {
         servosTaken(ctx);
         patchServos(ctx.store, (x) => ({
           positions: setAt(x.positions, id, status.position),
+          positionsAt: Date.now(),
           silent: x.silent.filter((s) => s !== id),
         }));
       } catch (e) {
@@ -135,6 +136,7 @@ export async function readAllPositions(ctx: AppContext): Promise<void> {
         drafts: {},
         silent,
         readAt: Date.now(),
+        positionsAt: Date.now(),
         notice:
           silent.length === 0
             ? { tone: "ok", text: `Read all ${servos.length} servos.` }
@@ -227,6 +229,11 @@ export function cancelPosture(ctx: AppContext): void {
 
 export function setPostureSpeed(ctx: AppContext, speed: number): void {
   patchServos(ctx.store, { speed });
+}
+
+/** "Show the robot in 3D" / "Hide the robot in 3D" (kept for the connection). */
+export function toggleLiveRobot(ctx: AppContext): void {
+  patchServos(ctx.store, (x) => ({ robot3dShown: !x.robot3dShown }));
 }
 
 /** The view is left (or the robot disconnected, which ends the sender with its scope): drop waiting moves. */

@@ -2,6 +2,7 @@ import "../../styles/tools.css";
 import { html, nothing, type TemplateResult } from "lit-html";
 import { live } from "lit-html/directives/live.js";
 import { formatClockTime } from "../../format.ts";
+import { liveRobotPanel } from "../../robot3d/live-robot.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
 import { jointName } from "../zeros/editor.ts";
@@ -19,6 +20,7 @@ import {
   setPostureSpeed,
   setTorque,
   startServoControl,
+  toggleLiveRobot,
 } from "./actions.ts";
 import { SERVO_IDS, servoRange, servosOf } from "./state.ts";
 
@@ -200,6 +202,21 @@ function controlCard(ctx: ViewContext): TemplateResult {
   `;
 }
 
+/** The robot in 3D: the demo robot follows its servos live; a robot on a cable is drawn as last read. */
+function liveRobot(ctx: ViewContext): TemplateResult {
+  const s = servosOf(ctx.state);
+  return liveRobotPanel({
+    id: "servos",
+    shown: s.robot3dShown === true,
+    onToggle: () => toggleLiveRobot(ctx),
+    demo: ctx.session.demoSim,
+    known: { positions: s.positions, at: s.positionsAt },
+    robotZeros: ctx.state.zeros.stored,
+    motionPlaying: ctx.state.connection.playing !== undefined,
+    textVersion: "the servo table lists the positions read, in numbers",
+  });
+}
+
 function render(ctx: ViewContext): TemplateResult {
   const acked = ctx.state.acks?.servos === true;
   return html`
@@ -208,7 +225,7 @@ function render(ctx: ViewContext): TemplateResult {
         <h1 id="view-title">Servos</h1>
         <p class="muted">Read and move single servos within their safe ranges, in the controller's direct mode.</p>
       </header>
-      ${acked ? nothing : safetyNotice(ctx)} ${controlCard(ctx)}
+      ${acked ? nothing : safetyNotice(ctx)} ${liveRobot(ctx)} ${controlCard(ctx)}
     </div>
   `;
 }

@@ -21,6 +21,10 @@ export interface ServosState {
   silent: number[];
   /** Wall-clock ms of the last "Read all positions". */
   readAt?: number;
+  /** Wall-clock ms of the last position the robot reported (a read or a move's reply). */
+  positionsAt?: number;
+  /** The view shows the robot in 3D ("Show the robot in 3D"; kept for the connection). */
+  robot3dShown?: boolean;
   busy?: "entering" | "leaving" | "reading" | "posture";
   confirmingPosture: boolean;
   /** Speed of "All to basic posture": 0 (fast) .. 4 (slow). */

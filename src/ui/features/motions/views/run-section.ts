@@ -1,8 +1,10 @@
 import { html, nothing, type TemplateResult } from "lit-html";
 import { BASIC_POSTURE_MOTION, SOUND_LENGTHS_MS, soundLengthMs } from "../../../../protocol/catalog.ts";
 import type { AppState } from "../../../app-state.ts";
+import { liveRobotPanel } from "../../../robot3d/live-robot.ts";
 import { liveNotice } from "../../../shell/notice.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
+import { servosOf } from "../../servos/state.ts";
 import { formatSeconds } from "../plot-data.ts";
 import {
   BASIC_POSTURE_GUIDANCE,
@@ -18,7 +20,7 @@ import {
 } from "../run-actions.ts";
 import { DOWNLOAD_MOTION_NUMBERS } from "../slot-book.ts";
 import { motionsOf, type RunningMotion, robotBusyReason } from "../state.ts";
-import { pressRun } from "../view-actions.ts";
+import { pressRun, toggleLiveRobot } from "../view-actions.ts";
 import { keepInView } from "./keep-in-view.ts";
 
 /**
@@ -165,6 +167,22 @@ function otherSlots(ctx: ViewContext, s: AppState, busy: boolean): TemplateResul
   `;
 }
 
+/** The robot in 3D, above the Run buttons: the demo robot moves there as it plays (hardware: last read pose). */
+function liveRobot(ctx: ViewContext): TemplateResult {
+  const s = ctx.state;
+  const servos = servosOf(s);
+  return liveRobotPanel({
+    id: "run",
+    shown: motionsOf(s).robot3dShown === true,
+    onToggle: () => toggleLiveRobot(ctx),
+    demo: ctx.session.demoSim,
+    known: { positions: servos.positions, at: servos.positionsAt },
+    robotZeros: s.zeros.stored,
+    motionPlaying: s.connection.playing !== undefined || motionsOf(s).run !== undefined,
+    textVersion: "the Servos view lists the positions in numbers",
+  });
+}
+
 export function runSection(ctx: ViewContext): TemplateResult {
   const s = ctx.state;
   const c = s.connection;
@@ -174,6 +192,7 @@ export function runSection(ctx: ViewContext): TemplateResult {
   const needsPosture = c.phase === "connected" && !c.basicPostureConfirmed;
   const downloads = downloadedOffers(m.motionBook);
   return html`
+    ${liveRobot(ctx)}
     <section class="card" aria-labelledby="run-title" data-testid="run-card">
       <h2 id="run-title" class="card-title">Run motions</h2>
       ${
