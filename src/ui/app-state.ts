@@ -1,3 +1,4 @@
+import type { Locale } from "../i18n/locale.ts";
 import type { ConnectionState, KnownPort } from "./features/connection/state.ts";
 import { initialConnection } from "./features/connection/state.ts";
 import type { EditorLiveState } from "./features/editor/live-state.ts";
@@ -42,6 +43,11 @@ export interface Notice {
 }
 
 export interface AppState {
+  /**
+   * The language the panel speaks (chosen at start from the saved choice or the browser's languages; the
+   * language switch changes it). Views translate with it: `translator(messages, ctx.state.locale)`.
+   */
+  locale: Locale;
   serialSupported: boolean;
   secureContext: boolean;
   route: string;
@@ -83,9 +89,12 @@ export function initialState(env: {
   serialSupported: boolean;
   secureContext: boolean;
   route: string;
+  /** English when not given. */
+  locale?: Locale;
 }): AppState {
   return {
     ...env,
+    locale: env.locale ?? "en",
     viewsLoaded: 0,
     connection: initialConnection(),
     knownPorts: [],

@@ -5,6 +5,10 @@
  * nothing is running.
  */
 
+import type { Locale } from "../i18n/locale.ts";
+import { translator } from "../i18n/translate.ts";
+import { uiMessages } from "./messages.ts";
+
 const BUSY_QUERY = "rbc-panel:busy?";
 
 interface BusyQueryDetail {
@@ -28,7 +32,11 @@ export function answerBusyQueries(probe: () => string | undefined, target: Event
   return () => target.removeEventListener(BUSY_QUERY, listener);
 }
 
-/** The sentence for the operations the app lists as running (its `running` labels). */
-export function busySentence(running: readonly string[]): string | undefined {
-  return running.length === 0 ? undefined : `Still running: ${running.join(", ")}.`;
+/**
+ * The sentence for the operations the app lists as running (its `running` labels, made in the language of
+ * the moment), in the panel's language (English when not given).
+ */
+export function busySentence(running: readonly string[], locale: Locale = "en"): string | undefined {
+  if (running.length === 0) return undefined;
+  return translator(uiMessages, locale)("busy.stillRunning", { list: running.join(", ") });
 }

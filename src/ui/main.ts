@@ -10,6 +10,7 @@ import { Session } from "./session.ts";
 import { showRoute, viewArrived } from "./shell/actions.ts";
 import { appView, pageTitle } from "./shell/app-view.ts";
 import { escapeTakenElsewhere } from "./shell/escape.ts";
+import { browserStorage, startLocale } from "./shell/locale-choice.ts";
 import { DEFAULT_VIEW, VIEWS } from "./shell/registry.ts";
 import type { AppView, ViewContext } from "./shell/view-types.ts";
 import { createStore, frameScheduler } from "./store.ts";
@@ -33,6 +34,8 @@ function startApp(root: HTMLElement): void {
       serialSupported: serial !== undefined,
       secureContext: window.isSecureContext,
       route: routeFromHash(location.hash, VIEWS) ?? DEFAULT_VIEW,
+      // The saved choice of the language switch, else the browser's languages (index.html says "en" until now).
+      locale: startLocale(browserStorage(), navigator.languages ?? [navigator.language]),
     }),
   );
   const packetLog = new PacketLog(LOG_CAPACITY, (clockMs) => session.epochOf(clockMs));
@@ -53,6 +56,7 @@ function startApp(root: HTMLElement): void {
     render(appView(ctx, loader), root);
     const title = pageTitle(ctx);
     if (document.title !== title) document.title = title;
+    if (document.documentElement.lang !== state.locale) document.documentElement.lang = state.locale;
     // When connecting or a lost link replaces the focused control, keep keyboard users in the main area.
     if (state.connection.phase !== renderedPhase) {
       renderedPhase = state.connection.phase;
@@ -94,7 +98,7 @@ function startApp(root: HTMLElement): void {
   // A reload (the update prompt's, or the browser's) or a closed tab would cut short what runs on the robot: an
   // upload would leave its download half done. The update prompt asks this before reloading; the browser asks
   // the person ("Leave site?") while something runs.
-  answerBusyQueries(() => busySentence(store.get().running));
+  answerBusyQueries(() => busySentence(store.get().running, store.get().locale));
   window.addEventListener("beforeunload", (e) => {
     if (store.get().running.length > 0) e.preventDefault();
   });

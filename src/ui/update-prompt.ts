@@ -1,6 +1,9 @@
 import { html, nothing, render, type TemplateResult } from "lit-html";
 import type { RegisterSWOptions } from "vite-plugin-pwa/types";
+import { isLocale, type Locale } from "../i18n/locale.ts";
+import { translator } from "../i18n/translate.ts";
 import { whatIsBusy } from "./busy.ts";
+import { uiMessages } from "./messages.ts";
 
 /**
  * The hosted panel's service worker updates only when the owner says so. A new version is downloaded in the
@@ -9,7 +12,8 @@ import { whatIsBusy } from "./busy.ts";
  * Even when another tab of the panel takes the new version (its own "Reload"), this tab only says so.
  *
  * Started once from index.html (vite.config.ts adds a module script that Vite bundles into the entry chunk);
- * the one-file panel has no service worker and no notice.
+ * the one-file panel has no service worker and no notice. It speaks the page's language: the app sets `lang`
+ * on the page (English until then), and the notice is drawn again when it changes.
  */
 
 /** `registerSW` of vite-plugin-pwa's `virtual:pwa-register` (passed in, so this module has no virtual import). */
@@ -39,6 +43,8 @@ export interface UpdatePromptOptions {
   busy?: () => string | undefined;
   /** Where the notice is drawn (default: a live region inserted before #app). */
   host?: HTMLElement;
+  /** The language to speak (default: the page's `lang`, which the app sets). */
+  locale?: () => Locale;
 }
 
 export interface UpdatePromptActions {
@@ -47,30 +53,41 @@ export interface UpdatePromptActions {
 }
 
 /** The notice for a state: empty when idle, so the live region stays in place and announces what appears. */
-export function updatePromptView(state: UpdatePromptState, actions: UpdatePromptActions): TemplateResult {
+export function updatePromptView(
+  state: UpdatePromptState,
+  actions: UpdatePromptActions,
+  locale: Locale = "en",
+): TemplateResult {
   if (state.phase === "idle") return html``;
+  const t = translator(uiMessages, locale);
   const text =
     state.phase === "elsewhere"
-      ? "The panel was updated in another tab. Reload this page when nothing is running to use the new version."
+      ? t("update.elsewhere")
       : state.phase === "reloading"
-        ? "Reloading with the new version…"
-        : "A new version of the panel is ready.";
+        ? t("update.reloading")
+        : t("update.ready");
   return html`
     <div class="notice notice--info banner-notice" data-testid="update-prompt">
       <div class="banner-text">
         <p>${text}</p>
-        ${state.blockedBy ? html`<p>${state.blockedBy} Reload when it has finished.</p>` : nothing}
+        ${state.blockedBy ? html`<p>${t("update.blocked", { busy: state.blockedBy })}</p>` : nothing}
       </div>
       ${
         state.phase === "reloading"
           ? nothing
           : html`
-            <button type="button" class="btn" @click=${actions.reload}>Reload</button>
-            <button type="button" class="btn btn--quiet" @click=${actions.later}>Later</button>
+            <button type="button" class="btn" @click=${actions.reload}>${t("update.reload")}</button>
+            <button type="button" class="btn btn--quiet" @click=${actions.later}>${t("update.later")}</button>
           `
       }
     </div>
   `;
+}
+
+/** The page's language as the app set it on `<html lang>`; English before the app runs. */
+function pageLocale(): Locale {
+  const lang = document.documentElement.lang;
+  return isLocale(lang) ? lang : "en";
 }
 
 function defaultHost(): HTMLElement {
@@ -136,9 +153,15 @@ export function startUpdatePrompt(
       show();
     },
   };
+  const locale = options.locale ?? pageLocale;
   const show = (): void => {
-    render(updatePromptView(state, actions), host);
+    render(updatePromptView(state, actions, locale()), host);
   };
+  // The language switch sets `lang` on the page: say the notice again in the new language.
+  new MutationObserver(show).observe(document.documentElement, {
+    attributes: true,
+    attributeFilter: ["lang"],
+  });
 
   const applyUpdate = registerSW({
     immediate: true,

@@ -1,4 +1,7 @@
 import { html, nothing, type TemplateResult } from "lit-html";
+import type { Locale } from "../i18n/locale.ts";
+import { translator } from "../i18n/translate.ts";
+import { uiMessages } from "./messages.ts";
 
 /**
  * Which panel this is: the package version and the commit it was built from, and where its changes are
@@ -22,18 +25,22 @@ export const PANEL_VERSION: PanelVersion = {
   changelogUrl: typeof __RBC_CHANGELOG_URL__ === "string" ? __RBC_CHANGELOG_URL__ : "",
 };
 
-/** "Version 0.1.0 (67f4344)". */
-export function versionText(info: PanelVersion = PANEL_VERSION): string {
-  return info.commit === "unknown" ? `Version ${info.version}` : `Version ${info.version} (${info.commit})`;
+/** "Version 0.1.0 (67f4344)" / "버전 0.1.0 (67f4344)". */
+export function versionText(info: PanelVersion = PANEL_VERSION, locale: Locale = "en"): string {
+  const t = translator(uiMessages, locale);
+  return info.commit === "unknown"
+    ? t("version.number", { version: info.version })
+    : t("version.numberCommit", { version: info.version, commit: info.commit });
 }
 
 /** A small line for the foot of the side navigation or the Robot view: the version and "What changed". */
-export function versionFooter(info: PanelVersion = PANEL_VERSION): TemplateResult {
+export function versionFooter(info: PanelVersion = PANEL_VERSION, locale: Locale = "en"): TemplateResult {
+  const t = translator(uiMessages, locale);
   return html`
     <p class="muted panel-version" data-testid="panel-version">
-      RBC Panel · ${versionText(info)}${
+      ${t("panel.name")} · ${versionText(info, locale)}${
         info.changelogUrl
-          ? html` · <a href=${info.changelogUrl} target="_blank" rel="noopener noreferrer">What changed</a>`
+          ? html` · <a href=${info.changelogUrl} target="_blank" rel="noopener noreferrer">${t("version.whatChanged")}</a>`
           : nothing
       }
     </p>

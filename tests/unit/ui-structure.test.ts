@@ -41,6 +41,20 @@ describe("the panel's structure", () => {
     expect(offenders).toEqual([]);
   });
 
+  it("keeps message catalogues (messages.ts) to data: they import nothing but src/i18n (docs/i18n.md)", () => {
+    const catalogues = files.filter(({ path }) => path === "messages.ts" || path.endsWith("/messages.ts"));
+    expect(catalogues.map((c) => c.path)).toEqual(
+      expect.arrayContaining(["messages.ts", "shell/messages.ts"]),
+    );
+    const offenders = catalogues.flatMap(({ path, text }) =>
+      [...text.matchAll(/from "([^"]+)"/g)]
+        .map((m) => m[1] ?? "")
+        .filter((from) => !/^(\.\.\/)+i18n\/[a-z-]+\.ts$/.test(from))
+        .map((from) => `${path}: ${from}`),
+    );
+    expect(offenders).toEqual([]);
+  });
+
   it("gives every feature its state, actions and views in src/ui/features/<name>/", () => {
     const features = readdirSync(join(UI, "features"));
     expect(features.sort()).toEqual([

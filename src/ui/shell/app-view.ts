@@ -1,28 +1,32 @@
 import { html, nothing, type TemplateResult } from "lit-html";
+import { translator } from "../../i18n/translate.ts";
 import { dismissStopNotice } from "../features/connection/actions.ts";
 import { connectCard } from "../features/connection/connect-card.ts";
 import { topBar } from "../features/connection/top-bar.ts";
 import { unsupportedCard } from "../features/connection/unsupported-card.ts";
+import { uiMessages } from "../messages.ts";
 import type { ViewLoader } from "../router.ts";
 import { versionFooter } from "../version.ts";
+import { shellMessages } from "./messages.ts";
 import { VIEWS } from "./registry.ts";
 import { sideNav } from "./side-nav.ts";
 import type { ViewContext } from "./view-types.ts";
 
 function mainContent(ctx: ViewContext, loader: ViewLoader): TemplateResult {
   const { route } = ctx.state;
+  const t = translator(shellMessages, ctx.state.locale);
   const failure = loader.failure(route);
   if (failure !== undefined) {
     return html`
       <section class="card">
-        <h1>This part of the panel did not load</h1>
-        <p>Its code could not be fetched. If you are offline, connect once so the panel can keep a copy.</p>
-        <button type="button" class="btn" @click=${() => loader.retry(route)}>Try again</button>
+        <h1>${t("shell.loadFailedTitle")}</h1>
+        <p>${t("shell.loadFailedText")}</p>
+        <button type="button" class="btn" @click=${() => loader.retry(route)}>${t("shell.tryAgain")}</button>
       </section>
     `;
   }
   const view = loader.get(route);
-  if (!view) return html`<p class="muted" aria-busy="true">Loading…</p>`;
+  if (!view) return html`<p class="muted" aria-busy="true">${t("shell.loading")}</p>`;
   if (view.needsRobot && ctx.state.connection.phase !== "connected") {
     return ctx.state.serialSupported ? connectCard(ctx) : unsupportedCard(ctx);
   }
@@ -31,6 +35,7 @@ function mainContent(ctx: ViewContext, loader: ViewLoader): TemplateResult {
 
 function stopBanner(ctx: ViewContext): TemplateResult {
   const n = ctx.state.stopNotice;
+  const t = translator(shellMessages, ctx.state.locale);
   return html`
     <div class="stop-banner" role="status" aria-live="assertive" data-testid="stop-banner">
       ${
@@ -40,12 +45,15 @@ function stopBanner(ctx: ViewContext): TemplateResult {
                 <p>${n.text}</p>
                 ${
                   n.detail
-                    ? html`<details class="detail"><summary>Technical detail</summary><pre>${n.detail}</pre></details>`
+                    ? html`<details class="detail">
+                        <summary>${t("shell.technicalDetail")}</summary>
+                        <pre lang="en">${n.detail}</pre>
+                      </details>`
                     : nothing
                 }
               </div>
               <button type="button" class="btn btn--quiet" @click=${() => dismissStopNotice(ctx)}>
-                Dismiss
+                ${t("shell.dismiss")}
               </button>
             </div>`
           : nothing
@@ -61,21 +69,25 @@ function focusMain(e: Event): void {
 
 /** The whole page: top bar, Stop result, side navigation and the chosen view. */
 export function appView(ctx: ViewContext, loader: ViewLoader): TemplateResult {
+  const t = translator(shellMessages, ctx.state.locale);
   return html`
-    <a class="skip-link" href="#main" @click=${focusMain}>Skip to content</a>
+    <a class="skip-link" href="#main" @click=${focusMain}>${t("shell.skipToContent")}</a>
     ${topBar(ctx)} ${stopBanner(ctx)}
     <div class="layout">
       ${sideNav(ctx)}
       <main id="main" tabindex="-1">${mainContent(ctx, loader)}</main>
     </div>
-    <footer class="page-footer">${versionFooter()}</footer>
+    <footer class="page-footer">${versionFooter(undefined, ctx.state.locale)}</footer>
   `;
 }
 
 /** The page title: the view first (what a tab strip or a screen reader shows), then the robot, then the panel. */
 export function pageTitle(ctx: Pick<ViewContext, "state">): string {
-  const view = VIEWS.find((v) => v.id === ctx.state.route)?.label;
+  const t = translator(shellMessages, ctx.state.locale);
+  const registration = VIEWS.find((v) => v.id === ctx.state.route);
+  const view = registration ? t(registration.label) : undefined;
   const { phase, robot: label } = ctx.state.connection;
-  const robot = phase === "connected" && label?.kind === "demo" ? "Demo robot" : undefined;
-  return [view, robot, "RBC Panel"].filter((part) => part).join(" · ");
+  const robot = phase === "connected" && label?.kind === "demo" ? t("shell.demoRobot") : undefined;
+  const panel = translator(uiMessages, ctx.state.locale)("panel.name");
+  return [view, robot, panel].filter((part) => part).join(" · ");
 }

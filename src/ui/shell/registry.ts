@@ -1,19 +1,19 @@
 import robotView from "../features/robot/robot-view.ts";
-import type { ViewRegistration } from "./view-types.ts";
+import type { NavRegistration } from "./view-types.ts";
 
 /**
- * The side navigation, in order. A new view is one file exporting `default: AppView` plus one line here;
- * views other than the first load lazily.
+ * The side navigation, in order. A new view is one file exporting `default: AppView` plus one line here (and
+ * its name in ./messages.ts); views other than the first load lazily.
  */
-export const VIEWS: readonly ViewRegistration[] = [
-  { id: "robot", label: "Robot", load: async () => ({ default: robotView }) },
-  { id: "zeros", label: "Zeros", load: () => import("../features/zeros/zeros-view.ts") },
-  { id: "motions", label: "Motions", load: () => import("../features/motions/motions-view.ts") },
-  { id: "editor", label: "Editor", load: () => import("../features/editor/editor-view.ts") },
-  { id: "sensors", label: "Sensors", load: () => import("../features/sensors/sensors-view.ts") },
-  { id: "servos", label: "Servos", load: () => import("../features/servos/servos-view.ts") },
-  { id: "firmware", label: "Firmware", load: () => import("../features/firmware/firmware-view.ts") },
-  { id: "log", label: "Log", load: () => import("../features/log/log-view.ts") },
+export const VIEWS: readonly NavRegistration[] = [
+  { id: "robot", label: "nav.robot", load: async () => ({ default: robotView }) },
+  { id: "zeros", label: "nav.zeros", load: () => import("../features/zeros/zeros-view.ts") },
+  { id: "motions", label: "nav.motions", load: () => import("../features/motions/motions-view.ts") },
+  { id: "editor", label: "nav.editor", load: () => import("../features/editor/editor-view.ts") },
+  { id: "sensors", label: "nav.sensors", load: () => import("../features/sensors/sensors-view.ts") },
+  { id: "servos", label: "nav.servos", load: () => import("../features/servos/servos-view.ts") },
+  { id: "firmware", label: "nav.firmware", load: () => import("../features/firmware/firmware-view.ts") },
+  { id: "log", label: "nav.log", load: () => import("../features/log/log-view.ts") },
 ];
 
 export const DEFAULT_VIEW = "robot";

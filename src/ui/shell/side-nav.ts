@@ -1,21 +1,50 @@
 import { html, nothing, type TemplateResult } from "lit-html";
+import { isLocale, LOCALE_NAMES, LOCALES } from "../../i18n/locale.ts";
+import { translator } from "../../i18n/translate.ts";
 import { hrefFor } from "../router.ts";
+import { chooseLocale } from "./actions.ts";
+import { shellMessages } from "./messages.ts";
 import { VIEWS } from "./registry.ts";
 import type { ViewContext } from "./view-types.ts";
 
-/** The list of views: a column on wide screens, a row of tabs on narrow ones. */
-export function sideNav(ctx: ViewContext): TemplateResult {
+/**
+ * The language switch. Its label is in both languages, and each language is named in itself, so a person who
+ * cannot read the current language still finds theirs.
+ */
+function languageSwitch(ctx: ViewContext): TemplateResult {
+  const { locale } = ctx.state;
+  const t = translator(shellMessages, locale);
+  const change = (e: Event): void => {
+    const value = (e.target as HTMLSelectElement).value;
+    if (isLocale(value)) chooseLocale(ctx.store, value);
+  };
   return html`
-    <nav class="side-nav" aria-label="Views">
+    <div class="language-switch">
+      <label for="language-switch">${t("shell.language")}</label>
+      <select id="language-switch" data-testid="language-switch" @change=${change}>
+        ${LOCALES.map(
+          (l) => html`<option value=${l} lang=${l} .selected=${l === locale}>${LOCALE_NAMES[l]}</option>`,
+        )}
+      </select>
+    </div>
+  `;
+}
+
+/** The list of views: a column on wide screens, a row of tabs on narrow ones; the language switch under it. */
+export function sideNav(ctx: ViewContext): TemplateResult {
+  const t = translator(shellMessages, ctx.state.locale);
+  return html`
+    <nav class="side-nav" aria-label=${t("nav.label")}>
       <ul>
         ${VIEWS.map(
           (v) => html`
             <li>
-              <a href=${hrefFor(v.id)} aria-current=${v.id === ctx.state.route ? "page" : nothing}>${v.label}</a>
+              <a href=${hrefFor(v.id)} aria-current=${v.id === ctx.state.route ? "page" : nothing}>${t(v.label)}</a>
             </li>
           `,
         )}
       </ul>
+      ${languageSwitch(ctx)}
     </nav>
   `;
 }

@@ -1,6 +1,7 @@
 import type { TemplateResult } from "lit-html";
 import type { AppState } from "../app-state.ts";
 import type { AppContext } from "../context.ts";
+import type { NavMessageKey } from "./messages.ts";
 
 /**
  * What every view gets: the state to render, and the context its actions need. Views read `state` and call
@@ -28,4 +29,9 @@ export interface ViewRegistration {
   id: string;
   label: string;
   load: () => Promise<{ default: AppView }>;
+}
+
+/** A view of the side navigation: its label is a key of the shell's catalogue (messages.ts), "nav.<id>". */
+export interface NavRegistration extends ViewRegistration {
+  label: NavMessageKey;
 }

@@ -1,14 +1,19 @@
+import { translator } from "../../../i18n/translate.ts";
 import type { AppContext } from "../../context.ts";
 import { errorNotice } from "../../error-text.ts";
+import { robotMessages } from "./messages.ts";
 
 /** Reads what the device card shows: identity, error code and free memory of both areas. */
 export async function refreshDeviceInfo(ctx: AppContext): Promise<void> {
   const { session, store } = ctx;
   if (store.get().device.loading || !session.current) return;
+  // Sentences are made in the language of the moment (a notice keeps its language if the switch changes).
+  const { locale } = store.get();
+  const t = translator(robotMessages, locale);
   store.update((s) => ({ device: { ...s.device, loading: true, notice: undefined } }));
   try {
     // Firmware and serial number were read when connecting; what changes is read here.
-    const info = await session.run("Reading device info", async (client) => {
+    const info = await session.run(t("robot.readingInfo"), async (client) => {
       const errorCode = await client.readErrorCode();
       const freeMotion = await client.readAvailableMemory("motion");
       const freeAction = await client.readAvailableMemory("action");
@@ -29,7 +34,7 @@ export async function refreshDeviceInfo(ctx: AppContext): Promise<void> {
     }));
   } catch (e) {
     store.update((s) => ({
-      device: { ...s.device, loading: false, notice: errorNotice("Reading the robot's details failed.", e) },
+      device: { ...s.device, loading: false, notice: errorNotice(t("robot.readFailed"), e, locale) },
     }));
   }
 }

@@ -1,41 +1,108 @@
 import { html, nothing, type TemplateResult } from "lit-html";
-import {
-  ACTION_AREA_BYTES,
-  errorCodeText,
-  MOTION_AREA_BYTES,
-  NO_ERROR,
-  platformName,
-} from "../../../protocol/catalog.ts";
+import { translator } from "../../../i18n/translate.ts";
+import { ACTION_AREA_BYTES, MOTION_AREA_BYTES, NO_ERROR } from "../../../protocol/catalog.ts";
 import { formatFirmware } from "../../../shared/format.ts";
-import { formatByteHex } from "../../format.ts";
+import { formatByteHex, formatTime } from "../../format.ts";
+import { shellMessages } from "../../shell/messages.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
 import { disconnect } from "../connection/actions.ts";
 import { refreshDeviceInfo } from "./actions.ts";
 import { memoryUsedRow } from "./memory-used.ts";
+import { type RobotTranslator, robotMessages } from "./messages.ts";
 
-const PLATFORM_WORDS: Record<string, string> = {
-  HUNO: "HUNO (humanoid)",
-  DINO: "DINO (dinosaur)",
-  DOGY: "DOGY (dog)",
-  PF2: "PF2 (user mode)",
-};
+/** The platforms the RBC knows (PROTOCOL.md §3.5), in words. */
+function platformText(t: RobotTranslator, platform: number): string {
+  switch (platform) {
+    case 1:
+      return t("robot.platformHuno");
+    case 2:
+      return t("robot.platformDino");
+    case 3:
+      return t("robot.platformDogy");
+    case 4:
+      return t("robot.platformPf2");
+    default:
+      return t("robot.platformUnknown", { platform: String(platform) });
+  }
+}
 
-function errorCodeLine(code: number | undefined): TemplateResult | string {
+/** The RBC's error codes (PROTOCOL.md §3.4; the same list as protocol/catalog.ts), as a person reads them. */
+function errorCodeWords(t: RobotTranslator, code: number): string {
+  switch (code) {
+    case NO_ERROR:
+      return t("robot.error.none");
+    case 1:
+      return t("robot.error.eeprom");
+    case 2:
+      return t("robot.error.checksum");
+    case 3:
+      return t("robot.error.motionsFull");
+    case 4:
+      return t("robot.error.actionsFull");
+    case 5:
+      return t("robot.error.platform");
+    case 6:
+      return t("robot.error.frameInterval");
+    case 7:
+      return t("robot.error.zeroSet");
+    case 8:
+      return t("robot.error.zeroData");
+    case 9:
+      return t("robot.error.servoCount");
+    case 10:
+      return t("robot.error.servoPosition");
+    case 11:
+      return t("robot.error.servoSilent");
+    default:
+      return t("robot.error.unknown", { code: String(code) });
+  }
+}
+
+function errorCodeLine(t: RobotTranslator, code: number | undefined): TemplateResult | string {
   if (code === undefined) return "—";
-  const words = errorCodeText(code);
-  const sentence = words.charAt(0).toUpperCase() + words.slice(1);
+  const sentence = errorCodeWords(t, code);
   if (code === NO_ERROR) return html`${sentence} <span class="muted">(${formatByteHex(code)})</span>`;
-  return html`<span class="text-warning">${sentence}</span> <span class="muted">(code ${code})</span>`;
+  return html`<span class="text-warning">${sentence}</span>
+    <span class="muted">${t("robot.codeNumber", { code: String(code) })}</span>`;
+}
+
+/**
+ * What the robot reported about itself that looks wrong. In English, the device's sentences. In Korean, the
+ * same facts in Korean (the platform is the one the device checks), with the device's sentences one click away.
+ */
+function identityWarnings(ctx: ViewContext, t: RobotTranslator): TemplateResult | typeof nothing {
+  const { identityWarnings: warnings, platform } = ctx.state.connection;
+  if (!warnings?.length) return nothing;
+  if (t.locale === "en") {
+    return html`<div class="notice notice--warning" data-testid="identity-warnings">
+      ${warnings.map((w) => html`<p>${w}</p>`)}
+    </div>`;
+  }
+  const unknownPlatform = platform !== undefined && (platform < 1 || platform > 4);
+  return html`<div class="notice notice--warning" data-testid="identity-warnings">
+    <p>
+      ${
+        unknownPlatform
+          ? t("robot.platformWarning", { platform: String(platform) })
+          : t("robot.identityWarning")
+      }
+    </p>
+    <details class="detail">
+      <summary>${translator(shellMessages, t.locale)("shell.technicalDetail")}</summary>
+      <pre lang="en">${warnings.join("\n")}</pre>
+    </details>
+  </div>`;
 }
 
 function render(ctx: ViewContext): TemplateResult {
-  const { connection: c, device: d } = ctx.state;
+  const { connection: c, device: d, locale } = ctx.state;
+  const t = translator(robotMessages, locale);
   const demo = c.robot?.kind === "demo";
   return html`
     <section class="card" aria-labelledby="view-title" data-testid="device-card">
       <div class="card-head">
-        <h1 id="view-title">${demo ? "Demo robot" : "Robot"}</h1>
+        <h1 id="view-title">${demo ? t("robot.titleDemo") : t("robot.title")}</h1>
         <div class="row-actions">
           <button
             type="button"
@@ -43,49 +110,43 @@ function render(ctx: ViewContext): TemplateResult {
             ?disabled=${d.loading}
             @click=${() => void refreshDeviceInfo(ctx)}
           >
-            ${d.loading ? "Reading…" : "Refresh"}
+            ${d.loading ? t("robot.reading") : t("robot.refresh")}
           </button>
           <button type="button" class="btn btn--quiet" @click=${() => disconnect(ctx)}>
-            Disconnect
+            ${t("robot.disconnect")}
           </button>
         </div>
       </div>
       <dl class="facts">
         <div>
-          <dt>Connected to</dt>
-          <dd>${demo ? "Demo robot (a simulated RBC in this page, not hardware)" : (c.robot?.name ?? "—")}</dd>
+          <dt>${t("robot.connectedTo")}</dt>
+          <dd>${demo ? t("robot.demoDescription") : (c.robot?.name ?? "—")}</dd>
         </div>
         <div>
-          <dt>Firmware</dt>
+          <dt>${t("robot.firmware")}</dt>
           <dd class="num" data-testid="firmware">${c.firmware ? formatFirmware(c.firmware) : "—"}</dd>
         </div>
         <div>
-          <dt>Serial number</dt>
-          <dd class="num" data-testid="serial-number">${c.serialNumber ?? "not reported"}</dd>
+          <dt>${t("robot.serialNumber")}</dt>
+          <dd class="num" data-testid="serial-number">${c.serialNumber ?? t("robot.notReported")}</dd>
         </div>
         <div>
-          <dt>Platform</dt>
-          <dd>${c.platform === undefined ? "—" : (PLATFORM_WORDS[platformName(c.platform)] ?? platformName(c.platform))}</dd>
+          <dt>${t("robot.platform")}</dt>
+          <dd>${c.platform === undefined ? "—" : platformText(t, c.platform)}</dd>
         </div>
         <div>
-          <dt>Error code</dt>
-          <dd data-testid="error-code">${errorCodeLine(d.errorCode)}</dd>
+          <dt>${t("robot.errorCode")}</dt>
+          <dd data-testid="error-code">${errorCodeLine(t, d.errorCode)}</dd>
         </div>
       </dl>
-      ${
-        c.identityWarnings?.length
-          ? html`<div class="notice notice--warning" data-testid="identity-warnings">
-              ${c.identityWarnings.map((w) => html`<p>${w}</p>`)}
-            </div>`
-          : nothing
-      }
-      <h2>Memory on the robot</h2>
+      ${identityWarnings(ctx, t)}
+      <h2>${t("robot.memoryTitle")}</h2>
       <div class="memory">
-        ${memoryUsedRow("memory-motion", "Motion area", d.freeMotion, MOTION_AREA_BYTES)}
-        ${memoryUsedRow("memory-action", "Action area", d.freeAction, ACTION_AREA_BYTES)}
+        ${memoryUsedRow(t, "memory-motion", t("robot.motionArea"), d.freeMotion, MOTION_AREA_BYTES)}
+        ${memoryUsedRow(t, "memory-action", t("robot.actionArea"), d.freeAction, ACTION_AREA_BYTES)}
       </div>
-      <p class="muted small">${d.readAt ? `Read from the robot at ${new Date(d.readAt).toLocaleTimeString()}.` : nothing}</p>
-      ${liveNotice(d.notice, "Device card result")}
+      <p class="muted small">${d.readAt ? t("robot.readAt", { time: formatTime(d.readAt, locale) }) : nothing}</p>
+      ${liveNotice(d.notice, t("robot.resultLabel"), locale)}
     </section>
   `;
 }

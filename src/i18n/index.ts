@@ -1,0 +1,26 @@
+/**
+ * The panel's and the command line's languages: the catalogues' type (`defineMessages`), the translator, the
+ * language of a browser, and numbers, units, dates and times written for a language. Pure: no DOM, no I/O.
+ * docs/i18n.md says how to use it.
+ */
+export type {
+  Catalogue,
+  KeysWithoutParams,
+  Message,
+  MessageText,
+  ParamNames,
+  Params,
+  PluralText,
+} from "./catalogue.ts";
+export { defineMessages } from "./catalogue.ts";
+export { isLocale, LOCALE_NAMES, LOCALES, type Locale, pickLocale } from "./locale.ts";
+export { formatDecimal, formatNumber, placeholdersOf, type Translator, translator } from "./translate.ts";
+export {
+  formatBytes,
+  formatDate,
+  formatDateTime,
+  formatKilobytes,
+  formatMilliseconds,
+  formatSeconds,
+  formatTime,
+} from "./units.ts";

@@ -1,0 +1,82 @@
+import { defineMessages } from "../../../i18n/catalogue.ts";
+import type { Translator } from "../../../i18n/translate.ts";
+
+/** The Robot view: the device card, its facts and the robot's memory. */
+export const robotMessages = defineMessages({
+  "robot.title": { en: "Robot", ko: "로봇" },
+  "robot.titleDemo": { en: "Demo robot", ko: "데모 로봇" },
+  "robot.refresh": { en: "Refresh", ko: "다시 읽기" },
+  "robot.reading": { en: "Reading…", ko: "읽는 중…" },
+  "robot.disconnect": { en: "Disconnect", ko: "연결 끊기" },
+  "robot.connectedTo": { en: "Connected to", ko: "연결된 로봇" },
+  "robot.demoDescription": {
+    en: "Demo robot (a simulated RBC in this page, not hardware)",
+    ko: "데모 로봇 (이 페이지 안의 가상 RBC이며, 실제 하드웨어가 아니에요)",
+  },
+  "robot.firmware": { en: "Firmware", ko: "펌웨어" },
+  "robot.serialNumber": { en: "Serial number", ko: "시리얼 번호" },
+  "robot.notReported": { en: "not reported", ko: "알려 주지 않음" },
+  "robot.platform": { en: "Platform", ko: "플랫폼" },
+  "robot.platformHuno": { en: "HUNO (humanoid)", ko: "HUNO (휴머노이드)" },
+  "robot.platformDino": { en: "DINO (dinosaur)", ko: "DINO (공룡)" },
+  "robot.platformDogy": { en: "DOGY (dog)", ko: "DOGY (강아지)" },
+  "robot.platformPf2": { en: "PF2 (user mode)", ko: "PF2 (사용자 모드)" },
+  "robot.platformUnknown": { en: "unknown ({platform})", ko: "알 수 없음 ({platform})" },
+  "robot.platformWarning": {
+    en: "The robot reports platform {platform}; known platforms are 1-4 (HUNO, DINO, DOGY, PF2).",
+    ko: "로봇이 플랫폼을 {platform}(으)로 알려 왔어요. 알려진 플랫폼은 1-4(HUNO, DINO, DOGY, PF2)예요.",
+  },
+  "robot.identityWarning": {
+    en: "Something the robot reports about itself looks wrong.",
+    ko: "로봇이 알려 준 정보 중에 이상해 보이는 값이 있어요.",
+  },
+  "robot.errorCode": { en: "Error code", ko: "오류 코드" },
+  "robot.codeNumber": { en: "(code {code})", ko: "(코드 {code})" },
+  "robot.error.none": { en: "No error", ko: "오류 없음" },
+  "robot.error.eeprom": { en: "Serial EEPROM write error", ko: "시리얼 EEPROM 쓰기 오류" },
+  "robot.error.checksum": {
+    en: "Checksum error (a download chunk was corrupted)",
+    ko: "체크섬 오류 (다운로드한 조각이 손상됨)",
+  },
+  "robot.error.motionsFull": {
+    en: "Too many motions, or motion memory full",
+    ko: "모션이 너무 많거나 모션 메모리가 가득 참",
+  },
+  "robot.error.actionsFull": {
+    en: "Too many actions, or action memory full",
+    ko: "액션이 너무 많거나 액션 메모리가 가득 참",
+  },
+  "robot.error.platform": { en: "Platform mismatch", ko: "플랫폼이 맞지 않음" },
+  "robot.error.frameInterval": {
+    en: "Frame interval error (frames closer than 20 ms)",
+    ko: "프레임 간격 오류 (프레임 사이가 20ms보다 짧음)",
+  },
+  "robot.error.zeroSet": {
+    en: "Zero-set error (a zero value was out of range)",
+    ko: "영점 설정 오류 (영점 값이 범위를 벗어남)",
+  },
+  "robot.error.zeroData": { en: "Stored zero data invalid", ko: "저장된 영점 데이터가 잘못됨" },
+  "robot.error.servoCount": { en: "Wrong servo count", ko: "서보 개수가 맞지 않음" },
+  "robot.error.servoPosition": { en: "Servo position error", ko: "서보 위치 오류" },
+  "robot.error.servoSilent": { en: "A servo did not answer", ko: "응답하지 않은 서보가 있음" },
+  "robot.error.unknown": { en: "Unknown error code {code}", ko: "알 수 없는 오류 코드 {code}" },
+  "robot.memoryTitle": { en: "Memory on the robot", ko: "로봇의 메모리" },
+  "robot.motionArea": { en: "Motion area", ko: "모션 영역" },
+  "robot.actionArea": { en: "Action area", ko: "액션 영역" },
+  "robot.bytesUsed": { en: "{used} of {size} bytes used", ko: "{size}바이트 중 {used}바이트 사용" },
+  "robot.nothingStored": {
+    en: { one: "Nothing stored ({count} byte free).", other: "Nothing stored ({count} bytes free)." },
+    ko: "저장된 것이 없어요 ({count}바이트 남음).",
+  },
+  "robot.full": { en: "Full: no bytes free.", ko: "가득 찼어요. 남은 공간이 없어요." },
+  "robot.bytesFree": {
+    en: { one: "{count} byte free.", other: "{count} bytes free." },
+    ko: "{count}바이트 남았어요.",
+  },
+  "robot.readAt": { en: "Read from the robot at {time}.", ko: "{time}에 로봇에서 읽었어요." },
+  "robot.resultLabel": { en: "Device card result", ko: "로봇 정보 결과" },
+  "robot.readingInfo": { en: "Reading device info", ko: "로봇 정보 읽기" },
+  "robot.readFailed": { en: "Reading the robot's details failed.", ko: "로봇 정보를 읽지 못했어요." },
+});
+
+export type RobotTranslator = Translator<typeof robotMessages>;
