@@ -134,6 +134,8 @@ export interface PageOptions {
   viewport?: { width: number; height: number };
   /** Service workers are blocked unless a test needs one (offline). */
   serviceWorkers?: "allow" | "block";
+  /** The browser's language (navigator.language, Accept-Language), e.g. "ko-KR"; English by default. */
+  locale?: string;
 }
 
 export interface AppHarness {
@@ -175,6 +177,7 @@ export async function startHarness(): Promise<AppHarness> {
         serviceWorkers: options.serviceWorkers ?? "block",
         acceptDownloads: true,
         reducedMotion: "reduce",
+        locale: options.locale ?? "en-US",
       });
       contexts.add(context);
       context.on("close", () => contexts.delete(context));
