@@ -27,6 +27,13 @@ export {
   type StopActivityResult,
 } from "./rbc-client.ts";
 export {
+  type LinkKind,
+  type LinkTiming,
+  MAX_BACKOFF,
+  RoundTripEstimator,
+  type RoundTripLimits,
+} from "./round-trip.ts";
+export {
   frameLabel,
   TetheredPlayError,
   type TetheredPlayHolds,

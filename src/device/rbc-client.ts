@@ -34,6 +34,7 @@ import {
   uploadFileTo,
 } from "./motion-upload.ts";
 import { type RbcClientOptions, RbcConnection, type RbcTimeouts, SUBSCRIPTIONS } from "./rbc-connection.ts";
+import type { LinkTiming } from "./round-trip.ts";
 import {
   checkTetheredPlay,
   runTetheredPlay,
@@ -169,6 +170,14 @@ export class RbcClient {
    */
   get stats(): Readonly<{ unansweredReplies: number; fences: number; timeouts: number }> {
     return { ...this.#c.stats };
+  }
+
+  /**
+   * The link's measured timing: smoothed round trip and its variation, and the quick timeout they give
+   * (docs/bluetooth.md). `timeouts` reports every timeout in force.
+   */
+  get link(): LinkTiming {
+    return this.#c.link;
   }
 
   get mode(): ClientMode {
@@ -416,10 +425,16 @@ export class RbcClient {
       sent = true;
       this.#c.writePacket(encodePacket(type, COMMANDS.readErrorCode.request()), type).catch(() => {});
     }, IGNORED_MOTION_PROBE_MS);
+    let answered = false;
     this.#c.unsolicited = (p) => {
-      if (!sent || p.type !== type || p.contents.length !== 2 || p.contents[0] !== EMPTY_SLOT_ERROR) return;
-      watch.emptySlot = true;
-      this.#c.failPending(new RbcError("motion-ignored", "The robot is not playing the motion."));
+      if (!sent || answered || p.type !== type || p.contents.length !== 2) return false;
+      // The probe's own reply: asked for, so not counted as an unanswered one.
+      answered = true;
+      if (p.contents[0] === EMPTY_SLOT_ERROR) {
+        watch.emptySlot = true;
+        this.#c.failPending(new RbcError("motion-ignored", "The robot is not playing the motion."));
+      }
+      return true;
     };
     return watch;
   }

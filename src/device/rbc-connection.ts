@@ -26,17 +26,35 @@ import {
   RbcTimeoutError,
 } from "./errors.ts";
 import { RawChannel } from "./raw-channel.ts";
+import { type LinkKind, type LinkTiming, RoundTripEstimator } from "./round-trip.ts";
 import type { ClientMode, ClientState, LogEntry, RbcEvent, SubscriptionKind } from "./types.ts";
 
+/**
+ * The client's timeouts. As options they are the fixed values a wired (USB) link keeps; `RbcClient.timeouts`
+ * reports the values in force, which grow with the measured round trip of a slower link (docs/bluetooth.md).
+ */
 export interface RbcTimeouts {
-  /** A reply that comes "at once" (default 400 ms: USB adapters hold bytes up to 16 ms, Bluetooth longer). */
+  /**
+   * A reply that comes "at once" (default 400 ms: USB adapters hold bytes up to 16 ms). As an option, the
+   * least quick timeout; in force, the larger of it and what the measured round trip asks for (`round-trip.ts`).
+   */
   quickMs: number;
-  /** Added to a motion's or a sound's expected duration (default 2,000 ms). */
+  /** Added to a motion's or a sound's expected duration (default 2,000 ms; in force, plus the link's extra). */
   marginMs: number;
   /** How long to wait for a downloaded motion whose duration is not given (default 60,000 ms). */
   unknownMotionMs: number;
-  /** How long to wait after connecting before the handshake, so stray bytes can drain (default 50 ms). */
+  /**
+   * How long to wait after connecting before the handshake, so stray bytes can drain (default 50 ms; in force,
+   * plus half the link's extra: bytes in flight take half a round trip).
+   */
   settleMs: number;
+  /** The most a quick timeout may grow to, measured and backed off (default 5,000 ms). */
+  quickCeilingMs: number;
+  /**
+   * The quick timeout before anything is measured on a Bluetooth or unknown link (default 1,500 ms), so that the
+   * very first request over Bluetooth does not time out. A wired link starts at `quickMs`.
+   */
+  firstQuickMs: number;
 }
 
 export interface RbcClientOptions {
@@ -44,9 +62,26 @@ export interface RbcClientOptions {
   timeouts?: Partial<RbcTimeouts>;
   /** Extra tries for idempotent reads after a timeout or a garbled reply (default 2). */
   retries?: number;
+  /**
+   * What carries the bytes (default `wired`): a `bluetooth` or `unknown` link starts with a generous quick
+   * timeout (`firstQuickMs`) until its round trip is measured.
+   */
+  link?: LinkKind;
+  /**
+   * Adapt the timeouts to the measured round trip (default true). False keeps every timeout at its fixed value,
+   * as before adaptation existed (a link slower than 400 ms then times out).
+   */
+  adaptiveTimeouts?: boolean;
 }
 
-const DEFAULT_TIMEOUTS: RbcTimeouts = { quickMs: 400, marginMs: 2000, unknownMotionMs: 60_000, settleMs: 50 };
+const DEFAULT_TIMEOUTS: RbcTimeouts = {
+  quickMs: 400,
+  marginMs: 2000,
+  unknownMotionMs: 60_000,
+  settleMs: 50,
+  quickCeilingMs: 5000,
+  firstQuickMs: 1500,
+};
 
 /** How one request waits for its reply (see `RbcConnection.request`). */
 export interface RequestOptions {
@@ -91,7 +126,10 @@ const SUBSCRIPTION_BY_TYPE = new Map<number, SubscriptionKind>(
  */
 export class RbcConnection {
   readonly clock: Clock;
-  readonly timeouts: RbcTimeouts;
+  /** The timeouts as configured (the fixed values); `timeouts` gives those in force. */
+  readonly baseTimeouts: Readonly<RbcTimeouts>;
+  /** The measured round trip of the link and the quick timeout it gives. */
+  readonly roundTrip: RoundTripEstimator;
   readonly retries: number;
   /** Every packet and raw chunk in and out, for the packet log. */
   readonly log = new Emitter<LogEntry>();
@@ -105,8 +143,12 @@ export class RbcConnection {
   epoch = 0;
   private _state: ClientState = { mode: "disconnected", basicPostureConfirmed: false };
   subscription: { kind: SubscriptionKind; request: Uint8Array } | undefined;
-  /** Told about a reply no waiter takes (used to notice an ignored motion early). */
-  unsolicited: ((packet: Packet) => void) | undefined;
+  /**
+   * Told about a reply no waiter takes (used to notice an ignored motion early). It returns true when the reply
+   * answers a request it sent beside the queue (a probe): that reply was asked for, so it is not counted as
+   * unanswered and does not make its type suspect.
+   */
+  unsolicited: ((packet: Packet) => boolean | undefined) | undefined;
   private unlisten: Array<() => void> = [];
   /**
    * Types of quick requests whose reply may still arrive (the request timed out or was cancelled, or a reply
@@ -122,7 +164,17 @@ export class RbcConnection {
     options: RbcClientOptions = {},
   ) {
     this.clock = options.clock ?? realClock;
-    this.timeouts = { ...DEFAULT_TIMEOUTS, ...options.timeouts };
+    const base = { ...DEFAULT_TIMEOUTS, ...options.timeouts };
+    this.baseTimeouts = base;
+    this.roundTrip = new RoundTripEstimator(
+      options.link ?? "wired",
+      {
+        floorMs: base.quickMs,
+        ceilingMs: Math.max(base.quickMs, base.quickCeilingMs),
+        firstMs: Math.max(base.quickMs, base.firstQuickMs),
+      },
+      options.adaptiveTimeouts ?? true,
+    );
     this.retries = options.retries ?? 2;
     this.parser = new PacketParser({
       onDiscard: (reason, bytes) =>
@@ -135,6 +187,27 @@ export class RbcConnection {
 
   get state(): Readonly<ClientState> {
     return this._state;
+  }
+
+  /**
+   * The timeouts in force: the quick one from the measured round trip (never below the configured value), the
+   * motion/sound margin and the settle wait grown by what the link adds above it. On a wired link, exactly
+   * the configured values.
+   */
+  get timeouts(): Readonly<RbcTimeouts> {
+    const base = this.baseTimeouts;
+    const extra = this.roundTrip.extraMs;
+    return {
+      ...base,
+      quickMs: base.quickMs + extra,
+      marginMs: base.marginMs + extra,
+      settleMs: base.settleMs + Math.round(extra / 2),
+    };
+  }
+
+  /** The link's measured timing (`RbcClient.link`). */
+  get link(): LinkTiming {
+    return this.roundTrip.snapshot();
   }
 
   get mode(): ClientMode {
@@ -260,11 +333,14 @@ export class RbcConnection {
     } catch (e) {
       throw e instanceof ProtocolError ? new RbcInvalidArgumentError(`${e.message} Nothing was sent.`) : e;
     }
-    const timeoutMs = options.timeoutMs ?? this.timeoutFor(spec, args, options.expectedMs);
+    const timeoutFor = () => options.timeoutMs ?? this.timeoutFor(spec, args, options.expectedMs);
+    timeoutFor(); // a row without a reply is refused before anything is sent
     const retries = options.retries ?? (spec.idempotent ? this.retries : 0);
     for (let attempt = 0; ; attempt++) {
       try {
         if (this.suspect.has(spec.type)) await this.fence(spec.type, spec.name);
+        // Per attempt: a timeout before it has backed the quick timeout off (round-trip.ts).
+        const timeoutMs = timeoutFor();
         const packet = await this.transact(spec.type, contents, spec.name, timeoutMs, options);
         try {
           return spec.decode(packet.contents);
@@ -317,9 +393,12 @@ export class RbcConnection {
       send = true,
     }: { signal?: AbortSignal; accept?: (p: Packet) => boolean; send?: boolean },
   ) {
+    // Only a quick reply measures the link: the others wait for the robot (a motion, a sound) as well.
+    const quick = COMMAND_BY_TYPE.get(type)?.timeout === "quick";
     return new Promise<Packet>((resolve, reject) => {
       if (signal?.aborted) return reject(new RbcCancelledError());
       let timer = 0;
+      let sentAt: number | undefined;
       const onAbort = () =>
         finish(() => {
           if (send) this.expectLate(type);
@@ -334,19 +413,29 @@ export class RbcConnection {
       const waiter: PacketWaiter = {
         type,
         accept,
-        resolve: (p) => finish(() => resolve(p)),
+        resolve: (p) =>
+          finish(() => {
+            // Request written → its own reply complete. The fences guarantee that a reply of this type is
+            // this request's (no late one is outstanding), so the sample is never a retried or late reply's.
+            if (quick && sentAt !== undefined) this.roundTrip.sample(this.clock.now() - sentAt);
+            resolve(p);
+          }),
         reject: (e) => finish(() => reject(e)),
       };
       this.waiter = waiter; // registered before the write
       signal?.addEventListener("abort", onAbort);
       timer = this.clock.setTimeout(() => {
         this.stats.timeouts++;
+        if (quick) this.roundTrip.timedOut();
         // A partial frame is not this reply's any more; the reply itself may still come later.
         this.parser.reset();
         if (send) this.expectLate(type);
         waiter.reject(new RbcTimeoutError(name, timeoutMs));
       }, timeoutMs);
-      if (send) this.writePacket(encodePacket(type, contents), type).catch((e) => waiter.reject(e));
+      if (send) {
+        sentAt = this.clock.now();
+        this.writePacket(encodePacket(type, contents), type).catch((e) => waiter.reject(e));
+      }
     });
   }
 
@@ -421,11 +510,11 @@ export class RbcConnection {
       this.waiter.resolve(packet);
       return;
     }
-    // Anything else is a late, unexpected or side-channel reply: logged above, counted, offered to
-    // `unsolicited`, and its type fenced before its next request (a repeat may follow).
+    // Anything else is a late, unexpected or side-channel reply: logged above, offered to `unsolicited`, and
+    // unless that claims it, counted and its type fenced before its next request (a repeat may follow).
+    if (this.unsolicited?.(packet) === true) return;
     this.stats.unansweredReplies++;
     this.expectLate(packet.type);
-    this.unsolicited?.(packet);
   }
 
   private onTransportStatus(event: TransportStatusEvent): void {

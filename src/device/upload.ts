@@ -35,7 +35,10 @@ export interface UploadIo {
 /** The RBC's error code for a bad chunk checksum (PROTOCOL.md §3.2). */
 const CHECKSUM_ERROR = 2;
 
-/** How long to wait for each `40` (the RBC writes a 64-byte EEPROM page first). */
+/**
+ * How much longer than a quick reply each `40` may take (the RBC writes a 64-byte EEPROM page first). The wait
+ * is the quick timeout in force plus this: 500 ms on a wired link, more on a slower one (round-trip.ts).
+ */
 const ACK_TIMEOUT_EXTRA_MS = 100;
 
 /** Allowance for a clock that ticks in whole milliseconds when timing an acknowledgement against the wire. */
@@ -88,7 +91,8 @@ export async function uploadFile(
     );
   }
 
-  const ackTimeout = client.timeouts.quickMs + ACK_TIMEOUT_EXTRA_MS;
+  // Read for each part: the quick timeout follows the link's measured round trip.
+  const ackTimeout = () => client.timeouts.quickMs + ACK_TIMEOUT_EXTRA_MS;
   const ctx: FailureContext = {
     area,
     acknowledged: 0,
@@ -109,7 +113,7 @@ export async function uploadFile(
     try {
       const firstPart = encodeDownloadStart(area === "motion" ? WRITE_MOTION_TYPE : WRITE_ACTION_TYPE, total);
       const sentAt = io.now();
-      await io.raw.ackExchange(firstPart, { timeoutMs: ackTimeout, note: "first part", notBeforeMs: 0 });
+      await io.raw.ackExchange(firstPart, { timeoutMs: ackTimeout(), note: "first part", notBeforeMs: 0 });
       // [decision] The wire-time rule needs a link that takes wire time: a real 115200-baud line always
       // does. A link that answered the first part sooner than its own bytes take on the wire is not one (an
       // unpaced simulator, where every byte arrives at once), and there the rule would refuse genuine
@@ -121,7 +125,7 @@ export async function uploadFile(
         const chunk = downloadChunk(payload, ctx.acknowledged);
         ctx.lastChunkSent = ctx.acknowledged + chunk.length - 1 >= total;
         await io.raw.ackExchange(chunk, {
-          timeoutMs: ackTimeout,
+          timeoutMs: ackTimeout(),
           note: `chunk ${chunks + 1} (${chunk.length - 1} bytes)`,
           notBeforeMs: paced ? Math.max(0, wireMs(chunk.length) - CLOCK_SLACK_MS) : 0,
         });
@@ -259,6 +263,7 @@ async function settleAndRead(
     .exchange(ABANDON_DOWNLOAD, { need: 0, timeoutMs: 0, note: "abandon download" })
     .catch(() => {});
   if (client.mode === "download") client.setMode("packet");
+  // A page write and the link's round trip: the quick timeout in force (more than 400 ms on a slow link).
   await io.sleep(client.timeouts.quickMs);
   let deviceError: number | undefined;
   let freeNow: number | undefined;

@@ -30,11 +30,14 @@ export {
 export { FakeSerial } from "./fake-serial.ts";
 export {
   BYTE_TIME_MS,
+  bluetoothLinkOptions,
   DEFAULT_BUFFER_SIZE,
   type MockSerialPortOptions,
   type MockSerialPortStats,
   type OpenedOptions,
+  type PortInfo,
   RBC_BAUD_RATE,
+  SPP_SERVICE_CLASS_ID,
 } from "./mock-serial-options.ts";
 export { MockSerialPort, type SimEndpoint } from "./mock-serial-port.ts";
 export { type FaultedReply, PortFaults, type ReplyFault } from "./port-faults.ts";

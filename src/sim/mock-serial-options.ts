@@ -10,14 +10,39 @@ export const BYTE_TIME_MS = 10_000 / RBC_BAUD_RATE;
 export const DEFAULT_BUFFER_SIZE = 255;
 const MAX_BUFFER_SIZE = 16 * 1024 * 1024;
 
+/**
+ * The Bluetooth Serial Port Profile's service class (RFCOMM), as Web Serial's `getInfo()` reports it for a
+ * port of a paired Bluetooth module (Chrome 117+).
+ */
+export const SPP_SERVICE_CLASS_ID = "00001101-0000-1000-8000-00805f9b34fb";
+
+/** `SerialPortInfo` with the Bluetooth field Chrome 117+ reports (`@types/w3c-web-serial` 1.0.8 lacks it). */
+export interface PortInfo extends SerialPortInfo {
+  bluetoothServiceClassId?: number | string;
+}
+
 export interface MockSerialPortOptions {
   clock?: Clock;
   /** Model the wire: each byte takes BYTE_TIME_MS in each direction, serialized (default false). */
   baudPacing?: boolean;
   /** USB adapter latency added to RBC→PC delivery, e.g. 16 (an FTDI default). Default 0. */
   latencyMs?: number;
+  /**
+   * Each RBC→PC transmission's latency varies by up to this much either way (uniformly, from the seeded
+   * generator; never below 0): `latencyMs: 300, jitterMs: 150` gives 150-450 ms. Order is always kept: a reply
+   * never overtakes one sent before it. Default 0.
+   */
+  jitterMs?: number;
+  /**
+   * Burst delivery: RBC→PC bytes are held and handed over only at multiples of this many ms of the clock, all
+   * that is due by then in one read (a Bluetooth module and its RFCOMM stack pack bytes into radio packets).
+   * Default 0 (every transmission as it arrives).
+   */
+  burstMs?: number;
+  /** Seed of the generator behind `jitterMs` (default 1): the same seed gives the same delays on every run. */
+  seed?: number;
   /** What getInfo() answers (default FTDI FT232R: vendor 0x0403, product 0x6001). */
-  info?: SerialPortInfo;
+  info?: PortInfo;
   /**
    * Keep every chunk in `written` and `delivered` for tests to inspect (default true). The demo robot turns it
    * off, so that hours of polling do not grow memory; `stats` still counts every byte.
@@ -69,4 +94,18 @@ export function applySerialOptions(options: SerialOptions): OpenedOptions {
     throw new TypeError(`Requested buffer size (${filled.bufferSize} bytes) is not allowed.`);
   }
   return filled;
+}
+
+/**
+ * A link like the RBC's Bluetooth module: replies 300 ± 150 ms late, delivered in 20 ms bursts, on a port
+ * whose info names the Serial Port Profile. `overrides` change any of it (a seed, another latency).
+ */
+export function bluetoothLinkOptions(overrides: MockSerialPortOptions = {}): MockSerialPortOptions {
+  return {
+    latencyMs: 300,
+    jitterMs: 150,
+    burstMs: 20,
+    ...overrides,
+    info: overrides.info ?? { bluetoothServiceClassId: SPP_SERVICE_CLASS_ID },
+  };
 }

@@ -1,10 +1,12 @@
 import { type Clock, realClock } from "../shared/clock.ts";
+import { seededRandom } from "../shared/random.ts";
 import {
   applySerialOptions,
   BYTE_TIME_MS,
   type MockSerialPortOptions,
   type MockSerialPortStats,
   type OpenedOptions,
+  type PortInfo,
   RBC_BAUD_RATE,
 } from "./mock-serial-options.ts";
 import { PortFaults } from "./port-faults.ts";
@@ -18,7 +20,8 @@ const DEVICE_LOST = "The device has been lost.";
  * against the simulator in unit tests, e2e tests and the demo. It mirrors Chrome's behaviour where it matters
  * to a client: open options and their errors, lazily created WHATWG streams, close() refusing locked streams,
  * the "device lost" error and disconnect event on a cable pull. Link timing (115200 baud pacing, adapter
- * latency) follows the injected clock, and faults can be injected (`faults`).
+ * latency, a Bluetooth link's jitter and bursts: `bluetoothLinkOptions`) follows the injected clock, and
+ * faults can be injected (`faults`).
  */
 
 /**
@@ -58,7 +61,12 @@ export class MockSerialPort<S extends SimEndpoint = SimulatedRbc> extends EventT
   private readonly wireToRobot: SimTimers;
   private readonly pacing: boolean;
   private readonly latencyMs: number;
-  private readonly info: SerialPortInfo;
+  private readonly jitterMs: number;
+  private readonly burstMs: number;
+  private readonly random: () => number;
+  private readonly info: PortInfo;
+  /** The burst being gathered for delivery at `at` (burst delivery only). */
+  private burst: { at: number; chunks: Uint8Array[] } | undefined;
   private opened = false;
   private plugged = true;
   private readableStream: ReadableStream<Uint8Array> | null = null;
@@ -83,6 +91,12 @@ export class MockSerialPort<S extends SimEndpoint = SimulatedRbc> extends EventT
     this.wireToRobot = new SimTimers(this.clock);
     this.pacing = options.baudPacing ?? false;
     this.latencyMs = options.latencyMs ?? 0;
+    this.jitterMs = options.jitterMs ?? 0;
+    this.burstMs = options.burstMs ?? 0;
+    if (!(this.latencyMs >= 0 && this.jitterMs >= 0 && this.burstMs >= 0)) {
+      throw new RangeError("latencyMs, jitterMs and burstMs must be 0 or more.");
+    }
+    this.random = seededRandom(options.seed ?? 1);
     this.info = { ...(options.info ?? { usbVendorId: 0x0403, usbProductId: 0x6001 }) };
     this.record = options.record ?? true;
     this.detach = sim.onTransmit((bytes) => this.fromRobot(bytes));
@@ -127,7 +141,7 @@ export class MockSerialPort<S extends SimEndpoint = SimulatedRbc> extends EventT
     return this.writableStream;
   }
 
-  getInfo(): SerialPortInfo {
+  getInfo(): PortInfo {
     return { ...this.info };
   }
 
@@ -266,14 +280,48 @@ export class MockSerialPort<S extends SimEndpoint = SimulatedRbc> extends EventT
       this.rxBusyUntil = Math.max(now, this.rxBusyUntil) + total * BYTE_TIME_MS;
       at = this.rxBusyUntil;
     }
-    at = Math.max(at + this.latencyMs + reply.delayMs, this.lastDeliveryAt);
+    at = Math.max(at + this.linkDelayMs() + reply.delayMs, this.lastDeliveryAt);
+    if (this.burstMs > 0) at = Math.ceil(at / this.burstMs) * this.burstMs;
     this.lastDeliveryAt = at;
-    const deliver = () => {
-      for (const chunk of reply.chunks) this.toPc(chunk);
-    };
-    if (at <= now) deliver();
-    else this.timers.after(at - now, deliver);
+    if (this.burstMs > 0 && at > now) this.addToBurst(at, reply.chunks);
+    else {
+      const deliver = () => {
+        for (const chunk of reply.chunks) this.toPc(chunk);
+      };
+      if (at <= now) deliver();
+      else this.timers.after(at - now, deliver);
+    }
     for (const extra of reply.after) this.deliverAt(at + extra.afterMs, extra.bytes);
+  }
+
+  /** This transmission's latency: `latencyMs`, varied by up to `jitterMs` either way (seeded), at least 0. */
+  private linkDelayMs(): number {
+    if (this.jitterMs === 0) return this.latencyMs;
+    return Math.max(0, this.latencyMs + (this.random() * 2 - 1) * this.jitterMs);
+  }
+
+  /**
+   * Burst delivery: what is due at `at` joins the burst gathered for that moment and is handed over with it in
+   * one read. Deliveries never go back in time (`lastDeliveryAt`), so only the latest burst can be joined.
+   */
+  private addToBurst(at: number, chunks: Uint8Array[]): void {
+    if (this.burst?.at === at) {
+      this.burst.chunks.push(...chunks);
+      return;
+    }
+    const burst = { at, chunks: [...chunks] };
+    this.burst = burst;
+    this.timers.after(at - this.clock.now(), () => {
+      if (this.burst === burst) this.burst = undefined;
+      const total = burst.chunks.reduce((n, c) => n + c.length, 0);
+      const whole = new Uint8Array(total);
+      let offset = 0;
+      for (const chunk of burst.chunks) {
+        whole.set(chunk, offset);
+        offset += chunk.length;
+      }
+      if (total > 0) this.toPc(whole);
+    });
   }
 
   /**
@@ -325,6 +373,7 @@ export class MockSerialPort<S extends SimEndpoint = SimulatedRbc> extends EventT
 
   private shutDown(): void {
     this.opened = false;
+    this.burst = undefined;
     this.dropReadable();
     this.dropWritable();
     this.pendingRx = [];

@@ -1,5 +1,11 @@
 import { type Clock, realClock, scaledClock } from "../shared/clock.ts";
-import { BootloaderRbc, createDemoRbc, MockSerialPort, type SimulatedRbc } from "../sim/index.ts";
+import {
+  BootloaderRbc,
+  bluetoothLinkOptions,
+  createDemoRbc,
+  MockSerialPort,
+  type SimulatedRbc,
+} from "../sim/index.ts";
 
 export interface DemoRobot {
   port: MockSerialPort<BootloaderRbc>;
@@ -21,6 +27,11 @@ export interface DemoRobotOptions {
    * proportions.
    */
   timeScale?: number;
+  /**
+   * Behind a simulated Bluetooth link instead of a USB adapter: replies 300 ± 150 ms late (seeded, so the same
+   * on every run), delivered in bursts, and a port that reports the Serial Port Profile.
+   */
+  bluetooth?: boolean;
 }
 
 /**
@@ -38,5 +49,6 @@ export function createDemoRobot(options: DemoRobotOptions = {}): DemoRobot {
   // Browser tests (tests/e2e/rbc-test-globals.ts: `__rbcTestOptions` is set only by them) watch its servos.
   const page = globalThis as { __rbcTestOptions?: unknown; __rbcDemoSim?: SimulatedRbc };
   if (page.__rbcTestOptions !== undefined) page.__rbcDemoSim = sim;
-  return { port: new MockSerialPort(boot, { clock, latencyMs: 2, record: false }), boot, sim, clock };
+  const link = options.bluetooth ? bluetoothLinkOptions() : { latencyMs: 2 };
+  return { port: new MockSerialPort(boot, { clock, ...link, record: false }), boot, sim, clock };
 }

@@ -1,4 +1,31 @@
+import type { LinkKind } from "../device/round-trip.ts";
+
 /** Web Serial in the panel: feature detection, the chooser's filters, and names for ports. */
+
+/**
+ * The Bluetooth Serial Port Profile's service class (RFCOMM). Chrome 117+ lists a paired Bluetooth module's
+ * serial port in the chooser when a filter names it, and reports it in `getInfo().bluetoothServiceClassId`.
+ */
+export const SERIAL_PORT_PROFILE = "00001101-0000-1000-8000-00805f9b34fb";
+
+/** `SerialPortInfo` with the Bluetooth field of Chrome 117+ (`@types/w3c-web-serial` 1.0.8 lacks it). */
+export interface PortInfo extends SerialPortInfo {
+  bluetoothServiceClassId?: number | string;
+}
+
+/** A chooser filter: USB ids, or (Chrome 117+) a Bluetooth service class. */
+export type PortFilter = SerialPortFilter & { bluetoothServiceClassId?: number | string };
+
+/** The chooser's options with the Bluetooth fields of Chrome 117+. */
+export interface PortRequestOptions {
+  filters?: PortFilter[];
+  allowedBluetoothServiceClassIds?: (number | string)[];
+}
+
+/** `navigator.serial` as the panel calls it: `requestPort` takes the Bluetooth fields too. */
+type BluetoothAwareSerial = Omit<Serial, "requestPort"> & {
+  requestPort(options?: PortRequestOptions): Promise<SerialPort>;
+};
 
 /** USB serial adapters the RBC is used with (by USB vendor id). */
 export const USB_SERIAL_VENDORS: readonly { usbVendorId: number; name: string }[] = [
@@ -23,17 +50,57 @@ function hex4(n: number): string {
   return n.toString(16).toUpperCase().padStart(4, "0");
 }
 
-/** "FTDI USB serial adapter (0403:6001)", or a description of a port without USB ids. */
-export function describePort(info: SerialPortInfo): string {
+/** The Bluetooth filter the chooser gets beside the USB ones: a paired RBC Bluetooth module (SPP). */
+export const BLUETOOTH_FILTER: PortFilter = { bluetoothServiceClassId: SERIAL_PORT_PROFILE };
+
+/**
+ * The chooser's options: the USB adapters and paired Bluetooth modules (Serial Port Profile), or with
+ * `showAll` every serial port (Chrome lists SPP ports then as well).
+ */
+export function chooserOptions(showAll: boolean): PortRequestOptions {
+  return showAll
+    ? { allowedBluetoothServiceClassIds: [SERIAL_PORT_PROFILE] }
+    : {
+        filters: [...PORT_FILTERS, BLUETOOTH_FILTER],
+        allowedBluetoothServiceClassIds: [SERIAL_PORT_PROFILE],
+      };
+}
+
+/** What carries a port's bytes, from what the browser says of it (it picks the client's first timeouts). */
+export function linkKindOf(info: PortInfo): LinkKind {
+  if (info.bluetoothServiceClassId !== undefined) return "bluetooth";
+  return info.usbVendorId === undefined ? "unknown" : "wired";
+}
+
+/** "FTDI USB serial adapter (0403:6001)", "Bluetooth serial port", or a description of a port without ids. */
+export function describePort(info: PortInfo): string {
+  if (info.bluetoothServiceClassId !== undefined) return "Bluetooth serial port";
   if (info.usbVendorId === undefined) return "Serial port (Bluetooth or built in)";
   const vendor = USB_SERIAL_VENDORS.find((v) => v.usbVendorId === info.usbVendorId)?.name;
   const ids = `${hex4(info.usbVendorId)}:${info.usbProductId === undefined ? "????" : hex4(info.usbProductId)}`;
   return vendor ? `${vendor} USB serial adapter (${ids})` : `USB serial device (${ids})`;
 }
 
-/** Opens the browser's port chooser. Must be called straight from a click (user activation). */
+/**
+ * Opens the browser's port chooser. Must be called straight from a click (user activation). A browser before
+ * Chrome 117 does not know the Bluetooth filter: to it the filter is empty, and it refuses the options with a
+ * TypeError before showing anything; the chooser is then opened again with the USB filters alone (still within
+ * the click's activation, which lasts seconds).
+ */
 export function choosePort(serial: Serial, showAll: boolean): Promise<SerialPort> {
-  return serial.requestPort(showAll ? {} : { filters: PORT_FILTERS });
+  const chooser = serial as BluetoothAwareSerial;
+  const options = chooserOptions(showAll);
+  let first: Promise<SerialPort>;
+  try {
+    first = chooser.requestPort(options);
+  } catch (e) {
+    first = Promise.reject(e);
+  }
+  if (showAll) return first;
+  return first.catch((e: unknown) => {
+    if (!(e instanceof TypeError)) throw e;
+    return chooser.requestPort({ filters: PORT_FILTERS });
+  });
 }
 
 /** Ports this site was granted earlier, with their descriptions. */

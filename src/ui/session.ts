@@ -17,10 +17,16 @@ import {
 } from "./features/connection/state.ts";
 import type { PacketLog } from "./features/log/packet-log.ts";
 import { Scope } from "./scope.ts";
-import { choosePort, describePort, webSerial } from "./serial-ports.ts";
+import { choosePort, describePort, linkKindOf, webSerial } from "./serial-ports.ts";
 import type { Store } from "./store.ts";
 
 export const DEMO_ROBOT: RobotLabel = { kind: "demo", name: "Demo robot" };
+/** The demo robot behind a simulated Bluetooth link (replies 300 ± 150 ms late, in bursts). */
+export const DEMO_BLUETOOTH_ROBOT: RobotLabel = {
+  kind: "demo",
+  name: "Demo robot (Bluetooth)",
+  link: "bluetooth",
+};
 
 export interface SessionOptions {
   /** How the demo robot is made (browser tests run it faster). */
@@ -108,7 +114,8 @@ export class Session {
           void refreshKnownPorts(this.store);
           return;
         }
-        void this.connectPort(port, { kind: "hardware", name: describePort(port.getInfo()) });
+        const info = port.getInfo();
+        void this.connectPort(port, { kind: "hardware", name: describePort(info), link: linkKindOf(info) });
       },
       (e: unknown) => {
         if (chooser !== this.chooser) return;
@@ -134,13 +141,17 @@ export class Session {
     });
   }
 
-  /** Connects the same UI to a simulated RBC behind a mock serial port (loaded on demand). */
-  async connectDemo(): Promise<boolean> {
-    this.setConnection({ phase: "connecting", robot: DEMO_ROBOT, problem: undefined, lostReason: undefined });
+  /**
+   * Connects the same UI to a simulated RBC behind a mock serial port (loaded on demand); with `bluetooth`,
+   * behind a simulated Bluetooth link.
+   */
+  async connectDemo(options: { bluetooth?: boolean } = {}): Promise<boolean> {
+    const robot = options.bluetooth ? DEMO_BLUETOOTH_ROBOT : DEMO_ROBOT;
+    this.setConnection({ phase: "connecting", robot, problem: undefined, lostReason: undefined });
     try {
       const { createDemoRobot } = await import("./demo-robot.ts");
-      const demo = createDemoRobot(this.options.demo);
-      return await this.connectPort(demo.port, DEMO_ROBOT, demo);
+      const demo = createDemoRobot({ ...this.options.demo, bluetooth: options.bluetooth });
+      return await this.connectPort(demo.port, robot, demo);
     } catch (e) {
       this.setConnection({
         phase: "disconnected",

@@ -35,13 +35,14 @@ describe("connecting a robot", () => {
     await expect.poll(() => page.getByRole("button", { name: "Stop", exact: true }).isVisible()).toBe(true);
     expect(await page.getByRole("button", { name: "Limp…" }).isVisible()).toBe(true);
 
-    // The chooser was asked for the four USB serial vendors.
+    // The chooser was asked for the four USB serial vendors and paired Bluetooth modules (SPP).
     const filters = await page.evaluate(() => window.__rbcTest?.serial.requests[0]?.filters);
     expect(filters).toEqual([
       { usbVendorId: 0x0403 },
       { usbVendorId: 0x067b },
       { usbVendorId: 0x10c4 },
       { usbVendorId: 0x1a86 },
+      { bluetoothServiceClassId: "00001101-0000-1000-8000-00805f9b34fb" },
     ]);
     // The port was opened with the RBC's settings.
     const opened = await page.evaluate(() => window.__rbcTest?.port.openOptions);

@@ -2,24 +2,25 @@
  * Bundled into an IIFE by the harness and injected before the app's scripts: a `navigator.serial` made of the
  * project's own FakeSerial, MockSerialPort and SimulatedRbc (headless Chromium's real chooser never settles).
  * With `timeScale`, the simulated robot runs on a faster clock, which its port carries to the panel's client;
- * with `variant`, it is one of the firmware builds of PROTOCOL.md §3.5.
+ * with `variant`, it is one of the firmware builds of PROTOCOL.md §3.5; with `bluetooth`, a paired Bluetooth
+ * module behind a slow, bursty link.
  */
 import { realClock, scaledClock } from "../../src/shared/clock.ts";
-import { FakeSerial, MockSerialPort, SimulatedRbc } from "../../src/sim/index.ts";
+import { bluetoothLinkOptions, FakeSerial, MockSerialPort, SimulatedRbc } from "../../src/sim/index.ts";
 import { SIMULATED_CLOCK } from "../../src/ui/simulated-clock.ts";
 import "./rbc-test-globals.ts";
 
 const options = window.__rbcTestOptions ?? {};
 const clock = (options.timeScale ?? 1) === 1 ? realClock : scaledClock(options.timeScale ?? 1);
 const sim = new SimulatedRbc({ clock, ...options.variant });
-const port = new MockSerialPort(sim, {
-  clock,
-  latencyMs: options.latencyMs ?? 2,
-  baudPacing: options.baudPacing ?? false,
-});
+const link = options.bluetooth
+  ? bluetoothLinkOptions(options.latencyMs === undefined ? {} : { latencyMs: options.latencyMs })
+  : { latencyMs: options.latencyMs ?? 2 };
+const port = new MockSerialPort(sim, { clock, ...link, baudPacing: options.baudPacing ?? false });
 Object.defineProperty(port, SIMULATED_CLOCK, { value: clock });
 const serial = new FakeSerial([port], { granted: options.granted ?? false });
 serial.userCancels = options.userCancels ?? false;
+serial.bluetoothSupported = !options.noBluetoothChooser;
 
 Object.defineProperty(Navigator.prototype, "serial", {
   configurable: true,

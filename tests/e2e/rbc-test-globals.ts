@@ -21,6 +21,14 @@ export interface RbcTestOptions {
   /** USB adapter latency of the mock port in ms (default 2). */
   latencyMs?: number;
   /**
+   * The fake port is a paired Bluetooth module (its info names the Serial Port Profile) behind a link like one:
+   * replies 300 ± 150 ms late, seeded, in 20 ms bursts (`bluetoothLinkOptions`; `latencyMs` then overrides
+   * its latency).
+   */
+  bluetooth?: boolean;
+  /** The chooser is a browser's before Chrome 117: it refuses a filter with only a Bluetooth service class. */
+  noBluetoothChooser?: boolean;
+  /**
    * Runs the simulated robot's time this many times faster than real time (default 1): the fake port's robot
    * and the in-app demo robot, each with the panel's client on the same clock, so every motion, sound, upload,
    * timeout and polling period keeps its proportions. Never touches a real robot.

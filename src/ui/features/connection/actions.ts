@@ -55,8 +55,9 @@ export function cancelChoosing(ctx: AppContext): void {
   ctx.session.cancelChoosing();
 }
 
-export function connectDemo(ctx: AppContext): void {
-  void ctx.session.connectDemo();
+/** "Try the demo robot"; with `bluetooth`, the demo robot behind a simulated Bluetooth link. */
+export function connectDemo(ctx: AppContext, options: { bluetooth?: boolean } = {}): void {
+  void ctx.session.connectDemo(options);
 }
 
 export function connectKnownPort(ctx: AppContext, port: SerialPort, robot: RobotLabel): void {

@@ -1,4 +1,5 @@
 import { html, nothing, type TemplateResult } from "lit-html";
+import { linkKindOf } from "../../serial-ports.ts";
 import { notice } from "../../shell/notice.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
 import {
@@ -22,10 +23,14 @@ function progress(ctx: ViewContext, c: ConnectionState): TemplateResult | typeof
   };
   const text = steps[c.phase];
   if (!text) return nothing;
-  const who = c.robot?.kind === "demo" ? "Demo robot" : "Robot";
+  const who = c.robot?.kind === "demo" ? c.robot.name : "Robot";
+  const slow =
+    c.robot?.link === "bluetooth" && c.phase === "handshaking"
+      ? " Replies are slower over Bluetooth: the first one may take a second or two."
+      : "";
   return html`
     <div class="progress-block" data-testid="connect-progress">
-      <p><strong>${c.phase === "choosing" ? "Connect robot" : who}:</strong> ${text}</p>
+      <p><strong>${c.phase === "choosing" ? "Connect robot" : who}:</strong> ${text}${slow}</p>
       <progress aria-label="Connecting"></progress>
       ${
         c.phase === "choosing"
@@ -73,7 +78,12 @@ function knownPorts(ctx: ViewContext, busy: boolean): TemplateResult | typeof no
                   class="btn"
                   ?disabled=${busy}
                   aria-label=${`Connect to ${p.label}`}
-                  @click=${() => connectKnownPort(ctx, p.port, { kind: "hardware", name: p.label })}
+                  @click=${() =>
+                    connectKnownPort(ctx, p.port, {
+                      kind: "hardware",
+                      name: p.label,
+                      link: linkKindOf(p.port.getInfo()),
+                    })}
                 >
                   Connect
                 </button>
@@ -103,7 +113,10 @@ export function connectCard(ctx: ViewContext): TemplateResult {
     <section class="card connect-card" aria-labelledby="connect-title" data-testid="connect-card">
       <h1 id="connect-title">Connect your robot</h1>
       ${lostNotice(c)} ${notice(c.problem)}
-      <p>Plug the robot's serial cable into this computer, switch the robot on, then choose its port.</p>
+      <p>
+        Plug the robot's serial cable into this computer (or pair its Bluetooth module), switch the robot on,
+        then choose its port.
+      </p>
       <div class="actions">
         <button type="button" class="btn btn--primary" ?disabled=${busy} @click=${() => chooseAndConnect(ctx)}>
           Connect robot
@@ -118,8 +131,20 @@ export function connectCard(ctx: ViewContext): TemplateResult {
           .checked=${ctx.state.showAllPorts}
           @change=${(e: Event) => setShowAllPorts(ctx, (e.target as HTMLInputElement).checked)}
         />
-        Show all serial ports (Bluetooth, other adapters)
+        Show all serial ports (other adapters, built-in ports)
       </label>
+      <div class="demo-bluetooth">
+        <button
+          type="button"
+          class="btn btn--quiet long-label"
+          data-testid="demo-bluetooth"
+          ?disabled=${busy}
+          @click=${() => connectDemo(ctx, { bluetooth: true })}
+        >
+          Demo robot over a simulated Bluetooth link
+        </button>
+        <p class="muted small">Its replies come ${"300\u00a0±\u00a0150\u00a0ms"} late and in bursts, as over Bluetooth.</p>
+      </div>
       ${progress(ctx, c)} ${knownPorts(ctx, busy)} ${connectHelp(c.showHelp)}
       <p class="muted small">
         The demo robot is a simulated controller inside this page: nothing is sent to any hardware.

@@ -28,9 +28,14 @@ export function connectHelp(open: boolean): TemplateResult {
           <strong>Port in use:</strong> close Motionbuilder, a serial monitor, or another browser tab that has
           the port open. Only one program can use it at a time.
         </li>
-        <li>
-          <strong>Bluetooth module:</strong> pair it in the system settings first, then tick
-          "Show all serial ports".
+        <li data-testid="bluetooth-help">
+          <strong>Bluetooth module:</strong> switch the robot on, then pair the module in the computer's
+          Bluetooth settings first; if it asks for a PIN, it is often <code>1234</code> or <code>0000</code>.
+          Then press Connect robot: paired modules are listed as "Bluetooth serial port" beside USB adapters
+          (Chrome or Edge 117 or newer; on an older browser tick "Show all serial ports"). Replies are slower
+          over Bluetooth than over the cable (a few hundred milliseconds): the panel measures them and waits
+          longer. Use the cable for a firmware update: it switches the robot off and on, and the Bluetooth
+          link may not survive that.
         </li>
       </ul>
     </details>

@@ -1,4 +1,4 @@
-import type { ClientMode, ClientState, SubscriptionKind } from "../../../device/index.ts";
+import type { ClientMode, ClientState, LinkKind, SubscriptionKind } from "../../../device/index.ts";
 import type { Notice } from "../../app-state.ts";
 
 /** The connection's part of the app state: which robot, in which phase, and what its client reports. */
@@ -9,8 +9,10 @@ export type RobotKind = "hardware" | "demo";
 
 export interface RobotLabel {
   kind: RobotKind;
-  /** "Demo robot", or the port's description for hardware. */
+  /** "Demo robot" or "Demo robot (Bluetooth)", or the port's description for hardware. */
   name: string;
+  /** What carries the bytes, from the port's info ("bluetooth" for a Bluetooth serial port). */
+  link?: LinkKind;
 }
 
 export interface ConnectionState {

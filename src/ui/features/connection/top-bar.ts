@@ -18,7 +18,10 @@ export function connectionSummary(c: ConnectionState): string[] {
     case "handshaking":
       return [`Connecting to ${robot}: handshaking…`];
     case "connected": {
-      const parts = c.robot?.kind === "demo" ? ["Demo robot", "Connected"] : ["Connected"];
+      // The demo robot's own name ("Demo robot (Bluetooth)" over the simulated link); a robot over Bluetooth
+      // says so, since its replies are slower.
+      const parts = c.robot?.kind === "demo" ? [c.robot.name, "Connected"] : ["Connected"];
+      if (c.robot?.kind === "hardware" && c.robot.link === "bluetooth") parts.push("Bluetooth");
       if (c.platform !== undefined) parts.push(platformName(c.platform));
       if (c.firmware) parts.push(`fw ${formatFirmware(c.firmware)}`);
       if (c.serialNumber) parts.push(`SN ${c.serialNumber}`);
