@@ -1,25 +1,28 @@
 import { RbcNotConnectedError } from "../../../device/errors.ts";
 import {
-  FirmwareUpdateError,
   type FirmwareUpdateOptions,
   type FirmwareUpdateProgress,
   type FirmwareUpdateResult,
-  firmwareResultSentence,
   transportFirmwareIo,
   updateFirmware,
 } from "../../../device/firmware-update.ts";
-import { IntelHexError, MAX_HEX_TEXT_CHARS, parseIntelHex } from "../../../protocol/intel-hex.ts";
+import { translator } from "../../../i18n/translate.ts";
+import { MAX_HEX_TEXT_CHARS, parseIntelHex } from "../../../protocol/intel-hex.ts";
 import type { AppContext } from "../../context.ts";
 import { errorNotice } from "../../error-text.ts";
 import { focusSoon } from "../../focus.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
 import { choosePort, webSerial } from "../../serial-ports.ts";
+import { hexProblem, tooLargeProblem } from "./file-problem.ts";
+import { firmwareMessages } from "./messages.ts";
 import { type FirmwareFile, type FirmwareRun, firmwareOf, patchFirmware } from "./state.ts";
+import { failureNotice, resultSentence } from "./update-outcome.ts";
 
 /**
  * What the Firmware view does: open and check a .hex file, update the connected robot's firmware (one
  * confirmation, the power-cycle step, progress, Cancel, the result in a sentence), and Recover: the same update
- * on a port opened without a handshake, for a robot whose firmware no longer answers.
+ * on a port opened without a handshake, for a robot whose firmware no longer answers. Sentences are made in the
+ * language of the moment the action starts (`store.get().locale`).
  */
 
 /** The demo firmware the panel offers on the demo robot: the example file of `rbc flash` (2.50, 16 KiB). */
@@ -59,13 +62,7 @@ export function openFirmwareText(ctx: AppContext, fileName: string, text: string
   } catch (e) {
     patchFirmware(ctx.store, {
       loadingFile: false,
-      fileProblem: {
-        tone: "danger",
-        text:
-          e instanceof IntelHexError
-            ? `${fileName} is not a firmware file the robot's bootloader can take. ${e.message}`
-            : `${fileName} could not be read (${String(e)}).`,
-      },
+      fileProblem: hexProblem(fileName, e, ctx.store.get().locale),
     });
   }
 }
@@ -73,14 +70,10 @@ export function openFirmwareText(ctx: AppContext, fileName: string, text: string
 /** A file from the picker or a drop. Files far bigger than any firmware are not read at all. */
 export async function openFirmwareFile(ctx: AppContext, file: File | undefined): Promise<void> {
   if (!file) return;
+  const { locale } = ctx.store.get();
   // A HEX file is ASCII: one character a byte.
   if (file.size > MAX_HEX_TEXT_CHARS) {
-    patchFirmware(ctx.store, {
-      fileProblem: {
-        tone: "danger",
-        text: `${file.name} is ${file.size.toLocaleString("en-US")} bytes: far more than any firmware for the RBC (a full one is under 400 KB as Intel HEX). It was not read.`,
-      },
-    });
+    patchFirmware(ctx.store, { fileProblem: tooLargeProblem(file.name, file.size, locale) });
     return;
   }
   patchFirmware(ctx.store, { loadingFile: true });
@@ -90,7 +83,11 @@ export async function openFirmwareFile(ctx: AppContext, file: File | undefined):
   } catch (e) {
     patchFirmware(ctx.store, {
       loadingFile: false,
-      fileProblem: errorNotice(`${file.name} could not be read.`, e),
+      fileProblem: errorNotice(
+        translator(firmwareMessages, locale)("firmware.fileUnreadable", { file: file.name }),
+        e,
+        locale,
+      ),
     });
     return;
   }
@@ -99,6 +96,7 @@ export async function openFirmwareFile(ctx: AppContext, file: File | undefined):
 
 /** "Use the demo firmware file (2.50)": made by the simulator's code, loaded only when asked for. */
 export async function openDemoFirmware(ctx: AppContext): Promise<void> {
+  const { locale } = ctx.store.get();
   patchFirmware(ctx.store, { loadingFile: true });
   try {
     const { demoFirmwareHex } = await import("../../../sim/sim-bootloader.ts");
@@ -109,7 +107,7 @@ export async function openDemoFirmware(ctx: AppContext): Promise<void> {
   } catch (e) {
     patchFirmware(ctx.store, {
       loadingFile: false,
-      fileProblem: errorNotice("The demo firmware file could not be made.", e),
+      fileProblem: errorNotice(translator(firmwareMessages, locale)("firmware.demoFileFailed"), e, locale),
     });
   }
 }
@@ -171,18 +169,6 @@ function progressHandler(ctx: AppContext) {
   };
 }
 
-/** The outcome of a failed or cancelled update, in the words the device layer chose. */
-function failureNotice(e: unknown) {
-  if (e instanceof FirmwareUpdateError) {
-    return {
-      tone: e.holds === "previous-firmware" ? ("warning" as const) : ("danger" as const),
-      text:
-        e.failure === "cancelled" ? `Update cancelled. ${e.message}` : `Firmware update failed. ${e.message}`,
-    };
-  }
-  return errorNotice("Firmware update failed.", e);
-}
-
 /**
  * Updates the connected robot: asks to switch it off and on (the demo robot restarts by itself), sends the
  * file with progress in place, reads the version the new firmware reports, says the result in a sentence.
@@ -192,6 +178,8 @@ export async function startFlash(ctx: AppContext): Promise<void> {
   const f = firmwareOf(store.get());
   const file = f.file;
   if (!file || f.run?.step !== "confirming") return;
+  const { locale } = store.get();
+  const t = translator(firmwareMessages, locale);
   if (f.run.recovery) {
     await startRecovery(ctx);
     return;
@@ -208,7 +196,7 @@ export async function startFlash(ctx: AppContext): Promise<void> {
     const boot = demoSim
       ? (await import("../../../sim/sim-bootloader.ts")).BootloaderRbc.of(demoSim)
       : undefined;
-    const result = await session.run("Updating firmware", (client) =>
+    const result = await session.run(t("firmware.running"), (client) =>
       client.updateFirmware(file.image, {
         signal: abort.signal,
         onProgress: progressHandler(ctx),
@@ -218,14 +206,14 @@ export async function startFlash(ctx: AppContext): Promise<void> {
         },
       }),
     );
-    finish(ctx, result, before);
+    finish(ctx, `${resultSentence(t, result, before)} ${t("firmware.restarted")}`, result);
   } catch (e) {
     patchFirmware(store, {
       run: undefined,
       result:
         e instanceof RbcNotConnectedError
-          ? { tone: "warning", text: "Not updated: the robot is not connected. Nothing was sent." }
-          : failureNotice(e),
+          ? { tone: "warning", text: t("firmware.notConnected") }
+          : failureNotice(e, locale),
     });
   } finally {
     if (c.abort === abort) c.abort = undefined;
@@ -233,19 +221,10 @@ export async function startFlash(ctx: AppContext): Promise<void> {
   }
 }
 
-function finish(
-  ctx: AppContext,
-  result: FirmwareUpdateResult,
-  before: { major: number; minor: number } | undefined,
-): void {
+/** The update succeeded: `text` says so, in the language of the moment it started. */
+function finish(ctx: AppContext, text: string, result: FirmwareUpdateResult): void {
   const { store } = ctx;
-  patchFirmware(store, {
-    run: undefined,
-    result: {
-      tone: "ok",
-      text: `${firmwareResultSentence(result, before)} The robot was restarted: run Basic posture before other motions.`,
-    },
-  });
+  patchFirmware(store, { run: undefined, result: { tone: "ok", text } });
   // The version the robot itself just reported.
   if (store.get().connection.phase === "connected") {
     store.update((s) => ({ connection: { ...s.connection, firmware: result.firmware } }));
@@ -274,10 +253,12 @@ export async function startRecovery(ctx: AppContext): Promise<void> {
   const file = f.file;
   const serial = webSerial();
   if (!file || !serial) return;
+  const { locale } = store.get();
+  const t = translator(firmwareMessages, locale);
   if (store.get().connection.phase !== "disconnected") {
     patchFirmware(store, {
       run: undefined,
-      result: { tone: "warning", text: "Disconnect first: Recover opens the port itself." },
+      result: { tone: "warning", text: t("firmware.disconnectFirst") },
     });
     return;
   }
@@ -285,7 +266,7 @@ export async function startRecovery(ctx: AppContext): Promise<void> {
   try {
     port = await choosePort(serial, store.get().showAllPorts);
   } catch (e) {
-    patchFirmware(store, { run: undefined, result: errorNotice("No port was chosen; nothing was sent.", e) });
+    patchFirmware(store, { run: undefined, result: errorNotice(t("firmware.noPortChosen"), e, locale) });
     return;
   }
   const c = session.pageScope.get(RECOVERY);
@@ -304,13 +285,10 @@ export async function startRecovery(ctx: AppContext): Promise<void> {
     const result = await updateFirmware(transportFirmwareIo(transport), file.image, options);
     patchFirmware(store, {
       run: undefined,
-      result: {
-        tone: "ok",
-        text: `${firmwareResultSentence(result, undefined)} Connect the robot as usual now.`,
-      },
+      result: { tone: "ok", text: `${resultSentence(t, result, undefined)} ${t("firmware.connectNow")}` },
     });
   } catch (e) {
-    patchFirmware(store, { run: undefined, result: failureNotice(e) });
+    patchFirmware(store, { run: undefined, result: failureNotice(e, locale) });
   } finally {
     if (c.abort === abort) c.abort = undefined;
     await transport.close().catch(() => {});

@@ -1,0 +1,420 @@
+/**
+ * The Firmware view in Korean (issue #14 item 1): on the demo robot at 1280×800 and 390×844, the view with the
+ * demo file opened, the confirmation, the progress and the result sentence are Korean, with `lang="ko"`, no
+ * catalogue key shown, no button label overflowing and nothing scrolling sideways; axe finds no violation. The
+ * device's words are Korean too: a refused file names its line, a cancelled update says what the robot holds,
+ * and the device's English sentence stays in the technical detail. Recover (no robot connected) in Korean.
+ * Last, the English catalogue says the device's notices and result sentence word for word (`rbc flash` says
+ * them too).
+ */
+import { mkdir } from "node:fs/promises";
+import { createRequire } from "node:module";
+import { join, resolve } from "node:path";
+import type { BrowserContext, Page } from "playwright-core";
+import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import {
+  FIRMWARE_NOTICES,
+  type FirmwareUpdateResult,
+  firmwareResultSentence,
+} from "../../src/device/firmware-update.ts";
+import { unitMessages } from "../../src/i18n/messages.ts";
+import { translator } from "../../src/i18n/translate.ts";
+import { firmwareMessages } from "../../src/ui/features/firmware/messages.ts";
+import { resultSentence } from "../../src/ui/features/firmware/update-outcome.ts";
+import { uiMessages } from "../../src/ui/messages.ts";
+import { shellMessages } from "../../src/ui/shell/messages.ts";
+import { firmwareHex } from "../support/hex.ts";
+import { type AppHarness, buildOnce, ROOT, squash, startHarness, watchPage } from "./harness.ts";
+import "./rbc-test-globals.ts";
+
+const require = createRequire(import.meta.url);
+const AXE_PATH = require.resolve("axe-core/axe.min.js");
+
+const PHONE = { width: 390, height: 844 };
+const DESKTOP = { width: 1280, height: 800 };
+
+/** Every key of the catalogues this view uses: none may show on the page in place of its text. */
+const KEYS = [firmwareMessages, shellMessages, uiMessages, unitMessages].flatMap((m) => Object.keys(m));
+
+/** Screenshots for people to look at (not compared): I18N_FIRMWARE_SCREENSHOTS=dir (e.g. /tmp/shots-c4). */
+const SHOTS = process.env.I18N_FIRMWARE_SCREENSHOTS;
+
+let app: AppHarness;
+let fakeSerial: string;
+
+beforeAll(async () => {
+  app = await startHarness();
+  ({ fakeSerial } = await buildOnce());
+});
+
+afterAll(async () => {
+  await app?.close();
+});
+
+async function shot(page: Page, name: string): Promise<void> {
+  if (!SHOTS) return;
+  const dir = resolve(ROOT, SHOTS);
+  await mkdir(dir, { recursive: true });
+  await page.screenshot({ path: join(dir, `${name}.png`), fullPage: true });
+}
+
+const lang = (page: Page) => page.evaluate(() => document.documentElement.lang);
+
+/** Buttons, navigation links and selects whose label is wider than they are, as "label (scroll > client)". */
+async function overflowing(page: Page): Promise<string[]> {
+  return page.evaluate(() =>
+    Array.from(document.querySelectorAll<HTMLElement>("button, .btn, .side-nav a, select, .skip-link"))
+      .filter((b) => b.offsetParent !== null && b.scrollWidth > b.clientWidth)
+      .map(
+        (b) => `${(b.textContent ?? "").replace(/\s+/g, " ").trim()} (${b.scrollWidth} > ${b.clientWidth})`,
+      ),
+  );
+}
+
+/** Catalogue keys shown as text or in a label (a message the page could not find). */
+async function keysShown(page: Page): Promise<string[]> {
+  const text = await page.evaluate(() =>
+    [
+      document.title,
+      document.body.textContent ?? "",
+      ...Array.from(document.querySelectorAll("[aria-label], [title], [aria-valuetext]")).map(
+        (e) =>
+          `${e.getAttribute("aria-label") ?? ""} ${e.getAttribute("title") ?? ""} ${e.getAttribute("aria-valuetext") ?? ""}`,
+      ),
+    ].join("\n"),
+  );
+  return KEYS.filter((key) => text.includes(key));
+}
+
+/** No label overflows, nothing scrolls sideways, no key shows: at `where`. */
+async function expectLaidOut(page: Page, where: string, width: number): Promise<void> {
+  expect(await overflowing(page), where).toEqual([]);
+  expect(await page.evaluate(() => document.documentElement.scrollWidth), where).toBeLessThanOrEqual(width);
+  expect(await keysShown(page), where).toEqual([]);
+}
+
+/**
+ * axe's "needs review" results that are accepted, each with the reason (as in a11y.test.ts); every other one
+ * fails like a violation.
+ */
+const REVIEWED: Record<string, string> = {
+  "color-contrast":
+    "axe cannot measure text it cannot see the background of (aria-hidden icons, text over other elements); " +
+    "the colour tokens are chosen for 4.5:1",
+};
+
+interface AxeViolation {
+  id: string;
+  impact: string | null;
+  help: string;
+  nodes: { target: unknown[]; failureSummary?: string }[];
+}
+
+async function violations(page: Page): Promise<string[]> {
+  if (!(await page.evaluate(() => "axe" in window))) await page.addScriptTag({ path: AXE_PATH });
+  const found = await page.evaluate(async () => {
+    type Run = (o: unknown) => Promise<{ violations: unknown[]; incomplete: unknown[] }>;
+    const axe = (window as unknown as { axe: { run: Run } }).axe;
+    const result = await axe.run({ resultTypes: ["violations", "incomplete"] });
+    return { violations: result.violations, incomplete: result.incomplete };
+  });
+  const line = (v: AxeViolation, kind: string) =>
+    `${v.id} (${v.impact ?? "?"}${kind}): ${v.help} — ${v.nodes.map((n) => `${JSON.stringify(n.target)} ${(n.failureSummary ?? "").replace(/\s+/g, " ")}`).join(", ")}`;
+  return [
+    ...(found.violations as AxeViolation[]).map((v) => line(v, "")),
+    ...(found.incomplete as AxeViolation[])
+      .filter((v) => !(v.id in REVIEWED))
+      .map((v) => line(v, ", needs review")),
+  ];
+}
+
+async function expectNoViolations(page: Page, where: string): Promise<void> {
+  const found = await violations(page);
+  expect(found, `axe found ${found.length} violation(s) on ${where}:\n${found.join("\n")}\n`).toEqual([]);
+}
+
+/**
+ * A Korean page with the page's CSP bypassed, so that axe can be added as a script (the harness's pages keep
+ * the CSP, which rightly refuses it). Robot time runs 4 times faster.
+ */
+async function newAxePage(): Promise<{ context: BrowserContext; page: Page }> {
+  const context = await app.browser.newContext({
+    locale: "ko-KR",
+    viewport: DESKTOP,
+    serviceWorkers: "block",
+    reducedMotion: "reduce",
+    bypassCSP: true,
+  });
+  await context.addInitScript({
+    content: `window.__rbcTestOptions = ${JSON.stringify({ timeScale: 4 })};\n;\n${fakeSerial}`,
+  });
+  return { context, page: await context.newPage() };
+}
+
+/** The demo robot (the connect card's second button, whatever its language), then the Firmware view. */
+async function openFirmwareOnDemo(page: Page): Promise<void> {
+  await page.goto(app.url, { waitUntil: "domcontentloaded" });
+  await page.getByTestId("connect-card").locator(".actions .btn").nth(1).click();
+  await page.getByTestId("device-card").waitFor();
+  await page.getByRole("link", { name: "펌웨어" }).click();
+  await page.getByTestId("firmware-view").waitFor();
+}
+
+/** Opens the demo file and asks to update: the confirmation is shown. */
+async function confirmDemoFile(page: Page): Promise<void> {
+  await page.getByTestId("fw-demo-file").click();
+  await page.getByTestId("fw-summary").waitFor();
+  await page.getByTestId("flash-start").click();
+  await page.getByTestId("flash-confirm").waitFor();
+}
+
+const RESULT =
+  /^펌웨어를 업데이트했어요\. 로봇이 알려 준 버전: 2\.50 \(이전: 2\.23\)\. [\d.]+초 동안 1,025줄을 썼어요\. 로봇이 다시 시작했어요\. 다른 모션을 실행하기 전에 기본 자세를 실행해 주세요\.$/;
+
+describe("the Firmware view in Korean", () => {
+  for (const [name, viewport] of [
+    ["desktop", DESKTOP],
+    ["phone", PHONE],
+  ] as const) {
+    it(`shows the file, the confirmation, progress and the result in Korean (${name})`, {
+      timeout: 60_000,
+    }, async () => {
+      const { page, context } = await app.newPage({ locale: "ko-KR", viewport, options: { timeScale: 4 } });
+      const seen = watchPage(page, app.origin);
+      await openFirmwareOnDemo(page);
+      expect(await lang(page)).toBe("ko");
+      const view = page.getByTestId("firmware-view");
+      expect(await view.getByRole("heading", { level: 1 }).textContent()).toBe("펌웨어");
+      expect(await view.getByRole("heading", { level: 2 }).allTextContents()).toEqual([
+        "펌웨어 파일",
+        "로봇 업데이트",
+      ]);
+      expect(squash(await page.getByTestId("fw-current").textContent())).toBe(
+        "데모 로봇이 알려 준 펌웨어 버전: 2.23",
+      );
+      expect(squash(await page.getByTestId("fw-notice").textContent())).toBe(
+        "실제 로봇에서는 실험 단계예요. 부트로더 자체는 절대 덮어쓰지 않아요. 그래서 업데이트가 실패하거나 중간에 끊겨도 업데이트를 다시 하면 고쳐져요. " +
+          "업데이트가 끝날 때까지 로봇의 전원을 켜 둔 채(충전된 배터리나 어댑터) 로봇을 눕혀 두고, 케이블도 꽂아 두세요.",
+      );
+      await page.getByText("먼저 펌웨어 파일을 열어 주세요.").waitFor();
+      await page.getByRole("button", { name: "데모 펌웨어 파일 사용 (2.50)" }).waitFor();
+      await expectLaidOut(page, "the view", viewport.width);
+
+      await page.getByTestId("fw-demo-file").click();
+      await page.getByTestId("fw-summary").waitFor();
+      expect(await page.getByTestId("fw-size").textContent().then(squash)).toBe("16,384바이트");
+      expect(await page.getByTestId("fw-pages").textContent().then(squash)).toBe("256바이트 페이지 64개");
+      expect(await page.getByTestId("fw-lines").textContent().then(squash)).toBe(
+        "1,025줄 (보낼 데이터 46,093바이트)",
+      );
+      expect(await page.getByTestId("fw-summary").locator("dt").allTextContents()).toEqual([
+        "크기",
+        "주소 범위",
+        "플래시 페이지",
+        "줄 수",
+      ]);
+      await page.getByRole("button", { name: "파일 닫기" }).waitFor();
+      await expectLaidOut(page, "the file opened", viewport.width);
+      await shot(page, `ko-file-${name}`);
+
+      await page.getByRole("button", { name: "펌웨어 업데이트…" }).click();
+      const confirm = page.getByTestId("flash-confirm");
+      await confirm.waitFor();
+      expect(squash(await confirm.textContent())).toBe(
+        "로봇의 펌웨어를 demo-2.50.hex(으)로 바꿀까요? 데모 로봇은 요청하면 스스로 다시 시작해요. " +
+          "다음으로 로봇을 껐다가 켜 달라는 안내가 나오고, 그다음 파일을 한 줄씩 써요. 펌웨어 업데이트 취소",
+      );
+      await expectLaidOut(page, "the confirmation", viewport.width);
+      await shot(page, `ko-confirm-${name}`);
+      await page.getByRole("button", { name: "펌웨어 업데이트", exact: true }).click();
+
+      const progress = page.getByTestId("flash-progress");
+      await progress.waitFor();
+      expect(squash(await progress.textContent())).toContain("지금 로봇을 껐다가 다시 켜 주세요.");
+      const figures = page.getByTestId("flash-figures");
+      await figures.filter({ hasText: /초당/ }).waitFor({ timeout: 20_000 });
+      expect(squash(await figures.textContent())).toMatch(
+        /^1,025줄 중 [\d,]+줄 · 46,093바이트 중 [\d,]+바이트 \(\d+%\) · 초당 [\d,]+바이트 · (약 \d+초 남음|약 \d+분 \d+초 남음)$/,
+      );
+      expect(await progress.locator("progress").getAttribute("aria-label")).toBe(
+        "demo-2.50.hex(으)로 펌웨어 업데이트",
+      );
+      expect(squash(await progress.textContent())).toContain("demo-2.50.hex 쓰기");
+      await expectLaidOut(page, "the progress", viewport.width);
+      await shot(page, `ko-progress-${name}`);
+
+      const result = page.getByTestId("flash-result").getByText(/펌웨어를 업데이트했어요/);
+      await result.waitFor({ timeout: 40_000 });
+      expect(squash(await result.textContent())).toMatch(RESULT);
+      expect(await page.getByTestId("fw-version").textContent().then(squash)).toBe("2.50");
+      expect(await page.getByTestId("flash-result").getByRole("status").getAttribute("aria-label")).toBe(
+        "펌웨어 업데이트 결과",
+      );
+      await expectLaidOut(page, "the result", viewport.width);
+      await shot(page, `ko-result-${name}`);
+      expect(seen.errors).toEqual([]);
+      await context.close();
+    });
+  }
+
+  it("says in Korean why a file is refused and what a cancelled update leaves, with the device's English in the detail", {
+    timeout: 60_000,
+  }, async () => {
+    const { page, context } = await app.newPage({ locale: "ko-KR", options: { timeScale: 2 } });
+    await openFirmwareOnDemo(page);
+
+    const lines = firmwareHex("2.50", 512).split("\r\n");
+    lines[2] = `${lines[2]!.slice(0, -2)}00`;
+    await page.getByTestId("fw-file-input").setInputFiles({
+      name: "broken.hex",
+      mimeType: "text/plain",
+      buffer: Buffer.from(lines.join("\r\n")),
+    });
+    const problem = page.locator(".fw-file .notice");
+    await problem.waitFor();
+    expect(squash(await problem.locator("p").textContent())).toBe(
+      "broken.hex은(는) 로봇의 부트로더가 받을 수 있는 펌웨어 파일이 아니에요. 3번째 줄: 레코드의 체크섬이 맞지 않아요.",
+    );
+    expect(await problem.locator("summary").textContent()).toBe("기술 정보");
+    expect(squash(await problem.locator("pre").textContent())).toMatch(
+      /^IntelHexError: Line 3: the checksum is 00 but/,
+    );
+    expect(await problem.locator("pre").getAttribute("lang")).toBe("en");
+    expect(await page.getByTestId("fw-summary").count()).toBe(0);
+
+    await page.getByTestId("fw-file-input").setInputFiles({
+      name: "big-2.60.hex",
+      mimeType: "text/plain",
+      buffer: Buffer.from(firmwareHex("2.60", 64 * 1024)),
+    });
+    await page.getByTestId("fw-summary").waitFor();
+    await page.getByTestId("flash-start").click();
+    await page.getByRole("button", { name: "펌웨어 업데이트", exact: true }).click();
+    await page.getByTestId("flash-figures").filter({ hasText: /초당/ }).waitFor({ timeout: 20_000 });
+    expect(squash(await page.getByTestId("flash-progress").textContent())).toContain(
+      "지금 취소하면 업데이트가 성공할 때까지 로봇의 펌웨어가 불완전할 수 있어요.",
+    );
+    await page.getByRole("button", { name: "취소", exact: true }).click();
+    const result = page.getByTestId("flash-result").locator(".notice");
+    await result.getByText(/업데이트를 취소했어요/).waitFor({ timeout: 20_000 });
+    expect(squash(await result.locator("p").textContent())).toBe(
+      "업데이트를 취소했어요. 로봇의 펌웨어가 불완전할 수 있고, 업데이트가 성공할 때까지 로봇이 작동하지 않을 수 있어요. " +
+        "부트로더는 절대 덮어쓰지 않아요. 로봇을 껐다가 켜고 업데이트를 다시 해 주세요.",
+    );
+    expect(squash(await result.locator("pre").textContent())).toBe(
+      "FirmwareUpdateError (cancelled): The firmware update was cancelled. The robot's firmware may now be incomplete, and the robot may not work until an update succeeds. The bootloader is never overwritten: switch the robot off and on and run the update again.",
+    );
+    expect(await page.getByTestId("fw-version").textContent().then(squash)).toBe("2.23");
+    await expectLaidOut(page, "the cancelled update", DESKTOP.width);
+    await context.close();
+  });
+
+  for (const [name, viewport] of [
+    ["desktop", DESKTOP],
+    ["phone", PHONE],
+  ] as const) {
+    it(`offers Recover in Korean while no robot is connected (${name})`, async () => {
+      const { page, context } = await app.newPage({ locale: "ko-KR", viewport });
+      await page.goto(app.url, { waitUntil: "domcontentloaded" });
+      await page.getByTestId("connect-card").waitFor();
+      await page.getByRole("link", { name: "펌웨어" }).click();
+      await page.getByTestId("firmware-view").waitFor();
+      expect(await lang(page)).toBe("ko");
+      await page.getByRole("heading", { level: 2, name: "복구: 응답하지 않는 로봇 업데이트" }).waitFor();
+      expect(await page.getByTestId("recover-start").textContent().then(squash)).toBe("복구…");
+      expect(await page.getByTestId("recover-start").isDisabled()).toBe(true);
+      // A real file opens here too; Recover's confirmation asks for the port first.
+      await page.getByTestId("fw-file-input").setInputFiles({
+        name: "firmware-2.60.hex",
+        mimeType: "text/plain",
+        buffer: Buffer.from(firmwareHex("2.60", 1024)),
+      });
+      await page.getByTestId("fw-summary").waitFor();
+      await page.getByTestId("recover-start").click();
+      const confirm = page.getByTestId("flash-confirm");
+      await confirm.waitFor();
+      expect(squash(await confirm.textContent())).toContain(
+        "응답하지 않는 로봇에 firmware-2.60.hex을(를) 쓸까요?",
+      );
+      expect(squash(await confirm.textContent())).toContain("먼저 브라우저가 로봇의 포트를 물어봐요.");
+      await page.getByRole("button", { name: "포트 선택 후 업데이트" }).waitFor();
+      await expectLaidOut(page, "Recover", viewport.width);
+      await shot(page, `ko-recover-${name}`);
+      await context.close();
+    });
+  }
+
+  it("says in Korean that a browser without Web Serial cannot Recover", async () => {
+    const { page, context } = await app.newPage({ locale: "ko-KR", noSerial: true });
+    await page.goto(`${app.url}#/firmware`, { waitUntil: "domcontentloaded" });
+    await page.getByTestId("firmware-view").waitFor();
+    const note = page.getByText(/Web Serial을 지원하지 않아요/);
+    expect(squash(await note.textContent())).toBe(
+      "이 브라우저는 Web Serial을 지원하지 않아요. 컴퓨터에서 Chrome이나 Edge를 쓰거나 rbc flash --recover 명령을 써 주세요.",
+    );
+    expect(await note.locator("code").textContent()).toBe("rbc flash --recover");
+    expect(await keysShown(page)).toEqual([]);
+    await context.close();
+  });
+
+  it("axe finds no violation: the file, the confirmation, the progress and the result", {
+    timeout: 60_000,
+  }, async () => {
+    const { page, context } = await newAxePage();
+    await openFirmwareOnDemo(page);
+    expect(await lang(page)).toBe("ko");
+    await expectNoViolations(page, "the Firmware view");
+    await confirmDemoFile(page);
+    await expectNoViolations(page, "the confirmation");
+    await page.getByRole("button", { name: "펌웨어 업데이트", exact: true }).click();
+    await page.getByTestId("flash-progress").waitFor();
+    await expectNoViolations(page, "the progress");
+    await page
+      .getByTestId("flash-result")
+      .getByText(/펌웨어를 업데이트했어요/)
+      .waitFor({ timeout: 40_000 });
+    await expectNoViolations(page, "the result");
+    await context.close();
+  });
+});
+
+describe("the Firmware view's English", () => {
+  const en = translator(firmwareMessages, "en");
+
+  it("says the device's notices word for word, as rbc flash does", () => {
+    expect(en("firmware.notice.experimental")).toBe(FIRMWARE_NOTICES.experimental);
+    expect(en("firmware.notice.recovery")).toBe(FIRMWARE_NOTICES.recovery);
+    expect(en("firmware.notice.keepPowered")).toBe(FIRMWARE_NOTICES.keepPowered);
+    expect(en("firmware.notice.demoRestarts")).toBe(FIRMWARE_NOTICES.demoRestarts);
+  });
+
+  it("says the result as the device's sentence does, and in Korean with Korean units", () => {
+    const result = (sendingMs: number, resends: number): FirmwareUpdateResult => ({
+      firmware: { major: 2, minor: 50 },
+      lines: 4097,
+      bytes: 184_333,
+      resends,
+      sendingMs,
+      bytesPerSecond: 0,
+      linesPerSecond: 0,
+    });
+    const cases = [
+      [result(83_400, 0), { major: 2, minor: 23 }],
+      [result(4_060, 0), { major: 2, minor: 23 }],
+      [result(9_960, 2), undefined],
+      [result(12_500, 1), { major: 2, minor: 5 }],
+    ] as const;
+    for (const [r, before] of cases)
+      expect(resultSentence(en, r, before)).toBe(firmwareResultSentence(r, before));
+    expect(resultSentence(en, result(83_400, 0), { major: 2, minor: 23 })).toBe(
+      "Firmware updated: the robot now reports 2.50 (was 2.23). 4,097 lines in 83 s.",
+    );
+    const ko = translator(firmwareMessages, "ko");
+    expect(resultSentence(ko, result(4_060, 2), { major: 2, minor: 23 })).toBe(
+      "펌웨어를 업데이트했어요. 로봇이 알려 준 버전: 2.50 (이전: 2.23). 4.1초 동안 4,097줄을 썼어요. 체크섬 오류로 2줄을 다시 보냈어요.",
+    );
+    expect(resultSentence(ko, result(12_500, 0), undefined)).toBe(
+      "펌웨어를 업데이트했어요. 로봇이 알려 준 버전: 2.50. 13초 동안 4,097줄을 썼어요.",
+    );
+  });
+});
