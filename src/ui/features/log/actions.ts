@@ -1,9 +1,10 @@
+import { translator } from "../../../i18n/translate.ts";
 import { formatLocalDate } from "../../../shared/format.ts";
 import type { Notice } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { downloadTextFile } from "../../download-file.ts";
 import { errorNotice } from "../../error-text.ts";
-import { formatCount } from "../../format.ts";
+import { logMessages } from "./messages.ts";
 import { logAsText } from "./packet-log.ts";
 import type { LogViewState } from "./state.ts";
 
@@ -20,6 +21,10 @@ function setNotice(ctx: AppContext, notice: Notice | undefined): void {
   setLog(ctx, { notice });
 }
 
+/**
+ * The exported log's first line. The export is a packet trace (like the CLI's `rbc log`): it stays in English
+ * in every language, with the device's packet names, so it reads the same wherever it is sent.
+ */
 function header(ctx: AppContext): string {
   const c = ctx.store.get().connection;
   const robot = c.robot?.kind === "demo" ? "demo robot" : (c.robot?.name ?? "no robot");
@@ -27,20 +32,23 @@ function header(ctx: AppContext): string {
 }
 
 export async function copyLog(ctx: AppContext): Promise<void> {
+  const { locale } = ctx.store.get();
+  const t = translator(logMessages, locale);
   const lines = ctx.packetLog.lines();
   try {
     await navigator.clipboard.writeText(logAsText(lines, header(ctx)));
-    setNotice(ctx, { tone: "ok", text: `Copied ${formatCount(lines.length)} lines to the clipboard.` });
+    setNotice(ctx, { tone: "ok", text: t("log.copied", { count: lines.length }) });
   } catch (e) {
-    setNotice(ctx, errorNotice("Copying failed; use Download instead.", e));
+    setNotice(ctx, errorNotice(t("log.copyFailed"), e, locale));
   }
 }
 
 export function downloadLog(ctx: AppContext): void {
+  const t = translator(logMessages, ctx.store.get().locale);
   const lines = ctx.packetLog.lines();
   const name = `rbc-packet-log-${formatLocalDate(new Date())}.txt`;
   downloadTextFile(name, logAsText(lines, header(ctx)));
-  setNotice(ctx, { tone: "ok", text: `Saved ${formatCount(lines.length)} lines as ${name}.` });
+  setNotice(ctx, { tone: "ok", text: t("log.saved", { count: lines.length, file: name }) });
 }
 
 /** While paused, the view keeps showing the same entries; capture goes on underneath. */

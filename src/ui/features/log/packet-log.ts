@@ -60,7 +60,8 @@ export class LogLine {
     readonly name: string,
     /** Bytes this entry stands for on the wire. */
     public byteCount: number,
-    private readonly givenNote?: string,
+    /** What the device said about the bytes ("chunk 3 (255 bytes)"), in English like the packet's name. */
+    readonly givenNote?: string,
   ) {}
 
   /** The bytes kept, oldest first: a view of the log's store, valid until the next push (copy to keep). */

@@ -5,6 +5,8 @@ import {
   RbcVerifyError,
 } from "../../../device/errors.ts";
 import { ZeroWriteFailedError } from "../../../device/zero-policy.ts";
+import type { Locale } from "../../../i18n/locale.ts";
+import { translator } from "../../../i18n/translate.ts";
 import { ZERO_COUNT } from "../../../protocol/zeros.ts";
 import {
   createZerosBackup,
@@ -19,8 +21,11 @@ import type { AppContext } from "../../context.ts";
 import { downloadTextFile } from "../../download-file.ts";
 import { errorMessage, errorNotice, technicalDetail } from "../../error-text.ts";
 import { focusSoon } from "../../focus.ts";
+import { formatDateTime } from "../../format.ts";
 import type { Store } from "../../store.ts";
+import { refusal } from "./backup-refusal.ts";
 import { checkDraft, draftTable, factoryDraft, toDraft } from "./editor.ts";
+import { type ZerosTranslator, zerosMessages } from "./messages.ts";
 import type { ZerosState } from "./state.ts";
 
 /** What the zeros view does: read, edit, back up, write (after a backup), restore, factory zeros. */
@@ -47,32 +52,32 @@ export function cancelWrite(ctx: AppContext): void {
 
 export async function readZerosFromRobot(ctx: AppContext): Promise<void> {
   const { session, store } = ctx;
-  if (store.get().zeros.busy) return;
+  const { zeros: z, locale } = store.get();
+  if (z.busy) return;
+  const t = translator(zerosMessages, locale);
   patchZeros(store, { busy: "reading", result: undefined, confirming: false });
   try {
-    const zeros = await session.run("Reading zeros", (client) => client.readZeros());
+    const zeros = await session.run(t("zeros.runReading"), (client) => client.readZeros());
     patchZeros(store, {
       busy: undefined,
       stored: zeros,
       draft: toDraft(zeros),
-      source: "the robot",
+      source: { kind: "robot" },
       fileNotice: undefined,
     });
   } catch (e) {
-    patchZeros(store, { busy: undefined, result: errorNotice("Reading the zeros failed.", e) });
+    patchZeros(store, { busy: undefined, result: errorNotice(t("zeros.readFailed"), e, locale) });
   }
 }
 
 export function useFactoryZeros(ctx: AppContext): void {
+  const t = translator(zerosMessages, ctx.store.get().locale);
   patchZeros(ctx.store, {
     draft: factoryDraft(),
-    source: "the factory zeros",
+    source: { kind: "factory" },
     confirming: false,
     result: undefined,
-    fileNotice: {
-      tone: "info",
-      text: "The factory zeros are in the editor. Nothing is written until you press Write.",
-    },
+    fileNotice: { tone: "info", text: t("zeros.factoryLoaded") },
   });
 }
 
@@ -83,16 +88,15 @@ export function useFactoryZeros(ctx: AppContext): void {
  */
 export async function backUpZeros(ctx: AppContext): Promise<void> {
   const { session, store } = ctx;
-  if (store.get().zeros.busy) return;
+  const { zeros: before, locale } = store.get();
+  if (before.busy) return;
+  const t = translator(zerosMessages, locale);
   patchZeros(store, { busy: "backing-up", confirming: false, fileNotice: undefined });
   let zeros: number[];
   try {
-    zeros = await session.run("Backing up zeros", (client) => client.readZeros());
+    zeros = await session.run(t("zeros.runBackingUp"), (client) => client.readZeros());
   } catch (e) {
-    patchZeros(store, {
-      busy: undefined,
-      fileNotice: errorNotice("No backup was saved: the zeros could not be read from the robot.", e),
-    });
+    patchZeros(store, { busy: undefined, fileNotice: errorNotice(t("zeros.backupReadFailed"), e, locale) });
     return;
   }
   const c = store.get().connection;
@@ -111,53 +115,54 @@ export async function backUpZeros(ctx: AppContext): Promise<void> {
     busy: undefined,
     stored: zeros,
     // Before the first read the editor is empty: fill it with what was read.
-    ...(z.draft.length === ZERO_COUNT ? {} : { draft: toDraft(zeros), source: "the robot" }),
-    fileNotice: {
-      tone: "ok",
-      text: `Backup saved as ${name}, ${zeros.length} zeros read from the robot. To put them back later: Restore from backup.`,
-    },
+    ...(z.draft.length === ZERO_COUNT ? {} : { draft: toDraft(zeros), source: { kind: "robot" } }),
+    fileNotice: { tone: "ok", text: t("zeros.backupDone", { file: name, count: zeros.length }) },
   });
 }
 
 export async function restoreFromFile(ctx: AppContext, file: File): Promise<void> {
   const { store } = ctx;
+  const { locale } = store.get();
+  const t = translator(zerosMessages, locale);
   let text: string;
   try {
     text = await file.text();
   } catch (e) {
-    patchZeros(store, { fileNotice: errorNotice(`"${file.name}" could not be read.`, e) });
+    patchZeros(store, { fileNotice: errorNotice(t("zeros.fileUnreadable", { file: file.name }), e, locale) });
     return;
   }
   const parsed = parseZerosBackup(text);
   if (!parsed.ok) {
-    patchZeros(store, {
-      fileNotice: {
-        tone: "danger",
-        text: `"${file.name}" was not loaded. ${parsed.message}`,
-        detail: parsed.problem,
-      },
-    });
+    patchZeros(store, { fileNotice: refusal(file, text, parsed, t) });
     return;
   }
-  const warning = serialMismatchWarning(parsed.backup, store.get().connection.serialNumber);
-  const saved = new Date(parsed.backup.savedAt).toLocaleString();
-  const fileNotice: Notice = warning
-    ? { tone: "warning", text: `Loaded "${file.name}" (saved ${saved}) into the editor. ${warning}` }
-    : {
-        tone: "info",
-        text: `Loaded "${file.name}" (saved ${saved}) into the editor. Nothing is written until you press Write.`,
-      };
+  const { backup } = parsed;
+  const serial = store.get().connection.serialNumber;
+  const saved = formatDateTime(new Date(backup.savedAt), locale);
+  // serialMismatchWarning decides (the CLI warns with its sentence); the panel says it in its language.
+  const fileNotice: Notice =
+    serial !== undefined && serialMismatchWarning(backup, serial)
+      ? {
+          tone: "warning",
+          text: t("zeros.loadedOtherRobot", {
+            file: file.name,
+            saved,
+            backupSerial: backup.serialNumber || t("zeros.unknownRobot"),
+            serial,
+          }),
+        }
+      : { tone: "info", text: t("zeros.loaded", { file: file.name, saved }) };
   patchZeros(store, {
-    draft: toDraft(parsed.backup.zeros),
-    source: `backup ${file.name}`,
+    draft: toDraft(backup.zeros),
+    source: { kind: "backup", file: file.name },
     confirming: false,
     result: undefined,
     fileNotice,
   });
 }
 
-function failureSentence(e: unknown, backupName: string): Notice {
-  const backup = `Backup saved as ${backupName}.`;
+function failureSentence(e: unknown, file: string, t: ZerosTranslator): Notice {
+  const backup = t("zeros.backupSaved", { file });
   const detail = technicalDetail(e);
   if (e instanceof RbcVerifyError) {
     const wrong = e.expected
@@ -165,26 +170,29 @@ function failureSentence(e: unknown, backupName: string): Notice {
       .filter((id) => id !== undefined);
     return {
       tone: "danger",
-      text: `Zeros were sent but did not verify: read back ${ZERO_COUNT - wrong.length}/${ZERO_COUNT} (servo ${wrong.join(", ")} differ). ${backup} Read the zeros again; restore the backup if needed.`,
+      text: t("zeros.verifyFailed", {
+        read: ZERO_COUNT - wrong.length,
+        total: ZERO_COUNT,
+        servos: wrong.join(", "),
+        file,
+      }),
       detail,
     };
   }
   if (e instanceof RbcDisconnectedError) {
-    return {
-      tone: "danger",
-      text: `The write did not finish: the robot was disconnected. ${backup} Reconnect and read the zeros before anything else.`,
-      detail,
-    };
+    return { tone: "danger", text: t("zeros.writeDisconnected", { file }), detail };
   }
   if (e instanceof RbcCancelledError) {
-    return {
-      tone: "danger",
-      text: `The write was cancelled by Stop. ${backup} Read the zeros to see what the robot holds.`,
-      detail,
-    };
+    return { tone: "danger", text: t("zeros.writeCancelled", { file }), detail };
   }
-  if (e instanceof RbcRejectedError) return { tone: "danger", text: `${e.message} ${backup}`, detail };
-  return { tone: "danger", text: `Writing the zeros failed. ${errorMessage(e)} ${backup}`, detail };
+  if (e instanceof RbcRejectedError) {
+    return { tone: "danger", text: `${errorMessage(e, t.locale)} ${backup}`, detail };
+  }
+  return {
+    tone: "danger",
+    text: `${t("zeros.writeFailed")} ${errorMessage(e, t.locale)} ${backup}`,
+    detail,
+  };
 }
 
 /** Backup first (the robot's current zeros, read fresh), then write, read back and verify. */
@@ -192,15 +200,11 @@ export async function writeZerosToRobot(ctx: AppContext): Promise<void> {
   const { session, store } = ctx;
   const state = store.get();
   if (state.zeros.busy) return;
-  const table = draftTable(checkDraft(state.zeros.draft));
+  const locale: Locale = state.locale;
+  const t = translator(zerosMessages, locale);
+  const table = draftTable(checkDraft(state.zeros.draft, locale));
   if (!table) {
-    patchZeros(store, {
-      confirming: false,
-      result: {
-        tone: "danger",
-        text: "Nothing was written: some values are not accepted. Fix the marked fields.",
-      },
-    });
+    patchZeros(store, { confirming: false, result: { tone: "danger", text: t("zeros.invalidValues") } });
     return;
   }
   patchZeros(store, { busy: "writing", confirming: false, result: undefined });
@@ -210,7 +214,7 @@ export async function writeZerosToRobot(ctx: AppContext): Promise<void> {
   try {
     // The device's zero-write policy: check, read the current zeros, save them (here: a download), then
     // write, read back and verify. The robot's zeros are never changed before the backup exists.
-    const outcome = await session.run("Writing zeros", (client) =>
+    const outcome = await session.run(t("zeros.runWriting"), (client) =>
       client.writeZerosWithBackup(table, {
         robot: {
           serialNumber: c.serialNumber,
@@ -228,8 +232,8 @@ export async function writeZerosToRobot(ctx: AppContext): Promise<void> {
         busy: undefined,
         stored: outcome.current,
         draft: toDraft(outcome.current),
-        source: "the robot",
-        result: { tone: "ok", text: "The robot already holds these zeros: nothing was written." },
+        source: { kind: "robot" },
+        result: { tone: "ok", text: t("zeros.alreadyHeld") },
       });
       return;
     }
@@ -237,11 +241,8 @@ export async function writeZerosToRobot(ctx: AppContext): Promise<void> {
   } catch (e) {
     const cause: unknown = e instanceof ZeroWriteFailedError ? e.reason : e;
     const result = backupName
-      ? failureSentence(cause, backupName)
-      : errorNotice(
-          "Nothing was written: the robot's current zeros could not be read for the backup.",
-          cause,
-        );
+      ? failureSentence(cause, backupName, t)
+      : errorNotice(t("zeros.backupFirstFailed"), cause, locale);
     patchZeros(store, { busy: undefined, result });
     return;
   }
@@ -250,11 +251,11 @@ export async function writeZerosToRobot(ctx: AppContext): Promise<void> {
     busy: undefined,
     stored: readBack,
     draft: toDraft(readBack),
-    source: "the robot",
+    source: { kind: "robot" },
     fileNotice: undefined,
     result: {
       tone: "verified",
-      text: `Zeros written and verified (read back ${verified}/${ZERO_COUNT}). Backup saved as ${backupName}.`,
+      text: t("zeros.written", { read: verified, total: ZERO_COUNT, file: backupName ?? "" }),
     },
   });
 }

@@ -1,5 +1,11 @@
-import { HUNO_JOINT_NAMES } from "../../../protocol/servo-limits.ts";
+import type { Locale } from "../../../i18n/locale.ts";
+import { translator } from "../../../i18n/translate.ts";
 import { diffZeros, FACTORY_ZEROS, ZERO_COUNT, type ZeroChange, zeroRange } from "../../../protocol/zeros.ts";
+import { jointName } from "./joints/joint-name.ts";
+import { zerosMessages } from "./messages.ts";
+
+// Where the Servos view and the Editor have always found it (import it from joints/joint-name.ts to load less).
+export { jointName };
 
 /** The zeros editor's rules, as pure functions of its text fields. */
 
@@ -10,30 +16,26 @@ export interface DraftCheck {
   problems: Map<number, string>;
 }
 
-export function jointName(id: number): string {
-  return HUNO_JOINT_NAMES[id] ?? `Servo ${id}`;
-}
-
-export function checkDraft(draft: readonly string[]): DraftCheck {
+/** Checks the editor's fields; the problems are sentences in `locale` (English when not given). */
+export function checkDraft(draft: readonly string[], locale: Locale = "en"): DraftCheck {
+  const t = translator(zerosMessages, locale);
   const values: (number | undefined)[] = [];
   const problems = new Map<number, string>();
   for (let id = 0; id < ZERO_COUNT; id++) {
     const text = (draft[id] ?? "").trim();
     const { min, max } = zeroRange(id);
-    const who = `Servo ${id} (${jointName(id)})`;
+    const who = { id: String(id), joint: jointName(id, locale), min, max };
     if (text === "") {
-      problems.set(id, `${who}: enter a value from ${min} to ${max}.`);
+      problems.set(id, t("zeros.problemEmpty", who));
       values.push(undefined);
     } else if (!/^\d+$/.test(text)) {
-      problems.set(id, `${who}: "${text}" is not a whole number; use ${min} to ${max}.`);
+      problems.set(id, t("zeros.problemNotWhole", { ...who, text }));
       values.push(undefined);
     } else {
       const value = Number(text);
       if (value < min || value > max) {
-        problems.set(
-          id,
-          `${who}: ${value} is outside ${min}–${max}; the robot would refuse the whole table.`,
-        );
+        // As typed (a number the robot refuses is not grouped: "1000", not "1,000").
+        problems.set(id, t("zeros.problemOutside", { ...who, value: String(value) }));
         values.push(undefined);
       } else {
         values.push(value);

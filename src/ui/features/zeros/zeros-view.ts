@@ -1,5 +1,6 @@
 import { html, nothing, type TemplateResult } from "lit-html";
 import { live } from "lit-html/directives/live.js";
+import { translator } from "../../../i18n/translate.ts";
 import {
   FACTORY_ZEROS,
   STANDARD_ZEROS,
@@ -22,8 +23,16 @@ import {
   writeZerosToRobot,
 } from "./actions.ts";
 import { checkDraft, type DraftCheck, draftTable, jointName, pendingChanges } from "./editor.ts";
+import { type ZerosTranslator, zerosMessages } from "./messages.ts";
+import type { ZerosSource } from "./state.ts";
 
-function row(ctx: ViewContext, id: number, check: DraftCheck, stored: readonly number[]): TemplateResult {
+function row(
+  ctx: ViewContext,
+  t: ZerosTranslator,
+  id: number,
+  check: DraftCheck,
+  stored: readonly number[],
+): TemplateResult {
   const { min, max } = zeroRange(id);
   const text = ctx.state.zeros.draft[id] ?? "";
   const value = check.values[id];
@@ -31,7 +40,7 @@ function row(ctx: ViewContext, id: number, check: DraftCheck, stored: readonly n
   const problem = check.problems.get(id);
   const delta = value !== undefined && storedValue !== undefined ? value - storedValue : 0;
   const busy = ctx.state.zeros.busy !== undefined;
-  const name = jointName(id);
+  const name = jointName(id, t.locale);
   return html`
     <tr class=${problem ? "is-invalid" : delta !== 0 ? "is-changed" : ""} data-servo=${id}>
       <td class="num zero-id">${id}</td>
@@ -53,7 +62,7 @@ function row(ctx: ViewContext, id: number, check: DraftCheck, stored: readonly n
           @input=${(e: Event) => setZeroText(ctx, id, (e.target as HTMLInputElement).value)}
         />
         <span id=${`zero-${id}-hint`} class=${problem ? "zero-hint text-danger" : "zero-hint"}>
-          ${problem ? `Must be ${min}–${max}` : `${min}–${max}`}
+          ${problem ? t("zeros.mustBe", { min, max }) : `${min}–${max}`}
         </span>
       </td>
       <td class="zero-slider">
@@ -63,50 +72,65 @@ function row(ctx: ViewContext, id: number, check: DraftCheck, stored: readonly n
           max=${max}
           step="1"
           ?disabled=${busy}
-          aria-label=${`${name} (servo ${id}), slider ${min} to ${max}`}
+          aria-label=${t("zeros.sliderLabel", { name, id: String(id), min, max })}
           .value=${live(String(value ?? storedValue ?? min))}
           @input=${(e: Event) => setZeroText(ctx, id, (e.target as HTMLInputElement).value)}
         />
       </td>
-      <td class="num zero-stored" data-label="Stored">${storedValue ?? "—"}</td>
-      <td class="num zero-diff ${delta === 0 ? "" : "has-diff"}" data-label="Change">
-        ${delta === 0 ? html`<span class="muted" aria-hidden="true">·</span><span class="sr-only">unchanged</span>` : formatDelta(delta)}
+      <td
+        class="num zero-stored"
+        data-label=${t("zeros.colStored")}
+        data-prefix=${t("zeros.storedPrefix")}
+      >${storedValue ?? "—"}</td>
+      <td class="num zero-diff ${delta === 0 ? "" : "has-diff"}" data-label=${t("zeros.colChange")}>
+        ${
+          delta === 0
+            ? html`<span class="muted" aria-hidden="true">·</span><span class="sr-only">${t("zeros.unchanged")}</span>`
+            : formatDelta(delta, t.locale)
+        }
       </td>
     </tr>
   `;
 }
 
-function changeSummary(changes: readonly ZeroChange[]): string {
-  if (changes.length === 0) return "The editor matches the zeros stored in the robot.";
-  const list = changes.map((c) => `servo ${c.id} ${c.from} → ${c.to}`).join(", ");
-  return `${changes.length} ${changes.length === 1 ? "change" : "changes"} not yet written: ${list}.`;
+function changeSummary(t: ZerosTranslator, changes: readonly ZeroChange[]): string {
+  if (changes.length === 0) return t("zeros.noChanges");
+  // Zero values as the robot holds them (0-254), not grouped.
+  const list = changes
+    .map((c) => t("zeros.changeItem", { id: String(c.id), from: String(c.from), to: String(c.to) }))
+    .join(", ");
+  return t("zeros.changes", { count: changes.length, list });
 }
 
-function writeControls(ctx: ViewContext, check: DraftCheck, changes: readonly ZeroChange[]): TemplateResult {
+function writeControls(
+  ctx: ViewContext,
+  t: ZerosTranslator,
+  check: DraftCheck,
+  changes: readonly ZeroChange[],
+): TemplateResult {
   const z = ctx.state.zeros;
   const valid = draftTable(check) !== undefined;
   const why =
     z.busy === "writing"
-      ? "Writing: saving the backup, writing, reading back…"
+      ? t("zeros.whyWriting")
       : !valid
-        ? `Cannot write: ${check.problems.size} ${check.problems.size === 1 ? "value is" : "values are"} outside the accepted range.`
+        ? t("zeros.whyInvalid", { count: check.problems.size })
         : changes.length === 0
-          ? "Nothing to write yet: change a value first."
-          : "A backup of the robot's current zeros is saved before writing.";
+          ? t("zeros.whyNothing")
+          : t("zeros.whyBackup");
   if (z.confirming && valid && changes.length > 0) {
     return html`
       <div class="confirm" role="group" aria-labelledby="confirm-title">
         <p id="confirm-title">
-          <strong>Write ${changes.length} changed ${changes.length === 1 ? "zero" : "zeros"} to the robot?</strong>
-          The robot's current zeros are saved to a backup file first, then the new table is written, read back
-          and checked. The robot does not move.
+          <strong>${t("zeros.confirmQuestion", { count: changes.length })}</strong>
+          ${t("zeros.confirmText")}
         </p>
         <div class="actions">
           <button id="confirm-write" type="button" class="btn btn--primary" @click=${() => void writeZerosToRobot(ctx)}>
-            Save backup and write
+            ${t("zeros.confirmWrite")}
           </button>
           <button type="button" class="btn" @click=${() => cancelWrite(ctx)}>
-            Cancel
+            ${t("zeros.cancel")}
           </button>
         </div>
       </div>
@@ -122,7 +146,7 @@ function writeControls(ctx: ViewContext, check: DraftCheck, changes: readonly Ze
         aria-describedby="write-why"
         @click=${() => askToWrite(ctx)}
       >
-        ${z.busy === "writing" ? "Writing…" : "Write to robot…"}
+        ${z.busy === "writing" ? t("zeros.writing") : t("zeros.write")}
       </button>
       <span id="write-why" class=${valid ? "muted small" : "text-danger small"} data-testid="write-why">${why}</span>
     </div>
@@ -133,16 +157,14 @@ function writeControls(ctx: ViewContext, check: DraftCheck, changes: readonly Ze
  * The two tables people confuse, under the names the CLI uses too: the factory zeros (what a new robot holds)
  * and the reference zeros (what the robot checks every write against).
  */
-function zeroTables(disabled: boolean, ctx: ViewContext): TemplateResult {
+function zeroTables(disabled: boolean, ctx: ViewContext, t: ZerosTranslator): TemplateResult {
+  const list = (zeros: readonly number[]) => html`<span class="num zero-list">${zeros.join(" ")}</span>`;
   return html`
     <dl class="zero-tables" data-testid="zero-tables">
       <div>
-        <dt>Factory zeros</dt>
+        <dt>${t("zeros.factoryTitle")}</dt>
         <dd>
-          <span id="factory-zeros-why">
-            The values the robot's firmware holds when it is new:
-            <span class="num zero-list">${FACTORY_ZEROS.join(" ")}</span>.
-          </span>
+          <span id="factory-zeros-why">${t.parts("zeros.factoryWhy", { list: list(FACTORY_ZEROS) })}</span>
           <button
             type="button"
             class="btn"
@@ -150,36 +172,46 @@ function zeroTables(disabled: boolean, ctx: ViewContext): TemplateResult {
             aria-describedby="factory-zeros-why"
             @click=${() => useFactoryZeros(ctx)}
           >
-            Load factory zeros
+            ${t("zeros.loadFactory")}
           </button>
         </dd>
       </div>
       <div>
-        <dt>Reference zeros</dt>
+        <dt>${t("zeros.referenceTitle")}</dt>
         <dd>
-          The table the robot checks every write against:
-          <span class="num zero-list">${STANDARD_ZEROS.join(" ")}</span>. Each zero must stay within
-          ±${ZERO_TOLERANCE} of it (the range beside each field), or the robot refuses the whole table.
+          ${t.parts("zeros.referenceWhy", { list: list(STANDARD_ZEROS), tolerance: ZERO_TOLERANCE })}
         </dd>
       </div>
     </dl>
   `;
 }
 
+function sourceText(t: ZerosTranslator, source: ZerosSource): string {
+  switch (source.kind) {
+    case "robot":
+      return t("zeros.sourceRobot");
+    case "factory":
+      return t("zeros.sourceFactory");
+    case "backup":
+      return t("zeros.sourceBackup", { file: source.file });
+  }
+}
+
 function render(ctx: ViewContext): TemplateResult {
-  const z = ctx.state.zeros;
+  const { zeros: z, locale } = ctx.state;
+  const t = translator(zerosMessages, locale);
   const stored = z.stored;
   const ready = stored !== undefined && z.draft.length === ZERO_COUNT;
-  const check = checkDraft(z.draft);
+  const check = checkDraft(z.draft, locale);
   const changes = pendingChanges(stored, check);
   const busy = z.busy !== undefined;
   return html`
     <section class="card" aria-labelledby="view-title" data-testid="zeros-card">
       <div class="card-head">
-        <h1 id="view-title">Zero positions</h1>
+        <h1 id="view-title">${t("zeros.title")}</h1>
         <div class="row-actions">
           <button type="button" class="btn" ?disabled=${busy} @click=${() => void readZerosFromRobot(ctx)}>
-            ${z.busy === "reading" ? "Reading…" : "Read from robot"}
+            ${z.busy === "reading" ? t("zeros.reading") : t("zeros.readFromRobot")}
           </button>
           <button
             type="button"
@@ -189,10 +221,10 @@ function render(ctx: ViewContext): TemplateResult {
             aria-describedby="backup-why"
             @click=${() => void backUpZeros(ctx)}
           >
-            ${z.busy === "backing-up" ? "Backing up…" : "Back up zeros"}
+            ${z.busy === "backing-up" ? t("zeros.backingUp") : t("zeros.backUp")}
           </button>
           <label class="btn file-button ${busy || !ready ? "is-disabled" : ""}">
-            Restore from backup…
+            ${t("zeros.restore")}
             <input
               class="sr-only"
               type="file"
@@ -210,37 +242,41 @@ function render(ctx: ViewContext): TemplateResult {
         </div>
       </div>
       <p class="muted">
-        The robot adds each servo's zero to every motion it plays.
-        <span id="backup-why">Back up zeros saves the robot's current zeros to a file you can restore later.</span>
-        ${z.source ? html`Values in the editor come from <strong>${z.source}</strong>.` : nothing}
+        ${t("zeros.intro")}
+        <span id="backup-why">${t("zeros.backupWhy")}</span>
+        ${
+          z.source
+            ? t.parts("zeros.source", { source: html`<strong>${sourceText(t, z.source)}</strong>` })
+            : nothing
+        }
       </p>
-      ${zeroTables(busy || !ready, ctx)}
-      ${liveNotice(z.fileNotice, "Backup file")}
+      ${zeroTables(busy || !ready, ctx, t)}
+      ${liveNotice(z.fileNotice, t("zeros.fileNoticeLabel"), locale)}
       ${
         ready
           ? html`
               <table class="zeros-table">
-                <caption class="sr-only">Zero position of each servo, the value stored in the robot, and the change</caption>
+                <caption class="sr-only">${t("zeros.caption")}</caption>
                 <thead>
                   <tr>
-                    <th scope="col">ID</th>
-                    <th scope="col">Joint</th>
-                    <th scope="col">Zero</th>
-                    <th scope="col"><span class="sr-only">Slider</span></th>
-                    <th scope="col">Stored</th>
-                    <th scope="col">Change</th>
+                    <th scope="col">${t("zeros.colId")}</th>
+                    <th scope="col">${t("zeros.colJoint")}</th>
+                    <th scope="col">${t("zeros.colZero")}</th>
+                    <th scope="col"><span class="sr-only">${t("zeros.colSlider")}</span></th>
+                    <th scope="col">${t("zeros.colStored")}</th>
+                    <th scope="col">${t("zeros.colChange")}</th>
                   </tr>
                 </thead>
                 <tbody>
-                  ${Array.from({ length: ZERO_COUNT }, (_, id) => row(ctx, id, check, stored))}
+                  ${Array.from({ length: ZERO_COUNT }, (_, id) => row(ctx, t, id, check, stored))}
                 </tbody>
               </table>
-              <p class="change-summary" data-testid="change-summary">${changeSummary(changes)}</p>
-              ${writeControls(ctx, check, changes)}
+              <p class="change-summary" data-testid="change-summary">${changeSummary(t, changes)}</p>
+              ${writeControls(ctx, t, check, changes)}
             `
-          : html`<p>${z.busy === "reading" ? "Reading the zeros from the robot…" : "The zeros have not been read yet."}</p>`
+          : html`<p>${z.busy === "reading" ? t("zeros.readingZeros") : t("zeros.notRead")}</p>`
       }
-      ${liveNotice(z.result, "Write result")}
+      ${liveNotice(z.result, t("zeros.resultLabel"), locale)}
     </section>
   `;
 }

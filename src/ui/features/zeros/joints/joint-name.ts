@@ -1,0 +1,34 @@
+import type { KeysWithoutParams } from "../../../../i18n/catalogue.ts";
+import type { Locale } from "../../../../i18n/locale.ts";
+import { translator } from "../../../../i18n/translate.ts";
+import { jointMessages } from "./messages.ts";
+
+/** The HUNO's joints by servo id (the same English names as protocol/servo-limits.ts's HUNO_JOINT_NAMES). */
+const JOINT_KEYS: readonly KeysWithoutParams<typeof jointMessages>[] = [
+  "joint.rightHipRoll",
+  "joint.rightHipPitch",
+  "joint.rightKnee",
+  "joint.rightAnklePitch",
+  "joint.rightAnkleRoll",
+  "joint.leftHipRoll",
+  "joint.leftHipPitch",
+  "joint.leftKnee",
+  "joint.leftAnklePitch",
+  "joint.leftAnkleRoll",
+  "joint.rightShoulderPitch",
+  "joint.rightShoulderRoll",
+  "joint.rightElbow",
+  "joint.leftShoulderPitch",
+  "joint.leftShoulderRoll",
+  "joint.leftElbow",
+];
+
+/**
+ * A servo's joint, "Right ankle pitch" / "오른쪽 발목 피치"; "Servo 16" above 15. Pass the panel's language
+ * (`ctx.state.locale`); English when not given (views not yet translated).
+ */
+export function jointName(id: number, locale: Locale = "en"): string {
+  const t = translator(jointMessages, locale);
+  const key = JOINT_KEYS[id];
+  return key ? t(key) : t("joint.servo", { id: String(id) });
+}

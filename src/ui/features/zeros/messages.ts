@@ -1,0 +1,206 @@
+import { defineMessages } from "../../../i18n/catalogue.ts";
+import type { Translator } from "../../../i18n/translate.ts";
+
+/** The Zeros view: the zero table, its editor, backups and the write. */
+export const zerosMessages = defineMessages({
+  "zeros.title": { en: "Zero positions", ko: "영점 위치" },
+  "zeros.readFromRobot": { en: "Read from robot", ko: "로봇에서 읽기" },
+  "zeros.reading": { en: "Reading…", ko: "읽는 중…" },
+  "zeros.backUp": { en: "Back up zeros", ko: "영점 백업" },
+  "zeros.backingUp": { en: "Backing up…", ko: "백업 중…" },
+  "zeros.restore": { en: "Restore from backup…", ko: "백업에서 복원…" },
+  "zeros.intro": {
+    en: "The robot adds each servo's zero to every motion it plays.",
+    ko: "로봇은 모션을 재생할 때마다 각 서보의 영점을 더해요.",
+  },
+  "zeros.backupWhy": {
+    en: "Back up zeros saves the robot's current zeros to a file you can restore later.",
+    ko: "'영점 백업'은 로봇의 지금 영점을 파일로 저장해요. 나중에 그 파일로 복원할 수 있어요.",
+  },
+  "zeros.source": {
+    en: "Values in the editor come from {source}.",
+    ko: "편집 표의 값은 {source}에서 가져왔어요.",
+  },
+  "zeros.sourceRobot": { en: "the robot", ko: "로봇" },
+  "zeros.sourceFactory": { en: "the factory zeros", ko: "공장 영점" },
+  "zeros.sourceBackup": { en: "backup {file}", ko: "백업 파일 {file}" },
+  "zeros.factoryTitle": { en: "Factory zeros", ko: "공장 영점" },
+  "zeros.factoryWhy": {
+    en: "The values the robot's firmware holds when it is new: {list}.",
+    ko: "새 로봇의 펌웨어에 들어 있는 값이에요: {list}.",
+  },
+  "zeros.loadFactory": { en: "Load factory zeros", ko: "공장 영점 불러오기" },
+  "zeros.referenceTitle": { en: "Reference zeros", ko: "기준 영점" },
+  "zeros.referenceWhy": {
+    en: "The table the robot checks every write against: {list}. Each zero must stay within ±{tolerance} of it (the range beside each field), or the robot refuses the whole table.",
+    ko: "로봇이 영점을 쓸 때마다 비교하는 표예요: {list}. 각 영점은 이 값에서 ±{tolerance} 안에 있어야 해요(각 칸 옆의 범위). 벗어나면 로봇이 표 전체를 거부해요.",
+  },
+  "zeros.fileNoticeLabel": { en: "Backup file", ko: "백업 파일" },
+  "zeros.resultLabel": { en: "Write result", ko: "쓰기 결과" },
+  "zeros.caption": {
+    en: "Zero position of each servo, the value stored in the robot, and the change",
+    ko: "서보마다의 영점 위치, 로봇에 저장된 값, 변경",
+  },
+  "zeros.colId": { en: "ID", ko: "ID" },
+  "zeros.colJoint": { en: "Joint", ko: "관절" },
+  "zeros.colZero": { en: "Zero", ko: "영점" },
+  "zeros.colSlider": { en: "Slider", ko: "슬라이더" },
+  "zeros.colStored": { en: "Stored", ko: "저장된 값" },
+  "zeros.colChange": { en: "Change", ko: "변경" },
+  "zeros.storedPrefix": { en: "stored", ko: "저장값" },
+  "zeros.unchanged": { en: "unchanged", ko: "변경 없음" },
+  "zeros.mustBe": { en: "Must be {min}–{max}", ko: "{min}–{max}만 가능" },
+  "zeros.sliderLabel": {
+    en: "{name} (servo {id}), slider {min} to {max}",
+    ko: "{name} (서보 {id}) 슬라이더, {min}–{max}",
+  },
+  "zeros.notRead": { en: "The zeros have not been read yet.", ko: "아직 영점을 읽지 않았어요." },
+  "zeros.readingZeros": { en: "Reading the zeros from the robot…", ko: "로봇에서 영점을 읽는 중…" },
+  "zeros.noChanges": {
+    en: "The editor matches the zeros stored in the robot.",
+    ko: "편집 표가 로봇에 저장된 영점과 같아요.",
+  },
+  "zeros.changes": {
+    en: { one: "{count} change not yet written: {list}.", other: "{count} changes not yet written: {list}." },
+    ko: "아직 쓰지 않은 변경 {count}개: {list}.",
+  },
+  "zeros.changeItem": { en: "servo {id} {from} → {to}", ko: "서보 {id} {from} → {to}" },
+  "zeros.whyWriting": {
+    en: "Writing: saving the backup, writing, reading back…",
+    ko: "쓰는 중: 백업 저장, 쓰기, 다시 읽기…",
+  },
+  "zeros.whyInvalid": {
+    en: {
+      one: "Cannot write: {count} value is outside the accepted range.",
+      other: "Cannot write: {count} values are outside the accepted range.",
+    },
+    ko: "쓸 수 없어요: 허용 범위를 벗어난 값이 {count}개 있어요.",
+  },
+  "zeros.whyNothing": {
+    en: "Nothing to write yet: change a value first.",
+    ko: "아직 쓸 것이 없어요. 먼저 값을 바꿔 주세요.",
+  },
+  "zeros.whyBackup": {
+    en: "A backup of the robot's current zeros is saved before writing.",
+    ko: "쓰기 전에 로봇의 지금 영점을 백업 파일로 저장해요.",
+  },
+  "zeros.confirmQuestion": {
+    en: {
+      one: "Write {count} changed zero to the robot?",
+      other: "Write {count} changed zeros to the robot?",
+    },
+    ko: "바뀐 영점 {count}개를 로봇에 쓸까요?",
+  },
+  "zeros.confirmText": {
+    en: "The robot's current zeros are saved to a backup file first, then the new table is written, read back and checked. The robot does not move.",
+    ko: "먼저 로봇의 지금 영점을 백업 파일로 저장하고, 새 표를 쓴 다음 다시 읽어 확인해요. 로봇은 움직이지 않아요.",
+  },
+  "zeros.confirmWrite": { en: "Save backup and write", ko: "백업 저장 후 쓰기" },
+  "zeros.cancel": { en: "Cancel", ko: "취소" },
+  "zeros.write": { en: "Write to robot…", ko: "로봇에 쓰기…" },
+  "zeros.writing": { en: "Writing…", ko: "쓰는 중…" },
+
+  // What the actions say. Labels of session.run appear in "Still running: …".
+  "zeros.runReading": { en: "Reading zeros", ko: "영점 읽기" },
+  "zeros.runBackingUp": { en: "Backing up zeros", ko: "영점 백업" },
+  "zeros.runWriting": { en: "Writing zeros", ko: "영점 쓰기" },
+  "zeros.readFailed": { en: "Reading the zeros failed.", ko: "영점을 읽지 못했어요." },
+  "zeros.factoryLoaded": {
+    en: "The factory zeros are in the editor. Nothing is written until you press Write.",
+    ko: "공장 영점을 편집 표에 넣었어요. '로봇에 쓰기'를 누르기 전에는 아무것도 쓰지 않아요.",
+  },
+  "zeros.backupReadFailed": {
+    en: "No backup was saved: the zeros could not be read from the robot.",
+    ko: "백업을 저장하지 않았어요. 로봇에서 영점을 읽지 못했어요.",
+  },
+  "zeros.backupDone": {
+    en: "Backup saved as {file}, {count} zeros read from the robot. To put them back later: Restore from backup.",
+    ko: "백업을 {file}(으)로 저장했어요. 로봇에서 영점 {count}개를 읽었어요. 나중에 되돌리려면 '백업에서 복원'을 눌러 주세요.",
+  },
+  "zeros.fileUnreadable": { en: '"{file}" could not be read.', ko: '"{file}" 파일을 읽지 못했어요.' },
+  "zeros.fileRefused": {
+    en: '"{file}" was not loaded. {reason}',
+    ko: '"{file}" 파일을 불러오지 않았어요. {reason}',
+  },
+  // Why a backup file is refused. In English the panel shows the parser's own sentence (it names the value);
+  // these English texts are its gist. In Korean these sentences, with the parser's sentence as the detail.
+  "zeros.backupNotJson": {
+    en: "This file is not a zero backup: it is not JSON text. Choose a file saved by this panel, named like rbc-zeros-<serial>-<date>.json.",
+    ko: "영점 백업 파일이 아니에요(JSON 텍스트가 아님). 이 패널이 저장한 파일을 골라 주세요. 이름은 rbc-zeros-<시리얼 번호>-<날짜>.json 같은 모양이에요.",
+  },
+  "zeros.backupWrongFormat": {
+    en: "This file is JSON but not an RBC zero backup. Choose a file saved by this panel, named like rbc-zeros-<serial>-<date>.json.",
+    ko: "JSON 파일이지만 RBC 영점 백업이 아니에요. 이 패널이 저장한 파일을 골라 주세요. 이름은 rbc-zeros-<시리얼 번호>-<날짜>.json 같은 모양이에요.",
+  },
+  "zeros.backupWrongVersion": {
+    en: "This backup is of a version this panel does not read.",
+    ko: "이 패널이 읽을 수 없는 버전의 백업이에요. 자세한 내용은 기술 정보에 있어요.",
+  },
+  "zeros.backupWrongCount": {
+    en: "This backup does not hold exactly 16 values, one per servo 0-15.",
+    ko: "영점 표에는 서보 0-15마다 하나씩 정확히 16개의 값이 있어야 하는데, 이 백업은 그렇지 않아요.",
+  },
+  "zeros.backupOutOfRange": {
+    en: "The robot would refuse this backup's zeros (servo {servos}).",
+    ko: "로봇이 이 백업의 영점을 거부할 거예요. 서보 {servos}의 값이 정수가 아니거나 허용 범위를 벗어나요.",
+  },
+  "zeros.backupDamaged": {
+    en: "This backup file is damaged.",
+    ko: "이 백업 파일은 손상됐어요. 자세한 내용은 기술 정보에 있어요.",
+  },
+  "zeros.loaded": {
+    en: 'Loaded "{file}" (saved {saved}) into the editor. Nothing is written until you press Write.',
+    ko: "\"{file}\" 파일({saved}에 저장)을 편집 표에 불러왔어요. '로봇에 쓰기'를 누르기 전에는 아무것도 쓰지 않아요.",
+  },
+  "zeros.loadedOtherRobot": {
+    en: 'Loaded "{file}" (saved {saved}) into the editor. This backup was saved from robot {backupSerial}, not the connected robot {serial}. Zeros are calibrated per robot: check each value before writing.',
+    ko: '"{file}" 파일({saved}에 저장)을 편집 표에 불러왔어요. 이 백업은 연결된 로봇({serial})이 아니라 다른 로봇({backupSerial})에서 저장했어요. 영점은 로봇마다 따로 맞춘 값이니, 쓰기 전에 값을 하나하나 확인해 주세요.',
+  },
+  "zeros.unknownRobot": { en: "(unknown)", ko: "(알 수 없음)" },
+  "zeros.backupSaved": { en: "Backup saved as {file}.", ko: "백업을 {file}(으)로 저장했어요." },
+  "zeros.verifyFailed": {
+    en: "Zeros were sent but did not verify: read back {read}/{total} (servo {servos} differ). Backup saved as {file}. Read the zeros again; restore the backup if needed.",
+    ko: "영점을 보냈지만 확인되지 않았어요. 다시 읽은 값 중 {read}/{total}개만 맞아요(서보 {servos}이(가) 달라요). 백업을 {file}(으)로 저장했어요. 영점을 다시 읽고, 필요하면 백업을 복원해 주세요.",
+  },
+  "zeros.writeDisconnected": {
+    en: "The write did not finish: the robot was disconnected. Backup saved as {file}. Reconnect and read the zeros before anything else.",
+    ko: "쓰기를 끝내지 못했어요. 로봇과의 연결이 끊겼어요. 백업을 {file}(으)로 저장했어요. 다시 연결한 뒤 다른 일보다 먼저 영점을 읽어 주세요.",
+  },
+  "zeros.writeCancelled": {
+    en: "The write was cancelled by Stop. Backup saved as {file}. Read the zeros to see what the robot holds.",
+    ko: "정지를 눌러 쓰기를 취소했어요. 백업을 {file}(으)로 저장했어요. 로봇에 어떤 값이 들어 있는지 영점을 읽어 확인해 주세요.",
+  },
+  "zeros.writeFailed": { en: "Writing the zeros failed.", ko: "영점을 쓰지 못했어요." },
+  "zeros.invalidValues": {
+    en: "Nothing was written: some values are not accepted. Fix the marked fields.",
+    ko: "아무것도 쓰지 않았어요. 허용되지 않는 값이 있어요. 표시된 칸을 고쳐 주세요.",
+  },
+  "zeros.alreadyHeld": {
+    en: "The robot already holds these zeros: nothing was written.",
+    ko: "로봇에 이미 이 영점이 들어 있어요. 아무것도 쓰지 않았어요.",
+  },
+  "zeros.backupFirstFailed": {
+    en: "Nothing was written: the robot's current zeros could not be read for the backup.",
+    ko: "아무것도 쓰지 않았어요. 백업에 쓸 로봇의 지금 영점을 읽지 못했어요.",
+  },
+  "zeros.written": {
+    en: "Zeros written and verified (read back {read}/{total}). Backup saved as {file}.",
+    ko: "영점을 쓰고 다시 읽어 확인했어요({read}/{total}). 백업을 {file}(으)로 저장했어요.",
+  },
+
+  // Why a field cannot be written (editor.ts).
+  "zeros.problemEmpty": {
+    en: "Servo {id} ({joint}): enter a value from {min} to {max}.",
+    ko: "서보 {id} ({joint}): {min}에서 {max} 사이의 값을 넣어 주세요.",
+  },
+  "zeros.problemNotWhole": {
+    en: 'Servo {id} ({joint}): "{text}" is not a whole number; use {min} to {max}.',
+    ko: '서보 {id} ({joint}): "{text}"은(는) 정수가 아니에요. {min}에서 {max} 사이의 값을 넣어 주세요.',
+  },
+  "zeros.problemOutside": {
+    en: "Servo {id} ({joint}): {value} is outside {min}–{max}; the robot would refuse the whole table.",
+    ko: "서보 {id} ({joint}): {value}은(는) {min}–{max} 범위를 벗어나요. 로봇이 표 전체를 거부할 거예요.",
+  },
+});
+
+export type ZerosTranslator = Translator<typeof zerosMessages>;
