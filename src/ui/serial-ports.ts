@@ -1,4 +1,7 @@
 import type { LinkKind } from "../device/round-trip.ts";
+import type { Locale } from "../i18n/locale.ts";
+import { translator } from "../i18n/translate.ts";
+import { uiMessages } from "./messages.ts";
 
 /** Web Serial in the panel: feature detection, the chooser's filters, and names for ports. */
 
@@ -72,13 +75,17 @@ export function linkKindOf(info: PortInfo): LinkKind {
   return info.usbVendorId === undefined ? "unknown" : "wired";
 }
 
-/** "FTDI USB serial adapter (0403:6001)", "Bluetooth serial port", or a description of a port without ids. */
-export function describePort(info: PortInfo): string {
-  if (info.bluetoothServiceClassId !== undefined) return "Bluetooth serial port";
-  if (info.usbVendorId === undefined) return "Serial port (Bluetooth or built in)";
+/**
+ * "FTDI USB serial adapter (0403:6001)", "Bluetooth serial port", or a description of a port without ids, in
+ * the panel's language (English when not given).
+ */
+export function describePort(info: PortInfo, locale: Locale = "en"): string {
+  const t = translator(uiMessages, locale);
+  if (info.bluetoothServiceClassId !== undefined) return t("port.bluetooth");
+  if (info.usbVendorId === undefined) return t("port.builtIn");
   const vendor = USB_SERIAL_VENDORS.find((v) => v.usbVendorId === info.usbVendorId)?.name;
   const ids = `${hex4(info.usbVendorId)}:${info.usbProductId === undefined ? "????" : hex4(info.usbProductId)}`;
-  return vendor ? `${vendor} USB serial adapter (${ids})` : `USB serial device (${ids})`;
+  return vendor ? t("port.usbAdapter", { vendor, ids }) : t("port.usbDevice", { ids });
 }
 
 /**
@@ -103,7 +110,7 @@ export function choosePort(serial: Serial, showAll: boolean): Promise<SerialPort
   });
 }
 
-/** Ports this site was granted earlier, with their descriptions. */
+/** Ports this site was granted earlier, with their descriptions in English (views name them with `describePort`). */
 export async function grantedPorts(serial: Serial): Promise<{ port: SerialPort; label: string }[]> {
   const ports = await serial.getPorts();
   return ports.map((port) => ({ port, label: describePort(port.getInfo()) }));

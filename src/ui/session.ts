@@ -1,5 +1,6 @@
 import { RbcNotConnectedError } from "../device/errors.ts";
 import type { ClientState, RbcClient } from "../device/index.ts";
+import { type Translator, translator } from "../i18n/translate.ts";
 import type { SerialPortLike } from "../link/index.ts";
 import { type Clock, realClock } from "../shared/clock.ts";
 import type { SimulatedRbc } from "../sim/simulated-rbc.ts";
@@ -16,10 +17,12 @@ import {
   type RobotLabel,
 } from "./features/connection/state.ts";
 import type { PacketLog } from "./features/log/packet-log.ts";
+import { uiMessages } from "./messages.ts";
 import { Scope } from "./scope.ts";
 import { choosePort, describePort, linkKindOf, webSerial } from "./serial-ports.ts";
 import type { Store } from "./store.ts";
 
+/** The demo robot; the panel names it in its language (`robotName`), `name` is its English name. */
 export const DEMO_ROBOT: RobotLabel = { kind: "demo", name: "Demo robot" };
 /** The demo robot behind a simulated Bluetooth link (replies 300 ± 150 ms late, in bursts). */
 export const DEMO_BLUETOOTH_ROBOT: RobotLabel = {
@@ -115,11 +118,16 @@ export class Session {
           return;
         }
         const info = port.getInfo();
-        void this.connectPort(port, { kind: "hardware", name: describePort(info), link: linkKindOf(info) });
+        void this.connectPort(port, {
+          kind: "hardware",
+          name: describePort(info),
+          link: linkKindOf(info),
+          info,
+        });
       },
       (e: unknown) => {
         if (chooser !== this.chooser) return;
-        const { notice, showHelp } = chooserProblem(e);
+        const { notice, showHelp } = chooserProblem(e, this.store.get().locale);
         this.setConnection({ phase: "disconnected", problem: notice, showHelp });
       },
     );
@@ -134,10 +142,7 @@ export class Session {
     this.chooser++;
     this.setConnection({
       phase: "disconnected",
-      problem: {
-        tone: "info",
-        text: "Stopped waiting for the port chooser. Connect robot opens it again; if the browser's list is still open, close it first.",
-      },
+      problem: { tone: "info", text: this.t()("session.stoppedWaiting") },
     });
   }
 
@@ -147,6 +152,7 @@ export class Session {
    */
   async connectDemo(options: { bluetooth?: boolean } = {}): Promise<boolean> {
     const robot = options.bluetooth ? DEMO_BLUETOOTH_ROBOT : DEMO_ROBOT;
+    const t = this.t();
     this.setConnection({ phase: "connecting", robot, problem: undefined, lostReason: undefined });
     try {
       const { createDemoRobot } = await import("./demo-robot.ts");
@@ -155,13 +161,14 @@ export class Session {
     } catch (e) {
       this.setConnection({
         phase: "disconnected",
-        problem: errorNotice("The demo robot could not start.", e),
+        problem: errorNotice(t("session.demoFailed"), e, t.locale),
       });
       return false;
     }
   }
 
   async connectPort(port: SerialPortLike, robot: RobotLabel, simulated?: Simulated): Promise<boolean> {
+    const t = this.t();
     await this.release();
     this.setConnection({ phase: "connecting", robot, problem: undefined, lostReason: undefined });
     let client: RbcClient;
@@ -173,7 +180,7 @@ export class Session {
     } catch (e) {
       this.setConnection({
         phase: "disconnected",
-        problem: errorNotice("The panel's connection code did not load.", e),
+        problem: errorNotice(t("session.codeNotLoaded"), e, t.locale),
       });
       return false;
     }
@@ -212,7 +219,7 @@ export class Session {
       if (this.client === client) {
         this.forgetClient();
         await client.close().catch(() => {});
-        this.setConnection({ phase: "disconnected", problem: connectProblem(e) });
+        this.setConnection({ phase: "disconnected", problem: connectProblem(e, t.locale) });
       }
       return false;
     }
@@ -231,7 +238,7 @@ export class Session {
         interrupted.length > 0
           ? {
               tone: "warning",
-              text: `Disconnected while this was running: ${interrupted.join(", ")}. It did not finish; check the result after reconnecting.`,
+              text: this.t()("session.disconnectedWhileRunning", { list: interrupted.join(", ") }),
             }
           : undefined,
       lostReason: undefined,
@@ -336,6 +343,11 @@ export class Session {
     if (!previous) return;
     this.forgetClient();
     await previous.close().catch(() => {});
+  }
+
+  /** The panel's words in its language of the moment (a sentence stays in the language it was made in). */
+  private t(): Translator<typeof uiMessages> {
+    return translator(uiMessages, this.store.get().locale);
   }
 
   private setConnection(patch: Partial<ConnectionState>): void {

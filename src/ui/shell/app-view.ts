@@ -2,6 +2,7 @@ import { html, nothing, type TemplateResult } from "lit-html";
 import { translator } from "../../i18n/translate.ts";
 import { dismissStopNotice } from "../features/connection/actions.ts";
 import { connectCard } from "../features/connection/connect-card.ts";
+import { robotName } from "../features/connection/robot-name.ts";
 import { topBar } from "../features/connection/top-bar.ts";
 import { unsupportedCard } from "../features/connection/unsupported-card.ts";
 import { uiMessages } from "../messages.ts";
@@ -87,7 +88,8 @@ export function pageTitle(ctx: Pick<ViewContext, "state">): string {
   const registration = VIEWS.find((v) => v.id === ctx.state.route);
   const view = registration ? t(registration.label) : undefined;
   const { phase, robot: label } = ctx.state.connection;
-  const robot = phase === "connected" && label?.kind === "demo" ? t("shell.demoRobot") : undefined;
+  const robot =
+    phase === "connected" && label?.kind === "demo" ? robotName(label, ctx.state.locale) : undefined;
   const panel = translator(uiMessages, ctx.state.locale)("panel.name");
   return [view, robot, panel].filter((part) => part).join(" · ");
 }

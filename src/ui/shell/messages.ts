@@ -14,7 +14,6 @@ export const shellMessages = defineMessages({
 
   "shell.skipToContent": { en: "Skip to content", ko: "본문으로 건너뛰기" },
   "shell.language": { en: "Language / 언어", ko: "언어 / Language" },
-  "shell.demoRobot": { en: "Demo robot", ko: "데모 로봇" },
   "shell.loading": { en: "Loading…", ko: "불러오는 중…" },
   "shell.loadFailedTitle": {
     en: "This part of the panel did not load",

@@ -1,11 +1,14 @@
 import type { StopActivityResult } from "../../../device/rbc-client.ts";
-import { frameLabel } from "../../../device/tethered-play-types.ts";
+import type { Locale } from "../../../i18n/locale.ts";
+import { translator } from "../../../i18n/translate.ts";
+import { formatSeconds } from "../../../i18n/units.ts";
 import type { AppState, Notice } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { errorNotice } from "../../error-text.ts";
 import { focusSoon } from "../../focus.ts";
 import { forgetPort, grantedPorts, webSerial } from "../../serial-ports.ts";
 import type { Store } from "../../store.ts";
+import { type ConnectionTranslator, connectionMessages } from "./messages.ts";
 import type { ConnectionState, RobotLabel } from "./state.ts";
 
 /** Connecting, disconnecting and the list of earlier ports; Stop, Limp and their outcome banner. */
@@ -26,17 +29,13 @@ export async function refreshKnownPorts(store: Store<AppState>): Promise<void> {
 }
 
 export async function forgetKnownPort(ctx: AppContext, port: SerialPort): Promise<void> {
+  const t = translator(connectionMessages, ctx.store.get().locale);
   try {
     if (!(await forgetPort(port))) {
-      setConnection(ctx.store, {
-        problem: {
-          tone: "warning",
-          text: "This browser cannot forget ports. Remove the permission in the site settings instead.",
-        },
-      });
+      setConnection(ctx.store, { problem: { tone: "warning", text: t("connection.cannotForget") } });
     }
   } catch (e) {
-    setConnection(ctx.store, { problem: errorNotice("The port could not be forgotten.", e) });
+    setConnection(ctx.store, { problem: errorNotice(t("connection.forgetFailed"), e, t.locale) });
   }
   await refreshKnownPorts(ctx.store);
 }
@@ -69,80 +68,74 @@ export function disconnect(ctx: AppContext): void {
 }
 
 /** Whole seconds, rounded up, for "the sound ends in 3 s". */
-function secondsLeft(ms: number): string {
-  return `${Math.max(1, Math.ceil(ms / 1000))} s`;
+function secondsLeft(ms: number, locale: Locale): string {
+  return formatSeconds(Math.max(1, Math.ceil(ms / 1000)), locale, 0);
 }
 
 /** What Stop is waiting for, said before it is done (the robot's state mirrored in the store). */
 function stoppingText(state: AppState, now: number): string {
   const c = state.connection;
+  const t = translator(connectionMessages, state.locale);
   if (c.sounding) {
     const left = c.sounding.startedAt + c.sounding.expectedMs - now;
-    return `Stopping: a sound is playing and the robot takes nothing until it ends; the sound ends in about ${secondsLeft(left)}.`;
+    return t("connection.stopping.sound", { time: secondsLeft(left, state.locale) });
   }
-  if (c.playing) return `Stopping: motion ${c.playing.motion} ends at the end of its current scene…`;
-  if (c.mode === "download") return "Stopping: cancelling the upload…";
-  return "Stopping…";
+  if (c.playing) return t("connection.stopping.motion", { motion: String(c.playing.motion) });
+  if (c.mode === "download") return t("connection.stopping.upload");
+  return t("connection.stopping");
+}
+
+/** Where tethered play stopped, and how far it got. */
+function playStopped(t: ConnectionTranslator, play: NonNullable<StopActivityResult["tetheredPlay"]>): string {
+  const { framesSent: sent, totalFrames: total, lastFrame } = play;
+  if (!lastFrame) return t("connection.outcome.playNotStarted");
+  const frame = String(lastFrame.frame);
+  return lastFrame.scene < 0
+    ? t("connection.outcome.playStoppedTransition", { frame, sent, total })
+    : t("connection.outcome.playStoppedScene", { scene: String(lastFrame.scene), frame, sent, total });
 }
 
 /**
  * What Stop did, as plain sentences, never more certain than the robot confirmed. `limp` says whether every
  * servo had been made limp before (Stop does not change that).
  */
-export function stopOutcome(result: StopActivityResult, limp: boolean): Notice {
+export function stopOutcome(result: StopActivityResult, limp: boolean, locale: Locale = "en"): Notice {
+  const t = translator(connectionMessages, locale);
   const parts: string[] = [];
   let unsure = false;
-  if (result.uploadCancelled) {
-    parts.push("The upload was cancelled; its result says what the robot's memory holds now.");
-  }
+  if (result.uploadCancelled) parts.push(t("connection.outcome.uploadCancelled"));
   if (result.sound) {
-    const { number, confirmed } = result.sound;
-    if (confirmed)
-      parts.push(`Sound ${number} was waited out (the robot takes nothing while a sound plays).`);
+    const sound = String(result.sound.number);
+    if (result.sound.confirmed) parts.push(t("connection.outcome.soundWaited", { sound }));
     else {
       unsure = true;
-      parts.push(`Sound ${number} was waited out, but the robot did not report its end.`);
+      parts.push(t("connection.outcome.soundUnconfirmed", { sound }));
     }
   }
   if (result.motion) {
-    const { number, outcome } = result.motion;
-    switch (outcome) {
+    const motion = String(result.motion.number);
+    switch (result.motion.outcome) {
       case "stopped":
-        parts.push(
-          `Motion ${number} stopped at the end of its scene (the robot confirmed with 07). The robot keeps standing in the pose it stopped in; Basic posture (7) straightens it.`,
-        );
+        parts.push(t("connection.outcome.motionStopped", { motion }));
         break;
       case "ended-then-posture":
-        parts.push(
-          `Motion ${number} had just ended by itself, so the robot took Stop's 7 as Basic posture and confirmed it (07).`,
-        );
+        parts.push(t("connection.outcome.motionEnded", { motion }));
         break;
       case "posture":
-        parts.push("Basic posture (7) cannot be interrupted; it finished (the robot confirmed with 07).");
+        parts.push(t("connection.outcome.posture"));
         break;
       case "unconfirmed":
         unsure = true;
-        parts.push(
-          `Stop sent 7 to end motion ${number}; the robot did not confirm. If it still moves, hold it (Limp makes every servo passive).`,
-        );
+        parts.push(t("connection.outcome.motionUnconfirmed", { motion }));
         break;
     }
   }
   if (result.tetheredPlay) {
-    const { framesSent, totalFrames, lastFrame } = result.tetheredPlay;
-    parts.push(
-      lastFrame
-        ? `Tethered play stopped after ${frameLabel(lastFrame)} (${framesSent} of ${totalFrames} frames sent); the servos hold that frame.`
-        : `Tethered play stopped before its first frame; nothing moved.`,
-    );
+    parts.push(playStopped(t, result.tetheredPlay));
   } else if (result.servoMovesDropped) {
-    parts.push(
-      limp
-        ? "Servo moves stopped. The servos stay limp (Limp); moving a slider makes that servo hold again."
-        : "Servo moves stopped: no further move is sent, and the servos hold their last position.",
-    );
+    parts.push(limp ? t("connection.outcome.servoMovesLimp") : t("connection.outcome.servoMoves"));
   }
-  if (parts.length === 0) parts.push("Nothing was running; the robot keeps its pose.");
+  if (parts.length === 0) parts.push(t("connection.outcome.nothing"));
   return { tone: unsure ? "warning" : "ok", text: parts.join(" ") };
 }
 
@@ -158,11 +151,12 @@ export async function stopActivity(ctx: AppContext): Promise<void> {
     stopNotice: { tone: "info", text: stoppingText(s, session.clock.now()) },
     limpAsked: false,
   }));
+  const { locale } = store.get();
   let notice: Notice;
   try {
-    notice = stopOutcome(await client.stopActivity(), store.get().connection.limp === true);
+    notice = stopOutcome(await client.stopActivity(), store.get().connection.limp === true, locale);
   } catch (e) {
-    notice = errorNotice("Stop failed. If the robot still moves, hold it and press Limp.", e);
+    notice = errorNotice(translator(connectionMessages, locale)("connection.stopFailed"), e, locale);
   }
   if (session.current === client) store.update({ stopNotice: notice });
 }
@@ -186,22 +180,20 @@ export async function limpAll(ctx: AppContext): Promise<void> {
   const client = session.current;
   store.update({ limpAsked: false });
   if (!client) return;
-  store.update({ stopNotice: { tone: "warning", text: "Limp: making every servo passive…" } });
+  const t = translator(connectionMessages, store.get().locale);
+  store.update({ stopNotice: { tone: "warning", text: t("connection.limping") } });
   let notice: Notice;
   try {
     const { confirmed, silent } = await client.limp();
     notice =
       silent.length === 0
-        ? {
-            tone: "warning",
-            text: `Limp: all ${confirmed.length} servos confirmed passive. Hold the robot, it cannot stand on its own now.`,
-          }
+        ? { tone: "warning", text: t("connection.limpDone", { count: confirmed.length }) }
         : {
             tone: "danger",
-            text: `Limp: ${confirmed.length} servos confirmed passive, but servo ${silent.join(", ")} did not answer. If anything still moves, switch the robot off.`,
+            text: t("connection.limpPartial", { confirmed: confirmed.length, silent: silent.join(", ") }),
           };
   } catch (e) {
-    notice = errorNotice("Limp failed. Hold the robot and switch it off.", e);
+    notice = errorNotice(t("connection.limpFailed"), e, t.locale);
   }
   if (session.current === client) {
     // The robot is limp and someone is holding it: the next movement asks again.

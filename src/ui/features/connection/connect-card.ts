@@ -1,5 +1,7 @@
 import { html, nothing, type TemplateResult } from "lit-html";
-import { linkKindOf } from "../../serial-ports.ts";
+import { translator } from "../../../i18n/translate.ts";
+import { describePort, linkKindOf } from "../../serial-ports.ts";
+import { shellMessages } from "../../shell/messages.ts";
 import { notice } from "../../shell/notice.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
 import {
@@ -12,94 +14,123 @@ import {
   setShowAllPorts,
 } from "./actions.ts";
 import { connectHelp } from "./connect-help.ts";
+import { type ConnectionTranslator, connectionMessages } from "./messages.ts";
+import { robotName } from "./robot-name.ts";
 import type { ConnectionState } from "./state.ts";
 
+/** The simulated Bluetooth link of the demo robot: replies this late, give or take the jitter (ms). */
+const DEMO_BLUETOOTH_LATENCY = { mean: 300, jitter: 150 };
+
 /** While connecting: what is happening, in place, with a way out. */
-function progress(ctx: ViewContext, c: ConnectionState): TemplateResult | typeof nothing {
-  const steps: Record<string, string> = {
-    choosing: "Waiting for you to choose a port in the browser's list…",
-    connecting: "Opening the port…",
-    handshaking: "Port open. Asking the robot for its firmware and serial number…",
+function progress(
+  ctx: ViewContext,
+  c: ConnectionState,
+  t: ConnectionTranslator,
+): TemplateResult | typeof nothing {
+  const steps: Partial<Record<ConnectionState["phase"], string>> = {
+    choosing: t("connection.choosing"),
+    connecting: t("connection.opening"),
+    handshaking: t("connection.handshaking"),
   };
   const text = steps[c.phase];
   if (!text) return nothing;
-  const who = c.robot?.kind === "demo" ? c.robot.name : "Robot";
-  const slow =
-    c.robot?.link === "bluetooth" && c.phase === "handshaking"
-      ? " Replies are slower over Bluetooth: the first one may take a second or two."
-      : "";
+  const who = c.robot?.kind === "demo" ? robotName(c.robot, t.locale) : t("connection.robot");
+  const slow = c.robot?.link === "bluetooth" && c.phase === "handshaking";
   return html`
     <div class="progress-block" data-testid="connect-progress">
-      <p><strong>${c.phase === "choosing" ? "Connect robot" : who}:</strong> ${text}${slow}</p>
-      <progress aria-label="Connecting"></progress>
+      <p>
+        <strong>${c.phase === "choosing" ? t("connection.connectRobot") : who}:</strong>
+        ${text}${slow ? ` ${t("connection.slowBluetooth")}` : nothing}
+      </p>
+      <progress aria-label=${t("connection.connecting")}></progress>
       ${
         c.phase === "choosing"
           ? html`<button type="button" class="btn btn--quiet" data-testid="cancel-choosing" @click=${() => cancelChoosing(ctx)}>
-              Cancel
+              ${t("connection.cancel")}
             </button>`
           : html`<button type="button" class="btn btn--quiet" @click=${() => disconnect(ctx)}>
-              Cancel
+              ${t("connection.cancel")}
             </button>`
       }
     </div>
   `;
 }
 
-function lostNotice(c: ConnectionState): TemplateResult | typeof nothing {
+/**
+ * The link was lost. The reason is the link's own English sentence: in English it follows the heading as
+ * before; in Korean it is the technical detail, one click away (docs/i18n.md, errors).
+ */
+function lostNotice(c: ConnectionState, t: ConnectionTranslator): TemplateResult | typeof nothing {
   if (!c.lostReason) return nothing;
-  const who = c.robot?.kind === "demo" ? "The demo robot" : "The robot";
+  const lost = c.robot?.kind === "demo" ? t("connection.lostDemo") : t("connection.lost");
+  const english = t.locale === "en";
   return html`
     <div class="notice notice--danger" data-testid="lost-notice">
-      <p><strong>${who} was disconnected.</strong> ${c.lostReason}</p>
+      <p><strong>${lost}</strong> ${english ? c.lostReason : nothing}</p>
       ${
         c.interrupted.length > 0
-          ? html`<p>Did not finish: ${c.interrupted.join(", ")}. Check the result after reconnecting.</p>`
+          ? html`<p>${t("connection.didNotFinish", { list: c.interrupted.join(", ") })}</p>`
           : nothing
       }
-      <p>Check the cable and the robot's power switch, then connect again.</p>
+      <p>${t("connection.checkCable")}</p>
+      ${
+        english
+          ? nothing
+          : html`<details class="detail">
+              <summary>${translator(shellMessages, t.locale)("shell.technicalDetail")}</summary>
+              <pre lang="en">${c.lostReason}</pre>
+            </details>`
+      }
     </div>
   `;
 }
 
-function knownPorts(ctx: ViewContext, busy: boolean): TemplateResult | typeof nothing {
+function knownPorts(
+  ctx: ViewContext,
+  busy: boolean,
+  t: ConnectionTranslator,
+): TemplateResult | typeof nothing {
   const ports = ctx.state.knownPorts;
   if (ports.length === 0) return nothing;
   return html`
     <section class="known-ports" aria-labelledby="known-ports-title">
-      <h2 id="known-ports-title">Ports used before</h2>
+      <h2 id="known-ports-title">${t("connection.knownPorts")}</h2>
       <ul>
-        ${ports.map(
-          (p) => html`
+        ${ports.map((p) => {
+          const info = p.port.getInfo();
+          const name = describePort(info, t.locale);
+          return html`
             <li>
-              <span class="port-label">${p.label}</span>
+              <span class="port-label">${name}</span>
               <span class="row-actions">
                 <button
                   type="button"
                   class="btn"
                   ?disabled=${busy}
-                  aria-label=${`Connect to ${p.label}`}
+                  aria-label=${t("connection.connectTo", { port: name })}
                   @click=${() =>
                     connectKnownPort(ctx, p.port, {
                       kind: "hardware",
                       name: p.label,
-                      link: linkKindOf(p.port.getInfo()),
+                      link: linkKindOf(info),
+                      info,
                     })}
                 >
-                  Connect
+                  ${t("connection.connect")}
                 </button>
                 <button
                   type="button"
                   class="btn btn--quiet"
                   ?disabled=${busy}
-                  aria-label=${`Forget ${p.label}`}
+                  aria-label=${t("connection.forgetPort", { port: name })}
                   @click=${() => void forgetKnownPort(ctx, p.port)}
                 >
-                  Forget
+                  ${t("connection.forget")}
                 </button>
               </span>
             </li>
-          `,
-        )}
+          `;
+        })}
       </ul>
     </section>
   `;
@@ -108,21 +139,20 @@ function knownPorts(ctx: ViewContext, busy: boolean): TemplateResult | typeof no
 /** The main area while no robot is connected: connect, demo, earlier ports, help. */
 export function connectCard(ctx: ViewContext): TemplateResult {
   const c = ctx.state.connection;
+  const { locale } = ctx.state;
+  const t = translator(connectionMessages, locale);
   const busy = c.phase !== "disconnected";
   return html`
     <section class="card connect-card" aria-labelledby="connect-title" data-testid="connect-card">
-      <h1 id="connect-title">Connect your robot</h1>
-      ${lostNotice(c)} ${notice(c.problem)}
-      <p>
-        Plug the robot's serial cable into this computer (or pair its Bluetooth module), switch the robot on,
-        then choose its port.
-      </p>
+      <h1 id="connect-title">${t("connection.title")}</h1>
+      ${lostNotice(c, t)} ${notice(c.problem, locale)}
+      <p>${t("connection.intro")}</p>
       <div class="actions">
         <button type="button" class="btn btn--primary" ?disabled=${busy} @click=${() => chooseAndConnect(ctx)}>
-          Connect robot
+          ${t("connection.connectRobot")}
         </button>
         <button type="button" class="btn" ?disabled=${busy} @click=${() => connectDemo(ctx)}>
-          Try the demo robot
+          ${t("connection.tryDemo")}
         </button>
       </div>
       <label class="check">
@@ -131,7 +161,7 @@ export function connectCard(ctx: ViewContext): TemplateResult {
           .checked=${ctx.state.showAllPorts}
           @change=${(e: Event) => setShowAllPorts(ctx, (e.target as HTMLInputElement).checked)}
         />
-        Show all serial ports (other adapters, built-in ports)
+        ${t("connection.showAllPorts")}
       </label>
       <div class="demo-bluetooth">
         <button
@@ -141,14 +171,12 @@ export function connectCard(ctx: ViewContext): TemplateResult {
           ?disabled=${busy}
           @click=${() => connectDemo(ctx, { bluetooth: true })}
         >
-          Demo robot over a simulated Bluetooth link
+          ${t("connection.demoBluetooth")}
         </button>
-        <p class="muted small">Its replies come ${"300\u00a0±\u00a0150\u00a0ms"} late and in bursts, as over Bluetooth.</p>
+        <p class="muted small">${t("connection.demoBluetoothHint", DEMO_BLUETOOTH_LATENCY)}</p>
       </div>
-      ${progress(ctx, c)} ${knownPorts(ctx, busy)} ${connectHelp(c.showHelp)}
-      <p class="muted small">
-        The demo robot is a simulated controller inside this page: nothing is sent to any hardware.
-      </p>
+      ${progress(ctx, c, t)} ${knownPorts(ctx, busy, t)} ${connectHelp(c.showHelp, t)}
+      <p class="muted small">${t("connection.demoNote")}</p>
     </section>
   `;
 }

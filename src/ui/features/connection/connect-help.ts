@@ -1,41 +1,36 @@
 import { html, type TemplateResult } from "lit-html";
+import type { ConnectionTranslator } from "./messages.ts";
+
+const code = (text: string): TemplateResult => html`<code>${text}</code>`;
 
 /** "Can't find your robot?": the usual reasons a port does not show up or will not open. */
-export function connectHelp(open: boolean): TemplateResult {
+export function connectHelp(open: boolean, t: ConnectionTranslator): TemplateResult {
   return html`
     <details class="help" ?open=${open} data-testid="connect-help">
-      <summary>Can't find your robot?</summary>
+      <summary>${t("connection.help.title")}</summary>
       <ul>
-        <li><strong>Cable:</strong> use the robot's serial cable and USB adapter; try another USB socket.</li>
-        <li><strong>Power:</strong> the robot's power switch must be on (the RBC's LEDs lit).</li>
+        <li><strong>${t("connection.help.cable")}:</strong> ${t("connection.help.cableText")}</li>
+        <li><strong>${t("connection.help.power")}:</strong> ${t("connection.help.powerText")}</li>
+        <li><strong>${t("connection.help.drivers")}:</strong> ${t("connection.help.driversText")}</li>
         <li>
-          <strong>Drivers:</strong> Windows and older macOS need the adapter's driver: FTDI (VCP driver) or
-          WCH CH340/CH341. Prolific and Silicon Labs adapters have their own.
+          <strong>${t("connection.help.linux")}:</strong>
+          ${t.parts("connection.help.linuxText", {
+            group: code("dialout"),
+            command: code("sudo usermod -aG dialout $USER"),
+          })}
         </li>
         <li>
-          <strong>Linux permissions:</strong> add yourself to the <code>dialout</code> group
-          (<code>sudo usermod -aG dialout $USER</code>), then log out and in again.
+          <strong>${t("connection.help.brltty")}:</strong>
+          ${t.parts("connection.help.brlttyText", { command: code("sudo apt remove brltty") })}
         </li>
         <li>
-          <strong>Linux brltty:</strong> the braille-display service can grab USB serial adapters (CH340
-          especially). Remove it (<code>sudo apt remove brltty</code>) or unplug and replug after stopping it.
+          <strong>${t("connection.help.snap")}:</strong>
+          ${t.parts("connection.help.snapText", { command: code("sudo snap connect chromium:raw-usb") })}
         </li>
-        <li>
-          <strong>Chromium from a snap:</strong> allow it to see USB devices with
-          <code>sudo snap connect chromium:raw-usb</code>, then restart the browser.
-        </li>
-        <li>
-          <strong>Port in use:</strong> close Motionbuilder, a serial monitor, or another browser tab that has
-          the port open. Only one program can use it at a time.
-        </li>
+        <li><strong>${t("connection.help.inUse")}:</strong> ${t("connection.help.inUseText")}</li>
         <li data-testid="bluetooth-help">
-          <strong>Bluetooth module:</strong> switch the robot on, then pair the module in the computer's
-          Bluetooth settings first; if it asks for a PIN, it is often <code>1234</code> or <code>0000</code>.
-          Then press Connect robot: paired modules are listed as "Bluetooth serial port" beside USB adapters
-          (Chrome or Edge 117 or newer; on an older browser tick "Show all serial ports"). Replies are slower
-          over Bluetooth than over the cable (a few hundred milliseconds): the panel measures them and waits
-          longer. Use the cable for a firmware update: it switches the robot off and on, and the Bluetooth
-          link may not survive that.
+          <strong>${t("connection.help.bluetooth")}:</strong>
+          ${t.parts("connection.help.bluetoothText", { pin: code("1234"), otherPin: code("0000") })}
         </li>
       </ul>
     </details>

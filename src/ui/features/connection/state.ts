@@ -1,5 +1,6 @@
 import type { ClientMode, ClientState, LinkKind, SubscriptionKind } from "../../../device/index.ts";
 import type { Notice } from "../../app-state.ts";
+import type { PortInfo } from "../../serial-ports.ts";
 
 /** The connection's part of the app state: which robot, in which phase, and what its client reports. */
 
@@ -9,10 +10,15 @@ export type RobotKind = "hardware" | "demo";
 
 export interface RobotLabel {
   kind: RobotKind;
-  /** "Demo robot" or "Demo robot (Bluetooth)", or the port's description for hardware. */
+  /**
+   * "Demo robot" or "Demo robot (Bluetooth)", or the port's description for hardware, in English (the packet
+   * log's file names the robot so). The panel shows `robotName(label, locale)`, in its language.
+   */
   name: string;
   /** What carries the bytes, from the port's info ("bluetooth" for a Bluetooth serial port). */
   link?: LinkKind;
+  /** What the browser said of the port (USB ids, Bluetooth service class), to name it in any language. */
+  info?: PortInfo;
 }
 
 export interface ConnectionState {

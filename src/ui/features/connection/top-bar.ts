@@ -1,31 +1,48 @@
 import { html, nothing, type TemplateResult } from "lit-html";
+import type { Locale } from "../../../i18n/locale.ts";
+import { translator } from "../../../i18n/translate.ts";
 import { platformName } from "../../../protocol/catalog.ts";
 import { formatFirmware } from "../../../shared/format.ts";
+import { uiMessages } from "../../messages.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
 import { askLimp, cancelLimp, limpAll, stopActivity } from "./actions.ts";
+import { type ConnectionTranslator, connectionMessages } from "./messages.ts";
+import { robotName } from "./robot-name.ts";
 import type { ConnectionState } from "./state.ts";
 
+/** The platform byte as the top bar says it: HUNO, DINO, DOGY, PF2, or "unknown (9)". */
+function platformWord(t: ConnectionTranslator, platform: number): string {
+  return platform >= 1 && platform <= 4
+    ? platformName(platform)
+    : t("connection.status.platformUnknown", { platform: String(platform) });
+}
+
 /** The words of the connection state, as the top bar (and screen readers) say them. */
-export function connectionSummary(c: ConnectionState): string[] {
-  const robot = c.robot?.kind === "demo" ? "the demo robot" : "the robot";
+export function connectionSummary(c: ConnectionState, locale: Locale = "en"): string[] {
+  const t = translator(connectionMessages, locale);
+  const demo = c.robot?.kind === "demo";
   switch (c.phase) {
     case "disconnected":
-      return [c.lostReason ? "Disconnected — link lost" : "Not connected"];
+      return [c.lostReason ? t("connection.status.lost") : t("connection.status.notConnected")];
     case "choosing":
-      return ["Choosing a port…"];
+      return [t("connection.status.choosing")];
     case "connecting":
-      return [`Connecting to ${robot}: opening the port…`];
+      return [demo ? t("connection.status.openingDemo") : t("connection.status.opening")];
     case "handshaking":
-      return [`Connecting to ${robot}: handshaking…`];
+      return [demo ? t("connection.status.handshakingDemo") : t("connection.status.handshaking")];
     case "connected": {
       // The demo robot's own name ("Demo robot (Bluetooth)" over the simulated link); a robot over Bluetooth
       // says so, since its replies are slower.
-      const parts = c.robot?.kind === "demo" ? [c.robot.name, "Connected"] : ["Connected"];
-      if (c.robot?.kind === "hardware" && c.robot.link === "bluetooth") parts.push("Bluetooth");
-      if (c.platform !== undefined) parts.push(platformName(c.platform));
-      if (c.firmware) parts.push(`fw ${formatFirmware(c.firmware)}`);
-      if (c.serialNumber) parts.push(`SN ${c.serialNumber}`);
-      if (c.mode === "direct") parts.push(c.limp ? "servos limp" : "servo control");
+      const connected = t("connection.status.connected");
+      const parts = c.robot?.kind === "demo" ? [robotName(c.robot, locale), connected] : [connected];
+      if (c.robot?.kind === "hardware" && c.robot.link === "bluetooth")
+        parts.push(t("connection.status.bluetooth"));
+      if (c.platform !== undefined) parts.push(platformWord(t, c.platform));
+      if (c.firmware) parts.push(t("connection.status.firmware", { version: formatFirmware(c.firmware) }));
+      if (c.serialNumber) parts.push(t("connection.status.serialNumber", { serial: c.serialNumber }));
+      if (c.mode === "direct") {
+        parts.push(c.limp ? t("connection.status.limp") : t("connection.status.servoControl"));
+      }
       return parts;
     }
   }
@@ -33,13 +50,15 @@ export function connectionSummary(c: ConnectionState): string[] {
 
 export function topBar(ctx: ViewContext): TemplateResult {
   const c = ctx.state.connection;
+  const { locale } = ctx.state;
+  const t = translator(connectionMessages, locale);
   const connected = c.phase === "connected";
-  const parts = connectionSummary(c);
+  const parts = connectionSummary(c, locale);
   return html`
     <header class="top-bar">
       <div class="brand">
         <img src="./icon.svg" alt="" width="28" height="28" />
-        <span>RBC Panel</span>
+        <span>${translator(uiMessages, locale)("panel.name")}</span>
       </div>
       <div class="status status--${c.phase === "disconnected" && c.lostReason ? "lost" : c.phase}" role="status" aria-live="polite" aria-atomic="true" data-testid="connection-status">
         <span class="dot" aria-hidden="true"></span>
@@ -58,10 +77,10 @@ export function topBar(ctx: ViewContext): TemplateResult {
                 type="button"
                 class="btn btn--danger stop"
                 aria-keyshortcuts="Escape"
-                title="End what the robot is doing; it keeps standing (Escape)"
+                title=${t("connection.stopTitle")}
                 @click=${() => void stopActivity(ctx)}
               >
-                <span aria-hidden="true">■</span> Stop <kbd aria-hidden="true">Esc</kbd>
+                <span aria-hidden="true">■</span> ${t("connection.stop")} <kbd aria-hidden="true">Esc</kbd>
               </button>
               <button
                 type="button"
@@ -69,16 +88,16 @@ export function topBar(ctx: ViewContext): TemplateResult {
                 class="btn limp"
                 aria-haspopup="dialog"
                 aria-expanded=${ctx.state.limpAsked ? "true" : "false"}
-                title="Make every servo passive: the robot falls unless someone holds it (asks first)"
+                title=${t("connection.limpTitle")}
                 @click=${() => askLimp(ctx)}
               >
-                Limp…
+                ${t("connection.limpAsk")}
               </button>
             </div>`
           : nothing
       }
     </header>
-    ${connected && ctx.state.limpAsked ? limpQuestion(ctx) : nothing}
+    ${connected && ctx.state.limpAsked ? limpQuestion(ctx, t) : nothing}
   `;
 }
 
@@ -86,7 +105,7 @@ export function topBar(ctx: ViewContext): TemplateResult {
  * Limp asks first, in place under the top bar: every servo goes passive and a standing robot falls. Escape or
  * Cancel closes the question (Escape never makes a servo limp); the safe choice is the one focused first.
  */
-function limpQuestion(ctx: ViewContext): TemplateResult {
+function limpQuestion(ctx: ViewContext, t: ConnectionTranslator): TemplateResult {
   const onKey = (e: KeyboardEvent) => {
     if (e.key !== "Escape") return;
     e.preventDefault();
@@ -101,12 +120,12 @@ function limpQuestion(ctx: ViewContext): TemplateResult {
       aria-describedby="limp-text"
       @keydown=${onKey}
     >
-      <p id="limp-title"><strong>Hold the robot: every servo will go passive and it will fall if nobody holds it.</strong></p>
-      <p id="limp-text" class="small">Stop (Esc) ends a motion and keeps the robot standing; Limp is for when the robot must go slack.</p>
+      <p id="limp-title"><strong>${t("connection.limpQuestion")}</strong></p>
+      <p id="limp-text" class="small">${t("connection.limpExplain")}</p>
       <div class="actions">
-        <button type="button" class="btn" id="cancel-limp" @click=${() => cancelLimp(ctx)}>Cancel</button>
+        <button type="button" class="btn" id="cancel-limp" @click=${() => cancelLimp(ctx)}>${t("connection.cancel")}</button>
         <button type="button" class="btn btn--danger" id="confirm-limp" @click=${() => void limpAll(ctx)}>
-          Limp
+          ${t("connection.limp")}
         </button>
       </div>
     </div>

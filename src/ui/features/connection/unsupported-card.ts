@@ -1,42 +1,49 @@
 import { html, nothing, type TemplateResult } from "lit-html";
+import { translator } from "../../../i18n/translate.ts";
 import { notice } from "../../shell/notice.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
 import { connectDemo } from "./actions.ts";
+import { connectionMessages } from "./messages.ts";
+
+const code = (text: string): TemplateResult => html`<code>${text}</code>`;
 
 /** Shown instead of the connect card when this browser has no Web Serial. The demo robot still works. */
 export function unsupportedCard(ctx: ViewContext): TemplateResult {
   const c = ctx.state.connection;
+  const { locale } = ctx.state;
+  const t = translator(connectionMessages, locale);
   const busy = c.phase !== "disconnected";
   return html`
     <section class="card connect-card" aria-labelledby="unsupported-title" data-testid="unsupported-card">
-      <h1 id="unsupported-title">This browser cannot reach the robot</h1>
+      <h1 id="unsupported-title">${t("connection.unsupported.title")}</h1>
       <p>
-        The panel talks to the robot's controller through <strong>Web Serial</strong>, which lets a web page
-        open a USB serial port once you pick it. It is available in desktop
-        <strong>Chrome, Edge and Opera (version 89 or later)</strong>.
+        ${t.parts("connection.unsupported.webSerial", {
+          webSerial: html`<strong>Web Serial</strong>`,
+          browsers: html`<strong>${t("connection.unsupported.browsers")}</strong>`,
+        })}
       </p>
-      <p>
-        Firefox, Safari, and browsers on phones and tablets do not offer Web Serial, so from them no web page
-        can open the robot's port. Open this page in one of the browsers above on a computer.
-      </p>
+      <p>${t("connection.unsupported.elsewhere")}</p>
       ${
         ctx.state.secureContext
           ? nothing
           : html`<p class="notice notice--warning">
-              This page was opened over plain <code>http://</code>. Browsers only offer Web Serial to secure pages:
-              use <code>https://</code> or <code>http://localhost</code>.
+              ${t.parts("connection.unsupported.insecure", {
+                http: code("http://"),
+                https: code("https://"),
+                localhost: code("http://localhost"),
+              })}
             </p>`
       }
-      ${notice(c.problem)}
-      <p>Meanwhile you can try every part of the panel with the demo robot, a simulated controller in this page.</p>
+      ${notice(c.problem, locale)}
+      <p>${t("connection.unsupported.demo")}</p>
       <div class="actions">
         <button type="button" class="btn btn--primary" ?disabled=${busy} @click=${() => connectDemo(ctx)}>
-          Try the demo robot
+          ${t("connection.tryDemo")}
         </button>
       </div>
       ${
         c.phase === "connecting" || c.phase === "handshaking"
-          ? html`<div class="progress-block"><p>Starting the demo robot…</p><progress aria-label="Connecting"></progress></div>`
+          ? html`<div class="progress-block"><p>${t("connection.unsupported.starting")}</p><progress aria-label=${t("connection.connecting")}></progress></div>`
           : nothing
       }
     </section>

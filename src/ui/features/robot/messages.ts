@@ -4,7 +4,6 @@ import type { Translator } from "../../../i18n/translate.ts";
 /** The Robot view: the device card, its facts and the robot's memory. */
 export const robotMessages = defineMessages({
   "robot.title": { en: "Robot", ko: "로봇" },
-  "robot.titleDemo": { en: "Demo robot", ko: "데모 로봇" },
   "robot.refresh": { en: "Refresh", ko: "다시 읽기" },
   "robot.reading": { en: "Reading…", ko: "읽는 중…" },
   "robot.disconnect": { en: "Disconnect", ko: "연결 끊기" },
@@ -12,6 +11,10 @@ export const robotMessages = defineMessages({
   "robot.demoDescription": {
     en: "Demo robot (a simulated RBC in this page, not hardware)",
     ko: "데모 로봇 (이 페이지 안의 가상 RBC이며, 실제 하드웨어가 아니에요)",
+  },
+  "robot.demoBluetoothDescription": {
+    en: "Demo robot over a simulated Bluetooth link (a simulated RBC in this page, not hardware)",
+    ko: "가상 블루투스로 연결한 데모 로봇 (이 페이지 안의 가상 RBC이며, 실제 하드웨어가 아니에요)",
   },
   "robot.firmware": { en: "Firmware", ko: "펌웨어" },
   "robot.serialNumber": { en: "Serial number", ko: "시리얼 번호" },

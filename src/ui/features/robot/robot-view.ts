@@ -7,6 +7,8 @@ import { shellMessages } from "../../shell/messages.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
 import { disconnect } from "../connection/actions.ts";
+import { robotName } from "../connection/robot-name.ts";
+import type { RobotLabel } from "../connection/state.ts";
 import { refreshDeviceInfo } from "./actions.ts";
 import { memoryUsedRow } from "./memory-used.ts";
 import { type RobotTranslator, robotMessages } from "./messages.ts";
@@ -95,14 +97,20 @@ function identityWarnings(ctx: ViewContext, t: RobotTranslator): TemplateResult 
   </div>`;
 }
 
+/** Who the panel is connected to: the demo robot (and over which link), or the port as the panel names it. */
+function connectedTo(t: RobotTranslator, robot: RobotLabel | undefined): string {
+  if (!robot) return "—";
+  if (robot.kind === "hardware") return robotName(robot, t.locale);
+  return robot.link === "bluetooth" ? t("robot.demoBluetoothDescription") : t("robot.demoDescription");
+}
+
 function render(ctx: ViewContext): TemplateResult {
   const { connection: c, device: d, locale } = ctx.state;
   const t = translator(robotMessages, locale);
-  const demo = c.robot?.kind === "demo";
   return html`
     <section class="card" aria-labelledby="view-title" data-testid="device-card">
       <div class="card-head">
-        <h1 id="view-title">${demo ? t("robot.titleDemo") : t("robot.title")}</h1>
+        <h1 id="view-title">${c.robot?.kind === "demo" ? robotName(c.robot, locale) : t("robot.title")}</h1>
         <div class="row-actions">
           <button
             type="button"
@@ -120,7 +128,7 @@ function render(ctx: ViewContext): TemplateResult {
       <dl class="facts">
         <div>
           <dt>${t("robot.connectedTo")}</dt>
-          <dd>${demo ? t("robot.demoDescription") : (c.robot?.name ?? "—")}</dd>
+          <dd>${connectedTo(t, c.robot)}</dd>
         </div>
         <div>
           <dt>${t("robot.firmware")}</dt>
