@@ -125,8 +125,12 @@ const VIEWS: readonly [string, (page: Page) => Promise<void>][] = [
     "Editor",
     async (page) => {
       await heading(page, "Motion editor");
-      // With a robot connected, teach-in and tethered play are offered too; the 3D robot is drawn.
-      await page.getByRole("button", { name: /teach-in/i }).first().waitFor();
+      // With a robot connected, teach-in and tethered play are offered too (in their tabs); the 3D robot is drawn.
+      await page.locator("#editor-tab-teach").click();
+      await page
+        .getByRole("button", { name: /teach-in/i })
+        .first()
+        .waitFor();
     },
   ],
   [

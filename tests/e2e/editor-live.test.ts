@@ -111,7 +111,22 @@ async function hold(page: Page): Promise<void> {
   expect(await passiveIds(page)).toEqual([]);
 }
 
-const endValue = (page: Page, id: number) => page.getByTestId(`end-${id}`).inputValue().then(Number);
+type EditorTab = "pose" | "scene" | "tools" | "teach" | "play" | "check";
+
+/** Shows a tab of the selected scene's work (the editor's tab list) and waits for its panel. */
+async function showTab(page: Page, tab: EditorTab): Promise<void> {
+  await page.locator(`#editor-tab-${tab}`).click();
+  await page.locator(`#editor-panel-${tab}`).waitFor();
+}
+
+/** The end positions of servos `ids` in the pose table (the Pose tab), then back to the Teach-in tab. */
+async function endValues(page: Page, ids: number[]): Promise<number[]> {
+  await showTab(page, "pose");
+  const values: number[] = [];
+  for (const id of ids) values.push(Number(await page.getByTestId(`end-${id}`).inputValue()));
+  await showTab(page, "teach");
+  return values;
+}
 
 describe("editor: teach-in and tethered play on the demo robot", () => {
   it("makes a three-scene motion by hand, plays it through the frames of §10, and Stop holds", async () => {
@@ -124,6 +139,7 @@ describe("editor: teach-in and tethered play on the demo robot", () => {
     expect(await positions(page)).toEqual(POSTURE);
 
     // ---- Teach-in: asks once, then servo control with every servo holding.
+    await showTab(page, "teach");
     await page.locator("#start-teach-in").click();
     expect(squash(await page.getByTestId("teach-in-confirm").textContent())).toContain(
       "Hold the robot: the servos you choose go limp.",
@@ -144,9 +160,7 @@ describe("editor: teach-in and tethered play on the demo robot", () => {
     await readInto(page, 0);
     expect(await notice(page, "teach-in")).toContain("Read servos 0–15 into scene 0");
     // Stored in the motion's zeros: robot 125 on a servo whose zero is 124 here and 125 in the motion is 126.
-    expect([await endValue(page, 10), await endValue(page, 12), await endValue(page, 0)]).toEqual([
-      100, 80, 126,
-    ]);
+    expect(await endValues(page, [10, 12, 0])).toEqual([100, 80, 126]);
     await hold(page);
 
     // Scene 1: the left arm.
@@ -155,7 +169,7 @@ describe("editor: teach-in and tethered play on the demo robot", () => {
     await poseByHand(page, ["left-arm"], { 13: 150 });
     expect(await passiveIds(page)).toEqual([13, 14, 15]);
     await readInto(page, 1);
-    expect(await endValue(page, 13)).toBe(150);
+    expect(await endValues(page, [13])).toEqual([150]);
     await hold(page);
 
     // Scene 2: the right knee; End teach-in holds it, then leaves servo control.
@@ -163,7 +177,7 @@ describe("editor: teach-in and tethered play on the demo robot", () => {
     await page.getByRole("button", { name: "Read pose into scene 2" }).waitFor();
     await poseByHand(page, ["right-leg"], { 2: 180 });
     await readInto(page, 2);
-    expect(await endValue(page, 2)).toBe(180);
+    expect(await endValues(page, [2])).toEqual([180]);
     await page.getByTestId("end-teach-in").click();
     await page.getByTestId("teach-in").getByText("Teach-in ended").waitFor();
     expect(await passiveIds(page)).toEqual([]);
@@ -172,6 +186,7 @@ describe("editor: teach-in and tethered play on the demo robot", () => {
     expect(afterTeachIn).toEqual(POSTURE.map((p, id) => ({ 2: 180, 10: 100, 12: 80, 13: 150 })[id] ?? p));
 
     // ---- Tethered play of the whole motion: one question, Cancel focused first.
+    await showTab(page, "play");
     await page.getByRole("radio", { name: /Whole motion/ }).check();
     await page.locator("#play-button").click();
     const question = squash(await page.getByTestId("play-confirm").locator("#play-question").textContent());
@@ -212,10 +227,12 @@ describe("editor: teach-in and tethered play on the demo robot", () => {
     expect(await page.evaluate(() => window.__rbcDemoSim?.directMode)).toBe(true);
 
     // ---- Stop mid-play: scene 2 made long (50 frames in 5 s), Stop in the panel holds the frame sent.
+    await showTab(page, "scene");
     await page.getByTestId("scene-time").fill("5000");
     await page.getByTestId("scene-time").press("Enter");
     await page.getByTestId("scene-frames").fill("50");
     await page.getByTestId("scene-frames").press("Enter");
+    await showTab(page, "play");
     await page.getByRole("radio", { name: /Selected scene/ }).check();
     await page.getByTestId("play-summary").filter({ hasText: "Scene 2: 50 frames, 5.0 s." }).waitFor();
     await page.locator("#play-button").click();
@@ -243,7 +260,9 @@ describe("editor: teach-in and tethered play on the demo robot", () => {
     const { page, context } = await app.newPage();
     await page.goto(`${app.url}#/editor`);
     await page.getByTestId("pose-table").waitFor();
+    await showTab(page, "teach");
     expect(squash(await page.getByTestId("teach-in-hint").textContent())).toContain("Connect a robot");
+    await showTab(page, "play");
     expect(squash(await page.getByTestId("play-hint").textContent())).toContain("Connect a robot");
     await context.close();
   });

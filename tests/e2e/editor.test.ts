@@ -11,7 +11,8 @@ import "./rbc-test-globals.ts";
 /**
  * The motion editor in the browser, without a robot (editing needs none): a three-scene motion made from the
  * template by typing and sliding, undo and redo (buttons and keys), mirror, save, reopen unchanged, drafts
- * across a reload, and the layout at desktop and phone widths.
+ * across a reload, and the layout at desktop and phone widths. The selected scene's work is in tabs (Pose,
+ * Scene, Tools, Teach-in, Play, Check); editor-layout.test.ts checks the layout itself.
  */
 
 let app: AppHarness;
@@ -42,6 +43,24 @@ async function typeInto(page: Page, testId: string, value: string): Promise<void
 }
 
 const fieldValue = (page: Page, testId: string) => page.getByTestId(testId).inputValue();
+
+type EditorTab = "pose" | "scene" | "tools" | "teach" | "play" | "check";
+
+/** Shows a tab of the selected scene's work and waits for its panel. */
+async function showTab(page: Page, tab: EditorTab): Promise<void> {
+  await page.locator(`#editor-tab-${tab}`).click();
+  await page.locator(`#editor-panel-${tab}`).waitFor();
+}
+
+/**
+ * Shows the Pose tab with the pose table's `columns`: at phone width a servo has one line, its end pose (with
+ * the slider) or its start, torque and port; wider, every column is shown and there is nothing to choose.
+ */
+async function showPose(page: Page, columns: "end" | "more" = "end"): Promise<void> {
+  await showTab(page, "pose");
+  const choice = page.getByTestId("pose-columns");
+  if (await choice.isVisible()) await choice.locator(`input[value="${columns}"]`).check();
+}
 
 /** Waits until the field `testId` shows `value` (the panel redraws on the next animation frame). */
 async function expectValue(page: Page, testId: string, value: string | number): Promise<void> {
@@ -129,7 +148,7 @@ const AXE_PATH = createRequire(import.meta.url).resolve("axe-core/axe.min.js");
 
 /** axe-core's violations on the page, one line each (axe needs the page's CSP bypassed to be added). */
 async function axeViolations(page: Page): Promise<string[]> {
-  await page.addScriptTag({ path: AXE_PATH });
+  if (!(await page.evaluate(() => "axe" in window))) await page.addScriptTag({ path: AXE_PATH });
   return page.evaluate(async () => {
     type Result = { violations: { id: string; help: string; nodes: { target: unknown[] }[] }[] };
     const axe = (window as unknown as { axe: { run(): Promise<Result> } }).axe;
@@ -142,7 +161,7 @@ async function axeViolations(page: Page): Promise<string[]> {
 
 describe("motion editor accessibility", () => {
   it.each(["light", "dark"] as const)(
-    "has no axe violations in %s mode, with a refused value shown",
+    "has no axe violations in %s mode, in every tab, with the demo robot and a refused value shown",
     async (scheme) => {
       const context = await app.browser.newContext({
         viewport: { width: 1280, height: 800 },
@@ -152,7 +171,11 @@ describe("motion editor accessibility", () => {
         bypassCSP: true,
       });
       const page = await context.newPage();
-      await openEditor(page);
+      await page.goto(app.url, { waitUntil: "domcontentloaded" });
+      await page.getByRole("button", { name: "Try the demo robot" }).click();
+      await page.getByTestId("device-card").waitFor();
+      await page.getByRole("link", { name: "Editor", exact: true }).click();
+      await page.getByTestId("editor").waitFor();
       await page.getByTestId("scene-add").click();
       await page.locator("#scene-opt-1[aria-current=true]").waitFor();
       await typeInto(page, "end-3", "300");
@@ -160,6 +183,10 @@ describe("motion editor accessibility", () => {
       await page.getByTestId("draft").waitFor();
       await page.locator('[data-testid="editor-robot3d"][data-state="ready"]').waitFor({ timeout: 20_000 });
       expect(await axeViolations(page)).toEqual([]);
+      for (const tab of ["scene", "tools", "teach", "play", "check"] as const) {
+        await showTab(page, tab);
+        expect(await axeViolations(page), tab).toEqual([]);
+      }
       await context.close();
     },
   );
@@ -220,7 +247,10 @@ describe.each(VIEWPORTS)("motion editor at $name", ({ width, height }) => {
     // Scene 2: a duplicate of scene 1, mirrored right to left (the left shoulder takes the right's pose).
     await page.getByTestId("scene-duplicate").click();
     await page.locator("#scene-opt-2[aria-current=true]").waitFor();
+    await showTab(page, "tools");
     await page.getByTestId("mirror-right-to-left").click();
+    await page.getByTestId("editor-undo").filter({ hasText: "mirror" }).waitFor();
+    await showPose(page);
     const mirrored = mirrorPosition(dragged, STANDARD_ZEROS[10]!, STANDARD_ZEROS[13]!);
     await expectValue(page, "end-13", String(mirrored));
     await expectValue(page, "end-10", String(dragged));
@@ -259,24 +289,37 @@ describe.each(VIEWPORTS)("motion editor at $name", ({ width, height }) => {
     await page.waitForFunction(() => document.activeElement?.id === "scene-opt-1");
 
     // Continuity: joined, a start follows the end before it (no jump); detached, a jump and its warning; Join.
+    await showPose(page, "more");
     await typeInto(page, "start-0", "130");
     expect(await page.getByTestId("jump-0").count()).toBe(0);
+    await showTab(page, "scene");
     await page.getByTestId("detach-1").check();
+    await showPose(page, "more");
     await typeInto(page, "start-0", "135");
     await page.getByTestId("jump-0").waitFor();
     expect(await page.getByTestId("jump-0").textContent().then(squash)).toContain("130");
+    await showTab(page, "check");
     await page.locator('[data-testid="editor-warning"][data-code="rbm-scene-jump"]').waitFor();
+    await showTab(page, "scene");
     await page.getByTestId("join-scene").click();
-    await page.getByTestId("jump-0").waitFor({ state: "detached" });
+    await page.getByTestId("join-scene").waitFor({ state: "detached" });
+    await showPose(page, "more");
+    expect(await page.getByTestId("jump-0").count()).toBe(0);
     await expectValue(page, "start-0", "130");
+    await showTab(page, "check");
+    await page.getByTestId("editor-check").filter({ hasText: "No errors, no warnings" }).waitFor();
     expect(await page.locator('[data-testid="editor-warning"][data-code="rbm-scene-jump"]').count()).toBe(0);
 
     // Copy scene 0's pose into scene 2, then retime the whole motion to 3 s; a factor that is no number is refused.
     await page.locator("#scene-opt-2").click();
+    await showTab(page, "tools");
     await page.getByTestId("copy-pose").filter({ hasText: "Copy into scene 2" }).waitFor();
     await page.getByTestId("copy-from").selectOption("0");
     await page.getByTestId("copy-pose").click();
+    await page.getByTestId("editor-undo").filter({ hasText: "copy" }).waitFor();
+    await showPose(page);
     await expectValue(page, "end-10", "100");
+    await showTab(page, "tools");
     await page.getByTestId("retime-scope").selectOption("motion");
     await page.getByTestId("retime-mode").selectOption("duration");
     await page.getByTestId("retime-value").fill("3000");

@@ -23,9 +23,11 @@ import type { EditorHost } from "./host.ts";
 import {
   applyEdit,
   docOf,
+  type EditorTab,
   type EditRequest,
   editorOf,
   isDetached,
+  type PoseColumns,
   patchEditor,
   redoEdit,
   selectScene,
@@ -160,6 +162,24 @@ export function typeMotionName(ctx: AppContext, name: string): void {
 export function chooseScene(ctx: AppContext, k: number, focus = false): void {
   patchEditor(ctx.store, (s) => selectScene(s, k));
   if (focus) focusSoon(`scene-opt-${editorOf(ctx.store.get()).scene}`);
+}
+
+// ---- Tabs ------------------------------------------------------------------------------------------------
+
+export const editorTabId = (tab: EditorTab) => `editor-tab-${tab}`;
+export const editorPanelId = (tab: EditorTab) => `editor-panel-${tab}`;
+
+/**
+ * Shows a tab of the selected scene's work; `focus` moves the focus to its tab (arrow keys) at once: every tab
+ * is on the page already, and a key pressed before the next render must reach the tab it was meant for.
+ */
+export function showEditorTab(ctx: AppContext, tab: EditorTab, focus = false): void {
+  if ((editorOf(ctx.store.get()).tab ?? "pose") !== tab) patchEditor(ctx.store, { tab });
+  if (focus) document.getElementById(editorTabId(tab))?.focus();
+}
+
+export function choosePoseColumns(ctx: AppContext, columns: PoseColumns): void {
+  patchEditor(ctx.store, { poseColumns: columns });
 }
 
 // ---- Scenes ----------------------------------------------------------------------------------------------

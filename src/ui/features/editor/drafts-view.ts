@@ -124,7 +124,7 @@ export function draftsCard(ctx: ViewContext, s: EditorState): TemplateResult {
   return html`
     <section class="card editor-drafts" aria-labelledby="drafts-title" data-testid="drafts-card">
       <h2 id="drafts-title" class="card-title">Drafts</h2>
-      <p class="muted small">Every motion you edit is kept here, on this computer, as you change it.</p>
+      <p class="muted small drafts-about">Every motion you edit is kept here, on this computer, as you change it.</p>
       ${liveNotice(s.draftsNotice, "Drafts result")}
       ${
         drafts === undefined

@@ -1,28 +1,33 @@
 import "../../styles/tools.css";
 import "../../styles/editor.css";
+import "../../styles/editor-pose.css";
+import "../../styles/editor-layout.css";
 import { html, type TemplateResult } from "lit-html";
 import type { Motion } from "../../../motion/index.ts";
 import { type Robot3dOptions, robot3d } from "../../robot3d/robot-view.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
-import { editorHost } from "./actions.ts";
 import { editorController } from "./controller.ts";
 import { openEditor } from "./document-actions.ts";
 import { draftsCard } from "./drafts-view.ts";
-import { issuesCard } from "./issues-view.ts";
 import { liveOf, livePoseOf } from "./live-state.ts";
-import { playPanel } from "./play-view.ts";
 import { sceneList } from "./scene-list-view.ts";
-import { sceneCard } from "./scene-view.ts";
-import { docOf, editorOf } from "./state.ts";
-import { teachInPanel } from "./teach-in-view.ts";
+import { docOf, type EditorTab, editorOf } from "./state.ts";
+import { editorTabs } from "./tabs-view.ts";
 import { toolbar } from "./toolbar-view.ts";
-import { toolsCard } from "./tools-view.ts";
 
 /**
  * The motion editor (issue #12): make a motion from the HUNO template or an opened .rbm file, scene by scene,
  * with continuity, mirror, copy and retime, unlimited undo, drafts kept on this computer, teach-in and
  * tethered play on a connected robot, and the pose in 3D. Editing needs no robot.
+ *
+ * Layout (editor-layout.css): the toolbar, the scene list and the drafts are always shown; the selected scene's
+ * work is in tabs (tabs-view.ts). The 3D robot is one element whatever the tab (its WebGL context is kept): in a
+ * column beside the tabs on a wide view, beside the scene list on a phone, and in between (a tablet) above the
+ * panel of the tabs whose work it shows (Pose, Teach-in, Play).
  */
+
+/** The tabs whose work the 3D robot shows, where it takes room above the panel (medium widths). */
+const ROBOT_TABS: readonly EditorTab[] = ["pose", "teach", "play"];
 
 /** By servo id 0-15, from a motion's records (servos it does not list stay undefined). */
 function byId(entries: readonly { id: number }[], value: (i: number) => number): (number | undefined)[] {
@@ -56,7 +61,7 @@ export function shownPose(ctx: ViewContext, doc: Motion, k: number): Robot3dOpti
 
 function header(): TemplateResult {
   return html`
-    <header class="view-head">
+    <header class="view-head editor-head">
       <h1 id="editor-title" tabindex="-1">Motion editor</h1>
       <p class="muted">
         Make a motion scene by scene and save it as a Motionbuilder file. Editing needs no robot; with one connected,
@@ -64,6 +69,11 @@ function header(): TemplateResult {
       </p>
     </header>
   `;
+}
+
+/** What the 3D view shows, in words under it (its canvas is named the same way). */
+function robotCaption(ctx: ViewContext, k: number): string {
+  return livePoseOf(ctx.state) ? "The robot, live" : `End pose of scene ${k}`;
 }
 
 function render(ctx: ViewContext): TemplateResult {
@@ -77,20 +87,17 @@ function render(ctx: ViewContext): TemplateResult {
       <p class="muted" aria-busy="true" data-testid="editor-starting">Opening the last draft…</p>
     </div>`;
   }
-  const host = editorHost(ctx, doc, s.scene);
   const check = editorController(ctx).issuesOf(doc);
-  const robot = html`<figure class="editor-robot">
-    ${robot3d({ ...shownPose(ctx, doc, s.scene), testId: "editor-robot3d" })}
-  </figure>`;
+  const tab = s.tab ?? "pose";
   return html`
     <div class="view-stack editor" data-testid="editor">
       ${header()} ${toolbar(ctx, s, doc)}
-      <div class="editor-grid">
-        ${sceneList(ctx, s, doc)}
-        <div class="editor-main">
-          ${sceneCard(ctx, s, doc, robot)} ${toolsCard(ctx, s, doc)} ${teachInPanel(ctx, host)}
-          ${playPanel(ctx, host)} ${issuesCard(ctx, doc, check)}
-        </div>
+      <div class="editor-grid ${ROBOT_TABS.includes(tab) ? "" : "editor-grid--robot-aside-only"}">
+        ${sceneList(ctx, s, doc)} ${editorTabs(ctx, s, doc, check)}
+        <figure class="editor-robot" data-testid="editor-robot">
+          ${robot3d({ ...shownPose(ctx, doc, s.scene), testId: "editor-robot3d" })}
+          <figcaption class="muted small" aria-hidden="true">${robotCaption(ctx, s.scene)}</figcaption>
+        </figure>
         ${draftsCard(ctx, s)}
       </div>
     </div>

@@ -1,16 +1,25 @@
 import { html, nothing, type TemplateResult } from "lit-html";
+import { live } from "lit-html/directives/live.js";
 import type { Motion, MotionScene, SceneRecord } from "../../../motion/index.ts";
 import { safeRange } from "../../../protocol/servo-limits.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
 import { jointName } from "../zeros/editor.ts";
-import { choosePort, chooseTorque, endSlide, slidePosition, typePosition } from "./actions.ts";
-import type { EditorState, FieldProblem } from "./state.ts";
+import {
+  choosePort,
+  choosePoseColumns,
+  chooseTorque,
+  endSlide,
+  slidePosition,
+  typePosition,
+} from "./actions.ts";
+import type { EditorState, FieldProblem, PoseColumns } from "./state.ts";
 import { inputValue, PORT_VALUES, TORQUE_VALUES } from "./view-parts.ts";
 
 /**
- * The pose table of the selected scene: every servo with its joint name, start and end positions (number
- * fields; a slider for the end, the key pose), torque and port. A refused value stays in its field, marked,
- * with the reason on the line below it.
+ * The pose table of the selected scene (the Pose tab): every servo with its joint name, start and end positions
+ * (number fields; a slider for the end, the key pose), torque and port. A refused value stays in its field,
+ * marked, with the reason on the line below it. At phone width a servo gets one line: the end pose with its
+ * slider, or (switched) the start, torque and port.
  */
 
 function positionField(
@@ -120,11 +129,29 @@ function poseRow(
   `;
 }
 
+function columnChoice(ctx: ViewContext, shown: PoseColumns, value: PoseColumns, label: string) {
+  return html`<label class="pose-columns-choice">
+    <input
+      type="radio"
+      name="pose-columns"
+      value=${value}
+      .checked=${live(shown === value)}
+      @change=${() => choosePoseColumns(ctx, value)}
+    />
+    <span>${label}</span>
+  </label>`;
+}
+
 export function poseTable(ctx: ViewContext, s: EditorState, doc: Motion, scene: MotionScene): TemplateResult {
   const previous = doc.scenes[s.scene - 1];
+  const shown = s.poseColumns ?? "end";
   return html`
+    <fieldset class="pose-columns" data-testid="pose-columns">
+      <legend class="sr-only">Columns of the pose table</legend>
+      ${columnChoice(ctx, shown, "end", "End pose")} ${columnChoice(ctx, shown, "more", "Start, torque, port")}
+    </fieldset>
     <div class="table-wrap pose-wrap">
-      <table class="data-table pose-table" data-testid="pose-table">
+      <table class="data-table pose-table pose-table--${shown}" data-testid="pose-table">
         <caption class="sr-only">
           Scene ${s.scene}: each servo's start and end position (0 to 254), torque (0 strong to 4 weak) and port value
         </caption>
@@ -144,5 +171,16 @@ export function poseTable(ctx: ViewContext, s: EditorState, doc: Motion, scene: 
         </tbody>
       </table>
     </div>
+  `;
+}
+
+/** The Pose tab: the selected scene's pose table (the 3D robot is beside or above it, editor-view.ts). */
+export function poseCard(ctx: ViewContext, s: EditorState, doc: Motion): TemplateResult {
+  const scene = doc.scenes[s.scene]!;
+  return html`
+    <section class="card editor-pose" aria-labelledby="pose-title" data-testid="pose-card">
+      <h2 id="pose-title" class="card-title long-text">Scene ${s.scene}: ${scene.name}</h2>
+      ${poseTable(ctx, s, doc, scene)}
+    </section>
   `;
 }

@@ -112,7 +112,7 @@ export function sceneList(ctx: ViewContext, s: EditorState, doc: Motion): Templa
           Delete
         </button>
       </div>
-      <p id="scene-keys" class="muted small">
+      <p id="scene-keys" class="muted small scene-keys">
         Arrow keys, Home and End choose a scene. Every change, Delete too, can be undone.
       </p>
       ${problemText("structure-problem", s.problems.structure)}

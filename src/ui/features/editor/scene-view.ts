@@ -3,13 +3,12 @@ import type { Motion, MotionScene } from "../../../motion/index.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
 import { chooseSceneTorque, typeSceneName, typeTiming } from "./actions.ts";
 import { detachBoundary, joinSelected } from "./pose-actions.ts";
-import { poseTable } from "./pose-table-view.ts";
 import type { EditorState } from "./state.ts";
 import { inputValue, problemText, TORQUE_WORDS } from "./view-parts.ts";
 
 /**
- * The selected scene: its name, frames, time and torque; its two boundaries (continuity on by default, with a
- * visible "detach" and "join" for each); the robot in 3D, when present; and the pose table.
+ * The selected scene (the Scene tab): its name, frames, time and torque, and its two boundaries (continuity on by
+ * default, with a visible "detach" and "join" for each). Its pose is the Pose tab (pose-table-view.ts).
  */
 
 function jumpsAt(doc: Motion, k: number): number {
@@ -152,20 +151,12 @@ function fields(ctx: ViewContext, s: EditorState, scene: MotionScene): TemplateR
   `;
 }
 
-export function sceneCard(
-  ctx: ViewContext,
-  s: EditorState,
-  doc: Motion,
-  robot: TemplateResult | typeof nothing,
-) {
+export function sceneCard(ctx: ViewContext, s: EditorState, doc: Motion): TemplateResult {
   const scene = doc.scenes[s.scene]!;
   return html`
     <section class="card editor-scene" aria-labelledby="scene-title" data-testid="scene-card">
-      <div class="card-head">
-        <h2 id="scene-title" class="card-title long-text">Scene ${s.scene}: ${scene.name}</h2>
-      </div>
+      <h2 id="scene-title" class="card-title long-text">Scene ${s.scene}: ${scene.name}</h2>
       ${fields(ctx, s, scene)} ${boundaries(ctx, s, doc)}
-      <div class="editor-pose">${robot} ${poseTable(ctx, s, doc, scene)}</div>
     </section>
   `;
 }

@@ -17,6 +17,27 @@ import type { AppState, Notice } from "../../app-state.ts";
 import type { Store } from "../../store.ts";
 import type { BrokenDraft, DraftSummary } from "./drafts.ts";
 
+/**
+ * The tabs of the selected scene's work (UI.md: a view that grows past two screens is split). The toolbar, the
+ * scene list and the drafts stay outside them, always shown.
+ */
+export type EditorTab = "pose" | "scene" | "tools" | "teach" | "play" | "check";
+
+export const EDITOR_TABS: readonly { id: EditorTab; label: string }[] = [
+  { id: "pose", label: "Pose" },
+  { id: "scene", label: "Scene" },
+  { id: "tools", label: "Tools" },
+  { id: "teach", label: "Teach-in" },
+  { id: "play", label: "Play" },
+  { id: "check", label: "Check" },
+];
+
+/**
+ * What the pose table shows at phone width, where a servo gets one line: its end (the key pose, with the
+ * slider) or its start, torque and port. Wider screens show every column.
+ */
+export type PoseColumns = "end" | "more";
+
 /** A refused edit: the text the person typed (kept in the field) and why it was refused. */
 export interface FieldProblem {
   text: string;
@@ -57,6 +78,10 @@ export interface EditorState {
   renaming?: string;
   /** A file is dragged over the editor's drop zone. */
   dragging?: boolean;
+  /** The tab shown (the pose when undefined); kept while scenes are chosen and documents opened. */
+  tab?: EditorTab;
+  /** The pose table's columns at phone width (the end pose when undefined). */
+  poseColumns?: PoseColumns;
 }
 
 export function initialEditor(): EditorState {
@@ -198,6 +223,23 @@ export function selectScene(s: EditorState, k: number): EditorState {
   if (!doc) return s;
   const scene = clampScene(doc, k);
   return scene === s.scene ? s : { ...s, scene, problems: {} };
+}
+
+/** The tab list's keys (WAI-ARIA tabs, automatic activation): the next, previous, first or last tab. */
+export function editorTabAfterKey(current: EditorTab, key: string): EditorTab | undefined {
+  const i = EDITOR_TABS.findIndex((t) => t.id === current);
+  const n = EDITOR_TABS.length;
+  const to =
+    key === "ArrowRight"
+      ? (i + 1) % n
+      : key === "ArrowLeft"
+        ? (i - 1 + n) % n
+        : key === "Home"
+          ? 0
+          : key === "End"
+            ? n - 1
+            : undefined;
+  return to === undefined ? undefined : EDITOR_TABS[to]?.id;
 }
 
 /** Turns continuity off (or on again) at boundary `b` (between scene b−1 and scene b). */

@@ -120,7 +120,7 @@ export function toolbar(ctx: ViewContext, s: EditorState, doc: Motion): Template
     >
       <div class="editor-toolbar-row">
         ${fileButtons(ctx, doc)}
-        <span class="muted small">Open a Motionbuilder file (.rbm), or drop one here.</span>
+        <span class="muted small editor-drop-hint">Open a Motionbuilder file (.rbm), or drop one here.</span>
       </div>
       <div class="editor-toolbar-row">
         <label class="editor-field editor-name">
@@ -136,7 +136,7 @@ export function toolbar(ctx: ViewContext, s: EditorState, doc: Motion): Template
             @change=${(e: Event) => typeMotionName(ctx, (e.target as HTMLInputElement).value)}
           />
         </label>
-        <span class="num muted small" data-testid="motion-facts">
+        <span class="num muted small editor-facts" data-testid="motion-facts">
           ${doc.scenes.length} ${doc.scenes.length === 1 ? "scene" : "scenes"} · plays for ${formatSeconds(total)}
         </span>
         ${historyButtons(ctx, s)}

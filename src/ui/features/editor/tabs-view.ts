@@ -1,0 +1,115 @@
+import { html, nothing, type TemplateResult } from "lit-html";
+import type { Motion } from "../../../motion/index.ts";
+import type { RbmValidation } from "../../../protocol/rbm-validate.ts";
+import type { ViewContext } from "../../shell/view-types.ts";
+import { editorHost, editorPanelId, editorTabId, showEditorTab } from "./actions.ts";
+import { issuesCard } from "./issues-view.ts";
+import { liveOf, teachInOn } from "./live-state.ts";
+import { playPanel } from "./play-view.ts";
+import { poseCard } from "./pose-table-view.ts";
+import { sceneCard } from "./scene-view.ts";
+import { EDITOR_TABS, type EditorState, type EditorTab, editorTabAfterKey } from "./state.ts";
+import { teachInPanel } from "./teach-in-view.ts";
+import { toolsCard } from "./tools-view.ts";
+
+/**
+ * The selected scene's work in tabs (WAI-ARIA tabs, automatic activation: arrows, Home and End), each about one
+ * screen: Pose, Scene, Tools, Teach-in, Play, Check. A tab's label carries what should not go unseen while
+ * another tab is shown: teach-in on, a play running, the number of problems the check found.
+ */
+
+/** The small mark after a tab's label, and its words for a screen reader ("Check (2 warnings)"). */
+function mark(text: string, spoken: string, tone: "info" | "warning" | "danger"): TemplateResult {
+  return html`<span class="editor-tab-mark editor-tab-mark--${tone}" aria-hidden="true">${text}</span
+    ><span class="sr-only"> (${spoken})</span>`;
+}
+
+function tabMark(ctx: ViewContext, tab: EditorTab, check: RbmValidation): TemplateResult | typeof nothing {
+  switch (tab) {
+    case "teach":
+      return teachInOn(ctx.state) ? mark("on", "on", "info") : nothing;
+    case "play":
+      return liveOf(ctx.state).play.running ? mark("playing", "playing", "info") : nothing;
+    case "check": {
+      const errors = check.errors.length;
+      const warnings = check.warnings.length;
+      if (errors + warnings === 0) return nothing;
+      const spoken = [
+        errors > 0 ? `${errors} ${errors === 1 ? "error" : "errors"}` : "",
+        warnings > 0 ? `${warnings} ${warnings === 1 ? "warning" : "warnings"}` : "",
+      ]
+        .filter((x) => x !== "")
+        .join(", ");
+      return mark(String(errors + warnings), spoken, errors > 0 ? "danger" : "warning");
+    }
+    default:
+      return nothing;
+  }
+}
+
+function tabList(ctx: ViewContext, current: EditorTab, check: RbmValidation): TemplateResult {
+  return html`
+    <div class="editor-tabs" role="tablist" aria-label="Work on the selected scene" data-testid="editor-tabs">
+      ${EDITOR_TABS.map(
+        (t) => html`<button
+          type="button"
+          role="tab"
+          class="editor-tab"
+          id=${editorTabId(t.id)}
+          aria-selected=${t.id === current ? "true" : "false"}
+          aria-controls=${t.id === current ? editorPanelId(t.id) : nothing}
+          tabindex=${t.id === current ? "0" : "-1"}
+          @click=${() => showEditorTab(ctx, t.id)}
+          @keydown=${(e: KeyboardEvent) => {
+            const next = editorTabAfterKey(t.id, e.key);
+            if (next === undefined) return;
+            e.preventDefault();
+            showEditorTab(ctx, next, true);
+          }}
+        >
+          ${t.label}${tabMark(ctx, t.id, check)}
+        </button>`,
+      )}
+    </div>
+  `;
+}
+
+function panel(ctx: ViewContext, s: EditorState, doc: Motion, tab: EditorTab, check: RbmValidation) {
+  switch (tab) {
+    case "pose":
+      return poseCard(ctx, s, doc);
+    case "scene":
+      return sceneCard(ctx, s, doc);
+    case "tools":
+      return toolsCard(ctx, s, doc);
+    case "teach":
+      return teachInPanel(ctx, editorHost(ctx, doc, s.scene));
+    case "play":
+      return playPanel(ctx, editorHost(ctx, doc, s.scene));
+    case "check":
+      return issuesCard(ctx, doc, check);
+  }
+}
+
+/** The tab list and the shown tab's panel (two items of the editor's grid, which places them). */
+export function editorTabs(
+  ctx: ViewContext,
+  s: EditorState,
+  doc: Motion,
+  check: RbmValidation,
+): TemplateResult {
+  const tab = s.tab ?? "pose";
+  return html`
+    ${tabList(ctx, tab, check)}
+    <div
+      class="editor-panel"
+      role="tabpanel"
+      id=${editorPanelId(tab)}
+      aria-labelledby=${editorTabId(tab)}
+      data-testid="editor-panel"
+      data-tab=${tab}
+    >
+      ${panel(ctx, s, doc, tab, check)}
+    </div>
+  `;
+}
