@@ -1,6 +1,8 @@
+import { translator } from "../../../i18n/translate.ts";
 import type { AppContext } from "../../context.ts";
 import { errorNotice } from "../../error-text.ts";
 import { addMotionTexts } from "./files.ts";
+import { type MotionsKey, motionsMessages } from "./messages.ts";
 import { patchMotionFiles } from "./state.ts";
 
 /**
@@ -11,53 +13,53 @@ import { patchMotionFiles } from "./state.ts";
 export interface ExampleMotion {
   fileName: string;
   /** What the robot does, in a few words. */
-  description: string;
+  description: MotionsKey;
   load: () => Promise<{ default: string }>;
 }
 
 export const EXAMPLE_MOTIONS: readonly ExampleMotion[] = [
   {
     fileName: "wave.rbm",
-    description: "raises its right arm, waves twice, lowers it",
+    description: "motions.example.wave",
     load: () => import("../../../../examples/wave.rbm?raw"),
   },
   {
     fileName: "bow.rbm",
-    description: "bows from the hips and straightens up",
+    description: "motions.example.bow",
     load: () => import("../../../../examples/bow.rbm?raw"),
   },
   {
     fileName: "squat.rbm",
-    description: "holds its arms out in front and squats twice",
+    description: "motions.example.squat",
     load: () => import("../../../../examples/squat.rbm?raw"),
   },
   {
     fileName: "long-walk.rbm",
-    description: "walks 14 small strides; fills the whole motion memory",
+    description: "motions.example.longWalk",
     load: () => import("../../../../examples/long-walk.rbm?raw"),
   },
   {
     fileName: "arms-only.rbm",
-    description: "moves only the arms (6 servos)",
+    description: "motions.example.armsOnly",
     load: () => import("../../../../examples/arms-only.rbm?raw"),
   },
 ];
 
 /** Opens an example as if the user had picked its file. */
 export async function openExample(ctx: AppContext, example: ExampleMotion): Promise<void> {
+  const { locale } = ctx.store.get();
+  const t = translator(motionsMessages, locale);
+  const file = example.fileName;
   let text: string;
   try {
     text = (await example.load()).default;
   } catch (e) {
     patchMotionFiles(ctx.store, {
-      notice: errorNotice(
-        `The example ${example.fileName} could not be loaded (offline before the first visit?).`,
-        e,
-      ),
+      notice: errorNotice(t("motions.example.loadFailed", { file }), e, locale),
     });
     return;
   }
-  addMotionTexts(ctx.store, [{ fileName: example.fileName, text }]);
+  addMotionTexts(ctx.store, [{ fileName: file, text }]);
   // Said in the "Opened files" live region, for screen readers (the file's card appears below).
-  patchMotionFiles(ctx.store, { notice: { tone: "info", text: `Opened the example ${example.fileName}.` } });
+  patchMotionFiles(ctx.store, { notice: { tone: "info", text: t("motions.example.opened", { file }) } });
 }

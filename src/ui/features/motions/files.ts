@@ -1,3 +1,5 @@
+import type { Locale } from "../../../i18n/locale.ts";
+import { translator } from "../../../i18n/translate.ts";
 import { memoryFootprint } from "../../../protocol/catalog.ts";
 import { motionImage } from "../../../protocol/motion-image.ts";
 import { motionDurationMs, RbmError, readRbm } from "../../../protocol/rbm.ts";
@@ -6,6 +8,7 @@ import type { AppState } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import type { Store } from "../../store.ts";
 import { FILE_CHECKS } from "./controllers.ts";
+import { motionsMessages } from "./messages.ts";
 import { type MotionFileEntry, motionFilesOf, patchMotionFiles } from "./state.ts";
 
 /** Opening .rbm files: read, parse, check and encode them (PROTOCOL.md §6.3, §7). */
@@ -21,6 +24,9 @@ export interface MotionText {
   fileBytes?: number;
 }
 
+/** Issue codes the panel words itself (in the panel's language); the validator's are English sentences. */
+export const PANEL_ISSUE_CODES: readonly string[] = ["unreadable", "too-large"];
+
 /**
  * Reads one file's text as a motion. Never throws: what is wrong ends up in `errors`, in words. A file that
  * breaks the RBC's rules keeps its motion (so its scenes and chart can be shown) but gets no image, so it can
@@ -31,6 +37,7 @@ export function inspectMotionText(
   text: string,
   fileBytes = text.length,
   id = 0,
+  locale: Locale = "en",
 ): MotionFileEntry {
   const entry: MotionFileEntry = { id, fileName, fileBytes, errors: [] };
   try {
@@ -41,7 +48,12 @@ export function inspectMotionText(
     entry.errors =
       e instanceof RbmError
         ? [...e.issues]
-        : [{ code: "unreadable", message: `The file could not be read as a motion (${String(e)}).` }];
+        : [
+            {
+              code: "unreadable",
+              message: translator(motionsMessages, locale)("motions.files.unreadable", { reason: String(e) }),
+            },
+          ];
     return entry;
   }
   try {
@@ -58,7 +70,7 @@ export function inspectMotionText(
 }
 
 /** A picked or dropped file as text, or the reason it is not read. */
-async function readFile(file: File): Promise<MotionText | MotionFileEntry> {
+async function readFile(file: File, locale: Locale): Promise<MotionText | MotionFileEntry> {
   if (file.size > MAX_RBM_BYTES) {
     return {
       id: 0,
@@ -67,7 +79,7 @@ async function readFile(file: File): Promise<MotionText | MotionFileEntry> {
       errors: [
         {
           code: "too-large",
-          message: `The file is ${file.size.toLocaleString("en-US")} bytes; a motion file is a few KB. It was not read.`,
+          message: translator(motionsMessages, locale)("motions.files.tooLarge", { size: file.size }),
         },
       ],
     };
@@ -84,11 +96,13 @@ export function addMotionTexts(
   opened: readonly (MotionText | MotionFileEntry)[],
 ): void {
   if (opened.length === 0) return;
+  const { locale } = store.get();
+  const t = translator(motionsMessages, locale);
   const files = motionFilesOf(store.get());
   const added = opened.map((o, i) => {
     const id = files.nextId + i;
     return "text" in o
-      ? inspectMotionText(o.fileName, o.text, o.fileBytes ?? o.text.length, id)
+      ? inspectMotionText(o.fileName, o.text, o.fileBytes ?? o.text.length, id, locale)
       : { ...o, id };
   });
   const names = new Set(added.map((e) => e.fileName));
@@ -105,7 +119,10 @@ export function addMotionTexts(
         ? undefined
         : {
             tone: bad > 0 ? "warning" : "info",
-            text: `Opened ${added.length} files${bad > 0 ? `; ${bad} cannot be used (see below)` : ""}.`,
+            text:
+              bad > 0
+                ? t("motions.files.openedBad", { files: added.length, bad })
+                : t("motions.files.opened", { files: added.length }),
           },
   });
 }
@@ -113,7 +130,8 @@ export function addMotionTexts(
 /** Adds the files (picker or drop) and shows the first new one. Files that are not .rbm are still tried. */
 export async function openMotionFiles(ctx: AppContext, files: readonly File[]): Promise<void> {
   if (files.length === 0) return;
-  addMotionTexts(ctx.store, await Promise.all(files.map(readFile)));
+  const { locale } = ctx.store.get();
+  addMotionTexts(ctx.store, await Promise.all(files.map((file) => readFile(file, locale))));
 }
 
 export function removeMotionFile(ctx: AppContext, id: number): void {

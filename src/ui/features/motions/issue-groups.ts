@@ -1,5 +1,8 @@
+import type { Locale } from "../../../i18n/locale.ts";
+import { translator } from "../../../i18n/translate.ts";
 import type { RbmMotion } from "../../../protocol/rbm.ts";
 import type { RbmIssue } from "../../../protocol/rbm-validate.ts";
+import { type MotionsKey, type MotionsTranslator, motionsMessages } from "./messages.ts";
 
 /**
  * A file's warnings grouped by kind (the validator's issue codes, PROTOCOL.md §7), each kind with how much it
@@ -26,10 +29,22 @@ export const SMALL_JUMP_STEPS = 3;
 
 const WEIGHT_ORDER: Record<Weight, number> = { serious: 0, check: 1, minor: 2 };
 
-export const WEIGHT_WORDS: Record<Weight, string> = {
-  serious: "Serious",
-  check: "Check",
-  minor: "Minor",
+const WEIGHT_KEYS: Readonly<Record<Weight, MotionsKey>> = {
+  serious: "motions.weight.serious",
+  check: "motions.weight.check",
+  minor: "motions.weight.minor",
+};
+
+/** The weight of a kind of warning, in words (a badge beside its title): "Serious" / "심각". */
+export function weightWord(weight: Weight, locale: Locale): string {
+  return translator(motionsMessages, locale)(WEIGHT_KEYS[weight]);
+}
+
+/** The weights in English, for views not yet translated (use `weightWord` with the panel's language). */
+export const WEIGHT_WORDS: Readonly<Record<Weight, string>> = {
+  serious: weightWord("serious", "en"),
+  check: weightWord("check", "en"),
+  minor: weightWord("minor", "en"),
 };
 
 /** The largest jump (position steps) among scene-jump warnings, from the motion itself; undefined if unknown. */
@@ -50,87 +65,94 @@ export function largestJump(motion: RbmMotion | undefined, issues: readonly RbmI
   return largest;
 }
 
+interface Kind {
+  /** Also what groups warnings: two codes with the same title are one kind for the person. */
+  title: MotionsKey;
+  weight: Weight;
+  meaning: string;
+}
+
 function describe(
+  t: MotionsTranslator,
   code: string,
   issues: RbmIssue[],
   motion: RbmMotion | undefined,
-): Omit<WarningGroup, "issues"> {
+): Kind {
   switch (code) {
     case "rbm-unsafe-position":
       return {
-        code,
-        title: "Positions outside a joint's safe range",
+        title: "motions.group.unsafeTitle",
         weight: "serious",
-        meaning:
-          "An uploaded motion drives the servo there as written: the limb can hit the body or another limb, strain the servo or tip the robot over. Check these positions before running the motion.",
+        meaning: t("motions.group.unsafeMeaning"),
       };
     case "rbm-scene-jump": {
       const jump = largestJump(motion, issues);
       const small = jump !== undefined && jump <= SMALL_JUMP_STEPS;
       const size =
         jump === undefined
-          ? ""
-          : ` The largest jump is ${jump} ${jump === 1 ? "step" : "steps"}${small ? ", a twitch you will hardly see" : ""}.`;
+          ? undefined
+          : small
+            ? t("motions.group.jumpLargestSmall", { count: jump })
+            : t("motions.group.jumpLargest", { count: jump });
       return {
-        code,
-        title: "Servos jump between scenes",
+        title: "motions.group.jumpTitle",
         weight: small ? "minor" : "check",
-        meaning: `A scene starts a servo somewhere other than where the scene before left it, so the servo moves there at full speed instead of smoothly.${size} Large jumps can shake the robot or make it fall.`,
+        meaning: [t("motions.group.jumpMeaning"), size, t("motions.group.jumpRisk")]
+          .filter((x) => x !== undefined)
+          .join(" "),
       };
     }
     case "rbm-serial-mismatch":
       return {
-        code,
-        title: "Made for another robot",
+        title: "motions.group.serialTitle",
         weight: "check",
-        meaning:
-          "The motion was saved for a robot with another serial number. Motionbuilder refuses it; the panel uploads it, so check that it suits this robot (its zeros and build may differ).",
+        meaning: t("motions.group.serialMeaning"),
       };
     case "rbm-huno-servo-count":
-      return {
-        code,
-        title: "Not the HUNO's 16 servos",
-        weight: "check",
-        meaning: "The motion was probably made for another robot model: check which joints it moves.",
-      };
+      return { title: "motions.group.hunoTitle", weight: "check", meaning: t("motions.group.hunoMeaning") };
     case "rbm-many-frames":
     case "rbm-long-scene":
       return {
-        code,
-        title: "Beyond Motionbuilder's limits",
+        title: "motions.group.limitsTitle",
         weight: "minor",
-        meaning:
-          "Motionbuilder would not write such a scene (more than 100 frames or longer than 10 s); the RBC plays it. Opening the file in Motionbuilder may change it.",
+        meaning: t("motions.group.limitsMeaning"),
       };
     case "rbm-serial-format":
     case "rbm-header-constant":
       return {
-        code,
-        title: "Unusual header fields",
+        title: "motions.group.headerTitle",
         weight: "minor",
-        meaning:
-          "The file's header differs from what Motionbuilder writes, so it was probably edited by hand or by another tool. The scenes are read and checked as usual.",
+        meaning: t("motions.group.headerMeaning"),
       };
     default:
-      return { code, title: "Other warnings", weight: "check", meaning: "Read the details below." };
+      return { title: "motions.group.otherTitle", weight: "check", meaning: t("motions.group.otherMeaning") };
   }
 }
 
-/** Warnings grouped by kind: the most serious kind first, then in the order they first appear. */
-export function groupWarnings(warnings: readonly RbmIssue[], motion?: RbmMotion): WarningGroup[] {
-  const byTitle = new Map<string, RbmIssue[]>();
-  const codes = new Map<string, string>();
+/**
+ * Warnings grouped by kind: the most serious kind first, then in the order they first appear. Titles and
+ * meanings in the panel's language (English unless given).
+ */
+export function groupWarnings(
+  warnings: readonly RbmIssue[],
+  motion?: RbmMotion,
+  locale: Locale = "en",
+): WarningGroup[] {
+  const t = translator(motionsMessages, locale);
+  const byTitle = new Map<MotionsKey, RbmIssue[]>();
+  const codes = new Map<MotionsKey, string>();
   for (const w of warnings) {
-    const title = describe(w.code, [w], undefined).title;
+    const title = describe(t, w.code, [w], undefined).title;
     const list = byTitle.get(title) ?? [];
     list.push(w);
     byTitle.set(title, list);
     if (!codes.has(title)) codes.set(title, w.code);
   }
-  const groups = [...byTitle.entries()].map(([title, issues]) => ({
-    ...describe(codes.get(title) ?? "", issues, motion),
-    issues,
-  }));
+  const groups = [...byTitle.entries()].map(([title, issues]): WarningGroup => {
+    const code = codes.get(title) ?? "";
+    const kind = describe(t, code, issues, motion);
+    return { code, title: t(kind.title), weight: kind.weight, meaning: kind.meaning, issues };
+  });
   return groups
     .map((g, order) => ({ g, order }))
     .sort((a, b) => WEIGHT_ORDER[a.g.weight] - WEIGHT_ORDER[b.g.weight] || a.order - b.order)

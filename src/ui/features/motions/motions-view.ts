@@ -1,8 +1,10 @@
 import "../../styles/tools.css";
 import { html, nothing, type TemplateResult } from "lit-html";
+import { translator } from "../../../i18n/translate.ts";
 import { hrefFor } from "../../router.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
 import { showMemory } from "./memory.ts";
+import { type MotionsTranslator, motionsMessages } from "./messages.ts";
 import { type MotionsTab, motionFilesOf } from "./state.ts";
 import { MOTIONS_TABS, panelId, showMotionsTab, tabAfterKey, tabId } from "./view-actions.ts";
 import { fileSection } from "./views/files-section.ts";
@@ -16,9 +18,9 @@ import { uploadSection } from "./views/upload-section.ts";
  * find). Without a robot only the files can be used, so no tabs are shown.
  */
 
-function tabList(ctx: ViewContext, current: MotionsTab): TemplateResult {
+function tabList(ctx: ViewContext, tr: MotionsTranslator, current: MotionsTab): TemplateResult {
   return html`
-    <div class="motions-tabs" role="tablist" aria-label="Motions">
+    <div class="motions-tabs" role="tablist" aria-label=${tr("motions.title")}>
       ${MOTIONS_TABS.map(
         (t) => html`<button
           type="button"
@@ -36,7 +38,7 @@ function tabList(ctx: ViewContext, current: MotionsTab): TemplateResult {
             showMotionsTab(ctx, next, true);
           }}
         >
-          ${t.label}
+          ${tr(t.label)}
         </button>`,
       )}
     </div>
@@ -59,25 +61,22 @@ function panel(ctx: ViewContext, tab: MotionsTab): TemplateResult {
 function render(ctx: ViewContext): TemplateResult {
   const connected = ctx.state.connection.phase === "connected";
   const tab = connected ? (motionFilesOf(ctx.state).tab ?? "files") : "files";
+  const t = translator(motionsMessages, ctx.state.locale);
+  const link = html`<a href=${hrefFor("robot")}>${t("motions.noRobotLink")}</a>`;
   return html`
     <div class="view-stack">
       <header class="view-head">
-        <h1 id="view-title">Motions</h1>
-        <p class="muted">
-          Check Motionbuilder files and upload them, run the robot's motions and play its sounds.
-        </p>
+        <h1 id="view-title">${t("motions.title")}</h1>
+        <p class="muted">${t("motions.description")}</p>
       </header>
       ${
         connected
-          ? html`${tabList(ctx, tab)}
+          ? html`${tabList(ctx, t, tab)}
               <div class="view-stack motions-panel" role="tabpanel" id=${panelId(tab)} aria-labelledby=${tabId(tab)} data-testid="motions-panel">
                 ${panel(ctx, tab)}
               </div>`
           : html`<div class="notice notice--info">
-                <p>
-                  No robot is connected: you can open and check motion files. To upload or run them,
-                  <a href=${hrefFor("robot")}>connect a robot or the demo robot</a>.
-                </p>
+                <p>${t.parts("motions.noRobot", { link })}</p>
               </div>
               ${fileSection(ctx)}`
       }

@@ -1,5 +1,8 @@
+import type { Locale } from "../../../i18n/locale.ts";
+import { translator } from "../../../i18n/translate.ts";
+import { formatMilliseconds, formatSeconds as secondsText } from "../../../i18n/units.ts";
 import type { RbmMotion } from "../../../protocol/rbm.ts";
-import { HUNO_JOINT_NAMES } from "../../../protocol/servo-limits.ts";
+import { type MotionsKey, motionsMessages } from "./messages.ts";
 
 /**
  * What the motion chart draws: each servo's position over time. A scene moves every servo from its start to
@@ -13,15 +16,40 @@ export interface MotionPlot {
   series: { id: number; label: string; values: number[] }[];
 }
 
-/** "0 Right hip roll" for HUNO ids, "Servo 20" otherwise. */
-export function jointLabel(id: number): string {
-  const name = HUNO_JOINT_NAMES[id];
-  return name === undefined ? `Servo ${id}` : `${id} ${name}`;
+/** The HUNO's joints by servo id (protocol/servo-limits.ts HUNO_JOINT_NAMES), in the panel's words. */
+const HUNO_JOINTS: readonly MotionsKey[] = [
+  "motions.joint.rightHipRoll",
+  "motions.joint.rightHipPitch",
+  "motions.joint.rightKnee",
+  "motions.joint.rightAnklePitch",
+  "motions.joint.rightAnkleRoll",
+  "motions.joint.leftHipRoll",
+  "motions.joint.leftHipPitch",
+  "motions.joint.leftKnee",
+  "motions.joint.leftAnklePitch",
+  "motions.joint.leftAnkleRoll",
+  "motions.joint.rightShoulderPitch",
+  "motions.joint.rightShoulderRoll",
+  "motions.joint.rightElbow",
+  "motions.joint.leftShoulderPitch",
+  "motions.joint.leftShoulderRoll",
+  "motions.joint.leftElbow",
+];
+
+/** "0 Right hip roll" ("0 오른쪽 엉덩이 롤") for HUNO ids, "Servo 20" otherwise. */
+export function jointLabel(id: number, locale: Locale = "en"): string {
+  const t = translator(motionsMessages, locale);
+  const joint = HUNO_JOINTS[id];
+  return joint === undefined ? t("motions.joint.servo", { id: String(id) }) : `${id} ${t(joint)}`;
 }
 
-export function motionPlotData(motion: RbmMotion): MotionPlot {
+export function motionPlotData(motion: RbmMotion, locale: Locale = "en"): MotionPlot {
   const x: number[] = [];
-  const series = motion.servos.map((s) => ({ id: s.id, label: jointLabel(s.id), values: [] as number[] }));
+  const series = motion.servos.map((s) => ({
+    id: s.id,
+    label: jointLabel(s.id, locale),
+    values: [] as number[],
+  }));
   let t = 0;
   for (const scene of motion.scenes) {
     x.push(t, t + scene.timeMs);
@@ -63,12 +91,13 @@ export function sceneRows(motion: RbmMotion): SceneRow[] {
 
 /**
  * A duration as people read it: "12 s" from 10 s on, "1.8 s" and "0.4 s" with one decimal, "40 ms" below
- * a tenth of a second (milliseconds are more precision than a motion or a sound needs).
+ * a tenth of a second (milliseconds are more precision than a motion or a sound needs). Korean: "12초",
+ * "1.8초", "40ms".
  */
-export function formatSeconds(ms: number): string {
-  if (ms === 0) return "0 s";
+export function formatSeconds(ms: number, locale: Locale = "en"): string {
+  if (ms === 0) return secondsText(0, locale, 0);
   const s = ms / 1000;
-  if (s >= 9.95) return `${Math.round(s)} s`;
-  if (ms >= 95) return `${(Math.round(s * 10) / 10).toFixed(1)} s`;
-  return `${Math.round(ms)} ms`;
+  if (s >= 9.95) return secondsText(Math.round(s), locale, 0);
+  if (ms >= 95) return secondsText(Math.round(s * 10) / 10, locale, 1);
+  return formatMilliseconds(ms, locale);
 }

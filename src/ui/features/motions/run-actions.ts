@@ -1,4 +1,6 @@
 import { RbcError } from "../../../device/errors.ts";
+import type { Locale } from "../../../i18n/locale.ts";
+import { translator } from "../../../i18n/translate.ts";
 import {
   BASIC_POSTURE_MOTION,
   BUILT_IN_MOTIONS,
@@ -6,20 +8,17 @@ import {
   isOfferedMotionNumber,
   soundLengthMs,
 } from "../../../protocol/catalog.ts";
-import type { AppState } from "../../app-state.ts";
+import type { AppState, Notice } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
-import { errorNotice, technicalDetail } from "../../error-text.ts";
+import { errorMessage, errorNotice, technicalDetail } from "../../error-text.ts";
 import { focusSoon } from "../../focus.ts";
 import { type MotionRun, motionsController } from "./controllers.ts";
+import { type MotionsKey, type MotionsTranslator, motionsMessages } from "./messages.ts";
 import { formatSeconds } from "./plot-data.ts";
 import { motionNumberOf, type SlotBook } from "./slot-book.ts";
 import { motionsOf, patchMotions, robotBusyReason } from "./state.ts";
 
 /** Running motions and sounds (PROTOCOL.md §3.1, §3.3), with the 7-first rule and the movement warning. */
-
-export const BASIC_POSTURE_GUIDANCE =
-  "After switching on, the robot only accepts Basic posture (7). Run it first.";
-export const MOVEMENT_WARNING = "The robot will move. Hold it or give it room.";
 
 export interface OfferedMotion {
   number: number;
@@ -30,11 +29,33 @@ export interface OfferedMotion {
   slot?: number;
 }
 
-export const BUILT_IN_OFFERS: readonly OfferedMotion[] = BUILT_IN_MOTIONS.map((m) => ({
-  number: m.number,
-  name: m.name,
-  expectedMs: m.durationMs,
-}));
+/** The built-in motions' names (protocol/catalog.ts BUILT_IN_MOTIONS), by motion number, in the panel's words. */
+const BUILT_IN_NAMES: Readonly<Record<number, MotionsKey>> = {
+  1: "motions.builtIn.getUpA",
+  2: "motions.builtIn.getUpB",
+  3: "motions.builtIn.turnLeft",
+  4: "motions.builtIn.walkForward",
+  5: "motions.builtIn.turnRight",
+  6: "motions.builtIn.sidestepLeft",
+  7: "motions.builtIn.basicPosture",
+  8: "motions.builtIn.sidestepRight",
+  9: "motions.builtIn.punchLeft",
+  10: "motions.builtIn.walkBackward",
+  11: "motions.builtIn.punchRight",
+};
+
+/** The built-in motions (Run Motion 1-11) with their names in the panel's language. */
+export function builtInOffers(locale: Locale): OfferedMotion[] {
+  const t = translator(motionsMessages, locale);
+  return BUILT_IN_MOTIONS.map((m) => {
+    const key = BUILT_IN_NAMES[m.number];
+    return { number: m.number, name: key ? t(key) : m.name, expectedMs: m.durationMs };
+  });
+}
+
+export function isBuiltIn(number: number): boolean {
+  return BUILT_IN_MOTIONS.some((m) => m.number === number);
+}
 
 /** Motions uploaded in this connection whose slot (so Run Motion number) is known. */
 export function downloadedOffers(book: SlotBook): OfferedMotion[] {
@@ -46,15 +67,23 @@ export function downloadedOffers(book: SlotBook): OfferedMotion[] {
   return out.sort((a, b) => a.number - b.number);
 }
 
-/** What the panel knows about Run Motion `number` (a built-in, an upload of this connection, or a slot). */
+/**
+ * What the panel knows about Run Motion `number` (a built-in, an upload of this connection, or a slot), named
+ * in the panel's language.
+ */
 export function offerFor(s: AppState, number: number): OfferedMotion | undefined {
   if (!isOfferedMotionNumber(number)) return undefined;
   const known =
-    BUILT_IN_OFFERS.find((m) => m.number === number) ??
+    builtInOffers(s.locale).find((m) => m.number === number) ??
     downloadedOffers(motionsOf(s).motionBook).find((m) => m.number === number);
   if (known) return known;
   const slot = downloadSlotOf(number);
-  return slot === undefined ? undefined : { number, name: `Download slot ${slot}`, slot };
+  if (slot === undefined) return undefined;
+  return {
+    number,
+    name: translator(motionsMessages, s.locale)("motions.run.downloadSlot", { slot }),
+    slot,
+  };
 }
 
 /** A Run button: asks once per connection that the robot may move, then runs. */
@@ -81,18 +110,14 @@ export function cancelMovement(ctx: AppContext): void {
   patchMotions(ctx.store, { confirmMove: undefined });
 }
 
-function label(offer: OfferedMotion): string {
-  return `motion ${offer.number} (${offer.name})`;
-}
-
-function capitalised(text: string): string {
-  return text.charAt(0).toUpperCase() + text.slice(1);
-}
+/** The motion in a sentence: "Motion 7 (Basic posture) finished." */
+const named = (offer: OfferedMotion) => ({ number: offer.number, name: offer.name });
 
 export async function runMotionNow(ctx: AppContext, number: number): Promise<void> {
   const { store, session } = ctx;
   const offer = offerFor(store.get(), number);
   if (!offer || robotBusyReason(store.get())) return;
+  const t = translator(motionsMessages, store.get().locale);
   const run: MotionRun = { number, stopRequested: false };
   const controller = motionsController(ctx);
   controller.run = run;
@@ -104,7 +129,7 @@ export async function runMotionNow(ctx: AppContext, number: number): Promise<voi
   });
   controller.ticker.ensure();
   try {
-    await session.run(`Running motion ${number}`, (client) =>
+    await session.run(t("motions.run.task", { number }), (client) =>
       client.runMotion(number, { expectedMs: offer.expectedMs }),
     );
     // After "Stop motion", stopMotion says how it ended.
@@ -112,13 +137,15 @@ export async function runMotionNow(ctx: AppContext, number: number): Promise<voi
       patchMotions(store, {
         runNotice: {
           tone: "ok",
-          text: `${capitalised(label(offer))} finished.${firstPosture ? " The robot now accepts every motion." : ""}`,
+          text: [t("motions.run.finished", named(offer)), firstPosture ? t("motions.run.nowAcceptsAll") : ""]
+            .filter((x) => x)
+            .join(" "),
         },
       });
     }
   } catch (e) {
     if (run.stopRequested) return;
-    patchMotions(store, { runNotice: runFailure(offer, e) });
+    patchMotions(store, { runNotice: runFailure(t, offer, e) });
   } finally {
     if (!run.stopRequested) {
       patchMotions(store, { run: undefined });
@@ -127,28 +154,24 @@ export async function runMotionNow(ctx: AppContext, number: number): Promise<voi
   }
 }
 
-function runFailure(offer: OfferedMotion, e: unknown) {
+function runFailure(t: MotionsTranslator, offer: OfferedMotion, e: unknown): Notice {
   if (e instanceof RbcError && e.code === "motion-ignored") {
     return {
-      tone: "warning" as const,
-      text: `${BASIC_POSTURE_GUIDANCE} The robot ignored ${label(offer)}: it did not answer.`,
+      tone: "warning",
+      text: `${t("motions.run.postureGuidance")} ${t("motions.run.ignored", named(offer))}`,
       detail: technicalDetail(e),
     };
   }
   if (e instanceof RbcError && e.code === "cancelled") {
     return {
-      tone: "warning" as const,
-      text: `${capitalised(label(offer))} did not finish. ${e.message}`,
+      tone: "warning",
+      text: `${t("motions.run.notFinished", named(offer))} ${errorMessage(e, t.locale)}`,
     };
   }
   if (e instanceof RbcError && e.code === "timeout" && offer.expectedMs === undefined) {
-    return {
-      tone: "danger" as const,
-      text: `The robot did not report the end of ${label(offer)}. If nothing was downloaded into that slot, the robot ignores the number (error 3).`,
-      detail: technicalDetail(e),
-    };
+    return { tone: "danger", text: t("motions.run.noEnd", named(offer)), detail: technicalDetail(e) };
   }
-  return errorNotice(`${capitalised(label(offer))} failed.`, e);
+  return errorNotice(t("motions.run.failed", named(offer)), e, t.locale);
 }
 
 /**
@@ -162,24 +185,20 @@ export async function stopMotion(ctx: AppContext): Promise<void> {
   const shown = motionsOf(store.get()).run;
   if (!run || run.stopRequested || !shown) return;
   run.stopRequested = true;
+  const { locale } = store.get();
+  const t = translator(motionsMessages, locale);
   patchMotions(store, { run: { ...shown, stopping: true } });
   try {
-    await session.run("Stopping the motion", (client) => client.stopMotion());
+    await session.run(t("motions.run.stopTask"), (client) => client.stopMotion());
     patchMotions(store, {
-      runNotice: {
-        tone: "ok",
-        text: `Motion ${run.number} (${shown.name}) stopped at the end of its scene. The robot holds the pose it stopped in; run Basic posture (7) to bring it back to standing.`,
-      },
+      runNotice: { tone: "ok", text: t("motions.run.stopped", { number: run.number, name: shown.name }) },
     });
   } catch (e) {
     patchMotions(store, {
       runNotice:
         e instanceof RbcError && e.code === "cancelled"
-          ? {
-              tone: "warning",
-              text: `Motion ${run.number} was ended by Stop or Limp; the banner under the top bar says what the robot confirmed.`,
-            }
-          : errorNotice("Stop motion failed. If the robot still moves, hold it and press Limp (top bar).", e),
+          ? { tone: "warning", text: t("motions.run.endedByStop", { number: run.number }) }
+          : errorNotice(t("motions.run.stopFailed"), e, locale),
     });
   } finally {
     patchMotions(store, { run: undefined });
@@ -192,22 +211,24 @@ export async function playSound(ctx: AppContext, n: number): Promise<void> {
   const { store, session } = ctx;
   const length = soundLengthMs(n);
   if (length === undefined || robotBusyReason(store.get())) return;
+  const { locale } = store.get();
+  const t = translator(motionsMessages, locale);
   patchMotions(store, { soundNotice: undefined });
   motionsController(ctx).ticker.ensure();
   try {
-    await session.run(`Playing sound ${n}`, (client) => client.runSound(n));
+    await session.run(t("motions.sound.task", { sound: n }), (client) => client.runSound(n));
     patchMotions(store, {
-      soundNotice: { tone: "ok", text: `Sound ${n} played (${formatSeconds(length)}).` },
+      soundNotice: {
+        tone: "ok",
+        text: t("motions.sound.played", { sound: n, time: formatSeconds(length, locale) }),
+      },
     });
   } catch (e) {
     patchMotions(store, {
       soundNotice:
         e instanceof RbcError && e.code === "cancelled"
-          ? {
-              tone: "warning",
-              text: `Sound ${n}: its wait was cancelled by Limp (the robot plays a sound to its end).`,
-            }
-          : errorNotice(`Sound ${n} failed.`, e),
+          ? { tone: "warning", text: t("motions.sound.cancelled", { sound: n }) }
+          : errorNotice(t("motions.sound.failed", { sound: n }), e, locale),
     });
   }
 }

@@ -1,7 +1,9 @@
+import { translator } from "../../../i18n/translate.ts";
 import type { RbmMotion } from "../../../protocol/rbm.ts";
 import type { RbmIssue } from "../../../protocol/rbm-validate.ts";
 import type { AppState, Notice } from "../../app-state.ts";
 import type { Store } from "../../store.ts";
+import { motionsMessages } from "./messages.ts";
 import { emptyBook, type SlotBook } from "./slot-book.ts";
 import type { ProgressSample } from "./upload-rate.ts";
 
@@ -63,8 +65,8 @@ export interface UploadRun {
   total: number;
   /** Progress reports with their arrival time (robot-clock ms, the session's clock). */
   samples: ProgressSample[];
-  /** What the panel is doing before the first byte ("Resetting the motion memory…"). */
-  phase: string;
+  /** What the panel is doing: before the first byte (resetting, checking free memory), then sending. */
+  phase: "resetting" | "checking" | "sending";
   /** Robot-clock ms (the session's clock) of the first progress report (the first byte is about to go out). */
   sendingSince?: number;
   cancelling?: boolean;
@@ -136,20 +138,17 @@ export function patchMotions(
 }
 
 /**
- * Why robot actions (run, sound, upload) cannot start now, in words, or undefined when they can. The RBC
- * drops every request while a sound plays, and every request but 7 while a motion plays.
+ * Why robot actions (run, sound, upload) cannot start now, in words (the panel's language), or undefined when
+ * they can. The RBC drops every request while a sound plays, and every request but 7 while a motion plays.
  */
 export function robotBusyReason(s: AppState): string | undefined {
+  const t = translator(motionsMessages, s.locale);
   const c = s.connection;
-  if (c.phase !== "connected") return "Connect a robot first.";
+  if (c.phase !== "connected") return t("motions.busy.connect");
   const m = s.motions;
-  if (c.sounding) {
-    return `Sound ${c.sounding.sound} is playing: the robot handles nothing else until it ends.`;
-  }
-  if (m?.upload) return "An upload is in progress.";
-  if (c.playing || m?.run) {
-    return "A motion is playing: the robot ignores everything but Basic posture (7) until it ends.";
-  }
-  if (s.running.length > 0) return `Busy: ${s.running.join(", ")}.`;
+  if (c.sounding) return t("motions.busy.sound", { sound: c.sounding.sound });
+  if (m?.upload) return t("motions.busy.upload");
+  if (c.playing || m?.run) return t("motions.busy.motion");
+  if (s.running.length > 0) return t("motions.busy.other", { tasks: s.running.join(", ") });
   return undefined;
 }

@@ -2,52 +2,44 @@ import { RbcCancelledError } from "../../../device/errors.ts";
 import type { UploadPhase } from "../../../device/motion-upload.ts";
 import type { RbcClient } from "../../../device/rbc-client.ts";
 import type { UploadOptions, UploadResult } from "../../../device/types.ts";
+import { translator } from "../../../i18n/translate.ts";
 import { ACTION_AREA_BYTES } from "../../../protocol/catalog.ts";
 import type { AppContext } from "../../context.ts";
 import { focusSoon } from "../../focus.ts";
-import { formatCount } from "../../format.ts";
 import { motionsController } from "./controllers.ts";
 import { checkedEntry, entryFacts } from "./files.ts";
+import { motionsMessages } from "./messages.ts";
 import { afterReset } from "./slot-book.ts";
 import { type ActionFile, motionsOf, patchMotions, robotBusyReason, type UploadTarget } from "./state.ts";
 import { addSample } from "./upload-rate.ts";
-import {
-  ACTION_SENTENCE,
-  bookKey,
-  EXPERIMENTAL_SENTENCE,
-  HOLD_ADVICE,
-  type Payload,
-  uploadFailed,
-  uploadSucceeded,
-} from "./upload-results.ts";
-
-export { ACTION_SENTENCE, EXPERIMENTAL_SENTENCE, HOLD_ADVICE };
+import { bookKey, type Payload, uploadFailed, uploadSucceeded } from "./upload-results.ts";
 
 /** Uploads of motion images and action files (PROTOCOL.md §6), with the §6.3 safety decision. */
 
-/** What an upload would send, or why it must not (a file with errors never gets a byte sent). */
+/**
+ * What an upload would send, or why it must not (a file with errors never gets a byte sent), in the panel's
+ * language.
+ */
 export function uploadPayload(ctx: AppContext, target: UploadTarget): Payload | { refused: string } {
   const s = ctx.store.get();
+  const t = translator(motionsMessages, s.locale);
   if (target.area === "action") {
     const file: ActionFile | undefined = motionsOf(s).actionFile;
-    if (!file) return { refused: "Choose an action file first." };
+    if (!file) return { refused: t("motions.upload.chooseActionFirst") };
     if (file.size > ACTION_AREA_BYTES) {
       return {
-        refused: `The file is ${formatCount(file.size)} bytes; the action memory holds ${formatCount(ACTION_AREA_BYTES)}. Nothing is sent.`,
+        refused: t("motions.upload.actionTooLarge", { size: file.size, capacity: ACTION_AREA_BYTES }),
       };
     }
-    if (file.bytes.length === 0) return { refused: "The action file is empty. Nothing is sent." };
+    if (file.bytes.length === 0) return { refused: t("motions.upload.actionEmpty") };
     return { area: "action", fileName: file.fileName, bytes: file.bytes, name: file.fileName };
   }
   const entry = s.motionFiles?.entries.find((e) => e.id === target.entryId);
-  if (!entry) return { refused: "The file is no longer open." };
+  if (!entry) return { refused: t("motions.upload.fileClosed") };
   const { errors } = checkedEntry(ctx, entry);
   const facts = entryFacts(entry);
   if (errors.length > 0 || !entry.image || !facts) {
-    const n = errors.length;
-    return {
-      refused: `Cannot upload: the file has ${n} ${n === 1 ? "error" : "errors"} (listed above). Nothing is sent.`,
-    };
+    return { refused: t("motions.upload.hasErrors", { count: errors.length }) };
   }
   return {
     area: "motion",
@@ -116,6 +108,7 @@ export async function startUpload(ctx: AppContext, target: UploadTarget): Promis
   const payload = uploadPayload(ctx, target);
   if ("refused" in payload || robotBusyReason(s)) return;
   const { area, bytes, fileName } = payload;
+  const t = translator(motionsMessages, s.locale);
   const reset = area === "motion" ? motionsOf(s).resetMotionFirst : motionsOf(s).resetActionFirst;
   const real = s.connection.robot?.kind !== "demo";
   const abort = new AbortController();
@@ -131,19 +124,19 @@ export async function startUpload(ctx: AppContext, target: UploadTarget): Promis
       fileName,
       total: bytes.length,
       samples: [],
-      phase: reset ? `Resetting the ${area} memory…` : `Checking free ${area} memory…`,
+      phase: reset ? "resetting" : "checking",
     },
   });
   let result: UploadResult;
   try {
-    result = await session.run(`Uploading ${fileName}`, (client) =>
+    result = await session.run(t("motions.upload.task", { file: fileName }), (client) =>
       sendUpload(client, payload, {
         resetFirst: reset,
         onReset: () => {
           didReset = true;
           patchMotions(store, (m) => ({
             [bookKey(area)]: afterReset(m[bookKey(area)]),
-            ...(m.upload ? { upload: { ...m.upload, phase: `Checking free ${area} memory…` } } : {}),
+            ...(m.upload ? { upload: { ...m.upload, phase: "checking" } } : {}),
           }));
         },
         signal: abort.signal,
@@ -154,7 +147,7 @@ export async function startUpload(ctx: AppContext, target: UploadTarget): Promis
               ? {
                   upload: {
                     ...m.upload,
-                    phase: "Sending",
+                    phase: "sending",
                     samples: addSample(m.upload.samples, { t, acknowledged: p.acknowledged }),
                     sendingSince: m.upload.sendingSince ?? t,
                   },

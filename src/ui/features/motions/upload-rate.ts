@@ -1,3 +1,7 @@
+import type { Locale } from "../../../i18n/locale.ts";
+import { translator } from "../../../i18n/translate.ts";
+import { motionsMessages } from "./messages.ts";
+
 /** Upload speed and time left, from the timestamps of the client's progress reports. Pure functions. */
 
 export interface ProgressSample {
@@ -57,17 +61,19 @@ export function uploadFigures(
   return figures;
 }
 
-/** "5,380 bytes/s". */
-export function formatRate(bytesPerSecond: number | undefined): string {
+/** "5,380 bytes/s" ("5,380바이트/초"). */
+export function formatRate(bytesPerSecond: number | undefined, locale: Locale = "en"): string {
+  const t = translator(motionsMessages, locale);
   return bytesPerSecond === undefined
-    ? "— bytes/s"
-    : `${Math.round(bytesPerSecond).toLocaleString("en-US")} bytes/s`;
+    ? t("motions.upload.rateUnknown")
+    : t("motions.upload.rate", { rate: Math.round(bytesPerSecond) });
 }
 
-/** "about 12 s left", "less than 1 s left". */
-export function formatTimeLeft(seconds: number | undefined): string {
-  if (seconds === undefined) return "time left: estimating…";
-  if (seconds < 1) return "less than 1 s left";
-  if (seconds < 90) return `about ${Math.ceil(seconds)} s left`;
-  return `about ${Math.ceil(seconds / 60)} min left`;
+/** "about 12 s left", "less than 1 s left" ("약 12초 남음"). */
+export function formatTimeLeft(seconds: number | undefined, locale: Locale = "en"): string {
+  const t = translator(motionsMessages, locale);
+  if (seconds === undefined) return t("motions.upload.estimating");
+  if (seconds < 1) return t("motions.upload.underSecond");
+  if (seconds < 90) return t("motions.upload.aboutSeconds", { seconds: Math.ceil(seconds) });
+  return t("motions.upload.aboutMinutes", { minutes: Math.ceil(seconds / 60) });
 }

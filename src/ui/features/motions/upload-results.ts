@@ -4,14 +4,17 @@ import {
   RbcRejectedError,
   RbcUploadError,
 } from "../../../device/errors.ts";
-import { UPLOAD_NOTICES } from "../../../device/motion-upload.ts";
 import type { UploadResult } from "../../../device/types.ts";
+import type { KeysWithoutParams } from "../../../i18n/catalogue.ts";
+import type { Locale } from "../../../i18n/locale.ts";
+import { translator } from "../../../i18n/translate.ts";
 import { ACTION_AREA_BYTES, errorCodeText, MOTION_AREA_BYTES, NO_ERROR } from "../../../protocol/catalog.ts";
 import type { RbmMotion } from "../../../protocol/rbm.ts";
 import type { Notice } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
-import { errorNotice, technicalDetail } from "../../error-text.ts";
-import { formatCount } from "../../format.ts";
+import { errorMessage, errorNotice, technicalDetail } from "../../error-text.ts";
+import { robotMessages } from "../robot/messages.ts";
+import { motionsMessages } from "./messages.ts";
 import { formatSeconds } from "./plot-data.ts";
 import {
   afterFailedUpload,
@@ -23,12 +26,10 @@ import {
 import { motionsOf, patchMotions } from "./state.ts";
 import { formatRate } from "./upload-rate.ts";
 
-/** How an upload ended, in sentences: what was sent, where it went, what the robot's memory says now. */
-
-/** PROTOCOL.md §6.3 [decision] Safety: said in one sentence before the first byte on a real robot. */
-export const EXPERIMENTAL_SENTENCE = UPLOAD_NOTICES.experimental;
-export const HOLD_ADVICE = UPLOAD_NOTICES.holdAdvice;
-export const ACTION_SENTENCE = UPLOAD_NOTICES.action;
+/**
+ * How an upload ended, in sentences (the panel's language when the upload started): what was sent, where it
+ * went, what the robot's memory says now.
+ */
 
 export const bookKey = (area: "motion" | "action") => (area === "motion" ? "motionBook" : "actionBook");
 export const areaBytes = (area: "motion" | "action") =>
@@ -44,6 +45,37 @@ export interface Payload {
   durationMs?: number;
 }
 
+/** The RBC's error codes (PROTOCOL.md §3.4) in Korean: the Robot view's words for them. */
+const KOREAN_ERROR_CODES: Readonly<Record<number, KeysWithoutParams<typeof robotMessages>>> = {
+  1: "robot.error.eeprom",
+  2: "robot.error.checksum",
+  3: "robot.error.motionsFull",
+  4: "robot.error.actionsFull",
+  5: "robot.error.platform",
+  6: "robot.error.frameInterval",
+  7: "robot.error.zeroSet",
+  8: "robot.error.zeroData",
+  9: "robot.error.servoCount",
+  10: "robot.error.servoPosition",
+  11: "robot.error.servoSilent",
+};
+
+/** The error code the robot reported after an upload, in words. */
+function errorCodeWords(code: number | undefined, locale: Locale): string {
+  const t = translator(motionsMessages, locale);
+  if (code === undefined) return t("motions.upload.errorNotRead");
+  if (code === NO_ERROR) return t("motions.upload.noError");
+  const robot = translator(robotMessages, locale);
+  const key = KOREAN_ERROR_CODES[code];
+  const text =
+    locale === "en"
+      ? errorCodeText(code)
+      : key
+        ? robot(key)
+        : robot("robot.error.unknown", { code: String(code) });
+  return t("motions.upload.errorCode", { text, code: String(code) });
+}
+
 export function uploadSucceeded(
   ctx: AppContext,
   payload: Payload,
@@ -52,6 +84,8 @@ export function uploadSucceeded(
 ): void {
   const { store } = ctx;
   const { area } = payload;
+  const { locale } = store.get();
+  const t = translator(motionsMessages, locale);
   const m = motionsOf(store.get());
   const sendingSince = m.upload?.sendingSince;
   const lastSample = m.upload?.samples.at(-1);
@@ -70,26 +104,35 @@ export function uploadSucceeded(
   const where =
     area === "action"
       ? entry?.slot !== undefined
-        ? `It is downloaded action ${entry.slot}.`
+        ? t("motions.upload.isAction", { slot: entry.slot })
         : ""
       : number !== undefined && entry?.slot !== undefined
-        ? `It is downloaded motion ${entry.slot}: run it as motion number ${number} (on the Run tab).`
-        : "The robot already held downloads the panel did not see arrive, so its motion number is not known; tick “Reset motion memory first” next time to know it.";
-  const errorWords =
-    result.errorCode === undefined
-      ? "not read (the robot did not answer)"
-      : result.errorCode === NO_ERROR
-        ? "no error"
-        : `${errorCodeText(result.errorCode)} (code ${result.errorCode})`;
-  const sentences = [
-    `Uploaded ${payload.fileName}: ${formatCount(result.total)} bytes in ${result.chunks} chunks in ${formatSeconds(sendMs)} (${formatRate(rate)}), every chunk acknowledged.`,
-    where,
+        ? t("motions.upload.isMotion", { slot: entry.slot, number })
+        : t("motions.upload.numberUnknown");
+  const free =
     result.freeAfter === undefined
-      ? `Free ${area} memory was not read afterwards (the robot did not answer); press Refresh on the Robot view.`
-      : `Free ${area} memory: ${formatCount(result.freeAfter)} of ${formatCount(areaBytes(area))} bytes (was ${formatCount(result.freeBefore)}; the file takes ${formatCount(result.footprint)}).`,
-    `Error code after the upload: ${errorWords}.`,
+      ? area === "motion"
+        ? t("motions.upload.freeNotReadMotion")
+        : t("motions.upload.freeNotReadAction")
+      : t(area === "motion" ? "motions.upload.freeMotion" : "motions.upload.freeAction", {
+          free: result.freeAfter,
+          size: areaBytes(area),
+          before: result.freeBefore,
+          footprint: result.footprint,
+        });
+  const sentences = [
+    t("motions.upload.done", {
+      file: payload.fileName,
+      bytes: result.total,
+      chunks: result.chunks,
+      time: formatSeconds(sendMs, locale),
+      rate: formatRate(rate, locale),
+    }),
+    where,
+    free,
+    t("motions.upload.errorAfter", { words: errorCodeWords(result.errorCode, locale) }),
   ];
-  if (real && area === "motion") sentences.push(HOLD_ADVICE);
+  if (real && area === "motion") sentences.push(t("motions.upload.holdAdvice"));
   const notice: Notice = {
     tone: result.errorCode === NO_ERROR ? "ok" : "warning",
     text: sentences.filter((x) => x).join(" "),
@@ -117,8 +160,10 @@ export async function uploadFailed(
 ): Promise<void> {
   const { store, session } = ctx;
   const { area } = payload;
+  const { locale } = store.get();
+  const t = translator(motionsMessages, locale);
   const resetNote = didReset
-    ? ` The ${area} memory had been reset first, so the robot's earlier downloaded ${area}s are forgotten.`
+    ? ` ${area === "motion" ? t("motions.upload.resetForgotMotion") : t("motions.upload.resetForgotAction")}`
     : "";
   let notice: Notice;
   let outcome: string | undefined;
@@ -126,21 +171,25 @@ export async function uploadFailed(
     outcome = e.outcome;
     notice = {
       tone: e.code === "cancelled" ? "warning" : "danger",
-      text: `${e.message}${resetNote}`,
+      text: `${errorMessage(e, locale)}${resetNote}`,
       detail: technicalDetail(e),
     };
   } else if (e instanceof RbcRejectedError) {
     outcome = "nothing-recorded";
-    notice = { tone: "danger", text: `Upload refused. ${e.message}${resetNote}`, detail: technicalDetail(e) };
+    notice = {
+      tone: "danger",
+      text: `${t("motions.upload.refused")} ${errorMessage(e, locale)}${resetNote}`,
+      detail: technicalDetail(e),
+    };
   } else if (e instanceof RbcCancelledError) {
     outcome = "nothing-recorded";
     const byStop = e.message.includes("by Stop");
     notice = {
       tone: "warning",
-      text: `${byStop ? "Upload cancelled by Stop before any byte was sent." : "Upload cancelled before any byte was sent."}${resetNote}`,
+      text: `${byStop ? t("motions.upload.cancelledByStop") : t("motions.upload.cancelledEarly")}${resetNote}`,
     };
   } else {
-    notice = errorNotice("The upload failed.", e);
+    notice = errorNotice(t("motions.upload.failed"), e, locale);
     if (resetNote) notice.text += resetNote;
   }
   patchMotions(store, (m) => ({
@@ -151,7 +200,9 @@ export async function uploadFailed(
   if (e instanceof RbcDisconnectedError || store.get().connection.phase !== "connected") return;
   // Show the memory as it is now.
   try {
-    const free = await session.run("Reading free memory", (client) => client.readAvailableMemory(area));
+    const free = await session.run(t("motions.upload.readingFree"), (client) =>
+      client.readAvailableMemory(area),
+    );
     store.update((s) => ({
       device: { ...s.device, ...(area === "motion" ? { freeMotion: free } : { freeAction: free }) },
     }));

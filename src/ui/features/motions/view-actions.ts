@@ -1,15 +1,17 @@
 import type { AppContext } from "../../context.ts";
 import { focusSoon } from "../../focus.ts";
+import type { MotionsKey } from "./messages.ts";
 import { requestRun } from "./run-actions.ts";
 import { type MotionsTab, motionFilesOf, patchMotionFiles, patchMotions } from "./state.ts";
 
 /** What the Motions view's own controls do: choose a tab, show or hide a file's scenes, press a Run button. */
 
-export const MOTIONS_TABS: readonly { id: MotionsTab; label: string }[] = [
-  { id: "files", label: "Files" },
-  { id: "uploads", label: "Memory" },
-  { id: "run", label: "Run" },
-  { id: "sounds", label: "Sounds" },
+/** The tabs, each with the key of its label. */
+export const MOTIONS_TABS: readonly { id: MotionsTab; label: MotionsKey }[] = [
+  { id: "files", label: "motions.tab.files" },
+  { id: "uploads", label: "motions.tab.memory" },
+  { id: "run", label: "motions.tab.run" },
+  { id: "sounds", label: "motions.tab.sounds" },
 ];
 
 export const tabId = (tab: MotionsTab) => `motions-tab-${tab}`;

@@ -1,18 +1,19 @@
 import { html, nothing, type TemplateResult } from "lit-html";
 import { ref } from "lit-html/directives/ref.js";
 import { repeat } from "lit-html/directives/repeat.js";
-import type { RbmIssue } from "../../../../protocol/rbm-validate.ts";
-import { formatCount } from "../../../format.ts";
+import { translator } from "../../../../i18n/translate.ts";
+import { formatCount, formatMilliseconds } from "../../../format.ts";
 import { motionPreview } from "../../../robot3d/robot-view.ts";
 import { liveNotice } from "../../../shell/notice.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
 import { checkedEntry, entryFacts, openMotionFiles, removeMotionFile, setDragging } from "../files.ts";
-import { groupWarnings, type WarningGroup, WEIGHT_WORDS } from "../issue-groups.ts";
+import { type MotionsTranslator, motionsMessages } from "../messages.ts";
 import { formatSeconds, sceneRows } from "../plot-data.ts";
 import type { MotionFileEntry } from "../state.ts";
 import { requestUpload, uploadBlocked } from "../upload-actions.ts";
 import { togglePreview, toggleScenes } from "../view-actions.ts";
 import { examplesPicker } from "./examples-picker.ts";
+import { fileIssues } from "./file-issues.ts";
 import { motionMemoryStrip } from "./memory-card.ts";
 import { MOTION_CHART, shownEntry } from "./motion-chart.ts";
 import { uploadInPlace } from "./upload-in-place.ts";
@@ -23,7 +24,7 @@ function filesFrom(list: FileList | null | undefined): File[] {
   return list ? Array.from(list) : [];
 }
 
-function dropZone(ctx: ViewContext): TemplateResult {
+function dropZone(ctx: ViewContext, t: MotionsTranslator): TemplateResult {
   const dragging = ctx.state.motionFiles?.dragging ?? false;
   const pick = () => document.getElementById("rbm-input")?.click();
   return html`
@@ -60,8 +61,8 @@ function dropZone(ctx: ViewContext): TemplateResult {
         void openMotionFiles(ctx, filesFrom(e.dataTransfer?.files));
       }}
     >
-      <span class="drop-title">Open motion files (.rbm)</span>
-      <span id="drop-hint" class="muted small">Drop Motionbuilder files here, or press to choose (several at once).</span>
+      <span class="drop-title">${t("motions.files.dropTitle")}</span>
+      <span id="drop-hint" class="muted small">${t("motions.files.dropHint")}</span>
     </div>
     <input
       id="rbm-input"
@@ -82,69 +83,13 @@ function dropZone(ctx: ViewContext): TemplateResult {
   `;
 }
 
-/** "scene 3, servo 0: " before a message that does not already say where it is. */
-function where(issue: RbmIssue): string {
-  const said = (what: string) => new RegExp(`\\b${what}\\b`, "i").test(issue.message);
-  const parts = [
-    issue.scene === undefined || said(`scene ${issue.scene}`) ? undefined : `scene ${issue.scene}`,
-    issue.servo === undefined || said(`servo ${issue.servo}`) ? undefined : `servo ${issue.servo}`,
-  ].filter((p) => p !== undefined);
-  return parts.length > 0 ? `${parts.join(", ")}: ` : "";
-}
-
-function issueItem(kind: "error" | "warning", issue: RbmIssue): TemplateResult {
-  return html`<li class="issue issue--${kind}">
-    ${kind === "error" ? html`<span class="issue-kind">Error</span>` : nothing}
-    <span>${where(issue)}${issue.message}</span>
-  </li>`;
-}
-
-/** One kind of warning: its weight, what it means, how many, and the single warnings on demand. */
-function warningGroup(group: WarningGroup): TemplateResult {
-  const n = group.issues.length;
-  return html`<li class="warning-group warning-group--${group.weight}" data-testid="warning-group" data-code=${group.code}>
-    <p class="warning-head">
-      <span class="weight weight--${group.weight}">${WEIGHT_WORDS[group.weight]}</span>
-      <strong>${group.title}</strong> <span class="num muted">(${n})</span>
-    </p>
-    <p class="small warning-meaning">${group.meaning}</p>
-    <details class="warning-details">
-      <summary>${n === 1 ? "Show where" : `Show all ${n}`}</summary>
-      <ul class="issues">${group.issues.map((i) => issueItem("warning", i))}</ul>
-    </details>
-  </li>`;
-}
-
-function issues(
+function fileCard(
+  ctx: ViewContext,
+  t: MotionsTranslator,
   entry: MotionFileEntry,
-  errors: readonly RbmIssue[],
-  warnings: readonly RbmIssue[],
+  selected: boolean,
 ): TemplateResult {
-  const groups = groupWarnings(warnings, entry.motion);
-  const serious = groups.filter((g) => g.weight === "serious").reduce((n, g) => n + g.issues.length, 0);
-  const summary =
-    errors.length === 0 && warnings.length === 0
-      ? html`<p class="check-ok">Checked: no errors, no warnings.</p>`
-      : html`<p class="small" data-testid="check-summary">
-          Checked: ${errors.length} ${errors.length === 1 ? "error" : "errors"}, ${warnings.length}
-          ${warnings.length === 1 ? "warning" : "warnings"}${
-            warnings.length > 0
-              ? ` of ${groups.length} ${groups.length === 1 ? "kind" : "kinds"}${serious > 0 ? `, ${serious} serious` : ", none serious"}`
-              : ""
-          }.
-        </p>`;
-  return html`
-    ${summary}
-    ${
-      errors.length > 0
-        ? html`<ul class="issues" data-testid="rbm-issues">${errors.map((i) => issueItem("error", i))}</ul>`
-        : nothing
-    }
-    ${groups.length > 0 ? html`<ul class="warning-groups" data-testid="rbm-warnings">${groups.map(warningGroup)}</ul>` : nothing}
-  `;
-}
-
-function fileCard(ctx: ViewContext, entry: MotionFileEntry, selected: boolean): TemplateResult {
+  const { locale } = t;
   const facts = entryFacts(entry);
   const { errors, warnings } = checkedEntry(ctx, entry);
   const target = { area: "motion" as const, entryId: entry.id };
@@ -168,7 +113,7 @@ function fileCard(ctx: ViewContext, entry: MotionFileEntry, selected: boolean): 
                   aria-controls=${selected ? "scene-section" : nothing}
                   @click=${() => toggleScenes(ctx, entry.id)}
                 >
-                  ${selected ? "Hide scenes and chart" : "Show scenes and chart"}
+                  ${selected ? t("motions.files.hideScenes") : t("motions.files.showScenes")}
                 </button>`
               : nothing
           }
@@ -181,36 +126,41 @@ function fileCard(ctx: ViewContext, entry: MotionFileEntry, selected: boolean): 
                   aria-expanded=${previewing ? "true" : "false"}
                   @click=${() => togglePreview(ctx, entry.id)}
                 >
-                  ${previewing ? "Close 3D preview" : "Preview in 3D"}
+                  ${previewing ? t("motions.files.closePreview") : t("motions.files.preview")}
                 </button>`
               : nothing
           }
-          <button type="button" class="btn btn--quiet" aria-label=${`Remove ${entry.fileName}`} @click=${() => removeMotionFile(ctx, entry.id)}>
-            Remove
+          <button
+            type="button"
+            class="btn btn--quiet"
+            aria-label=${t("motions.files.removeLabel", { file: entry.fileName })}
+            @click=${() => removeMotionFile(ctx, entry.id)}
+          >
+            ${t("motions.files.remove")}
           </button>
         </div>
       </div>
       ${
         facts
           ? html`<dl class="file-facts num">
-              <div><dt>Scenes</dt><dd>${facts.scenes}</dd></div>
-              <div><dt>Servos</dt><dd>${facts.servos}</dd></div>
-              <div><dt>Plays for</dt><dd>${formatSeconds(facts.durationMs)}</dd></div>
-              <div><dt>Image</dt><dd>${formatCount(facts.imageBytes)} bytes</dd></div>
-              <div><dt>On the robot</dt><dd>${formatCount(facts.footprint)} bytes</dd></div>
+              <div><dt>${t("motions.files.scenes")}</dt><dd>${formatCount(facts.scenes, locale)}</dd></div>
+              <div><dt>${t("motions.files.servos")}</dt><dd>${formatCount(facts.servos, locale)}</dd></div>
+              <div><dt>${t("motions.files.playsFor")}</dt><dd>${formatSeconds(facts.durationMs, locale)}</dd></div>
+              <div><dt>${t("motions.files.image")}</dt><dd>${t("motions.files.bytes", { bytes: facts.imageBytes })}</dd></div>
+              <div><dt>${t("motions.files.onRobot")}</dt><dd>${t("motions.files.bytes", { bytes: facts.footprint })}</dd></div>
             </dl>`
-          : html`<p class="text-danger">This file cannot be used as a motion.</p>`
+          : html`<p class="text-danger">${t("motions.files.unusable")}</p>`
       }
       ${
         previewing && entry.motion
           ? motionPreview({
               motion: entry.motion,
-              label: `3D preview of ${entry.motion.name}; the scene table (Show scenes and chart) lists the same motion in numbers.`,
+              label: t("motions.files.previewLabel", { name: entry.motion.name }),
               testId: "motion-preview",
             })
           : nothing
       }
-      ${issues(entry, errors, warnings)}
+      ${fileIssues(t, entry, errors, warnings)}
       <div class="write-row">
         <button
           type="button"
@@ -220,40 +170,45 @@ function fileCard(ctx: ViewContext, entry: MotionFileEntry, selected: boolean): 
           aria-describedby=${whyId}
           @click=${() => requestUpload(ctx, target)}
         >
-          Upload to robot
+          ${t("motions.files.upload")}
         </button>
         <span id=${whyId} class=${errors.length > 0 ? "text-danger small" : "muted small"} data-testid="upload-why">
           ${
             blocked ??
             (ctx.state.connection.robot?.kind === "demo"
-              ? "Uploads to the demo robot's simulated memory."
-              : "Asks for confirmation first: uploading to a real robot is experimental.")
+              ? t("motions.files.uploadsToDemo")
+              : t("motions.files.asksFirst"))
           }
         </span>
       </div>
-      ${uploadInPlace(ctx, target)} ${selected ? sceneTable(ctx, entry) : nothing}
+      ${uploadInPlace(ctx, target)} ${selected ? sceneTable(ctx, t, entry) : nothing}
     </article>
   `;
 }
 
-function sceneTable(ctx: ViewContext, entry: MotionFileEntry): TemplateResult | typeof nothing {
+function sceneTable(
+  ctx: ViewContext,
+  t: MotionsTranslator,
+  entry: MotionFileEntry,
+): TemplateResult | typeof nothing {
   const motion = entry.motion;
   if (!motion) return nothing;
+  const { locale } = t;
   const rows = sceneRows(motion);
   return html`
     <section class="scene-section" id="scene-section" aria-labelledby="scenes-title" data-testid="scene-section">
-      <h4 id="scenes-title" class="long-text">Scenes of ${motion.name}</h4>
+      <h4 id="scenes-title" class="long-text">${t("motions.scenes.title", { name: motion.name })}</h4>
       <div class="scene-body">
       <div class="table-wrap">
         <table class="data-table scene-table">
           <thead>
             <tr>
               <th scope="col">#</th>
-              <th scope="col">Name</th>
-              <th scope="col" class="num-col">Frames</th>
-              <th scope="col" class="num-col col-starts">Starts</th>
-              <th scope="col" class="num-col">Lasts</th>
-              <th scope="col" class="num-col">Frames every</th>
+              <th scope="col">${t("motions.scenes.name")}</th>
+              <th scope="col" class="num-col">${t("motions.scenes.frames")}</th>
+              <th scope="col" class="num-col col-starts">${t("motions.scenes.starts")}</th>
+              <th scope="col" class="num-col">${t("motions.scenes.lasts")}</th>
+              <th scope="col" class="num-col">${t("motions.scenes.frameEvery")}</th>
             </tr>
           </thead>
           <tbody>
@@ -261,10 +216,10 @@ function sceneTable(ctx: ViewContext, entry: MotionFileEntry): TemplateResult | 
               (r) => html`<tr>
                 <td class="num">${r.index}</td>
                 <td>${r.name}</td>
-                <td class="num num-col">${r.frames}</td>
-                <td class="num num-col col-starts">${formatSeconds(r.startsAtMs)}</td>
-                <td class="num num-col">${formatSeconds(r.timeMs)}</td>
-                <td class="num num-col">${r.frameMs === undefined ? "—" : `${Math.round(r.frameMs)} ms`}</td>
+                <td class="num num-col">${formatCount(r.frames, locale)}</td>
+                <td class="num num-col col-starts">${formatSeconds(r.startsAtMs, locale)}</td>
+                <td class="num num-col">${formatSeconds(r.timeMs, locale)}</td>
+                <td class="num num-col">${r.frameMs === undefined ? "—" : formatMilliseconds(r.frameMs, locale)}</td>
               </tr>`,
             )}
           </tbody>
@@ -272,9 +227,7 @@ function sceneTable(ctx: ViewContext, entry: MotionFileEntry): TemplateResult | 
       </div>
       <figure class="chart">
         <div class="chart-host chart-host--motion" data-testid="motion-chart" ${ref(ctx.session.pageScope.get(MOTION_CHART).slot.ref)}></div>
-        <figcaption class="muted small">
-          Each servo's position over time; left-side joints dashed. Press a joint to hide or show its line.
-        </figcaption>
+        <figcaption class="muted small">${t("motions.scenes.caption")}</figcaption>
       </figure>
       </div>
     </section>
@@ -286,16 +239,18 @@ export function fileSection(ctx: ViewContext): TemplateResult {
   const entries = files?.entries ?? [];
   const selected = shownEntry(ctx.state);
   const connected = ctx.state.connection.phase === "connected";
+  const t = translator(motionsMessages, ctx.state.locale);
   if (selected) ctx.session.pageScope.get(MOTION_CHART).slot.refresh();
   return html`
     <section class="card motion-files" aria-labelledby="files-title" data-testid="motion-files">
-      <h2 id="files-title" class="card-title">Motion files</h2>
-      ${dropZone(ctx)} ${examplesPicker(ctx)} ${liveNotice(files?.notice, "Opened files")}
+      <h2 id="files-title" class="card-title">${t("motions.files.title")}</h2>
+      ${dropZone(ctx, t)} ${examplesPicker(ctx, t)}
+      ${liveNotice(files?.notice, t("motions.files.openedLabel"), t.locale)}
       ${connected ? motionMemoryStrip(ctx) : nothing}
       ${repeat(
         entries,
         (e) => e.id,
-        (e) => fileCard(ctx, e, e.id === selected?.id),
+        (e) => fileCard(ctx, t, e, e.id === selected?.id),
       )}
     </section>
   `;

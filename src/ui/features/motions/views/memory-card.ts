@@ -1,7 +1,8 @@
 import { html, nothing, type TemplateResult } from "lit-html";
+import { translator } from "../../../../i18n/translate.ts";
 import { ACTION_AREA_BYTES, MOTION_AREA_BYTES } from "../../../../protocol/catalog.ts";
-import { formatCount } from "../../../format.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
+import { type MotionsTranslator, motionsMessages } from "../messages.ts";
 import type { SlotBook } from "../slot-book.ts";
 import { motionsOf } from "../state.ts";
 import { setResetFirst } from "../upload-actions.ts";
@@ -11,13 +12,25 @@ import { setResetFirst } from "../upload-actions.ts";
  * (a bar of the free bytes looked full on an empty robot). Figures from the robot's own free-memory reply.
  */
 
-function countText(book: SlotBook, what: string): string {
-  return book.count === undefined
-    ? `at most ${book.max} ${what}s (how many it holds now is not known)`
-    : `${book.count} of ${book.max} ${what}s stored since the last reset or power-up`;
+function countText(t: MotionsTranslator, book: SlotBook, area: "motion" | "action"): string {
+  const { count, max } = book;
+  if (area === "motion") {
+    return count === undefined
+      ? t("motions.memory.motionsUnknown", { max })
+      : t("motions.memory.motionsStored", { stored: count, max });
+  }
+  return count === undefined
+    ? t("motions.memory.actionsUnknown", { max })
+    : t("motions.memory.actionsStored", { stored: count, max });
+}
+
+/** "640 of 24,576 bytes used", or "not read yet". */
+function usedText(t: MotionsTranslator, used: number | undefined, size: number): string {
+  return used === undefined ? t("motions.memory.notRead") : t("motions.memory.used", { used, size });
 }
 
 export function usedMemoryRow(
+  t: MotionsTranslator,
   id: string,
   label: string,
   free: number | undefined,
@@ -36,16 +49,14 @@ export function usedMemoryRow(
         low=${size * 0.75}
         high=${size * 0.9}
         optimum="0"
-        aria-valuetext=${used === undefined ? "not read yet" : `${formatCount(used)} of ${formatCount(size)} bytes used`}
+        aria-valuetext=${usedText(t, used, size)}
       ></meter>
-      <strong class="num used-figures" data-testid=${`${id}-used`}>
-        ${used === undefined ? "not read yet" : `${formatCount(used)} of ${formatCount(size)} bytes used`}
-      </strong>
+      <strong class="num used-figures" data-testid=${`${id}-used`}>${usedText(t, used, size)}</strong>
       <span class="muted small used-note">
         ${
           free === undefined
             ? nothing
-            : html`<span class="num" data-testid=${`${id}-text`}>${formatCount(free)} of ${formatCount(size)} bytes free</span> ·`
+            : html`<span class="num" data-testid=${`${id}-text`}>${t("motions.memory.free", { free, size })}</span> ·`
         }
         <span data-testid=${`${id}-count`}>${note}</span>
       </span>
@@ -60,12 +71,14 @@ export function usedMemoryRow(
 export function motionMemoryStrip(ctx: ViewContext): TemplateResult {
   const d = ctx.state.device;
   const m = motionsOf(ctx.state);
+  const t = translator(motionsMessages, ctx.state.locale);
   const free = d.freeMotion;
-  const used = free === undefined ? undefined : Math.max(0, MOTION_AREA_BYTES - free);
+  const size = MOTION_AREA_BYTES;
+  const used = free === undefined ? undefined : Math.max(0, size - free);
   return html`
     <div class="memory-strip" data-testid="memory-card">
       <div class="strip-row">
-        <label for="mem-motion">Motion memory</label>
+        <label for="mem-motion">${t("motions.memory.motionLabel")}</label>
         <meter
           id="mem-motion"
           min="0"
@@ -74,14 +87,14 @@ export function motionMemoryStrip(ctx: ViewContext): TemplateResult {
           low=${MOTION_AREA_BYTES * 0.75}
           high=${MOTION_AREA_BYTES * 0.9}
           optimum="0"
-          aria-valuetext=${used === undefined ? "not read yet" : `${formatCount(used)} of ${formatCount(MOTION_AREA_BYTES)} bytes used`}
+          aria-valuetext=${usedText(t, used, size)}
         ></meter>
         <span class="small">
           ${
             used === undefined || free === undefined
-              ? "not read yet"
-              : html`<strong class="num" data-testid="mem-motion-used">${formatCount(used)} bytes used</strong>,
-                  <span class="num" data-testid="mem-motion-text">${formatCount(free)} of ${formatCount(MOTION_AREA_BYTES)} bytes free</span>`
+              ? t("motions.memory.notRead")
+              : html`<strong class="num" data-testid="mem-motion-used">${t("motions.memory.usedOnly", { used })}</strong>,
+                  <span class="num" data-testid="mem-motion-text">${t("motions.memory.free", { free, size })}</span>`
           }
         </span>
       </div>
@@ -93,7 +106,7 @@ export function motionMemoryStrip(ctx: ViewContext): TemplateResult {
           ?disabled=${m.upload !== undefined}
           @change=${(e: Event) => setResetFirst(ctx, "motion", (e.target as HTMLInputElement).checked)}
         />
-        Reset motion memory first (forgets earlier downloads; the upload becomes motion 12)
+        ${t("motions.memory.resetMotion")}
       </label>
     </div>
   `;
@@ -102,12 +115,13 @@ export function motionMemoryStrip(ctx: ViewContext): TemplateResult {
 export function memoryCard(ctx: ViewContext): TemplateResult {
   const d = ctx.state.device;
   const m = motionsOf(ctx.state);
+  const t = translator(motionsMessages, ctx.state.locale);
   return html`
     <section class="card memory-card" aria-labelledby="memory-title" data-testid="memory-card">
-      <h2 id="memory-title" class="card-title">Robot memory</h2>
+      <h2 id="memory-title" class="card-title">${t("motions.memory.title")}</h2>
       <div class="used-rows">
-        ${usedMemoryRow("mem-motion", "Motions", d.freeMotion, MOTION_AREA_BYTES, countText(m.motionBook, "motion"))}
-        ${usedMemoryRow("mem-action", "Actions", d.freeAction, ACTION_AREA_BYTES, countText(m.actionBook, "action"))}
+        ${usedMemoryRow(t, "mem-motion", t("motions.memory.motions"), d.freeMotion, MOTION_AREA_BYTES, countText(t, m.motionBook, "motion"))}
+        ${usedMemoryRow(t, "mem-action", t("motions.memory.actions"), d.freeAction, ACTION_AREA_BYTES, countText(t, m.actionBook, "action"))}
       </div>
     </section>
   `;

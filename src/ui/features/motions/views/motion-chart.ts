@@ -1,9 +1,12 @@
+import type { Locale } from "../../../../i18n/locale.ts";
+import { translator } from "../../../../i18n/translate.ts";
 import type { RbmMotion } from "../../../../protocol/rbm.ts";
 import type { AppState } from "../../../app-state.ts";
 import { seriesColour } from "../../../charts/chart-loader.ts";
 import { type ChartContent, ChartSlot } from "../../../charts/chart-slot.ts";
 import type { AppContext } from "../../../context.ts";
 import { type Controller, controllerKey } from "../../../scope.ts";
+import { motionsMessages } from "../messages.ts";
 import { formatSeconds, motionPlotData } from "../plot-data.ts";
 import type { MotionFileEntry } from "../state.ts";
 
@@ -13,16 +16,18 @@ export function shownEntry(s: AppState): MotionFileEntry | undefined {
   return files?.entries.find((e) => e.id === files.selected && e.motion);
 }
 
-function motionChartContent(entry: MotionFileEntry, motion: RbmMotion): ChartContent {
-  const plot = motionPlotData(motion);
+function motionChartContent(entry: MotionFileEntry, motion: RbmMotion, locale: Locale): ChartContent {
+  const t = translator(motionsMessages, locale);
+  const plot = motionPlotData(motion, locale);
   const n = plot.series.length;
   return {
-    key: `motion-${entry.id}`,
+    // The language is part of the key: the chart's labels and legend are rebuilt when it changes.
+    key: `motion-${entry.id}-${locale}`,
     spec: {
-      title: `Servo positions of ${motion.name} over ${formatSeconds(plot.x.at(-1) ?? 0)}, one line per servo`,
+      title: t("motions.chart.title", { name: motion.name, time: formatSeconds(plot.x.at(-1) ?? 0, locale) }),
       height: 220,
-      xLabel: "Time (s)",
-      yLabel: "Position",
+      xLabel: t("motions.chart.time"),
+      yLabel: t("motions.chart.position"),
       yRange: [0, 254],
       liveLegend: false,
       series: plot.series.map((s, i) => ({
@@ -41,16 +46,19 @@ function motionChartContent(entry: MotionFileEntry, motion: RbmMotion): ChartCon
 /** The chart of the shown motion file (page scope: files stay open across connections). */
 export class MotionChart implements Controller {
   readonly slot: ChartSlot;
-  private cached: { entry: MotionFileEntry; content: ChartContent } | undefined;
+  private cached: { entry: MotionFileEntry; locale: Locale; content: ChartContent } | undefined;
 
   constructor(ctx: AppContext) {
-    this.slot = new ChartSlot(() => this.content(shownEntry(ctx.store.get())));
+    this.slot = new ChartSlot(() => {
+      const s = ctx.store.get();
+      return this.content(shownEntry(s), s.locale);
+    });
   }
 
-  private content(entry: MotionFileEntry | undefined): ChartContent | undefined {
+  private content(entry: MotionFileEntry | undefined, locale: Locale): ChartContent | undefined {
     if (!entry?.motion) return undefined;
-    if (this.cached?.entry !== entry)
-      this.cached = { entry, content: motionChartContent(entry, entry.motion) };
+    if (this.cached?.entry !== entry || this.cached.locale !== locale)
+      this.cached = { entry, locale, content: motionChartContent(entry, entry.motion, locale) };
     return this.cached.content;
   }
 

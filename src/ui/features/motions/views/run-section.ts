@@ -1,18 +1,19 @@
 import { html, nothing, type TemplateResult } from "lit-html";
+import { translator } from "../../../../i18n/translate.ts";
 import { BASIC_POSTURE_MOTION, SOUND_LENGTHS_MS, soundLengthMs } from "../../../../protocol/catalog.ts";
 import type { AppState } from "../../../app-state.ts";
 import { liveRobotPanel } from "../../../robot3d/live-robot.ts";
 import { liveNotice } from "../../../shell/notice.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
 import { servosOf } from "../../servos/state.ts";
+import { type MotionsTranslator, motionsMessages } from "../messages.ts";
 import { formatSeconds } from "../plot-data.ts";
 import {
-  BASIC_POSTURE_GUIDANCE,
-  BUILT_IN_OFFERS,
+  builtInOffers,
   cancelMovement,
   confirmMovement,
   downloadedOffers,
-  MOVEMENT_WARNING,
+  isBuiltIn,
   type OfferedMotion,
   offerFor,
   playSound,
@@ -29,19 +30,21 @@ import { keepInView } from "./keep-in-view.ts";
  * the top of a long card.
  */
 
-/** What Stop in the top bar (and Escape) does, and what Limp does, in the words of the panel's model. */
-export const STOP_SENTENCE = "Stop (Esc) ends the motion and keeps the robot standing.";
-export const LIMP_SENTENCE = "Limp, in the top bar, makes every servo passive: hold the robot first.";
-
 type Group = "built-in" | "downloaded" | "slots";
 
 function groupOf(s: AppState, number: number): Group {
-  if (BUILT_IN_OFFERS.some((o) => o.number === number)) return "built-in";
+  if (isBuiltIn(number)) return "built-in";
   if (downloadedOffers(motionsOf(s).motionBook).some((o) => o.number === number)) return "downloaded";
   return "slots";
 }
 
-function motionButton(ctx: ViewContext, offer: OfferedMotion, busy: boolean, recommended: boolean) {
+function motionButton(
+  ctx: ViewContext,
+  t: MotionsTranslator,
+  offer: OfferedMotion,
+  busy: boolean,
+  recommended: boolean,
+) {
   return html`
     <button
       type="button"
@@ -53,68 +56,71 @@ function motionButton(ctx: ViewContext, offer: OfferedMotion, busy: boolean, rec
     >
       <span class="motion-num num">${offer.number}</span>
       <span class="motion-name">${offer.name}</span>
-      <span class="motion-time num muted">${offer.expectedMs === undefined ? "?" : formatSeconds(offer.expectedMs)}</span>
-      ${recommended ? html`<span class="badge">Run first</span>` : nothing}
+      <span class="motion-time num muted">${offer.expectedMs === undefined ? "?" : formatSeconds(offer.expectedMs, t.locale)}</span>
+      ${recommended ? html`<span class="badge">${t("motions.run.runFirst")}</span>` : nothing}
     </button>
   `;
 }
 
-function runningPanel(ctx: ViewContext, run: RunningMotion): TemplateResult {
+function runningPanel(ctx: ViewContext, t: MotionsTranslator, run: RunningMotion): TemplateResult {
+  const { locale } = t;
   const elapsed = ctx.session.clock.now() - run.startedAt;
   const known = run.expectedMs !== undefined;
   const expected = run.expectedMs ?? 0;
+  const named = { number: run.number, name: run.name };
+  const label = t("motions.run.progressLabel", { number: run.number });
   return html`
     <div class="progress-block running" data-testid="running-motion">
       <p>
-        <strong class="long-text">${run.stopping ? "Stopping" : "Running"} motion ${run.number} — ${run.name}</strong>
+        <strong class="long-text">${run.stopping ? t("motions.run.stopping", named) : t("motions.run.running", named)}</strong>
         <span class="num muted">
           ${
             known
-              ? `${formatSeconds(Math.min(elapsed, expected))} of ${formatSeconds(expected)}`
-              : "length unknown: waiting for the robot to report the end"
+              ? t("motions.run.elapsed", {
+                  elapsed: formatSeconds(Math.min(elapsed, expected), locale),
+                  total: formatSeconds(expected, locale),
+                })
+              : t("motions.run.lengthUnknown")
           }
         </span>
       </p>
       ${
         known
-          ? html`<progress max=${expected} value=${Math.min(elapsed, expected)} aria-label=${`Motion ${run.number}`}></progress>`
-          : html`<progress aria-label=${`Motion ${run.number}`}></progress>`
+          ? html`<progress max=${expected} value=${Math.min(elapsed, expected)} aria-label=${label}></progress>`
+          : html`<progress aria-label=${label}></progress>`
       }
       ${
         run.number === BASIC_POSTURE_MOTION
-          ? html`<p class="muted small">${LIMP_SENTENCE}</p>`
+          ? html`<p class="muted small">${t("motions.run.limpSentence")}</p>`
           : html`<div class="actions">
               <button type="button" class="btn" data-testid="stop-motion" ?disabled=${run.stopping} @click=${() => void stopMotion(ctx)}>
-                Stop motion
+                ${t("motions.run.stop")}
               </button>
             </div>
-            <p class="muted small">
-              Stop motion, like ${STOP_SENTENCE.replace(/\.$/, "")}: it sends Basic posture (7), and the robot
-              finishes the scene it is in and holds that pose with its servos on. ${LIMP_SENTENCE}
-            </p>`
+            <p class="muted small">${t("motions.run.stopExplained")} ${t("motions.run.limpSentence")}</p>`
       }
     </div>
   `;
 }
 
-function confirmMove(ctx: ViewContext, s: AppState, number: number): TemplateResult {
+function confirmMove(ctx: ViewContext, t: MotionsTranslator, s: AppState, number: number): TemplateResult {
   const offer = offerFor(s, number);
   return html`
     <div class="confirm confirm--warning" role="alertdialog" aria-labelledby="move-title" aria-describedby="move-stop" data-testid="move-confirm">
-      <p id="move-title"><strong>${MOVEMENT_WARNING}</strong></p>
-      <p id="move-stop">The panel asks this once per connection. ${STOP_SENTENCE}</p>
+      <p id="move-title"><strong>${t("motions.run.movementWarning")}</strong></p>
+      <p id="move-stop">${t("motions.run.asksOnce")} ${t("motions.run.stopSentence")}</p>
       <div class="actions">
         <button type="button" class="btn btn--primary long-label" id="confirm-move" @click=${() => confirmMovement(ctx)}>
-          Run motion ${number}${offer ? ` (${offer.name})` : ""}
+          ${offer ? t("motions.run.confirmNamed", { number, name: offer.name }) : t("motions.run.confirm", { number })}
         </button>
-        <button type="button" class="btn" @click=${() => cancelMovement(ctx)}>Cancel</button>
+        <button type="button" class="btn" @click=${() => cancelMovement(ctx)}>${t("motions.run.cancel")}</button>
       </div>
     </div>
   `;
 }
 
 /** The confirmation, progress and result of the run started from `group`; only the live region elsewhere. */
-function runInPlace(ctx: ViewContext, group: Group): TemplateResult {
+function runInPlace(ctx: ViewContext, t: MotionsTranslator, group: Group): TemplateResult {
   const s = ctx.state;
   const m = motionsOf(s);
   const from = m.run?.number ?? m.confirmMove ?? m.runFrom;
@@ -130,23 +136,20 @@ function runInPlace(ctx: ViewContext, group: Group): TemplateResult {
           : undefined;
   return html`
     <div class="run-in-place" data-testid=${`run-place-${group}`} ${keepInView(shown)}>
-      ${here && m.confirmMove !== undefined ? confirmMove(ctx, s, m.confirmMove) : nothing}
-      ${here && m.run ? runningPanel(ctx, m.run) : nothing}
-      ${liveNotice(here ? m.runNotice : undefined, "Motion result")}
+      ${here && m.confirmMove !== undefined ? confirmMove(ctx, t, s, m.confirmMove) : nothing}
+      ${here && m.run ? runningPanel(ctx, t, m.run) : nothing}
+      ${liveNotice(here ? m.runNotice : undefined, t("motions.run.resultLabel"), t.locale)}
     </div>
   `;
 }
 
-function otherSlots(ctx: ViewContext, s: AppState, busy: boolean): TemplateResult {
+function otherSlots(ctx: ViewContext, t: MotionsTranslator, s: AppState, busy: boolean): TemplateResult {
   const known = new Set(downloadedOffers(motionsOf(s).motionBook).map((o) => o.number));
   const others = DOWNLOAD_MOTION_NUMBERS.filter((n) => !known.has(n));
   return html`
     <details class="other-slots">
-      <summary>Other download slots (${others.length})</summary>
-      <p class="muted small">
-        Motions downloaded before this connection, e.g. with Motionbuilder: the panel does not know their names
-        or lengths. The robot ignores the number of an empty slot.
-      </p>
+      <summary>${t("motions.run.otherSlots", { slots: others.length })}</summary>
+      <p class="muted small">${t("motions.run.otherSlotsText")}</p>
       <div class="slot-grid">
         ${others.map((n) => {
           const offer = offerFor(s, n);
@@ -157,18 +160,25 @@ function otherSlots(ctx: ViewContext, s: AppState, busy: boolean): TemplateResul
             ?disabled=${busy}
             @click=${() => pressRun(ctx, n)}
           >
-            <span class="slot-num num"><span class="sr-only">Run motion </span>${n}</span>
-            <span class="muted small">${offer?.slot === undefined ? "" : `slot ${offer.slot}`}</span>
+            <span class="slot-num num">${runNumber(t, n)}</span>
+            <span class="muted small">${offer?.slot === undefined ? "" : t("motions.run.slot", { slot: offer.slot })}</span>
           </button>`;
         })}
       </div>
-      ${runInPlace(ctx, "slots")}
+      ${runInPlace(ctx, t, "slots")}
     </details>
   `;
 }
 
+/** A slot button's number, "12", which a screen reader reads as "Run motion 12". */
+function runNumber(t: MotionsTranslator, n: number): (string | TemplateResult)[] {
+  return t
+    .parts<"motions.run.confirm", TemplateResult>("motions.run.confirm", { number: html`${n}` })
+    .map((part) => (typeof part === "string" ? html`<span class="sr-only">${part}</span>` : part));
+}
+
 /** The robot in 3D, above the Run buttons: the demo robot moves there as it plays (hardware: last read pose). */
-function liveRobot(ctx: ViewContext): TemplateResult {
+function liveRobot(ctx: ViewContext, t: MotionsTranslator): TemplateResult {
   const s = ctx.state;
   const servos = servosOf(s);
   return liveRobotPanel({
@@ -179,7 +189,7 @@ function liveRobot(ctx: ViewContext): TemplateResult {
     known: { positions: servos.positions, at: servos.positionsAt },
     robotZeros: s.zeros.stored,
     motionPlaying: s.connection.playing !== undefined || motionsOf(s).run !== undefined,
-    textVersion: "the Servos view lists the positions in numbers",
+    textVersion: t("motions.run.textVersion"),
   });
 }
 
@@ -191,15 +201,16 @@ export function runSection(ctx: ViewContext): TemplateResult {
   const busy = busyReason !== undefined || m.confirmMove !== undefined;
   const needsPosture = c.phase === "connected" && !c.basicPostureConfirmed;
   const downloads = downloadedOffers(m.motionBook);
+  const t = translator(motionsMessages, s.locale);
   return html`
-    ${liveRobot(ctx)}
+    ${liveRobot(ctx, t)}
     <section class="card" aria-labelledby="run-title" data-testid="run-card">
-      <h2 id="run-title" class="card-title">Run motions</h2>
+      <h2 id="run-title" class="card-title">${t("motions.run.title")}</h2>
       ${
         needsPosture
           ? html`<div class="notice notice--warning" id="posture-guidance" data-testid="posture-guidance">
-              <p><strong>${BASIC_POSTURE_GUIDANCE}</strong></p>
-              <p class="small">Until then it silently ignores every other motion.</p>
+              <p><strong>${t("motions.run.postureGuidance")}</strong></p>
+              <p class="small">${t("motions.run.ignoresOthers")}</p>
             </div>`
           : nothing
       }
@@ -208,20 +219,22 @@ export function runSection(ctx: ViewContext): TemplateResult {
           ? html`<p class="muted small" data-testid="busy-why">${busyReason}</p>`
           : nothing
       }
-      <h3>Built-in motions</h3>
+      <h3>${t("motions.run.builtInTitle")}</h3>
       <div class="motion-grid">
-        ${BUILT_IN_OFFERS.map((o) => motionButton(ctx, o, busy, needsPosture && o.number === BASIC_POSTURE_MOTION))}
+        ${builtInOffers(s.locale).map((o) =>
+          motionButton(ctx, t, o, busy, needsPosture && o.number === BASIC_POSTURE_MOTION),
+        )}
       </div>
-      ${runInPlace(ctx, "built-in")}
-      <h3>Downloaded motions</h3>
+      ${runInPlace(ctx, t, "built-in")}
+      <h3>${t("motions.run.downloadedTitle")}</h3>
       ${
         downloads.length > 0
           ? html`<div class="motion-grid" data-testid="downloaded-motions">
-              ${downloads.map((o) => motionButton(ctx, o, busy, false))}
+              ${downloads.map((o) => motionButton(ctx, t, o, busy, false))}
             </div>`
-          : html`<p class="muted small">Motions you upload in this connection appear here with their names and motion numbers.</p>`
+          : html`<p class="muted small">${t("motions.run.downloadedNone")}</p>`
       }
-      ${runInPlace(ctx, "downloaded")} ${otherSlots(ctx, s, busy)}
+      ${runInPlace(ctx, t, "downloaded")} ${otherSlots(ctx, t, s, busy)}
     </section>
   `;
 }
@@ -235,10 +248,12 @@ export function soundSection(ctx: ViewContext): TemplateResult {
   // The sound's own length, as on its button: the client's expectedMs also counts the RBC's 200 ms reply delay.
   const length = sounding ? (soundLengthMs(sounding.sound) ?? sounding.expectedMs) : 0;
   const elapsed = sounding ? Math.min(ctx.session.clock.now() - sounding.startedAt, length) : 0;
+  const t = translator(motionsMessages, s.locale);
+  const { locale } = t;
   return html`
     <section class="card" aria-labelledby="sound-title" data-testid="sound-card">
-      <h2 id="sound-title" class="card-title">Sounds</h2>
-      <p class="muted small">One sound at a time. While a sound plays the robot handles nothing else.</p>
+      <h2 id="sound-title" class="card-title">${t("motions.sound.title")}</h2>
+      <p class="muted small">${t("motions.sound.intro")}</p>
       <div class="sound-grid">
         ${SOUND_LENGTHS_MS.map(
           (ms, i) => html`<button
@@ -246,10 +261,10 @@ export function soundSection(ctx: ViewContext): TemplateResult {
             class="btn sound-btn"
             data-sound=${i + 1}
             ?disabled=${busyReason !== undefined}
-            aria-label=${`Sound ${i + 1}, ${formatSeconds(ms)}`}
+            aria-label=${t("motions.sound.buttonLabel", { sound: i + 1, time: formatSeconds(ms, locale) })}
             @click=${() => void playSound(ctx, i + 1)}
           >
-            <span class="num">${i + 1}</span> <span class="muted small num">${formatSeconds(ms)}</span>
+            <span class="num">${i + 1}</span> <span class="muted small num">${formatSeconds(ms, locale)}</span>
           </button>`,
         )}
       </div>
@@ -258,17 +273,20 @@ export function soundSection(ctx: ViewContext): TemplateResult {
         sounding
           ? html`<div class="progress-block" data-testid="sound-playing">
               <p>
-                <strong>Sound ${sounding.sound} is playing</strong>
-                <span class="num muted" data-testid="sound-time">${formatSeconds(elapsed)} of ${formatSeconds(length)}</span>
+                <strong>${t("motions.sound.playing", { sound: sounding.sound })}</strong>
+                <span class="num muted" data-testid="sound-time">${t("motions.run.elapsed", {
+                  elapsed: formatSeconds(elapsed, locale),
+                  total: formatSeconds(length, locale),
+                })}</span>
               </p>
-              <progress max=${length} value=${elapsed} aria-label=${`Sound ${sounding.sound}`}></progress>
-              <p class="small">The robot does nothing else until the sound ends, so the other robot actions are disabled meanwhile.</p>
+              <progress max=${length} value=${elapsed} aria-label=${t("motions.sound.progressLabel", { sound: sounding.sound })}></progress>
+              <p class="small">${t("motions.sound.busyNote")}</p>
             </div>`
           : busyReason && c.phase === "connected"
             ? html`<p class="muted small">${busyReason}</p>`
             : nothing
       }
-      ${liveNotice(m.soundNotice, "Sound result")}
+      ${liveNotice(m.soundNotice, t("motions.sound.resultLabel"), locale)}
       </div>
     </section>
   `;

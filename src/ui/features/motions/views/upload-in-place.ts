@@ -1,17 +1,11 @@
 import { html, nothing, type TemplateResult } from "lit-html";
+import { translator } from "../../../../i18n/translate.ts";
 import type { AppState } from "../../../app-state.ts";
-import { formatCount } from "../../../format.ts";
 import { liveNotice } from "../../../shell/notice.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
+import { type MotionsTranslator, motionsMessages } from "../messages.ts";
 import { motionsOf, type UploadRun, type UploadTarget } from "../state.ts";
-import {
-  ACTION_SENTENCE,
-  cancelConfirm,
-  cancelUpload,
-  EXPERIMENTAL_SENTENCE,
-  HOLD_ADVICE,
-  startUpload,
-} from "../upload-actions.ts";
+import { cancelConfirm, cancelUpload, startUpload } from "../upload-actions.ts";
 import { formatRate, formatTimeLeft, uploadFigures } from "../upload-rate.ts";
 import { keepInView } from "./keep-in-view.ts";
 
@@ -25,59 +19,90 @@ export function sameTarget(a: UploadTarget | undefined, b: UploadTarget): boolea
   return a.area === "action" || (b.area === "motion" && a.entryId === b.entryId);
 }
 
-function progress(ctx: ViewContext, up: UploadRun): TemplateResult {
+/** What an upload does before its first byte: "Resetting the motion memory…", "Checking free motion memory…". */
+function phaseText(t: MotionsTranslator, up: UploadRun): string {
+  const motion = up.target.area === "motion";
+  switch (up.phase) {
+    case "resetting":
+      return motion ? t("motions.upload.resettingMotion") : t("motions.upload.resettingAction");
+    case "checking":
+      return motion ? t("motions.upload.checkingMotion") : t("motions.upload.checkingAction");
+    case "sending":
+      return t("motions.upload.sending");
+  }
+}
+
+function progress(ctx: ViewContext, t: MotionsTranslator, up: UploadRun): TemplateResult {
+  const { locale } = t;
   const f = uploadFigures(up.samples, up.total);
   const sending = up.samples.length > 0;
+  const figures = t("motions.upload.figures", {
+    acknowledged: f.acknowledged,
+    total: f.total,
+    percent: f.percent,
+    rate: formatRate(f.bytesPerSecond, locale),
+    left: formatTimeLeft(f.secondsLeft, locale),
+  });
   return html`
     <div class="progress-block" data-testid="upload-progress">
       <p>
-        <strong>Uploading ${up.fileName}:</strong>
+        <strong>${t("motions.upload.uploading", { file: up.fileName })}</strong>
         ${
           up.cancelling
-            ? "cancelling after the chunk in flight…"
+            ? t("motions.upload.cancelling")
             : sending
-              ? html`<span class="num" data-testid="upload-figures">${formatCount(f.acknowledged)} of ${formatCount(f.total)} bytes
-                  (${f.percent}%) · ${formatRate(f.bytesPerSecond)} · ${formatTimeLeft(f.secondsLeft)}</span>`
-              : up.phase
+              ? html`<span class="num" data-testid="upload-figures">${figures}</span>`
+              : phaseText(t, up)
         }
       </p>
       <progress
         max=${up.total}
         value=${f.acknowledged}
-        aria-label=${`Upload of ${up.fileName}`}
+        aria-label=${t("motions.upload.progressLabel", { file: up.fileName })}
         aria-valuetext=${`${f.percent}%`}
       ></progress>
       <div class="actions">
         <button type="button" class="btn" ?disabled=${up.cancelling} @click=${() => cancelUpload(ctx)}>
-          Cancel upload
+          ${t("motions.upload.cancel")}
         </button>
       </div>
     </div>
   `;
 }
 
-function confirmBlock(ctx: ViewContext, s: AppState, target: UploadTarget): TemplateResult {
+function confirmBlock(
+  ctx: ViewContext,
+  t: MotionsTranslator,
+  s: AppState,
+  target: UploadTarget,
+): TemplateResult {
   const m = motionsOf(s);
   const file =
     target.area === "motion"
       ? s.motionFiles?.entries.find((e) => e.id === target.entryId)?.fileName
       : m.actionFile?.fileName;
   const reset = target.area === "motion" ? m.resetMotionFirst : m.resetActionFirst;
+  const resetNote =
+    target.area === "motion"
+      ? t.parts("motions.upload.resetMotionText", {
+          lead: html`<strong>${t("motions.upload.resetMotionLead")}</strong>`,
+        })
+      : t.parts("motions.upload.resetActionText", {
+          lead: html`<strong>${t("motions.upload.resetActionLead")}</strong>`,
+        });
   return html`
     <div class="confirm confirm--warning" role="group" aria-labelledby="upload-confirm-title" data-testid="upload-confirm">
-      <p id="upload-confirm-title"><strong>Upload ${file ?? "the file"} to the robot?</strong></p>
-      <p>${EXPERIMENTAL_SENTENCE}</p>
-      ${target.area === "action" ? html`<p>${ACTION_SENTENCE}</p>` : html`<p>${HOLD_ADVICE}</p>`}
-      ${
-        reset
-          ? html`<p><strong>The ${target.area} memory is reset first:</strong> every ${target.area} downloaded before is forgotten.</p>`
-          : nothing
-      }
+      <p id="upload-confirm-title">
+        <strong>${file !== undefined ? t("motions.upload.confirmFile", { file }) : t("motions.upload.confirmNoFile")}</strong>
+      </p>
+      <p>${t("motions.upload.experimental")}</p>
+      <p>${target.area === "action" ? t("motions.upload.actionUnchecked") : t("motions.upload.holdAdvice")}</p>
+      ${reset ? html`<p>${resetNote}</p>` : nothing}
       <div class="actions">
         <button type="button" class="btn btn--primary" id="confirm-upload" @click=${() => void startUpload(ctx, target)}>
-          Upload (experimental)
+          ${t("motions.upload.confirm")}
         </button>
-        <button type="button" class="btn" @click=${() => cancelConfirm(ctx)}>Cancel</button>
+        <button type="button" class="btn" @click=${() => cancelConfirm(ctx)}>${t("motions.upload.cancelConfirm")}</button>
       </div>
     </div>
   `;
@@ -86,6 +111,7 @@ function confirmBlock(ctx: ViewContext, s: AppState, target: UploadTarget): Temp
 /** Confirmation, progress and result of an upload started at `target`, or only the (empty) live region. */
 export function uploadInPlace(ctx: ViewContext, target: UploadTarget): TemplateResult {
   const s = ctx.state;
+  const t = translator(motionsMessages, s.locale);
   const m = motionsOf(s);
   const confirming = !m.upload && sameTarget(m.confirming, target);
   const uploading = m.upload && sameTarget(m.upload.target, target) ? m.upload : undefined;
@@ -100,8 +126,8 @@ export function uploadInPlace(ctx: ViewContext, target: UploadTarget): TemplateR
         : undefined;
   return html`
     <div class="upload-in-place" ${keepInView(shown)}>
-      ${confirming ? confirmBlock(ctx, s, target) : nothing} ${uploading ? progress(ctx, uploading) : nothing}
-      ${liveNotice(result, "Upload result")}
+      ${confirming ? confirmBlock(ctx, t, s, target) : nothing} ${uploading ? progress(ctx, t, uploading) : nothing}
+      ${liveNotice(result, t("motions.upload.resultLabel"), s.locale)}
     </div>
   `;
 }

@@ -1,4 +1,5 @@
 import { html, nothing, type TemplateResult } from "lit-html";
+import { translator } from "../../../../i18n/translate.ts";
 import {
   ACTION_AREA_BYTES,
   MAX_ACTIONS,
@@ -6,73 +7,75 @@ import {
   MEMORY_BLOCK_BYTES,
   MOTION_AREA_BYTES,
 } from "../../../../protocol/catalog.ts";
-import { formatCount } from "../../../format.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
+import { type MotionsTranslator, motionsMessages } from "../messages.ts";
 import { formatSeconds } from "../plot-data.ts";
 import { type SlotBook, slotLabel } from "../slot-book.ts";
 import { motionsOf } from "../state.ts";
-import {
-  ACTION_SENTENCE,
-  openActionFile,
-  requestUpload,
-  setResetFirst,
-  uploadBlocked,
-} from "../upload-actions.ts";
+import { openActionFile, requestUpload, setResetFirst, uploadBlocked } from "../upload-actions.ts";
 import { uploadInPlace } from "./upload-in-place.ts";
 
 /** The Memory tab: what this connection uploaded, how the memory is counted, and action files. */
 
-function uploadedList(book: SlotBook, testId: string): TemplateResult | typeof nothing {
+function uploadedList(t: MotionsTranslator, book: SlotBook, testId: string): TemplateResult | typeof nothing {
   if (book.entries.length === 0) return nothing;
   return html`
     <ul class="uploaded-list" data-testid=${testId}>
-      ${book.entries.map(
-        (e) => html`<li>
+      ${book.entries.map((e) => {
+        const slot = html`<span class="num">${slotLabel(e, t.locale)}</span>`;
+        return html`<li>
           <strong class="long-text">${e.name}</strong> <span class="muted long-text">${e.fileName}</span> —
-          <span class="num">${slotLabel(e)}</span>${e.durationMs === undefined ? "" : html`, plays ${formatSeconds(e.durationMs)}`}
-        </li>`,
-      )}
+          ${
+            e.durationMs === undefined
+              ? slot
+              : t.parts("motions.upload.slotPlays", {
+                  slot,
+                  duration: formatSeconds(e.durationMs, t.locale),
+                })
+          }
+        </li>`;
+      })}
     </ul>
   `;
 }
 
-function uploadsCard(ctx: ViewContext): TemplateResult {
+function uploadsCard(ctx: ViewContext, t: MotionsTranslator): TemplateResult {
   const m = motionsOf(ctx.state);
   return html`
     <section class="card" aria-labelledby="uploads-title" data-testid="uploads-card">
-      <h2 id="uploads-title" class="card-title">Uploaded motions</h2>
+      <h2 id="uploads-title" class="card-title">${t("motions.upload.listTitle")}</h2>
       ${
         m.motionBook.entries.length > 0
-          ? uploadedList(m.motionBook, "uploaded-list")
-          : html`<p class="muted small">
-              Nothing uploaded in this connection yet. Upload motion files from the Files tab; they appear here
-              and on the Run tab with their motion numbers.
-            </p>`
+          ? uploadedList(t, m.motionBook, "uploaded-list")
+          : html`<p class="muted small">${t("motions.upload.none")}</p>`
       }
       <details class="memory-help">
-        <summary>How the memory is counted</summary>
+        <summary>${t("motions.upload.howCounted")}</summary>
         <p class="small">
-          The robot keeps up to ${MAX_MOTIONS} downloaded motions (${formatCount(MOTION_AREA_BYTES)} bytes) and
-          ${MAX_ACTIONS} actions (${formatCount(ACTION_AREA_BYTES)} bytes). Each file starts on a
-          ${MEMORY_BLOCK_BYTES}-byte block, so it takes its size rounded up to the next block (a size that is
-          already a multiple of ${MEMORY_BLOCK_BYTES} takes one block more).
+          ${t("motions.upload.howCountedText", {
+            motions: MAX_MOTIONS,
+            motionBytes: MOTION_AREA_BYTES,
+            actions: MAX_ACTIONS,
+            actionBytes: ACTION_AREA_BYTES,
+            block: MEMORY_BLOCK_BYTES,
+          })}
         </p>
       </details>
     </section>
   `;
 }
 
-function actionCard(ctx: ViewContext): TemplateResult {
+function actionCard(ctx: ViewContext, t: MotionsTranslator): TemplateResult {
   const m = motionsOf(ctx.state);
   const file = m.actionFile;
   const blocked = file ? uploadBlocked(ctx, { area: "action" }) : undefined;
   return html`
     <section class="card" aria-labelledby="actions-title" data-testid="action-card">
-      <h2 id="actions-title" class="card-title">Action files</h2>
-      <p class="muted small">${ACTION_SENTENCE}</p>
+      <h2 id="actions-title" class="card-title">${t("motions.upload.actionTitle")}</h2>
+      <p class="muted small">${t("motions.upload.actionUnchecked")}</p>
       <div class="write-row">
         <label class="btn file-button">
-          Choose action file…
+          ${t("motions.upload.chooseAction")}
           <input
             class="sr-only"
             type="file"
@@ -85,7 +88,7 @@ function actionCard(ctx: ViewContext): TemplateResult {
             }}
           />
         </label>
-        ${file ? html`<span class="num long-text">${file.fileName}, ${formatCount(file.size)} bytes</span>` : nothing}
+        ${file ? html`<span class="num long-text">${t("motions.upload.actionFile", { file: file.fileName, size: file.size })}</span>` : nothing}
       </div>
       ${
         file
@@ -97,7 +100,7 @@ function actionCard(ctx: ViewContext): TemplateResult {
                   ?disabled=${m.upload !== undefined}
                   @change=${(e: Event) => setResetFirst(ctx, "action", (e.target as HTMLInputElement).checked)}
                 />
-                Reset action memory first (forgets every downloaded action)
+                ${t("motions.upload.resetAction")}
               </label>
               <div class="write-row">
                 <button
@@ -108,18 +111,19 @@ function actionCard(ctx: ViewContext): TemplateResult {
                   aria-describedby="action-why"
                   @click=${() => requestUpload(ctx, { area: "action" })}
                 >
-                  Upload action file
+                  ${t("motions.upload.uploadAction")}
                 </button>
                 <span id="action-why" class="muted small">${blocked ?? ""}</span>
               </div>
             `
           : nothing
       }
-      ${uploadInPlace(ctx, { area: "action" })} ${uploadedList(m.actionBook, "uploaded-actions")}
+      ${uploadInPlace(ctx, { area: "action" })} ${uploadedList(t, m.actionBook, "uploaded-actions")}
     </section>
   `;
 }
 
 export function uploadSection(ctx: ViewContext): TemplateResult {
-  return html`${uploadsCard(ctx)} ${actionCard(ctx)}`;
+  const t = translator(motionsMessages, ctx.state.locale);
+  return html`${uploadsCard(ctx, t)} ${actionCard(ctx, t)}`;
 }
