@@ -1,5 +1,8 @@
 import { type ParseArgsConfig, parseArgs } from "node:util";
+import { translator } from "../i18n/translate.ts";
 import { UsageError } from "./errors.ts";
+import { cliMessages } from "./messages.ts";
+import { type Said, said, saidEach } from "./said.ts";
 
 /** Options every subcommand takes (described in help.ts). */
 export const GLOBAL_OPTIONS = {
@@ -8,6 +11,8 @@ export const GLOBAL_OPTIONS = {
   json: { type: "boolean" },
   log: { type: "boolean" },
   help: { type: "boolean", short: "h" },
+  /** The language of what rbc prints for people (locale.ts); read by main before the command parses. */
+  lang: { type: "string" },
 } as const satisfies NonNullable<ParseArgsConfig["options"]>;
 
 export type OptionsConfig = NonNullable<ParseArgsConfig["options"]>;
@@ -18,10 +23,11 @@ export interface GlobalValues {
   json?: boolean;
   log?: boolean;
   help?: boolean;
+  lang?: string;
 }
 
 /** Global options that take a value, so that their value is not mistaken for the subcommand. */
-const VALUE_OPTIONS = new Set(["--port", "-p"]);
+const VALUE_OPTIONS = new Set(["--port", "-p", "--lang"]);
 
 /**
  * Splits `argv` into the subcommand and the rest: the subcommand is the first word that is neither an option
@@ -63,8 +69,32 @@ export function parseCommand<const T extends OptionsConfig>(
       strict: true,
     });
   } catch (e) {
-    const message = e instanceof Error ? e.message.replace(/\. To specify a positional.*$/s, ".") : String(e);
-    throw new UsageError(message, command);
+    throw new UsageError(parseFailure(e), command);
+  }
+}
+
+/**
+ * What node's parseArgs refused, in every language: its own English sentence, and in Korean a sentence from
+ * its error code with the option it names ("Unknown option '--foo'" → "알 수 없는 옵션이에요: --foo.").
+ */
+export function parseFailure(e: unknown): Said {
+  const en = e instanceof Error ? e.message.replace(/\. To specify a positional.*$/s, ".") : String(e);
+  const code = (e as { code?: unknown } | undefined)?.code;
+  const quoted = /'([^']+)'/.exec(en)?.[1] ?? "";
+  const ko = translator(cliMessages, "ko");
+  switch (code) {
+    case "ERR_PARSE_ARGS_UNKNOWN_OPTION":
+      return { en, ko: ko("cli.usage.unknownOption", { option: quoted }) };
+    case "ERR_PARSE_ARGS_UNEXPECTED_POSITIONAL":
+      return { en, ko: ko("cli.usage.unexpected", { argument: quoted }) };
+    case "ERR_PARSE_ARGS_INVALID_OPTION_VALUE": {
+      const option = /--[\w-]+/.exec(quoted)?.[0] ?? quoted;
+      return /missing/.test(en)
+        ? { en, ko: ko("cli.usage.optionNeedsValue", { option }) }
+        : { en, ko: ko("cli.usage.optionNoValue", { option }) };
+    }
+    default:
+      return { en, ko: ko("cli.usage.badCommandLine", { reason: en }) };
   }
 }
 
@@ -80,23 +110,35 @@ export function intOption(
   if (value === undefined) return fallback;
   const n = Number(value);
   if (!/^-?\d+$/.test(value.trim()) || n < min || n > max) {
-    throw new UsageError(`--${name} must be a whole number from ${min} to ${max}, got "${value}".`, command);
+    throw new UsageError(
+      said(cliMessages, "cli.usage.intOption", { name, min: String(min), max: String(max), value }),
+      command,
+    );
   }
   return n;
 }
 
-/** A whole-number positional argument within [min, max]. */
+/** A whole-number positional argument within [min, max]; `what` names it ("The sound number"), in every language. */
 export function intArgument(
   command: string,
-  what: string,
+  what: Said,
   value: string | undefined,
   min: number,
   max: number,
 ) {
-  if (value === undefined) throw new UsageError(`Missing ${what}.`, command);
+  if (value === undefined) {
+    throw new UsageError(
+      saidEach(cliMessages, "cli.usage.missing", (l) => [{ what: what[l] }]),
+      command,
+    );
+  }
   const n = Number(value);
   if (!/^\d+$/.test(value.trim()) || n < min || n > max) {
-    throw new UsageError(`${what} must be a whole number from ${min} to ${max}, got "${value}".`, command);
+    const range = { min: String(min), max: String(max), value };
+    throw new UsageError(
+      saidEach(cliMessages, "cli.usage.intArgument", (l) => [{ what: what[l], ...range }]),
+      command,
+    );
   }
   return n;
 }
@@ -104,6 +146,9 @@ export function intArgument(
 /** Refuses positionals beyond the expected count. */
 export function noExtraArguments(command: string, positionals: readonly string[], expected: number): void {
   if (positionals.length > expected) {
-    throw new UsageError(`Unexpected argument "${positionals[expected]}".`, command);
+    throw new UsageError(
+      said(cliMessages, "cli.usage.unexpected", { argument: positionals[expected] ?? "" }),
+      command,
+    );
   }
 }

@@ -1,3 +1,6 @@
+import type { Locale } from "../i18n/locale.ts";
+import type { Translator } from "../i18n/translate.ts";
+import type { helpMessages } from "./help/messages.ts";
 import type { Output } from "./output.ts";
 
 /** What a subcommand gets from `main`. */
@@ -21,19 +24,35 @@ export interface RunEnv {
   stdin: NodeJS.ReadStream;
   cwd: string;
   env: NodeJS.ProcessEnv;
+  /**
+   * The language of what the command prints for people (`--lang`, else the environment's; locale.ts);
+   * English when not given. `--json` output does not depend on it.
+   */
+  locale?: Locale;
+}
+
+/** The language of `env`: English unless main chose another. */
+export function localeOf(env: Pick<RunEnv, "locale">): Locale {
+  return env.locale ?? "en";
+}
+
+/** A command's help in one language: the line for the command list, paragraphs, its options explained. */
+export interface CommandHelp {
+  /** One line for the command list. */
+  summary: string;
+  /** Paragraphs explaining what it does, for a newcomer. */
+  description: string;
+  /** The subcommand's own options: [flag, explanation]. */
+  options: ReadonlyArray<readonly [string, string]>;
 }
 
 /** One subcommand: its help text and what it does. Returns the exit code. */
 export interface CommandDef {
   name: string;
-  /** One line for the command list. */
-  summary: string;
   /** `rbc upload FILE.rbm [--reset] [--action] [--yes]`. */
   usage: string;
-  /** Paragraphs explaining what it does, for a newcomer. */
-  description: string;
-  /** The subcommand's own options: [flag, explanation]. */
-  options: ReadonlyArray<readonly [string, string]>;
+  /** Its help in the language of `t` (the texts are in help/messages.ts; help/command-help.ts has each). */
+  help(t: Translator<typeof helpMessages>): CommandHelp;
   examples: readonly string[];
   /** False for commands that do not talk to a robot (ports, sim): the global --port/--demo text is left out. */
   talksToRobot: boolean;

@@ -1,6 +1,8 @@
 import { RbcPortError } from "../device/errors.ts";
 import { RbcClient } from "../device/rbc-client.ts";
 import type { DeviceIdentity } from "../device/types.ts";
+import type { Locale } from "../i18n/locale.ts";
+import { translator } from "../i18n/translate.ts";
 import { LinkError, type Transport } from "../link/transport.ts";
 import { WebSerialTransport } from "../link/web-serial-transport.ts";
 import { type Clock, realClock } from "../shared/clock.ts";
@@ -8,11 +10,13 @@ import { createDemoRbc } from "../sim/demo-world.ts";
 import { MockSerialPort } from "../sim/mock-serial-port.ts";
 import { BootloaderRbc } from "../sim/sim-bootloader.ts";
 import type { GlobalValues } from "./args.ts";
-import type { RunEnv } from "./command.ts";
+import { localeOf, type RunEnv } from "./command.ts";
 import { demoClock } from "./demo-clock.ts";
 import { CliError, UsageError } from "./errors.ts";
+import { cliMessages } from "./messages.ts";
 import { formatLogEntry, logEntryJson } from "./packet-trace.ts";
-import { portOpenMessage } from "./port-errors.ts";
+import { portOpenSaid } from "./port-errors.ts";
+import { said } from "./said.ts";
 import { demoVariant, type SimVariant } from "./sim-variant.ts";
 
 /** A connected robot: the real one on a serial port, or the demo robot. */
@@ -26,7 +30,7 @@ export interface Robot {
   identity: DeviceIdentity;
   /** True for `--demo` (the built-in simulated RBC). */
   demo: boolean;
-  /** "the demo robot" or the port path, for messages. */
+  /** "the demo robot" or the port path, for English messages (`robotPlace` says it in a language). */
   where: string;
   /**
    * The demo robot's bootloader (PROTOCOL.md §11), which sits in front of its simulated RBC: `rbc flash --demo`
@@ -54,18 +58,23 @@ export interface ConnectOptions {
   handlesInterrupt?: boolean;
 }
 
+/** `Robot.where` of the demo robot. */
+const DEMO_WHERE = translator(cliMessages, "en")("cli.connect.demoRobot");
+
+/** The robot in a sentence of `locale`: "the demo robot" / "데모 로봇", or its port. */
+export function robotPlace(robot: { demo: boolean; where: string }, locale: Locale): string {
+  return robot.demo ? translator(cliMessages, locale)("cli.connect.demoRobot") : robot.where;
+}
+
 /** Which robot the options name: `--demo`, `--port PATH`, or the RBC_PORT environment variable. */
 export function robotTarget(command: string, values: GlobalValues, env: NodeJS.ProcessEnv) {
   if (values.demo && values.port !== undefined) {
-    throw new UsageError("Use either --port or --demo, not both.", command);
+    throw new UsageError(said(cliMessages, "cli.connect.portOrDemo"), command);
   }
   if (values.demo) return { demo: true as const };
   const port = values.port ?? env.RBC_PORT;
   if (port === undefined || port === "") {
-    throw new UsageError(
-      "Say which robot: --port PATH (list ports with `rbc ports`), or --demo for the built-in simulated robot.",
-      command,
-    );
+    throw new UsageError(said(cliMessages, "cli.connect.whichRobot"), command);
   }
   return { demo: false as const, port };
 }
@@ -84,7 +93,7 @@ export function demoTimeScale(env: NodeJS.ProcessEnv, command?: string): number 
   const scale = Number(text);
   if (!Number.isFinite(scale) || scale <= 0 || scale > 1000) {
     throw new UsageError(
-      `${DEMO_TIME_SCALE_VAR} must be a number above 0 and at most 1000, not "${text}".`,
+      said(cliMessages, "cli.connect.timeScale", { variable: DEMO_TIME_SCALE_VAR, value: text }),
       command,
     );
   }
@@ -146,7 +155,7 @@ export async function openRobotPort(command: string, values: GlobalValues, env: 
     await close().catch(() => {});
     if (!target.demo && e instanceof LinkError) {
       const error = RbcPortError.fromLink(e);
-      throw new CliError(error.code, portOpenMessage(target.port, error, error.code));
+      throw new CliError(error.code, portOpenSaid(target.port, error, error.code));
     }
     throw e;
   }
@@ -154,7 +163,7 @@ export async function openRobotPort(command: string, values: GlobalValues, env: 
     transport,
     clock,
     demo: target.demo,
-    where: target.demo ? "the demo robot" : target.port,
+    where: target.demo ? DEMO_WHERE : target.port,
     bootloader,
     close,
   };
@@ -190,7 +199,7 @@ export async function connectRobot(
       // Said once, at the end: a firmware that repeats a reply (PROTOCOL.md §3.5) is worth knowing about.
       if (unasked > 0) {
         env.out.note(
-          `rbc: the robot sent ${unasked.toLocaleString("en-US")} ${unasked === 1 ? "reply" : "replies"} that no request asked for (late or repeated); ${unasked === 1 ? "it was" : "they were"} discarded.`,
+          `rbc: ${translator(cliMessages, localeOf(env))("cli.connect.unasked", { count: unasked })}`,
         );
       }
     });
@@ -207,7 +216,7 @@ export async function connectRobot(
       clock,
       identity,
       demo: target.demo,
-      where: target.demo ? "the demo robot" : target.port,
+      where: target.demo ? DEMO_WHERE : target.port,
       bootloader,
       close,
     };
@@ -215,7 +224,7 @@ export async function connectRobot(
     env.signal.removeEventListener("abort", onAbort);
     await close();
     if (!target.demo && e instanceof RbcPortError && isOpenFailure(e)) {
-      throw new CliError(e.code, portOpenMessage(target.port, e, e.code));
+      throw new CliError(e.code, portOpenSaid(target.port, e, e.code));
     }
     throw e;
   }

@@ -5,14 +5,20 @@
  * A closed stdout (`rbc … | head -1`) stops the command the same way, without a word.
  */
 import pkg from "../../package.json" with { type: "json" };
+import { technicalDetail } from "../device/error-text.ts";
 import { RbcUploadError } from "../device/errors.ts";
+import type { Locale } from "../i18n/locale.ts";
+import { translator } from "../i18n/translate.ts";
 import { splitCommand, wantsHelp } from "./args.ts";
 import { Cleanups } from "./cleanups.ts";
 import type { CommandDef, RunEnv } from "./command.ts";
 import { COMMAND_LIST, findCommand } from "./commands/index.ts";
 import { CliError, EXIT, errorCode, errorLine, UsageError } from "./errors.ts";
-import { commandHelp, globalHelp } from "./help.ts";
+import { commandHelp, globalHelp } from "./help/render.ts";
+import { cliLocale } from "./locale.ts";
+import { cliMessages } from "./messages.ts";
 import { Output } from "./output.ts";
+import { said } from "./said.ts";
 
 /** After Ctrl-C, how long a command may take to stop cleanly before rbc closes the port and exits anyway. */
 const INTERRUPT_GRACE_MS = 5000;
@@ -22,15 +28,34 @@ function version(): string {
   return pkg.version;
 }
 
-function reportFailure(out: Output, e: unknown, command: CommandDef | undefined): number {
+/** How a failure is told to a person: in their language, with the English technical detail after `--log`. */
+interface Telling {
+  locale: Locale;
+  log: boolean;
+}
+
+/**
+ * The failure's line for a person, on stderr. In English it is the line `--json` carries too; in another
+ * language it is said in that language, and `--log` adds the English technical detail on the next line.
+ */
+function tellFailure(out: Output, e: unknown, telling: Telling): void {
+  const { locale, log } = telling;
+  out.note(`rbc: ${errorLine(e, locale, { detailShown: log })}`);
+  if (locale !== "en" && log) {
+    out.note(`rbc: ${translator(cliMessages, locale)("cli.error.detail", { detail: technicalDetail(e) })}`);
+  }
+}
+
+function reportFailure(out: Output, e: unknown, command: CommandDef | undefined, telling: Telling): number {
+  const t = translator(cliMessages, telling.locale);
   if (e instanceof UsageError) {
     const which = e.command ?? command?.name;
-    out.note(`rbc: ${errorLine(e)}`);
-    out.note(`Run "rbc ${which ? `${which} ` : ""}--help" for usage.`);
+    tellFailure(out, e, telling);
+    out.note(t("cli.usage.seeHelp", { help: `rbc ${which ? `${which} ` : ""}--help` }));
     out.result({ ok: false, error: { code: errorCode(e), message: errorLine(e) } });
     return EXIT.usage;
   }
-  out.note(`rbc: ${errorLine(e)}`);
+  tellFailure(out, e, telling);
   const details =
     e instanceof RbcUploadError
       ? { acknowledged: e.acknowledged, total: e.total, outcome: e.outcome }
@@ -44,6 +69,9 @@ function reportFailure(out: Output, e: unknown, command: CommandDef | undefined)
 async function main(argv: readonly string[]): Promise<{ code: number; out: Output }> {
   const { command: name, rest } = splitCommand(argv);
   const out = new Output(rest.includes("--json"));
+  const { locale, invalid: invalidLang } = cliLocale(argv, process.env);
+  const telling: Telling = { locale, log: name === "log" || rest.includes("--log") };
+  const t = translator(cliMessages, locale);
   const controller = new AbortController();
   const cleanups = new Cleanups();
   let interruptCode: number = EXIT.interrupted;
@@ -59,7 +87,7 @@ async function main(argv: readonly string[]): Promise<{ code: number; out: Outpu
   let graceTimer: ReturnType<typeof setTimeout> | undefined;
   const startGraceTimer = () => {
     graceTimer ??= setTimeout(() => {
-      out.note("rbc: the command did not stop in time; closing the port.");
+      out.note(`rbc: ${t("cli.main.notStopped")}`);
       tellExitNote();
       void cleanups.run().then(() => process.exit(interruptCode));
     }, INTERRUPT_GRACE_MS);
@@ -69,7 +97,7 @@ async function main(argv: readonly string[]): Promise<{ code: number; out: Outpu
     interrupts++;
     interruptCode = signal === "SIGTERM" ? EXIT.terminated : EXIT.interrupted;
     if (interrupts > 1) {
-      out.note("\nrbc: interrupted again; exiting without waiting.");
+      out.note(`\nrbc: ${t("cli.main.interruptedAgain")}`);
       tellExitNote();
       process.exit(interruptCode);
     }
@@ -94,26 +122,34 @@ async function main(argv: readonly string[]): Promise<{ code: number; out: Outpu
 
   let def: CommandDef | undefined;
   try {
+    if (invalidLang !== undefined)
+      throw new UsageError(said(cliMessages, "cli.usage.lang", { value: invalidLang }));
     if (name === undefined || name === "help") {
-      const topic = name === "help" ? rest.find((a) => !a.startsWith("-")) : undefined;
+      // `rbc help --lang ko zeros`: the topic is the first word that is not an option's value.
+      const topic = name === "help" ? splitCommand(rest).command : undefined;
       if (name === undefined && rest.includes("--version")) {
         out.line(version());
         out.result({ version: version() });
         return { code: EXIT.ok, out };
       }
       if (name === undefined && rest.length > 0 && !wantsHelp(rest)) {
-        throw new UsageError(`Missing a command (${COMMAND_LIST.map((c) => c.name).join(", ")}).`);
+        throw new UsageError(
+          said(cliMessages, "cli.usage.missingCommand", {
+            commands: COMMAND_LIST.map((c) => c.name).join(", "),
+          }),
+        );
       }
       const about = topic === undefined ? undefined : findCommand(topic);
-      if (topic !== undefined && !about) throw new UsageError(`Unknown command "${topic}".`);
-      out.text(about ? commandHelp(about) : globalHelp(COMMAND_LIST));
+      if (topic !== undefined && !about)
+        throw new UsageError(said(cliMessages, "cli.usage.unknownCommand", { name: topic }));
+      out.text(about ? commandHelp(about, locale) : globalHelp(COMMAND_LIST, locale));
       return { code: EXIT.ok, out };
     }
     def = findCommand(name);
-    if (!def) throw new UsageError(`Unknown command "${name}".`);
+    if (!def) throw new UsageError(said(cliMessages, "cli.usage.unknownCommand", { name }));
     if (def.streams) out.streaming();
     if (wantsHelp(rest)) {
-      out.text(commandHelp(def));
+      out.text(commandHelp(def, locale));
       return { code: EXIT.ok, out };
     }
     const env: RunEnv = {
@@ -127,6 +163,7 @@ async function main(argv: readonly string[]): Promise<{ code: number; out: Outpu
       stdin: process.stdin,
       cwd: process.cwd(),
       env: process.env,
+      locale,
     };
     const code = await def.run(env);
     // Commands report an interruption as 130; after SIGTERM it is 143.
@@ -137,14 +174,15 @@ async function main(argv: readonly string[]): Promise<{ code: number; out: Outpu
       // Stopped because stdout's reader went away (and not by Ctrl-C): quietly.
       if (outputClosed && interrupts === 0) return { code: EXIT.interrupted, out };
       const why = e instanceof CliError ? errorLine(e) : "";
-      out.note(`rbc: interrupted. ${why}`.trim());
+      const told = e instanceof CliError ? errorLine(e, locale) : "";
+      out.note(`rbc: ${t("cli.main.interrupted")} ${told}`.trim());
       out.result({
         ok: false,
         error: { code: "interrupted", message: `Interrupted. ${why}`.trim() },
       });
       return { code: interruptCode, out };
     }
-    return { code: reportFailure(out, e, def), out };
+    return { code: reportFailure(out, e, def, telling), out };
   } finally {
     await cleanups.run();
   }

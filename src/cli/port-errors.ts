@@ -1,3 +1,7 @@
+import { translator } from "../i18n/translate.ts";
+import { cliMessages } from "./messages.ts";
+import type { Said } from "./said.ts";
+
 /** The words for a serial port that cannot be opened, shared by the commands that open one and `rbc sim`. */
 
 /** The innermost cause's message, without the "Error: " that serialport's bindings put in front of it. */
@@ -12,17 +16,23 @@ function rootMessage(e: unknown): string {
 }
 
 /**
- * A port that cannot be opened, in one sentence that names it and says where to look next: serialport's own
- * message is "Error: No such file or directory, cannot open /dev/ttyUSB0", which rbc used to paste after its
- * own ("… could not be opened: Error: …").
+ * A port that cannot be opened, in one sentence that names it and says where to look next, in every
+ * language: serialport's own message is "Error: No such file or directory, cannot open /dev/ttyUSB0", which
+ * rbc used to paste after its own ("… could not be opened: Error: …"). The system's reason stays as the
+ * system gives it, in parentheses.
  */
-export function portOpenMessage(path: string, e: unknown, code = "open-failed"): string {
+export function portOpenSaid(path: string, e: unknown, code = "open-failed"): Said {
   const why = rootMessage(e)
     .replace(new RegExp(`,?\\s*cannot open ${path.replace(/[.*+?^${}()|[\]\\]/g, "\\$&")}\\s*$`), "")
     .replace(/[.\s]+$/, "");
   const reason = why ? ` (${why.charAt(0).toLowerCase()}${why.slice(1)})` : "";
-  if (code === "port-busy") {
-    return `Cannot open ${path}${reason}: another program may be using it, or you may not have permission (on Linux, join the dialout group). Run \`rbc ports\` to list the serial ports.`;
-  }
-  return `Cannot open ${path}${reason}. Run \`rbc ports\` to list the serial ports on this computer.`;
+  const key = code === "port-busy" ? "cli.port.busy" : "cli.port.cannotOpen";
+  const en = translator(cliMessages, "en");
+  const ko = translator(cliMessages, "ko");
+  return { en: en(key, { path, reason }), ko: ko(key, { path, reason }) };
+}
+
+/** The English sentence of `portOpenSaid`. */
+export function portOpenMessage(path: string, e: unknown, code = "open-failed"): string {
+  return portOpenSaid(path, e, code).en;
 }

@@ -1,3 +1,6 @@
+import type { Locale } from "../i18n/locale.ts";
+import { formatDecimal, formatNumber, translator } from "../i18n/translate.ts";
+import { cliMessages } from "./messages.ts";
 import type { Output } from "./output.ts";
 
 /**
@@ -6,7 +9,7 @@ import type { Output } from "./output.ts";
  *     [##########----------]   256/538 bytes   47%   1,152 B/s   0.3 s left
  *
  * On a terminal one line is redrawn (at most every 100 ms); otherwise (a pipe, a log file) a line is printed
- * for each 10% step, so that logs stay short.
+ * for each 10% step, so that logs stay short. In Korean: "… 256/538바이트  47%     512B/s  0.6초 남음".
  */
 export class ProgressBar {
   private readonly started: number;
@@ -17,6 +20,7 @@ export class ProgressBar {
   constructor(
     private readonly out: Output,
     private readonly now: () => number = () => performance.now(),
+    private readonly locale: Locale = "en",
   ) {
     this.started = now();
   }
@@ -50,10 +54,23 @@ export class ProgressBar {
     const bar = `[${"#".repeat(filled)}${"-".repeat(width - filled)}]`;
     const seconds = (t - this.started) / 1000;
     const rate = seconds > 0 ? acknowledged / seconds : 0;
-    const n = (v: number) => Math.round(v).toLocaleString("en-US");
+    const say = translator(cliMessages, this.locale);
     const left =
-      acknowledged >= total ? "done" : rate > 0 ? `${((total - acknowledged) / rate).toFixed(1)} s left` : "";
+      acknowledged >= total
+        ? say("cli.progress.done")
+        : rate > 0
+          ? say("cli.progress.left", {
+              seconds: formatDecimal((total - acknowledged) / rate, this.locale, 1),
+            })
+          : "";
     const digits = String(total).length;
-    return `${bar} ${String(acknowledged).padStart(digits)}/${total} bytes ${String(Math.floor(fraction * 100)).padStart(3)}%  ${n(rate).padStart(6)} B/s  ${left}`.trimEnd();
+    return say("cli.progress.upload", {
+      bar,
+      acknowledged: String(acknowledged).padStart(digits),
+      total: String(total),
+      percent: String(Math.floor(fraction * 100)).padStart(3),
+      rate: formatNumber(Math.round(rate), this.locale).padStart(6),
+      left,
+    }).trimEnd();
   }
 }

@@ -1,5 +1,7 @@
 import { type ChildProcess, spawn } from "node:child_process";
 import { CliError } from "./errors.ts";
+import { cliMessages } from "./messages.ts";
+import { said } from "./said.ts";
 
 /** A pair of connected pseudo terminals made by socat: what is written to one end is read at the other. */
 export interface PtyPair {
@@ -29,23 +31,23 @@ export function createPtyPair(timeoutMs = 5000): Promise<PtyPair> {
         fail(
           new CliError(
             "pty-failed",
-            `socat did not create a PTY pair within ${timeoutMs} ms: ${stderr.trim()}`,
+            said(cliMessages, "cli.pty.timeout", { ms: String(timeoutMs), output: stderr.trim() }),
           ),
         ),
       timeoutMs,
     );
     child.on("error", (e: NodeJS.ErrnoException) =>
       fail(
-        new CliError(
-          e.code === "ENOENT" ? "socat-missing" : "pty-failed",
-          e.code === "ENOENT"
-            ? "rbc sim --pty needs socat (e.g. sudo apt-get install socat); or make a pair yourself and pass one end with --port."
-            : `Could not start socat: ${e.message}`,
-        ),
+        e.code === "ENOENT"
+          ? new CliError("socat-missing", said(cliMessages, "cli.pty.noSocat"))
+          : new CliError("pty-failed", said(cliMessages, "cli.pty.notStarted", { reason: e.message })),
       ),
     );
     child.on("exit", (code) => {
-      if (paths.length < 2) fail(new CliError("pty-failed", `socat exited (code ${code}): ${stderr.trim()}`));
+      if (paths.length < 2) {
+        const output = stderr.trim();
+        fail(new CliError("pty-failed", said(cliMessages, "cli.pty.exited", { code: String(code), output })));
+      }
     });
     child.stderr?.setEncoding("utf8");
     child.stderr?.on("data", (text: string) => {

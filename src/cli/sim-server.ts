@@ -1,12 +1,16 @@
 import { createInterface } from "node:readline";
 import { SerialPort } from "serialport";
+import type { Locale } from "../i18n/locale.ts";
+import { translator } from "../i18n/translate.ts";
 import { rbcSerialPortOptions } from "../link/node-serial-transport.ts";
 import { toHex } from "../protocol/bytes.ts";
 import { BootloaderRbc } from "../sim/sim-bootloader.ts";
 import { SimulatedRbc } from "../sim/simulated-rbc.ts";
 import { CliError } from "./errors.ts";
+import { cliMessages } from "./messages.ts";
 import type { Output } from "./output.ts";
-import { portOpenMessage } from "./port-errors.ts";
+import { portOpenSaid } from "./port-errors.ts";
+import { said } from "./said.ts";
 import { SimLink, type SimLinkOptions } from "./sim-link.ts";
 import { formatSimTraceLine, SimTrace, type SimTraceLine } from "./sim-trace.ts";
 import type { SimVariant } from "./sim-variant.ts";
@@ -32,6 +36,8 @@ export interface SimServerOptions extends SimLinkOptions {
   onReady(sim: SimulatedRbc): void;
   /** A terminal to read "p" lines from (power cycle); none when stdin is not a terminal. */
   stdin?: NodeJS.ReadStream;
+  /** The language of the lines for people (the packet trace stays as it is); English when not given. */
+  locale?: Locale;
 }
 
 const BOOTLOADER_CHARS: Record<number, string> = {
@@ -95,9 +101,7 @@ class BootloaderTrace {
 function openPort(path: string): Promise<SerialPort> {
   return new Promise((resolve, reject) => {
     const port = new SerialPort(rbcSerialPortOptions(path));
-    port.open((err) =>
-      err ? reject(new CliError("open-failed", portOpenMessage(path, err))) : resolve(port),
-    );
+    port.open((err) => (err ? reject(new CliError("open-failed", portOpenSaid(path, err))) : resolve(port)));
   });
 }
 
@@ -136,7 +140,7 @@ export async function serveSimulator(options: SimServerOptions): Promise<void> {
     bootTrace.reset();
     // Said even with --quiet: it is what the person (or the test) asked for.
     if (out.json) out.jsonLine({ event: "power-cycle" });
-    else out.line("Power cycle: the simulated robot was switched off and on; its bootloader starts.");
+    else out.line(translator(cliMessages, options.locale ?? "en")("cli.sim.powerCycled"));
     boot.powerCycle();
   };
   process.on("SIGUSR1", powerCycle);
@@ -152,16 +156,20 @@ export async function serveSimulator(options: SimServerOptions): Promise<void> {
       options.signal.addEventListener("abort", () => resolve(), { once: true });
       port.on("close", (err: (Error & { disconnected?: boolean }) | null) => {
         if (!options.signal.aborted) {
-          reject(
-            new CliError(
-              "device-lost",
-              `${options.path} was closed${err ? `: ${err.message}` : ""}; the simulator stopped.`,
-            ),
-          );
+          const path = options.path;
+          const lost = err
+            ? said(cliMessages, "cli.sim.deviceLostBecause", { path, reason: err.message })
+            : said(cliMessages, "cli.sim.deviceLost", { path });
+          reject(new CliError("device-lost", lost));
         }
       });
       port.on("error", (err: Error) =>
-        reject(new CliError("device-error", `${options.path}: ${err.message}`)),
+        reject(
+          new CliError(
+            "device-error",
+            said(cliMessages, "cli.sim.deviceError", { path: options.path, reason: err.message }),
+          ),
+        ),
       );
     });
   } finally {

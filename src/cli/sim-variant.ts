@@ -1,9 +1,14 @@
 import { parseArgs } from "node:util";
+import type { Locale } from "../i18n/locale.ts";
+import { translator } from "../i18n/translate.ts";
 import { platformName } from "../protocol/catalog.ts";
 import { commandName } from "../protocol/commands.ts";
 import { formatFirmware } from "../shared/format.ts";
 import type { SimulatedRbcOptions } from "../sim/sim-types.ts";
+import { parseFailure } from "./args.ts";
 import { UsageError } from "./errors.ts";
+import { cliMessages } from "./messages.ts";
+import { said, saidEach } from "./said.ts";
 
 /**
  * Firmware variants of the simulated RBC (PROTOCOL.md §3.5), as command-line switches: `rbc sim` takes them as
@@ -33,18 +38,6 @@ export const DEFAULT_REPEAT_TYPE = 0x16;
  */
 export const REPEAT_INTERVAL_MS = 0.955;
 
-export const VARIANT_HELP: ReadonlyArray<readonly [string, string]> = [
-  ["--no-serial", "Do not answer 0x0C (Read serial number), like the official firmware source."],
-  ["--no-status", "Do not answer 0x1E (Execution status)."],
-  ["--firmware X.Y", "Answer 0x12 with this version (default 2.23; the firmware sources say 9.99)."],
-  ["--platform N", "Platform byte of every reply, 0-255 (default 1 HUNO; the homebrew port sends 4)."],
-  [
-    "--repeat-replies",
-    "Repeat the first 0x16 (distance) reply endlessly, every 0.95 ms (17.8 KB/s), like the homebrew port.",
-  ],
-  ["--repeat-type 0xNN", "Repeat this reply type instead of 0x16 (implies --repeat-replies)."],
-];
-
 export type SimVariant = Pick<
   SimulatedRbcOptions,
   "answersSerialNumber" | "answersExecutionStatus" | "firmware" | "platform" | "repeatReplies"
@@ -64,10 +57,7 @@ function parseFirmware(text: string, command: string): { major: number; minor: n
   const major = m ? Number(m[1]) : Number.NaN;
   const minor = m ? Number(m[2]) : Number.NaN;
   if (!m || major > 255 || minor > 255) {
-    throw new UsageError(
-      `--firmware must be MAJOR.MINOR with each part 0-255 (e.g. 2.23 or 9.99), got "${text}".`,
-      command,
-    );
+    throw new UsageError(said(cliMessages, "cli.variant.firmware", { value: text }), command);
   }
   return { major, minor };
 }
@@ -75,14 +65,14 @@ function parseFirmware(text: string, command: string): { major: number; minor: n
 function parsePlatform(text: string, command: string): number {
   const n = Number(text);
   if (!/^\d{1,3}$/.test(text.trim()) || n > 255) {
-    throw new UsageError(`--platform must be a whole number from 0 to 255, got "${text}".`, command);
+    throw new UsageError(said(cliMessages, "cli.variant.platform", { value: text }), command);
   }
   return n;
 }
 
 function parseType(text: string, command: string): number {
   const m = /^0x([0-9a-f]{1,2})$/i.exec(text.trim());
-  if (!m) throw new UsageError(`--repeat-type must be a reply type such as 0x16, got "${text}".`, command);
+  if (!m) throw new UsageError(said(cliMessages, "cli.variant.repeatType", { value: text }), command);
   return Number.parseInt(m[1]!, 16);
 }
 
@@ -122,30 +112,39 @@ export function demoVariant(env: NodeJS.ProcessEnv, command?: string): SimVarian
       strict: true,
     }));
   } catch (e) {
-    const why = e instanceof Error ? e.message.replace(/\. To specify a positional.*$/s, ".") : String(e);
+    const why = parseFailure(e);
     throw new UsageError(
-      `${DEMO_VARIANT_VAR} takes the variant switches of \`rbc sim\` (e.g. "--no-serial --firmware 9.99"): ${why}`,
+      saidEach(cliMessages, "cli.variant.demoVariant", (l) => [
+        { variable: DEMO_VARIANT_VAR, reason: why[l] },
+      ]),
       command,
     );
   }
   try {
     return variantFromValues(values, where);
   } catch (e) {
-    if (e instanceof UsageError) throw new UsageError(`${DEMO_VARIANT_VAR}: ${e.message}`, command);
+    if (e instanceof UsageError) {
+      throw new UsageError(
+        saidEach(cliMessages, "cli.variant.inVariable", (l) => [
+          { variable: DEMO_VARIANT_VAR, reason: e.said[l] },
+        ]),
+        command,
+      );
+    }
     throw e;
   }
 }
 
 /** The variant in words, for `rbc sim`'s ready line: empty for the standard robot. */
-export function describeVariant(variant: SimVariant): string[] {
+export function describeVariant(variant: SimVariant, locale: Locale = "en"): string[] {
+  const t = translator(cliMessages, locale);
   const words: string[] = [];
-  if (variant.answersSerialNumber === false) words.push("no answer to 0x0C (serial number)");
-  if (variant.answersExecutionStatus === false) words.push("no answer to 0x1E (execution status)");
+  if (variant.answersSerialNumber === false) words.push(t("cli.variant.noSerial"));
+  if (variant.answersExecutionStatus === false) words.push(t("cli.variant.noStatus"));
   if (variant.repeatReplies) {
     const type = variant.repeatReplies.type;
-    words.push(
-      `the first 0x${type.toString(16).toUpperCase().padStart(2, "0")} (${commandName(type)}) reply repeated endlessly`,
-    );
+    const hex = `0x${type.toString(16).toUpperCase().padStart(2, "0")}`;
+    words.push(t("cli.variant.repeats", { type: hex, name: commandName(type) }));
   }
   return words;
 }
@@ -155,6 +154,13 @@ export function aboutRobot(
   firmware: { major: number; minor: number },
   serialNumber: string | undefined,
   platform: number,
+  locale: Locale = "en",
 ): string {
-  return `firmware ${formatFirmware(firmware)}, serial ${serialNumber ?? "not reported"}, platform ${platform} (${platformName(platform)})`;
+  const t = translator(cliMessages, locale);
+  return t("cli.variant.about", {
+    firmware: formatFirmware(firmware),
+    serial: serialNumber ?? t("cli.variant.serialNotReported"),
+    platform: String(platform),
+    name: platformName(platform),
+  });
 }

@@ -6,7 +6,9 @@
 import { constants } from "node:fs";
 import { access, readFile, writeFile } from "node:fs/promises";
 import { join } from "node:path";
+import { translator } from "../i18n/translate.ts";
 import {
+  type BackupProblem,
   createZerosBackup,
   parseZerosBackup,
   serializeZerosBackup,
@@ -14,6 +16,8 @@ import {
   zerosBackupFileName,
 } from "../protocol/zeros-backup.ts";
 import { CliError } from "./errors.ts";
+import { cliMessages } from "./messages.ts";
+import { said } from "./said.ts";
 
 export interface BackupSource {
   serialNumber: string;
@@ -55,24 +59,18 @@ export async function saveAutomaticBackup(dir: string, backup: ZerosBackup): Pro
       if ((e as NodeJS.ErrnoException).code !== "EEXIST") throw backupWriteError(path, e);
     }
   }
-  throw new CliError("backup-failed", `Could not find a free backup file name in ${dir}.`);
+  throw new CliError("backup-failed", said(cliMessages, "cli.zerosFile.noFreeName", { dir }));
 }
 
 function backupWriteError(path: string, e: unknown): CliError {
   const why = e instanceof Error ? e.message : String(e);
-  return new CliError(
-    "backup-failed",
-    `Could not write the zero backup ${path} (${why}); nothing was sent to the robot.`,
-  );
+  return new CliError("backup-failed", said(cliMessages, "cli.zerosFile.backupNotWritten", { path, why }));
 }
 
 /** Refuses an existing `path` unless `overwrite` (checked before connecting, and again when writing). */
 export async function refuseExisting(path: string, overwrite: boolean): Promise<void> {
   if (!overwrite && (await exists(path))) {
-    throw new CliError(
-      "file-exists",
-      `${path} already exists. Choose another name, or add --force to replace it.`,
-    );
+    throw new CliError("file-exists", said(cliMessages, "cli.zerosFile.exists", { path }));
   }
 }
 
@@ -84,20 +82,35 @@ export async function writeBackupFile(
   now = new Date(),
 ): Promise<ZerosBackup> {
   if (!overwrite && (await exists(path))) {
-    throw new CliError(
-      "file-exists",
-      `${path} already exists. Choose another name, or add --force to replace it.`,
-    );
+    throw new CliError("file-exists", said(cliMessages, "cli.zerosFile.exists", { path }));
   }
   const backup = createZerosBackup({ ...source, savedAt: now });
   try {
     await writeFile(path, serializeZerosBackup(backup));
   } catch (e) {
     const why = e instanceof Error ? e.message : String(e);
-    throw new CliError("backup-failed", `Could not write ${path} (${why}).`);
+    throw new CliError("backup-failed", said(cliMessages, "cli.zerosFile.notWritten", { path, why }));
   }
   return backup;
 }
+
+/** A file that cannot be read, for every command that reads one: "Cannot read x.rbm: no such file." */
+export function unreadable(path: string, e: unknown): CliError {
+  if ((e as NodeJS.ErrnoException).code === "ENOENT") {
+    return new CliError("file-unreadable", said(cliMessages, "cli.file.noSuchFile", { path }));
+  }
+  return new CliError("file-unreadable", said(cliMessages, "cli.file.unreadable", { path, why: String(e) }));
+}
+
+/** In Korean, what is wrong with a backup file, by the problem the protocol found (its English says more). */
+const BACKUP_PROBLEM_TEXT = {
+  "not-json": "cli.zerosFile.notJson",
+  "wrong-format": "cli.zerosFile.wrongFormat",
+  "wrong-version": "cli.zerosFile.wrongVersion",
+  "wrong-count": "cli.zerosFile.wrongCount",
+  "out-of-range": "cli.zerosFile.outOfRange",
+  invalid: "cli.zerosFile.invalid",
+} as const satisfies Readonly<Record<BackupProblem, string>>;
 
 /** Reads and checks a backup file (zod schema and the ±15 rule); a refusal says what is wrong. */
 export async function readBackupFile(path: string): Promise<ZerosBackup> {
@@ -105,10 +118,12 @@ export async function readBackupFile(path: string): Promise<ZerosBackup> {
   try {
     text = await readFile(path, "utf8");
   } catch (e) {
-    const why = (e as NodeJS.ErrnoException).code === "ENOENT" ? "no such file" : String(e);
-    throw new CliError("file-unreadable", `Cannot read ${path}: ${why}.`);
+    throw unreadable(path, e);
   }
   const parsed = parseZerosBackup(text);
-  if (!parsed.ok) throw new CliError(`backup-${parsed.problem}`, `${path}: ${parsed.message}`);
+  if (!parsed.ok) {
+    const ko = translator(cliMessages, "ko")(BACKUP_PROBLEM_TEXT[parsed.problem], { path });
+    throw new CliError(`backup-${parsed.problem}`, { en: `${path}: ${parsed.message}`, ko });
+  }
   return parsed.backup;
 }

@@ -1,4 +1,5 @@
 export { DirectMode, SERVO_IDS } from "./direct-mode.ts";
+export { type ErrorTextOptions, errorText, technicalDetail, uploadOutcomeText } from "./error-text.ts";
 export * from "./errors.ts";
 export {
   DEFAULT_FIRMWARE_TIMEOUTS,
@@ -12,6 +13,7 @@ export {
   transportFirmwareIo,
   updateFirmware,
 } from "./firmware-update.ts";
+export { deviceErrorMessages } from "./messages.ts";
 export {
   type FileUploadOptions,
   type FileUploadResult,

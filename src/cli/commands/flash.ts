@@ -1,7 +1,6 @@
 import { readFile } from "node:fs/promises";
 import { basename } from "node:path";
 import {
-  FIRMWARE_NOTICES,
   FirmwareUpdateError,
   type FirmwareUpdateOptions,
   type FirmwareUpdateProgress,
@@ -11,14 +10,27 @@ import {
   transportFirmwareIo,
   updateFirmware,
 } from "../../device/firmware-update.ts";
+import type { Locale } from "../../i18n/locale.ts";
+import { formatNumber, translator } from "../../i18n/translate.ts";
 import { IntelHexError, type IntelHexImage, parseIntelHex } from "../../protocol/intel-hex.ts";
 import { formatFirmware } from "../../shared/format.ts";
 import { noExtraArguments, parseCommand } from "../args.ts";
-import type { CommandDef } from "../command.ts";
+import { type CommandDef, localeOf } from "../command.ts";
 import { confirm } from "../confirm.ts";
-import { connectRobot, openRobotPort } from "../connect.ts";
+import { connectRobot, openRobotPort, robotPlace } from "../connect.ts";
 import { CliError, EXIT, UsageError } from "../errors.ts";
+import { COMMAND_HELP } from "../help/command-help.ts";
 import type { Output } from "../output.ts";
+import { said, saidEach } from "../said.ts";
+import { unreadable } from "../zeros-files.ts";
+import {
+  fileSummaryText,
+  firmwareFailureText,
+  firmwareNotice,
+  firmwareResultText,
+  hexProblemText,
+} from "./flash-words.ts";
+import { commandMessages } from "./messages.ts";
 
 const OPTIONS = {
   yes: { type: "boolean", short: "y" },
@@ -34,19 +46,16 @@ async function readHex(file: string): Promise<IntelHexImage> {
   try {
     text = await readFile(file, "utf8");
   } catch (e) {
-    const why = (e as NodeJS.ErrnoException).code === "ENOENT" ? "no such file" : String(e);
-    throw new CliError("file-unreadable", `Cannot read ${file}: ${why}.`);
+    throw unreadable(file, e);
   }
   try {
     return parseIntelHex(text);
   } catch (e) {
     if (!(e instanceof IntelHexError)) throw e;
-    throw new CliError(
-      "hex-invalid",
-      `${basename(file)} is not a firmware file the RBC's bootloader can take. ${e.message} Nothing was sent.`,
-      EXIT.failed,
-      { file, reason: e.code, line: e.line ?? null },
-    );
+    const words = saidEach(commandMessages, "cmd.flash.notFirmware", (l) => [
+      { file: basename(file), reason: hexProblemText(e, l) },
+    ]);
+    throw new CliError("hex-invalid", words, EXIT.failed, { file, reason: e.code, line: e.line ?? null });
   }
 }
 
@@ -62,7 +71,10 @@ class FirmwareProgressBar {
   private lastStep = -1;
   private drawn = false;
 
-  constructor(private readonly out: Output) {}
+  constructor(
+    private readonly out: Output,
+    private readonly locale: Locale = "en",
+  ) {}
 
   update(p: FirmwareUpdateProgress): void {
     if (p.phase !== "sending" && p.phase !== "starting") return;
@@ -71,14 +83,14 @@ class FirmwareProgressBar {
       const t = performance.now();
       if (!done && t - this.lastDraw < 100) return;
       this.lastDraw = t;
-      this.out.err(`\r${renderProgress(p)}\x1b[K`);
+      this.out.err(`\r${renderProgress(p, this.locale)}\x1b[K`);
       this.drawn = true;
       return;
     }
     const step = Math.floor((p.bytesDone / Math.max(1, p.bytes)) * 10);
     if (step === this.lastStep) return;
     this.lastStep = step;
-    this.out.err(`${renderProgress(p)}\n`);
+    this.out.err(`${renderProgress(p, this.locale)}\n`);
   }
 
   finish(): void {
@@ -87,21 +99,26 @@ class FirmwareProgressBar {
   }
 }
 
-export function renderProgress(p: FirmwareUpdateProgress): string {
-  const n = (v: number) => Math.round(v).toLocaleString("en-US");
+export function renderProgress(p: FirmwareUpdateProgress, locale: Locale = "en"): string {
+  const t = translator(commandMessages, locale);
+  const n = (v: number) => formatNumber(Math.round(v), locale);
   const fraction = p.bytes > 0 ? Math.min(1, p.bytesDone / p.bytes) : 1;
   const width = 20;
   const filled = Math.round(fraction * width);
   const bar = `[${"#".repeat(filled)}${"-".repeat(width - filled)}]`;
-  const rate = p.bytesPerSecond === undefined ? "" : `${n(p.bytesPerSecond).padStart(6)} B/s`;
+  const rate =
+    p.bytesPerSecond === undefined ? "" : t("cmd.flash.rate", { rate: n(p.bytesPerSecond).padStart(6) });
+  const seconds = p.msLeft === undefined ? "" : (p.msLeft / 1000).toFixed(1);
   const left =
     p.linesDone >= p.lines
-      ? "done"
+      ? t("cmd.flash.done")
       : p.msLeft === undefined
         ? ""
-        : `${(p.msLeft / 1000).toFixed(1)} s left${p.paused ? " (page write)" : ""}`;
-  const lines = `${n(p.linesDone).padStart(n(p.lines).length)}/${n(p.lines)} lines`;
-  const bytes = `${n(p.bytesDone).padStart(n(p.bytes).length)}/${n(p.bytes)} bytes`;
+        : p.paused
+          ? t("cmd.flash.leftPaused", { seconds })
+          : t("cmd.flash.left", { seconds });
+  const lines = t("cmd.flash.lines", { done: n(p.linesDone).padStart(n(p.lines).length), total: n(p.lines) });
+  const bytes = t("cmd.flash.bytes", { done: n(p.bytesDone).padStart(n(p.bytes).length), total: n(p.bytes) });
   return `${bar} ${lines}  ${bytes} ${String(Math.floor(fraction * 100)).padStart(3)}%  ${rate}  ${left}`
     .replace(/ {3,}$/, "")
     .trimEnd();
@@ -109,34 +126,8 @@ export function renderProgress(p: FirmwareUpdateProgress): string {
 
 export const flashCommand: CommandDef = {
   name: "flash",
-  summary: "check a firmware file (.hex) and write it to the robot through its bootloader",
   usage: "rbc flash FILE.hex [--yes] [--recover] (--port PATH | --demo)",
-  description: `
-Replaces the robot's firmware with an Intel HEX file, through the bootloader in the RBC's ATmega128 (the
-protocol of RBCLoader, PROTOCOL.md §11). First the file is checked — record checksums, record types 00, 01,
-02 and 04 only, every address inside the 128 KiB flash and below the bootloader's section (0x1E000) — and
-summarised (size, address range, flash pages, lines); a bad file is refused with the line to blame, and
-nothing is sent. Then rbc reads the robot's current version, asks once for confirmation (a real robot only:
-y at the prompt, or --yes), and asks you to switch the robot off and on: the bootloader announces itself
-when the robot starts, and the file goes to it line by line, with a progress bar on stderr (lines, bytes,
-rate, time left). At the end rbc reads the version the new firmware reports and says it in a sentence.
-
-Experimental on real robots. The bootloader itself is never written, so a failed or interrupted update is
-fixed by running the update again. Keep the robot powered and lying down, and the cable plugged in.
-
-The demo robot (--demo) has the same bootloader; it restarts by itself when asked to. Try it with the
-project's example file, which declares firmware 2.50:
-  rbc flash examples/firmware/demo-2.50.hex --demo
-
-A robot whose firmware no longer answers (after a failed update) cannot be connected to as usual: --recover
-opens the port without the usual handshake and runs the update the same way.
-
-Ctrl-C stops the update: rbc says what the robot holds (nothing written, or a firmware that may be
-incomplete) and how to recover, and exits with code 130.`,
-  options: [
-    ["-y, --yes", "Confirm an update of a real robot without the prompt."],
-    ["--recover", "Do not expect the robot to answer first (a robot left without a working firmware)."],
-  ],
+  help: COMMAND_HELP.flash,
   examples: [
     "rbc flash examples/firmware/demo-2.50.hex --demo",
     "rbc flash firmware.hex --port /dev/ttyUSB0",
@@ -147,23 +138,26 @@ incomplete) and how to recover, and exits with code 130.`,
     const { values, positionals } = parseCommand("flash", env.argv, OPTIONS);
     noExtraArguments("flash", positionals, 1);
     const file = positionals[0];
-    if (file === undefined) {
-      throw new UsageError(
-        "Give the firmware file to write, e.g. rbc flash examples/firmware/demo-2.50.hex --demo.",
-        "flash",
-      );
-    }
+    if (file === undefined) throw new UsageError(said(commandMessages, "cmd.flash.noFile"), "flash");
+    const locale = localeOf(env);
+    const t = translator(commandMessages, locale);
+    const nothingSent = () =>
+      new CliError("interrupted", said(commandMessages, "cmd.nothingSent"), EXIT.interrupted);
     const image = await readHex(file);
     const name = basename(file);
-    env.out.line(`${name}: ${firmwareFileSummary(image.summary)}.`);
+    const summary =
+      locale === "en" ? firmwareFileSummary(image.summary) : fileSummaryText(image.summary, locale);
+    env.out.line(`${name}: ${summary}.`);
     const real = !values.demo;
     if (real && !values.yes && !env.stdin.isTTY) {
       throw new CliError(
         "confirmation-required",
-        `${FIRMWARE_NOTICES.experimental} Add --yes to update anyway (nothing was sent).`,
+        saidEach(commandMessages, "cmd.flash.needsYes", (l) => [
+          { notice: firmwareNotice("experimental", l) },
+        ]),
       );
     }
-    if (env.signal.aborted) throw new CliError("interrupted", "Nothing was sent.", EXIT.interrupted);
+    if (env.signal.aborted) throw nothingSent();
 
     // The robot: connected as usual (its version read first), or for --recover a bare port.
     let before: { major: number; minor: number } | undefined;
@@ -178,7 +172,7 @@ incomplete) and how to recover, and exits with code 130.`,
       clock = port.clock;
       flash = (options) =>
         updateFirmware(transportFirmwareIo(port.transport, { clock: port.clock }), image, options);
-      env.out.line(`Opened ${where} without asking the robot anything (--recover).`);
+      env.out.line(t("cmd.flash.opened", { robot: robotPlace(port, locale) }));
     } else {
       const robot = await connectRobot("flash", values, env, { handlesInterrupt: true });
       where = robot.where;
@@ -186,45 +180,48 @@ incomplete) and how to recover, and exits with code 130.`,
       clock = robot.clock;
       before = robot.identity.firmware;
       flash = (options) => robot.client.updateFirmware(image, options);
+      const version = { version: formatFirmware(before) };
       env.out.line(
-        `${robot.demo ? "The demo robot" : `The robot on ${where}`} reports firmware ${formatFirmware(before)}.`,
+        robot.demo
+          ? t("cmd.flash.demoReports", version)
+          : t("cmd.flash.robotReports", { ...version, port: where }),
       );
     }
 
     if (real) {
-      env.out.note(FIRMWARE_NOTICES.experimental);
-      env.out.note(FIRMWARE_NOTICES.recovery);
-      env.out.note(FIRMWARE_NOTICES.keepPowered);
+      env.out.note(firmwareNotice("experimental", locale));
+      env.out.note(firmwareNotice("recovery", locale));
+      env.out.note(firmwareNotice("keepPowered", locale));
       const answer = values.yes
         ? "yes"
-        : await confirm(env, `Write ${name} to the robot on ${where}, replacing its firmware?`);
-      if (answer === "interrupted") throw new CliError("interrupted", "Nothing was sent.", EXIT.interrupted);
-      if (answer === "no") throw new CliError("not-confirmed", "Update not confirmed; nothing was sent.");
+        : await confirm(env, t("cmd.flash.question", { file: name, port: where }));
+      if (answer === "interrupted") throw nothingSent();
+      if (answer === "no")
+        throw new CliError("not-confirmed", said(commandMessages, "cmd.flash.notConfirmed"));
     }
-    if (env.signal.aborted) throw new CliError("interrupted", "Nothing was sent.", EXIT.interrupted);
+    if (env.signal.aborted) throw nothingSent();
 
-    const bar = new FirmwareProgressBar(env.out);
+    const bar = new FirmwareProgressBar(env.out, locale);
     let announced = false;
     let result: FirmwareUpdateResult;
     try {
       result = await flash({
         signal: env.signal,
         onAskPowerCycle: () => {
+          const ask = firmwareNotice("askPowerCycle", locale);
           if (bootloader) {
-            env.out.note(`${FIRMWARE_NOTICES.askPowerCycle} ${FIRMWARE_NOTICES.demoRestarts}`);
+            env.out.note(`${ask} ${firmwareNotice("demoRestarts", locale)}`);
             const boot = bootloader;
             clock.setTimeout(() => boot.powerCycle(), DEMO_POWER_CYCLE_MS);
           } else {
-            env.out.note(`${FIRMWARE_NOTICES.askPowerCycle} Waiting up to 60 s; keep the cable plugged in.`);
+            env.out.note(`${ask} ${t("cmd.flash.waiting")}`);
           }
         },
         onProgress: (p) => {
           if (!announced && p.phase === "sending") {
             announced = true;
-            env.out.note("The bootloader answered; sending the file.");
-            env.setExitNote(
-              "The firmware update was interrupted: the robot's firmware may be incomplete. Switch the robot off and on and run the update again (the bootloader is never overwritten).",
-            );
+            env.out.note(t("cmd.flash.sending"));
+            env.setExitNote(t("cmd.flash.exitNote"));
           }
           bar.update(p);
         },
@@ -235,11 +232,13 @@ incomplete) and how to recover, and exits with code 130.`,
       if (e instanceof FirmwareUpdateError) {
         const details = { failure: e.failure, holds: e.holds, line: e.line ?? null, file };
         if (e.failure === "cancelled") {
-          env.out.note(`rbc: firmware update interrupted. ${e.message}`);
+          const what = locale === "en" ? e.message : firmwareFailureText(e, locale);
+          env.out.note(`rbc: ${t("cmd.flash.interrupted", { what })}`);
           env.out.result({ ok: false, error: { code: "interrupted", message: e.message, ...details } });
           return EXIT.interrupted;
         }
-        throw new CliError(e.failure, e.message, EXIT.failed, details);
+        const words = { en: e.message, ko: firmwareFailureText(e, "ko") };
+        throw new CliError(e.failure, words, EXIT.failed, details);
       }
       throw e;
     }
@@ -260,12 +259,18 @@ incomplete) and how to recover, and exits with code 130.`,
       bytesPerSecond: Math.round(result.bytesPerSecond),
       linesPerSecond: Math.round(result.linesPerSecond),
     });
-    const n = (v: number) => Math.round(v).toLocaleString("en-US");
-    env.out.line(firmwareResultSentence(result, before));
+    const n = (v: number) => Math.round(v);
     env.out.line(
-      `Sent ${n(result.bytes)} bytes at ${n(result.bytesPerSecond)} bytes/s (${n(result.linesPerSecond)} lines/s).`,
+      locale === "en" ? firmwareResultSentence(result, before) : firmwareResultText(result, before, locale),
     );
-    env.out.line("The robot was restarted: run Basic posture (`rbc run 7`) before other motions.");
+    env.out.line(
+      t("cmd.flash.sent", {
+        bytes: n(result.bytes),
+        rate: n(result.bytesPerSecond),
+        lines: n(result.linesPerSecond),
+      }),
+    );
+    env.out.line(t("cmd.flash.restarted"));
     return EXIT.ok;
   },
 };

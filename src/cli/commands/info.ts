@@ -1,30 +1,28 @@
-import {
-  ACTION_AREA_BYTES,
-  errorCodeText,
-  MOTION_AREA_BYTES,
-  NO_ERROR,
-  platformName,
-} from "../../protocol/catalog.ts";
+import { translator } from "../../i18n/translate.ts";
+import { ACTION_AREA_BYTES, MOTION_AREA_BYTES, platformName } from "../../protocol/catalog.ts";
+import { platformWarning } from "../../protocol/plausibility.ts";
 import { formatFirmware } from "../../shared/format.ts";
 import { noExtraArguments, parseCommand } from "../args.ts";
-import type { CommandDef } from "../command.ts";
+import { type CommandDef, localeOf } from "../command.ts";
 import { connectRobot } from "../connect.ts";
 import { EXIT } from "../errors.ts";
+import { COMMAND_HELP } from "../help/command-help.ts";
+import { displayWidth } from "../help/render.ts";
+import { errorCodeWords, platformWords } from "../robot-words.ts";
+import { commandMessages } from "./messages.ts";
 
-/** "no error" or "3: too many motions, or motion memory full". */
-export function errorCodeWords(code: number): string {
-  return code === NO_ERROR ? "no error" : `${code}: ${errorCodeText(code)}`;
+export { errorCodeWords };
+
+/** "  Firmware       2.23": labels padded to one column (Hangul counts two), values after them. */
+function labelledRows(rows: ReadonlyArray<readonly [string, string]>): string[] {
+  const width = Math.max(13, ...rows.map(([label]) => displayWidth(label)));
+  return rows.map(([label, value]) => `  ${label}${" ".repeat(width - displayWidth(label) + 2)}${value}`);
 }
 
 export const infoCommand: CommandDef = {
   name: "info",
-  summary: "firmware, serial number, platform, error code and free memory",
   usage: "rbc info (--port PATH | --demo) [--json]",
-  description: `
-Connects, then reads the firmware version, the 13-digit serial number (when the firmware answers it), the
-robot's platform (HUNO, DINO, DOGY or PF2, from the platform byte of its replies), the last error code in words, and the free bytes of the
-motion memory (24,576 when empty) and the action memory (8,192 when empty). Changes nothing on the robot.`,
-  options: [],
+  help: COMMAND_HELP.info,
   examples: ["rbc info --port /dev/ttyUSB0", "rbc info --demo --json"],
   talksToRobot: true,
   async run(env) {
@@ -53,17 +51,35 @@ motion memory (24,576 when empty) and the action memory (8,192 when empty). Chan
       // Replies no request asked for (late, or repeated by a firmware that repeats them), discarded so far.
       unaskedReplies: client.stats.unansweredReplies,
     });
-    const n = (v: number) => v.toLocaleString("en-US");
-    env.out.line(robot.demo ? "The demo robot (simulated)" : `Robot on ${robot.where}`);
-    env.out.line(`  Firmware       ${firmware}`);
-    env.out.line(`  Serial number  ${serialNumber ?? "not reported (the robot did not answer 0x0C)"}`);
-    const name = platformName(platform);
-    env.out.line(`  Platform       ${name.startsWith("unknown") ? name : `${name} (${platform})`}`);
-    env.out.line(`  Error code     ${errorCodeWords(errorCode)}`);
-    env.out.line(
-      `  Free memory    motion ${n(freeMotion)} of ${n(MOTION_AREA_BYTES)} bytes, action ${n(freeAction)} of ${n(ACTION_AREA_BYTES)} bytes`,
-    );
-    for (const warning of warnings) env.out.note(`Warning: ${warning}`);
+    const locale = localeOf(env);
+    const t = translator(commandMessages, locale);
+    env.out.line(robot.demo ? t("cmd.info.demoRobot") : t("cmd.info.robotOn", { port: robot.where }));
+    const known = !platformName(platform).startsWith("unknown");
+    const rows: Array<readonly [string, string]> = [
+      [t("cmd.info.firmware"), firmware],
+      [t("cmd.info.serialNumber"), serialNumber ?? t("cmd.info.serialNotReported")],
+      [
+        t("cmd.info.platform"),
+        known ? `${platformName(platform)} (${platform})` : platformWords(platform, locale),
+      ],
+      [t("cmd.info.errorCode"), errorCodeWords(errorCode, locale)],
+      [
+        t("cmd.info.freeMemory"),
+        t("cmd.info.free", {
+          motion: freeMotion,
+          motionSize: MOTION_AREA_BYTES,
+          action: freeAction,
+          actionSize: ACTION_AREA_BYTES,
+        }),
+      ],
+    ];
+    for (const line of labelledRows(rows)) env.out.line(line);
+    // The client's warnings are English sentences; the one it gives (an unknown platform) is said here too.
+    const said = (warning: string) =>
+      locale !== "en" && warning === platformWarning(platform)
+        ? t("cmd.info.platformWarning", { platform: String(platform) })
+        : warning;
+    for (const warning of warnings) env.out.note(t("cmd.warning", { warning: said(warning) }));
     return EXIT.ok;
   },
 };

@@ -1,52 +1,45 @@
+import { translator } from "../../i18n/translate.ts";
 import { noExtraArguments, parseCommand } from "../args.ts";
-import type { CommandDef } from "../command.ts";
+import { type CommandDef, localeOf } from "../command.ts";
 import { confirm } from "../confirm.ts";
-import { connectRobot } from "../connect.ts";
+import { connectRobot, robotPlace } from "../connect.ts";
 import { CliError, EXIT } from "../errors.ts";
+import { COMMAND_HELP } from "../help/command-help.ts";
+import { said } from "../said.ts";
+import { commandMessages } from "./messages.ts";
 
 const OPTIONS = { yes: { type: "boolean", short: "y" } } as const;
 
-const WARNING = "Hold the robot: every servo will go passive and it will fall if nobody holds it.";
-
 export const limpCommand: CommandDef = {
   name: "limp",
-  summary: "make every servo passive (the robot falls unless held); asks first",
   usage: "rbc limp [--yes] (--port PATH | --demo)",
-  description: `
-Makes servos 0-15 passive: they stop holding, and a standing robot falls unless someone holds it. rbc asks
-first (y/N); --yes skips the question, and without a terminal --yes is required. A motion that plays is
-ended with 7 first and a sound waited out, as the robot takes nothing else meanwhile. rbc reports how many
-servos confirmed. To end a motion and keep the robot standing, use \`rbc stop\` instead.
-
-The robot is left in its normal mode when rbc exits; the servos stay passive until they are moved again
-(a motion, or the panel's Servos view).`,
-  options: [["-y, --yes", "Make the servos passive without the question."]],
+  help: COMMAND_HELP.limp,
   examples: ["rbc limp --port /dev/ttyUSB0", "rbc limp --demo --yes"],
   talksToRobot: true,
   async run(env) {
     const { values, positionals } = parseCommand("limp", env.argv, OPTIONS);
     noExtraArguments("limp", positionals, 0);
+    const locale = localeOf(env);
+    const t = translator(commandMessages, locale);
     if (!values.yes && !env.stdin.isTTY) {
-      throw new CliError(
-        "confirmation-required",
-        `${WARNING} Add --yes to make every servo passive (nothing was sent).`,
-      );
+      throw new CliError("confirmation-required", said(commandMessages, "cmd.limp.needsYes"));
     }
     const robot = await connectRobot("limp", values, env);
     if (!values.yes) {
-      env.out.note(WARNING);
-      const answer = await confirm(env, `Make every servo of ${robot.where} passive?`);
-      if (answer === "interrupted") throw new CliError("interrupted", "Nothing was sent.", EXIT.interrupted);
-      if (answer === "no") throw new CliError("not-confirmed", "Limp not confirmed; nothing was sent.");
+      env.out.note(t("cmd.limp.warning"));
+      const answer = await confirm(env, t("cmd.limp.question", { robot: robotPlace(robot, locale) }));
+      if (answer === "interrupted") {
+        throw new CliError("interrupted", said(commandMessages, "cmd.nothingSent"), EXIT.interrupted);
+      }
+      if (answer === "no")
+        throw new CliError("not-confirmed", said(commandMessages, "cmd.limp.notConfirmed"));
     }
     const { confirmed, silent } = await robot.client.limp();
     if (silent.length === 0) {
-      env.out.line(
-        `All ${confirmed.length} servos confirmed passive. Hold the robot: it cannot stand on its own.`,
-      );
+      env.out.line(t("cmd.limp.allPassive", { confirmed: String(confirmed.length) }));
     } else {
       env.out.line(
-        `${confirmed.length} servos confirmed passive; servo ${silent.join(", ")} did not answer. If anything still moves, switch the robot off.`,
+        t("cmd.limp.someSilent", { confirmed: String(confirmed.length), silent: silent.join(", ") }),
       );
     }
     env.out.result({ ok: silent.length === 0, confirmed, silent });

@@ -6,6 +6,9 @@ import {
   type TetheredPlayProgress,
   type TetheredPlayResult,
 } from "../../device/index.ts";
+import type { Locale } from "../../i18n/locale.ts";
+import { translator } from "../../i18n/translate.ts";
+import { formatSeconds } from "../../i18n/units.ts";
 import {
   type Motion,
   MotionError,
@@ -16,13 +19,18 @@ import {
 } from "../../motion/index.ts";
 import { RbmError, STANDARD_ZEROS } from "../../protocol/index.ts";
 import { noExtraArguments, parseCommand } from "../args.ts";
-import type { CommandDef, RunEnv } from "../command.ts";
+import { type CommandDef, localeOf, type RunEnv } from "../command.ts";
 import { confirm } from "../confirm.ts";
 import { connectRobot } from "../connect.ts";
-import { CliError, EXIT, UsageError } from "../errors.ts";
+import { CliError, EXIT, errorLine, UsageError } from "../errors.ts";
+import { COMMAND_HELP } from "../help/command-help.ts";
+import { cliMessages } from "../messages.ts";
 import type { Output } from "../output.ts";
+import { said, saidEach } from "../said.ts";
 import { issueLines, issuesJson } from "../upload-report.ts";
-import { rbmInvalid } from "./upload.ts";
+import { unreadable } from "../zeros-files.ts";
+import { commandMessages } from "./messages.ts";
+import { issueWords, rbmInvalid } from "./upload.ts";
 
 const OPTIONS = {
   scenes: { type: "string" },
@@ -30,7 +38,12 @@ const OPTIONS = {
 } as const;
 
 /** Said before a real robot moves (UI.md: moving actions ask once and say what will happen). */
-export const MOVE_WARNING = "The robot will move. Hold it or make sure it can stand.";
+export const MOVE_WARNING = translator(cliMessages, "en")("cli.play.moveWarning");
+
+/** The move warning in `locale`. */
+function moveWarning(locale: Locale): string {
+  return translator(cliMessages, locale)("cli.play.moveWarning");
+}
 
 const MAX_WARNINGS_SHOWN = 5;
 
@@ -41,30 +54,41 @@ export function parseScenes(text: string | undefined, doc: Motion, file: string)
   const last = doc.scenes.length - 1;
   if (text === undefined) return { from: 0, to: last };
   const m = /^(\d+)(?:-(\d+))?$/.exec(text.trim());
-  if (!m) {
+  if (!m) throw new UsageError(said(commandMessages, "cmd.play.scenesForm", { value: text }), "play");
+  const from = Number(m[1]);
+  const to = m[2] === undefined ? from : Number(m[2]);
+  if (to < from) {
     throw new UsageError(
-      `--scenes takes a scene or a range of scenes, e.g. 2 or 1-3 (the first scene is 0), not "${text}".`,
+      said(commandMessages, "cmd.play.scenesBackwards", { from: String(from), to: String(to) }),
       "play",
     );
   }
-  const from = Number(m[1]);
-  const to = m[2] === undefined ? from : Number(m[2]);
-  if (to < from) throw new UsageError(`--scenes runs forwards: ${from}-${to} does not.`, "play");
   if (to > last) {
-    throw new UsageError(
-      `${basename(file)} has scenes 0-${last}; --scenes ${text} goes beyond them.`,
-      "play",
-    );
+    const beyond = { file: basename(file), last: String(last), value: text };
+    throw new UsageError(said(commandMessages, "cmd.play.scenesBeyond", beyond), "play");
   }
   return { from, to };
 }
 
-function scenesText({ from, to }: Range, doc: Motion): string {
-  if (from === 0 && to === doc.scenes.length - 1) return `all ${doc.scenes.length} scenes`;
-  return from === to ? `scene ${from}` : `scenes ${from}-${to}`;
+function scenesText({ from, to }: Range, doc: Motion, locale: Locale): string {
+  const t = translator(commandMessages, locale);
+  if (from === 0 && to === doc.scenes.length - 1)
+    return t("cmd.play.allScenes", { total: String(doc.scenes.length) });
+  return from === to
+    ? t("cmd.play.oneScene", { scene: String(from) })
+    : t("cmd.play.someScenes", { from: String(from), to: String(to) });
 }
 
-const seconds = (ms: number) => `${(ms / 1000).toFixed(1)} s`;
+const seconds = (ms: number, locale: Locale) => formatSeconds(ms / 1000, locale);
+
+/** A frame of tethered play in words (`frameLabel` in English): "scene 2, frame 4" / "장면 2, 프레임 4". */
+function frameWords(frame: { scene: number; frame: number }, locale: Locale): string {
+  if (locale === "en") return frameLabel(frame);
+  const t = translator(commandMessages, locale);
+  return frame.scene < 0
+    ? t("cmd.play.transitionFrame", { frame: String(frame.frame) })
+    : t("cmd.play.sceneFrame", { scene: String(frame.scene), frame: String(frame.frame) });
+}
 
 /** Reads and checks the file; nothing is opened or sent when it is wrong. */
 async function readMotion(env: RunEnv, file: string): Promise<Motion> {
@@ -72,8 +96,7 @@ async function readMotion(env: RunEnv, file: string): Promise<Motion> {
   try {
     text = await readFile(file, "utf8");
   } catch (e) {
-    const why = (e as NodeJS.ErrnoException).code === "ENOENT" ? "no such file" : String(e);
-    throw new CliError("file-unreadable", `Cannot read ${file}: ${why}.`);
+    throw unreadable(file, e);
   }
   try {
     return openMotion(text);
@@ -96,6 +119,7 @@ class PlayProgressLine {
     private readonly out: Output,
     private readonly doc: Motion,
     private readonly range: Range,
+    private readonly locale: Locale = "en",
   ) {}
 
   update(p: TetheredPlayProgress): void {
@@ -119,57 +143,69 @@ class PlayProgressLine {
   }
 
   render(p: TetheredPlayProgress): string {
-    const time = `${seconds(p.elapsedMs).slice(0, -2)} of ${seconds(p.durationMs)}`;
-    if (p.scene < 0) return `Moving to the first pose, step ${p.frame.frame}, ${time}`;
+    const t = translator(commandMessages, this.locale);
+    const time = t("cmd.play.time", {
+      elapsed: (p.elapsedMs / 1000).toFixed(1),
+      duration: seconds(p.durationMs, this.locale),
+    });
+    if (p.scene < 0) return t("cmd.play.toFirstPose", { step: String(p.frame.frame), time });
     const scene = this.doc.scenes[p.scene]!;
     const k = p.scene - this.range.from + 1;
     const n = this.range.to - this.range.from + 1;
-    return `Scene ${p.scene} "${scene.name}" (${k} of ${n}), frame ${p.frame.frame} of ${scene.frames}, ${time}`;
+    return t("cmd.play.progress", {
+      scene: String(p.scene),
+      name: scene.name,
+      k: String(k),
+      n: String(n),
+      frame: String(p.frame.frame),
+      frames: String(scene.frames),
+      time,
+    });
   }
 }
 
-/** The one sentence of what the robot confirmed after a finished play. */
-export function finishedSentence(result: TetheredPlayResult, what: string): string {
-  const played = `Played ${what}: ${result.framesSent} frames in ${seconds(result.durationMs)}`;
-  const late =
-    result.maxLateMs >= 5 ? ` (frames went out up to ${Math.round(result.maxLateMs)} ms late)` : "";
+/** The one sentence of what the robot confirmed after a finished play; `what` is said in `locale`. */
+export function finishedSentence(result: TetheredPlayResult, what: string, locale: Locale = "en"): string {
+  const t = translator(commandMessages, locale);
+  const played = {
+    what,
+    frames: String(result.framesSent),
+    duration: seconds(result.durationMs, locale),
+    late: result.maxLateMs >= 5 ? ` ${t("cmd.play.late", { ms: String(Math.round(result.maxLateMs)) })}` : "",
+  };
   const back = result.readBack;
-  if (!back) return `${played}${late}; the robot was not read afterwards, so nothing is confirmed.`;
+  if (!back) return t("cmd.play.playedUnread", played);
   const answered = back.positions.filter((p) => p !== undefined).length;
+  const servos = back.silent.join(", ");
   const silent =
     back.silent.length === 0
       ? ""
-      : ` Servo ${back.silent.join(", ")} did not answer: check ${back.silent.length === 1 ? "its cable" : "their cables"}.`;
-  const within = back.maxDeviation === 0 ? "at" : `within ${back.maxDeviation} counts of`;
-  return `${played}${late}. Read back afterwards, ${answered} servos are ${within} the last frame sent.${silent}`;
+      : ` ${back.silent.length === 1 ? t("cmd.play.silentOne", { servos }) : t("cmd.play.silentMany", { servos })}`;
+  const read = { ...played, answered: String(answered), silent };
+  return back.maxDeviation === 0
+    ? t("cmd.play.playedAt", read)
+    : t("cmd.play.playedWithin", { ...read, deviation: String(back.maxDeviation) });
+}
+
+/** What a failed tethered play left the servos holding, in `locale`. */
+function playHoldsText(e: TetheredPlayError, locale: Locale): string {
+  const t = translator(commandMessages, locale);
+  switch (e.holds) {
+    case "nothing-sent":
+      return t("cmd.play.holds.nothingSent");
+    case "last-frame":
+      return e.lastFrame
+        ? t("cmd.play.holds.lastFrame", { frame: frameWords(e.lastFrame, locale) })
+        : t("cmd.play.holds.lastFrameUnnamed");
+    default:
+      return t("cmd.play.holds.unknown");
+  }
 }
 
 export const playCommand: CommandDef = {
   name: "play",
-  summary: "play a motion file (.rbm) on the robot frame by frame, without uploading it",
   usage: "rbc play FILE.rbm [--scenes A-B] [--yes] (--port PATH | --demo)",
-  description: `
-Tethered play (PROTOCOL.md §10): rbc plays a Motionbuilder motion file on the robot itself, frame by frame,
-as the RBC would play it from its memory, but without uploading anything, so it works with any firmware.
-The file is checked first (a file the robot would refuse is refused, and nothing is sent). rbc reads the
-robot's stored zeros and applies them, switches the robot to servo control (direct mode), reads where the
-servos are, and sends one synchronised move of every servo per frame at the file's timing, every position
-inside the servos' safe ranges. Servos the file does not list hold where they are. If a servo is far from the
-motion's first pose, rbc first moves there smoothly, as the RBC does.
-
-On a real robot rbc asks once before anything moves:
-  ${MOVE_WARNING} Play? [y/N]
---yes skips the question, and without a terminal --yes is required. The demo robot does not ask.
-
-Progress is shown on stderr. At the end rbc reads the servos back and says what the robot confirmed, then
-leaves servo control: the servos keep holding the last frame.
-
-Ctrl-C stops after the frame on the wire and nothing more is sent: the servos hold that frame, with torque
-(nothing goes limp), and rbc says which frame it was (exit code 130). A second Ctrl-C exits at once.`,
-  options: [
-    ["--scenes A-B", "Play only scenes A to B, or one scene with --scenes A (the first scene is 0)."],
-    ["-y, --yes", "Play on a real robot without the question."],
-  ],
+  help: COMMAND_HELP.play,
   examples: [
     "rbc play examples/wave.rbm --demo",
     "rbc play examples/wave.rbm --scenes 1-4 --port /dev/ttyUSB0",
@@ -180,47 +216,64 @@ Ctrl-C stops after the frame on the wire and nothing more is sent: the servos ho
     const { values, positionals } = parseCommand("play", env.argv, OPTIONS);
     noExtraArguments("play", positionals, 1);
     const file = positionals[0];
-    if (file === undefined) {
-      throw new UsageError("Give the motion file to play, e.g. rbc play examples/wave.rbm --demo.", "play");
-    }
+    if (file === undefined) throw new UsageError(said(commandMessages, "cmd.play.noFile"), "play");
+    const locale = localeOf(env);
+    const t = translator(commandMessages, locale);
+    const nothingSent = () =>
+      new CliError("interrupted", said(commandMessages, "cmd.nothingSent"), EXIT.interrupted);
     const doc = await readMotion(env, file);
     const range = parseScenes(values.scenes, doc, file);
-    const what = `${scenesText(range, doc)} of ${basename(file)}`;
+    const what = t("cmd.play.what", { scenes: scenesText(range, doc, locale), file: basename(file) });
     // The plan with standard zeros, for the summary (the robot's own zeros shift positions, not times).
     let plan: ReturnType<typeof playFrames>;
     try {
       plan = playFrames(doc, { range, robotZeros: STANDARD_ZEROS, platform: PLATFORM_PF2 });
     } catch (e) {
       if (!(e instanceof MotionError)) throw e;
-      throw new CliError("motion-refused", `${basename(file)}: ${e.message} Nothing was sent.`);
+      // The motion core's reason is English; in Korean the sentence says the file cannot be played.
+      const words = saidEach(commandMessages, "cmd.play.refused", (l) => [
+        { file: basename(file), reason: l === "en" ? e.message : t("cmd.play.refusedWhy") },
+      ]);
+      throw new CliError("motion-refused", words);
     }
     const validation = motionIssues(doc);
     env.out.line(
-      `${file}: motion "${doc.name}", ${doc.servos.length} servos, ${doc.scenes.length} scenes. Playing ${scenesText(range, doc)}: ${plan.frames.length} frames, ${seconds(plan.durationMs)}.`,
+      t("cmd.play.summary", {
+        file,
+        name: doc.name,
+        servos: String(doc.servos.length),
+        scenes: String(doc.scenes.length),
+        playing: scenesText(range, doc, locale),
+        frames: String(plan.frames.length),
+        duration: seconds(plan.durationMs, locale),
+      }),
     );
-    const warnings = issueLines("warning", validation.warnings);
+    const warnings = issueLines("warning", validation.warnings, issueWords(env));
     for (const line of warnings.slice(0, MAX_WARNINGS_SHOWN)) env.out.line(line);
     if (warnings.length > MAX_WARNINGS_SHOWN) {
-      env.out.line(`  … and ${warnings.length - MAX_WARNINGS_SHOWN} more warnings (--json lists them all).`);
+      env.out.line(`  ${t("cmd.moreWarnings", { more: String(warnings.length - MAX_WARNINGS_SHOWN) })}`);
     }
     const real = !values.demo;
     if (real && !values.yes && !env.stdin.isTTY) {
-      throw new CliError("confirmation-required", `${MOVE_WARNING} Add --yes to play (nothing was sent).`);
+      throw new CliError(
+        "confirmation-required",
+        saidEach(commandMessages, "cmd.play.needsYes", (l) => [{ warning: moveWarning(l) }]),
+      );
     }
 
     const robot = await connectRobot("play", values, env, { handlesInterrupt: true });
     const { client } = robot;
     if (real && !values.yes) {
-      const answer = await confirm(env, `${MOVE_WARNING} Play?`);
-      if (answer === "interrupted") throw new CliError("interrupted", "Nothing was sent.", EXIT.interrupted);
-      if (answer === "no") throw new CliError("not-confirmed", "Play not confirmed; nothing moved.");
+      const question = translator(cliMessages, locale)("cli.play.question", { warning: moveWarning(locale) });
+      const answer = await confirm(env, question);
+      if (answer === "interrupted") throw nothingSent();
+      if (answer === "no")
+        throw new CliError("not-confirmed", said(commandMessages, "cmd.play.notConfirmed"));
     }
-    if (env.signal.aborted) throw new CliError("interrupted", "Nothing was sent.", EXIT.interrupted);
+    if (env.signal.aborted) throw nothingSent();
 
-    const progress = new PlayProgressLine(env.out, doc, range);
-    env.setExitNote(
-      "tethered play was interrupted: the servos hold the last frame they got, with torque. The robot stays in servo control until the next rbc command or the panel connects (`rbc limp` makes every servo passive).",
-    );
+    const progress = new PlayProgressLine(env.out, doc, range, locale);
+    env.setExitNote(t("cmd.play.exitNote"));
     let result: TetheredPlayResult;
     try {
       result = await client.playTethered(doc, {
@@ -231,7 +284,8 @@ Ctrl-C stops after the frame on the wire and nothing more is sent: the servos ho
     } catch (e) {
       env.setExitNote(undefined);
       if (e instanceof TetheredPlayError) {
-        throw new CliError(e.code, e.message, EXIT.failed, {
+        const words = { en: e.message, ko: `${errorLine(e, "ko")} ${playHoldsText(e, "ko")}` };
+        throw new CliError(e.code, words, EXIT.failed, {
           framesSent: e.framesSent,
           totalFrames: e.totalFrames,
           lastFrame: e.lastFrame ?? null,
@@ -257,14 +311,18 @@ Ctrl-C stops after the frame on the wire and nothing more is sent: the servos ho
     };
     if (result.outcome === "stopped") {
       const held = result.lastFrame
-        ? `tethered play stopped after ${result.framesSent} of ${result.totalFrames} frames; the servos hold the last one sent (${frameLabel(result.lastFrame)}), with torque. Nothing was made passive.`
-        : "tethered play stopped before the first frame: nothing moved.";
-      env.out.note(`rbc: interrupted: ${held}`);
+        ? t("cmd.play.stoppedAfter", {
+            sent: String(result.framesSent),
+            total: String(result.totalFrames),
+            frame: frameWords(result.lastFrame, locale),
+          })
+        : t("cmd.play.stoppedBefore");
+      env.out.note(`rbc: ${t("cmd.interruptedBecause", { what: held })}`);
       env.out.result({ ok: false, ...json, error: { code: "interrupted", message: "Interrupted." } });
       return EXIT.interrupted;
     }
-    env.out.line(finishedSentence(result, what));
-    env.out.line("Left servo control; the servos keep holding the last frame.");
+    env.out.line(finishedSentence(result, what, locale));
+    env.out.line(t("cmd.play.left"));
     env.out.result({ ok: true, ...json });
     return EXIT.ok;
   },

@@ -1,48 +1,24 @@
 import { RbcError } from "../../device/errors.ts";
 import type { StopActivityResult } from "../../device/rbc-client.ts";
-import {
-  BASIC_POSTURE_MOTION,
-  BUILT_IN_MOTIONS,
-  downloadSlotOf,
-  isOfferedMotionNumber,
-} from "../../protocol/catalog.ts";
+import { translator } from "../../i18n/translate.ts";
+import { formatSeconds } from "../../i18n/units.ts";
+import { BASIC_POSTURE_MOTION, isOfferedMotionNumber } from "../../protocol/catalog.ts";
 import { parseCommand } from "../args.ts";
-import type { CommandDef } from "../command.ts";
+import { type CommandDef, localeOf } from "../command.ts";
 import { connectRobot } from "../connect.ts";
-import { CliError, EXIT, UsageError } from "../errors.ts";
+import { CliError, EXIT, errorSaid, UsageError } from "../errors.ts";
+import { COMMAND_HELP } from "../help/command-help.ts";
+import { motionName } from "../motion-names.ts";
+import { joinSaid, said } from "../said.ts";
+import { commandMessages } from "./messages.ts";
 import { stoppedMotionSentence } from "./stop.ts";
 
-/** "7 (Basic posture)", "12 (downloaded motion 1)". */
-export function motionName(n: number): string {
-  const builtIn = BUILT_IN_MOTIONS.find((m) => m.number === n);
-  if (builtIn) return `${n} (${builtIn.name})`;
-  const slot = downloadSlotOf(n);
-  return slot === undefined ? String(n) : `${n} (downloaded motion ${slot})`;
-}
-
-const MOTION_LIST = BUILT_IN_MOTIONS.map((m) => `  ${String(m.number).padStart(2)}  ${m.name}`).join("\n");
+export { motionName };
 
 export const runCommand: CommandDef = {
   name: "run",
-  summary: "run motions (7 = basic posture) and wait until they finish",
   usage: "rbc run N [N …] (--port PATH | --demo)",
-  description: `
-Runs motion N and waits for the robot to report that it finished (it answers only then). Several
-numbers run one after the other. The built-in motions:
-
-${MOTION_LIST}
-
-Downloaded motions: 12-21 play downloads 1-10, 33-42 play downloads 11-20 (see \`rbc upload\`).
-Other numbers are refused (some start battery charging or move to the raw zero pose).
-
-After it is switched on, the RBC ignores every motion until 7 (basic posture) has run once; rbc says so
-when that happens. The demo robot is switched on afresh by every rbc command, so put 7 first there:
-\`rbc run 7 4 --demo\`.
-
-Ctrl-C stops the motion as \`rbc stop\` does (exit code 130): rbc sends 7, the robot ends the motion at the
-end of its current scene and keeps standing in that pose, and rbc says whether the robot confirmed (07).
-No servo is made passive, and the motions after it are not started. A second Ctrl-C exits at once.`,
-  options: [],
+  help: COMMAND_HELP.run,
   examples: [
     "rbc run 7 --port /dev/ttyUSB0",
     "rbc run 7 4 4 --demo",
@@ -51,14 +27,13 @@ No servo is made passive, and the motions after it are not started. A second Ctr
   talksToRobot: true,
   async run(env) {
     const { values, positionals } = parseCommand("run", env.argv, {});
-    if (positionals.length === 0) throw new UsageError("Give the motion number, e.g. rbc run 7.", "run");
+    const locale = localeOf(env);
+    const t = translator(commandMessages, locale);
+    if (positionals.length === 0) throw new UsageError(said(commandMessages, "cmd.run.noMotion"), "run");
     const motions = positionals.map((p) => {
       const n = Number(p);
       if (!/^\d+$/.test(p) || !isOfferedMotionNumber(n)) {
-        throw new UsageError(
-          `Motion "${p}" is not one rbc runs: use 1-11, 12-21 or 33-42 (see rbc run --help).`,
-          "run",
-        );
+        throw new UsageError(said(commandMessages, "cmd.run.notOffered", { motion: p }), "run");
       }
       return n;
     });
@@ -66,10 +41,11 @@ No servo is made passive, and the motions after it are not started. A second Ctr
     const results: Array<{ motion: number; name: string; elapsedMs: number }> = [];
     for (const motion of motions) {
       const name = motionName(motion);
+      const shown = motionName(motion, locale);
       if (results.length > 0) await env.out.settle();
       if (env.signal.aborted) {
         // Interrupted between two motions (or stdout was closed): do not start the next one.
-        env.out.note(`rbc: stopped before motion ${name}; it was not started.`);
+        env.out.note(`rbc: ${t("cmd.run.notStarted", { motion: shown })}`);
         env.out.result({
           ok: false,
           completed: results,
@@ -77,14 +53,12 @@ No servo is made passive, and the motions after it are not started. A second Ctr
         });
         return EXIT.interrupted;
       }
-      env.out.line(`Running ${name}…`);
+      env.out.line(t("cmd.run.running", { motion: shown }));
       const started = robot.clock.now();
       // Ctrl-C: end the motion with 7 (Stop), never limp; the robot keeps standing.
       let stopping: Promise<StopActivityResult | undefined> | undefined;
       const onInterrupt = () => {
-        env.setExitNote(
-          `motion ${name} was being stopped with 7; whether the robot confirmed is not known. If it still moves, hold it (rbc limp makes every servo passive).`,
-        );
+        env.setExitNote(t("cmd.run.stoppingUnknown", { motion: shown }));
         stopping = robot.client.stopActivity().catch(() => undefined);
       };
       env.signal.addEventListener("abort", onInterrupt, { once: true });
@@ -99,7 +73,9 @@ No servo is made passive, and the motions after it are not started. A second Ctr
       if (stopping) {
         const result = await stopping;
         env.setExitNote(undefined);
-        env.out.note(`rbc: interrupted: ${stoppedMotionSentence(result, name)}`);
+        env.out.note(
+          `rbc: ${t("cmd.interruptedBecause", { what: stoppedMotionSentence(result, shown, locale) })}`,
+        );
         env.out.result({
           ok: false,
           completed: results,
@@ -112,15 +88,20 @@ No servo is made passive, and the motions after it are not started. A second Ctr
         const e = failure;
         if (e instanceof RbcError && e.code === "motion-ignored") {
           const hint = robot.demo
-            ? ` The demo robot is switched on afresh by every rbc command: put 7 first, e.g. rbc run 7 ${motion} --demo.`
-            : ` Run \`rbc run ${BASIC_POSTURE_MOTION}\` first (or \`rbc run 7 ${motion}\`).`;
-          throw new CliError("motion-ignored", `${e.message}${hint}`, EXIT.failed, { completed: results });
+            ? said(commandMessages, "cmd.run.ignoredDemo", { motion: String(motion) })
+            : said(commandMessages, "cmd.run.ignored", {
+                posture: String(BASIC_POSTURE_MOTION),
+                motion: String(motion),
+              });
+          throw new CliError("motion-ignored", joinSaid([errorSaid(e), hint]), EXIT.failed, {
+            completed: results,
+          });
         }
         throw e;
       }
       const elapsedMs = Math.round(robot.clock.now() - started);
       results.push({ motion, name, elapsedMs });
-      env.out.line(`Done: ${name} in ${(elapsedMs / 1000).toFixed(1)} s.`);
+      env.out.line(t("cmd.run.done", { motion: shown, duration: formatSeconds(elapsedMs / 1000, locale) }));
     }
     env.out.result({ ok: true, completed: results });
     return EXIT.ok;

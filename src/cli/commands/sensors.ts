@@ -1,9 +1,13 @@
-import { distanceWarning } from "../../protocol/plausibility.ts";
+import type { Locale } from "../../i18n/locale.ts";
+import { translator } from "../../i18n/translate.ts";
+import { DISTANCE_MAX_CM, DISTANCE_MIN_CM, distanceWarning } from "../../protocol/plausibility.ts";
 import type { Clock } from "../../shared/clock.ts";
 import { intOption, noExtraArguments, parseCommand } from "../args.ts";
-import type { CommandDef } from "../command.ts";
+import { type CommandDef, localeOf } from "../command.ts";
 import { connectRobot } from "../connect.ts";
 import { EXIT } from "../errors.ts";
+import { COMMAND_HELP } from "../help/command-help.ts";
+import { commandMessages } from "./messages.ts";
 
 const OPTIONS = {
   "interval-ms": { type: "string" },
@@ -24,35 +28,45 @@ function sleep(clock: Clock, ms: number, signal: AbortSignal): Promise<void> {
   });
 }
 
-/** One reading, as a line for people, a JSON line, and the warning for an implausible value (if any). */
+/**
+ * One reading, as a line for people (in `locale`), a JSON line, and the warning for an implausible value (if
+ * any): `warning` is the protocol's English sentence (the JSON's), `said` the warning in `locale`.
+ */
 export function sensorReading(
   ms: number,
   distanceCm: number,
   accelerometer: { x: number; y: number; z: number },
+  locale: Locale = "en",
 ) {
+  const t = translator(commandMessages, locale);
   const warning = distanceWarning(distanceCm);
   const { x, y, z } = accelerometer;
   const axis = (v: number) => String(v).padStart(4);
-  const line = `${(ms / 1000).toFixed(1).padStart(7)} s  distance ${String(distanceCm).padStart(2)} cm${warning ? " (implausible)" : ""}   accel x ${axis(x)}  y ${axis(y)}  z ${axis(z)}`;
+  const line = t("cmd.sensors.reading", {
+    // A column of a stream: not grouped by thousands (1234.5 s), in every language.
+    time: (ms / 1000).toFixed(1).padStart(7),
+    distance: String(distanceCm).padStart(2),
+    implausible: warning ? ` ${t("cmd.sensors.implausible")}` : "",
+    x: axis(x),
+    y: axis(y),
+    z: axis(z),
+  });
   const json = { ms, distanceCm, accelerometer, ...(warning ? { warnings: [warning] } : {}) };
-  return { line, json, warning };
+  const said =
+    warning === undefined || locale === "en"
+      ? warning
+      : t("cmd.sensors.distanceWarning", {
+          distance: String(distanceCm),
+          min: String(DISTANCE_MIN_CM),
+          max: String(DISTANCE_MAX_CM),
+        });
+  return { line, json, warning, said };
 }
 
 export const sensorsCommand: CommandDef = {
   name: "sensors",
-  summary: "stream the distance sensor and the accelerometer until Ctrl-C",
   usage: "rbc sensors [--interval-ms MS] [--count N] (--port PATH | --demo)",
-  description: `
-Reads the distance sensor (cm, 10-50; 10 means nothing seen or no sensor) and the accelerometer (X, Y, Z,
-signed) every --interval-ms and prints one line per reading, until Ctrl-C (or --count readings). A distance
-outside 10-50 cm (which the standard firmware never sends) is shown as read, marked "(implausible)", with a
-warning on stderr. With --json each reading is one JSON object per line (with "warnings" for an implausible
-one), and a failure one last line {"ok":false,"error":{…}}.
-Ctrl-C is the normal way to end it: exit code 0.`,
-  options: [
-    ["--interval-ms MS", "Time between readings (default 200, at least 20)."],
-    ["--count N", "Stop after N readings (default: until Ctrl-C)."],
-  ],
+  help: COMMAND_HELP.sensors,
   examples: ["rbc sensors --demo", "rbc sensors --port /dev/ttyUSB0 --interval-ms 500 --json"],
   talksToRobot: true,
   streams: true,
@@ -61,17 +75,20 @@ Ctrl-C is the normal way to end it: exit code 0.`,
     noExtraArguments("sensors", positionals, 0);
     const interval = intOption("sensors", "interval-ms", values["interval-ms"], 200, 20, 3_600_000);
     const count = intOption("sensors", "count", values.count, Number.POSITIVE_INFINITY, 1, 1_000_000_000);
+    const locale = localeOf(env);
+    const t = translator(commandMessages, locale);
     const robot = await connectRobot("sensors", values, env, { handlesInterrupt: true });
     const started = robot.clock.now();
-    if (!env.out.json) env.out.note("Reading the sensors; Ctrl-C to stop.");
+    if (!env.out.json) env.out.note(t("cmd.sensors.start"));
     let lastWarning: string | undefined;
     for (let i = 0; i < count && !env.signal.aborted; i++) {
       const distanceCm = await robot.client.readDistance();
       const accelerometer = await robot.client.readAccelerometer();
       const ms = Math.round(robot.clock.now() - started);
-      const reading = sensorReading(ms, distanceCm, accelerometer);
+      const reading = sensorReading(ms, distanceCm, accelerometer, locale);
       // Shown as read, with the warning on stderr once per run of the same implausible value.
-      if (reading.warning && reading.warning !== lastWarning) env.out.note(`Warning: ${reading.warning}`);
+      if (reading.said && reading.warning !== lastWarning)
+        env.out.note(t("cmd.warning", { warning: reading.said }));
       lastWarning = reading.warning;
       env.out.jsonLine(reading.json);
       env.out.line(reading.line);

@@ -1,18 +1,33 @@
 import { readFile } from "node:fs/promises";
 import { basename } from "node:path";
+import { uploadOutcomeText } from "../../device/error-text.ts";
 import { RbcUploadError } from "../../device/errors.ts";
 import { type FileUploadResult, UPLOAD_NOTICES } from "../../device/index.ts";
+import type { Locale } from "../../i18n/locale.ts";
+import { translator } from "../../i18n/translate.ts";
+import { formatSeconds } from "../../i18n/units.ts";
 import { downloadedMotionNumber, MOTION_AREA_BYTES } from "../../protocol/catalog.ts";
 import { motionImageSize } from "../../protocol/motion-image.ts";
 import { parseRbm, RbmError, type RbmMotion, type RbmValidation, validateRbm } from "../../protocol/rbm.ts";
 import { noExtraArguments, parseCommand } from "../args.ts";
-import type { CommandDef, RunEnv } from "../command.ts";
+import { type CommandDef, localeOf, type RunEnv } from "../command.ts";
 import { confirm } from "../confirm.ts";
-import { connectRobot } from "../connect.ts";
+import { connectRobot, robotPlace } from "../connect.ts";
 import { CliError, EXIT, UsageError } from "../errors.ts";
+import { COMMAND_HELP } from "../help/command-help.ts";
 import { ProgressBar } from "../progress.ts";
-import { issueLines, issuesJson, motionSummary, validationSummary } from "../upload-report.ts";
-import { errorCodeWords } from "./info.ts";
+import { errorCodeWords } from "../robot-words.ts";
+import { type Said, said, saidEach } from "../said.ts";
+import {
+  type IssueWords,
+  issueLines,
+  issuesJson,
+  issueText,
+  motionSummary,
+  validationSummary,
+} from "../upload-report.ts";
+import { unreadable } from "../zeros-files.ts";
+import { commandMessages } from "./messages.ts";
 
 const OPTIONS = {
   reset: { type: "boolean" },
@@ -27,6 +42,18 @@ const MAX_WARNINGS_SHOWN = 10;
 export const EXPERIMENTAL_NOTICE = UPLOAD_NOTICES.experimental;
 export const HOLD_ADVICE = UPLOAD_NOTICES.holdAdvice;
 
+/** The device's upload notices in `locale`: its own English, or this catalogue's words for them. */
+function notice(which: "experimental" | "holdAdvice", locale: Locale): string {
+  if (locale === "en") return UPLOAD_NOTICES[which];
+  const t = translator(commandMessages, locale);
+  return which === "experimental" ? t("cmd.upload.experimental") : t("cmd.upload.holdAdvice");
+}
+
+/** How `env` tells a motion file's problems: in its language, with the English after `--log`. */
+export function issueWords(env: Pick<RunEnv, "argv" | "locale">): IssueWords {
+  return { locale: localeOf(env), withEnglish: env.argv.includes("--log") };
+}
+
 type Prepared =
   | { area: "motion"; motion: RbmMotion; imageBytes: number }
   | { area: "action"; bytes: Uint8Array; imageBytes: number };
@@ -36,24 +63,33 @@ type Prepared =
  * listed on stdout (or in --json's `validation.errors`) and the reason only counts them. The reason never
  * quotes the file's contents beyond what the parser's message shows (one line, at most a few characters).
  */
-export function rbmInvalid(env: Pick<RunEnv, "out">, file: string, e: RbmError): CliError {
+export function rbmInvalid(
+  env: Pick<RunEnv, "out" | "argv" | "locale">,
+  file: string,
+  e: RbmError,
+): CliError {
   const validation: RbmValidation = { errors: [...e.issues], warnings: [] };
   const details = { file, validation: issuesJson(validation) };
   const name = basename(file);
-  const first = e.issues[0]?.message ?? e.message;
+  const first = e.issues[0] ?? { code: e.code, message: e.message };
   if (e.issues.length <= 1) {
-    const reason = first.replace(/\s*\n\s*/g, " ").replace(/[.\s]+$/, "");
-    return new CliError("rbm-invalid", `${name}: ${reason}. Nothing was sent.`, EXIT.failed, details);
+    const reason = (l: Locale) =>
+      issueText(first, { locale: l })
+        .replace(/\s*\n\s*/g, " ")
+        .replace(/[.\s]+$/, "");
+    const words = saidEach(commandMessages, "cmd.upload.fileRefused", (l) => [
+      { file: name, reason: reason(l) },
+    ]);
+    return new CliError("rbm-invalid", words, EXIT.failed, details);
   }
-  env.out.line(`${file} cannot be uploaded:`);
-  for (const line of issueLines("error", validation.errors)) env.out.line(line);
-  const where = env.out.json ? "in validation.errors" : "listed above";
-  return new CliError(
-    "rbm-invalid",
-    `${name} has ${e.issues.length} errors (${where}); nothing was sent.`,
-    EXIT.failed,
-    details,
-  );
+  const t = translator(commandMessages, localeOf(env));
+  env.out.line(t("cmd.upload.cannotUpload", { file }));
+  for (const line of issueLines("error", validation.errors, issueWords(env))) env.out.line(line);
+  const count = String(e.issues.length);
+  const words: Said = env.out.json
+    ? said(commandMessages, "cmd.upload.errorsInJson", { file: name, errors: count })
+    : said(commandMessages, "cmd.upload.errorsAbove", { file: name, errors: count });
+  return new CliError("rbm-invalid", words, EXIT.failed, details);
 }
 
 async function prepare(env: RunEnv, file: string, asAction: boolean): Promise<Prepared> {
@@ -61,13 +97,11 @@ async function prepare(env: RunEnv, file: string, asAction: boolean): Promise<Pr
   try {
     bytes = new Uint8Array(await readFile(file));
   } catch (e) {
-    const why = (e as NodeJS.ErrnoException).code === "ENOENT" ? "no such file" : String(e);
-    throw new CliError("file-unreadable", `Cannot read ${file}: ${why}.`);
+    throw unreadable(file, e);
   }
   if (asAction) {
-    env.out.note(
-      `${basename(file)}: uploaded as an action file, byte for byte (${bytes.length} bytes). No action file format is known, so its contents are not checked.`,
-    );
+    const t = translator(commandMessages, localeOf(env));
+    env.out.note(t("cmd.upload.asAction", { file: basename(file), bytes: String(bytes.length) }));
     return { area: "action", bytes, imageBytes: bytes.length };
   }
   try {
@@ -101,28 +135,8 @@ export function uploadedSlot(result: FileUploadResult): {
 
 export const uploadCommand: CommandDef = {
   name: "upload",
-  summary: "check a motion file (.rbm) and upload it to the robot's memory",
   usage: "rbc upload FILE.rbm [--reset] [--action] [--yes] (--port PATH | --demo)",
-  description: `
-Reads a Motionbuilder motion file (.rbm), checks it against the RBC's rules (errors stop the upload;
-warnings are shown) and uploads it to the robot's motion memory, chunk by chunk, with a progress bar on
-stderr. Afterwards it reports the free memory and the robot's error code in words. The robot keeps up to
-20 downloaded motions: the first 10 play with \`rbc run 12\` … \`rbc run 21\`, the next ones with 33 … 42.
-
-On a real robot (not --demo) uploading is experimental: the byte layout of the uploaded motion is the
-project's reconstruction and has not been verified on real firmware. rbc says so and asks for
-confirmation (--yes, or y at the prompt); run the motion first with the robot held or lying down.
-
-Ctrl-C during the upload stops after the chunk in flight, makes the robot abandon the download, reports how
-many bytes were acknowledged and what the robot's memory holds, and exits with code 130.`,
-  options: [
-    [
-      "--reset",
-      "First reset the memory pointer: forgets every downloaded motion (or action), frees the memory.",
-    ],
-    ["--action", "Upload FILE byte for byte as an action file (format unverified; not checked)."],
-    ["-y, --yes", "Confirm an upload to a real robot without the prompt."],
-  ],
+  help: COMMAND_HELP.upload,
   examples: [
     "rbc upload examples/wave.rbm --demo",
     "rbc upload wave.rbm --reset --port /dev/ttyUSB0",
@@ -133,14 +147,15 @@ many bytes were acknowledged and what the robot's memory holds, and exits with c
     const { values, positionals } = parseCommand("upload", env.argv, OPTIONS);
     noExtraArguments("upload", positionals, 1);
     const file = positionals[0];
-    if (file === undefined)
-      throw new UsageError("Give the motion file to upload, e.g. rbc upload examples/wave.rbm.", "upload");
+    if (file === undefined) throw new UsageError(said(commandMessages, "cmd.upload.noFile"), "upload");
+    const locale = localeOf(env);
+    const t = translator(commandMessages, locale);
     const prepared = await prepare(env, file, values.action === true);
     const real = !values.demo;
     if (real && !values.yes && !env.stdin.isTTY) {
       throw new CliError(
         "confirmation-required",
-        `${EXPERIMENTAL_NOTICE} Add --yes to upload anyway (nothing was sent).`,
+        saidEach(commandMessages, "cmd.upload.needsYes", (l) => [{ notice: notice("experimental", l) }]),
       );
     }
 
@@ -150,35 +165,41 @@ many bytes were acknowledged and what the robot's memory holds, and exits with c
     if (prepared.area === "motion") {
       // 0x0C is optional (PROTOCOL.md §3.5): without a serial number the file's robot check is skipped.
       const { serialNumber } = await client.identify();
-      if (serialNumber === undefined) {
-        env.out.note("The robot does not report its serial number, so the file's robot check was skipped.");
-      }
+      if (serialNumber === undefined) env.out.note(t("cmd.upload.noSerial"));
       validation = validateRbm(prepared.motion, { connectedSerialNumber: serialNumber });
-      env.out.line(motionSummary(file, prepared.motion, prepared.imageBytes));
-      env.out.line(validationSummary(validation));
-      const shown = issueLines("warning", validation.warnings);
+      env.out.line(motionSummary(file, prepared.motion, prepared.imageBytes, locale));
+      env.out.line(validationSummary(validation, locale));
+      const shown = issueLines("warning", validation.warnings, issueWords(env));
       for (const line of shown.slice(0, MAX_WARNINGS_SHOWN)) env.out.line(line);
       if (shown.length > MAX_WARNINGS_SHOWN) {
-        env.out.line(`  … and ${shown.length - MAX_WARNINGS_SHOWN} more warnings (--json lists them all).`);
+        env.out.line(`  ${t("cmd.moreWarnings", { more: String(shown.length - MAX_WARNINGS_SHOWN) })}`);
       }
     }
 
     if (real) {
-      env.out.note(EXPERIMENTAL_NOTICE);
-      env.out.note(HOLD_ADVICE);
-      if (values.reset)
-        env.out.note(`--reset will first forget every downloaded ${prepared.area} on the robot.`);
+      env.out.note(notice("experimental", locale));
+      env.out.note(notice("holdAdvice", locale));
+      if (values.reset) {
+        env.out.note(
+          prepared.area === "motion" ? t("cmd.upload.resetWarnMotion") : t("cmd.upload.resetWarnAction"),
+        );
+      }
       const answer = values.yes
         ? "yes"
-        : await confirm(env, `Upload ${basename(file)} to the robot on ${robot.where}?`);
+        : await confirm(
+            env,
+            t("cmd.upload.question", { file: basename(file), robot: robotPlace(robot, locale) }),
+          );
       if (answer === "interrupted") {
-        throw new CliError("interrupted", "Nothing was sent.", EXIT.interrupted);
+        throw new CliError("interrupted", said(commandMessages, "cmd.nothingSent"), EXIT.interrupted);
       }
-      if (answer === "no") throw new CliError("not-confirmed", "Upload not confirmed; nothing was sent.");
+      if (answer === "no")
+        throw new CliError("not-confirmed", said(commandMessages, "cmd.upload.notConfirmed"));
     }
-    if (env.signal.aborted) throw new CliError("interrupted", "Nothing was sent.", EXIT.interrupted);
+    if (env.signal.aborted)
+      throw new CliError("interrupted", said(commandMessages, "cmd.nothingSent"), EXIT.interrupted);
 
-    const bar = new ProgressBar(env.out);
+    const bar = new ProgressBar(env.out, undefined, locale);
     let result: FileUploadResult;
     try {
       const options = {
@@ -187,7 +208,7 @@ many bytes were acknowledged and what the robot's memory holds, and exits with c
         onPhase: (phase: string) => {
           if (phase === "checking" && values.reset) {
             env.out.line(
-              `Reset the ${prepared.area} memory pointer: the robot's downloaded ${prepared.area}s are forgotten.`,
+              prepared.area === "motion" ? t("cmd.upload.resetMotion") : t("cmd.upload.resetAction"),
             );
           }
         },
@@ -200,9 +221,10 @@ many bytes were acknowledged and what the robot's memory holds, and exits with c
     } catch (e) {
       bar.finish();
       if (e instanceof RbcUploadError && e.code === "cancelled") {
-        env.out.note(
-          `rbc: upload interrupted: ${e.acknowledged} of ${e.total} bytes were acknowledged (outcome: ${e.outcome}). ${e.message}`,
-        );
+        // In English the device's sentence; otherwise what the outcome means for the robot.
+        const what = locale === "en" ? e.message : uploadOutcomeText(e.outcome, locale);
+        const counts = { acknowledged: String(e.acknowledged), total: String(e.total) };
+        env.out.note(`rbc: ${t("cmd.upload.interrupted", { ...counts, outcome: e.outcome, what })}`);
         env.out.result({
           ok: false,
           error: {
@@ -219,7 +241,6 @@ many bytes were acknowledged and what the robot's memory holds, and exits with c
     }
     bar.finish();
 
-    const n = (v: number) => v.toLocaleString("en-US");
     const seconds = result.elapsedMs / 1000;
     const rate = seconds > 0 ? Math.round(result.total / seconds) : 0;
     env.out.result({
@@ -233,25 +254,31 @@ many bytes were acknowledged and what the robot's memory holds, and exits with c
       error: result.errorCode === undefined ? "not read" : errorCodeWords(result.errorCode),
     });
     env.out.line(
-      `Uploaded ${n(result.total)} bytes in ${result.chunks} chunks in ${seconds.toFixed(1)} s (${n(rate)} bytes/s).`,
+      t("cmd.upload.uploaded", {
+        bytes: result.total,
+        chunks: String(result.chunks),
+        duration: formatSeconds(seconds, locale),
+        rate,
+      }),
     );
+    const motionArea = result.area === "motion";
+    if (result.freeAfter === undefined) {
+      env.out.line(motionArea ? t("cmd.upload.freeMotionUnread") : t("cmd.upload.freeActionUnread"));
+    } else {
+      const free = { free: result.freeAfter, before: result.freeBefore };
+      env.out.line(motionArea ? t("cmd.upload.freeMotion", free) : t("cmd.upload.freeAction", free));
+    }
     env.out.line(
-      result.freeAfter === undefined
-        ? `Free ${result.area} memory: not read (the robot did not answer); check with \`rbc info\`.`
-        : `Free ${result.area} memory: ${n(result.freeAfter)} bytes (was ${n(result.freeBefore)}).`,
-    );
-    env.out.line(
-      `Error code: ${result.errorCode === undefined ? "not read (the robot did not answer)" : errorCodeWords(result.errorCode)}.`,
+      result.errorCode === undefined
+        ? t("cmd.upload.errorCodeUnread")
+        : t("cmd.upload.errorCode", { words: errorCodeWords(result.errorCode, locale) }),
     );
     const placed = uploadedSlot(result);
     if (placed.motionNumber !== undefined) {
-      env.out.line(
-        `It became motion ${placed.motionNumber} (downloaded motion ${placed.slot}): play it with \`rbc run ${placed.motionNumber}\`${real ? " — first with the robot held or lying down" : ""}.`,
-      );
+      const became = { motion: String(placed.motionNumber), slot: String(placed.slot) };
+      env.out.line(real ? t("cmd.upload.becameHeld", became) : t("cmd.upload.became", became));
     } else if (result.area === "motion") {
-      env.out.line(
-        "The robot already held downloaded motions and does not say how many, so this one's number is not known: the first 10 uploads play with `rbc run 12` … `rbc run 21`, the next 10 with 33 … 42. Upload with --reset to make it motion 12 (the others are forgotten).",
-      );
+      env.out.line(t("cmd.upload.numberUnknown"));
     }
     return EXIT.ok;
   },

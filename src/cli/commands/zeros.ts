@@ -1,7 +1,9 @@
 import { RbcCancelledError } from "../../device/errors.ts";
 import { type SafeZeroWrite, ZeroBackupError, ZeroWriteFailedError } from "../../device/index.ts";
 import type { ZeroWriteResult } from "../../device/types.ts";
-import { HUNO_JOINT_NAMES } from "../../protocol/servo-limits.ts";
+import type { Locale } from "../../i18n/locale.ts";
+import { translator } from "../../i18n/translate.ts";
+import { formatDateTime } from "../../i18n/units.ts";
 import {
   diffZeros,
   FACTORY_ZEROS,
@@ -14,9 +16,12 @@ import {
 import { serialMismatchWarning } from "../../protocol/zeros-backup.ts";
 import { formatFirmware } from "../../shared/format.ts";
 import { type GlobalValues, noExtraArguments, parseCommand } from "../args.ts";
-import type { CommandDef, RunEnv } from "../command.ts";
-import { connectRobot, type Robot } from "../connect.ts";
-import { CliError, EXIT, errorCode, errorLine, UsageError } from "../errors.ts";
+import { type CommandDef, localeOf, type RunEnv } from "../command.ts";
+import { connectRobot, type Robot, robotPlace } from "../connect.ts";
+import { CliError, EXIT, errorCode, errorSaid, UsageError } from "../errors.ts";
+import { COMMAND_HELP } from "../help/command-help.ts";
+import { displayWidth } from "../help/render.ts";
+import { joinSaid, type Said, said, saidEach } from "../said.ts";
 import {
   readBackupFile,
   refuseExisting,
@@ -24,6 +29,8 @@ import {
   writeAutomaticBackup,
   writeBackupFile,
 } from "../zeros-files.ts";
+import { commandMessages } from "./messages.ts";
+import { jointName, zeroProblemText } from "./zeros-words.ts";
 
 const OPTIONS = {
   "backup-dir": { type: "string" },
@@ -33,9 +40,10 @@ const OPTIONS = {
 /** "125,202,162,…" or 16 separate words → numbers; a malformed list is a usage error. */
 export function parseZeroList(words: readonly string[]): number[] {
   const parts = words.flatMap((w) => w.split(/[,\s]+/)).filter((p) => p !== "");
-  if (parts.length === 0) throw new UsageError("Give the 16 zero values, e.g. 125,202,162,66,…", "zeros");
+  if (parts.length === 0) throw new UsageError(said(commandMessages, "cmd.zeros.noValues"), "zeros");
   return parts.map((p) => {
-    if (!/^\d{1,3}$/.test(p)) throw new UsageError(`"${p}" is not a whole number from 0 to 254.`, "zeros");
+    if (!/^\d{1,3}$/.test(p))
+      throw new UsageError(said(commandMessages, "cmd.zeros.notANumber", { value: p }), "zeros");
     return Number(p);
   });
 }
@@ -43,11 +51,15 @@ export function parseZeroList(words: readonly string[]): number[] {
 /** Headers, then one row per servo; each cell is text. */
 type Column = { header: string; align: "left" | "right"; cells: string[] };
 
-/** Lays columns out so that every cell lines up under its header, whatever the width of a value. */
+/**
+ * Lays columns out so that every cell lines up under its header, whatever the width of a value (a Hangul
+ * header takes two columns a syllable on a terminal).
+ */
 export function alignColumns(columns: readonly Column[], indent = "  ", gap = "  "): string[] {
-  const widths = columns.map((c) => Math.max(c.header.length, ...c.cells.map((t) => t.length)));
+  const widths = columns.map((c) => Math.max(displayWidth(c.header), ...c.cells.map((t) => displayWidth(t))));
+  const fill = (text: string, i: number) => " ".repeat(Math.max(0, widths[i]! - displayWidth(text)));
   const pad = (text: string, i: number) =>
-    columns[i]!.align === "right" ? text.padStart(widths[i]!) : text.padEnd(widths[i]!);
+    columns[i]!.align === "right" ? `${fill(text, i)}${text}` : `${text}${fill(text, i)}`;
   const rows = Math.max(0, ...columns.map((c) => c.cells.length));
   const line = (cell: (c: Column) => string) =>
     `${indent}${columns.map((c, i) => pad(cell(c), i)).join(gap)}`.trimEnd();
@@ -60,7 +72,8 @@ export function alignColumns(columns: readonly Column[], indent = "  ", gap = " 
  * The robot's zeros beside the two tables people mix up, named as in the panel: the reference zeros (what the
  * RBC checks every write against, ±15) and the factory zeros (what the firmware holds when new).
  */
-export function zerosTable(zeros: readonly number[]): string[] {
+export function zerosTable(zeros: readonly number[], locale: Locale = "en"): string[] {
+  const t = translator(commandMessages, locale);
   const ids = zeros.map((_, id) => id);
   const diff = (id: number) => {
     const d = zeros[id]! - STANDARD_ZEROS[id]!;
@@ -71,18 +84,27 @@ export function zerosTable(zeros: readonly number[]): string[] {
     return `${min}-${max}`;
   };
   const lines = alignColumns([
-    { header: "servo", align: "right", cells: ids.map(String) },
-    { header: "joint", align: "left", cells: ids.map((id) => HUNO_JOINT_NAMES[id] ?? "") },
-    { header: "zero", align: "right", cells: zeros.map(String) },
-    { header: "reference", align: "right", cells: ids.map((id) => String(STANDARD_ZEROS[id])) },
-    { header: "difference", align: "right", cells: ids.map(diff) },
-    { header: "allowed", align: "right", cells: ids.map(range) },
-    { header: "factory", align: "right", cells: ids.map((id) => String(FACTORY_ZEROS[id])) },
+    { header: t("cmd.zeros.column.servo"), align: "right", cells: ids.map(String) },
+    { header: t("cmd.zeros.column.joint"), align: "left", cells: ids.map((id) => jointName(id, locale)) },
+    { header: t("cmd.zeros.column.zero"), align: "right", cells: zeros.map(String) },
+    {
+      header: t("cmd.zeros.column.reference"),
+      align: "right",
+      cells: ids.map((id) => String(STANDARD_ZEROS[id])),
+    },
+    { header: t("cmd.zeros.column.difference"), align: "right", cells: ids.map(diff) },
+    { header: t("cmd.zeros.column.allowed"), align: "right", cells: ids.map(range) },
+    {
+      header: t("cmd.zeros.column.factory"),
+      align: "right",
+      cells: ids.map((id) => String(FACTORY_ZEROS[id])),
+    },
   ]);
   lines.push(
     "",
-    `  reference: the table the RBC checks every write against; each zero must stay within ±${ZERO_TOLERANCE} of it`,
-    "  (allowed), or the RBC refuses the whole table. factory: the zeros the firmware holds when new.",
+    ...t("cmd.zeros.legend", { tolerance: String(ZERO_TOLERANCE) })
+      .split("\n")
+      .map((l) => `  ${l}`),
   );
   return lines;
 }
@@ -95,23 +117,22 @@ async function identify(robot: Robot) {
 }
 
 /** The robot by its serial number, or in words when its firmware does not report one. */
-function robotName(serialNumber: string | undefined): string {
-  return serialNumber ?? "(serial number not reported)";
+function robotName(serialNumber: string | undefined, locale: Locale): string {
+  return serialNumber ?? translator(commandMessages, locale)("cmd.zeros.serialNotReported");
 }
 
 /** Stops before anything is written when Ctrl-C came while reading or backing up. */
 function stopIfInterrupted(env: RunEnv, backupFile?: string): void {
   if (!env.signal.aborted) return;
-  throw new CliError(
-    "interrupted",
-    `Nothing was written to the robot${backupFile ? ` (the backup ${backupFile} was saved)` : ""}.`,
-    EXIT.interrupted,
-  );
+  const words = backupFile
+    ? said(commandMessages, "cmd.zeros.nothingWrittenBackup", { file: backupFile })
+    : said(commandMessages, "cmd.zeros.nothingWritten");
+  throw new CliError("interrupted", words, EXIT.interrupted);
 }
 
 /** How to find out what the robot holds after a write that may or may not have happened. */
-function checkAdvice(backupFile: string): string {
-  return `Check with \`rbc zeros read\`; the previous zeros are saved in ${backupFile} (to put them back: rbc zeros restore ${backupFile}).`;
+function checkAdvice(backupFile: string): Said {
+  return said(commandMessages, "cmd.zeros.checkAdvice", { file: backupFile });
 }
 
 /**
@@ -128,9 +149,10 @@ async function backupAndWrite(
   current: { serialNumber: string | undefined; firmware: string; zeros: number[] },
 ): Promise<{ backupFile: string | undefined; result: ZeroWriteResult | undefined; interrupted: boolean }> {
   stopIfInterrupted(env);
+  const locale = localeOf(env);
+  const t = translator(commandMessages, locale);
   let backupFile: string | undefined;
-  const onAbort = () =>
-    env.out.note("rbc: finishing the zero write and its check (under a second), then stopping…");
+  const onAbort = () => env.out.note(`rbc: ${t("cmd.zeros.finishing")}`);
   let outcome: SafeZeroWrite;
   try {
     outcome = await robot.client.writeZerosWithBackup(target, {
@@ -138,19 +160,17 @@ async function backupAndWrite(
       signal: env.signal,
       saveBackup: async (backup) => {
         backupFile = await saveAutomaticBackup(values["backup-dir"] ?? env.cwd, backup);
-        env.out.note(
-          `Backed up the current zeros to ${backupFile} (restore with: rbc zeros restore ${backupFile}).`,
-        );
+        env.out.note(t("cmd.zeros.backedUp", { file: backupFile }));
         const changes = diffZeros(backup.zeros, target);
-        env.out.line(
-          `Changing ${changes.length} servo${changes.length > 1 ? "s" : ""}: ${changes.map((c) => `${c.id}: ${c.from} → ${c.to}`).join(", ")}`,
-        );
+        const list = changes.map((c) => `${c.id}: ${c.from} → ${c.to}`).join(", ");
+        env.out.line(t("cmd.zeros.changing", { count: changes.length, changes: list }));
         return backupFile;
       },
       onWrite: () => {
         env.signal.addEventListener("abort", onAbort, { once: true });
         // If rbc has to exit before the write has finished (a second Ctrl-C), the robot's zeros are unknown.
-        if (backupFile) env.setExitNote(`The zeros may have been written. ${checkAdvice(backupFile)}`);
+        if (backupFile)
+          env.setExitNote(t("cmd.zeros.mayBeWritten", { advice: checkAdvice(backupFile)[locale] }));
       },
     });
   } catch (e) {
@@ -159,7 +179,7 @@ async function backupAndWrite(
     if (e instanceof ZeroWriteFailedError) {
       throw new CliError(
         errorCode(e.reason),
-        `${errorLine(e.reason)} ${checkAdvice(e.backupName)}`,
+        joinSaid([errorSaid(e.reason), checkAdvice(e.backupName)]),
         EXIT.failed,
         {
           backupFile: e.backupName,
@@ -172,53 +192,20 @@ async function backupAndWrite(
     env.setExitNote(undefined);
   }
   if (!outcome.changed) {
-    env.out.line(`The robot already holds these zeros (${target.join(",")}); nothing was written.`);
+    env.out.line(t("cmd.zeros.unchanged", { zeros: target.join(",") }));
     return { backupFile: undefined, result: undefined, interrupted: false };
   }
   const result: ZeroWriteResult = outcome;
-  env.out.line(`Written and verified: the robot reads back ${result.readBack.join(",")}.`);
+  env.out.line(t("cmd.zeros.written", { zeros: result.readBack.join(",") }));
   const interrupted = env.signal.aborted;
-  if (interrupted) {
-    env.out.note(
-      `rbc: interrupted after the write finished: the robot holds the new zeros (verified). The previous ones are in ${backupFile}.`,
-    );
-  }
+  if (interrupted) env.out.note(`rbc: ${t("cmd.zeros.interruptedAfterWrite", { file: backupFile ?? "" })}`);
   return { backupFile, result, interrupted };
 }
 
 export const zerosCommand: CommandDef = {
   name: "zeros",
-  summary: "read, write, back up or restore the servo zero positions",
   usage: "rbc zeros (read | write V0,V1,…,V15 | backup [FILE] | restore FILE) (--port PATH | --demo)",
-  description: `
-The zero positions are 16 calibration values, one per servo 0-15, stored in the RBC. Every motion is
-shifted by them, so wrong values make the robot stand crooked. Two fixed tables matter (the panel uses the
-same names):
-
-  reference zeros  125 202 162 66 108 124 48 88 184 142 90 40 125 161 210 127
-                   The table the RBC checks every write against: each zero must lie within ±15 of it, or
-                   the RBC refuses the whole table. rbc checks this first and sends nothing if a value is
-                   out of range.
-  factory zeros    124 202 162 65 108 125 46 88 184 142 90 40 125 161 210 126
-                   What the firmware holds when the robot is new (a starting point, not a calibration).
-
-  read             Prints the 16 values beside the reference zeros, the allowed range and the factory
-                   zeros.
-  write V0,…,V15   Writes 16 new values (comma separated, or 16 separate words), each within ±15 of the
-                   reference zeros. Before writing it saves the current values to
-                   rbc-zeros-<serial>-<date>.json (in --backup-dir, default the current folder), and after
-                   writing it reads them back to verify.
-  backup [FILE]    Saves the current values to FILE (default rbc-zeros-<serial>-<date>.json), in the same
-                   format as the panel's backups ("Back up zeros" there).
-  restore FILE     Writes the values of a backup file (checked first; a warning if it was saved from
-                   another robot), with the same automatic backup and verification as write.
-
-Ctrl-C during write or restore: before the write starts nothing is written; once it has started (it takes
-under a second) rbc lets the write and its check finish, says what the robot holds, then exits with 130.`,
-  options: [
-    ["--backup-dir DIR", "Where write and restore save the automatic backup (default: the current folder)."],
-    ["--force", "Let backup replace an existing FILE."],
-  ],
+  help: COMMAND_HELP.zeros,
   examples: [
     "rbc zeros read --demo",
     "rbc zeros write 125,202,162,66,108,124,48,88,184,142,90,40,125,161,210,127 --demo",
@@ -239,12 +226,9 @@ under a second) rbc lets the write and its check finish, says what the robot hol
       case "restore":
         return restore(env, values, args);
       case undefined:
-        throw new UsageError(
-          "Say what to do: zeros read, zeros write, zeros backup or zeros restore.",
-          "zeros",
-        );
+        throw new UsageError(said(commandMessages, "cmd.zeros.noAction"), "zeros");
       default:
-        throw new UsageError(`Unknown zeros action "${action}" (read, write, backup, restore).`, "zeros");
+        throw new UsageError(said(commandMessages, "cmd.zeros.unknownAction", { action }), "zeros");
     }
   },
 };
@@ -264,10 +248,13 @@ async function read(env: RunEnv, values: Values, args: string[]): Promise<number
   noExtraArguments("zeros", args, 0);
   const robot = await connectRobot("zeros", values, env);
   const current = await identify(robot);
+  const locale = localeOf(env);
+  const t = translator(commandMessages, locale);
   env.out.result({ serialNumber: current.serialNumber ?? null, zeros: current.zeros });
-  env.out.line(`Zero positions of robot ${robotName(current.serialNumber)} (${robot.where}):`);
-  for (const line of zerosTable(current.zeros)) env.out.line(line);
-  env.out.line(`As a list: ${current.zeros.join(",")}`);
+  const robotWords = { robot: robotName(current.serialNumber, locale), where: robotPlace(robot, locale) };
+  env.out.line(t("cmd.zeros.readTitle", robotWords));
+  for (const line of zerosTable(current.zeros, locale)) env.out.line(line);
+  env.out.line(t("cmd.zeros.asList", { zeros: current.zeros.join(",") }));
   return EXIT.ok;
 }
 
@@ -275,9 +262,10 @@ async function write(env: RunEnv, values: Values, args: string[]): Promise<numbe
   const target = parseZeroList(args);
   const problems = zeroProblems(target);
   if (problems.length > 0) {
+    const words = (l: Locale) => problems.map((p) => zeroProblemText(p, l)).join(" ");
     throw new CliError(
       "zero-out-of-range",
-      `Not written: ${problems.map((p) => p.message).join(" ")} Nothing was sent to the robot.`,
+      saidEach(commandMessages, "cmd.zeros.notWritten", (l) => [{ problems: words(l) }]),
     );
   }
   // Ctrl-C must not close the port in the middle of the write: backupAndWrite handles it.
@@ -310,8 +298,14 @@ async function backup(env: RunEnv, values: Values, args: string[]): Promise<numb
     serialNumber: current.serialNumber ?? null,
     savedAt: saved?.savedAt,
   });
+  const locale = localeOf(env);
   env.out.line(
-    `Backup saved as ${path}, ${current.zeros.length} zeros read from robot ${robotName(current.serialNumber)}: ${current.zeros.join(",")}`,
+    translator(commandMessages, locale)("cmd.zeros.backupSaved", {
+      file: path,
+      number: String(current.zeros.length),
+      robot: robotName(current.serialNumber, locale),
+      zeros: current.zeros.join(","),
+    }),
   );
   return EXIT.ok;
 }
@@ -319,17 +313,28 @@ async function backup(env: RunEnv, values: Values, args: string[]): Promise<numb
 async function restore(env: RunEnv, values: Values, args: string[]): Promise<number> {
   noExtraArguments("zeros", args, 1);
   const file = args[0];
-  if (file === undefined)
-    throw new UsageError("Give the backup file to restore: rbc zeros restore FILE.", "zeros");
+  if (file === undefined) throw new UsageError(said(commandMessages, "cmd.zeros.noBackupFile"), "zeros");
   const saved = await readBackupFile(file);
-  if (saved.zeros.length !== ZERO_COUNT)
-    throw new CliError("backup-wrong-count", `${file} does not hold 16 values.`);
+  if (saved.zeros.length !== ZERO_COUNT) {
+    throw new CliError("backup-wrong-count", said(commandMessages, "cmd.zeros.not16", { file }));
+  }
   // Ctrl-C must not close the port in the middle of the write: backupAndWrite handles it.
   const robot = await connectRobot("zeros", values, env, { handlesInterrupt: true });
   const current = await identify(robot);
   const warning = serialMismatchWarning(saved, current.serialNumber);
-  if (warning) env.out.note(`Warning: ${warning}`);
-  env.out.line(`Restoring ${file} (saved ${saved.savedAt} from robot ${saved.serialNumber || "(unknown)"}).`);
+  const locale = localeOf(env);
+  const t = translator(commandMessages, locale);
+  const savedFrom = saved.serialNumber || t("cmd.zeros.unknownRobot");
+  if (warning) {
+    const text =
+      locale === "en"
+        ? warning
+        : t("cmd.zeros.otherRobot", { saved: savedFrom, connected: current.serialNumber ?? "" });
+    env.out.note(t("cmd.warning", { warning: text }));
+  }
+  // English shows the file's own timestamp, as it always did; other languages a date and time of theirs.
+  const savedAt = locale === "en" ? saved.savedAt : formatDateTime(new Date(saved.savedAt), locale);
+  env.out.line(t("cmd.zeros.restoring", { file, savedAt, robot: savedFrom }));
   const { backupFile, result, interrupted } = await backupAndWrite(env, robot, values, saved.zeros, current);
   env.out.result({
     ...(interrupted ? INTERRUPTED_AFTER_WRITE : {}),

@@ -1,0 +1,402 @@
+import { defineMessages } from "../i18n/catalogue.ts";
+
+/**
+ * The words `rbc` shares between its commands: the command line itself (usage, language, interrupts),
+ * connecting, ports, files, progress, the motion file's problems, the robot's error codes and motions, and
+ * `rbc sim`'s own lines. Each command's words are in commands/messages.ts, the help in help/messages.ts.
+ *
+ * Where the English is a sentence the protocol or the device makes (a motion file's problem, a backup's),
+ * the English text here is its gist: English output prints their own sentence, Korean says it from the code.
+ */
+export const cliMessages = defineMessages({
+  "cli.usage.seeHelp": { en: 'Run "{help}" for usage.', ko: '사용법은 "{help}"로 볼 수 있어요.' },
+  "cli.usage.lang": {
+    en: '--lang takes en (English) or ko (Korean), not "{value}".',
+    ko: '--lang에는 en(영어)이나 ko(한국어)를 써 주세요. 받은 값: "{value}".',
+  },
+  "cli.usage.missingCommand": {
+    en: "Missing a command ({commands}).",
+    ko: "명령이 없어요 ({commands}).",
+  },
+  "cli.usage.unknownCommand": { en: 'Unknown command "{name}".', ko: '알 수 없는 명령이에요: "{name}".' },
+  "cli.usage.unknownOption": {
+    en: "Unknown option '{option}'.",
+    ko: "알 수 없는 옵션이에요: {option}.",
+  },
+  "cli.usage.optionNeedsValue": {
+    en: "Option '{option}' needs a value.",
+    ko: "옵션 {option} 다음에 값을 써 주세요.",
+  },
+  "cli.usage.optionNoValue": {
+    en: "Option '{option}' does not take a value.",
+    ko: "옵션 {option}은(는) 값을 받지 않아요.",
+  },
+  "cli.usage.badCommandLine": {
+    en: "The command line is wrong: {reason}",
+    ko: "명령줄이 잘못됐어요: {reason}",
+  },
+  "cli.usage.intOption": {
+    en: '--{name} must be a whole number from {min} to {max}, got "{value}".',
+    ko: '--{name}에는 {min}부터 {max}까지의 정수를 써 주세요. 받은 값: "{value}".',
+  },
+  "cli.usage.missing": { en: "Missing {what}.", ko: "빠진 값이 있어요: {what}." },
+  "cli.usage.intArgument": {
+    en: '{what} must be a whole number from {min} to {max}, got "{value}".',
+    ko: '{what}: {min}부터 {max}까지의 정수여야 해요. 받은 값: "{value}".',
+  },
+  "cli.usage.unexpected": {
+    en: 'Unexpected argument "{argument}".',
+    ko: '필요 없는 인수가 있어요: "{argument}".',
+  },
+
+  "cli.main.interrupted": { en: "interrupted.", ko: "중단했어요." },
+  "cli.main.notStopped": {
+    en: "the command did not stop in time; closing the port.",
+    ko: "명령이 제때 멈추지 않아서 포트를 닫아요.",
+  },
+  "cli.main.interruptedAgain": {
+    en: "interrupted again; exiting without waiting.",
+    ko: "다시 중단해서 기다리지 않고 끝내요.",
+  },
+
+  "cli.error.unexpected": { en: "Something unexpected went wrong.", ko: "예상하지 못한 문제가 생겼어요." },
+  "cli.error.busy": {
+    en: "or the robot is busy playing a motion or a sound: wait until it ends and try again.",
+    ko: "로봇이 모션이나 소리를 재생하는 중일 수도 있어요. 끝날 때까지 기다렸다가 다시 시도해 주세요.",
+  },
+  "cli.error.detailWithLog": {
+    en: "Run the command again with --log to see the technical detail.",
+    ko: "자세한 내용은 --log를 붙여 다시 실행하면 기술 정보로 볼 수 있어요.",
+  },
+  "cli.error.detailBelow": {
+    en: "The technical detail follows.",
+    ko: "자세한 내용은 아래 기술 정보에 있어요.",
+  },
+  "cli.error.detail": { en: "Technical detail: {detail}", ko: "기술 정보: {detail}" },
+
+  "cli.connect.demoRobot": { en: "the demo robot", ko: "데모 로봇" },
+  "cli.connect.portOrDemo": {
+    en: "Use either --port or --demo, not both.",
+    ko: "--port와 --demo 중 하나만 써 주세요.",
+  },
+  "cli.connect.whichRobot": {
+    en: "Say which robot: --port PATH (list ports with `rbc ports`), or --demo for the built-in simulated robot.",
+    ko: "어느 로봇인지 알려 주세요: --port PATH(`rbc ports`로 포트 목록을 볼 수 있어요), 또는 rbc에 들어 있는 가상 로봇이면 --demo.",
+  },
+  "cli.connect.timeScale": {
+    en: '{variable} must be a number above 0 and at most 1000, not "{value}".',
+    ko: '{variable}은(는) 0보다 크고 1000 이하인 수여야 해요. 받은 값: "{value}".',
+  },
+  "cli.connect.unasked": {
+    en: {
+      one: "the robot sent {count} reply that no request asked for (late or repeated); it was discarded.",
+      other:
+        "the robot sent {count} replies that no request asked for (late or repeated); they were discarded.",
+    },
+    ko: "로봇이 요청하지 않은 응답을 {count}개 보냈어요 (늦었거나 되풀이된 응답). 모두 버렸어요.",
+  },
+
+  "cli.port.cannotOpen": {
+    en: "Cannot open {path}{reason}. Run `rbc ports` to list the serial ports on this computer.",
+    ko: "{path}을(를) 열 수 없어요{reason}. `rbc ports`로 이 컴퓨터의 시리얼 포트 목록을 볼 수 있어요.",
+  },
+  "cli.port.busy": {
+    en: "Cannot open {path}{reason}: another program may be using it, or you may not have permission (on Linux, join the dialout group). Run `rbc ports` to list the serial ports.",
+    ko: "{path}을(를) 열 수 없어요{reason}. 다른 프로그램이 쓰고 있거나 권한이 없을 수 있어요 (Linux에서는 dialout 그룹에 들어가 주세요). `rbc ports`로 시리얼 포트 목록을 볼 수 있어요.",
+  },
+
+  "cli.file.noSuchFile": {
+    en: "Cannot read {path}: no such file.",
+    ko: "{path}을(를) 읽을 수 없어요: 그런 파일이 없어요.",
+  },
+  "cli.file.unreadable": { en: "Cannot read {path}: {why}.", ko: "{path}을(를) 읽을 수 없어요: {why}." },
+
+  "cli.progress.upload": {
+    en: "{bar} {acknowledged}/{total} bytes {percent}%  {rate} B/s  {left}",
+    ko: "{bar} {acknowledged}/{total}바이트 {percent}%  {rate}B/s  {left}",
+  },
+  "cli.progress.done": { en: "done", ko: "완료" },
+  "cli.progress.left": { en: "{seconds} s left", ko: "{seconds}초 남음" },
+
+  "cli.upload.motionSummary": {
+    en: '{file}: motion "{name}", {servos} servos, {scenes} scenes, plays about {duration}; image {image} bytes (takes {footprint} bytes of motion memory).',
+    ko: '{file}: 모션 "{name}", 서보 {servos}개, 장면 {scenes}개, 재생 시간 약 {duration}. 이미지 {image}바이트 (모션 메모리 {footprint}바이트 사용).',
+  },
+  "cli.upload.checkedClean": {
+    en: "Checked: no errors, no warnings.",
+    ko: "확인했어요: 오류 없음, 경고 없음.",
+  },
+  "cli.upload.checked": { en: "Checked: {errors}, {warnings}.", ko: "확인했어요: {errors}, {warnings}." },
+  "cli.upload.errors": { en: { one: "{count} error", other: "{count} errors" }, ko: "오류 {count}개" },
+  "cli.upload.warnings": { en: { one: "{count} warning", other: "{count} warnings" }, ko: "경고 {count}개" },
+
+  "cli.issue.error": { en: "error", ko: "오류" },
+  "cli.issue.warning": { en: "warning", ko: "경고" },
+  "cli.issue.scene": { en: "scene {scene}", ko: "장면 {scene}" },
+  "cli.issue.servo": { en: "servo {servo}", ko: "서보 {servo}" },
+
+  "cli.rbm.other": {
+    en: "The motion file has a problem.",
+    ko: "모션 파일에 문제가 있어요.",
+  },
+  "cli.rbm.shape": { en: "The motion is not in the expected form.", ko: "모션의 형식이 올바르지 않아요." },
+  "cli.rbm.notANumber": {
+    en: "A field that holds a whole number holds something else.",
+    ko: "정수가 있어야 할 필드에 다른 값이 있어요.",
+  },
+  "cli.rbm.outOfRange": {
+    en: "A value is outside the range its field holds.",
+    ko: "필드가 담을 수 있는 범위를 벗어난 값이 있어요.",
+  },
+  "cli.rbm.position": {
+    en: "A position is outside 0-254.",
+    ko: "위치 값이 0-254 범위를 벗어났어요.",
+  },
+  "cli.rbm.text": {
+    en: 'A text contains ":", which would split a field.',
+    ko: '텍스트에 필드를 나누는 ":" 문자가 들어 있어요.',
+  },
+  "cli.rbm.serialFormat": {
+    en: "The serial number is not 13 digits, the form Motionbuilder writes.",
+    ko: "시리얼 번호가 Motionbuilder가 쓰는 형식(13자리 숫자)이 아니에요.",
+  },
+  "cli.rbm.serialMismatch": {
+    en: "The motion was made for another robot (another serial number); check that it suits this one.",
+    ko: "이 모션은 다른 로봇(다른 시리얼 번호)을 위해 만든 거예요. 이 로봇에 맞는지 확인해 주세요.",
+  },
+  "cli.rbm.headerConstant": {
+    en: "A header value differs from what Motionbuilder always writes.",
+    ko: "헤더의 값이 Motionbuilder가 늘 쓰는 값과 달라요.",
+  },
+  "cli.rbm.servoCount": {
+    en: "The number of servos does not fit (a motion has 1 to 31, listed in every scene).",
+    ko: "서보 개수가 맞지 않아요 (모션의 서보는 1-31개이고, 장면마다 모두 적혀 있어야 해요).",
+  },
+  "cli.rbm.sceneCount": {
+    en: "The number of scenes the motion gives differs from the scenes it lists.",
+    ko: "모션에 적힌 장면 개수가 실제 장면 수와 달라요.",
+  },
+  "cli.rbm.hunoServoCount": {
+    en: "The motion does not have the 16 servos of a HUNO.",
+    ko: "모션의 서보 개수가 HUNO의 16개와 달라요.",
+  },
+  "cli.rbm.servoId": {
+    en: "A servo id is wrong, repeated or out of order.",
+    ko: "서보 ID가 잘못됐거나, 두 번 나오거나, 순서가 맞지 않아요.",
+  },
+  "cli.rbm.sceneIndex": {
+    en: "A scene is numbered out of order.",
+    ko: "장면 번호가 순서에 맞지 않아요.",
+  },
+  "cli.rbm.frames": { en: "A scene has no frames.", ko: "프레임이 없는 장면이 있어요." },
+  "cli.rbm.frameIntervalShort": {
+    en: "A scene's frames are closer together than the RBC allows; use fewer frames.",
+    ko: "장면의 프레임 간격이 RBC가 허용하는 것보다 짧아요. 프레임 수를 줄여 주세요.",
+  },
+  "cli.rbm.frameIntervalLong": {
+    en: "A scene's frames are further apart than the RBC allows (4,550 ms).",
+    ko: "장면의 프레임 간격이 RBC가 허용하는 것(4,550ms)보다 길어요.",
+  },
+  "cli.rbm.manyFrames": {
+    en: "A scene has more frames than Motionbuilder's 100.",
+    ko: "장면의 프레임 수가 Motionbuilder의 최대 100개보다 많아요.",
+  },
+  "cli.rbm.longScene": {
+    en: "A scene lasts longer than Motionbuilder's 10,000 ms.",
+    ko: "장면이 Motionbuilder의 최대 10,000ms보다 길어요.",
+  },
+  "cli.rbm.torque": { en: "A torque is outside 0-4.", ko: "토크 값이 0-4 범위를 벗어났어요." },
+  "cli.rbm.port": { en: "A port value is outside 0-3.", ko: "포트 값이 0-3 범위를 벗어났어요." },
+  "cli.rbm.unsafePosition": {
+    en: "A servo goes outside its safe range.",
+    ko: "서보가 안전 범위를 벗어난 위치로 움직여요.",
+  },
+  "cli.rbm.sceneJump": {
+    en: "A scene starts a servo where the previous one did not leave it; the servo will jump.",
+    ko: "장면이 이전 장면이 끝난 위치와 다른 곳에서 서보를 시작해요. 서보가 갑자기 움직여요.",
+  },
+  "cli.rbm.notText": { en: "A motion file must be read as text.", ko: "모션 파일은 텍스트로 읽어야 해요." },
+  "cli.rbm.tooLarge": {
+    en: "The file is far larger than any motion file, so it is not one.",
+    ko: "파일이 어떤 모션 파일보다도 훨씬 커서 모션 파일이 아니에요.",
+  },
+  "cli.rbm.empty": { en: "The motion file is empty.", ko: "모션 파일이 비어 있어요." },
+  "cli.rbm.notMotion": {
+    en: "The file is not a Motionbuilder motion file (.rbm).",
+    ko: "이 파일은 Motionbuilder 모션 파일(.rbm)이 아니에요.",
+  },
+  "cli.rbm.end": {
+    en: 'The file does not end with ":"; it is truncated or damaged.',
+    ko: '파일이 ":"로 끝나지 않아요. 잘렸거나 손상된 파일이에요.',
+  },
+  "cli.rbm.fieldCount": {
+    en: "The file has the wrong number of fields; it is truncated or damaged.",
+    ko: "파일의 필드 수가 맞지 않아요. 잘렸거나 손상된 파일이에요.",
+  },
+  "cli.rbm.fieldTooLong": {
+    en: "A field of the file is longer than it may be.",
+    ko: "파일의 필드 중에 허용되는 길이보다 긴 것이 있어요.",
+  },
+  "cli.rbm.lengthMismatch": {
+    en: "A name's length differs from its length field.",
+    ko: "이름의 길이가 길이 필드에 적힌 값과 달라요.",
+  },
+  "cli.rbm.imageRange": {
+    en: "A value does not fit the motion image the robot stores.",
+    ko: "로봇에 저장할 모션 이미지에 들어가지 않는 값이 있어요.",
+  },
+  "cli.rbm.unwritable": {
+    en: "A value cannot be written in an .rbm file.",
+    ko: ".rbm 파일에 쓸 수 없는 값이 있어요.",
+  },
+
+  "cli.robotError.none": { en: "no error", ko: "오류 없음" },
+  "cli.robotError.eeprom": { en: "serial EEPROM write error", ko: "시리얼 EEPROM 쓰기 오류" },
+  "cli.robotError.checksum": {
+    en: "checksum error (a download chunk was corrupted)",
+    ko: "체크섬 오류 (다운로드한 조각이 손상됨)",
+  },
+  "cli.robotError.motionsFull": {
+    en: "too many motions, or motion memory full",
+    ko: "모션이 너무 많거나 모션 메모리가 가득 참",
+  },
+  "cli.robotError.actionsFull": {
+    en: "too many actions, or action memory full",
+    ko: "액션이 너무 많거나 액션 메모리가 가득 참",
+  },
+  "cli.robotError.platform": { en: "platform mismatch", ko: "플랫폼이 맞지 않음" },
+  "cli.robotError.frameInterval": {
+    en: "frame interval error (frames closer than 20 ms)",
+    ko: "프레임 간격 오류 (프레임 사이가 20ms보다 짧음)",
+  },
+  "cli.robotError.zeroSet": {
+    en: "zero-set error (a zero value was out of range)",
+    ko: "영점 설정 오류 (영점 값이 범위를 벗어남)",
+  },
+  "cli.robotError.zeroData": { en: "stored zero data invalid", ko: "저장된 영점 데이터가 잘못됨" },
+  "cli.robotError.servoCount": { en: "wrong servo count", ko: "서보 개수가 맞지 않음" },
+  "cli.robotError.servoPosition": { en: "servo position error", ko: "서보 위치 오류" },
+  "cli.robotError.servoSilent": { en: "a servo did not answer", ko: "응답하지 않은 서보가 있음" },
+  "cli.robotError.unknown": { en: "unknown error code", ko: "알 수 없는 오류 코드" },
+  "cli.platform.unknown": { en: "unknown ({platform})", ko: "알 수 없음 ({platform})" },
+
+  "cli.motion.getUpFront": { en: "Get up A (from front)", ko: "일어나기 A (앞으로 넘어졌을 때)" },
+  "cli.motion.getUpBack": { en: "Get up B (from back)", ko: "일어나기 B (뒤로 넘어졌을 때)" },
+  "cli.motion.turnLeft": { en: "Turn left", ko: "왼쪽으로 돌기" },
+  "cli.motion.walkForward": { en: "Walk forward", ko: "앞으로 걷기" },
+  "cli.motion.turnRight": { en: "Turn right", ko: "오른쪽으로 돌기" },
+  "cli.motion.sidestepLeft": { en: "Sidestep left", ko: "왼쪽으로 옆걸음" },
+  "cli.motion.basicPosture": { en: "Basic posture", ko: "기본 자세" },
+  "cli.motion.sidestepRight": { en: "Sidestep right", ko: "오른쪽으로 옆걸음" },
+  "cli.motion.punchLeft": { en: "Punch left", ko: "왼손 펀치" },
+  "cli.motion.walkBackward": { en: "Walk backward", ko: "뒤로 걷기" },
+  "cli.motion.punchRight": { en: "Punch right", ko: "오른손 펀치" },
+  "cli.motion.downloaded": {
+    en: "{motion} (downloaded motion {slot})",
+    ko: "{motion} (다운로드한 모션 {slot})",
+  },
+
+  "cli.play.moveWarning": {
+    en: "The robot will move. Hold it or make sure it can stand.",
+    ko: "로봇이 움직여요. 로봇을 잡거나 혼자 설 수 있는지 확인해 주세요.",
+  },
+  "cli.play.question": { en: "{warning} Play?", ko: "{warning} 재생할까요?" },
+
+  "cli.zerosFile.noFreeName": {
+    en: "Could not find a free backup file name in {dir}.",
+    ko: "{dir}에서 비어 있는 백업 파일 이름을 찾지 못했어요.",
+  },
+  "cli.zerosFile.backupNotWritten": {
+    en: "Could not write the zero backup {path} ({why}); nothing was sent to the robot.",
+    ko: "영점 백업 {path}을(를) 쓰지 못했어요 ({why}). 로봇에 아무것도 보내지 않았어요.",
+  },
+  "cli.zerosFile.exists": {
+    en: "{path} already exists. Choose another name, or add --force to replace it.",
+    ko: "{path}이(가) 이미 있어요. 다른 이름을 고르거나, 덮어쓰려면 --force를 붙여 주세요.",
+  },
+  "cli.zerosFile.notWritten": {
+    en: "Could not write {path} ({why}).",
+    ko: "{path}을(를) 쓰지 못했어요 ({why}).",
+  },
+  "cli.zerosFile.notJson": {
+    en: "{path}: This file is not a zero backup: it is not JSON text.",
+    ko: "{path}: 영점 백업 파일이 아니에요 (JSON 텍스트가 아님). rbc-zeros-<serial>-<date>.json 같은 이름으로 저장된 파일을 골라 주세요.",
+  },
+  "cli.zerosFile.wrongFormat": {
+    en: "{path}: This file is JSON but not an RBC zero backup.",
+    ko: "{path}: JSON 파일이지만 RBC 영점 백업이 아니에요. rbc-zeros-<serial>-<date>.json 같은 이름으로 저장된 파일을 골라 주세요.",
+  },
+  "cli.zerosFile.wrongVersion": {
+    en: "{path}: This backup is of a version rbc does not read.",
+    ko: "{path}: rbc가 읽을 수 없는 버전의 백업이에요.",
+  },
+  "cli.zerosFile.wrongCount": {
+    en: "{path}: This backup does not hold exactly 16 values, one per servo 0-15.",
+    ko: "{path}: 이 백업에는 서보 0-15마다 하나씩, 정확히 16개의 값이 있어야 해요.",
+  },
+  "cli.zerosFile.outOfRange": {
+    en: "{path}: The robot would refuse this backup's zeros.",
+    ko: "{path}: 로봇이 이 백업의 영점을 거부할 거예요. 기준 영점의 ±15를 벗어난 값이 있어요.",
+  },
+  "cli.zerosFile.invalid": {
+    en: "{path}: This backup file is damaged.",
+    ko: "{path}: 백업 파일이 손상됐어요.",
+  },
+
+  "cli.pty.timeout": {
+    en: "socat did not create a PTY pair within {ms} ms: {output}",
+    ko: "socat이 {ms}ms 안에 PTY 쌍을 만들지 못했어요: {output}",
+  },
+  "cli.pty.noSocat": {
+    en: "rbc sim --pty needs socat (e.g. sudo apt-get install socat); or make a pair yourself and pass one end with --port.",
+    ko: "rbc sim --pty에는 socat이 필요해요 (예: sudo apt-get install socat). 아니면 직접 쌍을 만들고 한쪽을 --port로 넘겨 주세요.",
+  },
+  "cli.pty.notStarted": { en: "Could not start socat: {reason}", ko: "socat을 시작하지 못했어요: {reason}" },
+  "cli.pty.exited": {
+    en: "socat exited (code {code}): {output}",
+    ko: "socat이 끝났어요 (코드 {code}): {output}",
+  },
+
+  "cli.variant.firmware": {
+    en: '--firmware must be MAJOR.MINOR with each part 0-255 (e.g. 2.23 or 9.99), got "{value}".',
+    ko: '--firmware는 MAJOR.MINOR 형식이고 각 부분은 0-255여야 해요 (예: 2.23, 9.99). 받은 값: "{value}".',
+  },
+  "cli.variant.platform": {
+    en: '--platform must be a whole number from 0 to 255, got "{value}".',
+    ko: '--platform에는 0부터 255까지의 정수를 써 주세요. 받은 값: "{value}".',
+  },
+  "cli.variant.repeatType": {
+    en: '--repeat-type must be a reply type such as 0x16, got "{value}".',
+    ko: '--repeat-type에는 0x16 같은 응답 종류를 써 주세요. 받은 값: "{value}".',
+  },
+  "cli.variant.demoVariant": {
+    en: '{variable} takes the variant switches of `rbc sim` (e.g. "--no-serial --firmware 9.99"): {reason}',
+    ko: '{variable}에는 `rbc sim`의 변형 옵션을 써요 (예: "--no-serial --firmware 9.99"): {reason}',
+  },
+  "cli.variant.inVariable": { en: "{variable}: {reason}", ko: "{variable} 환경 변수: {reason}" },
+  "cli.variant.noSerial": { en: "no answer to 0x0C (serial number)", ko: "0x0C(시리얼 번호)에 응답 안 함" },
+  "cli.variant.noStatus": { en: "no answer to 0x1E (execution status)", ko: "0x1E(실행 상태)에 응답 안 함" },
+  "cli.variant.repeats": {
+    en: "the first {type} ({name}) reply repeated endlessly",
+    ko: "첫 {type} ({name}) 응답을 끝없이 되풀이",
+  },
+  "cli.variant.about": {
+    en: "firmware {firmware}, serial {serial}, platform {platform} ({name})",
+    ko: "펌웨어 {firmware}, 시리얼 {serial}, 플랫폼 {platform} ({name})",
+  },
+  "cli.variant.serialNotReported": { en: "not reported", ko: "알려 주지 않음" },
+
+  "cli.sim.powerCycled": {
+    en: "Power cycle: the simulated robot was switched off and on; its bootloader starts.",
+    ko: "전원 껐다 켜기: 가상 로봇을 껐다 켰어요. 부트로더가 시작돼요.",
+  },
+  "cli.sim.deviceLost": {
+    en: "{path} was closed; the simulator stopped.",
+    ko: "{path}이(가) 닫혀서 가상 로봇을 멈췄어요.",
+  },
+  "cli.sim.deviceLostBecause": {
+    en: "{path} was closed: {reason}; the simulator stopped.",
+    ko: "{path}이(가) 닫혀서 가상 로봇을 멈췄어요: {reason}",
+  },
+  "cli.sim.deviceError": { en: "{path}: {reason}", ko: "{path}에 문제가 생겼어요: {reason}" },
+});
