@@ -1,9 +1,17 @@
+import type { Locale } from "../../i18n/locale.ts";
+import { translator } from "../../i18n/translate.ts";
 import { loadCharts } from "./chart-loader.ts";
+import { chartMessages } from "./messages.ts";
 import type { ChartHandle, ChartSpec } from "./uplot-charts.ts";
 
 export interface ChartContent {
-  /** A new key rebuilds the chart (other series); the same key only replaces the data. */
+  /**
+   * A new key rebuilds the chart (other series, other words); the same key only replaces the data. Put the
+   * language in it, so that a change of language draws the chart with the new words.
+   */
   key: string;
+  /** The language of the chart's own sentences (the one saying it could not be loaded); English by default. */
+  locale?: Locale;
   spec: ChartSpec;
   x: readonly number[];
   ys: readonly (readonly number[])[];
@@ -86,13 +94,13 @@ export class ChartSlot {
         if (token !== this.token) return;
         this.drawnKey = undefined;
         host.dataset.chart = "failed";
-        if (!host.querySelector(".chart-failed")) {
-          const p = document.createElement("p");
+        let p = host.querySelector(".chart-failed");
+        if (!p) {
+          p = document.createElement("p");
           p.className = "chart-failed muted small";
-          p.textContent =
-            "The chart could not be loaded (offline?). The figures beside it are still current.";
           host.append(p);
         }
+        p.textContent = translator(chartMessages, content.locale ?? "en")("charts.loadFailed");
       },
     );
   }

@@ -1,14 +1,15 @@
+import type { Locale } from "../../i18n/locale.ts";
+import { translator } from "../../i18n/translate.ts";
+import { robot3dMessages } from "./messages.ts";
+
 /**
- * Why the 3D view cannot draw. The view shows the message in place of the picture; the `code` is stable for
- * programs and tests.
+ * Why the 3D view cannot draw. The view shows the sentence for the `code` in the panel's language in place of
+ * the picture (`robot3dErrorText`); the `code` is stable for programs and tests, the message is English.
  */
 export class Robot3dError extends Error {
   override name = "Robot3dError";
-  constructor(
-    readonly code: Robot3dErrorCode,
-    message: string,
-  ) {
-    super(message);
+  constructor(readonly code: Robot3dErrorCode) {
+    super(robot3dErrorText(code, "en"));
   }
 }
 
@@ -18,8 +19,8 @@ export type Robot3dErrorCode =
   /** The 3D module could not be loaded (offline before it was first fetched). */
   | "robot3d-load-failed";
 
-export const NO_WEBGL_TEXT =
-  "The 3D view needs WebGL 2, which this browser does not offer here (it may be switched off, or the graphics driver blocked). The scene table describes the motion in text.";
-
-export const LOAD_FAILED_TEXT =
-  "The 3D view could not be loaded (offline since the panel was opened?). The scene table describes the motion in text.";
+/** What the person reads in place of the picture, in `locale`. */
+export function robot3dErrorText(code: Robot3dErrorCode, locale: Locale): string {
+  const t = translator(robot3dMessages, locale);
+  return code === "robot3d-no-webgl" ? t("robot3d.noWebgl") : t("robot3d.loadFailed");
+}

@@ -10,6 +10,7 @@
  * burst of servo moves cost one picture per frame at most, never a loop. No tweening: a new position is drawn
  * as it is, which is also what `prefers-reduced-motion` asks for.
  */
+import type { Locale } from "../../i18n/locale.ts";
 import type { HunoPose, ZeroTable } from "./huno-model.ts";
 import type { Mounted } from "./mount-directive.ts";
 import { RobotCanvas } from "./robot-canvas.ts";
@@ -31,6 +32,8 @@ export interface LiveRobotCanvasOptions {
   zeros?: ZeroTable;
   /** The canvas's accessible name. */
   label: string;
+  /** The language of the view's own sentences (loading, no WebGL). */
+  locale?: Locale;
 }
 
 export class LiveRobotCanvas implements Mounted<LiveRobotCanvasOptions> {
@@ -72,6 +75,6 @@ export class LiveRobotCanvas implements Mounted<LiveRobotCanvasOptions> {
   private show(pose: HunoPose): void {
     const o = this.options;
     if (!o) return;
-    this.canvas.setOptions({ pose, zeros: o.zeros, label: o.label });
+    this.canvas.setOptions({ pose, zeros: o.zeros, label: o.label, locale: o.locale });
   }
 }

@@ -13,12 +13,16 @@
  */
 import "../styles/robot3d.css";
 import { html, nothing, type TemplateResult } from "lit-html";
+import type { Locale } from "../../i18n/locale.ts";
+import { translator } from "../../i18n/translate.ts";
+import { formatTime } from "../../i18n/units.ts";
 import { HUNO_BASIC_POSTURE, HUNO_SERVO_IDS } from "../../protocol/servo-limits.ts";
 import { STANDARD_ZEROS } from "../../protocol/zeros.ts";
-import { formatClockTime } from "../format.ts";
 import type { HunoPose, ZeroTable } from "./huno-model.ts";
 import { LiveRobotCanvas, type LiveRobotCanvasOptions, type LiveServoSource } from "./live-robot-canvas.ts";
+import { type Robot3dTranslator, robot3dMessages } from "./messages.ts";
 import { mountDirective } from "./mount-directive.ts";
+import { robot3dLocale } from "./page-locale.ts";
 
 /** The demo robot's simulator as the panel reaches it (`ctx.session.demoSim`): its servos and zero table. */
 export interface DemoServos extends LiveServoSource {
@@ -42,23 +46,16 @@ export interface LiveRobotPanelOptions {
   motionPlaying: boolean;
   /** Where the positions are in text, for the canvas's name: "the servo table lists them in numbers". */
   textVersion: string;
+  /** The panel's language (`ctx.state.locale`); the page's if not given (page-locale.ts). */
+  locale?: Locale;
 }
 
 const liveView = mountDirective<LiveRobotCanvasOptions>((host) => new LiveRobotCanvas(host));
 
-export const SHOW_TEXT = "Show the robot in 3D";
-export const HIDE_TEXT = "Hide the robot in 3D";
-export const DEMO_CAPTION = "Demo robot, live";
-
-/** "12:04:31": the time of day, to the second. */
-function clockTime(epochMs: number): string {
-  return formatClockTime(epochMs).slice(0, 8);
-}
-
-/** "3", "3 and 7", "3, 7 and 9". */
-function idList(ids: readonly number[]): string {
+/** "3", "3 and 7", "3, 7 and 9" / "3, 7, 9". */
+function idList(t: Robot3dTranslator, ids: readonly number[]): string {
   if (ids.length <= 1) return ids.join("");
-  return `${ids.slice(0, -1).join(", ")} and ${ids.at(-1)}`;
+  return t("robot3d.live.idList", { list: ids.slice(0, -1).join(", "), last: String(ids.at(-1)) });
 }
 
 /** What a robot on a cable is drawn with: the last known positions, the basic posture where none is known. */
@@ -83,75 +80,80 @@ export interface HardwarePicture {
 export function hardwarePicture(
   known: LiveRobotPanelOptions["known"],
   robotZeros: readonly number[] | undefined,
+  locale: Locale = "en",
 ): HardwarePicture {
+  const t = translator(robot3dMessages, locale);
   const unread = HUNO_SERVO_IDS.filter((id) => known.positions[id] === undefined);
   const pose = HUNO_SERVO_IDS.map((id) => known.positions[id] ?? HUNO_BASIC_POSTURE[id]);
   const zeros = HUNO_SERVO_IDS.map((id) =>
     known.positions[id] === undefined ? STANDARD_ZEROS[id] : (robotZeros?.[id] ?? STANDARD_ZEROS[id]),
   );
   const none = unread.length === HUNO_SERVO_IDS.length;
-  const when = known.at === undefined ? "" : `, ${clockTime(known.at)}`;
-  const caption = none ? "No positions read yet: drawn in the basic posture" : `Last read positions${when}`;
-  const servos = `Servo${unread.length === 1 ? "" : "s"} ${idList(unread)}`;
-  const unreadText = none
-    ? "The panel has not read this robot's servos in this connection, so every joint is drawn at the basic posture, not where the robot is. Read them in the Servos view (Start servo control)."
-    : unread.length > 0
-      ? `${servos} ${unread.length === 1 ? "was" : "were"} never read (or did not answer): drawn at the basic posture, not where ${unread.length === 1 ? "it is" : "they are"}.`
-      : undefined;
-  const label = none
-    ? "3D view of the robot in the basic posture: none of its positions has been read"
-    : `3D view of the robot at its last read positions${when}${unread.length > 0 ? `; ${servos.toLowerCase()} never read, drawn at the basic posture` : ""}`;
-  return { pose, zeros, unread, caption, unreadText, label };
+  // "12:04:31": the time of day, to the second.
+  const time = known.at === undefined ? undefined : formatTime(known.at, locale);
+  const ids = idList(t, unread);
+  const one = unread.length === 1;
+  if (none) {
+    return {
+      pose,
+      zeros,
+      unread,
+      caption: t("robot3d.live.noneRead"),
+      unreadText: t("robot3d.live.noneReadText"),
+      label: t("robot3d.live.noneReadLabel"),
+    };
+  }
+  const caption = time === undefined ? t("robot3d.live.lastRead") : t("robot3d.live.lastReadAt", { time });
+  const unreadText =
+    unread.length === 0
+      ? undefined
+      : one
+        ? t("robot3d.live.unreadOne", { ids })
+        : t("robot3d.live.unreadMany", { ids });
+  const labels = [time === undefined ? t("robot3d.live.label") : t("robot3d.live.labelAt", { time })];
+  if (unread.length > 0)
+    labels.push(one ? t("robot3d.live.unreadLabelOne", { ids }) : t("robot3d.live.unreadLabelMany", { ids }));
+  return { pose, zeros, unread, caption, unreadText, label: labels.join("; ") };
 }
 
-function demoBody(o: LiveRobotPanelOptions, demo: DemoServos): TemplateResult {
-  const label = `3D view of the demo robot, live: it follows the simulated servos as they move; ${o.textVersion}`;
+function demoBody(o: LiveRobotPanelOptions, t: Robot3dTranslator, demo: DemoServos): TemplateResult {
+  const label = t("robot3d.live.demoLabel", { textVersion: o.textVersion });
+  const locale = t.locale;
   return html`
-    <p class="live-robot-caption" data-testid="live-robot-caption"><strong>${DEMO_CAPTION}</strong></p>
-    <div class="robot3d" data-testid="live-robot-view" ${liveView({ source: demo, pose: [], zeros: demo.zeros, label })}></div>
-    <p class="muted small">
-      The demo robot's servos are simulated in this page, so the picture follows them as they move (motions,
-      servo moves). A robot on a cable cannot be followed during a motion: it answers nothing but Basic posture
-      (7) while it plays.
-    </p>
+    <p class="live-robot-caption" data-testid="live-robot-caption"><strong>${t("robot3d.live.demoCaption")}</strong></p>
+    <div class="robot3d" data-testid="live-robot-view" ${liveView({ source: demo, pose: [], zeros: demo.zeros, label, locale })}></div>
+    <p class="muted small">${t("robot3d.live.demoText")}</p>
   `;
 }
 
-function hardwareBody(o: LiveRobotPanelOptions): TemplateResult {
-  const p = hardwarePicture(o.known, o.robotZeros);
+function hardwareBody(o: LiveRobotPanelOptions, t: Robot3dTranslator): TemplateResult {
+  const locale = t.locale;
+  const p = hardwarePicture(o.known, o.robotZeros, locale);
   const label = `${p.label}; ${o.textVersion}`;
   return html`
     <p class="live-robot-caption" data-testid="live-robot-caption"><strong>${p.caption}</strong></p>
-    <div class="robot3d" data-testid="live-robot-view" ${liveView({ pose: p.pose, zeros: p.zeros, label })}></div>
+    <div class="robot3d" data-testid="live-robot-view" ${liveView({ pose: p.pose, zeros: p.zeros, label, locale })}></div>
     ${p.unreadText ? html`<p class="small" data-testid="live-robot-unread">${p.unreadText}</p>` : nothing}
     ${
       o.motionPlaying
-        ? html`<p class="notice notice--info small" data-testid="live-robot-motion">
-            A motion is playing. The robot answers nothing but Basic posture (7) until it ends, so its servos cannot
-            be read: the picture does not follow the motion and still shows the positions read before.
-          </p>`
+        ? html`<p class="notice notice--info small" data-testid="live-robot-motion">${t("robot3d.live.motionPlaying")}</p>`
         : nothing
     }
     <p class="muted small">
-      The picture shows what the robot last reported, not a live view: during a motion the robot's servos cannot
-      be read (it answers nothing but Basic posture (7) while it plays), and a hand or a motion may have moved
-      them since. ${
-        o.robotZeros
-          ? ""
-          : "This robot's zeros have not been read in this connection, so angles are measured from the standard zero table."
-      }
+      ${t("robot3d.live.notLive")} ${o.robotZeros ? "" : t("robot3d.live.standardZeros")}
     </p>
   `;
 }
 
 /** The "Robot in 3D" card: a heading, the show/hide button and, when shown, the robot. */
 export function liveRobotPanel(o: LiveRobotPanelOptions): TemplateResult {
+  const t = translator(robot3dMessages, robot3dLocale(o.locale));
   const titleId = `${o.id}-robot3d-title`;
   const bodyId = `${o.id}-robot3d-body`;
   return html`
     <section class="card live-robot" aria-labelledby=${titleId} data-testid="live-robot">
       <div class="card-head">
-        <h2 id=${titleId} class="card-title">Robot in 3D</h2>
+        <h2 id=${titleId} class="card-title">${t("robot3d.live.title")}</h2>
         <div class="row-actions">
           <button
             type="button"
@@ -161,11 +163,11 @@ export function liveRobotPanel(o: LiveRobotPanelOptions): TemplateResult {
             aria-controls=${o.shown ? bodyId : nothing}
             @click=${o.onToggle}
           >
-            ${o.shown ? HIDE_TEXT : SHOW_TEXT}
+            ${o.shown ? t("robot3d.live.hide") : t("robot3d.live.show")}
           </button>
         </div>
       </div>
-      ${o.shown ? html`<div id=${bodyId}>${o.demo ? demoBody(o, o.demo) : hardwareBody(o)}</div>` : nothing}
+      ${o.shown ? html`<div id=${bodyId}>${o.demo ? demoBody(o, t, o.demo) : hardwareBody(o, t)}</div>` : nothing}
     </section>
   `;
 }

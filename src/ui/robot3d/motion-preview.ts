@@ -10,8 +10,13 @@
  * `data-playing` for tests.
  */
 import { html, nothing, render } from "lit-html";
+import type { Locale } from "../../i18n/locale.ts";
+import { translator } from "../../i18n/translate.ts";
+import { formatSeconds } from "../../i18n/units.ts";
 import type { Motion } from "../../motion/index.ts";
 import type { ZeroTable } from "./huno-model.ts";
+import { robot3dMessages } from "./messages.ts";
+import { robot3dLocale } from "./page-locale.ts";
 import { type MotionTimeline, motionTimeline, motionZeros, poseAt, sceneAt } from "./pose-at.ts";
 import { robot3d } from "./robot3d.ts";
 
@@ -24,14 +29,16 @@ export interface MotionPreviewOptions {
   testId?: string;
   /** Start playing when first shown (default true; never with reduced motion). */
   autoplay?: boolean;
+  /** The language of the controls and hints: `ctx.state.locale`; the page's if not given (page-locale.ts). */
+  locale?: Locale;
 }
 
 /** How far the scrub bar's arrow keys move, ms. */
 export const TIME_KEY_STEP_MS = 100;
 
-/** "1.2 s" for the time display. */
-export function formatPreviewTime(ms: number): string {
-  return `${(Math.max(0, ms) / 1000).toFixed(1)} s`;
+/** "1.2 s" / "1.2초" for the time display. */
+export function formatPreviewTime(ms: number, locale: Locale = "en"): string {
+  return formatSeconds(Math.max(0, ms) / 1000, locale);
 }
 
 /**
@@ -42,13 +49,15 @@ export function describeTime(
   motion: Motion,
   tMs: number,
   timeline: MotionTimeline = motionTimeline(motion),
+  locale: Locale = "en",
 ): string {
+  const t = translator(robot3dMessages, locale);
   const at = sceneAt(motion, tMs, timeline);
-  if (!at) return "no scenes";
-  if (tMs >= at.endMs) return `end of scene ${at.scene}, ${at.name}`;
+  if (!at) return t("robot3d.noScenes");
+  if (tMs >= at.endMs) return t("robot3d.sceneEnd", { scene: at.scene, name: at.name });
   const before = timeline.scenes[at.scene - 1];
-  if (before && tMs <= at.startMs) return `end of scene ${before.scene}, ${before.name}`;
-  return `scene ${at.scene}, ${at.name}`;
+  if (before && tMs <= at.startMs) return t("robot3d.sceneEnd", { scene: before.scene, name: before.name });
+  return t("robot3d.scene", { scene: at.scene, name: at.name });
 }
 
 export class MotionPreview {
@@ -191,24 +200,27 @@ export class MotionPreview {
     const timeline = this.timelineOf(motion);
     const t = this.tMs;
     const duration = this.durationMs;
+    const locale = robot3dLocale(o.locale);
+    const say = translator(robot3dMessages, locale);
     const robot = robot3d({
       pose: poseAt(motion, t, timeline),
       zeros: o.zeros ?? motionZeros(motion),
       label: o.label,
       testId: "robot3d-view",
+      locale,
     });
-    const sceneText = describeTime(motion, t, timeline);
-    const clock = `${formatPreviewTime(t)} / ${formatPreviewTime(duration)}`;
+    const sceneText = describeTime(motion, t, timeline, locale);
+    const clock = `${formatPreviewTime(t, locale)} / ${formatPreviewTime(duration, locale)}`;
     const atEnd = t >= duration;
     const playLabel = this.reduced
       ? atEnd
-        ? "Back to the start"
-        : "Next scene"
+        ? say("robot3d.backToStart")
+        : say("robot3d.nextScene")
       : this.playing
-        ? "Pause"
+        ? say("robot3d.pause")
         : atEnd && duration > 0
-          ? "Play again"
-          : "Play";
+          ? say("robot3d.playAgain")
+          : say("robot3d.play");
     this.host.dataset.time = String(Math.round(t));
     this.host.dataset.duration = String(duration);
     this.host.dataset.playing = String(this.playing);
@@ -219,7 +231,7 @@ export class MotionPreview {
         <button type="button" class="btn robot3d-play" data-testid="preview-play" ?disabled=${duration === 0} @click=${this.onPlay}>
           ${playLabel}
         </button>
-        <label class="robot3d-time-label" for=${`${this.id}-time`}>Time</label>
+        <label class="robot3d-time-label" for=${`${this.id}-time`}>${say("robot3d.time")}</label>
         <input
           id=${`${this.id}-time`}
           class="robot3d-time"
@@ -237,9 +249,9 @@ export class MotionPreview {
         <span class="num robot3d-clock" data-testid="preview-clock">${clock}</span>
         <span class="muted small robot3d-scene">${sceneText}</span>
         <p id=${`${this.id}-hint`} class="muted small robot3d-hint">
-          ${this.reduced ? "Reduced motion is on: Next scene shows each scene's pose without animating. " : ""}Time:
-          arrow keys move 0.1 s, Page Up and Page Down a scene. Turn the robot: drag it, or focus it and use the
-          arrow keys.
+          ${this.reduced ? `${say("robot3d.reducedHint")} ` : ""}${say("robot3d.keysHint", {
+            step: formatSeconds(TIME_KEY_STEP_MS / 1000, locale),
+          })}
         </p>
         </div>
       `,

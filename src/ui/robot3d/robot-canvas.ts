@@ -9,9 +9,13 @@
  * `data-pose` (the positions last drawn, by servo id, "-" for a joint at its zero) and `data-frames` (how many
  * pictures were drawn).
  */
-import { LOAD_FAILED_TEXT, NO_WEBGL_TEXT, Robot3dError } from "./errors.ts";
+import type { Locale } from "../../i18n/locale.ts";
+import { translator } from "../../i18n/translate.ts";
+import { Robot3dError, robot3dErrorText } from "./errors.ts";
 import type { HunoPose, ZeroTable } from "./huno-model.ts";
 import { groundedTransforms } from "./kinematics.ts";
+import { robot3dMessages } from "./messages.ts";
+import { robot3dLocale } from "./page-locale.ts";
 import type { CameraView, RobotSceneHandle, SceneColours } from "./robot-scene.ts";
 
 export interface RobotCanvasOptions {
@@ -21,6 +25,8 @@ export interface RobotCanvasOptions {
   zeros?: ZeroTable;
   /** The canvas's accessible name, worded by the caller ("3D view of the pose of scene 2"). */
   label: string;
+  /** The language of the view's own sentences (loading, no WebGL); by default the page's (page-locale.ts). */
+  locale?: Locale;
 }
 
 /** The 3/4 view from the robot's front right, a little from above. */
@@ -78,6 +84,9 @@ export class RobotCanvas {
   private readonly resize: ResizeObserver | undefined;
   private readonly scheme: MediaQueryList | undefined;
   private drag: { id: number; x: number; y: number } | undefined;
+  /** Why the view cannot draw, once it is known. */
+  private failure: Robot3dError | undefined;
+  private locale: Locale;
 
   constructor(private readonly host: HTMLElement) {
     host.classList.add("robot3d");
@@ -88,7 +97,8 @@ export class RobotCanvas {
     this.canvas.setAttribute("aria-keyshortcuts", "ArrowLeft ArrowRight ArrowUp ArrowDown Home");
     this.status = document.createElement("p");
     this.status.className = "robot3d-status muted small";
-    this.status.textContent = "Loading the 3D view…";
+    this.locale = robot3dLocale(undefined);
+    this.showStatus();
     host.append(this.canvas, this.status);
     host.dataset.state = "loading";
     host.dataset.frames = "0";
@@ -112,6 +122,11 @@ export class RobotCanvas {
   /** Shows `options.pose`; draws again only if the pose, its zeros or the label changed. */
   setOptions(options: RobotCanvasOptions): void {
     this.options = options;
+    const locale = robot3dLocale(options.locale);
+    if (locale !== this.locale) {
+      this.locale = locale;
+      this.showStatus();
+    }
     if (this.canvas.getAttribute("aria-label") !== options.label)
       this.canvas.setAttribute("aria-label", options.label);
     if (this.poseKey(options) !== this.drawnKey) this.requestDraw();
@@ -134,9 +149,16 @@ export class RobotCanvas {
     return `${poseText(o.pose)}|${(o.zeros ?? []).join(" ")}`;
   }
 
+  /** The sentence in place of the picture, in the view's language: loading, why it cannot draw, or none. */
+  private showStatus(): void {
+    if (this.failure) this.status.textContent = robot3dErrorText(this.failure.code, this.locale);
+    else if (!this.scene)
+      this.status.textContent = translator(robot3dMessages, this.locale)("robot3d.loading");
+  }
+
   private load(): void {
     if (!hasWebGL2()) {
-      this.fail(new Robot3dError("robot3d-no-webgl", NO_WEBGL_TEXT));
+      this.fail(new Robot3dError("robot3d-no-webgl"));
       return;
     }
     import("./robot-scene.ts").then(
@@ -145,7 +167,7 @@ export class RobotCanvas {
         try {
           this.scene = module.createRobotScene(this.canvas, readColours(this.host));
         } catch {
-          this.fail(new Robot3dError("robot3d-no-webgl", NO_WEBGL_TEXT));
+          this.fail(new Robot3dError("robot3d-no-webgl"));
           return;
         }
         this.scene.setView(this.view);
@@ -156,7 +178,7 @@ export class RobotCanvas {
         this.requestDraw();
       },
       () => {
-        if (!this.disposed) this.fail(new Robot3dError("robot3d-load-failed", LOAD_FAILED_TEXT));
+        if (!this.disposed) this.fail(new Robot3dError("robot3d-load-failed"));
       },
     );
   }
@@ -165,8 +187,9 @@ export class RobotCanvas {
     this.host.dataset.state = error.code === "robot3d-no-webgl" ? "no-webgl" : "failed";
     // Nothing to see or focus: the sentence takes the picture's place.
     this.canvas.remove();
+    this.failure = error;
     this.status.hidden = false;
-    this.status.textContent = error.message;
+    this.showStatus();
   }
 
   private measure(): void {

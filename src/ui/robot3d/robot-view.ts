@@ -12,6 +12,7 @@
  */
 import "../styles/robot3d.css";
 import { html, nothing, type TemplateResult } from "lit-html";
+import type { Locale } from "../../i18n/locale.ts";
 import type { Motion } from "../../motion/index.ts";
 import type { ZeroTable } from "./huno-model.ts";
 import { MotionPreview, type MotionPreviewOptions } from "./motion-preview.ts";
@@ -27,6 +28,8 @@ export interface MotionPreviewViewOptions {
   testId?: string;
   /** Start playing when first shown (default true; never with prefers-reduced-motion). */
   autoplay?: boolean;
+  /** The language of the controls and their hints: `ctx.state.locale`; the page's if not given. */
+  locale?: Locale;
 }
 
 const previewView = mountDirective<MotionPreviewOptions>((host) => new MotionPreview(host));
@@ -36,6 +39,6 @@ const previewView = mountDirective<MotionPreviewOptions>((host) => new MotionPre
  * (PROTOCOL.md §10 frames).
  */
 export function motionPreview(options: MotionPreviewViewOptions): TemplateResult {
-  const { motion, zeros, label, autoplay } = options;
-  return html`<div class="robot3d-preview" data-testid=${options.testId ?? nothing} ${previewView({ motion, zeros, label, autoplay })}></div>`;
+  const { motion, zeros, label, autoplay, locale } = options;
+  return html`<div class="robot3d-preview" data-testid=${options.testId ?? nothing} ${previewView({ motion, zeros, label, autoplay, locale })}></div>`;
 }

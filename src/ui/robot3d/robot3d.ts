@@ -4,6 +4,7 @@
  */
 import "../styles/robot3d.css";
 import { html, nothing, type TemplateResult } from "lit-html";
+import type { Locale } from "../../i18n/locale.ts";
 import type { HunoPose, ZeroTable } from "./huno-model.ts";
 import { mountDirective } from "./mount-directive.ts";
 import { RobotCanvas, type RobotCanvasOptions } from "./robot-canvas.ts";
@@ -16,6 +17,8 @@ export interface Robot3dOptions {
   /** The canvas's accessible name (role="img"), worded by the caller. */
   label: string;
   testId?: string;
+  /** The language of the view's own sentences (loading, no WebGL): `ctx.state.locale`; the page's if not given. */
+  locale?: Locale;
 }
 
 const robotView = mountDirective<RobotCanvasOptions>((host) => new RobotCanvas(host));
@@ -25,6 +28,6 @@ const robotView = mountDirective<RobotCanvasOptions>((host) => new RobotCanvas(h
  * The element carries `data-pose` (the pose drawn) and `data-frames` (pictures drawn) for tests.
  */
 export function robot3d(options: Robot3dOptions): TemplateResult {
-  const { pose, zeros, label } = options;
-  return html`<div class="robot3d" data-testid=${options.testId ?? nothing} ${robotView({ pose, zeros, label })}></div>`;
+  const { pose, zeros, label, locale } = options;
+  return html`<div class="robot3d" data-testid=${options.testId ?? nothing} ${robotView({ pose, zeros, label, locale })}></div>`;
 }

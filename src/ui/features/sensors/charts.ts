@@ -1,15 +1,22 @@
+import type { Locale } from "../../../i18n/locale.ts";
+import { translator } from "../../../i18n/translate.ts";
 import { prefersReducedMotion } from "../../charts/chart-loader.ts";
 import { ChartSlot } from "../../charts/chart-slot.ts";
 import type { ChartSeries } from "../../charts/uplot-charts.ts";
 import type { AppContext } from "../../context.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
+import { type SensorsTranslator, sensorsMessages } from "./messages.ts";
 import type { RingSeries } from "./ring-series.ts";
 import { sensorWatch } from "./watch.ts";
 
-/** The Sensors view's two live charts, drawn from the connection's sensor watch. One pair per connection. */
+/**
+ * The Sensors view's two live charts, drawn from the connection's sensor watch. One pair per connection. Their
+ * words are in the panel's language of the moment; a change of language draws them anew (the key changes).
+ */
 
-function seconds(v: number): string {
-  return v === 0 ? "now" : `${v} s`;
+/** "now", "-10 s" / "지금", "-10초": x on the axis. */
+function secondsFormat(t: SensorsTranslator): (v: number) => string {
+  return (v) => (v === 0 ? t("sensors.chart.now") : t("sensors.chart.seconds", { seconds: v }));
 }
 
 /**
@@ -17,7 +24,9 @@ function seconds(v: number): string {
  * dark mode (the hue wheel's blue for Z had about 2:1 on the dark background); Z is dashed as well, so the three
  * lines differ in more than colour.
  */
-const DISTANCE_LINE: ChartSeries[] = [{ label: "Distance (cm)", stroke: "--accent" }];
+const distanceLine = (t: SensorsTranslator): ChartSeries[] => [
+  { label: t("sensors.chart.distanceLine"), stroke: "--accent" },
+];
 const ACCEL_LINES: ChartSeries[] = [
   { label: "X", stroke: "--accent" },
   { label: "Y", stroke: "--warning" },
@@ -31,33 +40,45 @@ const ACCEL_LINES: ChartSeries[] = [
 const DISTANCE_RANGE: [number, number] = [0, 60];
 const DISTANCE_TICKS = [0, 10, 20, 30, 40, 50, 60];
 
+/** What a chart says, in a language: its accessible name, the y axis's label and the lines' names. */
+interface ChartWords {
+  title: string;
+  yLabel: string;
+  lines: ChartSeries[];
+}
+
 function liveSlot(
+  ctx: AppContext,
   series: RingSeries,
   key: string,
-  title: string,
-  yLabel: string,
-  lines: ChartSeries[],
+  words: (t: SensorsTranslator) => ChartWords,
   yRange: [number, number],
   ySplits?: number[],
 ): ChartSlot {
   return new ChartSlot(
-    () => ({
-      key,
-      spec: {
-        title,
-        height: 220,
-        xLabel: "Seconds ago",
-        yLabel,
-        xRange: [-30, 0],
-        yRange,
-        ...(ySplits ? { ySplits } : {}),
-        xFormat: seconds,
-        liveLegend: false,
-        series: lines,
-      },
-      x: series.relativeSeconds(),
-      ys: series.values,
-    }),
+    () => {
+      const locale: Locale = ctx.store.get().locale;
+      const t = translator(sensorsMessages, locale);
+      const { title, yLabel, lines } = words(t);
+      return {
+        key: `${key}-${locale}`,
+        locale,
+        spec: {
+          title,
+          height: 220,
+          xLabel: t("sensors.chart.secondsAgo"),
+          yLabel,
+          xRange: [-30, 0],
+          yRange,
+          ...(ySplits ? { ySplits } : {}),
+          xFormat: secondsFormat(t),
+          liveLegend: false,
+          series: lines,
+        },
+        x: series.relativeSeconds(),
+        ys: series.values,
+      };
+    },
     prefersReducedMotion() ? 1000 : 0,
   );
 }
@@ -69,20 +90,26 @@ export class SensorCharts implements Controller {
   constructor(ctx: AppContext) {
     const watch = sensorWatch(ctx);
     this.distance = liveSlot(
+      ctx,
       watch.distance,
       "distance",
-      "Distance in cm over the last 30 seconds",
-      "cm",
-      DISTANCE_LINE,
+      (t) => ({
+        title: t("sensors.chart.distanceTitle"),
+        yLabel: t("sensors.chart.cm"),
+        lines: distanceLine(t),
+      }),
       DISTANCE_RANGE,
       DISTANCE_TICKS,
     );
     this.accel = liveSlot(
+      ctx,
       watch.accel,
       "accel",
-      "Accelerometer X, Y and Z over the last 30 seconds",
-      "Reading",
-      ACCEL_LINES,
+      (t) => ({
+        title: t("sensors.chart.accelTitle"),
+        yLabel: t("sensors.chart.reading"),
+        lines: ACCEL_LINES,
+      }),
       [-10, 10],
     );
   }

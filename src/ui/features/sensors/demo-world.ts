@@ -1,5 +1,6 @@
 import { html, type TemplateResult } from "lit-html";
 import { live } from "lit-html/directives/live.js";
+import { translator } from "../../../i18n/translate.ts";
 import type { BuiltInMotion } from "../../../protocol/catalog.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
 import {
@@ -9,6 +10,8 @@ import {
   setDemoDistance,
   setDemoSoundLevel,
 } from "./actions.ts";
+import { builtInMotionName } from "./events.ts";
+import { sensorsMessages } from "./messages.ts";
 import { sensorsOf } from "./state.ts";
 
 /**
@@ -22,14 +25,15 @@ export function demoWorld(ctx: ViewContext, motions: readonly BuiltInMotion[]): 
   const s = sensorsOf(ctx.state);
   const listen = s.listen;
   const disabled = !robot;
+  const t = translator(sensorsMessages, ctx.state.locale);
+  const distance = html`<span class="num">${t("sensors.cm", { cm: sensors?.distanceCm ?? 10 })}</span>`;
+  const level = html`<span class="num">${sensors?.soundLevel ?? 0}</span>`;
   return html`
     <section class="card demo-world" aria-labelledby="demo-title" data-testid="demo-world">
-      <h2 id="demo-title" class="card-title">Demo robot's world</h2>
-      <p class="muted small">
-        Only for the demo robot: change what its simulated sensors see, press its buttons and its remote.
-      </p>
+      <h2 id="demo-title" class="card-title">${t("sensors.demo.title")}</h2>
+      <p class="muted small">${t("sensors.demo.intro")}</p>
       <div class="demo-grid">
-        <label for="demo-distance">Object in front: <span class="num">${sensors?.distanceCm ?? 10} cm</span></label>
+        <label for="demo-distance">${t.parts("sensors.demo.objectInFront", { distance })}</label>
         <input
           id="demo-distance"
           type="range"
@@ -40,7 +44,7 @@ export function demoWorld(ctx: ViewContext, motions: readonly BuiltInMotion[]): 
           .value=${live(String(sensors?.distanceCm ?? 10))}
           @input=${(e: Event) => setDemoDistance(ctx, Number((e.target as HTMLInputElement).value))}
         />
-        <label for="demo-sound">Noise in the room: <span class="num">${sensors?.soundLevel ?? 0}</span></label>
+        <label for="demo-sound">${t.parts("sensors.demo.noise", { level })}</label>
         <input
           id="demo-sound"
           type="range"
@@ -53,23 +57,23 @@ export function demoWorld(ctx: ViewContext, motions: readonly BuiltInMotion[]): 
         />
       </div>
       <div class="actions">
-        <button type="button" class="btn" ?disabled=${disabled} @click=${() => pressDemoButton(ctx, 1)}>Press PF1</button>
-        <button type="button" class="btn" ?disabled=${disabled} @click=${() => pressDemoButton(ctx, 2)}>Press PF2</button>
+        <button type="button" class="btn" ?disabled=${disabled} @click=${() => pressDemoButton(ctx, 1)}>${t("sensors.demo.press", { button: "1" })}</button>
+        <button type="button" class="btn" ?disabled=${disabled} @click=${() => pressDemoButton(ctx, 2)}>${t("sensors.demo.press", { button: "2" })}</button>
         <label class="inline-field">
-          IR key
+          ${t("sensors.demo.irKey")}
           <select @change=${(e: Event) => chooseDemoIrKey(ctx, Number((e.target as HTMLSelectElement).value))}>
-            ${motions.map((m) => html`<option value=${m.number} ?selected=${m.number === s.demoIrKey}>${m.number} ${m.name}</option>`)}
+            ${motions.map((m) => html`<option value=${m.number} ?selected=${m.number === s.demoIrKey}>${t("sensors.demo.irKeyOption", { key: String(m.number), motion: builtInMotionName(t, m.number) ?? m.name })}</option>`)}
           </select>
         </label>
-        <button type="button" class="btn" ?disabled=${disabled} @click=${() => sendDemoIrKey(ctx, s.demoIrKey)}>Send IR key</button>
+        <button type="button" class="btn" ?disabled=${disabled} @click=${() => sendDemoIrKey(ctx, s.demoIrKey)}>${t("sensors.demo.sendIrKey")}</button>
       </div>
       <p class="muted small">
         ${
           listen === "buttons" || listen === "remote" || listen === "sound"
-            ? "Presses and sounds show in the event list above when you listen to them."
-            : "Choose PF buttons, IR remote or Sound level above to see these in the event list."
+            ? t("sensors.demo.listening")
+            : t("sensors.demo.chooseListen")
         }
-        The accelerometer reads with a little noise, as a real one does.
+        ${t("sensors.demo.accelNoise")}
       </p>
     </section>
   `;

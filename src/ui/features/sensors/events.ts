@@ -1,5 +1,8 @@
 import type { SubscriptionKind } from "../../../device/types.ts";
+import type { Locale } from "../../../i18n/locale.ts";
+import { translator } from "../../../i18n/translate.ts";
 import { BUILT_IN_MOTIONS } from "../../../protocol/catalog.ts";
+import { type SensorsTranslator, sensorsMessages } from "./messages.ts";
 import type { SensorEvent } from "./state.ts";
 
 /** The event list of the Sensors view. Pure functions. */
@@ -30,16 +33,53 @@ export function addEvent(
   return [{ id: (top?.id ?? 0) + 1, ...e, count: 1 }, ...events].slice(0, max);
 }
 
-/** "PF2 pressed", "IR key 7 (Basic posture)", "Sound level 42". */
-export function describeEvent(e: Pick<SensorEvent, "kind" | "value">): string {
+/**
+ * The name of built-in motion `number` (1-11, protocol/catalog.ts) in the language of `t`, or undefined for
+ * another number.
+ */
+export function builtInMotionName(t: SensorsTranslator, number: number): string | undefined {
+  switch (number) {
+    case 1:
+      return t("sensors.motion.getUpA");
+    case 2:
+      return t("sensors.motion.getUpB");
+    case 3:
+      return t("sensors.motion.turnLeft");
+    case 4:
+      return t("sensors.motion.walkForward");
+    case 5:
+      return t("sensors.motion.turnRight");
+    case 6:
+      return t("sensors.motion.sidestepLeft");
+    case 7:
+      return t("sensors.motion.basicPosture");
+    case 8:
+      return t("sensors.motion.sidestepRight");
+    case 9:
+      return t("sensors.motion.punchLeft");
+    case 10:
+      return t("sensors.motion.walkBackward");
+    case 11:
+      return t("sensors.motion.punchRight");
+    default:
+      return BUILT_IN_MOTIONS.find((m) => m.number === number)?.name;
+  }
+}
+
+/** "PF2 pressed", "IR key 7 (Basic posture)", "Sound level 42" (English unless a language is given). */
+export function describeEvent(e: Pick<SensorEvent, "kind" | "value">, locale: Locale = "en"): string {
+  const t = translator(sensorsMessages, locale);
   switch (e.kind) {
     case "buttons":
-      return e.value === 1 || e.value === 2 ? `PF${e.value} pressed` : `Button ${e.value} pressed`;
+      return e.value === 1 || e.value === 2
+        ? t("sensors.event.pf", { button: String(e.value) })
+        : t("sensors.event.button", { button: String(e.value) });
     case "remote": {
-      const motion = BUILT_IN_MOTIONS.find((m) => m.number === e.value);
-      return `IR key ${e.value}${motion ? ` (${motion.name})` : ""}`;
+      const motion = builtInMotionName(t, e.value);
+      const key = String(e.value);
+      return motion ? t("sensors.event.irKeyMotion", { key, motion }) : t("sensors.event.irKey", { key });
     }
     case "sound":
-      return `Sound level ${e.value}`;
+      return t("sensors.event.sound", { level: e.value });
   }
 }

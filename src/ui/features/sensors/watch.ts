@@ -1,11 +1,14 @@
 import { RbcError } from "../../../device/errors.ts";
 import type { RbcClient } from "../../../device/rbc-client.ts";
 import type { RbcEvent } from "../../../device/types.ts";
+import type { Locale } from "../../../i18n/locale.ts";
+import { translator } from "../../../i18n/translate.ts";
 import type { Notice } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { errorNotice } from "../../error-text.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
 import { addEvent } from "./events.ts";
+import { sensorsMessages } from "./messages.ts";
 import { RingSeries } from "./ring-series.ts";
 import { type ListenChoice, type PollRate, patchSensors, type SensorsState, sensorsOf } from "./state.ts";
 
@@ -29,10 +32,10 @@ export function effectiveRate(s: Pick<SensorsState, "rateHz" | "listen">): numbe
   return s.listen === "sound" ? Math.min(s.rateHz, SOUND_LISTEN_MAX_HZ) : s.rateHz;
 }
 
-const IN_SERVO_CONTROL: Notice = {
-  tone: "warning",
-  text: "Paused: the robot is in servo control (the Servos view, or Limp), where it reads no sensors. Resume returns it to normal mode (the servos keep their state).",
-};
+/** Why polling waits while the robot is in direct mode, in the panel's language. */
+function inServoControl(locale: Locale): Notice {
+  return { tone: "warning", text: translator(sensorsMessages, locale)("sensors.inServoControl") };
+}
 
 export class SensorWatch implements Controller {
   /** Distance readings of the last 30 s (robot-clock ms). */
@@ -48,12 +51,20 @@ export class SensorWatch implements Controller {
 
   constructor(private readonly ctx: AppContext) {}
 
+  /** The sentences of the moment's language (a notice keeps its language if the switch changes). */
+  private words() {
+    const { locale } = this.ctx.store.get();
+    return { locale, t: translator(sensorsMessages, locale) };
+  }
+
   private readonly onVisibility = () => {
     if (!this.shown) return;
     if (document.hidden) {
       this.halt();
       void this.quiet();
-      patchSensors(this.ctx.store, { pausedWhy: { tone: "info", text: "Paused while this tab is hidden." } });
+      patchSensors(this.ctx.store, {
+        pausedWhy: { tone: "info", text: this.words().t("sensors.tabHidden") },
+      });
     } else {
       patchSensors(this.ctx.store, { pausedWhy: undefined });
       void this.resume();
@@ -100,7 +111,7 @@ export class SensorWatch implements Controller {
     const client = this.ctx.session.current;
     if (!this.shown || !client || document.hidden) return;
     if (client.mode === "direct") {
-      patchSensors(this.ctx.store, { pausedWhy: IN_SERVO_CONTROL, running: false });
+      patchSensors(this.ctx.store, { pausedWhy: inServoControl(this.words().locale), running: false });
       return;
     }
     const s = sensorsOf(this.ctx.store.get());
@@ -112,12 +123,13 @@ export class SensorWatch implements Controller {
   /** Leaves servo control (after Limp or the Servos view) and resumes. */
   async leaveDirectAndResume(): Promise<void> {
     if (!this.shown) return;
+    const { locale, t } = this.words();
     try {
-      await this.ctx.session.run("Leaving servo control", (client) => client.exitDirectMode());
+      await this.ctx.session.run(t("sensors.leavingServoControl"), (client) => client.exitDirectMode());
       patchSensors(this.ctx.store, { pausedWhy: undefined });
       await this.resume();
     } catch (e) {
-      patchSensors(this.ctx.store, { pausedWhy: errorNotice("Could not return to normal mode.", e) });
+      patchSensors(this.ctx.store, { pausedWhy: errorNotice(t("sensors.normalModeFailed"), e, locale) });
     }
   }
 
@@ -144,7 +156,7 @@ export class SensorWatch implements Controller {
     if (!this.shown) return;
     patchSensors(this.ctx.store, { listen, threshold, listenNotice: undefined });
     if (this.ctx.session.current?.mode === "direct") {
-      patchSensors(this.ctx.store, { pausedWhy: IN_SERVO_CONTROL });
+      patchSensors(this.ctx.store, { pausedWhy: inServoControl(this.words().locale) });
       return;
     }
     await this.applyListen(listen, threshold);
@@ -157,7 +169,8 @@ export class SensorWatch implements Controller {
       if (listen === "none") await client.unsubscribe();
       else await client.subscribe(listen, listen === "sound" ? threshold : 0);
     } catch (e) {
-      patchSensors(this.ctx.store, { listenNotice: errorNotice("Listening could not start.", e) });
+      const { locale, t } = this.words();
+      patchSensors(this.ctx.store, { listenNotice: errorNotice(t("sensors.listenFailed"), e, locale) });
     }
   }
 
@@ -204,7 +217,7 @@ export class SensorWatch implements Controller {
       } catch (e) {
         if (token !== this.token) break;
         if (e instanceof RbcError && e.code === "wrong-mode") {
-          patchSensors(store, { pausedWhy: IN_SERVO_CONTROL, running: false });
+          patchSensors(store, { pausedWhy: inServoControl(this.words().locale), running: false });
           this.token++;
           break;
         }
@@ -214,8 +227,9 @@ export class SensorWatch implements Controller {
         if (e instanceof RbcError && (e.code === "disconnected" || e.code === "not-connected")) break;
         if (!cancelled) failures++;
         if (failures >= FAILURES_BEFORE_PAUSE) {
+          const { locale, t } = this.words();
           patchSensors(store, {
-            pausedWhy: errorNotice(`Paused: reading the sensors failed ${failures} times in a row.`, e),
+            pausedWhy: errorNotice(t("sensors.readFailures", { failures }), e, locale),
             running: false,
           });
           this.token++;

@@ -1,9 +1,11 @@
 import { RbcError } from "../../../device/errors.ts";
+import { translator } from "../../../i18n/translate.ts";
 import type { AppContext } from "../../context.ts";
 import { errorNotice } from "../../error-text.ts";
 import { focusSoon } from "../../focus.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
 import { servosTaken } from "../connection/actions.ts";
+import { servosMessages } from "./messages.ts";
 import { LatestMoveSender } from "./move-sender.ts";
 import {
   basicPostureTargets,
@@ -15,7 +17,15 @@ import {
   servosOf,
 } from "./state.ts";
 
-/** The Servos view's actions: direct mode on and off, reading, moving within safe ranges, basic posture. */
+/**
+ * The Servos view's actions: direct mode on and off, reading, moving within safe ranges, basic posture. Their
+ * sentences are made in the language of the moment (a notice keeps its language if the switch changes).
+ */
+
+function wordsOf(ctx: AppContext) {
+  const { locale } = ctx.store.get();
+  return { locale, t: translator(servosMessages, locale) };
+}
 
 function setAt<T>(list: readonly T[], i: number, value: T): T[] {
   const out = [...list];
@@ -56,8 +66,9 @@ export class ServoMoves implements Controller {
           this.sender.clear();
           return;
         }
+        const { locale, t } = wordsOf(ctx);
         patchServos(ctx.store, (x) => ({
-          notice: errorNotice(`Servo ${id} did not take the move.`, e),
+          notice: errorNotice(t("servos.moveFailed", { id: String(id) }), e, locale),
           silent:
             e instanceof RbcError && e.code === "timeout" && !x.silent.includes(id)
               ? [...x.silent, id]
@@ -82,12 +93,13 @@ function dropMoves(ctx: AppContext): void {
 export async function startServoControl(ctx: AppContext): Promise<void> {
   const { store, session } = ctx;
   if (!store.get().acks?.servos || servosOf(store.get()).busy) return;
+  const { locale, t } = wordsOf(ctx);
   patchServos(store, { busy: "entering", notice: undefined });
   try {
-    await session.run("Starting servo control", (client) => client.enterDirectMode(), { packetMode: false });
+    await session.run(t("servos.starting"), (client) => client.enterDirectMode(), { packetMode: false });
     patchServos(store, { busy: undefined });
   } catch (e) {
-    patchServos(store, { busy: undefined, notice: errorNotice("Servo control could not start.", e) });
+    patchServos(store, { busy: undefined, notice: errorNotice(t("servos.startFailed"), e, locale) });
     return;
   }
   await readAllPositions(ctx);
@@ -95,29 +107,25 @@ export async function startServoControl(ctx: AppContext): Promise<void> {
 
 export async function leaveServoControl(ctx: AppContext): Promise<void> {
   const { store, session } = ctx;
+  const { locale, t } = wordsOf(ctx);
   dropMoves(ctx);
   patchServos(store, { busy: "leaving", notice: undefined, confirmingPosture: false });
   try {
-    await session.run("Leaving servo control", (client) => client.exitDirectMode(), { packetMode: false });
-    patchServos(store, {
-      busy: undefined,
-      notice: {
-        tone: "info",
-        text: "Servo control ended: the robot is back in its normal mode. The servos keep their last position.",
-      },
-    });
+    await session.run(t("servos.leaving"), (client) => client.exitDirectMode(), { packetMode: false });
+    patchServos(store, { busy: undefined, notice: { tone: "info", text: t("servos.ended") } });
   } catch (e) {
-    patchServos(store, { busy: undefined, notice: errorNotice("Leaving servo control failed.", e) });
+    patchServos(store, { busy: undefined, notice: errorNotice(t("servos.leaveFailed"), e, locale) });
   }
 }
 
 export async function readAllPositions(ctx: AppContext): Promise<void> {
   const { store, session } = ctx;
   if (session.current?.mode !== "direct") return;
+  const { locale, t } = wordsOf(ctx);
   patchServos(store, { busy: "reading" });
   try {
     const { servos, silent } = await session.run(
-      "Reading servo positions",
+      t("servos.readingPositions"),
       (client) => client.servos.readAll(SERVO_IDS),
       { packetMode: false },
     );
@@ -139,15 +147,19 @@ export async function readAllPositions(ctx: AppContext): Promise<void> {
         positionsAt: Date.now(),
         notice:
           silent.length === 0
-            ? { tone: "ok", text: `Read all ${servos.length} servos.` }
+            ? { tone: "ok", text: t("servos.readAllDone", { total: servos.length }) }
             : {
                 tone: "warning",
-                text: `Servo ${silent.join(", ")} did not answer (${servos.length} of ${SERVO_IDS.length} read). Check their cables; their controls are disabled.`,
+                text: t("servos.silentServos", {
+                  ids: silent.join(", "),
+                  read: servos.length,
+                  total: SERVO_IDS.length,
+                }),
               },
       };
     });
   } catch (e) {
-    patchServos(store, { busy: undefined, notice: errorNotice("Reading the servos failed.", e) });
+    patchServos(store, { busy: undefined, notice: errorNotice(t("servos.readFailed"), e, locale) });
   }
 }
 
@@ -172,7 +184,7 @@ export function moveServo(ctx: AppContext, id: number, position: number): void {
  * is sent, and the typed text stays so it can be corrected.
  */
 export function applyTypedTarget(ctx: AppContext, id: number, text: string): void {
-  const checked = checkTypedTarget(id, text);
+  const checked = checkTypedTarget(id, text, ctx.store.get().locale);
   if ("position" in checked) {
     moveServo(ctx, id, checked.position);
     return;
@@ -196,10 +208,11 @@ export function setTorque(ctx: AppContext, id: number, torque: number): void {
 export async function basicPosture(ctx: AppContext): Promise<void> {
   const { store, session } = ctx;
   const speed = servosOf(store.get()).speed;
+  const { locale, t } = wordsOf(ctx);
   dropMoves(ctx);
   patchServos(store, { busy: "posture", confirmingPosture: false, notice: undefined });
   try {
-    await session.run("Moving to basic posture", (client) => client.servos.basicPosture(speed), {
+    await session.run(t("servos.movingToPosture"), (client) => client.servos.basicPosture(speed), {
       packetMode: false,
     });
     servosTaken(ctx);
@@ -209,11 +222,11 @@ export async function basicPosture(ctx: AppContext): Promise<void> {
       drafts: {},
       notice: {
         tone: "ok",
-        text: `Sent: all ${SERVO_IDS.length} servos move to the basic posture at speed ${speed}. The servos do not answer this command: press Read all positions to see where they are.`,
+        text: t("servos.postureSent", { count: SERVO_IDS.length, speed: String(speed) }),
       },
     });
   } catch (e) {
-    patchServos(store, { busy: undefined, notice: errorNotice("The basic posture command failed.", e) });
+    patchServos(store, { busy: undefined, notice: errorNotice(t("servos.postureFailed"), e, locale) });
   }
 }
 

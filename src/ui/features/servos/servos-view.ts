@@ -1,11 +1,12 @@
 import "../../styles/tools.css";
 import { html, nothing, type TemplateResult } from "lit-html";
 import { live } from "lit-html/directives/live.js";
+import { translator } from "../../../i18n/translate.ts";
 import { formatClockTime } from "../../format.ts";
 import { liveRobotPanel } from "../../robot3d/live-robot.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
-import { jointName } from "../zeros/editor.ts";
+import { jointName } from "../zeros/joints/joint-name.ts";
 import {
   acknowledgeSafety,
   applyTypedTarget,
@@ -22,33 +23,48 @@ import {
   startServoControl,
   toggleLiveRobot,
 } from "./actions.ts";
+import { type ServosTranslator, servosMessages } from "./messages.ts";
 import { SERVO_IDS, servoRange, servosOf } from "./state.ts";
 
 /** Servos: live control of single servos in direct mode, within their safe ranges (issue #4). */
 
-const TORQUES = ["Torque 0 (strong)", "Torque 1", "Torque 2", "Torque 3", "Torque 4 (weak)"];
-const SPEEDS = ["0 (fast)", "1", "2", "3", "4 (slow)"];
+/** Torques 0 (strong) to 4 (weak), as the torque menus list them. */
+const TORQUES = [0, 1, 2, 3, 4];
+/** Speeds of the basic posture: 0 (fast) to 4 (slow). */
+const SPEEDS = [0, 1, 2, 3, 4];
 
-function safetyNotice(ctx: ViewContext): TemplateResult {
+function torqueText(t: ServosTranslator, torque: number): string {
+  const level = String(torque);
+  if (torque === 0) return t("servos.torqueStrong", { level });
+  return torque === 4 ? t("servos.torqueWeak", { level }) : t("servos.torqueLevel", { level });
+}
+
+function speedText(t: ServosTranslator, speed: number): string {
+  if (speed === 0) return t("servos.speedFast", { speed: String(speed) });
+  return speed === 4 ? t("servos.speedSlow", { speed: String(speed) }) : String(speed);
+}
+
+function safetyNotice(ctx: ViewContext, t: ServosTranslator): TemplateResult {
+  const strong = (text: string) => html`<strong>${text}</strong>`;
   return html`
     <section class="card safety" aria-labelledby="safety-title" data-testid="servo-safety">
-      <h2 id="safety-title" class="card-title">Before you move servos</h2>
+      <h2 id="safety-title" class="card-title">${t("servos.safety.title")}</h2>
       <ul>
-        <li><strong>Support the robot:</strong> hold it, or lay it on its back, so it cannot fall when a joint moves or goes limp.</li>
-        <li><strong>Keep clear:</strong> fingers, cables and objects away from the joints.</li>
-        <li>A servo moves as soon as you move its slider. <strong>Stop</strong> (top bar, or Esc outside a field) stops sending moves at any moment: the servos hold where they are. <strong>Limp…</strong> (top bar) makes every servo passive, after asking.</li>
+        <li>${t.parts("servos.safety.support", { title: strong(t("servos.safety.supportTitle")) })}</li>
+        <li>${t.parts("servos.safety.clear", { title: strong(t("servos.safety.clearTitle")) })}</li>
+        <li>${t.parts("servos.safety.controls", { stop: strong(t("servos.safety.stop")), limp: strong(t("servos.safety.limp")) })}</li>
       </ul>
       <button type="button" class="btn btn--primary" @click=${() => acknowledgeSafety(ctx)}>
-        I understand: the robot is supported
+        ${t("servos.safety.understood")}
       </button>
     </section>
   `;
 }
 
-function servoRow(ctx: ViewContext, id: number, enabled: boolean): TemplateResult {
+function servoRow(ctx: ViewContext, t: ServosTranslator, id: number, enabled: boolean): TemplateResult {
   const s = servosOf(ctx.state);
   const { min, max } = servoRange(id);
-  const name = jointName(id);
+  const name = jointName(id, t.locale);
   const position = s.positions[id];
   const silent = s.silent.includes(id);
   const target = s.targets[id] ?? min;
@@ -58,7 +74,7 @@ function servoRow(ctx: ViewContext, id: number, enabled: boolean): TemplateResul
     <tr class=${silent || refused ? "is-invalid" : ""} data-servo=${id}>
       <td class="num servo-id">${id}</td>
       <th scope="row" class="servo-name"><label for=${`servo-${id}`}>${name}</label></th>
-      <td class="num servo-pos" data-testid=${`servo-pos-${id}`}>${silent ? html`<span class="text-danger">silent</span>` : (position ?? "—")}</td>
+      <td class="num servo-pos" data-prefix=${t("servos.positionAt")} data-testid=${`servo-pos-${id}`}>${silent ? html`<span class="text-danger">${t("servos.silent")}</span>` : (position ?? "—")}</td>
       <td class="servo-target">
         <input
           id=${`servo-${id}`}
@@ -75,7 +91,7 @@ function servoRow(ctx: ViewContext, id: number, enabled: boolean): TemplateResul
           @change=${(e: Event) => applyTypedTarget(ctx, id, (e.target as HTMLInputElement).value)}
         />
         <span id=${`servo-${id}-range`} class="zero-hint">${min}–${max}</span>
-        ${refused ? html`<span id=${`servo-${id}-refused`} class="text-danger small" data-testid=${`servo-refused-${id}`}>${refused}</span>` : nothing}
+        ${refused ? html`<span id=${`servo-${id}-refused`} class="text-danger small servo-refused" data-testid=${`servo-refused-${id}`}>${refused}</span>` : nothing}
       </td>
       <td class="servo-slider">
         <input
@@ -84,37 +100,37 @@ function servoRow(ctx: ViewContext, id: number, enabled: boolean): TemplateResul
           max=${max}
           step="1"
           ?disabled=${disabled}
-          aria-label=${`${name} (servo ${id}), target ${min} to ${max}`}
+          aria-label=${t("servos.sliderLabel", { name, id: String(id), min: String(min), max: String(max) })}
           .value=${live(String(target))}
           @input=${(e: Event) => moveServo(ctx, id, Number((e.target as HTMLInputElement).value))}
         />
       </td>
       <td class="servo-torque">
         <select
-          aria-label=${`Torque of ${name}`}
+          aria-label=${t("servos.torqueOf", { name })}
           ?disabled=${!enabled || silent}
           @change=${(e: Event) => setTorque(ctx, id, Number((e.target as HTMLSelectElement).value))}
         >
-          ${TORQUES.map((t, i) => html`<option value=${i} ?selected=${i === (s.torques[id] ?? 2)}>${t}</option>`)}
+          ${TORQUES.map((i) => html`<option value=${i} ?selected=${i === (s.torques[id] ?? 2)}>${torqueText(t, i)}</option>`)}
         </select>
       </td>
     </tr>
   `;
 }
 
-function postureControls(ctx: ViewContext, enabled: boolean): TemplateResult {
+function postureControls(ctx: ViewContext, t: ServosTranslator, enabled: boolean): TemplateResult {
   const s = servosOf(ctx.state);
   if (s.confirmingPosture) {
     return html`
       <div class="confirm confirm--warning" role="alertdialog" aria-labelledby="posture-title">
         <p id="posture-title">
-          <strong>All ${SERVO_IDS.length} servos move to the basic posture at speed ${s.speed}. Hold the robot.</strong>
+          <strong>${t("servos.posture.confirm", { count: SERVO_IDS.length, speed: String(s.speed) })}</strong>
         </p>
         <div class="actions">
           <button type="button" class="btn btn--primary" id="confirm-posture" @click=${() => void basicPosture(ctx)}>
-            Move all servos
+            ${t("servos.posture.moveAll")}
           </button>
-          <button type="button" class="btn" @click=${() => cancelPosture(ctx)}>Cancel</button>
+          <button type="button" class="btn" @click=${() => cancelPosture(ctx)}>${t("servos.cancel")}</button>
         </div>
       </div>
     `;
@@ -122,12 +138,12 @@ function postureControls(ctx: ViewContext, enabled: boolean): TemplateResult {
   return html`
     <div class="write-row">
       <label class="inline-field">
-        Speed
+        ${t("servos.speed")}
         <select
           ?disabled=${!enabled}
           @change=${(e: Event) => setPostureSpeed(ctx, Number((e.target as HTMLSelectElement).value))}
         >
-          ${SPEEDS.map((t, i) => html`<option value=${i} ?selected=${i === s.speed}>${t}</option>`)}
+          ${SPEEDS.map((i) => html`<option value=${i} ?selected=${i === s.speed}>${speedText(t, i)}</option>`)}
         </select>
       </label>
       <button
@@ -136,13 +152,13 @@ function postureControls(ctx: ViewContext, enabled: boolean): TemplateResult {
         ?disabled=${!enabled}
         @click=${() => askForPosture(ctx)}
       >
-        All to basic posture…
+        ${t("servos.posture.ask")}
       </button>
     </div>
   `;
 }
 
-function controlCard(ctx: ViewContext): TemplateResult {
+function controlCard(ctx: ViewContext, t: ServosTranslator): TemplateResult {
   const s = servosOf(ctx.state);
   const c = ctx.state.connection;
   const direct = c.mode === "direct";
@@ -152,58 +168,52 @@ function controlCard(ctx: ViewContext): TemplateResult {
   return html`
     <section class="card" aria-labelledby="servo-title" data-testid="servo-card">
       <div class="card-head">
-        <h2 id="servo-title" class="card-title">Servo control</h2>
+        <h2 id="servo-title" class="card-title">${t("servos.control.title")}</h2>
         <div class="row-actions">
           ${
             direct
               ? html`<button type="button" class="btn" data-testid="leave-direct" ?disabled=${busy} @click=${() => void leaveServoControl(ctx)}>
-                  Leave servo control
+                  ${t("servos.control.leave")}
                 </button>`
               : html`<button type="button" class="btn btn--primary" data-testid="enter-direct" ?disabled=${!acked || busy} @click=${() => void startServoControl(ctx)}>
-                  ${s.busy === "entering" ? "Starting…" : "Start servo control"}
+                  ${s.busy === "entering" ? t("servos.control.starting") : t("servos.control.start")}
                 </button>`
           }
           <button type="button" class="btn" ?disabled=${!enabled} @click=${() => void readAllPositions(ctx)}>
-            ${s.busy === "reading" ? "Reading…" : "Read all positions"}
+            ${s.busy === "reading" ? t("servos.reading") : t("servos.readAll")}
           </button>
         </div>
       </div>
       <p class="muted small" data-testid="servo-mode">
-        ${
-          direct
-            ? c.limp
-              ? "Servo control is on and every servo is limp (Limp). Moving a slider makes that servo hold again."
-              : "Servo control is on: the controller passes commands straight to the servos and runs no motions, sounds or sensors until you leave it (running a motion leaves it too)."
-            : "Servo control is off. Start it to read and move single servos; the controller then does nothing else until you leave it."
-        }
-        ${s.readAt ? ` Positions read at ${formatClockTime(s.readAt)}.` : ""}
+        ${direct ? (c.limp ? t("servos.mode.limp") : t("servos.mode.on")) : t("servos.mode.off")}
+        ${s.readAt ? t("servos.positionsReadAt", { time: formatClockTime(s.readAt) }) : ""}
       </p>
-      ${liveNotice(s.notice, "Servo result")}
+      ${liveNotice(s.notice, t("servos.resultLabel"), ctx.state.locale)}
       <table class="zeros-table servo-table">
-        <caption class="sr-only">Each servo's position, target within its safe range, and torque</caption>
+        <caption class="sr-only">${t("servos.table.caption")}</caption>
         <thead>
           <tr>
-            <th scope="col">ID</th>
-            <th scope="col">Joint</th>
-            <th scope="col">Position</th>
-            <th scope="col">Target</th>
-            <th scope="col"><span class="sr-only">Slider</span></th>
-            <th scope="col">Torque</th>
+            <th scope="col">${t("servos.table.id")}</th>
+            <th scope="col">${t("servos.table.joint")}</th>
+            <th scope="col">${t("servos.table.position")}</th>
+            <th scope="col">${t("servos.table.target")}</th>
+            <th scope="col"><span class="sr-only">${t("servos.table.slider")}</span></th>
+            <th scope="col">${t("servos.table.torque")}</th>
           </tr>
         </thead>
         <tbody>
-          ${SERVO_IDS.map((id) => servoRow(ctx, id, enabled))}
+          ${SERVO_IDS.map((id) => servoRow(ctx, t, id, enabled))}
         </tbody>
       </table>
-      <h3>Basic posture</h3>
-      <p class="muted small">Moves all 16 servos together to the HUNO's basic posture (a synchronised move).</p>
-      ${postureControls(ctx, enabled)}
+      <h3>${t("servos.posture.title")}</h3>
+      <p class="muted small">${t("servos.posture.intro", { count: SERVO_IDS.length })}</p>
+      ${postureControls(ctx, t, enabled)}
     </section>
   `;
 }
 
 /** The robot in 3D: the demo robot follows its servos live; a robot on a cable is drawn as last read. */
-function liveRobot(ctx: ViewContext): TemplateResult {
+function liveRobot(ctx: ViewContext, t: ServosTranslator): TemplateResult {
   const s = servosOf(ctx.state);
   return liveRobotPanel({
     id: "servos",
@@ -213,19 +223,21 @@ function liveRobot(ctx: ViewContext): TemplateResult {
     known: { positions: s.positions, at: s.positionsAt },
     robotZeros: ctx.state.zeros.stored,
     motionPlaying: ctx.state.connection.playing !== undefined,
-    textVersion: "the servo table lists the positions read, in numbers",
+    textVersion: t("servos.textVersion"),
+    locale: ctx.state.locale,
   });
 }
 
 function render(ctx: ViewContext): TemplateResult {
   const acked = ctx.state.acks?.servos === true;
+  const t = translator(servosMessages, ctx.state.locale);
   return html`
     <div class="view-stack">
       <header class="view-head">
-        <h1 id="view-title">Servos</h1>
-        <p class="muted">Read and move single servos within their safe ranges, in the controller's direct mode.</p>
+        <h1 id="view-title">${t("servos.title")}</h1>
+        <p class="muted">${t("servos.intro")}</p>
       </header>
-      ${acked ? nothing : safetyNotice(ctx)} ${liveRobot(ctx)} ${controlCard(ctx)}
+      ${acked ? nothing : safetyNotice(ctx, t)} ${liveRobot(ctx, t)} ${controlCard(ctx, t)}
     </div>
   `;
 }

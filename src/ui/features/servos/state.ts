@@ -1,6 +1,9 @@
+import type { Locale } from "../../../i18n/locale.ts";
+import { translator } from "../../../i18n/translate.ts";
 import { HUNO_BASIC_POSTURE, HUNO_SERVO_IDS, safeRange } from "../../../protocol/servo-limits.ts";
 import type { AppState, Notice } from "../../app-state.ts";
 import type { Store } from "../../store.ts";
+import { servosMessages } from "./messages.ts";
 
 /**
  * The Servos view's part of the app state, one per connection (the session resets it to undefined, which
@@ -42,22 +45,26 @@ export function servoRange(id: number): { min: number; max: number } {
 
 /**
  * A target typed into servo `id`'s number box: a whole number within its safe range, or the sentence that says
- * why it is refused. Like the zeros editor, a value outside the range is refused, never clamped: 300 typed for
- * a servo whose range is 1-198 must not move it to 198.
+ * why it is refused (in `locale`, English by default). Like the zeros editor, a value outside the range is
+ * refused, never clamped: 300 typed for a servo whose range is 1-198 must not move it to 198.
  */
-export function checkTypedTarget(id: number, text: string): { position: number } | { problem: string } {
-  const { min, max } = servoRange(id);
+export function checkTypedTarget(
+  id: number,
+  text: string,
+  locale: Locale = "en",
+): { position: number } | { problem: string } {
+  const t = translator(servosMessages, locale);
+  const range = servoRange(id);
+  const [min, max] = [String(range.min), String(range.max)];
   const trimmed = text.trim();
-  const who = `Servo ${id}`;
-  if (trimmed === "") return { problem: `${who}: enter a position from ${min} to ${max}. Nothing was sent.` };
+  const who = String(id);
+  if (trimmed === "") return { problem: t("servos.typed.empty", { id: who, min, max }) };
   if (!/^-?\d+$/.test(trimmed)) {
-    return { problem: `${who}: "${trimmed}" is not a whole number; use ${min} to ${max}. Nothing was sent.` };
+    return { problem: t("servos.typed.notWhole", { id: who, text: trimmed, min, max }) };
   }
   const position = Number(trimmed);
-  if (position < min || position > max) {
-    return {
-      problem: `${who}: ${position} is outside its safe range ${min}–${max}. Nothing was sent; the servo stays where it is.`,
-    };
+  if (position < range.min || position > range.max) {
+    return { problem: t("servos.typed.outside", { id: who, position: String(position), min, max }) };
   }
   return { position };
 }

@@ -1,0 +1,345 @@
+/**
+ * The Sensors view, the Servos view and the 3D robot in Korean (issue #14 item 1): a browser set to Korean
+ * (`locale: "ko-KR"`) gets `lang="ko"`, the views' words in Korean (literal strings checked), no catalogue key
+ * in place of its text, no button whose label overflows it, nothing scrolling sideways, and no axe violation, at
+ * 1280×800 and 390×844. The Servos view is checked with its "Robot in 3D" card open (the demo robot, and a robot
+ * on a cable), and the motion preview of the Motions view in Korean. Screenshots go to /tmp/shots-c3/.
+ */
+import { mkdirSync } from "node:fs";
+import { createRequire } from "node:module";
+import type { BrowserContext, Locator, Page } from "playwright-core";
+import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { unitMessages } from "../../src/i18n/messages.ts";
+import { chartMessages } from "../../src/ui/charts/messages.ts";
+import { sensorsMessages } from "../../src/ui/features/sensors/messages.ts";
+import { servosMessages } from "../../src/ui/features/servos/messages.ts";
+import { robot3dMessages } from "../../src/ui/robot3d/messages.ts";
+import { type AppHarness, buildOnce, squash, startHarness } from "./harness.ts";
+import { exampleText, rbmFile } from "./motion-fixtures.ts";
+import "./rbc-test-globals.ts";
+
+const require = createRequire(import.meta.url);
+const AXE_PATH = require.resolve("axe-core/axe.min.js");
+
+const PHONE = { width: 390, height: 844 };
+const DESKTOP = { width: 1280, height: 800 };
+const SHOTS = "/tmp/shots-c3";
+
+/** Every key of the catalogues these views use: none may show on the page in place of its text. */
+const KEYS = [sensorsMessages, servosMessages, robot3dMessages, chartMessages, unitMessages].flatMap((m) =>
+  Object.keys(m),
+);
+
+let app: AppHarness;
+let fakeSerial: string;
+
+beforeAll(async () => {
+  app = await startHarness();
+  ({ fakeSerial } = await buildOnce());
+  mkdirSync(SHOTS, { recursive: true });
+});
+
+afterAll(async () => {
+  await app?.close();
+});
+
+/**
+ * A page whose browser prefers Korean, with the fake serial port. The panel's CSP is bypassed so that axe can
+ * be added as a script tag (as in a11y.test.ts and i18n.test.ts); the page prefers reduced motion, like the
+ * harness's.
+ */
+async function newKoreanPage(viewport: { width: number; height: number }): Promise<{
+  context: BrowserContext;
+  page: Page;
+}> {
+  const context = await app.browser.newContext({
+    locale: "ko-KR",
+    viewport,
+    serviceWorkers: "block",
+    reducedMotion: "reduce",
+    bypassCSP: true,
+  });
+  await context.addInitScript({ content: `window.__rbcTestOptions = {};\n;\n${fakeSerial}` });
+  const page = await context.newPage();
+  await page.goto(app.url, { waitUntil: "domcontentloaded" });
+  await page.getByTestId("connect-card").waitFor();
+  return { context, page };
+}
+
+/** Connects the demo robot from the connect card (its second button, whatever its language). */
+async function connectDemo(page: Page): Promise<void> {
+  await page.getByTestId("connect-card").locator(".actions .btn").nth(1).click();
+  await page.getByTestId("device-card").waitFor();
+}
+
+/** Connects the fake robot on a cable from the connect card (its main button). */
+async function connectCable(page: Page): Promise<void> {
+  await page.getByTestId("connect-card").locator(".actions .btn--primary").click();
+  await page.getByTestId("device-card").waitFor();
+  await page.getByTestId("memory-action-note").filter({ hasText: /8,192/ }).waitFor();
+}
+
+const lang = (page: Page) => page.evaluate(() => document.documentElement.lang);
+const text = (locator: Locator) => locator.textContent().then(squash);
+
+/** Buttons and selects whose label is wider than they are, as "label (scroll > client)". */
+async function overflowing(page: Page, within = "body"): Promise<string[]> {
+  return page.evaluate(
+    (root) =>
+      Array.from(document.querySelector(root)?.querySelectorAll<HTMLElement>("button, .btn, select") ?? [])
+        .filter((b) => b.offsetParent !== null && b.scrollWidth > b.clientWidth)
+        .map(
+          (b) => `${(b.textContent ?? "").replace(/\s+/g, " ").trim()} (${b.scrollWidth} > ${b.clientWidth})`,
+        ),
+    within,
+  );
+}
+
+const scrollsSideways = (page: Page) =>
+  page.evaluate(() => {
+    const root = document.documentElement;
+    if (root.scrollWidth <= root.clientWidth) return false;
+    // What sticks out, for the failure message.
+    return Array.from(document.querySelectorAll<HTMLElement>("body *"))
+      .filter((e) => e.getBoundingClientRect().right > root.clientWidth + 0.5)
+      .slice(0, 8)
+      .map((e) => `${e.tagName.toLowerCase()}.${e.className} ${Math.round(e.getBoundingClientRect().right)}`)
+      .join("; ");
+  });
+
+/** Catalogue keys shown as text or in a label (a message the page could not find). */
+async function keysShown(page: Page): Promise<string[]> {
+  const shown = await page.evaluate(() =>
+    [
+      document.title,
+      document.body.textContent ?? "",
+      ...Array.from(document.querySelectorAll("[aria-label], [title], [aria-valuetext]")).map(
+        (e) =>
+          `${e.getAttribute("aria-label") ?? ""} ${e.getAttribute("title") ?? ""} ${e.getAttribute("aria-valuetext") ?? ""}`,
+      ),
+    ].join("\n"),
+  );
+  return KEYS.filter((key) => shown.includes(key));
+}
+
+/** axe's violations in `within` (the whole page by default), one line each. */
+async function axeViolations(page: Page, within?: string): Promise<string[]> {
+  if (!(await page.evaluate(() => "axe" in window))) await page.addScriptTag({ path: AXE_PATH });
+  const found = await page.evaluate(async (include) => {
+    type Run = (context: unknown, o: unknown) => Promise<{ violations: unknown[] }>;
+    const axe = (window as unknown as { axe: { run: Run } }).axe;
+    const context = include ? { include: [include] } : document;
+    return (await axe.run(context, { resultTypes: ["violations"] })).violations as {
+      id: string;
+      help: string;
+      nodes: { target: unknown[] }[];
+    }[];
+  }, within);
+  return found.map((v) => `${v.id}: ${v.help} — ${v.nodes.map((n) => JSON.stringify(n.target)).join(", ")}`);
+}
+
+/** The layout and accessibility checks every view gets, and its screenshot. */
+async function checkLayout(page: Page, name: string, viewport: { width: number }): Promise<void> {
+  expect(await lang(page)).toBe("ko");
+  expect(await keysShown(page)).toEqual([]);
+  expect(await overflowing(page), `${name}: labels wider than their buttons`).toEqual([]);
+  expect(await scrollsSideways(page), `${name}: scrolls sideways`).toBe(false);
+  expect(await axeViolations(page), `${name}: axe`).toEqual([]);
+  await page.screenshot({ path: `${SHOTS}/${name}-${viewport.width}.png`, fullPage: true });
+}
+
+for (const viewport of [DESKTOP, PHONE]) {
+  const size = `${viewport.width}×${viewport.height}`;
+
+  describe(`in Korean at ${size}`, () => {
+    it("the Sensors view: readings, events and the demo robot's world", async () => {
+      const { page, context } = await newKoreanPage(viewport);
+      await connectDemo(page);
+      await page.getByRole("link", { name: "센서", exact: true }).click();
+      await page.getByRole("heading", { level: 1, name: "센서" }).waitFor();
+      const status = page.getByTestId("poll-status");
+      await status.filter({ hasText: "마지막으로" }).waitFor();
+      expect(await text(status)).toMatch(/^1초에 5번 읽고 있어요\. 마지막으로 \d\d:\d\d:\d\d에 읽었어요\.$/);
+      await page.getByTestId("distance-value").filter({ hasText: "10cm" }).waitFor();
+      expect(await text(page.getByTestId("distance-value"))).toBe("10cm");
+      expect(await page.getByRole("heading", { level: 2, name: "거리와 가속도" }).count()).toBe(1);
+      expect(await page.getByRole("button", { name: "일시 정지" }).count()).toBe(1);
+      expect(await page.getByTestId("poll-rate").locator("option").allTextContents()).toEqual([
+        "1초에 2번",
+        "1초에 5번",
+        "1초에 10번",
+      ]);
+      // The charts are named in Korean, their axes too.
+      const distanceChart = page.locator('[data-testid="distance-chart"][data-chart="drawn"]');
+      await distanceChart.waitFor();
+      expect(await distanceChart.locator('[role="img"]').getAttribute("aria-label")).toBe(
+        "최근 30초 동안의 거리 (cm)",
+      );
+      // The legend names the line (the axes' labels are drawn on the canvas).
+      expect(await distanceChart.locator(".u-legend").textContent()).toContain("거리 (cm)");
+      await page.locator('[data-testid="accel-chart"][data-chart="drawn"]').waitFor();
+
+      // The events: listening to the PF buttons, a press of the demo robot's PF2.
+      expect(await page.getByText("아직 이벤트가 없어요.").count()).toBe(1);
+      await page.getByRole("radio", { name: "PF 버튼" }).check();
+      await page.getByTestId("listen-status").filter({ hasText: "PF 버튼을 듣고 있어요." }).waitFor();
+      await page.getByRole("button", { name: "PF2 누르기" }).click();
+      await page.getByTestId("event-list").filter({ hasText: "PF2 눌림" }).waitFor();
+
+      // The demo robot's world.
+      const world = page.getByTestId("demo-world");
+      expect(await text(world.getByRole("heading", { level: 2 }))).toBe("데모 로봇의 주변 환경");
+      expect(await text(world.locator('label[for="demo-distance"]'))).toBe("앞에 있는 물체: 10cm");
+      expect(await world.locator("select option:checked").textContent()).toBe("7 기본 자세");
+      expect(await world.getByRole("button", { name: "IR 키 보내기" }).count()).toBe(1);
+
+      // Sound: the threshold and its level.
+      await page.getByRole("radio", { name: "소리 크기" }).check();
+      await page.getByTestId("listen-status").filter({ hasText: "소리 크기를 듣고 있어요." }).waitFor();
+      expect(await text(page.getByTestId("sound-level"))).toBe("아직 들린 소리 없음");
+      // Asked for 10 a second while listening to sound, it reads at most 5, and says why.
+      await page.getByTestId("poll-rate").selectOption("10");
+      await status.filter({ hasText: "최대 5번" }).waitFor();
+      expect(await text(status)).toMatch(
+        /^1초에 5번 읽고 있어요 \(소리를 듣는 동안에는 로봇이 소리를 알려 줄 수 있도록 최대 5번\)\. 마지막으로 \d\d:\d\d:\d\d에 읽었어요\.$/,
+      );
+
+      await checkLayout(page, "sensors", viewport);
+
+      // Switched to English, the view and its charts (drawn anew with the new words) speak English.
+      await page.getByLabel("언어 / Language").selectOption("en");
+      await page.getByRole("heading", { level: 1, name: "Sensors" }).waitFor();
+      await expect
+        .poll(() => page.locator('[data-testid="distance-chart"] [role="img"]').getAttribute("aria-label"))
+        .toBe("Distance in cm over the last 30 seconds");
+      await page
+        .getByTestId("poll-status")
+        .filter({ hasText: /^Reading 5 times a second \(at most 5/ })
+        .waitFor();
+      await context.close();
+    });
+
+    it("the Servos view, with the demo robot in 3D", async () => {
+      const { page, context } = await newKoreanPage(viewport);
+      await connectDemo(page);
+      await page.getByRole("link", { name: "서보", exact: true }).click();
+      await page.getByRole("heading", { level: 1, name: "서보" }).waitFor();
+      const safety = page.getByTestId("servo-safety");
+      expect(await text(safety.getByRole("heading", { level: 2 }))).toBe("서보를 움직이기 전에");
+      expect(await text(safety.locator("li").first())).toBe(
+        "로봇을 받쳐 주세요: 손으로 잡거나 등을 바닥에 대고 눕혀서, 관절이 움직이거나 힘이 빠져도 넘어지지 않게 해 주세요.",
+      );
+      await checkLayout(page, "servos-safety", viewport);
+
+      await page.getByRole("button", { name: "알겠어요: 로봇을 받쳐 두었어요" }).click();
+      await page.getByRole("button", { name: "서보 제어 시작" }).click();
+      await page.getByText("서보 16개를 모두 읽었어요.").waitFor();
+      expect(await page.locator(".servo-table thead th").allTextContents()).toEqual([
+        "ID",
+        "관절",
+        "위치",
+        "목표",
+        "슬라이더",
+        "토크",
+      ]);
+      expect(await text(page.locator('label[for="servo-12"]'))).toBe("오른쪽 팔꿈치");
+      expect(await page.getByLabel("오른쪽 팔꿈치 (서보 12번), 목표 1~198").count()).toBe(1);
+      // A refused value says why, in Korean; nothing is sent.
+      await page.locator("#servo-12").fill("300");
+      await page.locator("#servo-12").press("Enter");
+      expect(await text(page.getByTestId("servo-refused-12"))).toBe(
+        "서보 12번: 300은(는) 안전 범위(1–198) 밖이에요. 아무것도 보내지 않았고, 서보는 그대로 있어요.",
+      );
+
+      // The robot in 3D: the demo robot, live.
+      const toggle = page.getByTestId("live-robot-toggle");
+      expect(await text(toggle)).toBe("로봇을 3D로 보기");
+      await toggle.click();
+      await page.locator('[data-testid="live-robot-view"][data-state="ready"]').waitFor();
+      expect(await text(toggle)).toBe("3D 로봇 숨기기");
+      expect(await text(page.getByTestId("live-robot-caption"))).toBe("데모 로봇, 실시간");
+      expect(await page.getByTestId("live-robot-view").locator("canvas").getAttribute("aria-label")).toBe(
+        "데모 로봇의 실시간 3D 보기: 가상 서보가 움직이는 대로 따라가요; 서보 표에 읽은 위치가 숫자로 나와 있어요",
+      );
+
+      // The basic posture, asked in place.
+      await page.getByRole("button", { name: "모두 기본 자세로…" }).click();
+      await page.getByText("서보 16개가 모두 기본 자세로 움직여요 (속도 4). 로봇을 잡아 주세요.").waitFor();
+      expect(await page.getByRole("button", { name: "모든 서보 움직이기" }).count()).toBe(1);
+      await checkLayout(page, "servos", viewport);
+      await context.close();
+    });
+  });
+}
+
+describe("in Korean, the 3D robot of a robot on a cable and the motion preview", () => {
+  for (const viewport of [DESKTOP, PHONE]) {
+    it(`says what it draws of a robot on a cable, ${viewport.width}×${viewport.height}`, async () => {
+      const { page, context } = await newKoreanPage(viewport);
+      await connectCable(page);
+      await page.getByRole("link", { name: "서보", exact: true }).click();
+      await page.getByTestId("live-robot-toggle").click();
+      await page.locator('[data-testid="live-robot-view"][data-state="ready"]').waitFor();
+      expect(await text(page.getByTestId("live-robot-caption"))).toBe(
+        "아직 읽은 위치가 없어요: 기본 자세로 그렸어요",
+      );
+      expect(await text(page.getByTestId("live-robot-unread"))).toContain(
+        "모든 관절을 로봇의 실제 자세가 아니라 기본 자세로 그렸어요",
+      );
+      expect(await text(page.getByTestId("live-robot"))).toContain(
+        "이번 연결에서 이 로봇의 영점을 읽지 않아서, 각도는 표준 영점 표를 기준으로 재요.",
+      );
+      await page.getByRole("button", { name: "알겠어요: 로봇을 받쳐 두었어요" }).click();
+      await page.getByRole("button", { name: "서보 제어 시작" }).click();
+      await page.getByText("서보 16개를 모두 읽었어요.").waitFor();
+      expect(await text(page.getByTestId("live-robot-caption"))).toMatch(
+        /^마지막으로 읽은 위치, \d\d:\d\d:\d\d$/,
+      );
+      expect(await page.getByTestId("live-robot-view").locator("canvas").getAttribute("aria-label")).toMatch(
+        /^마지막으로 읽은 위치\(\d\d:\d\d:\d\d\)에 있는 로봇의 3D 보기; 서보 표에/,
+      );
+      await checkLayout(page, "servos-cable", viewport);
+      await context.close();
+    });
+
+    it(`plays a motion preview with Korean controls, ${viewport.width}×${viewport.height}`, async () => {
+      const { page, context } = await newKoreanPage(viewport);
+      await connectCable(page);
+      await page.getByRole("link", { name: "모션", exact: true }).click();
+      await page.getByTestId("rbm-files").setInputFiles(rbmFile("wave.rbm", exampleText("wave.rbm")));
+      const card = page.getByTestId("motion-file");
+      await card.getByTestId("preview-toggle").click();
+      const preview = card.getByTestId("motion-preview");
+      await preview.locator('[data-state="ready"]').waitFor();
+      // The page prefers reduced motion: the preview steps from scene to scene.
+      const play = preview.getByTestId("preview-play");
+      expect(await text(play)).toBe("다음 장면");
+      expect(await text(preview.getByTestId("preview-clock"))).toBe("0.0초 / 3.2초");
+      expect(await text(preview.locator("label"))).toBe("시간");
+      expect(await text(preview.locator(".robot3d-hint"))).toBe(
+        "동작 줄이기가 켜져 있어요. '다음 장면'을 누르면 움직이는 화면 없이 각 장면의 자세를 보여 줘요. " +
+          "시간: 화살표 키로 0.1초씩, Page Up과 Page Down으로 한 장면씩 움직여요. 로봇 돌리기: 로봇을 끌거나, 로봇을 선택한 뒤 화살표 키를 눌러 주세요.",
+      );
+      await play.click();
+      await expect.poll(() => preview.getAttribute("data-time")).toBe("800");
+      expect(await text(preview.getByTestId("preview-clock"))).toBe("0.8초 / 3.2초");
+      expect(await preview.getByTestId("preview-time").getAttribute("aria-valuetext")).toBe(
+        "0.8초 / 3.2초, 장면 0 끝, RaiseArm",
+      );
+      // To the end: the button goes back to the start.
+      await preview.getByTestId("preview-time").evaluate((input: HTMLInputElement) => {
+        input.value = input.max;
+        input.dispatchEvent(new Event("input", { bubbles: true }));
+      });
+      await expect.poll(() => text(play)).toBe("처음으로");
+
+      expect(await lang(page)).toBe("ko");
+      expect(await keysShown(page)).toEqual([]);
+      expect(await overflowing(page, '[data-testid="motion-preview"]')).toEqual([]);
+      expect(await scrollsSideways(page)).toBe(false);
+      expect(await axeViolations(page, '[data-testid="motion-preview"]')).toEqual([]);
+      await preview.screenshot({ path: `${SHOTS}/motion-preview-${viewport.width}.png` });
+      await context.close();
+    });
+  }
+});
