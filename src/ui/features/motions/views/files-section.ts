@@ -157,6 +157,7 @@ function fileCard(
               motion: entry.motion,
               label: t("motions.files.previewLabel", { name: entry.motion.name }),
               testId: "motion-preview",
+              locale: ctx.state.locale,
             })
           : nothing
       }

@@ -183,6 +183,7 @@ function liveRobot(ctx: ViewContext, t: MotionsTranslator): TemplateResult {
   const servos = servosOf(s);
   return liveRobotPanel({
     id: "run",
+    locale: ctx.state.locale,
     shown: motionsOf(s).robot3dShown === true,
     onToggle: () => toggleLiveRobot(ctx),
     demo: ctx.session.demoSim,
