@@ -14,7 +14,7 @@
  * | B_k = 12+6W+k(6+5W)  | 6     | scene k: index, frames, time (ms), u16 LE |
  * | B_k + 6 + 5i         | 5     | id, start, end, torque, port              |
  */
-import { RbmError, type RbmMotion } from "./rbm.ts";
+import { RbmError, type RbmIssueValues, type RbmMotion } from "./rbm.ts";
 
 /** Image size for W servos and S scenes: 12 + 6W + S(6 + 5W). */
 export function motionImageSize(servoCount: number, sceneCount: number): number {
@@ -30,62 +30,65 @@ export function motionImage(motion: RbmMotion): Uint8Array {
   const W = motion.servos.length;
   const S = motion.scenes.length;
   const size = motionImageSize(W, S);
-  check(size, 0xffff, "The image size");
+  check(size, 0xffff, "The image size", { field: "imageSize" });
   const out = new Uint8Array(size);
   let o = 0;
-  const u8 = (value: number, what: string): void => {
-    check(value, 0xff, what);
+  /** `subject` names the field for the error's values: `{ field: "start", scene: 2, servo: 5 }`. */
+  const u8 = (value: number, what: string, subject: RbmIssueValues): void => {
+    check(value, 0xff, what, subject);
     out[o++] = value;
   };
-  const u16le = (value: number, what: string): void => {
-    check(value, 0xffff, what);
+  const u16le = (value: number, what: string, subject: RbmIssueValues): void => {
+    check(value, 0xffff, what, subject);
     out[o++] = value & 0xff;
     out[o++] = value >>> 8;
   };
 
-  u8(motion.platform, "The platform");
-  u8(motion.motionIndex, "The motion index");
+  u8(motion.platform, "The platform", { field: "platform" });
+  u8(motion.motionIndex, "The motion index", { field: "motionIndex" });
   o += 4; // absolute index, always 0
-  u16le(S, "The number of scenes");
-  u16le(W, "The number of servos");
+  u16le(S, "The number of scenes", { field: "sceneCount" });
+  u16le(W, "The number of servos", { field: "servoCount" });
   for (const servo of motion.servos) {
     const what = `Servo ${servo.id}:`;
-    u8(servo.id, `${what} id`);
-    u8(servo.p, `${what} P gain`);
-    u8(servo.d, `${what} D gain`);
-    u8(servo.i, `${what} I gain`);
-    u8(servo.portEnable, `${what} port enable`);
-    u8(servo.zero, `${what} zero position`);
+    const at = { servo: servo.id };
+    u8(servo.id, `${what} id`, { field: "id", ...at });
+    u8(servo.p, `${what} P gain`, { field: "p", ...at });
+    u8(servo.d, `${what} D gain`, { field: "d", ...at });
+    u8(servo.i, `${what} I gain`, { field: "i", ...at });
+    u8(servo.portEnable, `${what} port enable`, { field: "portEnable", ...at });
+    u8(servo.zero, `${what} zero position`, { field: "zero", ...at });
   }
-  u16le(size, "The image size");
+  u16le(size, "The image size", { field: "imageSize" });
   motion.scenes.forEach((scene, k) => {
     if (scene.servos.length !== W) {
-      throw new RbmError(
-        "rbm-servo-count",
-        `Scene ${k} has ${scene.servos.length} servo records but the motion has ${W} servos.`,
-      );
+      const message = `Scene ${k} has ${scene.servos.length} servo records but the motion has ${W} servos.`;
+      const values = { kind: "scene", scene: k, records: scene.servos.length, servos: W };
+      throw new RbmError("rbm-servo-count", message, [
+        { code: "rbm-servo-count", message, scene: k, values },
+      ]);
     }
     const what = `Scene ${k}:`;
-    u16le(scene.index, `${what} index`);
-    u16le(scene.frames, `${what} frames`);
-    u16le(scene.timeMs, `${what} time`);
+    u16le(scene.index, `${what} index`, { field: "index", scene: k });
+    u16le(scene.frames, `${what} frames`, { field: "frames", scene: k });
+    u16le(scene.timeMs, `${what} time`, { field: "timeMs", scene: k });
     for (const rec of scene.servos) {
       const rw = `${what} servo ${rec.id}`;
-      u8(rec.id, `${rw} id`);
-      u8(rec.start, `${rw} start position`);
-      u8(rec.end, `${rw} end position`);
-      u8(rec.torque, `${rw} torque`);
-      u8(rec.port, `${rw} port`);
+      const at = { scene: k, servo: rec.id };
+      u8(rec.id, `${rw} id`, { field: "id", ...at });
+      u8(rec.start, `${rw} start position`, { field: "start", ...at });
+      u8(rec.end, `${rw} end position`, { field: "end", ...at });
+      u8(rec.torque, `${rw} torque`, { field: "torque", ...at });
+      u8(rec.port, `${rw} port`, { field: "port", ...at });
     }
   });
   return out;
 }
 
-function check(value: number, max: number, what: string): void {
+function check(value: number, max: number, what: string, subject: RbmIssueValues): void {
   if (!Number.isInteger(value) || value < 0 || value > max) {
-    throw new RbmError(
-      "rbm-image-range",
-      `${what} is ${String(value)}; the motion image holds whole numbers from 0 to ${max} there.`,
-    );
+    const message = `${what} is ${String(value)}; the motion image holds whole numbers from 0 to ${max} there.`;
+    const values = { ...subject, value: Number.isSafeInteger(value) ? value : String(value), max };
+    throw new RbmError("rbm-image-range", message, [{ code: "rbm-image-range", message, values }]);
   }
 }

@@ -6,10 +6,11 @@
  * text, and `serializeRbm(parseRbm(text)) === text` for every file it accepts.
  */
 import { ProtocolError } from "./errors.ts";
-import { type RbmIssue, validateRbm } from "./rbm-validate.ts";
+import { type RbmIssue, type RbmIssueValues, validateRbm } from "./rbm-validate.ts";
 
 export {
   type RbmIssue,
+  type RbmIssueValues,
   type RbmValidateOptions,
   type RbmValidation,
   rbmMotionSchema,
@@ -121,11 +122,12 @@ export const RBM_NAME_MAX = 99;
 /** How every motion file starts: the format number and the serial number's length field ("1:13:"). */
 const RBM_START = /^\s*[0-9]{1,15}:[0-9]{1,15}:/;
 
-function capped(text: string, index: number, max: number, what: string): string {
+function capped(text: string, index: number, max: number, what: string, field: string): string {
   if (text.length > max) {
     fail(
       "rbm-field-too-long",
       `Field ${index} (${what}) has ${text.length} characters; it holds at most ${max}.`,
+      { kind: "text", field, index, length: text.length, max },
     );
   }
   return text;
@@ -150,8 +152,9 @@ function shown(text: string): string {
   return text.length > 24 ? `"${text.slice(0, 24)}…"` : `"${text}"`;
 }
 
-function fail(code: string, message: string): never {
-  throw new RbmError(code, message);
+/** Throws the `RbmError` of one issue; `values` are what its sentence says (`RbmIssueValues`). */
+function fail(code: string, message: string, values: RbmIssueValues = {}): never {
+  throw new RbmError(code, message, [{ code, message, values }]);
 }
 
 type Layout<T> = readonly (readonly [key: keyof T & string, width: number, label: string])[];
@@ -191,113 +194,152 @@ export function parseRbm(text: string): RbmMotion {
  * nothing else) if the text is not an `.rbm` file at all.
  */
 export function readRbm(text: string): RbmMotion {
-  if (typeof text !== "string") fail("rbm-not-text", "A motion file must be read as text.");
+  if (typeof text !== "string") fail("rbm-not-text", "A motion file must be read as text.", {});
   if (text.length > RBM_MAX_TEXT_LENGTH) {
     fail(
       "rbm-too-large",
       `The file has ${text.length.toLocaleString("en-US")} characters; a motion file is far smaller (the largest motion that fits the robot is about 90,000), so this is not one.`,
+      { characters: text.length, largest: 90_000 },
     );
   }
   let end = text.length;
   while (end > 0 && isSpace(text.charCodeAt(end - 1))) end--;
   const body = text.slice(0, end);
   const trailing = text.slice(end);
-  if (body.length === 0) fail("rbm-empty", "The motion file is empty.");
+  if (body.length === 0) fail("rbm-empty", "The motion file is empty.", {});
   if (!RBM_START.test(text)) {
     fail(
       "rbm-not-motion",
       'This is not a Motionbuilder motion file (.rbm): such a file is one line of fields separated by ":", starting with "1:13:" and the 13-digit serial number of a robot.',
+      {},
     );
   }
   if (!body.endsWith(":")) {
     fail(
       "rbm-end",
       `The file should end with ":", not ${shown(body.slice(-12))}; it is truncated or damaged.`,
+      { ending: shown(body.slice(-12)) },
     );
   }
   const f = body.slice(0, -1).split(":");
   if (f.length < RBM_HEADER_FIELDS) {
-    fail("rbm-field-count", `The file has only ${f.length} fields; an .rbm file's header alone has 13.`);
+    fail("rbm-field-count", `The file has only ${f.length} fields; an .rbm file's header alone has 13.`, {
+      kind: "header",
+      fields: f.length,
+      header: RBM_HEADER_FIELDS,
+    });
   }
   const raw: Record<string, string> = {};
   const field = (index: number): string => f[index] ?? "";
-  const num = (index: number, key: string, width: number, what: string): number => {
+  /** `subject` names the field for the issue's values: `{ field: "start", scene: 2, record: 5 }`. */
+  const num = (index: number, key: string, width: number, what: string, subject: RbmIssueValues): number => {
     const t = field(index);
     if (!isDigits(t)) {
-      fail("rbm-not-a-number", `Field ${index} (${what}) should be a whole number but is ${shown(t)}.`);
+      fail("rbm-not-a-number", `Field ${index} (${what}) should be a whole number but is ${shown(t)}.`, {
+        kind: "field",
+        index,
+        ...subject,
+        text: shown(t),
+      });
     }
     const value = Number(t);
     if (t !== pad(value, width)) raw[key] = t;
     return value;
   };
   /** A text field preceded by its length field. */
-  const sized = (lengthIndex: number, key: string, width: number, what: string): string => {
-    const length = num(lengthIndex, key, width, `the length of ${what}`);
+  /** `subject` names the text: `{ field: "name" }`, `{ field: "name", scene: 2 }`. */
+  const sized = (
+    lengthIndex: number,
+    key: string,
+    width: number,
+    what: string,
+    subject: RbmIssueValues,
+  ): string => {
+    const length = num(lengthIndex, key, width, `the length of ${what}`, {
+      ...subject,
+      field: `${subject.field}Length`,
+    });
     if (length > RBM_NAME_MAX) {
       fail(
         "rbm-field-too-long",
         `The length of ${what} is ${length}; a name in a motion file has at most ${RBM_NAME_MAX} characters.`,
+        { kind: "name", ...subject, length, max: RBM_NAME_MAX },
       );
     }
     const t = field(lengthIndex + 1);
     if (t.length !== length) {
       const message = `${what} ${shown(t)} has ${t.length} characters, but its length field says ${length}.`;
-      fail("rbm-length-mismatch", message.charAt(0).toUpperCase() + message.slice(1));
+      fail("rbm-length-mismatch", message.charAt(0).toUpperCase() + message.slice(1), {
+        ...subject,
+        text: shown(t),
+        length: t.length,
+        declared: length,
+      });
     }
     return t;
   };
-  const record = <T>(layout: Layout<T>, at: number, key: string, what: string): T => {
+  const record = <T>(layout: Layout<T>, at: number, key: string, what: string, where: RbmIssueValues): T => {
     const rec: Record<string, number> = {};
     layout.forEach(([k, width, label], j) => {
-      rec[k] = num(at + j, key + k, width, `${what}: ${label}`);
+      rec[k] = num(at + j, key + k, width, `${what}: ${label}`, { field: k, ...where });
     });
     return rec as T;
   };
 
-  const sceneCount = num(9, "h9", 1, "the number of scenes");
-  const servoCount = num(11, "h11", 1, "the number of servos");
+  const sceneCount = num(9, "h9", 1, "the number of scenes", { field: "sceneCount" });
+  const servoCount = num(11, "h11", 1, "the number of servos", { field: "servoCount" });
   const motion: RbmMotion = {
-    format: num(0, "h0", 1, "the format"),
-    serialNumber: sized(1, "h1", 1, "the serial number"),
-    text1: capped(field(3), 3, RBM_TEXT1_MAX, "the 10-character text"),
-    text2: capped(field(4), 4, RBM_TEXT2_MAX, "the text"),
-    name: sized(5, "h5", 1, "the motion name"),
-    motionIndex: num(7, "h7", 1, "the motion index"),
-    platform: num(8, "h8", 1, "the platform"),
+    format: num(0, "h0", 1, "the format", { field: "format" }),
+    serialNumber: sized(1, "h1", 1, "the serial number", { field: "serialNumber" }),
+    text1: capped(field(3), 3, RBM_TEXT1_MAX, "the 10-character text", "text1"),
+    text2: capped(field(4), 4, RBM_TEXT2_MAX, "the text", "text2"),
+    name: sized(5, "h5", 1, "the motion name", { field: "name" }),
+    motionIndex: num(7, "h7", 1, "the motion index", { field: "motionIndex" }),
+    platform: num(8, "h8", 1, "the platform", { field: "platform" }),
     sceneCount,
-    unknown10: num(10, "h10", 1, "field 10"),
+    unknown10: num(10, "h10", 1, "field 10", { field: "unknown10" }),
     servoCount,
-    unknown12: num(12, "h12", 1, "field 12"),
+    unknown12: num(12, "h12", 1, "field 12", { field: "unknown12" }),
     servos: [],
     scenes: [],
   };
   if (servoCount < 1 || servoCount > 31) {
-    fail("rbm-servo-count", `The file says the motion has ${servoCount} servos; a motion has 1 to 31.`);
+    fail("rbm-servo-count", `The file says the motion has ${servoCount} servos; a motion has 1 to 31.`, {
+      kind: "file",
+      servos: servoCount,
+      min: 1,
+      max: 31,
+    });
   }
   const expected = rbmFieldCount(servoCount, sceneCount);
   if (f.length !== expected) {
     fail(
       "rbm-field-count",
       `The file has ${f.length} fields, but a motion with ${servoCount} servos and ${sceneCount} scenes has ${expected}; the file is truncated or damaged.`,
+      { kind: "total", fields: f.length, servos: servoCount, scenes: sceneCount, expected },
     );
   }
 
   for (let i = 0; i < servoCount; i++) {
-    motion.servos.push(record(SERVO_LAYOUT, RBM_HEADER_FIELDS + 6 * i, `s${i}.`, `servo record ${i}`));
+    const at = RBM_HEADER_FIELDS + 6 * i;
+    motion.servos.push(record(SERVO_LAYOUT, at, `s${i}.`, `servo record ${i}`, { record: i }));
   }
   for (let s = 0; s < sceneCount; s++) {
     const b = RBM_HEADER_FIELDS + 6 * servoCount + s * (5 + 6 * servoCount);
     const k = `c${s}.`;
     const what = `scene ${s}`;
     const scene: RbmScene = {
-      index: num(b, `${k}index`, 3, `${what}: index`),
-      name: sized(b + 1, `${k}nameLength`, 2, `the name of ${what},`),
-      frames: num(b + 3, `${k}frames`, 1, `${what}: frames`),
-      timeMs: num(b + 4, `${k}timeMs`, 1, `${what}: time`),
+      index: num(b, `${k}index`, 3, `${what}: index`, { field: "index", scene: s }),
+      name: sized(b + 1, `${k}nameLength`, 2, `the name of ${what},`, { field: "name", scene: s }),
+      frames: num(b + 3, `${k}frames`, 1, `${what}: frames`, { field: "frames", scene: s }),
+      timeMs: num(b + 4, `${k}timeMs`, 1, `${what}: time`, { field: "timeMs", scene: s }),
       servos: [],
     };
     for (let i = 0; i < servoCount; i++) {
-      scene.servos.push(record(RECORD_LAYOUT, b + 5 + 6 * i, `${k}r${i}.`, `${what}, servo record ${i}`));
+      const where = { scene: s, record: i };
+      scene.servos.push(
+        record(RECORD_LAYOUT, b + 5 + 6 * i, `${k}r${i}.`, `${what}, servo record ${i}`, where),
+      );
     }
     motion.scenes.push(scene);
   }

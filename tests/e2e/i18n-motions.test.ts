@@ -205,8 +205,8 @@ describe("the Motions view in Korean", () => {
       expect(await text(page.locator('[data-testid="motion-chart"] .u-legend'))).toContain("2 오른쪽 무릎");
       await expectGood(page, "files", viewport);
 
-      // A file with warnings and one with an error: the panel's words in Korean, the validator's sentence in
-      // English (marked as English), the place in Korean.
+      // A file with warnings and one with an error: the panel's words and the checker's sentences in Korean
+      // (tests/e2e/i18n-motion-issues.test.ts has more of them).
       await page
         .getByTestId("rbm-files")
         .setInputFiles([
@@ -226,14 +226,14 @@ describe("the Motions view in Korean", () => {
       );
       await group.getByText("16개 모두 보기").click();
       const first = group.locator(".issues li").first();
-      expect(await text(first)).toMatch(/^장면 1, 서보 0: Scene 1 starts servo 0/);
-      expect(await first.locator('[lang="en"]').count()).toBe(1);
+      expect(await text(first)).toBe(
+        "장면 0에서 서보 0번(오른쪽 엉덩이 롤)의 끝 위치는 125인데, 장면 1에서는 127에서 시작해서 서보가 튀어요.",
+      );
+      expect(await first.locator('[lang="en"]').count()).toBe(0);
       const edited = page.getByTestId("motion-file").filter({ hasText: "Edited.rbm" });
       expect(await text(edited.getByTestId("check-summary"))).toMatch(/^확인함: 오류 1개, 경고 0개\.$/);
       expect(await text(edited.locator(".issue--error .issue-kind"))).toBe("오류");
-      expect(await text(edited.locator(".issue--error"))).toMatch(
-        /^오류 장면 0: Scene 0 has frames 10 ms apart/,
-      );
+      expect(await text(edited.locator(".issue--error"))).toMatch(/^오류 장면 0의 프레임 간격이 10ms예요 /);
       expect(await text(edited.getByTestId("upload-why"))).toBe(
         "업로드할 수 없어요. 파일에 오류가 1개 있어요 (위 목록). 아무것도 보내지 않아요.",
       );

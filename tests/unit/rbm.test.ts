@@ -274,6 +274,7 @@ describe("validateRbm", () => {
         servo: 10,
         message:
           "Scene 1 starts servo 10 (Right shoulder pitch) at 60, but scene 0 ended it at 160; the servo will jump.",
+        values: { scene: 1, servo: 10, start: 60, previous: 0, end: 160 },
       },
     ]);
   });
@@ -348,6 +349,7 @@ describe("validateRbm", () => {
       code: "rbm-not-a-number",
       scene: 2,
       message: "scene 2, servo record 3, end must be a whole number of 0 or more (it is 12.5).",
+      values: { kind: "shape", path: "scenes.2.servos.3.end", got: "value", value: "12.5" },
     });
     expect(errors).toContainEqual(
       expect.objectContaining({ code: "rbm-shape", message: expect.stringMatching(/text1 must be text/) }),

@@ -59,12 +59,10 @@ export function inspectMotionText(
   try {
     entry.image = motionImage(entry.motion);
   } catch (e) {
-    entry.errors = [
-      {
-        code: e instanceof RbmError ? e.code : "rbm-image",
-        message: e instanceof Error ? e.message : String(e),
-      },
-    ];
+    entry.errors =
+      e instanceof RbmError
+        ? [...e.issues]
+        : [{ code: "rbm-image", message: e instanceof Error ? e.message : String(e) }];
   }
   return entry;
 }

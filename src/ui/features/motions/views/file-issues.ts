@@ -1,23 +1,25 @@
 import { html, nothing, type TemplateResult } from "lit-html";
 import type { RbmIssue } from "../../../../protocol/rbm-validate.ts";
 import { formatCount } from "../../../format.ts";
-import { PANEL_ISSUE_CODES } from "../files.ts";
 import { groupWarnings, type WarningGroup, weightWord } from "../issue-groups.ts";
+import { issueWords } from "../issue-text.ts";
 import type { MotionsTranslator } from "../messages.ts";
 import type { MotionFileEntry } from "../state.ts";
 
 /** A file card's check: the summary, its errors one by one, and its warnings grouped by kind. */
 
 /**
- * An issue's sentence, with "scene 3, servo 0: " before it when it does not already say where it is. The
- * validator's sentences are English (like the device's errors): in Korean the place is said in Korean and the
- * sentence is marked as English.
+ * An issue's sentence in the panel's language (`issueWords`), with "scene 3, servo 0: " before it when it does
+ * not already say where it is. A sentence said in its own language names the same places as the English one;
+ * an issue kept in English (no sentence for its code) is marked as English, with the place in the panel's
+ * language before it.
  */
 function issueText(t: MotionsTranslator, issue: RbmIssue): (string | TemplateResult)[] {
-  const english = t.locale !== "en" && !PANEL_ISSUE_CODES.includes(issue.code);
-  const message = english ? html`<span lang="en">${issue.message}</span>` : issue.message;
-  // In English, a place the sentence already names is not said twice.
-  const said = (what: string) => t.locale === "en" && new RegExp(`\\b${what}\\b`, "i").test(issue.message);
+  const words = issueWords(issue, t.locale);
+  const english = words.lang !== t.locale;
+  const message = english ? html`<span lang="en">${words.text}</span>` : words.text;
+  // A place the sentence already names is not said twice.
+  const said = (what: string) => !english && new RegExp(`\\b${what}\\b`, "i").test(issue.message);
   const scene = issue.scene === undefined || said(`scene ${issue.scene}`) ? undefined : String(issue.scene);
   const servo = issue.servo === undefined || said(`servo ${issue.servo}`) ? undefined : String(issue.servo);
   if (scene !== undefined && servo !== undefined) {

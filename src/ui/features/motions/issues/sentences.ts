@@ -1,0 +1,265 @@
+import type { Locale } from "../../../../i18n/locale.ts";
+import { translator } from "../../../../i18n/translate.ts";
+import type { RbmIssue } from "../../../../protocol/rbm-validate.ts";
+import { fromParser } from "./file-sentences.ts";
+import { type IssueTranslator, issueMessages } from "./messages.ts";
+import { IssueValues, servoName, subject } from "./subject.ts";
+
+/**
+ * The motion file checker's issues (protocol/rbm.ts, rbm-validate.ts, motion-image.ts) said from their code and
+ * `values`, for a language other than English. Every code those produce has its sentences here
+ * (tests/unit/rbm-issue-text.test.ts drives each one).
+ */
+
+/** What a value was in a motion built in code: "값이 없음", "지금 값: 12.5". */
+function got(t: IssueTranslator, r: IssueValues): string {
+  switch (r.text("got")) {
+    case "missing":
+      return t("motions.issue.got.missing");
+    case "list":
+      return t("motions.issue.got.list");
+    case "object":
+      return t("motions.issue.got.object");
+    case "value":
+      return t("motions.issue.got.value", { value: r.text("value") });
+    default:
+      r.complete = false;
+      return "";
+  }
+}
+
+function shape(t: IssueTranslator, r: IssueValues): string | undefined {
+  switch (r.text("kind")) {
+    case "motion":
+      return t("motions.issue.shape.motion");
+    case "list":
+      return t("motions.issue.shape.list", { path: r.text("path"), got: got(t, r) });
+    case "text":
+      return t("motions.issue.shape.text", { path: r.text("path"), got: got(t, r) });
+    case "form":
+      return t("motions.issue.shape.form", { path: r.text("path") });
+    default:
+      return undefined;
+  }
+}
+
+function notANumber(t: IssueTranslator, r: IssueValues): string | undefined {
+  switch (r.text("kind")) {
+    case "shape":
+      return t("motions.issue.shape.number", { path: r.text("path"), got: got(t, r) });
+    case "field":
+      return t("motions.issue.notANumber", {
+        index: r.ordinal("index"),
+        what: subject(t, r),
+        text: r.text("text"),
+      });
+    default:
+      return undefined;
+  }
+}
+
+function outOfRange(t: IssueTranslator, r: IssueValues): string | undefined {
+  const max = r.number("max");
+  switch (r.text("kind")) {
+    case "byte":
+      return t("motions.issue.outOfRange.byte", { what: subject(t, r), value: r.number("value"), max });
+    case "scenes":
+      return t("motions.issue.outOfRange.scenes", { scenes: r.number("scenes"), max });
+    case "timing":
+      return t("motions.issue.outOfRange.timing", { scene: r.ordinal("scene"), max });
+    default:
+      return undefined;
+  }
+}
+
+function servoCount(t: IssueTranslator, r: IssueValues): string | undefined {
+  switch (r.text("kind")) {
+    case "declared":
+      return t("motions.issue.servoCount.declared", {
+        declared: r.number("declared"),
+        listed: r.number("listed"),
+      });
+    case "range":
+      return t("motions.issue.servoCount.range", {
+        servos: r.number("servos"),
+        min: r.number("min"),
+        max: r.number("max"),
+      });
+    case "file":
+      return t("motions.issue.servoCount.file", {
+        servos: r.number("servos"),
+        min: r.number("min"),
+        max: r.number("max"),
+      });
+    case "scene":
+      return t("motions.issue.servoCount.scene", {
+        scene: r.ordinal("scene"),
+        records: r.number("records"),
+        servos: r.number("servos"),
+      });
+    default:
+      return undefined;
+  }
+}
+
+function servoId(t: IssueTranslator, r: IssueValues): string | undefined {
+  switch (r.text("kind")) {
+    case "range":
+      return t("motions.issue.servoId.range", {
+        record: r.ordinal("record"),
+        id: r.ordinal("id"),
+        max: r.number("max"),
+      });
+    case "twice":
+      return t("motions.issue.servoId.twice", {
+        id: r.ordinal("id"),
+        first: r.ordinal("first"),
+        second: r.ordinal("second"),
+      });
+    case "order":
+      return t("motions.issue.servoId.order", {
+        scene: r.ordinal("scene"),
+        record: r.ordinal("record"),
+        id: r.ordinal("servo"),
+        listed: r.ordinal("listed"),
+      });
+    default:
+      return undefined;
+  }
+}
+
+/** A header field that is not what Motionbuilder writes: "0번 필드(형식)", "10번 필드". */
+function headerConstant(t: IssueTranslator, r: IssueValues): string {
+  const field = r.text("field");
+  const named = field === "format" || field === "platform";
+  const what = named
+    ? t("motions.issue.numberedField", { index: r.ordinal("index"), field: subject(t, r) })
+    : subject(t, r);
+  return t("motions.issue.headerConstant", { what, value: r.number("value"), usual: r.number("usual") });
+}
+
+function timing(r: IssueValues) {
+  return {
+    scene: r.ordinal("scene"),
+    interval: r.number("interval"),
+    time: r.number("time"),
+    frames: r.number("frames"),
+  };
+}
+
+function fromRules(t: IssueTranslator, code: string, r: IssueValues): string | undefined {
+  switch (code) {
+    case "rbm-shape":
+      return shape(t, r);
+    case "rbm-not-a-number":
+      return notANumber(t, r);
+    case "rbm-out-of-range":
+      return outOfRange(t, r);
+    case "rbm-position":
+      return t("motions.issue.position", {
+        what: subject(t, r),
+        value: r.number("value"),
+        max: r.number("max"),
+      });
+    case "rbm-text":
+      return t("motions.issue.text", { what: subject(t, r) });
+    case "rbm-servo-count":
+      return servoCount(t, r);
+    case "rbm-scene-count":
+      return t("motions.issue.sceneCount", { declared: r.number("declared"), listed: r.number("listed") });
+    case "rbm-servo-id":
+      return servoId(t, r);
+    case "rbm-scene-index":
+      return t("motions.issue.sceneIndex", {
+        scene: r.ordinal("scene"),
+        index: r.ordinal("index"),
+        last: r.ordinal("last"),
+      });
+    case "rbm-frames":
+      return t("motions.issue.frames", {
+        scene: r.ordinal("scene"),
+        frames: r.number("frames"),
+        min: r.number("min"),
+      });
+    case "rbm-frame-interval-short":
+      return t("motions.issue.frameIntervalShort", { ...timing(r), min: r.number("min") });
+    case "rbm-frame-interval-long":
+      return t("motions.issue.frameIntervalLong", { ...timing(r), max: r.number("max") });
+    case "rbm-torque":
+    case "rbm-port": {
+      const params = {
+        scene: r.ordinal("scene"),
+        servo: servoName(t, r.number("servo")),
+        value: r.number("value"),
+        max: r.number("max"),
+      };
+      return code === "rbm-torque" ? t("motions.issue.torque", params) : t("motions.issue.port", params);
+    }
+    case "rbm-image-range":
+      return t("motions.issue.imageRange", {
+        what: subject(t, r),
+        value: r.value("value"),
+        max: r.number("max"),
+      });
+    default:
+      return fromWarnings(t, code, r);
+  }
+}
+
+function fromWarnings(t: IssueTranslator, code: string, r: IssueValues): string | undefined {
+  switch (code) {
+    case "rbm-serial-format":
+      return t("motions.issue.serialFormat", { serial: r.text("serial") });
+    case "rbm-serial-mismatch":
+      return t("motions.issue.serialMismatch", { serial: r.text("serial"), connected: r.text("connected") });
+    case "rbm-header-constant":
+      return headerConstant(t, r);
+    case "rbm-huno-servo-count":
+      return t("motions.issue.hunoServoCount", { servos: r.number("servos"), huno: r.number("huno") });
+    case "rbm-many-frames":
+      return t("motions.issue.manyFrames", {
+        scene: r.ordinal("scene"),
+        frames: r.number("frames"),
+        max: r.number("max"),
+      });
+    case "rbm-long-scene":
+      return t("motions.issue.longScene", {
+        scene: r.ordinal("scene"),
+        time: r.number("time"),
+        max: r.number("max"),
+      });
+    case "rbm-unsafe-position": {
+      const place = {
+        scene: r.ordinal("scene"),
+        servo: servoName(t, r.number("servo")),
+        position: r.number("position"),
+        min: r.number("min"),
+        max: r.number("max"),
+      };
+      return r.has("other")
+        ? t("motions.issue.unsafePositions", { ...place, other: r.number("other") })
+        : t("motions.issue.unsafePosition", place);
+    }
+    case "rbm-scene-jump":
+      return t("motions.issue.sceneJump", {
+        scene: r.ordinal("scene"),
+        servo: servoName(t, r.number("servo")),
+        start: r.number("start"),
+        previous: r.ordinal("previous"),
+        end: r.number("end"),
+      });
+    default:
+      return fromParser(t, code, r);
+  }
+}
+
+/**
+ * An issue's sentence in `locale` from its code and values, or undefined when there is none (a code this does
+ * not know, or values missing): then the English `issue.message` is shown, marked as English.
+ */
+export function issueSentence(issue: RbmIssue, locale: Locale): string | undefined {
+  if (issue.values === undefined) return undefined;
+  const r = new IssueValues(issue.values);
+  const text = fromRules(translator(issueMessages, locale), issue.code, r);
+  return r.complete ? text : undefined;
+}

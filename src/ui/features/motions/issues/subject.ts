@@ -1,0 +1,126 @@
+import type { KeysWithoutParams } from "../../../../i18n/catalogue.ts";
+import type { RbmIssueValues } from "../../../../protocol/rbm-validate.ts";
+import { HUNO_JOINT_NAMES } from "../../../../protocol/servo-limits.ts";
+import { jointName } from "../../zeros/joints/joint-name.ts";
+import type { IssueTranslator, issueMessages } from "./messages.ts";
+
+/**
+ * Reads an issue's `values` for its sentence, and remembers whether one the sentence needs was missing (or of
+ * the wrong type): such a sentence is not said, the English one is (`issueSentence`).
+ */
+export class IssueValues {
+  complete = true;
+  constructor(private readonly values: RbmIssueValues) {}
+
+  has(key: string): boolean {
+    return this.values[key] !== undefined;
+  }
+
+  /** A quantity (frames, a position, a time): the translator formats it for the language ("10,000"). */
+  number(key: string): number {
+    const v = this.values[key];
+    if (typeof v === "number") return v;
+    this.complete = false;
+    return 0;
+  }
+
+  /** A number that names something (scene 3, servo record 12, field 7): written as it is, never grouped. */
+  ordinal(key: string): string {
+    return String(this.number(key));
+  }
+
+  /** A text (a serial number, a file's field as it reads, a kind), as it is. */
+  text(key: string): string {
+    const v = this.values[key];
+    if (typeof v === "string") return v;
+    this.complete = false;
+    return "";
+  }
+
+  /** A value that is a number when it is one (a value that does not fit the image may be "1.5" or "NaN"). */
+  value(key: string): number | string {
+    const v = this.values[key];
+    if (v !== undefined) return v;
+    this.complete = false;
+    return "";
+  }
+}
+
+type Key = KeysWithoutParams<typeof issueMessages>;
+
+/** The fields by their name in `RbmMotion` (protocol/rbm.ts), or a length field's ("nameLength"). */
+const FIELDS: Readonly<Record<string, Key>> = {
+  format: "motions.issue.field.format",
+  serialNumber: "motions.issue.field.serialNumber",
+  serialNumberLength: "motions.issue.field.serialNumberLength",
+  text1: "motions.issue.field.text1",
+  text2: "motions.issue.field.text2",
+  motionIndex: "motions.issue.field.motionIndex",
+  platform: "motions.issue.field.platform",
+  sceneCount: "motions.issue.field.sceneCount",
+  servoCount: "motions.issue.field.servoCount",
+  unknown10: "motions.issue.field.unknown10",
+  unknown12: "motions.issue.field.unknown12",
+  imageSize: "motions.issue.field.imageSize",
+  index: "motions.issue.field.index",
+  name: "motions.issue.field.name",
+  nameLength: "motions.issue.field.nameLength",
+  frames: "motions.issue.field.frames",
+  timeMs: "motions.issue.field.timeMs",
+  id: "motions.issue.field.id",
+  p: "motions.issue.field.p",
+  d: "motions.issue.field.d",
+  i: "motions.issue.field.i",
+  portEnable: "motions.issue.field.portEnable",
+  zero: "motions.issue.field.zero",
+  reserved: "motions.issue.field.reserved",
+  start: "motions.issue.field.start",
+  end: "motions.issue.field.end",
+  torque: "motions.issue.field.torque",
+  port: "motions.issue.field.port",
+};
+
+/** The motion's own name (no scene given): "the motion name", not a scene's "name". */
+const MOTION_FIELDS: Readonly<Record<string, Key>> = {
+  name: "motions.issue.field.motionName",
+  nameLength: "motions.issue.field.motionNameLength",
+};
+
+/** The field named by `values.field`, in words: "P gain" / "P 게인". */
+export function fieldName(t: IssueTranslator, r: IssueValues): string {
+  const field = r.text("field");
+  const key = (r.has("scene") ? undefined : MOTION_FIELDS[field]) ?? FIELDS[field];
+  if (key === undefined) {
+    r.complete = false;
+    return "";
+  }
+  return t(key);
+}
+
+/** A servo by id, with its HUNO joint when it has one: "서보 2번(오른쪽 무릎)", "서보 20번". */
+export function servoName(t: IssueTranslator, id: number): string {
+  return HUNO_JOINT_NAMES[id] === undefined
+    ? t("motions.issue.servo", { id: String(id) })
+    : t("motions.issue.servoJoint", { id: String(id), joint: jointName(id, t.locale) });
+}
+
+/**
+ * The field an issue is about, with whose it is (`values.scene`, `servo`, `record`): "장면 2에서 서보 3번(오른쪽
+ * 발목 피치)의 시작 위치", "서보 레코드 4번의 P 게인", "모션 번호".
+ */
+export function subject(t: IssueTranslator, r: IssueValues): string {
+  const field = fieldName(t, r);
+  const scene = r.has("scene") ? r.ordinal("scene") : undefined;
+  const servo = r.has("servo") ? servoName(t, r.number("servo")) : undefined;
+  const record = r.has("record") ? r.ordinal("record") : undefined;
+  if (scene !== undefined && servo !== undefined) {
+    return t("motions.issue.ofSceneServo", { scene, servo, field });
+  }
+  if (scene !== undefined && record !== undefined) {
+    return t("motions.issue.ofSceneRecord", { scene, record, field });
+  }
+  if (scene !== undefined) return t("motions.issue.ofScene", { scene, field });
+  if (servo !== undefined) return t("motions.issue.ofServo", { servo, field });
+  if (record !== undefined) return t("motions.issue.ofRecord", { record, field });
+  return field;
+}
