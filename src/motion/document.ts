@@ -142,6 +142,7 @@ export function checkWhole(value: number, min: number, max: number, what: string
     throw new MotionError(
       "motion-value",
       `${what} must be a whole number from ${min} to ${max}, not ${String(value)}.`,
+      { rule: "whole", value: typeof value === "number" ? value : String(value), min, max },
     );
   }
 }
@@ -155,24 +156,27 @@ export const MOTION_NAME_MAX = 99;
  */
 export function checkName(name: string, what: string): void {
   if (typeof name !== "string" || name.length === 0) {
-    throw new MotionError("motion-name", `${what} cannot be empty.`);
+    throw new MotionError("motion-name", `${what} cannot be empty.`, { rule: "name-empty" });
   }
   if (name.length > MOTION_NAME_MAX) {
     throw new MotionError(
       "motion-name",
       `${what} has ${name.length} characters; a motion file holds at most ${MOTION_NAME_MAX}.`,
+      { rule: "name-length", length: name.length, max: MOTION_NAME_MAX },
     );
   }
   if (name.includes(":")) {
     throw new MotionError(
       "motion-name",
       `${what} cannot contain ":", which separates the fields of a motion file.`,
+      { rule: "name-colon" },
     );
   }
   if (!/^[\x20-\x7e]*$/.test(name)) {
     throw new MotionError(
       "motion-name",
       `${what} can use only plain letters, digits, spaces and punctuation (ASCII), as Motionbuilder does.`,
+      { rule: "name-ascii" },
     );
   }
 }

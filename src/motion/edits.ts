@@ -64,12 +64,14 @@ export function checkTiming(frames: number, timeMs: number, what: string): void 
     throw new MotionError(
       "motion-frame-interval",
       `${what}: ${frames} frames in ${timeMs} ms are ${(timeMs / frames).toFixed(1)} ms apart; the RBC needs at least ${RBC_MIN_FRAME_MS} ms, so use at most ${Math.max(1, Math.floor(timeMs / RBC_MIN_FRAME_MS))} frames or at least ${RBC_MIN_FRAME_MS * frames} ms.`,
+      { rule: "interval-short", frames, timeMs, intervalMs: timeMs / frames, min: RBC_MIN_FRAME_MS },
     );
   }
   if (timeMs > RBC_MAX_FRAME_MS * frames) {
     throw new MotionError(
       "motion-frame-interval",
       `${what}: ${frames} frames in ${timeMs} ms are ${(timeMs / frames).toFixed(1)} ms apart; the RBC allows at most ${RBC_MAX_FRAME_MS} ms, so use at least ${Math.ceil(timeMs / RBC_MAX_FRAME_MS)} frames.`,
+      { rule: "interval-long", frames, timeMs, intervalMs: timeMs / frames, max: RBC_MAX_FRAME_MS },
     );
   }
 }

@@ -112,13 +112,18 @@ export function framePosition(
 /** The scene's frame interval in whole ms, or a `motion-play` error when the RBC would refuse it. */
 export function frameIntervalMs(frames: number, timeMs: number, scene: number): number {
   if (!Number.isInteger(frames) || frames < 1) {
-    throw new MotionError("motion-play", `Scene ${scene} has ${frames} frames; a scene needs at least 1.`);
+    throw new MotionError("motion-play", `Scene ${scene} has ${frames} frames; a scene needs at least 1.`, {
+      rule: "play-frames",
+      scene,
+      frames,
+    });
   }
   const interval = Math.floor(timeMs / frames);
   if (interval < RBC_MIN_FRAME_MS) {
     throw new MotionError(
       "motion-play",
       `Scene ${scene} has frames ${interval} ms apart (${timeMs} ms / ${frames} frames); the RBC needs at least ${RBC_MIN_FRAME_MS} ms (error 6). Use fewer frames.`,
+      { rule: "play-interval", scene, frames, timeMs, intervalMs: interval, min: RBC_MIN_FRAME_MS },
     );
   }
   return interval;

@@ -68,13 +68,14 @@ export function mirrorPose(doc: Motion, k: number, options: MirrorOptions = {}):
     throw new MotionError(
       "motion-mirror",
       `Mirroring knows the joints of a HUNO (platform 1); this motion is for platform ${doc.platform}.`,
+      { rule: "mirror-platform", platform: doc.platform },
     );
   }
   const mode = options.mode ?? "swap";
   const side = options.side ?? "end";
   const indexOf = new Map(doc.servos.map((s, i) => [s.id, i]));
   const positions = new Map<number, number>();
-  const outside: string[] = [];
+  const outside: { id: number; position: number }[] = [];
   for (const [right, left] of HUNO_MIRROR_PAIRS) {
     const ri = indexOf.get(right);
     const li = indexOf.get(left);
@@ -92,15 +93,15 @@ export function mirrorPose(doc: Motion, k: number, options: MirrorOptions = {}):
       const rec = scene.servos[from]!;
       const p = side === "end" ? rec.end : rec.start;
       const value = mirrorPosition(p, doc.servos[from]!.zero, doc.servos[to]!.zero);
-      if (value < 0 || value > RBM_MAX_POSITION)
-        outside.push(`servo ${doc.servos[to]!.id} would go to ${value}`);
+      if (value < 0 || value > RBM_MAX_POSITION) outside.push({ id: doc.servos[to]!.id, position: value });
       positions.set(to, value);
     }
   }
   if (outside.length > 0) {
     throw new MotionError(
       "motion-mirror",
-      `Scene ${k} cannot be mirrored: ${outside.join(", ")}, outside the positions 0-254.`,
+      `Scene ${k} cannot be mirrored: ${outside.map((o) => `servo ${o.id} would go to ${o.position}`).join(", ")}, outside the positions 0-254.`,
+      { rule: "mirror-outside", scene: k, positions: outside },
     );
   }
   return applyPositions(doc, k, positions, { side, detach: options.detach ?? false });

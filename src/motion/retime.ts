@@ -61,12 +61,14 @@ export function retime(doc: Motion, factor: number, range: SceneRange = {}): Mot
       throw new MotionError(
         "motion-retime",
         `Scene ${k} would last ${timeMs} ms; a scene lasts at least ${RBC_MIN_FRAME_MS} ms (one frame), so this motion cannot be made that fast.`,
+        { rule: "scene-short", scene: k, timeMs, min: RBC_MIN_FRAME_MS },
       );
     }
     if (timeMs > MAX_U16) {
       throw new MotionError(
         "motion-retime",
         `Scene ${k} would last ${timeMs.toLocaleString("en-US")} ms; a scene lasts at most 65,535 ms.`,
+        { rule: "scene-long", scene: k, timeMs, max: MAX_U16 },
       );
     }
     const frames = framesFor(scene.frames, timeMs);
@@ -94,6 +96,7 @@ export function setDuration(doc: Motion, totalMs: number, range: SceneRange = {}
     throw new MotionError(
       "motion-retime",
       `A duration must be a whole number of ms above 0, not ${String(totalMs)}.`,
+      { rule: "duration", value: typeof totalMs === "number" ? totalMs : String(totalMs) },
     );
   }
   const current = rangeDurationMs(doc, range);
@@ -101,6 +104,7 @@ export function setDuration(doc: Motion, totalMs: number, range: SceneRange = {}
     throw new MotionError(
       "motion-retime",
       "These scenes last 0 ms, so they cannot be stretched to a duration.",
+      { rule: "zero-duration" },
     );
   }
   return retime(doc, totalMs / current, range);

@@ -1,13 +1,18 @@
 import { readFileSync } from "node:fs";
 import { afterEach, beforeEach, describe, expect, it, vi } from "vitest";
+import { translator } from "../../src/i18n/translate.ts";
 import {
   addScene,
   type Motion,
   MotionError,
+  mirrorPose,
   newMotion,
   openMotion,
+  retime,
   saveMotion,
+  setMotionName,
   setPosition,
+  setTiming,
 } from "../../src/motion/index.ts";
 import { Autosaver } from "../../src/ui/features/editor/autosave.ts";
 import { findLatestDraft, readDraftDocument } from "../../src/ui/features/editor/draft-actions.ts";
@@ -25,11 +30,16 @@ import {
   storagePendingStore,
 } from "../../src/ui/features/editor/drafts.ts";
 import { motionFileName } from "../../src/ui/features/editor/file-name.ts";
+import { editorMessages } from "../../src/ui/features/editor/messages.ts";
+import { playFailureText, playQuestion, playResultNotice } from "../../src/ui/features/editor/play-model.ts";
+import { refusalText, TypedValueError } from "../../src/ui/features/editor/refusal-text.ts";
 import { formatSavedAt } from "../../src/ui/features/editor/saved-at.ts";
 import { isTextEntry, shortcutOf } from "../../src/ui/features/editor/shortcuts.ts";
 import {
   applyEdit,
+  EDITOR_TABS,
   type EditorState,
+  editorTabAfterKey,
   initialEditor,
   isDetached,
   redoEdit,
@@ -38,6 +48,12 @@ import {
   startDocument,
   undoEdit,
 } from "../../src/ui/features/editor/state.ts";
+import {
+  holdNotice,
+  limbsText,
+  limpNotice,
+  readNotice,
+} from "../../src/ui/features/editor/teach-in-model.ts";
 
 const WAVE = readFileSync(new URL("../../examples/wave.rbm", import.meta.url), "latin1");
 
@@ -448,5 +464,175 @@ describe("editor state", () => {
     expect(s.problems).toEqual({});
     expect(s.history?.undoCount).toBe(0);
     expect(saveMotion(s.history!.present)).toBe(WAVE);
+  });
+});
+
+describe("the tab list's keys", () => {
+  it("lists the tabs in order: Pose, Scene, Tools, Teach-in, Play, Check", () => {
+    expect(EDITOR_TABS.map((t) => t.id)).toEqual(["pose", "scene", "tools", "teach", "play", "check"]);
+    const en = translator(editorMessages, "en");
+    const ko = translator(editorMessages, "ko");
+    expect(EDITOR_TABS.map((t) => en(t.key))).toEqual([
+      "Pose",
+      "Scene",
+      "Tools",
+      "Teach-in",
+      "Play",
+      "Check",
+    ]);
+    expect(EDITOR_TABS.map((t) => ko(t.key))).toEqual(["자세", "장면", "도구", "티칭", "재생", "검사"]);
+  });
+
+  it("moves to the next and previous tab with the arrows, wrapping at either end", () => {
+    expect(editorTabAfterKey("pose", "ArrowRight")).toBe("scene");
+    expect(editorTabAfterKey("teach", "ArrowRight")).toBe("play");
+    expect(editorTabAfterKey("check", "ArrowRight")).toBe("pose");
+    expect(editorTabAfterKey("scene", "ArrowLeft")).toBe("pose");
+    expect(editorTabAfterKey("pose", "ArrowLeft")).toBe("check");
+  });
+
+  it("goes to the first tab with Home and the last with End", () => {
+    expect(editorTabAfterKey("play", "Home")).toBe("pose");
+    expect(editorTabAfterKey("pose", "Home")).toBe("pose");
+    expect(editorTabAfterKey("scene", "End")).toBe("check");
+    expect(editorTabAfterKey("check", "End")).toBe("check");
+  });
+
+  it("leaves every other key alone (the page keeps it: Tab, Enter, up and down, letters)", () => {
+    for (const key of ["ArrowUp", "ArrowDown", "Enter", " ", "Tab", "Escape", "a", "PageDown"]) {
+      expect(editorTabAfterKey("tools", key)).toBeUndefined();
+    }
+  });
+});
+
+describe("the editor in Korean", () => {
+  const ko = translator(editorMessages, "ko");
+  const en = translator(editorMessages, "en");
+  const refused = (change: () => unknown): MotionError => {
+    try {
+      change();
+    } catch (e) {
+      if (e instanceof MotionError) return e;
+      throw e;
+    }
+    throw new Error("expected a MotionError");
+  };
+
+  it("says a refused value from the core's rule and values, and keeps the core's sentence in English", () => {
+    const value = refused(() => setPosition(newMotion(), 0, 2, 300));
+    const what = ko("editor.what.end", { joint: "오른쪽 무릎", id: "2" });
+    expect(refusalText(value, ko, what)).toBe(
+      "오른쪽 무릎(서보 2)의 끝 위치에는 0에서 254 사이의 정수만 쓸 수 있어요. 입력한 값: 300.",
+    );
+    expect(refusalText(value, en, "The end position of Right knee (servo 2)")).toBe(
+      "Scene 0: the end position of servo 2 must be a whole number from 0 to 254, not 300.",
+    );
+    const name = refused(() => setMotionName(newMotion(), "인사"));
+    expect(refusalText(name, ko, ko("editor.what.motionName"))).toBe(
+      "모션 이름에는 영문 글자, 숫자, 공백, 문장 부호(ASCII)만 쓸 수 있어요. Motionbuilder와 같아요.",
+    );
+    expect(
+      refusalText(
+        refused(() => setMotionName(newMotion(), "a:b")),
+        ko,
+        "모션 이름",
+      ),
+    ).toBe('모션 이름에는 ":"을 쓸 수 없어요. 모션 파일에서 칸을 나누는 기호예요.');
+  });
+
+  it("says frames too close or too far apart with the numbers that would fix them", () => {
+    const close = refused(() => setTiming(newMotion(), 0, { frames: 10, timeMs: 100 }));
+    expect(refusalText(close, ko)).toBe(
+      "프레임 10개를 100ms에 재생하면 프레임 사이가 10.0ms예요. RBC는 20ms 이상이 필요해요. 프레임을 5개 이하로 하거나 시간을 200ms 이상으로 해 주세요.",
+    );
+    const far = refused(() => setTiming(newMotion(), 0, { frames: 1, timeMs: 10_000 }));
+    expect(refusalText(far, ko)).toBe(
+      "프레임 1개를 10,000ms에 재생하면 프레임 사이가 10,000.0ms예요. RBC는 4,550ms까지만 허용해요. 프레임을 3개 이상으로 해 주세요.",
+    );
+  });
+
+  it("says a retime or a mirror the core refuses, naming the scene and the servos", () => {
+    const fast = refused(() => retime(newMotion(), 0.001));
+    expect(refusalText(fast, ko)).toBe(
+      "그러면 장면 0의 시간이 1ms가 돼요. 장면은 적어도 20ms(프레임 1개)는 걸리므로 모션을 그만큼 빠르게 할 수 없어요.",
+    );
+    const doc = setPosition(newMotion(), 0, 10, 254);
+    const mirror = refused(() => mirrorPose(doc, 0, { mode: "right-to-left" }));
+    expect(mirror.facts.positions?.length).toBeGreaterThan(0);
+    expect(refusalText(mirror, ko)).toMatch(
+      /^장면 0은\(는\) 좌우 대칭할 수 없어요\. 서보 13 → -?\d+: 위치 0-254를 벗어나요\.$/,
+    );
+  });
+
+  it("keeps what the editor itself refused as it was worded, and falls back to the code without values", () => {
+    const typed = new TypedValueError("motion-value", ko("editor.refusal.factor", { text: "빠르게" }));
+    expect(refusalText(typed, ko)).toBe(
+      '시간 배수는 0보다 큰 수여야 해요 (2 = 절반 속도, 0.5 = 두 배 속도). 입력한 값: "빠르게".',
+    );
+    expect(refusalText(new MotionError("motion-last-scene", "A motion needs at least one scene…"), ko)).toBe(
+      "모션에는 장면이 하나 이상 있어야 해서 하나뿐인 장면은 지울 수 없어요.",
+    );
+  });
+
+  it("puts a refusal next to its field in the words it is given", () => {
+    const s = startDocument(initialEditor(), newMotion(), "d-1");
+    const out = applyEdit(s, (d) => setPosition(d, 0, 2, 300), "오른쪽 무릎 설정", {
+      field: "end:2",
+      text: "300",
+      word: (e) => refusalText(e, ko, "오른쪽 무릎(서보 2)의 끝 위치"),
+    });
+    expect(out.state.problems["end:2"]).toEqual({
+      text: "300",
+      message: "오른쪽 무릎(서보 2)의 끝 위치에는 0에서 254 사이의 정수만 쓸 수 있어요. 입력한 값: 300.",
+    });
+  });
+
+  it("writes a draft's time with a Korean date on another day, and a broken draft's reason in Korean", () => {
+    const now = new Date(2026, 10, 21, 15, 30).getTime();
+    expect(formatSavedAt(new Date(2026, 10, 21, 9, 5).getTime(), now, "ko")).toBe("09:05");
+    expect(formatSavedAt(new Date(2026, 10, 20, 23, 59).getTime(), now, "ko")).toBe("11월 20일 23:59");
+    const later = readDraft("d-1", { ...record("d-1", 5), version: 2 }, "ko");
+    expect(later.ok ? "" : later.problem).toBe(
+      "더 새로운 패널이 저장했어요 (임시 저장본 형식 2). 이 패널은 형식 1만 읽을 수 있어요.",
+    );
+    const noText = readDraft("d-1", { ...record("d-1", 5), rbm: undefined }, "ko");
+    expect(noText.ok ? "" : noText.problem).toBe(
+      "이 패널이 저장한 임시 저장본이 아니에요 (rbm): 저장된 값의 형식이 맞지 않아요.",
+    );
+  });
+
+  it("says what teach-in's servos confirmed in Korean", () => {
+    expect(limbsText(["left-arm", "right-leg"], "ko")).toBe("오른쪽 다리, 왼쪽 팔");
+    expect(limbsText(["left-arm", "right-leg", "left-leg", "right-arm"], "ko")).toBe("모든 서보");
+    expect(limpNotice([10, 11, 12], [13], false, "ko").text).toBe(
+      "서보 10–12의 힘이 빠졌어요 (확인함). 손으로 자세를 잡아 주세요. 서보 13에서 응답이 없어서 아직 힘이 들어가 있을 수 있어요. 케이블을 확인해 주세요.",
+    );
+    const reading = { pose: new Map([[0, 120]]), converted: [0], notInMotion: [] };
+    expect(readNotice(2, reading, [], true, "ko").text).toBe(
+      "서보 0의 위치를 장면 2의 끝 자세로 읽어 넣었어요 (실행 취소 한 번). 서보 0의 경우 로봇의 영점이 모션의 영점과 달라요. 그 위치를 모션의 영점에 맞게 바꿔서, 재생하면 읽은 자리로 가요.",
+    );
+    expect(holdNotice([{ id: 4, read: 30, held: 41 }], [], false, "ko").text).toBe(
+      "서보 4을(를) 자세를 잡은 자리에 고정했어요 (토크 켜짐, 확인함). 서보 4은(는) 안전 범위 밖인 30에 있어서 41에 고정했어요.",
+    );
+  });
+
+  it("asks before tethered play and says what the robot confirmed, in Korean", () => {
+    expect(playQuestion(1, 3, 2500, "ko")).toBe(
+      "로봇이 장면 1–3을(를) 따라 움직여요 (2.5초). 로봇을 잡거나 혼자 설 수 있는지 확인해 주세요.",
+    );
+    expect(playResultNotice({ outcome: "finished", framesSent: 42, durationMs: 1500 }, 1, 1, "ko").text).toBe(
+      "장면 1을(를) 재생했어요 (프레임 42개, 1.5초). 서보는 마지막 프레임 자세를 유지해요.",
+    );
+    expect(
+      playResultNotice(
+        { outcome: "stopped", framesSent: 5, durationMs: 0, lastFrame: { scene: -1, frame: 3 } },
+        0,
+        2,
+        "ko",
+      ).text,
+    ).toBe("첫 자세로 가는 동작(3단계)에서 멈췄어요. 서보는 그 자세를 유지해요.");
+    expect(playFailureText("unknown", { scene: 2, frame: 4 }, true, "ko")).toBe(
+      "장면 2, 프레임 4 다음에 로봇에서 재생하지 못했어요. 로봇이 마지막 프레임을 받았는지 알 수 없어요. 로봇을 잡아 주세요.",
+    );
   });
 });

@@ -1,9 +1,9 @@
+import { translator } from "../../../i18n/translate.ts";
 import {
   addScene,
   deleteScene,
   duplicateScene,
   type Motion,
-  MotionError,
   moveScene,
   type SceneSide,
   setMotionName,
@@ -16,10 +16,12 @@ import {
 } from "../../../motion/index.ts";
 import type { AppContext } from "../../context.ts";
 import { focusSoon } from "../../focus.ts";
-import { jointName } from "../zeros/editor.ts";
+import { jointName } from "../zeros/joints/joint-name.ts";
 import { editorController } from "./controller.ts";
 import { scheduleAutosave } from "./draft-actions.ts";
 import type { EditorHost } from "./host.ts";
+import { type EditorTranslator, editorMessages } from "./messages.ts";
+import { refusalText, TypedValueError } from "./refusal-text.ts";
 import {
   applyEdit,
   docOf,
@@ -34,16 +36,32 @@ import {
   undoEdit,
 } from "./state.ts";
 
-/** The editor's edits of the document: each one undo step, autosaved; a refusal shows next to its control. */
+/**
+ * The editor's edits of the document: each one undo step, autosaved; a refusal shows next to its control, in
+ * the panel's language (refusal-text.ts). Undo labels and notices are made in the language of the moment.
+ */
 
-/** Applies an edit of the document; returns true when it changed (and is being autosaved). */
+/** The editor's words in the panel's language of the moment (for actions, which make sentences). */
+export function editorWords(ctx: AppContext): EditorTranslator {
+  return translator(editorMessages, ctx.store.get().locale);
+}
+
+/**
+ * Applies an edit of the document; returns true when it changed (and is being autosaved). `what` names what
+ * is being set, in the panel's language (a refusal in Korean says it).
+ */
 export function edit(
   ctx: AppContext,
   change: (doc: Motion) => Motion,
   label: string,
-  request: EditRequest,
+  request: EditRequest & { what?: string },
 ): boolean {
-  const out = applyEdit(editorOf(ctx.store.get()), change, label, request);
+  const t = editorWords(ctx);
+  const { what, ...rest } = request;
+  const out = applyEdit(editorOf(ctx.store.get()), change, label, {
+    ...rest,
+    word: (e) => refusalText(e, t, what),
+  });
   patchEditor(ctx.store, out.state);
   if (out.changed) scheduleAutosave(ctx);
   return out.changed;
@@ -60,18 +78,21 @@ export function editorHost(ctx: AppContext, doc: Motion, scene: number): EditorH
   };
 }
 
-/** A whole number typed into a field, or a `MotionError` that says what to type. */
-export function whole(text: string, what: string, range: string): number {
-  const t = text.trim();
-  if (!/^-?\d+$/.test(t)) {
-    throw new MotionError(
+/**
+ * A whole number typed into a field, or a `MotionError` that says what to type (in the language of `t`; `what`
+ * and `range` are made with it too).
+ */
+export function whole(text: string, what: string, range: string, t: EditorTranslator): number {
+  const typed = text.trim();
+  if (!/^-?\d+$/.test(typed)) {
+    throw new TypedValueError(
       "motion-value",
-      t === ""
-        ? `${what}: enter a whole number ${range}.`
-        : `${what} must be a whole number ${range}; "${t}" is not.`,
+      typed === ""
+        ? t("editor.refusal.enterWhole", { what, range })
+        : t("editor.refusal.notWhole", { what, range, text: typed }),
     );
   }
-  return Number(t);
+  return Number(typed);
 }
 
 export function selectedScene(ctx: AppContext): { k: number; doc: Motion } | undefined {
@@ -80,35 +101,49 @@ export function selectedScene(ctx: AppContext): { k: number; doc: Motion } | und
   return doc ? { k: s.scene, doc } : undefined;
 }
 
-const who = (id: number) => `${jointName(id)} (servo ${id})`;
+/** "The end position of Right knee (servo 2)", in the language of `t`. */
+function positionWhat(t: EditorTranslator, id: number, side: SceneSide): string {
+  const who = { joint: jointName(id, t.locale), id: String(id) };
+  return side === "start" ? t("editor.what.start", who) : t("editor.what.end", who);
+}
+
+/** "set Right knee (end of scene 3)": the undo step of a position edit. */
+function positionLabel(t: EditorTranslator, id: number, side: SceneSide, k: number): string {
+  const what = { joint: jointName(id, t.locale), scene: String(k) };
+  return side === "start" ? t("editor.label.setStart", what) : t("editor.label.setEnd", what);
+}
 
 /** A position typed into the start or end field of a servo of the selected scene. */
 export function typePosition(ctx: AppContext, id: number, side: SceneSide, text: string): void {
+  const t = editorWords(ctx);
   const s = editorOf(ctx.store.get());
   const k = s.scene;
   const detach = isDetached(s, k, side);
+  const what = positionWhat(t, id, side);
   edit(
     ctx,
-    (doc) =>
-      setPosition(doc, k, id, whole(text, `The ${side} position of ${who(id)}`, "from 0 to 254"), {
-        side,
-        detach,
-      }),
-    `set ${jointName(id)} (${side} of scene ${k})`,
-    { field: `${side}:${id}`, text },
+    (doc) => setPosition(doc, k, id, whole(text, what, t("editor.range.position"), t), { side, detach }),
+    positionLabel(t, id, side, k),
+    { field: `${side}:${id}`, text, what },
   );
 }
 
 /** The end-pose slider of a servo moved: one undo step per drag. */
 export function slidePosition(ctx: AppContext, id: number, value: number): void {
+  const t = editorWords(ctx);
   const s = editorOf(ctx.store.get());
   const k = s.scene;
   const drag = editorController(ctx).drag;
   edit(
     ctx,
     (doc) => setPosition(doc, k, id, value, { side: "end", detach: isDetached(s, k, "end") }),
-    `set ${jointName(id)} (end of scene ${k})`,
-    { field: `end:${id}`, text: String(value), mergeKey: `slide:${k}:${id}:${drag}` },
+    positionLabel(t, id, "end", k),
+    {
+      field: `end:${id}`,
+      text: String(value),
+      mergeKey: `slide:${k}:${id}:${drag}`,
+      what: positionWhat(t, id, "end"),
+    },
   );
 }
 
@@ -118,45 +153,66 @@ export function endSlide(ctx: AppContext): void {
 }
 
 export function chooseTorque(ctx: AppContext, id: number, torque: number): void {
+  const t = editorWords(ctx);
   const k = editorOf(ctx.store.get()).scene;
-  edit(ctx, (doc) => setTorque(doc, k, id, torque), `set torque of ${jointName(id)} in scene ${k}`, {
+  const joint = jointName(id, t.locale);
+  edit(ctx, (doc) => setTorque(doc, k, id, torque), t("editor.label.torque", { joint, scene: String(k) }), {
     field: `torque:${id}`,
+    what: t("editor.what.torque", { joint }),
   });
 }
 
 export function choosePort(ctx: AppContext, id: number, port: number): void {
+  const t = editorWords(ctx);
   const k = editorOf(ctx.store.get()).scene;
-  edit(ctx, (doc) => setPort(doc, k, id, port), `set port of ${jointName(id)} in scene ${k}`, {
+  const joint = jointName(id, t.locale);
+  edit(ctx, (doc) => setPort(doc, k, id, port), t("editor.label.port", { joint, scene: String(k) }), {
     field: `port:${id}`,
+    what: t("editor.what.port", { joint }),
   });
 }
 
 export function chooseSceneTorque(ctx: AppContext, torque: number): void {
+  const t = editorWords(ctx);
   const k = editorOf(ctx.store.get()).scene;
-  edit(ctx, (doc) => setSceneTorque(doc, k, torque), `set torque of scene ${k}`, { field: "scene-torque" });
+  const scene = String(k);
+  edit(ctx, (doc) => setSceneTorque(doc, k, torque), t("editor.label.sceneTorque", { scene }), {
+    field: "scene-torque",
+    what: t("editor.what.sceneTorque", { scene }),
+  });
 }
 
 export function typeTiming(ctx: AppContext, which: "frames" | "timeMs", text: string): void {
+  const t = editorWords(ctx);
   const k = editorOf(ctx.store.get()).scene;
-  const what = which === "frames" ? `Scene ${k}: the number of frames` : `Scene ${k}: the time in ms`;
+  const scene = String(k);
+  const what = which === "frames" ? t("editor.what.frames", { scene }) : t("editor.what.time", { scene });
+  const range = which === "frames" ? t("editor.range.frames") : t("editor.range.time");
   edit(
     ctx,
-    (doc) =>
-      setTiming(doc, k, {
-        [which]: whole(text, what, which === "frames" ? "from 1 to 65,535" : "of ms, at least 20 per frame"),
-      }),
-    which === "frames" ? `set frames of scene ${k}` : `set time of scene ${k}`,
-    { field: which, text },
+    (doc) => setTiming(doc, k, { [which]: whole(text, what, range, t) }),
+    which === "frames" ? t("editor.label.frames", { scene }) : t("editor.label.time", { scene }),
+    { field: which, text, what },
   );
 }
 
 export function typeSceneName(ctx: AppContext, name: string): void {
+  const t = editorWords(ctx);
   const k = editorOf(ctx.store.get()).scene;
-  edit(ctx, (doc) => setSceneName(doc, k, name), `rename scene ${k}`, { field: "scene-name", text: name });
+  edit(ctx, (doc) => setSceneName(doc, k, name), t("editor.label.renameScene", { scene: String(k) }), {
+    field: "scene-name",
+    text: name,
+    what: t("editor.what.sceneName"),
+  });
 }
 
 export function typeMotionName(ctx: AppContext, name: string): void {
-  edit(ctx, (doc) => setMotionName(doc, name), "rename the motion", { field: "motion-name", text: name });
+  const t = editorWords(ctx);
+  edit(ctx, (doc) => setMotionName(doc, name), t("editor.label.renameMotion"), {
+    field: "motion-name",
+    text: name,
+    what: t("editor.what.motionName"),
+  });
 }
 
 export function chooseScene(ctx: AppContext, k: number, focus = false): void {
@@ -186,29 +242,38 @@ export function choosePoseColumns(ctx: AppContext, columns: PoseColumns): void {
 
 function structural(ctx: AppContext, change: (doc: Motion) => Motion, label: string, select: number): void {
   if (edit(ctx, change, label, { field: "structure", structural: true, select: () => select })) {
-    patchEditor(ctx.store, { notice: { tone: "ok", text: `Done: ${label}.` } });
+    patchEditor(ctx.store, {
+      notice: { tone: "ok", text: editorWords(ctx)("editor.done", { what: label }) },
+    });
   }
 }
 
 export function addSceneAfter(ctx: AppContext): void {
   const at = selectedScene(ctx);
-  if (at) structural(ctx, (doc) => addScene(doc, at.k + 1), `add scene ${at.k + 1}`, at.k + 1);
+  const t = editorWords(ctx);
+  if (at) {
+    const label = t("editor.label.addScene", { scene: String(at.k + 1) });
+    structural(ctx, (doc) => addScene(doc, at.k + 1), label, at.k + 1);
+  }
 }
 
 export function duplicateSelected(ctx: AppContext): void {
   const at = selectedScene(ctx);
-  if (at) structural(ctx, (doc) => duplicateScene(doc, at.k), `duplicate scene ${at.k}`, at.k + 1);
+  const t = editorWords(ctx);
+  if (at) {
+    const label = t("editor.label.duplicate", { scene: String(at.k) });
+    structural(ctx, (doc) => duplicateScene(doc, at.k), label, at.k + 1);
+  }
 }
 
 export function deleteSelected(ctx: AppContext): void {
   const at = selectedScene(ctx);
-  if (at)
-    structural(
-      ctx,
-      (doc) => deleteScene(doc, at.k),
-      `delete scene ${at.k} (${at.doc.scenes[at.k]?.name})`,
-      at.k,
-    );
+  const t = editorWords(ctx);
+  if (at) {
+    const name = String(at.doc.scenes[at.k]?.name);
+    const label = t("editor.label.delete", { scene: String(at.k), name });
+    structural(ctx, (doc) => deleteScene(doc, at.k), label, at.k);
+  }
 }
 
 export function moveSelected(ctx: AppContext, by: -1 | 1): void {
@@ -216,7 +281,10 @@ export function moveSelected(ctx: AppContext, by: -1 | 1): void {
   if (!at) return;
   const to = at.k + by;
   if (to < 0 || to >= at.doc.scenes.length) return;
-  structural(ctx, (doc) => moveScene(doc, at.k, to), `move scene ${at.k} ${by < 0 ? "up" : "down"}`, to);
+  const t = editorWords(ctx);
+  const scene = String(at.k);
+  const label = by < 0 ? t("editor.label.moveUp", { scene }) : t("editor.label.moveDown", { scene });
+  structural(ctx, (doc) => moveScene(doc, at.k, to), label, to);
 }
 
 // ---- Undo and redo ---------------------------------------------------------------------------------------
@@ -225,7 +293,8 @@ export function undoLast(ctx: AppContext): void {
   const before = editorOf(ctx.store.get()).history?.label;
   const out = undoEdit(editorOf(ctx.store.get()));
   if (!out.changed) return;
-  patchEditor(ctx.store, { ...out.state, notice: { tone: "info", text: `Undone: ${before}.` } });
+  const text = editorWords(ctx)("editor.undone", { what: String(before) });
+  patchEditor(ctx.store, { ...out.state, notice: { tone: "info", text } });
   scheduleAutosave(ctx);
 }
 
@@ -234,7 +303,10 @@ export function redoNext(ctx: AppContext): void {
   if (!out.changed) return;
   patchEditor(ctx.store, {
     ...out.state,
-    notice: { tone: "info", text: `Redone: ${out.state.history?.label}.` },
+    notice: {
+      tone: "info",
+      text: editorWords(ctx)("editor.redone", { what: String(out.state.history?.label) }),
+    },
   });
   scheduleAutosave(ctx);
 }

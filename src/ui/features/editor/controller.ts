@@ -1,3 +1,4 @@
+import { translator } from "../../../i18n/translate.ts";
 import { type Motion, motionIssues } from "../../../motion/index.ts";
 import type { RbmValidation } from "../../../protocol/rbm-validate.ts";
 import type { AppContext } from "../../context.ts";
@@ -13,6 +14,7 @@ import {
   storagePendingStore,
   summarize,
 } from "./drafts.ts";
+import { editorMessages } from "./messages.ts";
 import { patchEditor } from "./state.ts";
 
 /**
@@ -21,7 +23,10 @@ import { patchEditor } from "./state.ts";
  * the documents shown (cached by document: documents are values), and the number of the slider drag under way.
  */
 export class EditorController implements Controller {
-  /** The drafts' storage: IndexedDB, or memory when it cannot be opened (`storageProblem` says why). */
+  /**
+   * The drafts' storage: IndexedDB, or memory when it cannot be opened (`storageProblem` is the browser's
+   * reason, a technical message the panel quotes).
+   */
   readonly storage: Promise<DraftStorage>;
   storageProblem: string | undefined;
   readonly autosaver: Autosaver;
@@ -41,7 +46,7 @@ export class EditorController implements Controller {
   ) {
     this.pending = pending;
     this.storage = storage.catch((e: unknown) => {
-      this.storageProblem = `Drafts cannot be kept in this browser (${e instanceof Error ? e.message : String(e)}): they last until the page is closed. Save your motion as a file.`;
+      this.storageProblem = e instanceof Error ? e.message : String(e);
       return memoryDraftStorage();
     });
     this.autosaver = new Autosaver(async (record) => (await this.storage).set(record.id, record), handlers);
@@ -110,7 +115,9 @@ export const EDITOR = controllerKey(
         })),
       onError: (e) =>
         patchEditor(ctx.store, {
-          saveProblem: `The draft could not be saved (${e instanceof Error ? e.message : String(e)}). Save your motion as a file to keep it.`,
+          saveProblem: translator(editorMessages, ctx.store.get().locale)("editor.draftSaveFailed", {
+            error: e instanceof Error ? e.message : String(e),
+          }),
         }),
     }),
 );

@@ -1,11 +1,12 @@
-import { newMotion, openMotion, saveMotion } from "../../../motion/index.ts";
+import { MotionError, newMotion, openMotion, saveMotion } from "../../../motion/index.ts";
 import type { AppContext } from "../../context.ts";
 import { downloadTextFile } from "../../download-file.ts";
-import { formatCount } from "../../format.ts";
-import { redoNext, undoLast } from "./actions.ts";
+import { errorMessage, technicalDetail } from "../../error-text.ts";
+import { editorWords, redoNext, undoLast } from "./actions.ts";
 import { editorController } from "./controller.ts";
 import { flushAutosave, robotZeros, scheduleAutosave, startEditor } from "./draft-actions.ts";
 import { motionFileName } from "./file-name.ts";
+import { refusalText } from "./refusal-text.ts";
 import { isTextEntry, shortcutOf } from "./shortcuts.ts";
 import { docOf, editorOf, patchEditor, startDocument } from "./state.ts";
 
@@ -49,15 +50,14 @@ export function openEditor(ctx: AppContext): void {
 
 /** A new motion from the HUNO template (basic posture), with the connected robot's zeros if they were read. */
 export async function newDocument(ctx: AppContext): Promise<void> {
+  const t = editorWords(ctx);
   await flushAutosave(ctx);
   const zeros = robotZeros(ctx);
   const kept = editorOf(ctx.store.get()).draftId !== undefined;
+  const made = zeros ? t("editor.doc.newRobotZeros") : t("editor.doc.newStandardZeros");
   patchEditor(ctx.store, (s) => ({
     ...startDocument(s, newMotion({ zeros }), undefined),
-    notice: {
-      tone: "ok",
-      text: `New motion from the template: one scene in the basic posture, with ${zeros ? "this robot's zeros" : "the standard zeros"}.${kept ? " The motion you had is kept in Drafts." : ""}`,
-    },
+    notice: { tone: "ok", text: kept ? `${made} ${t("editor.doc.kept")}` : made },
   }));
   scheduleAutosave(ctx);
 }
@@ -66,32 +66,34 @@ export async function newDocument(ctx: AppContext): Promise<void> {
 export async function openDocumentFile(ctx: AppContext, file: File | undefined): Promise<void> {
   patchEditor(ctx.store, { dragging: false });
   if (!file) return;
-  const refuse = (why: string) =>
+  const t = editorWords(ctx);
+  const refuse = (why: string, detail?: string) =>
     patchEditor(ctx.store, {
       notice: {
         tone: "danger",
-        text: `${file.name} was not opened: ${why} The motion in the editor did not change.`,
+        text: t("editor.doc.notOpened", { file: file.name, why }),
+        ...(detail === undefined ? {} : { detail }),
       },
     });
   if (file.size > MAX_RBM_BYTES) {
-    refuse(`it has ${formatCount(file.size)} bytes; a motion file is a few KB.`);
+    refuse(t("editor.doc.tooLarge", { size: file.size }));
     return;
   }
   let doc: ReturnType<typeof openMotion>;
   try {
     doc = openMotion(await file.text());
   } catch (e) {
-    refuse(message(e).replace(/([^.])$/, "$1."));
+    // The parser's sentence is English: in another language the panel says what it means, the sentence apart.
+    if (t.locale === "en") refuse(message(e).replace(/([^.])$/, "$1."));
+    else refuse(t("editor.doc.unreadable"), technicalDetail(e));
     return;
   }
   await flushAutosave(ctx);
   const kept = editorOf(ctx.store.get()).draftId !== undefined;
+  const opened = t("editor.doc.opened", { file: file.name, name: doc.name, count: doc.scenes.length });
   patchEditor(ctx.store, (s) => ({
     ...startDocument(s, doc, undefined),
-    notice: {
-      tone: "ok",
-      text: `Opened ${file.name}: ${doc.name}, ${doc.scenes.length} ${doc.scenes.length === 1 ? "scene" : "scenes"}.${kept ? " The motion you had is kept in Drafts." : ""}`,
-    },
+    notice: { tone: "ok", text: kept ? `${opened} ${t("editor.doc.kept")}` : opened },
   }));
   scheduleAutosave(ctx);
 }
@@ -100,11 +102,21 @@ export async function openDocumentFile(ctx: AppContext, file: File | undefined):
 export function saveDocument(ctx: AppContext): void {
   const doc = docOf(editorOf(ctx.store.get()));
   if (!doc) return;
+  const t = editorWords(ctx);
   let text: string;
   try {
     text = saveMotion(doc);
   } catch (e) {
-    patchEditor(ctx.store, { notice: { tone: "danger", text: `The motion cannot be saved: ${message(e)}` } });
+    if (t.locale === "en") {
+      patchEditor(ctx.store, {
+        notice: { tone: "danger", text: t("editor.doc.saveFailed", { why: message(e) }) },
+      });
+    } else {
+      const why = e instanceof MotionError ? refusalText(e, t) : errorMessage(e, t.locale);
+      patchEditor(ctx.store, {
+        notice: { tone: "danger", text: t("editor.doc.saveFailed", { why }), detail: technicalDetail(e) },
+      });
+    }
     return;
   }
   const fileName = motionFileName(doc.name);
@@ -112,7 +124,12 @@ export function saveDocument(ctx: AppContext): void {
   patchEditor(ctx.store, {
     notice: {
       tone: "ok",
-      text: `Saved ${doc.name} as ${fileName} (${doc.scenes.length} ${doc.scenes.length === 1 ? "scene" : "scenes"}, ${formatCount(text.length)} bytes).`,
+      text: t("editor.doc.saved", {
+        name: doc.name,
+        file: fileName,
+        count: doc.scenes.length,
+        bytes: text.length,
+      }),
     },
   });
 }

@@ -1,3 +1,5 @@
+import type { Locale } from "../../../i18n/locale.ts";
+import { translator } from "../../../i18n/translate.ts";
 import { type Motion, newMotion, openMotion, saveMotion } from "../../../motion/index.ts";
 import type { AppContext } from "../../context.ts";
 import { editorController } from "./controller.ts";
@@ -13,6 +15,7 @@ import {
   recoverPending,
 } from "./drafts.ts";
 import { liveOf } from "./live-state.ts";
+import { editorMessages } from "./messages.ts";
 import { formatSavedAt } from "./saved-at.ts";
 import { docOf, editorOf, patchEditor, startDocument } from "./state.ts";
 
@@ -55,18 +58,22 @@ export function flushAutosave(ctx: AppContext): Promise<void> {
   return editorController(ctx).autosaver.flush();
 }
 
-/** A stored draft as a document, or why it cannot be opened. */
+/** A stored draft as a document, or why it cannot be opened (in `locale`). */
 export async function readDraftDocument(
   storage: DraftStorage,
   id: string,
+  locale: Locale = "en",
 ): Promise<{ record: DraftRecord; doc: Motion } | { problem: string }> {
-  const read = await loadDraft(storage, id);
-  if (read === undefined) return { problem: "It is no longer stored (deleted in another tab?)." };
+  const t = translator(editorMessages, locale);
+  const read = await loadDraft(storage, id, locale);
+  if (read === undefined) return { problem: t("editor.draftProblem.missing") };
   if (!read.ok) return { problem: read.problem };
   try {
     return { record: read.record, doc: openMotion(read.record.rbm) };
   } catch (e) {
-    return { problem: `Its motion cannot be read: ${message(e)}` };
+    // The parser's sentence is English: in another language the panel says what it means.
+    const reason = locale === "en" ? message(e) : t("editor.draftProblem.unreadableReason");
+    return { problem: t("editor.draftProblem.unreadable", { reason }) };
   }
 }
 
@@ -79,13 +86,13 @@ export interface LatestDraft {
   broken: BrokenDraft[];
 }
 
-/** The newest draft whose motion opens; newer ones that do not are reported as broken and skipped. */
-export async function findLatestDraft(storage: DraftStorage): Promise<LatestDraft> {
-  const listing = await listDrafts(storage);
+/** The newest draft whose motion opens; newer ones that do not are reported (in `locale`) and skipped. */
+export async function findLatestDraft(storage: DraftStorage, locale: Locale = "en"): Promise<LatestDraft> {
+  const listing = await listDrafts(storage, locale);
   const broken = [...listing.broken];
   let restored: LatestDraft["restored"];
   for (const draft of listing.drafts) {
-    const read = await readDraftDocument(storage, draft.id);
+    const read = await readDraftDocument(storage, draft.id, locale);
     if ("doc" in read) {
       restored = read;
       break;
@@ -96,11 +103,9 @@ export async function findLatestDraft(storage: DraftStorage): Promise<LatestDraf
   return restored ? { restored, drafts, broken } : { drafts, broken };
 }
 
-function brokenNotice(broken: readonly BrokenDraft[]): string | undefined {
+function brokenNotice(broken: readonly BrokenDraft[], locale: Locale): string | undefined {
   if (broken.length === 0) return undefined;
-  return broken.length === 1
-    ? "1 stored draft could not be read and was skipped (see below)."
-    : `${broken.length} stored drafts could not be read and were skipped (see below).`;
+  return translator(editorMessages, locale)("editor.drafts.skippedNotice", { count: broken.length });
 }
 
 /**
@@ -111,19 +116,25 @@ export async function startEditor(ctx: AppContext): Promise<void> {
   const first = editorOf(ctx.store.get());
   if (first.history || first.starting) return;
   patchEditor(ctx.store, { starting: true });
+  const { locale } = ctx.store.get();
+  const t = translator(editorMessages, locale);
   const controller = editorController(ctx);
   let latest: LatestDraft = { drafts: [], broken: [] };
   let listProblem: string | undefined;
   try {
     const storage = await controller.storage;
-    const lost = await recoverPending(storage, controller.pending);
-    latest = await findLatestDraft(storage);
+    const lost = await recoverPending(storage, controller.pending, locale);
+    latest = await findLatestDraft(storage, locale);
     if (lost) latest = { ...latest, broken: [...latest.broken, lost] };
   } catch (e) {
-    listProblem = `The drafts could not be read (${message(e)}).`;
+    listProblem = t("editor.drafts.readFailed", { error: message(e) });
   }
   const { restored, drafts, broken } = latest;
-  const problem = listProblem ?? controller.storageProblem ?? brokenNotice(broken);
+  const storageProblem =
+    controller.storageProblem === undefined
+      ? undefined
+      : t("editor.drafts.storageProblem", { error: controller.storageProblem });
+  const problem = listProblem ?? storageProblem ?? brokenNotice(broken, locale);
   patchEditor(ctx.store, (s) => {
     if (s.history) return { starting: false };
     const common = {
@@ -142,7 +153,10 @@ export async function startEditor(ctx: AppContext): Promise<void> {
       savedAt: record.savedAt,
       notice: {
         tone: "info",
-        text: `Draft restored: ${doc.name}, saved ${formatSavedAt(record.savedAt, Date.now())}.`,
+        text: t("editor.drafts.restored", {
+          name: doc.name,
+          time: formatSavedAt(record.savedAt, Date.now(), locale),
+        }),
       },
     };
   });

@@ -1,11 +1,13 @@
-import { type Motion, saveMotion, setMotionName } from "../../../motion/index.ts";
+import { type Motion, MotionError, saveMotion, setMotionName } from "../../../motion/index.ts";
 import type { AppContext } from "../../context.ts";
 import { downloadTextFile } from "../../download-file.ts";
 import { focusSoon } from "../../focus.ts";
+import { editorWords } from "./actions.ts";
 import { editorController } from "./controller.ts";
 import { flushAutosave, readDraftDocument, scheduleAutosave } from "./draft-actions.ts";
 import { draftRecord, listDrafts, summarize } from "./drafts.ts";
 import { motionFileName } from "./file-name.ts";
+import { refusalText } from "./refusal-text.ts";
 import { applyEdit, editorOf, patchEditor, startDocument } from "./state.ts";
 
 /** The Drafts list: open, rename, export and delete drafts (asked once). */
@@ -15,28 +17,30 @@ function message(e: unknown): string {
 }
 
 async function readDocument(ctx: AppContext, id: string) {
-  return readDraftDocument(await editorController(ctx).storage, id);
+  return readDraftDocument(await editorController(ctx).storage, id, ctx.store.get().locale);
 }
 
 /** Reads the Drafts list again. */
 export async function refreshDrafts(ctx: AppContext): Promise<void> {
+  const t = editorWords(ctx);
   try {
-    const { drafts, broken } = await listDrafts(await editorController(ctx).storage);
+    const { drafts, broken } = await listDrafts(await editorController(ctx).storage, t.locale);
     patchEditor(ctx.store, { drafts, brokenDrafts: broken });
   } catch (e) {
     patchEditor(ctx.store, {
-      draftsNotice: { tone: "danger", text: `The drafts could not be read (${message(e)}).` },
+      draftsNotice: { tone: "danger", text: t("editor.drafts.readFailed", { error: message(e) }) },
     });
   }
 }
 
 /** Opens a stored draft in the editor (the motion open now is saved first). */
 export async function openDraft(ctx: AppContext, id: string): Promise<void> {
+  const t = editorWords(ctx);
   await flushAutosave(ctx);
   const read = await readDocument(ctx, id);
   if (!("doc" in read)) {
     patchEditor(ctx.store, {
-      draftsNotice: { tone: "danger", text: `That draft cannot be opened. ${read.problem}` },
+      draftsNotice: { tone: "danger", text: t("editor.drafts.openFailed", { problem: read.problem }) },
     });
     return;
   }
@@ -46,7 +50,10 @@ export async function openDraft(ctx: AppContext, id: string): Promise<void> {
     confirmDelete: undefined,
     renaming: undefined,
     draftsNotice: undefined,
-    notice: { tone: "info", text: `Opened the draft ${read.doc.name} (${read.doc.scenes.length} scenes).` },
+    notice: {
+      tone: "info",
+      text: t("editor.drafts.opened", { name: read.doc.name, scenes: read.doc.scenes.length }),
+    },
   }));
   focusSoon("editor-title");
 }
@@ -69,10 +76,16 @@ function withoutRename(problems: Record<string, { text: string; message: string 
  * autosaved); another draft is rewritten in place, keeping its time.
  */
 export async function renameDraft(ctx: AppContext, id: string, name: string): Promise<void> {
+  const t = editorWords(ctx);
   const field = `rename:${id}`;
+  const what = t("editor.what.motionName");
   const s = editorOf(ctx.store.get());
   if (s.draftId === id && s.history) {
-    const out = applyEdit(s, (doc) => setMotionName(doc, name), "rename the motion", { field, text: name });
+    const out = applyEdit(s, (doc) => setMotionName(doc, name), t("editor.label.renameMotion"), {
+      field,
+      text: name,
+      word: (e) => refusalText(e, t, what),
+    });
     patchEditor(ctx.store, out.error ? out.state : { ...out.state, renaming: undefined });
     if (out.changed) scheduleAutosave(ctx);
     return;
@@ -80,7 +93,7 @@ export async function renameDraft(ctx: AppContext, id: string, name: string): Pr
   const read = await readDocument(ctx, id);
   if (!("doc" in read)) {
     patchEditor(ctx.store, {
-      draftsNotice: { tone: "danger", text: `That draft cannot be renamed. ${read.problem}` },
+      draftsNotice: { tone: "danger", text: t("editor.drafts.renameFailed", { problem: read.problem }) },
     });
     return;
   }
@@ -88,8 +101,9 @@ export async function renameDraft(ctx: AppContext, id: string, name: string): Pr
   try {
     doc = setMotionName(read.doc, name);
   } catch (e) {
+    const why = e instanceof MotionError ? refusalText(e, t, what) : message(e);
     patchEditor(ctx.store, (x) => ({
-      problems: { ...x.problems, [field]: { text: name, message: message(e) } },
+      problems: { ...x.problems, [field]: { text: name, message: why } },
     }));
     return;
   }
@@ -98,7 +112,7 @@ export async function renameDraft(ctx: AppContext, id: string, name: string): Pr
     await (await editorController(ctx).storage).set(id, record);
   } catch (e) {
     patchEditor(ctx.store, {
-      draftsNotice: { tone: "danger", text: `The draft was not renamed: ${message(e)}` },
+      draftsNotice: { tone: "danger", text: t("editor.drafts.notRenamed", { error: message(e) }) },
     });
     return;
   }
@@ -106,24 +120,27 @@ export async function renameDraft(ctx: AppContext, id: string, name: string): Pr
     renaming: undefined,
     problems: withoutRename(x.problems),
     drafts: x.drafts?.map((d) => (d.id === id ? summarize(record) : d)),
-    draftsNotice: { tone: "ok", text: `Renamed the draft to ${doc.name}.` },
+    draftsNotice: { tone: "ok", text: t("editor.drafts.renamed", { name: doc.name }) },
   }));
 }
 
 /** Downloads a draft as its `.rbm` file. */
 export async function exportDraft(ctx: AppContext, id: string): Promise<void> {
+  const t = editorWords(ctx);
   const s = editorOf(ctx.store.get());
   if (s.draftId === id) await flushAutosave(ctx);
   const read = await readDocument(ctx, id);
   if (!("doc" in read)) {
     patchEditor(ctx.store, {
-      draftsNotice: { tone: "danger", text: `That draft cannot be exported. ${read.problem}` },
+      draftsNotice: { tone: "danger", text: t("editor.drafts.exportFailed", { problem: read.problem }) },
     });
     return;
   }
   const fileName = motionFileName(read.doc.name);
   downloadTextFile(fileName, read.record.rbm);
-  patchEditor(ctx.store, { draftsNotice: { tone: "ok", text: `Exported ${read.doc.name} as ${fileName}.` } });
+  patchEditor(ctx.store, {
+    draftsNotice: { tone: "ok", text: t("editor.drafts.exported", { name: read.doc.name, file: fileName }) },
+  });
 }
 
 export function askToDelete(ctx: AppContext, id: string): void {
@@ -137,6 +154,7 @@ export function cancelDelete(ctx: AppContext): void {
 
 /** Deletes a stored draft (after the one question). The motion open in the editor stays open. */
 export async function deleteDraft(ctx: AppContext, id: string): Promise<void> {
+  const t = editorWords(ctx);
   const controller = editorController(ctx);
   const s = editorOf(ctx.store.get());
   const current = s.draftId === id;
@@ -147,7 +165,7 @@ export async function deleteDraft(ctx: AppContext, id: string): Promise<void> {
   } catch (e) {
     patchEditor(ctx.store, {
       confirmDelete: undefined,
-      draftsNotice: { tone: "danger", text: `Not deleted: ${message(e)}` },
+      draftsNotice: { tone: "danger", text: t("editor.drafts.notDeleted", { error: message(e) }) },
     });
     return;
   }
@@ -159,9 +177,7 @@ export async function deleteDraft(ctx: AppContext, id: string): Promise<void> {
     brokenDrafts: x.brokenDrafts?.filter((b) => b.key !== id),
     draftsNotice: {
       tone: "ok",
-      text: current
-        ? `Deleted the draft ${name}. The motion stays open in the editor; a change saves it as a new draft.`
-        : `Deleted the draft ${name}.`,
+      text: current ? t("editor.drafts.deletedOpen", { name }) : t("editor.drafts.deleted", { name }),
     },
   }));
 }

@@ -1,5 +1,8 @@
+import type { Locale } from "../../../i18n/locale.ts";
+import { translator } from "../../../i18n/translate.ts";
 import { RBM_MAX_TEXT_LENGTH } from "../../../protocol/rbm.ts";
 import { z } from "../../../protocol/zod.ts";
+import { editorMessages } from "./messages.ts";
 
 /**
  * Drafts: every motion being edited is kept on this computer (IndexedDB), so a reload, a crash or a closed tab
@@ -9,7 +12,8 @@ import { z } from "../../../protocol/zod.ts";
  * Motionbuilder's file text (`saveMotion`), so a draft is exactly the file it exports. Records are checked with
  * zod when read back: a record that does not match (a later version, a damaged database) is reported and
  * skipped, never trusted. Storage sits behind `DraftStorage`, so tests use a Map and the panel uses idb-keyval,
- * loaded only when the editor opens (it stays out of the first page load).
+ * loaded only when the editor opens (it stays out of the first page load). Why a record is not usable is said in
+ * the language given when it is read (English unless given).
  */
 
 export const DRAFT_VERSION = 1;
@@ -77,28 +81,27 @@ export async function idbDraftStorage(): Promise<DraftStorage> {
 /** A record read back, or why it cannot be used. */
 export type DraftRead = { ok: true; record: DraftRecord } | { ok: false; key: string; problem: string };
 
-/** Checks one stored value. Never throws. */
-export function readDraft(key: string, value: unknown): DraftRead {
+/** Checks one stored value; what is wrong is said in `locale`. Never throws. */
+export function readDraft(key: string, value: unknown, locale: Locale = "en"): DraftRead {
+  const t = translator(editorMessages, locale);
   const version = (value as { version?: unknown } | null)?.version;
   if (typeof version === "number" && version !== DRAFT_VERSION) {
     return {
       ok: false,
       key,
-      problem: `It was saved by a newer panel (draft format ${version}); this panel reads format ${DRAFT_VERSION}.`,
+      problem: t("editor.draftProblem.newer", { version: String(version), supported: String(DRAFT_VERSION) }),
     };
   }
   const parsed = draftSchema.safeParse(value);
   if (!parsed.success) {
     const first = parsed.error.issues[0];
     const where = first && first.path.length > 0 ? ` (${first.path.join(".")})` : "";
-    return {
-      ok: false,
-      key,
-      problem: `It is not a draft this panel wrote${where}: ${first?.message ?? "unknown shape"}.`,
-    };
+    // The schema's own words are English: in another language the panel says what they mean.
+    const reason = locale === "en" && first ? first.message : t("editor.draftProblem.shapeReason");
+    return { ok: false, key, problem: t("editor.draftProblem.shape", { where, reason }) };
   }
   if (parsed.data.id !== key) {
-    return { ok: false, key, problem: `It is stored under "${key}" but names itself "${parsed.data.id}".` };
+    return { ok: false, key, problem: t("editor.draftProblem.key", { key, id: parsed.data.id }) };
   }
   return { ok: true, record: parsed.data as DraftRecord };
 }
@@ -134,12 +137,12 @@ export function summarize(record: DraftRecord): DraftSummary {
   return { id: record.id, name: record.name, savedAt: record.savedAt, scenes: sceneCountOf(record.rbm) };
 }
 
-/** Every draft in the storage, checked; broken records are listed apart, never thrown. */
-export async function listDrafts(storage: DraftStorage): Promise<DraftListing> {
+/** Every draft in the storage, checked; broken records are listed apart (why, in `locale`), never thrown. */
+export async function listDrafts(storage: DraftStorage, locale: Locale = "en"): Promise<DraftListing> {
   const drafts: DraftSummary[] = [];
   const broken: BrokenDraft[] = [];
   for (const [key, value] of await storage.entries()) {
-    const read = readDraft(key, value);
+    const read = readDraft(key, value, locale);
     if (read.ok) drafts.push(summarize(read.record));
     else broken.push({ key: read.key, problem: read.problem });
   }
@@ -148,9 +151,13 @@ export async function listDrafts(storage: DraftStorage): Promise<DraftListing> {
 }
 
 /** One draft, checked; undefined when there is none under `id`. */
-export async function loadDraft(storage: DraftStorage, id: string): Promise<DraftRead | undefined> {
+export async function loadDraft(
+  storage: DraftStorage,
+  id: string,
+  locale: Locale = "en",
+): Promise<DraftRead | undefined> {
   const value = await storage.get(id);
-  return value === undefined ? undefined : readDraft(id, value);
+  return value === undefined ? undefined : readDraft(id, value, locale);
 }
 
 /** A new draft id: the time and 8 random hex digits ("d-lz3k9q-1a2b3c4d"). */
@@ -203,11 +210,12 @@ export function storagePendingStore(
 export async function recoverPending(
   storage: DraftStorage,
   pending: PendingDraftStore,
+  locale: Locale = "en",
 ): Promise<BrokenDraft | undefined> {
   const value = pending.take();
   if (value === undefined) return undefined;
   const id = (value as { id?: unknown } | null)?.id;
-  const read = readDraft(typeof id === "string" ? id : PENDING_DRAFT_KEY, value);
+  const read = readDraft(typeof id === "string" ? id : PENDING_DRAFT_KEY, value, locale);
   if (!read.ok) return { key: PENDING_DRAFT_KEY, problem: read.problem };
   const stored = await storage.get(read.record.id);
   const current = stored === undefined ? undefined : readDraft(read.record.id, stored);

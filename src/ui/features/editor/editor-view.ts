@@ -3,6 +3,7 @@ import "../../styles/editor.css";
 import "../../styles/editor-pose.css";
 import "../../styles/editor-layout.css";
 import { html, type TemplateResult } from "lit-html";
+import { translator } from "../../../i18n/translate.ts";
 import type { Motion } from "../../../motion/index.ts";
 import { type Robot3dOptions, robot3d } from "../../robot3d/robot-view.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
@@ -10,6 +11,7 @@ import { editorController } from "./controller.ts";
 import { openEditor } from "./document-actions.ts";
 import { draftsCard } from "./drafts-view.ts";
 import { liveOf, livePoseOf } from "./live-state.ts";
+import { type EditorTranslator, editorMessages } from "./messages.ts";
 import { sceneList } from "./scene-list-view.ts";
 import { docOf, type EditorTab, editorOf } from "./state.ts";
 import { editorTabs } from "./tabs-view.ts";
@@ -43,60 +45,61 @@ function byId(entries: readonly { id: number }[], value: (i: number) => number):
  * zeros) or the selected scene's end pose (measured from the motion file's zeros).
  */
 export function shownPose(ctx: ViewContext, doc: Motion, k: number): Robot3dOptions {
+  const t = translator(editorMessages, ctx.state.locale);
   const live = livePoseOf(ctx.state);
   if (live) {
     return {
       pose: live,
       zeros: liveOf(ctx.state).teach.robotZeros ?? ctx.state.zeros.stored,
-      label: "3D view of the robot's positions as it moves; the pose table lists the scene in numbers",
+      label: t("editor.robotLiveLabel"),
     };
   }
   const scene = doc.scenes[k];
   return {
     pose: scene ? byId(scene.servos, (i) => scene.servos[i]!.end) : [],
     zeros: byId(doc.servos, (i) => doc.servos[i]!.zero),
-    label: `3D view of the end pose of scene ${k}; the pose table lists it in numbers`,
+    label: t("editor.robotSceneLabel", { scene: String(k) }),
   };
 }
 
-function header(): TemplateResult {
+function header(t: EditorTranslator): TemplateResult {
   return html`
     <header class="view-head editor-head">
-      <h1 id="editor-title" tabindex="-1">Motion editor</h1>
-      <p class="muted">
-        Make a motion scene by scene and save it as a Motionbuilder file. Editing needs no robot; with one connected,
-        pose it by hand (teach-in) and play the motion on it.
-      </p>
+      <h1 id="editor-title" tabindex="-1">${t("editor.title")}</h1>
+      <p class="muted">${t("editor.intro")}</p>
     </header>
   `;
 }
 
 /** What the 3D view shows, in words under it (its canvas is named the same way). */
-function robotCaption(ctx: ViewContext, k: number): string {
-  return livePoseOf(ctx.state) ? "The robot, live" : `End pose of scene ${k}`;
+function robotCaption(ctx: ViewContext, t: EditorTranslator, k: number): string {
+  return livePoseOf(ctx.state)
+    ? t("editor.robotCaptionLive")
+    : t("editor.robotCaptionScene", { scene: String(k) });
 }
 
 function render(ctx: ViewContext): TemplateResult {
+  const t = translator(editorMessages, ctx.state.locale);
   const s = editorOf(ctx.state);
   const doc = docOf(s);
   if (!doc) {
     // The first showing restores the last draft; the store changes, so this runs after the render.
     queueMicrotask(() => openEditor(ctx));
     return html`<div class="view-stack editor">
-      ${header()}
-      <p class="muted" aria-busy="true" data-testid="editor-starting">Opening the last draft…</p>
+      ${header(t)}
+      <p class="muted" aria-busy="true" data-testid="editor-starting">${t("editor.starting")}</p>
     </div>`;
   }
   const check = editorController(ctx).issuesOf(doc);
   const tab = s.tab ?? "pose";
   return html`
     <div class="view-stack editor" data-testid="editor">
-      ${header()} ${toolbar(ctx, s, doc)}
+      ${header(t)} ${toolbar(ctx, s, doc)}
       <div class="editor-grid ${ROBOT_TABS.includes(tab) ? "" : "editor-grid--robot-aside-only"}">
         ${sceneList(ctx, s, doc)} ${editorTabs(ctx, s, doc, check)}
         <figure class="editor-robot" data-testid="editor-robot">
           ${robot3d({ ...shownPose(ctx, doc, s.scene), testId: "editor-robot3d" })}
-          <figcaption class="muted small" aria-hidden="true">${robotCaption(ctx, s.scene)}</figcaption>
+          <figcaption class="muted small" aria-hidden="true">${robotCaption(ctx, t, s.scene)}</figcaption>
         </figure>
         ${draftsCard(ctx, s)}
       </div>

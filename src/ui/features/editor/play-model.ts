@@ -1,12 +1,17 @@
 /**
  * Tethered play's pure part: which scenes the panel plays, what it asks before the robot moves, how progress
- * reads, and the one sentence of what the robot confirmed at the end.
+ * reads, and the one sentence of what the robot confirmed at the end (in the language given; English unless
+ * given).
  */
+import type { Locale } from "../../../i18n/locale.ts";
+import { translator } from "../../../i18n/translate.ts";
+import { formatSeconds } from "../../../i18n/units.ts";
 import type { Motion } from "../../../motion/index.ts";
 import { frameIntervalMs } from "../../../motion/index.ts";
 import type { Notice } from "../../app-state.ts";
 import type { PlayChoice, PlayProgress } from "./live-state.ts";
 import { sceneNumber } from "./live-state.ts";
+import { editorMessages } from "./messages.ts";
 
 /** The scenes to play (positions in the motion, inclusive), each end kept inside the motion. */
 export function playRange(
@@ -43,19 +48,25 @@ export function playSpan(doc: Motion, from: number, to: number): { frames: numbe
   return { frames, durationMs };
 }
 
-/** "scene 2" or "scenes 1–3", numbered for people. */
-export function scenesText(from: number, to: number): string {
-  return from === to ? `scene ${sceneNumber(from)}` : `scenes ${sceneNumber(from)}–${sceneNumber(to)}`;
+/** "scene 2" or "scenes 1–3", numbered for people ("장면 2", "장면 1–3"). */
+export function scenesText(from: number, to: number, locale: Locale = "en"): string {
+  const t = translator(editorMessages, locale);
+  return from === to
+    ? t("editor.play.sceneOne", { scene: String(sceneNumber(from)) })
+    : t("editor.play.sceneMany", { from: String(sceneNumber(from)), to: String(sceneNumber(to)) });
 }
 
-/** Seconds with one decimal: "1.5 s". */
-export function secondsText(ms: number): string {
-  return `${(ms / 1000).toFixed(1)} s`;
+/** Seconds with one decimal: "1.5 s" ("1.5초"). */
+export function secondsText(ms: number, locale: Locale = "en"): string {
+  return formatSeconds(ms / 1000, locale, 1);
 }
 
 /** The one question before the robot moves. */
-export function playQuestion(from: number, to: number, durationMs: number): string {
-  return `The robot will move through ${scenesText(from, to)} (${secondsText(durationMs)}). Hold it or make sure it can stand.`;
+export function playQuestion(from: number, to: number, durationMs: number, locale: Locale = "en"): string {
+  return translator(editorMessages, locale)("editor.play.question", {
+    scenes: scenesText(from, to, locale),
+    time: secondsText(durationMs, locale),
+  });
 }
 
 /** Where play is, for the progress line: "Scene 2 of 3 (scene 2), frame 4 of 10". */
@@ -64,15 +75,21 @@ export function progressText(
   from: number,
   to: number,
   framesOf: (k: number) => number,
+  locale: Locale = "en",
 ): string {
-  if (!progress) return "Starting: entering servo control and reading where the servos are…";
-  if (progress.scene < 0) return `Moving to the first pose: step ${progress.frame}`;
+  const t = translator(editorMessages, locale);
+  if (!progress) return t("editor.play.progressStarting");
+  if (progress.scene < 0) return t("editor.play.progressFirstPose", { step: String(progress.frame) });
   const k = progress.scene - from + 1;
   const n = to - from + 1;
-  const frames = framesOf(progress.scene);
+  const where = {
+    scene: String(sceneNumber(progress.scene)),
+    frame: String(progress.frame),
+    frames: String(framesOf(progress.scene)),
+  };
   return n === 1
-    ? `Scene ${sceneNumber(progress.scene)}, frame ${progress.frame} of ${frames}`
-    : `Scene ${k} of ${n} (scene ${sceneNumber(progress.scene)}), frame ${progress.frame} of ${frames}`;
+    ? t("editor.play.progressOne", where)
+    : t("editor.play.progressMany", { ...where, k: String(k), n: String(n) });
 }
 
 /** What tethered play returned (the device layer's `TetheredPlayResult`, the fields the sentence needs). */
@@ -87,28 +104,40 @@ export interface PlayOutcome {
 }
 
 /** Where play got to: "scene 2, frame 4", "the move to the first pose (step 3)". */
-export function whereText(frame: { scene: number; frame: number }): string {
+export function whereText(frame: { scene: number; frame: number }, locale: Locale = "en"): string {
+  const t = translator(editorMessages, locale);
   return frame.scene < 0
-    ? `the move to the first pose (step ${frame.frame})`
-    : `scene ${sceneNumber(frame.scene)}, frame ${frame.frame}`;
+    ? t("editor.play.whereFirstPose", { step: String(frame.frame) })
+    : t("editor.play.whereScene", { scene: String(sceneNumber(frame.scene)), frame: String(frame.frame) });
 }
 
 /** The one sentence of what the robot did, no more certain than it confirmed. */
-export function playResultNotice(result: PlayOutcome, from: number, to: number): Notice {
+export function playResultNotice(
+  result: PlayOutcome,
+  from: number,
+  to: number,
+  locale: Locale = "en",
+): Notice {
+  const t = translator(editorMessages, locale);
   if (result.outcome === "finished") {
     const silent = result.readBack?.silent ?? [];
-    const text = `Played ${scenesText(from, to)} (${result.framesSent} frames, ${secondsText(result.durationMs)}); the servos hold the last frame.`;
+    const text = t("editor.play.played", {
+      scenes: scenesText(from, to, locale),
+      frames: String(result.framesSent),
+      time: secondsText(result.durationMs, locale),
+    });
+    const ids = { ids: silent.join(", ") };
     return silent.length === 0
       ? { tone: "ok", text }
       : {
           tone: "warning",
-          text: `${text} Servo ${silent.join(", ")} did not answer the read afterwards: check ${silent.length === 1 ? "its cable" : "their cables"}.`,
+          text: `${text} ${silent.length === 1 ? t("editor.play.silentOne", ids) : t("editor.play.silentMany", ids)}`,
         };
   }
   if (result.framesSent === 0 || !result.lastFrame) {
-    return { tone: "info", text: "Stopped before the first frame: nothing moved." };
+    return { tone: "info", text: t("editor.play.stoppedBefore") };
   }
-  return { tone: "info", text: `Stopped at ${whereText(result.lastFrame)}; the servos hold that pose.` };
+  return { tone: "info", text: t("editor.play.stoppedAt", { where: whereText(result.lastFrame, locale) }) };
 }
 
 /** What the servos hold after a failed play (the device layer's `TetheredPlayError.holds`). */
@@ -119,14 +148,20 @@ export function playFailureText(
   holds: PlayHolds,
   last: { scene: number; frame: number } | undefined,
   direct: boolean,
+  locale: Locale = "en",
 ): string {
-  const mode = direct ? "in servo control (direct mode)" : "in its normal mode";
+  const t = translator(editorMessages, locale);
   switch (holds) {
     case "nothing-sent":
-      return `Tethered play did not start: nothing moved; the robot is ${mode}.`;
-    case "last-frame":
-      return `Tethered play failed${last ? ` after ${whereText(last)}` : ""}: the robot is ${mode} and its servos hold the last frame sent.`;
+      return direct ? t("editor.play.notStartedDirect") : t("editor.play.notStartedNormal");
+    case "last-frame": {
+      if (!last) return direct ? t("editor.play.failedDirect") : t("editor.play.failedNormal");
+      const where = { where: whereText(last, locale) };
+      return direct ? t("editor.play.failedAfterDirect", where) : t("editor.play.failedAfterNormal", where);
+    }
     case "unknown":
-      return `Tethered play failed${last ? ` after ${whereText(last)}` : ""}: whether the robot got the last frame is not known. Hold it.`;
+      return last
+        ? t("editor.play.failedAfterUnknown", { where: whereText(last, locale) })
+        : t("editor.play.failedUnknown");
   }
 }

@@ -1,10 +1,14 @@
 import "../../styles/editor-live.css";
 import { html, nothing, type TemplateResult } from "lit-html";
 import { live } from "lit-html/directives/live.js";
+import { translator } from "../../../i18n/translate.ts";
+import { MotionError } from "../../../motion/index.ts";
+import { errorMessage } from "../../error-text.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
 import type { EditorHost } from "./host.ts";
 import { liveOf, type PlayChoice, type PlayRun, type PlayState, sceneNumber } from "./live-state.ts";
+import { type EditorTranslator, editorMessages } from "./messages.ts";
 import {
   askPlay,
   cancelPlay,
@@ -15,6 +19,7 @@ import {
   stopPlay,
 } from "./play.ts";
 import { playQuestion, playSpan, progressText, scenesText, secondsText } from "./play-model.ts";
+import { refusalText } from "./refusal-text.ts";
 import { escapeTo } from "./teach-in-view.ts";
 
 /**
@@ -42,12 +47,17 @@ function choiceRadio(
   </label>`;
 }
 
-function sceneInput(ctx: ViewContext, host: EditorHost, end: "from" | "to", value: number, off: boolean) {
+function sceneInput(
+  ctx: ViewContext,
+  t: EditorTranslator,
+  host: EditorHost,
+  end: "from" | "to",
+  value: number,
+  off: boolean,
+) {
   const count = host.doc.scenes.length;
   const shown = sceneNumber(Math.max(0, Math.min(count - 1, value)));
-  return html`<label class="inline-field">
-    ${end === "from" ? "from" : "to"}
-    <input
+  const input = html`<input
       type="number"
       class="num play-scene-input"
       data-testid=${`play-${end}`}
@@ -60,11 +70,20 @@ function sceneInput(ctx: ViewContext, host: EditorHost, end: "from" | "to", valu
         setPlayRange(ctx, end, Number((e.target as HTMLInputElement).value) - sceneNumber(0));
         setPlayChoice(ctx, "range");
       }}
-    />
-  </label>`;
+    />`;
+  // The word goes before the number in English ("from 1") and after it in Korean ("1부터").
+  const label =
+    end === "from" ? t.parts("editor.play.from", { input }) : t.parts("editor.play.to", { input });
+  return html`<label class="inline-field">${label}</label>`;
 }
 
-function confirmBlock(ctx: ViewContext, host: EditorHost, asked: NonNullable<PlayState["confirming"]>) {
+function confirmBlock(
+  ctx: ViewContext,
+  t: EditorTranslator,
+  host: EditorHost,
+  asked: NonNullable<PlayState["confirming"]>,
+) {
+  const scenes = scenesText(asked.from, asked.to, t.locale);
   return html`
     <div
       class="confirm confirm--warning"
@@ -74,39 +93,53 @@ function confirmBlock(ctx: ViewContext, host: EditorHost, asked: NonNullable<Pla
       data-testid="play-confirm"
       @keydown=${escapeTo(() => cancelPlay(ctx))}
     >
-      <p id="play-question"><strong>${playQuestion(asked.from, asked.to, asked.durationMs)}</strong></p>
+      <p id="play-question"><strong>${playQuestion(asked.from, asked.to, asked.durationMs, t.locale)}</strong></p>
       <p id="play-detail" class="small">
-        ${asked.frames} frames. If the servos are not where scene ${sceneNumber(asked.from)} starts, the robot first
-        moves there in 20 ms steps. Stop (Esc) holds the last frame; nothing goes limp.
+        ${t("editor.play.detail", { frames: String(asked.frames), scene: String(sceneNumber(asked.from)) })}
       </p>
       <div class="actions">
-        <button type="button" class="btn" id="cancel-play" @click=${() => cancelPlay(ctx)}>Cancel</button>
+        <button type="button" class="btn" id="cancel-play" @click=${() => cancelPlay(ctx)}>${t("editor.play.cancel")}</button>
         <button type="button" class="btn btn--primary" id="confirm-play" @click=${() => void confirmPlay(ctx, host)}>
-          Play ${scenesText(asked.from, asked.to)}
+          ${t("editor.play.confirm", { scenes })}
         </button>
       </div>
     </div>
   `;
 }
 
-function progressBlock(ctx: ViewContext, host: EditorHost, run: PlayRun): TemplateResult {
+function progressBlock(
+  ctx: ViewContext,
+  t: EditorTranslator,
+  host: EditorHost,
+  run: PlayRun,
+): TemplateResult {
   const p = run.progress;
   const framesOf = (k: number): number => host.doc.scenes[k]?.frames ?? 0;
+  const scenes = { scenes: scenesText(run.from, run.to, t.locale) };
   return html`
     <div class="progress-block" data-testid="play-progress">
       <p>
-        <strong>${run.stopping ? "Stopping" : "Playing"} ${scenesText(run.from, run.to)}</strong>
-        <span class="num muted" data-testid="play-where">${progressText(p, run.from, run.to, framesOf)}</span>
-        ${p ? html`<span class="num muted">${secondsText(p.elapsedMs)} of ${secondsText(p.durationMs)}</span>` : nothing}
+        <strong>${run.stopping ? t("editor.play.stopping", scenes) : t("editor.play.playing", scenes)}</strong>
+        <span class="num muted" data-testid="play-where">${progressText(p, run.from, run.to, framesOf, t.locale)}</span>
+        ${
+          p
+            ? html`<span class="num muted">
+                ${t("editor.play.elapsed", {
+                  elapsed: secondsText(p.elapsedMs, t.locale),
+                  total: secondsText(p.durationMs, t.locale),
+                })}
+              </span>`
+            : nothing
+        }
       </p>
       ${
         p
-          ? html`<progress max=${p.total} value=${p.index} aria-label="Tethered play"></progress>`
-          : html`<progress aria-label="Tethered play"></progress>`
+          ? html`<progress max=${p.total} value=${p.index} aria-label=${t("editor.play.progressLabel")}></progress>`
+          : html`<progress aria-label=${t("editor.play.progressLabel")}></progress>`
       }
       <div class="actions">
         <button type="button" class="btn btn--danger" data-testid="play-stop" ?disabled=${run.stopping === true} @click=${() => stopPlay(ctx)}>
-          Stop
+          ${t("editor.play.stop")}
         </button>
       </div>
     </div>
@@ -114,19 +147,30 @@ function progressBlock(ctx: ViewContext, host: EditorHost, run: PlayRun): Templa
 }
 
 /** The scenes the choice plays and their length, or why the RBC would refuse them. */
-function summary(ctx: ViewContext, host: EditorHost): TemplateResult {
+function summary(ctx: ViewContext, t: EditorTranslator, host: EditorHost): TemplateResult {
   const { from, to } = chosenRange(ctx, host);
   try {
     const { frames, durationMs } = playSpan(host.doc, from, to);
+    const span = { frames: String(frames), time: secondsText(durationMs, t.locale) };
     return html`<p class="muted small num" data-testid="play-summary">
-      ${scenesText(from, to)[0]!.toUpperCase()}${scenesText(from, to).slice(1)}: ${frames} frames, ${secondsText(durationMs)}.
+      ${
+        from === to
+          ? t("editor.play.summaryOne", { ...span, scene: String(sceneNumber(from)) })
+          : t("editor.play.summaryMany", {
+              ...span,
+              from: String(sceneNumber(from)),
+              to: String(sceneNumber(to)),
+            })
+      }
     </p>`;
   } catch (e) {
-    return html`<p class="small text-danger" data-testid="play-summary">${e instanceof Error ? e.message : String(e)}</p>`;
+    const why = e instanceof MotionError ? refusalText(e, t) : errorMessage(e, t.locale);
+    return html`<p class="small text-danger" data-testid="play-summary">${why}</p>`;
   }
 }
 
 export function playPanel(ctx: ViewContext, host: EditorHost): TemplateResult {
+  const t = translator(editorMessages, ctx.state.locale);
   const connected = ctx.state.connection.phase === "connected";
   const live_ = liveOf(ctx.state);
   const p = live_.play;
@@ -137,36 +181,36 @@ export function playPanel(ctx: ViewContext, host: EditorHost): TemplateResult {
   const count = host.doc.scenes.length;
   return html`
     <section class="card live-panel" aria-labelledby="play-title" data-testid="play-panel">
-      <h2 id="play-title" class="card-title">Play on the robot</h2>
+      <h2 id="play-title" class="card-title">${t("editor.play.title")}</h2>
       ${
         !connected
-          ? html`<p class="muted small" data-testid="play-hint">Connect a robot (or the demo robot) to play this motion on it, frame by frame.</p>`
+          ? html`<p class="muted small" data-testid="play-hint">${t("editor.play.hint")}</p>`
           : html`
             <fieldset class="play-choice" ?disabled=${off}>
-              <legend class="sr-only">What to play</legend>
-              ${choiceRadio(ctx, p, "scene", `Selected scene (${sceneNumber(host.scene)})`, off)}
+              <legend class="sr-only">${t("editor.play.what")}</legend>
+              ${choiceRadio(ctx, p, "scene", t("editor.play.selected", { scene: String(sceneNumber(host.scene)) }), off)}
               <span class="play-range">
-                ${choiceRadio(ctx, p, "range", "Scenes", off)}
-                ${sceneInput(ctx, host, "from", p.rangeFrom, off)} ${sceneInput(ctx, host, "to", p.rangeTo, off)}
+                ${choiceRadio(ctx, p, "range", t("editor.play.range"), off)}
+                ${sceneInput(ctx, t, host, "from", p.rangeFrom, off)} ${sceneInput(ctx, t, host, "to", p.rangeTo, off)}
               </span>
-              ${choiceRadio(ctx, p, "all", `Whole motion (${count} ${count === 1 ? "scene" : "scenes"})`, off)}
+              ${choiceRadio(ctx, p, "all", t("editor.play.whole", { count }), off)}
             </fieldset>
-            ${summary(ctx, host)}
+            ${summary(ctx, t, host)}
             ${
               p.confirming
-                ? confirmBlock(ctx, host, p.confirming)
+                ? confirmBlock(ctx, t, host, p.confirming)
                 : running
                   ? nothing
                   : html`<div class="actions">
                       <button type="button" class="btn btn--primary" id="play-button" ?disabled=${busy} @click=${() => askPlay(ctx, host)}>
-                        Play on robot…
+                        ${t("editor.play.ask")}
                       </button>
                     </div>`
             }
-            ${p.running ? progressBlock(ctx, host, p.running) : nothing}
+            ${p.running ? progressBlock(ctx, t, host, p.running) : nothing}
           `
       }
-      ${connected ? liveNotice(p.notice, "Play result") : nothing}
+      ${connected ? liveNotice(p.notice, t("editor.play.resultLabel"), t.locale) : nothing}
     </section>
   `;
 }

@@ -5,6 +5,7 @@
  */
 import { RbcCancelledError, RbcDisconnectedError, RbcNotConnectedError } from "../../../device/errors.ts";
 import { TetheredPlayError } from "../../../device/tethered-play.ts";
+import { translator } from "../../../i18n/translate.ts";
 import { type Motion, MotionError } from "../../../motion/index.ts";
 import type { AppContext } from "../../context.ts";
 import { errorMessage, technicalDetail } from "../../error-text.ts";
@@ -13,7 +14,9 @@ import { type Controller, controllerKey } from "../../scope.ts";
 import { servosTaken, stopActivity } from "../connection/actions.ts";
 import type { EditorHost } from "./host.ts";
 import { liveOf, type PlayChoice, type PlayProgress, patchPlay, patchTeachIn } from "./live-state.ts";
+import { editorMessages } from "./messages.ts";
 import { type PlayHolds, playFailureText, playRange, playResultNotice, playSpan } from "./play-model.ts";
+import { refusalText } from "./refusal-text.ts";
 
 /** The play of this connection: aborted when the connection ends. */
 export class PlayControl implements Controller {
@@ -52,19 +55,17 @@ export function chosenRange(ctx: AppContext, host: EditorHost): { from: number; 
 export function askPlay(ctx: AppContext, host: EditorHost): void {
   const state = ctx.store.get();
   if (!ctx.session.current || liveOf(state).play.running) return;
+  const t = translator(editorMessages, state.locale);
   const { from, to } = chosenRange(ctx, host);
   try {
     const { frames, durationMs } = playSpan(host.doc, from, to);
     patchPlay(ctx.store, { confirming: { from, to, frames, durationMs }, notice: undefined });
     focusSoon("cancel-play");
   } catch (e) {
+    const reason = e instanceof MotionError ? refusalText(e, t) : errorMessage(e, t.locale);
     patchPlay(ctx.store, {
       confirming: undefined,
-      notice: {
-        tone: "danger",
-        text: `${e instanceof MotionError ? e.message : errorMessage(e)} Nothing was sent; the robot did not move.`,
-        detail: technicalDetail(e),
-      },
+      notice: { tone: "danger", text: t("editor.play.notSent", { reason }), detail: technicalDetail(e) },
     });
   }
 }
@@ -108,6 +109,7 @@ export async function confirmPlay(ctx: AppContext, host: EditorHost): Promise<vo
   const abort = new AbortController();
   control.abort = abort;
   const state = store.get();
+  const t = translator(editorMessages, state.locale);
   // Zeros read in this connection (teach-in, the Zeros view); otherwise tethered play reads them itself.
   const robotZeros = liveOf(state).teach.robotZeros ?? state.zeros.stored;
   const platform = state.connection.platform;
@@ -115,7 +117,7 @@ export async function confirmPlay(ctx: AppContext, host: EditorHost): Promise<vo
   patchPlay(store, { confirming: undefined, running: { from, to }, notice: undefined });
   try {
     const result = await session.run(
-      "Tethered play",
+      t("editor.play.run"),
       (c) =>
         c.playTethered(doc, {
           range: { from, to },
@@ -137,7 +139,7 @@ export async function confirmPlay(ctx: AppContext, host: EditorHost): Promise<vo
         }),
       { packetMode: false },
     );
-    patchPlay(store, { running: undefined, notice: playResultNotice(result, from, to) });
+    patchPlay(store, { running: undefined, notice: playResultNotice(result, from, to, t.locale) });
   } catch (e) {
     const connected = session.current === client;
     if (e instanceof RbcCancelledError && connected) {
@@ -145,14 +147,19 @@ export async function confirmPlay(ctx: AppContext, host: EditorHost): Promise<vo
       const framesSent = last?.index ?? 0;
       patchPlay(store, {
         running: undefined,
-        notice: playResultNotice({ outcome: "stopped", framesSent, durationMs: 0, lastFrame }, from, to),
+        notice: playResultNotice(
+          { outcome: "stopped", framesSent, durationMs: 0, lastFrame },
+          from,
+          to,
+          t.locale,
+        ),
       });
     } else {
       const { holds, lastFrame } = failure(e, last);
       const text =
         e instanceof MotionError
-          ? `${e.message} Nothing was sent; the robot did not move.`
-          : `${playFailureText(connected ? holds : "unknown", lastFrame, client.mode === "direct")} ${errorMessage(e)}`;
+          ? t("editor.play.notSent", { reason: refusalText(e, t) })
+          : `${playFailureText(connected ? holds : "unknown", lastFrame, client.mode === "direct", t.locale)} ${errorMessage(e, t.locale)}`;
       patchPlay(store, { running: undefined, notice: { tone: "danger", text, detail: technicalDetail(e) } });
     }
   } finally {

@@ -3,13 +3,14 @@ import {
   joinScene,
   type MirrorMode,
   type Motion,
-  MotionError,
   mirrorPose,
   retime,
   setDuration,
 } from "../../../motion/index.ts";
 import type { AppContext } from "../../context.ts";
-import { edit, selectedScene, whole } from "./actions.ts";
+import { edit, editorWords, selectedScene, whole } from "./actions.ts";
+import type { EditorKey } from "./messages.ts";
+import { TypedValueError } from "./refusal-text.ts";
 import { editorOf, isDetached, patchEditor, setDetached } from "./state.ts";
 
 /** Whole-pose and timing edits of the selected scene: continuity (detach, join), mirror, copy a pose, retime. */
@@ -23,44 +24,50 @@ export function detachBoundary(ctx: AppContext, b: number, detached: boolean): v
 export function joinSelected(ctx: AppContext): void {
   const at = selectedScene(ctx);
   if (!at) return;
-  if (
-    edit(ctx, (doc) => joinScene(doc, at.k), `join scene ${at.k} to scene ${at.k - 1}`, { field: "join" })
-  ) {
+  const t = editorWords(ctx);
+  const where = { scene: String(at.k), before: String(at.k - 1) };
+  if (edit(ctx, (doc) => joinScene(doc, at.k), t("editor.label.join", where), { field: "join" })) {
     patchEditor(ctx.store, (s) => ({
       ...setDetached(s, at.k, false),
-      notice: { tone: "ok", text: `Scene ${at.k} now starts where scene ${at.k - 1} ends.` },
+      notice: { tone: "ok", text: t("editor.joined", where) },
     }));
   }
 }
 
-const MIRROR_WORDS: Record<MirrorMode, string> = {
-  swap: "swap sides",
-  "right-to-left": "right to left",
-  "left-to-right": "left to right",
+const MIRROR_WORDS: Readonly<Record<MirrorMode, EditorKey>> = {
+  swap: "editor.mirrorHow.swap",
+  "right-to-left": "editor.mirrorHow.rightToLeft",
+  "left-to-right": "editor.mirrorHow.leftToRight",
 };
 
 export function mirrorSelected(ctx: AppContext, mode: MirrorMode): void {
+  const t = editorWords(ctx);
   const s = editorOf(ctx.store.get());
   const k = s.scene;
-  const label = `mirror scene ${k} (${MIRROR_WORDS[mode]})`;
+  const words = { scene: String(k), how: t(MIRROR_WORDS[mode]) };
   const detach = isDetached(s, k, "end");
-  if (edit(ctx, (doc) => mirrorPose(doc, k, { mode, detach }), label, { field: "mirror" })) {
-    patchEditor(ctx.store, {
-      notice: { tone: "ok", text: `Mirrored the end pose of scene ${k} (${MIRROR_WORDS[mode]}).` },
-    });
+  if (
+    edit(ctx, (doc) => mirrorPose(doc, k, { mode, detach }), t("editor.label.mirror", words), {
+      field: "mirror",
+    })
+  ) {
+    patchEditor(ctx.store, { notice: { tone: "ok", text: t("editor.mirrored", words) } });
   }
 }
 
 export function copyPoseFrom(ctx: AppContext, from: number): void {
+  const t = editorWords(ctx);
   const s = editorOf(ctx.store.get());
   const k = s.scene;
   const detach = isDetached(s, k, "end");
-  const label = `copy the pose of scene ${from} into scene ${k}`;
-  const changed = edit(ctx, (doc) => copyPose(doc, from, k, { detach }), label, { field: "copy" });
+  const words = { from: String(from), scene: String(k) };
+  const changed = edit(ctx, (doc) => copyPose(doc, from, k, { detach }), t("editor.label.copy", words), {
+    field: "copy",
+  });
   patchEditor(ctx.store, {
     notice: changed
-      ? { tone: "ok", text: `Copied the end pose of scene ${from} into scene ${k}.` }
-      : { tone: "info", text: `Scene ${k} already ends in the pose of scene ${from}: nothing changed.` },
+      ? { tone: "ok", text: t("editor.copied", words) }
+      : { tone: "info", text: t("editor.copyUnchanged", words) },
   });
 }
 
@@ -72,23 +79,30 @@ export interface RetimeRequest {
 
 /** Retimes the selected scene or the whole motion, by a factor ("1.5") or to a total duration in ms. */
 export function retimeFromForm(ctx: AppContext, r: RetimeRequest): void {
+  const t = editorWords(ctx);
   const k = editorOf(ctx.store.get()).scene;
   const range = r.scope === "scene" ? { from: k, to: k } : {};
-  const what = r.scope === "scene" ? `scene ${k}` : "the motion";
-  const t = r.text.trim();
+  const typed = r.text.trim();
   const change = (doc: Motion): Motion => {
-    if (r.mode === "duration") return setDuration(doc, whole(t, "The duration", "of ms above 0"), range);
-    const factor = Number(t);
-    if (t === "" || !Number.isFinite(factor) || factor <= 0) {
-      throw new MotionError(
-        "motion-retime",
-        `A time factor is a number above 0 (2 = half as fast, 0.5 = twice as fast); "${t}" is not.`,
-      );
+    if (r.mode === "duration") {
+      return setDuration(doc, whole(typed, t("editor.what.duration"), t("editor.range.duration"), t), range);
+    }
+    const factor = Number(typed);
+    if (typed === "" || !Number.isFinite(factor) || factor <= 0) {
+      throw new TypedValueError("motion-retime", t("editor.refusal.factor", { text: typed }));
     }
     return retime(doc, factor, range);
   };
-  const label = r.mode === "duration" ? `retime ${what} to ${t} ms` : `retime ${what} ×${t}`;
-  if (edit(ctx, change, label, { field: "retime", text: t })) {
-    patchEditor(ctx.store, { notice: { tone: "ok", text: `Done: ${label}.` } });
+  const words = { scene: String(k), value: typed };
+  const label =
+    r.mode === "duration"
+      ? r.scope === "scene"
+        ? t("editor.label.retimeSceneTo", words)
+        : t("editor.label.retimeMotionTo", words)
+      : r.scope === "scene"
+        ? t("editor.label.retimeSceneBy", words)
+        : t("editor.label.retimeMotionBy", words);
+  if (edit(ctx, change, label, { field: "retime", text: typed })) {
+    patchEditor(ctx.store, { notice: { tone: "ok", text: t("editor.done", { what: label }) } });
   }
 }

@@ -1,9 +1,10 @@
 import { html, nothing, type TemplateResult } from "lit-html";
 import { live } from "lit-html/directives/live.js";
+import { translator } from "../../../i18n/translate.ts";
 import type { Motion, MotionScene, SceneRecord } from "../../../motion/index.ts";
 import { safeRange } from "../../../protocol/servo-limits.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
-import { jointName } from "../zeros/editor.ts";
+import { jointName } from "../zeros/joints/joint-name.ts";
 import {
   choosePort,
   choosePoseColumns,
@@ -12,6 +13,7 @@ import {
   slidePosition,
   typePosition,
 } from "./actions.ts";
+import { type EditorTranslator, editorMessages } from "./messages.ts";
 import type { EditorState, FieldProblem, PoseColumns } from "./state.ts";
 import { inputValue, PORT_VALUES, TORQUE_VALUES } from "./view-parts.ts";
 
@@ -24,12 +26,13 @@ import { inputValue, PORT_VALUES, TORQUE_VALUES } from "./view-parts.ts";
 
 function positionField(
   ctx: ViewContext,
+  t: EditorTranslator,
   rec: SceneRecord,
   side: "start" | "end",
   problem: FieldProblem | undefined,
   unsafe: boolean,
 ): TemplateResult {
-  const name = jointName(rec.id);
+  const who = { joint: jointName(rec.id, t.locale), id: String(rec.id) };
   const value = side === "end" ? rec.end : rec.start;
   const describedBy = [problem ? `problem-${side}-${rec.id}` : "", unsafe ? `unsafe-${side}-${rec.id}` : ""]
     .filter((x) => x !== "")
@@ -43,7 +46,7 @@ function positionField(
     max="254"
     step="1"
     data-testid=${`${side}-${rec.id}`}
-    aria-label=${`${name} (servo ${rec.id}), ${side} position`}
+    aria-label=${side === "start" ? t("editor.pose.startLabel", who) : t("editor.pose.endLabel", who)}
     aria-invalid=${problem ? "true" : "false"}
     aria-describedby=${describedBy === "" ? nothing : describedBy}
     .value=${problem?.text ?? String(value)}
@@ -58,12 +61,14 @@ function outsideSafe(id: number, p: number): boolean {
 
 function poseRow(
   ctx: ViewContext,
+  t: EditorTranslator,
   s: EditorState,
   rec: SceneRecord,
   previous: SceneRecord | undefined,
 ): TemplateResult {
   const id = rec.id;
-  const name = jointName(id);
+  const name = jointName(id, t.locale);
+  const who = { joint: name, id: String(id) };
   const range = safeRange(id) ?? { min: 0, max: 254 };
   const startProblem = s.problems[`start:${id}`];
   const endProblem = s.problems[`end:${id}`];
@@ -75,17 +80,17 @@ function poseRow(
       <td class="num pose-id">${id}</td>
       <th scope="row" class="pose-name">${name}</th>
       <td class="pose-start">
-        ${positionField(ctx, rec, "start", startProblem, unsafeStart)}
+        ${positionField(ctx, t, rec, "start", startProblem, unsafeStart)}
         ${
           jump === undefined
             ? nothing
             : html`<span class="pose-jump small" data-testid=${`jump-${id}`}>
-                <span aria-hidden="true">≠</span><span class="sr-only">jumps: the scene before ends at</span>
+                <span aria-hidden="true">≠</span><span class="sr-only">${t("editor.pose.jumps")}</span>
                 <span class="num">${jump}</span>
               </span>`
         }
       </td>
-      <td class="pose-end">${positionField(ctx, rec, "end", endProblem, unsafeEnd)}</td>
+      <td class="pose-end">${positionField(ctx, t, rec, "end", endProblem, unsafeEnd)}</td>
       <td class="pose-slider">
         <input
           type="range"
@@ -93,7 +98,7 @@ function poseRow(
           max=${range.max}
           step="1"
           data-testid=${`slider-${id}`}
-          aria-label=${`${name} (servo ${id}), end position slider, safe range ${range.min} to ${range.max}`}
+          aria-label=${t("editor.pose.sliderLabel", { ...who, min: String(range.min), max: String(range.max) })}
           .value=${String(rec.end)}
           @input=${(e: Event) => slidePosition(ctx, id, Number(inputValue(e)))}
           @change=${() => endSlide(ctx)}
@@ -101,14 +106,14 @@ function poseRow(
       </td>
       <td class="pose-torque">
         <select
-          aria-label=${`Torque of ${name} (0 strong to 4 weak)`}
+          aria-label=${t("editor.pose.torqueLabel", { joint: name })}
           @change=${(e: Event) => chooseTorque(ctx, id, Number(inputValue(e)))}
         >
           ${TORQUE_VALUES.map((t) => html`<option value=${t} ?selected=${t === rec.torque}>${t}</option>`)}
         </select>
       </td>
       <td class="pose-port">
-        <select aria-label=${`Port value of ${name}`} @change=${(e: Event) => choosePort(ctx, id, Number(inputValue(e)))}>
+        <select aria-label=${t("editor.pose.portLabel", { joint: name })} @change=${(e: Event) => choosePort(ctx, id, Number(inputValue(e)))}>
           ${PORT_VALUES.map((p) => html`<option value=${p} ?selected=${p === rec.port}>${p}</option>`)}
         </select>
       </td>
@@ -120,8 +125,8 @@ function poseRow(
             <td colspan="6">
               ${startProblem ? html`<p id=${`problem-start-${id}`} class="text-danger small field-problem" data-testid="field-problem">${startProblem.message}</p>` : nothing}
               ${endProblem ? html`<p id=${`problem-end-${id}`} class="text-danger small field-problem" data-testid="field-problem">${endProblem.message}</p>` : nothing}
-              ${unsafeStart ? html`<p id=${`unsafe-start-${id}`} class="text-warning small">Start ${rec.start} is outside the safe range ${range.min}–${range.max}.</p>` : nothing}
-              ${unsafeEnd ? html`<p id=${`unsafe-end-${id}`} class="text-warning small">End ${rec.end} is outside the safe range ${range.min}–${range.max}.</p>` : nothing}
+              ${unsafeStart ? html`<p id=${`unsafe-start-${id}`} class="text-warning small">${t("editor.pose.unsafeStart", { value: String(rec.start), min: String(range.min), max: String(range.max) })}</p>` : nothing}
+              ${unsafeEnd ? html`<p id=${`unsafe-end-${id}`} class="text-warning small">${t("editor.pose.unsafeEnd", { value: String(rec.end), min: String(range.min), max: String(range.max) })}</p>` : nothing}
             </td>
           </tr>`
         : nothing
@@ -143,31 +148,31 @@ function columnChoice(ctx: ViewContext, shown: PoseColumns, value: PoseColumns, 
 }
 
 export function poseTable(ctx: ViewContext, s: EditorState, doc: Motion, scene: MotionScene): TemplateResult {
+  const t = translator(editorMessages, ctx.state.locale);
   const previous = doc.scenes[s.scene - 1];
   const shown = s.poseColumns ?? "end";
   return html`
     <fieldset class="pose-columns" data-testid="pose-columns">
-      <legend class="sr-only">Columns of the pose table</legend>
-      ${columnChoice(ctx, shown, "end", "End pose")} ${columnChoice(ctx, shown, "more", "Start, torque, port")}
+      <legend class="sr-only">${t("editor.pose.columns")}</legend>
+      ${columnChoice(ctx, shown, "end", t("editor.pose.columnsEnd"))}
+      ${columnChoice(ctx, shown, "more", t("editor.pose.columnsMore"))}
     </fieldset>
     <div class="table-wrap pose-wrap">
       <table class="data-table pose-table pose-table--${shown}" data-testid="pose-table">
-        <caption class="sr-only">
-          Scene ${s.scene}: each servo's start and end position (0 to 254), torque (0 strong to 4 weak) and port value
-        </caption>
+        <caption class="sr-only">${t("editor.pose.caption", { scene: String(s.scene) })}</caption>
         <thead>
           <tr>
-            <th scope="col">ID</th>
-            <th scope="col">Joint</th>
-            <th scope="col">Start</th>
-            <th scope="col">End</th>
-            <th scope="col"><span class="sr-only">End slider</span></th>
-            <th scope="col" title="0 strong to 4 weak">Torque</th>
-            <th scope="col">Port</th>
+            <th scope="col">${t("editor.pose.id")}</th>
+            <th scope="col">${t("editor.pose.joint")}</th>
+            <th scope="col">${t("editor.pose.start")}</th>
+            <th scope="col">${t("editor.pose.end")}</th>
+            <th scope="col"><span class="sr-only">${t("editor.pose.endSlider")}</span></th>
+            <th scope="col" title=${t("editor.pose.torqueScale")}>${t("editor.pose.torque")}</th>
+            <th scope="col">${t("editor.pose.port")}</th>
           </tr>
         </thead>
         <tbody>
-          ${scene.servos.map((rec, i) => poseRow(ctx, s, rec, previous?.servos[i]))}
+          ${scene.servos.map((rec, i) => poseRow(ctx, t, s, rec, previous?.servos[i]))}
         </tbody>
       </table>
     </div>
@@ -176,10 +181,11 @@ export function poseTable(ctx: ViewContext, s: EditorState, doc: Motion, scene: 
 
 /** The Pose tab: the selected scene's pose table (the 3D robot is beside or above it, editor-view.ts). */
 export function poseCard(ctx: ViewContext, s: EditorState, doc: Motion): TemplateResult {
+  const t = translator(editorMessages, ctx.state.locale);
   const scene = doc.scenes[s.scene]!;
   return html`
     <section class="card editor-pose" aria-labelledby="pose-title" data-testid="pose-card">
-      <h2 id="pose-title" class="card-title long-text">Scene ${s.scene}: ${scene.name}</h2>
+      <h2 id="pose-title" class="card-title long-text">${t("editor.sceneHeading", { scene: String(s.scene), name: scene.name })}</h2>
       ${poseTable(ctx, s, doc, scene)}
     </section>
   `;

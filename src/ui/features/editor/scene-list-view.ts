@@ -1,11 +1,13 @@
 import { html, nothing, type TemplateResult } from "lit-html";
 import { guard } from "lit-html/directives/guard.js";
 import { repeat } from "lit-html/directives/repeat.js";
+import { translator } from "../../../i18n/translate.ts";
 import type { Motion, MotionScene } from "../../../motion/index.ts";
 import { formatCount } from "../../format.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
 import { formatSeconds } from "../motions/plot-data.ts";
 import { addSceneAfter, chooseScene, deleteSelected, duplicateSelected, moveSelected } from "./actions.ts";
+import { type EditorTranslator, editorMessages } from "./messages.ts";
 import type { EditorState } from "./state.ts";
 import { problemText } from "./view-parts.ts";
 
@@ -36,7 +38,15 @@ function sceneKey(ctx: ViewContext, k: number, count: number, e: KeyboardEvent):
   chooseScene(ctx, Math.max(0, Math.min(count - 1, to)), true);
 }
 
-function sceneOption(ctx: ViewContext, scene: MotionScene, k: number, selected: boolean, count: number) {
+function sceneOption(
+  ctx: ViewContext,
+  t: EditorTranslator,
+  scene: MotionScene,
+  k: number,
+  selected: boolean,
+  count: number,
+) {
+  const timing = { frames: String(scene.frames), time: formatCount(scene.timeMs, t.locale) };
   return html`<li>
     <button
       type="button"
@@ -47,74 +57,75 @@ function sceneOption(ctx: ViewContext, scene: MotionScene, k: number, selected: 
       @click=${() => chooseScene(ctx, k)}
       @keydown=${(e: KeyboardEvent) => sceneKey(ctx, k, count, e)}
     >
-      <span class="num scene-k"><span class="sr-only">Scene </span>${k}</span>
+      <span class="num scene-k"><span class="sr-only">${t("editor.scenes.optionScene")} </span>${k}</span>
       <span class="scene-name">${scene.name}</span>
       <span class="num muted scene-timing">
-        ${scene.frames}<span aria-hidden="true"> f ·</span><span class="sr-only"> frames,</span>
-        ${formatCount(scene.timeMs)} ms
+        <span aria-hidden="true">${t("editor.scenes.timingShort", timing)}</span
+        ><span class="sr-only">${t("editor.scenes.timingSpoken", timing)}</span>
       </span>
     </button>
   </li>`;
 }
 
 export function sceneList(ctx: ViewContext, s: EditorState, doc: Motion): TemplateResult {
+  const t = translator(editorMessages, ctx.state.locale);
   const k = s.scene;
+  const scene = String(k);
   const count = doc.scenes.length;
   const total = doc.scenes.reduce((t, scene) => t + scene.timeMs, 0);
   return html`
     <section class="card editor-scenes" aria-labelledby="scenes-title" data-testid="scene-list-card">
       <div class="card-head">
-        <h2 id="scenes-title" class="card-title">Scenes</h2>
+        <h2 id="scenes-title" class="card-title">${t("editor.scenes.title")}</h2>
         <span class="num muted small" data-testid="scene-total">
-          ${count} ${count === 1 ? "scene" : "scenes"} · ${formatSeconds(total)}
+          ${t("editor.scenes.total", { count, time: formatSeconds(total, t.locale) })}
         </span>
       </div>
       <ol class="scene-list" aria-labelledby="scenes-title" aria-describedby="scene-keys" data-testid="scene-list">
         ${repeat(
           doc.scenes,
           (_, i) => i,
-          (scene, i) => guard([scene, i === k, count], () => sceneOption(ctx, scene, i, i === k, count)),
+          (one, i) =>
+            guard([one, i === k, count, t.locale], () => sceneOption(ctx, t, one, i, i === k, count)),
         )}
       </ol>
       <div class="row-actions scene-ops">
         <button type="button" class="btn" data-testid="scene-add" @click=${() => addSceneAfter(ctx)}>
-          Add after
+          ${t("editor.scenes.addAfter")}
         </button>
         <button type="button" class="btn" data-testid="scene-duplicate" @click=${() => duplicateSelected(ctx)}>
-          Duplicate
+          ${t("editor.scenes.duplicate")}
         </button>
         <button
           type="button"
           class="btn"
-          aria-label=${`Move scene ${k} up`}
+          aria-label=${t("editor.scenes.upLabel", { scene })}
           ?disabled=${k === 0}
           @click=${() => moveSelected(ctx, -1)}
         >
-          Up
+          ${t("editor.scenes.up")}
         </button>
         <button
           type="button"
           class="btn"
-          aria-label=${`Move scene ${k} down`}
+          aria-label=${t("editor.scenes.downLabel", { scene })}
           ?disabled=${k >= count - 1}
           @click=${() => moveSelected(ctx, 1)}
         >
-          Down
+          ${t("editor.scenes.down")}
         </button>
         <button
           type="button"
           class="btn"
           data-testid="scene-delete"
-          aria-label=${`Delete scene ${k}`}
+          aria-label=${t("editor.scenes.deleteLabel", { scene })}
           ?disabled=${count <= 1}
           @click=${() => deleteSelected(ctx)}
         >
-          Delete
+          ${t("editor.scenes.delete")}
         </button>
       </div>
-      <p id="scene-keys" class="muted small scene-keys">
-        Arrow keys, Home and End choose a scene. Every change, Delete too, can be undone.
-      </p>
+      <p id="scene-keys" class="muted small scene-keys">${t("editor.scenes.keys")}</p>
       ${problemText("structure-problem", s.problems.structure)}
     </section>
   `;

@@ -1,10 +1,12 @@
 import { html, nothing, type TemplateResult } from "lit-html";
+import { translator } from "../../../i18n/translate.ts";
 import type { Motion, MotionScene } from "../../../motion/index.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
 import { chooseSceneTorque, typeSceneName, typeTiming } from "./actions.ts";
+import { type EditorTranslator, editorMessages } from "./messages.ts";
 import { detachBoundary, joinSelected } from "./pose-actions.ts";
 import type { EditorState } from "./state.ts";
-import { inputValue, problemText, TORQUE_WORDS } from "./view-parts.ts";
+import { inputValue, problemText, torqueWords } from "./view-parts.ts";
 
 /**
  * The selected scene (the Scene tab): its name, frames, time and torque, and its two boundaries (continuity on by
@@ -30,7 +32,7 @@ function detachBox(ctx: ViewContext, s: EditorState, b: number, text: string): T
   </label>`;
 }
 
-function boundaries(ctx: ViewContext, s: EditorState, doc: Motion): TemplateResult {
+function boundaries(ctx: ViewContext, t: EditorTranslator, s: EditorState, doc: Motion): TemplateResult {
   const k = s.scene;
   const last = doc.scenes.length - 1;
   const servos = doc.servos.length;
@@ -38,24 +40,24 @@ function boundaries(ctx: ViewContext, s: EditorState, doc: Motion): TemplateResu
   const jumpsAfter = jumpsAt(doc, k + 1);
   return html`
     <div class="continuity" role="group" aria-labelledby="continuity-title" data-testid="continuity">
-      <h3 id="continuity-title" class="continuity-title">Continuity</h3>
+      <h3 id="continuity-title" class="continuity-title">${t("editor.continuity.title")}</h3>
       <div class="boundary">
         ${
           k === 0
-            ? html`<p class="small">Starts from the motion's first pose (scene 0's start).</p>`
+            ? html`<p class="small">${t("editor.continuity.first")}</p>`
             : html`<p class="small" data-testid="boundary-start">
                   ${
                     jumpsBefore === 0
-                      ? `Starts where scene ${k - 1} ends (all ${servos} servos joined).`
-                      : `Starts where scene ${k - 1} ends, except ${jumpsBefore} ${jumpsBefore === 1 ? "servo that jumps" : "servos that jump"} (≠ in the table).`
+                      ? t("editor.continuity.startsJoined", { scene: String(k - 1), servos })
+                      : t("editor.continuity.startsJumps", { scene: String(k - 1), count: jumpsBefore })
                   }
                 </p>
                 <div class="row-actions">
-                  ${detachBox(ctx, s, k, `Detach from scene ${k - 1}`)}
+                  ${detachBox(ctx, s, k, t("editor.continuity.detachFrom", { scene: String(k - 1) }))}
                   ${
                     jumpsBefore > 0
                       ? html`<button type="button" class="btn" data-testid="join-scene" @click=${() => joinSelected(ctx)}>
-                          Join to scene ${k - 1}
+                          ${t("editor.continuity.joinTo", { scene: String(k - 1) })}
                         </button>`
                       : nothing
                   }
@@ -65,21 +67,18 @@ function boundaries(ctx: ViewContext, s: EditorState, doc: Motion): TemplateResu
       <div class="boundary">
         ${
           k === last
-            ? html`<p class="small">The last scene: the motion ends in its end pose.</p>`
+            ? html`<p class="small">${t("editor.continuity.last")}</p>`
             : html`<p class="small" data-testid="boundary-end">
                   ${
                     jumpsAfter === 0
-                      ? `Scene ${k + 1} starts where this one ends (all ${servos} servos joined).`
-                      : `Scene ${k + 1} starts where this one ends, except ${jumpsAfter} ${jumpsAfter === 1 ? "servo" : "servos"}.`
+                      ? t("editor.continuity.nextJoined", { scene: String(k + 1), servos })
+                      : t("editor.continuity.nextJumps", { scene: String(k + 1), count: jumpsAfter })
                   }
                 </p>
-                ${detachBox(ctx, s, k + 1, `Detach from scene ${k + 1}`)}`
+                ${detachBox(ctx, s, k + 1, t("editor.continuity.detachFrom", { scene: String(k + 1) }))}`
         }
       </div>
-      <p class="muted small">
-        Joined: changing a start also moves the end of the scene before, and changing an end also moves the start of
-        the scene after, so the motion stays smooth. Detached: only the side you change moves (the servo then jumps).
-      </p>
+      <p class="muted small">${t("editor.continuity.about")}</p>
       ${problemText("join-problem", s.problems.join)}
     </div>
   `;
@@ -90,14 +89,14 @@ function sceneTorque(scene: MotionScene): number | undefined {
   return scene.servos.every((r) => r.torque === first) ? first : undefined;
 }
 
-function fields(ctx: ViewContext, s: EditorState, scene: MotionScene): TemplateResult {
+function fields(ctx: ViewContext, t: EditorTranslator, s: EditorState, scene: MotionScene): TemplateResult {
   const p = s.problems;
   const torque = sceneTorque(scene);
   const every = scene.frames > 0 ? Math.floor(scene.timeMs / scene.frames) : 0;
   return html`
     <div class="scene-fields">
       <label class="editor-field scene-name-field">
-        <span>Name</span>
+        <span>${t("editor.scene.name")}</span>
         <input
           type="text"
           data-testid="scene-name"
@@ -110,7 +109,7 @@ function fields(ctx: ViewContext, s: EditorState, scene: MotionScene): TemplateR
         />
       </label>
       <label class="editor-field">
-        <span>Frames</span>
+        <span>${t("editor.scene.frames")}</span>
         <input
           type="number"
           class="num"
@@ -124,7 +123,7 @@ function fields(ctx: ViewContext, s: EditorState, scene: MotionScene): TemplateR
         />
       </label>
       <label class="editor-field">
-        <span>Time (ms)</span>
+        <span>${t("editor.scene.time")}</span>
         <input
           type="number"
           class="num"
@@ -138,13 +137,13 @@ function fields(ctx: ViewContext, s: EditorState, scene: MotionScene): TemplateR
         />
       </label>
       <label class="editor-field">
-        <span>Torque (all servos)</span>
+        <span>${t("editor.scene.torque")}</span>
         <select data-testid="scene-torque" @change=${(e: Event) => chooseSceneTorque(ctx, Number(inputValue(e)))}>
-          ${torque === undefined ? html`<option value="" selected disabled>mixed</option>` : nothing}
-          ${TORQUE_WORDS.map((t, i) => html`<option value=${i} ?selected=${i === torque}>${t}</option>`)}
+          ${torque === undefined ? html`<option value="" selected disabled>${t("editor.scene.mixed")}</option>` : nothing}
+          ${torqueWords(t).map((w, i) => html`<option value=${i} ?selected=${i === torque}>${w}</option>`)}
         </select>
       </label>
-      <p id="frame-every" class="muted small scene-every">A frame every ${every} ms.</p>
+      <p id="frame-every" class="muted small scene-every">${t("editor.scene.every", { ms: String(every) })}</p>
     </div>
     ${problemText("scene-name-problem", p["scene-name"])} ${problemText("frames-problem", p.frames)}
     ${problemText("time-problem", p.timeMs)} ${problemText("scene-torque-problem", p["scene-torque"])}
@@ -152,11 +151,12 @@ function fields(ctx: ViewContext, s: EditorState, scene: MotionScene): TemplateR
 }
 
 export function sceneCard(ctx: ViewContext, s: EditorState, doc: Motion): TemplateResult {
+  const t = translator(editorMessages, ctx.state.locale);
   const scene = doc.scenes[s.scene]!;
   return html`
     <section class="card editor-scene" aria-labelledby="scene-title" data-testid="scene-card">
-      <h2 id="scene-title" class="card-title long-text">Scene ${s.scene}: ${scene.name}</h2>
-      ${fields(ctx, s, scene)} ${boundaries(ctx, s, doc)}
+      <h2 id="scene-title" class="card-title long-text">${t("editor.sceneHeading", { scene: String(s.scene), name: scene.name })}</h2>
+      ${fields(ctx, t, s, scene)} ${boundaries(ctx, t, s, doc)}
     </section>
   `;
 }

@@ -16,6 +16,7 @@ import {
 import type { AppState, Notice } from "../../app-state.ts";
 import type { Store } from "../../store.ts";
 import type { BrokenDraft, DraftSummary } from "./drafts.ts";
+import type { EditorKey } from "./messages.ts";
 
 /**
  * The tabs of the selected scene's work (UI.md: a view that grows past two screens is split). The toolbar, the
@@ -23,13 +24,13 @@ import type { BrokenDraft, DraftSummary } from "./drafts.ts";
  */
 export type EditorTab = "pose" | "scene" | "tools" | "teach" | "play" | "check";
 
-export const EDITOR_TABS: readonly { id: EditorTab; label: string }[] = [
-  { id: "pose", label: "Pose" },
-  { id: "scene", label: "Scene" },
-  { id: "tools", label: "Tools" },
-  { id: "teach", label: "Teach-in" },
-  { id: "play", label: "Play" },
-  { id: "check", label: "Check" },
+export const EDITOR_TABS: readonly { id: EditorTab; key: EditorKey }[] = [
+  { id: "pose", key: "editor.tab.pose" },
+  { id: "scene", key: "editor.tab.scene" },
+  { id: "tools", key: "editor.tab.tools" },
+  { id: "teach", key: "editor.tab.teach" },
+  { id: "play", key: "editor.tab.play" },
+  { id: "check", key: "editor.tab.check" },
 ];
 
 /**
@@ -38,7 +39,10 @@ export const EDITOR_TABS: readonly { id: EditorTab; label: string }[] = [
  */
 export type PoseColumns = "end" | "more";
 
-/** A refused edit: the text the person typed (kept in the field) and why it was refused. */
+/**
+ * A refused edit: the text the person typed (kept in the field) and why it was refused, in the language the
+ * panel spoke when it was refused.
+ */
 export interface FieldProblem {
   text: string;
   message: string;
@@ -129,6 +133,8 @@ export interface EditRequest {
   select?: (doc: Motion) => number;
   /** Structural edits reset the detach options (boundaries move with the scenes). */
   structural?: boolean;
+  /** Words a refusal for the person (the panel's language); its English message when not given. */
+  word?: (e: MotionError) => string;
 }
 
 export interface EditOutcome {
@@ -156,7 +162,7 @@ export function applyEdit(
     next = edit(history.present);
   } catch (e) {
     if (!(e instanceof MotionError)) throw e;
-    const problem = { text: request.text ?? "", message: e.message };
+    const problem = { text: request.text ?? "", message: request.word ? request.word(e) : e.message };
     return {
       state: { ...s, problems: { ...s.problems, [request.field]: problem } },
       changed: false,

@@ -1,10 +1,13 @@
 import { html, nothing, type TemplateResult } from "lit-html";
+import { translator } from "../../../i18n/translate.ts";
 import type { Motion } from "../../../motion/index.ts";
 import type { RbmValidation } from "../../../protocol/rbm-validate.ts";
+import { formatCount } from "../../format.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
 import { editorHost, editorPanelId, editorTabId, showEditorTab } from "./actions.ts";
 import { issuesCard } from "./issues-view.ts";
 import { liveOf, teachInOn } from "./live-state.ts";
+import { type EditorTranslator, editorMessages } from "./messages.ts";
 import { playPanel } from "./play-view.ts";
 import { poseCard } from "./pose-table-view.ts";
 import { sceneCard } from "./scene-view.ts";
@@ -24,23 +27,30 @@ function mark(text: string, spoken: string, tone: "info" | "warning" | "danger")
     ><span class="sr-only"> (${spoken})</span>`;
 }
 
-function tabMark(ctx: ViewContext, tab: EditorTab, check: RbmValidation): TemplateResult | typeof nothing {
+function tabMark(
+  ctx: ViewContext,
+  t: EditorTranslator,
+  tab: EditorTab,
+  check: RbmValidation,
+): TemplateResult | typeof nothing {
   switch (tab) {
     case "teach":
-      return teachInOn(ctx.state) ? mark("on", "on", "info") : nothing;
+      return teachInOn(ctx.state) ? mark(t("editor.tab.on"), t("editor.tab.on"), "info") : nothing;
     case "play":
-      return liveOf(ctx.state).play.running ? mark("playing", "playing", "info") : nothing;
+      return liveOf(ctx.state).play.running
+        ? mark(t("editor.tab.playing"), t("editor.tab.playing"), "info")
+        : nothing;
     case "check": {
       const errors = check.errors.length;
       const warnings = check.warnings.length;
       if (errors + warnings === 0) return nothing;
       const spoken = [
-        errors > 0 ? `${errors} ${errors === 1 ? "error" : "errors"}` : "",
-        warnings > 0 ? `${warnings} ${warnings === 1 ? "warning" : "warnings"}` : "",
+        errors > 0 ? t("editor.count.errors", { count: errors }) : "",
+        warnings > 0 ? t("editor.count.warnings", { count: warnings }) : "",
       ]
         .filter((x) => x !== "")
         .join(", ");
-      return mark(String(errors + warnings), spoken, errors > 0 ? "danger" : "warning");
+      return mark(formatCount(errors + warnings, t.locale), spoken, errors > 0 ? "danger" : "warning");
     }
     default:
       return nothing;
@@ -48,8 +58,9 @@ function tabMark(ctx: ViewContext, tab: EditorTab, check: RbmValidation): Templa
 }
 
 function tabList(ctx: ViewContext, current: EditorTab, check: RbmValidation): TemplateResult {
+  const words = translator(editorMessages, ctx.state.locale);
   return html`
-    <div class="editor-tabs" role="tablist" aria-label="Work on the selected scene" data-testid="editor-tabs">
+    <div class="editor-tabs" role="tablist" aria-label=${words("editor.tabs.label")} data-testid="editor-tabs">
       ${EDITOR_TABS.map(
         (t) => html`<button
           type="button"
@@ -67,7 +78,7 @@ function tabList(ctx: ViewContext, current: EditorTab, check: RbmValidation): Te
             showEditorTab(ctx, next, true);
           }}
         >
-          ${t.label}${tabMark(ctx, t.id, check)}
+          ${words(t.key)}${tabMark(ctx, words, t.id, check)}
         </button>`,
       )}
     </div>

@@ -3,12 +3,14 @@
  * reads, torque on); "End teach-in" holds first, then leaves direct mode.
  */
 import { RbcCancelledError, RbcTimeoutError } from "../../../device/errors.ts";
+import { translator } from "../../../i18n/translate.ts";
 import { HUNO_SERVO_IDS } from "../../../protocol/servo-limits.ts";
 import type { AppContext } from "../../context.ts";
 import { errorNotice } from "../../error-text.ts";
 import { servosTaken } from "../connection/actions.ts";
 import { clampToSafe, DEFAULT_TORQUE } from "../servos/state.ts";
 import { liveOf, patchTeachIn, teachInOn } from "./live-state.ts";
+import { editorMessages } from "./messages.ts";
 import { TEACH_IN_WATCH } from "./teach-in.ts";
 import { type HeldServo, holdNotice } from "./teach-in-model.ts";
 
@@ -25,7 +27,7 @@ async function holdLimp(ctx: AppContext): Promise<{ held: HeldServo[]; silent: n
   let stopped = false;
   try {
     await session.run(
-      "Teach-in: holding the servos",
+      translator(editorMessages, state.locale)("editor.teach.run.hold"),
       async (c) => {
         for (const id of ids) {
           try {
@@ -56,14 +58,15 @@ async function holdLimp(ctx: AppContext): Promise<{ held: HeldServo[]; silent: n
 export async function holdPassive(ctx: AppContext): Promise<void> {
   const { store } = ctx;
   if (!teachInOn(store.get()) || liveOf(store.get()).teach.busy) return;
+  const t = translator(editorMessages, store.get().locale);
   patchTeachIn(store, { busy: "holding", notice: undefined });
   try {
     const { held, silent, stopped } = await holdLimp(ctx);
-    patchTeachIn(store, { busy: undefined, notice: holdNotice(held, silent, stopped) });
+    patchTeachIn(store, { busy: undefined, notice: holdNotice(held, silent, stopped, t.locale) });
   } catch (e) {
     patchTeachIn(store, {
       busy: undefined,
-      notice: errorNotice("Holding failed: servos that were limp may still be limp. Hold the robot.", e),
+      notice: errorNotice(t("editor.teach.holdFailed"), e, t.locale),
     });
   }
 }
@@ -72,6 +75,7 @@ export async function holdPassive(ctx: AppContext): Promise<void> {
 export async function endTeachIn(ctx: AppContext): Promise<void> {
   const { store, session } = ctx;
   if (!teachInOn(store.get()) || liveOf(store.get()).teach.busy) return;
+  const t = translator(editorMessages, store.get().locale);
   patchTeachIn(store, { phase: "ending", busy: "holding", notice: undefined });
   let held: Awaited<ReturnType<typeof holdLimp>>;
   try {
@@ -80,45 +84,39 @@ export async function endTeachIn(ctx: AppContext): Promise<void> {
     patchTeachIn(store, {
       phase: "on",
       busy: undefined,
-      notice: errorNotice(
-        "Teach-in did not end: holding the limp servos failed, so the robot stays in servo control. Hold the robot.",
-        e,
-      ),
+      notice: errorNotice(t("editor.teach.endHoldFailed"), e, t.locale),
     });
     return;
   }
   if (held.stopped) {
-    const stoppedNotice = holdNotice(held.held, held.silent, true);
+    const stoppedNotice = holdNotice(held.held, held.silent, true, t.locale);
     patchTeachIn(store, {
       phase: "on",
       busy: undefined,
-      notice: {
-        ...stoppedNotice,
-        text: `${stoppedNotice.text} Teach-in stays on: press End teach-in again.`,
-      },
+      notice: { ...stoppedNotice, text: `${stoppedNotice.text} ${t("editor.teach.staysOn")}` },
     });
     return;
   }
   session.connectionScope.peek(TEACH_IN_WATCH)?.end();
   try {
-    await session.run("Ending teach-in", (c) => c.exitDirectMode(), { packetMode: false });
+    await session.run(t("editor.teach.run.end"), (c) => c.exitDirectMode(), { packetMode: false });
   } catch (e) {
     patchTeachIn(store, {
       phase: "off",
       busy: undefined,
-      notice: errorNotice("The servos hold, but leaving servo control failed.", e),
+      notice: errorNotice(t("editor.teach.leaveFailed"), e, t.locale),
     });
     return;
   }
   const heldText =
-    held.held.length > 0 || held.silent.length > 0 ? `${holdNotice(held.held, held.silent).text} ` : "";
+    held.held.length > 0 || held.silent.length > 0
+      ? `${holdNotice(held.held, held.silent, false, t.locale).text} `
+      : "";
+  const ended = held.silent.length > 0 ? t("editor.teach.ended") : t("editor.teach.endedHolding");
   patchTeachIn(store, {
     phase: "off",
     busy: undefined,
     passive: [],
-    notice: {
-      tone: held.silent.length > 0 ? "warning" : "ok",
-      text: `${heldText}Teach-in ended: the robot is back in its normal mode${held.silent.length > 0 ? "" : ", every servo holding its position"}.`,
-    },
+    notice: { tone: held.silent.length > 0 ? "warning" : "ok", text: `${heldText}${ended}` },
   });
 }

@@ -1,24 +1,64 @@
 /**
  * Teach-in's pure part: which servos a limb is, the questions the panel asks, how positions read from the robot
- * become a scene's pose (the robot's zeros → the motion's), and the sentences that say what the robot confirmed.
+ * become a scene's pose (the robot's zeros → the motion's), and the sentences that say what the robot confirmed
+ * (in the language given; English unless given).
  */
+import type { Locale } from "../../../i18n/locale.ts";
+import { translator } from "../../../i18n/translate.ts";
 import type { Motion } from "../../../motion/index.ts";
 import { PLATFORM_PF2 } from "../../../motion/index.ts";
 import { HUNO_SERVO_IDS } from "../../../protocol/servo-limits.ts";
 import type { Notice } from "../../app-state.ts";
 import type { Limb } from "./live-state.ts";
 import { sceneNumber } from "./live-state.ts";
+import { type EditorKey, type EditorTranslator, editorMessages } from "./messages.ts";
+
+const english = translator(editorMessages, "en");
 
 /**
  * The HUNO's limbs and their servo ids (docs/motion-document.md, Mirror; names as `jointName`): legs 0-4 and
  * 5-9 (hip roll, hip pitch, knee, ankle pitch, ankle roll), arms 10-12 and 13-15 (shoulder pitch, shoulder
  * roll, elbow).
  */
-export const LIMBS: readonly { limb: Limb; label: string; ids: readonly number[] }[] = [
-  { limb: "right-leg", label: "Right leg", ids: [0, 1, 2, 3, 4] },
-  { limb: "left-leg", label: "Left leg", ids: [5, 6, 7, 8, 9] },
-  { limb: "right-arm", label: "Right arm", ids: [10, 11, 12] },
-  { limb: "left-arm", label: "Left arm", ids: [13, 14, 15] },
+interface LimbInfo {
+  limb: Limb;
+  /** Its name, in English ("Right leg"); `key` in the catalogue. */
+  label: string;
+  key: EditorKey;
+  /** Its name inside a sentence: "the right leg". */
+  inSentence: EditorKey;
+  ids: readonly number[];
+}
+
+function limb(l: Omit<LimbInfo, "label">): LimbInfo {
+  return { ...l, label: english(l.key) };
+}
+
+export const LIMBS: readonly LimbInfo[] = [
+  limb({
+    limb: "right-leg",
+    key: "editor.limb.rightLeg",
+    inSentence: "editor.limbIn.rightLeg",
+    ids: [0, 1, 2, 3, 4],
+  }),
+  limb({
+    limb: "left-leg",
+    key: "editor.limb.leftLeg",
+    inSentence: "editor.limbIn.leftLeg",
+    ids: [5, 6, 7, 8, 9],
+  }),
+  limb({
+    limb: "right-arm",
+    key: "editor.limb.rightArm",
+    inSentence: "editor.limbIn.rightArm",
+    ids: [10, 11, 12],
+  }),
+  limb({
+    limb: "left-arm",
+    key: "editor.limb.leftArm",
+    inSentence: "editor.limbIn.leftArm",
+    ids: [13, 14, 15],
+  }),
 ];
 
 export const ALL_LIMBS: readonly Limb[] = LIMBS.map((l) => l.limb);
@@ -40,9 +80,10 @@ export function choosesAll(limbs: readonly Limb[]): boolean {
   return HUNO_SERVO_IDS.every((id) => ids.has(id));
 }
 
-export const TEACH_IN_QUESTION = "Hold the robot: the servos you choose go limp.";
-export const LIMP_ALL_QUESTION =
-  "All 16 servos go limp: the robot cannot stand on its own. Hold it with both hands, or lay it down.";
+/** The question before teach-in starts, in English (the view asks it in the panel's language). */
+export const TEACH_IN_QUESTION = english("editor.teach.question");
+/** The question before every servo goes limp, in English. */
+export const LIMP_ALL_QUESTION = english("editor.teach.limpAllQuestion");
 
 /** "0–4, 10" — runs of consecutive ids joined with a dash. */
 export function idList(ids: readonly number[]): string {
@@ -62,33 +103,42 @@ function sentences(parts: readonly string[]): string {
   return parts.map((p) => p.charAt(0).toUpperCase() + p.slice(1)).join(" ");
 }
 
-function servos(ids: readonly number[]): string {
-  return `${ids.length === 1 ? "servo" : "servos"} ${idList(ids)}`;
+/** "servo 3", "servos 0–4, 10" (Korean: "서보 3", "서보 0–4, 10"). */
+export function servosText(t: EditorTranslator, ids: readonly number[]): string {
+  const list = { ids: idList(ids) };
+  return ids.length === 1 ? t("editor.servosOne", list) : t("editor.servosMany", list);
 }
 
 /** The chosen limbs in words: "the right arm", "the right leg and the left arm", "every servo". */
-export function limbsText(limbs: readonly Limb[]): string {
-  if (choosesAll(limbs)) return "every servo";
-  const names = LIMBS.filter((l) => limbs.includes(l.limb)).map((l) => `the ${l.label.toLowerCase()}`);
-  if (names.length <= 1) return names[0] ?? "no servo";
-  return `${names.slice(0, -1).join(", ")} and ${names.at(-1)}`;
+export function limbsText(limbs: readonly Limb[], locale: Locale = "en"): string {
+  const t = translator(editorMessages, locale);
+  if (choosesAll(limbs)) return t("editor.limbs.every");
+  const names = LIMBS.filter((l) => limbs.includes(l.limb)).map((l) => t(l.inSentence));
+  if (names.length <= 1) return names[0] ?? t("editor.limbs.none");
+  return t("editor.limbs.and", { list: names.slice(0, -1).join(", "), last: names.at(-1) ?? "" });
 }
 
 /** What "Make limp" did: the servos that confirmed, the ones that did not answer. */
-export function limpNotice(confirmed: readonly number[], silent: readonly number[], stopped = false): Notice {
+export function limpNotice(
+  confirmed: readonly number[],
+  silent: readonly number[],
+  stopped = false,
+  locale: Locale = "en",
+): Notice {
+  const t = translator(editorMessages, locale);
   const parts: string[] = [];
   if (confirmed.length > 0) {
-    parts.push(
-      `${servos(confirmed)} ${confirmed.length === 1 ? "is" : "are"} limp (confirmed): pose ${confirmed.length === 1 ? "it" : "them"} by hand.`,
-    );
+    const words = { servos: servosText(t, confirmed) };
+    parts.push(confirmed.length === 1 ? t("editor.teach.limpOne", words) : t("editor.teach.limpMany", words));
   }
   if (silent.length > 0) {
+    const words = { servos: servosText(t, silent) };
     parts.push(
-      `${servos(silent)} did not answer and may still hold; check ${silent.length === 1 ? "its cable" : "their cables"}.`,
+      silent.length === 1 ? t("editor.teach.limpSilentOne", words) : t("editor.teach.limpSilentMany", words),
     );
   }
-  if (stopped) parts.push("Stop ended the rest: no other servo was made limp.");
-  if (parts.length === 0) parts.push("No servo was made limp.");
+  if (stopped) parts.push(t("editor.teach.limpStopped"));
+  if (parts.length === 0) parts.push(t("editor.teach.noneMadeLimp"));
   return { tone: silent.length > 0 || stopped ? "warning" : "ok", text: sentences(parts) };
 }
 
@@ -142,29 +192,33 @@ export function readNotice(
   reading: SceneReading,
   silent: readonly number[],
   zerosKnown: boolean,
+  locale: Locale = "en",
 ): Notice {
+  const t = translator(editorMessages, locale);
   const read = [...reading.pose.keys()];
-  const n = sceneNumber(scene);
+  const n = String(sceneNumber(scene));
   const parts: string[] = [];
   parts.push(
     read.length === 0
-      ? `Nothing was read into scene ${n}: no servo of this motion answered.`
-      : `Read ${servos(read)} into scene ${n} (its end pose; one undo step).`,
+      ? t("editor.teach.readNothing", { scene: n })
+      : t("editor.teach.readDone", { servos: servosText(t, read), scene: n }),
   );
   if (silent.length > 0) {
+    const words = { servos: servosText(t, silent) };
     parts.push(
-      `${servos(silent)} did not answer: ${silent.length === 1 ? "its position" : "their positions"} in the scene did not change; check ${silent.length === 1 ? "its cable" : "their cables"}.`,
+      silent.length === 1 ? t("editor.teach.readSilentOne", words) : t("editor.teach.readSilentMany", words),
     );
   }
   if (reading.converted.length > 0) {
-    parts.push(
-      `The robot's zeros differ from the motion's for ${servos(reading.converted)}: those positions were converted to the motion's zeros, so they play back where they were read.`,
-    );
+    parts.push(t("editor.teach.readConverted", { servos: servosText(t, reading.converted) }));
   }
-  if (!zerosKnown) parts.push("The robot's zeros could not be read, so the positions are stored as read.");
+  if (!zerosKnown) parts.push(t("editor.teach.readNoZeros"));
   if (reading.notInMotion.length > 0) {
+    const words = { servos: servosText(t, reading.notInMotion) };
     parts.push(
-      `${servos(reading.notInMotion)} ${reading.notInMotion.length === 1 ? "is" : "are"} not in this motion.`,
+      reading.notInMotion.length === 1
+        ? t("editor.teach.notInMotionOne", words)
+        : t("editor.teach.notInMotionMany", words),
     );
   }
   return {
@@ -181,25 +235,33 @@ export interface HeldServo {
 }
 
 /** What "Hold" (or "End teach-in") did. */
-export function holdNotice(held: readonly HeldServo[], silent: readonly number[], stopped = false): Notice {
+export function holdNotice(
+  held: readonly HeldServo[],
+  silent: readonly number[],
+  stopped = false,
+  locale: Locale = "en",
+): Notice {
+  const t = translator(editorMessages, locale);
   const parts: string[] = [];
   const ids = held.map((h) => h.id);
   if (held.length > 0) {
-    parts.push(
-      `${servos(ids)} ${held.length === 1 ? "holds" : "hold"} where ${held.length === 1 ? "it was" : "they were"} posed (torque on, confirmed).`,
-    );
+    const words = { servos: servosText(t, ids) };
+    parts.push(held.length === 1 ? t("editor.teach.heldOne", words) : t("editor.teach.heldMany", words));
   }
   for (const h of held) {
     if (h.held !== h.read) {
-      parts.push(`Servo ${h.id} was at ${h.read}, outside its safe range: it holds at ${h.held}.`);
+      parts.push(
+        t("editor.teach.heldClamped", { id: String(h.id), read: String(h.read), held: String(h.held) }),
+      );
     }
   }
   if (silent.length > 0) {
+    const words = { servos: servosText(t, silent) };
     parts.push(
-      `${servos(silent)} did not answer and may still be limp: hold the robot and check ${silent.length === 1 ? "its cable" : "their cables"}.`,
+      silent.length === 1 ? t("editor.teach.holdSilentOne", words) : t("editor.teach.holdSilentMany", words),
     );
   }
-  if (stopped) parts.push("Stop ended the rest: the servos not listed may still be limp.");
-  if (parts.length === 0) parts.push("No servo was limp: nothing to hold.");
+  if (stopped) parts.push(t("editor.teach.holdStopped"));
+  if (parts.length === 0) parts.push(t("editor.teach.nothingToHold"));
   return { tone: silent.length > 0 || stopped ? "warning" : "ok", text: sentences(parts) };
 }

@@ -1,13 +1,15 @@
 import "../../styles/editor-live.css";
 import { html, nothing, type TemplateResult } from "lit-html";
 import { live } from "lit-html/directives/live.js";
+import { translator } from "../../../i18n/translate.ts";
 import { HUNO_SERVO_IDS } from "../../../protocol/servo-limits.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
 import { servoRange } from "../servos/state.ts";
-import { jointName } from "../zeros/editor.ts";
+import { jointName } from "../zeros/joints/joint-name.ts";
 import type { EditorHost } from "./host.ts";
 import { liveOf, sceneNumber, type TeachInState, teachInOn } from "./live-state.ts";
+import { type EditorTranslator, editorMessages } from "./messages.ts";
 import {
   askTeachIn,
   cancelLimpAll,
@@ -20,16 +22,7 @@ import {
   toggleLimb,
 } from "./teach-in.ts";
 import { endTeachIn, holdPassive } from "./teach-in-hold.ts";
-import {
-  ALL_LIMBS,
-  choosesAll,
-  chosenIds,
-  idList,
-  LIMBS,
-  LIMP_ALL_QUESTION,
-  limbsText,
-  TEACH_IN_QUESTION,
-} from "./teach-in-model.ts";
+import { ALL_LIMBS, choosesAll, chosenIds, LIMBS, limbsText, servosText } from "./teach-in-model.ts";
 
 /**
  * Teach-in under the selected scene (issue #12 item 3): make chosen limbs limp, pose them by hand (sliders on
@@ -45,7 +38,13 @@ export function escapeTo(cancel: () => void): (e: KeyboardEvent) => void {
   };
 }
 
-function startBlock(ctx: ViewContext, t: TeachInState, busy: boolean, leftDirect: boolean): TemplateResult {
+function startBlock(
+  ctx: ViewContext,
+  w: EditorTranslator,
+  t: TeachInState,
+  busy: boolean,
+  leftDirect: boolean,
+): TemplateResult {
   if (t.phase === "asking") {
     return html`
       <div
@@ -55,35 +54,33 @@ function startBlock(ctx: ViewContext, t: TeachInState, busy: boolean, leftDirect
         data-testid="teach-in-confirm"
         @keydown=${escapeTo(() => cancelTeachIn(ctx))}
       >
-        <p id="teach-in-question"><strong>${TEACH_IN_QUESTION}</strong></p>
-        <p class="small">The controller enters servo control: every servo holds until you make some limp.</p>
+        <p id="teach-in-question"><strong>${w("editor.teach.question")}</strong></p>
+        <p class="small">${w("editor.teach.questionDetail")}</p>
         <div class="actions">
           <button type="button" class="btn btn--primary" id="confirm-teach-in" @click=${() => void startTeachIn(ctx)}>
-            Start teach-in
+            ${w("editor.teach.start")}
           </button>
-          <button type="button" class="btn" @click=${() => cancelTeachIn(ctx)}>Cancel</button>
+          <button type="button" class="btn" @click=${() => cancelTeachIn(ctx)}>${w("editor.teach.cancel")}</button>
         </div>
       </div>
     `;
   }
   return html`
-    ${leftDirect ? html`<p class="muted small" data-testid="teach-in-left">Teach-in ended: the robot left servo control.</p>` : nothing}
-    <p class="muted small">
-      Pose the robot by hand: choose limbs to make limp, move them, and read the pose into the selected scene.
-    </p>
+    ${leftDirect ? html`<p class="muted small" data-testid="teach-in-left">${w("editor.teach.left")}</p>` : nothing}
+    <p class="muted small">${w("editor.teach.about")}</p>
     <div class="actions">
       <button type="button" class="btn" id="start-teach-in" ?disabled=${busy || t.phase === "starting"} @click=${() => askTeachIn(ctx)}>
-        ${t.phase === "starting" ? "Starting…" : "Start teach-in…"}
+        ${t.phase === "starting" ? w("editor.teach.starting") : w("editor.teach.startAsk")}
       </button>
     </div>
   `;
 }
 
-function limbChoice(ctx: ViewContext, t: TeachInState, busy: boolean): TemplateResult {
+function limbChoice(ctx: ViewContext, w: EditorTranslator, t: TeachInState, busy: boolean): TemplateResult {
   const all = choosesAll(t.limbs);
   return html`
     <fieldset class="teach-limbs" ?disabled=${busy}>
-      <legend>Servos to make limp</legend>
+      <legend>${w("editor.teach.limbsLegend")}</legend>
       ${LIMBS.map(
         (l) => html`<label class="check">
           <input
@@ -92,7 +89,7 @@ function limbChoice(ctx: ViewContext, t: TeachInState, busy: boolean): TemplateR
             .checked=${live(t.limbs.includes(l.limb))}
             @change=${(e: Event) => toggleLimb(ctx, l.limb, (e.target as HTMLInputElement).checked)}
           />
-          ${l.label} <span class="muted small num">(${l.ids.length === 1 ? "servo" : "servos"} ${idList(l.ids)})</span>
+          ${w(l.key)} <span class="muted small num">(${servosText(w, l.ids)})</span>
         </label>`,
       )}
       <label class="check">
@@ -102,13 +99,13 @@ function limbChoice(ctx: ViewContext, t: TeachInState, busy: boolean): TemplateR
           .checked=${live(all)}
           @change=${(e: Event) => chooseLimbs(ctx, (e.target as HTMLInputElement).checked ? ALL_LIMBS : [])}
         />
-        All servos <span class="muted small">(hold the robot: it cannot stand)</span>
+        ${w("editor.teach.allServos")} <span class="muted small">${w("editor.teach.allServosNote")}</span>
       </label>
     </fieldset>
   `;
 }
 
-function limpAllQuestion(ctx: ViewContext): TemplateResult {
+function limpAllQuestion(ctx: ViewContext, w: EditorTranslator): TemplateResult {
   return html`
     <div
       class="confirm confirm--warning"
@@ -117,11 +114,13 @@ function limpAllQuestion(ctx: ViewContext): TemplateResult {
       data-testid="limp-all-confirm"
       @keydown=${escapeTo(() => cancelLimpAll(ctx))}
     >
-      <p id="limp-all-question"><strong>${LIMP_ALL_QUESTION}</strong></p>
+      <p id="limp-all-question"><strong>${w("editor.teach.limpAllQuestion")}</strong></p>
       <div class="actions">
-        <button type="button" class="btn" id="cancel-limp-all" @click=${() => cancelLimpAll(ctx)}>Cancel</button>
+        <button type="button" class="btn" id="cancel-limp-all" @click=${() => cancelLimpAll(ctx)}>
+          ${w("editor.teach.cancel")}
+        </button>
         <button type="button" class="btn btn--danger" @click=${() => void makeChosenLimp(ctx, true)}>
-          Make all 16 servos limp
+          ${w("editor.teach.limpAll")}
         </button>
       </div>
     </div>
@@ -131,6 +130,7 @@ function limpAllQuestion(ctx: ViewContext): TemplateResult {
 /** One slider per limp servo of the demo robot: the hand that poses it. */
 function handSliders(
   ctx: ViewContext,
+  w: EditorTranslator,
   t: TeachInState,
   ids: readonly number[],
   busy: boolean,
@@ -138,14 +138,16 @@ function handSliders(
   if (ids.length === 0) return nothing;
   return html`
     <div class="teach-hand" data-testid="teach-in-hand">
-      <h3>Pose by hand (demo robot)</h3>
+      <h3>${w("editor.teach.handTitle")}</h3>
       <ul class="teach-sliders">
         ${ids.map((id) => {
           const { min, max } = servoRange(id);
           const position = t.positions[id];
           const shown = position === undefined ? min : Math.max(min, Math.min(max, position));
           return html`<li>
-            <label for=${`teach-hand-${id}`}>${jointName(id)} <span class="muted small">(servo ${id})</span></label>
+            <label for=${`teach-hand-${id}`}>
+              ${jointName(id, w.locale)} <span class="muted small">${w("editor.servoParen", { id: String(id) })}</span>
+            </label>
             <input
               id=${`teach-hand-${id}`}
               type="range"
@@ -165,7 +167,13 @@ function handSliders(
   `;
 }
 
-function onBlock(ctx: ViewContext, host: EditorHost, t: TeachInState, busy: boolean): TemplateResult {
+function onBlock(
+  ctx: ViewContext,
+  w: EditorTranslator,
+  host: EditorHost,
+  t: TeachInState,
+  busy: boolean,
+): TemplateResult {
   const chosen = chosenIds(t.limbs);
   const demo = ctx.session.demoSim !== undefined;
   const limp = ctx.state.connection.limp === true;
@@ -174,38 +182,45 @@ function onBlock(ctx: ViewContext, host: EditorHost, t: TeachInState, busy: bool
     <p class="muted small" data-testid="teach-in-status">
       ${
         limp
-          ? "Every servo is limp (Limp): hold the robot."
+          ? w("editor.teach.statusAllLimp")
           : t.passive.length > 0
-            ? `Limp: ${t.passive.length === 1 ? "servo" : "servos"} ${idList(t.passive)}. The other servos hold.`
-            : "Every servo holds. Choose limbs and press Make limp."
+            ? w("editor.teach.statusLimp", { servos: servosText(w, t.passive) })
+            : w("editor.teach.statusHolding")
       }
     </p>
-    ${limbChoice(ctx, t, busy || t.confirmingAll)}
+    ${limbChoice(ctx, w, t, busy || t.confirmingAll)}
     ${
       t.confirmingAll
-        ? limpAllQuestion(ctx)
+        ? limpAllQuestion(ctx, w)
         : html`<div class="actions">
             <button type="button" class="btn" id="make-limp" ?disabled=${busy || chosen.length === 0} @click=${() => void makeChosenLimp(ctx)}>
-              ${t.busy === "limp" ? "Making limp…" : `Make ${chosen.length === 0 ? "chosen servos" : limbsText(t.limbs)} limp`}
+              ${
+                t.busy === "limp"
+                  ? w("editor.teach.makingLimp")
+                  : chosen.length === 0
+                    ? w("editor.teach.makeChosenLimp")
+                    : w("editor.teach.makeLimp", { limbs: limbsText(t.limbs, w.locale) })
+              }
             </button>
           </div>`
     }
-    ${demo ? handSliders(ctx, t, limp ? HUNO_SERVO_IDS : t.passive, busy) : html`<p class="muted small">Move the limp joints by hand, then read the pose.</p>`}
+    ${demo ? handSliders(ctx, w, t, limp ? HUNO_SERVO_IDS : t.passive, busy) : html`<p class="muted small">${w("editor.teach.moveByHand")}</p>`}
     <div class="actions">
       <button type="button" class="btn btn--primary" data-testid="read-pose" ?disabled=${busy} @click=${() => void readIntoScene(ctx, host)}>
-        ${t.busy === "reading" ? "Reading…" : `Read pose into scene ${sceneNumber(host.scene)}`}
+        ${t.busy === "reading" ? w("editor.teach.reading") : w("editor.teach.readInto", { scene: String(sceneNumber(host.scene)) })}
       </button>
       <button type="button" class="btn" data-testid="hold" ?disabled=${busy || !anyLimp} @click=${() => void holdPassive(ctx)}>
-        ${t.busy === "holding" ? "Holding…" : "Hold"}
+        ${t.busy === "holding" ? w("editor.teach.holding") : w("editor.teach.hold")}
       </button>
       <button type="button" class="btn" data-testid="end-teach-in" ?disabled=${busy} @click=${() => void endTeachIn(ctx)}>
-        ${t.phase === "ending" ? "Ending…" : "End teach-in"}
+        ${t.phase === "ending" ? w("editor.teach.ending") : w("editor.teach.end")}
       </button>
     </div>
   `;
 }
 
 export function teachInPanel(ctx: ViewContext, host: EditorHost): TemplateResult {
+  const w = translator(editorMessages, ctx.state.locale);
   const connected = ctx.state.connection.phase === "connected";
   const t = liveOf(ctx.state).teach;
   const on = teachInOn(ctx.state);
@@ -214,15 +229,15 @@ export function teachInPanel(ctx: ViewContext, host: EditorHost): TemplateResult
   const leftDirect = connected && !on && (t.phase === "on" || t.phase === "ending");
   return html`
     <section class="card live-panel" aria-labelledby="teach-in-title" data-testid="teach-in">
-      <h2 id="teach-in-title" class="card-title">Teach-in</h2>
+      <h2 id="teach-in-title" class="card-title">${w("editor.teach.title")}</h2>
       ${
         !connected
-          ? html`<p class="muted small" data-testid="teach-in-hint">Connect a robot (or the demo robot) to pose it by hand and read the pose into this scene.</p>`
+          ? html`<p class="muted small" data-testid="teach-in-hint">${w("editor.teach.hint")}</p>`
           : on
-            ? onBlock(ctx, host, t, busy)
-            : startBlock(ctx, t, busy, leftDirect)
+            ? onBlock(ctx, w, host, t, busy)
+            : startBlock(ctx, w, t, busy, leftDirect)
       }
-      ${connected ? liveNotice(t.notice, "Teach-in result") : nothing}
+      ${connected ? liveNotice(t.notice, w("editor.teach.resultLabel"), w.locale) : nothing}
     </section>
   `;
 }

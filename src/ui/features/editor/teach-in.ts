@@ -4,6 +4,7 @@
  * chosen servos is ever made passive; Stop (top bar) cancels what is queued and never makes a servo passive.
  */
 import { RbcCancelledError, RbcTimeoutError } from "../../../device/errors.ts";
+import { translator } from "../../../i18n/translate.ts";
 import { MotionError, PLATFORM_PF2, setPose } from "../../../motion/index.ts";
 import { HUNO_SERVO_IDS } from "../../../protocol/servo-limits.ts";
 import type { SimulatedRbc } from "../../../sim/simulated-rbc.ts";
@@ -13,6 +14,8 @@ import { focusSoon } from "../../focus.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
 import type { EditorHost } from "./host.ts";
 import { type Limb, liveOf, patchTeachIn, sceneNumber, teachInOn } from "./live-state.ts";
+import { type EditorTranslator, editorMessages } from "./messages.ts";
+import { refusalText } from "./refusal-text.ts";
 import { choosesAll, chosenIds, limpNotice, readNotice, sceneReading } from "./teach-in-model.ts";
 
 /** The demo robot's servos, watched while teach-in is on (the hand moves them; the 3D view follows). */
@@ -44,6 +47,11 @@ export class TeachInWatch implements Controller {
 
 export const TEACH_IN_WATCH = controllerKey("teach-in watch", (ctx: AppContext) => new TeachInWatch(ctx));
 
+/** Teach-in's words in the panel's language of the moment. */
+function words(ctx: AppContext): EditorTranslator {
+  return translator(editorMessages, ctx.store.get().locale);
+}
+
 /** "Start teach-in": asks first (the chosen servos will go limp). */
 export function askTeachIn(ctx: AppContext): void {
   if (!ctx.session.current) return;
@@ -65,6 +73,7 @@ export async function startTeachIn(ctx: AppContext): Promise<void> {
   const { store, session } = ctx;
   const client = session.current;
   if (!client) return;
+  const t = words(ctx);
   patchTeachIn(store, {
     phase: "starting",
     notice: undefined,
@@ -79,7 +88,7 @@ export async function startTeachIn(ctx: AppContext): Promise<void> {
   const readZeros = robotZeros === undefined && !(client.mode === "direct" && state.connection.limp === true);
   try {
     await session.run(
-      "Starting teach-in",
+      t("editor.teach.run.start"),
       async (c) => {
         if (readZeros) {
           if (c.mode === "direct") await c.exitDirectMode();
@@ -93,8 +102,11 @@ export async function startTeachIn(ctx: AppContext): Promise<void> {
     patchTeachIn(store, {
       phase: "off",
       notice: errorNotice(
-        `Teach-in could not start; the robot is ${session.current?.mode === "direct" ? "in servo control" : "in its normal mode"} and no servo was made limp.`,
+        session.current?.mode === "direct"
+          ? t("editor.teach.startFailedDirect")
+          : t("editor.teach.startFailedNormal"),
         e,
+        t.locale,
       ),
     });
     return;
@@ -105,9 +117,7 @@ export async function startTeachIn(ctx: AppContext): Promise<void> {
     robotZeros,
     notice: {
       tone: limp ? "warning" : "info",
-      text: limp
-        ? "Teach-in is on (servo control). Every servo is limp (Limp): hold the robot, pose it, then read the pose or press Hold."
-        : "Teach-in is on (servo control): choose the limbs to pose by hand and press Make limp. Every servo holds until then.",
+      text: limp ? t("editor.teach.onAllLimp") : t("editor.teach.on"),
     },
   });
   const sim = session.demoSim;
@@ -118,15 +128,17 @@ export async function startTeachIn(ctx: AppContext): Promise<void> {
   try {
     const { silent } = await readPositions(ctx);
     if (silent.length > 0) {
+      const ids = { ids: silent.join(", ") };
       patchTeachIn(store, {
         notice: {
           tone: "warning",
-          text: `Teach-in is on, but servo ${silent.join(", ")} did not answer: check ${silent.length === 1 ? "its cable" : "their cables"}.`,
+          text:
+            silent.length === 1 ? t("editor.teach.onSilentOne", ids) : t("editor.teach.onSilentMany", ids),
         },
       });
     }
   } catch (e) {
-    patchTeachIn(store, { notice: errorNotice("Teach-in is on, but reading the servos failed.", e) });
+    patchTeachIn(store, { notice: errorNotice(t("editor.teach.onReadFailed"), e, t.locale) });
   }
 }
 
@@ -135,7 +147,7 @@ async function readPositions(
   ctx: AppContext,
 ): Promise<{ reads: { id: number; position: number }[]; silent: number[] }> {
   const { servos, silent } = await ctx.session.run(
-    "Teach-in: reading the servos",
+    words(ctx)("editor.teach.run.read"),
     (c) => c.servos.readAll(HUNO_SERVO_IDS),
     { packetMode: false },
   );
@@ -174,12 +186,13 @@ export async function makeChosenLimp(ctx: AppContext, confirmed = false): Promis
     return;
   }
   patchTeachIn(store, { busy: "limp", confirmingAll: false, notice: undefined });
+  const t = words(ctx);
   const done: number[] = [];
   const silent: number[] = [];
   let stopped = false;
   try {
     await session.run(
-      "Teach-in: making servos limp",
+      t("editor.teach.run.limp"),
       async (c) => {
         for (const id of ids) {
           try {
@@ -195,12 +208,18 @@ export async function makeChosenLimp(ctx: AppContext, confirmed = false): Promis
     );
   } catch (e) {
     if (!(e instanceof RbcCancelledError)) {
-      patchTeachIn(store, (t) => ({
+      patchTeachIn(store, (x) => ({
         busy: undefined,
-        passive: merge(t.passive, done),
+        passive: merge(x.passive, done),
         notice: {
           tone: "danger",
-          text: `Making servos limp failed: ${errorMessage(e)} ${done.length > 0 ? `Servo ${done.join(", ")} went limp; hold the robot.` : "No servo went limp."}`,
+          text: t("editor.teach.limpFailed", {
+            error: errorMessage(e, t.locale),
+            after:
+              done.length > 0
+                ? t("editor.teach.wentLimp", { ids: done.join(", ") })
+                : t("editor.teach.noneWentLimp"),
+          }),
           detail: technicalDetail(e),
         },
       }));
@@ -208,11 +227,11 @@ export async function makeChosenLimp(ctx: AppContext, confirmed = false): Promis
     }
     stopped = true;
   }
-  patchTeachIn(store, (t) => ({
+  patchTeachIn(store, (x) => ({
     busy: undefined,
-    passive: merge(t.passive, done),
+    passive: merge(x.passive, done),
     silent,
-    notice: limpNotice(done, silent, stopped),
+    notice: limpNotice(done, silent, stopped, t.locale),
   }));
 }
 
@@ -231,10 +250,7 @@ export function poseByHand(ctx: AppContext, id: number, position: number): void 
   if (!sim) return;
   if (!sim.poseByHand(id, position)) {
     patchTeachIn(ctx.store, {
-      notice: {
-        tone: "warning",
-        text: `Servo ${id} holds its position (torque on): make it limp first to pose it by hand.`,
-      },
+      notice: { tone: "warning", text: words(ctx)("editor.teach.holdsTorque", { id: String(id) }) },
     });
   }
 }
@@ -244,6 +260,8 @@ export async function readIntoScene(ctx: AppContext, host: EditorHost): Promise<
   const { store } = ctx;
   if (!teachInOn(store.get()) || liveOf(store.get()).teach.busy) return;
   const scene = host.scene;
+  const t = words(ctx);
+  const n = String(sceneNumber(scene));
   patchTeachIn(store, { busy: "reading", notice: undefined });
   try {
     const { reads, silent } = await readPositions(ctx);
@@ -251,19 +269,20 @@ export async function readIntoScene(ctx: AppContext, host: EditorHost): Promise<
     const platform = store.get().connection.platform;
     const reading = sceneReading(host.doc, reads, teach.robotZeros, platform);
     if (reading.pose.size > 0) {
-      host.commit(setPose(host.doc, scene, reading.pose), `Read pose into scene ${sceneNumber(scene)}`);
+      host.commit(setPose(host.doc, scene, reading.pose), t("editor.teach.readInto", { scene: n }));
     }
+    const zerosKnown = teach.robotZeros !== undefined || platform === PLATFORM_PF2;
     patchTeachIn(store, {
       busy: undefined,
-      notice: readNotice(scene, reading, silent, teach.robotZeros !== undefined || platform === PLATFORM_PF2),
+      notice: readNotice(scene, reading, silent, zerosKnown, t.locale),
     });
   } catch (e) {
     patchTeachIn(store, {
       busy: undefined,
       notice:
         e instanceof MotionError
-          ? { tone: "danger", text: `${e.message} The scene did not change.` }
-          : errorNotice(`Reading the pose failed; scene ${sceneNumber(scene)} did not change.`, e),
+          ? { tone: "danger", text: t("editor.teach.sceneUnchanged", { reason: refusalText(e, t) }) }
+          : errorNotice(t("editor.teach.readFailed", { scene: n }), e, t.locale),
     });
   }
 }

@@ -1,4 +1,5 @@
 import { html, nothing, type TemplateResult } from "lit-html";
+import { translator } from "../../../i18n/translate.ts";
 import { canRedo, canUndo, type Motion, redoLabel, undoLabel } from "../../../motion/index.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
@@ -6,31 +7,34 @@ import { formatSeconds } from "../motions/plot-data.ts";
 import { redoNext, typeMotionName, undoLast } from "./actions.ts";
 import { newDocument, openDocumentFile, saveDocument, setEditorDragging } from "./document-actions.ts";
 import { motionFileName } from "./file-name.ts";
+import { type EditorTranslator, editorMessages } from "./messages.ts";
 import { formatSavedAt } from "./saved-at.ts";
 import type { EditorState } from "./state.ts";
 import { problemText } from "./view-parts.ts";
 
 /** The editor's toolbar: New, Open (picker or drop), Save, the motion's name, Undo and Redo, the draft's state. */
 
-function draftStatus(s: EditorState): TemplateResult {
+function draftStatus(t: EditorTranslator, s: EditorState): TemplateResult | string {
   if (s.saveProblem) return html`<span class="text-danger">${s.saveProblem}</span>`;
   if (s.savedAt !== undefined) {
-    return html`Kept on this computer as a draft (saved ${formatSavedAt(s.savedAt, Date.now())}).`;
+    return t("editor.draftKept", { time: formatSavedAt(s.savedAt, Date.now(), t.locale) });
   }
-  return html`Changes are kept on this computer as a draft as you make them.`;
+  return t("editor.draftWillKeep");
 }
 
-function fileButtons(ctx: ViewContext, doc: Motion): TemplateResult {
+function fileButtons(ctx: ViewContext, t: EditorTranslator, doc: Motion): TemplateResult {
   return html`
     <div class="row-actions">
-      <button type="button" class="btn" data-testid="editor-new" @click=${() => void newDocument(ctx)}>New</button>
+      <button type="button" class="btn" data-testid="editor-new" @click=${() => void newDocument(ctx)}>
+        ${t("editor.new")}
+      </button>
       <button
         type="button"
         class="btn"
         data-testid="editor-open"
         @click=${() => document.getElementById("editor-file")?.click()}
       >
-        Open…
+        ${t("editor.open")}
       </button>
       <button
         type="button"
@@ -39,9 +43,9 @@ function fileButtons(ctx: ViewContext, doc: Motion): TemplateResult {
         aria-describedby="editor-save-as"
         @click=${() => saveDocument(ctx)}
       >
-        Save .rbm
+        ${t("editor.save")}
       </button>
-      <span id="editor-save-as" class="muted small editor-save-as long-text" data-testid="editor-save-as">as ${motionFileName(doc.name)}</span>
+      <span id="editor-save-as" class="muted small editor-save-as long-text" data-testid="editor-save-as">${t("editor.saveAs", { file: motionFileName(doc.name) })}</span>
     </div>
     <input
       id="editor-file"
@@ -61,7 +65,11 @@ function fileButtons(ctx: ViewContext, doc: Motion): TemplateResult {
   `;
 }
 
-function historyButtons(ctx: ViewContext, s: EditorState): TemplateResult | typeof nothing {
+function historyButtons(
+  ctx: ViewContext,
+  t: EditorTranslator,
+  s: EditorState,
+): TemplateResult | typeof nothing {
   const h = s.history;
   if (!h) return nothing;
   const undoWhat = undoLabel(h);
@@ -76,7 +84,7 @@ function historyButtons(ctx: ViewContext, s: EditorState): TemplateResult | type
         ?disabled=${!canUndo(h)}
         @click=${() => undoLast(ctx)}
       >
-        ${undoWhat === undefined ? "Undo" : `Undo: ${undoWhat}`}
+        ${undoWhat === undefined ? t("editor.undo") : t("editor.undoWhat", { what: undoWhat })}
       </button>
       <button
         type="button"
@@ -86,19 +94,20 @@ function historyButtons(ctx: ViewContext, s: EditorState): TemplateResult | type
         ?disabled=${!canRedo(h)}
         @click=${() => redoNext(ctx)}
       >
-        ${redoWhat === undefined ? "Redo" : `Redo: ${redoWhat}`}
+        ${redoWhat === undefined ? t("editor.redo") : t("editor.redoWhat", { what: redoWhat })}
       </button>
     </div>
   `;
 }
 
 export function toolbar(ctx: ViewContext, s: EditorState, doc: Motion): TemplateResult {
+  const t = translator(editorMessages, ctx.state.locale);
   const problem = s.problems["motion-name"];
-  const total = doc.scenes.reduce((t, scene) => t + scene.timeMs, 0);
+  const total = doc.scenes.reduce((sum, scene) => sum + scene.timeMs, 0);
   return html`
     <section
       class="card editor-toolbar ${s.dragging ? "is-dragging" : ""}"
-      aria-label="Motion file"
+      aria-label=${t("editor.toolbar.label")}
       data-testid="editor-toolbar"
       @dragenter=${(e: DragEvent) => {
         e.preventDefault();
@@ -119,12 +128,12 @@ export function toolbar(ctx: ViewContext, s: EditorState, doc: Motion): Template
       }}
     >
       <div class="editor-toolbar-row">
-        ${fileButtons(ctx, doc)}
-        <span class="muted small editor-drop-hint">Open a Motionbuilder file (.rbm), or drop one here.</span>
+        ${fileButtons(ctx, t, doc)}
+        <span class="muted small editor-drop-hint">${t("editor.dropHint")}</span>
       </div>
       <div class="editor-toolbar-row">
         <label class="editor-field editor-name">
-          <span>Motion name</span>
+          <span>${t("editor.motionName")}</span>
           <input
             type="text"
             data-testid="motion-name"
@@ -137,13 +146,13 @@ export function toolbar(ctx: ViewContext, s: EditorState, doc: Motion): Template
           />
         </label>
         <span class="num muted small editor-facts" data-testid="motion-facts">
-          ${doc.scenes.length} ${doc.scenes.length === 1 ? "scene" : "scenes"} · plays for ${formatSeconds(total)}
+          ${t("editor.facts", { count: doc.scenes.length, time: formatSeconds(total, t.locale) })}
         </span>
-        ${historyButtons(ctx, s)}
+        ${historyButtons(ctx, t, s)}
       </div>
       ${problemText("motion-name-problem", problem)}
-      <p class="muted small editor-draft-status" data-testid="draft-status">${draftStatus(s)}</p>
-      ${liveNotice(s.notice, "Editor result")}
+      <p class="muted small editor-draft-status" data-testid="draft-status">${draftStatus(t, s)}</p>
+      ${liveNotice(s.notice, t("editor.resultLabel"), t.locale)}
     </section>
   `;
 }

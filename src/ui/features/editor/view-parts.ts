@@ -1,4 +1,5 @@
 import { html, nothing, type TemplateResult } from "lit-html";
+import type { EditorTranslator } from "./messages.ts";
 import type { FieldProblem } from "./state.ts";
 
 /** Small pieces the editor's views share. */
@@ -9,7 +10,10 @@ export function problemText(id: string, problem: FieldProblem | undefined): Temp
   return html`<p id=${id} class="text-danger small field-problem" data-testid="field-problem">${problem.message}</p>`;
 }
 
-export const TORQUE_WORDS: readonly string[] = ["0 (strong)", "1", "2", "3", "4 (weak)"];
+/** The torque values 0-4 as the scene's torque choice names them: "0 (strong)" … "4 (weak)". */
+export function torqueWords(t: EditorTranslator): readonly string[] {
+  return [t("editor.torque.strong"), "1", "2", "3", t("editor.torque.weak")];
+}
 export const TORQUE_VALUES: readonly number[] = [0, 1, 2, 3, 4];
 export const PORT_VALUES: readonly number[] = [0, 1, 2, 3];
 
