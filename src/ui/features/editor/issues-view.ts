@@ -5,19 +5,21 @@ import type { RbmIssue, RbmValidation } from "../../../protocol/rbm-validate.ts"
 import { formatCount } from "../../format.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
 import { groupWarnings, type WarningGroup, weightWord } from "../motions/issue-groups.ts";
+import { issueWords } from "../motions/issue-text.ts";
 import { chooseScene } from "./actions.ts";
 import { type EditorTranslator, editorMessages } from "./messages.ts";
 
 /**
  * The document's check, compact: a one-line summary, then one line per kind of warning (its weight, what it
  * means, how many), with the single warnings on demand; a warning that names a scene selects it. The kinds are
- * named in the panel's language (the Motions view's words); the validator's own sentences are English, marked
- * as such in Korean.
+ * named in the panel's language (the Motions view's words), and so is each warning (`issueWords`, the motion
+ * file checker's sentences); one the catalogue cannot word stays English, marked as such.
  */
 
-/** The validator's sentence: English, said so to a Korean screen reader. */
+/** The checker's sentence in the panel's language, or its English marked as English. */
 function issueMessage(t: EditorTranslator, issue: RbmIssue): TemplateResult | string {
-  return t.locale === "en" ? issue.message : html`<span lang="en">${issue.message}</span>`;
+  const words = issueWords(issue, t.locale);
+  return words.lang === t.locale ? words.text : html`<span lang="en">${words.text}</span>`;
 }
 
 function issueLine(ctx: ViewContext, t: EditorTranslator, issue: RbmIssue): TemplateResult {
