@@ -1,5 +1,6 @@
 import { RbcPortError } from "../device/errors.ts";
 import { RbcClient } from "../device/rbc-client.ts";
+import type { LinkKind } from "../device/round-trip.ts";
 import type { DeviceIdentity } from "../device/types.ts";
 import type { Locale } from "../i18n/locale.ts";
 import { translator } from "../i18n/translate.ts";
@@ -169,6 +170,15 @@ export async function openRobotPort(command: string, values: GlobalValues, env: 
   };
 }
 
+/**
+ * What a port's path says about its link: a Bluetooth serial port (Linux `/dev/rfcomm0`, macOS
+ * `/dev/tty.RBC-Bluetooth-SerialPort` and the like) starts with generous timeouts until its round trip is
+ * measured (src/device/round-trip.ts); anything else is taken as a wired adapter, as before.
+ */
+export function linkKindOfPath(path: string): LinkKind {
+  return /rfcomm|bluetooth|[-_.]spp\b/i.test(path) ? "bluetooth" : "wired";
+}
+
 /** The port could not be opened at all (not lost later): the link's "open-failed" or "port-busy". */
 function isOpenFailure(e: RbcPortError): boolean {
   const cause = e.cause;
@@ -184,7 +194,10 @@ export async function connectRobot(
 ): Promise<Robot> {
   const target = robotTarget(command, values, env.env);
   const { transport, dispose, clock, bootloader } = await robotTransport(target, command, env);
-  const client = new RbcClient(transport, { clock });
+  const client = new RbcClient(transport, {
+    clock,
+    link: target.demo ? "wired" : linkKindOfPath(target.port),
+  });
   if (values.log) {
     const t0 = client.clock.now();
     client.log.on((entry) =>

@@ -527,3 +527,15 @@ describe("the built CLI (dist-cli/)", () => {
     expect(later.packages.has("serialport")).toBe(true);
   });
 });
+
+describe("linkKindOfPath", () => {
+  it("takes Bluetooth serial ports by their usual names, everything else as wired", async () => {
+    const { linkKindOfPath } = await import("../../src/cli/connect.ts");
+    expect(linkKindOfPath("/dev/rfcomm0")).toBe("bluetooth");
+    expect(linkKindOfPath("/dev/tty.RBC-Bluetooth-SerialPort")).toBe("bluetooth");
+    expect(linkKindOfPath("/dev/cu.HC-06-SPP")).toBe("bluetooth");
+    expect(linkKindOfPath("/dev/ttyUSB0")).toBe("wired");
+    expect(linkKindOfPath("COM3")).toBe("wired");
+    expect(linkKindOfPath("/dev/ttyS0")).toBe("wired");
+  });
+});
