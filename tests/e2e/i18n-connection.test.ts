@@ -5,150 +5,27 @@
  * and 390×844: `lang="ko"`, Korean shown, no catalogue key in place of its text, no label wider than its
  * button, nothing scrolling sideways, and no axe violation. With RBC_SHOTS=<dir>, screenshots go there.
  */
-import { mkdir } from "node:fs/promises";
-import { createRequire } from "node:module";
-import { join } from "node:path";
-import type { BrowserContext, Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { unitMessages } from "../../src/i18n/messages.ts";
-import { connectionMessages } from "../../src/ui/features/connection/messages.ts";
-import { robotMessages } from "../../src/ui/features/robot/messages.ts";
-import { uiMessages } from "../../src/ui/messages.ts";
-import { shellMessages } from "../../src/ui/shell/messages.ts";
-import { type AppHarness, buildOnce, FAST, squash, startHarness } from "./harness.ts";
+import type { Page } from "playwright-core";
+import { describe, expect, it } from "vitest";
+import { FAST, squash } from "./harness.ts";
+import { expectPageOk, newLocalePage, SIZES, type Size, useApp } from "./i18n-checks.ts";
 import type { RbcTestOptions } from "./rbc-test-globals.ts";
 import "./rbc-test-globals.ts";
 
-const require = createRequire(import.meta.url);
-const AXE_PATH = require.resolve("axe-core/axe.min.js");
+const app = useApp();
 
-const PHONE = { width: 390, height: 844 };
-const DESKTOP = { width: 1280, height: 800 };
-const SIZES = [DESKTOP, PHONE] as const;
-type Size = (typeof SIZES)[number];
+/** The panel in a Korean browser, with the fake serial port (`options`) or, with `noSerial`, no Web Serial. */
+const koreanPage = (size: Size, setup: { options?: RbcTestOptions; noSerial?: boolean } = {}) =>
+  newLocalePage(app, "ko-KR", { size, ...setup });
 
-/** Every key of the catalogues these pages use: none may show on the page in place of its text. */
-const KEYS = [connectionMessages, shellMessages, robotMessages, uiMessages, unitMessages].flatMap((m) =>
-  Object.keys(m),
-);
-
-const SHOTS = process.env.RBC_SHOTS;
-
-let app: AppHarness;
-let fakeSerial: string;
-
-beforeAll(async () => {
-  app = await startHarness();
-  ({ fakeSerial } = await buildOnce());
-  if (SHOTS) await mkdir(SHOTS, { recursive: true });
-});
-
-afterAll(async () => {
-  await app?.close();
-});
-
-/**
- * A page in a Korean browser, with the fake serial port (its `options`) or, with `noSerial`, without Web
- * Serial. `bypassCSP` lets axe be added as a script (the panel's CSP rightly refuses it).
- */
-async function koreanPage(
-  size: Size,
-  setup: { options?: RbcTestOptions; noSerial?: boolean } = {},
-): Promise<{ context: BrowserContext; page: Page }> {
-  const context = await app.browser.newContext({
-    locale: "ko-KR",
-    viewport: size,
-    serviceWorkers: "block",
-    reducedMotion: "reduce",
-    bypassCSP: true,
-  });
-  const script = setup.noSerial
-    ? "delete Navigator.prototype.serial; delete navigator.serial;"
-    : `window.__rbcTestOptions = ${JSON.stringify(setup.options ?? {})};\n;\n${fakeSerial}`;
-  await context.addInitScript({ content: script });
-  const page = await context.newPage();
-  await page.goto(app.url, { waitUntil: "domcontentloaded" });
-  return { context, page };
-}
-
-const lang = (page: Page) => page.evaluate(() => document.documentElement.lang);
 /** The top bar's status, part by part (the dot and the separators are decoration). */
 const status = (page: Page) =>
   page.getByTestId("connection-status").locator(".status-part, .demo-tag").allTextContents();
 const banner = (page: Page) => page.getByTestId("stop-banner");
 
-/** Buttons, navigation links, selects and summaries whose label is wider than they are. */
-async function overflowing(page: Page): Promise<string[]> {
-  return page.evaluate(() =>
-    Array.from(
-      document.querySelectorAll<HTMLElement>("button, .btn, .side-nav a, select, .skip-link, summary"),
-    )
-      .filter((b) => b.offsetParent !== null && b.scrollWidth > b.clientWidth)
-      .map(
-        (b) => `${(b.textContent ?? "").replace(/\s+/g, " ").trim()} (${b.scrollWidth} > ${b.clientWidth})`,
-      ),
-  );
-}
-
-/** Catalogue keys shown as text or in a label (a message the page could not find). */
-async function keysShown(page: Page): Promise<string[]> {
-  const text = await page.evaluate(() =>
-    [
-      document.title,
-      document.body.textContent ?? "",
-      ...Array.from(document.querySelectorAll("[aria-label], [title]")).map(
-        (e) => `${e.getAttribute("aria-label") ?? ""} ${e.getAttribute("title") ?? ""}`,
-      ),
-    ].join("\n"),
-  );
-  return KEYS.filter((key) => text.includes(key));
-}
-
-interface AxeViolation {
-  id: string;
-  impact: string | null;
-  help: string;
-  nodes: { target: unknown[]; failureSummary?: string }[];
-}
-
-/** axe's "needs review" results that are accepted (as in a11y.test.ts). */
-const REVIEWED: Record<string, string> = {
-  "color-contrast":
-    "axe cannot measure text it cannot see the background of (aria-hidden icons, text over other elements); " +
-    "the colour tokens are chosen for 4.5:1",
-};
-
-/** One line per violation or unreviewed "needs review": "rule (impact): help — element, element". */
-async function violations(page: Page): Promise<string[]> {
-  if (!(await page.evaluate(() => "axe" in window))) await page.addScriptTag({ path: AXE_PATH });
-  const found = await page.evaluate(async () => {
-    type Run = (o: unknown) => Promise<{ violations: unknown[]; incomplete: unknown[] }>;
-    const axe = (window as unknown as { axe: { run: Run } }).axe;
-    const result = await axe.run({ resultTypes: ["violations", "incomplete"] });
-    return { violations: result.violations, incomplete: result.incomplete };
-  });
-  const line = (v: AxeViolation, kind: string) =>
-    `${v.id} (${v.impact ?? "?"}${kind}): ${v.help} — ${v.nodes.map((n) => `${JSON.stringify(n.target)} ${(n.failureSummary ?? "").replace(/\s+/g, " ")}`).join(", ")}`;
-  return [
-    ...(found.violations as AxeViolation[]).map((v) => line(v, "")),
-    ...(found.incomplete as AxeViolation[])
-      .filter((v) => !(v.id in REVIEWED))
-      .map((v) => line(v, ", needs review")),
-  ];
-}
-
 /** What every state of every view must satisfy, in Korean, at `size`; a screenshot named `name`. */
-async function checkKorean(page: Page, size: Size, name: string): Promise<void> {
-  expect(await lang(page), name).toBe("ko");
-  expect(await keysShown(page), name).toEqual([]);
-  expect(await overflowing(page), name).toEqual([]);
-  expect(await page.evaluate(() => document.documentElement.scrollWidth), name).toBeLessThanOrEqual(
-    size.width,
-  );
-  const found = await violations(page);
-  expect(found, `axe on ${name}:\n${found.join("\n")}`).toEqual([]);
-  if (SHOTS) await page.screenshot({ path: join(SHOTS, `${name}-${size.width}.png`), fullPage: true });
-}
+const checkKorean = (page: Page, size: Size, name: string) =>
+  expectPageOk(page, name, { lang: "ko", shot: `connection-${name}-${size.width}` });
 
 describe("the connection in Korean", () => {
   for (const size of SIZES) {

@@ -5,157 +5,44 @@
  * device's words are Korean too: a refused file names its line, a cancelled update says what the robot holds,
  * and the device's English sentence stays in the technical detail. Recover (no robot connected) in Korean.
  * Last, the English catalogue says the device's notices and result sentence word for word (`rbc flash` says
- * them too).
+ * them too). With RBC_SHOTS=<dir>, screenshots go there.
  */
-import { mkdir } from "node:fs/promises";
-import { createRequire } from "node:module";
-import { join, resolve } from "node:path";
-import type { BrowserContext, Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import type { Page } from "playwright-core";
+import { describe, expect, it } from "vitest";
 import {
   FIRMWARE_NOTICES,
   type FirmwareUpdateResult,
   firmwareResultSentence,
 } from "../../src/device/firmware-update.ts";
-import { unitMessages } from "../../src/i18n/messages.ts";
 import { translator } from "../../src/i18n/translate.ts";
 import { firmwareMessages } from "../../src/ui/features/firmware/messages.ts";
 import { resultSentence } from "../../src/ui/features/firmware/update-outcome.ts";
-import { uiMessages } from "../../src/ui/messages.ts";
-import { shellMessages } from "../../src/ui/shell/messages.ts";
 import { firmwareHex } from "../support/hex.ts";
-import { type AppHarness, buildOnce, ROOT, squash, startHarness, watchPage } from "./harness.ts";
+import { squash, watchPage } from "./harness.ts";
+import {
+  connectDemo,
+  DESKTOP,
+  expectPageOk,
+  keysShown,
+  pageLang as lang,
+  newLocalePage,
+  PHONE,
+  useApp,
+} from "./i18n-checks.ts";
 import "./rbc-test-globals.ts";
 
-const require = createRequire(import.meta.url);
-const AXE_PATH = require.resolve("axe-core/axe.min.js");
-
-const PHONE = { width: 390, height: 844 };
-const DESKTOP = { width: 1280, height: 800 };
-
-/** Every key of the catalogues this view uses: none may show on the page in place of its text. */
-const KEYS = [firmwareMessages, shellMessages, uiMessages, unitMessages].flatMap((m) => Object.keys(m));
-
-/** Screenshots for people to look at (not compared): I18N_FIRMWARE_SCREENSHOTS=dir (e.g. /tmp/shots-c4). */
-const SHOTS = process.env.I18N_FIRMWARE_SCREENSHOTS;
-
-let app: AppHarness;
-let fakeSerial: string;
-
-beforeAll(async () => {
-  app = await startHarness();
-  ({ fakeSerial } = await buildOnce());
-});
-
-afterAll(async () => {
-  await app?.close();
-});
-
-async function shot(page: Page, name: string): Promise<void> {
-  if (!SHOTS) return;
-  const dir = resolve(ROOT, SHOTS);
-  await mkdir(dir, { recursive: true });
-  await page.screenshot({ path: join(dir, `${name}.png`), fullPage: true });
-}
-
-const lang = (page: Page) => page.evaluate(() => document.documentElement.lang);
-
-/** Buttons, navigation links and selects whose label is wider than they are, as "label (scroll > client)". */
-async function overflowing(page: Page): Promise<string[]> {
-  return page.evaluate(() =>
-    Array.from(document.querySelectorAll<HTMLElement>("button, .btn, .side-nav a, select, .skip-link"))
-      .filter((b) => b.offsetParent !== null && b.scrollWidth > b.clientWidth)
-      .map(
-        (b) => `${(b.textContent ?? "").replace(/\s+/g, " ").trim()} (${b.scrollWidth} > ${b.clientWidth})`,
-      ),
-  );
-}
-
-/** Catalogue keys shown as text or in a label (a message the page could not find). */
-async function keysShown(page: Page): Promise<string[]> {
-  const text = await page.evaluate(() =>
-    [
-      document.title,
-      document.body.textContent ?? "",
-      ...Array.from(document.querySelectorAll("[aria-label], [title], [aria-valuetext]")).map(
-        (e) =>
-          `${e.getAttribute("aria-label") ?? ""} ${e.getAttribute("title") ?? ""} ${e.getAttribute("aria-valuetext") ?? ""}`,
-      ),
-    ].join("\n"),
-  );
-  return KEYS.filter((key) => text.includes(key));
-}
-
-/** No label overflows, nothing scrolls sideways, no key shows: at `where`. */
-async function expectLaidOut(page: Page, where: string, width: number): Promise<void> {
-  expect(await overflowing(page), where).toEqual([]);
-  expect(await page.evaluate(() => document.documentElement.scrollWidth), where).toBeLessThanOrEqual(width);
-  expect(await keysShown(page), where).toEqual([]);
-}
+const app = useApp();
 
 /**
- * axe's "needs review" results that are accepted, each with the reason (as in a11y.test.ts); every other one
- * fails like a violation.
+ * No label overflows, nothing scrolls sideways, no key shows: at `where` (axe has a test of its own); the
+ * screenshot `shotName` with RBC_SHOTS.
  */
-const REVIEWED: Record<string, string> = {
-  "color-contrast":
-    "axe cannot measure text it cannot see the background of (aria-hidden icons, text over other elements); " +
-    "the colour tokens are chosen for 4.5:1",
-};
-
-interface AxeViolation {
-  id: string;
-  impact: string | null;
-  help: string;
-  nodes: { target: unknown[]; failureSummary?: string }[];
-}
-
-async function violations(page: Page): Promise<string[]> {
-  if (!(await page.evaluate(() => "axe" in window))) await page.addScriptTag({ path: AXE_PATH });
-  const found = await page.evaluate(async () => {
-    type Run = (o: unknown) => Promise<{ violations: unknown[]; incomplete: unknown[] }>;
-    const axe = (window as unknown as { axe: { run: Run } }).axe;
-    const result = await axe.run({ resultTypes: ["violations", "incomplete"] });
-    return { violations: result.violations, incomplete: result.incomplete };
-  });
-  const line = (v: AxeViolation, kind: string) =>
-    `${v.id} (${v.impact ?? "?"}${kind}): ${v.help} — ${v.nodes.map((n) => `${JSON.stringify(n.target)} ${(n.failureSummary ?? "").replace(/\s+/g, " ")}`).join(", ")}`;
-  return [
-    ...(found.violations as AxeViolation[]).map((v) => line(v, "")),
-    ...(found.incomplete as AxeViolation[])
-      .filter((v) => !(v.id in REVIEWED))
-      .map((v) => line(v, ", needs review")),
-  ];
-}
-
-async function expectNoViolations(page: Page, where: string): Promise<void> {
-  const found = await violations(page);
-  expect(found, `axe found ${found.length} violation(s) on ${where}:\n${found.join("\n")}\n`).toEqual([]);
-}
-
-/**
- * A Korean page with the page's CSP bypassed, so that axe can be added as a script (the harness's pages keep
- * the CSP, which rightly refuses it). Robot time runs 4 times faster.
- */
-async function newAxePage(): Promise<{ context: BrowserContext; page: Page }> {
-  const context = await app.browser.newContext({
-    locale: "ko-KR",
-    viewport: DESKTOP,
-    serviceWorkers: "block",
-    reducedMotion: "reduce",
-    bypassCSP: true,
-  });
-  await context.addInitScript({
-    content: `window.__rbcTestOptions = ${JSON.stringify({ timeScale: 4 })};\n;\n${fakeSerial}`,
-  });
-  return { context, page: await context.newPage() };
-}
+const expectLaidOut = (page: Page, where: string, shotName?: string) =>
+  expectPageOk(page, where, { axe: false, shot: shotName });
 
 /** The demo robot (the connect card's second button, whatever its language), then the Firmware view. */
 async function openFirmwareOnDemo(page: Page): Promise<void> {
-  await page.goto(app.url, { waitUntil: "domcontentloaded" });
-  await page.getByTestId("connect-card").locator(".actions .btn").nth(1).click();
-  await page.getByTestId("device-card").waitFor();
+  await connectDemo(page);
   await page.getByRole("link", { name: "펌웨어" }).click();
   await page.getByTestId("firmware-view").waitFor();
 }
@@ -181,6 +68,7 @@ describe("the Firmware view in Korean", () => {
     }, async () => {
       const { page, context } = await app.newPage({ locale: "ko-KR", viewport, options: { timeScale: 4 } });
       const seen = watchPage(page, app.origin);
+      await page.goto(app.url, { waitUntil: "domcontentloaded" });
       await openFirmwareOnDemo(page);
       expect(await lang(page)).toBe("ko");
       const view = page.getByTestId("firmware-view");
@@ -198,7 +86,7 @@ describe("the Firmware view in Korean", () => {
       );
       await page.getByText("먼저 펌웨어 파일을 열어 주세요.").waitFor();
       await page.getByRole("button", { name: "데모 펌웨어 파일 사용 (2.50)" }).waitFor();
-      await expectLaidOut(page, "the view", viewport.width);
+      await expectLaidOut(page, "the view");
 
       await page.getByTestId("fw-demo-file").click();
       await page.getByTestId("fw-summary").waitFor();
@@ -214,8 +102,7 @@ describe("the Firmware view in Korean", () => {
         "줄 수",
       ]);
       await page.getByRole("button", { name: "파일 닫기" }).waitFor();
-      await expectLaidOut(page, "the file opened", viewport.width);
-      await shot(page, `ko-file-${name}`);
+      await expectLaidOut(page, "the file opened", `firmware-ko-file-${name}`);
 
       await page.getByRole("button", { name: "펌웨어 업데이트…" }).click();
       const confirm = page.getByTestId("flash-confirm");
@@ -224,8 +111,7 @@ describe("the Firmware view in Korean", () => {
         "로봇의 펌웨어를 demo-2.50.hex(으)로 바꿀까요? 데모 로봇은 요청하면 스스로 다시 시작해요. " +
           "다음으로 로봇을 껐다가 켜 달라는 안내가 나오고, 그다음 파일을 한 줄씩 써요. 펌웨어 업데이트 취소",
       );
-      await expectLaidOut(page, "the confirmation", viewport.width);
-      await shot(page, `ko-confirm-${name}`);
+      await expectLaidOut(page, "the confirmation", `firmware-ko-confirm-${name}`);
       await page.getByRole("button", { name: "펌웨어 업데이트", exact: true }).click();
 
       const progress = page.getByTestId("flash-progress");
@@ -240,8 +126,7 @@ describe("the Firmware view in Korean", () => {
         "demo-2.50.hex(으)로 펌웨어 업데이트",
       );
       expect(squash(await progress.textContent())).toContain("demo-2.50.hex 쓰기");
-      await expectLaidOut(page, "the progress", viewport.width);
-      await shot(page, `ko-progress-${name}`);
+      await expectLaidOut(page, "the progress", `firmware-ko-progress-${name}`);
 
       const result = page.getByTestId("flash-result").getByText(/펌웨어를 업데이트했어요/);
       await result.waitFor({ timeout: 40_000 });
@@ -250,8 +135,7 @@ describe("the Firmware view in Korean", () => {
       expect(await page.getByTestId("flash-result").getByRole("status").getAttribute("aria-label")).toBe(
         "펌웨어 업데이트 결과",
       );
-      await expectLaidOut(page, "the result", viewport.width);
-      await shot(page, `ko-result-${name}`);
+      await expectLaidOut(page, "the result", `firmware-ko-result-${name}`);
       expect(seen.errors).toEqual([]);
       await context.close();
     });
@@ -260,7 +144,7 @@ describe("the Firmware view in Korean", () => {
   it("says in Korean why a file is refused and what a cancelled update leaves, with the device's English in the detail", {
     timeout: 60_000,
   }, async () => {
-    const { page, context } = await app.newPage({ locale: "ko-KR", options: { timeScale: 2 } });
+    const { page, context } = await newLocalePage(app, "ko-KR", { options: { timeScale: 2 } });
     await openFirmwareOnDemo(page);
 
     const lines = firmwareHex("2.50", 512).split("\r\n");
@@ -305,7 +189,7 @@ describe("the Firmware view in Korean", () => {
       "FirmwareUpdateError (cancelled): The firmware update was cancelled. The robot's firmware may now be incomplete, and the robot may not work until an update succeeds. The bootloader is never overwritten: switch the robot off and on and run the update again.",
     );
     expect(await page.getByTestId("fw-version").textContent().then(squash)).toBe("2.23");
-    await expectLaidOut(page, "the cancelled update", DESKTOP.width);
+    await expectLaidOut(page, "the cancelled update");
     await context.close();
   });
 
@@ -314,8 +198,7 @@ describe("the Firmware view in Korean", () => {
     ["phone", PHONE],
   ] as const) {
     it(`offers Recover in Korean while no robot is connected (${name})`, async () => {
-      const { page, context } = await app.newPage({ locale: "ko-KR", viewport });
-      await page.goto(app.url, { waitUntil: "domcontentloaded" });
+      const { page, context } = await newLocalePage(app, "ko-KR", { size: viewport });
       await page.getByTestId("connect-card").waitFor();
       await page.getByRole("link", { name: "펌웨어" }).click();
       await page.getByTestId("firmware-view").waitFor();
@@ -338,15 +221,13 @@ describe("the Firmware view in Korean", () => {
       );
       expect(squash(await confirm.textContent())).toContain("먼저 브라우저가 로봇의 포트를 물어봐요.");
       await page.getByRole("button", { name: "포트 선택 후 업데이트" }).waitFor();
-      await expectLaidOut(page, "Recover", viewport.width);
-      await shot(page, `ko-recover-${name}`);
+      await expectLaidOut(page, "Recover", `firmware-ko-recover-${name}`);
       await context.close();
     });
   }
 
   it("says in Korean that a browser without Web Serial cannot Recover", async () => {
-    const { page, context } = await app.newPage({ locale: "ko-KR", noSerial: true });
-    await page.goto(`${app.url}#/firmware`, { waitUntil: "domcontentloaded" });
+    const { page, context } = await newLocalePage(app, "ko-KR", { noSerial: true, hash: "#/firmware" });
     await page.getByTestId("firmware-view").waitFor();
     const note = page.getByText(/Web Serial을 지원하지 않아요/);
     expect(squash(await note.textContent())).toBe(
@@ -360,20 +241,20 @@ describe("the Firmware view in Korean", () => {
   it("axe finds no violation: the file, the confirmation, the progress and the result", {
     timeout: 60_000,
   }, async () => {
-    const { page, context } = await newAxePage();
+    const { page, context } = await newLocalePage(app, "ko-KR", { options: { timeScale: 4 } });
     await openFirmwareOnDemo(page);
     expect(await lang(page)).toBe("ko");
-    await expectNoViolations(page, "the Firmware view");
+    await expectPageOk(page, "the Firmware view", { lang: "ko" });
     await confirmDemoFile(page);
-    await expectNoViolations(page, "the confirmation");
+    await expectPageOk(page, "the confirmation", { lang: "ko" });
     await page.getByRole("button", { name: "펌웨어 업데이트", exact: true }).click();
     await page.getByTestId("flash-progress").waitFor();
-    await expectNoViolations(page, "the progress");
+    await expectPageOk(page, "the progress", { lang: "ko" });
     await page
       .getByTestId("flash-result")
       .getByText(/펌웨어를 업데이트했어요/)
       .waitFor({ timeout: 40_000 });
-    await expectNoViolations(page, "the result");
+    await expectPageOk(page, "the result", { lang: "ko" });
     await context.close();
   });
 });

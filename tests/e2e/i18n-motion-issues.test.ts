@@ -3,19 +3,22 @@
  * (one the RBC refuses, one that cannot be read) and warnings of every weight; each issue is a Korean sentence
  * with the file's numbers and no English left in it; the page is `lang="ko"`, shows no catalogue key, no
  * button's label overflows it and nothing scrolls sideways at 1280×800 and 390×844; axe finds no violation.
- * Screenshots go to /tmp/shots-c8/ to be looked at.
+ * With RBC_SHOTS=<dir>, screenshots go there to be looked at.
  */
-import { readFileSync } from "node:fs";
-import { mkdir } from "node:fs/promises";
-import { createRequire } from "node:module";
-import type { Locator, Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { unitMessages } from "../../src/i18n/messages.ts";
-import { issueMessages } from "../../src/ui/features/motions/issues/messages.ts";
-import { motionsMessages } from "../../src/ui/features/motions/messages.ts";
-import { uiMessages } from "../../src/ui/messages.ts";
-import { shellMessages } from "../../src/ui/shell/messages.ts";
-import { type AppHarness, FAST, squash, startHarness } from "./harness.ts";
+import type { Page } from "playwright-core";
+import { describe, expect, it } from "vitest";
+import { FAST } from "./harness.ts";
+import {
+  connectCable,
+  expectPageOk,
+  newLocalePage,
+  SIZES,
+  shot,
+  sizeName as size,
+  text,
+  texts,
+  useApp,
+} from "./i18n-checks.ts";
 import {
   exampleText,
   rbmFile,
@@ -26,38 +29,11 @@ import {
 } from "./motion-fixtures.ts";
 import "./rbc-test-globals.ts";
 
-const AXE_SOURCE = readFileSync(createRequire(import.meta.url).resolve("axe-core/axe.min.js"), "utf8");
-const SHOTS = "/tmp/shots-c8";
-
-const PHONE = { width: 390, height: 844 };
-const DESKTOP = { width: 1280, height: 800 };
-const VIEWPORTS = [DESKTOP, PHONE] as const;
-
-/** Every key of the catalogues this view uses: none may show on the page in place of its text. */
-const KEYS = [issueMessages, motionsMessages, shellMessages, uiMessages, unitMessages].flatMap((m) =>
-  Object.keys(m),
-);
-
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-  await mkdir(SHOTS, { recursive: true });
-});
-
-afterAll(async () => {
-  await app?.close();
-});
-
-const lang = (page: Page) => page.evaluate(() => document.documentElement.lang);
-const size = (viewport: { width: number; height: number }) => `${viewport.width}x${viewport.height}`;
-const text = async (locator: Locator) => squash(await locator.textContent());
-const texts = async (locator: Locator) => (await locator.allTextContents()).map(squash);
-const pageWidth = (page: Page) => page.evaluate(() => document.documentElement.scrollWidth);
+const app = useApp();
 
 /** The text with some `:`-separated fields replaced: [index, new text]... */
-function edit(text: string, ...changes: [number, string][]): string {
-  const fields = text.split(":");
+function edit(source: string, ...changes: [number, string][]): string {
+  const fields = source.split(":");
   for (const [i, value] of changes) fields[i] = value;
   return fields.join(":");
 }
@@ -76,91 +52,15 @@ const FILES = [
 
 /** Connects the fake robot from the connect card and opens the Motions view once its memory has been read. */
 async function openMotions(page: Page): Promise<void> {
-  await page.goto(app.url, { waitUntil: "domcontentloaded" });
-  await page.getByTestId("connect-card").locator(".btn--primary").first().click();
-  await page.getByTestId("device-card").waitFor();
-  await page.getByTestId("memory-action-note").filter({ hasText: /8,192/ }).waitFor();
+  await connectCable(page);
   await page.getByRole("link", { name: "모션", exact: true }).click();
   await page.getByTestId("motion-files").waitFor();
 }
 
-/** Buttons, button-like labels and elements, navigation links and selects whose label is wider than they are. */
-async function overflowing(page: Page): Promise<string[]> {
-  return page.evaluate(() =>
-    Array.from(
-      document.querySelectorAll<HTMLElement>(
-        "button, [role=button], .btn, .side-nav a, select, .skip-link, summary",
-      ),
-    )
-      .filter((b) => b.offsetParent !== null && b.scrollWidth > b.clientWidth)
-      .map(
-        (b) => `${(b.textContent ?? "").replace(/\s+/g, " ").trim()} (${b.scrollWidth} > ${b.clientWidth})`,
-      ),
-  );
-}
-
-/** Catalogue keys shown as text or in a label (a message the page could not find). */
-async function keysShown(page: Page): Promise<string[]> {
-  const shown = await page.evaluate(() =>
-    [
-      document.title,
-      document.body.textContent ?? "",
-      ...Array.from(document.querySelectorAll("[aria-label], [title], [aria-valuetext]")).map(
-        (e) =>
-          `${e.getAttribute("aria-label") ?? ""} ${e.getAttribute("title") ?? ""} ${e.getAttribute("aria-valuetext") ?? ""}`,
-      ),
-    ].join("\n"),
-  );
-  return KEYS.filter((key) => shown.includes(key));
-}
-
-interface AxeViolation {
-  id: string;
-  impact: string | null;
-  help: string;
-  nodes: { target: unknown[]; failureSummary?: string }[];
-}
-
-/** axe's "needs review" results that are accepted (as in a11y.test.ts), each with the reason. */
-const REVIEWED: Record<string, string> = {
-  "color-contrast":
-    "axe cannot measure text it cannot see the background of (aria-hidden icons, text over other elements); " +
-    "the colour tokens are chosen for 4.5:1",
-};
-
-/** One line per violation or unreviewed "needs review" (a11y.test.ts's helper; axe added through evaluate). */
-async function violations(page: Page): Promise<string[]> {
-  if (!(await page.evaluate(() => "axe" in window))) await page.evaluate(AXE_SOURCE);
-  const found = await page.evaluate(async () => {
-    type Run = (o: unknown) => Promise<{ violations: unknown[]; incomplete: unknown[] }>;
-    const axe = (window as unknown as { axe: { run: Run } }).axe;
-    const result = await axe.run({ resultTypes: ["violations", "incomplete"] });
-    return { violations: result.violations, incomplete: result.incomplete };
-  });
-  const line = (v: AxeViolation, kind: string) =>
-    `${v.id} (${v.impact ?? "?"}${kind}): ${v.help} — ${v.nodes.map((n) => `${JSON.stringify(n.target)} ${(n.failureSummary ?? "").replace(/\s+/g, " ")}`).join(", ")}`;
-  return [
-    ...(found.violations as AxeViolation[]).map((v) => line(v, "")),
-    ...(found.incomplete as AxeViolation[])
-      .filter((v) => !(v.id in REVIEWED))
-      .map((v) => line(v, ", needs review")),
-  ];
-}
-
-/** Korean, no overflowing label, no sideways scroll, no key shown, nothing for axe; and a screenshot. */
-async function expectGood(page: Page, where: string, viewport: { width: number; height: number }) {
-  expect(await lang(page), where).toBe("ko");
-  expect(await overflowing(page), where).toEqual([]);
-  expect(await pageWidth(page), where).toBeLessThanOrEqual(viewport.width);
-  expect(await keysShown(page), where).toEqual([]);
-  await page.screenshot({ path: `${SHOTS}/motion-issues-${where}-ko-${size(viewport)}.png`, fullPage: true });
-  expect(await violations(page), where).toEqual([]);
-}
-
 describe("the motion file checker's sentences in Korean", () => {
-  for (const viewport of VIEWPORTS) {
+  for (const viewport of SIZES) {
     it(`says every problem of the opened files in Korean, fitting at ${viewport.width}×${viewport.height}`, async () => {
-      const { page, context } = await app.newPage({ locale: "ko-KR", viewport, options: FAST });
+      const { page, context } = await newLocalePage(app, "ko-KR", { size: viewport, options: FAST });
       await openMotions(page);
       await page.getByTestId("rbm-files").setInputFiles(FILES);
       await page
@@ -214,11 +114,10 @@ describe("the motion file checker's sentences in Korean", () => {
 
       // Close-ups of each file's check, to be read (the whole page at 390 px is too tall to read).
       for (const name of ["Jumpy", "Edited", "Broken", "Odd"]) {
-        const path = `${SHOTS}/motion-issues-${name.toLowerCase()}-ko-${size(viewport)}.png`;
-        await card(`${name}.rbm`).screenshot({ path });
+        await shot(card(`${name}.rbm`), `motion-issues-${name.toLowerCase()}-ko-${size(viewport)}`);
       }
       await card("Jumpy.rbm").scrollIntoViewIfNeeded();
-      await expectGood(page, "files", viewport);
+      await expectPageOk(page, "the files", { lang: "ko", shot: `motion-issues-files-ko-${size(viewport)}` });
       await context.close();
     });
   }

@@ -3,55 +3,32 @@
  * (Files with an example open and its scenes shown, a file's warnings and errors, an upload; Memory; Run with
  * its confirmation and result; Sounds), the sentences made by the actions too; no catalogue key shows; no
  * button's label overflows it and nothing scrolls sideways at 1280×800 and 390×844; axe finds no violation.
- * Screenshots of every tab at both sizes go to /tmp/shots-c2/ to be looked at.
+ * With RBC_SHOTS=<dir>, screenshots of every tab at both sizes go there to be looked at.
  */
-import { readFileSync } from "node:fs";
-import { mkdir } from "node:fs/promises";
-import { createRequire } from "node:module";
-import type { Locator, Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { unitMessages } from "../../src/i18n/messages.ts";
-import { motionsMessages } from "../../src/ui/features/motions/messages.ts";
-import { uiMessages } from "../../src/ui/messages.ts";
-import { shellMessages } from "../../src/ui/shell/messages.ts";
-import { type AppHarness, FAST, squash, startHarness } from "./harness.ts";
+import type { Page } from "playwright-core";
+import { describe, expect, it } from "vitest";
+import { FAST, squash } from "./harness.ts";
+import {
+  connectCable,
+  expectPageOk,
+  newLocalePage,
+  SIZES,
+  type Size,
+  sizeName,
+  text,
+  texts,
+  useApp,
+} from "./i18n-checks.ts";
 import { exampleText, rbmFile, withJumps, withShortFrames } from "./motion-fixtures.ts";
 import "./rbc-test-globals.ts";
 
-const AXE_SOURCE = readFileSync(createRequire(import.meta.url).resolve("axe-core/axe.min.js"), "utf8");
-const SHOTS = "/tmp/shots-c2";
-
-const PHONE = { width: 390, height: 844 };
-const DESKTOP = { width: 1280, height: 800 };
-const VIEWPORTS = [DESKTOP, PHONE] as const;
-
-/** Every key of the catalogues this view uses: none may show on the page in place of its text. */
-const KEYS = [motionsMessages, shellMessages, uiMessages, unitMessages].flatMap((m) => Object.keys(m));
-
 const TABS = { files: "파일", uploads: "메모리", run: "실행", sounds: "소리" } as const;
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-  await mkdir(SHOTS, { recursive: true });
-});
-
-afterAll(async () => {
-  await app?.close();
-});
-
-const lang = (page: Page) => page.evaluate(() => document.documentElement.lang);
-const size = (viewport: { width: number; height: number }) => `${viewport.width}x${viewport.height}`;
-const text = async (locator: Locator) => squash(await locator.textContent());
-const texts = async (locator: Locator) => (await locator.allTextContents()).map(squash);
+const app = useApp();
 
 /** Connects the fake robot from the connect card and opens the Motions view once its memory has been read. */
 async function openMotions(page: Page): Promise<void> {
-  await page.goto(app.url, { waitUntil: "domcontentloaded" });
-  await page.getByTestId("connect-card").locator(".btn--primary").first().click();
-  await page.getByTestId("device-card").waitFor();
-  await page.getByTestId("memory-action-note").filter({ hasText: /8,192/ }).waitFor();
+  await connectCable(page);
   await page.getByRole("link", { name: "모션", exact: true }).click();
   await page
     .getByTestId("mem-motion-text")
@@ -65,86 +42,17 @@ async function showTab(page: Page, tab: keyof typeof TABS): Promise<void> {
   await page.locator(`#motions-panel-${tab}`).waitFor();
 }
 
-/** Buttons, button-like labels and elements, navigation links and selects whose label is wider than they are. */
-async function overflowing(page: Page): Promise<string[]> {
-  return page.evaluate(() =>
-    Array.from(
-      document.querySelectorAll<HTMLElement>("button, [role=button], .btn, .side-nav a, select, .skip-link"),
-    )
-      .filter((b) => b.offsetParent !== null && b.scrollWidth > b.clientWidth)
-      .map(
-        (b) => `${(b.textContent ?? "").replace(/\s+/g, " ").trim()} (${b.scrollWidth} > ${b.clientWidth})`,
-      ),
-  );
-}
-
-const pageWidth = (page: Page) => page.evaluate(() => document.documentElement.scrollWidth);
-
-/** Catalogue keys shown as text or in a label (a message the page could not find). */
-async function keysShown(page: Page): Promise<string[]> {
-  const shown = await page.evaluate(() =>
-    [
-      document.title,
-      document.body.textContent ?? "",
-      ...Array.from(document.querySelectorAll("[aria-label], [title], [aria-valuetext]")).map(
-        (e) =>
-          `${e.getAttribute("aria-label") ?? ""} ${e.getAttribute("title") ?? ""} ${e.getAttribute("aria-valuetext") ?? ""}`,
-      ),
-    ].join("\n"),
-  );
-  return KEYS.filter((key) => shown.includes(key));
-}
-
-interface AxeViolation {
-  id: string;
-  impact: string | null;
-  help: string;
-  nodes: { target: unknown[]; failureSummary?: string }[];
-}
-
-/** axe's "needs review" results that are accepted (as in a11y.test.ts), each with the reason. */
-const REVIEWED: Record<string, string> = {
-  "color-contrast":
-    "axe cannot measure text it cannot see the background of (aria-hidden icons, text over other elements); " +
-    "the colour tokens are chosen for 4.5:1",
-};
-
-/** One line per violation or unreviewed "needs review" (a11y.test.ts's helper; axe added through evaluate). */
-async function violations(page: Page): Promise<string[]> {
-  if (!(await page.evaluate(() => "axe" in window))) await page.evaluate(AXE_SOURCE);
-  const found = await page.evaluate(async () => {
-    type Run = (o: unknown) => Promise<{ violations: unknown[]; incomplete: unknown[] }>;
-    const axe = (window as unknown as { axe: { run: Run } }).axe;
-    const result = await axe.run({ resultTypes: ["violations", "incomplete"] });
-    return { violations: result.violations, incomplete: result.incomplete };
-  });
-  const line = (v: AxeViolation, kind: string) =>
-    `${v.id} (${v.impact ?? "?"}${kind}): ${v.help} — ${v.nodes.map((n) => `${JSON.stringify(n.target)} ${(n.failureSummary ?? "").replace(/\s+/g, " ")}`).join(", ")}`;
-  return [
-    ...(found.violations as AxeViolation[]).map((v) => line(v, "")),
-    ...(found.incomplete as AxeViolation[])
-      .filter((v) => !(v.id in REVIEWED))
-      .map((v) => line(v, ", needs review")),
-  ];
-}
-
 /**
  * One state of the view: Korean, no overflowing label, no sideways scroll, no key shown, nothing for axe; and a
- * screenshot of the whole page.
+ * screenshot of the whole page (with RBC_SHOTS).
  */
-async function expectGood(page: Page, where: string, viewport: { width: number; height: number }) {
-  expect(await lang(page), where).toBe("ko");
-  expect(await overflowing(page), where).toEqual([]);
-  expect(await pageWidth(page), where).toBeLessThanOrEqual(viewport.width);
-  expect(await keysShown(page), where).toEqual([]);
-  await page.screenshot({ path: `${SHOTS}/motions-${where}-ko-${size(viewport)}.png`, fullPage: true });
-  expect(await violations(page), where).toEqual([]);
-}
+const expectGood = (page: Page, where: string, size: Size) =>
+  expectPageOk(page, where, { lang: "ko", shot: `motions-${where}-ko-${sizeName(size)}` });
 
 describe("the Motions view in Korean", () => {
-  for (const viewport of VIEWPORTS) {
+  for (const viewport of SIZES) {
     it(`shows the Files tab in Korean with an example open, fitting at ${viewport.width}×${viewport.height}`, async () => {
-      const { page, context } = await app.newPage({ locale: "ko-KR", viewport, options: FAST });
+      const { page, context } = await newLocalePage(app, "ko-KR", { size: viewport, options: FAST });
       await openMotions(page);
       expect(await page.getByRole("heading", { level: 1 }).textContent()).toBe("모션");
       expect(await texts(page.getByRole("tab"))).toEqual(["파일", "메모리", "실행", "소리"]);
@@ -265,7 +173,7 @@ describe("the Motions view in Korean", () => {
     });
 
     it(`shows Memory, Run and Sounds in Korean, fitting at ${viewport.width}×${viewport.height}`, async () => {
-      const { page, context } = await app.newPage({ locale: "ko-KR", viewport, options: FAST });
+      const { page, context } = await newLocalePage(app, "ko-KR", { size: viewport, options: FAST });
       await openMotions(page);
       await page.getByTestId("rbm-files").setInputFiles(rbmFile("wave.rbm", exampleText("wave.rbm")));
       await page.getByTestId("upload-motion").click();

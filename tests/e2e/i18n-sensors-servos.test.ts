@@ -3,152 +3,34 @@
  * (`locale: "ko-KR"`) gets `lang="ko"`, the views' words in Korean (literal strings checked), no catalogue key
  * in place of its text, no button whose label overflows it, nothing scrolling sideways, and no axe violation, at
  * 1280×800 and 390×844. The Servos view is checked with its "Robot in 3D" card open (the demo robot, and a robot
- * on a cable), and the motion preview of the Motions view in Korean. Screenshots go to /tmp/shots-c3/.
+ * on a cable), and the motion preview of the Motions view in Korean. With RBC_SHOTS=<dir>, screenshots go there.
  */
-import { mkdirSync } from "node:fs";
-import { createRequire } from "node:module";
-import type { BrowserContext, Locator, Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { unitMessages } from "../../src/i18n/messages.ts";
-import { chartMessages } from "../../src/ui/charts/messages.ts";
-import { sensorsMessages } from "../../src/ui/features/sensors/messages.ts";
-import { servosMessages } from "../../src/ui/features/servos/messages.ts";
-import { robot3dMessages } from "../../src/ui/robot3d/messages.ts";
-import { type AppHarness, buildOnce, squash, startHarness } from "./harness.ts";
+import type { Page } from "playwright-core";
+import { describe, expect, it } from "vitest";
+import {
+  connectCable,
+  connectDemo,
+  expectPageOk,
+  newLocalePage,
+  SIZES,
+  type Size,
+  shot,
+  text,
+  useApp,
+} from "./i18n-checks.ts";
 import { exampleText, rbmFile } from "./motion-fixtures.ts";
 import "./rbc-test-globals.ts";
 
-const require = createRequire(import.meta.url);
-const AXE_PATH = require.resolve("axe-core/axe.min.js");
+const app = useApp();
 
-const PHONE = { width: 390, height: 844 };
-const DESKTOP = { width: 1280, height: 800 };
-const SHOTS = "/tmp/shots-c3";
+/** The panel in a browser that prefers Korean, at `size`. */
+const newKoreanPage = (size: Size) => newLocalePage(app, "ko-KR", { size });
 
-/** Every key of the catalogues these views use: none may show on the page in place of its text. */
-const KEYS = [sensorsMessages, servosMessages, robot3dMessages, chartMessages, unitMessages].flatMap((m) =>
-  Object.keys(m),
-);
+/** The checks every view gets (the page's lang, keys, labels, sideways scrolling, axe), and its screenshot. */
+const checkLayout = (page: Page, name: string, size: Size) =>
+  expectPageOk(page, name, { lang: "ko", shot: `sensors-servos-${name}-${size.width}` });
 
-let app: AppHarness;
-let fakeSerial: string;
-
-beforeAll(async () => {
-  app = await startHarness();
-  ({ fakeSerial } = await buildOnce());
-  mkdirSync(SHOTS, { recursive: true });
-});
-
-afterAll(async () => {
-  await app?.close();
-});
-
-/**
- * A page whose browser prefers Korean, with the fake serial port. The panel's CSP is bypassed so that axe can
- * be added as a script tag (as in a11y.test.ts and i18n.test.ts); the page prefers reduced motion, like the
- * harness's.
- */
-async function newKoreanPage(viewport: { width: number; height: number }): Promise<{
-  context: BrowserContext;
-  page: Page;
-}> {
-  const context = await app.browser.newContext({
-    locale: "ko-KR",
-    viewport,
-    serviceWorkers: "block",
-    reducedMotion: "reduce",
-    bypassCSP: true,
-  });
-  await context.addInitScript({ content: `window.__rbcTestOptions = {};\n;\n${fakeSerial}` });
-  const page = await context.newPage();
-  await page.goto(app.url, { waitUntil: "domcontentloaded" });
-  await page.getByTestId("connect-card").waitFor();
-  return { context, page };
-}
-
-/** Connects the demo robot from the connect card (its second button, whatever its language). */
-async function connectDemo(page: Page): Promise<void> {
-  await page.getByTestId("connect-card").locator(".actions .btn").nth(1).click();
-  await page.getByTestId("device-card").waitFor();
-}
-
-/** Connects the fake robot on a cable from the connect card (its main button). */
-async function connectCable(page: Page): Promise<void> {
-  await page.getByTestId("connect-card").locator(".actions .btn--primary").click();
-  await page.getByTestId("device-card").waitFor();
-  await page.getByTestId("memory-action-note").filter({ hasText: /8,192/ }).waitFor();
-}
-
-const lang = (page: Page) => page.evaluate(() => document.documentElement.lang);
-const text = (locator: Locator) => locator.textContent().then(squash);
-
-/** Buttons and selects whose label is wider than they are, as "label (scroll > client)". */
-async function overflowing(page: Page, within = "body"): Promise<string[]> {
-  return page.evaluate(
-    (root) =>
-      Array.from(document.querySelector(root)?.querySelectorAll<HTMLElement>("button, .btn, select") ?? [])
-        .filter((b) => b.offsetParent !== null && b.scrollWidth > b.clientWidth)
-        .map(
-          (b) => `${(b.textContent ?? "").replace(/\s+/g, " ").trim()} (${b.scrollWidth} > ${b.clientWidth})`,
-        ),
-    within,
-  );
-}
-
-const scrollsSideways = (page: Page) =>
-  page.evaluate(() => {
-    const root = document.documentElement;
-    if (root.scrollWidth <= root.clientWidth) return false;
-    // What sticks out, for the failure message.
-    return Array.from(document.querySelectorAll<HTMLElement>("body *"))
-      .filter((e) => e.getBoundingClientRect().right > root.clientWidth + 0.5)
-      .slice(0, 8)
-      .map((e) => `${e.tagName.toLowerCase()}.${e.className} ${Math.round(e.getBoundingClientRect().right)}`)
-      .join("; ");
-  });
-
-/** Catalogue keys shown as text or in a label (a message the page could not find). */
-async function keysShown(page: Page): Promise<string[]> {
-  const shown = await page.evaluate(() =>
-    [
-      document.title,
-      document.body.textContent ?? "",
-      ...Array.from(document.querySelectorAll("[aria-label], [title], [aria-valuetext]")).map(
-        (e) =>
-          `${e.getAttribute("aria-label") ?? ""} ${e.getAttribute("title") ?? ""} ${e.getAttribute("aria-valuetext") ?? ""}`,
-      ),
-    ].join("\n"),
-  );
-  return KEYS.filter((key) => shown.includes(key));
-}
-
-/** axe's violations in `within` (the whole page by default), one line each. */
-async function axeViolations(page: Page, within?: string): Promise<string[]> {
-  if (!(await page.evaluate(() => "axe" in window))) await page.addScriptTag({ path: AXE_PATH });
-  const found = await page.evaluate(async (include) => {
-    type Run = (context: unknown, o: unknown) => Promise<{ violations: unknown[] }>;
-    const axe = (window as unknown as { axe: { run: Run } }).axe;
-    const context = include ? { include: [include] } : document;
-    return (await axe.run(context, { resultTypes: ["violations"] })).violations as {
-      id: string;
-      help: string;
-      nodes: { target: unknown[] }[];
-    }[];
-  }, within);
-  return found.map((v) => `${v.id}: ${v.help} — ${v.nodes.map((n) => JSON.stringify(n.target)).join(", ")}`);
-}
-
-/** The layout and accessibility checks every view gets, and its screenshot. */
-async function checkLayout(page: Page, name: string, viewport: { width: number }): Promise<void> {
-  expect(await lang(page)).toBe("ko");
-  expect(await keysShown(page)).toEqual([]);
-  expect(await overflowing(page), `${name}: labels wider than their buttons`).toEqual([]);
-  expect(await scrollsSideways(page), `${name}: scrolls sideways`).toBe(false);
-  expect(await axeViolations(page), `${name}: axe`).toEqual([]);
-  await page.screenshot({ path: `${SHOTS}/${name}-${viewport.width}.png`, fullPage: true });
-}
-
-for (const viewport of [DESKTOP, PHONE]) {
+for (const viewport of SIZES) {
   const size = `${viewport.width}×${viewport.height}`;
 
   describe(`in Korean at ${size}`, () => {
@@ -273,7 +155,7 @@ for (const viewport of [DESKTOP, PHONE]) {
 }
 
 describe("in Korean, the 3D robot of a robot on a cable and the motion preview", () => {
-  for (const viewport of [DESKTOP, PHONE]) {
+  for (const viewport of SIZES) {
     it(`says what it draws of a robot on a cable, ${viewport.width}×${viewport.height}`, async () => {
       const { page, context } = await newKoreanPage(viewport);
       await connectCable(page);
@@ -333,12 +215,12 @@ describe("in Korean, the 3D robot of a robot on a cable and the motion preview",
       });
       await expect.poll(() => text(play)).toBe("처음으로");
 
-      expect(await lang(page)).toBe("ko");
-      expect(await keysShown(page)).toEqual([]);
-      expect(await overflowing(page, '[data-testid="motion-preview"]')).toEqual([]);
-      expect(await scrollsSideways(page)).toBe(false);
-      expect(await axeViolations(page, '[data-testid="motion-preview"]')).toEqual([]);
-      await preview.screenshot({ path: `${SHOTS}/motion-preview-${viewport.width}.png` });
+      // Labels and axe in the preview; the page's lang, keys and sideways scrolling.
+      await expectPageOk(page, "the motion preview", {
+        lang: "ko",
+        within: '[data-testid="motion-preview"]',
+      });
+      await shot(preview, `sensors-servos-motion-preview-${viewport.width}`);
       await context.close();
     });
   }

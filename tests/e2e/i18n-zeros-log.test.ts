@@ -2,59 +2,30 @@
  * The Zeros and Log views in Korean (issue #14 item 1): a Korean browser gets both views in Korean with
  * `lang="ko"`, their sentences from the actions too (write, backup files, copy); no catalogue key shows; no
  * button's label overflows it and nothing scrolls sideways at 1280×800 and 390×844; axe finds no violation.
- * Screenshots of both views at both sizes go to /tmp/shots-c1/ to be looked at.
+ * With RBC_SHOTS=<dir>, screenshots of both views at both sizes go there to be looked at.
  */
-import { readFileSync } from "node:fs";
-import { mkdir, readFile } from "node:fs/promises";
-import { createRequire } from "node:module";
+import { readFile } from "node:fs/promises";
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { unitMessages } from "../../src/i18n/messages.ts";
+import { describe, expect, it } from "vitest";
 import { FACTORY_ZEROS } from "../../src/protocol/index.ts";
 import { parseZerosBackup } from "../../src/protocol/zeros-backup.ts";
-import { logMessages } from "../../src/ui/features/log/messages.ts";
-import { jointMessages } from "../../src/ui/features/zeros/joints/messages.ts";
-import { zerosMessages } from "../../src/ui/features/zeros/messages.ts";
-import { uiMessages } from "../../src/ui/messages.ts";
-import { shellMessages } from "../../src/ui/shell/messages.ts";
-import { type AppHarness, FAST, squash, startHarness } from "./harness.ts";
+import { FAST, squash } from "./harness.ts";
+import {
+  connectCable,
+  expectPageOk,
+  keysShown,
+  pageLang as lang,
+  newLocalePage,
+  SIZES,
+  shot,
+  sizeName as size,
+  useApp,
+} from "./i18n-checks.ts";
 import "./rbc-test-globals.ts";
 
-const AXE_SOURCE = readFileSync(createRequire(import.meta.url).resolve("axe-core/axe.min.js"), "utf8");
-const SHOTS = "/tmp/shots-c1";
+const app = useApp();
 
-const PHONE = { width: 390, height: 844 };
-const DESKTOP = { width: 1280, height: 800 };
-const VIEWPORTS = [DESKTOP, PHONE] as const;
-
-/** Every key of the catalogues these views use: none may show on the page in place of its text. */
-const KEYS = [zerosMessages, jointMessages, logMessages, shellMessages, uiMessages, unitMessages].flatMap(
-  (m) => Object.keys(m),
-);
-
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-  await mkdir(SHOTS, { recursive: true });
-});
-
-afterAll(async () => {
-  await app?.close();
-});
-
-const lang = (page: Page) => page.evaluate(() => document.documentElement.lang);
 const simZeros = (page: Page) => page.evaluate(() => window.__rbcTest?.sim.zeros);
-const size = (viewport: { width: number; height: number }) => `${viewport.width}x${viewport.height}`;
-
-/** Connects the fake robot from the connect card (its main button, whatever its language). */
-async function connect(page: Page): Promise<void> {
-  await page.goto(app.url, { waitUntil: "domcontentloaded" });
-  await page.getByTestId("connect-card").locator(".btn--primary").first().click();
-  await page.getByTestId("device-card").waitFor();
-  // The memory figures have been read.
-  await page.getByTestId("memory-action-note").filter({ hasText: /8,192/ }).waitFor();
-}
 
 /** The paragraph under the Zeros view's heading: what zeros are, what a backup is, where the values came from. */
 const intro = async (page: Page) =>
@@ -62,85 +33,17 @@ const intro = async (page: Page) =>
 
 /** Opens the Zeros view once its table has been read and the view is idle. */
 async function openZeros(page: Page): Promise<void> {
-  await connect(page);
+  await connectCable(page);
   await page.getByRole("link", { name: "영점", exact: true }).click();
   await page.getByTestId("zeros-card").waitFor();
   await page.locator("#zero-15").waitFor();
   await page.locator("button:not([disabled])", { hasText: "공장 영점 불러오기" }).waitFor();
 }
 
-/** Buttons, button-like labels, navigation links and selects whose label is wider than they are. */
-async function overflowing(page: Page): Promise<string[]> {
-  return page.evaluate(() =>
-    Array.from(document.querySelectorAll<HTMLElement>("button, .btn, .side-nav a, select, .skip-link"))
-      .filter((b) => b.offsetParent !== null && b.scrollWidth > b.clientWidth)
-      .map(
-        (b) => `${(b.textContent ?? "").replace(/\s+/g, " ").trim()} (${b.scrollWidth} > ${b.clientWidth})`,
-      ),
-  );
-}
-
-const pageWidth = (page: Page) => page.evaluate(() => document.documentElement.scrollWidth);
-
-/** Catalogue keys shown as text or in a label (a message the page could not find). */
-async function keysShown(page: Page): Promise<string[]> {
-  const text = await page.evaluate(() =>
-    [
-      document.title,
-      document.body.textContent ?? "",
-      ...Array.from(document.querySelectorAll("[aria-label], [title], [data-prefix]")).map(
-        (e) =>
-          `${e.getAttribute("aria-label") ?? ""} ${e.getAttribute("title") ?? ""} ${e.getAttribute("data-prefix") ?? ""}`,
-      ),
-    ].join("\n"),
-  );
-  return KEYS.filter((key) => text.includes(key));
-}
-
-interface AxeViolation {
-  id: string;
-  impact: string | null;
-  help: string;
-  nodes: { target: unknown[]; failureSummary?: string }[];
-}
-
-/** axe's "needs review" results that are accepted (as in a11y.test.ts), each with the reason. */
-const REVIEWED: Record<string, string> = {
-  "color-contrast":
-    "axe cannot measure text it cannot see the background of (aria-hidden icons, text over other elements); " +
-    "the colour tokens are chosen for 4.5:1",
-};
-
-/** One line per violation or unreviewed "needs review" (a11y.test.ts's helper; axe added through evaluate). */
-async function violations(page: Page): Promise<string[]> {
-  if (!(await page.evaluate(() => "axe" in window))) await page.evaluate(AXE_SOURCE);
-  const found = await page.evaluate(async () => {
-    type Run = (o: unknown) => Promise<{ violations: unknown[]; incomplete: unknown[] }>;
-    const axe = (window as unknown as { axe: { run: Run } }).axe;
-    const result = await axe.run({ resultTypes: ["violations", "incomplete"] });
-    return { violations: result.violations, incomplete: result.incomplete };
-  });
-  const line = (v: AxeViolation, kind: string) =>
-    `${v.id} (${v.impact ?? "?"}${kind}): ${v.help} — ${v.nodes.map((n) => `${JSON.stringify(n.target)} ${(n.failureSummary ?? "").replace(/\s+/g, " ")}`).join(", ")}`;
-  return [
-    ...(found.violations as AxeViolation[]).map((v) => line(v, "")),
-    ...(found.incomplete as AxeViolation[])
-      .filter((v) => !(v.id in REVIEWED))
-      .map((v) => line(v, ", needs review")),
-  ];
-}
-
-/** No overflowing label, no sideways scroll, no key shown: the layout checks of one state of a view. */
-async function expectTidy(page: Page, where: string, width: number): Promise<void> {
-  expect(await overflowing(page), where).toEqual([]);
-  expect(await pageWidth(page), where).toBeLessThanOrEqual(width);
-  expect(await keysShown(page), where).toEqual([]);
-}
-
 describe("the Zeros view in Korean", () => {
-  for (const viewport of VIEWPORTS) {
+  for (const viewport of SIZES) {
     it(`is in Korean, fits and passes axe at ${viewport.width}×${viewport.height}`, async () => {
-      const { page, context } = await app.newPage({ locale: "ko-KR", viewport });
+      const { page, context } = await newLocalePage(app, "ko-KR", { size: viewport });
       await openZeros(page);
       expect(await lang(page)).toBe("ko");
       const card = page.getByTestId("zeros-card");
@@ -173,9 +76,7 @@ describe("the Zeros view in Korean", () => {
       expect(squash(await page.getByTestId("write-why").textContent())).toBe(
         "아직 쓸 것이 없어요. 먼저 값을 바꿔 주세요.",
       );
-      await expectTidy(page, "the Zeros view", viewport.width);
-      await page.screenshot({ path: `${SHOTS}/zeros-ko-${size(viewport)}.png`, fullPage: true });
-      expect(await violations(page), "the Zeros view").toEqual([]);
+      await expectPageOk(page, "the Zeros view", { shot: `zeros-ko-${size(viewport)}` });
 
       // An edit, and the question before the write.
       await page.locator("#zero-3").fill("70");
@@ -191,10 +92,9 @@ describe("the Zeros view in Korean", () => {
       await confirm.waitFor();
       await confirm.getByRole("button", { name: "백업 저장 후 쓰기" }).waitFor();
       await confirm.getByRole("button", { name: "취소" }).waitFor();
-      await expectTidy(page, "the question before the write", viewport.width);
       await confirm.scrollIntoViewIfNeeded();
-      await page.screenshot({ path: `${SHOTS}/zeros-confirm-ko-${size(viewport)}.png` });
-      expect(await violations(page), "the question before the write").toEqual([]);
+      await shot(page, `zeros-confirm-ko-${size(viewport)}`, { fullPage: false });
+      await expectPageOk(page, "the question before the write");
       await confirm.getByRole("button", { name: "취소" }).click();
 
       // A value the robot would refuse.
@@ -204,13 +104,13 @@ describe("the Zeros view in Korean", () => {
         "쓸 수 없어요: 허용 범위를 벗어난 값이 1개 있어요.",
       );
       expect(squash(await page.locator("#zero-3-hint").textContent())).toBe("51–81만 가능");
-      await expectTidy(page, "a refused value", viewport.width);
+      await expectPageOk(page, "a refused value", { axe: false });
       await context.close();
     });
   }
 
   it("says in Korean what a write, a backup and a backup file did", async () => {
-    const { page, context } = await app.newPage({ locale: "ko-KR" });
+    const { page, context } = await newLocalePage(app, "ko-KR");
     await openZeros(page);
 
     // The write: a backup first, then the verified table.
@@ -325,8 +225,7 @@ const entries = async (page: Page) =>
 
 describe("the Log view in Korean", () => {
   it("says in Korean that there is nothing yet, before a robot is connected", async () => {
-    const { page, context } = await app.newPage({ locale: "ko-KR" });
-    await page.goto(app.url, { waitUntil: "domcontentloaded" });
+    const { page, context } = await newLocalePage(app, "ko-KR");
     await page.getByRole("link", { name: "로그", exact: true }).click();
     const card = page.getByTestId("log-card");
     await card.waitFor();
@@ -341,10 +240,10 @@ describe("the Log view in Korean", () => {
     await context.close();
   });
 
-  for (const viewport of VIEWPORTS) {
+  for (const viewport of SIZES) {
     it(`is in Korean, fits and passes axe at ${viewport.width}×${viewport.height}`, async () => {
-      const { page, context } = await app.newPage({ locale: "ko-KR", viewport, options: FAST });
-      await connect(page);
+      const { page, context } = await newLocalePage(app, "ko-KR", { size: viewport, options: FAST });
+      await connectCable(page);
       // Stray bytes and a frame too long for its type before the next reply: one row of discarded bytes.
       await page.evaluate(() => {
         const stray = Array.from({ length: 3000 }, (_, i) => (i * 13 + 1) & 0x7f);
@@ -385,9 +284,7 @@ describe("the Log view in Korean", () => {
       expect(new Set(directions.map(squash))).toEqual(new Set(["→ 보냄", "← 받음"]));
       const named = card.locator("tbody tr.log-packet .log-name span[lang='en']").first();
       expect(await named.textContent()).toMatch(/^[A-Z][A-Za-z ()0-9-]+$/);
-      await expectTidy(page, "the Log view", viewport.width);
-      await page.screenshot({ path: `${SHOTS}/log-ko-${size(viewport)}.png`, fullPage: true });
-      expect(await violations(page), "the Log view").toEqual([]);
+      await expectPageOk(page, "the Log view", { shot: `log-ko-${size(viewport)}` });
 
       // The run of discarded bytes is on an older page.
       await pages.getByRole("button", { name: "더 이전" }).click();
@@ -406,14 +303,14 @@ describe("the Log view in Korean", () => {
       expect(squash(await page.getByTestId("log-count").textContent())).toMatch(
         /일시 정지됨: 새 패킷은 계속 기록하지만 화면에는 보여 주지 않아요\.$/,
       );
-      await expectTidy(page, "the Log view, paused", viewport.width);
+      await expectPageOk(page, "the Log view, paused", { axe: false });
       await context.close();
     });
   }
 
   it("says in Korean what Copy did; the copied log stays a packet trace in English", async () => {
-    const { page, context } = await app.newPage({ locale: "ko-KR", options: FAST });
-    await connect(page);
+    const { page, context } = await newLocalePage(app, "ko-KR", { options: FAST });
+    await connectCable(page);
     await page.getByRole("link", { name: "로그", exact: true }).click();
     const card = page.getByTestId("log-card");
     await card.locator("tbody tr").first().waitFor();

@@ -4,113 +4,29 @@
  * at 1280×800 and 390×844 in either language; no catalogue key shows instead of its text; axe finds nothing in
  * either language. Covers the shell and the Robot view (the other views follow as they are translated).
  */
-import { createRequire } from "node:module";
-import type { BrowserContext, Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { unitMessages } from "../../src/i18n/messages.ts";
-import { robotMessages } from "../../src/ui/features/robot/messages.ts";
-import { uiMessages } from "../../src/ui/messages.ts";
-import { shellMessages } from "../../src/ui/shell/messages.ts";
-import { type AppHarness, buildOnce, squash, startHarness } from "./harness.ts";
+import type { Page } from "playwright-core";
+import { describe, expect, it } from "vitest";
+import { squash } from "./harness.ts";
+import {
+  axeProblems,
+  connectCable,
+  expectPageOk,
+  keysShown,
+  pageLang as lang,
+  newLocalePage,
+  SIZES,
+  useApp,
+} from "./i18n-checks.ts";
 import "./rbc-test-globals.ts";
 
-const require = createRequire(import.meta.url);
-const AXE_PATH = require.resolve("axe-core/axe.min.js");
+const app = useApp();
 
-const PHONE = { width: 390, height: 844 };
-const DESKTOP = { width: 1280, height: 800 };
-
-/** Every key of the catalogues these pages use: none may show on the page in place of its text. */
-const KEYS = [shellMessages, robotMessages, uiMessages, unitMessages].flatMap((m) => Object.keys(m));
-
-let app: AppHarness;
-let fakeSerial: string;
-
-beforeAll(async () => {
-  app = await startHarness();
-  ({ fakeSerial } = await buildOnce());
-});
-
-afterAll(async () => {
-  await app?.close();
-});
-
-/**
- * A page whose browser prefers `locale` (navigator.languages), with the fake serial port. `bypassCSP` lets axe
- * be added as a script (the panel's CSP rightly refuses it).
- */
-async function newLocalePage(
-  locale: string,
-  viewport = DESKTOP,
-  bypassCSP = false,
-): Promise<{ context: BrowserContext; page: Page }> {
-  const context = await app.browser.newContext({
-    locale,
-    viewport,
-    serviceWorkers: "block",
-    reducedMotion: "reduce",
-    bypassCSP,
-  });
-  await context.addInitScript({ content: `window.__rbcTestOptions = {};\n;\n${fakeSerial}` });
-  const page = await context.newPage();
-  return { context, page };
-}
-
-/** Connects the fake robot from the connect card (its main button, whatever its language). */
-async function connect(page: Page): Promise<void> {
-  await page.getByTestId("connect-card").locator(".btn--primary").click();
-  await page.getByTestId("device-card").waitFor();
-  // The memory figures have been read.
-  await page.getByTestId("memory-action-note").filter({ hasText: /8,192/ }).waitFor();
-}
-
-const lang = (page: Page) => page.evaluate(() => document.documentElement.lang);
 const navLabels = (page: Page) =>
   page.locator(".side-nav a").evaluateAll((links) => links.map((a) => (a.textContent ?? "").trim()));
 
-/** Buttons, navigation links and selects whose label is wider than they are, as "label (scroll > client)". */
-async function overflowing(page: Page): Promise<string[]> {
-  return page.evaluate(() =>
-    Array.from(document.querySelectorAll<HTMLElement>("button, .btn, .side-nav a, select, .skip-link"))
-      .filter((b) => b.offsetParent !== null && b.scrollWidth > b.clientWidth)
-      .map(
-        (b) => `${(b.textContent ?? "").replace(/\s+/g, " ").trim()} (${b.scrollWidth} > ${b.clientWidth})`,
-      ),
-  );
-}
-
-/** Catalogue keys shown as text or in a label (a message the page could not find). */
-async function keysShown(page: Page): Promise<string[]> {
-  const text = await page.evaluate(() =>
-    [
-      document.title,
-      document.body.textContent ?? "",
-      ...Array.from(document.querySelectorAll("[aria-label], [title]")).map(
-        (e) => `${e.getAttribute("aria-label") ?? ""} ${e.getAttribute("title") ?? ""}`,
-      ),
-    ].join("\n"),
-  );
-  return KEYS.filter((key) => text.includes(key));
-}
-
-async function axeViolations(page: Page): Promise<string[]> {
-  if (!(await page.evaluate(() => "axe" in window))) await page.addScriptTag({ path: AXE_PATH });
-  const found = await page.evaluate(async () => {
-    type Run = (o: unknown) => Promise<{ violations: unknown[] }>;
-    const axe = (window as unknown as { axe: { run: Run } }).axe;
-    return (await axe.run({ resultTypes: ["violations"] })).violations as {
-      id: string;
-      help: string;
-      nodes: { target: unknown[] }[];
-    }[];
-  });
-  return found.map((v) => `${v.id}: ${v.help} — ${v.nodes.map((n) => JSON.stringify(n.target)).join(", ")}`);
-}
-
 describe("the panel in Korean", () => {
   it("follows a Korean browser: lang, navigation, title, footer and the Robot view", async () => {
-    const { page, context } = await newLocalePage("ko-KR");
-    await page.goto(app.url, { waitUntil: "domcontentloaded" });
+    const { page, context } = await newLocalePage(app, "ko-KR");
     await page.getByTestId("connect-card").waitFor();
     expect(await lang(page)).toBe("ko");
     expect(await navLabels(page)).toEqual([
@@ -130,7 +46,7 @@ describe("the panel in Korean", () => {
     );
     expect(await page.getByLabel("언어 / Language").inputValue()).toBe("ko");
 
-    await connect(page);
+    await connectCable(page);
     const card = page.getByTestId("device-card");
     expect(await card.getByRole("heading", { level: 1 }).textContent()).toBe("로봇");
     await card.getByRole("button", { name: "다시 읽기" }).waitFor();
@@ -158,9 +74,8 @@ describe("the panel in Korean", () => {
   });
 
   it("switches to English and back, sets lang, and remembers the choice across a reload", async () => {
-    const { page, context } = await newLocalePage("ko-KR");
-    await page.goto(app.url, { waitUntil: "domcontentloaded" });
-    await connect(page);
+    const { page, context } = await newLocalePage(app, "ko-KR");
+    await connectCable(page);
 
     await page.getByLabel("언어 / Language").selectOption("en");
     await expect.poll(() => lang(page)).toBe("en");
@@ -203,8 +118,7 @@ describe("the panel in Korean", () => {
   });
 
   it("is reached with Tab from the navigation", async () => {
-    const { page, context } = await newLocalePage("en-US");
-    await page.goto(app.url, { waitUntil: "domcontentloaded" });
+    const { page, context } = await newLocalePage(app, "en-US");
     await page.getByTestId("connect-card").waitFor();
     expect(await lang(page)).toBe("en");
     await page.locator(".side-nav a").last().focus();
@@ -216,29 +130,24 @@ describe("the panel in Korean", () => {
 
 describe("layout and accessibility in both languages", () => {
   for (const locale of ["ko-KR", "en-US"]) {
-    for (const viewport of [DESKTOP, PHONE]) {
-      it(`no label overflows and nothing scrolls sideways, ${locale} at ${viewport.width}×${viewport.height}`, async () => {
-        const { page, context } = await newLocalePage(locale, viewport);
-        await page.goto(app.url, { waitUntil: "domcontentloaded" });
+    for (const size of SIZES) {
+      it(`no label overflows and nothing scrolls sideways, ${locale} at ${size.width}×${size.height}`, async () => {
+        const { page, context } = await newLocalePage(app, locale, { size });
         await page.getByTestId("connect-card").waitFor();
-        expect(await overflowing(page), "the start card").toEqual([]);
-        await connect(page);
-        expect(await overflowing(page), "the Robot view").toEqual([]);
-        expect(await page.evaluate(() => document.documentElement.scrollWidth)).toBeLessThanOrEqual(
-          viewport.width,
-        );
-        expect(await keysShown(page)).toEqual([]);
+        const check = { lang: locale.slice(0, 2), axe: false };
+        await expectPageOk(page, "the start card", check);
+        await connectCable(page);
+        await expectPageOk(page, "the Robot view", check);
         await context.close();
       });
     }
 
     it(`axe finds no violation on the start card and the Robot view, ${locale}`, async () => {
-      const { page, context } = await newLocalePage(locale, DESKTOP, true);
-      await page.goto(app.url, { waitUntil: "domcontentloaded" });
+      const { page, context } = await newLocalePage(app, locale);
       await page.getByTestId("connect-card").waitFor();
-      expect(await axeViolations(page), "the start card").toEqual([]);
-      await connect(page);
-      expect(await axeViolations(page), "the Robot view").toEqual([]);
+      expect(await axeProblems(page), "the start card").toEqual([]);
+      await connectCable(page);
+      expect(await axeProblems(page), "the Robot view").toEqual([]);
       await context.close();
     });
   }
