@@ -4,53 +4,18 @@
  * with a refused factor, Teach-in with a limb limp, Play with its question and result, Check with a warning)
  * and the Drafts list with its question; the sentences the actions make are Korean too. No catalogue key
  * shows, no button's label overflows it and nothing scrolls sideways at 1280×800 and 390×844, and axe finds no
- * violation. Screenshots of every tab at both sizes go to /tmp/shots-c7/ to be looked at.
+ * violation (tests/e2e/i18n-checks.ts). Screenshots of every tab at both sizes with RBC_SHOTS=<dir>.
  */
-import { readFileSync } from "node:fs";
-import { mkdir } from "node:fs/promises";
-import { createRequire } from "node:module";
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { unitMessages } from "../../src/i18n/messages.ts";
-import { editorMessages } from "../../src/ui/features/editor/messages.ts";
-import { motionsMessages } from "../../src/ui/features/motions/messages.ts";
-import { jointMessages } from "../../src/ui/features/zeros/joints/messages.ts";
-import { uiMessages } from "../../src/ui/messages.ts";
-import { robot3dMessages } from "../../src/ui/robot3d/messages.ts";
-import { shellMessages } from "../../src/ui/shell/messages.ts";
-import { type AppHarness, FAST, squash, startHarness } from "./harness.ts";
+import { describe, expect, it } from "vitest";
+import { type AppHarness, FAST, squash } from "./harness.ts";
+import { DESKTOP, expectPageOk, pageLang as lang, PHONE, useApp } from "./i18n-checks.ts";
 import "./rbc-test-globals.ts";
 
-const AXE_SOURCE = readFileSync(createRequire(import.meta.url).resolve("axe-core/axe.min.js"), "utf8");
-const SHOTS = "/tmp/shots-c7";
-
-const PHONE = { width: 390, height: 844 };
-const DESKTOP = { width: 1280, height: 800 };
 const VIEWPORTS = [DESKTOP, PHONE] as const;
 
-/** Every key of the catalogues the Editor uses: none may show on the page in place of its text. */
-const KEYS = [
-  editorMessages,
-  jointMessages,
-  motionsMessages,
-  robot3dMessages,
-  shellMessages,
-  uiMessages,
-  unitMessages,
-].flatMap((m) => Object.keys(m));
+const app: AppHarness = useApp();
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-  await mkdir(SHOTS, { recursive: true });
-});
-
-afterAll(async () => {
-  await app?.close();
-});
-
-const lang = (page: Page) => page.evaluate(() => document.documentElement.lang);
 const size = (viewport: { width: number; height: number }) => `${viewport.width}x${viewport.height}`;
 const text = async (page: Page, testId: string) => squash(await page.getByTestId(testId).textContent());
 
@@ -86,80 +51,13 @@ async function openEditor(page: Page): Promise<void> {
   await page.locator('[data-testid="editor-robot3d"][data-state="ready"]').waitFor({ timeout: 20_000 });
 }
 
-/** Buttons, button-like labels, tabs, navigation links and selects whose label is wider than they are. */
-async function overflowing(page: Page): Promise<string[]> {
-  return page.evaluate(() =>
-    Array.from(
-      document.querySelectorAll<HTMLElement>("button, .btn, [role=tab], .side-nav a, select, .skip-link"),
-    )
-      .filter((b) => b.offsetParent !== null && b.scrollWidth > b.clientWidth)
-      .map(
-        (b) => `${(b.textContent ?? "").replace(/\s+/g, " ").trim()} (${b.scrollWidth} > ${b.clientWidth})`,
-      ),
-  );
-}
-
-const pageWidth = (page: Page) => page.evaluate(() => document.documentElement.scrollWidth);
-
-/** Catalogue keys shown as text or in a label (a message the page could not find). */
-async function keysShown(page: Page): Promise<string[]> {
-  const shown = await page.evaluate(() =>
-    [
-      document.title,
-      document.body.textContent ?? "",
-      ...Array.from(document.querySelectorAll("[aria-label], [title], [placeholder]")).map(
-        (e) =>
-          `${e.getAttribute("aria-label") ?? ""} ${e.getAttribute("title") ?? ""} ${e.getAttribute("placeholder") ?? ""}`,
-      ),
-    ].join("\n"),
-  );
-  return KEYS.filter((key) => shown.includes(key));
-}
-
-interface AxeViolation {
-  id: string;
-  impact: string | null;
-  help: string;
-  nodes: { target: unknown[]; failureSummary?: string }[];
-}
-
-/** axe's "needs review" results that are accepted (as in a11y.test.ts), each with the reason. */
-const REVIEWED: Record<string, string> = {
-  "color-contrast":
-    "axe cannot measure text it cannot see the background of (aria-hidden icons, text over other elements); " +
-    "the colour tokens are chosen for 4.5:1",
-};
-
-/** One line per violation or unreviewed "needs review" (a11y.test.ts's helper; axe added through evaluate). */
-async function violations(page: Page): Promise<string[]> {
-  if (!(await page.evaluate(() => "axe" in window))) await page.evaluate(AXE_SOURCE);
-  const found = await page.evaluate(async () => {
-    type Run = (o: unknown) => Promise<{ violations: unknown[]; incomplete: unknown[] }>;
-    const axe = (window as unknown as { axe: { run: Run } }).axe;
-    const result = await axe.run({ resultTypes: ["violations", "incomplete"] });
-    return { violations: result.violations, incomplete: result.incomplete };
-  });
-  const line = (v: AxeViolation, kind: string) =>
-    `${v.id} (${v.impact ?? "?"}${kind}): ${v.help} — ${v.nodes.map((n) => `${JSON.stringify(n.target)} ${(n.failureSummary ?? "").replace(/\s+/g, " ")}`).join(", ")}`;
-  return [
-    ...(found.violations as AxeViolation[]).map((v) => line(v, "")),
-    ...(found.incomplete as AxeViolation[])
-      .filter((v) => !(v.id in REVIEWED))
-      .map((v) => line(v, ", needs review")),
-  ];
-}
-
-/** The layout checks of one state of the Editor, its screenshot, and axe. */
+/** The layout checks of one state of the Editor (tests/e2e/i18n-checks.ts), its screenshot, and axe. */
 async function expectTidy(
   page: Page,
   where: string,
   viewport: { width: number; height: number },
 ): Promise<void> {
-  expect(await overflowing(page), where).toEqual([]);
-  expect(await pageWidth(page), where).toBeLessThanOrEqual(viewport.width);
-  expect(await keysShown(page), where).toEqual([]);
-  await page.screenshot({ path: `${SHOTS}/editor-${where}-ko-${size(viewport)}.png`, fullPage: true });
-  expect(await violations(page), where).toEqual([]);
+  await expectPageOk(page, where, { lang: "ko", shot: `editor-${where}-ko-${size(viewport)}` });
 }
 
 describe("the Editor in Korean", () => {
