@@ -280,17 +280,6 @@ export const cliMessages = defineMessages({
   "cli.robotError.unknown": { en: "unknown error code", ko: "알 수 없는 오류 코드" },
   "cli.platform.unknown": { en: "unknown ({platform})", ko: "알 수 없음 ({platform})" },
 
-  "cli.motion.getUpFront": { en: "Get up A (from front)", ko: "일어나기 A (엎드려서)" },
-  "cli.motion.getUpBack": { en: "Get up B (from back)", ko: "일어나기 B (누워서)" },
-  "cli.motion.turnLeft": { en: "Turn left", ko: "왼쪽으로 돌기" },
-  "cli.motion.walkForward": { en: "Walk forward", ko: "앞으로 걷기" },
-  "cli.motion.turnRight": { en: "Turn right", ko: "오른쪽으로 돌기" },
-  "cli.motion.sidestepLeft": { en: "Sidestep left", ko: "왼쪽 옆걸음" },
-  "cli.motion.basicPosture": { en: "Basic posture", ko: "기본 자세" },
-  "cli.motion.sidestepRight": { en: "Sidestep right", ko: "오른쪽 옆걸음" },
-  "cli.motion.punchLeft": { en: "Punch left", ko: "왼손 펀치" },
-  "cli.motion.walkBackward": { en: "Walk backward", ko: "뒤로 걷기" },
-  "cli.motion.punchRight": { en: "Punch right", ko: "오른손 펀치" },
   "cli.motion.downloaded": {
     en: "{motion} (downloaded motion {slot})",
     ko: "{motion} (다운로드한 모션 {slot})",

@@ -1,5 +1,6 @@
 import { RbcError } from "../../../device/errors.ts";
 import type { Locale } from "../../../i18n/locale.ts";
+import { builtInMotionName } from "../../../i18n/motion-names/built-in-motion-name.ts";
 import { translator } from "../../../i18n/translate.ts";
 import {
   BASIC_POSTURE_MOTION,
@@ -13,7 +14,7 @@ import type { AppContext } from "../../context.ts";
 import { errorMessage, errorNotice, technicalDetail } from "../../error-text.ts";
 import { focusSoon } from "../../focus.ts";
 import { type MotionRun, motionsController } from "./controllers.ts";
-import { type MotionsKey, type MotionsTranslator, motionsMessages } from "./messages.ts";
+import { type MotionsTranslator, motionsMessages } from "./messages.ts";
 import { formatSeconds } from "./plot-data.ts";
 import { motionNumberOf, type SlotBook } from "./slot-book.ts";
 import { motionsOf, patchMotions, robotBusyReason } from "./state.ts";
@@ -29,28 +30,13 @@ export interface OfferedMotion {
   slot?: number;
 }
 
-/** The built-in motions' names (protocol/catalog.ts BUILT_IN_MOTIONS), by motion number, in the panel's words. */
-const BUILT_IN_NAMES: Readonly<Record<number, MotionsKey>> = {
-  1: "motions.builtIn.getUpA",
-  2: "motions.builtIn.getUpB",
-  3: "motions.builtIn.turnLeft",
-  4: "motions.builtIn.walkForward",
-  5: "motions.builtIn.turnRight",
-  6: "motions.builtIn.sidestepLeft",
-  7: "motions.builtIn.basicPosture",
-  8: "motions.builtIn.sidestepRight",
-  9: "motions.builtIn.punchLeft",
-  10: "motions.builtIn.walkBackward",
-  11: "motions.builtIn.punchRight",
-};
-
 /** The built-in motions (Run Motion 1-11) with their names in the panel's language. */
 export function builtInOffers(locale: Locale): OfferedMotion[] {
-  const t = translator(motionsMessages, locale);
-  return BUILT_IN_MOTIONS.map((m) => {
-    const key = BUILT_IN_NAMES[m.number];
-    return { number: m.number, name: key ? t(key) : m.name, expectedMs: m.durationMs };
-  });
+  return BUILT_IN_MOTIONS.map((m) => ({
+    number: m.number,
+    name: builtInMotionName(m.number, locale) ?? m.name,
+    expectedMs: m.durationMs,
+  }));
 }
 
 export function isBuiltIn(number: number): boolean {

@@ -1,5 +1,6 @@
 import type { SubscriptionKind } from "../../../device/types.ts";
 import type { Locale } from "../../../i18n/locale.ts";
+import { builtInMotionName as sharedBuiltInName } from "../../../i18n/motion-names/built-in-motion-name.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { BUILT_IN_MOTIONS } from "../../../protocol/catalog.ts";
 import { type SensorsTranslator, sensorsMessages } from "./messages.ts";
@@ -38,32 +39,7 @@ export function addEvent(
  * another number.
  */
 export function builtInMotionName(t: SensorsTranslator, number: number): string | undefined {
-  switch (number) {
-    case 1:
-      return t("sensors.motion.getUpA");
-    case 2:
-      return t("sensors.motion.getUpB");
-    case 3:
-      return t("sensors.motion.turnLeft");
-    case 4:
-      return t("sensors.motion.walkForward");
-    case 5:
-      return t("sensors.motion.turnRight");
-    case 6:
-      return t("sensors.motion.sidestepLeft");
-    case 7:
-      return t("sensors.motion.basicPosture");
-    case 8:
-      return t("sensors.motion.sidestepRight");
-    case 9:
-      return t("sensors.motion.punchLeft");
-    case 10:
-      return t("sensors.motion.walkBackward");
-    case 11:
-      return t("sensors.motion.punchRight");
-    default:
-      return BUILT_IN_MOTIONS.find((m) => m.number === number)?.name;
-  }
+  return sharedBuiltInName(number, t.locale) ?? BUILT_IN_MOTIONS.find((m) => m.number === number)?.name;
 }
 
 /** "PF2 pressed", "IR key 7 (Basic posture)", "Sound level 42" (English unless a language is given). */

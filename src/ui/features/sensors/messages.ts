@@ -106,17 +106,6 @@ export const sensorsMessages = defineMessages({
   "sensors.event.sound": { en: "Sound level {level}", ko: "소리 크기 {level}" },
 
   // The built-in motions an IR key plays (protocol/catalog.ts BUILT_IN_MOTIONS)
-  "sensors.motion.getUpA": { en: "Get up A (from front)", ko: "일어나기 A (엎드려서)" },
-  "sensors.motion.getUpB": { en: "Get up B (from back)", ko: "일어나기 B (누워서)" },
-  "sensors.motion.turnLeft": { en: "Turn left", ko: "왼쪽으로 돌기" },
-  "sensors.motion.walkForward": { en: "Walk forward", ko: "앞으로 걷기" },
-  "sensors.motion.turnRight": { en: "Turn right", ko: "오른쪽으로 돌기" },
-  "sensors.motion.sidestepLeft": { en: "Sidestep left", ko: "왼쪽 옆걸음" },
-  "sensors.motion.basicPosture": { en: "Basic posture", ko: "기본 자세" },
-  "sensors.motion.sidestepRight": { en: "Sidestep right", ko: "오른쪽 옆걸음" },
-  "sensors.motion.punchLeft": { en: "Punch left", ko: "왼손 펀치" },
-  "sensors.motion.walkBackward": { en: "Walk backward", ko: "뒤로 걷기" },
-  "sensors.motion.punchRight": { en: "Punch right", ko: "오른손 펀치" },
 
   // The watch's notices (watch.ts)
   "sensors.inServoControl": {
