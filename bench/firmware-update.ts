@@ -7,7 +7,7 @@ import { BYTE_MS, WIRE_BYTES_PER_SECOND } from "./upload-ideal.ts";
 import { wireClock } from "./wire-clock.ts";
 
 /**
- * A firmware update (PROTOCOL.md §11) of a 64 KiB image in process: updateFirmware → WebSerialTransport →
+ * A firmware update (docs/protocol.md §11) of a 64 KiB image in process: updateFirmware → WebSerialTransport →
  * MockSerialPort (115200 baud pacing, adapter latency) → simulated bootloader (4.5 ms page writes) →
  * SimulatedRbc. Only the sending phase is timed: from the first line written to `@` (the power cycle and the
  * version read are a person's and the firmware's time).

@@ -5,7 +5,7 @@ import { PROJECT_ROOT } from "./bundle-size.ts";
 
 /**
  * The motion the upload figures send: one of the project's own examples (a plain clone has it), as the motion
- * image the panel and the CLI upload (PROTOCOL.md §6.3).
+ * image the panel and the CLI upload (docs/protocol.md §6.3).
  */
 export const BENCH_MOTION = new URL("../examples/wave.rbm", import.meta.url);
 

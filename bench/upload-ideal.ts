@@ -1,5 +1,5 @@
 /**
- * The first-principles ideal time of an upload, from the protocol alone (PROTOCOL.md §1, §2, §6.2) and the
+ * The first-principles ideal time of an upload, from the protocol alone (docs/protocol.md §1, §2, §6.2) and the
  * link's parameters. Nothing here asks the simulator or the mock port: the ideal is what a perfect client on a
  * perfect stop-and-wait link would take, and the bench divides it by the time the real client takes on the
  * real clock. (Dividing the simulator's timing model by the same model would be 1 by construction.)

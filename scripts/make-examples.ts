@@ -3,7 +3,7 @@
  * serializer. `npx tsx scripts/make-examples.ts` (re)writes the files; tests/unit/examples.test.ts checks that the
  * committed files equal what `buildExamples()` produces, byte for byte.
  *
- * Every motion starts and ends in the HUNO basic posture (PROTOCOL.md §5), stays inside the safe ranges, keeps
+ * Every motion starts and ends in the HUNO basic posture (docs/protocol.md §5), stays inside the safe ranges, keeps
  * its scenes continuous (a scene starts where the previous one ended), uses frames at least 20 ms apart, at most
  * 100 frames and 10,000 ms a scene, the usual header constants 1/1/2/4, serial number zeros and the standard zero
  * table as its zero field. The output is deterministic: no clock, no randomness.
@@ -12,14 +12,14 @@ import { writeFileSync } from "node:fs";
 import { fileURLToPath } from "node:url";
 import { type RbmMotion, type RbmScene, type RbmServo, serializeRbm } from "../src/protocol/rbm.ts";
 
-/** The HUNO basic posture, servo ids 0-15 (PROTOCOL.md §5). */
+/** The HUNO basic posture, servo ids 0-15 (docs/protocol.md §5). */
 const BASIC: readonly number[] = [125, 179, 199, 88, 108, 126, 72, 49, 163, 141, 51, 47, 49, 199, 205, 205];
-/** The standard zero table (PROTOCOL.md §4): the zero field of every example's servo records. */
+/** The standard zero table (docs/protocol.md §4): the zero field of every example's servo records. */
 const STANDARD_ZEROS: readonly number[] = [
   125, 202, 162, 66, 108, 124, 48, 88, 184, 142, 90, 40, 125, 161, 210, 127,
 ];
 
-/** Joint ids (PROTOCOL.md §5; src/protocol/servo-limits.ts HUNO_JOINT_NAMES). */
+/** Joint ids (docs/protocol.md §5; src/protocol/servo-limits.ts HUNO_JOINT_NAMES). */
 const J = {
   rHipRoll: 0,
   rHipPitch: 1,

@@ -34,7 +34,7 @@ export interface Robot {
   /** "the demo robot" or the port path, for English messages (`robotPlace` says it in a language). */
   where: string;
   /**
-   * The demo robot's bootloader (PROTOCOL.md §11), which sits in front of its simulated RBC: `rbc flash --demo`
+   * The demo robot's bootloader (docs/protocol.md §11), which sits in front of its simulated RBC: `rbc flash --demo`
    * switches the demo robot off and on with its `powerCycle()`, as a person would switch a real one.
    */
   bootloader?: BootloaderRbc;
@@ -209,7 +209,7 @@ export async function connectRobot(
     closed ??= client.close().finally(() => {
       dispose();
       const unasked = client.stats.unansweredReplies;
-      // Said once, at the end: a firmware that repeats a reply (PROTOCOL.md §3.5) is worth knowing about.
+      // Said once, at the end: a firmware that repeats a reply (docs/protocol.md §3.5) is worth knowing about.
       if (unasked > 0) {
         env.out.note(
           `rbc: ${translator(cliMessages, localeOf(env))("cli.connect.unasked", { count: unasked })}`,

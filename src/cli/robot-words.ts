@@ -6,7 +6,7 @@ import { cliMessages } from "./messages.ts";
 
 /** What the robot reports about itself, in words of a language (the protocol's catalogue has the English). */
 
-/** The robot's error codes (0x11, PROTOCOL.md §3.2) in words, as the panel words them. */
+/** The robot's error codes (0x11, docs/protocol.md §3.2) in words, as the panel words them. */
 const ERROR_CODE_TEXT: Readonly<Record<number, KeysWithoutParams<typeof cliMessages>>> = {
   1: "cli.robotError.eeprom",
   2: "cli.robotError.checksum",

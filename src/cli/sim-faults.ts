@@ -1,6 +1,6 @@
 /**
  * The `--fault KIND` of `rbc sim`: what happens to a reply of the simulated RBC on its way to the serial
- * device. The same faults as src/sim/port-faults.ts (PROTOCOL.md §9), mapped onto a real device:
+ * device. The same faults as src/sim/port-faults.ts (docs/protocol.md §9), mapped onto a real device:
  *
  *   drop     one byte is lost: the last content byte of a packet (the only byte of a download `40`)
  *   corrupt  that byte arrives XOR 0x01, so the packet's checksum fails (a `40` becomes `41`)

@@ -18,7 +18,7 @@ import type { SimVariant } from "./sim-variant.ts";
 /**
  * `rbc sim`: the simulated RBC served on a serial device (one end of a PTY pair, or a real serial port wired
  * to a PC running other software). Bytes read from the device go to the simulator's bootloader
- * (`BootloaderRbc`, PROTOCOL.md §11), which hands them to `SimulatedRbc.receive` while the application runs;
+ * (`BootloaderRbc`, docs/protocol.md §11), which hands them to `SimulatedRbc.receive` while the application runs;
  * what they transmit is written to the device, through SimLink (pacing, latency, faults).
  *
  * The robot is switched off and on (for `rbc flash`) by SIGUSR1, or by a line "p" on stdin when stdin is a
@@ -26,7 +26,7 @@ import type { SimVariant } from "./sim-variant.ts";
  */
 export interface SimServerOptions extends SimLinkOptions {
   path: string;
-  /** The firmware variant to simulate (PROTOCOL.md §3.5); empty for the standard robot. */
+  /** The firmware variant to simulate (docs/protocol.md §3.5); empty for the standard robot. */
   variant?: SimVariant;
   /** Print nothing per packet. */
   quiet: boolean;

@@ -11,7 +11,7 @@ import { cliMessages } from "./messages.ts";
 import { said, saidEach } from "./said.ts";
 
 /**
- * Firmware variants of the simulated RBC (PROTOCOL.md §3.5), as command-line switches: `rbc sim` takes them as
+ * Firmware variants of the simulated RBC (docs/protocol.md §3.5), as command-line switches: `rbc sim` takes them as
  * options, and the demo robot of `--demo` takes the same switches from the RBC_DEMO_VARIANT environment
  * variable (e.g. `RBC_DEMO_VARIANT="--no-serial --firmware 9.99" rbc info --demo`). An environment variable
  * rather than more global options: the variants are for trying a client against odd firmware, not something
@@ -30,7 +30,7 @@ export const VARIANT_OPTIONS = {
 /** The demo robot's variant switches (same syntax as `rbc sim`'s). */
 export const DEMO_VARIANT_VAR = "RBC_DEMO_VARIANT";
 
-/** The reply the homebrew port repeats endlessly (PROTOCOL.md §3.5): the distance sensor's. */
+/** The reply the homebrew port repeats endlessly (docs/protocol.md §3.5): the distance sensor's. */
 export const DEFAULT_REPEAT_TYPE = 0x16;
 /**
  * Its pace: one 17-byte 0x16 reply about every 0.95 ms, 17.8 KB/s as measured on the homebrew port. Over a

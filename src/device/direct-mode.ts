@@ -22,7 +22,7 @@ export interface DirectModeHost {
 export const SERVO_IDS: readonly number[] = HUNO_SERVO_IDS;
 
 /**
- * Live servo control over the RBC's direct mode (PROTOCOL.md §5). Positions are kept inside each servo's
+ * Live servo control over the RBC's direct mode (docs/protocol.md §5). Positions are kept inside each servo's
  * safe range; the panel never changes a servo's id or baud rate.
  */
 export class DirectMode {
@@ -35,7 +35,7 @@ export class DirectMode {
     this.#raw = raw;
   }
 
-  /** The safe range of servo `id` (PROTOCOL.md §5 for 0-15; other ids get the full 0-254). */
+  /** The safe range of servo `id` (docs/protocol.md §5 for 0-15; other ids get the full 0-254). */
   static safeRange(id: number): { min: number; max: number } {
     return safeRange(id) ?? { min: 0, max: 254 };
   }

@@ -22,7 +22,7 @@ import {
 import type { RbcConnection } from "./rbc-connection.ts";
 
 /**
- * Replacing the RBC's application firmware through its bootloader (PROTOCOL.md §11): the user switches the
+ * Replacing the RBC's application firmware through its bootloader (docs/protocol.md §11): the user switches the
  * robot off and on, the bootloader announces itself with `^`, takes the entry bytes, and then the HEX file a
  * line at a time. The dialogue itself is `protocol/bootloader.ts`; this file gives it the link's raw bytes,
  * its timers, Cancel and progress, and reads the version the new firmware reports.
@@ -412,7 +412,7 @@ function runDialogue(
 }
 
 /**
- * What the panel and `rbc flash` say before a firmware update (PROTOCOL.md §11 [decision]), in these words in
+ * What the panel and `rbc flash` say before a firmware update (docs/protocol.md §11 [decision]), in these words in
  * both places.
  */
 export const FIRMWARE_NOTICES = {

@@ -7,7 +7,7 @@ import { RbcInvalidArgumentError } from "./errors.ts";
 import type { UploadOptions, UploadResult } from "./types.ts";
 
 /**
- * What an upload says, in one place for the panel and the CLI (PROTOCOL.md §6.3 [decision] Safety): on a real
+ * What an upload says, in one place for the panel and the CLI (docs/protocol.md §6.3 [decision] Safety): on a real
  * robot the experimental sentence comes before the first byte, with a confirmation, and the hold advice after.
  */
 export const UPLOAD_NOTICES = {
@@ -47,7 +47,7 @@ export interface UploadHost {
 }
 
 /**
- * The motion image the robot gets for `motion` (PROTOCOL.md §6.3), or a typed refusal: a file with errors
+ * The motion image the robot gets for `motion` (docs/protocol.md §6.3), or a typed refusal: a file with errors
  * under the RBC's rules (§7) never gets a byte sent.
  */
 export function motionPayload(motion: RbmMotion): Uint8Array {

@@ -75,7 +75,7 @@ export class RawChannel {
   }
 
   /**
-   * Counts the acknowledgement byte `byte` strictly until `endAckGuard()` (a download, PROTOCOL.md §6.2: one
+   * Counts the acknowledgement byte `byte` strictly until `endAckGuard()` (a download, docs/protocol.md §6.2: one
    * `40` per part written). [decision] The design, and why:
    * - Exactly one acknowledgement is owed per part written, and only from the moment its write was issued
    *   until it arrives. Any other one is a fault detected the moment it arrives: a second `40` in the same

@@ -62,7 +62,7 @@ export type { RbcClientOptions, RbcTimeouts } from "./rbc-connection.ts";
 
 /** How long after Run Motion the client checks whether the robot ignored it (see watchForIgnoredMotion). */
 const IGNORED_MOTION_PROBE_MS = 1000;
-/** Error 3 after Run Motion of a download slot: nothing was downloaded there (PROTOCOL.md §3.1). */
+/** Error 3 after Run Motion of a download slot: nothing was downloaded there (docs/protocol.md §3.1). */
 const EMPTY_SLOT_ERROR = 3;
 
 /** The longest the RBC may take to reach the end of the current scene after a 7 (a scene is at most ~10 s in
@@ -116,7 +116,7 @@ function copyZeroTable(zeros: readonly number[]): number[] {
 }
 
 /**
- * The RBC as typed operations (PROTOCOL.md §3-6): reads, zero writes with read-back, motions and sounds that
+ * The RBC as typed operations (docs/protocol.md §3-6): reads, zero writes with read-back, motions and sounds that
  * resolve when the robot reports them finished, uploads, event subscriptions, direct servo control, Stop (ends
  * what runs, the robot keeps standing) and Limp (every servo passive).
  * The conversation underneath (one request at a time, timeouts, retries, events) is an `RbcConnection` held
@@ -207,14 +207,14 @@ export class RbcClient {
     return this.#c.command(COMMANDS.readFirmwareVersion, undefined);
   }
 
-  /** 0x0C. Not every firmware answers it (PROTOCOL.md §3.5): `identify()` treats it as optional. */
+  /** 0x0C. Not every firmware answers it (docs/protocol.md §3.5): `identify()` treats it as optional. */
   readSerialNumber(): Promise<string> {
     return this.#c.command(COMMANDS.readSerialNumber, undefined);
   }
 
   /**
    * What the robot says about itself: firmware version and platform (required), serial number (optional:
-   * the official firmware source does not answer 0x0C, PROTOCOL.md §3.5; undefined then, "not reported").
+   * the official firmware source does not answer 0x0C, docs/protocol.md §3.5; undefined then, "not reported").
    * Values are reported as the robot gives them (9.99, platform 4), with `warnings` for implausible ones.
    */
   async identify(known?: DeviceIdentity): Promise<RobotIdentity> {
@@ -256,7 +256,7 @@ export class RbcClient {
     return this.#c.command(COMMANDS.readAccelerometer, undefined);
   }
 
-  /** 0x1E: the reply format is unknown, so its raw content bytes are returned (PROTOCOL.md §3.4). */
+  /** 0x1E: the reply format is unknown, so its raw content bytes are returned (docs/protocol.md §3.4). */
   executionStatus(motion: number): Promise<Uint8Array> {
     return this.#c.command(COMMANDS.executionStatus, motion);
   }
@@ -322,7 +322,7 @@ export class RbcClient {
    * when it reports the motion finished: `motion`, or 7 when `stopMotion()` ended it at the end of a scene.
    * `expectedMs` is the motion's duration when the caller knows it (a downloaded motion).
    *
-   * The RBC does not say that it ignored a motion (PROTOCOL.md §3.6): an empty download slot sets error 3, which
+   * The RBC does not say that it ignored a motion (docs/protocol.md §3.6): an empty download slot sets error 3, which
    * a read of the error code a second after the start notices (when the code was not 3 already); anything else
    * shows only as no reply within the expected duration plus a margin, and the error then says what is known
    * and what is not.
@@ -409,7 +409,7 @@ export class RbcClient {
 
   /**
    * A second after Run Motion of a download slot, reads the error code (the RBC answers it even while a motion
-   * plays, PROTOCOL.md §3.6): a new error 3 means the slot is empty, and the wait ends at once.
+   * plays, docs/protocol.md §3.6): a new error 3 means the slot is empty, and the wait ends at once.
    */
   #watchForEmptySlot(): { emptySlot: boolean; dispose(): void } {
     const type = COMMANDS.readErrorCode.type;
@@ -439,7 +439,7 @@ export class RbcClient {
     return watch;
   }
 
-  /** No end of motion within its expected time: say what is known (PROTOCOL.md §3.6), never more. */
+  /** No end of motion within its expected time: say what is known (docs/protocol.md §3.6), never more. */
   #motionUnconfirmed(motion: number, expectedMs: number, cause: RbcTimeoutError): RbcError {
     const waited = `${(cause.waitedMs / 1000).toFixed(1)} s`;
     if (motion !== BASIC_POSTURE_MOTION && !this.#c.state.basicPostureConfirmed) {
@@ -458,7 +458,7 @@ export class RbcClient {
 
   /**
    * Ends the playing motion the only way the RBC allows: motion 7, which it takes even while playing
-   * (PROTOCOL.md §3.6). The robot stops at the end of the current scene and answers once, `07`; the stopped
+   * (docs/protocol.md §3.6). The robot stops at the end of the current scene and answers once, `07`; the stopped
    * motion's own reply never comes and basic posture is not played (the robot holds the pose it stopped in).
    * This resolves when that reply has come. With nothing playing it runs motion 7 (basic posture).
    */
@@ -501,7 +501,7 @@ export class RbcClient {
 
   /**
    * Sends 7 to end a playing motion and waits for its single `07` reply (the robot finishes its scene first,
-   * PROTOCOL.md §3.6).
+   * docs/protocol.md §3.6).
    */
   #endMotionWith7(): Promise<unknown> {
     return this.#c.transact(
@@ -539,7 +539,7 @@ export class RbcClient {
   #sounding: Promise<number> | undefined;
 
   /**
-   * Uploads a motion file end to end (PROTOCOL.md §6): refuses a file with errors before anything is sent,
+   * Uploads a motion file end to end (docs/protocol.md §6): refuses a file with errors before anything is sent,
    * builds its image, optionally resets the motion memory first, checks the free memory, downloads the image
    * chunk by chunk and counts it done only when the robot's free memory dropped by exactly its footprint.
    */
@@ -567,7 +567,7 @@ export class RbcClient {
   }
 
   /**
-   * Replaces the robot's firmware through its bootloader (PROTOCOL.md §11; see `updateFirmware`): the file is
+   * Replaces the robot's firmware through its bootloader (docs/protocol.md §11; see `updateFirmware`): the file is
    * checked first (an `IntelHexError` naming the line, nothing sent), then, with nothing else on the link,
    * `onAskPowerCycle` asks the user to switch the robot off and on, the file goes line by line, and the version
    * the new firmware reports is read. Failures are `FirmwareUpdateError`s saying what the robot holds.
@@ -623,7 +623,7 @@ export class RbcClient {
     };
   }
 
-  /** Uploads a motion image (type 0x01) chunk by chunk (PROTOCOL.md §6.2); `uploadMotion` builds the image. */
+  /** Uploads a motion image (type 0x01) chunk by chunk (docs/protocol.md §6.2); `uploadMotion` builds the image. */
   writeMotion(bytes: Uint8Array, options: UploadOptions = {}): Promise<UploadResult> {
     return this.#stoppableUpload((host) => host.upload("motion", bytes, options));
   }
@@ -707,7 +707,7 @@ export class RbcClient {
   }
 
   /**
-   * Tethered play (PROTOCOL.md §10, docs/tethered-play.md): plays `doc` (or `options.range` of its scenes) on the
+   * Tethered play (docs/protocol.md §10, docs/tethered-play.md): plays `doc` (or `options.range` of its scenes) on the
    * robot in direct mode, one synchronised move of servos 0..max per frame at the frame's time, the robot's zero
    * deltas applied, every position inside the safe ranges. A motion the RBC would refuse is refused before
    * anything is sent (`TetheredPlayError`, `invalid-argument`). The zeros (0x0B) and platform are read when not
@@ -752,10 +752,10 @@ export class RbcClient {
 
   /**
    * Stop: ends what the robot is doing and keeps it standing. Never makes a servo passive (that is `limp()`).
-   * - A motion ends with 7, the only request the RBC takes while playing (PROTOCOL.md §3.6): it stops at the end
+   * - A motion ends with 7, the only request the RBC takes while playing (docs/protocol.md §3.6): it stops at the end
    *   of the current scene and answers once, `07`; the robot holds that pose. The `runMotion` waiting for it
    *   rejects with `RbcCancelledError`. Basic posture (7) itself cannot be stopped and is waited out.
-   * - A sound is waited out: the RBC receives nothing while a sound plays (PROTOCOL.md §3.6).
+   * - A sound is waited out: the RBC receives nothing while a sound plays (docs/protocol.md §3.6).
    * - An upload is cancelled as its own Cancel does (the download is abandoned; the robot's memory is checked).
    * - In direct mode, servo moves not yet sent are dropped; the servos hold their last position.
    * - Tethered play (`playTethered`) stops after the frame on the wire; the servos hold that frame.
@@ -916,7 +916,7 @@ export class RbcClient {
     const epoch = this.#c.epoch;
     return this.#c.exclusive(async () => {
       if (this.#c.mode === "direct") return this.servos.limpAll();
-      // The RBC takes nothing while a sound plays, and nothing but 7 while a motion plays (PROTOCOL.md §3).
+      // The RBC takes nothing while a sound plays, and nothing but 7 while a motion plays (docs/protocol.md §3).
       if (sounding)
         await this.#c.sleep(Math.max(0, sounding.startedAt + sounding.expectedMs - this.#c.clock.now()) + 50);
       if (playing) await this.#endMotionForStop(playing);

@@ -179,7 +179,7 @@ export class RbcConnection {
     this.parser = new PacketParser({
       onDiscard: (reason, bytes) =>
         this.emitLog({ direction: "in", kind: "discard", name: reason, bytes, note: `discarded: ${reason}` }),
-      // No reply carries more than its type can (PROTOCOL.md §3.5): a corrupted size byte costs one reply.
+      // No reply carries more than its type can (docs/protocol.md §3.5): a corrupted size byte costs one reply.
       maxContent: (type) => COMMAND_BY_TYPE.get(type)?.replySize ?? MAX_REPLY_CONTENT,
     });
     this.raw = new RawChannel(this.clock, (bytes, note) => this.writeRaw(bytes, note));
@@ -238,7 +238,7 @@ export class RbcConnection {
         throw e instanceof LinkError ? RbcPortError.fromLink(e) : e;
       }
       // In case the RBC was left in the middle of a download (by an earlier program that died) or in direct
-      // mode (PROTOCOL.md §5): neither gets a reply, and each is harmless garbage in the other states.
+      // mode (docs/protocol.md §5): neither gets a reply, and each is harmless garbage in the other states.
       await this.withTimeout(
         this.writeRaw(
           concatBytes(ABANDON_DOWNLOAD, EXIT_DIRECT_MODE),
@@ -305,7 +305,7 @@ export class RbcConnection {
     return this.exclusive(() => this.request(spec, args, options));
   }
 
-  /** How long to wait for a reply to `spec`, from its timeout class (PROTOCOL.md §3 "reply arrives"). */
+  /** How long to wait for a reply to `spec`, from its timeout class (docs/protocol.md §3 "reply arrives"). */
   timeoutFor<A>(spec: CommandSpec<A, unknown>, args: A, expectedMs?: number): number {
     switch (spec.timeout) {
       case "quick":

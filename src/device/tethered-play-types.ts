@@ -38,7 +38,7 @@ export interface TetheredPlayResult {
   outcome: "finished" | "stopped";
   framesSent: number;
   totalFrames: number;
-  /** Frames that lead from the pose read to the motion's first pose (PROTOCOL.md §10 step 2); in totalFrames. */
+  /** Frames that lead from the pose read to the motion's first pose (docs/protocol.md §10 step 2); in totalFrames. */
   transitionFrames: number;
   /** The last frame sent: its scene (-1 transition) and number. Undefined when none was sent. */
   lastFrame?: { scene: number; frame: number };

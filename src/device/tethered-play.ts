@@ -1,5 +1,5 @@
 /**
- * Tethered play (PROTOCOL.md §10): the PC plays a motion on the robot in direct mode, frame by frame, one
+ * Tethered play (docs/protocol.md §10): the PC plays a motion on the robot in direct mode, frame by frame, one
  * synchronised move of servos 0..max per frame, at the times `playFrames` (src/motion/frames.ts) computes. It
  * needs no motion image, so it works on any firmware. See docs/tethered-play.md for the decisions:
  * - [decision] The sync move carries one speed/torque for all servos: the strongest (lowest number) of the
@@ -277,7 +277,7 @@ function waitUntil(c: RbcConnection, due: number, signal: AbortSignal): Promise<
   });
 }
 
-/** Reads servos `ids` (status read, PROTOCOL.md §5); a silent one is tried once more unless all were silent. */
+/** Reads servos `ids` (status read, docs/protocol.md §5); a silent one is tried once more unless all were silent. */
 async function readPose(
   c: RbcConnection,
   ids: readonly number[],

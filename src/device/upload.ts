@@ -32,7 +32,7 @@ export interface UploadIo {
   sleep(ms: number): Promise<void>;
 }
 
-/** The RBC's error code for a bad chunk checksum (PROTOCOL.md §3.2). */
+/** The RBC's error code for a bad chunk checksum (docs/protocol.md §3.2). */
 const CHECKSUM_ERROR = 2;
 
 /**
@@ -44,7 +44,7 @@ const ACK_TIMEOUT_EXTRA_MS = 100;
 /** Allowance for a clock that ticks in whole milliseconds when timing an acknowledgement against the wire. */
 const CLOCK_SLACK_MS = 1;
 
-/** One chunk of the payload followed by its XOR checksum (PROTOCOL.md §6.2). */
+/** One chunk of the payload followed by its XOR checksum (docs/protocol.md §6.2). */
 export function downloadChunk(payload: Uint8Array, offset: number): Uint8Array {
   const end = Math.min(offset + DOWNLOAD_CHUNK, payload.length);
   const out = new Uint8Array(end - offset + 1);
@@ -54,7 +54,7 @@ export function downloadChunk(payload: Uint8Array, offset: number): Uint8Array {
 }
 
 /**
- * The download sequence of PROTOCOL.md §6.2 with the project's decisions: free memory checked first; one chunk
+ * The download sequence of docs/protocol.md §6.2 with the project's decisions: free memory checked first; one chunk
  * in flight; no chunk retried; a missing `40` ends the upload with the count of acknowledged bytes, the robot's
  * error code in words, and what its memory now holds (decided by reading free memory again). A `40` that was
  * not due (a stray, a duplicate, one too early: see `RawChannel.guardAcks`) stops the upload the same way, and
@@ -84,7 +84,7 @@ export async function uploadFile(
 
   const freeBefore = await readFree();
   // [decision] A file fits when its bytes do (the rounding only moves the next file's start), as the simulator
-  // decides too (PROTOCOL.md §6.1).
+  // decides too (docs/protocol.md §6.1).
   if (total > freeBefore) {
     throw new RbcRejectedError(
       `Not enough ${area} memory: the file has ${total} bytes, ${freeBefore} are free. Reset the ${area} memory (this forgets every downloaded ${area}) and try again. Nothing was sent.`,
@@ -163,7 +163,7 @@ export async function uploadFile(
 
   // Every chunk was acknowledged. That alone proves little (a stray `40` later than a chunk's wire time looks
   // like its acknowledgement): the file counts as recorded only when the robot's own accounting shows it, its
-  // free memory having dropped by exactly the file's footprint (PROTOCOL.md §6.1).
+  // free memory having dropped by exactly the file's footprint (docs/protocol.md §6.1).
   let freeAfter = await readFree().catch(() => undefined);
   let errorCode = await readError().catch(() => undefined);
   const expected = freeAfterRecording(freeBefore, footprint);
@@ -239,7 +239,7 @@ interface FailureContext {
 /**
  * The free memory the robot reports once it has recorded a file of `footprint` bytes: the robot's own
  * accounting, which is what confirms an upload. [decision] A file that fits by its bytes but not by its 64-byte
- * rounding leaves 0 free (as the simulator models it; PROTOCOL.md §6.1 does not say what the RBC answers past
+ * rounding leaves 0 free (as the simulator models it; docs/protocol.md §6.1 does not say what the RBC answers past
  * the end of the area).
  */
 function freeAfterRecording(freeBefore: number, footprint: number): number {

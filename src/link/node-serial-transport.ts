@@ -19,7 +19,7 @@ export interface SerialPortListing {
 type CloseError = (Error & { disconnected?: boolean }) | null;
 
 /**
- * `serialport` options for the RBC link (PROTOCOL.md §1): 115200 8N1 and no flow control of either kind. With
+ * `serialport` options for the RBC link (docs/protocol.md §1): 115200 8N1 and no flow control of either kind. With
  * `rtscts` or `xon`/`xoff` left on by an earlier program, a device would hold back or swallow bytes (0x11 and
  * 0x13 are XON/XOFF).
  */

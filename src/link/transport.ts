@@ -26,7 +26,7 @@ export interface Transport {
   close(): Promise<void>;
 }
 
-/** The serial settings of the RBC link (PROTOCOL.md §1). */
+/** The serial settings of the RBC link (docs/protocol.md §1). */
 export const RBC_SERIAL_OPTIONS = {
   baudRate: 115200,
   dataBits: 8,

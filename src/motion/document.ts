@@ -1,5 +1,5 @@
 /**
- * The motion document: an immutable `.rbm` motion (PROTOCOL.md §7) that the editor changes only through the
+ * The motion document: an immutable `.rbm` motion (docs/protocol.md §7) that the editor changes only through the
  * pure operations of this folder, each returning a new document that shares every scene it did not touch.
  *
  * The document is the `RbmMotion` of `src/protocol/rbm.ts` itself, typed read-only: saving is `serializeRbm`,
@@ -56,7 +56,7 @@ export interface Motion {
 /** Which end of a scene: the pose it starts from or the pose it reaches (its key pose). */
 export type SceneSide = "start" | "end";
 
-/** Platform byte of a HUNO (PROTOCOL.md §2.2, field 8 of an .rbm file). */
+/** Platform byte of a HUNO (docs/protocol.md §2.2, field 8 of an .rbm file). */
 export const HUNO_PLATFORM = 1;
 
 /** The protocol layer's view of a document (it reads, never writes, what it is given). */
@@ -74,7 +74,7 @@ export function saveMotion(doc: Motion): string {
   return serializeRbm(asRbm(doc));
 }
 
-/** The validator's errors and warnings for the document (PROTOCOL.md §7). */
+/** The validator's errors and warnings for the document (docs/protocol.md §7). */
 export function motionIssues(doc: Motion, options?: RbmValidateOptions): RbmValidation {
   return validateRbm(asRbm(doc), options);
 }
@@ -84,7 +84,7 @@ export interface NewMotionOptions {
   name?: string;
   /**
    * The zero table of the robot the motion is made on (16 values, ids 0-15), written into each servo's zero
-   * field; the standard table of PROTOCOL.md §4 by default.
+   * field; the standard table of docs/protocol.md §4 by default.
    */
   zeros?: readonly number[];
 }
@@ -96,7 +96,7 @@ export const TEMPLATE_TORQUE = 2;
 export const TEMPLATE_GAINS = { p: 20, d: 30, i: 0, portEnable: 0 } as const;
 
 /**
- * A new HUNO motion: 16 servos (ids 0-15) and one scene that holds the basic posture (PROTOCOL.md §5,
+ * A new HUNO motion: 16 servos (ids 0-15) and one scene that holds the basic posture (docs/protocol.md §5,
  * `125 179 199 88 108 126 72 49 163 141 51 47 49 199 205 205`), header fields as Motionbuilder writes them
  * (format 1, serial number all zeros so that any robot accepts it, placeholder texts, platform 1, 2, 4).
  */

@@ -35,7 +35,7 @@ import {
 } from "./document.ts";
 import { MotionError } from "./errors.ts";
 
-/** Largest frames or time a motion image holds (16 bits, PROTOCOL.md §6.3). */
+/** Largest frames or time a motion image holds (16 bits, docs/protocol.md §6.3). */
 export const MAX_U16 = 0xffff;
 
 export interface PositionOptions {

@@ -1,5 +1,5 @@
 /**
- * The one error family of the motion layer. An edit that would break a rule of PROTOCOL.md §7 that the RBC
+ * The one error family of the motion layer. An edit that would break a rule of docs/protocol.md §7 that the RBC
  * enforces (an error of `validateRbm`) is refused with a `MotionError` and the document is left as it was; the
  * `code` is stable (for programs and tests), the message is a sentence for the person typing.
  */

@@ -1,9 +1,9 @@
 /**
- * The frames of a motion as the RBC plays it (PROTOCOL.md §10), for tethered play and the simulator: pure, so
+ * The frames of a motion as the RBC plays it (docs/protocol.md §10), for tethered play and the simulator: pure, so
  * that the device layer only sends them and the tests can check them against the spec's formula.
  *
  * Frame k (1..frames) of servo i in a scene: `start + round(k · (end − start) / frames) + zeroDelta[i]`,
- * clamped to 1..254 and then to the servo's safe range (PROTOCOL.md §5), with the scene's torque, at the
+ * clamped to 1..254 and then to the servo's safe range (docs/protocol.md §5), with the scene's torque, at the
  * scene's interval `timeMs / frames` (integer ms; below 20 ms the RBC stops with error 6, so this refuses).
  * `zeroDelta[i]` = the robot's stored zero − the file's zero (not applied on platform 4). Before the first
  * scene, if any servo is more than 10 counts from the first pose, `gap / 3` transition frames (integer
@@ -23,7 +23,7 @@ import type { Motion } from "./document.ts";
 import { MotionError } from "./errors.ts";
 import { resolveRange, type SceneRange } from "./retime.ts";
 
-/** Platform byte of a PF2 robot (PROTOCOL.md §2.2), which applies no zero correction. */
+/** Platform byte of a PF2 robot (docs/protocol.md §2.2), which applies no zero correction. */
 export const PLATFORM_PF2 = 4;
 /** The RBC moves to the first pose first when a servo is further than this from it (counts). */
 export const TRANSITION_THRESHOLD = 10;
@@ -53,7 +53,7 @@ export interface PlayScene {
   startMs: number;
   intervalMs: number;
   frames: number;
-  /** Port value per servo (PROTOCOL.md §10 step 3), in the order of `PlayPlan.ids`. */
+  /** Port value per servo (docs/protocol.md §10 step 3), in the order of `PlayPlan.ids`. */
   ports: number[];
 }
 
@@ -129,7 +129,7 @@ export function frameIntervalMs(frames: number, timeMs: number, scene: number): 
   return interval;
 }
 
-/** Builds the frames of PROTOCOL.md §10 for a range of scenes. Throws `MotionError("motion-play")`. */
+/** Builds the frames of docs/protocol.md §10 for a range of scenes. Throws `MotionError("motion-play")`. */
 export function playFrames(doc: Motion, options: PlayOptions): PlayPlan {
   const [from, to] = resolveRange(doc, options.range);
   const { robotZeros, platform } = options;

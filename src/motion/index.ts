@@ -1,6 +1,6 @@
 /**
  * The motion layer (pure: no I/O, no timers, no DOM; imports only from protocol/): the motion document and its
- * operations, undo history, and the frames of PROTOCOL.md §10 for tethered play and the simulator.
+ * operations, undo history, and the frames of docs/protocol.md §10 for tethered play and the simulator.
  * See docs/motion-document.md.
  */
 export * from "./document.ts";

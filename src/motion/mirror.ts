@@ -1,7 +1,7 @@
 /**
  * Mirroring a pose left↔right on a HUNO.
  *
- * [decision] Joint pairs (servo ids, PROTOCOL.md §5 joint names): right leg 0-4 ↔ left leg 5-9 (hip roll, hip
+ * [decision] Joint pairs (servo ids, docs/protocol.md §5 joint names): right leg 0-4 ↔ left leg 5-9 (hip roll, hip
  * pitch, knee, ankle pitch, ankle roll), right arm 10-12 ↔ left arm 13-15 (shoulder pitch, shoulder roll,
  * elbow). Each pair's servos are mounted as mirror images, so a mirrored joint angle is the same offset from the
  * servo's zero with the sign reversed, for every joint, pitch and roll alike:
@@ -9,7 +9,7 @@
  *     mirrored position on servo j = zero[j] − (position on servo i − zero[i])
  *
  * with the zeros of the motion file's own servo records (the zero posture of the robot it was made on,
- * PROTOCOL.md §4). Why not `254 − p`: the zero table is not centred on 127 (its pairs sum to 250-252, not 254),
+ * docs/protocol.md §4). Why not `254 − p`: the zero table is not centred on 127 (its pairs sum to 250-252, not 254),
  * so `254 − p` would shift every mirrored joint by 2 to 4 counts; the offset-from-zero rule maps the basic
  * posture onto itself within 2 counts and, checked against Motionbuilder's own left/right pairs of motions
  * (sidewalk, punch, turn), predicts the opposite side within a few counts where `254 − p` is consistently off.

@@ -1,7 +1,7 @@
 import { ProtocolError } from "./errors.ts";
 
 /**
- * The RBC bootloader's dialogue (PROTOCOL.md §11) as a pure state machine: bytes from the robot and timeouts
+ * The RBC bootloader's dialogue (docs/protocol.md §11) as a pure state machine: bytes from the robot and timeouts
  * go in, bytes to send come out. The device layer (`device/firmware-update.ts`) owns the port, the timers and
  * the user; the simulated bootloader (`sim/sim-bootloader.ts`) plays the other side.
  *
@@ -22,7 +22,7 @@ export const FILE_COMPLETE = 0x40; // "@"
 export const FILE_COMPLETE_WITH_ERRORS = 0x23; // "#"
 export const XOFF = 0x13;
 export const XON = 0x11;
-/** A line answered `-` is sent again at most this many times (PROTOCOL.md §11 [decision]). */
+/** A line answered `-` is sent again at most this many times (docs/protocol.md §11 [decision]). */
 export const MAX_LINE_RESENDS = 3;
 /** Times the host answers a `^` that is then not followed by `?` before it gives up (see `timeout`). */
 export const MAX_ENTRY_TRIES = 3;

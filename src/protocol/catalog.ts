@@ -1,8 +1,8 @@
-/** Facts about the RBC the panel shows to people: names, codes and durations (PROTOCOL.md §2.2, §3). */
+/** Facts about the RBC the panel shows to people: names, codes and durations (docs/protocol.md §2.2, §3). */
 
 export type Platform = "HUNO" | "DINO" | "DOGY" | "PF2";
 
-/** Platform byte of a reply → the robot's mode (PROTOCOL.md §2.2). */
+/** Platform byte of a reply → the robot's mode (docs/protocol.md §2.2). */
 export function platformName(platform: number): Platform | `unknown (${number})` {
   switch (platform) {
     case 1:
@@ -18,7 +18,7 @@ export function platformName(platform: number): Platform | `unknown (${number})`
   }
 }
 
-/** Error codes of 0x11 (PROTOCOL.md §3.2). */
+/** Error codes of 0x11 (docs/protocol.md §3.2). */
 export const NO_ERROR = 0xff;
 const ERROR_TEXT: Record<number, string> = {
   [NO_ERROR]: "no error",
@@ -39,13 +39,13 @@ export function errorCodeText(code: number): string {
   return ERROR_TEXT[code] ?? `unknown error code ${code}`;
 }
 
-/** Sound lengths in ms for sounds 1..25 (PROTOCOL.md §3.3); index 0 is sound 1. */
+/** Sound lengths in ms for sounds 1..25 (docs/protocol.md §3.3); index 0 is sound 1. */
 export const SOUND_LENGTHS_MS: readonly number[] = [
   2268, 1001, 832, 365, 838, 417, 5671, 5916, 780, 2907, 552, 522, 1525, 2494, 438, 402, 433, 461, 343, 472,
   354, 461, 458, 442, 371,
 ];
 export const SOUND_COUNT = SOUND_LENGTHS_MS.length;
-/** The RBC answers a sound request 200 ms + the sound's length after it (PROTOCOL.md §3). */
+/** The RBC answers a sound request 200 ms + the sound's length after it (docs/protocol.md §3). */
 export const SOUND_REPLY_DELAY_MS = 200;
 
 export function soundLengthMs(sound: number): number | undefined {
@@ -57,11 +57,11 @@ export const BASIC_POSTURE_MOTION = 7;
 export interface BuiltInMotion {
   number: number;
   name: string;
-  /** Simulator duration [decision] (PROTOCOL.md §3.1). */
+  /** Simulator duration [decision] (docs/protocol.md §3.1). */
   durationMs: number;
 }
 
-/** Built-in motions 1-11 (PROTOCOL.md §3.1). */
+/** Built-in motions 1-11 (docs/protocol.md §3.1). */
 export const BUILT_IN_MOTIONS: readonly BuiltInMotion[] = [
   { number: 1, name: "Get up A (from front)", durationMs: 5520 },
   { number: 2, name: "Get up B (from back)", durationMs: 6600 },
@@ -100,23 +100,23 @@ export function isOfferedMotionNumber(number: number): boolean {
   );
 }
 
-/** Memory areas of the serial EEPROM (PROTOCOL.md §6.1). */
+/** Memory areas of the serial EEPROM (docs/protocol.md §6.1). */
 export const MOTION_AREA_BYTES = 0x6000;
 export const ACTION_AREA_BYTES = 0x2000;
 export const MAX_MOTIONS = 20;
 export const MAX_ACTIONS = 10;
-/** Files start on 64-byte boundaries (PROTOCOL.md §6.1). */
+/** Files start on 64-byte boundaries (docs/protocol.md §6.1). */
 export const MEMORY_BLOCK_BYTES = 64;
 
 /**
- * EEPROM taken by a file of `size` bytes (PROTOCOL.md §6.1): the next free address is
+ * EEPROM taken by a file of `size` bytes (docs/protocol.md §6.1): the next free address is
  * `start + size + 64 − size mod 64`, so a size that is already a multiple of 64 wastes one extra block.
  */
 export function memoryFootprint(size: number): number {
   return size + MEMORY_BLOCK_BYTES - (size % MEMORY_BLOCK_BYTES);
 }
 
-/** Download payload chunk size (PROTOCOL.md §6.2). */
+/** Download payload chunk size (docs/protocol.md §6.2). */
 export const DOWNLOAD_CHUNK = 64;
 /** The single byte the RBC answers to each part of a download. */
 export const DOWNLOAD_ACK = 0x40;

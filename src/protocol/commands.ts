@@ -4,7 +4,7 @@ import { ProtocolError } from "./errors.ts";
 import { ZERO_COUNT } from "./zeros.ts";
 
 /**
- * One row per RBC command of PROTOCOL.md §3, and the single source of what the rest of the project knows about
+ * One row per RBC command of docs/protocol.md §3, and the single source of what the rest of the project knows about
  * a command: its type byte, the request's content size (the RBC checks it and drops anything else), how to
  * build the request contents, the reply's content size and how to decode it, how long to wait for the reply,
  * and whether a retry is harmless. The client (`device/`), the simulator (`sim/`), the packet log and the CLI's
@@ -223,7 +223,7 @@ export const COMMANDS = {
     requestSize: 2,
     replySize: 2,
     // [decision] The threshold in both bytes: the official firmware reads the second, PCremote's peers send
-    // the first (PROTOCOL.md §3.5), so every firmware gets the same threshold.
+    // the first (docs/protocol.md §3.5), so every firmware gets the same threshold.
     request: (threshold) => {
       const t = byteArg("Sound threshold", threshold, 0, 255)[0]!;
       return Uint8Array.of(t, t);
@@ -289,7 +289,7 @@ export const COMMANDS = {
 
 export type CommandName = keyof typeof COMMANDS;
 
-/** Download types (PROTOCOL.md §6.2); they do not follow the request/reply packet pattern. */
+/** Download types (docs/protocol.md §6.2); they do not follow the request/reply packet pattern. */
 export const WRITE_MOTION_TYPE = 0x01;
 export const WRITE_ACTION_TYPE = 0x02;
 /** Types that arrive unsolicited while a subscription runs: the rows whose timeout class is "subscribe". */
@@ -304,7 +304,7 @@ export const COMMAND_BY_TYPE: ReadonlyMap<number, CommandSpec<never, unknown>> =
   Object.values(COMMANDS).map((c): [number, CommandSpec<never, unknown>] => [c.type, c]),
 );
 
-/** The largest content a reply of any command carries (PROTOCOL.md §3.5: no reply has more than 16). */
+/** The largest content a reply of any command carries (docs/protocol.md §3.5: no reply has more than 16). */
 export const MAX_REPLY_CONTENT = 16;
 
 const NAMES = new Map<number, string>([

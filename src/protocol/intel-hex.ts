@@ -1,7 +1,7 @@
 import { ProtocolError } from "./errors.ts";
 
 /**
- * Intel HEX files for the RBC's bootloader (PROTOCOL.md §11): read, validate and summarise a firmware file
+ * Intel HEX files for the RBC's bootloader (docs/protocol.md §11): read, validate and summarise a firmware file
  * before a single byte goes to the robot. Pure: text in, records and a summary out.
  *
  * Written here rather than taken from a library (nrf-intel-hex was considered): the bootloader is sent the

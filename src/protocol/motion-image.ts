@@ -1,5 +1,5 @@
 /**
- * The binary motion image uploaded by Write Motion (PROTOCOL.md §6.3, a project decision): the layout of the
+ * The binary motion image uploaded by Write Motion (docs/protocol.md §6.3, a project decision): the layout of the
  * firmware's motion and scene structures, multi-byte fields little-endian, listing only the file's W servos.
  *
  * | offset               | bytes | field                                     |

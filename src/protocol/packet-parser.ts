@@ -16,7 +16,7 @@ export interface ParserOptions {
   /**
    * The largest content a frame of `type` may carry (default: 4,096 for every type). A frame announcing more is
    * rejected at once, before its bytes are awaited: the client bounds replies by what their type can carry
-   * (PROTOCOL.md §3.5), so a corrupted size byte costs one reply, not the replies after it.
+   * (docs/protocol.md §3.5), so a corrupted size byte costs one reply, not the replies after it.
    */
   maxContent?: (type: number) => number;
 }
@@ -57,7 +57,7 @@ const SMALL_COPY = 32;
 const NO_PACKETS: Packet[] = Object.freeze([]) as unknown as Packet[];
 
 /**
- * Streaming RBC packet parser (PROTOCOL.md §2.1). Feed it bytes in any chunking; it returns the complete
+ * Streaming RBC packet parser (docs/protocol.md §2.1). Feed it bytes in any chunking; it returns the complete
  * packets whose checksum is valid. It scans for the header and drops what precedes it; once a header is
  * matched, `FF` inside the packet is data. A size above 4,096 (or above what the frame's type may carry, see
  * `maxContent`) or a bad checksum rejects the frame, and the

@@ -2,15 +2,15 @@ import { writeU32BE, xorBytes } from "./bytes.ts";
 import { COMMANDS } from "./commands.ts";
 import { ProtocolError } from "./errors.ts";
 
-/** The 8-byte header that starts every RBC packet in both directions (PROTOCOL.md §2). */
+/** The 8-byte header that starts every RBC packet in both directions (docs/protocol.md §2). */
 export const HEADER = Uint8Array.of(0xff, 0xff, 0xaa, 0x55, 0xaa, 0x55, 0x37, 0xba);
 export const HEADER_LENGTH = 8;
 /** Header + type + platform + 4-byte size. */
 export const PREFIX_LENGTH = 14;
-/** [decision] Larger sizes are treated as a corrupt frame (PROTOCOL.md §2.1). */
+/** [decision] Larger sizes are treated as a corrupt frame (docs/protocol.md §2.1). */
 export const MAX_CONTENT_LENGTH = 4096;
 
-/** The accelerometer reply whose firmware checksum covers only the low bytes (PROTOCOL.md §2.1). */
+/** The accelerometer reply whose firmware checksum covers only the low bytes (docs/protocol.md §2.1). */
 export const ACCELEROMETER_TYPE = COMMANDS.readAccelerometer.type;
 
 export interface Packet {
@@ -28,7 +28,7 @@ export function packetChecksum(contents: Uint8Array): number {
 
 /**
  * Encodes one packet: header, type, platform, size (unsigned 32-bit big-endian), contents, checksum.
- * Requests always use platform 0 (PROTOCOL.md §2.2); the simulator passes the robot's mode for replies.
+ * Requests always use platform 0 (docs/protocol.md §2.2); the simulator passes the robot's mode for replies.
  */
 export function encodePacket(type: number, contents: Uint8Array, platform = 0): Uint8Array {
   if (!Number.isInteger(type) || type < 0 || type > 0xff) {
@@ -54,7 +54,7 @@ export function encodePacket(type: number, contents: Uint8Array, platform = 0): 
 }
 
 /**
- * The first part of a download (PROTOCOL.md §6.2): header, type, platform 0 and the payload size
+ * The first part of a download (docs/protocol.md §6.2): header, type, platform 0 and the payload size
  * (big-endian), with no contents and no checksum.
  */
 export function encodeDownloadStart(type: number, payloadLength: number): Uint8Array {

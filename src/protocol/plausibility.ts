@@ -1,10 +1,10 @@
 /**
- * Values a robot reports that are shown as they are but look implausible (PROTOCOL.md §3.5): a client never
+ * Values a robot reports that are shown as they are but look implausible (docs/protocol.md §3.5): a client never
  * refuses them, and never shows them as if they were certain either. Each function returns one sentence for a
  * person, or undefined when the value is plausible. Pure: the CLI and the panel word their warnings alike.
  */
 
-/** The distance sensor's range: the firmware clamps its reading to 10-50 cm (PROTOCOL.md §3, 0x16). */
+/** The distance sensor's range: the firmware clamps its reading to 10-50 cm (docs/protocol.md §3, 0x16). */
 export const DISTANCE_MIN_CM = 10;
 export const DISTANCE_MAX_CM = 50;
 
@@ -18,7 +18,7 @@ export function distanceWarning(cm: number): string | undefined {
   return `The distance sensor reports ${cm} cm, outside the ${DISTANCE_MIN_CM}-${DISTANCE_MAX_CM} cm it can measure: the reading is shown as it is but is not plausible.`;
 }
 
-/** A platform byte outside 1-4 (the homebrew port of PROTOCOL.md §3.5 never initialises it). */
+/** A platform byte outside 1-4 (the homebrew port of docs/protocol.md §3.5 never initialises it). */
 export function platformWarning(platform: number): string | undefined {
   if (Number.isInteger(platform) && platform >= PLATFORM_MIN && platform <= PLATFORM_MAX) return undefined;
   return `The robot reports platform ${platform}; known platforms are 1-4 (HUNO, DINO, DOGY, PF2).`;

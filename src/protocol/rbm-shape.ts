@@ -1,5 +1,5 @@
 /**
- * The shape of a motion (PROTOCOL.md §7) for `validateRbm`: a zod schema of `RbmMotion`'s types, and each
+ * The shape of a motion (docs/protocol.md §7) for `validateRbm`: a zod schema of `RbmMotion`'s types, and each
  * place where a motion built in code does not have that shape put into words and values.
  */
 

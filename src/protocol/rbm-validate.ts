@@ -1,5 +1,5 @@
 /**
- * The rules of PROTOCOL.md §7 for a motion, whether parsed from an `.rbm` file or built in code. Errors make a
+ * The rules of docs/protocol.md §7 for a motion, whether parsed from an `.rbm` file or built in code. Errors make a
  * motion unusable on the RBC; warnings are worth telling the user about.
  */
 

@@ -1,5 +1,5 @@
 /**
- * Motionbuilder `.rbm` motion files (PROTOCOL.md §7): parser, serializer and duration.
+ * Motionbuilder `.rbm` motion files (docs/protocol.md §7): parser, serializer and duration.
  *
  * An `.rbm` file is ASCII text with no line breaks; every field is followed by `:`. With W servos and S scenes it
  * has 13 + 6·W + S·(5 + 6·W) fields. The file is untrusted input: `parseRbm` throws only `RbmError`, whatever the
@@ -111,7 +111,7 @@ export function motionDurationMs(motion: RbmMotion): number {
 /**
  * [decision] Limits of the reader itself, far above any real file, so that a huge or hostile input fails fast
  * and in bounded memory: the text (1 MiB; the largest motion that fits the robot is about 90 KB of text), the
- * free texts of fields 3 and 4 (10 and 20 characters in Motionbuilder's files, PROTOCOL.md §7) and names
+ * free texts of fields 3 and 4 (10 and 20 characters in Motionbuilder's files, docs/protocol.md §7) and names
  * (their length fields have 2 digits).
  */
 export const RBM_MAX_TEXT_LENGTH = 1 << 20;

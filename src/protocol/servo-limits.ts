@@ -1,4 +1,4 @@
-/** Per-joint data of the HUNO's 16 servos, ids 0-15 (PROTOCOL.md §5). Index = servo id. */
+/** Per-joint data of the HUNO's 16 servos, ids 0-15 (docs/protocol.md §5). Index = servo id. */
 
 /** Number of servos on a stock HUNO (ids 0-15). */
 export const HUNO_SERVO_COUNT = 16;

@@ -1,7 +1,7 @@
 import { ProtocolError } from "./errors.ts";
 
 /**
- * wCK servo packets, spoken over the link once the RBC is in direct control mode (PROTOCOL.md §5).
+ * wCK servo packets, spoken over the link once the RBC is in direct control mode (docs/protocol.md §5).
  * Every packet starts with `FF`; the next byte is `mode << 5 | id`; the last is a 7-bit checksum.
  */
 

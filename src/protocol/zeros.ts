@@ -1,6 +1,6 @@
 import { ProtocolError } from "./errors.ts";
 
-/** Zero positions of servo IDs 0-15 (PROTOCOL.md §4). */
+/** Zero positions of servo IDs 0-15 (docs/protocol.md §4). */
 export const ZERO_COUNT = 16;
 /** The standard table the RBC checks writes against. */
 export const STANDARD_ZEROS: readonly number[] = [

@@ -1,5 +1,5 @@
 /**
- * The simulated RBC and its Web Serial look-alikes (PROTOCOL.md §9, DESIGN.md `src/sim/`).
+ * The simulated RBC and its Web Serial look-alikes (docs/protocol.md §9, docs/architecture.md `src/sim/`).
  *
  * SimulatedRbc decisions where the protocol is silent:
  * - Quick replies are sent synchronously from `receive`; the mock port adds wire time and latency.
@@ -11,7 +11,7 @@
  * - Any header from the PC ends the running subscription, 0x19 included.
  * - A download abandons after 1 s of silence (no error code); downloaded files survive 0x1F and a power
  *   cycle (EEPROM) until a later download into the same slot replaces them.
- * - A playing motion moves the servos frame by frame (PROTOCOL.md §10; `sim-motion-playback.ts`): downloaded
+ * - A playing motion moves the servos frame by frame (docs/protocol.md §10; `sim-motion-playback.ts`): downloaded
  *   motions from their image, built-in motions 1-11 from a few keyframes each (`sim-builtin-motions.ts`). Wire
  *   commands (wCK moves, synchronised moves) move servos at once. A passive servo can be posed by hand
  *   (`poseByHand`); `onServos` tells watchers of every change. See docs/architecture.md, "The simulated robot

@@ -26,7 +26,7 @@ const DEVICE_LOST = "The device has been lost.";
 
 /**
  * What the mock port needs of the robot behind it: bytes in, and a way to hear what it sends. A SimulatedRbc,
- * or something in front of one (the bootloader of PROTOCOL.md §11, `BootloaderRbc`).
+ * or something in front of one (the bootloader of docs/protocol.md §11, `BootloaderRbc`).
  */
 export interface SimEndpoint {
   receive(bytes: Uint8Array): void;

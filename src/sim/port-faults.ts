@@ -1,5 +1,5 @@
 /**
- * Fault injection for MockSerialPort (PROTOCOL.md §9, last sentence). A "reply" is one transmission of the
+ * Fault injection for MockSerialPort (docs/protocol.md §9, last sentence). A "reply" is one transmission of the
  * simulated RBC (a reply packet, an event packet, a download `40`, a servo answer). Each fault applies to the
  * next `replies` replies (default 1; `Infinity` until cleared) and is then used up, except the disconnect,
  * which acts on PC→RBC traffic. A late reply is `delay`; bytes that arrive unasked are `stray` (after a reply)

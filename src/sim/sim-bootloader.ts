@@ -16,7 +16,7 @@ import { SimTimers } from "./sim-timers.ts";
 import type { SimulatedRbc } from "./simulated-rbc.ts";
 
 /**
- * The RBC's bootloader (PROTOCOL.md §11, §9) in front of a SimulatedRbc. It has the simulator's byte surface
+ * The RBC's bootloader (docs/protocol.md §11, §9) in front of a SimulatedRbc. It has the simulator's byte surface
  * (`receive`, `onTransmit`), so a MockSerialPort can sit on it instead of on the SimulatedRbc it wraps.
  *
  * After `powerCycle()` it sends `^`, waits `entryWindowMs` for the entry bytes `40 26 24` (anything else, or

@@ -16,11 +16,11 @@ import { buildPlayback, type SimPlayback, type SimScene } from "./sim-motion-pla
  * - 9 / 11 punch: knees bent, the arm drawn back, thrust out, back.
  *
  * Every one starts from the servos' current pose (no §10 transition, so that its duration stays the
- * catalogue's, PROTOCOL.md §3.1, exactly: its keyframe times add up to it), ends in the basic posture, and
+ * catalogue's, docs/protocol.md §3.1, exactly: its keyframe times add up to it), ends in the basic posture, and
  * moves all 16 servos at torque 2, frames about 40 ms apart. Offsets are counts from the basic posture on
  * the right side; the left servo of each pair takes the opposite sign (they are mounted as mirror images,
  * `HUNO_MIRROR_PAIRS` of `src/motion/mirror.ts`). Which way a sign turns a joint is not verified on hardware. Every keyframe is
- * clamped to the safe ranges of PROTOCOL.md §5.
+ * clamped to the safe ranges of docs/protocol.md §5.
  */
 
 type Offsets = Readonly<Record<number, number>>;

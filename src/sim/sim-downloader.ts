@@ -5,7 +5,7 @@ import { createActionArea, createMotionArea, DownloadSession, type MemoryArea } 
 import type { DropReason, SimReceiver } from "./sim-receiver.ts";
 import type { SimTimers } from "./sim-timers.ts";
 
-/** Error code of a download chunk with a wrong checksum (PROTOCOL.md §3.2). */
+/** Error code of a download chunk with a wrong checksum (docs/protocol.md §3.2). */
 const ERROR_CHECKSUM = 2;
 
 export interface DownloaderHost {
@@ -21,7 +21,7 @@ export interface DownloadProgress {
 }
 
 /**
- * The download sequence of PROTOCOL.md §6.2 as the simulated RBC runs it: the first part is answered `40`
+ * The download sequence of docs/protocol.md §6.2 as the simulated RBC runs it: the first part is answered `40`
  * (or refused with error 3 / 4), then every chunk is answered `40` after a simulated page write; a bad chunk
  * checksum sets error 2 and abandons the download. While a download runs, the receiver is in raw mode.
  */

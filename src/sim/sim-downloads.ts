@@ -7,7 +7,7 @@ import {
 } from "../protocol/catalog.ts";
 
 /**
- * Motion and action memory of the simulated RBC and the chunked download sequence (PROTOCOL.md §6).
+ * Motion and action memory of the simulated RBC and the chunked download sequence (docs/protocol.md §6).
  */
 
 /** A downloaded file as the simulator holds it. */

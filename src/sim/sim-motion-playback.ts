@@ -9,7 +9,7 @@ import {
 import { RBC_MIN_FRAME_MS } from "../protocol/rbm-validate.ts";
 
 /**
- * The frames the simulated RBC sends its servos while it plays a motion (PROTOCOL.md §10), computed up front
+ * The frames the simulated RBC sends its servos while it plays a motion (docs/protocol.md §10), computed up front
  * from a downloaded motion image (§6.3) or from a built-in motion's keyframes (`sim-builtin-motions.ts`).
  * Pure: `SimPlayer` runs the result on the simulator's clock.
  *
@@ -63,13 +63,13 @@ export interface PlaybackInput {
   currentPose?: readonly number[];
 }
 
-/** The RBC's clamp of a frame position (PROTOCOL.md §10 step 3). */
+/** The RBC's clamp of a frame position (docs/protocol.md §10 step 3). */
 export function firmwareClamp(value: number): number {
   return Math.min(254, Math.max(1, value));
 }
 
 /**
- * Builds the frames of PROTOCOL.md §10. [decision] A scene the RBC would refuse (fewer than 1 frame, or frames
+ * Builds the frames of docs/protocol.md §10. [decision] A scene the RBC would refuse (fewer than 1 frame, or frames
  * closer than 20 ms: error 6) is not modelled as an error (the simulator replies as before, after the sum of
  * the scene times); its servos reach the scene's end pose in one frame at its end.
  */
@@ -143,7 +143,7 @@ function u16le(b: Uint8Array, o: number): number | undefined {
 }
 
 /**
- * The playback of a downloaded motion image (PROTOCOL.md §6.3), or undefined when the bytes are not such an
+ * The playback of a downloaded motion image (docs/protocol.md §6.3), or undefined when the bytes are not such an
  * image (too short for the scene and servo counts they declare).
  * zeroDelta = the robot's stored zero − the file's zero per servo, not applied on platform 4 (§10 step 4).
  */

@@ -7,13 +7,13 @@ import type { SimTimers } from "./sim-timers.ts";
 
 /**
  * What keeps the simulated RBC busy: a motion playing (0x14) or a sound playing (0x15). Replies to both are
- * sent when they end (PROTOCOL.md §3). While a motion plays, its frames (PROTOCOL.md §10) move the servos on
+ * sent when they end (docs/protocol.md §3). While a motion plays, its frames (docs/protocol.md §10) move the servos on
  * the simulator's clock (`sim-motion-playback.ts`, `sim-builtin-motions.ts`).
  */
 
 /** [decision] Playing time of a downloaded file that is not a readable motion image. */
 export const DEFAULT_DOWNLOADED_MOTION_MS = 1000;
-/** Error code of Run Motion on an empty download slot (PROTOCOL.md §3.1). */
+/** Error code of Run Motion on an empty download slot (docs/protocol.md §3.1). */
 const ERROR_EMPTY_SLOT = 3;
 
 /** What the player needs from the robot around it. */
@@ -21,7 +21,7 @@ export interface PlayerHost {
   zeros(): readonly number[];
   storedMotion(slot: number): StoredFile | undefined;
   setError(code: number): void;
-  /** The robot's platform byte (on 4 no zero correction is applied, PROTOCOL.md §10). */
+  /** The robot's platform byte (on 4 no zero correction is applied, docs/protocol.md §10). */
   platform(): number;
   /** The servos' positions now, by id. */
   servoPositions(): readonly number[];
@@ -41,7 +41,7 @@ export interface PlayingMotion {
   number: number;
   startedAt: number;
   endsAt: number;
-  /** A 7 arrived: the motion ends at the end of its current scene, with one reply `07` (PROTOCOL.md §3.6). */
+  /** A 7 arrived: the motion ends at the end of its current scene, with one reply `07` (docs/protocol.md §3.6). */
   stopping: boolean;
 }
 
@@ -92,7 +92,7 @@ export class SimPlayer {
 
   /**
    * Starts Run Motion `n`: a built-in motion 1-11 for its catalog duration, or download slot 12-21 / 33-42 for
-   * the sum of its scene times (plus the transition to its first pose, PROTOCOL.md §10). Returns why it does
+   * the sum of its scene times (plus the transition to its first pose, docs/protocol.md §10). Returns why it does
    * not play (empty slots also set error 3). The servos move frame by frame while it plays.
    */
   startMotion(n: number): "not-modelled" | "empty-slot" | undefined {
@@ -137,7 +137,7 @@ export class SimPlayer {
   }
 
   /**
-   * A 7 arrived while a motion plays (PROTOCOL.md §3.6): the motion stops at the end of its current scene
+   * A 7 arrived while a motion plays (docs/protocol.md §3.6): the motion stops at the end of its current scene
    * (within STOP_SCENE_MS), the stopped motion's own reply never comes, `instead` runs in its place (the
    * robot's single `07` reply), and basic posture is not played: the robot holds the pose it stopped in.
    * The servos play their frames up to the end of the current scene, or to the modelled stop time if that
@@ -164,7 +164,7 @@ export class SimPlayer {
     return true;
   }
 
-  /** A sound played during a motion stops the robot's timer: the motion ends `ms` later (PROTOCOL.md §3.6). */
+  /** A sound played during a motion stops the robot's timer: the motion ends `ms` later (docs/protocol.md §3.6). */
   stretchMotion(ms: number): void {
     const run = this.motionRun;
     if (!run) return;

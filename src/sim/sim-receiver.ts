@@ -2,7 +2,7 @@ import { COMMANDS, WRITE_ACTION_TYPE, WRITE_MOTION_TYPE } from "../protocol/comm
 import { HEADER, HEADER_LENGTH, PREFIX_LENGTH } from "../protocol/packet.ts";
 
 /**
- * The simulated RBC's receive state machine (PROTOCOL.md §2.1, §5, §6.2). It is byte-level rather than a
+ * The simulated RBC's receive state machine (docs/protocol.md §2.1, §5, §6.2). It is byte-level rather than a
  * packet parser because two things on the link are not packets: the 14-byte first part of a download (no
  * contents, no checksum) and, in direct mode, raw servo-bus bytes. The owner switches it between packet mode
  * and a raw mode (every byte to a sink) from inside its callbacks; the switch takes effect at the next byte.
@@ -29,7 +29,7 @@ export const REQUEST_CONTENT_LENGTH: ReadonlyMap<number, number> = new Map(
 );
 
 export interface ReceiverHandler {
-  /** A complete 8-byte header was matched (subscriptions end here, PROTOCOL.md §3.4). */
+  /** A complete 8-byte header was matched (subscriptions end here, docs/protocol.md §3.4). */
   onHeader(): void;
   /** A packet of a known type, with the expected size and a valid checksum. */
   onPacket(type: number, platform: number, contents: Uint8Array): void;
@@ -150,7 +150,7 @@ export class SimReceiver {
       this.handler.onDrop("unknown-type", type);
       return;
     }
-    // Like the firmware, only the least significant size byte is compared (PROTOCOL.md §2.1).
+    // Like the firmware, only the least significant size byte is compared (docs/protocol.md §2.1).
     if ((size & 0xff) !== expected) {
       this.hunt();
       this.handler.onDrop("size", type);

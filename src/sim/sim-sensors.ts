@@ -6,7 +6,7 @@ import type { SimTimers } from "./sim-timers.ts";
 
 /**
  * The simulated robot's sensors and the event subscriptions 0x17 (sound), 0x18 (buttons) and 0x19 (remote)
- * of PROTOCOL.md §3.4. At most one subscription runs: any packet header from the PC ends it.
+ * of docs/protocol.md §3.4. At most one subscription runs: any packet header from the PC ends it.
  */
 
 export const SOUND_TYPE = COMMANDS.subscribeSound.type;
@@ -105,7 +105,7 @@ export class SimSensors {
   }
 
   /**
-   * The 0x1A reply: X, Y, Z signed 16-bit little-endian, with the firmware's checksum quirk (PROTOCOL.md §2.1):
+   * The 0x1A reply: X, Y, Z signed 16-bit little-endian, with the firmware's checksum quirk (docs/protocol.md §2.1):
    * it covers only the three low bytes.
    */
   accelerometerPacket(platform: number): Uint8Array {

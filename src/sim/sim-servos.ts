@@ -2,7 +2,7 @@ import { HUNO_BASIC_POSTURE, HUNO_SERVO_COUNT, SAFE_LOWER, SAFE_UPPER } from "..
 import { type WckCommand, WckDecoder } from "../protocol/wck.ts";
 
 /**
- * The servo bus behind the RBC in direct control mode (PROTOCOL.md §5): 16 simulated wCK servos, ids 0-15.
+ * The servo bus behind the RBC in direct control mode (docs/protocol.md §5): 16 simulated wCK servos, ids 0-15.
  * A command moves a servo instantly (a synchronised move too: tethered play's frames are the movement over
  * time); a playing motion moves them frame by frame (`applyFrame`, from `SimPlayer`); a passive servo can be
  * posed by hand. Ids 16-30 do not exist and never answer.
@@ -39,7 +39,7 @@ export interface BusResult {
   exitDirectMode?: boolean;
 }
 
-/** Parameter sub-commands (d2 of `FF (E0|id) d2 d3 d4 cs`, PROTOCOL.md §5). */
+/** Parameter sub-commands (d2 of `FF (E0|id) d2 d3 d4 cs`, docs/protocol.md §5). */
 const PARAM = {
   baudSet: 0x08,
   position10: 0x09,
@@ -109,7 +109,7 @@ export class ServoBus {
     servo.passive = false;
   }
 
-  /** A frame of a playing motion (PROTOCOL.md §10): each servo moves with its torque and holds. */
+  /** A frame of a playing motion (docs/protocol.md §10): each servo moves with its torque and holds. */
   applyFrame(ids: readonly number[], positions: readonly number[], torques: readonly number[]): void {
     ids.forEach((id, i) => {
       const servo = this.servos[id];
@@ -179,7 +179,7 @@ export class ServoBus {
   }
 
   /**
-   * The parameter table of PROTOCOL.md §5: a set stores its values and replies with them; a read replies with
+   * The parameter table of docs/protocol.md §5: a set stores its values and replies with them; a read replies with
    * the values last set. [decision] The 10-bit position read (sent to id 0, the servo in d3) answers the
    * position × 4 as two bytes, high first; motion data (0x97) answers `00 00`; unknown sub-commands get no
    * reply.

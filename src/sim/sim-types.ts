@@ -31,7 +31,7 @@ export interface SimulatedRbcOptions {
    */
   downloadIdleTimeoutMs?: number;
   /**
-   * Firmware variants (PROTOCOL.md §3.5), for tests of what a client must tolerate: the official source and
+   * Firmware variants (docs/protocol.md §3.5), for tests of what a client must tolerate: the official source and
    * its homebrew port answer neither 0x0C nor 0x1E (set these to false), report 9.99 (`firmware`), the port
    * reports platform 4 (`platform`) and repeats one reply type endlessly (`repeatReplies`).
    */

@@ -20,10 +20,10 @@ import {
 } from "./sim-types.ts";
 
 /**
- * The simulated RBC (PROTOCOL.md §9): bytes from the PC go in through `receive`, bytes to the PC come out
+ * The simulated RBC (docs/protocol.md §9): bytes from the PC go in through `receive`, bytes to the PC come out
  * through `onTransmit` listeners (one Uint8Array per reply or event). All timing follows the injected clock.
 
- * The decisions it makes where PROTOCOL.md is silent are listed in `index.ts`.
+ * The decisions it makes where docs/protocol.md is silent are listed in `index.ts`.
  */
 
 const ERROR_ZERO_SET = 7;
@@ -79,7 +79,7 @@ export class SimulatedRbc {
       },
       motionEnded: (n, positions) => this.motionEnded(n, positions),
     });
-    // Events come from the firmware's main loop, which a playing motion keeps busy (PROTOCOL.md §3.6).
+    // Events come from the firmware's main loop, which a playing motion keeps busy (docs/protocol.md §3.6).
     this.sensors = new SimSensors(
       this.timers,
       (type, c) => {
@@ -216,7 +216,7 @@ export class SimulatedRbc {
     this.servoWatch.clear();
   }
 
-  /** The firmware now in flash reports this version (after an update through the bootloader, PROTOCOL.md §11). */
+  /** The firmware now in flash reports this version (after an update through the bootloader, docs/protocol.md §11). */
   setFirmwareVersion(version: { major: number; minor: number }): void {
     this.firmware.major = version.major;
     this.firmware.minor = version.minor;
@@ -265,7 +265,7 @@ export class SimulatedRbc {
     this.send(bytes);
     const repeat = this.variant.repeatReplies;
     if (repeat && repeat.type === type && this.repeating === undefined) {
-      // The homebrew port's bug (PROTOCOL.md §3.5): this reply is sent again and again, until power-off.
+      // The homebrew port's bug (docs/protocol.md §3.5): this reply is sent again and again, until power-off.
       const again = () => {
         this.send(bytes);
         this.repeating = this.timers.after(repeat.intervalMs, again);
@@ -287,7 +287,7 @@ export class SimulatedRbc {
 
   /**
    * Handles one request: the reply contents to send at once, a reason to drop it, or undefined. While a motion
-   * plays (PROTOCOL.md §3.6) the requests the firmware answers from its receive interrupt are answered at once;
+   * plays (docs/protocol.md §3.6) the requests the firmware answers from its receive interrupt are answered at once;
    * the ones its main loop answers (0x16, the subscriptions) wait until the motion is over; another Run Motion
    * is ignored, and 7 ends the motion at the end of its scene with a single `07` reply. While a sound plays
    * nothing at all is received.
@@ -410,14 +410,14 @@ export class SimulatedRbc {
     this.runDeferred();
   }
 
-  /** Requests the main loop answers only once a motion is over (PROTOCOL.md §3.6), in arrival order. */
+  /** Requests the main loop answers only once a motion is over (docs/protocol.md §3.6), in arrival order. */
   private runDeferred(): void {
     const waiting = this.afterMotion.splice(0);
     for (const handle of waiting) handle();
   }
 }
 
-/** Answered by the firmware's main loop, so only after a playing motion (PROTOCOL.md §3.6). */
+/** Answered by the firmware's main loop, so only after a playing motion (docs/protocol.md §3.6). */
 const MAIN_LOOP_TYPES: ReadonlySet<number> = new Set([
   C.readDistance.type,
   C.subscribeSound.type,
@@ -428,7 +428,7 @@ const MAIN_LOOP_TYPES: ReadonlySet<number> = new Set([
 /** Reply contents to send at once, a reason the request is dropped, or undefined (handled, no reply now). */
 type Outcome = Uint8Array | DropReason | undefined;
 
-/** Requests whose contents must be the single byte `01` (PROTOCOL.md §3); anything else is dropped. */
+/** Requests whose contents must be the single byte `01` (docs/protocol.md §3); anything else is dropped. */
 function one(arg: number, then: () => unknown): Outcome {
   if (arg !== 1) return "contents";
   const contents = then();

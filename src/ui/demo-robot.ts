@@ -10,7 +10,7 @@ import {
 export interface DemoRobot {
   port: MockSerialPort<BootloaderRbc>;
   /**
-   * The bootloader in front of the simulated RBC (PROTOCOL.md §11), so that a firmware update works on the demo
+   * The bootloader in front of the simulated RBC (docs/protocol.md §11), so that a firmware update works on the demo
    * robot: the Firmware view switches the robot off and on with its `powerCycle()` when it asks the user to.
    */
   boot: BootloaderRbc;

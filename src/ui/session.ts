@@ -196,7 +196,7 @@ export class Session {
       }),
     ];
     try {
-      // The serial number is optional (PROTOCOL.md §3.5): a firmware that does not answer 0x0C still connects.
+      // The serial number is optional (docs/protocol.md §3.5): a firmware that does not answer 0x0C still connects.
       const identity = await client.identify(await client.connect());
       const serialNumber = identity.serialNumber;
       if (this.client !== client) {

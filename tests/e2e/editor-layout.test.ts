@@ -5,7 +5,7 @@ import { exampleText, rbmFile } from "./motion-fixtures.ts";
 import "./rbc-test-globals.ts";
 
 /**
- * The Editor view in tabs that fit two screens (UI.md: a view that grows past two screens is split), with the
+ * The Editor view in tabs that fit two screens (docs/ui.md: a view that grows past two screens is split), with the
  * largest motion the robot holds open (examples/long-walk.rbm, 284 scenes) and the demo robot connected: the
  * single page was 3,095 px tall at 1280×800 and 5,750 px at 390×844. Nothing scrolls sideways, labels stay in
  * their buttons (a 41-character scene name too), the tab is kept while scenes are chosen, and the 3D robot
@@ -192,7 +192,7 @@ describe("editor tabs", () => {
     }
 
     // long-walk.rbm checks clean: the Check tab has no count. A position outside a joint's safe range (servo 0
-    // goes up to 174, PROTOCOL.md §5) at the end of scene 0 is also the start of scene 1 (continuity): two
+    // goes up to 174, docs/protocol.md §5) at the end of scene 0 is also the start of scene 1 (continuity): two
     // warnings, counted on the tab, worded for a screen reader, the same number the Check tab lists.
     expect(squash(await page.locator("#editor-tab-check").textContent())).toBe("Check");
     const end0 = page.getByTestId("end-0");

@@ -1,7 +1,7 @@
 /**
  * Teach-in and tethered play in the motion editor, on the demo robot (issue #12 items 3 and 4): a three-scene
  * motion made by posing limbs by hand with the demo robot's sliders, then played on the robot; its simulated
- * servos (watched through `window.__rbcDemoSim`) must go through the frames of PROTOCOL.md §10, computed here
+ * servos (watched through `window.__rbcDemoSim`) must go through the frames of docs/protocol.md §10, computed here
  * by hand; Stop mid-play holds the frame sent and nothing goes limp.
  */
 import type { Page } from "playwright-core";
@@ -19,7 +19,7 @@ afterAll(async () => {
   await app?.close();
 });
 
-/** PROTOCOL.md §4: the standard zero table (the template's) and the firmware's factory table (the demo robot's). */
+/** docs/protocol.md §4: the standard zero table (the template's) and the firmware's factory table (the demo robot's). */
 const STANDARD = [125, 202, 162, 66, 108, 124, 48, 88, 184, 142, 90, 40, 125, 161, 210, 127];
 const FACTORY = [124, 202, 162, 65, 108, 125, 46, 88, 184, 142, 90, 40, 125, 161, 210, 126];
 /** §10 step 4: zeroDelta = the robot's zero − the motion's zero. */

@@ -2,7 +2,7 @@
  * Bundled into an IIFE by the harness and injected before the app's scripts: a `navigator.serial` made of the
  * project's own FakeSerial, MockSerialPort and SimulatedRbc (headless Chromium's real chooser never settles).
  * With `timeScale`, the simulated robot runs on a faster clock, which its port carries to the panel's client;
- * with `variant`, it is one of the firmware builds of PROTOCOL.md §3.5; with `bluetooth`, a paired Bluetooth
+ * with `variant`, it is one of the firmware builds of docs/protocol.md §3.5; with `bluetooth`, a paired Bluetooth
  * module behind a slow, bursty link.
  */
 import { realClock, scaledClock } from "../../src/shared/clock.ts";

@@ -37,7 +37,7 @@ afterAll(async () => {
   await app?.close();
 });
 
-/** PROTOCOL.md §5: the HUNO basic posture, where the simulated servos start and where every built-in ends. */
+/** docs/protocol.md §5: the HUNO basic posture, where the simulated servos start and where every built-in ends. */
 const POSTURE = [125, 179, 199, 88, 108, 126, 72, 49, 163, 141, 51, 47, 49, 199, 205, 205];
 const BASIC = POSTURE.join(" ");
 

@@ -66,7 +66,7 @@ export function withJumps(text: string, steps: number): string {
   return serializeRbm(motion);
 }
 
-/** A serious warning: servo 0 (safe range up to 174, PROTOCOL.md §5) ends scene 0 at 254. */
+/** A serious warning: servo 0 (safe range up to 174, docs/protocol.md §5) ends scene 0 at 254. */
 export function withUnsafePosition(text: string): string {
   const motion = parseRbm(text);
   motion.scenes[0]!.servos[0]!.end = 254;

@@ -65,7 +65,7 @@ describe("motions view: running motions and sounds", () => {
     });
     expect(await guidance.count()).toBe(0);
 
-    // Stop motion sends 7: the robot ends the scene and holds that pose (no basic posture, PROTOCOL.md §3.6).
+    // Stop motion sends 7: the robot ends the scene and holds that pose (no basic posture, docs/protocol.md §3.6).
     await page.locator('[data-motion="2"]').click();
     const motion2Started = await robotNow(page);
     await page.getByTestId("running-motion").filter({ hasText: "Get up B" }).waitFor();

@@ -35,7 +35,7 @@ export interface RbcTestOptions {
    */
   timeScale?: number;
   /**
-   * A firmware variant of the fake port's robot (PROTOCOL.md §3.5): no answer to 0x0C or 0x1E, another
+   * A firmware variant of the fake port's robot (docs/protocol.md §3.5): no answer to 0x0C or 0x1E, another
    * version or platform byte, a reply repeated endlessly. Default: the standard robot.
    */
   variant?: Pick<

@@ -3,7 +3,7 @@ import { type AppHarness, connectRobot, squash, startHarness, watchPage } from "
 import "./rbc-test-globals.ts";
 
 /**
- * The panel against firmware builds that differ from the standard one (PROTOCOL.md §3.5): the fake port's
+ * The panel against firmware builds that differ from the standard one (docs/protocol.md §3.5): the fake port's
  * simulated robot with a `variant` (tests/e2e/fake-serial-entry.ts). Each connects, shows what the robot
  * said as it said it, and stays usable.
  */

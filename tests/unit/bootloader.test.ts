@@ -4,7 +4,7 @@ import { fromHex, toHex } from "../../src/protocol/bytes.ts";
 import { parseIntelHex } from "../../src/protocol/intel-hex.ts";
 
 /**
- * Literal-byte transcripts of the bootloader dialogue (PROTOCOL.md §11). The small file is two data records
+ * Literal-byte transcripts of the bootloader dialogue (docs/protocol.md §11). The small file is two data records
  * and the end-of-file record; the PC→RBC bytes below are those lines' ASCII with CR LF, written out by hand.
  */
 const FILE = [":0400000001020304F2", ":04000400AABBCCDDEA", ":00000001FF"].join("\r\n");

@@ -8,7 +8,7 @@ import { HUNO_BASIC_POSTURE, parseRbm } from "../../src/protocol/index.ts";
 import { type CliOptions, CliScope, EXAMPLES, FAST_DEMO, REPO } from "../cli/spawn-cli.ts";
 
 /**
- * `rbc play` (tethered play, PROTOCOL.md §10) as a user runs it: the built CLI against the demo robot
+ * `rbc play` (tethered play, docs/protocol.md §10) as a user runs it: the built CLI against the demo robot
  * (FAST_DEMO: 50 times real speed, durations reported in the robot's time) and against `rbc sim` over a socat
  * PTY pair (real time, NodeSerialTransport).
  */
@@ -63,7 +63,7 @@ describe.concurrent("rbc play on the demo robot", () => {
     // Not a terminal: one progress line per scene, on stderr.
     expect(r.stderr).toContain('Scene 0 "RaiseArm" (1 of 6), frame 1 of 20, 0.0 of 3.2 s');
     expect(r.stderr).toContain('Scene 5 "LowerArm" (6 of 6), frame 1 of 20, 2.4 of 3.2 s');
-    // The trace: direct mode on (PROTOCOL.md §8 example 4), one 20-byte sync move of ids 0-15 per frame
+    // The trace: direct mode on (docs/protocol.md §8 example 4), one 20-byte sync move of ids 0-15 per frame
     // (FF, speed 2 → 5F, N = 16 → 10), then the exit sequence (example 5).
     expect(r.stderr).toMatch(/0x10 Direct control mode on\s+FF FF AA 55 AA 55 37 BA 10 00 00 00 00 01 01 01/);
     const lines = frameLines(r.stderr);

@@ -23,7 +23,7 @@ describe.concurrent("rbc stop and rbc limp", () => {
     // The demo robot plays nothing when rbc connects: it takes the 7 as Basic posture (1.8 s) and answers 07.
     expect(text.stdout).toMatch(/^Sending 7 to the demo robot…\nThe robot confirmed with 07 after 1\.8 s: /);
     expect(text.stdout).toContain("No servo was made passive.");
-    // The trace: one Run motion 7 out (the literal packet of PROTOCOL.md §8), no direct mode, no servo byte.
+    // The trace: one Run motion 7 out (the literal packet of docs/protocol.md §8), no direct mode, no servo byte.
     expect(text.stderr.match(/FF FF AA 55 AA 55 37 BA 14 00 00 00 00 01 07 07/g)).toHaveLength(1);
     expect(text.stderr).not.toMatch(/Direct control mode on|limp/i);
     expect(json.code).toBe(0);

@@ -272,7 +272,7 @@ describe("rbc sim packet trace in direct mode", () => {
     };
     feed("FF FF AA 55 AA 55 37 BA 10 00 00 00 00 01 01 01"); // 0x10: direct mode on
     feed("FF A5 00 25"); // wCK: read servo 5's position
-    // One write: a wCK move of servo 5, the exit (PROTOCOL.md §5), then 0x12.
+    // One write: a wCK move of servo 5, the exit (docs/protocol.md §5), then 0x12.
     feed("FF 05 7F 7A FF E0 FB 01 00 1A FF FF AA 55 AA 55 37 BA 12 00 00 00 00 01 01 01");
     const shown = lines.map((l) => [l.direction, l.label, l.hex]);
     // Requests are traced as they arrive, before the simulator answers them: the move's reply (servo 5 at

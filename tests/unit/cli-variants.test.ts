@@ -8,7 +8,7 @@ import { DEMO_VARIANT_VAR } from "../../src/cli/sim-variant.ts";
 import { type CliOptions, CliScope, EXAMPLES, FAST_DEMO, REPO } from "../cli/spawn-cli.ts";
 
 /**
- * `rbc` against firmware builds that differ from the standard one (PROTOCOL.md §3.5): the demo robot with
+ * `rbc` against firmware builds that differ from the standard one (docs/protocol.md §3.5): the demo robot with
  * RBC_DEMO_VARIANT (the switches of `rbc sim`), and `rbc sim` itself over a socat PTY pair. Every command
  * still works, shows what the robot said as it said it, and says what it does not know.
  */

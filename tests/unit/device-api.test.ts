@@ -171,7 +171,7 @@ describe("uploadMotion: image, reset, free memory, download, verification", () =
     const image = motionImage(motion);
     const phases: string[] = [];
     const result = await run(client.uploadMotion(motion, { onPhase: (p) => phases.push(p) }));
-    // 108 + 86 · 2 = 280 bytes, 5 chunks of 64 and one of 24; footprint 320 (PROTOCOL.md §6.1).
+    // 108 + 86 · 2 = 280 bytes, 5 chunks of 64 and one of 24; footprint 320 (docs/protocol.md §6.1).
     expect(result).toMatchObject({
       area: "motion",
       total: 280,

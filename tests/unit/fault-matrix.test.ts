@@ -2,7 +2,7 @@
  * The fault matrix (issues #5 and #10): every RbcClient operation against every injected link fault — a byte
  * dropped or corrupted, a reply late or lost, 1-byte reads, noise, a cable pull, a stray download `40`, a reply
  * delivered twice or repeated unasked, a corrupted size byte — plus rows for firmware that leaves 0x0C or 0x1E
- * unanswered (PROTOCOL.md §3.5), on the whole stack
+ * unanswered (docs/protocol.md §3.5), on the whole stack
  * (RbcClient → WebSerialTransport → MockSerialPort with 115200 baud pacing and 16 ms adapter latency →
  * SimulatedRbc) under a VirtualClock. Each cell asserts:
  *
@@ -37,7 +37,7 @@ const ACK = Q + 100;
 const MARGIN_MS = 100;
 /** A request packet with one content byte (16 bytes on the wire); a version reply is 17. */
 const REQUEST = 16;
-/** The reply byte that holds the second-lowest byte of the packet's size field (PROTOCOL.md §2). */
+/** The reply byte that holds the second-lowest byte of the packet's size field (docs/protocol.md §2). */
 const SIZE_BYTE = 12;
 
 const NEW_ZEROS = [...STANDARD_ZEROS];
@@ -68,7 +68,7 @@ interface Settled {
 
 interface Op {
   name: string;
-  /** A firmware variant of the simulated robot for this row (PROTOCOL.md §3.5). */
+  /** A firmware variant of the simulated robot for this row (docs/protocol.md §3.5). */
   sim?: SimulatedRbcOptions;
   /** Starts the operation; the harness drives the clock until it settles. */
   run: (rig: Rig) => Promise<unknown>;
@@ -313,7 +313,7 @@ const OPS: Op[] = [
     },
   },
   {
-    // PROTOCOL.md §3.5: the serial number is optional. Replies: the version, then 0x0C goes unanswered.
+    // docs/protocol.md §3.5: the serial number is optional. Replies: the version, then 0x0C goes unanswered.
     name: "identify() on a robot that does not answer 0x0C",
     sim: { answersSerialNumber: false },
     run: ({ client }) => client.identify(),

@@ -1,5 +1,5 @@
 /**
- * Fuzzing the streaming packet parser (PROTOCOL.md §2.1) with fast-check: garbage, truncated, oversized and
+ * Fuzzing the streaming packet parser (docs/protocol.md §2.1) with fast-check: garbage, truncated, oversized and
  * bit-flipped frames around intact packets, fed in every chunking.
  *
  * What "intact" means here. A corrupted frame whose size field survived (or was changed to ≤ 4,096) makes the
@@ -13,7 +13,7 @@
  *
  * Independently of that construction, every stream (also plain random bytes, and random bit flips anywhere in
  * valid traffic) is compared against a small reference implementation of the parsing rules written from
- * PROTOCOL.md, byte for byte, including how many bytes the parser holds at the end.
+ * docs/protocol.md, byte for byte, including how many bytes the parser holds at the end.
  */
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
@@ -36,7 +36,7 @@ const plain = (p: Packet): Plain => ({
   contents: Array.from(p.contents),
 });
 
-/** Encoder written from PROTOCOL.md §2, independent of src/protocol. */
+/** Encoder written from docs/protocol.md §2, independent of src/protocol. */
 function encode(p: Plain): number[] {
   const n = p.contents.length;
   let x = 0;
@@ -77,7 +77,7 @@ function countHeaders(s: ArrayLike<number>): number {
 }
 
 /**
- * Reference parser: the rules of PROTOCOL.md §2.1 applied to the whole stream at once. From position p, find
+ * Reference parser: the rules of docs/protocol.md §2.1 applied to the whole stream at once. From position p, find
  * the next header; a size above 4,096 or a bad checksum rejects the frame and the search resumes one byte after
  * its start; a good frame is delivered and the search resumes after it. `pending` is what a streaming parser
  * must still hold at the end: an incomplete frame, or the longest tail that could begin a header.

@@ -1,5 +1,5 @@
 /**
- * Fuzzing parseRbm (PROTOCOL.md §7) harder than rbm.test.ts's fuzz section, which mutates a handful of
+ * Fuzzing parseRbm (docs/protocol.md §7) harder than rbm.test.ts's fuzz section, which mutates a handful of
  * examples with a seven-character alphabet and times only three long inputs. Here: all the project's example
  * motions (examples/*.rbm, from 6 to 284 scenes, 6 or 16 servos); field-level
  * mutations with hostile tokens (huge and negative numbers, exponents, hex, non-ASCII digits, NUL, thousands of

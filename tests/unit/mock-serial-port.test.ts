@@ -168,7 +168,7 @@ describe("MockSerialPort: traffic and timing", () => {
   });
 });
 
-describe("MockSerialPort: faults (PROTOCOL.md §9)", () => {
+describe("MockSerialPort: faults (docs/protocol.md §9)", () => {
   async function withFault(setUp: (port: MockSerialPort) => void, advance = 0) {
     const { port, clock } = rig();
     setUp(port);
@@ -285,7 +285,7 @@ describe("MockSerialPort: faults (PROTOCOL.md §9)", () => {
     const { port, clock } = rig();
     port.faults.duplicateReplies(0);
     const io = await openAndRead(port);
-    // The first part of a 538-byte motion download (PROTOCOL.md §6.3): the robot answers one 40.
+    // The first part of a 538-byte motion download (docs/protocol.md §6.3): the robot answers one 40.
     await io.write("FF FF AA 55 AA 55 37 BA 01 00 00 00 02 1A");
     await clock.advance(0);
     expect(io.chunks).toEqual(["40", "40"]);

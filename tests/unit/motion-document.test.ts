@@ -1,7 +1,7 @@
 /**
  * The motion document (issue #12 item 1): template, every edit, continuity, mirror, retime, undo/redo and the
  * byte-identical round trip on the project's examples. Expected values are worked out by hand from
- * PROTOCOL.md §4, §5, §7 and the decisions in src/motion/ (see docs/motion-document.md), not read back from the
+ * docs/protocol.md §4, §5, §7 and the decisions in src/motion/ (see docs/motion-document.md), not read back from the
  * code.
  */
 import { readdirSync, readFileSync } from "node:fs";
@@ -45,7 +45,7 @@ import {
 } from "../../src/motion/index.ts";
 import { EXAMPLE_NAMES, exampleText } from "../data/project-data.ts";
 
-// PROTOCOL.md §5 and §4, copied literally so that the tests do not depend on the code's tables.
+// docs/protocol.md §5 and §4, copied literally so that the tests do not depend on the code's tables.
 const BASIC = [125, 179, 199, 88, 108, 126, 72, 49, 163, 141, 51, 47, 49, 199, 205, 205];
 const STANDARD_ZEROS = [125, 202, 162, 66, 108, 124, 48, 88, 184, 142, 90, 40, 125, 161, 210, 127];
 

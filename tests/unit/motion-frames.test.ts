@@ -1,5 +1,5 @@
 /**
- * The frames of PROTOCOL.md §10 (tethered play and the simulator). Every expected number is worked out by hand
+ * The frames of docs/protocol.md §10 (tethered play and the simulator). Every expected number is worked out by hand
  * from the spec's formula `start + round(k·(end−start)/frames) + zeroDelta[i]`, clamped to 1..254 and to the
  * safe ranges of §5 (servo 0: 1-174, servo 2: 124-254), with round = C's round() (halves away from zero).
  */

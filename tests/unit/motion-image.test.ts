@@ -88,7 +88,7 @@ function codeOf(fn: () => unknown): string | undefined {
   return undefined;
 }
 
-describe("motionImage (PROTOCOL.md §6.3)", () => {
+describe("motionImage (docs/protocol.md §6.3)", () => {
   it("encodes wave.rbm as the golden 624-byte image", () => {
     const image = motionImage(rbm("wave.rbm"));
     expect(WAVE_GOLDEN).toHaveLength(624);
@@ -186,7 +186,7 @@ describe("motionImage (PROTOCOL.md §6.3)", () => {
   });
 });
 
-describe("memory (PROTOCOL.md §6.1)", () => {
+describe("memory (docs/protocol.md §6.1)", () => {
   it("wave takes 640 bytes, leaving 23,936 of the motion area; long-walk takes all of it", () => {
     expect(memoryFootprint(624)).toBe(640);
     expect(0x6000 - memoryFootprint(624)).toBe(23_936);

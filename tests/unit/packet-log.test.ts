@@ -113,7 +113,7 @@ describe("the packet log coalesces discarded bytes", () => {
 });
 
 describe("the packet log shows what crossed the wire", () => {
-  it("keeps the raw frames: the request and the version reply as PROTOCOL.md §8 writes them", async () => {
+  it("keeps the raw frames: the request and the version reply as docs/protocol.md §8 writes them", async () => {
     const { client, run, log } = await loggedRig();
     log.clear();
     await run(client.readFirmwareVersion());

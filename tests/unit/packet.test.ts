@@ -9,7 +9,7 @@ import {
 } from "../../src/protocol/index.ts";
 import { EX } from "../fixtures/protocol-examples.ts";
 
-describe("encodePacket (PROTOCOL.md §8 requests)", () => {
+describe("encodePacket (docs/protocol.md §8 requests)", () => {
   it("builds example 1, read firmware version", () => {
     expect(toHex(encodePacket(0x12, COMMANDS.readFirmwareVersion.request()))).toBe(EX.readVersion);
   });
@@ -22,7 +22,7 @@ describe("encodePacket (PROTOCOL.md §8 requests)", () => {
   it("builds example 7, sound 3", () => {
     expect(toHex(encodePacket(0x15, COMMANDS.runSound.request(3)))).toBe(EX.sound3);
   });
-  it("builds example 9, sound threshold 30 in both bytes (PROTOCOL.md §3.5)", () => {
+  it("builds example 9, sound threshold 30 in both bytes (docs/protocol.md §3.5)", () => {
     expect(toHex(encodePacket(0x17, COMMANDS.subscribeSound.request(30)))).toBe(EX.soundThreshold30);
   });
   it("builds example 13, write standard zeros", () => {
@@ -38,7 +38,7 @@ describe("encodePacket (PROTOCOL.md §8 requests)", () => {
     expect(toHex(encodePacket(0x12, Uint8Array.of(2, 0x17), 1))).toBe(EX.version223);
     expect(toHex(encodePacket(0x11, Uint8Array.of(0xff, 1), 1))).toBe(EX.errorNone);
   });
-  it("builds the Hi.rbm download first part (PROTOCOL.md §6.3)", () => {
+  it("builds the Hi.rbm download first part (docs/protocol.md §6.3)", () => {
     expect(toHex(encodeDownloadStart(0x01, 538))).toBe("FF FF AA 55 AA 55 37 BA 01 00 00 00 02 1A");
   });
   it("refuses out-of-range types, platforms and oversize contents", () => {
@@ -67,7 +67,7 @@ describe("command table request builders", () => {
   });
 });
 
-describe("reply decoders (PROTOCOL.md §8 replies)", () => {
+describe("reply decoders (docs/protocol.md §8 replies)", () => {
   const contents = (hex: string) => {
     const b = fromHex(hex);
     return b.subarray(14, b.length - 1);

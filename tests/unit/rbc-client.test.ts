@@ -25,7 +25,7 @@ describe("RbcClient against the simulated RBC", () => {
     expect(port.openOptions?.bufferSize).toBeGreaterThanOrEqual(4096);
     const out = log.filter((e) => e.direction === "out").map((e) => toHex(e.bytes));
     // 64 payload bytes and a checksum that cannot match (abandons a download left half done), then the
-    // direct-mode exit (PROTOCOL.md §5, example 5).
+    // direct-mode exit (docs/protocol.md §5, example 5).
     expect(out[0]).toBe(`00 01 ${Array(63).fill("00").join(" ")} FF E0 FB 01 00 1A`);
     expect(out[1]).toBe(EX.readVersion);
     expect(toHex(log.find((e) => e.direction === "in")!.bytes)).toBe(EX.version223);
@@ -245,7 +245,7 @@ describe("Stop (stopActivity) keeps the robot standing", () => {
     expect(sim.directMode).toBe(false);
     expect(client.mode).toBe("packet");
     expect(sim.servos.slice(0, 16).some((s) => s.passive)).toBe(false);
-    // Exactly one Run Motion 7 went out (the literal bytes of PROTOCOL.md §8).
+    // Exactly one Run Motion 7 went out (the literal bytes of docs/protocol.md §8).
     const sevens = log.filter((e) => e.direction === "out" && toHex(e.bytes) === EX.runMotion7);
     expect(sevens).toHaveLength(1);
     // No second motion (basic posture) is played afterwards.
@@ -340,7 +340,7 @@ describe("connect on a port that takes no bytes", () => {
 });
 
 describe("Stop motion", () => {
-  it("sends 7 ahead of the queue; the motion ends at its scene's end with one reply, 07, and holds its pose (PROTOCOL.md §3.6)", async () => {
+  it("sends 7 ahead of the queue; the motion ends at its scene's end with one reply, 07, and holds its pose (docs/protocol.md §3.6)", async () => {
     const { client, run, sim, clock } = await makeRig({ sim: { basicPostureDone: true } });
     const t0 = clock.now();
     const walking = client.runMotion(10); // walk backward, 2,450 ms
@@ -431,7 +431,7 @@ describe("a robot left in the middle of a download by a program that died", () =
   });
 });
 
-describe("a motion the robot ignores, told from one that plays (PROTOCOL.md §3.6)", () => {
+describe("a motion the robot ignores, told from one that plays (docs/protocol.md §3.6)", () => {
   it("an empty download slot: error 3 in words after about a second, not after the whole wait", async () => {
     const { client, run, clock } = await makeRig({ sim: { basicPostureDone: true } });
     const t0 = clock.now();

@@ -15,7 +15,7 @@ const example = (name: string) => readFileSync(new URL(`../../examples/${name}`,
 const WAVE = example("wave.rbm"); // 16 servos, 6 scenes
 const ARMS = example("arms-only.rbm"); // 6 servos
 
-/** Field positions in a file with `W` servos (PROTOCOL.md §7). */
+/** Field positions in a file with `W` servos (docs/protocol.md §7). */
 const sceneField = (W: number, scene: number, offset: number) => 13 + 6 * W + scene * (5 + 6 * W) + offset;
 const servoField = (servo: number, j: number) => 13 + 6 * servo + j;
 const recordField = (W: number, scene: number, record: number, j: number) =>

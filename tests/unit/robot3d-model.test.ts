@@ -1,6 +1,6 @@
 /**
  * The HUNO model of the 3D view (src/ui/robot3d/): joint angles from positions, forward kinematics, standing on
- * the ground, mirror images, and the pose of a motion at a time (PROTOCOL.md §10). Expected angles are worked
+ * the ground, mirror images, and the pose of a motion at a time (docs/protocol.md §10). Expected angles are worked
  * out by hand from `(position − zero) × 269/254 × sign`; expected poses from the §10 formula.
  */
 import { describe, expect, it } from "vitest";

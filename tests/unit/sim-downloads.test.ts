@@ -69,7 +69,7 @@ function freeMemory(r: ReturnType<typeof rig>, area: 1 | 2): number {
   return ((reply[14]! << 24) | (reply[15]! << 16) | (reply[16]! << 8) | reply[17]!) >>> 0;
 }
 
-describe("SimulatedRbc downloads (PROTOCOL.md §6.2)", () => {
+describe("SimulatedRbc downloads (docs/protocol.md §6.2)", () => {
   it("downloads wave.rbm's image: 40 to the first part, 10 chunks acknowledged, 23,936 bytes left", async () => {
     const r = rig();
     const { sim, clock, send, take } = r;

@@ -4,7 +4,7 @@ import { VirtualClock } from "../../src/shared/clock.ts";
 import { BUILT_IN_KEYFRAMES, SimulatedRbc, type SimulatedRbcOptions } from "../../src/sim/index.ts";
 
 /**
- * The simulated robot moves over time (PROTOCOL.md §9 "Added since", §10) and can be posed by hand. Every
+ * The simulated robot moves over time (docs/protocol.md §9 "Added since", §10) and can be posed by hand. Every
  * expected position below is worked out by hand from the §10 formula
  * `start + round(k · (end − start) / frames) + zeroDelta`, frames `floor(timeMs / frames)` ms apart.
  */
@@ -14,7 +14,7 @@ const RUN_MOTION = (n: string) => `${H} 14 00 00 00 00 01 ${n} ${n}`;
 const MOTION_REPLY = (n: string) => `${H} 14 01 00 00 00 01 ${n} ${n}`;
 const DIRECT_ON = `${H} 10 00 00 00 00 01 01 01`;
 const EXIT_DIRECT = "FF E0 FB 01 00 1A";
-/** PROTOCOL.md §5 examples: sync move of ids 0-15 to the basic posture; passive id 12. */
+/** docs/protocol.md §5 examples: sync move of ids 0-15 to the basic posture; passive id 12. */
 const SYNC_BASIC = "FF 9F 10 7D B3 C7 58 6C 7E 48 31 A3 8D 33 2F 31 C7 CD CD 7E";
 const PASSIVE_12 = "FF CC 10 5C";
 /** Read id 12: FF (A0|12) 00, checksum (AC ^ 00) & 7F = 2C. */
@@ -23,9 +23,9 @@ const READ_12 = "FF AC 00 2C";
 const MOVE_0_TO_100 = "FF 40 64 24";
 /** Passive id 0: FF C0 10, checksum (C0 ^ 10) & 7F = 50. */
 const PASSIVE_0 = "FF C0 10 50";
-/** The HUNO basic posture (PROTOCOL.md §5). */
+/** The HUNO basic posture (docs/protocol.md §5). */
 const BASIC = [125, 179, 199, 88, 108, 126, 72, 49, 163, 141, 51, 47, 49, 199, 205, 205];
-/** The simulator's default zeros are the factory table (PROTOCOL.md §4): servo 0 → 124, servo 1 → 202. */
+/** The simulator's default zeros are the factory table (docs/protocol.md §4): servo 0 → 124, servo 1 → 202. */
 const FACTORY_ZERO_0 = 124;
 const FACTORY_ZERO_1 = 202;
 
@@ -36,7 +36,7 @@ interface ImageScene {
   records: [number, number, number][];
 }
 
-/** A motion image laid out by hand as in PROTOCOL.md §6.3 (little-endian, W servos, S scenes). */
+/** A motion image laid out by hand as in docs/protocol.md §6.3 (little-endian, W servos, S scenes). */
 function image(servos: { id: number; zero: number }[], scenes: ImageScene[]): Uint8Array {
   const w = servos.length;
   const size = 12 + 6 * w + scenes.length * (6 + 5 * w);
@@ -76,7 +76,7 @@ function rig(options: SimulatedRbcOptions = {}) {
 }
 type Rig = ReturnType<typeof rig>;
 
-/** Downloads `payload` as motion 1 (played as Run Motion 12), chunk by chunk (PROTOCOL.md §6.2). */
+/** Downloads `payload` as motion 1 (played as Run Motion 12), chunk by chunk (docs/protocol.md §6.2). */
 async function download(r: Rig, payload: Uint8Array): Promise<void> {
   const first = fromHex(`${H} 01 00 00 00 00 00`);
   first[13] = payload.length & 0xff;
@@ -128,7 +128,7 @@ const TWO_SCENES = (zero0 = FACTORY_ZERO_0, zero1 = FACTORY_ZERO_1) =>
     ],
   );
 
-describe("SimulatedRbc: a downloaded motion moves the servos frame by frame (PROTOCOL.md §10)", () => {
+describe("SimulatedRbc: a downloaded motion moves the servos frame by frame (docs/protocol.md §10)", () => {
   it("passes through the frames of each scene at its frame interval, then replies after the scene times", async () => {
     const r = rig();
     await download(r, TWO_SCENES());
@@ -311,7 +311,7 @@ describe("SimulatedRbc: built-in motions 1-11 move the demo robot [decision]", (
     11: 1300,
   };
 
-  it("their keyframe times add up to the catalogue durations of PROTOCOL.md §3.1", () => {
+  it("their keyframe times add up to the catalogue durations of docs/protocol.md §3.1", () => {
     for (const [n, ms] of Object.entries(DURATIONS)) {
       expect(
         BUILT_IN_KEYFRAMES[+n]!.reduce((sum, k) => sum + k.ms, 0),

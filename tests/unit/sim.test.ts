@@ -6,7 +6,7 @@ import { SimulatedRbc, type SimulatedRbcOptions } from "../../src/sim/index.ts";
 /** The 8-byte header, to keep the literal vectors below readable. */
 const H = "FF FF AA 55 AA 55 37 BA";
 
-/** PROTOCOL.md §8, literally. */
+/** docs/protocol.md §8, literally. */
 const EX1_READ_VERSION = "FF FF AA 55 AA 55 37 BA 12 00 00 00 00 01 01 01";
 const EX2_VERSION = "FF FF AA 55 AA 55 37 BA 12 01 00 00 00 02 02 17 15";
 const EX3_SERIAL = "FF FF AA 55 AA 55 37 BA 0C 01 00 00 00 0D 38 39 35 38 38 39 39 39 38 39 33 30 39 36";
@@ -50,7 +50,7 @@ function rig(options: SimulatedRbcOptions = {}) {
   return { clock, sim, out, send, take };
 }
 
-describe("SimulatedRbc: packets (PROTOCOL.md §2, §8)", () => {
+describe("SimulatedRbc: packets (docs/protocol.md §2, §8)", () => {
   it("answers example 1 (read version) with exactly example 2", () => {
     const { send, take } = rig();
     send(EX1_READ_VERSION);
@@ -110,7 +110,7 @@ describe("SimulatedRbc: packets (PROTOCOL.md §2, §8)", () => {
   });
 });
 
-describe("SimulatedRbc: zeros (PROTOCOL.md §4)", () => {
+describe("SimulatedRbc: zeros (docs/protocol.md §4)", () => {
   it("echoes an accepted write (example 13) and stores it", () => {
     const { sim, send, take } = rig();
     send(EX13_WRITE_STANDARD_ZEROS);
@@ -145,7 +145,7 @@ describe("SimulatedRbc: zeros (PROTOCOL.md §4)", () => {
   });
 });
 
-describe("SimulatedRbc: sensors (PROTOCOL.md §3)", () => {
+describe("SimulatedRbc: sensors (docs/protocol.md §3)", () => {
   it("reads the accelerometer X=4 Y=3 Z=-6 as example 11, with the firmware checksum FD", () => {
     const { sim, send, out } = rig();
     sim.setAccelerometer(4, 3, -6);
@@ -192,7 +192,7 @@ describe("SimulatedRbc: sensors (PROTOCOL.md §3)", () => {
   });
 });
 
-describe("SimulatedRbc: subscriptions (PROTOCOL.md §3.4)", () => {
+describe("SimulatedRbc: subscriptions (docs/protocol.md §3.4)", () => {
   it("emits sound levels at or above the threshold every 100 ms until the next header", async () => {
     const { sim, clock, send, take } = rig();
     send(EX9_SOUND_THRESHOLD_30);
@@ -253,7 +253,7 @@ describe("SimulatedRbc: subscriptions (PROTOCOL.md §3.4)", () => {
   });
 });
 
-describe("SimulatedRbc: motions and sounds (PROTOCOL.md §3.1)", () => {
+describe("SimulatedRbc: motions and sounds (docs/protocol.md §3.1)", () => {
   it("ignores every motion but 7 after power-up, with no reply", async () => {
     const { sim, clock, send, take } = rig();
     send(RUN_MOTION("04"));
@@ -300,7 +300,7 @@ describe("SimulatedRbc: motions and sounds (PROTOCOL.md §3.1)", () => {
     }
   });
 
-  it("answers the interrupt-handled requests at once while a motion plays, and ignores another motion (PROTOCOL.md §3.6)", async () => {
+  it("answers the interrupt-handled requests at once while a motion plays, and ignores another motion (docs/protocol.md §3.6)", async () => {
     const { sim, clock, send, take } = rig({ basicPostureDone: true });
     send(RUN_MOTION("03"));
     send(EX1_READ_VERSION);
@@ -411,7 +411,7 @@ describe("SimulatedRbc: motions and sounds (PROTOCOL.md §3.1)", () => {
   });
 });
 
-describe("SimulatedRbc: memory pointer and memory (PROTOCOL.md §6.1)", () => {
+describe("SimulatedRbc: memory pointer and memory (docs/protocol.md §6.1)", () => {
   it("answers free memory (example 14) and echoes a pointer reset (example 15)", () => {
     const { send, take } = rig();
     send(READ_FREE_MOTION);
@@ -430,7 +430,7 @@ describe("SimulatedRbc: memory pointer and memory (PROTOCOL.md §6.1)", () => {
   });
 });
 
-describe("SimulatedRbc: direct mode (PROTOCOL.md §5)", () => {
+describe("SimulatedRbc: direct mode (docs/protocol.md §5)", () => {
   it("enters with example 4, moves servo 5 to 125, reads, goes passive, brakes, syncs, exits", () => {
     const { sim, send, take } = rig();
     send(EX4_DIRECT_ON);
@@ -473,7 +473,7 @@ describe("SimulatedRbc: direct mode (PROTOCOL.md §5)", () => {
     const { sim, send, take } = rig();
     send(EX4_DIRECT_ON);
     take();
-    // Bounds read of id 1 (d2 = 0x12): [upper, lower] = [228, 70] (PROTOCOL.md §5).
+    // Bounds read of id 1 (d2 = 0x12): [upper, lower] = [228, 70] (docs/protocol.md §5).
     send("FF E1 12 00 00 73");
     expect(take()).toEqual(["E4 46"]);
     // Speed set of id 2 (d2 = 0x0D): speed 3, acceleration 2.
@@ -490,7 +490,7 @@ describe("SimulatedRbc: direct mode (PROTOCOL.md §5)", () => {
   });
 });
 
-describe("SimulatedRbc: wCK parameters answered from stored values (PROTOCOL.md §5)", () => {
+describe("SimulatedRbc: wCK parameters answered from stored values (docs/protocol.md §5)", () => {
   /** `FF (E0|id) d2 d3 d4 cs`, cs = XOR of the 4 bytes after FF, AND 7F. */
   const param = (id: number, d2: number, d3: number, d4: number) => {
     const b = [0xe0 | id, d2, d3, d4];

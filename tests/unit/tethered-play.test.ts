@@ -1,5 +1,5 @@
 /**
- * Tethered play (PROTOCOL.md §10) through the whole stack: RbcClient → WebSerialTransport → MockSerialPort →
+ * Tethered play (docs/protocol.md §10) through the whole stack: RbcClient → WebSerialTransport → MockSerialPort →
  * SimulatedRbc, on a virtual clock. Every expected byte is worked out by hand below from §5 (a synchronised
  * move is `FF (speed<<5 | 1F) N p0 … pN-1 cs`, cs = XOR of the positions AND 7F) and the §10 frame formula
  * `start + round(k·(end − start)/frames) + zeroDelta[i]` (round: halves away from zero).

@@ -54,10 +54,10 @@ import { Session } from "../../src/ui/session.ts";
 import { SIMULATED_CLOCK } from "../../src/ui/simulated-clock.ts";
 import { createStore } from "../../src/ui/store.ts";
 
-/** The motion template's zeros (PROTOCOL.md §4, the standard table) and the demo robot's (the factory table). */
+/** The motion template's zeros (docs/protocol.md §4, the standard table) and the demo robot's (the factory table). */
 const STANDARD = [125, 202, 162, 66, 108, 124, 48, 88, 184, 142, 90, 40, 125, 161, 210, 127];
 const FACTORY = [124, 202, 162, 65, 108, 125, 46, 88, 184, 142, 90, 40, 125, 161, 210, 126];
-/** The HUNO basic posture (PROTOCOL.md §5), where the simulated servos start. */
+/** The HUNO basic posture (docs/protocol.md §5), where the simulated servos start. */
 const POSTURE = [125, 179, 199, 88, 108, 126, 72, 49, 163, 141, 51, 47, 49, 199, 205, 205];
 
 describe("teach-in: limbs", () => {
@@ -146,7 +146,7 @@ describe("tethered play: scenes, question, result", () => {
     expect(playRange(doc, "all", 1, 0, 0)).toEqual({ from: 0, to: 2 });
   });
 
-  it("counts frames and time as the RBC plays them (frames × floor(time / frames), PROTOCOL.md §10)", () => {
+  it("counts frames and time as the RBC plays them (frames × floor(time / frames), docs/protocol.md §10)", () => {
     // Scene 0: 10 frames of 50 ms; scene 1: 3 frames of floor(100 / 3) = 33 ms; scene 2: 4 frames of 50 ms.
     expect(playSpan(doc, 0, 0)).toEqual({ frames: 10, durationMs: 500 });
     expect(playSpan(doc, 1, 1)).toEqual({ frames: 3, durationMs: 99 });
@@ -388,7 +388,7 @@ describe("teach-in and tethered play on the demo robot", () => {
     expect(sim.servos.some((s) => s.passive)).toBe(false);
   });
 
-  it("plays scenes through the frames of PROTOCOL.md §10, zero deltas applied, and holds the last", async () => {
+  it("plays scenes through the frames of docs/protocol.md §10, zero deltas applied, and holds the last", async () => {
     const demo = await demoContext();
     close = demo.close;
     const { ctx, sim } = demo;

@@ -112,7 +112,7 @@ describe("servo moves", () => {
     expect(clampToSafe(2, 200.4)).toBe(200);
   });
 
-  it("refuses a typed target outside the safe range instead of clamping it (PROTOCOL.md §5 ranges)", () => {
+  it("refuses a typed target outside the safe range instead of clamping it (docs/protocol.md §5 ranges)", () => {
     // Servo 12: lower 1, upper 198.
     expect(checkTypedTarget(12, "300")).toEqual({
       problem:

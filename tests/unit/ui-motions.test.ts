@@ -134,7 +134,7 @@ describe("motion files", () => {
   it("reads wave.rbm: facts, image and footprint", () => {
     const entry = inspectMotionText("wave.rbm", WAVE);
     expect(entry.errors).toEqual([]);
-    // 6 scenes of 16 servos: 108 + 86 · 6 = 624 bytes, 640 on the robot (PROTOCOL.md §6).
+    // 6 scenes of 16 servos: 108 + 86 · 6 = 624 bytes, 640 on the robot (docs/protocol.md §6).
     expect(entryFacts(entry)).toEqual({
       name: "RbcPanel_Wave",
       scenes: 6,

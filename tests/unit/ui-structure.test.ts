@@ -3,7 +3,7 @@ import { join, relative } from "node:path";
 import { describe, expect, it } from "vitest";
 import { controllerKey, Scope } from "../../src/ui/scope.ts";
 
-/** The shape DESIGN.md asks of the panel, checked on its sources. */
+/** The shape docs/architecture.md asks of the panel, checked on its sources. */
 
 const UI = new URL("../../src/ui/", import.meta.url).pathname;
 

@@ -6,7 +6,7 @@ import { VirtualClock } from "../../src/shared/clock.ts";
 import { createDemoRbc, SimulatedRbc } from "../../src/sim/index.ts";
 import { makeRig } from "../support/rig.ts";
 
-/** Firmware builds differ (PROTOCOL.md §3.5): what the client tolerates, on simulator variants. */
+/** Firmware builds differ (docs/protocol.md §3.5): what the client tolerates, on simulator variants. */
 
 describe("a firmware that does not answer 0x0C or 0x1E", () => {
   it("connects and identifies the robot, the serial number 'not reported'", async () => {

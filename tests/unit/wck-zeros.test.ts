@@ -18,7 +18,7 @@ import {
 
 const BASIC_POSTURE = [125, 179, 199, 88, 108, 126, 72, 49, 163, 141, 51, 47, 49, 199, 205, 205];
 
-describe("wCK servo packets (PROTOCOL.md §5 examples)", () => {
+describe("wCK servo packets (docs/protocol.md §5 examples)", () => {
   it("move id 5 to 125 at torque 2", () => expect(toHex(wckMove(5, 125, 2))).toBe("FF 45 7D 38"));
   it("read id 5", () => expect(toHex(wckReadStatus(5))).toBe("FF A5 00 25"));
   it("passive id 12", () => expect(toHex(wckPassive(12))).toBe("FF CC 10 5C"));
@@ -64,7 +64,7 @@ describe("WckDecoder", () => {
   });
 });
 
-describe("zero table (PROTOCOL.md §4)", () => {
+describe("zero table (docs/protocol.md §4)", () => {
   it("accepts the standard and factory tables", () => {
     expect(isAcceptedZeroTable(STANDARD_ZEROS)).toBe(true);
     expect(isAcceptedZeroTable(FACTORY_ZEROS)).toBe(true);

@@ -30,7 +30,7 @@ export const infoCommand: CommandDef = {
     noExtraArguments("info", positionals, 0);
     const robot = await connectRobot("info", values, env);
     const { client } = robot;
-    // 0x0C is optional: some firmware builds never answer it (PROTOCOL.md §3.5).
+    // 0x0C is optional: some firmware builds never answer it (docs/protocol.md §3.5).
     const { serialNumber, warnings } = await client.identify();
     const errorCode = await client.readErrorCode();
     const freeMotion = await client.readAvailableMemory("motion");

@@ -38,7 +38,7 @@ const OPTIONS = {
 /** Warnings listed in words; --json has them all. */
 const MAX_WARNINGS_SHOWN = 10;
 
-/** PROTOCOL.md §6.3 [decision] Safety: one sentence, before the first byte, on a real robot (the device's words). */
+/** docs/protocol.md §6.3 [decision] Safety: one sentence, before the first byte, on a real robot (the device's words). */
 export const EXPERIMENTAL_NOTICE = UPLOAD_NOTICES.experimental;
 export const HOLD_ADVICE = UPLOAD_NOTICES.holdAdvice;
 
@@ -163,7 +163,7 @@ export const uploadCommand: CommandDef = {
     const { client } = robot;
     let validation: RbmValidation = { errors: [], warnings: [] };
     if (prepared.area === "motion") {
-      // 0x0C is optional (PROTOCOL.md §3.5): without a serial number the file's robot check is skipped.
+      // 0x0C is optional (docs/protocol.md §3.5): without a serial number the file's robot check is skipped.
       const { serialNumber } = await client.identify();
       if (serialNumber === undefined) env.out.note(t("cmd.upload.noSerial"));
       validation = validateRbm(prepared.motion, { connectedSerialNumber: serialNumber });

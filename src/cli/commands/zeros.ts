@@ -110,7 +110,7 @@ export function zerosTable(zeros: readonly number[], locale: Locale = "en"): str
 }
 
 async function identify(robot: Robot) {
-  // 0x0C is optional (PROTOCOL.md §3.5): a robot that does not answer it is "not reported".
+  // 0x0C is optional (docs/protocol.md §3.5): a robot that does not answer it is "not reported".
   const { serialNumber } = await robot.client.identify();
   const zeros = await robot.client.readZeros();
   return { serialNumber, firmware: formatFirmware(robot.identity.firmware), zeros };

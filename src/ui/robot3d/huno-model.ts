@@ -195,13 +195,13 @@ export const HUNO_SHAPES: readonly (readonly [LinkId, LinkShape])[] = [
 /** A pose: one position per servo id (undefined: that joint at its zero). */
 export type HunoPose = readonly (number | undefined)[];
 
-/** A zero table by servo id; where it has no value the standard table (PROTOCOL.md §4) is used. */
+/** A zero table by servo id; where it has no value the standard table (docs/protocol.md §4) is used. */
 export type ZeroTable = readonly (number | undefined)[];
 
 /**
  * The joint angles of a pose, radians, index = servo id 0-15: `(position − zero) × DEGREES_PER_COUNT × sign`.
  * `zeros` is the zero table the positions are measured from (the robot's, or the motion file's); the standard
- * table (PROTOCOL.md §4) where it has no value. A missing or non-finite position is the joint at its zero.
+ * table (docs/protocol.md §4) where it has no value. A missing or non-finite position is the joint at its zero.
  */
 export function jointAngles(pose: HunoPose, zeros: ZeroTable = STANDARD_ZEROS): number[] {
   return HUNO_JOINTS.map((j) => {

@@ -9,7 +9,7 @@
  * - A robot on a cable: nothing shown may be more certain than what the robot confirmed. The picture shows
  *   the positions the panel last had from the robot (the Servos view's reads and move replies) with the time,
  *   and says plainly that during a motion the servos cannot be read (the RBC answers nothing but 7 while it
- *   plays, PROTOCOL.md §3.6). Joints never read are drawn at the basic posture, and the caption says which.
+ *   plays, docs/protocol.md §3.6). Joints never read are drawn at the basic posture, and the caption says which.
  */
 import "../styles/robot3d.css";
 import { html, nothing, type TemplateResult } from "lit-html";

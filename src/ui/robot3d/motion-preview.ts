@@ -1,6 +1,6 @@
 /**
  * A motion played on the 3D robot: the robot (robot-canvas.ts), Play/Pause and a scrub bar over the motion's
- * duration. It animates on the motion's real timing (the pose at each moment from `poseAt`, PROTOCOL.md §10),
+ * duration. It animates on the motion's real timing (the pose at each moment from `poseAt`, docs/protocol.md §10),
  * drawing only when a frame boundary changes the pose. With `prefers-reduced-motion: reduce` it never starts
  * by itself and Play shows the next scene's pose at once instead of animating.
  *

@@ -1,5 +1,5 @@
 /**
- * The pose of a motion at a time, as the RBC plays it (PROTOCOL.md §10), for the 3D preview's animation and
+ * The pose of a motion at a time, as the RBC plays it (docs/protocol.md §10), for the 3D preview's animation and
  * scrub bar. Pure.
  *
  * Scene k plays `frames` frames `floor(timeMs / frames)` ms apart, so it lasts `frames × interval` ms and the

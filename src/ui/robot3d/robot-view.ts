@@ -36,7 +36,7 @@ const previewView = mountDirective<MotionPreviewOptions>((host) => new MotionPre
 
 /**
  * `motion` on the 3D robot with Play/Pause and a scrub bar over its duration, on the motion's real timing
- * (PROTOCOL.md §10 frames).
+ * (docs/protocol.md §10 frames).
  */
 export function motionPreview(options: MotionPreviewViewOptions): TemplateResult {
   const { motion, zeros, label, autoplay, locale } = options;

@@ -1,5 +1,5 @@
 /**
- * Where Escape already means something (UI.md "Keyboard"): cancelling an edit in a field, closing a dialog, a
+ * Where Escape already means something (docs/ui.md "Keyboard"): cancelling an edit in a field, closing a dialog, a
  * menu or a disclosure popup. There it keeps that meaning; only elsewhere does the panel take it as Stop (never
  * Limp).
  */

@@ -127,7 +127,7 @@ export interface DraftListing {
   broken: BrokenDraft[];
 }
 
-/** Scenes of an `.rbm` text without parsing it: field 9 (PROTOCOL.md §7). */
+/** Scenes of an `.rbm` text without parsing it: field 9 (docs/protocol.md §7). */
 export function sceneCountOf(rbm: string): number | undefined {
   const field = rbm.split(":", 10)[9];
   return field !== undefined && /^\d{1,4}$/.test(field) ? Number(field) : undefined;

@@ -1,7 +1,7 @@
 /**
  * The editor's live part, one per connection (the session resets it to undefined, which `liveOf` reads as the
  * initial value): teach-in (servos made passive, posed by hand, read into a scene, held) and tethered play (a
- * scene, a range or the whole motion played frame by frame in direct mode, PROTOCOL.md §10).
+ * scene, a range or the whole motion played frame by frame in direct mode, docs/protocol.md §10).
  */
 import type { AppState, Notice } from "../../app-state.ts";
 import type { Store } from "../../store.ts";

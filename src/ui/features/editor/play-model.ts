@@ -31,7 +31,7 @@ export function playRange(
 }
 
 /**
- * The frames and duration of scenes from..to as the RBC plays them (PROTOCOL.md §10: `frames` frames
+ * The frames and duration of scenes from..to as the RBC plays them (docs/protocol.md §10: `frames` frames
  * `floor(timeMs / frames)` ms apart). Throws the motion core's `MotionError` for a scene whose frames are under
  * 20 ms apart (the RBC's error 6): then nothing may move. The move to the first pose, when the robot is not
  * there, comes on top.

@@ -23,7 +23,7 @@ import { refusalText } from "./refusal-text.ts";
 import { escapeTo } from "./teach-in-view.ts";
 
 /**
- * Tethered play under the selected scene (issue #12 item 4, PROTOCOL.md §10): the scene, a range or the whole
+ * Tethered play under the selected scene (issue #12 item 4, docs/protocol.md §10): the scene, a range or the whole
  * motion on the robot, one question first, progress in place, Stop holds the last frame.
  */
 

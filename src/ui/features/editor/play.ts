@@ -1,5 +1,5 @@
 /**
- * Tethered play's actions (issue #12 item 4, PROTOCOL.md §10): play the selected scene, a range or the whole
+ * Tethered play's actions (issue #12 item 4, docs/protocol.md §10): play the selected scene, a range or the whole
  * motion on the robot in direct mode, after one question; progress in place; Stop (top bar, Escape or the
  * panel's own button) holds the last frame; one sentence of what the robot confirmed.
  */

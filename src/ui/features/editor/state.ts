@@ -19,7 +19,7 @@ import type { BrokenDraft, DraftSummary } from "./drafts.ts";
 import type { EditorKey } from "./messages.ts";
 
 /**
- * The tabs of the selected scene's work (UI.md: a view that grows past two screens is split). The toolbar, the
+ * The tabs of the selected scene's work (docs/ui.md: a view that grows past two screens is split). The toolbar, the
  * scene list and the drafts stay outside them, always shown.
  */
 export type EditorTab = "pose" | "scene" | "tools" | "teach" | "play" | "check";

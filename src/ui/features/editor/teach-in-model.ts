@@ -159,7 +159,7 @@ export interface SceneReading {
 
 /**
  * The positions read from the robot as a pose of the motion. Tethered play sends `position + zeroDelta` with
- * zeroDelta = the robot's zero − the motion's zero (PROTOCOL.md §10, none on platform 4), so a pose read from
+ * zeroDelta = the robot's zero − the motion's zero (docs/protocol.md §10, none on platform 4), so a pose read from
  * this robot is stored as `position − zeroDelta` and plays back to where it was read. Without the robot's
  * zeros the positions are stored as read. Results outside 0-254 are clamped (an .rbm position is 0-254).
  */

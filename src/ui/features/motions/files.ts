@@ -11,7 +11,7 @@ import { FILE_CHECKS } from "./controllers.ts";
 import { motionsMessages } from "./messages.ts";
 import { type MotionFileEntry, motionFilesOf, patchMotionFiles } from "./state.ts";
 
-/** Opening .rbm files: read, parse, check and encode them (PROTOCOL.md §6.3, §7). */
+/** Opening .rbm files: read, parse, check and encode them (docs/protocol.md §6.3, §7). */
 
 /** Far above any motion file (29 samples: 2-20 KB); a bigger file is not read at all. */
 export const MAX_RBM_BYTES = 1_000_000;

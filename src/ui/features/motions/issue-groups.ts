@@ -5,7 +5,7 @@ import type { RbmIssue } from "../../../protocol/rbm-validate.ts";
 import { type MotionsKey, type MotionsTranslator, motionsMessages } from "./messages.ts";
 
 /**
- * A file's warnings grouped by kind (the validator's issue codes, PROTOCOL.md §7), each kind with how much it
+ * A file's warnings grouped by kind (the validator's issue codes, docs/protocol.md §7), each kind with how much it
  * matters and what it means for the robot. Stock Motionbuilder files carry dozens of small warnings
  * (WalkJump.rbm: 27 "the servo will jump"): a flat list gives each the same weight, so the person cannot tell
  * a 1-step twitch from an arm driven into the body. Pure functions.

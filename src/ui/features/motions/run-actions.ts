@@ -19,7 +19,7 @@ import { formatSeconds } from "./plot-data.ts";
 import { motionNumberOf, type SlotBook } from "./slot-book.ts";
 import { motionsOf, patchMotions, robotBusyReason } from "./state.ts";
 
-/** Running motions and sounds (PROTOCOL.md §3.1, §3.3), with the 7-first rule and the movement warning. */
+/** Running motions and sounds (docs/protocol.md §3.1, §3.3), with the 7-first rule and the movement warning. */
 
 export interface OfferedMotion {
   number: number;
@@ -161,7 +161,7 @@ function runFailure(t: MotionsTranslator, offer: OfferedMotion, e: unknown): Not
 }
 
 /**
- * "Stop motion": the client sends 7, which the RBC obeys at the end of the current scene (PROTOCOL.md §3.6). It
+ * "Stop motion": the client sends 7, which the RBC obeys at the end of the current scene (docs/protocol.md §3.6). It
  * answers once, `07`, and does not play basic posture: the robot holds the pose it stopped in.
  */
 export async function stopMotion(ctx: AppContext): Promise<void> {

@@ -4,7 +4,7 @@ import { downloadedMotionNumber, MAX_ACTIONS, MAX_MOTIONS } from "../../../proto
 import { motionsMessages } from "./messages.ts";
 
 /**
- * Which download slot each upload of this connection went into (PROTOCOL.md §6.1, §3.1). The RBC records
+ * Which download slot each upload of this connection went into (docs/protocol.md §6.1, §3.1). The RBC records
  * downloads in order: after power-up or a memory reset the first goes into slot 1 (Run Motion 12), the 11th
  * into slot 11 (Run Motion 33). The panel only knows a slot when it knows how many files the robot held
  * before: after a reset, or when the area's free memory showed it empty. Pure functions.

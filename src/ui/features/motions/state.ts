@@ -21,7 +21,7 @@ export interface MotionFileEntry {
   fileBytes: number;
   /** The parsed motion; absent when the file could not be read as a motion. */
   motion?: RbmMotion;
-  /** Its motion image (PROTOCOL.md §6.3), what an upload sends. */
+  /** Its motion image (docs/protocol.md §6.3), what an upload sends. */
   image?: Uint8Array;
   /** Errors that make the file unusable, found while reading it (the §7 rules that parseRbm enforces). */
   errors: RbmIssue[];

@@ -14,7 +14,7 @@ import { type ActionFile, motionsOf, patchMotions, robotBusyReason, type UploadT
 import { addSample } from "./upload-rate.ts";
 import { bookKey, type Payload, uploadFailed, uploadSucceeded } from "./upload-results.ts";
 
-/** Uploads of motion images and action files (PROTOCOL.md §6), with the §6.3 safety decision. */
+/** Uploads of motion images and action files (docs/protocol.md §6), with the §6.3 safety decision. */
 
 /**
  * What an upload would send, or why it must not (a file with errors never gets a byte sent), in the panel's

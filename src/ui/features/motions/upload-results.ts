@@ -45,7 +45,7 @@ export interface Payload {
   durationMs?: number;
 }
 
-/** The RBC's error codes (PROTOCOL.md §3.4) in Korean: the Robot view's words for them. */
+/** The RBC's error codes (docs/protocol.md §3.4) in Korean: the Robot view's words for them. */
 const KOREAN_ERROR_CODES: Readonly<Record<number, KeysWithoutParams<typeof robotMessages>>> = {
   1: "robot.error.eeprom",
   2: "robot.error.checksum",

@@ -13,7 +13,7 @@ import { refreshDeviceInfo } from "./actions.ts";
 import { memoryUsedRow } from "./memory-used.ts";
 import { type RobotTranslator, robotMessages } from "./messages.ts";
 
-/** The platforms the RBC knows (PROTOCOL.md §3.5), in words. */
+/** The platforms the RBC knows (docs/protocol.md §3.5), in words. */
 function platformText(t: RobotTranslator, platform: number): string {
   switch (platform) {
     case 1:
@@ -29,7 +29,7 @@ function platformText(t: RobotTranslator, platform: number): string {
   }
 }
 
-/** The RBC's error codes (PROTOCOL.md §3.4; the same list as protocol/catalog.ts), as a person reads them. */
+/** The RBC's error codes (docs/protocol.md §3.4; the same list as protocol/catalog.ts), as a person reads them. */
 function errorCodeWords(t: RobotTranslator, code: number): string {
   switch (code) {
     case NO_ERROR:

@@ -38,7 +38,7 @@ export interface ServosState {
 export const SERVO_IDS: readonly number[] = HUNO_SERVO_IDS;
 export const DEFAULT_TORQUE = 2;
 
-/** The safe range of servo `id` (PROTOCOL.md §5 for 0-15; other ids get the full 0-254). */
+/** The safe range of servo `id` (docs/protocol.md §5 for 0-15; other ids get the full 0-254). */
 export function servoRange(id: number): { min: number; max: number } {
   return safeRange(id) ?? { min: 0, max: 254 };
 }

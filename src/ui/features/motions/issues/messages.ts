@@ -84,7 +84,7 @@ export const issueMessages = defineMessages({
     ko: "모션 데이터의 {path} 항목은 0 이상의 정수여야 해요 ({got}).",
   },
 
-  // The RBC's rules (PROTOCOL.md §7): errors.
+  // The RBC's rules (docs/protocol.md §7): errors.
   "motions.issue.outOfRange.byte": {
     en: "{what} is {value}; it must fit in one byte (0-{max}).",
     ko: "{what} 값이 {value}인데, 1바이트(0-{max}) 안에 들어가야 해요.",
