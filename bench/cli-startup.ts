@@ -7,8 +7,8 @@ import { median } from "./stats.ts";
  * Start-up cost of the `rbc` command: wall time of `node bin/rbc.mjs --help` against `node -e 0` (Node's own
  * start-up), run side by side — the two commands alternate, so both see the same machine load — after one
  * untimed run of each. Each run is a fresh process (spawnSync), timed from spawn to exit with
- * `performance.now()`. Ratio = median(cli) ÷ median(node). Whatever bin/rbc.mjs is at the time is measured
- * (TypeScript through tsx, or a prebuilt bundle).
+ * `performance.now()`. Ratio = median(cli) ÷ median(node). What bin/rbc.mjs runs is measured: the prebuilt
+ * bundle (a missing or stale one makes rbc exit with 1, and this figure fails saying so).
  */
 
 export interface CliStartupFigures {
@@ -18,7 +18,7 @@ export interface CliStartupFigures {
   cliRunsMs: number[];
   nodeRunsMs: number[];
   command: string;
-  /** What the CLI printed on stderr in its untimed first run (e.g. that it fell back to tsx), if anything. */
+  /** What the CLI printed on stderr in its untimed first run if anything. */
   stderr: string;
 }
 

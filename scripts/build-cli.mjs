@@ -10,7 +10,7 @@
  *
  * Plain JavaScript, so that `prepare` runs it with plain node, and bin/rbc.mjs shares `bundleState` with it.
  * dist-cli/manifest.json lists the files the bundle was made from (and when): a bundle older than any of them
- * is stale, and bin/rbc.mjs then runs the sources instead.
+ * is stale, and bin/rbc.mjs then asks for `npm run build:cli` instead of running it.
  */
 import { randomBytes } from "node:crypto";
 import {
@@ -123,9 +123,11 @@ async function cli(args) {
   try {
     await import("esbuild");
   } catch {
-    // No esbuild (tsx, which needs it too, would be missing as well): not a reason to fail `npm install`;
-    // bin/rbc.mjs then runs the sources.
-    console.warn("build-cli: esbuild is not installed; rbc will run the TypeScript sources through tsx.");
+    // No esbuild (a dev dependency: an install without them): not a reason to fail `npm install`; bin/rbc.mjs
+    // then says that the CLI needs building.
+    console.warn(
+      "build-cli: esbuild (a dev dependency) is not installed, so the CLI was not built; install the dev dependencies and run `npm run build:cli`.",
+    );
     return;
   }
   const { ms, files } = await buildCli();

@@ -9,6 +9,8 @@ export * from "./packet.ts";
 export * from "./packet-parser.ts";
 export * from "./plausibility.ts";
 export * from "./rbm.ts";
+export * from "./rbm-validate.ts";
 export * from "./servo-limits.ts";
 export * from "./wck.ts";
 export * from "./zeros.ts";
+export * from "./zeros-backup.ts";

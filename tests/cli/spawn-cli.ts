@@ -7,7 +7,7 @@ import { fileURLToPath } from "node:url";
  */
 
 export const REPO = fileURLToPath(new URL("../../", import.meta.url));
-/** The `rbc` command as installed: it runs dist-cli/main.js, or the sources through tsx when that is stale. */
+/** The `rbc` command as installed: it runs dist-cli/main.js (and asks for `npm run build:cli` when that is stale). */
 export const BIN = fileURLToPath(new URL("../../bin/rbc.mjs", import.meta.url));
 /** The built CLI, which the tests run (built on first use when missing or stale; see cliEntry). */
 export const CLI_MAIN = fileURLToPath(new URL("../../dist-cli/main.js", import.meta.url));

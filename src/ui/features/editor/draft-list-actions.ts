@@ -5,7 +5,7 @@ import { focusSoon } from "../../focus.ts";
 import { editorWords } from "./actions.ts";
 import { editorController } from "./controller.ts";
 import { flushAutosave, readDraftDocument, scheduleAutosave } from "./draft-actions.ts";
-import { draftRecord, listDrafts, summarize } from "./drafts.ts";
+import { draftRecord, summarize } from "./drafts.ts";
 import { motionFileName } from "./file-name.ts";
 import { refusalText } from "./refusal-text.ts";
 import { applyEdit, editorOf, patchEditor, startDocument } from "./state.ts";
@@ -18,19 +18,6 @@ function message(e: unknown): string {
 
 async function readDocument(ctx: AppContext, id: string) {
   return readDraftDocument(await editorController(ctx).storage, id, ctx.store.get().locale);
-}
-
-/** Reads the Drafts list again. */
-export async function refreshDrafts(ctx: AppContext): Promise<void> {
-  const t = editorWords(ctx);
-  try {
-    const { drafts, broken } = await listDrafts(await editorController(ctx).storage, t.locale);
-    patchEditor(ctx.store, { drafts, brokenDrafts: broken });
-  } catch (e) {
-    patchEditor(ctx.store, {
-      draftsNotice: { tone: "danger", text: t("editor.drafts.readFailed", { error: message(e) }) },
-    });
-  }
 }
 
 /** Opens a stored draft in the editor (the motion open now is saved first). */

@@ -82,8 +82,6 @@ export function choosesAll(limbs: readonly Limb[]): boolean {
 
 /** The question before teach-in starts, in English (the view asks it in the panel's language). */
 export const TEACH_IN_QUESTION = english("editor.teach.question");
-/** The question before every servo goes limp, in English. */
-export const LIMP_ALL_QUESTION = english("editor.teach.limpAllQuestion");
 
 /** "0–4, 10" — runs of consecutive ids joined with a dash. */
 export function idList(ids: readonly number[]): string {
