@@ -176,6 +176,10 @@ export const cliMessages = defineMessages({
     en: "The number of scenes the motion gives differs from the scenes it lists.",
     ko: "모션에 적힌 장면 개수가 실제 장면 수와 달라요.",
   },
+  "cli.rbm.noScenes": {
+    en: "The motion has no scenes; a motion needs at least one.",
+    ko: "모션에 장면이 없어요. 모션에는 장면이 하나 이상 있어야 해요.",
+  },
   "cli.rbm.hunoServoCount": {
     en: "The motion does not have the 16 servos of a HUNO.",
     ko: "모션의 서보 개수가 HUNO의 16개와 달라요.",
