@@ -176,6 +176,10 @@ export const cliMessages = defineMessages({
     en: "The number of scenes the motion gives differs from the scenes it lists.",
     ko: "모션에 적힌 장면 개수가 실제 장면 수와 달라요.",
   },
+  "cli.rbm.noScenes": {
+    en: "The motion has no scenes; a motion needs at least one.",
+    ko: "모션에 장면이 없어요. 모션에는 장면이 하나 이상 있어야 해요.",
+  },
   "cli.rbm.hunoServoCount": {
     en: "The motion does not have the 16 servos of a HUNO.",
     ko: "모션의 서보 개수가 HUNO의 16개와 달라요.",
@@ -374,6 +378,34 @@ export const cliMessages = defineMessages({
     ko: "펌웨어 {firmware}, 시리얼 {serial}, 플랫폼 {platform} ({name})",
   },
   "cli.variant.serialNotReported": { en: "not reported", ko: "알려 주지 않음" },
+  "cli.variant.busyMotion": {
+    en: '--busy-motion must be a built-in motion number from 1 to 11, got "{value}".',
+    ko: '--busy-motion에는 1부터 11까지의 내장 모션 번호를 써 주세요. 받은 값: "{value}".',
+  },
+  "cli.variant.firmwareEvents": {
+    en: "events at the firmware's pace (0x17 about every 3.5 ms)",
+    ko: "펌웨어 속도의 이벤트 (0x17 약 3.5ms마다)",
+  },
+  "cli.variant.busyMotion.words": {
+    en: "busy with motion {number} from the remote at connect",
+    ko: "연결하면 IR 리모컨으로 시작한 모션 {number}번을 재생 중",
+  },
+  "cli.variant.userFirmware": {
+    en: 'the official "user" build\'s keys (12-19, 33-42 empty; 20 endless; 21 a demo)',
+    ko: '공식 "user" 빌드의 키 (12-19, 33-42 비어 있음, 20 끝없음, 21 데모)',
+  },
+  "cli.variant.noMemoryRead": {
+    en: "no answer to 0x0F (free memory)",
+    ko: "0x0F(남은 메모리)에 응답 안 함",
+  },
+  "cli.variant.servosSilent": {
+    en: "servos silent (a Run holds error 11 for 4.5 s)",
+    ko: "서보 응답 없음 (모션을 실행하면 4.5초 동안 오류 11)",
+  },
+  "cli.variant.soundReplyAtOnce": {
+    en: "Run Sound answered at once",
+    ko: "소리 재생에 바로 응답",
+  },
 
   "cli.sim.powerCycled": {
     en: "Power cycle: the simulated robot was switched off and on; its bootloader starts.",

@@ -25,6 +25,13 @@ export const VARIANT_OPTIONS = {
   platform: { type: "string" },
   "repeat-replies": { type: "boolean" },
   "repeat-type": { type: "string" },
+  "repeat-distance": { type: "boolean" },
+  "firmware-events": { type: "boolean" },
+  "busy-motion": { type: "string" },
+  "user-firmware": { type: "boolean" },
+  "no-memory-read": { type: "boolean" },
+  "servos-silent": { type: "boolean" },
+  "sound-reply-at-once": { type: "boolean" },
 } as const;
 
 /** The demo robot's variant switches (same syntax as `rbc sim`'s). */
@@ -40,7 +47,17 @@ export const REPEAT_INTERVAL_MS = 0.955;
 
 export type SimVariant = Pick<
   SimulatedRbcOptions,
-  "answersSerialNumber" | "answersExecutionStatus" | "firmware" | "platform" | "repeatReplies"
+  | "answersSerialNumber"
+  | "answersExecutionStatus"
+  | "firmware"
+  | "platform"
+  | "repeatReplies"
+  | "firmwareEventPace"
+  | "busyMotion"
+  | "userFirmware"
+  | "answersMemoryRead"
+  | "servosSilent"
+  | "soundReplyAtOnce"
 >;
 
 interface VariantValues {
@@ -50,6 +67,13 @@ interface VariantValues {
   platform?: string;
   "repeat-replies"?: boolean;
   "repeat-type"?: string;
+  "repeat-distance"?: boolean;
+  "firmware-events"?: boolean;
+  "busy-motion"?: string;
+  "user-firmware"?: boolean;
+  "no-memory-read"?: boolean;
+  "servos-silent"?: boolean;
+  "sound-reply-at-once"?: boolean;
 }
 
 function parseFirmware(text: string, command: string): { major: number; minor: number } {
@@ -70,6 +94,14 @@ function parsePlatform(text: string, command: string): number {
   return n;
 }
 
+function parseBusyMotion(text: string, command: string): number {
+  const n = Number(text);
+  if (!/^\d{1,2}$/.test(text.trim()) || n < 1 || n > 11) {
+    throw new UsageError(said(cliMessages, "cli.variant.busyMotion", { value: text }), command);
+  }
+  return n;
+}
+
 function parseType(text: string, command: string): number {
   const m = /^0x([0-9a-f]{1,2})$/i.exec(text.trim());
   if (!m) throw new UsageError(said(cliMessages, "cli.variant.repeatType", { value: text }), command);
@@ -86,7 +118,15 @@ export function variantFromValues(values: VariantValues, command: string, paced 
   if (values["no-status"]) variant.answersExecutionStatus = false;
   if (values.firmware !== undefined) variant.firmware = parseFirmware(values.firmware, command);
   if (values.platform !== undefined) variant.platform = parsePlatform(values.platform, command);
-  if (values["repeat-replies"] || values["repeat-type"] !== undefined) {
+  if (values["firmware-events"]) variant.firmwareEventPace = true;
+  if (values["busy-motion"] !== undefined)
+    variant.busyMotion = parseBusyMotion(values["busy-motion"], command);
+  if (values["user-firmware"]) variant.userFirmware = true;
+  if (values["no-memory-read"]) variant.answersMemoryRead = false;
+  if (values["servos-silent"]) variant.servosSilent = true;
+  if (values["sound-reply-at-once"]) variant.soundReplyAtOnce = true;
+  // --repeat-distance names the homebrew port's own bug: the 0x16 reply, the default of --repeat-replies.
+  if (values["repeat-replies"] || values["repeat-distance"] || values["repeat-type"] !== undefined) {
     const type =
       values["repeat-type"] === undefined ? DEFAULT_REPEAT_TYPE : parseType(values["repeat-type"], command);
     // A 0x16 reply is 17 bytes; 86.8 µs each at 115200 baud.
@@ -146,6 +186,14 @@ export function describeVariant(variant: SimVariant, locale: Locale = "en"): str
     const hex = `0x${type.toString(16).toUpperCase().padStart(2, "0")}`;
     words.push(t("cli.variant.repeats", { type: hex, name: commandName(type) }));
   }
+  if (variant.firmwareEventPace) words.push(t("cli.variant.firmwareEvents"));
+  if (variant.busyMotion !== undefined) {
+    words.push(t("cli.variant.busyMotion.words", { number: String(variant.busyMotion) }));
+  }
+  if (variant.userFirmware) words.push(t("cli.variant.userFirmware"));
+  if (variant.answersMemoryRead === false) words.push(t("cli.variant.noMemoryRead"));
+  if (variant.servosSilent) words.push(t("cli.variant.servosSilent"));
+  if (variant.soundReplyAtOnce) words.push(t("cli.variant.soundReplyAtOnce"));
   return words;
 }
 

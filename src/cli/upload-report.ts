@@ -27,6 +27,7 @@ const ISSUE_TEXT: Readonly<Record<string, Key>> = {
   "rbm-header-constant": "cli.rbm.headerConstant",
   "rbm-servo-count": "cli.rbm.servoCount",
   "rbm-scene-count": "cli.rbm.sceneCount",
+  "rbm-no-scenes": "cli.rbm.noScenes",
   "rbm-huno-servo-count": "cli.rbm.hunoServoCount",
   "rbm-servo-id": "cli.rbm.servoId",
   "rbm-scene-index": "cli.rbm.sceneIndex",

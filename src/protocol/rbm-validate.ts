@@ -154,6 +154,10 @@ export function validateRbm(motion: RbmMotion, options: RbmValidateOptions = {})
       huno: HUNO_SERVO_COUNT,
     });
   }
+  if (S < 1) {
+    // A motion needs at least one scene (§7): the editor, the image and the robot all assume one.
+    err("rbm-no-scenes", "The motion has no scenes; a motion needs at least one.", { scenes: S, min: 1 });
+  }
   if (S > 0xffff) {
     err("rbm-out-of-range", `The motion has ${S} scenes; a motion image holds at most 65,535.`, {
       kind: "scenes",

@@ -4,9 +4,14 @@
  * SimulatedRbc decisions where the protocol is silent:
  * - Quick replies are sent synchronously from `receive`; the mock port adds wire time and latency.
  * - Requests whose contents should be `01` are dropped with anything else; only the low size byte is checked.
- * - While a motion plays, only 0x1E and a 7 (stop) are handled; everything else is dropped (not queued).
- *   While a sound plays everything is dropped. A stop ends the motion within STOP_SCENE_MS, replies to it,
- *   then plays 7. Run Motion numbers other than 1-11, 12-21 and 33-42 (0, 0x2B, 0x31, ...) get no reply.
+ * - While a motion plays, the interrupt-answered requests are answered at once; 0x16 and the subscriptions wait
+ *   for its end (at most 64 of them wait; more are dropped). A Run replaces the key the motion's 0x14 reply
+ *   carries (the new motion does not play); a 7 also ends the motion within STOP_SCENE_MS, at the end of its
+ *   scene, with one reply and no basic posture (`sim-run-keys.ts`). While a sound plays everything is
+ *   dropped. Run Motion numbers other than 1-11, 12-21 and 33-42 (0, 0x2B, 0x31, ...) get no reply.
+ * - A motion started from the remote (`playFromRemote`, `busyMotion`) sends no 0x14 reply at its end unless a
+ *   Run arrived meanwhile. With silent servos only built-in motions hold error 11; the "user" build's flash
+ *   demo (21) plays built-in motion 9's frames.
  * - An accepted zero write, download first part or motion start resets the error code to FF.
  * - Any header from the PC ends the running subscription, 0x19 included.
  * - A download abandons after 1 s of silence (no error code); downloaded files survive 0x1F and a power
@@ -63,7 +68,18 @@ export {
 } from "./sim-motion-playback.ts";
 export { DEFAULT_DOWNLOADED_MOTION_MS, STOP_SCENE_MS } from "./sim-player.ts";
 export type { DropReason } from "./sim-receiver.ts";
-export type { AccelerometerNoise, SensorState, SubscriptionType } from "./sim-sensors.ts";
+export {
+  ERROR_SERVO_SILENT,
+  SERVOS_SILENT_RUN_MS,
+  USER_ENDLESS_WALK,
+  USER_FLASH_DEMO,
+} from "./sim-run-keys.ts";
+export {
+  type AccelerometerNoise,
+  FIRMWARE_SOUND_EVENT_INTERVAL_MS,
+  type SensorState,
+  type SubscriptionType,
+} from "./sim-sensors.ts";
 export type { ServoListener } from "./sim-servo-watch.ts";
 export type { ServoState } from "./sim-servos.ts";
 export type { SimulatedRbcOptions, SimulatedRbcState, SimulatedRbcStats } from "./sim-types.ts";

@@ -52,7 +52,8 @@ export interface PlayingSound {
 
 interface Running<T> {
   info: T;
-  timer: TimerId;
+  /** Undefined for a motion that never ends (the "user" firmware's key 9, docs/protocol.md §3.1). */
+  timer: TimerId | undefined;
   onEnd: () => void;
 }
 
@@ -63,6 +64,8 @@ interface Frames {
   origin: number;
   /** The next frame to send. */
   next: number;
+  /** An endless motion's next round of frames, from the pose the last round ended in. */
+  again: (() => SimPlayback | undefined) | undefined;
   /** No frame after this time (ms from `origin`) is sent: set by a stop. */
   cutMs: number;
   timer: TimerId | undefined;
@@ -129,11 +132,35 @@ export class SimPlayer {
     const now = this.timers.clock.now();
     const info: PlayingMotion = { number, startedAt: now, endsAt: now + durationMs, stopping: false };
     this.motionRun = { info, onEnd, timer: this.timers.after(durationMs, () => this.endMotion()) };
+    this.startFrames(now, playback, undefined);
+  }
+
+  /**
+   * Plays motion `number` for ever: no reply, no end, and a 7 does not stop it (the "user" firmware's key 9,
+   * docs/protocol.md §3.1); only a power cycle ends it. `round` gives each round of frames from the pose the
+   * last one left.
+   */
+  playEndless(number: number, round: () => SimPlayback | undefined): void {
+    const now = this.timers.clock.now();
+    const info: PlayingMotion = { number, startedAt: now, endsAt: Number.POSITIVE_INFINITY, stopping: false };
+    this.motionRun = { info, onEnd: () => {}, timer: undefined };
+    this.startFrames(now, round(), round);
+  }
+
+  /** The playing motion never ends by itself. */
+  get endless(): boolean {
+    return this.motionRun !== undefined && this.motionRun.timer === undefined;
+  }
+
+  private startFrames(
+    origin: number,
+    playback: SimPlayback | undefined,
+    again: (() => SimPlayback | undefined) | undefined,
+  ): void {
     this.stopFrames();
-    if (playback) {
-      this.frames = { playback, origin: now, next: 0, cutMs: Number.POSITIVE_INFINITY, timer: undefined };
-      this.scheduleFrame();
-    }
+    if (!playback) return;
+    this.frames = { playback, origin, next: 0, cutMs: Number.POSITIVE_INFINITY, timer: undefined, again };
+    this.scheduleFrame();
   }
 
   /**
@@ -145,7 +172,7 @@ export class SimPlayer {
    */
   stopMotion(instead: () => void): boolean {
     const run = this.motionRun;
-    if (!run || run.info.stopping) return false;
+    if (!run || run.info.stopping || run.timer === undefined) return false;
     const now = this.timers.clock.now();
     const left = Math.min(Math.max(0, run.info.endsAt - now), STOP_SCENE_MS);
     const frames = this.frames;
@@ -168,6 +195,13 @@ export class SimPlayer {
   stretchMotion(ms: number): void {
     const run = this.motionRun;
     if (!run) return;
+    if (run.timer === undefined) {
+      if (this.frames) {
+        this.frames.origin += ms;
+        this.scheduleFrame();
+      }
+      return;
+    }
     this.timers.cancel(run.timer);
     run.info.endsAt += ms;
     run.timer = this.timers.after(Math.max(0, run.info.endsAt - this.timers.clock.now()), () =>
@@ -218,6 +252,14 @@ export class SimPlayer {
     f.timer = undefined;
     const index = f.next;
     const frame = f.playback.frames[index];
+    if (!frame && f.again) {
+      // An endless motion: the next round starts where this one ended.
+      const next = f.again();
+      if (next && next.frames.length > 0) {
+        this.startFrames(f.origin + f.playback.durationMs, next, f.again);
+      }
+      return;
+    }
     if (!frame || frame.atMs > f.cutMs) return;
     f.timer = this.timers.after(f.origin + frame.atMs - this.timers.clock.now(), () => {
       f.timer = undefined;

@@ -17,6 +17,11 @@ export type SubscriptionType = number;
 
 /** While subscribed, sound level events come this often (level >= threshold). */
 export const SOUND_EVENT_INTERVAL_MS = 100;
+/**
+ * The firmware's pace (docs/protocol.md §3.6): its main loop sends a 0x17 event on every pass while the level
+ * meets the threshold, about every 3.5 ms (≈ 285 packets/s). The simulator uses it with `firmwareEventPace`.
+ */
+export const FIRMWARE_SOUND_EVENT_INTERVAL_MS = 3.5;
 /** While subscribed and a button is held, button events come this often. */
 export const BUTTON_EVENT_INTERVAL_MS = 200;
 
@@ -56,6 +61,8 @@ export class SimSensors {
     /** Sends an event packet [value, 0] of `type` to the PC. */
     private readonly emit: (type: number, contents: Uint8Array) => void,
     noise?: AccelerometerNoise,
+    /** Sound events come this often while the level meets the threshold. */
+    private readonly soundIntervalMs = SOUND_EVENT_INTERVAL_MS,
   ) {
     this.noise = noise ? { random: seededRandom(noise.seed), amplitude: noise.amplitude } : undefined;
   }
@@ -138,7 +145,8 @@ export class SimSensors {
     this.stop();
     this.subscription = type;
     if (type === SOUND_TYPE) {
-      // Reported at once, then every 100 ms: a client that re-arms the subscription often still hears it.
+      // Reported at once, then every 100 ms (or at the firmware's pace): a client that re-arms the
+      // subscription often still hears it.
       this.threshold = threshold;
       this.soundTick();
     } else if (type === BUTTON_TYPE) {
@@ -155,7 +163,7 @@ export class SimSensors {
 
   private soundTick(): void {
     if (this.soundLevel >= this.threshold) this.emit(SOUND_TYPE, Uint8Array.of(this.soundLevel, 0));
-    this.timer = this.timers.after(SOUND_EVENT_INTERVAL_MS, () => this.soundTick());
+    this.timer = this.timers.after(this.soundIntervalMs, () => this.soundTick());
   }
 
   private buttonTick(): void {

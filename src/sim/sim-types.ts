@@ -39,6 +39,24 @@ export interface SimulatedRbcOptions {
   answersExecutionStatus?: boolean;
   /** After its first reply of `type`, the robot sends that reply again every `intervalMs` (default 1 ms). */
   repeatReplies?: { type: number; intervalMs?: number };
+  /**
+   * What real firmwares do (docs/protocol.md §3.1, §3.5, §3.6), off by default: 0x17 events at the firmware's
+   * pace, one about every 3.5 ms while the level meets the threshold (default: every 100 ms).
+   */
+  firmwareEventPace?: boolean;
+  /** The official "user" build's keys: 12-19 and 33-42 empty (reply at once), 20 endless, 21 a flash demo. */
+  userFirmware?: boolean;
+  /** false: 0x0F (free memory) goes unanswered, as on the homebrew port. */
+  answersMemoryRead?: boolean;
+  /** The servos do not answer: a Run holds error 11 for about 4.5 s, then replies and clears it to FF. */
+  servosSilent?: boolean;
+  /** The Run Sound (0x15) reply comes at once, before the sound plays (it still plays, receiving nothing). */
+  soundReplyAtOnce?: boolean;
+  /**
+   * A robot busy with built-in motion `busyMotion` (1-11) started from the remote: it starts when the first byte
+   * from the PC arrives after power-up, so a client connects to a robot that is playing something.
+   */
+  busyMotion?: number;
 }
 
 export interface SimulatedRbcStats {
@@ -98,5 +116,18 @@ export function resolveOptions(options: SimulatedRbcOptions) {
     repeatReplies: options.repeatReplies
       ? { type: options.repeatReplies.type, intervalMs: Math.max(0.1, options.repeatReplies.intervalMs ?? 1) }
       : undefined,
+    firmwareEventPace: options.firmwareEventPace ?? false,
+    userFirmware: options.userFirmware ?? false,
+    answersMemoryRead: options.answersMemoryRead ?? true,
+    servosSilent: options.servosSilent ?? false,
+    soundReplyAtOnce: options.soundReplyAtOnce ?? false,
+    busyMotion: checkedBusyMotion(options.busyMotion),
   };
+}
+
+function checkedBusyMotion(n: number | undefined): number | undefined {
+  if (n !== undefined && !(Number.isInteger(n) && n >= 1 && n <= 11)) {
+    throw new RangeError(`The busy motion must be a built-in motion, 1 to 11, got ${n}.`);
+  }
+  return n;
 }

@@ -8,7 +8,15 @@ import { SimDownloader } from "./sim-downloader.ts";
 import type { StoredFile } from "./sim-downloads.ts";
 import { SimPlayer } from "./sim-player.ts";
 import { type DropReason, type ReceiverHandler, SimReceiver } from "./sim-receiver.ts";
-import { BUTTON_TYPE, REMOTE_TYPE, SimSensors, SOUND_TYPE } from "./sim-sensors.ts";
+import { SimRunKeys } from "./sim-run-keys.ts";
+import {
+  BUTTON_TYPE,
+  FIRMWARE_SOUND_EVENT_INTERVAL_MS,
+  REMOTE_TYPE,
+  SimSensors,
+  SOUND_EVENT_INTERVAL_MS,
+  SOUND_TYPE,
+} from "./sim-sensors.ts";
 import { type ServoListener, ServoWatch } from "./sim-servo-watch.ts";
 import { ServoBus, type ServoState } from "./sim-servos.ts";
 import { SimTimers } from "./sim-timers.ts";
@@ -23,11 +31,14 @@ import {
  * The simulated RBC (docs/protocol.md §9): bytes from the PC go in through `receive`, bytes to the PC come out
  * through `onTransmit` listeners (one Uint8Array per reply or event). All timing follows the injected clock.
 
- * The decisions it makes where docs/protocol.md is silent are listed in `index.ts`.
+ * The decisions it makes where docs/protocol.md is silent are listed in `index.ts`. Over 400 lines: the request
+ * dispatch is one switch that reads best whole; Run Motion's key handling is in `sim-run-keys.ts`.
  */
 
 const ERROR_ZERO_SET = 7;
 const BASIC_POSTURE = 7;
+/** [decision] At most this many main-loop requests wait for a motion's end (the firmware keeps a flag or two). */
+const MAX_DEFERRED = 64;
 const DIRECT_MODE_TYPE = C.enterDirectMode.type;
 
 export class SimulatedRbc {
@@ -51,8 +62,17 @@ export class SimulatedRbc {
   private readonly drops: Partial<Record<DropReason, number>> = {};
   private readonly variant: Pick<
     ReturnType<typeof resolveOptions>,
-    "answersSerialNumber" | "answersExecutionStatus" | "repeatReplies"
+    | "answersSerialNumber"
+    | "answersExecutionStatus"
+    | "repeatReplies"
+    | "answersMemoryRead"
+    | "servosSilent"
+    | "soundReplyAtOnce"
+    | "busyMotion"
   >;
+  private readonly keys: SimRunKeys;
+  /** The busy motion (`busyMotion`) has been started since power-up. */
+  private busyStarted = false;
   private repeating: TimerId | undefined;
   /** Requests received during a motion that the firmware's main loop answers after it (0x16, 0x17-0x19). */
   private readonly afterMotion: Array<() => void> = [];
@@ -86,6 +106,18 @@ export class SimulatedRbc {
         if (!this.player.motion) this.reply(type, c);
       },
       o.accelerometerNoise,
+      o.firmwareEventPace ? FIRMWARE_SOUND_EVENT_INTERVAL_MS : SOUND_EVENT_INTERVAL_MS,
+    );
+    this.keys = new SimRunKeys(
+      {
+        player: this.player,
+        postureDone: () => this.postureDone,
+        setError: (code) => (this.error = code),
+        servoPositions: () => this.servoPositions(),
+        postureRan: () => (this.postureDone = true),
+        mainLoopFree: (key) => this.mainLoopFree(key),
+      },
+      { userFirmware: o.userFirmware, servosSilent: o.servosSilent },
     );
     this.receiver = new SimReceiver(this.handler);
     this.downloader = new SimDownloader(
@@ -102,6 +134,11 @@ export class SimulatedRbc {
   /** Bytes from the PC, in any chunking. */
   receive(bytes: Uint8Array): void {
     this.counters.bytesReceived += bytes.length;
+    const busy = this.variant.busyMotion;
+    if (busy !== undefined && !this.busyStarted) {
+      this.busyStarted = true;
+      this.keys.fromRemote(busy);
+    }
     this.receiver.push(bytes);
   }
 
@@ -209,6 +246,16 @@ export class SimulatedRbc {
     this.sensors.pressRemoteKey(code);
   }
 
+  /**
+   * Built-in motion `n` (1-11) started by the IR remote or the PF buttons, not by the PC (docs/protocol.md §3.1,
+   * §3.6): the main loop is busy until it ends, and its end sends no 0x14 reply unless a Run arrived meanwhile.
+   * False (nothing happens) when a motion or sound plays, in direct mode, or for another number.
+   */
+  playFromRemote(n: number): boolean {
+    if (this.direct) return false;
+    return this.keys.fromRemote(n);
+  }
+
   /** Stops every timer and forgets the listeners (e.g. when the demo robot is put away). */
   dispose(): void {
     this.powerCycle();
@@ -228,6 +275,8 @@ export class SimulatedRbc {
     this.timers.cancel(this.repeating);
     this.repeating = undefined;
     this.afterMotion.length = 0;
+    this.keys.reset();
+    this.busyStarted = false;
     this.sensors.stop();
     this.timers.cancelAll();
     this.receiver.packetMode();
@@ -288,27 +337,18 @@ export class SimulatedRbc {
   /**
    * Handles one request: the reply contents to send at once, a reason to drop it, or undefined. While a motion
    * plays (docs/protocol.md §3.6) the requests the firmware answers from its receive interrupt are answered at once;
-   * the ones its main loop answers (0x16, the subscriptions) wait until the motion is over; another Run Motion
-   * is ignored, and 7 ends the motion at the end of its scene with a single `07` reply. While a sound plays
-   * nothing at all is received.
+   * the ones its main loop answers (0x16, the subscriptions) wait until the motion is over; a Run Motion
+   * replaces the key the motion's reply carries, and 7 also ends the motion at the end of its scene
+   * (`sim-run-keys.ts`). While a sound plays nothing at all is received.
    */
   private handle(type: number, contents: Uint8Array): Outcome {
     const arg = contents[0]!;
     const motion = this.player.motion;
     if (this.player.sound) return "busy";
-    if (motion) {
-      if (type === C.runMotion.type) {
-        if (arg !== BASIC_POSTURE) return "busy";
-        const stopped = this.player.stopMotion(() => {
-          this.reply(C.runMotion.type, Uint8Array.of(BASIC_POSTURE));
-          this.runDeferred();
-        });
-        return stopped ? undefined : "busy";
-      }
-      if (MAIN_LOOP_TYPES.has(type)) {
-        this.afterMotion.push(() => this.packet(type, contents));
-        return undefined;
-      }
+    if (motion && MAIN_LOOP_TYPES.has(type)) {
+      if (this.afterMotion.length >= MAX_DEFERRED) return "busy";
+      this.afterMotion.push(() => this.packet(type, contents));
+      return undefined;
     }
     switch (type) {
       case C.readZeros.type:
@@ -321,6 +361,7 @@ export class SimulatedRbc {
       case C.readAvailableMemory.type: {
         const area =
           arg === 1 ? this.downloader.motionArea : arg === 2 ? this.downloader.actionArea : undefined;
+        if (!this.variant.answersMemoryRead) return "unknown-type";
         if (!area) return "contents";
         const free = area.free;
         return Uint8Array.of(free >>> 24, (free >>> 16) & 0xff, (free >>> 8) & 0xff, free & 0xff);
@@ -332,12 +373,17 @@ export class SimulatedRbc {
       case C.readFirmwareVersion.type:
         return one(arg, () => Uint8Array.of(this.firmware.major, this.firmware.minor));
       case C.runMotion.type:
-        return this.runMotion(arg);
+        return this.keys.run(arg);
       case C.runSound.type: {
         const length = arg >= 1 ? soundLengthMs(arg) : undefined;
         if (length === undefined) return "contents";
         // Everything stops while a sound plays, the motion's frames included.
         if (motion) this.player.stretchMotion(SOUND_REPLY_DELAY_MS + length);
+        if (this.variant.soundReplyAtOnce) {
+          // This build replies before it plays; the sound still stops everything for its length.
+          this.player.playSound(arg, SOUND_REPLY_DELAY_MS + length, () => {});
+          return Uint8Array.of(arg);
+        }
         this.player.playSound(arg, SOUND_REPLY_DELAY_MS + length, () => this.reply(type, Uint8Array.of(arg)));
         return undefined;
       }
@@ -382,7 +428,8 @@ export class SimulatedRbc {
     this.receiver.rawMode((b) => {
       const results = this.servoBus.push(b);
       for (const result of results) {
-        if (result.reply) this.send(result.reply);
+        // Silent servos (unplugged, no battery) never answer on the bus.
+        if (result.reply && !this.variant.servosSilent) this.send(result.reply);
         if (result.exitDirectMode) {
           this.direct = false;
           this.receiver.packetMode();
@@ -394,11 +441,7 @@ export class SimulatedRbc {
 
   // ---- motions ----
 
-  private runMotion(n: number): Outcome {
-    if (!this.postureDone && n !== BASIC_POSTURE) return "needs-basic-posture";
-    return this.player.startMotion(n);
-  }
-
+  /** Motion `n` played to its end; its reply carries the last key received (docs/protocol.md §3.1). */
   private motionEnded(n: number, positions: ReadonlyMap<number, number> | undefined): void {
     if (n === BASIC_POSTURE) {
       this.servoBus.setPositions(HUNO_BASIC_POSTURE);
@@ -406,7 +449,12 @@ export class SimulatedRbc {
     }
     if (positions) for (const [id, p] of positions) this.servoBus.setPosition(id, p);
     this.servoWatch.changed();
-    this.reply(C.runMotion.type, Uint8Array.of(n));
+    this.mainLoopFree(this.keys.takeOwed());
+  }
+
+  /** The main loop is free: the 0x14 reply owed (if any), then the requests it deferred. */
+  private mainLoopFree(key: number | undefined): void {
+    if (key !== undefined) this.reply(C.runMotion.type, Uint8Array.of(key));
     this.runDeferred();
   }
 

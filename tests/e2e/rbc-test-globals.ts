@@ -35,12 +35,24 @@ export interface RbcTestOptions {
    */
   timeScale?: number;
   /**
-   * A firmware variant of the fake port's robot (docs/protocol.md §3.5): no answer to 0x0C or 0x1E, another
-   * version or platform byte, a reply repeated endlessly. Default: the standard robot.
+   * A firmware variant of the fake port's robot (docs/protocol.md §3.1, §3.5, §3.6): no answer to 0x0C, 0x1E or
+   * 0x0F, another version or platform byte, a reply repeated endlessly, events at the firmware's pace, the "user"
+   * build's keys, silent servos, the sound reply at once, a motion from the remote at connect (the switches of
+   * `rbc sim`). Default: the standard robot.
    */
   variant?: Pick<
     SimulatedRbcOptions,
-    "answersSerialNumber" | "answersExecutionStatus" | "firmware" | "platform" | "repeatReplies"
+    | "answersSerialNumber"
+    | "answersExecutionStatus"
+    | "firmware"
+    | "platform"
+    | "repeatReplies"
+    | "firmwareEventPace"
+    | "busyMotion"
+    | "userFirmware"
+    | "answersMemoryRead"
+    | "servosSilent"
+    | "soundReplyAtOnce"
   >;
 }
 

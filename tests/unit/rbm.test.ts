@@ -337,7 +337,8 @@ describe("validateRbm", () => {
       "rbm-servo-count",
     ]);
     const empty = { ...parseWave(), servos: [], servoCount: undefined, scenes: [], sceneCount: undefined };
-    expect(codes(validateRbm(empty).errors)).toEqual(["rbm-servo-count"]);
+    // No servos and no scenes: both are errors (docs/protocol.md §7: S = 0 is one).
+    expect(codes(validateRbm(empty).errors)).toEqual(["rbm-servo-count", "rbm-no-scenes"]);
   });
 
   it("reports values of the wrong type in words instead of throwing", () => {

@@ -300,7 +300,7 @@ describe("SimulatedRbc: motions and sounds (docs/protocol.md §3.1)", () => {
     }
   });
 
-  it("answers the interrupt-handled requests at once while a motion plays, and ignores another motion (docs/protocol.md §3.6)", async () => {
+  it("answers the interrupt-handled requests at once while a motion plays; another Run replaces the reply's key (docs/protocol.md §3.1, §3.6)", async () => {
     const { sim, clock, send, take } = rig({ basicPostureDone: true });
     send(RUN_MOTION("03"));
     send(EX1_READ_VERSION);
@@ -314,9 +314,10 @@ describe("SimulatedRbc: motions and sounds (docs/protocol.md §3.1)", () => {
       EX14_FREE_MOTION,
       `${H} 1E 01 00 00 00 02 03 01 02`,
     ]);
-    expect(sim.stats.drops.busy).toBe(1);
     await clock.advance(1520);
-    expect(take()).toEqual([MOTION_REPLY("03")]);
+    // Motion 3 ended; the reply carries the last key, 4, and the walk is not played.
+    expect(take()).toEqual([MOTION_REPLY("04")]);
+    expect(sim.playingMotion).toBeUndefined();
     send(STATUS("03"));
     expect(take()).toEqual([`${H} 1E 01 00 00 00 02 03 00 03`]);
   });

@@ -30,6 +30,7 @@ export const simCommand: CommandDef = {
     "rbc sim --port /dev/pts/5 --baud-pacing --latency-ms 16",
     "rbc sim --pty --fault garbage --fault-every 3",
     "rbc sim --pty --no-serial --no-status --firmware 9.99 --platform 4 --repeat-replies",
+    "rbc sim --pty --user-firmware --busy-motion 1 --firmware-events",
   ],
   talksToRobot: false,
   streams: true,
@@ -108,6 +109,12 @@ export const simCommand: CommandDef = {
             answersSerialNumber: variant.answersSerialNumber !== false,
             answersExecutionStatus: variant.answersExecutionStatus !== false,
             repeatReplies: variant.repeatReplies ?? null,
+            firmwareEventPace: variant.firmwareEventPace === true,
+            busyMotion: variant.busyMotion ?? null,
+            userFirmware: variant.userFirmware === true,
+            answersMemoryRead: variant.answersMemoryRead !== false,
+            servosSilent: variant.servosSilent === true,
+            soundReplyAtOnce: variant.soundReplyAtOnce === true,
           },
         });
         env.out.line(

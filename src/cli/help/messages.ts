@@ -289,6 +289,34 @@ export const helpMessages = defineMessages({
     en: "Repeat this reply type instead of 0x16 (implies --repeat-replies).",
     ko: "0x16 대신 이 응답 종류를 되풀이해요 (--repeat-replies가 함께 켜져요).",
   },
+  "cliHelp.sim.repeatDistance": {
+    en: "The same as --repeat-replies: the homebrew port's endless 0x16 reply.",
+    ko: "--repeat-replies와 같아요: 홈브루 포트의 끝없는 0x16 응답.",
+  },
+  "cliHelp.sim.firmwareEvents": {
+    en: "Send 0x17 events at the firmware's pace: about every 3.5 ms while the level meets the threshold.",
+    ko: "펌웨어 속도로 0x17 이벤트를 보내요: 소리 크기가 기준을 넘는 동안 약 3.5ms마다.",
+  },
+  "cliHelp.sim.busyMotion": {
+    en: "Be busy: built-in motion N (1-11) starts from the remote when a client first sends a byte.",
+    ko: "바쁜 로봇: 클라이언트가 처음 바이트를 보내면 내장 모션 N번(1-11)이 IR 리모컨으로 시작돼요.",
+  },
+  "cliHelp.sim.userFirmware": {
+    en: 'The official "user" build\'s keys: 12-19 and 33-42 empty, 20 an endless walk, 21 a demo motion.',
+    ko: '공식 "user" 빌드의 키: 12-19와 33-42는 비어 있고, 20은 끝없는 걷기, 21은 데모 모션이에요.',
+  },
+  "cliHelp.sim.noMemoryRead": {
+    en: "Do not answer 0x0F (Read available memory), like the homebrew port.",
+    ko: "홈브루 포트처럼 0x0F(남은 메모리 읽기)에 응답하지 않아요.",
+  },
+  "cliHelp.sim.servosSilent": {
+    en: "Servos that do not answer: a Run holds error 11 for 4.5 s, then replies and clears it.",
+    ko: "응답하지 않는 서보: 모션을 실행하면 4.5초 동안 오류 11을 유지한 뒤 응답하고 지워요.",
+  },
+  "cliHelp.sim.soundReplyAtOnce": {
+    en: "Answer Run Sound (0x15) at once, before the sound plays.",
+    ko: "소리 재생(0x15)에 소리가 나기 전에 바로 응답해요.",
+  },
   "cliHelp.sim.quiet": { en: "Do not print the packet trace.", ko: "패킷 로그를 출력하지 않아요." },
   "cliHelp.sim.port": { en: "The serial device to serve.", ko: "가상 로봇을 띄울 시리얼 장치." },
 });

@@ -1,9 +1,21 @@
-import type { DraftRecord } from "./drafts.ts";
+import { type DraftRecord, sceneCountOf } from "./drafts.ts";
 
 /**
  * Autosave: a run of edits is saved once, ~300 ms after the last one; at once when the page is hidden; and when
  * it is left, written synchronously first (see `flushNow`).
  */
+
+/**
+ * A record whose motion has no scenes is never stored: it would not open again (docs/protocol.md §7, S = 0 is an
+ * error) and, as the newest draft, it would be the one the Editor tries first.
+ */
+export class UnopenableDraftError extends Error {
+  override name = "UnopenableDraftError";
+  readonly code = "rbm-no-scenes";
+  constructor(readonly id: string) {
+    super(`Draft ${id} was not saved: its motion has no scenes, and a motion needs at least one.`);
+  }
+}
 
 /** The delay between the last change and its autosave. */
 export const AUTOSAVE_DELAY_MS = 300;
@@ -65,6 +77,7 @@ export class Autosaver {
     let record: DraftRecord;
     try {
       record = make();
+      if (sceneCountOf(record.rbm) === 0) throw new UnopenableDraftError(record.id);
     } catch (e) {
       this.handlers.onError?.(e);
       return this.saving;
@@ -92,6 +105,7 @@ export class Autosaver {
     this.saving = this.saving.then(async () => {
       try {
         const record = make();
+        if (sceneCountOf(record.rbm) === 0) throw new UnopenableDraftError(record.id);
         await this.save(record);
         this.handlers.onSaved?.(record);
       } catch (e) {

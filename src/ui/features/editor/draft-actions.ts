@@ -3,6 +3,7 @@ import { translator } from "../../../i18n/translate.ts";
 import { type Motion, newMotion, openMotion, saveMotion } from "../../../motion/index.ts";
 import type { AppContext } from "../../context.ts";
 import { editorController } from "./controller.ts";
+import { DRAFT_OPEN_TIMEOUT_MS, DraftTimeoutError, withDeadline } from "./draft-deadline.ts";
 import {
   type BrokenDraft,
   type DraftRecord,
@@ -80,6 +81,8 @@ export async function readDraftDocument(
 export interface LatestDraft {
   /** The newest draft that opens, if any. */
   restored?: { record: DraftRecord; doc: Motion };
+  /** The newest draft, set aside because its motion does not open (it was newer than `restored`). */
+  setAside?: { key: string; name: string; problem: string };
   /** The drafts that can be listed. */
   drafts: DraftSummary[];
   /** Records that cannot be used, with why (a newer draft whose motion does not open is one). */
@@ -91,16 +94,18 @@ export async function findLatestDraft(storage: DraftStorage, locale: Locale = "e
   const listing = await listDrafts(storage, locale);
   const broken = [...listing.broken];
   let restored: LatestDraft["restored"];
+  let setAside: LatestDraft["setAside"];
   for (const draft of listing.drafts) {
     const read = await readDraftDocument(storage, draft.id, locale);
     if ("doc" in read) {
       restored = read;
       break;
     }
+    setAside ??= { key: draft.id, name: draft.name, problem: read.problem };
     broken.push({ key: draft.id, problem: read.problem });
   }
   const drafts = listing.drafts.filter((d) => !broken.some((b) => b.key === d.id));
-  return restored ? { restored, drafts, broken } : { drafts, broken };
+  return { ...(restored ? { restored } : {}), ...(setAside ? { setAside } : {}), drafts, broken };
 }
 
 function brokenNotice(broken: readonly BrokenDraft[], locale: Locale): string | undefined {
@@ -108,28 +113,55 @@ function brokenNotice(broken: readonly BrokenDraft[], locale: Locale): string | 
   return translator(editorMessages, locale)("editor.drafts.skippedNotice", { count: broken.length });
 }
 
+/** The drafts as the Editor opens: recovered, listed, the newest that opens found. */
+async function readDraftsAtStart(ctx: AppContext, locale: Locale): Promise<LatestDraft> {
+  const controller = editorController(ctx);
+  const storage = await controller.storage;
+  const lost = await recoverPending(storage, controller.pending, locale);
+  const latest = await findLatestDraft(storage, locale);
+  return lost ? { ...latest, broken: [...latest.broken, lost] } : latest;
+}
+
 /**
  * Opens the editor: reopens the last saved draft that can be read ("Draft restored: NAME, saved HH:MM"), or
- * starts from the template. Runs once per page; broken records are listed, never opened.
+ * starts from the template. Runs once per page; broken records are listed, never opened. A newest draft whose
+ * motion does not open is set aside with a sentence (it can be exported from the Drafts list), and reading the
+ * drafts has a deadline (`DRAFT_OPEN_TIMEOUT_MS`): the Editor never stays on "Opening the last draft…".
  */
-export async function startEditor(ctx: AppContext): Promise<void> {
+export async function startEditor(ctx: AppContext, deadlineMs = DRAFT_OPEN_TIMEOUT_MS): Promise<void> {
   const first = editorOf(ctx.store.get());
   if (first.history || first.starting) return;
   patchEditor(ctx.store, { starting: true });
   const { locale } = ctx.store.get();
   const t = translator(editorMessages, locale);
-  const controller = editorController(ctx);
   let latest: LatestDraft = { drafts: [], broken: [] };
   let listProblem: string | undefined;
   try {
-    const storage = await controller.storage;
-    const lost = await recoverPending(storage, controller.pending, locale);
-    latest = await findLatestDraft(storage, locale);
-    if (lost) latest = { ...latest, broken: [...latest.broken, lost] };
+    latest = await withDeadline(readDraftsAtStart(ctx, locale), deadlineMs);
   } catch (e) {
-    listProblem = t("editor.drafts.readFailed", { error: message(e) });
+    listProblem =
+      e instanceof DraftTimeoutError
+        ? t("editor.drafts.openTimedOut", { seconds: String(Math.round(e.ms / 1000)) })
+        : t("editor.drafts.readFailed", { error: message(e) });
   }
-  const { restored, drafts, broken } = latest;
+  try {
+    finishStart(ctx, latest, listProblem);
+  } catch (e) {
+    // A restored draft the editor cannot show: set it aside and open the template instead.
+    const aside = latest.restored;
+    const problem = t("editor.draftProblem.unreadable", { reason: message(e) });
+    const setAside = aside ? { key: aside.record.id, name: aside.record.name, problem } : latest.setAside;
+    const broken = aside ? [...latest.broken, { key: aside.record.id, problem }] : latest.broken;
+    const drafts = aside ? latest.drafts.filter((d) => d.id !== aside.record.id) : latest.drafts;
+    finishStart(ctx, { drafts, broken, ...(setAside ? { setAside } : {}) }, listProblem);
+  }
+}
+
+function finishStart(ctx: AppContext, latest: LatestDraft, listProblem: string | undefined): void {
+  const { locale } = ctx.store.get();
+  const t = translator(editorMessages, locale);
+  const controller = editorController(ctx);
+  const { restored, drafts, broken, setAside } = latest;
   const storageProblem =
     controller.storageProblem === undefined
       ? undefined
@@ -144,20 +176,26 @@ export async function startEditor(ctx: AppContext): Promise<void> {
       draftsNotice: problem ? { tone: "warning" as const, text: problem } : undefined,
     };
     if (!restored) {
-      return { ...startDocument(s, newMotion({ zeros: robotZeros(ctx) }), undefined), ...common };
+      const started = startDocument(s, newMotion({ zeros: robotZeros(ctx) }), undefined);
+      if (!setAside) return { ...started, ...common };
+      const text = t("editor.drafts.setAside", { name: setAside.name, problem: setAside.problem });
+      return { ...started, ...common, notice: { tone: "warning", text } };
     }
     const { record, doc } = restored;
+    const restoredText = t("editor.drafts.restored", {
+      name: doc.name,
+      time: formatSavedAt(record.savedAt, Date.now(), locale),
+    });
+    const asideText = setAside
+      ? t("editor.drafts.setAside", { name: setAside.name, problem: setAside.problem })
+      : undefined;
     return {
       ...startDocument(s, doc, record.id),
       ...common,
       savedAt: record.savedAt,
-      notice: {
-        tone: "info",
-        text: t("editor.drafts.restored", {
-          name: doc.name,
-          time: formatSavedAt(record.savedAt, Date.now(), locale),
-        }),
-      },
+      notice: asideText
+        ? { tone: "warning", text: `${restoredText} ${asideText}` }
+        : { tone: "info", text: restoredText },
     };
   });
 }

@@ -5,7 +5,7 @@ import { focusSoon } from "../../focus.ts";
 import { editorWords } from "./actions.ts";
 import { editorController } from "./controller.ts";
 import { flushAutosave, readDraftDocument, scheduleAutosave } from "./draft-actions.ts";
-import { draftRecord, summarize } from "./drafts.ts";
+import { draftRecord, storedName, storedRbmText, summarize } from "./drafts.ts";
 import { motionFileName } from "./file-name.ts";
 import { refusalText } from "./refusal-text.ts";
 import { applyEdit, editorOf, patchEditor, startDocument } from "./state.ts";
@@ -127,6 +127,34 @@ export async function exportDraft(ctx: AppContext, id: string): Promise<void> {
   downloadTextFile(fileName, read.record.rbm);
   patchEditor(ctx.store, {
     draftsNotice: { tone: "ok", text: t("editor.drafts.exported", { name: read.doc.name, file: fileName }) },
+  });
+}
+
+/**
+ * Exports a record set aside (it cannot be opened) exactly as it is stored, on the user's request: its motion
+ * text unchanged, so that nothing the user made is lost even when the panel cannot read it.
+ */
+export async function exportSetAside(ctx: AppContext, key: string): Promise<void> {
+  const t = editorWords(ctx);
+  let value: unknown;
+  try {
+    value = await (await editorController(ctx).storage).get(key);
+  } catch (e) {
+    patchEditor(ctx.store, {
+      draftsNotice: { tone: "danger", text: t("editor.drafts.exportFailed", { problem: message(e) }) },
+    });
+    return;
+  }
+  const text = storedRbmText(value);
+  if (text === undefined) {
+    patchEditor(ctx.store, { draftsNotice: { tone: "danger", text: t("editor.drafts.nothingToExport") } });
+    return;
+  }
+  const name = storedName(value) ?? key;
+  const fileName = motionFileName(name);
+  downloadTextFile(fileName, text);
+  patchEditor(ctx.store, {
+    draftsNotice: { tone: "ok", text: t("editor.drafts.exportedAside", { name, file: fileName }) },
   });
 }
 

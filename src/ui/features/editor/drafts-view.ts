@@ -9,6 +9,7 @@ import {
   cancelRename,
   deleteDraft,
   exportDraft,
+  exportSetAside,
   openDraft,
   renameDraft,
 } from "./draft-list-actions.ts";
@@ -123,6 +124,9 @@ function brokenList(ctx: ViewContext, t: EditorTranslator, s: EditorState): Temp
       ${broken.map(
         (b) => html`<li class="small">
           <span class="num">${b.key}</span>: ${b.problem}
+          <button type="button" class="btn btn--quiet" aria-label=${t("editor.drafts.exportAsideLabel", { name: b.key })} @click=${() => void exportSetAside(ctx, b.key)}>
+            ${t("editor.drafts.exportAside")}
+          </button>
           ${
             s.confirmDelete === b.key
               ? confirmDelete(ctx, t, b.key, b.key)

@@ -160,6 +160,22 @@ export async function loadDraft(
   return value === undefined ? undefined : readDraft(id, value, locale);
 }
 
+/**
+ * The motion text a stored value carries, whether or not it is a usable draft (a draft set aside because its
+ * motion does not open can still be exported as it is): `rbm` of a record, or the value itself if it is text.
+ */
+export function storedRbmText(value: unknown): string | undefined {
+  if (typeof value === "string") return value.length > 0 ? value : undefined;
+  const rbm = (value as { rbm?: unknown } | null)?.rbm;
+  return typeof rbm === "string" && rbm.length > 0 ? rbm : undefined;
+}
+
+/** The name a stored value gives itself, if any (for a set-aside draft's file name). */
+export function storedName(value: unknown): string | undefined {
+  const name = (value as { name?: unknown } | null)?.name;
+  return typeof name === "string" && name.length > 0 ? name : undefined;
+}
+
 /** A new draft id: the time and 8 random hex digits ("d-lz3k9q-1a2b3c4d"). */
 export function newDraftId(now: number, random: () => number = Math.random): string {
   const hex = Math.floor(random() * 0x1_0000_0000)

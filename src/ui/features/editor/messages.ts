@@ -279,6 +279,27 @@ export const editorMessages = defineMessages({
     },
     ko: "저장된 임시 저장본 {count}개를 읽지 못해서 건너뛰었어요 (아래 참고).",
   },
+  "editor.drafts.setAside": {
+    en: "The last draft, {name}, could not be opened and was set aside: {problem} It stays in Drafts, where you can export it as it is or delete it.",
+    ko: "마지막 임시 저장본 {name}을(를) 열 수 없어서 따로 두었어요: {problem} 임시 저장본 목록에 남아 있으니 있는 그대로 내보내거나 지울 수 있어요.",
+  },
+  "editor.drafts.openTimedOut": {
+    en: "Reading the drafts took more than {seconds} s, so the Editor opened a new motion; no draft was changed. Reload the page to try again.",
+    ko: "임시 저장본을 읽는 데 {seconds}초 넘게 걸려서 새 모션을 열었어요. 바뀐 임시 저장본은 없어요. 다시 시도하려면 페이지를 새로 고쳐 주세요.",
+  },
+  "editor.drafts.exportAside": { en: "Export as it is", ko: "있는 그대로 내보내기" },
+  "editor.drafts.exportAsideLabel": {
+    en: "Export the stored text of {name} as it is",
+    ko: "{name}의 저장된 내용을 있는 그대로 내보내기",
+  },
+  "editor.drafts.exportedAside": {
+    en: "Exported the stored text of {name} as {file}, unchanged: it does not open as it is.",
+    ko: "{name}의 저장된 내용을 바꾸지 않고 {file} 파일로 내보냈어요. 그대로는 열리지 않아요.",
+  },
+  "editor.drafts.nothingToExport": {
+    en: "That record holds no motion text to export.",
+    ko: "그 기록에는 내보낼 모션 내용이 없어요.",
+  },
   "editor.drafts.readFailed": {
     en: "The drafts could not be read ({error}).",
     ko: "임시 저장본을 읽지 못했어요 ({error}).",

@@ -125,6 +125,10 @@ export const issueMessages = defineMessages({
     en: "The motion says it has {declared} scenes but lists {listed}.",
     ko: "모션에 장면이 {declared}개라고 적혀 있지만, 실제로 나열된 장면은 {listed}개예요.",
   },
+  "motions.issue.noScenes": {
+    en: "The motion has no scenes; a motion needs at least {min}.",
+    ko: "모션에 장면이 없어요. 모션에는 장면이 {min}개 이상 있어야 해요.",
+  },
   "motions.issue.servoId.range": {
     en: "Servo record {record} has id {id}; servo ids go from 0 to {max}.",
     ko: "서보 레코드 {record}번의 ID가 {id}인데, 서보 ID는 0부터 {max}까지예요.",

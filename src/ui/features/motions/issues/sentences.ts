@@ -167,6 +167,8 @@ function fromRules(t: IssueTranslator, code: string, r: IssueValues): string | u
       return servoCount(t, r);
     case "rbm-scene-count":
       return t("motions.issue.sceneCount", { declared: r.number("declared"), listed: r.number("listed") });
+    case "rbm-no-scenes":
+      return t("motions.issue.noScenes", { min: r.number("min") });
     case "rbm-servo-id":
       return servoId(t, r);
     case "rbm-scene-index":
