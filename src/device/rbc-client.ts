@@ -2,9 +2,7 @@ import type { Transport } from "../link/transport.ts";
 import type { Motion } from "../motion/index.ts";
 import { COMMANDS, type MemoryArea } from "../protocol/commands.ts";
 import { type IntelHexImage, parseIntelHex } from "../protocol/intel-hex.ts";
-import { encodePacket } from "../protocol/packet.ts";
 import type { RbmMotion } from "../protocol/rbm.ts";
-import { zeroProblems } from "../protocol/zeros.ts";
 import type { Clock } from "../shared/clock.ts";
 import type { Emitter } from "../shared/emitter.ts";
 import { Activity, type ActivitySnapshot, type DirectUse } from "./activity.ts";
@@ -12,15 +10,7 @@ import type { ClientCore } from "./client-core.ts";
 import { stoppableUpload } from "./client-uploads.ts";
 import { DirectMode } from "./direct-mode.ts";
 import { enterDirect, exitDirect } from "./direct-switch.ts";
-import {
-  RbcBadReplyError,
-  RbcCancelledError,
-  RbcError,
-  RbcInvalidArgumentError,
-  RbcRejectedError,
-  RbcTimeoutError,
-  RbcVerifyError,
-} from "./errors.ts";
+import { RbcBadReplyError, RbcCancelledError, RbcTimeoutError } from "./errors.ts";
 import {
   connectionFirmwareIo,
   type FirmwareUpdateOptions,
@@ -35,10 +25,11 @@ import {
   motionPayload,
   uploadFileTo,
 } from "./motion-upload.ts";
-import { type RbcClientOptions, RbcConnection, type RbcTimeouts, SUBSCRIPTIONS } from "./rbc-connection.ts";
+import { type RbcClientOptions, RbcConnection, type RbcTimeouts } from "./rbc-connection.ts";
 import type { LinkTiming } from "./round-trip.ts";
 import { runSound } from "./sound.ts";
 import { runStop, type StopActivityResult } from "./stop.ts";
+import { subscribe, unsubscribe } from "./subscriptions.ts";
 import {
   checkTetheredPlay,
   runTetheredPlay,
@@ -60,21 +51,11 @@ import type {
   ZeroWriteResult,
 } from "./types.ts";
 import { type SafeZeroWrite, writeZerosWithBackup, type ZeroPolicyOptions } from "./zero-policy.ts";
+import { writeZeros } from "./zero-write.ts";
 
 export type { LimpResult } from "./limp.ts";
 export type { RbcClientOptions, RbcTimeouts } from "./rbc-connection.ts";
 export type { StopActivityResult } from "./stop.ts";
-
-/**
- * A plain array of what `zeros` holds at indexes 0-15, each index read exactly once (holes read as undefined,
- * which the zero rules refuse). A table of another length keeps its length so that the rules report it.
- */
-function copyZeroTable(zeros: readonly number[]): number[] {
-  const length = Array.isArray(zeros) ? zeros.length : 0;
-  const copy: number[] = [];
-  for (let i = 0; i < length; i++) copy.push(zeros[i] as number);
-  return copy;
-}
 
 /**
  * The RBC as typed operations (docs/protocol.md §3-6): reads, zero writes with read-back, motions and sounds that
@@ -250,52 +231,10 @@ export class RbcClient {
 
   /**
    * Validates the table (refusing what the RBC would silently drop), writes it, checks the echo, reads the
-   * table back and verifies it.
+   * table back and verifies it (`zero-write.ts`).
    */
-  async writeZeros(zeros: readonly number[]): Promise<ZeroWriteResult> {
-    // Copied once into a fresh table, and only the copy is checked and sent: a sparse array, a getter or a
-    // Proxy cannot change a value between the check and the write.
-    const written = copyZeroTable(zeros);
-    const problems = zeroProblems(written);
-    if (problems.length > 0) {
-      throw new RbcInvalidArgumentError(
-        `Not written: ${problems.map((p) => p.message).join(" ")} Nothing was sent to the robot.`,
-      );
-    }
-    return this.#c.exclusive(async () => {
-      let echo: number[];
-      try {
-        echo = await this.#c.request(COMMANDS.writeZeros, written);
-      } catch (e) {
-        if (!(e instanceof RbcTimeoutError)) throw e;
-        // No echo (lost, garbled or late): the table read back tells whether the write happened.
-        const stored = await this.#c.request(COMMANDS.readZeros, undefined).catch(() => undefined);
-        if (stored?.every((v, i) => v === written[i])) return { written, readBack: stored };
-        if (!stored) {
-          throw new RbcError(
-            "timeout",
-            "The robot did not confirm the zero write and did not answer a read either; its stored zeros are unknown. Check the connection, then read them again before anything else.",
-          );
-        }
-        throw new RbcRejectedError(
-          "The robot did not confirm the zero write, and reading them back shows the new values were not stored (the robot refuses a table it considers out of range).",
-        );
-      }
-      if (echo.some((v, i) => v !== written[i])) {
-        throw new RbcBadReplyError(
-          `The robot echoed different zeros (${echo.join(",")}); read them back to check.`,
-        );
-      }
-      const readBack = await this.#c.request(COMMANDS.readZeros, undefined);
-      if (readBack.some((v, i) => v !== written[i])) {
-        throw new RbcVerifyError(
-          `Zeros were sent, but the robot reads back ${readBack.join(",")} instead of ${written.join(",")}.`,
-          written,
-          readBack,
-        );
-      }
-      return { written, readBack };
-    });
+  writeZeros(zeros: readonly number[]): Promise<ZeroWriteResult> {
+    return writeZeros(this.#c, zeros);
   }
 
   /**
@@ -401,32 +340,12 @@ export class RbcClient {
    * client re-arms it after every other request until `unsubscribe()`.
    */
   subscribe(kind: SubscriptionKind, threshold = 0): Promise<void> {
-    const spec = SUBSCRIPTIONS[kind];
-    const contents =
-      kind === "sound"
-        ? COMMANDS.subscribeSound.request(threshold)
-        : kind === "buttons"
-          ? COMMANDS.subscribeButtons.request()
-          : COMMANDS.subscribeRemote.request();
-    const request = encodePacket(spec.type, contents);
-    return this.#c.exclusive(
-      async () => {
-        this.#c.requirePacketMode(spec.name);
-        this.#c.subscription = { kind, request };
-        this.#c.setState({ subscription: kind });
-        await this.#c.writePacket(request, spec.type);
-      },
-      undefined,
-      { rearm: false },
-    );
+    return subscribe(this.#c, kind, threshold);
   }
 
   /** Ends the subscription: the RBC stops when the next packet header arrives, so a harmless read is sent. */
-  async unsubscribe(): Promise<void> {
-    if (!this.#c.subscription) return;
-    this.#c.subscription = undefined;
-    this.#c.setState({ subscription: undefined });
-    await this.#c.command(COMMANDS.readErrorCode, undefined).catch(() => {});
+  unsubscribe(): Promise<void> {
+    return unsubscribe(this.#c);
   }
 
   // ---- Direct mode, Stop and Limp ----------------------------------------------------------------------------
