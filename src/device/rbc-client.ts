@@ -5,12 +5,12 @@ import { type IntelHexImage, parseIntelHex } from "../protocol/intel-hex.ts";
 import type { RbmMotion } from "../protocol/rbm.ts";
 import type { Clock } from "../shared/clock.ts";
 import type { Emitter } from "../shared/emitter.ts";
-import { Activity, type ActivitySnapshot, type DirectUse } from "./activity.ts";
-import type { ClientCore } from "./client-core.ts";
+import type { ActivitySnapshot, DirectUse } from "./activity.ts";
+import { type ClientCore, createClientCore } from "./client-core.ts";
 import { stoppableUpload } from "./client-uploads.ts";
 import { DirectMode } from "./direct-mode.ts";
 import { enterDirect, exitDirect } from "./direct-switch.ts";
-import { RbcBadReplyError, RbcCancelledError, RbcTimeoutError } from "./errors.ts";
+import { RbcBadReplyError, RbcTimeoutError } from "./errors.ts";
 import {
   connectionFirmwareIo,
   type FirmwareUpdateOptions,
@@ -30,14 +30,8 @@ import type { LinkTiming } from "./round-trip.ts";
 import { runSound } from "./sound.ts";
 import { runStop, type StopActivityResult } from "./stop.ts";
 import { subscribe, unsubscribe } from "./subscriptions.ts";
-import {
-  checkTetheredPlay,
-  runTetheredPlay,
-  stoppedBeforeStart,
-  TetheredPlayControl,
-  type TetheredPlayOptions,
-  type TetheredPlayResult,
-} from "./tethered-play.ts";
+import type { TetheredPlayOptions, TetheredPlayResult } from "./tethered-play.ts";
+import { playTethered } from "./tethered-play-client.ts";
 import type {
   ClientMode,
   ClientState,
@@ -75,23 +69,7 @@ export class RbcClient {
     const c = new RbcConnection(transport, options);
     this.#c = c;
     this.servos = new DirectMode(c, c.raw);
-    // The state mirrors the machine's motion and sound for the panel; a lost or closed link ends them.
-    const activity = new Activity(c.clock, ({ doing }) =>
-      c.setState({
-        playing:
-          doing.kind === "motion"
-            ? { motion: doing.motion, startedAt: doing.startedAt, expectedMs: doing.expectedMs }
-            : undefined,
-        sounding:
-          doing.kind === "sound"
-            ? { sound: doing.sound, startedAt: doing.startedAt, expectedMs: doing.expectedMs }
-            : undefined,
-      }),
-    );
-    c.stateChanges.on((state) => {
-      if (state.mode === "disconnected") activity.disconnected();
-    });
-    this.#core = { c, activity, servos: this.servos, plays: new Set() };
+    this.#core = createClientCore(c, this.servos);
   }
 
   // ---- The link ----------------------------------------------------------------------------------------
@@ -380,38 +358,7 @@ export class RbcClient {
    * got and what the servos hold.
    */
   playTethered(doc: Motion, options: TetheredPlayOptions = {}): Promise<TetheredPlayResult> {
-    try {
-      checkTetheredPlay(doc, options);
-    } catch (e) {
-      return Promise.reject(e);
-    }
-    const core = this.#core;
-    const control = new TetheredPlayControl(options.signal);
-    core.plays.add(control);
-    const host = {
-      c: this.#c,
-      enterDirect: () => enterDirect(core, "tethered-play"),
-      exitDirect: () => exitDirect(core),
-    };
-    return this.#c
-      .exclusive(async () => {
-        if (core.activity.direct) core.activity.handDirect("tethered-play");
-        try {
-          return await runTetheredPlay(host, doc, options, control);
-        } finally {
-          // The servos hold the last frame; direct mode stays for servo control.
-          if (core.activity.direct) core.activity.handDirect("servo-control");
-        }
-      })
-      .catch((e: unknown) => {
-        // Stopped while it waited for its turn: nothing was sent.
-        if (e instanceof RbcCancelledError && control.signal.aborted) return stoppedBeforeStart(doc);
-        throw e;
-      })
-      .finally(() => {
-        control.dispose();
-        core.plays.delete(control);
-      });
+    return playTethered(this.#core, doc, options);
   }
 
   /**
