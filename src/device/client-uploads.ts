@@ -24,22 +24,29 @@ export async function stoppableUpload<T>(
 /** The upload's turns on the link; each one after Stop or Limp aborted it is refused. */
 function uploadHost(core: ClientCore, abort: AbortController): UploadHost {
   const { c, activity } = core;
-  const turn = <T>(fn: () => Promise<T>): Promise<T> =>
-    c.exclusive(() => {
+  const turn = <T>(fn: () => Promise<T>, last = false): Promise<T> =>
+    c.exclusive(async () => {
       if (abort.signal.aborted) throw new RbcCancelledError();
       activity.startUpload(abort);
-      return fn();
+      try {
+        return await fn();
+      } finally {
+        // The download is the upload's last turn: it ends within it, so what is queued behind finds the robot idle.
+        if (last) activity.uploadEnded(abort);
+      }
     });
   return {
     resetMemoryPointer: (area) => turn(() => c.request(COMMANDS.resetMemoryPointer, area)),
     upload: (area, bytes, options) =>
-      turn(() =>
-        uploadFile(
-          { client: c, raw: c.raw, now: () => c.clock.now(), sleep: (ms: number) => c.sleep(ms) },
-          area,
-          bytes,
-          { ...options, signal: eitherSignal(options.signal, abort.signal) },
-        ),
+      turn(
+        () =>
+          uploadFile(
+            { client: c, raw: c.raw, now: () => c.clock.now(), sleep: (ms: number) => c.sleep(ms) },
+            area,
+            bytes,
+            { ...options, signal: eitherSignal(options.signal, abort.signal) },
+          ),
+        true,
       ),
   };
 }
