@@ -372,7 +372,7 @@ export class RbcClient {
    * - Tethered play (`playTethered`) stops after the frame on the wire; the servos hold that frame.
    * - Operations queued behind these are cancelled (`RbcCancelledError`); nothing is sent in their place.
    * Resolves with what was found and what the robot confirmed (see `StopActivityResult`). A Stop asked for
-   * while one is under way joins it.
+   * while one is under way joins it; during Limp it is refused (`ActivityRefusedError`, nothing sent).
    */
   stopActivity(): Promise<StopActivityResult> {
     const core = this.#core;
