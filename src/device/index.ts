@@ -1,3 +1,18 @@
+export {
+  ActivityRefusedError,
+  type ActivitySnapshot,
+  type ActivityTransition,
+  type BusyActivity,
+  type DirectActivity,
+  type DirectUse,
+  type Doing,
+  type Halt,
+  type IdleActivity,
+  type MotionActivity,
+  type SoundActivity,
+  type Stop7Sender,
+  type UploadActivity,
+} from "./activity.ts";
 export { DirectMode, SERVO_IDS } from "./direct-mode.ts";
 export { type ErrorTextOptions, errorText, technicalDetail, uploadOutcomeText } from "./error-text.ts";
 export * from "./errors.ts";
@@ -14,6 +29,7 @@ export {
   updateFirmware,
 } from "./firmware-update.ts";
 export { deviceErrorMessages } from "./messages.ts";
+export type { MotionEndOutcome } from "./motion-end.ts";
 export {
   type FileUploadOptions,
   type FileUploadResult,
@@ -23,6 +39,7 @@ export {
 } from "./motion-upload.ts";
 export { RbcUnexpectedAckError } from "./raw-channel.ts";
 export {
+  type LimpResult,
   RbcClient,
   type RbcClientOptions,
   type RbcTimeouts,

@@ -1,3 +1,9 @@
+/*
+ * Longer than the project's ~400 lines on purpose: one conversation (the waiter, the queue, the fences of late
+ * replies, the parser and the link's life) shares private state whose invariants hold only together; the
+ * operations on top of it live in their own files (motion-run.ts, stop.ts, limp.ts, …), its options in
+ * connection-options.ts.
+ */
 import { LinkError, type Transport, type TransportStatusEvent } from "../link/transport.ts";
 import { concatBytes } from "../protocol/bytes.ts";
 import { ABANDON_DOWNLOAD } from "../protocol/catalog.ts";
@@ -16,6 +22,12 @@ import { EXIT_DIRECT_MODE } from "../protocol/wck.ts";
 import { type Clock, realClock } from "../shared/clock.ts";
 import { Emitter } from "../shared/emitter.ts";
 import {
+  DEFAULT_TIMEOUTS,
+  type RbcClientOptions,
+  type RbcTimeouts,
+  type RequestOptions,
+} from "./connection-options.ts";
+import {
   RbcBadReplyError,
   RbcCancelledError,
   RbcDisconnectedError,
@@ -26,75 +38,11 @@ import {
   RbcTimeoutError,
 } from "./errors.ts";
 import { RawChannel } from "./raw-channel.ts";
-import { type LinkKind, type LinkTiming, RoundTripEstimator } from "./round-trip.ts";
+import { type LinkTiming, RoundTripEstimator } from "./round-trip.ts";
+
+export type { RbcClientOptions, RbcTimeouts, RequestOptions } from "./connection-options.ts";
+
 import type { ClientMode, ClientState, LogEntry, RbcEvent, SubscriptionKind } from "./types.ts";
-
-/**
- * The client's timeouts. As options they are the fixed values a wired (USB) link keeps; `RbcClient.timeouts`
- * reports the values in force, which grow with the measured round trip of a slower link (docs/bluetooth.md).
- */
-export interface RbcTimeouts {
-  /**
-   * A reply that comes "at once" (default 400 ms: USB adapters hold bytes up to 16 ms). As an option, the
-   * least quick timeout; in force, the larger of it and what the measured round trip asks for (`round-trip.ts`).
-   */
-  quickMs: number;
-  /** Added to a motion's or a sound's expected duration (default 2,000 ms; in force, plus the link's extra). */
-  marginMs: number;
-  /** How long to wait for a downloaded motion whose duration is not given (default 60,000 ms). */
-  unknownMotionMs: number;
-  /**
-   * How long to wait after connecting before the handshake, so stray bytes can drain (default 50 ms; in force,
-   * plus half the link's extra: bytes in flight take half a round trip).
-   */
-  settleMs: number;
-  /** The most a quick timeout may grow to, measured and backed off (default 5,000 ms). */
-  quickCeilingMs: number;
-  /**
-   * The quick timeout before anything is measured on a Bluetooth or unknown link (default 1,500 ms), so that the
-   * very first request over Bluetooth does not time out. A wired link starts at `quickMs`.
-   */
-  firstQuickMs: number;
-}
-
-export interface RbcClientOptions {
-  clock?: Clock;
-  timeouts?: Partial<RbcTimeouts>;
-  /** Extra tries for idempotent reads after a timeout or a garbled reply (default 2). */
-  retries?: number;
-  /**
-   * What carries the bytes (default `wired`): a `bluetooth` or `unknown` link starts with a generous quick
-   * timeout (`firstQuickMs`) until its round trip is measured.
-   */
-  link?: LinkKind;
-  /**
-   * Adapt the timeouts to the measured round trip (default true). False keeps every timeout at its fixed value,
-   * as before adaptation existed (a link slower than 400 ms then times out).
-   */
-  adaptiveTimeouts?: boolean;
-}
-
-const DEFAULT_TIMEOUTS: RbcTimeouts = {
-  quickMs: 400,
-  marginMs: 2000,
-  unknownMotionMs: 60_000,
-  settleMs: 50,
-  quickCeilingMs: 5000,
-  firstQuickMs: 1500,
-};
-
-/** How one request waits for its reply (see `RbcConnection.request`). */
-export interface RequestOptions {
-  /** For "motion" and "sound" rows: how long the robot takes, when the table cannot tell from the request. */
-  expectedMs?: number;
-  /** Overrides the table's timeout (ms). */
-  timeoutMs?: number;
-  /** Extra tries after a timeout or a garbled reply (default: the client's retries for idempotent rows, else 0). */
-  retries?: number;
-  signal?: AbortSignal;
-  /** Replies of the right type that this returns false for are ignored (e.g. a stopped motion's reply). */
-  accept?: (p: Packet) => boolean;
-}
 
 interface PacketWaiter {
   type: number;
@@ -139,7 +87,7 @@ export class RbcConnection {
   readonly raw: RawChannel;
   private waiter: PacketWaiter | undefined;
   private queue: Promise<unknown> = Promise.resolve();
-  /** Bumped by `stop()`: queued operations from an older epoch are cancelled. */
+  /** Bumped by Stop and Limp: queued operations from an older epoch are cancelled. */
   epoch = 0;
   private _state: ClientState = { mode: "disconnected", basicPostureConfirmed: false };
   subscription: { kind: SubscriptionKind; request: Uint8Array } | undefined;

@@ -209,13 +209,16 @@ describe("RbcClient against the simulated RBC", () => {
     expect(await run(client.readFirmwareVersion())).toEqual({ major: 2, minor: 23 });
   });
 
-  it("Limp makes every servo limp, even from normal mode (stop(), its old name, still does the same)", async () => {
+  it("Limp makes every servo limp, from normal mode and from direct servo control", async () => {
     const { client, run, sim } = await makeRig();
     const result = await run(client.limp());
     expect(result.confirmed).toEqual(Array.from({ length: 16 }, (_, i) => i));
     expect(sim.servos.slice(0, 16).every((s) => s.passive)).toBe(true);
     const again = await makeRig();
-    expect((await again.run(again.client.stop())).confirmed).toHaveLength(16);
+    await again.run(again.client.enterDirectMode());
+    expect(again.client.activity.doing).toMatchObject({ kind: "direct", use: "servo-control" });
+    expect((await again.run(again.client.limp())).confirmed).toHaveLength(16);
+    expect(again.client.activity.doing).toMatchObject({ kind: "direct", use: "limp" });
     expect(again.sim.servos.slice(0, 16).every((s) => s.passive)).toBe(true);
   });
 
@@ -372,9 +375,9 @@ describe("Limp pressed twice", () => {
     const { client, run, sim, clock } = await makeRig({ sim: { basicPostureDone: true } });
     const motion = client.runMotion(2).catch((e) => e);
     await clock.advance(300);
-    const first = client.stop();
+    const first = client.limp();
     await clock.advance(30);
-    const second = client.stop();
+    const second = client.limp();
     expect(second).toBe(first);
     const result = await run(second);
     expect(result.confirmed).toHaveLength(16);
@@ -389,7 +392,7 @@ describe("Limp while a sound plays", () => {
     const sound = client.runSound(8).catch((e) => e); // 5,916 ms
     await clock.advance(300);
     const t0 = clock.now();
-    const result = await run(client.stop());
+    const result = await run(client.limp());
     expect(result.confirmed).toHaveLength(16);
     expect(clock.now() - t0).toBeGreaterThanOrEqual(200 + 5916 - 300);
     expect(await sound).toMatchObject({ code: "cancelled" });

@@ -94,7 +94,7 @@ export async function startTeachIn(ctx: AppContext): Promise<void> {
           if (c.mode === "direct") await c.exitDirectMode();
           robotZeros = await c.readZeros().catch(() => undefined);
         }
-        await c.enterDirectMode();
+        await c.enterDirectMode("teach-in");
       },
       { packetMode: false },
     );

@@ -1,0 +1,40 @@
+import { Activity } from "./activity.ts";
+import type { DirectMode } from "./direct-mode.ts";
+import type { RbcConnection } from "./rbc-connection.ts";
+import type { TetheredPlayControl } from "./tethered-play.ts";
+
+/**
+ * What the operation modules behind `RbcClient` share (motion-run.ts, sound.ts, stop.ts, limp.ts,
+ * direct-switch.ts, client-uploads.ts): the conversation, the state machine of what the robot is doing, servo
+ * control, and the tethered plays under way. Internal to `device/`.
+ */
+export interface ClientCore {
+  readonly c: RbcConnection;
+  readonly activity: Activity;
+  readonly servos: DirectMode;
+  /** Tethered plays under way or queued, for Stop and Limp to end. */
+  readonly plays: Set<TetheredPlayControl>;
+}
+
+/**
+ * The core of a new client: the activity machine starts idle; the client state mirrors its motion and sound
+ * (`playing`, `sounding`, which the panel shows); a lost or closed link ends whatever was under way.
+ */
+export function createClientCore(c: RbcConnection, servos: DirectMode): ClientCore {
+  const activity = new Activity(c.clock, ({ doing }) =>
+    c.setState({
+      playing:
+        doing.kind === "motion"
+          ? { motion: doing.motion, startedAt: doing.startedAt, expectedMs: doing.expectedMs }
+          : undefined,
+      sounding:
+        doing.kind === "sound"
+          ? { sound: doing.sound, startedAt: doing.startedAt, expectedMs: doing.expectedMs }
+          : undefined,
+    }),
+  );
+  c.stateChanges.on((state) => {
+    if (state.mode === "disconnected") activity.disconnected();
+  });
+  return { c, activity, servos, plays: new Set() };
+}
