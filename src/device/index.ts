@@ -1,3 +1,5 @@
+/** The outcome catalogue's entries for the device's errors (src/i18n/outcomes), under their earlier name. */
+export { deviceOutcomeMessages as deviceErrorMessages } from "../i18n/outcomes/messages.ts";
 export { DirectMode, SERVO_IDS } from "./direct-mode.ts";
 export { type ErrorTextOptions, errorText, technicalDetail, uploadOutcomeText } from "./error-text.ts";
 export * from "./errors.ts";
@@ -13,7 +15,6 @@ export {
   transportFirmwareIo,
   updateFirmware,
 } from "./firmware-update.ts";
-export { deviceErrorMessages } from "./messages.ts";
 export {
   type FileUploadOptions,
   type FileUploadResult,
@@ -49,7 +50,5 @@ export {
   type SafeZeroWrite,
   type SaveZerosBackup,
   writeZerosWithBackup,
-  ZeroBackupError,
   type ZeroPolicyOptions,
-  ZeroWriteFailedError,
 } from "./zero-policy.ts";
