@@ -9,6 +9,7 @@ import {
   updateFirmware,
 } from "../../device/firmware-update.ts";
 import type { Locale } from "../../i18n/locale.ts";
+import { nothingSentText } from "../../i18n/outcomes/device.ts";
 import {
   firmwareFailureText,
   firmwareNoticeText as firmwareNotice,
@@ -26,7 +27,7 @@ import { connectRobot, openRobotPort, robotPlace } from "../connect.ts";
 import { CliError, EXIT, UsageError } from "../errors.ts";
 import { COMMAND_HELP } from "../help/command-help.ts";
 import type { Output } from "../output.ts";
-import { said, saidEach } from "../said.ts";
+import { said, saidBy, saidEach } from "../said.ts";
 import { unreadable } from "../zeros-files.ts";
 import { commandMessages } from "./messages.ts";
 
@@ -139,8 +140,7 @@ export const flashCommand: CommandDef = {
     if (file === undefined) throw new UsageError(said(commandMessages, "cmd.flash.noFile"), "flash");
     const locale = localeOf(env);
     const t = translator(commandMessages, locale);
-    const nothingSent = () =>
-      new CliError("interrupted", said(commandMessages, "cmd.nothingSent"), EXIT.interrupted);
+    const nothingSent = () => new CliError("interrupted", saidBy(nothingSentText), EXIT.interrupted);
     const image = await readHex(file);
     const name = basename(file);
     const summary = firmwareSummaryText(image.summary, locale);

@@ -8,7 +8,6 @@ import { defineMessages } from "../../i18n/catalogue.ts";
  */
 export const commandMessages = defineMessages({
   "cmd.warning": { en: "Warning: {warning}", ko: "경고: {warning}" },
-  "cmd.nothingSent": { en: "Nothing was sent.", ko: "아무것도 보내지 않았어요." },
   "cmd.interruptedBecause": { en: "interrupted: {what}", ko: "중단했어요. {what}" },
   "cmd.moreWarnings": {
     en: "… and {more} more warnings (--json lists them all).",
@@ -193,14 +192,6 @@ export const commandMessages = defineMessages({
   "cmd.upload.needsYes": {
     en: "{notice} Add --yes to upload anyway (nothing was sent).",
     ko: "{notice} 그래도 업로드하려면 --yes를 붙여 주세요 (아무것도 보내지 않았어요).",
-  },
-  "cmd.upload.experimental": {
-    en: "Uploading to a real robot is experimental: the motion image layout has not been verified on real RBC firmware.",
-    ko: "실제 로봇에 업로드하는 기능은 실험 단계예요. 모션 이미지의 배치가 실제 RBC 펌웨어에서 확인되지 않았어요.",
-  },
-  "cmd.upload.holdAdvice": {
-    en: "Run the uploaded motion first with the robot held or lying down, so that a wrong movement cannot make it fall.",
-    ko: "업로드한 모션은 처음에 로봇을 잡거나 눕힌 채로 실행해 주세요. 잘못 움직여도 쓰러지지 않도록요.",
   },
   "cmd.upload.noSerial": {
     en: "The robot does not report its serial number, so the file's robot check was skipped.",

@@ -123,3 +123,16 @@ export function zerosCancelledBeforeWriteText(file: string, locale: Locale): str
 export function zerosBackupKeptText(file: string, locale: Locale): string {
   return t(locale)("outcome.zerosBackupKept", { file });
 }
+
+/** The notices of an upload: before the first byte on a real robot, and the advice after. */
+export type UploadNotice = "experimental" | "holdAdvice" | "action";
+
+const UPLOAD_NOTICE = {
+  experimental: "outcome.upload.experimental",
+  holdAdvice: "outcome.upload.holdAdvice",
+  action: "outcome.upload.action",
+} as const satisfies Readonly<Record<UploadNotice, Key>>;
+
+export function uploadNoticeText(which: UploadNotice, locale: Locale): string {
+  return t(locale)(UPLOAD_NOTICE[which]);
+}
