@@ -4,9 +4,9 @@ import { defineMessages } from "../catalogue.ts";
  * The one catalogue of what the robot did: every outcome of a device operation (an error's code and facts, a
  * firmware update's result), worded once in English and Korean. The device layer's errors take their English
  * `message` from here; `rbc` and the panel show the same entries in the person's language and add only their
- * own framing (a flag to pass, a button to press). The functions beside this file (`device-errors.ts`,
- * `firmware.ts`) choose the entry from an outcome's code and fill in its facts. docs/i18n.md "Outcomes" says
- * how to add one.
+ * own framing (a flag to pass, a button to press). The functions beside this file (`device.ts`; a firmware
+ * update's in `firmware/`) choose the entry from an outcome's code and fill in its facts. docs/i18n.md
+ * "Outcomes" says how to add one.
  */
 
 /** The device's errors, by code, with the facts they carry (src/device/errors.ts). */
