@@ -1,6 +1,7 @@
 import { errorText } from "../device/error-text.ts";
 import { RbcError } from "../device/errors.ts";
 import type { Locale } from "../i18n/locale.ts";
+import { unexpectedText } from "../i18n/outcomes/device.ts";
 import { translator } from "../i18n/translate.ts";
 import { LinkError } from "../link/transport.ts";
 import { ProtocolError } from "../protocol/errors.ts";
@@ -104,7 +105,7 @@ export function errorLine(e: unknown, locale: Locale = "en", options: ErrorLineO
     .replace(/\s*\n\s*/g, " ")
     .trim();
   const t = translator(cliMessages, locale);
-  if (!text) return t("cli.error.unexpected");
+  if (!text) return unexpectedText(locale);
   if (errorCode(e) === "no-robot" && !(locale === "en" && /busy playing/i.test(text))) {
     // English goes on in the same sentence ("…; or the robot is busy …"); Korean says it in a sentence of its own.
     return locale === "en"

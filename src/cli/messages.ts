@@ -59,7 +59,6 @@ export const cliMessages = defineMessages({
     ko: "다시 중단해서 기다리지 않고 끝내요.",
   },
 
-  "cli.error.unexpected": { en: "Something unexpected went wrong.", ko: "예상하지 못한 문제가 생겼어요." },
   "cli.error.busy": {
     en: "or the robot is busy playing a motion or a sound: wait until it ends and try again.",
     ko: "로봇이 모션이나 소리를 재생하는 중일 수도 있어요. 끝날 때까지 기다렸다가 다시 시도해 주세요.",

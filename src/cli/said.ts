@@ -41,3 +41,8 @@ export function saidEach<M extends Catalogue, K extends keyof M & string>(
   const text = (locale: Locale) => translator(messages, locale)(key, ...params(locale));
   return Object.fromEntries(LOCALES.map((l) => [l, text(l)])) as Record<Locale, string>;
 }
+
+/** A sentence of the outcome catalogue (src/i18n/outcomes), from its words function, in every language. */
+export function saidBy(words: (locale: Locale) => string): Said {
+  return Object.fromEntries(LOCALES.map((l) => [l, words(l)])) as Record<Locale, string>;
+}

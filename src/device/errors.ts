@@ -1,6 +1,14 @@
+import {
+  codeText,
+  timeoutText,
+  zerosBackupFailedText,
+  zerosBackupKeptText,
+} from "../i18n/outcomes/device.ts";
+
 /**
- * Failures of RBC operations, as typed errors with a stable `code` and a message that says what happened and
- * what to do next.
+ * Failures of RBC operations, as typed errors with a stable `code`, the facts a person needs (fields), and a
+ * message that says what happened and what to do next. Fixed sentences come from the outcome catalogue
+ * (src/i18n/outcomes), which says the same outcome in Korean from the same code and facts.
  */
 
 export type RbcErrorCode =
@@ -38,16 +46,13 @@ export class RbcTimeoutError extends RbcError {
     readonly command: string,
     readonly waitedMs: number,
   ) {
-    super(
-      "timeout",
-      `The robot did not answer "${command}" within ${Math.round(waitedMs)} ms. Check that it is switched on and the cable is plugged in; the RBC also stays silent when it refuses a request.`,
-    );
+    super("timeout", timeoutText(command, waitedMs, "en"));
   }
 }
 
 export class RbcDisconnectedError extends RbcError {
   override name = "RbcDisconnectedError";
-  constructor(message = "The robot was disconnected. Check the cable, then connect again.", cause?: unknown) {
+  constructor(message = codeText("disconnected", "en"), cause?: unknown) {
     super("disconnected", message, { cause });
   }
 }
@@ -55,7 +60,7 @@ export class RbcDisconnectedError extends RbcError {
 export class RbcNotConnectedError extends RbcError {
   override name = "RbcNotConnectedError";
   constructor() {
-    super("not-connected", "No robot is connected. Connect the robot (or the demo robot) first.");
+    super("not-connected", codeText("not-connected", "en"));
   }
 }
 
@@ -95,7 +100,7 @@ export class RbcBadReplyError extends RbcError {
 
 export class RbcCancelledError extends RbcError {
   override name = "RbcCancelledError";
-  constructor(message = "Cancelled.") {
+  constructor(message = codeText("cancelled", "en")) {
     super("cancelled", message);
   }
 }
@@ -140,5 +145,36 @@ export class RbcUploadError extends RbcError {
     cause?: unknown,
   ) {
     super(code, message, { cause });
+  }
+}
+
+/**
+ * The backup of the current zeros could not be saved, so nothing was written (`writeZerosWithBackup`);
+ * `cause` says why.
+ */
+export class ZeroBackupError extends RbcError {
+  override name = "ZeroBackupError";
+  constructor(cause: unknown) {
+    super(
+      "backup-failed",
+      zerosBackupFailedText(cause instanceof Error ? cause.message : String(cause), "en"),
+      {
+        cause,
+      },
+    );
+  }
+}
+
+/**
+ * A zero write failed after the backup was saved: `reason` (also the `cause`) is the write's own error
+ * (verify-failed, rejected, timeout, disconnected, cancelled), `backupName` where the previous table is.
+ */
+export class ZeroWriteFailedError extends RbcError {
+  override name = "ZeroWriteFailedError";
+  constructor(
+    readonly reason: RbcError,
+    readonly backupName: string,
+  ) {
+    super(reason.code, `${reason.message} ${zerosBackupKeptText(backupName, "en")}`, { cause: reason });
   }
 }

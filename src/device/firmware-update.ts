@@ -1,6 +1,15 @@
+import {
+  type FirmwareFailureFacts,
+  type FirmwareNotice,
+  firmwareFailureText,
+  firmwareNoticeText,
+  firmwareResultText,
+  firmwareSummaryText,
+} from "../i18n/outcomes/firmware/firmware-words.ts";
 import type { Transport } from "../link/transport.ts";
 import {
   BootloaderDialogue,
+  type BootloaderError,
   type BootloaderFailure,
   type BootloaderWait,
   bootloaderError,
@@ -96,17 +105,28 @@ export interface FirmwareUpdateResult {
   linesPerSecond: number;
 }
 
-/** A failed or cancelled update: `failure` says what went wrong, `holds` what the robot's flash holds now. */
+/**
+ * A failed or cancelled update: `failure` says what went wrong, `holds` what the robot's flash holds now, with
+ * the facts (`line`, `waitedMs`, `tries`). Its message is the outcome catalogue's English
+ * (src/i18n/outcomes: `firmwareFailureText`), which `rbc flash` and the panel show in either language.
+ */
 export class FirmwareUpdateError extends RbcError {
   override name = "FirmwareUpdateError";
-  constructor(
-    readonly failure: BootloaderFailure,
-    readonly holds: RobotHolds,
-    message: string,
-    readonly line?: number,
-    cause?: unknown,
-  ) {
-    super(errorCodeOf(failure), message, { cause });
+  readonly failure: BootloaderFailure;
+  readonly holds: RobotHolds;
+  /** The file's line (1-based) the failure is about, when there is one. */
+  readonly line: number | undefined;
+  /** How long the update waited for the answer that did not come, when it waited. */
+  readonly waitedMs: number | undefined;
+  /** How many times the line was sent before a checksum failure gave up. */
+  readonly tries: number | undefined;
+  constructor(facts: FirmwareFailureFacts, cause?: unknown) {
+    super(errorCodeOf(facts.failure), firmwareFailureText(facts, "en"), { cause });
+    this.failure = facts.failure;
+    this.holds = facts.holds;
+    this.line = facts.line;
+    this.waitedMs = facts.waitedMs;
+    this.tries = facts.tries;
   }
 }
 
@@ -280,11 +300,9 @@ export async function updateFirmware(
   };
 }
 
-function fromDialogue(
-  e: { code: BootloaderFailure; holds: RobotHolds; message: string; line?: number },
-  cause?: unknown,
-) {
-  return new FirmwareUpdateError(e.code, e.holds, e.message, e.line, cause);
+function fromDialogue(e: BootloaderError, cause?: unknown) {
+  const { code: failure, holds, line, waitedMs, tries } = e;
+  return new FirmwareUpdateError({ failure, holds, line, waitedMs, tries }, cause);
 }
 
 function progressOf(dialogue: BootloaderDialogue, start: number | undefined, now: number) {
@@ -412,26 +430,20 @@ function runDialogue(
 }
 
 /**
- * What the panel and `rbc flash` say before a firmware update (docs/protocol.md §11 [decision]), in these words in
- * both places.
+ * What the panel and `rbc flash` say before a firmware update (docs/protocol.md §11 [decision]), in English (the
+ * outcome catalogue's words; `firmwareNoticeText` gives them in either language).
  */
-export const FIRMWARE_NOTICES = {
-  experimental:
-    "Updating the firmware is experimental on real robots: the bootloader dialogue follows RBCLoader (the Java loader) and has not been verified on a real RBC by this project.",
-  recovery:
-    "The bootloader itself is never written, so a failed or interrupted update is fixed by running the update again.",
-  keepPowered:
-    "Keep the robot powered (a charged battery or the adapter) and lying down, and the cable plugged in, until the update has finished.",
-  askPowerCycle: "Switch the robot off and on now; the update waits for its bootloader.",
-  demoRestarts: "The demo robot restarts by itself.",
-} as const;
-
-const count = (n: number) => n.toLocaleString("en-US");
-const address = (n: number) => `0x${n.toString(16).toUpperCase().padStart(5, "0")}`;
+export const FIRMWARE_NOTICES: Readonly<Record<FirmwareNotice, string>> = {
+  experimental: firmwareNoticeText("experimental", "en"),
+  recovery: firmwareNoticeText("recovery", "en"),
+  keepPowered: firmwareNoticeText("keepPowered", "en"),
+  askPowerCycle: firmwareNoticeText("askPowerCycle", "en"),
+  demoRestarts: firmwareNoticeText("demoRestarts", "en"),
+};
 
 /** "16,384 bytes at 0x00000-0x03FFF: 64 flash pages, 1,025 lines (46,137 bytes to send)". */
 export function firmwareFileSummary(summary: IntelHexImage["summary"]): string {
-  return `${count(summary.bytes)} bytes at ${address(summary.firstAddress)}-${address(summary.lastAddress)}: ${count(summary.pages)} flash ${summary.pages === 1 ? "page" : "pages"}, ${count(summary.lines)} lines (${count(summary.wireBytes)} bytes to send)`;
+  return firmwareSummaryText(summary, "en");
 }
 
 /**
@@ -442,10 +454,5 @@ export function firmwareResultSentence(
   result: FirmwareUpdateResult,
   before: { major: number; minor: number } | undefined,
 ): string {
-  const v = (f: { major: number; minor: number }) => `${f.major}.${String(f.minor).padStart(2, "0")}`;
-  const seconds = result.sendingMs / 1000;
-  const time = seconds >= 10 ? `${Math.round(seconds)} s` : `${seconds.toFixed(1)} s`;
-  const was = before ? ` (was ${v(before)})` : "";
-  const resent = result.resends > 0 ? ` ${count(result.resends)} resent after a checksum error.` : "";
-  return `Firmware updated: the robot now reports ${v(result.firmware)}${was}. ${count(result.lines)} lines in ${time}.${resent}`;
+  return firmwareResultText(result, before, "en");
 }

@@ -13,6 +13,8 @@ export {
   type Stop7Sender,
   type UploadActivity,
 } from "./activity.ts";
+/** The outcome catalogue's entries for the device's errors (src/i18n/outcomes), under their earlier name. */
+export { deviceOutcomeMessages as deviceErrorMessages } from "../i18n/outcomes/messages.ts";
 export { DirectMode, SERVO_IDS } from "./direct-mode.ts";
 export { type ErrorTextOptions, errorText, technicalDetail, uploadOutcomeText } from "./error-text.ts";
 export * from "./errors.ts";
@@ -28,7 +30,6 @@ export {
   transportFirmwareIo,
   updateFirmware,
 } from "./firmware-update.ts";
-export { deviceErrorMessages } from "./messages.ts";
 export type { MotionEndOutcome } from "./motion-end.ts";
 export {
   type FileUploadOptions,
@@ -66,7 +67,5 @@ export {
   type SafeZeroWrite,
   type SaveZerosBackup,
   writeZerosWithBackup,
-  ZeroBackupError,
   type ZeroPolicyOptions,
-  ZeroWriteFailedError,
 } from "./zero-policy.ts";

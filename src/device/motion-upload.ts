@@ -1,3 +1,4 @@
+import { type UploadNotice, uploadNoticeText } from "../i18n/outcomes/device.ts";
 import { downloadedMotionNumber } from "../protocol/catalog.ts";
 import type { MemoryArea } from "../protocol/commands.ts";
 import { motionImage } from "../protocol/motion-image.ts";
@@ -9,15 +10,13 @@ import type { UploadOptions, UploadResult } from "./types.ts";
 /**
  * What an upload says, in one place for the panel and the CLI (docs/protocol.md §6.3 [decision] Safety): on a real
  * robot the experimental sentence comes before the first byte, with a confirmation, and the hold advice after.
+ * English here; `uploadNoticeText` (src/i18n/outcomes) says them in either language.
  */
-export const UPLOAD_NOTICES = {
-  experimental:
-    "Uploading to a real robot is experimental: the motion image layout has not been verified on real RBC firmware.",
-  holdAdvice:
-    "Run the uploaded motion first with the robot held or lying down, so that a wrong movement cannot make it fall.",
-  action:
-    "No action file format is known: the file's bytes are sent as they are, unchecked, and the result on the robot is unverified.",
-} as const;
+export const UPLOAD_NOTICES: Readonly<Record<UploadNotice, string>> = {
+  experimental: uploadNoticeText("experimental", "en"),
+  holdAdvice: uploadNoticeText("holdAdvice", "en"),
+  action: uploadNoticeText("action", "en"),
+};
 
 export type UploadPhase = "resetting" | "checking" | "sending" | "verifying";
 

@@ -1,6 +1,13 @@
+import { zerosCancelledBeforeWriteText, zerosNotReadText } from "../i18n/outcomes/device.ts";
 import { zeroProblems } from "../protocol/zeros.ts";
 import { createZerosBackup, type ZerosBackup, zerosBackupFileName } from "../protocol/zeros-backup.ts";
-import { RbcCancelledError, RbcError, RbcInvalidArgumentError } from "./errors.ts";
+import {
+  RbcCancelledError,
+  RbcError,
+  RbcInvalidArgumentError,
+  ZeroBackupError,
+  ZeroWriteFailedError,
+} from "./errors.ts";
 import type { ZeroWriteResult } from "./types.ts";
 
 /**
@@ -40,33 +47,7 @@ export interface ZeroPolicyHost {
   writeZeros(zeros: readonly number[]): Promise<ZeroWriteResult>;
 }
 
-/** The backup of the current zeros could not be saved, so nothing was written; `cause` says why. */
-export class ZeroBackupError extends RbcError {
-  override name = "ZeroBackupError";
-  constructor(cause: unknown) {
-    super(
-      "backup-failed",
-      `Nothing was written: the backup of the current zeros could not be saved (${cause instanceof Error ? cause.message : String(cause)}).`,
-      { cause },
-    );
-  }
-}
-
-/**
- * The write failed after the backup was saved: `reason` (also the `cause`) is the write's own error (verify-failed, rejected,
- * timeout, disconnected, cancelled), `backupName` where the previous table is.
- */
-export class ZeroWriteFailedError extends RbcError {
-  override name = "ZeroWriteFailedError";
-  constructor(
-    readonly reason: RbcError,
-    readonly backupName: string,
-  ) {
-    super(reason.code, `${reason.message} The zeros the robot held before are saved in ${backupName}.`, {
-      cause: reason,
-    });
-  }
-}
+export { ZeroBackupError, ZeroWriteFailedError } from "./errors.ts";
 
 export async function writeZerosWithBackup(
   client: ZeroPolicyHost,
@@ -84,11 +65,7 @@ export async function writeZerosWithBackup(
     current = await client.readZeros();
   } catch (e) {
     if (!(e instanceof RbcError)) throw e;
-    throw new RbcError(
-      e.code,
-      `Nothing was written: the robot's current zeros could not be read for the backup. ${e.message}`,
-      { cause: e },
-    );
+    throw new RbcError(e.code, `${zerosNotReadText("en")} ${e.message}`, { cause: e });
   }
   if (target.length === current.length && current.every((v, i) => v === target[i])) {
     return { changed: false, current };
@@ -108,9 +85,7 @@ export async function writeZerosWithBackup(
     throw new ZeroBackupError(e);
   }
   if (options.signal?.aborted) {
-    throw new RbcCancelledError(
-      `Cancelled before the write: nothing was written (the backup ${backupName} was saved).`,
-    );
+    throw new RbcCancelledError(zerosCancelledBeforeWriteText(backupName, "en"));
   }
   options.onWrite?.();
   try {

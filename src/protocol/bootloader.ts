@@ -1,3 +1,4 @@
+import { firmwareFailureText } from "../i18n/outcomes/firmware/firmware-words.ts";
 import { ProtocolError } from "./errors.ts";
 
 /**
@@ -60,69 +61,37 @@ export type RobotHolds =
   /** The bootloader reported the whole file written without errors (`@`). */
   | "new-firmware";
 
-/** One sentence on what the robot holds, for the panel and the CLI (cancel, failure, result). */
-export function robotHoldsSentence(holds: RobotHolds): string {
-  switch (holds) {
-    case "previous-firmware":
-      return "Nothing was written: the robot still holds its previous firmware.";
-    case "incomplete-firmware":
-      return "The robot's firmware may now be incomplete, and the robot may not work until an update succeeds.";
-    case "new-firmware":
-      return "The bootloader reported the new firmware written without errors.";
-  }
-}
-
-/** What to do next, given what the robot holds. */
-export function recoverySentence(holds: RobotHolds): string {
-  return holds === "new-firmware"
-    ? "Switch the robot off and on; if it still does not answer, run the update again with a firmware file you trust (the bootloader is never overwritten)."
-    : "The bootloader is never overwritten: switch the robot off and on and run the update again.";
-}
-
 export class BootloaderError extends ProtocolError {
   override name = "BootloaderError";
+  /** How long the dialogue waited for the answer that did not come, when it waited. */
+  readonly waitedMs: number | undefined;
+  /** How many times the line was sent before a checksum failure gave up. */
+  readonly tries: number | undefined;
   constructor(
     override readonly code: BootloaderFailure,
     readonly holds: RobotHolds,
-    message: string,
     /** The file's line (1-based) the failure is about, when there is one. */
     readonly line?: number,
+    detail: { waitedMs?: number; tries?: number } = {},
   ) {
-    super(code, message);
+    const facts = { failure: code, holds, line, waitedMs: detail.waitedMs, tries: detail.tries };
+    super(code, firmwareFailureText(facts, "en"));
+    this.waitedMs = detail.waitedMs;
+    this.tries = detail.tries;
   }
 }
 
-/** Builds the error for a failure: what happened, what the robot holds, what to do. */
+/** Builds the error for a failure (its message says what happened, what the robot holds, what to do). */
 export function bootloaderError(
   code: BootloaderFailure,
   holds: RobotHolds,
   detail: { line?: number; waitedMs?: number } = {},
 ): BootloaderError {
-  const at = detail.line !== undefined ? ` (line ${detail.line} of the file)` : "";
-  const waited = detail.waitedMs !== undefined ? ` within ${formatSeconds(detail.waitedMs)}` : "";
-  const what: Record<BootloaderFailure, string> = {
-    "no-bootloader": `The robot's bootloader did not announce itself${waited} after the robot was to be switched off and on.`,
-    "not-ready": "The robot's bootloader did not answer the request to take a new firmware.",
-    checksum: `The bootloader reported a checksum error on a line${at} ${MAX_LINE_RESENDS + 1} times in a row; the link is garbling data.`,
-    "page-error": `The bootloader could not write a flash page${at}.`,
-    "completed-with-errors": "The bootloader reached the end of the file but reported errors.",
-    "early-complete": `The bootloader reported the file complete before its last line was sent${at}.`,
-    "no-status": `The bootloader did not answer a line${at}${waited}.`,
-    stalled: `The bootloader asked to pause${at} and did not ask to go on${waited}.`,
-    restarted: `The robot restarted in the middle of the update${at}.`,
-    cancelled: "The firmware update was cancelled.",
-    disconnected: "The connection to the robot was lost during the firmware update.",
-    "no-answer": `The robot does not answer after the update${waited}.`,
-  };
-  const todo =
-    code === "no-bootloader"
-      ? "Switch the robot off, then on again while the update waits for it, and run the update again; keep the cable plugged in."
-      : recoverySentence(holds);
-  return new BootloaderError(code, holds, `${what[code]} ${robotHoldsSentence(holds)} ${todo}`, detail.line);
-}
-
-function formatSeconds(ms: number): string {
-  return ms >= 1000 ? `${(ms / 1000).toFixed(ms % 1000 === 0 ? 0 : 1)} s` : `${Math.round(ms)} ms`;
+  const tries = code === "checksum" ? MAX_LINE_RESENDS + 1 : undefined;
+  return new BootloaderError(code, holds, detail.line, {
+    ...(detail.waitedMs === undefined ? {} : { waitedMs: detail.waitedMs }),
+    ...(tries === undefined ? {} : { tries }),
+  });
 }
 
 /** A line as the bootloader gets it: its ASCII text followed by CR LF. */

@@ -146,10 +146,10 @@ describe("Firmware view on the demo robot", () => {
       "Cancel now and the robot's firmware may be incomplete",
     );
     await page.getByTestId("flash-cancel").click();
-    const result = page.getByTestId("flash-result").getByText(/Update cancelled/);
+    const result = page.getByTestId("flash-result").getByText(/The firmware update was cancelled/);
     await result.waitFor({ timeout: 20_000 });
     expect(squash(await result.textContent())).toBe(
-      "Update cancelled. The firmware update was cancelled. The robot's firmware may now be incomplete, and the robot may not work until an update succeeds. The bootloader is never overwritten: switch the robot off and on and run the update again.",
+      "The firmware update was cancelled. The robot's firmware may now be incomplete, and the robot may not work until an update succeeds. The bootloader is never overwritten: switch the robot off and on and run the update again.",
     );
     expect(await page.getByTestId("flash-progress").count()).toBe(0);
     expect(await page.getByTestId("fw-version").textContent().then(squash)).toBe("2.23");

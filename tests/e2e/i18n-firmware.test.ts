@@ -4,19 +4,10 @@
  * catalogue key shown, no button label overflowing and nothing scrolling sideways; axe finds no violation. The
  * device's words are Korean too: a refused file names its line, a cancelled update says what the robot holds,
  * and the device's English sentence stays in the technical detail. Recover (no robot connected) in Korean.
- * Last, the English catalogue says the device's notices and result sentence word for word (`rbc flash` says
- * them too). With RBC_SHOTS=<dir>, screenshots go there.
+ * With RBC_SHOTS=<dir>, screenshots go there.
  */
 import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
-import {
-  FIRMWARE_NOTICES,
-  type FirmwareUpdateResult,
-  firmwareResultSentence,
-} from "../../src/device/firmware-update.ts";
-import { translator } from "../../src/i18n/translate.ts";
-import { firmwareMessages } from "../../src/ui/features/firmware/messages.ts";
-import { resultSentence } from "../../src/ui/features/firmware/update-outcome.ts";
 import { firmwareHex } from "../support/hex.ts";
 import { squash, watchPage } from "./harness.ts";
 import {
@@ -182,8 +173,8 @@ describe("the Firmware view in Korean", () => {
     const result = page.getByTestId("flash-result").locator(".notice");
     await result.getByText(/업데이트를 취소했어요/).waitFor({ timeout: 20_000 });
     expect(squash(await result.locator("p").textContent())).toBe(
-      "업데이트를 취소했어요. 로봇의 펌웨어가 불완전할 수 있고, 업데이트가 성공할 때까지 로봇이 작동하지 않을 수 있어요. " +
-        "부트로더는 절대 덮어쓰지 않아요. 로봇을 껐다가 켜고 업데이트를 다시 해 주세요.",
+      "펌웨어 업데이트를 취소했어요. 로봇의 펌웨어가 불완전할 수 있고, 업데이트가 성공할 때까지 로봇이 작동하지 않을 수 있어요. " +
+        "부트로더는 절대 덮어쓰지 않아요. 로봇을 껐다가 다시 켜고 업데이트를 다시 해 주세요.",
     );
     expect(squash(await result.locator("pre").textContent())).toBe(
       "FirmwareUpdateError (cancelled): The firmware update was cancelled. The robot's firmware may now be incomplete, and the robot may not work until an update succeeds. The bootloader is never overwritten: switch the robot off and on and run the update again.",
@@ -256,46 +247,5 @@ describe("the Firmware view in Korean", () => {
       .waitFor({ timeout: 40_000 });
     await expectPageOk(page, "the result", { lang: "ko" });
     await context.close();
-  });
-});
-
-describe("the Firmware view's English", () => {
-  const en = translator(firmwareMessages, "en");
-
-  it("says the device's notices word for word, as rbc flash does", () => {
-    expect(en("firmware.notice.experimental")).toBe(FIRMWARE_NOTICES.experimental);
-    expect(en("firmware.notice.recovery")).toBe(FIRMWARE_NOTICES.recovery);
-    expect(en("firmware.notice.keepPowered")).toBe(FIRMWARE_NOTICES.keepPowered);
-    expect(en("firmware.notice.demoRestarts")).toBe(FIRMWARE_NOTICES.demoRestarts);
-  });
-
-  it("says the result as the device's sentence does, and in Korean with Korean units", () => {
-    const result = (sendingMs: number, resends: number): FirmwareUpdateResult => ({
-      firmware: { major: 2, minor: 50 },
-      lines: 4097,
-      bytes: 184_333,
-      resends,
-      sendingMs,
-      bytesPerSecond: 0,
-      linesPerSecond: 0,
-    });
-    const cases = [
-      [result(83_400, 0), { major: 2, minor: 23 }],
-      [result(4_060, 0), { major: 2, minor: 23 }],
-      [result(9_960, 2), undefined],
-      [result(12_500, 1), { major: 2, minor: 5 }],
-    ] as const;
-    for (const [r, before] of cases)
-      expect(resultSentence(en, r, before)).toBe(firmwareResultSentence(r, before));
-    expect(resultSentence(en, result(83_400, 0), { major: 2, minor: 23 })).toBe(
-      "Firmware updated: the robot now reports 2.50 (was 2.23). 4,097 lines in 83 s.",
-    );
-    const ko = translator(firmwareMessages, "ko");
-    expect(resultSentence(ko, result(4_060, 2), { major: 2, minor: 23 })).toBe(
-      "펌웨어를 업데이트했어요. 로봇이 알려 준 버전: 2.50 (이전: 2.23). 4.1초 동안 4,097줄을 썼어요. 체크섬 오류로 2줄을 다시 보냈어요.",
-    );
-    expect(resultSentence(ko, result(12_500, 0), undefined)).toBe(
-      "펌웨어를 업데이트했어요. 로봇이 알려 준 버전: 2.50. 13초 동안 4,097줄을 썼어요.",
-    );
   });
 });

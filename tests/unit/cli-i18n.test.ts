@@ -72,9 +72,11 @@ describe("the language rbc speaks", () => {
 describe("the device's errors on the command line", () => {
   it("keep their English sentence in English and are said from their code in Korean, pointing to --log", () => {
     const timeout = new RbcTimeoutError("Read error code", 400);
-    expect(errorLine(timeout)).toBe(timeout.message);
+    expect(errorLine(timeout)).toBe(
+      'The robot did not answer "Read error code" within 400 ms. Check that it is switched on and the cable is plugged in; the RBC also stays silent when it refuses a request.',
+    );
     expect(errorLine(timeout, "ko")).toBe(
-      "로봇이 400ms 안에 응답하지 않았어요. 로봇이 켜져 있는지, 케이블이 꽂혀 있는지 확인해 주세요. RBC는 요청을 거부할 때도 응답하지 않아요.",
+      '로봇이 400ms 안에 "Read error code"에 응답하지 않았어요. 로봇이 켜져 있는지, 케이블이 꽂혀 있는지 확인해 주세요. RBC는 요청을 거부할 때도 응답하지 않아요.',
     );
     const rejected = new RbcError("rejected", "The robot refused 0x0D.");
     expect(errorLine(rejected, "ko")).toBe(

@@ -355,9 +355,11 @@ describe("the device's errors", () => {
   const timeout = new RbcTimeoutError("read error code", 400);
 
   it("are the device's own sentence in English, and a Korean sentence from the code in Korean", () => {
-    expect(errorMessage(timeout)).toBe(timeout.message);
+    expect(errorMessage(timeout)).toBe(
+      'The robot did not answer "read error code" within 400 ms. Check that it is switched on and the cable is plugged in; the RBC also stays silent when it refuses a request.',
+    );
     expect(errorMessage(timeout, "ko")).toBe(
-      "로봇이 400ms 안에 응답하지 않았어요. 로봇이 켜져 있는지, 케이블이 꽂혀 있는지 확인해 주세요. RBC는 요청을 거부할 때도 응답하지 않아요.",
+      '로봇이 400ms 안에 "read error code"에 응답하지 않았어요. 로봇이 켜져 있는지, 케이블이 꽂혀 있는지 확인해 주세요. RBC는 요청을 거부할 때도 응답하지 않아요.',
     );
     expect(errorMessage(new LinkError("port-busy", "The port is in use by another program."), "ko")).toBe(
       "다른 프로그램(또는 다른 탭)이 이 포트를 쓰고 있어요. 그 프로그램을 닫고 다시 연결해 주세요.",
@@ -383,7 +385,7 @@ describe("the device's errors", () => {
     );
     expect(errorMessage(interrupted, "ko")).toBe(
       "로봇과의 연결이 끊겼어요. 케이블을 확인한 뒤 다시 연결해 주세요. 로봇이 640바이트 중 128바이트를 받았다고 확인했어요. " +
-        "로봇이 아직 파일의 나머지를 기다리고 있고, 아무것도 기록하지 않았을 거예요. 다음 업로드 전에 로봇을 껐다 켜 주세요.",
+        "로봇이 아직 파일의 나머지를 기다리고 있고, 아무것도 기록하지 않았을 거예요. 다음 업로드 전에 로봇을 껐다가 다시 켜 주세요.",
     );
     const nothing = new RbcUploadError("upload-failed", "…", 640, 640, "nothing-recorded");
     expect(errorMessage(nothing, "ko")).toBe(

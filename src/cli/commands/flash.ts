@@ -5,12 +5,18 @@ import {
   type FirmwareUpdateOptions,
   type FirmwareUpdateProgress,
   type FirmwareUpdateResult,
-  firmwareFileSummary,
-  firmwareResultSentence,
   transportFirmwareIo,
   updateFirmware,
 } from "../../device/firmware-update.ts";
 import type { Locale } from "../../i18n/locale.ts";
+import { nothingSentText } from "../../i18n/outcomes/device.ts";
+import {
+  firmwareFailureText,
+  firmwareNoticeText as firmwareNotice,
+  firmwareResultText,
+  firmwareSummaryText,
+  hexProblemText,
+} from "../../i18n/outcomes/firmware/firmware-words.ts";
 import { formatNumber, translator } from "../../i18n/translate.ts";
 import { IntelHexError, type IntelHexImage, parseIntelHex } from "../../protocol/intel-hex.ts";
 import { formatFirmware } from "../../shared/format.ts";
@@ -21,15 +27,8 @@ import { connectRobot, openRobotPort, robotPlace } from "../connect.ts";
 import { CliError, EXIT, UsageError } from "../errors.ts";
 import { COMMAND_HELP } from "../help/command-help.ts";
 import type { Output } from "../output.ts";
-import { said, saidEach } from "../said.ts";
+import { said, saidBy, saidEach } from "../said.ts";
 import { unreadable } from "../zeros-files.ts";
-import {
-  fileSummaryText,
-  firmwareFailureText,
-  firmwareNotice,
-  firmwareResultText,
-  hexProblemText,
-} from "./flash-words.ts";
 import { commandMessages } from "./messages.ts";
 
 const OPTIONS = {
@@ -141,12 +140,10 @@ export const flashCommand: CommandDef = {
     if (file === undefined) throw new UsageError(said(commandMessages, "cmd.flash.noFile"), "flash");
     const locale = localeOf(env);
     const t = translator(commandMessages, locale);
-    const nothingSent = () =>
-      new CliError("interrupted", said(commandMessages, "cmd.nothingSent"), EXIT.interrupted);
+    const nothingSent = () => new CliError("interrupted", saidBy(nothingSentText), EXIT.interrupted);
     const image = await readHex(file);
     const name = basename(file);
-    const summary =
-      locale === "en" ? firmwareFileSummary(image.summary) : fileSummaryText(image.summary, locale);
+    const summary = firmwareSummaryText(image.summary, locale);
     env.out.line(`${name}: ${summary}.`);
     const real = !values.demo;
     if (real && !values.yes && !env.stdin.isTTY) {
@@ -232,7 +229,7 @@ export const flashCommand: CommandDef = {
       if (e instanceof FirmwareUpdateError) {
         const details = { failure: e.failure, holds: e.holds, line: e.line ?? null, file };
         if (e.failure === "cancelled") {
-          const what = locale === "en" ? e.message : firmwareFailureText(e, locale);
+          const what = firmwareFailureText(e, locale);
           env.out.note(`rbc: ${t("cmd.flash.interrupted", { what })}`);
           env.out.result({ ok: false, error: { code: "interrupted", message: e.message, ...details } });
           return EXIT.interrupted;
@@ -260,9 +257,7 @@ export const flashCommand: CommandDef = {
       linesPerSecond: Math.round(result.linesPerSecond),
     });
     const n = (v: number) => Math.round(v);
-    env.out.line(
-      locale === "en" ? firmwareResultSentence(result, before) : firmwareResultText(result, before, locale),
-    );
+    env.out.line(firmwareResultText(result, before, locale));
     env.out.line(
       t("cmd.flash.sent", {
         bytes: n(result.bytes),

@@ -1,3 +1,4 @@
+import { nothingSentText } from "../../i18n/outcomes/device.ts";
 import { translator } from "../../i18n/translate.ts";
 import { noExtraArguments, parseCommand } from "../args.ts";
 import { type CommandDef, localeOf } from "../command.ts";
@@ -5,7 +6,7 @@ import { confirm } from "../confirm.ts";
 import { connectRobot, robotPlace } from "../connect.ts";
 import { CliError, EXIT } from "../errors.ts";
 import { COMMAND_HELP } from "../help/command-help.ts";
-import { said } from "../said.ts";
+import { said, saidBy } from "../said.ts";
 import { commandMessages } from "./messages.ts";
 
 const OPTIONS = { yes: { type: "boolean", short: "y" } } as const;
@@ -29,7 +30,7 @@ export const limpCommand: CommandDef = {
       env.out.note(t("cmd.limp.warning"));
       const answer = await confirm(env, t("cmd.limp.question", { robot: robotPlace(robot, locale) }));
       if (answer === "interrupted") {
-        throw new CliError("interrupted", said(commandMessages, "cmd.nothingSent"), EXIT.interrupted);
+        throw new CliError("interrupted", saidBy(nothingSentText), EXIT.interrupted);
       }
       if (answer === "no")
         throw new CliError("not-confirmed", said(commandMessages, "cmd.limp.notConfirmed"));

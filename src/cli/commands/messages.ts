@@ -8,7 +8,6 @@ import { defineMessages } from "../../i18n/catalogue.ts";
  */
 export const commandMessages = defineMessages({
   "cmd.warning": { en: "Warning: {warning}", ko: "경고: {warning}" },
-  "cmd.nothingSent": { en: "Nothing was sent.", ko: "아무것도 보내지 않았어요." },
   "cmd.interruptedBecause": { en: "interrupted: {what}", ko: "중단했어요. {what}" },
   "cmd.moreWarnings": {
     en: "… and {more} more warnings (--json lists them all).",
@@ -193,14 +192,6 @@ export const commandMessages = defineMessages({
   "cmd.upload.needsYes": {
     en: "{notice} Add --yes to upload anyway (nothing was sent).",
     ko: "{notice} 그래도 업로드하려면 --yes를 붙여 주세요 (아무것도 보내지 않았어요).",
-  },
-  "cmd.upload.experimental": {
-    en: "Uploading to a real robot is experimental: the motion image layout has not been verified on real RBC firmware.",
-    ko: "실제 로봇에 업로드하는 기능은 실험 단계예요. 모션 이미지의 배치가 실제 RBC 펌웨어에서 확인되지 않았어요.",
-  },
-  "cmd.upload.holdAdvice": {
-    en: "Run the uploaded motion first with the robot held or lying down, so that a wrong movement cannot make it fall.",
-    ko: "업로드한 모션은 처음에 로봇을 잡거나 눕힌 채로 실행해 주세요. 잘못 움직여도 쓰러지지 않도록요.",
   },
   "cmd.upload.noSerial": {
     en: "The robot does not report its serial number, so the file's robot check was skipped.",
@@ -447,166 +438,6 @@ export const commandMessages = defineMessages({
   "cmd.flash.leftPaused": { en: "{seconds} s left (page write)", ko: "{seconds}초 남음 (페이지 쓰는 중)" },
   "cmd.flash.lines": { en: "{done}/{total} lines", ko: "{done}/{total}줄" },
   "cmd.flash.bytes": { en: "{done}/{total} bytes", ko: "{done}/{total}바이트" },
-  "cmd.flash.notice.experimental": {
-    en: "Updating the firmware is experimental on real robots: the bootloader dialogue follows RBCLoader (the Java loader) and has not been verified on a real RBC by this project.",
-    ko: "실제 로봇의 펌웨어 업데이트는 실험 단계예요. 부트로더와 주고받는 방식은 RBCLoader(Java 로더)를 따랐고, 이 프로젝트가 실제 RBC에서 확인하지는 않았어요.",
-  },
-  "cmd.flash.notice.recovery": {
-    en: "The bootloader itself is never written, so a failed or interrupted update is fixed by running the update again.",
-    ko: "부트로더 자체는 절대 덮어쓰지 않으므로, 업데이트가 실패하거나 중단돼도 다시 실행하면 고칠 수 있어요.",
-  },
-  "cmd.flash.notice.keepPowered": {
-    en: "Keep the robot powered (a charged battery or the adapter) and lying down, and the cable plugged in, until the update has finished.",
-    ko: "업데이트가 끝날 때까지 로봇의 전원(충전된 배터리나 어댑터)을 유지하고, 로봇을 눕혀 두고, 케이블을 꽂아 두세요.",
-  },
-  "cmd.flash.notice.askPowerCycle": {
-    en: "Switch the robot off and on now; the update waits for its bootloader.",
-    ko: "지금 로봇을 껐다 켜 주세요. 업데이트는 부트로더를 기다려요.",
-  },
-  "cmd.flash.notice.demoRestarts": {
-    en: "The demo robot restarts by itself.",
-    ko: "데모 로봇은 스스로 다시 켜져요.",
-  },
-  "cmd.flash.summary": {
-    en: "{bytes} bytes at {first}-{last}: {pages} flash pages, {lines} lines ({wire} bytes to send)",
-    ko: "{bytes}바이트, 주소 {first}-{last}: 플래시 페이지 {pages}개, {lines}줄 (보낼 데이터 {wire}바이트)",
-  },
-  "cmd.flash.result": {
-    en: "Firmware updated: the robot now reports {version}. {lines} lines in {seconds} s.",
-    ko: "펌웨어를 업데이트했어요. 이제 로봇의 펌웨어는 {version}이에요. {lines}줄, {seconds}초 걸렸어요.",
-  },
-  "cmd.flash.resultWas": {
-    en: "Firmware updated: the robot now reports {version} (was {before}). {lines} lines in {seconds} s.",
-    ko: "펌웨어를 업데이트했어요. 이제 로봇의 펌웨어는 {version}이에요 (전에는 {before}). {lines}줄, {seconds}초 걸렸어요.",
-  },
-  "cmd.flash.resent": {
-    en: { one: "{count} resent after a checksum error.", other: "{count} resent after a checksum error." },
-    ko: "체크섬 오류로 {count}줄을 다시 보냈어요.",
-  },
-  "cmd.flash.atLine": { en: "(line {line} of the file)", ko: "(파일의 {line}번째 줄)" },
-  "cmd.flash.failure.noBootloader": {
-    en: "The robot's bootloader did not announce itself after the robot was to be switched off and on.",
-    ko: "로봇을 껐다 켠 뒤에 부트로더가 신호를 보내지 않았어요.",
-  },
-  "cmd.flash.failure.notReady": {
-    en: "The robot's bootloader did not answer the request to take a new firmware.",
-    ko: "로봇의 부트로더가 새 펌웨어를 받으라는 요청에 응답하지 않았어요.",
-  },
-  "cmd.flash.failure.checksum": {
-    en: "The bootloader reported a checksum error on a line several times in a row; the link is garbling data.",
-    ko: "부트로더가 한 줄에서 체크섬 오류를 여러 번 잇달아 알려 왔어요. 연결에서 데이터가 깨지고 있어요.",
-  },
-  "cmd.flash.failure.pageError": {
-    en: "The bootloader could not write a flash page.",
-    ko: "부트로더가 플래시 페이지를 쓰지 못했어요.",
-  },
-  "cmd.flash.failure.completedWithErrors": {
-    en: "The bootloader reached the end of the file but reported errors.",
-    ko: "부트로더가 파일 끝까지 받았지만 오류를 알려 왔어요.",
-  },
-  "cmd.flash.failure.earlyComplete": {
-    en: "The bootloader reported the file complete before its last line was sent.",
-    ko: "마지막 줄을 보내기 전에 부트로더가 파일을 다 받았다고 알려 왔어요.",
-  },
-  "cmd.flash.failure.noStatus": {
-    en: "The bootloader did not answer a line.",
-    ko: "부트로더가 한 줄에 응답하지 않았어요.",
-  },
-  "cmd.flash.failure.stalled": {
-    en: "The bootloader asked to pause and did not ask to go on.",
-    ko: "부트로더가 잠시 멈추라고 한 뒤 다시 계속하라고 하지 않았어요.",
-  },
-  "cmd.flash.failure.restarted": {
-    en: "The robot restarted in the middle of the update.",
-    ko: "업데이트 도중에 로봇이 다시 켜졌어요.",
-  },
-  "cmd.flash.failure.cancelled": {
-    en: "The firmware update was cancelled.",
-    ko: "펌웨어 업데이트를 취소했어요.",
-  },
-  "cmd.flash.failure.disconnected": {
-    en: "The connection to the robot was lost during the firmware update.",
-    ko: "펌웨어 업데이트 중에 로봇과의 연결이 끊겼어요.",
-  },
-  "cmd.flash.failure.noAnswer": {
-    en: "The robot does not answer after the update.",
-    ko: "업데이트 뒤에 로봇이 응답하지 않아요.",
-  },
-  "cmd.flash.holds.previous": {
-    en: "Nothing was written: the robot still holds its previous firmware.",
-    ko: "아무것도 쓰지 않았어요. 로봇에는 이전 펌웨어가 그대로 있어요.",
-  },
-  "cmd.flash.holds.incomplete": {
-    en: "The robot's firmware may now be incomplete, and the robot may not work until an update succeeds.",
-    ko: "로봇의 펌웨어가 지금 불완전할 수 있고, 업데이트가 성공할 때까지 로봇이 동작하지 않을 수 있어요.",
-  },
-  "cmd.flash.holds.new": {
-    en: "The bootloader reported the new firmware written without errors.",
-    ko: "부트로더는 새 펌웨어를 오류 없이 썼다고 알려 왔어요.",
-  },
-  "cmd.flash.todo.powerCycle": {
-    en: "Switch the robot off, then on again while the update waits for it, and run the update again; keep the cable plugged in.",
-    ko: "로봇을 끈 뒤, 업데이트가 기다리는 동안 다시 켜 주세요. 그리고 업데이트를 다시 실행해 주세요. 케이블은 꽂아 두세요.",
-  },
-  "cmd.flash.todo.afterNew": {
-    en: "Switch the robot off and on; if it still does not answer, run the update again with a firmware file you trust (the bootloader is never overwritten).",
-    ko: "로봇을 껐다 켜 주세요. 그래도 응답하지 않으면 믿을 수 있는 펌웨어 파일로 업데이트를 다시 실행해 주세요 (부트로더는 절대 덮어쓰지 않아요).",
-  },
-  "cmd.flash.todo.again": {
-    en: "The bootloader is never overwritten: switch the robot off and on and run the update again.",
-    ko: "부트로더는 절대 덮어쓰지 않아요. 로봇을 껐다 켜고 업데이트를 다시 실행해 주세요.",
-  },
-  "cmd.flash.hex.onLine": { en: "Line {line}: {problem}", ko: "{line}번째 줄: {problem}" },
-  "cmd.flash.hex.tooLarge": {
-    en: "The file is far too long for the RBC's flash; it is not an RBC firmware file.",
-    ko: "파일이 RBC의 플래시에 비해 너무 길어요. RBC 펌웨어 파일이 아니에요.",
-  },
-  "cmd.flash.hex.noRecords": {
-    en: "The file holds no data records: there is nothing to write.",
-    ko: "파일에 데이터 레코드가 없어요. 쓸 것이 없어요.",
-  },
-  "cmd.flash.hex.noColon": { en: "a record starts with ':'.", ko: "레코드는 ':'로 시작해야 해요." },
-  "cmd.flash.hex.notHex": {
-    en: "a record is ':' followed by pairs of hex digits (at least 5 bytes).",
-    ko: "레코드는 ':' 다음에 16진수 두 자리씩(5바이트 이상) 이어져야 해요.",
-  },
-  "cmd.flash.hex.lengthMismatch": {
-    en: "the record holds another number of data bytes than it says.",
-    ko: "레코드에 적힌 데이터 바이트 수와 실제 수가 달라요.",
-  },
-  "cmd.flash.hex.checksum": { en: "the record's checksum is wrong.", ko: "레코드의 체크섬이 틀려요." },
-  "cmd.flash.hex.recordType": {
-    en: "the record type is not accepted: the RBC bootloader takes only types 00, 01, 02 and 04.",
-    ko: "받을 수 없는 레코드 종류예요. RBC 부트로더는 00, 01, 02, 04 종류만 받아요.",
-  },
-  "cmd.flash.hex.badRecord": {
-    en: "the record is not in the form its type needs.",
-    ko: "레코드가 그 종류에 맞는 형식이 아니에요.",
-  },
-  "cmd.flash.hex.crosses64k": {
-    en: "the record runs past the end of its 64 KiB segment.",
-    ko: "레코드가 64KiB 구간의 끝을 넘어가요.",
-  },
-  "cmd.flash.hex.outsideFlash": {
-    en: "the record writes outside the ATmega128's 128 KiB of flash (0x00000-0x1FFFF).",
-    ko: "레코드가 ATmega128의 128KiB 플래시(0x00000-0x1FFFF) 밖에 써요.",
-  },
-  "cmd.flash.hex.bootSection": {
-    en: "the record writes inside the boot section (from 0x1E000) where the bootloader lives. A firmware for the RBC must end below 0x1E000.",
-    ko: "레코드가 부트로더가 있는 부트 영역(0x1E000부터) 안에 써요. RBC 펌웨어는 0x1E000 아래에서 끝나야 해요.",
-  },
-  "cmd.flash.hex.overlap": {
-    en: "the record writes an address an earlier line wrote.",
-    ko: "레코드가 앞의 줄에서 이미 쓴 주소에 다시 써요.",
-  },
-  "cmd.flash.hex.afterEnd": {
-    en: "there is more after the end-of-file record.",
-    ko: "파일 끝 레코드 뒤에 내용이 더 있어요.",
-  },
-  "cmd.flash.hex.noEnd": {
-    en: "the file ends without an end-of-file record (:00000001FF); it may have been cut short.",
-    ko: "파일이 파일 끝 레코드(:00000001FF) 없이 끝나요. 중간에 잘렸을 수 있어요.",
-  },
 
   "cmd.play.scenesForm": {
     en: '--scenes takes a scene or a range of scenes, e.g. 2 or 1-3 (the first scene is 0), not "{value}".',

@@ -7,6 +7,7 @@ import {
   type TetheredPlayResult,
 } from "../../device/index.ts";
 import type { Locale } from "../../i18n/locale.ts";
+import { nothingSentText } from "../../i18n/outcomes/device.ts";
 import { translator } from "../../i18n/translate.ts";
 import { formatSeconds } from "../../i18n/units.ts";
 import {
@@ -26,7 +27,7 @@ import { CliError, EXIT, errorLine, UsageError } from "../errors.ts";
 import { COMMAND_HELP } from "../help/command-help.ts";
 import { cliMessages } from "../messages.ts";
 import type { Output } from "../output.ts";
-import { said, saidEach } from "../said.ts";
+import { said, saidBy, saidEach } from "../said.ts";
 import { issueLines, issuesJson } from "../upload-report.ts";
 import { unreadable } from "../zeros-files.ts";
 import { commandMessages } from "./messages.ts";
@@ -219,8 +220,7 @@ export const playCommand: CommandDef = {
     if (file === undefined) throw new UsageError(said(commandMessages, "cmd.play.noFile"), "play");
     const locale = localeOf(env);
     const t = translator(commandMessages, locale);
-    const nothingSent = () =>
-      new CliError("interrupted", said(commandMessages, "cmd.nothingSent"), EXIT.interrupted);
+    const nothingSent = () => new CliError("interrupted", saidBy(nothingSentText), EXIT.interrupted);
     const doc = await readMotion(env, file);
     const range = parseScenes(values.scenes, doc, file);
     const what = t("cmd.play.what", { scenes: scenesText(range, doc, locale), file: basename(file) });

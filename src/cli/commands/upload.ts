@@ -1,9 +1,9 @@
 import { readFile } from "node:fs/promises";
 import { basename } from "node:path";
-import { uploadOutcomeText } from "../../device/error-text.ts";
 import { RbcUploadError } from "../../device/errors.ts";
-import { type FileUploadResult, UPLOAD_NOTICES } from "../../device/index.ts";
+import type { FileUploadResult } from "../../device/index.ts";
 import type { Locale } from "../../i18n/locale.ts";
+import { nothingSentText, uploadNoticeText, uploadOutcomeText } from "../../i18n/outcomes/device.ts";
 import { translator } from "../../i18n/translate.ts";
 import { formatSeconds } from "../../i18n/units.ts";
 import { downloadedMotionNumber, MOTION_AREA_BYTES } from "../../protocol/catalog.ts";
@@ -17,7 +17,7 @@ import { CliError, EXIT, UsageError } from "../errors.ts";
 import { COMMAND_HELP } from "../help/command-help.ts";
 import { ProgressBar } from "../progress.ts";
 import { errorCodeWords } from "../robot-words.ts";
-import { type Said, said, saidEach } from "../said.ts";
+import { type Said, said, saidBy, saidEach } from "../said.ts";
 import {
   type IssueWords,
   issueLines,
@@ -38,16 +38,7 @@ const OPTIONS = {
 /** Warnings listed in words; --json has them all. */
 const MAX_WARNINGS_SHOWN = 10;
 
-/** docs/protocol.md §6.3 [decision] Safety: one sentence, before the first byte, on a real robot (the device's words). */
-export const EXPERIMENTAL_NOTICE = UPLOAD_NOTICES.experimental;
-export const HOLD_ADVICE = UPLOAD_NOTICES.holdAdvice;
-
-/** The device's upload notices in `locale`: its own English, or this catalogue's words for them. */
-function notice(which: "experimental" | "holdAdvice", locale: Locale): string {
-  if (locale === "en") return UPLOAD_NOTICES[which];
-  const t = translator(commandMessages, locale);
-  return which === "experimental" ? t("cmd.upload.experimental") : t("cmd.upload.holdAdvice");
-}
+const notice = uploadNoticeText;
 
 /** How `env` tells a motion file's problems: in its language, with the English after `--log`. */
 export function issueWords(env: Pick<RunEnv, "argv" | "locale">): IssueWords {
@@ -191,13 +182,12 @@ export const uploadCommand: CommandDef = {
             t("cmd.upload.question", { file: basename(file), robot: robotPlace(robot, locale) }),
           );
       if (answer === "interrupted") {
-        throw new CliError("interrupted", said(commandMessages, "cmd.nothingSent"), EXIT.interrupted);
+        throw new CliError("interrupted", saidBy(nothingSentText), EXIT.interrupted);
       }
       if (answer === "no")
         throw new CliError("not-confirmed", said(commandMessages, "cmd.upload.notConfirmed"));
     }
-    if (env.signal.aborted)
-      throw new CliError("interrupted", said(commandMessages, "cmd.nothingSent"), EXIT.interrupted);
+    if (env.signal.aborted) throw new CliError("interrupted", saidBy(nothingSentText), EXIT.interrupted);
 
     const bar = new ProgressBar(env.out, undefined, locale);
     let result: FileUploadResult;

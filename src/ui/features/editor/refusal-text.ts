@@ -111,8 +111,3 @@ export function refusalText(e: MotionError, t: EditorTranslator, what?: string):
   if (t.locale === "en" || e instanceof TypedValueError) return e.message;
   return byRule(t, e.facts, what) ?? t(CODE_TEXT[e.code]);
 }
-
-/** A refusal, or any other failure's message: for sentences that quote why something was not done. */
-export function reasonText(e: unknown, t: EditorTranslator, fallback: (e: unknown) => string): string {
-  return e instanceof MotionError ? refusalText(e, t) : fallback(e);
-}

@@ -1,22 +1,25 @@
 import { RbcNotConnectedError } from "../../../device/errors.ts";
 import {
+  FirmwareUpdateError,
   type FirmwareUpdateOptions,
   type FirmwareUpdateProgress,
   type FirmwareUpdateResult,
   transportFirmwareIo,
   updateFirmware,
 } from "../../../device/firmware-update.ts";
+import type { Locale } from "../../../i18n/locale.ts";
+import { firmwareFailureText, firmwareResultText } from "../../../i18n/outcomes/firmware/firmware-words.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { MAX_HEX_TEXT_CHARS, parseIntelHex } from "../../../protocol/intel-hex.ts";
+import type { Notice } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
-import { errorNotice } from "../../error-text.ts";
+import { errorNotice, technicalDetail } from "../../error-text.ts";
 import { focusSoon } from "../../focus.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
 import { choosePort, webSerial } from "../../serial-ports.ts";
 import { hexProblem, tooLargeProblem } from "./file-problem.ts";
 import { firmwareMessages } from "./messages.ts";
 import { type FirmwareFile, type FirmwareRun, firmwareOf, patchFirmware } from "./state.ts";
-import { failureNotice, resultSentence } from "./update-outcome.ts";
 
 /**
  * What the Firmware view does: open and check a .hex file, update the connected robot's firmware (one
@@ -206,7 +209,7 @@ export async function startFlash(ctx: AppContext): Promise<void> {
         },
       }),
     );
-    finish(ctx, `${resultSentence(t, result, before)} ${t("firmware.restarted")}`, result);
+    finish(ctx, `${firmwareResultText(result, before, locale)} ${t("firmware.restarted")}`, result);
   } catch (e) {
     patchFirmware(store, {
       run: undefined,
@@ -285,7 +288,10 @@ export async function startRecovery(ctx: AppContext): Promise<void> {
     const result = await updateFirmware(transportFirmwareIo(transport), file.image, options);
     patchFirmware(store, {
       run: undefined,
-      result: { tone: "ok", text: `${resultSentence(t, result, undefined)} ${t("firmware.connectNow")}` },
+      result: {
+        tone: "ok",
+        text: `${firmwareResultText(result, undefined, locale)} ${t("firmware.connectNow")}`,
+      },
     });
   } catch (e) {
     patchFirmware(store, { run: undefined, result: failureNotice(e, locale) });
@@ -294,4 +300,18 @@ export async function startRecovery(ctx: AppContext): Promise<void> {
     await transport.close().catch(() => {});
     focusSoon("flash-result");
   }
+}
+
+/**
+ * A failed or cancelled update, in the outcome catalogue's words (what went wrong, what the robot holds, what to
+ * do) after the panel's lead; a cancel says so itself. What the robot holds decides the tone (nothing written: a
+ * warning). In Korean the device's English sentence is the technical detail.
+ */
+function failureNotice(e: unknown, locale: Locale): Notice {
+  const t = translator(firmwareMessages, locale);
+  if (!(e instanceof FirmwareUpdateError)) return errorNotice(t("firmware.failed"), e, locale);
+  const tone = e.holds === "previous-firmware" ? "warning" : "danger";
+  const what = firmwareFailureText(e, locale);
+  const text = e.failure === "cancelled" ? what : `${t("firmware.failed")} ${what}`;
+  return locale === "en" ? { tone, text } : { tone, text, detail: technicalDetail(e) };
 }

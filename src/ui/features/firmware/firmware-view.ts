@@ -1,6 +1,7 @@
 import "../../styles/tools.css";
 import "../../styles/firmware.css";
 import { html, nothing, type TemplateResult } from "lit-html";
+import { firmwareNoticeText } from "../../../i18n/outcomes/firmware/firmware-words.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { ATMEGA128 } from "../../../protocol/intel-hex.ts";
 import { formatFirmware } from "../../../shared/format.ts";
@@ -135,8 +136,8 @@ function summary(ctx: ViewContext, t: FirmwareTranslator, file: FirmwareFile, bu
 function noticeBlock(t: FirmwareTranslator): TemplateResult {
   return html`
     <div class="notice notice--warning fw-notice" data-testid="fw-notice">
-      <p><strong>${t("firmware.experimentalLead")}</strong> ${t("firmware.notice.recovery")}</p>
-      <p>${t("firmware.notice.keepPowered")}</p>
+      <p><strong>${t("firmware.experimentalLead")}</strong> ${firmwareNoticeText("recovery", t.locale)}</p>
+      <p>${firmwareNoticeText("keepPowered", t.locale)}</p>
     </div>
   `;
 }
@@ -155,7 +156,7 @@ function confirmBlock(ctx: ViewContext, t: FirmwareTranslator, run: FirmwareRun)
         </strong>
       </p>
       <p>
-        ${demo ? t("firmware.demoRestartsWhenAsked") : t("firmware.notice.experimental")}
+        ${demo ? t("firmware.demoRestartsWhenAsked") : firmwareNoticeText("experimental", t.locale)}
         ${t("firmware.whatComesNext")}
       </p>
       ${run.recovery ? html`<p>${t("firmware.browserAsksPort")}</p>` : nothing}

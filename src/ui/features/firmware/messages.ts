@@ -2,14 +2,10 @@ import { defineMessages } from "../../../i18n/catalogue.ts";
 import type { Translator } from "../../../i18n/translate.ts";
 
 /**
- * The Firmware view: the file, its summary, the notices before an update (the device's FIRMWARE_NOTICES, in the
- * same English words as `rbc flash`), the confirmation, progress, the result and what a failure leaves on the
- * robot.
- *
- * firmware.hex.* and firmware.failure.*: in English the panel shows the device's own sentence (it names the
- * line's bytes, the addresses, the time waited), so these English texts are its gist, kept for the pairing; in
- * Korean the panel shows these sentences, made from the error's code and fields, and keeps the device's English
- * sentence as the technical detail.
+ * The Firmware view's own words: the file, the confirmation, progress and the framing of a result or failure.
+ * What the robot did (the notices before an update, the result, a failure and what it leaves on the robot, why
+ * a HEX file is refused) is worded once, for the panel and `rbc flash`, in the outcome catalogue
+ * (src/i18n/outcomes/firmware/firmware-words.ts).
  */
 export const firmwareMessages = defineMessages({
   "firmware.title": { en: "Firmware", ko: "펌웨어" },
@@ -67,77 +63,8 @@ export const firmwareMessages = defineMessages({
     en: "The demo firmware file could not be made.",
     ko: "데모 펌웨어 파일을 만들지 못했어요.",
   },
-  "firmware.hex.atLine": { en: "Line {line}: {reason}", ko: "{line}번째 줄: {reason}" },
-  "firmware.hex.tooLarge": {
-    en: "The file is far too long for a firmware of the RBC.",
-    ko: "파일이 RBC 펌웨어라기에는 너무 길어요.",
-  },
-  "firmware.hex.noRecords": {
-    en: "The file holds no data records: there is nothing to write.",
-    ko: "데이터 레코드가 없어서 쓸 내용이 없어요.",
-  },
-  "firmware.hex.empty": { en: "The file is empty.", ko: "파일이 비어 있어요." },
-  "firmware.hex.noColon": { en: "a record starts with ':'.", ko: "레코드는 ':'로 시작해야 해요." },
-  "firmware.hex.notHex": {
-    en: "a record is ':' followed by pairs of hex digits.",
-    ko: "레코드는 ':' 뒤에 16진수가 두 자리씩 와야 해요.",
-  },
-  "firmware.hex.lengthMismatch": {
-    en: "the record's length does not match its data.",
-    ko: "레코드에 적힌 길이와 실제 데이터 길이가 달라요.",
-  },
-  "firmware.hex.checksum": {
-    en: "the record's checksum is wrong.",
-    ko: "레코드의 체크섬이 맞지 않아요.",
-  },
-  "firmware.hex.recordType": {
-    en: "the record type is not accepted: the RBC bootloader takes only types 00, 01, 02 and 04.",
-    ko: "받을 수 없는 레코드 종류예요. RBC 부트로더는 00, 01, 02, 04 종류만 받아요.",
-  },
-  "firmware.hex.badRecord": { en: "the record is malformed.", ko: "레코드의 형식이 잘못됐어요." },
-  "firmware.hex.crosses64k": {
-    en: "the record runs past the end of its 64 KiB segment.",
-    ko: "레코드가 64KiB 구간의 끝을 넘어가요.",
-  },
-  "firmware.hex.outsideFlash": {
-    en: "the record writes outside the ATmega128's flash.",
-    ko: "레코드가 ATmega128의 플래시 밖에 쓰려고 해요.",
-  },
-  "firmware.hex.bootSection": {
-    en: "the record writes inside the boot section, where the bootloader lives.",
-    ko: "레코드가 부트로더가 있는 부트 영역에 쓰려고 해요. RBC 펌웨어는 부트 영역 아래에서 끝나야 해요.",
-  },
-  "firmware.hex.overlap": {
-    en: "the record writes an address an earlier line wrote.",
-    ko: "레코드가 앞의 줄에서 이미 쓴 주소에 다시 쓰려고 해요.",
-  },
-  "firmware.hex.afterEnd": {
-    en: "there is more after the end-of-file record.",
-    ko: "파일 끝 레코드 뒤에 내용이 더 있어요.",
-  },
-  "firmware.hex.noEnd": {
-    en: "the file ends without an end-of-file record; it may have been cut short.",
-    ko: "파일 끝 레코드(:00000001FF)가 없어요. 파일이 중간에 잘렸을 수 있어요.",
-  },
 
-  // The device's notices (src/device/firmware-update.ts FIRMWARE_NOTICES, word for word in English)
   "firmware.experimentalLead": { en: "Experimental on real robots.", ko: "실제 로봇에서는 실험 단계예요." },
-  "firmware.notice.experimental": {
-    en: "Updating the firmware is experimental on real robots: the bootloader dialogue follows RBCLoader (the Java loader) and has not been verified on a real RBC by this project.",
-    ko: "실제 로봇의 펌웨어 업데이트는 실험 단계예요. 부트로더와 주고받는 방식은 RBCLoader(Java 로더)를 따랐지만, 이 프로젝트에서 실제 RBC로 확인하지는 못했어요.",
-  },
-  "firmware.notice.recovery": {
-    en: "The bootloader itself is never written, so a failed or interrupted update is fixed by running the update again.",
-    ko: "부트로더 자체는 절대 덮어쓰지 않아요. 그래서 업데이트가 실패하거나 중간에 끊겨도 업데이트를 다시 하면 고쳐져요.",
-  },
-  "firmware.notice.keepPowered": {
-    en: "Keep the robot powered (a charged battery or the adapter) and lying down, and the cable plugged in, until the update has finished.",
-    ko: "업데이트가 끝날 때까지 로봇의 전원을 켜 둔 채(충전된 배터리나 어댑터) 로봇을 눕혀 두고, 케이블도 꽂아 두세요.",
-  },
-  "firmware.notice.demoRestarts": {
-    en: "The demo robot restarts by itself.",
-    ko: "데모 로봇은 스스로 다시 시작해요.",
-  },
 
   // Confirmation
   "firmware.confirmRecover": {
@@ -241,103 +168,12 @@ export const firmwareMessages = defineMessages({
     en: "No port was chosen; nothing was sent.",
     ko: "포트를 고르지 않아서 아무것도 보내지 않았어요.",
   },
-  "firmware.updated": {
-    en: "Firmware updated: the robot now reports {version} (was {before}). {lines} lines in {time}.",
-    ko: "펌웨어를 업데이트했어요. 로봇이 알려 준 버전: {version} (이전: {before}). {time} 동안 {lines}줄을 썼어요.",
-  },
-  "firmware.updatedNoBefore": {
-    en: "Firmware updated: the robot now reports {version}. {lines} lines in {time}.",
-    ko: "펌웨어를 업데이트했어요. 로봇이 알려 준 버전: {version}. {time} 동안 {lines}줄을 썼어요.",
-  },
-  "firmware.resent": {
-    en: "{count} resent after a checksum error.",
-    ko: "체크섬 오류로 {count}줄을 다시 보냈어요.",
-  },
   "firmware.restarted": {
     en: "The robot was restarted: run Basic posture before other motions.",
     ko: "로봇이 다시 시작했어요. 다른 모션을 실행하기 전에 기본 자세를 실행해 주세요.",
   },
   "firmware.connectNow": { en: "Connect the robot as usual now.", ko: "이제 평소처럼 로봇을 연결해 주세요." },
-  "firmware.cancelled": { en: "Update cancelled.", ko: "업데이트를 취소했어요." },
   "firmware.failed": { en: "Firmware update failed.", ko: "펌웨어 업데이트에 실패했어요." },
-
-  // What went wrong (FirmwareUpdateError.failure), what the robot holds, what to do
-  "firmware.failure.noBootloader": {
-    en: "The robot's bootloader did not announce itself after the robot was to be switched off and on.",
-    ko: "로봇을 껐다가 켜는 동안 로봇의 부트로더가 신호를 보내지 않았어요.",
-  },
-  "firmware.failure.notReady": {
-    en: "The robot's bootloader did not answer the request to take a new firmware.",
-    ko: "로봇의 부트로더가 새 펌웨어를 받으라는 요청에 응답하지 않았어요.",
-  },
-  "firmware.failure.checksum": {
-    en: "The bootloader reported a checksum error on a line {times} times in a row; the link is garbling data.",
-    ko: "부트로더가 같은 줄에서 체크섬 오류를 {times}번 연속으로 알렸어요. 연결 중에 데이터가 깨지고 있어요.",
-  },
-  "firmware.failure.pageError": {
-    en: "The bootloader could not write a flash page.",
-    ko: "부트로더가 플래시 페이지를 쓰지 못했어요.",
-  },
-  "firmware.failure.completedWithErrors": {
-    en: "The bootloader reached the end of the file but reported errors.",
-    ko: "부트로더가 파일 끝까지 받았지만 오류를 알렸어요.",
-  },
-  "firmware.failure.earlyComplete": {
-    en: "The bootloader reported the file complete before its last line was sent.",
-    ko: "마지막 줄을 보내기 전에 부트로더가 파일을 다 받았다고 알렸어요.",
-  },
-  "firmware.failure.noStatus": {
-    en: "The bootloader did not answer a line.",
-    ko: "부트로더가 보낸 줄에 응답하지 않았어요.",
-  },
-  "firmware.failure.stalled": {
-    en: "The bootloader asked to pause and did not ask to go on.",
-    ko: "부트로더가 잠시 멈춰 달라고 한 뒤 다시 보내 달라고 하지 않았어요.",
-  },
-  "firmware.failure.restarted": {
-    en: "The robot restarted in the middle of the update.",
-    ko: "업데이트 도중에 로봇이 다시 시작했어요.",
-  },
-  "firmware.failure.cancelled": {
-    en: "The firmware update was cancelled.",
-    ko: "펌웨어 업데이트를 취소했어요.",
-  },
-  "firmware.failure.disconnected": {
-    en: "The connection to the robot was lost during the firmware update.",
-    ko: "펌웨어 업데이트 중에 로봇과의 연결이 끊겼어요.",
-  },
-  "firmware.failure.noAnswer": {
-    en: "The robot does not answer after the update.",
-    ko: "업데이트 뒤에 로봇이 응답하지 않아요.",
-  },
-  "firmware.failure.atLine": {
-    en: "It happened at line {line} of the file.",
-    ko: "파일의 {line}번째 줄에서 일어났어요.",
-  },
-  "firmware.holds.previous": {
-    en: "Nothing was written: the robot still holds its previous firmware.",
-    ko: "아무것도 쓰지 않았어요. 로봇에는 이전 펌웨어가 그대로 있어요.",
-  },
-  "firmware.holds.incomplete": {
-    en: "The robot's firmware may now be incomplete, and the robot may not work until an update succeeds.",
-    ko: "로봇의 펌웨어가 불완전할 수 있고, 업데이트가 성공할 때까지 로봇이 작동하지 않을 수 있어요.",
-  },
-  "firmware.holds.new": {
-    en: "The bootloader reported the new firmware written without errors.",
-    ko: "부트로더는 새 펌웨어를 오류 없이 썼다고 알렸어요.",
-  },
-  "firmware.todo.powerCycle": {
-    en: "Switch the robot off, then on again while the update waits for it, and run the update again; keep the cable plugged in.",
-    ko: "업데이트가 기다리는 동안 로봇을 껐다가 다시 켜고, 업데이트를 다시 해 주세요. 케이블은 꽂아 두세요.",
-  },
-  "firmware.todo.again": {
-    en: "The bootloader is never overwritten: switch the robot off and on and run the update again.",
-    ko: "부트로더는 절대 덮어쓰지 않아요. 로봇을 껐다가 켜고 업데이트를 다시 해 주세요.",
-  },
-  "firmware.todo.trustedFile": {
-    en: "Switch the robot off and on; if it still does not answer, run the update again with a firmware file you trust (the bootloader is never overwritten).",
-    ko: "로봇을 껐다가 켜 주세요. 그래도 응답하지 않으면 믿을 수 있는 펌웨어 파일로 업데이트를 다시 해 주세요 (부트로더는 절대 덮어쓰지 않아요).",
-  },
 });
 
 export type FirmwareTranslator = Translator<typeof firmwareMessages>;

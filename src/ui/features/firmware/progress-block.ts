@@ -1,5 +1,6 @@
 import { html, nothing, type TemplateResult } from "lit-html";
 import { DEFAULT_FIRMWARE_TIMEOUTS, type FirmwareUpdateProgress } from "../../../device/firmware-update.ts";
+import { firmwareNoticeText } from "../../../i18n/outcomes/firmware/firmware-words.ts";
 import { formatSeconds } from "../../format.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
 import { cancelFlash } from "./actions.ts";
@@ -57,7 +58,7 @@ export function progressBlock(
           ${
             waiting
               ? demo
-                ? t("firmware.notice.demoRestarts")
+                ? firmwareNoticeText("demoRestarts", t.locale)
                 : t("firmware.step.waiting", { wait })
               : t("firmware.step.answered")
           }

@@ -319,18 +319,6 @@ export const motionsMessages = defineMessages({
     ko: "{file}을(를) 로봇에 업로드할까요?",
   },
   "motions.upload.confirmNoFile": { en: "Upload the file to the robot?", ko: "파일을 로봇에 업로드할까요?" },
-  "motions.upload.experimental": {
-    en: "Uploading to a real robot is experimental: the motion image layout has not been verified on real RBC firmware.",
-    ko: "실제 로봇에 업로드하는 기능은 실험 단계예요. 모션 이미지의 구조를 실제 RBC 펌웨어에서 아직 확인하지 못했어요.",
-  },
-  "motions.upload.holdAdvice": {
-    en: "Run the uploaded motion first with the robot held or lying down, so that a wrong movement cannot make it fall.",
-    ko: "업로드한 모션은 처음에 로봇을 잡거나 눕힌 채로 실행해 주세요. 그래야 잘못된 움직임에도 넘어지지 않아요.",
-  },
-  "motions.upload.actionUnchecked": {
-    en: "No action file format is known: the file's bytes are sent as they are, unchecked, and the result on the robot is unverified.",
-    ko: "액션 파일의 형식은 알려져 있지 않아요. 파일의 바이트를 확인 없이 그대로 보내고, 로봇에서의 결과도 확인하지 않아요.",
-  },
   "motions.upload.resetMotionLead": {
     en: "The motion memory is reset first:",
     ko: "먼저 모션 메모리를 초기화해요:",

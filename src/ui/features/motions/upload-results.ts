@@ -7,6 +7,7 @@ import {
 import type { UploadResult } from "../../../device/types.ts";
 import type { KeysWithoutParams } from "../../../i18n/catalogue.ts";
 import type { Locale } from "../../../i18n/locale.ts";
+import { uploadNoticeText } from "../../../i18n/outcomes/device.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { ACTION_AREA_BYTES, errorCodeText, MOTION_AREA_BYTES, NO_ERROR } from "../../../protocol/catalog.ts";
 import type { RbmMotion } from "../../../protocol/rbm.ts";
@@ -132,7 +133,7 @@ export function uploadSucceeded(
     free,
     t("motions.upload.errorAfter", { words: errorCodeWords(result.errorCode, locale) }),
   ];
-  if (real && area === "motion") sentences.push(t("motions.upload.holdAdvice"));
+  if (real && area === "motion") sentences.push(uploadNoticeText("holdAdvice", t.locale));
   const notice: Notice = {
     tone: result.errorCode === NO_ERROR ? "ok" : "warning",
     text: sentences.filter((x) => x).join(" "),

@@ -6,6 +6,7 @@ import {
 } from "../../../device/errors.ts";
 import { ZeroWriteFailedError } from "../../../device/zero-policy.ts";
 import type { Locale } from "../../../i18n/locale.ts";
+import { zerosNotReadText } from "../../../i18n/outcomes/device.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { ZERO_COUNT } from "../../../protocol/zeros.ts";
 import {
@@ -242,7 +243,7 @@ export async function writeZerosToRobot(ctx: AppContext): Promise<void> {
     const cause: unknown = e instanceof ZeroWriteFailedError ? e.reason : e;
     const result = backupName
       ? failureSentence(cause, backupName, t)
-      : errorNotice(t("zeros.backupFirstFailed"), cause, locale);
+      : errorNotice(zerosNotReadText(locale), cause, locale);
     patchZeros(store, { busy: undefined, result });
     return;
   }

@@ -179,10 +179,6 @@ export const zerosMessages = defineMessages({
     en: "The robot already holds these zeros: nothing was written.",
     ko: "로봇에 이미 이 영점이 들어 있어요. 아무것도 쓰지 않았어요.",
   },
-  "zeros.backupFirstFailed": {
-    en: "Nothing was written: the robot's current zeros could not be read for the backup.",
-    ko: "아무것도 쓰지 않았어요. 백업에 쓸 로봇의 지금 영점을 읽지 못했어요.",
-  },
   "zeros.written": {
     en: "Zeros written and verified (read back {read}/{total}). Backup saved as {file}.",
     ko: "영점을 쓰고 다시 읽어 확인했어요({read}/{total}). 백업을 {file}(으)로 저장했어요.",

@@ -1,4 +1,5 @@
 import { html, nothing, type TemplateResult } from "lit-html";
+import { uploadNoticeText } from "../../../../i18n/outcomes/device.ts";
 import { translator } from "../../../../i18n/translate.ts";
 import type { AppState } from "../../../app-state.ts";
 import { liveNotice } from "../../../shell/notice.ts";
@@ -95,8 +96,8 @@ function confirmBlock(
       <p id="upload-confirm-title">
         <strong>${file !== undefined ? t("motions.upload.confirmFile", { file }) : t("motions.upload.confirmNoFile")}</strong>
       </p>
-      <p>${t("motions.upload.experimental")}</p>
-      <p>${target.area === "action" ? t("motions.upload.actionUnchecked") : t("motions.upload.holdAdvice")}</p>
+      <p>${uploadNoticeText("experimental", t.locale)}</p>
+      <p>${uploadNoticeText(target.area === "action" ? "action" : "holdAdvice", t.locale)}</p>
       ${reset ? html`<p>${resetNote}</p>` : nothing}
       <div class="actions">
         <button type="button" class="btn btn--primary" id="confirm-upload" @click=${() => void startUpload(ctx, target)}>

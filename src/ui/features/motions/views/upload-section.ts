@@ -1,4 +1,5 @@
 import { html, nothing, type TemplateResult } from "lit-html";
+import { uploadNoticeText } from "../../../../i18n/outcomes/device.ts";
 import { translator } from "../../../../i18n/translate.ts";
 import {
   ACTION_AREA_BYTES,
@@ -72,7 +73,7 @@ function actionCard(ctx: ViewContext, t: MotionsTranslator): TemplateResult {
   return html`
     <section class="card" aria-labelledby="actions-title" data-testid="action-card">
       <h2 id="actions-title" class="card-title">${t("motions.upload.actionTitle")}</h2>
-      <p class="muted small">${t("motions.upload.actionUnchecked")}</p>
+      <p class="muted small">${uploadNoticeText("action", t.locale)}</p>
       <div class="write-row">
         <label class="btn file-button">
           ${t("motions.upload.chooseAction")}

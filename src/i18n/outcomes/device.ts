@@ -1,0 +1,138 @@
+import type { RbcErrorCode, UploadOutcome } from "../../device/errors.ts";
+import type { LinkErrorCode } from "../../link/transport.ts";
+import type { KeysWithoutParams } from "../catalogue.ts";
+import type { Locale } from "../locale.ts";
+import { translator } from "../translate.ts";
+import { formatMilliseconds } from "../units.ts";
+import { deviceOutcomeMessages as messages } from "./messages.ts";
+
+/**
+ * The device's outcomes in words, from their codes and facts, in either language. The device's error classes
+ * (src/device/errors.ts, zero-policy.ts) take their English `message` from these functions; `errorText`
+ * (src/device/error-text.ts) says an error in the person's language with the same functions.
+ */
+
+type Key = KeysWithoutParams<typeof messages>;
+
+const t = (locale: Locale) => translator(messages, locale);
+
+/** The sentence for each code of the device's errors, when no more facts are known. */
+const RBC_CODE = {
+  timeout: "outcome.noAnswer",
+  disconnected: "outcome.disconnected",
+  "not-connected": "outcome.notConnected",
+  rejected: "outcome.rejected",
+  "bad-reply": "outcome.badReply",
+  cancelled: "outcome.cancelled",
+  "invalid-argument": "outcome.invalidArgument",
+  "no-robot": "outcome.noRobot",
+  "verify-failed": "outcome.verifyFailed",
+  "upload-failed": "outcome.uploadFailed",
+  "motion-ignored": "outcome.motionIgnored",
+  "wrong-mode": "outcome.wrongMode",
+  "port-unavailable": "outcome.portUnavailable",
+  "port-busy": "outcome.portBusy",
+  "backup-failed": "outcome.backupFailed",
+} as const satisfies Readonly<Record<RbcErrorCode, Key>>;
+
+/** Codes whose sentence does not say enough on its own: the person is pointed to the technical detail. */
+const NEEDS_DETAIL: ReadonlySet<RbcErrorCode> = new Set([
+  "rejected",
+  "invalid-argument",
+  "verify-failed",
+  "wrong-mode",
+]);
+
+/** The link's failures (src/link/transport.ts), for a person. */
+const LINK_CODE = {
+  "open-failed": "outcome.portUnavailable",
+  "port-busy": "outcome.portBusy",
+  "not-open": "outcome.notOpen",
+  disconnected: "outcome.disconnected",
+  "write-failed": "outcome.writeFailed",
+} as const satisfies Readonly<Record<LinkErrorCode, Key>>;
+
+/** What a device error's code says, without its facts. */
+export function codeText(code: RbcErrorCode, locale: Locale): string {
+  return t(locale)(RBC_CODE[code]);
+}
+
+/** Whether `code`'s sentence needs the technical detail beside it (see `seeDetailText`). */
+export function codeNeedsDetail(code: RbcErrorCode): boolean {
+  return NEEDS_DETAIL.has(code);
+}
+
+export function linkCodeText(code: LinkErrorCode, locale: Locale): string {
+  return t(locale)(LINK_CODE[code]);
+}
+
+/** "The technical detail says more." */
+export function seeDetailText(locale: Locale): string {
+  return t(locale)("outcome.seeDetail");
+}
+
+/** "Something unexpected went wrong." */
+export function unexpectedText(locale: Locale): string {
+  return t(locale)("outcome.unexpected");
+}
+
+/** "Nothing was sent." */
+export function nothingSentText(locale: Locale): string {
+  return t(locale)("outcome.nothingSent");
+}
+
+/** No reply to `command` within `waitedMs` (`RbcTimeoutError`). */
+export function timeoutText(command: string, waitedMs: number, locale: Locale): string {
+  return t(locale)("outcome.timeout", { command, wait: formatMilliseconds(waitedMs, locale) });
+}
+
+const UPLOAD_OUTCOME = {
+  "nothing-recorded": "outcome.uploadNothingRecorded",
+  unknown: "outcome.uploadUnknown",
+  interrupted: "outcome.uploadInterrupted",
+} as const satisfies Readonly<Record<UploadOutcome, Key>>;
+
+/** What an upload that stopped left on the robot (`RbcUploadError.outcome`). */
+export function uploadOutcomeText(outcome: UploadOutcome, locale: Locale): string {
+  return t(locale)(UPLOAD_OUTCOME[outcome]);
+}
+
+/** "The robot acknowledged 128 of 1,024 bytes." */
+export function uploadAcknowledgedText(acknowledged: number, total: number, locale: Locale): string {
+  return t(locale)("outcome.uploadAcknowledged", { acknowledged, total });
+}
+
+/** The backup of the current zeros could not be saved, so nothing was written (`reason`: why, when known). */
+export function zerosBackupFailedText(reason: string | undefined, locale: Locale): string {
+  return reason === undefined
+    ? t(locale)("outcome.backupFailed")
+    : t(locale)("outcome.backupFailedBecause", { reason });
+}
+
+/** The current zeros could not be read for the backup, so nothing was written. */
+export function zerosNotReadText(locale: Locale): string {
+  return t(locale)("outcome.zerosNotRead");
+}
+
+/** Cancelled after the backup `file` was saved and before the write: nothing was written. */
+export function zerosCancelledBeforeWriteText(file: string, locale: Locale): string {
+  return t(locale)("outcome.zerosCancelledBeforeWrite", { file });
+}
+
+/** Where the zeros the robot held before a failed write are saved. */
+export function zerosBackupKeptText(file: string, locale: Locale): string {
+  return t(locale)("outcome.zerosBackupKept", { file });
+}
+
+/** The notices of an upload: before the first byte on a real robot, and the advice after. */
+export type UploadNotice = "experimental" | "holdAdvice" | "action";
+
+const UPLOAD_NOTICE = {
+  experimental: "outcome.upload.experimental",
+  holdAdvice: "outcome.upload.holdAdvice",
+  action: "outcome.upload.action",
+} as const satisfies Readonly<Record<UploadNotice, Key>>;
+
+export function uploadNoticeText(which: UploadNotice, locale: Locale): string {
+  return t(locale)(UPLOAD_NOTICE[which]);
+}

@@ -1,0 +1,195 @@
+import type { BootloaderFailure, RobotHolds } from "../../../protocol/bootloader.ts";
+import type { IntelHexErrorCode } from "../../../protocol/intel-hex.ts";
+import type { KeysWithoutParams } from "../../catalogue.ts";
+import type { Locale } from "../../locale.ts";
+import { translator } from "../../translate.ts";
+import { formatMilliseconds, formatSeconds } from "../../units.ts";
+import { firmwareOutcomeMessages as messages } from "./messages.ts";
+
+/**
+ * A firmware update's outcomes in words (docs/protocol.md §11), from their facts, in either language: the
+ * device's `FirmwareUpdateError` and the protocol's `BootloaderError` take their English `message` from
+ * `firmwareFailureText`, and `rbc flash` and the panel's Firmware view show the same sentences.
+ */
+
+type Key = KeysWithoutParams<typeof messages>;
+
+/** What a failed or cancelled update knows: what went wrong, what the flash holds, and where and how long. */
+export interface FirmwareFailureFacts {
+  readonly failure: BootloaderFailure;
+  readonly holds: RobotHolds;
+  /** The file's line (1-based) the failure is about, when there is one. */
+  readonly line?: number | undefined;
+  /** How long the update waited for the answer that did not come, when it waited. */
+  readonly waitedMs?: number | undefined;
+  /** How many times a line was sent before a checksum failure gave up (MAX_LINE_RESENDS + 1). */
+  readonly tries?: number | undefined;
+}
+
+/** 60000 → "60 s", 1500 → "1.5 s", 400 → "400 ms" (and Korean units). */
+function waitText(ms: number | undefined, locale: Locale): string {
+  if (ms === undefined) return "?";
+  if (ms < 1000) return formatMilliseconds(ms, locale);
+  return formatSeconds(ms / 1000, locale, ms % 1000 === 0 ? 0 : 1);
+}
+
+/** What went wrong, with its facts. */
+function whatWentWrong(f: FirmwareFailureFacts, locale: Locale): string {
+  const t = translator(messages, locale);
+  const line = String(f.line ?? "?");
+  const wait = waitText(f.waitedMs, locale);
+  switch (f.failure) {
+    case "no-bootloader":
+      return t("outcome.firmware.noBootloader", { wait });
+    case "not-ready":
+      return t("outcome.firmware.notReady");
+    case "checksum":
+      return t("outcome.firmware.checksum", { line, times: String(f.tries ?? "?") });
+    case "page-error":
+      return t("outcome.firmware.pageError", { line });
+    case "completed-with-errors":
+      return t("outcome.firmware.completedWithErrors");
+    case "early-complete":
+      return t("outcome.firmware.earlyComplete", { line });
+    case "no-status":
+      return t("outcome.firmware.noStatus", { line, wait });
+    case "stalled":
+      return t("outcome.firmware.stalled", { line, wait });
+    case "restarted":
+      return t("outcome.firmware.restarted", { line });
+    case "cancelled":
+      return t("outcome.firmware.cancelled");
+    case "disconnected":
+      return t("outcome.firmware.disconnected");
+    case "no-answer":
+      return t("outcome.firmware.noAnswer", { wait });
+  }
+}
+
+const HOLDS = {
+  "previous-firmware": "outcome.firmware.holds.previous",
+  "incomplete-firmware": "outcome.firmware.holds.incomplete",
+  "new-firmware": "outcome.firmware.holds.new",
+} as const satisfies Readonly<Record<RobotHolds, Key>>;
+
+/** One sentence on what the robot's flash holds now. */
+export function robotHoldsText(holds: RobotHolds, locale: Locale): string {
+  return translator(messages, locale)(HOLDS[holds]);
+}
+
+/** What to do next: switch off and on (no bootloader yet), else what the flash holds decides. */
+function whatToDo(f: FirmwareFailureFacts, locale: Locale): string {
+  const t = translator(messages, locale);
+  if (f.failure === "no-bootloader") return t("outcome.firmware.todo.powerCycle");
+  return f.holds === "new-firmware"
+    ? t("outcome.firmware.todo.trustedFile")
+    : t("outcome.firmware.todo.again");
+}
+
+/** A failed or cancelled update: what went wrong, what the robot holds, what to do. */
+export function firmwareFailureText(f: FirmwareFailureFacts, locale: Locale): string {
+  return `${whatWentWrong(f, locale)} ${robotHoldsText(f.holds, locale)} ${whatToDo(f, locale)}`;
+}
+
+/** The notices before an update (docs/protocol.md §11 [decision]), as the panel and `rbc flash` say them. */
+export type FirmwareNotice = "experimental" | "recovery" | "keepPowered" | "askPowerCycle" | "demoRestarts";
+
+const NOTICES = {
+  experimental: "outcome.firmware.notice.experimental",
+  recovery: "outcome.firmware.notice.recovery",
+  keepPowered: "outcome.firmware.notice.keepPowered",
+  askPowerCycle: "outcome.firmware.notice.askPowerCycle",
+  demoRestarts: "outcome.firmware.notice.demoRestarts",
+} as const satisfies Readonly<Record<FirmwareNotice, Key>>;
+
+export function firmwareNoticeText(which: FirmwareNotice, locale: Locale): string {
+  return translator(messages, locale)(NOTICES[which]);
+}
+
+/** What a firmware file holds (IntelHexImage["summary"]). */
+export interface FirmwareFileFacts {
+  readonly bytes: number;
+  readonly firstAddress: number;
+  readonly lastAddress: number;
+  readonly pages: number;
+  readonly lines: number;
+  readonly wireBytes: number;
+}
+
+const hexAddress = (n: number) => `0x${n.toString(16).toUpperCase().padStart(5, "0")}`;
+
+/** "16,384 bytes at 0x00000-0x03FFF: 64 flash pages, 1,025 lines (46,137 bytes to send)". */
+export function firmwareSummaryText(s: FirmwareFileFacts, locale: Locale): string {
+  return translator(messages, locale)("outcome.firmware.summary", {
+    bytes: s.bytes,
+    first: hexAddress(s.firstAddress),
+    last: hexAddress(s.lastAddress),
+    count: s.pages,
+    lines: s.lines,
+    wire: s.wireBytes,
+  });
+}
+
+type Version = { readonly major: number; readonly minor: number };
+
+/** What a finished update confirmed (FirmwareUpdateResult). */
+export interface FirmwareResultFacts {
+  readonly firmware: Version;
+  readonly lines: number;
+  readonly resends: number;
+  readonly sendingMs: number;
+}
+
+const versionText = (v: Version) => `${v.major}.${String(v.minor).padStart(2, "0")}`;
+
+/**
+ * "Firmware updated: the robot now reports 2.50 (was 2.23). 4,097 lines in 83 s." (whole seconds from 10 s).
+ * `before` is the version the robot reported before the update, when it answered then.
+ */
+export function firmwareResultText(
+  r: FirmwareResultFacts,
+  before: Version | undefined,
+  locale: Locale,
+): string {
+  const t = translator(messages, locale);
+  const seconds = r.sendingMs / 1000;
+  const time = formatSeconds(seconds >= 10 ? Math.round(seconds) : seconds, locale, seconds >= 10 ? 0 : 1);
+  const version = versionText(r.firmware);
+  const updated = before
+    ? t("outcome.firmware.updated", { version, before: versionText(before), lines: r.lines, time })
+    : t("outcome.firmware.updatedNoBefore", { version, lines: r.lines, time });
+  return r.resends > 0 ? `${updated} ${t("outcome.firmware.resent", { count: r.resends })}` : updated;
+}
+
+const HEX = {
+  "too-large": "outcome.hex.tooLarge",
+  "no-records": "outcome.hex.noRecords",
+  "no-colon": "outcome.hex.noColon",
+  "not-hex": "outcome.hex.notHex",
+  "length-mismatch": "outcome.hex.lengthMismatch",
+  checksum: "outcome.hex.checksum",
+  "record-type": "outcome.hex.recordType",
+  "bad-record": "outcome.hex.badRecord",
+  "crosses-64k": "outcome.hex.crosses64k",
+  "outside-flash": "outcome.hex.outsideFlash",
+  "boot-section": "outcome.hex.bootSection",
+  overlap: "outcome.hex.overlap",
+  "after-end": "outcome.hex.afterEnd",
+  "no-end": "outcome.hex.noEnd",
+} as const satisfies Readonly<Record<IntelHexErrorCode, Key>>;
+
+/**
+ * Why a HEX file is refused (an `IntelHexError`'s facts). In English the protocol's own sentence (it names the
+ * line's bytes and addresses); in Korean a sentence from the code and the line.
+ */
+export function hexProblemText(
+  e: { readonly code: IntelHexErrorCode; readonly line: number | undefined; readonly message: string },
+  locale: Locale,
+): string {
+  if (locale === "en") return e.message;
+  const t = translator(messages, locale);
+  // "no-end" without a line: there was no line at all.
+  if (e.code === "no-end" && e.line === undefined) return t("outcome.hex.empty");
+  const problem = t(HEX[e.code]);
+  return e.line === undefined ? problem : t("outcome.hex.onLine", { line: String(e.line), problem });
+}
