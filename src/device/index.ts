@@ -1,3 +1,5 @@
+/** The outcome catalogue's entries for the device's errors (src/i18n/outcomes), under their earlier name. */
+export { deviceOutcomeMessages as deviceErrorMessages } from "../i18n/outcomes/messages.ts";
 export {
   ActivityRefusedError,
   type ActivitySnapshot,
@@ -13,8 +15,6 @@ export {
   type Stop7Sender,
   type UploadActivity,
 } from "./activity.ts";
-/** The outcome catalogue's entries for the device's errors (src/i18n/outcomes), under their earlier name. */
-export { deviceOutcomeMessages as deviceErrorMessages } from "../i18n/outcomes/messages.ts";
 export { DirectMode, SERVO_IDS } from "./direct-mode.ts";
 export { type ErrorTextOptions, errorText, technicalDetail, uploadOutcomeText } from "./error-text.ts";
 export * from "./errors.ts";
