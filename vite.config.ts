@@ -1,9 +1,11 @@
 import { execFileSync } from "node:child_process";
 import { createHash, randomBytes } from "node:crypto";
 import { readFileSync } from "node:fs";
+import { fileURLToPath } from "node:url";
 import { defineConfig, type Plugin } from "vite";
 import { VitePWA } from "vite-plugin-pwa";
 import { viteSingleFile } from "vite-plugin-singlefile";
+import { wordsPerLanguage } from "./scripts/vite-words-per-language.ts";
 
 /** The policy of the built app: everything from our own origin, nothing inline, no eval. */
 export const CONTENT_SECURITY_POLICY: Readonly<Record<string, string>> = {
@@ -51,6 +53,9 @@ function policyText(
     .map(([directive, value]) => `${directive} ${value}`.trim())
     .join("; ");
 }
+
+/** The project folder, as an absolute path without a trailing slash. */
+const ROOT = fileURLToPath(new URL(".", import.meta.url)).replace(/\/$/, "");
 
 const CHARSET = '<meta charset="utf-8" />';
 
@@ -243,6 +248,15 @@ export default defineConfig(({ command, mode }) => {
         ]
       : [
           contentSecurityPolicy(devNonce),
+          // Each catalogue's languages in chunks of their own: the first load carries only the words of the
+          // page's language (docs/i18n.md, "One language at a time"). Not in the one-file panel, which works
+          // offline and so carries both.
+          wordsPerLanguage({
+            root: ROOT,
+            locales: ["en", "ko"],
+            runtime: `${ROOT}/src/i18n/split-catalogue.ts`,
+            source: `${ROOT}/src`,
+          }),
           VitePWA({
             // A new version waits until the owner chooses to reload (src/ui/update-prompt.ts): never a reload
             // by itself, which could cut an upload to the robot short.
