@@ -73,7 +73,9 @@ function afterCharset(html: string, tags: string): string {
  * other origins) is enforced in dev too, so a violation shows up while developing.
  *
  * It also starts the service worker's update prompt (src/ui/update-prompt.ts) from a module script that Vite
- * bundles into the entry chunk (an inline module in the source HTML is never inline in the built page).
+ * bundles into the entry chunk (an inline module in the source HTML is never inline in the built page). The
+ * prompt and the service worker's registration load with import(), beside the first load rather than in it
+ * (they have nothing to draw before a new version is ready; first load: issue 19).
  */
 function contentSecurityPolicy(devNonce: string | undefined): Plugin {
   const policy = devNonce
@@ -92,9 +94,9 @@ function contentSecurityPolicy(devNonce: string | undefined): Plugin {
           "</body>",
           () =>
             '  <script type="module">\n' +
-            '      import { registerSW } from "virtual:pwa-register";\n' +
-            '      import { startUpdatePrompt } from "/src/ui/update-prompt.ts";\n' +
-            "      startUpdatePrompt(registerSW);\n" +
+            '      Promise.all([import("virtual:pwa-register"), import("/src/ui/update-prompt.ts")]).then(\n' +
+            "        ([pwa, prompt]) => prompt.startUpdatePrompt(pwa.registerSW),\n" +
+            "      );\n" +
             "    </script>\n  </body>",
         );
       },
