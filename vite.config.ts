@@ -238,7 +238,7 @@ export default defineConfig(({ command, mode }) => {
           // The CSP forbids data: scripts and inline styles, so never inline assets as data URLs.
           assetsInlineLimit: 0,
           // three.js (the 3D robot, 536 KB, 131 KB gzip) is one lazily loaded chunk, loaded only by the views
-          // that show the robot; the first page load stays within its 40 KB budget (npm run check:bundle).
+          // that show the robot; the first page load stays within its budget (npm run check:bundle).
           chunkSizeWarningLimit: 600,
           rolldownOptions: {
             output: {
