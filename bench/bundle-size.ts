@@ -9,7 +9,8 @@ import { bytesBySource, groupShares, type SourceShare } from "./source-map.ts";
  * Size of what the first page load needs, from a production build: JavaScript and CSS.
  * - JavaScript: the module and classic scripts that `dist/index.html` loads (`<script src>`), the files it
  *   preloads (`<link rel="modulepreload">`), and — in case a preload link is missing — every chunk those import
- *   statically (never `import()`ed ones: views and the demo robot load later).
+ *   statically (never other `import()`ed ones: views and the demo robot load later), plus the words of their
+ *   catalogues in the page's language (`words-<locale>-…` chunks, loaded before the first render).
  * - CSS: the style sheets `index.html` links (`<link rel="stylesheet">`) and any same-origin sheet those
  *   `@import`. (CSS of lazily loaded views comes with those views, later.)
  * Each file is gzipped on its own with node:zlib level 9 and the sizes summed. 1 KB = 1,000 bytes, as Vite
@@ -17,10 +18,24 @@ import { bytesBySource, groupShares, type SourceShare } from "./source-map.ts";
  */
 
 export const PROJECT_ROOT = resolve(dirname(fileURLToPath(import.meta.url)), "..");
-/** Budget for the first load, JavaScript + CSS, gzip (issue #5). */
-export const INITIAL_LOAD_BUDGET_KB = 40;
+/**
+ * Budget for the first load, JavaScript + CSS, gzip, in each language. Issue #5 set 40 KB; issue #19 aims at
+ * 25 KB. One language at a time brought it to 29.2 KB (English) and 30.1 KB (Korean): 31 KB holds that line
+ * until the connection card's code that the first screen does not need loads later (docs/benchmarks.md).
+ */
+export const INITIAL_LOAD_BUDGET_KB = 31;
 
-export type InitialVia = "script" | "modulepreload" | "static import" | "stylesheet" | "css @import";
+export type InitialVia =
+  | "script"
+  | "modulepreload"
+  | "static import"
+  | "language chunk"
+  | "stylesheet"
+  | "css @import";
+
+/** The languages of the panel (src/i18n/locale.ts LOCALES; not imported, so the bench stays Node-only). */
+export const BUNDLE_LOCALES = ["en", "ko"] as const;
+export type BundleLocale = (typeof BUNDLE_LOCALES)[number];
 
 export interface InitialFile {
   /** Path relative to the build folder. */
@@ -151,8 +166,24 @@ function toFile(outDir: string, from: string, url: string): string {
   return normalize(abs);
 }
 
-/** Measures the first load (JavaScript and CSS) of a build folder. Throws with a clear message if it is not a build. */
-export function measureBundle(outDir: string): BundleFigures {
+/**
+ * The language chunks (`words-<locale>-….js`, scripts/vite-words-per-language.ts) a built chunk imports: the
+ * words of its catalogues, which the page loads before its first render.
+ */
+export function languageChunkImports(code: string, locale: string): string[] {
+  const out: string[] = [];
+  for (const m of code.matchAll(/import\(\s*[`"'](\.{1,2}\/[^`"']*?words-([a-z]+)-[^`"']+)[`"']\s*\)/g)) {
+    if (m[2] === locale) out.push(m[1]!);
+  }
+  return out;
+}
+
+/**
+ * Measures the first load (JavaScript and CSS) of a build folder for a person whose page speaks `locale`: the
+ * language chunks of the catalogues in the first load count too (only that language's). Throws with a clear
+ * message if it is not a build.
+ */
+export function measureBundle(outDir: string, locale: BundleLocale = "en"): BundleFigures {
   const indexHtml = join(outDir, "index.html");
   if (!existsSync(indexHtml))
     throw new Error(`${indexHtml} does not exist: build the app first (npm run build).`);
@@ -170,7 +201,7 @@ export function measureBundle(outDir: string): BundleFigures {
     if (seen.has(path)) continue;
     if (!existsSync(path)) {
       // An import match is a scan of minified code: skip what is not a file rather than fail on it.
-      if (via === "static import" || via === "css @import") continue;
+      if (via === "static import" || via === "language chunk" || via === "css @import") continue;
       throw new Error(`${relative(outDir, path)} is referenced by index.html but missing.`);
     }
     const bytes = readFileSync(path);
@@ -189,6 +220,8 @@ export function measureBundle(outDir: string): BundleFigures {
     }
     for (const spec of staticImports(code))
       queue.push({ path: toFile(outDir, path, spec), via: "static import" });
+    for (const spec of languageChunkImports(code, locale))
+      queue.push({ path: toFile(outDir, path, spec), via: "language chunk" });
     const mapPath = `${path}.map`;
     if (existsSync(mapPath)) {
       try {

@@ -1,5 +1,5 @@
-import type { Catalogue, MessageText, ParamArgs } from "./catalogue.ts";
-import type { Locale } from "./locale.ts";
+import type { Catalogue, Message, MessageText, ParamArgs } from "./catalogue.ts";
+import { LOCALES, type Locale } from "./locale.ts";
 
 /**
  * Looks messages up in one catalogue for one language. Made where the language is known (a view:
@@ -77,12 +77,23 @@ function fill<V>(text: string, locale: Locale, params: Readonly<Record<string, u
   return out;
 }
 
+/**
+ * A message's text in `locale`. In the hosted panel a catalogue holds only the languages loaded so far
+ * (split-catalogue.ts): the active one always; English, asked for by name (a technical detail), arrives just
+ * after the first render, and until then the text of the language that is there stands in for it.
+ */
+function textOf(message: Message | undefined, locale: Locale): MessageText | undefined {
+  if (!message) return undefined;
+  const loaded: { readonly [L in Locale]?: MessageText } = message;
+  return loaded[locale] ?? loaded.en ?? LOCALES.map((l) => loaded[l]).find((t) => t !== undefined);
+}
+
 export function translator<M extends Catalogue>(messages: M, locale: Locale): Translator<M> {
   const lookUp = <V>(key: string, params: Readonly<Record<string, unknown>> = {}): (string | V)[] => {
-    const message = messages[key];
+    const text = textOf(messages[key], locale);
     // Unreachable from typed code; a key rather than an exception keeps the page drawn.
-    if (!message) return [key];
-    return fill<V>(chooseText(message[locale], locale, params), locale, params);
+    if (text === undefined) return [key];
+    return fill<V>(chooseText(text, locale, params), locale, params);
   };
   const t = (key: string, params?: Readonly<Record<string, unknown>>): string =>
     lookUp<string>(key, params).join("");

@@ -1,5 +1,7 @@
 import "./styles.css";
 import { render } from "lit-html";
+import type { Locale } from "../i18n/locale.ts";
+import { keepLanguage, loadLanguage } from "../i18n/split-catalogue.ts";
 import { initialState } from "./app-state.ts";
 import { answerBusyQueries, busySentence } from "./busy.ts";
 import { refreshKnownPorts, stopActivity } from "./features/connection/actions.ts";
@@ -10,7 +12,7 @@ import { Session } from "./session.ts";
 import { showRoute, viewArrived } from "./shell/actions.ts";
 import { appView, pageTitle } from "./shell/app-view.ts";
 import { escapeTakenElsewhere } from "./shell/escape.ts";
-import { browserStorage, startLocale } from "./shell/locale-choice.ts";
+import { pageStartLocale } from "./shell/locale-choice.ts";
 import { DEFAULT_VIEW, VIEWS } from "./shell/registry.ts";
 import type { AppView, ViewContext } from "./shell/view-types.ts";
 import { createStore, frameScheduler } from "./store.ts";
@@ -27,7 +29,7 @@ function demoTimeScaleForTests(): number | undefined {
 }
 
 /** Builds the panel into #app and wires it to the page: rendering, routes, Escape (Stop), the port list. */
-function startApp(root: HTMLElement): void {
+function startApp(root: HTMLElement, locale: Locale): void {
   const serial = webSerial();
   const store = createStore(
     initialState({
@@ -35,7 +37,7 @@ function startApp(root: HTMLElement): void {
       secureContext: window.isSecureContext,
       route: routeFromHash(location.hash, VIEWS) ?? DEFAULT_VIEW,
       // The saved choice of the language switch, else the browser's languages (index.html says "en" until now).
-      locale: startLocale(browserStorage(), navigator.languages ?? [navigator.language]),
+      locale,
     }),
   );
   const packetLog = new PacketLog(LOG_CAPACITY, (clockMs) => session.epochOf(clockMs));
@@ -117,5 +119,12 @@ function startApp(root: HTMLElement): void {
 
 const root = document.getElementById("app");
 if (!root) throw new Error("index.html has no #app element");
-root.textContent = "";
-startApp(root);
+// The hosted build loads each catalogue's languages one at a time (docs/i18n.md, "One language at a time"):
+// nothing is drawn before the words of the page's language are there; English follows in the background
+// (the technical detail's language). Elsewhere (the dev server, the one-file panel) there is nothing to wait for.
+const locale = pageStartLocale();
+void loadLanguage(locale).then(() => {
+  root.textContent = "";
+  startApp(root, locale);
+  if (locale !== "en") void keepLanguage("en").catch(() => undefined);
+});

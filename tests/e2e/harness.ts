@@ -31,6 +31,7 @@ const INPUTS = [
   "public",
   "index.html",
   "vite.config.ts",
+  "scripts/vite-words-per-language.ts",
   "package-lock.json",
   "tests/e2e/fake-serial-entry.ts",
 ];

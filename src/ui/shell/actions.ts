@@ -1,4 +1,5 @@
 import type { Locale } from "../../i18n/locale.ts";
+import { loadLanguage } from "../../i18n/split-catalogue.ts";
 import type { AppState } from "../app-state.ts";
 import type { Store } from "../store.ts";
 import { browserStorage, saveLocale } from "./locale-choice.ts";
@@ -14,10 +15,26 @@ export function viewArrived(store: Store<AppState>): void {
 }
 
 /**
- * The language switch: the panel speaks `locale` from the next frame on (main.ts also sets the page's `lang`)
- * and remembers it for the next visit. Sentences already shown (notices) keep the language they were made in.
+ * The language switch: once every catalogue there is holds `locale` (the hosted build loads a language when it
+ * is first chosen: src/i18n/split-catalogue.ts), the panel speaks it from the next frame on (main.ts also sets
+ * the page's `lang`) and remembers it for the next visit. Sentences already shown (notices) keep the language
+ * they were made in. If its words cannot be loaded (offline before the page was ever kept), nothing changes
+ * and the switch shows the language still spoken.
  */
-export function chooseLocale(store: Store<AppState>, locale: Locale, storage = browserStorage()): void {
+export async function chooseLocale(
+  store: Store<AppState>,
+  locale: Locale,
+  storage = browserStorage(),
+  load: (locale: Locale) => Promise<void> = loadLanguage,
+): Promise<boolean> {
+  try {
+    await load(locale);
+  } catch {
+    // The select shows what it was set to: draw it again with the language still spoken.
+    store.update({});
+    return false;
+  }
   if (locale !== store.get().locale) store.update({ locale });
   saveLocale(storage, locale);
+  return true;
 }

@@ -42,3 +42,12 @@ export function saveLocale(storage: LocaleStorage | undefined, locale: Locale): 
 export function startLocale(storage: LocaleStorage | undefined, languages: readonly string[]): Locale {
   return savedLocale(storage) ?? pickLocale(languages);
 }
+
+/**
+ * The page's language at start: the saved choice, else the browser's languages. main.ts starts the state with
+ * it, and the hosted build's catalogue modules load its words first (src/i18n/split-catalogue.ts), so both
+ * agree before anything is drawn.
+ */
+export function pageStartLocale(): Locale {
+  return startLocale(browserStorage(), navigator.languages ?? [navigator.language]);
+}

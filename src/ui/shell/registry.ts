@@ -1,12 +1,12 @@
-import robotView from "../features/robot/robot-view.ts";
 import type { NavRegistration } from "./view-types.ts";
 
 /**
  * The side navigation, in order. A new view is one file exporting `default: AppView` plus one line here (and
- * its name in ./messages.ts); views other than the first load lazily.
+ * its name in ./messages.ts). Every view loads lazily, the Robot view too: the first page is the connection
+ * card, and the Robot view's code and words arrive while the robot is being connected (first load: issue 19).
  */
 export const VIEWS: readonly NavRegistration[] = [
-  { id: "robot", label: "nav.robot", load: async () => ({ default: robotView }) },
+  { id: "robot", label: "nav.robot", load: () => import("../features/robot/robot-view.ts") },
   { id: "zeros", label: "nav.zeros", load: () => import("../features/zeros/zeros-view.ts") },
   { id: "motions", label: "nav.motions", load: () => import("../features/motions/motions-view.ts") },
   { id: "editor", label: "nav.editor", load: () => import("../features/editor/editor-view.ts") },

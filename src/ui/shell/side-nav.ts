@@ -16,7 +16,7 @@ function languageSwitch(ctx: ViewContext): TemplateResult {
   const t = translator(shellMessages, locale);
   const change = (e: Event): void => {
     const value = (e.target as HTMLSelectElement).value;
-    if (isLocale(value)) chooseLocale(ctx.store, value);
+    if (isLocale(value)) void chooseLocale(ctx.store, value);
   };
   return html`
     <div class="language-switch">
