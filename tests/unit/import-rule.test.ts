@@ -24,13 +24,21 @@ type Layer = "protocol" | "link" | "device" | "motion" | "sim" | "shared" | "i18
 const MAY_IMPORT: Record<Layer, readonly Layer[]> = {
   shared: [],
   i18n: ["shared"],
-  protocol: ["shared"],
+  protocol: ["shared", "i18n"],
   link: ["shared"],
   motion: ["protocol", "shared"],
   sim: ["protocol", "motion", "shared"],
   device: ["protocol", "link", "motion", "shared", "i18n"],
   ui: ["device", "protocol", "motion", "link", "sim", "shared", "i18n"],
   cli: ["device", "protocol", "motion", "link", "sim", "shared", "i18n"],
+};
+
+/**
+ * Type-only imports (`import type`) allowed beyond MAY_IMPORT: the outcome catalogue (src/i18n/outcomes) words
+ * the codes and facts that protocol/, link/ and device/ define, so it names their types; it never runs their code.
+ */
+const MAY_IMPORT_TYPES: Partial<Record<Layer, readonly Layer[]>> = {
+  i18n: ["protocol", "link", "device"],
 };
 
 /** The layers whose index.ts is the public API (docs/architecture.md); shared/ and i18n/ are leaves used file by file. */
@@ -83,7 +91,17 @@ const IMPORT_PATTERNS: readonly RegExp[] = [
 ];
 
 function importsOf(text: string): string[] {
-  return IMPORT_PATTERNS.flatMap((pattern) => [...text.matchAll(pattern)].map((m) => m[1] ?? ""));
+  return importsWithKind(text).map((i) => i.spec);
+}
+
+/** Each import's specifier, and whether it is type-only (`import type … from`, erased at build time). */
+function importsWithKind(text: string): { spec: string; typeOnly: boolean }[] {
+  return IMPORT_PATTERNS.flatMap((pattern) =>
+    [...text.matchAll(pattern)].map((m) => ({
+      spec: m[1] ?? "",
+      typeOnly: /^\s*(?:import|export)\s+type\s/.test(m[0]),
+    })),
+  );
 }
 
 function layerOf(path: string): Layer | undefined {
@@ -117,7 +135,7 @@ function importViolations(files: readonly SourceFile[]): string[] {
       say("", "a source file outside the layers of docs/architecture.md");
       continue;
     }
-    for (const spec of importsOf(file.text)) {
+    for (const { spec, typeOnly } of importsWithKind(file.text)) {
       if (!spec.startsWith(".")) {
         const rule = PACKAGES.find(({ test }) => test.test(spec));
         if (rule && !rule.allowed(file.path)) say(spec, `package not allowed in ${from}/`);
@@ -131,7 +149,8 @@ function importViolations(files: readonly SourceFile[]): string[] {
       }
       const to = layerOf(target);
       if (to === from) continue;
-      if (!to || !MAY_IMPORT[from].includes(to)) {
+      const typesAllowed = typeOnly && to !== undefined && (MAY_IMPORT_TYPES[from] ?? []).includes(to);
+      if (!to || !(MAY_IMPORT[from].includes(to) || typesAllowed)) {
         say(spec, `${from}/ may not import ${to ?? "that folder"}/`);
         continue;
       }
@@ -248,6 +267,20 @@ describe("the import rule (docs/architecture.md)", () => {
       'src/motion/document.ts: "../i18n/translate.ts" (motion/ may not import i18n/)',
       'src/ui/app.ts: "../cli/main.ts" (ui/ may not import cli/)',
       'src/shared/clock.ts: "../protocol/index.ts" (shared/ may not import protocol/)',
+    ]);
+  });
+
+  it("lets the outcome catalogue name the types it words, and nothing more", () => {
+    const typeOnly = {
+      path: "src/i18n/outcomes/words.ts",
+      text: 'import type { RbcErrorCode } from "../../device/index.ts";\n',
+    };
+    const value = {
+      path: "src/i18n/outcomes/other.ts",
+      text: 'import { RbcError } from "../../device/errors.ts";\n',
+    };
+    expect(importViolations([...base, typeOnly, value])).toEqual([
+      'src/i18n/outcomes/other.ts: "../../device/errors.ts" (i18n/ may not import device/)',
     ]);
   });
 
