@@ -16,9 +16,10 @@ import { launchChromium } from "../support/chromium.ts";
 import type { RbcTestOptions } from "./rbc-test-globals.ts";
 
 /**
- * The simulated robot's time 4 times faster than real time, for tests that wait for motions, sounds, uploads
- * or polling: the panel's client shares the clock, so every duration and timeout keeps its proportions, and
- * the shortest timeout (400 ms of the robot's time) still leaves 100 ms of real time on a busy machine.
+ * The simulated robot's virtual clock paced at up to 4 times real speed, for tests that wait for motions,
+ * sounds, uploads or polling: the panel's client shares the clock, so every duration and timeout keeps its
+ * proportions, and a reply always beats its timeout (timers run in due order, and a starved page pauses the
+ * robot's time rather than letting it jump).
  */
 export const FAST: RbcTestOptions = { timeScale: 4 };
 
@@ -228,7 +229,7 @@ export async function connectRobot(page: Page, url: string): Promise<void> {
 }
 
 /**
- * Waits `ms` of the simulated robot's time (the fake port's clock; faster than real time with `timeScale`).
+ * Waits `ms` of the simulated robot's time (the fake port's virtual clock).
  * For what can only be seen as nothing happening: "no byte goes out for a while".
  */
 export async function robotTime(page: Page, ms: number): Promise<void> {
