@@ -10,7 +10,8 @@
  * most `pace` ms of robot time per real ms, so a test can still click Stop while a motion plays. When the page
  * falls behind (a starved machine, a long render), robot time waits for it instead of jumping ahead: a stall of
  * the page is a pause of the robot, never a burst of expired timeouts. `now()` between timers follows real time
- * at the same pace, but never passes the next timer that has not run yet.
+ * at the same pace, but never passes the next timer that has not run yet; inside a timer's callback it is
+ * exactly that timer's due time.
  */
 import { type Clock, realClock, type TimerId } from "../../src/shared/clock.ts";
 
@@ -34,6 +35,8 @@ export class PacedVirtualClock implements Clock {
   private anchorTime = 0;
   private wake: TimerId | undefined;
   private wakeAt = Number.POSITIVE_INFINITY;
+  /** True while a timer's callback runs: its `now()` is exactly its due time. */
+  private inTimer = false;
 
   /**
    * @param pace robot ms per real ms at most (1: real speed; 4: four times faster).
@@ -48,6 +51,7 @@ export class PacedVirtualClock implements Clock {
   }
 
   now(): number {
+    if (this.inTimer) return this.time;
     const next = this.earliest();
     const paced = this.anchorTime + (this.host.now() - this.anchorHost) * this.pace;
     this.time = Math.max(this.time, Math.min(paced, next ? next.due : paced));
@@ -101,9 +105,11 @@ export class PacedVirtualClock implements Clock {
     }
     this.timers = this.timers.filter((t) => t !== next);
     this.time = Math.max(this.time, next.due);
+    this.inTimer = true;
     try {
       next.fn();
     } finally {
+      this.inTimer = false;
       this.schedule();
     }
   }

@@ -20,7 +20,10 @@ class ManualHost implements Clock {
   }
   /** The earliest task's due time (host ms), if any. */
   get nextDue(): number | undefined {
-    return this.tasks.reduce<number | undefined>((m, t) => (m === undefined || t.due < m ? t.due : m), undefined);
+    return this.tasks.reduce<number | undefined>(
+      (m, t) => (m === undefined || t.due < m ? t.due : m),
+      undefined,
+    );
   }
   /** Moves real time to `t` (at once, as a stalled page sees it), then runs the tasks due by then, in order. */
   runUntil(t: number): void {
