@@ -258,5 +258,35 @@ export async function openMotions(page: Page, url: string): Promise<void> {
   await page.getByTestId("mem-motion-text").filter({ hasText: "24,576 of 24,576" }).waitFor();
 }
 
+/**
+ * Stops the simulated robot's time (the fake port's robot and the demo robot) until `releaseRobot`: the panel
+ * still renders and answers, but no reply, motion frame or timeout happens, so a test can look at a motion or
+ * a sound in the middle however slowly its own steps run.
+ */
+export async function holdRobot(page: Page): Promise<void> {
+  await page.evaluate(() => window.__rbcTest?.clock.hold());
+}
+
+/** Lets the simulated robot's time run again (see `holdRobot`). */
+export async function releaseRobot(page: Page): Promise<void> {
+  await page.evaluate(() => window.__rbcTest?.clock.release());
+}
+
+/**
+ * Waits in the page until `selector`'s text contains `text`, and returns the robot's time (ms of its clock)
+ * at that moment, not after the test's next steps.
+ */
+export async function robotTimeWhenShown(page: Page, selector: string, text: RegExp): Promise<number> {
+  const handle = await page.waitForFunction(
+    ({ selector, source, flags }) => {
+      const pattern = new RegExp(source, flags);
+      const shown = [...document.querySelectorAll(selector)].some((e) => pattern.test(e.textContent ?? ""));
+      return shown ? (window.__rbcTest?.clock.now() ?? Number.NaN) : false;
+    },
+    { selector, source: text.source, flags: text.flags },
+  );
+  return (await handle.jsonValue()) as number;
+}
+
 /** The simulated robot's time (ms of its clock). */
 export const robotNow = (page: Page) => page.evaluate(() => window.__rbcTest?.clock.now() ?? Number.NaN);

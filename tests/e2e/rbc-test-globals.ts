@@ -1,5 +1,5 @@
-import type { Clock } from "../../src/shared/clock.ts";
 import type { FakeSerial, MockSerialPort, SimulatedRbc, SimulatedRbcOptions } from "../../src/sim/index.ts";
+import type { PacedVirtualClock } from "../support/paced-clock.ts";
 
 /** What the injected fake `navigator.serial` exposes to tests (see fake-serial-entry.ts). */
 export interface RbcTestHandle {
@@ -11,7 +11,7 @@ export interface RbcTestHandle {
    * virtual clock that runs its timers in due order at most `timeScale` times real speed, and pauses rather
    * than jumps when the page falls behind (tests/support/paced-clock.ts).
    */
-  clock: Clock;
+  clock: PacedVirtualClock;
 }
 
 /** Set by a test before the page loads, read by the fake. */

@@ -37,6 +37,8 @@ export class PacedVirtualClock implements Clock {
   private wakeAt = Number.POSITIVE_INFINITY;
   /** True while a timer's callback runs: its `now()` is exactly its due time. */
   private inTimer = false;
+  /** Robot time stands still (`hold`) while a test looks at the panel. */
+  private held = false;
 
   /**
    * @param pace robot ms per real ms at most (1: real speed; 4: four times faster).
@@ -51,7 +53,7 @@ export class PacedVirtualClock implements Clock {
   }
 
   now(): number {
-    if (this.inTimer) return this.time;
+    if (this.inTimer || this.held) return this.time;
     const next = this.earliest();
     const paced = this.anchorTime + (this.host.now() - this.anchorHost) * this.pace;
     this.time = Math.max(this.time, Math.min(paced, next ? next.due : paced));
@@ -69,6 +71,28 @@ export class PacedVirtualClock implements Clock {
     this.timers = this.timers.filter((t) => t.id !== id);
   }
 
+  /**
+   * Stops robot time until `release`: no timer runs and `now()` stands still, so a test can look at the panel
+   * in the middle of a motion or a sound however long its own steps take on a busy machine.
+   */
+  hold(): void {
+    if (this.held) return;
+    this.now();
+    this.held = true;
+    if (this.wake !== undefined) this.host.clearTimeout(this.wake);
+    this.wake = undefined;
+    this.wakeAt = Number.POSITIVE_INFINITY;
+  }
+
+  /** Lets robot time run again from where `hold` stopped it. */
+  release(): void {
+    if (!this.held) return;
+    this.held = false;
+    this.anchorHost = this.host.now();
+    this.anchorTime = this.time;
+    this.schedule();
+  }
+
   /** Timers not yet run. */
   get pending(): number {
     return this.timers.length;
@@ -77,7 +101,7 @@ export class PacedVirtualClock implements Clock {
   /** Asks the host to wake this clock when the earliest timer falls due (robot time → real time at the pace). */
   private schedule(): void {
     const next = this.earliest();
-    if (!next) return;
+    if (!next || this.held) return;
     const at = this.anchorHost + (next.due - this.anchorTime) / this.pace;
     if (this.wake !== undefined && this.wakeAt <= at) return;
     if (this.wake !== undefined) this.host.clearTimeout(this.wake);
@@ -90,7 +114,7 @@ export class PacedVirtualClock implements Clock {
     this.wake = undefined;
     this.wakeAt = Number.POSITIVE_INFINITY;
     const next = this.earliest();
-    if (!next) return;
+    if (!next || this.held) return;
     const hostNow = this.host.now();
     const paced = this.anchorTime + (hostNow - this.anchorHost) * this.pace;
     if (paced < next.due) {

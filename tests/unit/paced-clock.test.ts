@@ -118,6 +118,24 @@ describe("PacedVirtualClock (the browser tests' robot clock)", () => {
     expect(order).toEqual(["d", "a", "c"]);
   });
 
+  it("stands still while held: no timer runs and now() does not move, then goes on from there", () => {
+    const host = new ManualHost();
+    const clock = new PacedVirtualClock(4, host);
+    const seen: number[] = [];
+    clock.setTimeout(() => seen.push(clock.now()), 400);
+    host.runUntil(50); // 200 ms of robot time
+    clock.hold();
+    expect(clock.now()).toBe(200);
+    host.runUntil(10_000);
+    expect(seen).toEqual([]);
+    expect(clock.now()).toBe(200);
+    clock.release();
+    host.runUntil(10_049);
+    expect(seen).toEqual([]);
+    host.runUntil(10_050);
+    expect(seen).toEqual([400]);
+  });
+
   it("refuses a pace that is not a positive number", () => {
     expect(() => new PacedVirtualClock(0)).toThrow(RangeError);
     expect(() => new PacedVirtualClock(Number.NaN)).toThrow(RangeError);
