@@ -11,9 +11,10 @@ import { splitCommand } from "../../src/cli/args.ts";
 import { Cleanups } from "../../src/cli/cleanups.ts";
 import type { RunEnv } from "../../src/cli/command.ts";
 import { findCommand } from "../../src/cli/commands/index.ts";
-import { CliError, EXIT, errorLine, UsageError } from "../../src/cli/errors.ts";
+import { CliError, EXIT, errorCode, errorLine, UsageError } from "../../src/cli/errors.ts";
 import { cliLocale } from "../../src/cli/locale.ts";
 import { Output } from "../../src/cli/output.ts";
+import { RbcUploadError } from "../../src/device/errors.ts";
 import { VirtualClock } from "../../src/shared/clock.ts";
 import { driveClock } from "../support/drive-clock.ts";
 import { REPO } from "./spawn-cli.ts";
@@ -72,7 +73,13 @@ export async function runInProcess(argv: string[], options: InProcessOptions = {
     code = await driveClock(clock, def.run(runEnv));
   } catch (e) {
     out.note(`rbc: ${errorLine(e, locale)}`);
-    out.result({ ok: false, error: { message: errorLine(e) } });
+    const details =
+      e instanceof RbcUploadError
+        ? { acknowledged: e.acknowledged, total: e.total, outcome: e.outcome }
+        : e instanceof CliError && !(e instanceof UsageError)
+          ? e.details
+          : {};
+    out.result({ ok: false, error: { code: errorCode(e), message: errorLine(e), ...details } });
     code = e instanceof UsageError ? EXIT.usage : e instanceof CliError ? e.exitCode : EXIT.failed;
   } finally {
     await driveClock(clock, cleanups.run());
