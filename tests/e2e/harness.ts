@@ -34,6 +34,8 @@ const INPUTS = [
   "vite.config.ts",
   "package-lock.json",
   "tests/e2e/fake-serial-entry.ts",
+  "tests/e2e/rbc-test-globals.ts",
+  "tests/support/paced-clock.ts",
 ];
 
 async function listFiles(path: string): Promise<string[]> {

@@ -116,8 +116,12 @@ describe("motions view: running motions and sounds", () => {
       timeout: 6000,
     });
     await page.getByText(/Other download slots/).click();
+    // The click happens while the robot's time stands still, so `started` is the robot's time of the click
+    // however long the click takes on a busy machine.
+    await holdRobot(page);
     const started = await robotNow(page);
     await page.locator('[data-slot-motion="42"]').click();
+    await releaseRobot(page);
     // The robot's time when the notice appeared (read in the page, not after the test's next steps).
     const shownAt = await robotTimeWhenShown(
       page,
