@@ -51,10 +51,6 @@ export default defineConfig({
           // Two browser files at a time (one per core): each has its own Chromium and page, and the app build
           // they share is made once (tests/e2e/harness.ts is safe when two files start together).
           fileParallelism: true,
-          // A browser test that fails is run once more: on a shared 2-core machine, a starved page can miss a
-          // timer by a few milliseconds. A test that passes only on its retry is listed as "(retry x1)" in the
-          // output, so flaky tests stay visible; one that fails twice fails the run.
-          retry: 1,
         },
       },
     ],

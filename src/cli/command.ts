@@ -1,5 +1,6 @@
 import type { Locale } from "../i18n/locale.ts";
 import type { Translator } from "../i18n/translate.ts";
+import type { Clock } from "../shared/clock.ts";
 import type { helpMessages } from "./help/messages.ts";
 import type { Output } from "./output.ts";
 
@@ -29,6 +30,11 @@ export interface RunEnv {
    * English when not given. `--json` output does not depend on it.
    */
   locale?: Locale;
+  /**
+   * For tests that run a command in their own process: the clock of the demo robot (a virtual clock the test
+   * drives) instead of real time under RBC_DEMO_TIME_SCALE. main never sets it.
+   */
+  demoClock?: Clock;
 }
 
 /** The language of `env`: English unless main chose another. */

@@ -129,7 +129,7 @@ async function robotTransport(
   env: RunEnv,
 ): Promise<{ transport: Transport; dispose: () => void; clock: Clock; bootloader?: BootloaderRbc }> {
   if (target.demo) {
-    const clock = demoClock(demoTimeScale(env.env, command));
+    const clock = env.demoClock ?? demoClock(demoTimeScale(env.env, command));
     return { clock, ...demoTransport(clock, demoVariant(env.env, command)) };
   }
   // Loaded here only: the native serialport binding is not needed for --demo (and never in the web app).

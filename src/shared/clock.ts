@@ -82,6 +82,11 @@ export class VirtualClock implements Clock {
     return this.timers.length;
   }
 
+  /** When the earliest timer not yet run falls due, or undefined when none is set. */
+  get nextDue(): number | undefined {
+    return this.earliest()?.due;
+  }
+
   /** Moves time forward by `ms`, running every timer that falls due on the way. */
   async advance(ms: number): Promise<void> {
     await this.advanceTo(this.time + ms);

@@ -28,6 +28,11 @@ export interface DemoRobotOptions {
    */
   timeScale?: number;
   /**
+   * The clock to run the demo robot on instead (tests only: a virtual clock the test drives); wins over
+   * `timeScale`. The simulator, the mock port and the client share it.
+   */
+  clock?: Clock;
+  /**
    * Behind a simulated Bluetooth link instead of a USB adapter: replies 300 ± 150 ms late (seeded, so the same
    * on every run), delivered in bursts, and a port that reports the Serial Port Profile.
    */
@@ -42,7 +47,7 @@ export interface DemoRobotOptions {
  */
 export function createDemoRobot(options: DemoRobotOptions = {}): DemoRobot {
   const scale = options.timeScale ?? 1;
-  const clock = scale === 1 ? realClock : scaledClock(scale);
+  const clock = options.clock ?? (scale === 1 ? realClock : scaledClock(scale));
   // The same world as the CLI's --demo (src/sim/demo-world.ts).
   const sim = createDemoRbc({ clock });
   const boot = new BootloaderRbc(sim);

@@ -2,8 +2,10 @@ import "./styles.css";
 import { render } from "lit-html";
 import type { Locale } from "../i18n/locale.ts";
 import { keepLanguage, loadLanguage } from "../i18n/split-catalogue.ts";
+import type { Clock } from "../shared/clock.ts";
 import { initialState } from "./app-state.ts";
 import { answerBusyQueries, busySentence } from "./busy.ts";
+import type { DemoRobotOptions } from "./demo-robot.ts";
 import { refreshKnownPorts, stopActivity } from "./features/connection/actions.ts";
 import { LOG_CAPACITY, PacketLog } from "./features/log/packet-log.ts";
 import { routeFromHash, ViewLoader } from "./router.ts";
@@ -18,14 +20,17 @@ import type { AppView, ViewContext } from "./shell/view-types.ts";
 import { createStore, frameScheduler } from "./store.ts";
 
 /**
- * Browser tests may run the demo robot faster (`timeScale` in tests/e2e/rbc-test-globals.ts, set before the
- * page loads). Nothing else sets it, so people always get a demo robot on real time, and a robot on a cable is
- * never affected.
+ * Browser tests run the demo robot on the clock of their fake serial port (`window.__rbcTest.clock`, a virtual
+ * clock set by tests/e2e/fake-serial-entry.ts before the page loads). Nothing else sets it, so people always
+ * get a demo robot on real time, and a robot on a cable is never affected.
  */
-function demoTimeScaleForTests(): number | undefined {
-  const options = (window as unknown as { __rbcTestOptions?: { timeScale?: unknown } }).__rbcTestOptions;
-  const scale = options?.timeScale;
-  return typeof scale === "number" && Number.isFinite(scale) && scale > 0 ? scale : undefined;
+function demoOptionsForTests(): DemoRobotOptions {
+  const clock = (window as unknown as { __rbcTest?: { clock?: Partial<Clock> } }).__rbcTest?.clock;
+  const isClock =
+    typeof clock?.now === "function" &&
+    typeof clock.setTimeout === "function" &&
+    typeof clock.clearTimeout === "function";
+  return isClock ? { clock: clock as Clock } : {};
 }
 
 /** Builds the panel into #app and wires it to the page: rendering, routes, Escape (Stop), the port list. */
@@ -41,7 +46,7 @@ function startApp(root: HTMLElement, locale: Locale): void {
     }),
   );
   const packetLog = new PacketLog(LOG_CAPACITY, (clockMs) => session.epochOf(clockMs));
-  const session = new Session(store, packetLog, { demo: { timeScale: demoTimeScaleForTests() } });
+  const session = new Session(store, packetLog, { demo: demoOptionsForTests() });
   const app = { store, session, packetLog };
   const loader = new ViewLoader(VIEWS, () => viewArrived(store));
 

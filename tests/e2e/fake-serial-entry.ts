@@ -1,17 +1,19 @@
 /**
  * Bundled into an IIFE by the harness and injected before the app's scripts: a `navigator.serial` made of the
  * project's own FakeSerial, MockSerialPort and SimulatedRbc (headless Chromium's real chooser never settles).
- * With `timeScale`, the simulated robot runs on a faster clock, which its port carries to the panel's client;
+ * The simulated robot runs on a virtual clock that advances itself timer by timer (`PacedVirtualClock`, at most
+ * `timeScale` times real speed), which its port carries to the panel's client and on which the page's demo robot
+ * runs too (src/ui/main.ts reads `__rbcTest.clock`);
  * with `variant`, it is one of the firmware builds of docs/protocol.md §3.5; with `bluetooth`, a paired Bluetooth
  * module behind a slow, bursty link.
  */
-import { realClock, scaledClock } from "../../src/shared/clock.ts";
 import { bluetoothLinkOptions, FakeSerial, MockSerialPort, SimulatedRbc } from "../../src/sim/index.ts";
 import { SIMULATED_CLOCK } from "../../src/ui/simulated-clock.ts";
+import { PacedVirtualClock } from "../support/paced-clock.ts";
 import "./rbc-test-globals.ts";
 
 const options = window.__rbcTestOptions ?? {};
-const clock = (options.timeScale ?? 1) === 1 ? realClock : scaledClock(options.timeScale ?? 1);
+const clock = new PacedVirtualClock(options.timeScale ?? 1);
 const sim = new SimulatedRbc({ clock, ...options.variant });
 const link = options.bluetooth
   ? bluetoothLinkOptions(options.latencyMs === undefined ? {} : { latencyMs: options.latencyMs })

@@ -16,9 +16,10 @@ import { launchChromium } from "../support/chromium.ts";
 import type { RbcTestOptions } from "./rbc-test-globals.ts";
 
 /**
- * The simulated robot's time 4 times faster than real time, for tests that wait for motions, sounds, uploads
- * or polling: the panel's client shares the clock, so every duration and timeout keeps its proportions, and
- * the shortest timeout (400 ms of the robot's time) still leaves 100 ms of real time on a busy machine.
+ * The simulated robot's virtual clock paced at up to 4 times real speed, for tests that wait for motions,
+ * sounds, uploads or polling: the panel's client shares the clock, so every duration and timeout keeps its
+ * proportions, and a reply always beats its timeout (timers run in due order, and a starved page pauses the
+ * robot's time rather than letting it jump).
  */
 export const FAST: RbcTestOptions = { timeScale: 4 };
 
@@ -34,6 +35,8 @@ const INPUTS = [
   "scripts/vite-words-per-language.ts",
   "package-lock.json",
   "tests/e2e/fake-serial-entry.ts",
+  "tests/e2e/rbc-test-globals.ts",
+  "tests/support/paced-clock.ts",
 ];
 
 async function listFiles(path: string): Promise<string[]> {
@@ -229,7 +232,7 @@ export async function connectRobot(page: Page, url: string): Promise<void> {
 }
 
 /**
- * Waits `ms` of the simulated robot's time (the fake port's clock; faster than real time with `timeScale`).
+ * Waits `ms` of the simulated robot's time (the fake port's virtual clock).
  * For what can only be seen as nothing happening: "no byte goes out for a while".
  */
 export async function robotTime(page: Page, ms: number): Promise<void> {
@@ -256,6 +259,36 @@ export async function openMotions(page: Page, url: string): Promise<void> {
   await page.getByRole("link", { name: "Motions" }).click();
   await page.getByTestId("memory-card").waitFor();
   await page.getByTestId("mem-motion-text").filter({ hasText: "24,576 of 24,576" }).waitFor();
+}
+
+/**
+ * Stops the simulated robot's time (the fake port's robot and the demo robot) until `releaseRobot`: the panel
+ * still renders and answers, but no reply, motion frame or timeout happens, so a test can look at a motion or
+ * a sound in the middle however slowly its own steps run.
+ */
+export async function holdRobot(page: Page): Promise<void> {
+  await page.evaluate(() => window.__rbcTest?.clock.hold());
+}
+
+/** Lets the simulated robot's time run again (see `holdRobot`). */
+export async function releaseRobot(page: Page): Promise<void> {
+  await page.evaluate(() => window.__rbcTest?.clock.release());
+}
+
+/**
+ * Waits in the page until `selector`'s text contains `text`, and returns the robot's time (ms of its clock)
+ * at that moment, not after the test's next steps.
+ */
+export async function robotTimeWhenShown(page: Page, selector: string, text: RegExp): Promise<number> {
+  const handle = await page.waitForFunction(
+    ({ selector, source, flags }) => {
+      const pattern = new RegExp(source, flags);
+      const shown = [...document.querySelectorAll(selector)].some((e) => pattern.test(e.textContent ?? ""));
+      return shown ? (window.__rbcTest?.clock.now() ?? Number.NaN) : false;
+    },
+    { selector, source: text.source, flags: text.flags },
+  );
+  return (await handle.jsonValue()) as number;
 }
 
 /** The simulated robot's time (ms of its clock). */

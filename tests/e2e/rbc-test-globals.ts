@@ -1,13 +1,17 @@
-import type { Clock } from "../../src/shared/clock.ts";
 import type { FakeSerial, MockSerialPort, SimulatedRbc, SimulatedRbcOptions } from "../../src/sim/index.ts";
+import type { PacedVirtualClock } from "../support/paced-clock.ts";
 
 /** What the injected fake `navigator.serial` exposes to tests (see fake-serial-entry.ts). */
 export interface RbcTestHandle {
   sim: SimulatedRbc;
   port: MockSerialPort;
   serial: FakeSerial;
-  /** The simulated robot's clock (real time, or faster with `timeScale`), shared with the panel's client. */
-  clock: Clock;
+  /**
+   * The simulated robots' clock (the fake port's and the demo robot's), shared with the panel's client: a
+   * virtual clock that runs its timers in due order at most `timeScale` times real speed, and pauses rather
+   * than jumps when the page falls behind (tests/support/paced-clock.ts).
+   */
+  clock: PacedVirtualClock;
 }
 
 /** Set by a test before the page loads, read by the fake. */
@@ -29,9 +33,9 @@ export interface RbcTestOptions {
   /** The chooser is a browser's before Chrome 117: it refuses a filter with only a Bluetooth service class. */
   noBluetoothChooser?: boolean;
   /**
-   * Runs the simulated robot's time this many times faster than real time (default 1): the fake port's robot
-   * and the in-app demo robot, each with the panel's client on the same clock, so every motion, sound, upload,
-   * timeout and polling period keeps its proportions. Never touches a real robot.
+   * Lets the simulated robot's virtual clock run up to this many times faster than real time (default 1): the
+   * fake port's robot and the in-app demo robot, each with the panel's client on the same clock, so every
+   * motion, sound, upload, timeout and polling period keeps its proportions. Never touches a real robot.
    */
   timeScale?: number;
   /**

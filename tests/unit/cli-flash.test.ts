@@ -6,12 +6,13 @@ import { afterAll, afterEach, beforeAll, describe, expect, it } from "vitest";
 import { DEMO_FIRMWARE_FILE, demoFirmwareExample } from "../../scripts/make-firmware-example.ts";
 import { createPtyPair } from "../../src/cli/pty.ts";
 import { demoFirmwareHex } from "../../src/sim/index.ts";
-import { CliScope, FAST_DEMO, killAll, REPO, runCli, startCli } from "../cli/spawn-cli.ts";
+import { runInProcess } from "../cli/in-process.ts";
+import { CliScope, killAll, REPO, runCli, startCli } from "../cli/spawn-cli.ts";
 import { firmwareHex } from "../support/hex.ts";
 
 /**
- * `rbc flash`: the built CLI against the demo robot (its bootloader restarts by itself) and against `rbc sim`
- * over a socat PTY pair (power-cycled with SIGUSR1). Every firmware file is made here, by the project.
+ * `rbc flash`: in this process against the demo robot on a virtual clock (its bootloader restarts by itself),
+ * and the built CLI against `rbc sim` over a socat PTY pair (power-cycled with SIGUSR1). Every firmware file is made here, by the project.
  */
 
 let dir: string;
@@ -33,7 +34,7 @@ describe("rbc flash --demo", () => {
   it("writes the example file and reports the version the robot reads back (2.23 → 2.50)", {
     timeout: 30_000,
   }, async () => {
-    const r = await runCli(["flash", DEMO_FIRMWARE_FILE, "--demo"], { env: FAST_DEMO });
+    const r = await runInProcess(["flash", DEMO_FIRMWARE_FILE, "--demo"]);
     expect(r.code, r.stderr).toBe(0);
     const out = r.stdout.split("\n");
     expect(out[0]).toBe(
@@ -54,7 +55,7 @@ describe("rbc flash --demo", () => {
     timeout: 30_000,
   }, async () => {
     const file = await write("fw-3.07.hex", demoFirmwareHex({ major: 3, minor: 7 }, 2048));
-    const r = await runCli(["flash", file, "--demo", "--json"], { env: FAST_DEMO });
+    const r = await runInProcess(["flash", file, "--demo", "--json"]);
     expect(r.code, r.stderr).toBe(0);
     expect(JSON.parse(r.stdout)).toMatchObject({
       ok: true,
@@ -69,7 +70,7 @@ describe("rbc flash --demo", () => {
 
   it("--recover: a bare port (no handshake), the same update", { timeout: 30_000 }, async () => {
     const file = await write("fw-2.60.hex", firmwareHex("2.60", 1024));
-    const r = await runCli(["flash", file, "--demo", "--recover"], { env: FAST_DEMO });
+    const r = await runInProcess(["flash", file, "--demo", "--recover"]);
     expect(r.code, r.stderr).toBe(0);
     expect(r.stdout).toContain("without asking the robot anything (--recover)");
     expect(r.stdout).toMatch(/^Firmware updated: the robot now reports 2\.60\. 65 lines in/m);
@@ -81,7 +82,7 @@ describe("rbc flash --demo", () => {
     lines.splice(4, 0, ":020000040001F9", ":02E00000AABBB9");
     const file = await write("boot-section.hex", lines.join("\r\n"));
     // --port names a device that does not exist: the file is refused before rbc tries to open it.
-    const r = await runCli(["flash", file, "--port", "/dev/rbc-no-such-port", "--yes"]);
+    const r = await runInProcess(["flash", file, "--port", "/dev/rbc-no-such-port", "--yes"]);
     expect(r.code).toBe(1);
     expect(r.stdout).toBe("");
     expect(r.stderr).toContain("boot-section.hex is not a firmware file the RBC's bootloader can take.");
@@ -89,7 +90,7 @@ describe("rbc flash --demo", () => {
     expect(r.stderr).toContain("Nothing was sent.");
     expect(r.stderr).not.toMatch(/rbc-no-such-port/);
 
-    const json = await runCli(["flash", file, "--demo", "--json"]);
+    const json = await runInProcess(["flash", file, "--demo", "--json"]);
     expect(json.code).toBe(1);
     expect(JSON.parse(json.stdout)).toMatchObject({
       ok: false,

@@ -5,12 +5,13 @@ import { join } from "node:path";
 import { afterAll, beforeAll, describe, expect, it, type TestContext } from "vitest";
 import { createPtyPair } from "../../src/cli/pty.ts";
 import { HUNO_BASIC_POSTURE, parseRbm } from "../../src/protocol/index.ts";
-import { type CliOptions, CliScope, EXAMPLES, FAST_DEMO, REPO } from "../cli/spawn-cli.ts";
+import { runInProcess } from "../cli/in-process.ts";
+import { CliScope, EXAMPLES, REPO } from "../cli/spawn-cli.ts";
 
 /**
- * `rbc play` (tethered play, docs/protocol.md §10) as a user runs it: the built CLI against the demo robot
- * (FAST_DEMO: 50 times real speed, durations reported in the robot's time) and against `rbc sim` over a socat
- * PTY pair (real time, NodeSerialTransport).
+ * `rbc play` (tethered play, docs/protocol.md §10): in this process against the demo robot on a virtual clock
+ * (durations reported in the robot's time), and as a user runs it, the built CLI, for Ctrl-C (real time) and
+ * against `rbc sim` over a socat PTY pair (real time, NodeSerialTransport).
  */
 
 const T = 30_000;
@@ -28,8 +29,8 @@ function scoped(onTestFinished: TestContext["onTestFinished"]) {
   onTestFinished(scope.killAll);
   return {
     scope,
-    run: (args: readonly string[], options: CliOptions = {}) =>
-      scope.run(args, { ...options, env: { ...FAST_DEMO, ...options.env } }),
+    /** `rbc ARGS` in this process, the demo robot on a virtual clock (tests/cli/in-process.ts). */
+    run: (args: readonly string[]) => runInProcess([...args]),
   };
 }
 

@@ -5,7 +5,8 @@ import { join } from "node:path";
 import { afterAll, beforeAll, describe, expect, it, type TestContext } from "vitest";
 import { createPtyPair } from "../../src/cli/pty.ts";
 import { DEMO_VARIANT_VAR } from "../../src/cli/sim-variant.ts";
-import { type CliOptions, CliScope, EXAMPLES, FAST_DEMO, REPO } from "../cli/spawn-cli.ts";
+import { runInProcess } from "../cli/in-process.ts";
+import { type CliOptions, CliScope, EXAMPLES, REPO } from "../cli/spawn-cli.ts";
 
 /**
  * `rbc` against firmware builds that differ from the standard one (docs/protocol.md §3.5): the demo robot with
@@ -25,12 +26,10 @@ afterAll(async () => {
   await rm(dir, { recursive: true, force: true });
 });
 
-/** `rbc ARGS` on the demo robot with `variant`, killed when the test ends. */
-function scoped(onTestFinished: TestContext["onTestFinished"]) {
-  const scope = new CliScope();
-  onTestFinished(scope.killAll);
+/** `rbc ARGS` on the demo robot with `variant`, in this process on a virtual clock (tests/cli/in-process.ts). */
+function scoped(_onTestFinished: TestContext["onTestFinished"]) {
   return (args: readonly string[], variant: string, options: CliOptions = {}) =>
-    scope.run(args, { ...options, env: { ...FAST_DEMO, [DEMO_VARIANT_VAR]: variant, ...options.env } });
+    runInProcess([...args], { env: { [DEMO_VARIANT_VAR]: variant, ...options.env } });
 }
 
 function countOf(text: string, part: string): number {

@@ -8,7 +8,7 @@ import {
   setPosition,
   setTiming,
 } from "../../src/motion/index.ts";
-import { scaledClock } from "../../src/shared/clock.ts";
+import { VirtualClock } from "../../src/shared/clock.ts";
 import { MockSerialPort, SimulatedRbc } from "../../src/sim/index.ts";
 import { type AppState, initialState } from "../../src/ui/app-state.ts";
 import type { AppContext } from "../../src/ui/context.ts";
@@ -53,6 +53,7 @@ import { PacketLog } from "../../src/ui/features/log/packet-log.ts";
 import { Session } from "../../src/ui/session.ts";
 import { SIMULATED_CLOCK } from "../../src/ui/simulated-clock.ts";
 import { createStore } from "../../src/ui/store.ts";
+import { driveClock } from "../support/drive-clock.ts";
 
 /** The motion template's zeros (docs/protocol.md §4, the standard table) and the demo robot's (the factory table). */
 const STANDARD = [125, 202, 162, 66, 108, 124, 48, 88, 184, 142, 90, 40, 125, 161, 210, 127];
@@ -270,14 +271,22 @@ class TestHost implements EditorHost {
   }
 }
 
-async function demoContext(): Promise<{ ctx: AppContext; sim: SimulatedRbc; close: () => Promise<void> }> {
+/** The demo robot on a virtual clock: `run` drives its time until an operation settles. */
+async function demoContext(): Promise<{
+  ctx: AppContext;
+  sim: SimulatedRbc;
+  run: <T>(done: Promise<T>) => Promise<T>;
+  close: () => Promise<void>;
+}> {
+  const clock = new VirtualClock();
+  const run = <T>(done: Promise<T>) => driveClock(clock, done);
   const store = createStore(initialState({ serialSupported: false, secureContext: true, route: "editor" }));
   const packetLog = new PacketLog();
-  const session = new Session(store, packetLog, { demo: { timeScale: 10 } });
-  expect(await session.connectDemo()).toBe(true);
+  const session = new Session(store, packetLog, { demo: { clock } });
+  expect(await run(session.connectDemo())).toBe(true);
   const sim = session.demoSim;
   if (!sim) throw new Error("the demo robot has no simulator");
-  return { ctx: { store, session, packetLog }, sim, close: () => session.disconnect() };
+  return { ctx: { store, session, packetLog }, sim, run, close: () => run(session.disconnect()) };
 }
 
 describe("teach-in and tethered play on the demo robot", () => {
@@ -294,15 +303,15 @@ describe("teach-in and tethered play on the demo robot", () => {
   it("makes only the chosen limb limp, poses it by hand, reads it into the scene, holds and ends", async () => {
     const demo = await demoContext();
     close = demo.close;
-    const { ctx, sim } = demo;
+    const { ctx, sim, run } = demo;
     const host = new TestHost(newMotion());
-    await startTeachIn(ctx);
+    await run(startTeachIn(ctx));
     expect(ctx.session.current?.mode).toBe("direct");
     expect(liveOf(ctx.store.get()).teach.robotZeros).toEqual(FACTORY);
     expect(sim.servos.every((s) => !s.passive)).toBe(true);
 
     toggleLimb(ctx, "right-arm", true);
-    await makeChosenLimp(ctx);
+    await run(makeChosenLimp(ctx));
     expect(sim.servos.filter((s) => s.passive).map((s) => s.id)).toEqual([10, 11, 12]);
     expect(liveOf(ctx.store.get()).teach.passive).toEqual([10, 11, 12]);
 
@@ -315,7 +324,7 @@ describe("teach-in and tethered play on the demo robot", () => {
     expect(sim.servoPositions()[1]).toBe(179);
     expect(liveOf(ctx.store.get()).teach.notice?.text).toContain("Servo 1 holds its position");
 
-    await readIntoScene(ctx, host);
+    await run(readIntoScene(ctx, host));
     expect(host.commits).toEqual(["Read pose into scene 0"]);
     const pose = poseOf(host.doc, 0, "end");
     expect(pose.get(10)).toBe(100);
@@ -325,7 +334,7 @@ describe("teach-in and tethered play on the demo robot", () => {
     expect(pose.get(6)).toBe(74);
     expect(liveOf(ctx.store.get()).teach.notice?.text).toMatch(/^Read servos 0–15 into scene 0/);
 
-    await holdPassive(ctx);
+    await run(holdPassive(ctx));
     expect(sim.servos.every((s) => !s.passive)).toBe(true);
     expect(sim.servoPositions()[10]).toBe(100);
     expect(liveOf(ctx.store.get()).teach.notice?.text).toBe(
@@ -334,9 +343,9 @@ describe("teach-in and tethered play on the demo robot", () => {
 
     toggleLimb(ctx, "right-arm", false);
     toggleLimb(ctx, "left-leg", true);
-    await makeChosenLimp(ctx);
+    await run(makeChosenLimp(ctx));
     expect(sim.servos.filter((s) => s.passive).map((s) => s.id)).toEqual([5, 6, 7, 8, 9]);
-    await endTeachIn(ctx);
+    await run(endTeachIn(ctx));
     expect(sim.servos.every((s) => !s.passive)).toBe(true);
     expect(ctx.session.current?.mode).toBe("packet");
     expect(liveOf(ctx.store.get()).teach.phase).toBe("off");
@@ -346,29 +355,30 @@ describe("teach-in and tethered play on the demo robot", () => {
   it("on hardware (no demo simulator) shows the pose it read, and a hand on the robot is read into the scene", async () => {
     const store = createStore(initialState({ serialSupported: false, secureContext: true, route: "editor" }));
     const session = new Session(store, new PacketLog());
-    const clock = scaledClock(10);
+    const clock = new VirtualClock();
+    const run = <T>(done: Promise<T>) => driveClock(clock, done);
     const sim = new SimulatedRbc({ clock });
     const port = new MockSerialPort(sim, { clock, latencyMs: 1 });
     // A port that carries its robot's clock, as the browser tests' fake serial port does; not the demo robot,
     // so the panel has no simulator to watch and no sliders to offer.
     Object.defineProperty(port, SIMULATED_CLOCK, { value: clock });
-    expect(await session.connectPort(port, { kind: "hardware", name: "Test robot" })).toBe(true);
+    expect(await run(session.connectPort(port, { kind: "hardware", name: "Test robot" }))).toBe(true);
     expect(session.demoSim).toBeUndefined();
-    close = () => session.disconnect();
+    close = () => run(session.disconnect());
     const hw: AppContext = { store, session, packetLog: new PacketLog() };
-    await startTeachIn(hw);
+    await run(startTeachIn(hw));
     expect(livePoseOf(store.get())).toEqual(POSTURE);
     toggleLimb(hw, "left-leg", true);
-    await makeChosenLimp(hw);
+    await run(makeChosenLimp(hw));
     expect(sim.servos.filter((x) => x.passive).map((x) => x.id)).toEqual([5, 6, 7, 8, 9]);
     // A hand bends the left knee; the panel knows only once it reads.
     expect(sim.poseByHand(7, 90)).toBe(true);
     expect(livePoseOf(store.get())?.[7]).toBe(49);
     const host = new TestHost(newMotion());
-    await readIntoScene(hw, host);
+    await run(readIntoScene(hw, host));
     expect(livePoseOf(store.get())?.[7]).toBe(90);
     expect(poseOf(host.doc, 0, "end").get(7)).toBe(90);
-    await endTeachIn(hw);
+    await run(endTeachIn(hw));
     expect(sim.servos.some((x) => x.passive)).toBe(false);
     expect(sim.servoPositions()[7]).toBe(90);
   });
@@ -376,22 +386,22 @@ describe("teach-in and tethered play on the demo robot", () => {
   it("asks again before making every servo limp", async () => {
     const demo = await demoContext();
     close = demo.close;
-    const { ctx, sim } = demo;
-    await startTeachIn(ctx);
+    const { ctx, sim, run } = demo;
+    await run(startTeachIn(ctx));
     for (const l of LIMBS) toggleLimb(ctx, l.limb, true);
-    await makeChosenLimp(ctx);
+    await run(makeChosenLimp(ctx));
     expect(liveOf(ctx.store.get()).teach.confirmingAll).toBe(true);
     expect(sim.servos.some((s) => s.passive)).toBe(false);
-    await makeChosenLimp(ctx, true);
+    await run(makeChosenLimp(ctx, true));
     expect(sim.servos.every((s) => s.passive)).toBe(true);
-    await endTeachIn(ctx);
+    await run(endTeachIn(ctx));
     expect(sim.servos.some((s) => s.passive)).toBe(false);
   });
 
   it("plays scenes through the frames of docs/protocol.md §10, zero deltas applied, and holds the last", async () => {
     const demo = await demoContext();
     close = demo.close;
-    const { ctx, sim } = demo;
+    const { ctx, sim, run } = demo;
     // Scene 0: the template's basic posture, 2 frames in 100 ms. Scene 1: servo 10 from 51 to 71 in 4 frames.
     let doc = setTiming(newMotion(), 0, { frames: 2, timeMs: 100 });
     doc = addScene(doc);
@@ -403,7 +413,7 @@ describe("teach-in and tethered play on the demo robot", () => {
     setPlayChoice(ctx, "all");
     askPlay(ctx, host);
     expect(liveOf(ctx.store.get()).play.confirming).toEqual({ from: 0, to: 1, frames: 6, durationMs: 300 });
-    await confirmPlay(ctx, host);
+    await run(confirmPlay(ctx, host));
     unwatch();
     // zeroDelta = factory − standard zeros: −1 for servos 0, 3, 15, +1 for 5, −2 for 6, 0 elsewhere.
     const held = [124, 179, 199, 87, 108, 127, 70, 49, 163, 141, 51, 47, 49, 199, 205, 204];
@@ -422,22 +432,25 @@ describe("teach-in and tethered play on the demo robot", () => {
   it("Stop mid-play holds the frame sent (nothing limp) and says where it stopped", async () => {
     const demo = await demoContext();
     close = demo.close;
-    const { ctx, sim } = demo;
+    const { ctx, sim, run } = demo;
     let doc = setTiming(newMotion(), 0, { frames: 50, timeMs: 5000 });
     doc = setPosition(doc, 0, 10, 151, { side: "end" });
     const host = new TestHost(doc, 0);
     askPlay(ctx, host);
     const playing = confirmPlay(ctx, host);
-    await new Promise<void>((resolve) => {
-      const unwatch = sim.onServos((positions) => {
-        if ((positions[10] ?? 0) > 60) {
-          unwatch();
-          resolve();
-        }
-      });
-    });
+    playing.catch(() => {});
+    await run(
+      new Promise<void>((resolve) => {
+        const unwatch = sim.onServos((positions) => {
+          if ((positions[10] ?? 0) > 60) {
+            unwatch();
+            resolve();
+          }
+        });
+      }),
+    );
     stopPlay(ctx);
-    await playing;
+    await run(playing);
     const notice = liveOf(ctx.store.get()).play.notice?.text ?? "";
     const match = /^Stopped at scene 0, frame (\d+); the servos hold that pose\.$/.exec(notice);
     expect(match, notice).not.toBeNull();
