@@ -35,3 +35,11 @@ export function jointName(id: number, locale: Locale = "en"): string {
   const key = JOINT_KEYS[id];
   return key ? t(key) : t("joint.servo", { id: String(id) });
 }
+
+/**
+ * "Left and right are the robot's own: its left arm is on your right when it faces you." Said once in every view
+ * that names servos (docs/protocol.md §4), in the panel's language.
+ */
+export function sidesNote(locale: Locale = "en"): string {
+  return translator(jointMessages, locale)("joint.sides");
+}
