@@ -233,12 +233,13 @@ function render(ctx: ViewContext): TemplateResult {
   const acked = ctx.state.acks?.servos === true;
   const t = translator(servosMessages, ctx.state.locale);
   return html`
-    <div class="view-stack">
+    <div class="view-stack servos-view">
       <header class="view-head">
         <h1 id="view-title">${t("servos.title")}</h1>
         <p class="muted">${t("servos.intro")}</p>
       </header>
-      ${acked ? nothing : safetyNotice(ctx, t)} ${liveRobot(ctx, t)} ${controlCard(ctx, t)}
+      ${acked ? nothing : safetyNotice(ctx, t)}
+      <div class="servos-work">${liveRobot(ctx, t)} ${controlCard(ctx, t)}</div>
     </div>
   `;
 }
