@@ -311,7 +311,7 @@ describe("poses: set, copy, mirror", () => {
 
   it("mirroring twice gives the pose back; the next scene's start follows", () => {
     const doc = frozenWave();
-    const once = mirrorPose(doc, 0); // the right arm up becomes the left arm up
+    const once = mirrorPose(doc, 0); // the left arm up becomes the right arm up
     // servo 13 from servo 10 (160): 161 − (160 − 90) = 91; servo 10 from servo 13 (199): 90 − (199 − 161) = 52.
     expect(ends(once, 0)[13]).toBe(91);
     expect(ends(once, 0)[10]).toBe(52);
