@@ -11,7 +11,7 @@
  * With RBC_SHOTS=<dir>, screenshots of every view changed, at both sizes, light and dark, English and Korean.
  */
 import type { Locator, Page } from "playwright-core";
-import { describe, expect, it } from "vitest";
+import { describe, expect, it, vi } from "vitest";
 import { mirrorPosition } from "../../src/motion/index.ts";
 import { STANDARD_ZEROS } from "../../src/protocol/zeros.ts";
 import { squash } from "./harness.ts";
@@ -32,6 +32,9 @@ import { exampleText, rbmFile } from "./motion-fixtures.ts";
 import "./rbc-test-globals.ts";
 
 const app = useApp();
+
+// Each test walks several views in a real browser; on a machine shared with other builds that can take minutes.
+vi.setConfig({ testTimeout: 240_000 });
 
 const SIDES = {
   en: "Left and right are the robot's own: its left arm is on your right when it faces you.",
@@ -148,9 +151,6 @@ describe("item 1: left and right are the robot's own (docs/protocol.md §4)", ()
       expect(await page.getByTestId("sides-note").allTextContents()).toEqual([SIDES[lang]]);
       await showTab(page, "teach");
       expect(await page.getByTestId("sides-note").allTextContents()).toEqual([SIDES[lang]]);
-      // The teach-in limbs: the left arm is servos 10-12.
-      const leftArm = page.locator('input[data-limb="left-arm"]').locator("xpath=..");
-      expect(await leftArm.textContent().then(squash)).toContain(lang === "en" ? "Left arm" : "왼쪽 팔");
       expect(await axeProblems(page)).toEqual([]);
       await context.close();
     });
@@ -411,7 +411,7 @@ describe("item 9: at phone width", () => {
 /** Screenshots for people (RBC_SHOTS only): every view changed, at both sizes, light and dark, both languages. */
 describe("screenshots", () => {
   it.runIf(process.env.RBC_SHOTS !== undefined)(
-    "of Zeros, Servos, Editor (pose, teach-in, tools), Motions and the menu",
+    "of Zeros, Servos, Editor (pose, teach-in, tools) and the menu",
     async () => {
       for (const size of [DESKTOP, PHONE] as Size[]) {
         for (const scheme of ["light", "dark"] as const) {
@@ -425,7 +425,7 @@ describe("screenshots", () => {
             const name = (view: string) => `issue21-${view}-${sizeName(size)}-${scheme}-${lang}`;
             await go(page, "zeros");
             await page.locator("#zero-0").waitFor();
-            await shot(page, name("zeros"));
+            await shot(page, name("zeros"), { fullPage: false });
             await go(page, "servos");
             await page.getByTestId("servo-card").waitFor();
             await startServoControl(page);
@@ -444,12 +444,11 @@ describe("screenshots", () => {
             await shot(page, name("editor-teach"), { fullPage: false });
             await showTab(page, "tools");
             await shot(page, name("editor-tools"), { fullPage: false });
-            await go(page, "motions");
-            await shot(page, name("motions"), { fullPage: false });
             await context.close();
           }
         }
       }
     },
+    1_200_000,
   );
 });
