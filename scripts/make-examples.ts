@@ -21,22 +21,22 @@ const STANDARD_ZEROS: readonly number[] = [
 
 /** Joint ids (docs/protocol.md §5; src/protocol/servo-limits.ts HUNO_JOINT_NAMES). */
 const J = {
-  rHipRoll: 0,
-  rHipPitch: 1,
-  rKnee: 2,
-  rAnklePitch: 3,
-  rAnkleRoll: 4,
-  lHipRoll: 5,
-  lHipPitch: 6,
-  lKnee: 7,
-  lAnklePitch: 8,
-  lAnkleRoll: 9,
-  rShoulderPitch: 10,
-  rShoulderRoll: 11,
-  rElbow: 12,
-  lShoulderPitch: 13,
-  lShoulderRoll: 14,
-  lElbow: 15,
+  lHipRoll: 0,
+  lHipPitch: 1,
+  lKnee: 2,
+  lAnklePitch: 3,
+  lAnkleRoll: 4,
+  rHipRoll: 5,
+  rHipPitch: 6,
+  rKnee: 7,
+  rAnklePitch: 8,
+  rAnkleRoll: 9,
+  lShoulderPitch: 10,
+  lShoulderRoll: 11,
+  lElbow: 12,
+  rShoulderPitch: 13,
+  rShoulderRoll: 14,
+  rElbow: 15,
 } as const;
 
 const ALL_SERVOS: readonly number[] = [...Array(16).keys()];
@@ -110,11 +110,11 @@ function motion(spec: MotionSpec): RbmMotion {
   };
 }
 
-/** HUNO raises its right arm, bends the elbow and waves its hand twice, then lowers the arm. */
+/** HUNO raises its left arm, bends the elbow and waves its hand twice, then lowers the arm. */
 function wave(): RbmMotion {
-  const raised = pose(BASIC, { [J.rShoulderPitch]: 160, [J.rShoulderRoll]: 80, [J.rElbow]: 90 });
-  const out = pose(raised, { [J.rShoulderRoll]: 110, [J.rElbow]: 70 });
-  const inward = pose(raised, { [J.rShoulderRoll]: 75, [J.rElbow]: 100 });
+  const raised = pose(BASIC, { [J.lShoulderPitch]: 160, [J.lShoulderRoll]: 80, [J.lElbow]: 90 });
+  const out = pose(raised, { [J.lShoulderRoll]: 110, [J.lElbow]: 70 });
+  const inward = pose(raised, { [J.lShoulderRoll]: 75, [J.lElbow]: 100 });
   return motion({
     name: "RbcPanel_Wave",
     servoIds: ALL_SERVOS,
@@ -131,17 +131,17 @@ function wave(): RbmMotion {
 }
 
 /**
- * Leg offsets in the right leg's sense (hip pitch: − is thigh forward; knee: + is bent; ankle pitch: + is toes
- * up); the left leg mirrors them. The ankle follows hip + knee so that the foot stays flat.
+ * Leg offsets in the left leg's sense (hip pitch: − is thigh forward; knee: + is bent; ankle pitch: + is toes
+ * up); the right leg mirrors them. The ankle follows hip + knee so that the foot stays flat.
  */
-function legs(base: readonly number[], right: { hip: number; knee: number }, left = right): Moves {
+function legs(base: readonly number[], left: { hip: number; knee: number }, right = left): Moves {
   return {
-    [J.rHipPitch]: base[J.rHipPitch]! + right.hip,
-    [J.rKnee]: base[J.rKnee]! + right.knee,
-    [J.rAnklePitch]: base[J.rAnklePitch]! + right.hip + right.knee,
-    [J.lHipPitch]: base[J.lHipPitch]! - left.hip,
-    [J.lKnee]: base[J.lKnee]! - left.knee,
-    [J.lAnklePitch]: base[J.lAnklePitch]! - left.hip - left.knee,
+    [J.lHipPitch]: base[J.lHipPitch]! + left.hip,
+    [J.lKnee]: base[J.lKnee]! + left.knee,
+    [J.lAnklePitch]: base[J.lAnklePitch]! + left.hip + left.knee,
+    [J.rHipPitch]: base[J.rHipPitch]! - right.hip,
+    [J.rKnee]: base[J.rKnee]! - right.knee,
+    [J.rAnklePitch]: base[J.rAnklePitch]! - right.hip - right.knee,
   };
 }
 
@@ -149,14 +149,14 @@ function legs(base: readonly number[], right: { hip: number; knee: number }, lef
 function bow(): RbmMotion {
   const bowed = pose(BASIC, {
     // Hips flex 35 counts; knees soften a little and the ankles lean the shins back to keep balance.
-    [J.rHipPitch]: BASIC[J.rHipPitch]! - 35,
-    [J.rKnee]: BASIC[J.rKnee]! + 10,
-    [J.rAnklePitch]: BASIC[J.rAnklePitch]! + 5,
-    [J.lHipPitch]: BASIC[J.lHipPitch]! + 35,
-    [J.lKnee]: BASIC[J.lKnee]! - 10,
-    [J.lAnklePitch]: BASIC[J.lAnklePitch]! - 5,
-    [J.rShoulderPitch]: BASIC[J.rShoulderPitch]! + 15,
-    [J.lShoulderPitch]: BASIC[J.lShoulderPitch]! - 15,
+    [J.lHipPitch]: BASIC[J.lHipPitch]! - 35,
+    [J.lKnee]: BASIC[J.lKnee]! + 10,
+    [J.lAnklePitch]: BASIC[J.lAnklePitch]! + 5,
+    [J.rHipPitch]: BASIC[J.rHipPitch]! + 35,
+    [J.rKnee]: BASIC[J.rKnee]! - 10,
+    [J.rAnklePitch]: BASIC[J.rAnklePitch]! - 5,
+    [J.lShoulderPitch]: BASIC[J.lShoulderPitch]! + 15,
+    [J.rShoulderPitch]: BASIC[J.rShoulderPitch]! - 15,
   });
   return motion({
     name: "RbcPanel_Bow",
@@ -174,8 +174,8 @@ function bow(): RbmMotion {
 /** HUNO holds its arms out in front and squats twice, then lowers its arms. */
 function squat(): RbmMotion {
   const armsForward = pose(BASIC, {
-    [J.rShoulderPitch]: BASIC[J.rShoulderPitch]! + 60,
-    [J.lShoulderPitch]: BASIC[J.lShoulderPitch]! - 60,
+    [J.lShoulderPitch]: BASIC[J.lShoulderPitch]! + 60,
+    [J.rShoulderPitch]: BASIC[J.rShoulderPitch]! - 60,
   });
   const down = pose(armsForward, legs(BASIC, { hip: -25, knee: 40 }));
   return motion({
@@ -223,12 +223,12 @@ function longWalk(): RbmMotion {
     const arms = 15 * Math.cos(phase) * e; // each arm swings against its leg
     return pose(BASIC, {
       ...legs(BASIC, leg(phase), leg(phase + Math.PI)),
-      [J.rHipRoll]: BASIC[J.rHipRoll]! + sway,
-      [J.rAnkleRoll]: BASIC[J.rAnkleRoll]! + sway,
       [J.lHipRoll]: BASIC[J.lHipRoll]! + sway,
       [J.lAnkleRoll]: BASIC[J.lAnkleRoll]! + sway,
-      [J.rShoulderPitch]: BASIC[J.rShoulderPitch]! + arms,
+      [J.rHipRoll]: BASIC[J.rHipRoll]! + sway,
+      [J.rAnkleRoll]: BASIC[J.rAnkleRoll]! + sway,
       [J.lShoulderPitch]: BASIC[J.lShoulderPitch]! + arms,
+      [J.rShoulderPitch]: BASIC[J.rShoulderPitch]! + arms,
     });
   };
   const scenes: SceneSpec[] = [{ name: "Stance", frames: 10, timeMs: 400, to: stance }];
@@ -248,9 +248,9 @@ function longWalk(): RbmMotion {
 
 /** Only the six arm servos (ids 10-15): arms out to the sides, elbows bend and straighten, arms forward, down. */
 function armsOnly(): RbmMotion {
-  const out = pose(BASIC, { [J.rShoulderRoll]: 130, [J.lShoulderRoll]: 122 });
-  const bent = pose(out, { [J.rElbow]: 120, [J.lElbow]: 134 });
-  const forward = pose(BASIC, { [J.rShoulderPitch]: 140, [J.lShoulderPitch]: 110 });
+  const out = pose(BASIC, { [J.lShoulderRoll]: 130, [J.rShoulderRoll]: 122 });
+  const bent = pose(out, { [J.lElbow]: 120, [J.rElbow]: 134 });
+  const forward = pose(BASIC, { [J.lShoulderPitch]: 140, [J.rShoulderPitch]: 110 });
   return motion({
     name: "RbcPanel_ArmsOnly",
     servoIds: ARM_SERVOS,

@@ -1,9 +1,9 @@
 /**
  * Mirroring a pose left↔right on a HUNO.
  *
- * [decision] Joint pairs (servo ids, docs/protocol.md §5 joint names): right leg 0-4 ↔ left leg 5-9 (hip roll, hip
- * pitch, knee, ankle pitch, ankle roll), right arm 10-12 ↔ left arm 13-15 (shoulder pitch, shoulder roll,
- * elbow). Each pair's servos are mounted as mirror images, so a mirrored joint angle is the same offset from the
+ * [decision] Joint pairs (servo ids, named from the robot's own point of view, docs/protocol.md §4): left leg 0-4
+ * ↔ right leg 5-9 (hip roll, hip pitch, knee, ankle pitch, ankle roll), left arm 10-12 ↔ right arm 13-15
+ * (shoulder pitch, shoulder roll, elbow). Each pair's servos are mounted as mirror images, so a mirrored joint angle is the same offset from the
  * servo's zero with the sign reversed, for every joint, pitch and roll alike:
  *
  *     mirrored position on servo j = zero[j] − (position on servo i − zero[i])
@@ -23,8 +23,8 @@ import { HUNO_PLATFORM, type Motion, type SceneSide, sceneAt } from "./document.
 import { applyPositions } from "./edits.ts";
 import { MotionError } from "./errors.ts";
 
-/** [right id, left id] for each of the HUNO's 8 joint pairs. */
-export const HUNO_MIRROR_PAIRS: readonly (readonly [right: number, left: number])[] = [
+/** [left id, right id] for each of the HUNO's 8 joint pairs (the robot's own left and right). */
+export const HUNO_MIRROR_PAIRS: readonly (readonly [left: number, right: number])[] = [
   [0, 5],
   [1, 6],
   [2, 7],
@@ -37,9 +37,9 @@ export const HUNO_MIRROR_PAIRS: readonly (readonly [right: number, left: number]
 
 /** The mirror partner of a HUNO servo id, or undefined for an id without one. */
 export function mirrorPartner(id: number): number | undefined {
-  for (const [r, l] of HUNO_MIRROR_PAIRS) {
-    if (id === r) return l;
+  for (const [l, r] of HUNO_MIRROR_PAIRS) {
     if (id === l) return r;
+    if (id === r) return l;
   }
   return undefined;
 }
@@ -76,7 +76,7 @@ export function mirrorPose(doc: Motion, k: number, options: MirrorOptions = {}):
   const indexOf = new Map(doc.servos.map((s, i) => [s.id, i]));
   const positions = new Map<number, number>();
   const outside: { id: number; position: number }[] = [];
-  for (const [right, left] of HUNO_MIRROR_PAIRS) {
+  for (const [left, right] of HUNO_MIRROR_PAIRS) {
     const ri = indexOf.get(right);
     const li = indexOf.get(left);
     if (ri === undefined || li === undefined) continue;

@@ -19,24 +19,24 @@ export const HUNO_BASIC_POSTURE: readonly number[] = [
   125, 179, 199, 88, 108, 126, 72, 49, 163, 141, 51, 47, 49, 199, 205, 205,
 ];
 
-/** Short joint names: 0-4 right leg, 5-9 left leg, 10-12 right arm, 13-15 left arm. */
+/** Short joint names, from the robot's own point of view (docs/protocol.md §4): 0-4 left leg, 5-9 right leg, 10-12 left arm, 13-15 right arm. */
 export const HUNO_JOINT_NAMES: readonly string[] = [
-  "Right hip roll",
-  "Right hip pitch",
-  "Right knee",
-  "Right ankle pitch",
-  "Right ankle roll",
   "Left hip roll",
   "Left hip pitch",
   "Left knee",
   "Left ankle pitch",
   "Left ankle roll",
-  "Right shoulder pitch",
-  "Right shoulder roll",
-  "Right elbow",
+  "Right hip roll",
+  "Right hip pitch",
+  "Right knee",
+  "Right ankle pitch",
+  "Right ankle roll",
   "Left shoulder pitch",
   "Left shoulder roll",
   "Left elbow",
+  "Right shoulder pitch",
+  "Right shoulder roll",
+  "Right elbow",
 ];
 
 /** The safe range of a HUNO servo id, or undefined for ids above 15 (no published limits). */
@@ -46,7 +46,7 @@ export function safeRange(id: number): { min: number; max: number } | undefined 
   return min === undefined || max === undefined ? undefined : { min, max };
 }
 
-/** "servo 3 (Right ankle pitch)" for HUNO ids, "servo 20" otherwise. */
+/** "servo 3 (Left ankle pitch)" for HUNO ids, "servo 20" otherwise. */
 export function servoLabel(id: number): string {
   const name = HUNO_JOINT_NAMES[id];
   return name === undefined ? `servo ${id}` : `servo ${id} (${name})`;

@@ -18,7 +18,7 @@ import { buildPlayback, type SimPlayback, type SimScene } from "./sim-motion-pla
  * Every one starts from the servos' current pose (no §10 transition, so that its duration stays the
  * catalogue's, docs/protocol.md §3.1, exactly: its keyframe times add up to it), ends in the basic posture, and
  * moves all 16 servos at torque 2, frames about 40 ms apart. Offsets are counts from the basic posture on
- * the right side; the left servo of each pair takes the opposite sign (they are mounted as mirror images,
+ * the left side; the right servo of each pair takes the opposite sign (they are mounted as mirror images,
  * `HUNO_MIRROR_PAIRS` of `src/motion/mirror.ts`). Which way a sign turns a joint is not verified on hardware. Every keyframe is
  * clamped to the safe ranges of docs/protocol.md §5.
  */
@@ -30,19 +30,19 @@ interface Keyframe {
   ms: number;
 }
 
-/** The right-side offsets and their mirror image on the left side. */
-function both(right: Offsets): Offsets {
-  const out: Record<number, number> = { ...right };
-  for (const [r, l] of PAIRS) if (right[r] !== undefined) out[l] = -right[r]!;
+/** The left-side offsets and their mirror image on the right side. */
+function both(left: Offsets): Offsets {
+  const out: Record<number, number> = { ...left };
+  for (const [l, r] of PAIRS) if (left[l] !== undefined) out[r] = -left[l]!;
   return out;
 }
 
-/** The offsets of the left servos for a movement given on the right side (or the reverse). */
+/** The offsets of the right servos for a movement given on the left side (or the reverse). */
 function mirrored(offsets: Offsets): Offsets {
   const out: Record<number, number> = {};
-  for (const [r, l] of PAIRS) {
-    if (offsets[r] !== undefined) out[l] = -offsets[r]!;
+  for (const [l, r] of PAIRS) {
     if (offsets[l] !== undefined) out[r] = -offsets[l]!;
+    if (offsets[r] !== undefined) out[l] = -offsets[r]!;
   }
   return out;
 }
@@ -58,18 +58,18 @@ const CROUCH = both({ 1: -30, 2: 45, 3: 25 });
 const BEND = both({ 1: -12, 2: 20, 3: 12 });
 const ARMS_FORWARD = both({ 10: 90, 12: 40 });
 const ARMS_OUT = both({ 11: 40 });
-const LIFT_RIGHT: Offsets = { 1: -15, 2: 30, 3: 15 };
-const LIFT_LEFT = mirrored(LIFT_RIGHT);
-const LEAN_RIGHT: Offsets = { 0: 8, 4: 8, 5: 8, 9: 8 };
-const LEAN_LEFT: Offsets = { 0: -8, 4: -8, 5: -8, 9: -8 };
+const LIFT_LEFT: Offsets = { 1: -15, 2: 30, 3: 15 };
+const LIFT_RIGHT = mirrored(LIFT_LEFT);
+const LEAN_LEFT: Offsets = { 0: 8, 4: 8, 5: 8, 9: 8 };
+const LEAN_RIGHT: Offsets = { 0: -8, 4: -8, 5: -8, 9: -8 };
 const SPREAD = both({ 0: 12, 4: -12 });
-/** The right arm forward and the left one back. */
-const SWING_RIGHT: Offsets = { 10: 25, 13: 25 };
-const SWING_LEFT: Offsets = { 10: -25, 13: -25 };
-const DRAW_LEFT: Offsets = { 13: 30, 15: 30 };
-const PUNCH_LEFT: Offsets = { 13: -80, 15: -60 };
-const DRAW_RIGHT = mirrored(DRAW_LEFT);
-const PUNCH_RIGHT = mirrored(PUNCH_LEFT);
+/** The left arm forward and the right one back. */
+const SWING_LEFT: Offsets = { 10: 25, 13: 25 };
+const SWING_RIGHT: Offsets = { 10: -25, 13: -25 };
+const DRAW_RIGHT: Offsets = { 13: 30, 15: 30 };
+const PUNCH_RIGHT: Offsets = { 13: -80, 15: -60 };
+const DRAW_LEFT = mirrored(DRAW_RIGHT);
+const PUNCH_LEFT = mirrored(PUNCH_RIGHT);
 
 const k = (pose: Offsets, ms: number): Keyframe => ({ pose, ms });
 

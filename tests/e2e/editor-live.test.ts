@@ -149,8 +149,8 @@ describe("editor: teach-in and tethered play on the demo robot", () => {
     expect(await page.evaluate(() => window.__rbcDemoSim?.directMode)).toBe(true);
     expect(await passiveIds(page)).toEqual([]);
 
-    // Scene 0: the right arm goes limp (only it), the hand poses the shoulder and the elbow.
-    await poseByHand(page, ["right-arm"], { 10: 100, 12: 80 });
+    // Scene 0: the left arm (10-12, the robot's own left) goes limp (only it), the hand poses the shoulder and the elbow.
+    await poseByHand(page, ["left-arm"], { 10: 100, 12: 80 });
     expect(await passiveIds(page)).toEqual([10, 11, 12]);
     // The 3D view follows the live robot (the pose it last drew, by servo id).
     const drawn = () => page.getByTestId("editor-robot3d").getAttribute("data-pose");
@@ -166,7 +166,7 @@ describe("editor: teach-in and tethered play on the demo robot", () => {
     // Scene 1: the left arm.
     await page.getByTestId("scene-add").click();
     await page.getByRole("button", { name: "Read pose into scene 1" }).waitFor();
-    await poseByHand(page, ["left-arm"], { 13: 150 });
+    await poseByHand(page, ["right-arm"], { 13: 150 });
     expect(await passiveIds(page)).toEqual([13, 14, 15]);
     await readInto(page, 1);
     expect(await endValues(page, [13])).toEqual([150]);

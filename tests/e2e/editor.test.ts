@@ -208,7 +208,7 @@ describe.each(VIEWPORTS)("motion editor at $name", ({ width, height }) => {
 
     // Scene 0: raise the right shoulder by typing.
     await typeInto(page, "end-10", "100");
-    await expectText(page, "editor-undo", "Undo: set Right shoulder pitch (end of scene 0)");
+    await expectText(page, "editor-undo", "Undo: set Left shoulder pitch (end of scene 0)");
 
     // Scene 1 starts where scene 0 ends (continuity); its end is set with the slider, one undo step per drag.
     await page.getByTestId("scene-add").click();
@@ -239,16 +239,16 @@ describe.each(VIEWPORTS)("motion editor at $name", ({ width, height }) => {
     await problem.waitFor();
     expect(await problem.textContent().then(squash)).toContain("0 to 254");
     expect(await page.getByTestId("end-3").getAttribute("aria-invalid")).toBe("true");
-    await expectText(page, "editor-undo", "Undo: set Right shoulder pitch (end of scene 1)");
+    await expectText(page, "editor-undo", "Undo: set Left shoulder pitch (end of scene 1)");
     await typeInto(page, "end-3", String(HUNO_BASIC_POSTURE[3]));
     await page.getByTestId("field-problem").waitFor({ state: "detached" });
     expect(await page.getByTestId("end-3").getAttribute("aria-invalid")).toBe("false");
 
-    // Scene 2: a duplicate of scene 1, mirrored right to left (the left shoulder takes the right's pose).
+    // Scene 2: a duplicate of scene 1, mirrored left to right (the right shoulder, 13, takes the left's pose, 10).
     await page.getByTestId("scene-duplicate").click();
     await page.locator("#scene-opt-2[aria-current=true]").waitFor();
     await showTab(page, "tools");
-    await page.getByTestId("mirror-right-to-left").click();
+    await page.getByTestId("mirror-left-to-right").click();
     await page.getByTestId("editor-undo").filter({ hasText: "mirror" }).waitFor();
     await showPose(page);
     const mirrored = mirrorPosition(dragged, STANDARD_ZEROS[10]!, STANDARD_ZEROS[13]!);
@@ -403,7 +403,7 @@ describe.each(VIEWPORTS)("motion editor at $name", ({ width, height }) => {
     const before = await canvasPicture(page);
     expect(before.drawn / before.total).toBeGreaterThan(0.01);
 
-    // Raise the right arm: the robot is drawn again, differently.
+    // Raise the left arm (10): the robot is drawn again, differently.
     await typeInto(page, "end-10", "20");
     await page.waitForFunction(() =>
       document

@@ -84,7 +84,7 @@ describe("motions view", () => {
     await page.locator('[data-testid="motion-chart"][data-chart="drawn"]').waitFor();
     expect(await page.locator('[data-testid="motion-chart"] canvas').count()).toBeGreaterThan(0);
     expect(await page.locator('[data-testid="motion-chart"] .u-legend').textContent()).toContain(
-      "Right knee",
+      "Left knee",
     );
 
     // A real robot (the fake port is hardware): the panel says it is experimental and asks first.

@@ -30,7 +30,7 @@ afterAll(async () => {
 });
 
 const BASIC = "125 179 199 88 108 126 72 49 163 141 51 47 49 199 205 205";
-/** wave.rbm at 800 ms, the end of its first scene (RaiseArm): the right arm up (examples/README.md). */
+/** wave.rbm at 800 ms, the end of its first scene (RaiseArm): the left arm up (examples/README.md). */
 const ARM_RAISED = "125 179 199 88 108 126 72 49 163 141 160 80 90 199 205 205";
 
 interface Picture {
@@ -157,7 +157,7 @@ describe("3D preview of an opened motion file", () => {
     });
     expect(first.dataUrl).not.toBe(blank);
 
-    // Scrub to 0.8 s: the right arm is up, and the picture changes where it moved.
+    // Scrub to 0.8 s: the left arm is up, and the picture changes where it moved.
     const drawn = await frames(view);
     await preview.getByTestId("preview-time").fill("800");
     await expect.poll(() => attr(view, "data-pose")).toBe(ARM_RAISED);

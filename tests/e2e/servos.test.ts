@@ -80,7 +80,7 @@ describe("servos view", () => {
     expect(await page.getByTestId("servo-refused-3").count()).toBe(0);
 
     // The slider: arrow keys move it; many quick changes do not queue up.
-    const slider = page.getByLabel(/Right knee \(servo 2\), target/);
+    const slider = page.getByLabel(/Left knee \(servo 2\), target/);
     await slider.focus();
     await page.keyboard.press("ArrowRight");
     await expect.poll(async () => (await simServos(page))[2]?.position).toBe(HUNO_BASIC_POSTURE[2]! + 1);

@@ -5,7 +5,7 @@ import "./rbc-test-globals.ts";
 
 // Stop and Limp are two things (issue #11 item 1): Stop ends what the robot is doing
 // and keeps it standing (a motion ends with 7); Limp makes every servo passive, only after asking. Escape keeps
-// its meaning in a field, a dialog or a menu, and otherwise means Stop, never Limp.
+// its meaning in a text field, a dialog or an open menu/list, and otherwise (a number field too) means Stop, never Limp.
 
 let app: AppHarness;
 
@@ -48,17 +48,14 @@ async function startMotion(page: Page, n: number, name: string): Promise<void> {
 }
 
 describe("Stop keeps the robot standing; Limp asks first", () => {
-  it("Escape in a zero field keeps its meaning there: no Stop, no servo passive, the robot stays in packet mode", async () => {
+  it("Escape in a zero field (a number stepper, not a text field) is Stop: no servo passive, the robot stays in packet mode", async () => {
     const { page, context } = await app.newPage();
     await connectRobot(page, app.url);
     await page.getByRole("link", { name: "Zeros" }).click();
     await page.locator("#zero-0").waitFor();
     await page.locator("#zero-3").focus();
     await page.keyboard.press("Escape");
-    // Escape inside a field is not Stop: no Stop banner, and nothing reaches the servos.
-    // Then Escape with nothing focused is Stop, and that banner is the first one (ordering, not timing).
-    await blur(page);
-    await page.keyboard.press("Escape");
+    // Escape in a number field is Stop (docs/ui.md "Keyboard"): nothing was running, and no servo went passive.
     const banner = page.getByTestId("stop-banner");
     await banner.filter({ hasText: "Nothing was running; the robot keeps its pose." }).waitFor();
     expect(await banner.textContent().then(squash)).toBe(

@@ -32,7 +32,7 @@ describe("zeros editor", () => {
     expect(await page.locator("#zero-3").inputValue()).toBe(String(FACTORY_ZEROS[3]));
 
     // Every input is labelled with its joint.
-    expect(await page.getByLabel("Right ankle pitch", { exact: true }).inputValue()).toBe("65");
+    expect(await page.getByLabel("Left ankle pitch", { exact: true }).inputValue()).toBe("65");
 
     await page.locator("#zero-3").fill("70");
     await page.getByTestId("change-summary").filter({ hasText: "servo 3 65 → 70" }).waitFor();
@@ -81,7 +81,7 @@ describe("zeros editor", () => {
     expect(await page.locator("#zero-3-hint").textContent().then(squash)).toBe("Must be 51–81");
 
     // The slider cannot go outside the window either.
-    const slider = page.getByLabel(/Right ankle pitch \(servo 3\), slider/);
+    const slider = page.getByLabel(/Left ankle pitch \(servo 3\), slider/);
     expect(await slider.getAttribute("min")).toBe("51");
     expect(await slider.getAttribute("max")).toBe("81");
 

@@ -32,9 +32,9 @@ describe("rbc zeros read: the table", () => {
         expect(row[end + 1] ?? " ", `${JSON.stringify(row)} after ${end}`).toBe(" ");
       }
     }
-    expect(rows[0]).toMatch(/^\s+0\s+Right hip roll\s+124\s+125\s+-1\s+110-140\s+124$/);
-    expect(rows[4]).toMatch(/^\s+4\s+Right ankle roll\s+95\s+108\s+-13\s+93-123\s+108$/);
-    expect(rows[5]).toMatch(/^\s+5\s+Left hip roll\s+139\s+124\s+\+15\s+109-139\s+125$/);
+    expect(rows[0]).toMatch(/^\s+0\s+Left hip roll\s+124\s+125\s+-1\s+110-140\s+124$/);
+    expect(rows[4]).toMatch(/^\s+4\s+Left ankle roll\s+95\s+108\s+-13\s+93-123\s+108$/);
+    expect(rows[5]).toMatch(/^\s+5\s+Right hip roll\s+139\s+124\s+\+15\s+109-139\s+125$/);
   });
 
   it("says which table is which, with the names the panel uses", () => {

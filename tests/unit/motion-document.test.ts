@@ -286,7 +286,7 @@ describe("poses: set, copy, mirror", () => {
     expect(poseOf(next, 2).get(12)).toBe(90);
   });
 
-  it("the HUNO pairs: legs 0-4 ↔ 5-9, arms 10-12 ↔ 13-15", () => {
+  it("the HUNO pairs: left leg 0-4 ↔ right leg 5-9, left arm 10-12 ↔ right arm 13-15", () => {
     expect([0, 1, 2, 3, 4, 10, 11, 12].map(mirrorPartner)).toEqual([5, 6, 7, 8, 9, 13, 14, 15]);
     expect([5, 6, 7, 8, 9, 13, 14, 15].map(mirrorPartner)).toEqual([0, 1, 2, 3, 4, 10, 11, 12]);
     expect(mirrorPartner(16)).toBeUndefined();
@@ -298,10 +298,10 @@ describe("poses: set, copy, mirror", () => {
     expect(ends(mirrorPose(doc, 0), 0)).toEqual([
       123, 178, 201, 87, 109, 124, 71, 51, 162, 142, 52, 45, 47, 200, 203, 203,
     ]);
-    expect(ends(mirrorPose(doc, 0, { mode: "right-to-left" }), 0)).toEqual([
+    expect(ends(mirrorPose(doc, 0, { mode: "left-to-right" }), 0)).toEqual([
       125, 179, 199, 88, 108, 124, 71, 51, 162, 142, 51, 47, 49, 200, 203, 203,
     ]);
-    expect(ends(mirrorPose(doc, 0, { mode: "left-to-right" }), 0)).toEqual([
+    expect(ends(mirrorPose(doc, 0, { mode: "right-to-left" }), 0)).toEqual([
       123, 178, 201, 87, 109, 126, 72, 49, 163, 141, 52, 45, 47, 199, 205, 205,
     ]);
     // Mirrored within 2 counts of itself: the basic posture is symmetric.
@@ -311,7 +311,7 @@ describe("poses: set, copy, mirror", () => {
 
   it("mirroring twice gives the pose back; the next scene's start follows", () => {
     const doc = frozenWave();
-    const once = mirrorPose(doc, 0); // the right arm up becomes the left arm up
+    const once = mirrorPose(doc, 0); // the left arm up becomes the right arm up
     // servo 13 from servo 10 (160): 161 − (160 − 90) = 91; servo 10 from servo 13 (199): 90 − (199 − 161) = 52.
     expect(ends(once, 0)[13]).toBe(91);
     expect(ends(once, 0)[10]).toBe(52);

@@ -273,7 +273,7 @@ describe("validateRbm", () => {
         scene: 1,
         servo: 10,
         message:
-          "Scene 1 starts servo 10 (Right shoulder pitch) at 60, but scene 0 ended it at 160; the servo will jump.",
+          "Scene 1 starts servo 10 (Left shoulder pitch) at 60, but scene 0 ended it at 160; the servo will jump.",
         values: { scene: 1, servo: 10, start: 60, previous: 0, end: 160 },
       },
     ]);
@@ -282,7 +282,7 @@ describe("validateRbm", () => {
   it("warns about positions outside the safe ranges", () => {
     const w = warningsOf(edit(WAVE, [recordField(0, 2, 3), "100"]));
     expect(w[0]).toMatchObject({ code: "rbm-unsafe-position", scene: 0, servo: 2 });
-    expect(w[0]!.message).toMatch(/Right knee\) goes to 100, outside its safe range 124-254/);
+    expect(w[0]!.message).toMatch(/Left knee\) goes to 100, outside its safe range 124-254/);
     expect(codes(w)).toContain("rbm-scene-jump"); // scene 1 starts at 199 again
   });
 

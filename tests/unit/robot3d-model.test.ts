@@ -48,15 +48,15 @@ function linkPoints(t: RobotTransforms, id: number): Vec3[] {
 describe("joint angles", () => {
   it("are (position − zero) × 269/254 ° × sign, from the standard zeros", () => {
     expect(DEGREES_PER_COUNT).toBeCloseTo(1.059055, 6);
-    // Right knee (sign +1): 199 − 162 = 37 counts → 39.185°; left knee (sign −1): 49 − 88 = −39 → +41.303°.
+    // Left knee (sign +1): 199 − 162 = 37 counts → 39.185°; right knee (sign −1): 49 − 88 = −39 → +41.303°.
     expect(jointAngleDegrees(2, 199)).toBeCloseTo(39.185, 3);
     expect(jointAngleDegrees(7, 49)).toBeCloseTo(41.303, 3);
-    // Right hip pitch 179 − 202 = −23 → −24.358°; left hip pitch 72 − 48 = 24 → −25.417°.
+    // Left hip pitch 179 − 202 = −23 → −24.358°; right hip pitch 72 − 48 = 24 → −25.417°.
     expect(jointAngleDegrees(1, 179)).toBeCloseTo(-24.358, 3);
     expect(jointAngleDegrees(6, 72)).toBeCloseTo(-25.417, 3);
-    // Right elbow 49 − 125 = −76 → −80.488°; right shoulder roll (sign −1) 47 − 40 = 7 → −7.413°.
+    // Left elbow 49 − 125 = −76 → −80.488°; left shoulder roll (sign +1) 47 − 40 = 7 → +7.413°.
     expect(jointAngleDegrees(12, 49)).toBeCloseTo(-80.488, 3);
-    expect(jointAngleDegrees(11, 47)).toBeCloseTo(-7.413, 3);
+    expect(jointAngleDegrees(11, 47)).toBeCloseTo(7.413, 3);
   });
 
   it("use the robot's zeros when given, the standard table where they have none, and 0 for a missing position", () => {
@@ -82,10 +82,12 @@ describe("joint angles", () => {
       [11, 14],
       [12, 15],
     ] as const;
-    for (const [r, l] of pairs) {
-      const a = HUNO_JOINTS[r]!;
-      const b = HUNO_JOINTS[l]!;
-      expect([a.side, b.side]).toEqual(["right", "left"]);
+    for (const [l, r] of pairs) {
+      const a = HUNO_JOINTS[l]!;
+      const b = HUNO_JOINTS[r]!;
+      // The robot's own left (+y) and right (docs/protocol.md §4).
+      expect([a.side, b.side]).toEqual(["left", "right"]);
+      expect(a.offset[1]).toBeGreaterThanOrEqual(0);
       expect(a.axis).toBe(b.axis);
       expect(b.sign).toBe(a.axis === "y" ? -a.sign : a.sign);
       expectClosePoint(b.offset, mirrorY(a.offset));
@@ -136,7 +138,7 @@ describe("forward kinematics", () => {
   it("moves the foot and nothing above the knee when only the knee changes", () => {
     const before = bodyTransforms(HUNO_BASIC_POSTURE);
     const bent = [...HUNO_BASIC_POSTURE];
-    bent[2] = 219; // right knee 20 counts further bent
+    bent[2] = 219; // left knee 20 counts further bent
     const after = bodyTransforms(bent);
     expect(Array.from(after.torso)).toEqual(Array.from(before.torso));
     for (const id of [0, 1, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15]) {
@@ -148,13 +150,13 @@ describe("forward kinematics", () => {
       const moved = Math.hypot(...origin(after.links[id]!).map((v, i) => v - origin(before.links[id]!)[i]!));
       expect(moved, `link ${id}`).toBeGreaterThan(10);
     }
-    const soleBefore = sole(before, RIGHT_FOOT).centre;
-    const soleAfter = sole(after, RIGHT_FOOT).centre;
+    const soleBefore = sole(before, LEFT_FOOT).centre;
+    const soleAfter = sole(after, LEFT_FOOT).centre;
     expect(soleAfter[2]).toBeGreaterThan(soleBefore[2] + 5); // the foot lifts
   });
 
   it("draws a mirrored pose (docs/motion-document.md, Mirror) as the mirror image of the robot", () => {
-    // A one-sided pose: right leg lifted and turned out, right arm forward, left arm out to the side.
+    // A one-sided pose: left leg lifted and turned out, left arm forward, right arm out to the side.
     const pose = new Map([
       [0, 112],
       [1, 160],
@@ -203,9 +205,9 @@ describe("forward kinematics", () => {
         });
       }
     }
-    // The lifted right leg stands the robot on its left foot; the mirror stands on its right.
-    expect(supportFoot(bodyTransforms(a, zeros))).toBe("left");
-    expect(supportFoot(bodyTransforms(b, zeros))).toBe("right");
+    // The lifted left leg stands the robot on its right foot; the mirror stands on its left.
+    expect(supportFoot(bodyTransforms(a, zeros))).toBe("right");
+    expect(supportFoot(bodyTransforms(b, zeros))).toBe("left");
   });
 });
 

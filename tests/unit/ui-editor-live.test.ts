@@ -63,11 +63,12 @@ const POSTURE = [125, 179, 199, 88, 108, 126, 72, 49, 163, 141, 51, 47, 49, 199,
 
 describe("teach-in: limbs", () => {
   it("maps each limb to the HUNO's servo ids (legs 0-4 / 5-9, arms 10-12 / 13-15)", () => {
-    expect(limbIds("right-leg")).toEqual([0, 1, 2, 3, 4]);
-    expect(limbIds("left-leg")).toEqual([5, 6, 7, 8, 9]);
-    expect(limbIds("right-arm")).toEqual([10, 11, 12]);
-    expect(limbIds("left-arm")).toEqual([13, 14, 15]);
-    expect(LIMBS.map((l) => l.label)).toEqual(["Right leg", "Left leg", "Right arm", "Left arm"]);
+    // The robot's own left and right (docs/protocol.md §4).
+    expect(limbIds("left-leg")).toEqual([0, 1, 2, 3, 4]);
+    expect(limbIds("right-leg")).toEqual([5, 6, 7, 8, 9]);
+    expect(limbIds("left-arm")).toEqual([10, 11, 12]);
+    expect(limbIds("right-arm")).toEqual([13, 14, 15]);
+    expect(LIMBS.map((l) => l.label)).toEqual(["Left leg", "Right leg", "Left arm", "Right arm"]);
   });
 
   it("chooses exactly the ids of the chosen limbs, and knows when that is every servo", () => {
@@ -75,7 +76,7 @@ describe("teach-in: limbs", () => {
     expect(chosenIds([])).toEqual([]);
     expect(choosesAll(["right-leg", "left-leg", "right-arm"])).toBe(false);
     expect(choosesAll(["left-arm", "right-leg", "left-leg", "right-arm"])).toBe(true);
-    expect(limbsText(["right-arm"])).toBe("the right arm");
+    expect(limbsText(["left-arm"])).toBe("the left arm");
     expect(limbsText(["left-arm", "right-leg"])).toBe("the right leg and the left arm");
     expect(limbsText(["left-arm", "right-leg", "left-leg", "right-arm"])).toBe("every servo");
     expect(idList([10, 11, 12, 0, 5, 6])).toBe("0, 5, 6, 10–12");
@@ -310,7 +311,7 @@ describe("teach-in and tethered play on the demo robot", () => {
     expect(liveOf(ctx.store.get()).teach.robotZeros).toEqual(FACTORY);
     expect(sim.servos.every((s) => !s.passive)).toBe(true);
 
-    toggleLimb(ctx, "right-arm", true);
+    toggleLimb(ctx, "left-arm", true);
     await run(makeChosenLimp(ctx));
     expect(sim.servos.filter((s) => s.passive).map((s) => s.id)).toEqual([10, 11, 12]);
     expect(liveOf(ctx.store.get()).teach.passive).toEqual([10, 11, 12]);
@@ -341,8 +342,8 @@ describe("teach-in and tethered play on the demo robot", () => {
       "Servos 10–12 hold where they were posed (torque on, confirmed).",
     );
 
-    toggleLimb(ctx, "right-arm", false);
-    toggleLimb(ctx, "left-leg", true);
+    toggleLimb(ctx, "left-arm", false);
+    toggleLimb(ctx, "right-leg", true);
     await run(makeChosenLimp(ctx));
     expect(sim.servos.filter((s) => s.passive).map((s) => s.id)).toEqual([5, 6, 7, 8, 9]);
     await run(endTeachIn(ctx));
@@ -368,10 +369,10 @@ describe("teach-in and tethered play on the demo robot", () => {
     const hw: AppContext = { store, session, packetLog: new PacketLog() };
     await run(startTeachIn(hw));
     expect(livePoseOf(store.get())).toEqual(POSTURE);
-    toggleLimb(hw, "left-leg", true);
+    toggleLimb(hw, "right-leg", true);
     await run(makeChosenLimp(hw));
     expect(sim.servos.filter((x) => x.passive).map((x) => x.id)).toEqual([5, 6, 7, 8, 9]);
-    // A hand bends the left knee; the panel knows only once it reads.
+    // A hand bends the right knee; the panel knows only once it reads.
     expect(sim.poseByHand(7, 90)).toBe(true);
     expect(livePoseOf(store.get())?.[7]).toBe(49);
     const host = new TestHost(newMotion());

@@ -557,7 +557,7 @@ describe("the editor in Korean", () => {
       "그러면 장면 0의 시간이 1ms가 돼요. 장면은 적어도 20ms(프레임 1개)는 걸리므로 모션을 그만큼 빠르게 할 수 없어요.",
     );
     const doc = setPosition(newMotion(), 0, 10, 254);
-    const mirror = refused(() => mirrorPose(doc, 0, { mode: "right-to-left" }));
+    const mirror = refused(() => mirrorPose(doc, 0, { mode: "left-to-right" }));
     expect(mirror.facts.positions?.length).toBeGreaterThan(0);
     expect(refusalText(mirror, ko)).toMatch(
       /^장면 0은\(는\) 좌우 대칭할 수 없어요\. 서보 13 → -?\d+: 위치 0-254를 벗어나요\.$/,

@@ -94,7 +94,7 @@ describe("zeros editor rules", () => {
     draft[3] = "82";
     const check = checkDraft(draft);
     expect([...check.problems.keys()]).toEqual([0, 1, 3]);
-    expect(check.problems.get(3)).toMatch(/Servo 3 \(Right ankle pitch\): 82 is outside 51–81/);
+    expect(check.problems.get(3)).toMatch(/Servo 3 \(Left ankle pitch\): 82 is outside 51–81/);
     expect(draftTable(check)).toBeUndefined();
   });
   it("lists what would change", () => {

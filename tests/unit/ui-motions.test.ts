@@ -171,7 +171,7 @@ describe("motion files", () => {
     // Scenes of 800, 400, 400, 400, 400 and 800 ms.
     expect(plot.x).toEqual([0, 800, 800, 1200, 1200, 1600, 1600, 2000, 2000, 2400, 2400, 3200]);
     expect(plot.series).toHaveLength(16);
-    expect(plot.series[2]?.label).toBe("2 Right knee");
+    expect(plot.series[2]?.label).toBe("2 Left knee");
     const s0 = motion.scenes[0]!.servos[10]!;
     expect(plot.series[10]?.values.slice(0, 2)).toEqual([s0.start, s0.end]);
   });

@@ -12,22 +12,22 @@ import { commandMessages } from "./messages.ts";
 
 /** HUNO's joints in words (the protocol names them in English), by servo id. */
 const JOINT_NAME: readonly KeysWithoutParams<typeof commandMessages>[] = [
-  "cmd.joint.rightHipRoll",
-  "cmd.joint.rightHipPitch",
-  "cmd.joint.rightKnee",
-  "cmd.joint.rightAnklePitch",
-  "cmd.joint.rightAnkleRoll",
   "cmd.joint.leftHipRoll",
   "cmd.joint.leftHipPitch",
   "cmd.joint.leftKnee",
   "cmd.joint.leftAnklePitch",
   "cmd.joint.leftAnkleRoll",
-  "cmd.joint.rightShoulderPitch",
-  "cmd.joint.rightShoulderRoll",
-  "cmd.joint.rightElbow",
+  "cmd.joint.rightHipRoll",
+  "cmd.joint.rightHipPitch",
+  "cmd.joint.rightKnee",
+  "cmd.joint.rightAnklePitch",
+  "cmd.joint.rightAnkleRoll",
   "cmd.joint.leftShoulderPitch",
   "cmd.joint.leftShoulderRoll",
   "cmd.joint.leftElbow",
+  "cmd.joint.rightShoulderPitch",
+  "cmd.joint.rightShoulderRoll",
+  "cmd.joint.rightElbow",
 ];
 
 export function jointName(id: number, locale: Locale): string {

@@ -88,7 +88,7 @@ function joint(id: number, parent: number | "torso", offset: Vec3, axis: "x" | "
   return {
     id,
     name: HUNO_JOINT_NAMES[id] ?? `Servo ${id}`,
-    side: (id >= 5 && id <= 9) || id >= 13 ? "left" : "right",
+    side: id <= 4 || (id >= 10 && id <= 12) ? "left" : "right",
     parent,
     offset,
     axis,
@@ -96,36 +96,38 @@ function joint(id: number, parent: number | "torso", offset: Vec3, axis: "x" | "
   };
 }
 
-/** y of a right-side offset (−) or a left-side one (+). */
-const R = -1;
+/** y of a left-side offset (+) or a right-side one (−): the robot's own left and right. */
 const L = 1;
+const R = -1;
 
 /**
- * The 16 joints, index = servo id, each listed after its parent: right leg 0-4, left leg 5-9 (hip roll, hip
- * pitch, knee, ankle pitch, ankle roll), right arm 10-12, left arm 13-15 (shoulder pitch, shoulder roll, elbow).
+ * The 16 joints, index = servo id, each listed after its parent, named from the robot's own point of view
+ * (docs/protocol.md §4): left leg 0-4, right leg 5-9 (hip roll, hip pitch, knee, ankle pitch, ankle roll),
+ * left arm 10-12, right arm 13-15 (shoulder pitch, shoulder roll, elbow). Facing the viewer, the robot's left
+ * arm is on the viewer's right.
  */
 export const HUNO_JOINTS: readonly HunoJoint[] = [
-  joint(0, "torso", [0, R * D.hipHalfWidth, 0], "x", 1),
+  joint(0, "torso", [0, L * D.hipHalfWidth, 0], "x", -1),
   joint(1, 0, [0, 0, -D.hipRollToPitch], "y", 1),
   joint(2, 1, [0, 0, -D.thigh], "y", 1),
   joint(3, 2, [0, 0, -D.shin], "y", -1),
-  joint(4, 3, [0, 0, -D.anklePitchToRoll], "x", -1),
-  joint(5, "torso", [0, L * D.hipHalfWidth, 0], "x", 1),
+  joint(4, 3, [0, 0, -D.anklePitchToRoll], "x", 1),
+  joint(5, "torso", [0, R * D.hipHalfWidth, 0], "x", -1),
   joint(6, 5, [0, 0, -D.hipRollToPitch], "y", -1),
   joint(7, 6, [0, 0, -D.thigh], "y", -1),
   joint(8, 7, [0, 0, -D.shin], "y", 1),
-  joint(9, 8, [0, 0, -D.anklePitchToRoll], "x", -1),
-  joint(10, "torso", [0, R * D.shoulderHalfWidth, D.shoulderHeight], "y", -1),
-  joint(11, 10, [0, R * D.shoulderPitchToRoll, 0], "x", -1),
+  joint(9, 8, [0, 0, -D.anklePitchToRoll], "x", 1),
+  joint(10, "torso", [0, L * D.shoulderHalfWidth, D.shoulderHeight], "y", -1),
+  joint(11, 10, [0, L * D.shoulderPitchToRoll, 0], "x", 1),
   joint(12, 11, [0, 0, -D.upperArm], "y", 1),
-  joint(13, "torso", [0, L * D.shoulderHalfWidth, D.shoulderHeight], "y", 1),
-  joint(14, 13, [0, L * D.shoulderPitchToRoll, 0], "x", -1),
+  joint(13, "torso", [0, R * D.shoulderHalfWidth, D.shoulderHeight], "y", 1),
+  joint(14, 13, [0, R * D.shoulderPitchToRoll, 0], "x", 1),
   joint(15, 14, [0, 0, -D.upperArm], "y", -1),
 ];
 
 /** The feet: the links of the ankle roll joints. */
-export const RIGHT_FOOT = 4;
-export const LEFT_FOOT = 9;
+export const LEFT_FOOT = 4;
+export const RIGHT_FOOT = 9;
 
 /** The centre of a foot's sole in its ankle roll link's frame (mm). */
 export const SOLE_CENTRE: Vec3 = [D.footForward, 0, -D.ankleRollToSole];
@@ -155,7 +157,7 @@ function box(kind: ShapeKind, centre: Vec3, size: Vec3): LinkShape {
   return { kind, centre, size };
 }
 
-/** Shapes of the links on one side; `s` is −1 for the right, +1 for the left. */
+/** Shapes of the links on one side; `s` is +1 for the robot's left, −1 for its right. */
 function sideShapes(s: number, leg: readonly number[], arm: readonly number[]): [LinkId, LinkShape][] {
   const [hipRoll, hipPitch, knee, anklePitch, ankleRoll] = leg as [number, number, number, number, number];
   const [shoulderPitch, shoulderRoll, elbow] = arm as [number, number, number];
@@ -188,8 +190,8 @@ export const HUNO_SHAPES: readonly (readonly [LinkId, LinkShape])[] = [
   ["torso", box("shell", [0, 0, 76], [66, 112, 102])],
   ["torso", box("shell", [0, 0, D.headTop - 26], [46, 54, 52])],
   ["torso", box("visor", [23.5, 0, D.headTop - 22], [2, 42, 18])],
-  ...sideShapes(-1, [0, 1, 2, 3, 4], [10, 11, 12]),
-  ...sideShapes(1, [5, 6, 7, 8, 9], [13, 14, 15]),
+  ...sideShapes(1, [0, 1, 2, 3, 4], [10, 11, 12]),
+  ...sideShapes(-1, [5, 6, 7, 8, 9], [13, 14, 15]),
 ];
 
 /** A pose: one position per servo id (undefined: that joint at its zero). */

@@ -80,7 +80,8 @@ export class RobotCanvas {
   private queued = 0;
   private frames = 0;
   private disposed = false;
-  private size = { width: 0, height: 0 };
+  /** The box (CSS pixels) and pixel ratio the scene's drawing buffer was last given. */
+  private size = { width: 0, height: 0, ratio: 0 };
   private readonly resize: ResizeObserver | undefined;
   private readonly scheme: MediaQueryList | undefined;
   private drag: { id: number; x: number; y: number } | undefined;
@@ -192,11 +193,21 @@ export class RobotCanvas {
     this.showStatus();
   }
 
+  /**
+   * Sizes the drawing buffer to the canvas's box × devicePixelRatio, so the robot is neither stretched nor
+   * blurred. Called by the ResizeObserver (every new box) and once the scene exists: a box measured before
+   * three.js had loaded was never applied, so the size is remembered only once the scene has taken it.
+   */
   private measure(): void {
+    if (!this.scene) return;
     const box = this.canvas.getBoundingClientRect();
-    if (box.width === this.size.width && box.height === this.size.height) return;
-    this.size = { width: box.width, height: box.height };
-    this.scene?.setSize(box.width, box.height, Math.min(2, window.devicePixelRatio || 1));
+    const ratio = window.devicePixelRatio || 1;
+    const size = { width: box.width, height: box.height, ratio };
+    const same =
+      size.width === this.size.width && size.height === this.size.height && size.ratio === this.size.ratio;
+    if (same) return;
+    this.size = size;
+    this.scene.setSize(box.width, box.height, ratio);
     this.requestDraw();
   }
 

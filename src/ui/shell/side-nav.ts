@@ -1,4 +1,5 @@
 import { html, nothing, type TemplateResult } from "lit-html";
+import { ref } from "lit-html/directives/ref.js";
 import { isLocale, LOCALE_NAMES, LOCALES } from "../../i18n/locale.ts";
 import { translator } from "../../i18n/translate.ts";
 import { hrefFor } from "../router.ts";
@@ -30,6 +31,19 @@ function languageSwitch(ctx: ViewContext): TemplateResult {
   `;
 }
 
+/**
+ * On a phone the list is one row that scrolls inside itself (phone.css): keep the current view's tab in sight,
+ * moving only the row (never the page, so a scrolled page stays where it is).
+ */
+function keepInRow(link: Element | undefined): void {
+  const row = link?.closest("ul");
+  if (!(link instanceof HTMLElement) || !row || row.scrollWidth <= row.clientWidth) return;
+  const left = link.offsetLeft - row.offsetLeft;
+  const right = left + link.offsetWidth;
+  if (left < row.scrollLeft) row.scrollLeft = left;
+  else if (right > row.scrollLeft + row.clientWidth) row.scrollLeft = right - row.clientWidth;
+}
+
 /** The list of views: a column on wide screens, a row of tabs on narrow ones; the language switch under it. */
 export function sideNav(ctx: ViewContext): TemplateResult {
   const t = translator(shellMessages, ctx.state.locale);
@@ -39,7 +53,12 @@ export function sideNav(ctx: ViewContext): TemplateResult {
         ${VIEWS.map(
           (v) => html`
             <li>
-              <a href=${hrefFor(v.id)} aria-current=${v.id === ctx.state.route ? "page" : nothing}>${t(v.label)}</a>
+              <a
+                href=${hrefFor(v.id)}
+                aria-current=${v.id === ctx.state.route ? "page" : nothing}
+                ${v.id === ctx.state.route ? ref(keepInRow) : nothing}
+                >${t(v.label)}</a
+              >
             </li>
           `,
         )}

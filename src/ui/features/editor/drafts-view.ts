@@ -1,5 +1,6 @@
 import { html, nothing, type TemplateResult } from "lit-html";
 import { translator } from "../../../i18n/translate.ts";
+import { nameWithBreaks } from "../../shell/name-breaks.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
 import {
@@ -82,7 +83,7 @@ function draftItem(
   const name = { name: d.name };
   return html`<li class="draft ${open ? "is-open" : ""}" data-testid="draft">
     <p class="draft-head">
-      <strong class="long-text">${d.name}</strong>
+      <strong class="long-text name-text">${nameWithBreaks(d.name)}</strong>
       ${open ? html`<span class="draft-open small">${t("editor.drafts.openHere")}</span>` : nothing}
     </p>
     <p class="muted small num">

@@ -194,8 +194,8 @@ export const editorMessages = defineMessages({
   "editor.mirror.rightToLeft": { en: "Right → left", ko: "오른쪽 → 왼쪽" },
   "editor.mirror.leftToRight": { en: "Left → right", ko: "왼쪽 → 오른쪽" },
   "editor.mirror.hint": {
-    en: "Swap: each side takes the other's pose (a wave with the other hand). Right → left: the left side copies the right, mirrored (a symmetric pose).",
-    ko: "좌우 바꾸기: 양쪽이 서로의 자세를 가져가요 (반대 손으로 손 흔들기). 오른쪽 → 왼쪽: 왼쪽이 오른쪽 자세를 좌우 대칭으로 따라 해요 (대칭 자세).",
+    en: "Swap: each side takes the other's pose (a wave with the other hand). Right → left: the robot's left side (servos 0-4, 10-12) copies its right side (5-9, 13-15), mirrored (a symmetric pose). Left and right are the robot's own: its left arm is on your right when it faces you.",
+    ko: "좌우 바꾸기: 양쪽이 서로의 자세를 가져가요 (반대 손으로 손 흔들기). 오른쪽 → 왼쪽: 로봇의 왼쪽(서보 0-4, 10-12)이 오른쪽(5-9, 13-15) 자세를 좌우 대칭으로 따라 해요 (대칭 자세). 왼쪽과 오른쪽은 로봇 기준이에요. 로봇이 나를 마주 보고 있으면 로봇의 왼팔은 내 오른쪽에 있어요.",
   },
   "editor.mirror.notHuno": {
     en: "Mirroring knows the HUNO's joints; this motion is for platform {platform}.",

@@ -4,7 +4,7 @@ import { translator } from "../../../i18n/translate.ts";
 import type { Motion, MotionScene, SceneRecord } from "../../../motion/index.ts";
 import { safeRange } from "../../../protocol/servo-limits.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
-import { jointName } from "../zeros/joints/joint-name.ts";
+import { jointName, sidesNote } from "../zeros/joints/joint-name.ts";
 import {
   choosePort,
   choosePoseColumns,
@@ -186,6 +186,7 @@ export function poseCard(ctx: ViewContext, s: EditorState, doc: Motion): Templat
   return html`
     <section class="card editor-pose" aria-labelledby="pose-title" data-testid="pose-card">
       <h2 id="pose-title" class="card-title long-text">${t("editor.sceneHeading", { scene: String(s.scene), name: scene.name })}</h2>
+      <p class="muted small sides-note" data-testid="sides-note">${sidesNote(t.locale)}</p>
       ${poseTable(ctx, s, doc, scene)}
     </section>
   `;

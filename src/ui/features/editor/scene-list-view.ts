@@ -4,6 +4,7 @@ import { repeat } from "lit-html/directives/repeat.js";
 import { translator } from "../../../i18n/translate.ts";
 import type { Motion, MotionScene } from "../../../motion/index.ts";
 import { formatCount } from "../../format.ts";
+import { nameWithBreaks } from "../../shell/name-breaks.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
 import { formatSeconds } from "../motions/plot-data.ts";
 import { addSceneAfter, chooseScene, deleteSelected, duplicateSelected, moveSelected } from "./actions.ts";
@@ -58,7 +59,7 @@ function sceneOption(
       @keydown=${(e: KeyboardEvent) => sceneKey(ctx, k, count, e)}
     >
       <span class="num scene-k"><span class="sr-only">${t("editor.scenes.optionScene")} </span>${k}</span>
-      <span class="scene-name">${scene.name}</span>
+      <span class="scene-name name-text">${nameWithBreaks(scene.name)}</span>
       <span class="num muted scene-timing">
         <span aria-hidden="true">${t("editor.scenes.timingShort", timing)}</span
         ><span class="sr-only">${t("editor.scenes.timingSpoken", timing)}</span>

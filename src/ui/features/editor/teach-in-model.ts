@@ -16,16 +16,16 @@ import { type EditorKey, type EditorTranslator, editorMessages } from "./message
 const english = translator(editorMessages, "en");
 
 /**
- * The HUNO's limbs and their servo ids (docs/motion-document.md, Mirror; names as `jointName`): legs 0-4 and
- * 5-9 (hip roll, hip pitch, knee, ankle pitch, ankle roll), arms 10-12 and 13-15 (shoulder pitch, shoulder
- * roll, elbow).
+ * The HUNO's limbs and their servo ids, named from the robot's own point of view (docs/protocol.md §4; names
+ * as `jointName`): left leg 0-4, right leg 5-9 (hip roll, hip pitch, knee, ankle pitch, ankle roll), left arm
+ * 10-12, right arm 13-15 (shoulder pitch, shoulder roll, elbow).
  */
 interface LimbInfo {
   limb: Limb;
-  /** Its name, in English ("Right leg"); `key` in the catalogue. */
+  /** Its name, in English ("Left leg"); `key` in the catalogue. */
   label: string;
   key: EditorKey;
-  /** Its name inside a sentence: "the right leg". */
+  /** Its name inside a sentence: "the left leg". */
   inSentence: EditorKey;
   ids: readonly number[];
 }
@@ -36,27 +36,27 @@ function limb(l: Omit<LimbInfo, "label">): LimbInfo {
 
 export const LIMBS: readonly LimbInfo[] = [
   limb({
-    limb: "right-leg",
-    key: "editor.limb.rightLeg",
-    inSentence: "editor.limbIn.rightLeg",
-    ids: [0, 1, 2, 3, 4],
-  }),
-  limb({
     limb: "left-leg",
     key: "editor.limb.leftLeg",
     inSentence: "editor.limbIn.leftLeg",
-    ids: [5, 6, 7, 8, 9],
+    ids: [0, 1, 2, 3, 4],
   }),
   limb({
-    limb: "right-arm",
-    key: "editor.limb.rightArm",
-    inSentence: "editor.limbIn.rightArm",
-    ids: [10, 11, 12],
+    limb: "right-leg",
+    key: "editor.limb.rightLeg",
+    inSentence: "editor.limbIn.rightLeg",
+    ids: [5, 6, 7, 8, 9],
   }),
   limb({
     limb: "left-arm",
     key: "editor.limb.leftArm",
     inSentence: "editor.limbIn.leftArm",
+    ids: [10, 11, 12],
+  }),
+  limb({
+    limb: "right-arm",
+    key: "editor.limb.rightArm",
+    inSentence: "editor.limbIn.rightArm",
     ids: [13, 14, 15],
   }),
 ];
@@ -107,7 +107,7 @@ export function servosText(t: EditorTranslator, ids: readonly number[]): string 
   return ids.length === 1 ? t("editor.servosOne", list) : t("editor.servosMany", list);
 }
 
-/** The chosen limbs in words: "the right arm", "the right leg and the left arm", "every servo". */
+/** The chosen limbs in words: "the left arm", "the left leg and the right arm", "every servo". */
 export function limbsText(limbs: readonly Limb[], locale: Locale = "en"): string {
   const t = translator(editorMessages, locale);
   if (choosesAll(limbs)) return t("editor.limbs.every");

@@ -6,7 +6,7 @@ import { HUNO_SERVO_IDS } from "../../../protocol/servo-limits.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
 import { servoRange } from "../servos/state.ts";
-import { jointName } from "../zeros/joints/joint-name.ts";
+import { jointName, sidesNote } from "../zeros/joints/joint-name.ts";
 import type { EditorHost } from "./host.ts";
 import { liveOf, sceneNumber, type TeachInState, teachInOn } from "./live-state.ts";
 import { type EditorTranslator, editorMessages } from "./messages.ts";
@@ -230,6 +230,7 @@ export function teachInPanel(ctx: ViewContext, host: EditorHost): TemplateResult
   return html`
     <section class="card live-panel" aria-labelledby="teach-in-title" data-testid="teach-in">
       <h2 id="teach-in-title" class="card-title">${w("editor.teach.title")}</h2>
+      <p class="muted small sides-note" data-testid="sides-note">${sidesNote(w.locale)}</p>
       ${
         !connected
           ? html`<p class="muted small" data-testid="teach-in-hint">${w("editor.teach.hint")}</p>`

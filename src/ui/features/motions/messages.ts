@@ -111,8 +111,8 @@ export const motionsMessages = defineMessages({
   },
   "motions.example.open": { en: "Open {file}", ko: "{file} 열기" },
   "motions.example.wave": {
-    en: "raises its right arm, waves twice, lowers it",
-    ko: "오른팔을 들어 두 번 흔들고 내려요",
+    en: "raises its left arm, waves twice, lowers it",
+    ko: "왼팔을 들어 두 번 흔들고 내려요",
   },
   "motions.example.bow": {
     en: "bows from the hips and straightens up",
@@ -194,8 +194,8 @@ export const motionsMessages = defineMessages({
   "motions.scenes.lasts": { en: "Lasts", ko: "길이" },
   "motions.scenes.frameEvery": { en: "Frames every", ko: "프레임 간격" },
   "motions.scenes.caption": {
-    en: "Each servo's position over time; left-side joints dashed. Press a joint to hide or show its line.",
-    ko: "시간에 따른 각 서보의 위치예요. 왼쪽 관절은 점선이에요. 관절을 누르면 그 선을 숨기거나 다시 보여 줘요.",
+    en: "Each servo's position over time; the robot's right-side joints dashed. Press a joint to hide or show its line.",
+    ko: "시간에 따른 각 서보의 위치예요. 로봇 기준 오른쪽 관절은 점선이에요. 관절을 누르면 그 선을 숨기거나 다시 보여 줘요.",
   },
   "motions.chart.title": {
     en: "Servo positions of {name} over {time}, one line per servo",

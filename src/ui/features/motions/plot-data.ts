@@ -18,25 +18,25 @@ export interface MotionPlot {
 
 /** The HUNO's joints by servo id (protocol/servo-limits.ts HUNO_JOINT_NAMES), in the panel's words. */
 const HUNO_JOINTS: readonly MotionsKey[] = [
-  "motions.joint.rightHipRoll",
-  "motions.joint.rightHipPitch",
-  "motions.joint.rightKnee",
-  "motions.joint.rightAnklePitch",
-  "motions.joint.rightAnkleRoll",
   "motions.joint.leftHipRoll",
   "motions.joint.leftHipPitch",
   "motions.joint.leftKnee",
   "motions.joint.leftAnklePitch",
   "motions.joint.leftAnkleRoll",
-  "motions.joint.rightShoulderPitch",
-  "motions.joint.rightShoulderRoll",
-  "motions.joint.rightElbow",
+  "motions.joint.rightHipRoll",
+  "motions.joint.rightHipPitch",
+  "motions.joint.rightKnee",
+  "motions.joint.rightAnklePitch",
+  "motions.joint.rightAnkleRoll",
   "motions.joint.leftShoulderPitch",
   "motions.joint.leftShoulderRoll",
   "motions.joint.leftElbow",
+  "motions.joint.rightShoulderPitch",
+  "motions.joint.rightShoulderRoll",
+  "motions.joint.rightElbow",
 ];
 
-/** "0 Right hip roll" ("0 오른쪽 엉덩이 롤") for HUNO ids, "Servo 20" otherwise. */
+/** "0 Left hip roll" ("0 왼쪽 엉덩이 롤") for HUNO ids, "Servo 20" otherwise. */
 export function jointLabel(id: number, locale: Locale = "en"): string {
   const t = translator(motionsMessages, locale);
   const joint = HUNO_JOINTS[id];

@@ -6,7 +6,7 @@ import { formatClockTime } from "../../format.ts";
 import { liveRobotPanel } from "../../robot3d/live-robot.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
-import { jointName } from "../zeros/joints/joint-name.ts";
+import { jointName, sidesNote } from "../zeros/joints/joint-name.ts";
 import {
   acknowledgeSafety,
   applyTypedTarget,
@@ -189,6 +189,7 @@ function controlCard(ctx: ViewContext, t: ServosTranslator): TemplateResult {
         ${s.readAt ? t("servos.positionsReadAt", { time: formatClockTime(s.readAt) }) : ""}
       </p>
       ${liveNotice(s.notice, t("servos.resultLabel"), ctx.state.locale)}
+      <p class="muted small sides-note" data-testid="sides-note">${sidesNote(t.locale)}</p>
       <table class="zeros-table servo-table">
         <caption class="sr-only">${t("servos.table.caption")}</caption>
         <thead>
@@ -232,12 +233,13 @@ function render(ctx: ViewContext): TemplateResult {
   const acked = ctx.state.acks?.servos === true;
   const t = translator(servosMessages, ctx.state.locale);
   return html`
-    <div class="view-stack">
+    <div class="view-stack servos-view">
       <header class="view-head">
         <h1 id="view-title">${t("servos.title")}</h1>
         <p class="muted">${t("servos.intro")}</p>
       </header>
-      ${acked ? nothing : safetyNotice(ctx, t)} ${liveRobot(ctx, t)} ${controlCard(ctx, t)}
+      ${acked ? nothing : safetyNotice(ctx, t)}
+      <div class="servos-work">${liveRobot(ctx, t)} ${controlCard(ctx, t)}</div>
     </div>
   `;
 }

@@ -23,6 +23,7 @@ import {
   writeZerosToRobot,
 } from "./actions.ts";
 import { checkDraft, type DraftCheck, draftTable, jointName, pendingChanges } from "./editor.ts";
+import { sidesNote } from "./joints/joint-name.ts";
 import { type ZerosTranslator, zerosMessages } from "./messages.ts";
 import type { ZerosSource } from "./state.ts";
 
@@ -250,6 +251,7 @@ function render(ctx: ViewContext): TemplateResult {
             : nothing
         }
       </p>
+      ${ready ? html`<p class="muted small sides-note" data-testid="sides-note">${sidesNote(locale)}</p>` : nothing}
       ${zeroTables(busy || !ready, ctx, t)}
       ${liveNotice(z.fileNotice, t("zeros.fileNoticeLabel"), locale)}
       ${

@@ -4,6 +4,7 @@ import { repeat } from "lit-html/directives/repeat.js";
 import { translator } from "../../../../i18n/translate.ts";
 import { formatCount, formatMilliseconds } from "../../../format.ts";
 import { motionPreview } from "../../../robot3d/robot-view.ts";
+import { nameWithBreaks } from "../../../shell/name-breaks.ts";
 import { liveNotice } from "../../../shell/notice.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
 import { checkedEntry, entryFacts, openMotionFiles, removeMotionFile, setDragging } from "../files.ts";
@@ -100,7 +101,7 @@ function fileCard(
     <article class="motion-file ${selected ? "is-selected" : ""} ${errors.length > 0 ? "has-errors" : ""}" data-testid="motion-file" aria-labelledby=${`file-${entry.id}`}>
       <div class="motion-file-head">
         <h3 id=${`file-${entry.id}`} class="long-text">
-          ${facts ? html`${facts.name} <span class="muted file-name">${entry.fileName}</span>` : entry.fileName}
+          ${facts ? html`<span class="name-text">${nameWithBreaks(facts.name)}</span> <span class="muted file-name name-text">${nameWithBreaks(entry.fileName)}</span>` : html`<span class="name-text">${nameWithBreaks(entry.fileName)}</span>`}
         </h3>
         <div class="row-actions">
           ${

@@ -33,7 +33,7 @@ function motionChartContent(entry: MotionFileEntry, motion: RbmMotion, locale: L
       series: plot.series.map((s, i) => ({
         label: s.label,
         stroke: seriesColour(i, n),
-        // Left-side joints (5-9 legs, 13-15 arms) dashed, so that mirrored joints can be told apart.
+        // The robot's right-side joints (5-9 leg, 13-15 arm, docs/protocol.md §4) dashed, so that mirrored joints can be told apart.
         dash: (s.id >= 5 && s.id <= 9) || s.id >= 13 ? [6, 3] : undefined,
       })),
     },

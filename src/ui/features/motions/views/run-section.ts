@@ -3,6 +3,7 @@ import { translator } from "../../../../i18n/translate.ts";
 import { BASIC_POSTURE_MOTION, SOUND_LENGTHS_MS, soundLengthMs } from "../../../../protocol/catalog.ts";
 import type { AppState } from "../../../app-state.ts";
 import { liveRobotPanel } from "../../../robot3d/live-robot.ts";
+import { nameWithBreaks } from "../../../shell/name-breaks.ts";
 import { liveNotice } from "../../../shell/notice.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
 import { servosOf } from "../../servos/state.ts";
@@ -55,7 +56,7 @@ function motionButton(
       @click=${() => pressRun(ctx, offer.number)}
     >
       <span class="motion-num num">${offer.number}</span>
-      <span class="motion-name">${offer.name}</span>
+      <span class="motion-name name-text">${nameWithBreaks(offer.name)}</span>
       <span class="motion-time num muted">${offer.expectedMs === undefined ? "?" : formatSeconds(offer.expectedMs, t.locale)}</span>
       ${recommended ? html`<span class="badge">${t("motions.run.runFirst")}</span>` : nothing}
     </button>

@@ -23,4 +23,9 @@ export const jointMessages = defineMessages({
   "joint.leftShoulderRoll": { en: "Left shoulder roll", ko: "왼쪽 어깨 롤" },
   "joint.leftElbow": { en: "Left elbow", ko: "왼쪽 팔꿈치" },
   "joint.servo": { en: "Servo {id}", ko: "서보 {id}" },
+  /** Said once in every view that names servos (docs/protocol.md §4). */
+  "joint.sides": {
+    en: "Left and right are the robot's own: its left arm is on your right when it faces you.",
+    ko: "왼쪽과 오른쪽은 로봇 기준이에요. 로봇이 나를 마주 보고 있으면 로봇의 왼팔은 내 오른쪽에 있어요.",
+  },
 });
