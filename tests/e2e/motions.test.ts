@@ -83,9 +83,7 @@ describe("motions view", () => {
     expect(await page.locator(".scene-table tbody tr").count()).toBe(6);
     await page.locator('[data-testid="motion-chart"][data-chart="drawn"]').waitFor();
     expect(await page.locator('[data-testid="motion-chart"] canvas').count()).toBeGreaterThan(0);
-    expect(await page.locator('[data-testid="motion-chart"] .u-legend').textContent()).toContain(
-      "Left knee",
-    );
+    expect(await page.locator('[data-testid="motion-chart"] .u-legend').textContent()).toContain("Left knee");
 
     // A real robot (the fake port is hardware): the panel says it is experimental and asks first.
     const before = await bytesFromPc(page);
