@@ -80,6 +80,13 @@ export {
   type SensorState,
   type SubscriptionType,
 } from "./sim-sensors.ts";
+export {
+  collide,
+  LOADED_SERVO_FOLLOW,
+  LOADED_SERVO_LOAD,
+  type ServoFaults,
+} from "./sim-servo-faults.ts";
+export { DEFAULT_SERVO_PARAMETERS } from "./sim-servo-parameters.ts";
 export type { ServoListener } from "./sim-servo-watch.ts";
 export type { ServoState } from "./sim-servos.ts";
 export type { SimulatedRbcOptions, SimulatedRbcState, SimulatedRbcStats } from "./sim-types.ts";

@@ -4,6 +4,7 @@ import type { DownloadProgress } from "./sim-downloader.ts";
 import type { StoredFile } from "./sim-downloads.ts";
 import type { DropReason } from "./sim-receiver.ts";
 import type { AccelerometerNoise, SensorState } from "./sim-sensors.ts";
+import { checkServoFaults, type ServoFaults } from "./sim-servo-faults.ts";
 import type { ServoState } from "./sim-servos.ts";
 
 /** Options, statistics and the state snapshot of the simulated RBC. */
@@ -57,6 +58,11 @@ export interface SimulatedRbcOptions {
    * from the PC arrives after power-up, so a client connects to a robot that is playing something.
    */
   busyMotion?: number;
+  /**
+   * Faults of the servo bus (docs/protocol.md §5, §9): missing servos, duplicate ids, replacement servos at
+   * id 0, loaded servos, by joint 0-15 (`sim-servo-faults.ts`).
+   */
+  servoFaults?: ServoFaults;
 }
 
 export interface SimulatedRbcStats {
@@ -122,6 +128,7 @@ export function resolveOptions(options: SimulatedRbcOptions) {
     servosSilent: options.servosSilent ?? false,
     soundReplyAtOnce: options.soundReplyAtOnce ?? false,
     busyMotion: checkedBusyMotion(options.busyMotion),
+    servoFaults: checkServoFaults(options.servoFaults),
   };
 }
 
