@@ -96,6 +96,6 @@ export {
 } from "./sim-servo-faults.ts";
 export { DEFAULT_SERVO_PARAMETERS } from "./sim-servo-parameters.ts";
 export type { ServoListener } from "./sim-servo-watch.ts";
-export type { ServoState } from "./sim-servos.ts";
+export { ServoBus, type ServoState } from "./sim-servos.ts";
 export type { SimulatedRbcOptions, SimulatedRbcState, SimulatedRbcStats } from "./sim-types.ts";
 export { SimulatedRbc } from "./simulated-rbc.ts";

@@ -5,7 +5,7 @@ import type { StoredFile } from "./sim-downloads.ts";
 import type { DropReason } from "./sim-receiver.ts";
 import type { AccelerometerNoise, SensorState } from "./sim-sensors.ts";
 import { checkServoFaults, type ServoFaults } from "./sim-servo-faults.ts";
-import type { ServoState } from "./sim-servos.ts";
+import type { ServoBus, ServoState } from "./sim-servos.ts";
 
 /** Options, statistics and the state snapshot of the simulated RBC. */
 
@@ -63,6 +63,12 @@ export interface SimulatedRbcOptions {
    * id 0, loaded servos, by joint 0-15 (`sim-servo-faults.ts`).
    */
   servoFaults?: ServoFaults;
+  /**
+   * The servos, kept by the caller so that they outlast this RBC: the demo robot keeps one set for the page,
+   * so that an id set survives a reconnect (a new RBC is a power-up: bounds go back to 1..254). Its faults are
+   * given to the ServoBus itself: not together with `servoFaults`.
+   */
+  servoBus?: ServoBus;
 }
 
 export interface SimulatedRbcStats {
@@ -129,7 +135,15 @@ export function resolveOptions(options: SimulatedRbcOptions) {
     soundReplyAtOnce: options.soundReplyAtOnce ?? false,
     busyMotion: checkedBusyMotion(options.busyMotion),
     servoFaults: checkServoFaults(options.servoFaults),
+    servoBus: checkedServoBus(options),
   };
+}
+
+function checkedServoBus(options: SimulatedRbcOptions): ServoBus | undefined {
+  if (options.servoBus && options.servoFaults) {
+    throw new RangeError("Give the servo faults to the ServoBus, not with a ServoBus to the SimulatedRbc.");
+  }
+  return options.servoBus;
 }
 
 function checkedBusyMotion(n: number | undefined): number | undefined {

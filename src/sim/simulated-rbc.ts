@@ -86,7 +86,9 @@ export class SimulatedRbc {
     this.zeroTable = o.zeros;
     this.postureDone = o.basicPostureDone;
     this.variant = o;
-    this.servoBus = new ServoBus(o.servoFaults);
+    this.servoBus = o.servoBus ?? new ServoBus(o.servoFaults);
+    // Servos kept from an earlier connection see this RBC start: a power-up.
+    if (o.servoBus) this.servoBus.powerUp();
     this.servoWatch = new ServoWatch(this.servoBus.servos);
     this.timers = new SimTimers(this.clock);
     this.player = new SimPlayer(this.timers, {

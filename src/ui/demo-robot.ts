@@ -4,6 +4,7 @@ import {
   bluetoothLinkOptions,
   createDemoRbc,
   MockSerialPort,
+  ServoBus,
   type SimulatedRbc,
 } from "../sim/index.ts";
 
@@ -38,13 +39,17 @@ export interface DemoRobotOptions {
  * The demo robot: a simulated RBC (firmware 2.23, HUNO) with its bootloader in front, behind a mock serial port with a small adapter
  * latency, in the demo world the CLI's --demo shares: its accelerometer reads with a little seeded noise around an
  * upright robot, so the Sensors view shows something alive. Loaded with a dynamic import, so the simulator is not part of the initial bundle.
- * Every connection to the demo robot gets a new one.
+ * Every connection to the demo robot gets a new one; its servos (`demoServos`) are kept for the page.
  */
+/** The demo robot's servos, kept for the page: an id set on the servo bus survives a reconnect (docs/protocol.md §5). */
+let demoServos: ServoBus | undefined;
+
 export function createDemoRobot(options: DemoRobotOptions = {}): DemoRobot {
   const scale = options.timeScale ?? 1;
   const clock = scale === 1 ? realClock : scaledClock(scale);
   // The same world as the CLI's --demo (src/sim/demo-world.ts).
-  const sim = createDemoRbc({ clock });
+  demoServos ??= new ServoBus();
+  const sim = createDemoRbc({ clock, servoBus: demoServos });
   const boot = new BootloaderRbc(sim);
   // Browser tests (tests/e2e/rbc-test-globals.ts: `__rbcTestOptions` is set only by them) watch its servos.
   const page = globalThis as { __rbcTestOptions?: unknown; __rbcDemoSim?: SimulatedRbc };

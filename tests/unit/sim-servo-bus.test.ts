@@ -1,7 +1,7 @@
 import { describe, expect, it } from "vitest";
 import { toHex } from "../../src/protocol/index.ts";
 import { VirtualClock } from "../../src/shared/clock.ts";
-import { SimulatedRbc, type SimulatedRbcOptions } from "../../src/sim/index.ts";
+import { ServoBus, SimulatedRbc, type SimulatedRbcOptions } from "../../src/sim/index.ts";
 
 /**
  * The simulated servo bus (docs/protocol.md §5, §9): parameter sets and reads in the manual's byte order, the id
@@ -100,6 +100,29 @@ describe("the id set (0x0C)", () => {
     ask(ENTER_DIRECT);
     expect(ask("FF BE 00 3E")).toEqual(["00 7D"]);
     expect(ask("FF A0 00 20")).toEqual([]);
+  });
+});
+
+describe("servos kept across RBCs (the demo robot keeps one ServoBus for the page)", () => {
+  it("an id set on one connection is still there on the next; its bounds set is not (a new RBC is a power-up)", () => {
+    const servoBus = new ServoBus({ replacement: [12] });
+    const first = bus({ servoBus });
+    expect(first.ask("FF AC 00 2C")).toEqual([]);
+    first.sim.connectServo(0, false);
+    expect(first.ask("FF E0 0C 0C 0C 6C")).toEqual(["0C 0C"]);
+    expect(first.ask("FF EC 11 28 C8 1D")).toEqual(["28 C8"]);
+    first.sim.connectServo(0, true);
+    first.sim.dispose();
+    const second = bus({ servoBus });
+    expect(second.ask("FF AC 00 2C")).toEqual(["00 31"]);
+    expect(second.ask("FF A0 00 20")).toEqual(["00 7D"]);
+    expect(second.ask("FF EC 12 00 00 7E")).toEqual(["01 FE"]);
+  });
+
+  it("faults go to the ServoBus, not beside it", () => {
+    expect(() => new SimulatedRbc({ servoBus: new ServoBus(), servoFaults: { missing: [1] } })).toThrow(
+      RangeError,
+    );
   });
 });
 
