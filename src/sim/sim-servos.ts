@@ -145,14 +145,14 @@ export class ServoBus {
   }
 
   /** The servos on the bus that receive a command for `busId` (connected, at 115200). */
-  private at(busId: number): ServoState[] {
-    return this.reachable().filter((s) => s.busId === busId);
+  private at(busId: number): BusServo[] {
+    return this.reachable().filter((s) => s.state.busId === busId);
   }
 
-  private reachable(): ServoState[] {
-    return [...this.joints, ...this.extras]
-      .map((s) => s.state)
-      .filter((s) => s.connected && s.baudCode === BAUD_115200);
+  private reachable(): BusServo[] {
+    return [...this.joints, ...this.extras].filter(
+      (s) => s.state.connected && s.state.baudCode === BAUD_115200,
+    );
   }
 
   /** Sets positions of bus ids 0.. (motion playback); values clamp to the bounds. Servos become active. */
@@ -164,7 +164,7 @@ export class ServoBus {
 
   /** Drives every servo at bus id `id` to `position` and makes it hold; an id nobody has changes nothing. */
   setPosition(id: number, position: number): void {
-    for (const servo of this.at(id)) drive(servo, position);
+    for (const servo of this.at(id)) drive(servo.state, position);
   }
 
   /** A frame of a playing motion (docs/protocol.md §10), sent by bus id: each servo moves with its torque and holds. */
@@ -172,7 +172,7 @@ export class ServoBus {
     ids.forEach((id, i) => {
       const position = positions[i];
       if (position === undefined) return;
-      for (const servo of this.at(id)) drive(servo, position, torques[i] ?? servo.torque);
+      for (const { state } of this.at(id)) drive(state, position, torques[i] ?? state.torque);
     });
   }
 
@@ -218,13 +218,13 @@ export class ServoBus {
       case "exit-direct":
         return { exitDirectMode: true };
       case "sync":
-        for (const servo of this.reachable()) {
-          const position = command.positions[servo.busId];
-          if (position !== undefined) drive(servo, position, command.speed);
+        for (const { state } of this.reachable()) {
+          const position = command.positions[state.busId];
+          if (position !== undefined) drive(state, position, command.speed);
         }
         return {};
       case "brake":
-        for (const servo of this.reachable()) servo.passive = false;
+        for (const { state } of this.reachable()) state.passive = false;
         return { reply: Uint8Array.of(31, 0) };
       case "move":
         return this.answer(command.id, (servo) => {
@@ -253,9 +253,9 @@ export class ServoBus {
   }
 
   /** Every servo at `busId` acts on the command; their replies: none, one clean pair, or collided bytes. */
-  private answer(busId: number, act: (servo: ServoState) => ParameterReply): BusResult {
+  private answer(busId: number, act: (servo: ServoState, stored: StoredGains) => ParameterReply): BusResult {
     const replies = this.at(busId)
-      .map((servo) => act(servo))
+      .map((servo) => act(servo.state, servo.stored))
       .filter((r) => r !== undefined);
     if (replies.length === 0) return {};
     if (replies.length === 1) return { reply: Uint8Array.from(replies[0]!.map((b) => b & 0xff)) };
@@ -267,10 +267,6 @@ export class ServoBus {
     if (data[0] === PARAMETER.read10) {
       return this.answer(data[1], (servo) => position10Reply(servo.position));
     }
-    const all = [...this.joints, ...this.extras];
-    return this.answer(id, (servo) => {
-      const stored = all.find((s) => s.state === servo)!.stored;
-      return applyParameter(servo, stored, data);
-    });
+    return this.answer(id, (servo, stored) => applyParameter(servo, stored, data));
   }
 }
