@@ -121,11 +121,10 @@ export const WCK_SET_ID = 0x0c;
 /** Read parameter `parameter` of servo `id`: `FF (E0|id) d2 00 00 cs`. Reply: 2 bytes (`decodeWckParameter`). */
 export function wckReadParameter(id: number, parameter: WckParameter): Uint8Array {
   checkId(id);
-  const d2: number | undefined = WCK_PARAMETER_READS[parameter];
-  if (d2 === undefined) {
+  if (!Object.hasOwn(WCK_PARAMETER_READS, parameter)) {
     throw new ProtocolError("wck-parameter", `Unknown servo parameter "${String(parameter)}".`);
   }
-  return withChecksum([WCK_START, 0xe0 | id, d2, 0, 0]);
+  return withChecksum([WCK_START, 0xe0 | id, WCK_PARAMETER_READS[parameter], 0, 0]);
 }
 
 /**

@@ -76,6 +76,8 @@ describe("wCK parameter reads (d3 = d4 = 0, codes of the manual)", () => {
     expect(() => wckReadParameter(-1, "gains")).toThrow(/0-30/);
     // @ts-expect-error: not a parameter
     expect(() => wckReadParameter(1, "baud")).toThrow(expect.objectContaining({ code: "wck-parameter" }));
+    // @ts-expect-error: not a parameter (a name every object has)
+    expect(() => wckReadParameter(1, "toString")).toThrow(expect.objectContaining({ code: "wck-parameter" }));
   });
 });
 
