@@ -405,6 +405,27 @@ export const cliMessages = defineMessages({
     en: "Run Sound answered at once",
     ko: "소리 재생에 바로 응답",
   },
+  "cli.variant.servoId": {
+    en: '{option} must be a servo id from {lowest} to 15, got "{value}".',
+    ko: '{option}에는 {lowest}부터 15까지의 서보 ID를 써 주세요. 받은 값: "{value}".',
+  },
+  "cli.variant.servoMissingAndReplaced": {
+    en: "Servo {id} cannot be both missing (--servo-missing) and a replacement at id 0 (--servo-replacement).",
+    ko: "서보 {id}번은 없는 서보(--servo-missing)이면서 ID 0의 교체 서보(--servo-replacement)일 수 없어요.",
+  },
+  "cli.variant.servoMissing": { en: "no servo at id {ids}", ko: "ID {ids}에 서보 없음" },
+  "cli.variant.servoDuplicate": {
+    en: "two servos at id {ids} (replies garbled)",
+    ko: "ID {ids}에 서보 두 개 (응답이 뒤섞임)",
+  },
+  "cli.variant.servoReplacement": {
+    en: "servo {ids} replaced by one still at id 0",
+    ko: "서보 {ids}번을 ID 0 그대로인 새 서보로 교체함",
+  },
+  "cli.variant.servoLoaded": {
+    en: "servo {ids} under high load (follows a move only part of the way)",
+    ko: "서보 {ids}번에 큰 부하 (움직임을 일부만 따라감)",
+  },
 
   "cli.sim.powerCycled": {
     en: "Power cycle: the simulated robot was switched off and on; its bootloader starts.",

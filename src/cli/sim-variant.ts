@@ -4,6 +4,7 @@ import { translator } from "../i18n/translate.ts";
 import { platformName } from "../protocol/catalog.ts";
 import { commandName } from "../protocol/commands.ts";
 import { formatFirmware } from "../shared/format.ts";
+import type { ServoFaults } from "../sim/sim-servo-faults.ts";
 import type { SimulatedRbcOptions } from "../sim/sim-types.ts";
 import { parseFailure } from "./args.ts";
 import { UsageError } from "./errors.ts";
@@ -16,6 +17,7 @@ import { said, saidEach } from "./said.ts";
  * variable (e.g. `RBC_DEMO_VARIANT="--no-serial --firmware 9.99" rbc info --demo`). An environment variable
  * rather than more global options: the variants are for trying a client against odd firmware, not something
  * every command's help should list, and one variable reaches every command (info, zeros, upload, sensors, …).
+ * The servo-bus faults of docs/protocol.md §5 (`--servo-missing N` …) are switches here too.
  */
 
 export const VARIANT_OPTIONS = {
@@ -32,6 +34,11 @@ export const VARIANT_OPTIONS = {
   "no-memory-read": { type: "boolean" },
   "servos-silent": { type: "boolean" },
   "sound-reply-at-once": { type: "boolean" },
+  // Servo-bus faults (docs/protocol.md §5): each takes a servo id 0-15 and may be given more than once.
+  "servo-missing": { type: "string", multiple: true },
+  "servo-duplicate": { type: "string", multiple: true },
+  "servo-replacement": { type: "string", multiple: true },
+  "servo-loaded": { type: "string", multiple: true },
 } as const;
 
 /** The demo robot's variant switches (same syntax as `rbc sim`'s). */
@@ -58,6 +65,7 @@ export type SimVariant = Pick<
   | "answersMemoryRead"
   | "servosSilent"
   | "soundReplyAtOnce"
+  | "servoFaults"
 >;
 
 interface VariantValues {
@@ -74,7 +82,20 @@ interface VariantValues {
   "no-memory-read"?: boolean;
   "servos-silent"?: boolean;
   "sound-reply-at-once"?: boolean;
+  "servo-missing"?: string[];
+  "servo-duplicate"?: string[];
+  "servo-replacement"?: string[];
+  "servo-loaded"?: string[];
 }
+
+/** The servo-fault switches, the `ServoFaults` field each sets, and the lowest id it takes. */
+const SERVO_FAULT_SWITCHES = [
+  { option: "servo-missing", field: "missing", lowest: 0 },
+  { option: "servo-duplicate", field: "duplicate", lowest: 0 },
+  // Servo 0 answering at id 0 is no fault.
+  { option: "servo-replacement", field: "replacement", lowest: 1 },
+  { option: "servo-loaded", field: "loaded", lowest: 0 },
+] as const satisfies readonly { option: keyof VariantValues; field: keyof ServoFaults; lowest: number }[];
 
 function parseFirmware(text: string, command: string): { major: number; minor: number } {
   const m = /^(\d{1,3})\.(\d{1,3})$/.exec(text.trim());
@@ -102,6 +123,39 @@ function parseBusyMotion(text: string, command: string): number {
   return n;
 }
 
+function parseServoId(text: string, option: string, lowest: number, command: string): number {
+  const n = Number(text);
+  if (!/^\d{1,2}$/.test(text.trim()) || n < lowest || n > 15) {
+    throw new UsageError(
+      said(cliMessages, "cli.variant.servoId", {
+        option: `--${option}`,
+        lowest: String(lowest),
+        value: text,
+      }),
+      command,
+    );
+  }
+  return n;
+}
+
+/** The servo faults the switches ask for, or undefined when none is given. */
+function servoFaultsFromValues(values: VariantValues, command: string): ServoFaults | undefined {
+  const faults: { -readonly [K in keyof ServoFaults]: number[] } = {};
+  for (const { option, field, lowest } of SERVO_FAULT_SWITCHES) {
+    const texts = values[option];
+    if (texts === undefined || texts.length === 0) continue;
+    faults[field] = [...new Set(texts.map((text) => parseServoId(text, option, lowest, command)))];
+  }
+  const both = faults.replacement?.find((id) => faults.missing?.includes(id));
+  if (both !== undefined) {
+    throw new UsageError(
+      said(cliMessages, "cli.variant.servoMissingAndReplaced", { id: String(both) }),
+      command,
+    );
+  }
+  return Object.keys(faults).length > 0 ? faults : undefined;
+}
+
 function parseType(text: string, command: string): number {
   const m = /^0x([0-9a-f]{1,2})$/i.exec(text.trim());
   if (!m) throw new UsageError(said(cliMessages, "cli.variant.repeatType", { value: text }), command);
@@ -125,6 +179,8 @@ export function variantFromValues(values: VariantValues, command: string, paced 
   if (values["no-memory-read"]) variant.answersMemoryRead = false;
   if (values["servos-silent"]) variant.servosSilent = true;
   if (values["sound-reply-at-once"]) variant.soundReplyAtOnce = true;
+  const servoFaults = servoFaultsFromValues(values, command);
+  if (servoFaults) variant.servoFaults = servoFaults;
   // --repeat-distance names the homebrew port's own bug: the 0x16 reply, the default of --repeat-replies.
   if (values["repeat-replies"] || values["repeat-distance"] || values["repeat-type"] !== undefined) {
     const type =
@@ -194,6 +250,17 @@ export function describeVariant(variant: SimVariant, locale: Locale = "en"): str
   if (variant.answersMemoryRead === false) words.push(t("cli.variant.noMemoryRead"));
   if (variant.servosSilent) words.push(t("cli.variant.servosSilent"));
   if (variant.soundReplyAtOnce) words.push(t("cli.variant.soundReplyAtOnce"));
+  const faults = variant.servoFaults;
+  const ids = (list: readonly number[] | undefined) =>
+    list && list.length > 0 ? list.join(", ") : undefined;
+  const missing = ids(faults?.missing);
+  if (missing) words.push(t("cli.variant.servoMissing", { ids: missing }));
+  const duplicate = ids(faults?.duplicate);
+  if (duplicate) words.push(t("cli.variant.servoDuplicate", { ids: duplicate }));
+  const replacement = ids(faults?.replacement);
+  if (replacement) words.push(t("cli.variant.servoReplacement", { ids: replacement }));
+  const loaded = ids(faults?.loaded);
+  if (loaded) words.push(t("cli.variant.servoLoaded", { ids: loaded }));
   return words;
 }
 

@@ -3,6 +3,13 @@ import { ProtocolError } from "./errors.ts";
 /**
  * wCK servo packets, spoken over the link once the RBC is in direct control mode (docs/protocol.md §5).
  * Every packet starts with `FF`; the next byte is `mode << 5 | id`; the last is a 7-bit checksum.
+ *
+ * Parameter codes follow the wCK user manual (§5). Only what the project may send has a builder here: move,
+ * read status, passive, brake, synchronised move, the parameter READS (0x0A, 0x0E, 0x10, 0x12, 0x16, 0x65),
+ * the id set 0x0C (the servo doctor's guided fix only) and the "leave direct mode" sequence. The codes §5
+ * marks "never sent" (baud rate, gains, bounds and overload sets, power-up-only sets, self-running motion,
+ * the 10-bit move and read) have no builder anywhere in src/: the decoder below recognises them only so that
+ * the simulator can model a servo that receives them.
  */
 
 export const WCK_START = 0xff;
@@ -85,6 +92,130 @@ export function wckSyncMove(positions: readonly number[], speed: number): Uint8A
   return Uint8Array.from(out);
 }
 
+/** The "leave direct mode" sequence `FF E0 FB 01 00 1A` (no reply), as a fresh copy. */
+export function wckLeaveDirectMode(): Uint8Array {
+  return EXIT_DIRECT_MODE.slice();
+}
+
+/** The parameter READS of §5 (d2 of `FF (E0|id) d2 00 00 cs`), by what they read. */
+export const WCK_PARAMETER_READS = {
+  /** P and D gains: reply P, D. */
+  gains: 0x0a,
+  /** Speed 0-30 and acceleration 20-100: reply speed, acceleration. */
+  speed: 0x0e,
+  /** Overload limit code (33 ≈ 400 mA … 199 ≈ 1800 mA): reply code, code. */
+  overload: 0x10,
+  /** Position bounds: reply lower, upper. */
+  bounds: 0x12,
+  /** I gain: reply I, I. */
+  iGain: 0x16,
+  /** The two I/O outputs: reply bits, bits. */
+  io: 0x65,
+} as const;
+
+export type WckParameter = keyof typeof WCK_PARAMETER_READS;
+
+/** d2 of the id set `FF (E0|from) 0C to to cs` (§5: sent only by the guided id fix). */
+export const WCK_SET_ID = 0x0c;
+
+/** Read parameter `parameter` of servo `id`: `FF (E0|id) d2 00 00 cs`. Reply: 2 bytes (`decodeWckParameter`). */
+export function wckReadParameter(id: number, parameter: WckParameter): Uint8Array {
+  checkId(id);
+  if (!Object.hasOwn(WCK_PARAMETER_READS, parameter)) {
+    throw new ProtocolError("wck-parameter", `Unknown servo parameter "${String(parameter)}".`);
+  }
+  return withChecksum([WCK_START, 0xe0 | id, WCK_PARAMETER_READS[parameter], 0, 0]);
+}
+
+/**
+ * Give the servo at id `from` the id `to`: `FF (E0|from) 0C to to cs` (e.g. 0 → 30 is `FF E0 0C 1E 1E 6C`).
+ * Reply: `to, to`. Every servo answering at `from` takes the new id: the caller checks first that exactly one
+ * does (§5, servo doctor).
+ */
+export function wckSetId(from: number, to: number): Uint8Array {
+  checkId(from);
+  checkId(to);
+  if (from === to) {
+    throw new ProtocolError("wck-same-id", `The new id must differ from the old one, got ${from} twice.`);
+  }
+  return withChecksum([WCK_START, 0xe0 | from, WCK_SET_ID, to, to]);
+}
+
+/** A move's or a status read's reply. */
+export interface WckStatus {
+  /** The servo's load (its only health figure, §5). */
+  load: number;
+  position: number;
+}
+
+function checkReply(reply: ArrayLike<number>): void {
+  if (reply.length !== 2) {
+    throw new ProtocolError("wck-reply-length", `A servo reply is 2 bytes, got ${reply.length}.`);
+  }
+}
+
+/** The 2-byte reply to a move or a status read: load, position. */
+export function decodeWckStatus(reply: ArrayLike<number>): WckStatus {
+  checkReply(reply);
+  const position = reply[1]!;
+  if (position > WCK_MAX_POSITION) {
+    throw new ProtocolError(
+      "wck-reply",
+      `A servo position is 0-${WCK_MAX_POSITION}, the reply says ${position}.`,
+    );
+  }
+  return { load: reply[0]!, position };
+}
+
+/** What a parameter read answered, in the manual's byte order (§5). */
+export type WckParameterValue =
+  | { parameter: "gains"; p: number; d: number }
+  | { parameter: "speed"; speed: number; acceleration: number }
+  | { parameter: "overload"; code: number }
+  | { parameter: "bounds"; lower: number; upper: number }
+  | { parameter: "iGain"; i: number }
+  | { parameter: "io"; outputs: number };
+
+/** The same value twice (overload, I gain, I/O, a new id): a reply whose two bytes differ is not trusted. */
+function doubled(reply: ArrayLike<number>, what: string): number {
+  if (reply[0] !== reply[1]) {
+    throw new ProtocolError(
+      "wck-reply",
+      `The ${what} reply carries its value twice, got ${reply[0]} and ${reply[1]}.`,
+    );
+  }
+  return reply[0]!;
+}
+
+/** Decodes the 2-byte reply to `wckReadParameter(id, parameter)`. */
+export function decodeWckParameter(parameter: WckParameter, reply: ArrayLike<number>): WckParameterValue {
+  checkReply(reply);
+  const [a, b] = [reply[0]!, reply[1]!];
+  switch (parameter) {
+    case "gains":
+      return { parameter, p: a, d: b };
+    case "speed":
+      return { parameter, speed: a, acceleration: b };
+    case "overload":
+      return { parameter, code: doubled(reply, "overload limit") };
+    case "bounds":
+      return { parameter, lower: a, upper: b };
+    case "iGain":
+      return { parameter, i: doubled(reply, "I gain") };
+    case "io":
+      return { parameter, outputs: doubled(reply, "I/O") & 0x03 };
+  }
+}
+
+/** The reply to `wckSetId`: the new id, twice. */
+export function decodeWckSetId(reply: ArrayLike<number>): number {
+  checkReply(reply);
+  const id = doubled(reply, "id set");
+  if (id > WCK_MAX_ID)
+    throw new ProtocolError("wck-reply", `A servo id is 0-${WCK_MAX_ID}, the reply says ${id}.`);
+  return id;
+}
+
 /** A decoded servo-bus command, as the simulated servos see it. */
 export type WckCommand =
   | { kind: "move"; id: number; torque: number; position: number }
@@ -94,7 +225,12 @@ export type WckCommand =
   | { kind: "sync"; speed: number; positions: number[] }
   | { kind: "exit-direct" }
   | { kind: "parameter"; id: number; data: [number, number, number] }
+  /** The 8-byte 10-bit move `FF E0 C8 id torque pos>>6 (pos<<1)&7E cs` (never sent by the project). */
+  | { kind: "move10"; id: number; torque: number; position10: number }
   | { kind: "other"; bytes: Uint8Array };
+
+/** d2 of the 8-byte 10-bit move, the one mode-7 packet longer than 6 bytes (§5). */
+const D2_MOVE_10BIT = 0xc8;
 
 /**
  * Streaming decoder for wCK commands sent to the servo bus. Bytes before an `FF` are skipped; a packet with a
@@ -124,7 +260,11 @@ export class WckDecoder {
     if (b.length < 2) return undefined;
     const mode = b[1]! >> 5;
     const id = b[1]! & 0x1f;
-    if (mode === 7) return 6;
+    if (mode === 7) {
+      // Framed by d2: the 10-bit move is 8 bytes, every other mode-7 packet 6 (§5).
+      if (b.length < 3) return undefined;
+      return b[2] === D2_MOVE_10BIT ? 8 : 6;
+    }
     if (mode <= 4 && id === WCK_BROADCAST_ID) {
       if (b.length < 3) return undefined;
       return 4 + b[2]!;
@@ -148,6 +288,9 @@ export class WckDecoder {
     if (mode === 6 && id === WCK_BROADCAST_ID && b[2] === 0x20) return { kind: "brake" };
     if (mode === 7 && id === 0 && b[2] === 0xfb && b[3] === 0x01 && b[4] === 0x00)
       return { kind: "exit-direct" };
+    if (mode === 7 && b[2] === D2_MOVE_10BIT) {
+      return { kind: "move10", id: b[3]!, torque: b[4]!, position10: (b[5]! << 6) | (b[6]! >> 1) };
+    }
     if (mode === 7) return { kind: "parameter", id, data: [b[2]!, b[3]!, b[4]!] };
     return { kind: "other", bytes: Uint8Array.from(b) };
   }

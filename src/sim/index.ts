@@ -22,6 +22,14 @@
  *   (`poseByHand`); `onServos` tells watchers of every change. See docs/architecture.md, "The simulated robot
  *   moves".
  *
+ * - The servo bus (`sim-servos.ts`) routes every wCK command by bus id: a motion's frames too, so a replacement
+ *   servo at id 0 follows servo 0. Two servos answering one command collide (`collide`): each starts a byte
+ *   after the other and overlapping bytes carry their AND, so two pairs arrive as 3 bytes, never a clean pair.
+ *   A loaded servo reports load LOADED_SERVO_LOAD while it holds and makes 40% of each move. Moves stop at the
+ *   servo's bounds. Factory values of gains, speed and overload are not documented: DEFAULT_SERVO_PARAMETERS.
+ *   Id sets, stored gains and overload last through a power cycle (the servo's EEPROM); bounds of ids 0-15 go
+ *   back to 1..254 and power-up-only sets fall back. A servo set to another baud rate answers nothing.
+ *
  * MockSerialPort follows Chrome: open() rejects InvalidStateError when open, TypeError on bad options,
  * NetworkError while unplugged; close() rejects TypeError while a stream is locked and InvalidStateError when
  * the port is not open (also after a cable pull, which closes the port by itself).
@@ -80,7 +88,14 @@ export {
   type SensorState,
   type SubscriptionType,
 } from "./sim-sensors.ts";
+export {
+  collide,
+  LOADED_SERVO_FOLLOW,
+  LOADED_SERVO_LOAD,
+  type ServoFaults,
+} from "./sim-servo-faults.ts";
+export { DEFAULT_SERVO_PARAMETERS } from "./sim-servo-parameters.ts";
 export type { ServoListener } from "./sim-servo-watch.ts";
-export type { ServoState } from "./sim-servos.ts";
+export { ServoBus, type ServoState } from "./sim-servos.ts";
 export type { SimulatedRbcOptions, SimulatedRbcState, SimulatedRbcStats } from "./sim-types.ts";
 export { SimulatedRbc } from "./simulated-rbc.ts";

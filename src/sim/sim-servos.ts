@@ -1,24 +1,53 @@
-import { HUNO_BASIC_POSTURE, HUNO_SERVO_COUNT, SAFE_LOWER, SAFE_UPPER } from "../protocol/servo-limits.ts";
+import { HUNO_BASIC_POSTURE, HUNO_SERVO_COUNT } from "../protocol/servo-limits.ts";
 import { type WckCommand, WckDecoder } from "../protocol/wck.ts";
+import {
+  checkServoFaults,
+  collide,
+  LOADED_SERVO_FOLLOW,
+  LOADED_SERVO_LOAD,
+  type ServoFaults,
+} from "./sim-servo-faults.ts";
+import {
+  applyParameter,
+  BAUD_115200,
+  DEFAULT_SERVO_PARAMETERS,
+  PARAMETER,
+  type ParameterReply,
+  position10Reply,
+  powerUp,
+  type StoredGains,
+} from "./sim-servo-parameters.ts";
 
 /**
- * The servo bus behind the RBC in direct control mode (docs/protocol.md §5): 16 simulated wCK servos, ids 0-15.
- * A command moves a servo instantly (a synchronised move too: tethered play's frames are the movement over
- * time); a playing motion moves them frame by frame (`applyFrame`, from `SimPlayer`); a passive servo can be
- * posed by hand. Ids 16-30 do not exist and never answer.
+ * The servo bus behind the RBC in direct control mode (docs/protocol.md §5): the HUNO's 16 simulated wCK servos,
+ * one per joint 0-15, each answering at its own bus id (at first its joint's number), plus any extra servos a
+ * fault puts on the bus. A command goes to every servo at its id: none answers (silence), one answers (a clean
+ * pair), or two answer together and their replies collide (`collide`: garbled bytes). A command moves a servo
+ * instantly (a synchronised move too: tethered play's frames are the movement over time); a playing motion
+ * moves them frame by frame (`applyFrame`, from `SimPlayer`), by bus id as the firmware sends them; a passive
+ * servo can be posed by hand. Ids no servo has never answer. Faults: `sim-servo-faults.ts`; the parameter
+ * table: `sim-servo-parameters.ts`.
  */
 
 export interface ServoState {
+  /** The joint this servo sits in, 0-15 (for an extra servo of a fault: the joint whose id it shares). */
   id: number;
+  /** The id it answers at on the bus (changed by an id set, 0x0C); a replacement servo starts at 0. */
+  busId: number;
+  /** On the bus; false for a missing (unplugged) servo, which receives and answers nothing. */
+  connected: boolean;
+  /** Carries a high load at rest and follows a move only part of the way (the "loaded" fault). */
+  loaded: boolean;
   position: number;
   /** Limp (after a passive command); a move makes it hold again. */
   passive: boolean;
   /** Torque of the last move, 0 (max) .. 4 (min). */
   torque: number;
-  /** Reported load (always 0 in the simulator). */
+  /** Reported load: 0, or LOADED_SERVO_LOAD for a loaded servo that holds. */
   load: number;
   speed: number;
   acceleration: number;
+  /** Position bounds (0x11 / 0x12): lower, upper; 1..254 after power-up. */
   lowerBound: number;
   upperBound: number;
   /** P and D gains (read with parameter 0x0A) and the I gain (0x16). */
@@ -29,7 +58,7 @@ export interface ServoState {
   overload: number;
   /** The two I/O output bits (0x64 / 0x65). */
   io: number;
-  /** Baud rate code (0x08; 7 = 115200). The panel never changes it. */
+  /** Baud rate code (0x08; 7 = 115200). A servo on another rate cannot be reached through the RBC. */
   baudCode: number;
 }
 
@@ -39,49 +68,70 @@ export interface BusResult {
   exitDirectMode?: boolean;
 }
 
-/** Parameter sub-commands (d2 of `FF (E0|id) d2 d3 d4 cs`, docs/protocol.md §5). */
-const PARAM = {
-  baudSet: 0x08,
-  position10: 0x09,
-  pdRead: 0x0a,
-  speedSet: 0x0d,
-  speedRead: 0x0e,
-  overloadSet: 0x0f,
-  overloadRead: 0x10,
-  boundsSet: 0x11,
-  boundsRead: 0x12,
-  iRead: 0x16,
-  ioWrite: 0x64,
-  ioRead: 0x65,
-  motionDataRead: 0x97,
-} as const;
+interface BusServo {
+  state: ServoState;
+  stored: StoredGains;
+}
 
-function initialServo(id: number): ServoState {
+function newServo(joint: number, loaded: boolean): BusServo {
+  const d = DEFAULT_SERVO_PARAMETERS;
   return {
-    id,
-    position: HUNO_BASIC_POSTURE[id] ?? 127,
-    passive: false,
-    torque: 2,
-    load: 0,
-    speed: 0,
-    acceleration: 0,
-    lowerBound: SAFE_LOWER[id] ?? 1,
-    upperBound: SAFE_UPPER[id] ?? 254,
-    // [decision] Gains as a wCK leaves the factory are not documented; these are typical motion-file values.
-    pGain: 20,
-    dGain: 30,
-    iGain: 0,
-    overload: 0,
-    io: 0,
-    baudCode: 7,
+    state: {
+      id: joint,
+      busId: joint,
+      connected: true,
+      loaded,
+      position: HUNO_BASIC_POSTURE[joint] ?? 127,
+      passive: false,
+      torque: 2,
+      load: loaded ? LOADED_SERVO_LOAD : 0,
+      speed: d.speed,
+      acceleration: d.acceleration,
+      lowerBound: d.lowerBound,
+      upperBound: d.upperBound,
+      pGain: d.pGain,
+      dGain: d.dGain,
+      iGain: d.iGain,
+      overload: d.overload,
+      io: d.io,
+      baudCode: BAUD_115200,
+    },
+    stored: { pGain: d.pGain, dGain: d.dGain, iGain: d.iGain, speed: d.speed },
   };
 }
 
+/** Moves `servo` towards `target` (clamped to its bounds) and makes it hold: a loaded one gets part of the way. */
+function drive(servo: ServoState, target: number, torque?: number): void {
+  const goal = Math.max(servo.lowerBound, Math.min(servo.upperBound, Math.round(target)));
+  const step = servo.loaded
+    ? Math.round((goal - servo.position) * LOADED_SERVO_FOLLOW)
+    : goal - servo.position;
+  servo.position = Math.max(0, Math.min(254, servo.position + step));
+  if (torque !== undefined) servo.torque = torque;
+  servo.passive = false;
+  servo.load = servo.loaded ? LOADED_SERVO_LOAD : 0;
+}
+
 export class ServoBus {
-  readonly servos: ServoState[] = Array.from({ length: HUNO_SERVO_COUNT }, (_, id) => initialServo(id));
+  /** The 16 joints' servos, by joint 0-15. */
+  readonly servos: ServoState[];
+  private readonly joints: BusServo[];
+  /** Servos a fault adds to the bus (a duplicate id). */
+  private readonly extras: BusServo[] = [];
   private decoder = new WckDecoder();
   /** Decoded servo-bus commands, for tests. */
   commandCount = 0;
+
+  constructor(faults?: ServoFaults) {
+    const f = checkServoFaults(faults);
+    this.joints = Array.from({ length: HUNO_SERVO_COUNT }, (_, joint) =>
+      newServo(joint, f.loaded.includes(joint)),
+    );
+    this.servos = this.joints.map((s) => s.state);
+    for (const joint of f.missing) this.servos[joint]!.connected = false;
+    for (const joint of f.replacement) this.servos[joint]!.busId = 0;
+    for (const joint of f.duplicate) this.extras.push(newServo(joint, false));
+  }
 
   /** Forget a partial wCK packet (on entering direct mode). */
   resetDecoder(): void {
@@ -94,36 +144,41 @@ export class ServoBus {
     return commands.map((c) => this.execute(c));
   }
 
-  /** Sets positions of ids 0.. (motion playback); values clamp to 0-254. Servos become active. */
+  /** The servos on the bus that receive a command for `busId` (connected, at 115200). */
+  private at(busId: number): BusServo[] {
+    return this.reachable().filter((s) => s.state.busId === busId);
+  }
+
+  private reachable(): BusServo[] {
+    return [...this.joints, ...this.extras].filter(
+      (s) => s.state.connected && s.state.baudCode === BAUD_115200,
+    );
+  }
+
+  /** Sets positions of bus ids 0.. (motion playback); values clamp to the bounds. Servos become active. */
   setPositions(positions: readonly number[]): void {
     positions.forEach((p, id) => {
       this.setPosition(id, p);
     });
   }
 
-  /** Sets one servo's position (clamped to 0-254) and makes it hold; unknown ids are ignored. */
+  /** Drives every servo at bus id `id` to `position` and makes it hold; an id nobody has changes nothing. */
   setPosition(id: number, position: number): void {
-    const servo = this.servos[id];
-    if (!servo) return;
-    servo.position = Math.max(0, Math.min(254, Math.round(position)));
-    servo.passive = false;
+    for (const servo of this.at(id)) drive(servo.state, position);
   }
 
-  /** A frame of a playing motion (docs/protocol.md §10): each servo moves with its torque and holds. */
+  /** A frame of a playing motion (docs/protocol.md §10), sent by bus id: each servo moves with its torque and holds. */
   applyFrame(ids: readonly number[], positions: readonly number[], torques: readonly number[]): void {
     ids.forEach((id, i) => {
-      const servo = this.servos[id];
       const position = positions[i];
-      if (!servo || position === undefined) return;
-      servo.position = Math.max(0, Math.min(254, Math.round(position)));
-      servo.torque = torques[i] ?? servo.torque;
-      servo.passive = false;
+      if (position === undefined) return;
+      for (const { state } of this.at(id)) drive(state, position, torques[i] ?? state.torque);
     });
   }
 
   /**
-   * A hand turns a passive servo to `position` (rounded, clamped to 0-254). A servo holding torque resists:
-   * nothing changes. Returns whether the servo took the position (false for an unknown id).
+   * A hand turns the passive servo of joint `id` to `position` (rounded, clamped to 0-254). A servo holding
+   * torque resists: nothing changes. Returns whether the servo took the position (false for an unknown joint).
    */
   poseByHand(id: number, position: number): boolean {
     const servo = this.servos[id];
@@ -132,8 +187,29 @@ export class ServoBus {
     return true;
   }
 
+  /**
+   * Plugs joint `joint`'s servo into the bus or unplugs it (a person working on the robot, e.g. before a
+   * guided id fix). False for an unknown joint.
+   */
+  connect(joint: number, connected: boolean): boolean {
+    const servo = this.servos[joint];
+    if (!servo) return false;
+    servo.connected = connected;
+    return true;
+  }
+
+  /** A power-up (docs/protocol.md §5): power-up-only values fall back, bounds of ids 0-15 become 1..254. */
+  powerUp(): void {
+    for (const s of [...this.joints, ...this.extras]) powerUp(s.state, s.stored);
+  }
+
   snapshot(): ServoState[] {
     return this.servos.map((s) => ({ ...s }));
+  }
+
+  /** The extra servos a fault put on the bus (a duplicate id), as copies. */
+  extraSnapshot(): ServoState[] {
+    return this.extras.map((s) => ({ ...s.state }));
   }
 
   execute(command: WckCommand): BusResult {
@@ -142,35 +218,33 @@ export class ServoBus {
       case "exit-direct":
         return { exitDirectMode: true };
       case "sync":
-        command.positions.forEach((position, id) => {
-          const servo = this.servos[id];
-          if (!servo) return;
-          servo.position = position;
-          servo.passive = false;
-          servo.torque = command.speed;
-        });
+        for (const { state } of this.reachable()) {
+          const position = command.positions[state.busId];
+          if (position !== undefined) drive(state, position, command.speed);
+        }
         return {};
       case "brake":
-        for (const servo of this.servos) servo.passive = false;
+        for (const { state } of this.reachable()) state.passive = false;
         return { reply: Uint8Array.of(31, 0) };
-      case "move": {
-        const servo = this.servos[command.id];
-        if (!servo) return {};
-        servo.position = command.position;
-        servo.torque = command.torque;
-        servo.passive = false;
-        return { reply: Uint8Array.of(servo.load, servo.position) };
-      }
-      case "read": {
-        const servo = this.servos[command.id];
-        return servo ? { reply: Uint8Array.of(servo.load, servo.position) } : {};
-      }
-      case "passive": {
-        const servo = this.servos[command.id];
-        if (!servo) return {};
-        servo.passive = true;
-        return { reply: Uint8Array.of(0, servo.position) };
-      }
+      case "move":
+        return this.answer(command.id, (servo) => {
+          drive(servo, command.position, command.torque);
+          return [servo.load, servo.position];
+        });
+      case "read":
+        return this.answer(command.id, (servo) => [servo.passive ? 0 : servo.load, servo.position]);
+      case "passive":
+        return this.answer(command.id, (servo) => {
+          servo.passive = true;
+          servo.load = 0;
+          return [0, servo.position];
+        });
+      case "move10":
+        // The 10-bit move goes to id 0's address; the servo is in d3.
+        return this.answer(command.id, (servo) => {
+          drive(servo, command.position10 / 4, command.torque);
+          return position10Reply(servo.position);
+        });
       case "parameter":
         return this.parameter(command.id, command.data);
       case "other":
@@ -178,56 +252,21 @@ export class ServoBus {
     }
   }
 
-  /**
-   * The parameter table of docs/protocol.md §5: a set stores its values and replies with them; a read replies with
-   * the values last set. [decision] The 10-bit position read (sent to id 0, the servo in d3) answers the
-   * position × 4 as two bytes, high first; motion data (0x97) answers `00 00`; unknown sub-commands get no
-   * reply.
-   */
-  private parameter(id: number, [d2, d3, d4]: [number, number, number]): BusResult {
-    const servo = this.servos[id];
-    if (!servo) return {};
-    const reply = (a: number, b: number): BusResult => ({ reply: Uint8Array.of(a & 0xff, b & 0xff) });
-    switch (d2) {
-      case PARAM.baudSet:
-        servo.baudCode = d3;
-        return reply(d3, d4);
-      case PARAM.position10: {
-        const target = this.servos[d3];
-        if (!target) return {};
-        const p10 = target.position * 4;
-        return reply(p10 >> 8, p10);
-      }
-      case PARAM.pdRead:
-        return reply(servo.pGain, servo.dGain);
-      case PARAM.speedSet:
-        servo.speed = d3;
-        servo.acceleration = d4;
-        return reply(servo.speed, servo.acceleration);
-      case PARAM.speedRead:
-        return reply(servo.speed, servo.acceleration);
-      case PARAM.overloadSet:
-        servo.overload = d3;
-        return reply(d3, d4);
-      case PARAM.overloadRead:
-        return reply(servo.overload, servo.overload);
-      case PARAM.boundsSet:
-        servo.upperBound = d3;
-        servo.lowerBound = d4;
-        return reply(servo.upperBound, servo.lowerBound);
-      case PARAM.boundsRead:
-        return reply(servo.upperBound, servo.lowerBound);
-      case PARAM.iRead:
-        return reply(servo.iGain, servo.iGain);
-      case PARAM.ioWrite:
-        servo.io = d3 & 0x03;
-        return reply(servo.io, servo.io);
-      case PARAM.ioRead:
-        return reply(servo.io, servo.io);
-      case PARAM.motionDataRead:
-        return reply(0, 0);
-      default:
-        return {};
+  /** Every servo at `busId` acts on the command; their replies: none, one clean pair, or collided bytes. */
+  private answer(busId: number, act: (servo: ServoState, stored: StoredGains) => ParameterReply): BusResult {
+    const replies = this.at(busId)
+      .map((servo) => act(servo.state, servo.stored))
+      .filter((r) => r !== undefined);
+    if (replies.length === 0) return {};
+    if (replies.length === 1) return { reply: Uint8Array.from(replies[0]!.map((b) => b & 0xff)) };
+    return { reply: collide(replies) };
+  }
+
+  /** The parameter table of docs/protocol.md §5 (`sim-servo-parameters.ts`); the 10-bit read names its servo in d3. */
+  private parameter(id: number, data: [number, number, number]): BusResult {
+    if (data[0] === PARAMETER.read10) {
+      return this.answer(data[1], (servo) => position10Reply(servo.position));
     }
+    return this.answer(id, (servo, stored) => applyParameter(servo, stored, data));
   }
 }

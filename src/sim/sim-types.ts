@@ -4,7 +4,8 @@ import type { DownloadProgress } from "./sim-downloader.ts";
 import type { StoredFile } from "./sim-downloads.ts";
 import type { DropReason } from "./sim-receiver.ts";
 import type { AccelerometerNoise, SensorState } from "./sim-sensors.ts";
-import type { ServoState } from "./sim-servos.ts";
+import { checkServoFaults, type ServoFaults } from "./sim-servo-faults.ts";
+import type { ServoBus, ServoState } from "./sim-servos.ts";
 
 /** Options, statistics and the state snapshot of the simulated RBC. */
 
@@ -57,6 +58,17 @@ export interface SimulatedRbcOptions {
    * from the PC arrives after power-up, so a client connects to a robot that is playing something.
    */
   busyMotion?: number;
+  /**
+   * Faults of the servo bus (docs/protocol.md §5, §9): missing servos, duplicate ids, replacement servos at
+   * id 0, loaded servos, by joint 0-15 (`sim-servo-faults.ts`).
+   */
+  servoFaults?: ServoFaults;
+  /**
+   * The servos, kept by the caller so that they outlast this RBC: the demo robot keeps one set for the page,
+   * so that an id set survives a reconnect (a new RBC is a power-up: bounds go back to 1..254). Its faults are
+   * given to the ServoBus itself: not together with `servoFaults`.
+   */
+  servoBus?: ServoBus;
 }
 
 export interface SimulatedRbcStats {
@@ -122,7 +134,16 @@ export function resolveOptions(options: SimulatedRbcOptions) {
     servosSilent: options.servosSilent ?? false,
     soundReplyAtOnce: options.soundReplyAtOnce ?? false,
     busyMotion: checkedBusyMotion(options.busyMotion),
+    servoFaults: checkServoFaults(options.servoFaults),
+    servoBus: checkedServoBus(options),
   };
+}
+
+function checkedServoBus(options: SimulatedRbcOptions): ServoBus | undefined {
+  if (options.servoBus && options.servoFaults) {
+    throw new RangeError("Give the servo faults to the ServoBus, not with a ServoBus to the SimulatedRbc.");
+  }
+  return options.servoBus;
 }
 
 function checkedBusyMotion(n: number | undefined): number | undefined {

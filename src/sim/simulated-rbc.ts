@@ -54,8 +54,8 @@ export class SimulatedRbc {
   private readonly receiver: SimReceiver;
   private readonly player: SimPlayer;
   private readonly sensors: SimSensors;
-  private readonly servoBus = new ServoBus();
-  private readonly servoWatch = new ServoWatch(this.servoBus.servos);
+  private readonly servoBus: ServoBus;
+  private readonly servoWatch: ServoWatch;
   private readonly downloader: SimDownloader;
   private readonly listeners = new Set<(bytes: Uint8Array) => void>();
   private readonly counters = { bytesReceived: 0, bytesSent: 0, packetsReceived: 0, packetsDropped: 0 };
@@ -86,6 +86,10 @@ export class SimulatedRbc {
     this.zeroTable = o.zeros;
     this.postureDone = o.basicPostureDone;
     this.variant = o;
+    this.servoBus = o.servoBus ?? new ServoBus(o.servoFaults);
+    // Servos kept from an earlier connection see this RBC start: a power-up.
+    if (o.servoBus) this.servoBus.powerUp();
+    this.servoWatch = new ServoWatch(this.servoBus.servos);
     this.timers = new SimTimers(this.clock);
     this.player = new SimPlayer(this.timers, {
       zeros: () => this.zeroTable,
@@ -256,6 +260,14 @@ export class SimulatedRbc {
     return this.keys.fromRemote(n);
   }
 
+  /**
+   * Plugs the servo of joint `joint` (0-15) into the servo bus or unplugs it, as a person would before a
+   * guided id fix (docs/protocol.md §5). Its id and settings stay with it. False for an unknown joint.
+   */
+  connectServo(joint: number, connected: boolean): boolean {
+    return this.servoBus.connect(joint, connected);
+  }
+
   /** Stops every timer and forgets the listeners (e.g. when the demo robot is put away). */
   dispose(): void {
     this.powerCycle();
@@ -284,6 +296,7 @@ export class SimulatedRbc {
     this.direct = false;
     this.postureDone = false;
     this.error = NO_ERROR;
+    this.servoBus.powerUp();
     // A motion's frames stop where they were: the servos hold that pose.
     this.servoWatch.changed(true);
   }

@@ -4,6 +4,7 @@ import {
   bluetoothLinkOptions,
   createDemoRbc,
   MockSerialPort,
+  ServoBus,
   type SimulatedRbc,
 } from "../sim/index.ts";
 
@@ -18,6 +19,8 @@ export interface DemoRobot {
   sim: SimulatedRbc;
   /** The time the simulator runs on; the client of this connection must use the same one. */
   clock: Clock;
+  /** Its servos, to give to the next connection's demo robot. */
+  servoBus: ServoBus;
 }
 
 export interface DemoRobotOptions {
@@ -37,23 +40,29 @@ export interface DemoRobotOptions {
    * on every run), delivered in bursts, and a port that reports the Serial Port Profile.
    */
   bluetooth?: boolean;
+  /**
+   * The servos of an earlier connection (`DemoRobot.servoBus`): the session keeps them, so that an id set on the
+   * servo bus survives a reconnect (docs/protocol.md §5). Default: new servos.
+   */
+  servoBus?: ServoBus;
 }
 
 /**
  * The demo robot: a simulated RBC (firmware 2.23, HUNO) with its bootloader in front, behind a mock serial port with a small adapter
  * latency, in the demo world the CLI's --demo shares: its accelerometer reads with a little seeded noise around an
  * upright robot, so the Sensors view shows something alive. Loaded with a dynamic import, so the simulator is not part of the initial bundle.
- * Every connection to the demo robot gets a new one.
+ * Every connection to the demo robot gets a new one; the session keeps its servos (`servoBus`) for the page.
  */
 export function createDemoRobot(options: DemoRobotOptions = {}): DemoRobot {
   const scale = options.timeScale ?? 1;
   const clock = options.clock ?? (scale === 1 ? realClock : scaledClock(scale));
   // The same world as the CLI's --demo (src/sim/demo-world.ts).
-  const sim = createDemoRbc({ clock });
+  const servoBus = options.servoBus ?? new ServoBus();
+  const sim = createDemoRbc({ clock, servoBus });
   const boot = new BootloaderRbc(sim);
   // Browser tests (tests/e2e/rbc-test-globals.ts: `__rbcTestOptions` is set only by them) watch its servos.
   const page = globalThis as { __rbcTestOptions?: unknown; __rbcDemoSim?: SimulatedRbc };
   if (page.__rbcTestOptions !== undefined) page.__rbcDemoSim = sim;
   const link = options.bluetooth ? bluetoothLinkOptions() : { latencyMs: 2 };
-  return { port: new MockSerialPort(boot, { clock, ...link, record: false }), boot, sim, clock };
+  return { port: new MockSerialPort(boot, { clock, ...link, record: false }), boot, sim, clock, servoBus };
 }

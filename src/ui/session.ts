@@ -3,6 +3,7 @@ import type { ClientState, RbcClient } from "../device/index.ts";
 import { type Translator, translator } from "../i18n/translate.ts";
 import type { SerialPortLike } from "../link/index.ts";
 import { type Clock, realClock } from "../shared/clock.ts";
+import type { ServoBus } from "../sim/sim-servos.ts";
 import type { SimulatedRbc } from "../sim/simulated-rbc.ts";
 import { type AppState, freshConnectionState } from "./app-state.ts";
 import type { AppContext } from "./context.ts";
@@ -97,6 +98,8 @@ export class Session {
 
   /** Bumped by every chooser opened and by `cancelChoosing()`: a chooser's answer counts only while current. */
   private chooser = 0;
+  /** The demo robot's servos, kept for the page: an id set survives a reconnect (docs/protocol.md §5). */
+  private demoServos: ServoBus | undefined;
 
   /** Opens the chooser and connects to the chosen port. Call it straight from the click handler. */
   chooseAndConnect(): void {
@@ -156,7 +159,12 @@ export class Session {
     this.setConnection({ phase: "connecting", robot, problem: undefined, lostReason: undefined });
     try {
       const { createDemoRobot } = await import("./demo-robot.ts");
-      const demo = createDemoRobot({ ...this.options.demo, bluetooth: options.bluetooth });
+      const demo = createDemoRobot({
+        ...this.options.demo,
+        bluetooth: options.bluetooth,
+        servoBus: this.demoServos,
+      });
+      this.demoServos = demo.servoBus;
       return await this.connectPort(demo.port, robot, demo);
     } catch (e) {
       this.setConnection({

@@ -41,8 +41,8 @@ export interface RbcTestOptions {
   /**
    * A firmware variant of the fake port's robot (docs/protocol.md §3.1, §3.5, §3.6): no answer to 0x0C, 0x1E or
    * 0x0F, another version or platform byte, a reply repeated endlessly, events at the firmware's pace, the "user"
-   * build's keys, silent servos, the sound reply at once, a motion from the remote at connect (the switches of
-   * `rbc sim`). Default: the standard robot.
+   * build's keys, silent servos, the sound reply at once, a motion from the remote at connect, servo-bus faults
+   * (the switches of `rbc sim`). Default: the standard robot.
    */
   variant?: Pick<
     SimulatedRbcOptions,
@@ -57,6 +57,7 @@ export interface RbcTestOptions {
     | "answersMemoryRead"
     | "servosSilent"
     | "soundReplyAtOnce"
+    | "servoFaults"
   >;
 }
 

@@ -474,9 +474,9 @@ describe("SimulatedRbc: direct mode (docs/protocol.md §5)", () => {
     const { sim, send, take } = rig();
     send(EX4_DIRECT_ON);
     take();
-    // Bounds read of id 1 (d2 = 0x12): [upper, lower] = [228, 70] (docs/protocol.md §5).
+    // Bounds read of id 1 (d2 = 0x12): lower, upper = 1, 254 after power-up (docs/protocol.md §5).
     send("FF E1 12 00 00 73");
-    expect(take()).toEqual(["E4 46"]);
+    expect(take()).toEqual(["01 FE"]);
     // Speed set of id 2 (d2 = 0x0D): speed 3, acceleration 2.
     send("FF E2 0D 03 02 6E");
     expect(take()).toEqual(["03 02"]);
@@ -520,18 +520,21 @@ describe("SimulatedRbc: wCK parameters answered from stored values (docs/protoco
     send(param(4, 0x0f, 3, 3));
     send(param(4, 0x10, 0, 0));
     expect(take()).toEqual(["03 03", "03 03"]);
-    send(param(4, 0x11, 180, 50));
+    // Bounds: lower, upper (docs/protocol.md §5).
+    send(param(4, 0x11, 50, 180));
     send(param(4, 0x12, 0, 0));
-    expect(take()).toEqual(["B4 32", "B4 32"]);
+    expect(take()).toEqual(["32 B4", "32 B4"]);
   });
 
-  it("the 10-bit position read (to id 0, servo in d3 and d4) answers a position, not the id", () => {
+  it("0x09 WRITES servo 0's P/D gains (the manual, §5): `FF E0 09 05 05 cs` leaves them at 5/5", () => {
     const { sim, send, take } = rig();
     send(EX4_DIRECT_ON);
     take();
     send(param(0, 0x09, 5, 5));
-    const position = sim.servos[5]!.position * 4;
-    expect(take()).toEqual([toHex(Uint8Array.of(position >> 8, position & 0xff))]);
+    send(param(0, 0x0a, 0, 0));
+    expect(take()).toEqual(["05 05", "05 05"]);
+    expect(sim.servos[0]).toMatchObject({ pGain: 5, dGain: 5 });
+    expect(sim.servos[5]).toMatchObject({ pGain: 20, dGain: 30 });
   });
 
   it("reads the P/D and I gains", () => {

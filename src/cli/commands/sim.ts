@@ -31,6 +31,7 @@ export const simCommand: CommandDef = {
     "rbc sim --pty --fault garbage --fault-every 3",
     "rbc sim --pty --no-serial --no-status --firmware 9.99 --platform 4 --repeat-replies",
     "rbc sim --pty --user-firmware --busy-motion 1 --firmware-events",
+    "rbc sim --pty --servo-replacement 12 --servo-loaded 4",
   ],
   talksToRobot: false,
   streams: true,
@@ -115,6 +116,7 @@ export const simCommand: CommandDef = {
             answersMemoryRead: variant.answersMemoryRead !== false,
             servosSilent: variant.servosSilent === true,
             soundReplyAtOnce: variant.soundReplyAtOnce === true,
+            servoFaults: variant.servoFaults ?? null,
           },
         });
         env.out.line(

@@ -317,6 +317,22 @@ export const helpMessages = defineMessages({
     en: "Answer Run Sound (0x15) at once, before the sound plays.",
     ko: "소리 재생(0x15)에 소리가 나기 전에 바로 응답해요.",
   },
+  "cliHelp.sim.servoMissing": {
+    en: "No servo at id N (0-15) on the servo bus: nothing answers there. May be given more than once.",
+    ko: "서보 버스의 ID N(0-15)에 서보가 없어요: 거기서는 아무도 응답하지 않아요. 여러 번 쓸 수 있어요.",
+  },
+  "cliHelp.sim.servoDuplicate": {
+    en: "A second servo also at id N (0-15): the two replies collide and arrive garbled.",
+    ko: "ID N(0-15)에 서보가 하나 더 있어요: 두 응답이 겹쳐서 뒤섞여 와요.",
+  },
+  "cliHelp.sim.servoReplacement": {
+    en: "Servo N (1-15) was replaced by a new one still at the factory id 0: id 0 answers garbled, id N not at all.",
+    ko: "서보 N번(1-15)을 공장 ID 0 그대로인 새 서보로 바꿨어요: ID 0은 뒤섞여 응답하고 ID N은 응답하지 않아요.",
+  },
+  "cliHelp.sim.servoLoaded": {
+    en: "Servo N (0-15) carries a high load at rest and follows a move only part of the way.",
+    ko: "서보 N번(0-15)이 가만히 있어도 부하가 크고, 움직임을 일부만 따라가요.",
+  },
   "cliHelp.sim.quiet": { en: "Do not print the packet trace.", ko: "패킷 로그를 출력하지 않아요." },
   "cliHelp.sim.port": { en: "The serial device to serve.", ko: "가상 로봇을 띄울 시리얼 장치." },
 });
