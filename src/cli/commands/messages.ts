@@ -532,6 +532,20 @@ export const commandMessages = defineMessages({
     en: "The robot does not answer after the update.",
     ko: "업데이트 뒤에 로봇이 응답하지 않아요.",
   },
+  // ---- issue 20 items 8 and 11 (branch fwholes): firmware update faults; the lead moves these at merge ----
+  "cmd.flash.failure.earlyStatus": {
+    en: "A status character arrived for a line sooner than the line could have reached the robot at 115200 baud, so it cannot be that line's answer; the update stopped rather than run ahead of the bootloader.",
+    ko: "줄이 115200 baud로 로봇에 닿기도 전에 상태 문자가 왔어요. 그 줄의 응답일 수 없어서, 부트로더보다 앞서 나가지 않도록 업데이트를 멈췄어요.",
+  },
+  "cmd.flash.failure.extraStatus": {
+    en: "The bootloader sent a status character when no line was waiting for one; the update stopped rather than take it for the next line's answer.",
+    ko: "기다리는 줄이 없는데 부트로더가 상태 문자를 보냈어요. 다음 줄의 응답으로 잘못 받지 않도록 업데이트를 멈췄어요.",
+  },
+  "cmd.flash.failure.lineDeadline": {
+    en: "The bootloader did not finish a line within 10 s after its last byte; it only paused and resumed the sending.",
+    ko: "부트로더가 줄의 마지막 바이트 뒤 10초 안에 그 줄을 끝내지 않았어요. 보내기를 멈췄다가 다시 하라고만 했어요.",
+  },
+  // ---- end of issue 20 items 8 and 11 ----
   "cmd.flash.holds.previous": {
     en: "Nothing was written: the robot still holds its previous firmware.",
     ko: "아무것도 쓰지 않았어요. 로봇에는 이전 펌웨어가 그대로 있어요.",
