@@ -271,6 +271,8 @@ export class RbcConnection {
     const farewell =
       this.mode === "download" ? ABANDON_DOWNLOAD : this.mode === "direct" ? EXIT_DIRECT_MODE : undefined;
     if (farewell && this.transport.status === "open") {
+      const name = farewell === ABANDON_DOWNLOAD ? "abandon the download" : "leave direct mode";
+      this.emitLog({ direction: "out", kind: "raw", name, bytes: farewell });
       await this.withTimeout(this.transport.write(farewell), this.timeouts.quickMs, "close").catch(() => {});
     }
     this.failPending(new RbcDisconnectedError("The connection was closed."));
