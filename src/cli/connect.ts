@@ -1,3 +1,4 @@
+import { RbcInBootloaderError } from "../device/bootloader-prompt.ts";
 import { RbcPortError } from "../device/errors.ts";
 import { RbcClient } from "../device/rbc-client.ts";
 import type { LinkKind } from "../device/round-trip.ts";
@@ -12,13 +13,14 @@ import { MockSerialPort } from "../sim/mock-serial-port.ts";
 import { BootloaderRbc } from "../sim/sim-bootloader.ts";
 import type { GlobalValues } from "./args.ts";
 import { localeOf, type RunEnv } from "./command.ts";
+import { commandMessages } from "./commands/messages.ts";
 import { demoClock } from "./demo-clock.ts";
 import { CliError, UsageError } from "./errors.ts";
 import { cliMessages } from "./messages.ts";
 import { formatLogEntry, logEntryJson } from "./packet-trace.ts";
 import { portOpenSaid } from "./port-errors.ts";
 import { said } from "./said.ts";
-import { demoVariant, type SimVariant } from "./sim-variant.ts";
+import { demoVariant, rbcOptionsOf, type SimVariant } from "./sim-variant.ts";
 
 /** A connected robot: the real one on a serial port, or the demo robot. */
 export interface Robot {
@@ -112,8 +114,8 @@ function demoTransport(
   clock: Clock,
   variant: SimVariant,
 ): { transport: Transport; dispose: () => void; bootloader: BootloaderRbc } {
-  const sim = createDemoRbc({ clock, ...variant });
-  const bootloader = new BootloaderRbc(sim);
+  const sim = createDemoRbc({ clock, ...rbcOptionsOf(variant) });
+  const bootloader = new BootloaderRbc(sim, { faults: { waiting: variant.inBootloader } });
   const port = new MockSerialPort(bootloader, { latencyMs: 2, clock, record: false });
   return {
     transport: new WebSerialTransport(port, { clock }),
@@ -236,6 +238,16 @@ export async function connectRobot(
   } catch (e) {
     env.signal.removeEventListener("abort", onAbort);
     await close();
+    if (e instanceof RbcInBootloaderError) {
+      // Not the cable: the robot answers in its bootloader only, and the firmware update recovers it.
+      const robot = target.demo ? "--demo" : `--port ${target.port}`;
+      throw new CliError(
+        e.code,
+        said(commandMessages, "cmd.flash.inBootloader", { count: e.facts.prompts, robot }),
+        undefined,
+        { prompts: e.facts.prompts, overMs: Math.round(e.facts.overMs) },
+      );
+    }
     if (!target.demo && e instanceof RbcPortError && isOpenFailure(e)) {
       throw new CliError(e.code, portOpenSaid(target.port, e, e.code));
     }

@@ -25,6 +25,7 @@ export const VARIANT_OPTIONS = {
   platform: { type: "string" },
   "repeat-replies": { type: "boolean" },
   "repeat-type": { type: "string" },
+  "in-bootloader": { type: "boolean" },
 } as const;
 
 /** The demo robot's variant switches (same syntax as `rbc sim`'s). */
@@ -41,7 +42,16 @@ export const REPEAT_INTERVAL_MS = 0.955;
 export type SimVariant = Pick<
   SimulatedRbcOptions,
   "answersSerialNumber" | "answersExecutionStatus" | "firmware" | "platform" | "repeatReplies"
->;
+> & {
+  /** The robot waits in its bootloader (docs/protocol.md §11): `^` again and again, no packet answered. */
+  inBootloader?: boolean;
+};
+
+/** The simulator's own options of a variant, without the bootloader's. */
+export function rbcOptionsOf(variant: SimVariant): Omit<SimVariant, "inBootloader"> {
+  const { inBootloader: _, ...rbc } = variant;
+  return rbc;
+}
 
 interface VariantValues {
   "no-serial"?: boolean;
@@ -50,6 +60,7 @@ interface VariantValues {
   platform?: string;
   "repeat-replies"?: boolean;
   "repeat-type"?: string;
+  "in-bootloader"?: boolean;
 }
 
 function parseFirmware(text: string, command: string): { major: number; minor: number } {
@@ -84,6 +95,7 @@ export function variantFromValues(values: VariantValues, command: string, paced 
   const variant: SimVariant = {};
   if (values["no-serial"]) variant.answersSerialNumber = false;
   if (values["no-status"]) variant.answersExecutionStatus = false;
+  if (values["in-bootloader"]) variant.inBootloader = true;
   if (values.firmware !== undefined) variant.firmware = parseFirmware(values.firmware, command);
   if (values.platform !== undefined) variant.platform = parsePlatform(values.platform, command);
   if (values["repeat-replies"] || values["repeat-type"] !== undefined) {
@@ -141,6 +153,7 @@ export function describeVariant(variant: SimVariant, locale: Locale = "en"): str
   const words: string[] = [];
   if (variant.answersSerialNumber === false) words.push(t("cli.variant.noSerial"));
   if (variant.answersExecutionStatus === false) words.push(t("cli.variant.noStatus"));
+  if (variant.inBootloader) words.push(t("cli.variant.inBootloader"));
   if (variant.repeatReplies) {
     const type = variant.repeatReplies.type;
     const hex = `0x${type.toString(16).toUpperCase().padStart(2, "0")}`;

@@ -34,6 +34,7 @@ const RBC_CODE_TEXT: Readonly<Record<RbcErrorCode, Key>> = {
   cancelled: "error.cancelled",
   "invalid-argument": "error.invalidArgument",
   "no-robot": "error.noRobot",
+  "in-bootloader": "error.inBootloader",
   "verify-failed": "error.verifyFailed",
   "upload-failed": "error.uploadFailed",
   "motion-ignored": "error.motionIgnored",

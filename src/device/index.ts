@@ -1,3 +1,8 @@
+export {
+  BOOTLOADER_PROMPTS_NEEDED,
+  type BootloaderPromptFacts,
+  RbcInBootloaderError,
+} from "./bootloader-prompt.ts";
 export { DirectMode, SERVO_IDS } from "./direct-mode.ts";
 export { type ErrorTextOptions, errorText, technicalDetail, uploadOutcomeText } from "./error-text.ts";
 export * from "./errors.ts";

@@ -15,6 +15,7 @@ import { PacketParser } from "../protocol/packet-parser.ts";
 import { EXIT_DIRECT_MODE } from "../protocol/wck.ts";
 import { type Clock, realClock } from "../shared/clock.ts";
 import { Emitter } from "../shared/emitter.ts";
+import { BootloaderPromptWatch, RbcInBootloaderError } from "./bootloader-prompt.ts";
 import {
   RbcBadReplyError,
   RbcCancelledError,
@@ -227,6 +228,9 @@ export class RbcConnection {
       basicPostureConfirmed: false,
       subscription: undefined,
     });
+    // A robot waiting in its bootloader sends `^` and answers nothing (docs/protocol.md §11).
+    const prompt = new BootloaderPromptWatch(this.clock);
+    const stopWatching = this.transport.onData((bytes) => prompt.receive(bytes));
     this.unlisten = [
       this.transport.onData((bytes) => this.onBytes(bytes)),
       this.transport.onStatus((e) => this.onTransportStatus(e)),
@@ -252,7 +256,9 @@ export class RbcConnection {
       this.setState({ mode: "packet" });
       return await handshake();
     } catch (e) {
+      const inBootloader = e instanceof RbcTimeoutError ? await prompt.confirm() : undefined;
       await this.close();
+      if (inBootloader) throw new RbcInBootloaderError(inBootloader, e);
       if (e instanceof RbcTimeoutError) {
         throw new RbcError(
           "no-robot",
@@ -262,6 +268,8 @@ export class RbcConnection {
       }
       if (e instanceof LinkError) throw RbcPortError.fromLink(e);
       throw e;
+    } finally {
+      stopWatching();
     }
   }
 

@@ -438,6 +438,8 @@ export class BootloaderRbc {
   /** After `@`: the new application starts and reports the version its file declares. */
   private boot(): void {
     this.counters.updates++;
+    // A firmware was written whole: the robot no longer waits in its bootloader.
+    this.faults = { ...this.faults, waiting: false };
     this.applicationWorks = !this.faults.silentFirmware;
     const version = firmwareMarker(this.flashBytes);
     if (version) this.rbc.setFirmwareVersion(version);

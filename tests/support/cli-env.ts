@@ -12,7 +12,7 @@ export async function runInProcess(
   command: CommandDef,
   argv: string[],
   env: Record<string, string> = {},
-): Promise<{ code: number; stdout: string; stderr: string }> {
+): Promise<{ code: number; stdout: string; stderr: string; error?: unknown }> {
   const text = { stdout: "", stderr: "" };
   const stdout = new PassThrough();
   const stderr = new PassThrough();
@@ -35,14 +35,17 @@ export async function runInProcess(
     env,
   };
   let code: number;
+  let error: unknown;
   try {
     code = await command.run(runEnv);
   } catch (e) {
-    text.stderr += `thrown: ${e instanceof Error ? e.message : String(e)}\n`;
+    // What main.ts prints for a thrown error is its English line; the error itself is returned as well.
+    error = e;
+    text.stderr += `rbc: ${e instanceof Error ? e.message : String(e)}\n`;
     code = -1;
   } finally {
     await cleanups.run();
   }
   await new Promise((r) => setImmediate(r));
-  return { code, ...text };
+  return { code, ...text, error };
 }
