@@ -13,7 +13,6 @@ import { MockSerialPort } from "../sim/mock-serial-port.ts";
 import { BootloaderRbc } from "../sim/sim-bootloader.ts";
 import type { GlobalValues } from "./args.ts";
 import { localeOf, type RunEnv } from "./command.ts";
-import { commandMessages } from "./commands/messages.ts";
 import { demoClock } from "./demo-clock.ts";
 import { CliError, UsageError } from "./errors.ts";
 import { cliMessages } from "./messages.ts";
@@ -243,7 +242,7 @@ export async function connectRobot(
       const robot = target.demo ? "--demo" : `--port ${target.port}`;
       throw new CliError(
         e.code,
-        said(commandMessages, "cmd.flash.inBootloader", { count: e.facts.prompts, robot }),
+        said(cliMessages, "cli.connect.inBootloader", { count: e.facts.prompts, robot }),
         undefined,
         { prompts: e.facts.prompts, overMs: Math.round(e.facts.overMs) },
       );

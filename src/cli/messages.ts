@@ -366,6 +366,10 @@ export const cliMessages = defineMessages({
   "cli.variant.noSerial": { en: "no answer to 0x0C (serial number)", ko: "0x0C(시리얼 번호)에 응답 안 함" },
   "cli.variant.noStatus": { en: "no answer to 0x1E (execution status)", ko: "0x1E(실행 상태)에 응답 안 함" },
   // issue 20 item 11 (branch fwholes)
+  "cli.connect.inBootloader": {
+    en: "The robot is waiting in its bootloader: it sent the bootloader's prompt (^) {count} times and answered no request. Its firmware is probably missing or incomplete (an interrupted firmware update, say). Give it a firmware with: rbc flash FILE.hex --recover {robot}",
+    ko: "로봇이 부트로더에서 기다리고 있어요. 부트로더 신호(^)를 {count}번 보냈고 어떤 요청에도 응답하지 않았어요. 펌웨어가 없거나 불완전할 수 있어요(예: 펌웨어 업데이트가 중간에 끊긴 경우). 다음 명령으로 펌웨어를 넣어 주세요: rbc flash FILE.hex --recover {robot}",
+  },
   "cli.variant.inBootloader": {
     en: "waiting in its bootloader (sends ^, answers no packet)",
     ko: "부트로더에서 기다리는 중(^를 보내고 패킷에 응답 안 함)",

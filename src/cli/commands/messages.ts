@@ -532,7 +532,7 @@ export const commandMessages = defineMessages({
     en: "The robot does not answer after the update.",
     ko: "업데이트 뒤에 로봇이 응답하지 않아요.",
   },
-  // ---- issue 20 items 8 and 11 (branch fwholes): firmware update faults; the lead moves these at merge ----
+  // ---- issue 20 item 8 (branch fwholes): firmware update faults; the lead moves these at merge ----
   "cmd.flash.failure.earlyStatus": {
     en: "A status character arrived for a line sooner than the line could have reached the robot at 115200 baud, so it cannot be that line's answer; the update stopped rather than run ahead of the bootloader.",
     ko: "줄이 115200 baud로 로봇에 닿기도 전에 상태 문자가 왔어요. 그 줄의 응답일 수 없어서, 부트로더보다 앞서 나가지 않도록 업데이트를 멈췄어요.",
@@ -545,11 +545,7 @@ export const commandMessages = defineMessages({
     en: "The bootloader did not finish a line within 10 s after its last byte; it only paused and resumed the sending.",
     ko: "부트로더가 줄의 마지막 바이트 뒤 10초 안에 그 줄을 끝내지 않았어요. 보내기를 멈췄다가 다시 하라고만 했어요.",
   },
-  "cmd.flash.inBootloader": {
-    en: "The robot is waiting in its bootloader: it sent the bootloader's prompt (^) {count} times and answered no request. Its firmware is probably missing or incomplete (an interrupted firmware update, say). Give it a firmware with: rbc flash FILE.hex --recover {robot}",
-    ko: "로봇이 부트로더에서 기다리고 있어요. 부트로더 신호(^)를 {count}번 보냈고 어떤 요청에도 응답하지 않았어요. 펌웨어가 없거나 불완전할 수 있어요(예: 펌웨어 업데이트가 중간에 끊긴 경우). 다음 명령으로 펌웨어를 넣어 주세요: rbc flash FILE.hex --recover {robot}",
-  },
-  // ---- end of issue 20 items 8 and 11 ----
+  // ---- end of issue 20 item 8 ----
   "cmd.flash.holds.previous": {
     en: "Nothing was written: the robot still holds its previous firmware.",
     ko: "아무것도 쓰지 않았어요. 로봇에는 이전 펌웨어가 그대로 있어요.",

@@ -310,7 +310,7 @@ export const firmwareMessages = defineMessages({
     en: "The robot does not answer after the update.",
     ko: "업데이트 뒤에 로봇이 응답하지 않아요.",
   },
-  // ---- issue 20 items 8 and 11 (branch fwholes): firmware update faults; the lead moves these at merge ----
+  // ---- issue 20 item 8 (branch fwholes): firmware update faults; the lead moves these at merge ----
   "firmware.failure.earlyStatus": {
     en: "A status character arrived for a line sooner than the line could have reached the robot at 115200 baud, so it cannot be that line's answer; the update stopped rather than run ahead of the bootloader.",
     ko: "줄이 115200 baud로 로봇에 닿기도 전에 상태 문자가 왔어요. 그 줄의 응답일 수 없어서, 부트로더보다 앞서 나가지 않도록 업데이트를 멈췄어요.",
@@ -323,7 +323,7 @@ export const firmwareMessages = defineMessages({
     en: "The bootloader did not finish a line within 10 s after its last byte; it only paused and resumed the sending.",
     ko: "부트로더가 줄의 마지막 바이트 뒤 10초 안에 그 줄을 끝내지 않았어요. 보내기를 멈췄다가 다시 하라고만 했어요.",
   },
-  // ---- end of issue 20 items 8 and 11 ----
+  // ---- end of issue 20 item 8 ----
   "firmware.failure.atLine": {
     en: "It happened at line {line} of the file.",
     ko: "파일의 {line}번째 줄에서 일어났어요.",
