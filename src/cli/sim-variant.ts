@@ -32,6 +32,7 @@ export const VARIANT_OPTIONS = {
   "no-memory-read": { type: "boolean" },
   "servos-silent": { type: "boolean" },
   "sound-reply-at-once": { type: "boolean" },
+  "in-bootloader": { type: "boolean" },
 } as const;
 
 /** The demo robot's variant switches (same syntax as `rbc sim`'s). */
@@ -58,7 +59,16 @@ export type SimVariant = Pick<
   | "answersMemoryRead"
   | "servosSilent"
   | "soundReplyAtOnce"
->;
+> & {
+  /** The robot waits in its bootloader (docs/protocol.md §11): `^` again and again, no packet answered. */
+  inBootloader?: boolean;
+};
+
+/** The simulator's own options of a variant, without the bootloader's. */
+export function rbcOptionsOf(variant: SimVariant): Omit<SimVariant, "inBootloader"> {
+  const { inBootloader: _, ...rbc } = variant;
+  return rbc;
+}
 
 interface VariantValues {
   "no-serial"?: boolean;
@@ -74,6 +84,7 @@ interface VariantValues {
   "no-memory-read"?: boolean;
   "servos-silent"?: boolean;
   "sound-reply-at-once"?: boolean;
+  "in-bootloader"?: boolean;
 }
 
 function parseFirmware(text: string, command: string): { major: number; minor: number } {
@@ -116,6 +127,7 @@ export function variantFromValues(values: VariantValues, command: string, paced 
   const variant: SimVariant = {};
   if (values["no-serial"]) variant.answersSerialNumber = false;
   if (values["no-status"]) variant.answersExecutionStatus = false;
+  if (values["in-bootloader"]) variant.inBootloader = true;
   if (values.firmware !== undefined) variant.firmware = parseFirmware(values.firmware, command);
   if (values.platform !== undefined) variant.platform = parsePlatform(values.platform, command);
   if (values["firmware-events"]) variant.firmwareEventPace = true;
@@ -181,6 +193,7 @@ export function describeVariant(variant: SimVariant, locale: Locale = "en"): str
   const words: string[] = [];
   if (variant.answersSerialNumber === false) words.push(t("cli.variant.noSerial"));
   if (variant.answersExecutionStatus === false) words.push(t("cli.variant.noStatus"));
+  if (variant.inBootloader) words.push(t("cli.variant.inBootloader"));
   if (variant.repeatReplies) {
     const type = variant.repeatReplies.type;
     const hex = `0x${type.toString(16).toUpperCase().padStart(2, "0")}`;

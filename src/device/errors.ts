@@ -20,6 +20,8 @@ export type RbcErrorCode =
   | "cancelled"
   | "invalid-argument"
   | "no-robot"
+  /** Connecting found the robot waiting in its bootloader (`RbcInBootloaderError`). */
+  | "in-bootloader"
   | "verify-failed"
   | "upload-failed"
   | "motion-ignored"

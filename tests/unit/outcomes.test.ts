@@ -125,6 +125,7 @@ describe("a firmware update's other words", () => {
       pages: 64,
       lines: 1025,
       wireBytes: 46_137,
+      reordered: false,
     };
     expect(firmwareFileSummary(summary)).toBe(
       "16,384 bytes at 0x00000-0x03FFF: 64 flash pages, 1,025 lines (46,137 bytes to send)",
