@@ -1,8 +1,10 @@
-import { inBootloaderRecoverText, inBootloaderText } from "../i18n/outcomes/device.ts";
 import { BOOTLOADER_ACTIVE } from "../protocol/bootloader.ts";
 import { PacketParser } from "../protocol/packet-parser.ts";
 import type { Clock } from "../shared/clock.ts";
-import { RbcError } from "./errors.ts";
+import type { BootloaderPromptFacts } from "./errors.ts";
+
+/** The error and its facts live with the device's other errors (errors.ts): saying it loads no bootloader code. */
+export { type BootloaderPromptFacts, RbcInBootloaderError } from "./errors.ts";
 
 /**
  * A robot waiting in its bootloader (docs/protocol.md §11): after an interrupted update, say, the RBC sends the
@@ -15,26 +17,6 @@ import { RbcError } from "./errors.ts";
 export const BOOTLOADER_PROMPTS_NEEDED = 2;
 /** After a connect timed out with one prompt seen: how long to wait for the next (robot time). */
 export const BOOTLOADER_PROMPT_CONFIRM_MS = 1000;
-
-/** The facts: how many prompts came, over how long, and that no packet answered. */
-export interface BootloaderPromptFacts {
-  prompts: number;
-  /** From the first prompt to the last, ms. */
-  overMs: number;
-}
-
-/** Connecting found the robot waiting in its bootloader: the firmware update (run again) recovers it. */
-export class RbcInBootloaderError extends RbcError {
-  override name = "RbcInBootloaderError";
-  constructor(
-    readonly facts: BootloaderPromptFacts,
-    cause?: unknown,
-  ) {
-    super("in-bootloader", `${inBootloaderText(facts.prompts, "en")} ${inBootloaderRecoverText("en")}`, {
-      cause,
-    });
-  }
-}
 
 /** Watches the bytes of a connect for the bootloader's prompt. `stop()` when the connect is over. */
 export class BootloaderPromptWatch {

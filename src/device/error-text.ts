@@ -14,9 +14,9 @@ import {
   zerosBackupKeptText,
 } from "../i18n/outcomes/device.ts";
 import { LinkError } from "../link/transport.ts";
-import { RbcInBootloaderError } from "./bootloader-prompt.ts";
 import {
   RbcError,
+  RbcInBootloaderError,
   RbcInvalidArgumentError,
   RbcTimeoutError,
   RbcUploadError,
