@@ -3,10 +3,17 @@
  * project's own FakeSerial, MockSerialPort and SimulatedRbc (headless Chromium's real chooser never settles).
  * With `timeScale`, the simulated robot runs on a faster clock, which its port carries to the panel's client;
  * with `variant`, it is one of the firmware builds of docs/protocol.md §3.5; with `bluetooth`, a paired Bluetooth
- * module behind a slow, bursty link.
+ * module behind a slow, bursty link; with `inBootloader`, a robot waiting in its bootloader.
  */
 import { realClock, scaledClock } from "../../src/shared/clock.ts";
-import { bluetoothLinkOptions, FakeSerial, MockSerialPort, SimulatedRbc } from "../../src/sim/index.ts";
+import {
+  BootloaderRbc,
+  bluetoothLinkOptions,
+  FakeSerial,
+  MockSerialPort,
+  type SimEndpoint,
+  SimulatedRbc,
+} from "../../src/sim/index.ts";
 import { SIMULATED_CLOCK } from "../../src/ui/simulated-clock.ts";
 import "./rbc-test-globals.ts";
 
@@ -16,7 +23,15 @@ const sim = new SimulatedRbc({ clock, ...options.variant });
 const link = options.bluetooth
   ? bluetoothLinkOptions(options.latencyMs === undefined ? {} : { latencyMs: options.latencyMs })
   : { latencyMs: options.latencyMs ?? 2 };
-const port = new MockSerialPort(sim, { clock, ...link, baudPacing: options.baudPacing ?? false });
+// With `inBootloader`, the robot's bootloader stands in front of it, waiting (it sends `^`, answers no packet).
+const device: SimEndpoint = options.inBootloader
+  ? new BootloaderRbc(sim, { faults: { waiting: true } })
+  : sim;
+const port = new MockSerialPort<SimEndpoint>(device, {
+  clock,
+  ...link,
+  baudPacing: options.baudPacing ?? false,
+});
 Object.defineProperty(port, SIMULATED_CLOCK, { value: clock });
 const serial = new FakeSerial([port], { granted: options.granted ?? false });
 serial.userCancels = options.userCancels ?? false;
