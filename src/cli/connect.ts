@@ -1,8 +1,10 @@
+import { RbcInBootloaderError } from "../device/bootloader-prompt.ts";
 import { RbcPortError } from "../device/errors.ts";
 import { RbcClient } from "../device/rbc-client.ts";
 import type { LinkKind } from "../device/round-trip.ts";
 import type { DeviceIdentity } from "../device/types.ts";
 import type { Locale } from "../i18n/locale.ts";
+import { inBootloaderText } from "../i18n/outcomes/device.ts";
 import { translator } from "../i18n/translate.ts";
 import { LinkError, type Transport } from "../link/transport.ts";
 import { WebSerialTransport } from "../link/web-serial-transport.ts";
@@ -17,8 +19,8 @@ import { CliError, UsageError } from "./errors.ts";
 import { cliMessages } from "./messages.ts";
 import { formatLogEntry, logEntryJson } from "./packet-trace.ts";
 import { portOpenSaid } from "./port-errors.ts";
-import { said } from "./said.ts";
-import { demoVariant, type SimVariant } from "./sim-variant.ts";
+import { joinSaid, said, saidBy } from "./said.ts";
+import { demoVariant, rbcOptionsOf, type SimVariant } from "./sim-variant.ts";
 
 /** A connected robot: the real one on a serial port, or the demo robot. */
 export interface Robot {
@@ -112,8 +114,8 @@ function demoTransport(
   clock: Clock,
   variant: SimVariant,
 ): { transport: Transport; dispose: () => void; bootloader: BootloaderRbc } {
-  const sim = createDemoRbc({ clock, ...variant });
-  const bootloader = new BootloaderRbc(sim);
+  const sim = createDemoRbc({ clock, ...rbcOptionsOf(variant) });
+  const bootloader = new BootloaderRbc(sim, { faults: { waiting: variant.inBootloader } });
   const port = new MockSerialPort(bootloader, { latencyMs: 2, clock, record: false });
   return {
     transport: new WebSerialTransport(port, { clock }),
@@ -236,6 +238,19 @@ export async function connectRobot(
   } catch (e) {
     env.signal.removeEventListener("abort", onAbort);
     await close();
+    if (e instanceof RbcInBootloaderError) {
+      // Not the cable: the robot answers in its bootloader only, and the firmware update recovers it.
+      const robot = target.demo ? "--demo" : `--port ${target.port}`;
+      throw new CliError(
+        e.code,
+        joinSaid([
+          saidBy((l) => inBootloaderText(e.facts.prompts, l)),
+          said(cliMessages, "cli.connect.recoverWith", { robot }),
+        ]),
+        undefined,
+        { prompts: e.facts.prompts, overMs: Math.round(e.facts.overMs) },
+      );
+    }
     if (!target.demo && e instanceof RbcPortError && isOpenFailure(e)) {
       throw new CliError(e.code, portOpenSaid(target.port, e, e.code));
     }

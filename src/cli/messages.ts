@@ -368,6 +368,15 @@ export const cliMessages = defineMessages({
   "cli.variant.inVariable": { en: "{variable}: {reason}", ko: "{variable} 환경 변수: {reason}" },
   "cli.variant.noSerial": { en: "no answer to 0x0C (serial number)", ko: "0x0C(시리얼 번호)에 응답 안 함" },
   "cli.variant.noStatus": { en: "no answer to 0x1E (execution status)", ko: "0x1E(실행 상태)에 응답 안 함" },
+  // What rbc adds to the outcome catalogue's "waiting in its bootloader" (its framing: the command to run)
+  "cli.connect.recoverWith": {
+    en: "Give it a firmware with: rbc flash FILE.hex --recover {robot}",
+    ko: "다음 명령으로 펌웨어를 넣어 주세요: rbc flash FILE.hex --recover {robot}",
+  },
+  "cli.variant.inBootloader": {
+    en: "waiting in its bootloader (sends ^, answers no packet)",
+    ko: "부트로더에서 기다리는 중(^를 보내고 패킷에 응답 안 함)",
+  },
   "cli.variant.repeats": {
     en: "the first {type} ({name}) reply repeated endlessly",
     ko: "첫 {type} ({name}) 응답을 끝없이 되풀이",

@@ -13,7 +13,7 @@ import { portOpenSaid } from "./port-errors.ts";
 import { said } from "./said.ts";
 import { SimLink, type SimLinkOptions } from "./sim-link.ts";
 import { formatSimTraceLine, SimTrace, type SimTraceLine } from "./sim-trace.ts";
-import type { SimVariant } from "./sim-variant.ts";
+import { rbcOptionsOf, type SimVariant } from "./sim-variant.ts";
 
 /**
  * `rbc sim`: the simulated RBC served on a serial device (one end of a PTY pair, or a real serial port wired
@@ -109,8 +109,8 @@ function openPort(path: string): Promise<SerialPort> {
 export async function serveSimulator(options: SimServerOptions): Promise<void> {
   const { out } = options;
   const port = await openPort(options.path);
-  const sim = new SimulatedRbc({ ...options.variant });
-  const boot = new BootloaderRbc(sim);
+  const sim = new SimulatedRbc({ ...rbcOptionsOf(options.variant ?? {}) });
+  const boot = new BootloaderRbc(sim, { faults: { waiting: options.variant?.inBootloader } });
   const print = (line: SimTraceLine) => {
     if (options.quiet) return;
     if (out.json) out.jsonLine(line);

@@ -55,6 +55,12 @@ export class SimTrace {
   private readonly t0 = performance.now();
   /** The last reply printed, while the simulator keeps sending the same bytes again. */
   private lastReply: { hex: string; label: string; repeats: number } | undefined;
+  /**
+   * Requests traced that may still get their answer: a reply while one is owed answered it and is never
+   * folded into "the same reply again, unasked", even when its bytes equal the previous reply's (two servos
+   * at one position, two requests in one write). A request the simulator dropped or ignored owes nothing.
+   */
+  private owed = 0;
 
   constructor(
     private readonly sim: SimulatedRbc,
@@ -68,6 +74,7 @@ export class SimTrace {
         const packet = encodePacket(type, contents, platform);
         this.flushGarbage(packet.length);
         this.line("pc-to-rbc", `${byteHex(type)} ${commandName(type)}`, packet);
+        this.owed++;
         this.pending = [];
       },
       onDownloadStart: (type, _platform, size) => {
@@ -78,6 +85,7 @@ export class SimTrace {
           `${byteHex(type)} ${commandName(type)}: first part, ${size} bytes`,
           encodeDownloadStart(type, size),
         );
+        this.owed++;
         this.pending = [];
         this.mode = { kind: "download", area, size, received: 0, chunk: [], index: 0 };
         this.mirror.rawMode((b) => this.downloadByte(b));
@@ -95,7 +103,14 @@ export class SimTrace {
       const mode = this.mode;
       if (mode.kind === "servo") {
         mode.bytes.push(b);
-        const exits = mode.decoder.push(Uint8Array.of(b)).some((c) => c.kind === "exit-direct");
+        const commands = mode.decoder.push(Uint8Array.of(b));
+        const exits = commands.some((c) => c.kind === "exit-direct");
+        const answered = commands.filter((c) => c.kind !== "exit-direct" && c.kind !== "sync").length;
+        if (answered > 0) {
+          // One line per servo command, each owed its two-byte answer.
+          this.flushServo("servo bus (direct mode)");
+          this.owed += answered;
+        }
         if (exits) {
           // The exit is the last 6 bytes; servo commands written before it keep a line of their own.
           const exit = mode.bytes.splice(mode.bytes.length - EXIT_DIRECT_MODE.length);
@@ -122,7 +137,10 @@ export class SimTrace {
     const now = this.sim.stats.drops;
     for (const [reason, count] of Object.entries(now) as Array<[DropReason, number]>) {
       const seen = this.drops[reason] ?? 0;
-      for (let i = seen; i < count; i++) this.note(DROP_WORDS[reason] ?? `dropped: ${reason}`);
+      for (let i = seen; i < count; i++) {
+        this.note(DROP_WORDS[reason] ?? `dropped: ${reason}`);
+        this.owed = Math.max(0, this.owed - 1);
+      }
     }
     this.drops = { ...now };
     if (
@@ -148,6 +166,12 @@ export class SimTrace {
       label = "download acknowledged (40)";
     }
     const hex = toHex(bytes);
+    if (this.owed > 0) {
+      this.owed--;
+      this.line("rbc-to-pc", label, bytes, note);
+      this.lastReply = note === undefined ? { hex, label, repeats: 0 } : undefined;
+      return;
+    }
     // A transmission repeated unasked (the --repeat-replies flood, an event while its condition holds): one
     // line, then a count instead of a line each (a thousand a second would bury everything else).
     if (note === undefined && this.lastReply?.hex === hex) {

@@ -39,6 +39,7 @@ export const VARIANT_OPTIONS = {
   "servo-duplicate": { type: "string", multiple: true },
   "servo-replacement": { type: "string", multiple: true },
   "servo-loaded": { type: "string", multiple: true },
+  "in-bootloader": { type: "boolean" },
 } as const;
 
 /** The demo robot's variant switches (same syntax as `rbc sim`'s). */
@@ -66,7 +67,16 @@ export type SimVariant = Pick<
   | "servosSilent"
   | "soundReplyAtOnce"
   | "servoFaults"
->;
+> & {
+  /** The robot waits in its bootloader (docs/protocol.md §11): `^` again and again, no packet answered. */
+  inBootloader?: boolean;
+};
+
+/** The simulator's own options of a variant, without the bootloader's. */
+export function rbcOptionsOf(variant: SimVariant): Omit<SimVariant, "inBootloader"> {
+  const { inBootloader: _, ...rbc } = variant;
+  return rbc;
+}
 
 interface VariantValues {
   "no-serial"?: boolean;
@@ -86,6 +96,7 @@ interface VariantValues {
   "servo-duplicate"?: string[];
   "servo-replacement"?: string[];
   "servo-loaded"?: string[];
+  "in-bootloader"?: boolean;
 }
 
 /** The servo-fault switches, the `ServoFaults` field each sets, and the lowest id it takes. */
@@ -170,6 +181,7 @@ export function variantFromValues(values: VariantValues, command: string, paced 
   const variant: SimVariant = {};
   if (values["no-serial"]) variant.answersSerialNumber = false;
   if (values["no-status"]) variant.answersExecutionStatus = false;
+  if (values["in-bootloader"]) variant.inBootloader = true;
   if (values.firmware !== undefined) variant.firmware = parseFirmware(values.firmware, command);
   if (values.platform !== undefined) variant.platform = parsePlatform(values.platform, command);
   if (values["firmware-events"]) variant.firmwareEventPace = true;
@@ -237,6 +249,7 @@ export function describeVariant(variant: SimVariant, locale: Locale = "en"): str
   const words: string[] = [];
   if (variant.answersSerialNumber === false) words.push(t("cli.variant.noSerial"));
   if (variant.answersExecutionStatus === false) words.push(t("cli.variant.noStatus"));
+  if (variant.inBootloader) words.push(t("cli.variant.inBootloader"));
   if (variant.repeatReplies) {
     const type = variant.repeatReplies.type;
     const hex = `0x${type.toString(16).toUpperCase().padStart(2, "0")}`;

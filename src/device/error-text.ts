@@ -2,6 +2,8 @@ import type { Locale } from "../i18n/locale.ts";
 import {
   codeNeedsDetail,
   codeText,
+  inBootloaderRecoverText,
+  inBootloaderText,
   linkCodeText,
   nothingSentText,
   seeDetailText,
@@ -14,6 +16,7 @@ import {
 import { LinkError } from "../link/transport.ts";
 import {
   RbcError,
+  RbcInBootloaderError,
   RbcInvalidArgumentError,
   RbcTimeoutError,
   RbcUploadError,
@@ -54,6 +57,9 @@ function fromFacts(e: unknown, locale: Locale, hint: string): string {
     return `${fromFacts(e.reason, locale, hint)} ${zerosBackupKeptText(e.backupName, locale)}`;
   }
   if (e instanceof RbcTimeoutError) return timeoutText(e.command, e.waitedMs, locale);
+  if (e instanceof RbcInBootloaderError) {
+    return `${inBootloaderText(e.facts.prompts, locale)} ${inBootloaderRecoverText(locale)}`;
+  }
   if (e instanceof RbcInvalidArgumentError) return `${said(e)} ${nothingSentText(locale)}`;
   if (e instanceof RbcError) return said(e);
   if (e instanceof LinkError) return linkCodeText(e.code, locale);

@@ -1,5 +1,7 @@
 import {
   codeText,
+  inBootloaderRecoverText,
+  inBootloaderText,
   timeoutText,
   zerosBackupFailedText,
   zerosBackupKeptText,
@@ -20,6 +22,8 @@ export type RbcErrorCode =
   | "cancelled"
   | "invalid-argument"
   | "no-robot"
+  /** Connecting found the robot waiting in its bootloader (`RbcInBootloaderError`). */
+  | "in-bootloader"
   | "verify-failed"
   | "upload-failed"
   | "motion-ignored"
@@ -109,6 +113,26 @@ export class RbcInvalidArgumentError extends RbcError {
   override name = "RbcInvalidArgumentError";
   constructor(message: string) {
     super("invalid-argument", message);
+  }
+}
+
+/** A robot waiting in its bootloader (docs/protocol.md §11): how many prompts came, over how long, and no packet. */
+export interface BootloaderPromptFacts {
+  prompts: number;
+  /** From the first prompt to the last, ms. */
+  overMs: number;
+}
+
+/** Connecting found the robot waiting in its bootloader: the firmware update (run again) recovers it. */
+export class RbcInBootloaderError extends RbcError {
+  override name = "RbcInBootloaderError";
+  constructor(
+    readonly facts: BootloaderPromptFacts,
+    cause?: unknown,
+  ) {
+    super("in-bootloader", `${inBootloaderText(facts.prompts, "en")} ${inBootloaderRecoverText("en")}`, {
+      cause,
+    });
   }
 }
 

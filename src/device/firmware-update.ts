@@ -14,6 +14,7 @@ import {
   type BootloaderWait,
   bootloaderError,
   type DialoguePhase,
+  LINE_DEADLINE_MS,
   type RobotHolds,
 } from "../protocol/bootloader.ts";
 import { COMMANDS } from "../protocol/commands.ts";
@@ -49,6 +50,11 @@ export interface FirmwareTimeouts {
   lineMs: number;
   /** For XON after an XOFF (default 2,000 ms). */
   xonMs: number;
+  /**
+   * A line's overall deadline from its last byte (default 10,000 ms, docs/protocol.md §11 [decision]): `lineMs`
+   * and `xonMs` restart with every XOFF/XON, this one never does.
+   */
+  lineDeadlineMs: number;
   /** From `@` to the first version read: the new firmware starting (default 500 ms). */
   startMs: number;
   /** How long the new firmware may take to answer the version read (default 3,000 ms). */
@@ -60,6 +66,7 @@ export const DEFAULT_FIRMWARE_TIMEOUTS: FirmwareTimeouts = {
   readyMs: 1000,
   lineMs: 2000,
   xonMs: 2000,
+  lineDeadlineMs: LINE_DEADLINE_MS,
   startMs: 500,
   answerMs: 3000,
 };
@@ -91,6 +98,12 @@ export interface FirmwareUpdateOptions {
   /** Called once, when the update starts waiting for the robot to be switched off and on. */
   onAskPowerCycle?: () => void;
   timeouts?: Partial<FirmwareTimeouts>;
+  /**
+   * The link carries bytes no faster than 115200 baud (default true: a real serial line always does). Only then
+   * is a status character sooner than its line's wire time a fault (docs/protocol.md §11 [decision]); pass false
+   * for a simulated link without baud pacing (the demo robot), where answers come at once.
+   */
+  wireTimed?: boolean;
 }
 
 export interface FirmwareUpdateResult {
@@ -140,8 +153,12 @@ function errorCodeOf(failure: BootloaderFailure): RbcErrorCode {
     case "not-ready":
     case "no-status":
     case "stalled":
+    case "line-deadline":
     case "no-answer":
       return "timeout";
+    case "early-status":
+    case "extra-status":
+      return "bad-reply";
     default:
       return "upload-failed";
   }
@@ -255,8 +272,12 @@ export async function updateFirmware(
 ): Promise<FirmwareUpdateResult> {
   const image = typeof hex === "string" ? parseIntelHex(hex) : hex;
   const timeouts = { ...DEFAULT_FIRMWARE_TIMEOUTS, ...options.timeouts };
-  const dialogue = new BootloaderDialogue(image.records);
   const { clock } = io;
+  const dialogue = new BootloaderDialogue(image.records, {
+    now: () => clock.now(),
+    lineDeadlineMs: timeouts.lineDeadlineMs,
+    wireTimed: options.wireTimed ?? true,
+  });
   const { signal } = options;
   if (signal?.aborted) throw fromDialogue(dialogue.abort("cancelled"));
 
@@ -408,10 +429,12 @@ function runDialogue(
         armedSeq = wait.seq;
         if (timer !== undefined) clock.clearTimeout(timer);
         const ms = durationOf(wait.for);
+        // XOFF/XON start new waits, but never one past the line's overall deadline.
+        const due = wait.deadline === undefined ? ms : Math.min(ms, Math.max(0, wait.deadline - clock.now()));
         timer = clock.setTimeout(() => {
           timer = undefined;
           after(dialogue.timeout(ms));
-        }, ms);
+        }, due);
       }
     };
     const onAbort = () => fail(dialogue.abort("cancelled"));

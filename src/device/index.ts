@@ -15,6 +15,7 @@ export {
   type Stop7Sender,
   type UploadActivity,
 } from "./activity.ts";
+export { BOOTLOADER_PROMPTS_NEEDED } from "./bootloader-prompt.ts";
 export { DirectMode, SERVO_IDS } from "./direct-mode.ts";
 export { type ErrorTextOptions, errorText, technicalDetail, uploadOutcomeText } from "./error-text.ts";
 export * from "./errors.ts";

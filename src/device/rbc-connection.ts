@@ -21,6 +21,7 @@ import { PacketParser } from "../protocol/packet-parser.ts";
 import { EXIT_DIRECT_MODE } from "../protocol/wck.ts";
 import { type Clock, realClock } from "../shared/clock.ts";
 import { Emitter } from "../shared/emitter.ts";
+import { BootloaderPromptWatch, RbcInBootloaderError } from "./bootloader-prompt.ts";
 import {
   DEFAULT_TIMEOUTS,
   type RbcClientOptions,
@@ -175,6 +176,9 @@ export class RbcConnection {
       basicPostureConfirmed: false,
       subscription: undefined,
     });
+    // A robot waiting in its bootloader sends `^` and answers nothing (docs/protocol.md §11).
+    const prompt = new BootloaderPromptWatch(this.clock);
+    const stopWatching = this.transport.onData((bytes) => prompt.receive(bytes));
     this.unlisten = [
       this.transport.onData((bytes) => this.onBytes(bytes)),
       this.transport.onStatus((e) => this.onTransportStatus(e)),
@@ -200,7 +204,9 @@ export class RbcConnection {
       this.setState({ mode: "packet" });
       return await handshake();
     } catch (e) {
+      const inBootloader = e instanceof RbcTimeoutError ? await prompt.confirm() : undefined;
       await this.close();
+      if (inBootloader) throw new RbcInBootloaderError(inBootloader, e);
       if (e instanceof RbcTimeoutError) {
         throw new RbcError(
           "no-robot",
@@ -210,6 +216,8 @@ export class RbcConnection {
       }
       if (e instanceof LinkError) throw RbcPortError.fromLink(e);
       throw e;
+    } finally {
+      stopWatching();
     }
   }
 
@@ -219,6 +227,8 @@ export class RbcConnection {
     const farewell =
       this.mode === "download" ? ABANDON_DOWNLOAD : this.mode === "direct" ? EXIT_DIRECT_MODE : undefined;
     if (farewell && this.transport.status === "open") {
+      const name = farewell === ABANDON_DOWNLOAD ? "abandon the download" : "leave direct mode";
+      this.emitLog({ direction: "out", kind: "raw", name, bytes: farewell });
       await this.withTimeout(this.transport.write(farewell), this.timeouts.quickMs, "close").catch(() => {});
     }
     this.failPending(new RbcDisconnectedError("The connection was closed."));

@@ -27,6 +27,21 @@ export const XON = 0x11;
 export const MAX_LINE_RESENDS = 3;
 /** Times the host answers a `^` that is then not followed by `?` before it gives up (see `timeout`). */
 export const MAX_ENTRY_TRIES = 3;
+/**
+ * A line's overall deadline, from its last byte on the wire (docs/protocol.md §11 [decision]): XOFF/XON pause the
+ * sender but never extend it, so a bootloader that only toggles them fails the update instead of hanging it.
+ */
+export const LINE_DEADLINE_MS = 10_000;
+/** One byte at 115200 baud, 8N1 (10 bits), in ms (docs/protocol.md §1). */
+export const BYTE_WIRE_MS = 10_000 / 115_200;
+
+const STATUS_BYTES = new Set([
+  LINE_DONE,
+  LINE_CHECKSUM_ERROR,
+  PAGE_ERROR,
+  FILE_COMPLETE,
+  FILE_COMPLETE_WITH_ERRORS,
+]);
 
 export type BootloaderFailure =
   /** No `^`: the robot was not switched off and on, or its bootloader did not start. */
@@ -47,6 +62,12 @@ export type BootloaderFailure =
   | "stalled"
   /** `^` in the middle of the file: the robot restarted. */
   | "restarted"
+  /** A status character sooner than the line's bytes can have crossed the wire: not this line's answer. */
+  | "early-status"
+  /** A status character when no line was waiting for one (one status answers one line). */
+  | "extra-status"
+  /** No status within the line's overall deadline, however often XOFF/XON came meanwhile. */
+  | "line-deadline"
   | "cancelled"
   | "disconnected"
   /** `@`, but the new firmware does not answer afterwards (device layer). */
@@ -103,6 +124,11 @@ export function lineBytes(text: string): Uint8Array {
   return out;
 }
 
+/** Time `bytes` take on the wire at 115200 baud, 8N1, in ms. */
+export function wireMs(bytes: number): number {
+  return bytes * BYTE_WIRE_MS;
+}
+
 /** What the host is waiting for; each kind has its own timeout in the device layer. */
 export type BootloaderWait = "bootloader" | "ready" | "status" | "xon";
 
@@ -137,6 +163,25 @@ export interface DialogueLine {
  * sends the host back to waiting for another `^` (at most MAX_ENTRY_TRIES times), and any byte other than
  * `?`, `^`, XON or XOFF after the entry bytes does so at once.
  */
+export interface DialogueOptions {
+  maxResends?: number;
+  maxEntryTries?: number;
+  /**
+   * The host's clock (ms). With it, each line gets its overall deadline (`wait.deadline`), and on a wire-timed
+   * link a status character sooner than its line's bytes take on the wire is a fault. Without it, neither rule
+   * applies.
+   */
+  now?: () => number;
+  /**
+   * The link carries bytes no faster than 115200 baud, as a real serial line always does (default true). A
+   * simulator without baud pacing does not: there the wire-time rule would refuse genuine answers, so it is off
+   * (one status per line is still the rule).
+   */
+  wireTimed?: boolean;
+  /** The overall deadline of a line from its last byte (default LINE_DEADLINE_MS). */
+  lineDeadlineMs?: number;
+}
+
 export class BootloaderDialogue {
   private state: DialoguePhase = "waiting-for-bootloader";
   private readonly lines: Uint8Array[];
@@ -159,10 +204,12 @@ export class BootloaderDialogue {
   private waitSeq = 0;
   /** Bytes that were neither a status nor flow control where one was expected (for diagnostics). */
   strayBytes = 0;
+  /** When the current line was handed to the link (the `now` option's clock). */
+  private lineSentAt: number | undefined;
 
   constructor(
     lines: readonly DialogueLine[],
-    private readonly options: { maxResends?: number; maxEntryTries?: number } = {},
+    private readonly options: DialogueOptions = {},
   ) {
     if (lines.length === 0) throw new RangeError("A bootloader dialogue needs at least one line.");
     this.lines = lines.map((l) => lineBytes(l.text));
@@ -182,10 +229,24 @@ export class BootloaderDialogue {
     return this.state === "complete" || this.state === "failed";
   }
 
-  /** What the host waits for now and a number that changes with every new wait; undefined once over. */
-  get wait(): { for: BootloaderWait; seq: number } | undefined {
+  /**
+   * What the host waits for now and a number that changes with every new wait; undefined once over. While a
+   * line is out, `deadline` is when its overall deadline ends (clock ms; only with the `now` option): the
+   * caller's timer must fire by then, whatever the wait.
+   */
+  get wait(): { for: BootloaderWait; seq: number; deadline?: number } | undefined {
     const kind = this.waitKind();
-    return kind ? { for: kind, seq: this.waitSeq } : undefined;
+    if (!kind) return undefined;
+    const deadline = this.lineDeadline();
+    return deadline === undefined
+      ? { for: kind, seq: this.waitSeq }
+      : { for: kind, seq: this.waitSeq, deadline };
+  }
+
+  private lineDeadline(): number | undefined {
+    if (this.state !== "sending" || this.lineSentAt === undefined || !this.options.now) return undefined;
+    const lastByte = this.lineSentAt + wireMs(this.lines[this.index]!.length);
+    return lastByte + (this.options.lineDeadlineMs ?? LINE_DEADLINE_MS);
   }
 
   get holds(): RobotHolds {
@@ -219,6 +280,11 @@ export class BootloaderDialogue {
     const kind = this.waitKind();
     if (!kind) return [];
     const line = this.fileLines[this.index];
+    const deadline = this.lineDeadline();
+    if (deadline !== undefined && this.options.now!() >= deadline) {
+      this.fail("line-deadline", { line, waitedMs: this.options.lineDeadlineMs ?? LINE_DEADLINE_MS });
+      return this.flush();
+    }
     switch (kind) {
       case "bootloader":
         // After a `^` that was answered, the bootloader was there: it is the entry that failed.
@@ -286,9 +352,23 @@ export class BootloaderDialogue {
       this.fail("restarted", { line });
       return;
     }
-    if (!this.outstanding) {
+    if (!STATUS_BYTES.has(b)) {
       this.strayBytes++;
       return;
+    }
+    // One status answers one line, and no sooner than the line can have reached the robot (§11 [decision]).
+    if (!this.outstanding) {
+      this.fail("extra-status", { line });
+      return;
+    }
+    const wireTimed = this.options.wireTimed ?? true;
+    if (wireTimed && this.lineSentAt !== undefined && !this.lastLineDone) {
+      // `lineSentAt` is when the line was handed to the link, no later than its first byte left: its status
+      // cannot come sooner than its bytes' wire time after that (plus nothing).
+      if (this.options.now!() < this.lineSentAt + wireMs(this.lines[this.index]!.length)) {
+        this.fail("early-status", { line });
+        return;
+      }
     }
     const last = this.index === this.lines.length - 1;
     switch (b) {
@@ -329,8 +409,6 @@ export class BootloaderDialogue {
         this.outstanding = false;
         this.state = "complete";
         return;
-      default:
-        this.strayBytes++;
     }
   }
 
@@ -360,6 +438,7 @@ export class BootloaderDialogue {
       if (this.state === "sending") {
         this.outstanding = true;
         this.sentAnyLine = true;
+        this.lineSentAt = this.options.now?.();
       }
       this.pending = undefined;
     }

@@ -61,7 +61,10 @@ export class IntelHexError extends ProtocolError {
 }
 
 export interface IntelHexRecord {
-  /** 1-based line of the file. */
+  /**
+   * 1-based line of the file. A record the reader rebuilt (see `parseIntelHex`: a file that returns to a flash
+   * page it left) carries the line of the file's record its first data byte came from.
+   */
   line: number;
   type: number;
   /** Data records: the absolute flash address of the first byte; other records: the 16-bit address field. */
@@ -83,9 +86,15 @@ export interface IntelHexSummary {
   lines: number;
   /** Bytes on the wire for the whole file: every record's text plus CR LF. */
   wireBytes: number;
+  /**
+   * The file's records return to a 256-byte flash page after leaving it, so they are not sent in file order:
+   * `records` holds the data sorted by address, each page's bytes once, in lines of their own.
+   */
+  reordered: boolean;
 }
 
 export interface IntelHexImage {
+  /** The lines to send, in order: the file's records, or the rebuilt ones when `summary.reordered`. */
   records: IntelHexRecord[];
   summary: IntelHexSummary;
 }
@@ -234,11 +243,97 @@ export function parseIntelHex(text: string): IntelHexImage {
   for (let p = 0; p < ATMEGA128.flashBytes; p += ATMEGA128.pageBytes) {
     if (written.subarray(p, p + ATMEGA128.pageBytes).includes(1)) pages++;
   }
-  const wireBytes = records.reduce((n, r) => n + r.text.length + 2, 0);
+  const reordered = returnsToAPage(records);
+  const toSend = reordered ? byPage(records) : records;
+  const wireBytes = toSend.reduce((n, r) => n + r.text.length + 2, 0);
   return {
-    records,
-    summary: { bytes, firstAddress: first, lastAddress: last, pages, lines: records.length, wireBytes },
+    records: toSend,
+    summary: {
+      bytes,
+      firstAddress: first,
+      lastAddress: last,
+      pages,
+      lines: toSend.length,
+      wireBytes,
+      reordered,
+    },
   };
+}
+
+const pageOf = (address: number) => Math.floor(address / ATMEGA128.pageBytes);
+
+/**
+ * Whether the data, in file order, comes back to a flash page after leaving it. The bootloader writes a page
+ * when a line leaves it, from a buffer that starts erased (docs/protocol.md §11 [decision]): sent in file order,
+ * such a file would erase what was written to that page before.
+ */
+function returnsToAPage(records: readonly IntelHexRecord[]): boolean {
+  const left = new Set<number>();
+  let current: number | undefined;
+  for (const r of records) {
+    if (r.type !== HEX_RECORD.data) continue;
+    for (let a = r.address; a < r.address + r.data.length; a++) {
+      const page = pageOf(a);
+      if (page === current) continue;
+      if (left.has(page)) return true;
+      if (current !== undefined) left.add(current);
+      current = page;
+    }
+  }
+  return false;
+}
+
+/**
+ * The data of `records` sorted by address and cut at page boundaries, so that each page's bytes are sent once
+ * and no line holds two pages (docs/protocol.md §11 [decision]). Each rebuilt record keeps the file's line it came
+ * from; an extended linear address record (04) precedes the first record of each 64 KiB segment after the first,
+ * and the file's end-of-file record ends it. Records never overlap (the reader refuses that), so sorting by start
+ * address orders every byte.
+ */
+function byPage(records: readonly IntelHexRecord[]): IntelHexRecord[] {
+  const data = records
+    .filter((r) => r.type === HEX_RECORD.data && r.data.length > 0)
+    .sort((a, b) => a.address - b.address);
+  const end = records.find((r) => r.type === HEX_RECORD.endOfFile)!;
+  const out: IntelHexRecord[] = [];
+  let segment = 0;
+  for (const r of data) {
+    for (let offset = 0; offset < r.data.length; ) {
+      const address = r.address + offset;
+      const pageEnd = (pageOf(address) + 1) * ATMEGA128.pageBytes;
+      const n = Math.min(r.data.length - offset, pageEnd - address);
+      const high = Math.floor(address / 0x10000);
+      if (high !== segment) {
+        segment = high;
+        const value = Uint8Array.of(high >> 8, high & 0xff);
+        out.push({
+          line: r.line,
+          type: HEX_RECORD.extendedLinear,
+          address: 0,
+          data: value,
+          text: recordText(HEX_RECORD.extendedLinear, 0, value),
+        });
+      }
+      const bytes = r.data.slice(offset, offset + n);
+      out.push({
+        line: r.line,
+        type: HEX_RECORD.data,
+        address,
+        data: bytes,
+        text: recordText(HEX_RECORD.data, address & 0xffff, bytes),
+      });
+      offset += n;
+    }
+  }
+  out.push(end);
+  return out;
+}
+
+/** One record's text: `:`, count, address field, type, data, checksum, upper-case hex digits. */
+function recordText(type: number, field: number, data: Uint8Array): string {
+  const b = [data.length, field >> 8, field & 0xff, type, ...data];
+  const sum = b.reduce((s, v) => s + v, 0);
+  return `:${[...b, (0x100 - (sum & 0xff)) & 0xff].map(hex2).join("")}`;
 }
 
 /**
@@ -255,24 +350,19 @@ export function encodeIntelHex(
   const size = options.recordSize ?? 16;
   if (!Number.isInteger(size) || size < 1 || size > 255) throw new RangeError("recordSize must be 1-255.");
   const out: string[] = [];
-  const record = (count: number, field: number, type: number, data: Uint8Array) => {
-    const b = [count, field >> 8, field & 0xff, type, ...data];
-    const sum = b.reduce((s, v) => s + v, 0);
-    out.push(`:${[...b, (0x100 - (sum & 0xff)) & 0xff].map(hex2).join("")}`);
-  };
   let segment = 0;
   let offset = 0;
   while (offset < bytes.length) {
     const address = start + offset;
     if (Math.floor(address / 0x10000) !== segment) {
       segment = Math.floor(address / 0x10000);
-      record(2, 0, HEX_RECORD.extendedLinear, Uint8Array.of(segment >> 8, segment & 0xff));
+      out.push(recordText(HEX_RECORD.extendedLinear, 0, Uint8Array.of(segment >> 8, segment & 0xff)));
     }
     const room = 0x10000 - (address & 0xffff);
     const n = Math.min(size, bytes.length - offset, room);
-    record(n, address & 0xffff, HEX_RECORD.data, bytes.subarray(offset, offset + n));
+    out.push(recordText(HEX_RECORD.data, address & 0xffff, bytes.subarray(offset, offset + n)));
     offset += n;
   }
-  record(0, 0, HEX_RECORD.endOfFile, new Uint8Array(0));
+  out.push(recordText(HEX_RECORD.endOfFile, 0, new Uint8Array(0)));
   return `${out.join("\r\n")}\r\n`;
 }

@@ -1,5 +1,5 @@
 import { type PortInfo, SPP_SERVICE_CLASS_ID } from "./mock-serial-options.ts";
-import type { MockSerialPort } from "./mock-serial-port.ts";
+import type { MockSerialPort, SimEndpoint } from "./mock-serial-port.ts";
 
 /** A chooser filter with the Bluetooth field Chrome 117+ takes (`@types/w3c-web-serial` 1.0.8 lacks it). */
 type PortFilter = SerialPortFilter & { bluetoothServiceClassId?: number | string };
@@ -41,19 +41,19 @@ export class FakeSerial extends EventTarget implements Serial {
   /** False: a browser before Chrome 117, which knows no Bluetooth fields in the chooser's options. */
   bluetoothSupported = true;
   private readonly held: Array<() => void> = [];
-  private readonly ports: MockSerialPort[] = [];
-  private readonly granted = new Set<MockSerialPort>();
+  private readonly ports: MockSerialPort<SimEndpoint>[] = [];
+  private readonly granted = new Set<MockSerialPort<SimEndpoint>>();
   private nextError: DOMException | undefined;
   /** requestPort() calls, with their options, for assertions. */
   readonly requests: (RequestOptions | undefined)[] = [];
 
-  constructor(ports: readonly MockSerialPort[] = [], options: { granted?: boolean } = {}) {
+  constructor(ports: readonly MockSerialPort<SimEndpoint>[] = [], options: { granted?: boolean } = {}) {
     super();
     for (const port of ports) this.addPort(port, options);
   }
 
   /** Makes a port known (as if plugged in); `granted` lists it in getPorts() without a chooser. */
-  addPort(port: MockSerialPort, options: { granted?: boolean } = {}): void {
+  addPort(port: MockSerialPort<SimEndpoint>, options: { granted?: boolean } = {}): void {
     if (this.ports.includes(port)) return;
     this.ports.push(port);
     if (options.granted) this.granted.add(port);

@@ -46,6 +46,22 @@ export interface BootloaderFaults {
   completeWithErrors?: boolean;
   /** The flashed firmware never answers (a file that is not an RBC firmware). */
   silentFirmware?: boolean;
+  /**
+   * One stray `~` on the line `delayMs` (default 0.5 ms) after the status of the `afterLine`-th line (1-based,
+   * as received): it reaches the host while the next line is still crossing the wire.
+   */
+  strayStatus?: { afterLine: number; delayMs?: number };
+  /**
+   * From the `fromLine`-th line on, no status ever comes: the bootloader only sends XOFF and, `periodMs` later
+   * (default 300 ms), XON, again and again until it is switched off.
+   */
+  flowControlOnly?: { fromLine: number; periodMs?: number };
+  /**
+   * The robot waits in its bootloader (after an interrupted update, say): it sends `^` every `entryWindowMs`
+   * and never starts the application. Takes effect at the next `powerCycle()`, or at once when the bootloader
+   * is made with it.
+   */
+  waiting?: boolean;
 }
 
 export interface BootloaderRbcOptions {
@@ -170,6 +186,7 @@ export class BootloaderRbc {
     rbc.onTransmit((bytes) => {
       if (this.currentMode === "application") this.send(bytes);
     });
+    if (this.faults.waiting) this.promptAgain();
   }
 
   /** The bootloader in front of `rbc`, if one was made for it. */
@@ -233,11 +250,17 @@ export class BootloaderRbc {
     this.counters.linesDone = 0;
     const fault = this.faults.checksumError;
     this.checksumFaultsLeft = fault ? (fault.times === "always" ? Number.POSITIVE_INFINITY : fault.times) : 0;
-    this.timers.after(this.o.startMs, () => {
-      this.currentMode = "entry";
-      if (!this.faults.silent) this.send(Uint8Array.of(BOOTLOADER_ACTIVE));
-      this.timers.after(this.o.entryWindowMs, () => this.startApplication());
-    });
+    this.timers.after(this.o.startMs, () => this.promptAgain());
+  }
+
+  /** Sends `^` and waits `entryWindowMs` for the entry bytes; then the application starts, or (fault `waiting`) `^` again. */
+  private promptAgain(): void {
+    this.currentMode = "entry";
+    this.entryProgress = 0;
+    if (!this.faults.silent) this.send(Uint8Array.of(BOOTLOADER_ACTIVE));
+    this.timers.after(this.o.entryWindowMs, () =>
+      this.faults.waiting ? this.promptAgain() : this.startApplication(),
+    );
   }
 
   /** Stops every timer and the wrapped simulator. */
@@ -250,6 +273,11 @@ export class BootloaderRbc {
   // ---- entry ----
 
   private entryByte(b: number): void {
+    if (this.faults.waiting && b !== BOOTLOADER_ENTRY[this.entryProgress]) {
+      // Waiting for an update: anything but the entry bytes is ignored.
+      this.entryProgress = 0;
+      return;
+    }
     if (this.faults.silent || b !== BOOTLOADER_ENTRY[this.entryProgress]) {
       // Not the entry sequence: the bootloader hands over to the application (the byte is lost).
       this.startApplication();
@@ -292,6 +320,11 @@ export class BootloaderRbc {
 
   private line(text: string): void {
     const number = this.counters.linesDone + 1;
+    const flow = this.faults.flowControlOnly;
+    if (flow && number >= flow.fromLine) {
+      this.toggleFlowControl(flow.periodMs ?? 300, true);
+      return;
+    }
     const checksumFault = this.faults.checksumError?.line === number && this.checksumFaultsLeft > 0;
     const record = checksumFault ? undefined : parseLine(text);
     if (!record) {
@@ -356,6 +389,7 @@ export class BootloaderRbc {
       status = this.errorsSeen || this.faults.completeWithErrors ? FILE_COMPLETE_WITH_ERRORS : FILE_COMPLETE;
     }
     this.answer(status, writes, end);
+    if (writes.length === 0) this.afterStatus(number);
   }
 
   /** Writes the pages (XOFF … XON around them), then sends `status` (or sends it first, see the options). */
@@ -380,6 +414,7 @@ export class BootloaderRbc {
       this.writing = false;
       this.send(Uint8Array.of(XON));
       if (!early) this.send(Uint8Array.of(status));
+      this.afterStatus(this.counters.linesDone);
       finish();
       const held = this.held;
       this.held = [];
@@ -387,9 +422,24 @@ export class BootloaderRbc {
     });
   }
 
+  /** Fault `flowControlOnly`: XOFF, XON, XOFF, … `periodMs` apart, and never a status. */
+  private toggleFlowControl(periodMs: number, off: boolean): void {
+    this.send(Uint8Array.of(off ? XOFF : XON));
+    this.timers.after(periodMs, () => this.toggleFlowControl(periodMs, !off));
+  }
+
+  /** After the status of line `number`: fault `strayStatus` sends one more `~`. */
+  private afterStatus(number: number): void {
+    const stray = this.faults.strayStatus;
+    if (stray?.afterLine !== number) return;
+    this.timers.after(stray.delayMs ?? 0.5, () => this.send(Uint8Array.of(LINE_DONE)));
+  }
+
   /** After `@`: the new application starts and reports the version its file declares. */
   private boot(): void {
     this.counters.updates++;
+    // A firmware was written whole: the robot no longer waits in its bootloader.
+    this.faults = { ...this.faults, waiting: false };
     this.applicationWorks = !this.faults.silentFirmware;
     const version = firmwareMarker(this.flashBytes);
     if (version) this.rbc.setFirmwareVersion(version);

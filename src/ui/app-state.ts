@@ -1,3 +1,4 @@
+import type { RbcErrorCode } from "../device/errors.ts";
 import type { Locale } from "../i18n/locale.ts";
 import type { ConnectionState, KnownPort } from "./features/connection/state.ts";
 import { initialConnection } from "./features/connection/state.ts";
@@ -40,6 +41,8 @@ export interface Notice {
   tone: Tone;
   text: string;
   detail?: string;
+  /** The device outcome's code, when the notice says one (a failed connect's `in-bootloader` offers Recover). */
+  code?: RbcErrorCode;
 }
 
 export interface AppState {

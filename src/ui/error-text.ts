@@ -1,4 +1,5 @@
 import { errorText, technicalDetail } from "../device/error-text.ts";
+import { RbcError } from "../device/errors.ts";
 import type { Locale } from "../i18n/locale.ts";
 import { translator } from "../i18n/translate.ts";
 import type { Notice } from "./app-state.ts";
@@ -27,8 +28,10 @@ export function errorNotice(lead: string, e: unknown, locale: Locale = "en"): No
   return { tone: "danger", text: `${lead} ${errorMessage(e, locale)}`, detail: technicalDetail(e) };
 }
 
+/** A failed connect, with the device outcome's code (the connect card offers Recover for `in-bootloader`). */
 export function connectProblem(e: unknown, locale: Locale = "en"): Notice {
-  return errorNotice(translator(uiMessages, locale)("error.couldNotConnect"), e, locale);
+  const notice = errorNotice(translator(uiMessages, locale)("error.couldNotConnect"), e, locale);
+  return e instanceof RbcError ? { ...notice, code: e.code } : notice;
 }
 
 /** Why requestPort() failed, and whether to open the "Can't find your robot?" help. */

@@ -5,9 +5,16 @@
  * `timeScale` times real speed), which its port carries to the panel's client and on which the page's demo robot
  * runs too (src/ui/main.ts reads `__rbcTest.clock`);
  * with `variant`, it is one of the firmware builds of docs/protocol.md §3.5; with `bluetooth`, a paired Bluetooth
- * module behind a slow, bursty link.
+ * module behind a slow, bursty link; with `inBootloader`, a robot waiting in its bootloader.
  */
-import { bluetoothLinkOptions, FakeSerial, MockSerialPort, SimulatedRbc } from "../../src/sim/index.ts";
+import {
+  BootloaderRbc,
+  bluetoothLinkOptions,
+  FakeSerial,
+  MockSerialPort,
+  type SimEndpoint,
+  SimulatedRbc,
+} from "../../src/sim/index.ts";
 import { SIMULATED_CLOCK } from "../../src/ui/simulated-clock.ts";
 import { PacedVirtualClock } from "../support/paced-clock.ts";
 import "./rbc-test-globals.ts";
@@ -18,7 +25,15 @@ const sim = new SimulatedRbc({ clock, ...options.variant });
 const link = options.bluetooth
   ? bluetoothLinkOptions(options.latencyMs === undefined ? {} : { latencyMs: options.latencyMs })
   : { latencyMs: options.latencyMs ?? 2 };
-const port = new MockSerialPort(sim, { clock, ...link, baudPacing: options.baudPacing ?? false });
+// With `inBootloader`, the robot's bootloader stands in front of it, waiting (it sends `^`, answers no packet).
+const device: SimEndpoint = options.inBootloader
+  ? new BootloaderRbc(sim, { faults: { waiting: true } })
+  : sim;
+const port = new MockSerialPort<SimEndpoint>(device, {
+  clock,
+  ...link,
+  baudPacing: options.baudPacing ?? false,
+});
 Object.defineProperty(port, SIMULATED_CLOCK, { value: clock });
 const serial = new FakeSerial([port], { granted: options.granted ?? false });
 serial.userCancels = options.userCancels ?? false;

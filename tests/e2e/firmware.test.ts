@@ -155,3 +155,37 @@ describe("Firmware view on the demo robot", () => {
     expect(await page.getByTestId("fw-version").textContent().then(squash)).toBe("2.23");
   });
 });
+
+describe("a robot waiting in its bootloader (issue 20 item 11)", () => {
+  it("connecting says so, and the notice's link opens the Firmware view's Recover", {
+    timeout: 60_000,
+  }, async () => {
+    const { page } = await app.newPage({ options: { inBootloader: true, timeScale: 4 } });
+    const seen = watchPage(page, app.origin);
+    await page.goto(app.url, { waitUntil: "domcontentloaded" });
+    await page.getByRole("button", { name: "Connect robot" }).click();
+    const go = page.getByRole("link", { name: "Go to the firmware recovery" });
+    await go.waitFor({ timeout: 30_000 });
+    const text = await page.getByTestId("connect-card").textContent().then(squash);
+    expect(text).toMatch(
+      /The robot is waiting in its bootloader: it sent the bootloader's prompt \(\^\) \d+ times and answered no request\./,
+    );
+    expect(text).toContain("Run the firmware update again, in recovery mode");
+    expect(text).not.toContain("no robot answered");
+    await go.click();
+    await page.getByTestId("firmware-view").waitFor();
+    expect(
+      await page.getByRole("heading", { name: "Recover: update a robot that does not answer" }).isVisible(),
+    ).toBe(true);
+    expect(await page.getByTestId("recover-start").isVisible()).toBe(true);
+    expect(seen.errors).toEqual([]);
+  });
+
+  it("another failed connect (no port chosen) gets no such link", { timeout: 30_000 }, async () => {
+    const { page } = await app.newPage({ options: { userCancels: true } });
+    await page.goto(app.url, { waitUntil: "domcontentloaded" });
+    await page.getByRole("button", { name: "Connect robot" }).click();
+    await page.getByText("No port was chosen").waitFor();
+    expect(await page.getByTestId("open-recovery").count()).toBe(0);
+  });
+});

@@ -1,10 +1,16 @@
-import type { FakeSerial, MockSerialPort, SimulatedRbc, SimulatedRbcOptions } from "../../src/sim/index.ts";
+import type {
+  FakeSerial,
+  MockSerialPort,
+  SimEndpoint,
+  SimulatedRbc,
+  SimulatedRbcOptions,
+} from "../../src/sim/index.ts";
 import type { PacedVirtualClock } from "../support/paced-clock.ts";
 
 /** What the injected fake `navigator.serial` exposes to tests (see fake-serial-entry.ts). */
 export interface RbcTestHandle {
   sim: SimulatedRbc;
-  port: MockSerialPort;
+  port: MockSerialPort<SimEndpoint>;
   serial: FakeSerial;
   /**
    * The simulated robots' clock (the fake port's and the demo robot's), shared with the panel's client: a
@@ -38,6 +44,11 @@ export interface RbcTestOptions {
    * motion, sound, upload, timeout and polling period keeps its proportions. Never touches a real robot.
    */
   timeScale?: number;
+  /**
+   * The fake port's robot waits in its bootloader (docs/protocol.md §11): its bootloader sends `^` again and
+   * again and answers no packet, as after an interrupted firmware update.
+   */
+  inBootloader?: boolean;
   /**
    * A firmware variant of the fake port's robot (docs/protocol.md §3.1, §3.5, §3.6): no answer to 0x0C, 0x1E or
    * 0x0F, another version or platform byte, a reply repeated endlessly, events at the firmware's pace, the "user"

@@ -132,6 +132,7 @@ export async function makeBootloaderRig(
       const ask = updateOptions.onAskPowerCycle;
       return c.exclusive(() =>
         updateFirmware(connectionFirmwareIo(c), hex, {
+          wireTimed: options.port?.baudPacing === true,
           ...updateOptions,
           onAskPowerCycle: () => {
             ask?.();
@@ -149,6 +150,7 @@ export async function makeBootloaderRig(
       await transport.open();
       try {
         return await updateFirmware(transportFirmwareIo(transport, { clock }), hex, {
+          wireTimed: options.port?.baudPacing === true,
           ...updateOptions,
           onAskPowerCycle: () => clock.setTimeout(() => boot.powerCycle(), options.powerCycleAfterMs ?? 1500),
         });

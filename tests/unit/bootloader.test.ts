@@ -220,3 +220,83 @@ describe("bootloader dialogue timeouts and aborts", () => {
     expect(late.receive(fromHex("7E"))).toEqual([]);
   });
 });
+
+describe("status characters against the wire and the line's overall deadline (§11 [decision])", () => {
+  /** A dialogue on a clock the test sets: `at(ms, "RBC bytes")` receives at that time. */
+  function timed(wireTimed?: boolean) {
+    let time = 0;
+    const d = new BootloaderDialogue(parseIntelHex(FILE).records, { now: () => time, wireTimed });
+    const at = (ms: number, hex: string) => {
+      time = ms;
+      return d.receive(fromHex(hex)).map(toHex);
+    };
+    const timeoutAt = (ms: number) => {
+      time = ms;
+      return d.timeout(ms);
+    };
+    return { d, at, timeoutAt };
+  }
+  // Lines 1 and 2 are 21 bytes each: 21 × 86.8 µs = 1.823 ms on the wire.
+
+  it("a '~' sooner than line 1's 21 bytes take on the wire is not its answer: the update fails", () => {
+    const { d, at } = timed();
+    expect(at(0, "5E")).toEqual([ENTRY]);
+    expect(at(0.5, "3F")).toEqual([L1]);
+    expect(at(2.32, "7E")).toEqual([]); // 1.82 ms after line 1 went out: too soon
+    expect(d.error).toMatchObject({ code: "early-status", line: 1, holds: "incomplete-firmware" });
+  });
+
+  it("the same on line 2, after line 1 was answered in time", () => {
+    const { d, at } = timed();
+    at(0, "5E");
+    at(0.5, "3F");
+    expect(at(2.4, "7E")).toEqual([L2]);
+    expect(at(4.22, "7E")).toEqual([]); // 1.82 ms after line 2 went out
+    expect(d.error).toMatchObject({ code: "early-status", line: 2, holds: "incomplete-firmware" });
+    expect(d.error?.message).toMatch(/sooner than the line could have reached the robot at 115200 baud/);
+  });
+
+  it("a '~' after its line's wire time is its answer", () => {
+    const { d, at } = timed();
+    at(0, "5E");
+    at(0.5, "3F");
+    expect(at(2.4, "7E")).toEqual([L2]);
+    expect(at(4.23, "7E")).toEqual([L3]); // 1.83 ms after line 2: possible
+    expect(d.error).toBeUndefined();
+  });
+
+  it("on a link that is not wire-timed (a simulator without baud pacing), timing is not judged", () => {
+    const { d, at } = timed(false);
+    at(0, "5E");
+    expect(at(0.1, "3F")).toEqual([L1]);
+    expect(at(0.1, "7E")).toEqual([L2]);
+    expect(at(0.1, "7E")).toEqual([L3]);
+    expect(d.error).toBeUndefined();
+  });
+
+  it("a status while no line waits for one (the next line held back by XOFF) ends the update", () => {
+    const { d, at } = timed();
+    at(0, "5E");
+    at(0.5, "3F");
+    expect(at(5, "7E 13")).toEqual([]); // line 1 done; line 2 waits for XON
+    expect(at(6, "7E")).toEqual([]);
+    expect(d.error).toMatchObject({ code: "extra-status", line: 2 });
+  });
+
+  it("XOFF/XON never extend a line's deadline: 10 s from its last byte, whatever toggles", () => {
+    const { d, at, timeoutAt } = timed();
+    at(0, "5E");
+    at(0.5, "3F"); // line 1 out at 0.5 ms; its last byte at 2.323 ms
+    const deadline = 0.5 + (21 * 10_000) / 115_200 + 10_000;
+    for (let t = 100; t < 10_000; t += 100) {
+      at(t, t % 200 === 0 ? "11" : "13");
+      expect(d.wait?.deadline).toBeCloseTo(deadline, 6);
+    }
+    expect(d.done).toBe(false);
+    timeoutAt(deadline);
+    expect(d.error).toMatchObject({ code: "line-deadline", line: 1 });
+    expect(d.error?.message).toMatch(
+      /did not finish a line \(line 1 of the file\) within 10 s after its last byte/,
+    );
+  });
+});

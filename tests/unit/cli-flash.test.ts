@@ -143,7 +143,9 @@ describe("rbc flash over a socat PTY pair against rbc sim", () => {
       onTestFinished(scope.killAll);
       const pty = await createPtyPair();
       onTestFinished(() => pty.close());
-      const sim = scope.start(["sim", "--port", pty.simPath, "--quiet"], { timeoutMs: 60_000 });
+      const sim = scope.start(["sim", "--port", pty.simPath, "--quiet", "--baud-pacing"], {
+        timeoutMs: 60_000,
+      });
       const [help] = await sim.waitFor("stdout", /^Power cycle \(for rbc flash\): kill -USR1 (\d+)/m);
       expect(help).toContain(`kill -USR1 ${sim.child.pid}`);
 

@@ -8,7 +8,7 @@ import { firmwareHex } from "../support/hex.ts";
 
 /**
  * `RbcClient.updateFirmware`: the client's own method on the whole stack (RbcClient → WebSerialTransport →
- * MockSerialPort → simulated bootloader → SimulatedRbc, firmware 2.23) on a virtual clock, with the robot
+ * MockSerialPort paced at 115200 baud → simulated bootloader → SimulatedRbc, firmware 2.23) on a virtual clock, with the robot
  * switched off and on 1.5 s after the client asks for it.
  */
 
@@ -16,7 +16,8 @@ async function rig(options: { powerCycle?: boolean } = {}) {
   const clock = new VirtualClock();
   const sim = new SimulatedRbc({ clock });
   const boot = new BootloaderRbc(sim);
-  const port = new MockSerialPort(boot, { clock });
+  // Paced at 115200 baud, as a real line is: the update checks that no status comes sooner than its line's bytes.
+  const port = new MockSerialPort(boot, { clock, baudPacing: true });
   const client = new RbcClient(new WebSerialTransport(port, { clock }), { clock });
   await clock.run(client.connect());
   let asked = 0;

@@ -35,6 +35,7 @@ describe("parseIntelHex", () => {
       pages: 1,
       lines: 5,
       wireBytes: 4 * (43 + 2) + 11 + 2,
+      reordered: false,
     });
     expect(image.records[0]).toMatchObject({ line: 1, type: 0, address: 0x100, text: EXAMPLE[0] });
     expect(Array.from(image.records[0]!.data.subarray(0, 4))).toEqual([0x21, 0x46, 0x01, 0x36]);
@@ -192,6 +193,51 @@ describe("encodeIntelHex", () => {
       ":0800000008090A0B0C0D0E0F9C",
       ":00000001FF",
       "",
+    ]);
+  });
+});
+
+describe("a file that returns to a flash page it left (docs/protocol.md §11 [decision])", () => {
+  // Page 0, page 1, page 0 again, pages 1-2, the second 64 KiB, page 0 once more, end. Literal records.
+  const FILE = [
+    ":020000000102FB", // 1: 0x00000 01 02
+    ":0401000003040506E9", // 2: 0x00100 03 04 05 06
+    ":0200FE000708F1", // 3: 0x000FE 07 08 — back to page 0
+    ":0401FE00090A0B0CD3", // 4: 0x001FE 09 0A | 0x00200 0B 0C
+    ":020000040001F9", // 5: segment 0x10000
+    ":010000000DF2", // 6: 0x10000 0D
+    ":020000040000FA", // 7: segment 0
+    ":010002000EEF", // 8: 0x00002 0E — page 0 a third time
+    ":00000001FF", // 9
+  ];
+
+  it("is sent sorted by address, each page's bytes once, no line holding two pages", () => {
+    const image = parseIntelHex(FILE.join("\r\n"));
+    expect(image.records.map((r) => [r.text, r.line])).toEqual([
+      [":020000000102FB", 1],
+      [":010002000EEF", 8],
+      [":0200FE000708F1", 3],
+      [":0401000003040506E9", 2],
+      [":0201FE00090AEC", 4],
+      [":020200000B0CE5", 4],
+      [":020000040001F9", 6],
+      [":010000000DF2", 6],
+      [":00000001FF", 9],
+    ]);
+    expect(image.summary).toMatchObject({ bytes: 14, pages: 4, lines: 9, reordered: true });
+    expect(image.summary.wireBytes).toBe(image.records.reduce((n, r) => n + r.text.length + 2, 0));
+  });
+
+  it("a file in page order (even descending pages) keeps its own records", () => {
+    const image = parseIntelHex(
+      [":0200FE000708F1", ":020000000102FB", ":0401000003040506E9", ":00000001FF"].join("\n"),
+    );
+    expect(image.summary.reordered).toBe(false);
+    expect(image.records.map((r) => r.text)).toEqual([
+      ":0200FE000708F1",
+      ":020000000102FB",
+      ":0401000003040506E9",
+      ":00000001FF",
     ]);
   });
 });

@@ -4,6 +4,7 @@
  * and the panel show the same words. Literal sentences, so a change to a word shows here.
  */
 import { describe, expect, it } from "vitest";
+import { RbcInBootloaderError } from "../../src/device/bootloader-prompt.ts";
 import { errorText } from "../../src/device/error-text.ts";
 import {
   RbcNotConnectedError,
@@ -18,7 +19,11 @@ import {
   firmwareResultSentence,
 } from "../../src/device/firmware-update.ts";
 import { UPLOAD_NOTICES } from "../../src/device/motion-upload.ts";
-import { uploadNoticeText } from "../../src/i18n/outcomes/device.ts";
+import {
+  inBootloaderRecoverText,
+  inBootloaderText,
+  uploadNoticeText,
+} from "../../src/i18n/outcomes/device.ts";
 import {
   firmwareFailureText,
   firmwareNoticeText,
@@ -91,6 +96,66 @@ describe("a failed firmware update", () => {
   });
 });
 
+describe("the firmware update's holes (issue 20 item 8)", () => {
+  it("a status sooner than its line's wire time, one with no line waiting, a line past its deadline", () => {
+    const early = bootloaderError("early-status", "incomplete-firmware", { line: 7 });
+    expect(early.message).toBe(
+      "A status character arrived for a line (line 7 of the file) sooner than the line could have reached the robot at 115200 baud, so it cannot be that line's answer; the update stopped rather than run ahead of the bootloader. " +
+        "The robot's firmware may now be incomplete, and the robot may not work until an update succeeds. " +
+        "The bootloader is never overwritten: switch the robot off and on and run the update again.",
+    );
+    expect(
+      firmwareFailureText({ failure: "early-status", holds: "incomplete-firmware", line: 7 }, "ko"),
+    ).toBe(
+      "파일의 7번째 줄이 115200 baud로 로봇에 닿기도 전에 상태 문자가 왔어요. 그 줄의 응답일 수 없어서, 부트로더보다 앞서 나가지 않도록 업데이트를 멈췄어요. " +
+        "로봇의 펌웨어가 불완전할 수 있고, 업데이트가 성공할 때까지 로봇이 작동하지 않을 수 있어요. " +
+        "부트로더는 절대 덮어쓰지 않아요. 로봇을 껐다가 다시 켜고 업데이트를 다시 해 주세요.",
+    );
+    const extra = { failure: "extra-status", holds: "incomplete-firmware", line: 3 } as const;
+    expect(firmwareFailureText(extra, "en")).toMatch(
+      /^The bootloader sent a status character \(line 3 of the file\) when no line was waiting for one; /,
+    );
+    expect(firmwareFailureText(extra, "ko")).toMatch(
+      /^기다리는 줄이 없는데 부트로더가 상태 문자를 보냈어요 \(파일의 3번째 줄\)\./,
+    );
+    const deadline = new FirmwareUpdateError({
+      failure: "line-deadline",
+      holds: "incomplete-firmware",
+      line: 12,
+      waitedMs: 10_000,
+    });
+    expect(deadline.code).toBe("timeout");
+    expect(deadline.message).toMatch(
+      /^The bootloader did not finish a line \(line 12 of the file\) within 10 s after its last byte; it only paused and resumed the sending\. /,
+    );
+    expect(firmwareFailureText(deadline, "ko")).toMatch(
+      /^부트로더가 파일의 12번째 줄을 마지막 바이트 뒤 10초 안에 끝내지 않았어요\. 보내기를 멈췄다가 다시 하라고만 했어요\. /,
+    );
+  });
+});
+
+describe("a robot waiting in its bootloader (issue 20 item 11)", () => {
+  it("is said from its facts in both languages, with the recovery to run", () => {
+    const e = new RbcInBootloaderError({ prompts: 3, overMs: 600 });
+    expect(e.code).toBe("in-bootloader");
+    expect(e.message).toBe(
+      "The robot is waiting in its bootloader: it sent the bootloader's prompt (^) 3 times and answered no request. " +
+        "Its firmware is probably missing or incomplete (an interrupted firmware update, say). " +
+        "Run the firmware update again, in recovery mode, to give it a firmware; the bootloader is never overwritten.",
+    );
+    expect(errorText(e, "en")).toBe(e.message);
+    expect(errorText(e, "ko")).toBe(
+      "로봇이 부트로더에서 기다리고 있어요. 부트로더 신호(^)를 3번 보냈고 어떤 요청에도 응답하지 않았어요. " +
+        "펌웨어가 없거나 불완전할 수 있어요(예: 펌웨어 업데이트가 중간에 끊긴 경우). " +
+        "복구 모드로 펌웨어 업데이트를 다시 해서 펌웨어를 넣어 주세요. 부트로더는 덮어쓰지 않아요.",
+    );
+    expect(inBootloaderText(3, "en")).not.toContain("recovery mode");
+    expect(inBootloaderRecoverText("ko")).toBe(
+      "복구 모드로 펌웨어 업데이트를 다시 해서 펌웨어를 넣어 주세요. 부트로더는 덮어쓰지 않아요.",
+    );
+  });
+});
+
 describe("a firmware update's other words", () => {
   const result = (sendingMs: number, resends: number) => ({
     firmware: { major: 2, minor: 50 },
@@ -125,6 +190,7 @@ describe("a firmware update's other words", () => {
       pages: 64,
       lines: 1025,
       wireBytes: 46_137,
+      reordered: false,
     };
     expect(firmwareFileSummary(summary)).toBe(
       "16,384 bytes at 0x00000-0x03FFF: 64 flash pages, 1,025 lines (46,137 bytes to send)",

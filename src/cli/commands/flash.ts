@@ -204,6 +204,8 @@ export const flashCommand: CommandDef = {
     try {
       result = await flash({
         signal: env.signal,
+        // The demo robot's link has no baud pacing: its answers may come sooner than a wire could carry them.
+        wireTimed: bootloader === undefined,
         onAskPowerCycle: () => {
           const ask = firmwareNotice("askPowerCycle", locale);
           if (bootloader) {

@@ -26,6 +26,7 @@ const RBC_CODE = {
   cancelled: "outcome.cancelled",
   "invalid-argument": "outcome.invalidArgument",
   "no-robot": "outcome.noRobot",
+  "in-bootloader": "outcome.inBootloader",
   "verify-failed": "outcome.verifyFailed",
   "upload-failed": "outcome.uploadFailed",
   "motion-ignored": "outcome.motionIgnored",
@@ -84,6 +85,20 @@ export function nothingSentText(locale: Locale): string {
 /** No reply to `command` within `waitedMs` (`RbcTimeoutError`). */
 export function timeoutText(command: string, waitedMs: number, locale: Locale): string {
   return t(locale)("outcome.timeout", { command, wait: formatMilliseconds(waitedMs, locale) });
+}
+
+/**
+ * Connecting found the robot waiting in its bootloader (`RbcInBootloaderError`): it sent the prompt `prompts`
+ * times and answered no request. What to do is a sentence of its own (`inBootloaderRecoverText`), for `rbc`
+ * names the command to run instead.
+ */
+export function inBootloaderText(prompts: number, locale: Locale): string {
+  return t(locale)("outcome.inBootloaderPrompts", { count: prompts });
+}
+
+/** "Run the firmware update again, in recovery mode, …": what recovers a robot waiting in its bootloader. */
+export function inBootloaderRecoverText(locale: Locale): string {
+  return t(locale)("outcome.inBootloaderRecover");
 }
 
 const UPLOAD_OUTCOME = {

@@ -50,6 +50,22 @@ export const deviceOutcomeMessages = defineMessages({
     en: "The port opened but no robot answered. Check that the robot is switched on, that this is its port, and that no other program is using it.",
     ko: "포트는 열렸지만 로봇이 응답하지 않았어요. 로봇이 켜져 있는지, 로봇의 포트가 맞는지, 다른 프로그램이 포트를 쓰고 있지 않은지 확인해 주세요.",
   },
+  "outcome.inBootloader": {
+    en: "The robot is waiting in its bootloader and answered no request: its firmware is probably missing or incomplete (an interrupted firmware update, say).",
+    ko: "로봇이 부트로더에서 기다리고 있고 어떤 요청에도 응답하지 않았어요. 펌웨어가 없거나 불완전할 수 있어요(예: 펌웨어 업데이트가 중간에 끊긴 경우).",
+  },
+  "outcome.inBootloaderPrompts": {
+    en: {
+      one: "The robot is waiting in its bootloader: it sent the bootloader's prompt (^) {count} time and answered no request. Its firmware is probably missing or incomplete (an interrupted firmware update, say).",
+      other:
+        "The robot is waiting in its bootloader: it sent the bootloader's prompt (^) {count} times and answered no request. Its firmware is probably missing or incomplete (an interrupted firmware update, say).",
+    },
+    ko: "로봇이 부트로더에서 기다리고 있어요. 부트로더 신호(^)를 {count}번 보냈고 어떤 요청에도 응답하지 않았어요. 펌웨어가 없거나 불완전할 수 있어요(예: 펌웨어 업데이트가 중간에 끊긴 경우).",
+  },
+  "outcome.inBootloaderRecover": {
+    en: "Run the firmware update again, in recovery mode, to give it a firmware; the bootloader is never overwritten.",
+    ko: "복구 모드로 펌웨어 업데이트를 다시 해서 펌웨어를 넣어 주세요. 부트로더는 덮어쓰지 않아요.",
+  },
   "outcome.verifyFailed": {
     en: "What the robot holds differs from what was sent.",
     ko: "로봇에서 다시 읽은 값이 보낸 값과 달라요.",

@@ -57,6 +57,12 @@ function whatWentWrong(f: FirmwareFailureFacts, locale: Locale): string {
       return t("outcome.firmware.stalled", { line, wait });
     case "restarted":
       return t("outcome.firmware.restarted", { line });
+    case "early-status":
+      return t("outcome.firmware.earlyStatus", { line });
+    case "extra-status":
+      return t("outcome.firmware.extraStatus", { line });
+    case "line-deadline":
+      return t("outcome.firmware.lineDeadline", { line, wait });
     case "cancelled":
       return t("outcome.firmware.cancelled");
     case "disconnected":

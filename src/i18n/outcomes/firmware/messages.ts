@@ -83,6 +83,18 @@ export const firmwareOutcomeMessages = defineMessages({
     en: "The robot restarted in the middle of the update (line {line} of the file).",
     ko: "업데이트 도중에 로봇이 다시 시작했어요 (파일의 {line}번째 줄).",
   },
+  "outcome.firmware.earlyStatus": {
+    en: "A status character arrived for a line (line {line} of the file) sooner than the line could have reached the robot at 115200 baud, so it cannot be that line's answer; the update stopped rather than run ahead of the bootloader.",
+    ko: "파일의 {line}번째 줄이 115200 baud로 로봇에 닿기도 전에 상태 문자가 왔어요. 그 줄의 응답일 수 없어서, 부트로더보다 앞서 나가지 않도록 업데이트를 멈췄어요.",
+  },
+  "outcome.firmware.extraStatus": {
+    en: "The bootloader sent a status character (line {line} of the file) when no line was waiting for one; the update stopped rather than take it for the next line's answer.",
+    ko: "기다리는 줄이 없는데 부트로더가 상태 문자를 보냈어요 (파일의 {line}번째 줄). 다음 줄의 응답으로 잘못 받지 않도록 업데이트를 멈췄어요.",
+  },
+  "outcome.firmware.lineDeadline": {
+    en: "The bootloader did not finish a line (line {line} of the file) within {wait} after its last byte; it only paused and resumed the sending.",
+    ko: "부트로더가 파일의 {line}번째 줄을 마지막 바이트 뒤 {wait} 안에 끝내지 않았어요. 보내기를 멈췄다가 다시 하라고만 했어요.",
+  },
   "outcome.firmware.cancelled": {
     en: "The firmware update was cancelled.",
     ko: "펌웨어 업데이트를 취소했어요.",

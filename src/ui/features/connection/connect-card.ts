@@ -1,5 +1,6 @@
 import { html, nothing, type TemplateResult } from "lit-html";
 import { translator } from "../../../i18n/translate.ts";
+import { hrefFor } from "../../router.ts";
 import { describePort, linkKindOf } from "../../serial-ports.ts";
 import { shellMessages } from "../../shell/messages.ts";
 import { notice } from "../../shell/notice.ts";
@@ -136,6 +137,17 @@ function knownPorts(
   `;
 }
 
+/**
+ * Connecting found the robot waiting in its bootloader (docs/protocol.md §11): its firmware is missing or
+ * incomplete, and the Firmware view's Recover gives it one. The way there, beside the notice that says so.
+ */
+function recoverOffer(c: ConnectionState, t: ConnectionTranslator): TemplateResult | typeof nothing {
+  if (c.problem?.code !== "in-bootloader") return nothing;
+  return html`<p>
+    <a class="btn" href=${hrefFor("firmware")} data-testid="open-recovery">${t("connection.openRecovery")}</a>
+  </p>`;
+}
+
 /** The main area while no robot is connected: connect, demo, earlier ports, help. */
 export function connectCard(ctx: ViewContext): TemplateResult {
   const c = ctx.state.connection;
@@ -145,7 +157,7 @@ export function connectCard(ctx: ViewContext): TemplateResult {
   return html`
     <section class="card connect-card" aria-labelledby="connect-title" data-testid="connect-card">
       <h1 id="connect-title">${t("connection.title")}</h1>
-      ${lostNotice(c, t)} ${notice(c.problem, locale)}
+      ${lostNotice(c, t)} ${notice(c.problem, locale)} ${recoverOffer(c, t)}
       <p>${t("connection.intro")}</p>
       <div class="actions">
         <button type="button" class="btn btn--primary" ?disabled=${busy} @click=${() => chooseAndConnect(ctx)}>

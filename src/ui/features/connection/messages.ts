@@ -16,6 +16,7 @@ export const connectionMessages = defineMessages({
     ko: "로봇의 시리얼 케이블을 이 컴퓨터에 꽂고(또는 블루투스 모듈을 페어링하고) 로봇을 켠 다음, 로봇의 포트를 골라 주세요.",
   },
   "connection.connectRobot": { en: "Connect robot", ko: "로봇 연결" },
+  "connection.openRecovery": { en: "Go to the firmware recovery", ko: "펌웨어 복구로 가기" },
   "connection.tryDemo": { en: "Try the demo robot", ko: "데모 로봇 써 보기" },
   "connection.showAllPorts": {
     en: "Show all serial ports (other adapters, built-in ports)",

@@ -202,6 +202,7 @@ export async function startFlash(ctx: AppContext): Promise<void> {
     const result = await session.run(t("firmware.running"), (client) =>
       client.updateFirmware(file.image, {
         signal: abort.signal,
+        wireTimed: boot === undefined, // the demo robot's link has no baud pacing
         onProgress: progressHandler(ctx),
         onAskPowerCycle: () => {
           // The demo robot is switched off and on by the panel, as a person would switch a real one.
