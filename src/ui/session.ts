@@ -1,13 +1,13 @@
 import { RbcNotConnectedError } from "../device/errors.ts";
 import type { ClientState, RbcClient } from "../device/index.ts";
-import { type Translator, translator } from "../i18n/translate.ts";
 import type { SerialPortLike } from "../link/index.ts";
 import { type Clock, realClock } from "../shared/clock.ts";
 import type { SimulatedRbc } from "../sim/simulated-rbc.ts";
-import { type AppState, freshConnectionState } from "./app-state.ts";
+import { type AppState, freshConnectionState, noticeOf } from "./app-state.ts";
 import type { AppContext } from "./context.ts";
 import type { DemoRobotOptions } from "./demo-robot.ts";
-import { chooserProblem, connectProblem, errorNotice } from "./error-text.ts";
+import { chooserProblem } from "./error-text.ts";
+import { failureNotice } from "./failure-notice.ts";
 import { refreshKnownPorts } from "./features/connection/actions.ts";
 import {
   type ConnectionState,
@@ -18,6 +18,7 @@ import {
 } from "./features/connection/state.ts";
 import type { PacketLog } from "./features/log/packet-log.ts";
 import { uiMessages } from "./messages.ts";
+import { said } from "./said.ts";
 import { Scope } from "./scope.ts";
 import { choosePort, describePort, linkKindOf, webSerial } from "./serial-ports.ts";
 import type { Store } from "./store.ts";
@@ -142,7 +143,7 @@ export class Session {
     this.chooser++;
     this.setConnection({
       phase: "disconnected",
-      problem: { tone: "info", text: this.t()("session.stoppedWaiting") },
+      problem: noticeOf("info", this.store.get().locale, [said(uiMessages, "session.stoppedWaiting")]),
     });
   }
 
@@ -152,7 +153,6 @@ export class Session {
    */
   async connectDemo(options: { bluetooth?: boolean } = {}): Promise<boolean> {
     const robot = options.bluetooth ? DEMO_BLUETOOTH_ROBOT : DEMO_ROBOT;
-    const t = this.t();
     this.setConnection({ phase: "connecting", robot, problem: undefined, lostReason: undefined });
     try {
       const { createDemoRobot } = await import("./demo-robot.ts");
@@ -161,14 +161,14 @@ export class Session {
     } catch (e) {
       this.setConnection({
         phase: "disconnected",
-        problem: errorNotice(t("session.demoFailed"), e, t.locale),
+        problem: failureNotice(said(uiMessages, "session.demoFailed"), e, this.store.get().locale),
       });
       return false;
     }
   }
 
   async connectPort(port: SerialPortLike, robot: RobotLabel, simulated?: Simulated): Promise<boolean> {
-    const t = this.t();
+    const { locale } = this.store.get();
     await this.release();
     this.setConnection({ phase: "connecting", robot, problem: undefined, lostReason: undefined });
     let client: RbcClient;
@@ -180,7 +180,7 @@ export class Session {
     } catch (e) {
       this.setConnection({
         phase: "disconnected",
-        problem: errorNotice(t("session.codeNotLoaded"), e, t.locale),
+        problem: failureNotice(said(uiMessages, "session.codeNotLoaded"), e, locale),
       });
       return false;
     }
@@ -219,7 +219,10 @@ export class Session {
       if (this.client === client) {
         this.forgetClient();
         await client.close().catch(() => {});
-        this.setConnection({ phase: "disconnected", problem: connectProblem(e, t.locale) });
+        this.setConnection({
+          phase: "disconnected",
+          problem: failureNotice(said(uiMessages, "error.couldNotConnect"), e, locale),
+        });
       }
       return false;
     }
@@ -236,10 +239,9 @@ export class Session {
       mode: undefined,
       problem:
         interrupted.length > 0
-          ? {
-              tone: "warning",
-              text: this.t()("session.disconnectedWhileRunning", { list: interrupted.join(", ") }),
-            }
+          ? noticeOf("warning", this.store.get().locale, [
+              said(uiMessages, "session.disconnectedWhileRunning", { list: interrupted.join(", ") }),
+            ])
           : undefined,
       lostReason: undefined,
       interrupted,
@@ -343,11 +345,6 @@ export class Session {
     if (!previous) return;
     this.forgetClient();
     await previous.close().catch(() => {});
-  }
-
-  /** The panel's words in its language of the moment (a sentence stays in the language it was made in). */
-  private t(): Translator<typeof uiMessages> {
-    return translator(uiMessages, this.store.get().locale);
   }
 
   private setConnection(patch: Partial<ConnectionState>): void {
