@@ -16,6 +16,7 @@ import {
   NOTHING_RUNNING,
   type RobotLabel,
 } from "./features/connection/state.ts";
+import { duringFirmwareUpdate } from "./features/log/bootloader-bytes.ts";
 import type { PacketLog } from "./features/log/packet-log.ts";
 import { uiMessages } from "./messages.ts";
 import { said } from "./said.ts";
@@ -191,7 +192,8 @@ export class Session {
     this.detachClient = [
       client.stateChanges.on((s) => this.onClientState(client, s)),
       client.log.on((entry) => {
-        this.context.packetLog.push(entry);
+        // The bootloader's flow control and status bytes are the update's normal dialogue, not stray bytes.
+        this.context.packetLog.push(this.updatingFirmware() ? duringFirmwareUpdate(entry) : entry);
         this.store.update((s) => ({ log: { ...s.log, revision: this.context.packetLog.revision } }));
       }),
     ];
@@ -345,6 +347,12 @@ export class Session {
     if (!previous) return;
     this.forgetClient();
     await previous.close().catch(() => {});
+  }
+
+  /** A firmware update runs on this connection (from the robot's bootloader entry to the new version read). */
+  private updatingFirmware(): boolean {
+    const run = this.store.get().firmware?.run;
+    return run !== undefined && run.step !== "confirming" && !run.recovery;
   }
 
   private setConnection(patch: Partial<ConnectionState>): void {
