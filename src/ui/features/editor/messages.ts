@@ -847,6 +847,18 @@ export const editorMessages = defineMessages({
     en: "The robot will move through {scenes} ({time}). Hold it or make sure it can stand.",
     ko: "로봇이 {scenes}을(를) 따라 움직여요 ({time}). 로봇을 잡거나 혼자 설 수 있는지 확인해 주세요.",
   },
+  "editor.play.clamped": {
+    en: {
+      one: "{count} servo is outside its safe range in these scenes: the robot is sent the edge of the range instead ({list}).",
+      other:
+        "{count} servos are outside their safe range in these scenes: the robot is sent the edge of each range instead ({list}).",
+    },
+    ko: "이 장면들에서 서보 {count}개가 안전 범위를 벗어나요. 로봇에는 대신 범위의 끝 값을 보내요({list}).",
+  },
+  "editor.play.clampedItem": {
+    en: "servo {id} ({joint}) {value} → {clamped}",
+    ko: "서보 {id} ({joint}) {value} → {clamped}",
+  },
   "editor.play.progressStarting": {
     en: "Starting: entering servo control and reading where the servos are…",
     ko: "시작하는 중: 서보 제어를 시작하고 서보 위치를 읽고 있어요…",
