@@ -579,8 +579,12 @@ export const editorMessages = defineMessages({
     ko: "로봇을 잡아 주세요. 고른 서보의 힘이 빠져요.",
   },
   "editor.teach.questionDetail": {
-    en: "The controller enters servo control: every servo holds until you make some limp.",
-    ko: "컨트롤러가 서보 제어를 시작해요. 힘을 빼기 전까지 모든 서보가 제자리를 유지해요.",
+    en: "The controller enters servo control. Servos holding their position keep holding until you make some limp; a servo made limp earlier (Limp, the Servos view, an earlier teach-in) stays limp.",
+    ko: "컨트롤러가 서보 제어를 시작해요. 제자리를 유지하는 서보는 힘을 빼기 전까지 계속 유지해요. 전에 힘을 뺀 서보(힘 빼기, 서보 화면, 이전 티칭)는 계속 힘이 빠져 있어요.",
+  },
+  "editor.teach.questionDetailLimp": {
+    en: "The controller stays in servo control. Every servo is limp now (Limp was pressed) and stays limp until you press Hold: the robot cannot stand by itself.",
+    ko: "컨트롤러는 서보 제어를 계속해요. 지금 모든 서보의 힘이 빠져 있고(힘 빼기를 눌렀어요) 고정을 누를 때까지 그대로예요. 로봇은 혼자 서지 못해요.",
   },
   "editor.teach.start": { en: "Start teach-in", ko: "티칭 시작" },
   "editor.teach.startAsk": { en: "Start teach-in…", ko: "티칭 시작…" },
