@@ -196,11 +196,19 @@ function sceneTable(
   if (!motion) return nothing;
   const { locale } = t;
   const rows = sceneRows(motion);
+  // A long motion's scenes (284 in long-walk.rbm) scroll inside a box about a dozen rows tall, under a header
+  // that stays: the page keeps Upload and the chart in view (issue 21 item 7).
   return html`
     <section class="scene-section" id="scene-section" aria-labelledby="scenes-title" data-testid="scene-section">
       <h4 id="scenes-title" class="long-text">${t("motions.scenes.title", { name: motion.name })}</h4>
       <div class="scene-body">
-      <div class="table-wrap">
+      <div
+        class="table-wrap scene-table-box"
+        role="region"
+        tabindex="0"
+        aria-labelledby="scenes-title"
+        data-testid="scene-table-box"
+      >
         <table class="data-table scene-table">
           <thead>
             <tr>
