@@ -151,17 +151,6 @@ function fileCard(
             </dl>`
           : html`<p class="text-danger">${t("motions.files.unusable")}</p>`
       }
-      ${
-        previewing && entry.motion
-          ? motionPreview({
-              motion: entry.motion,
-              label: t("motions.files.previewLabel", { name: entry.motion.name }),
-              testId: "motion-preview",
-              locale: ctx.state.locale,
-            })
-          : nothing
-      }
-      ${fileIssues(t, entry, errors, warnings)}
       <div class="write-row">
         <button
           type="button"
@@ -182,7 +171,19 @@ function fileCard(
           }
         </span>
       </div>
-      ${uploadInPlace(ctx, target)} ${selected ? sceneTable(ctx, t, entry) : nothing}
+      ${uploadInPlace(ctx, target)}
+      ${
+        previewing && entry.motion
+          ? motionPreview({
+              motion: entry.motion,
+              label: t("motions.files.previewLabel", { name: entry.motion.name }),
+              testId: "motion-preview",
+              locale: ctx.state.locale,
+            })
+          : nothing
+      }
+      ${fileIssues(t, entry, errors, warnings)}
+      ${selected ? sceneTable(ctx, t, entry) : nothing}
     </article>
   `;
 }
