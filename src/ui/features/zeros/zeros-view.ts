@@ -163,11 +163,13 @@ function writeControls(
 
 /**
  * The two tables people confuse, under the names the CLI uses too: the factory zeros (what a new robot holds)
- * and the reference zeros (what the robot checks every write against). Folded: the editor comes first.
+ * and the reference zeros (what the robot checks every write against). Folded, so the editor comes first;
+ * "Load factory zeros" stays in sight beside the fold.
  */
 function zeroTables(disabled: boolean, ctx: ViewContext, t: ZerosTranslator): TemplateResult {
   const list = (zeros: readonly number[]) => html`<span class="num zero-list">${zeros.join(" ")}</span>`;
   return html`
+    <div class="zero-tables-row">
     <details class="zero-tables-fold">
       <summary>${t("zeros.tablesTitle")}</summary>
       <dl class="zero-tables" data-testid="zero-tables">
@@ -175,15 +177,6 @@ function zeroTables(disabled: boolean, ctx: ViewContext, t: ZerosTranslator): Te
           <dt>${t("zeros.factoryTitle")}</dt>
           <dd>
             <span id="factory-zeros-why">${t.parts("zeros.factoryWhy", { list: list(FACTORY_ZEROS) })}</span>
-            <button
-              type="button"
-              class="btn"
-              ?disabled=${disabled}
-              aria-describedby="factory-zeros-why"
-              @click=${() => useFactoryZeros(ctx)}
-            >
-              ${t("zeros.loadFactory")}
-            </button>
           </dd>
         </div>
         <div>
@@ -194,6 +187,16 @@ function zeroTables(disabled: boolean, ctx: ViewContext, t: ZerosTranslator): Te
         </div>
       </dl>
     </details>
+    <button
+      type="button"
+      class="btn"
+      ?disabled=${disabled}
+      aria-describedby="factory-zeros-why"
+      @click=${() => useFactoryZeros(ctx)}
+    >
+      ${t("zeros.loadFactory")}
+    </button>
+    </div>
   `;
 }
 
