@@ -75,13 +75,12 @@ export async function readZerosFromRobot(ctx: AppContext): Promise<void> {
 }
 
 export function useFactoryZeros(ctx: AppContext): void {
-  const t = translator(zerosMessages, ctx.store.get().locale);
   patchZeros(ctx.store, {
     draft: factoryDraft(),
     source: { kind: "factory" },
     confirming: false,
     result: undefined,
-    fileNotice: { tone: "info", text: t("zeros.factoryLoaded") },
+    fileNotice: noticeOf("info", ctx.store.get().locale, [say("zeros.factoryLoaded")]),
   });
 }
 
@@ -234,20 +233,19 @@ export async function restoreFromFile(ctx: AppContext, file: File): Promise<void
   }
   const { backup } = parsed;
   const serial = store.get().connection.serialNumber;
-  const saved = formatDateTime(new Date(backup.savedAt), locale);
+  const saved = inEveryLanguage((l) => formatDateTime(new Date(backup.savedAt), l));
   // serialMismatchWarning decides (the CLI warns with its sentence); the panel says it in its language.
   const fileNotice: Notice =
     serial !== undefined && serialMismatchWarning(backup, serial)
-      ? {
-          tone: "warning",
-          text: t("zeros.loadedOtherRobot", {
+      ? noticeOf("warning", locale, [
+          say("zeros.loadedOtherRobot", {
             file: file.name,
             saved,
-            backupSerial: backup.serialNumber || t("zeros.unknownRobot"),
+            backupSerial: backup.serialNumber || say("zeros.unknownRobot"),
             serial,
           }),
-        }
-      : { tone: "info", text: t("zeros.loaded", { file: file.name, saved }) };
+        ])
+      : noticeOf("info", locale, [say("zeros.loaded", { file: file.name, saved })]);
   patchZeros(store, {
     draft: toDraft(backup.zeros),
     source: { kind: "backup", file: file.name },
