@@ -14,6 +14,7 @@ import type { SensorsState } from "./features/sensors/state.ts";
 import type { ServosState } from "./features/servos/state.ts";
 import type { ZerosState } from "./features/zeros/state.ts";
 import { initialZeros } from "./features/zeros/state.ts";
+import { type Said, wordsOf } from "./said.ts";
 
 export type {
   ConnectionPhase,
@@ -36,13 +37,28 @@ export type { ZerosState } from "./features/zeros/state.ts";
 
 export type Tone = "info" | "ok" | "verified" | "warning" | "danger";
 
-/** A plain sentence of what happened, with the technical detail one click away. */
+/**
+ * A plain sentence of what happened, with the technical detail one click away. A notice made with `noticeOf`
+ * also keeps what it says (`said`: outcome codes and their facts): views word it in the language of the
+ * moment (`noticeText`); `text` is its wording in the language it was made in.
+ */
 export interface Notice {
   tone: Tone;
   text: string;
   detail?: string;
   /** The device outcome's code, when the notice says one (a failed connect's `in-bootloader` offers Recover). */
   code?: RbcErrorCode;
+  said?: readonly Said[];
+}
+
+/** A notice kept as messages (worded again after a language switch); `text` is their wording in `locale`. */
+export function noticeOf(tone: Tone, locale: Locale, sentences: readonly Said[], detail?: string): Notice {
+  return { tone, text: wordsOf(sentences, locale), said: sentences, ...(detail ? { detail } : {}) };
+}
+
+/** What a notice says in `locale`: worded from its messages when it has them, else as it was made. */
+export function noticeText(n: Notice, locale: Locale): string {
+  return n.said ? wordsOf(n.said, locale) : n.text;
 }
 
 export interface AppState {
@@ -64,7 +80,7 @@ export interface AppState {
   device: DeviceInfoState;
   zeros: ZerosState;
   log: LogViewState;
-  /** The outcome of Stop or Limp, shown under the top bar. */
+  /** The outcome of Stop or Limp, shown in the top bar beside Stop (so it is seen however far down the page). */
   stopNotice?: Notice;
   /** "Limp…" was pressed: the top bar asks "hold the robot" before any servo goes passive. */
   limpAsked?: boolean;

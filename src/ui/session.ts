@@ -1,14 +1,14 @@
 import { RbcNotConnectedError } from "../device/errors.ts";
 import type { ClientState, RbcClient } from "../device/index.ts";
-import { type Translator, translator } from "../i18n/translate.ts";
 import type { SerialPortLike } from "../link/index.ts";
 import { type Clock, realClock } from "../shared/clock.ts";
 import type { ServoBus } from "../sim/sim-servos.ts";
 import type { SimulatedRbc } from "../sim/simulated-rbc.ts";
-import { type AppState, freshConnectionState } from "./app-state.ts";
+import { type AppState, freshConnectionState, noticeOf } from "./app-state.ts";
 import type { AppContext } from "./context.ts";
 import type { DemoRobotOptions } from "./demo-robot.ts";
-import { chooserProblem, connectProblem, errorNotice } from "./error-text.ts";
+import { chooserProblem } from "./error-text.ts";
+import { failureNotice } from "./failure-notice.ts";
 import { refreshKnownPorts } from "./features/connection/actions.ts";
 import {
   type ConnectionState,
@@ -17,8 +17,10 @@ import {
   NOTHING_RUNNING,
   type RobotLabel,
 } from "./features/connection/state.ts";
+import { duringFirmwareUpdate } from "./features/log/bootloader-bytes.ts";
 import type { PacketLog } from "./features/log/packet-log.ts";
 import { uiMessages } from "./messages.ts";
+import { said } from "./said.ts";
 import { Scope } from "./scope.ts";
 import { choosePort, describePort, linkKindOf, webSerial } from "./serial-ports.ts";
 import type { Store } from "./store.ts";
@@ -145,7 +147,7 @@ export class Session {
     this.chooser++;
     this.setConnection({
       phase: "disconnected",
-      problem: { tone: "info", text: this.t()("session.stoppedWaiting") },
+      problem: noticeOf("info", this.store.get().locale, [said(uiMessages, "session.stoppedWaiting")]),
     });
   }
 
@@ -155,7 +157,6 @@ export class Session {
    */
   async connectDemo(options: { bluetooth?: boolean } = {}): Promise<boolean> {
     const robot = options.bluetooth ? DEMO_BLUETOOTH_ROBOT : DEMO_ROBOT;
-    const t = this.t();
     this.setConnection({ phase: "connecting", robot, problem: undefined, lostReason: undefined });
     try {
       const { createDemoRobot } = await import("./demo-robot.ts");
@@ -169,14 +170,14 @@ export class Session {
     } catch (e) {
       this.setConnection({
         phase: "disconnected",
-        problem: errorNotice(t("session.demoFailed"), e, t.locale),
+        problem: failureNotice(said(uiMessages, "session.demoFailed"), e, this.store.get().locale),
       });
       return false;
     }
   }
 
   async connectPort(port: SerialPortLike, robot: RobotLabel, simulated?: Simulated): Promise<boolean> {
-    const t = this.t();
+    const { locale } = this.store.get();
     await this.release();
     this.setConnection({ phase: "connecting", robot, problem: undefined, lostReason: undefined });
     let client: RbcClient;
@@ -188,7 +189,7 @@ export class Session {
     } catch (e) {
       this.setConnection({
         phase: "disconnected",
-        problem: errorNotice(t("session.codeNotLoaded"), e, t.locale),
+        problem: failureNotice(said(uiMessages, "session.codeNotLoaded"), e, locale),
       });
       return false;
     }
@@ -199,7 +200,8 @@ export class Session {
     this.detachClient = [
       client.stateChanges.on((s) => this.onClientState(client, s)),
       client.log.on((entry) => {
-        this.context.packetLog.push(entry);
+        // The bootloader's flow control and status bytes are the update's normal dialogue, not stray bytes.
+        this.context.packetLog.push(this.updatingFirmware() ? duringFirmwareUpdate(entry) : entry);
         this.store.update((s) => ({ log: { ...s.log, revision: this.context.packetLog.revision } }));
       }),
     ];
@@ -227,7 +229,10 @@ export class Session {
       if (this.client === client) {
         this.forgetClient();
         await client.close().catch(() => {});
-        this.setConnection({ phase: "disconnected", problem: connectProblem(e, t.locale) });
+        this.setConnection({
+          phase: "disconnected",
+          problem: failureNotice(said(uiMessages, "error.couldNotConnect"), e, locale),
+        });
       }
       return false;
     }
@@ -244,10 +249,9 @@ export class Session {
       mode: undefined,
       problem:
         interrupted.length > 0
-          ? {
-              tone: "warning",
-              text: this.t()("session.disconnectedWhileRunning", { list: interrupted.join(", ") }),
-            }
+          ? noticeOf("warning", this.store.get().locale, [
+              said(uiMessages, "session.disconnectedWhileRunning", { list: interrupted.join(", ") }),
+            ])
           : undefined,
       lostReason: undefined,
       interrupted,
@@ -353,9 +357,10 @@ export class Session {
     await previous.close().catch(() => {});
   }
 
-  /** The panel's words in its language of the moment (a sentence stays in the language it was made in). */
-  private t(): Translator<typeof uiMessages> {
-    return translator(uiMessages, this.store.get().locale);
+  /** A firmware update runs on this connection (from the robot's bootloader entry to the new version read). */
+  private updatingFirmware(): boolean {
+    const run = this.store.get().firmware?.run;
+    return run !== undefined && run.step !== "confirming" && !run.recovery;
   }
 
   private setConnection(patch: Partial<ConnectionState>): void {

@@ -17,6 +17,10 @@ afterAll(async () => {
 });
 
 async function openZeros(page: Page): Promise<void> {
+  // This file tests the download path: a browser without the Save dialog (honest-results.test.ts has both).
+  await page.addInitScript(() => {
+    Reflect.deleteProperty(window, "showSaveFilePicker");
+  });
   await connectRobot(page, app.url);
   await page.getByRole("link", { name: "Zeros" }).click();
   await page.getByTestId("zeros-card").waitFor();
@@ -48,7 +52,7 @@ describe("zeros editor", () => {
     const result = page.getByText(/Zeros written and verified/);
     await result.waitFor();
     expect(await result.textContent().then(squash)).toBe(
-      `Zeros written and verified (read back 16/16). Backup saved as ${name}.`,
+      `Zeros written and verified (read back 16/16). Backup file offered as a download (${name}): the browser decides where it goes and may rename it. It is kept in this browser (Backups kept in this browser, below).`,
     );
     const expected = [...FACTORY_ZEROS];
     expected[3] = 70;
@@ -177,10 +181,10 @@ describe("zeros editor", () => {
     const download = await downloadPromise;
     const name = download.suggestedFilename();
     expect(name).toMatch(/^rbc-zeros-8958899989309-\d{4}-\d{2}-\d{2}\.json$/);
-    const saved = page.getByText(/^Backup saved as/);
+    const saved = page.getByText(/^Backup made/);
     await saved.waitFor();
     expect(await saved.textContent().then(squash)).toBe(
-      `Backup saved as ${name}, 16 zeros read from the robot. To put them back later: Restore from backup.`,
+      `Backup made: 16 zeros read from the robot. To put them back later: Restore from backup. Backup file offered as a download (${name}): the browser decides where it goes and may rename it. It is kept in this browser (Backups kept in this browser, below).`,
     );
     const parsed = parseZerosBackup(await readFile(await download.path(), "utf8"));
     expect(parsed.ok && parsed.backup).toMatchObject({

@@ -1,6 +1,5 @@
-import { html, nothing, type TemplateResult } from "lit-html";
+import { html, type TemplateResult } from "lit-html";
 import { translator } from "../../i18n/translate.ts";
-import { dismissStopNotice } from "../features/connection/actions.ts";
 import { connectCard } from "../features/connection/connect-card.ts";
 import { robotName } from "../features/connection/robot-name.ts";
 import { topBar } from "../features/connection/top-bar.ts";
@@ -34,46 +33,17 @@ function mainContent(ctx: ViewContext, loader: ViewLoader): TemplateResult {
   return view.render(ctx);
 }
 
-function stopBanner(ctx: ViewContext): TemplateResult {
-  const n = ctx.state.stopNotice;
-  const t = translator(shellMessages, ctx.state.locale);
-  return html`
-    <div class="stop-banner" role="status" aria-live="assertive" data-testid="stop-banner">
-      ${
-        n
-          ? html`<div class="notice notice--${n.tone} banner-notice">
-              <div class="banner-text">
-                <p>${n.text}</p>
-                ${
-                  n.detail
-                    ? html`<details class="detail">
-                        <summary>${t("shell.technicalDetail")}</summary>
-                        <pre lang="en">${n.detail}</pre>
-                      </details>`
-                    : nothing
-                }
-              </div>
-              <button type="button" class="btn btn--quiet" @click=${() => dismissStopNotice(ctx)}>
-                ${t("shell.dismiss")}
-              </button>
-            </div>`
-          : nothing
-      }
-    </div>
-  `;
-}
-
 function focusMain(e: Event): void {
   e.preventDefault();
   document.getElementById("main")?.focus();
 }
 
-/** The whole page: top bar, Stop result, side navigation and the chosen view. */
+/** The whole page: top bar (with Stop's result), side navigation and the chosen view. */
 export function appView(ctx: ViewContext, loader: ViewLoader): TemplateResult {
   const t = translator(shellMessages, ctx.state.locale);
   return html`
     <a class="skip-link" href="#main" @click=${focusMain}>${t("shell.skipToContent")}</a>
-    ${topBar(ctx)} ${stopBanner(ctx)}
+    ${topBar(ctx)}
     <div class="layout">
       ${sideNav(ctx)}
       <main id="main" tabindex="-1">${mainContent(ctx, loader)}</main>

@@ -1,7 +1,7 @@
 import { html, nothing, type TemplateResult } from "lit-html";
 import type { Locale } from "../../i18n/locale.ts";
 import { translator } from "../../i18n/translate.ts";
-import type { Notice } from "../app-state.ts";
+import { type Notice, noticeText } from "../app-state.ts";
 import { shellMessages } from "./messages.ts";
 
 /**
@@ -12,7 +12,7 @@ export function notice(n: Notice | undefined, locale: Locale = "en"): TemplateRe
   if (!n) return nothing;
   return html`
     <div class="notice notice--${n.tone}">
-      <p>${n.text}</p>
+      <p>${noticeText(n, locale)}</p>
       ${
         n.detail
           ? html`<details class="detail">

@@ -1,14 +1,17 @@
 import type { StopActivityResult } from "../../../device/rbc-client.ts";
+import type { ParamArgs } from "../../../i18n/catalogue.ts";
 import type { Locale } from "../../../i18n/locale.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { formatSeconds } from "../../../i18n/units.ts";
-import type { AppState, Notice } from "../../app-state.ts";
+import { type AppState, type Notice, noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { errorNotice } from "../../error-text.ts";
+import { failureNotice } from "../../failure-notice.ts";
 import { focusSoon } from "../../focus.ts";
+import { inEveryLanguage, type LocalText, type Said, said } from "../../said.ts";
 import { forgetPort, grantedPorts, webSerial } from "../../serial-ports.ts";
 import type { Store } from "../../store.ts";
-import { type ConnectionTranslator, connectionMessages } from "./messages.ts";
+import { connectionMessages } from "./messages.ts";
 import type { ConnectionState, RobotLabel } from "./state.ts";
 
 /** Connecting, disconnecting and the list of earlier ports; Stop, Limp and their outcome banner. */
@@ -68,75 +71,79 @@ export function disconnect(ctx: AppContext): void {
 }
 
 /** Whole seconds, rounded up, for "the sound ends in 3 s". */
-function secondsLeft(ms: number, locale: Locale): string {
-  return formatSeconds(Math.max(1, Math.ceil(ms / 1000)), locale, 0);
+function secondsLeft(ms: number): LocalText {
+  return inEveryLanguage((locale) => formatSeconds(Math.max(1, Math.ceil(ms / 1000)), locale, 0));
 }
 
+const say = <K extends keyof typeof connectionMessages & string>(
+  key: K,
+  ...facts: ParamArgs<(typeof connectionMessages)[K], Said | LocalText>
+): Said => said(connectionMessages, key, ...facts);
+
 /** What Stop is waiting for, said before it is done (the robot's state mirrored in the store). */
-function stoppingText(state: AppState, now: number): string {
+function stopping(state: AppState, now: number): Said {
   const c = state.connection;
-  const t = translator(connectionMessages, state.locale);
   if (c.sounding) {
     const left = c.sounding.startedAt + c.sounding.expectedMs - now;
-    return t("connection.stopping.sound", { time: secondsLeft(left, state.locale) });
+    return say("connection.stopping.sound", { time: secondsLeft(left) });
   }
-  if (c.playing) return t("connection.stopping.motion", { motion: String(c.playing.motion) });
-  if (c.mode === "download") return t("connection.stopping.upload");
-  return t("connection.stopping");
+  if (c.playing) return say("connection.stopping.motion", { motion: String(c.playing.motion) });
+  if (c.mode === "download") return say("connection.stopping.upload");
+  return say("connection.stopping");
 }
 
 /** Where tethered play stopped, and how far it got. */
-function playStopped(t: ConnectionTranslator, play: NonNullable<StopActivityResult["tetheredPlay"]>): string {
+function playStopped(play: NonNullable<StopActivityResult["tetheredPlay"]>): Said {
   const { framesSent: sent, totalFrames: total, lastFrame } = play;
-  if (!lastFrame) return t("connection.outcome.playNotStarted");
+  if (!lastFrame) return say("connection.outcome.playNotStarted");
   const frame = String(lastFrame.frame);
   return lastFrame.scene < 0
-    ? t("connection.outcome.playStoppedTransition", { frame, sent, total })
-    : t("connection.outcome.playStoppedScene", { scene: String(lastFrame.scene), frame, sent, total });
+    ? say("connection.outcome.playStoppedTransition", { frame, sent, total })
+    : say("connection.outcome.playStoppedScene", { scene: String(lastFrame.scene), frame, sent, total });
 }
 
 /**
  * What Stop did, as plain sentences, never more certain than the robot confirmed. `limp` says whether every
- * servo had been made limp before (Stop does not change that).
+ * servo had been made limp before (Stop does not change that). Kept as messages: worded in the language of the
+ * moment.
  */
 export function stopOutcome(result: StopActivityResult, limp: boolean, locale: Locale = "en"): Notice {
-  const t = translator(connectionMessages, locale);
-  const parts: string[] = [];
+  const parts: Said[] = [];
   let unsure = false;
-  if (result.uploadCancelled) parts.push(t("connection.outcome.uploadCancelled"));
+  if (result.uploadCancelled) parts.push(say("connection.outcome.uploadCancelled"));
   if (result.sound) {
     const sound = String(result.sound.number);
-    if (result.sound.confirmed) parts.push(t("connection.outcome.soundWaited", { sound }));
+    if (result.sound.confirmed) parts.push(say("connection.outcome.soundWaited", { sound }));
     else {
       unsure = true;
-      parts.push(t("connection.outcome.soundUnconfirmed", { sound }));
+      parts.push(say("connection.outcome.soundUnconfirmed", { sound }));
     }
   }
   if (result.motion) {
     const motion = String(result.motion.number);
     switch (result.motion.outcome) {
       case "stopped":
-        parts.push(t("connection.outcome.motionStopped", { motion }));
+        parts.push(say("connection.outcome.motionStopped", { motion }));
         break;
       case "ended-then-posture":
-        parts.push(t("connection.outcome.motionEnded", { motion }));
+        parts.push(say("connection.outcome.motionEnded", { motion }));
         break;
       case "posture":
-        parts.push(t("connection.outcome.posture"));
+        parts.push(say("connection.outcome.posture"));
         break;
       case "unconfirmed":
         unsure = true;
-        parts.push(t("connection.outcome.motionUnconfirmed", { motion }));
+        parts.push(say("connection.outcome.motionUnconfirmed", { motion }));
         break;
     }
   }
   if (result.tetheredPlay) {
-    parts.push(playStopped(t, result.tetheredPlay));
+    parts.push(playStopped(result.tetheredPlay));
   } else if (result.servoMovesDropped) {
-    parts.push(limp ? t("connection.outcome.servoMovesLimp") : t("connection.outcome.servoMoves"));
+    parts.push(limp ? say("connection.outcome.servoMovesLimp") : say("connection.outcome.servoMoves"));
   }
-  if (parts.length === 0) parts.push(t("connection.outcome.nothing"));
-  return { tone: unsure ? "warning" : "ok", text: parts.join(" ") };
+  if (parts.length === 0) parts.push(say("connection.outcome.nothing"));
+  return noticeOf(unsure ? "warning" : "ok", locale, parts);
 }
 
 /**
@@ -148,7 +155,7 @@ export async function stopActivity(ctx: AppContext): Promise<void> {
   const client = session.current;
   if (!client) return;
   store.update((s) => ({
-    stopNotice: { tone: "info", text: stoppingText(s, session.clock.now()) },
+    stopNotice: noticeOf("info", s.locale, [stopping(s, session.clock.now())]),
     limpAsked: false,
   }));
   const { locale } = store.get();
@@ -156,7 +163,7 @@ export async function stopActivity(ctx: AppContext): Promise<void> {
   try {
     notice = stopOutcome(await client.stopActivity(), store.get().connection.limp === true, locale);
   } catch (e) {
-    notice = errorNotice(translator(connectionMessages, locale)("connection.stopFailed"), e, locale);
+    notice = failureNotice(say("connection.stopFailed"), e, locale);
   }
   if (session.current === client) store.update({ stopNotice: notice });
 }
@@ -180,20 +187,19 @@ export async function limpAll(ctx: AppContext): Promise<void> {
   const client = session.current;
   store.update({ limpAsked: false });
   if (!client) return;
-  const t = translator(connectionMessages, store.get().locale);
-  store.update({ stopNotice: { tone: "warning", text: t("connection.limping") } });
+  const { locale } = store.get();
+  store.update({ stopNotice: noticeOf("warning", locale, [say("connection.limping")]) });
   let notice: Notice;
   try {
     const { confirmed, silent } = await client.limp();
     notice =
       silent.length === 0
-        ? { tone: "warning", text: t("connection.limpDone", { count: confirmed.length }) }
-        : {
-            tone: "danger",
-            text: t("connection.limpPartial", { confirmed: confirmed.length, silent: silent.join(", ") }),
-          };
+        ? noticeOf("warning", locale, [say("connection.limpDone", { count: confirmed.length })])
+        : noticeOf("danger", locale, [
+            say("connection.limpPartial", { confirmed: confirmed.length, silent: silent.join(", ") }),
+          ]);
   } catch (e) {
-    notice = errorNotice(t("connection.limpFailed"), e, t.locale);
+    notice = failureNotice(say("connection.limpFailed"), e, locale);
   }
   if (session.current === client) {
     // The robot is limp and someone is holding it: the next movement asks again.

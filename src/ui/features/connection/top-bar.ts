@@ -3,9 +3,11 @@ import type { Locale } from "../../../i18n/locale.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { platformName } from "../../../protocol/catalog.ts";
 import { formatFirmware } from "../../../shared/format.ts";
+import { noticeText } from "../../app-state.ts";
 import { uiMessages } from "../../messages.ts";
+import { shellMessages } from "../../shell/messages.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
-import { askLimp, cancelLimp, limpAll, stopActivity } from "./actions.ts";
+import { askLimp, cancelLimp, dismissStopNotice, limpAll, stopActivity } from "./actions.ts";
 import { type ConnectionTranslator, connectionMessages } from "./messages.ts";
 import { robotName } from "./robot-name.ts";
 import type { ConnectionState } from "./state.ts";
@@ -96,9 +98,43 @@ export function topBar(ctx: ViewContext): TemplateResult {
             </div>`
           : nothing
       }
+      ${stopResult(ctx)}
     </header>
     ${connected && ctx.state.limpAsked ? limpQuestion(ctx, t) : nothing}
   `;
+}
+
+/**
+ * What Stop or Limp did, inside the top bar, which stays at the top of the window: it is seen however far down
+ * the page someone was when they pressed Stop (or Escape). The region is always there (empty while there is
+ * nothing to say), so screen readers announce the result; it is worded when drawn, in the language of the
+ * moment.
+ */
+function stopResult(ctx: ViewContext): TemplateResult {
+  const n = ctx.state.stopNotice;
+  const { locale } = ctx.state;
+  const t = translator(shellMessages, locale);
+  // No whitespace around the content: the empty region matches :empty and takes no room in the bar.
+  return html`<div class="stop-banner" role="status" aria-live="assertive" data-testid="stop-banner">${
+    n
+      ? html`<div class="notice notice--${n.tone} banner-notice">
+          <div class="banner-text">
+            <p>${noticeText(n, locale)}</p>
+            ${
+              n.detail
+                ? html`<details class="detail">
+                    <summary>${t("shell.technicalDetail")}</summary>
+                    <pre lang="en">${n.detail}</pre>
+                  </details>`
+                : nothing
+            }
+          </div>
+          <button type="button" class="btn btn--quiet" @click=${() => dismissStopNotice(ctx)}>
+            ${t("shell.dismiss")}
+          </button>
+        </div>`
+      : nothing
+  }</div>`;
 }
 
 /**

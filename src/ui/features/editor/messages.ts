@@ -600,8 +600,12 @@ export const editorMessages = defineMessages({
     ko: "로봇을 잡아 주세요. 고른 서보의 힘이 빠져요.",
   },
   "editor.teach.questionDetail": {
-    en: "The controller enters servo control: every servo holds until you make some limp.",
-    ko: "컨트롤러가 서보 제어를 시작해요. 힘을 빼기 전까지 모든 서보가 제자리를 유지해요.",
+    en: "The controller enters servo control. Servos holding their position keep holding until you make some limp; a servo made limp earlier (Limp, the Servos view, an earlier teach-in) stays limp.",
+    ko: "컨트롤러가 서보 제어를 시작해요. 제자리를 유지하는 서보는 힘을 빼기 전까지 계속 유지해요. 전에 힘을 뺀 서보(힘 빼기, 서보 화면, 이전 티칭)는 계속 힘이 빠져 있어요.",
+  },
+  "editor.teach.questionDetailLimp": {
+    en: "The controller stays in servo control. Every servo is limp now (Limp was pressed) and stays limp until you press Hold: the robot cannot stand by itself.",
+    ko: "컨트롤러는 서보 제어를 계속해요. 지금 모든 서보의 힘이 빠져 있고(힘 빼기를 눌렀어요) 고정을 누를 때까지 그대로예요. 로봇은 혼자 서지 못해요.",
   },
   "editor.teach.start": { en: "Start teach-in", ko: "티칭 시작" },
   "editor.teach.startAsk": { en: "Start teach-in…", ko: "티칭 시작…" },
@@ -867,6 +871,18 @@ export const editorMessages = defineMessages({
   "editor.play.question": {
     en: "The robot will move through {scenes} ({time}). Hold it or make sure it can stand.",
     ko: "로봇이 {scenes}을(를) 따라 움직여요 ({time}). 로봇을 잡거나 혼자 설 수 있는지 확인해 주세요.",
+  },
+  "editor.play.clamped": {
+    en: {
+      one: "{count} servo is outside its safe range in these scenes: the robot is sent the edge of the range instead ({list}).",
+      other:
+        "{count} servos are outside their safe range in these scenes: the robot is sent the edge of each range instead ({list}).",
+    },
+    ko: "이 장면들에서 서보 {count}개가 안전 범위를 벗어나요. 로봇에는 대신 범위의 끝 값을 보내요({list}).",
+  },
+  "editor.play.clampedItem": {
+    en: "servo {id} ({joint}) {value} → {clamped}",
+    ko: "서보 {id} ({joint}) {value} → {clamped}",
   },
   "editor.play.progressStarting": {
     en: "Starting: entering servo control and reading where the servos are…",

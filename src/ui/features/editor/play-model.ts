@@ -7,7 +7,7 @@ import type { Locale } from "../../../i18n/locale.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { formatSeconds } from "../../../i18n/units.ts";
 import type { Motion } from "../../../motion/index.ts";
-import { frameIntervalMs } from "../../../motion/index.ts";
+import { clampPosition, frameIntervalMs } from "../../../motion/index.ts";
 import type { Notice } from "../../app-state.ts";
 import type { PlayChoice, PlayProgress } from "./live-state.ts";
 import { sceneNumber } from "./live-state.ts";
@@ -67,6 +67,57 @@ export function playQuestion(from: number, to: number, durationMs: number, local
     scenes: scenesText(from, to, locale),
     time: secondsText(durationMs, locale),
   });
+}
+
+/** A servo whose position in the motion is outside its safe range: tethered play sends the clamped value. */
+export interface ClampedServo {
+  id: number;
+  /** The position in the motion farthest outside the range, in scenes from..to. */
+  value: number;
+  /** What the robot is sent instead (docs/protocol.md §5: the edge of the safe range). */
+  clamped: number;
+}
+
+/**
+ * The servos tethered play clamps in scenes from..to (their start and end positions; the frames between lie
+ * between them), by id, each with its farthest value. The robot goes to the clamped position, not the motion's.
+ */
+export function clampedInPlay(doc: Motion, from: number, to: number): ClampedServo[] {
+  const worst = new Map<number, ClampedServo>();
+  for (let k = from; k <= to; k++) {
+    for (const servo of doc.scenes[k]?.servos ?? []) {
+      for (const value of [servo.start, servo.end]) {
+        const clamped = clampPosition(servo.id, value);
+        if (clamped === value) continue;
+        const seen = worst.get(servo.id);
+        if (!seen || Math.abs(value - clamped) > Math.abs(seen.value - seen.clamped)) {
+          worst.set(servo.id, { id: servo.id, value, clamped });
+        }
+      }
+    }
+  }
+  return [...worst.values()].sort((a, b) => a.id - b.id);
+}
+
+/** "Servo 3 (Right ankle pitch) 200 → 81, …": what the question says about clamped servos, or nothing. */
+export function clampedText(
+  clamped: readonly ClampedServo[],
+  jointOf: (id: number) => string,
+  locale: Locale = "en",
+): string | undefined {
+  if (clamped.length === 0) return undefined;
+  const t = translator(editorMessages, locale);
+  const list = clamped
+    .map((c) =>
+      t("editor.play.clampedItem", {
+        id: String(c.id),
+        joint: jointOf(c.id),
+        value: String(c.value),
+        clamped: String(c.clamped),
+      }),
+    )
+    .join(", ");
+  return t("editor.play.clamped", { count: clamped.length, list });
 }
 
 /** Where play is, for the progress line: "Scene 2 of 3 (scene 2), frame 4 of 10". */

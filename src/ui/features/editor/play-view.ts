@@ -6,6 +6,7 @@ import { MotionError } from "../../../motion/index.ts";
 import { errorMessage } from "../../error-text.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
+import { jointName } from "../zeros/joints/joint-name.ts";
 import type { EditorHost } from "./host.ts";
 import { liveOf, type PlayChoice, type PlayRun, type PlayState, sceneNumber } from "./live-state.ts";
 import { type EditorTranslator, editorMessages } from "./messages.ts";
@@ -18,7 +19,15 @@ import {
   setPlayRange,
   stopPlay,
 } from "./play.ts";
-import { playQuestion, playSpan, progressText, scenesText, secondsText } from "./play-model.ts";
+import {
+  clampedInPlay,
+  clampedText,
+  playQuestion,
+  playSpan,
+  progressText,
+  scenesText,
+  secondsText,
+} from "./play-model.ts";
 import { refusalText } from "./refusal-text.ts";
 import { escapeTo } from "./teach-in-view.ts";
 
@@ -84,6 +93,12 @@ function confirmBlock(
   asked: NonNullable<PlayState["confirming"]>,
 ) {
   const scenes = scenesText(asked.from, asked.to, t.locale);
+  // Said before the robot moves: which servos the panel will hold at the edge of their safe range.
+  const clamped = clampedText(
+    clampedInPlay(host.doc, asked.from, asked.to),
+    (id) => jointName(id, t.locale),
+    t.locale,
+  );
   return html`
     <div
       class="confirm confirm--warning"
@@ -94,6 +109,7 @@ function confirmBlock(
       @keydown=${escapeTo(() => cancelPlay(ctx))}
     >
       <p id="play-question"><strong>${playQuestion(asked.from, asked.to, asked.durationMs, t.locale)}</strong></p>
+      ${clamped ? html`<p class="small text-warning" data-testid="play-clamped">${clamped}</p>` : nothing}
       <p id="play-detail" class="small">
         ${t("editor.play.detail", { frames: String(asked.frames), scene: String(sceneNumber(asked.from)) })}
       </p>

@@ -55,7 +55,14 @@ function startBlock(
         @keydown=${escapeTo(() => cancelTeachIn(ctx))}
       >
         <p id="teach-in-question"><strong>${w("editor.teach.question")}</strong></p>
-        <p class="small">${w("editor.teach.questionDetail")}</p>
+        <p class="small" data-testid="teach-in-detail">
+          ${
+            // What the robot will actually do: servos made limp before stay limp (teach-in holds none).
+            ctx.state.connection.limp
+              ? w("editor.teach.questionDetailLimp")
+              : w("editor.teach.questionDetail")
+          }
+        </p>
         <div class="actions">
           <button type="button" class="btn btn--primary" id="confirm-teach-in" @click=${() => void startTeachIn(ctx)}>
             ${w("editor.teach.start")}

@@ -4,29 +4,33 @@ import {
   RbcRejectedError,
   RbcVerifyError,
 } from "../../../device/errors.ts";
-import { ZeroWriteFailedError } from "../../../device/zero-policy.ts";
+import { ZeroBackupError, ZeroWriteFailedError } from "../../../device/zero-policy.ts";
+import type { ParamArgs } from "../../../i18n/catalogue.ts";
 import type { Locale } from "../../../i18n/locale.ts";
-import { zerosNotReadText } from "../../../i18n/outcomes/device.ts";
+import { deviceOutcomeMessages } from "../../../i18n/outcomes/messages.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { ZERO_COUNT } from "../../../protocol/zeros.ts";
 import {
   createZerosBackup,
   parseZerosBackup,
-  serializeZerosBackup,
   serialMismatchWarning,
+  type ZerosBackup,
   zerosBackupFileName,
 } from "../../../protocol/zeros-backup.ts";
 import { formatFirmware } from "../../../shared/format.ts";
-import type { AppState, Notice } from "../../app-state.ts";
+import { type AppState, type Notice, noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
-import { downloadTextFile } from "../../download-file.ts";
-import { errorMessage, errorNotice, technicalDetail } from "../../error-text.ts";
+import { errorNotice, technicalDetail } from "../../error-text.ts";
+import { errorSaid, failureNotice } from "../../failure-notice.ts";
 import { focusSoon } from "../../focus.ts";
 import { formatDateTime } from "../../format.ts";
+import { inEveryLanguage, type LocalText, type Said, said } from "../../said.ts";
 import type { Store } from "../../store.ts";
+import { type BackupFileOutcome, saveBackupFile } from "./backup-file.ts";
 import { refusal } from "./backup-refusal.ts";
+import { idbBackupStorage, type KeptBackup, keepBackup, keptBackups } from "./backup-store.ts";
 import { checkDraft, draftTable, factoryDraft, toDraft } from "./editor.ts";
-import { type ZerosTranslator, zerosMessages } from "./messages.ts";
+import { zerosMessages } from "./messages.ts";
 import type { ZerosState } from "./state.ts";
 
 /** What the zeros view does: read, edit, back up, write (after a backup), restore, factory zeros. */
@@ -72,20 +76,73 @@ export async function readZerosFromRobot(ctx: AppContext): Promise<void> {
 }
 
 export function useFactoryZeros(ctx: AppContext): void {
-  const t = translator(zerosMessages, ctx.store.get().locale);
   patchZeros(ctx.store, {
     draft: factoryDraft(),
     source: { kind: "factory" },
     confirming: false,
     result: undefined,
-    fileNotice: { tone: "info", text: t("zeros.factoryLoaded") },
+    fileNotice: noticeOf("info", ctx.store.get().locale, [say("zeros.factoryLoaded")]),
   });
 }
 
+/** Where a backup went: kept in this browser (or not), and its file, never more than the page knows. */
+interface BackupSaved {
+  kept: boolean;
+  file: BackupFileOutcome;
+}
+
 /**
- * "Back up zeros": reads the table the robot holds now and saves it in the panel's backup format, under the
- * same name the write path uses (rbc-zeros-<serial>-<date>.json). The editor's unsaved edits are kept; the
- * "Stored" column shows what was just read.
+ * Keeps a backup in this browser and saves its file (backup-file.ts). Keeping it is tried first, so a backup
+ * exists even when no file does; a failure to keep it is reported, not fatal. The list in the view is read
+ * again.
+ */
+async function saveBackup(ctx: AppContext, backup: ZerosBackup, name: string): Promise<BackupSaved> {
+  let kept = false;
+  try {
+    await keepBackup(await idbBackupStorage(), backup);
+    kept = true;
+  } catch {
+    kept = false;
+  }
+  const file = await saveBackupFile(backup, name);
+  if (kept) void loadKeptBackups(ctx);
+  return { kept, file };
+}
+
+/** What the page knows of where a backup went, as one fact ("Backup file written: … It is kept …"). */
+function whereSaid({ kept, file }: BackupSaved): Said {
+  const fileSaid =
+    file.kind === "written"
+      ? say("zeros.fileWritten", { file: file.name })
+      : file.kind === "offered"
+        ? say("zeros.fileOffered", { file: file.name })
+        : say("zeros.fileCancelled");
+  return say("zeros.twoSentences", {
+    first: fileSaid,
+    second: kept ? say("zeros.keptInBrowser") : say("zeros.notKeptInBrowser"),
+  });
+}
+
+const say = <K extends keyof typeof zerosMessages & string>(
+  key: K,
+  ...facts: ParamArgs<(typeof zerosMessages)[K], Said | LocalText>
+): Said => said(zerosMessages, key, ...facts);
+
+/** The backups kept in this browser, into the view's list (an unreadable database: an empty list). */
+export async function loadKeptBackups(ctx: AppContext): Promise<void> {
+  let kept: KeptBackup[];
+  try {
+    kept = await keptBackups(await idbBackupStorage());
+  } catch {
+    kept = [];
+  }
+  patchZeros(ctx.store, { kept });
+}
+
+/**
+ * "Back up zeros": reads the table the robot holds now, keeps it in this browser and saves it as a file in the
+ * panel's backup format, under the same name the write path uses (rbc-zeros-<serial>-<date>.json). The
+ * editor's unsaved edits are kept; the "Stored" column shows what was just read.
  */
 export async function backUpZeros(ctx: AppContext): Promise<void> {
   const { session, store } = ctx;
@@ -97,7 +154,10 @@ export async function backUpZeros(ctx: AppContext): Promise<void> {
   try {
     zeros = await session.run(t("zeros.runBackingUp"), (client) => client.readZeros());
   } catch (e) {
-    patchZeros(store, { busy: undefined, fileNotice: errorNotice(t("zeros.backupReadFailed"), e, locale) });
+    patchZeros(store, {
+      busy: undefined,
+      fileNotice: failureNotice(say("zeros.backupReadFailed"), e, locale),
+    });
     return;
   }
   const c = store.get().connection;
@@ -109,16 +169,51 @@ export async function backUpZeros(ctx: AppContext): Promise<void> {
     zeros,
     savedAt,
   });
-  const name = zerosBackupFileName(serialNumber, savedAt);
-  downloadTextFile(name, serializeZerosBackup(backup), "application/json");
+  let saved: BackupSaved;
+  try {
+    saved = await saveBackup(ctx, backup, zerosBackupFileName(serialNumber, savedAt));
+  } catch (e) {
+    patchZeros(store, { busy: undefined, fileNotice: errorNotice(t("zeros.notKeptInBrowser"), e, locale) });
+    return;
+  }
   const z = store.get().zeros;
+  const sure = saved.kept || saved.file.kind === "written";
   patchZeros(store, {
     busy: undefined,
     stored: zeros,
     // Before the first read the editor is empty: fill it with what was read.
     ...(z.draft.length === ZERO_COUNT ? {} : { draft: toDraft(zeros), source: { kind: "robot" } }),
-    fileNotice: { tone: "ok", text: t("zeros.backupDone", { file: name, count: zeros.length }) },
+    fileNotice: noticeOf(sure ? "ok" : "warning", locale, [
+      say("zeros.backupDone", { count: zeros.length }),
+      whereSaid(saved),
+    ]),
   });
+}
+
+/** "Restore" in the list of backups kept in this browser: into the editor; nothing is written. */
+export function restoreKeptBackup(ctx: AppContext, kept: KeptBackup): void {
+  const { store } = ctx;
+  const { backup } = kept;
+  const serial = store.get().connection.serialNumber;
+  const saved = inEveryLanguage((locale) => formatDateTime(new Date(backup.savedAt), locale));
+  const fileNotice: Notice =
+    serial !== undefined && serialMismatchWarning(backup, serial)
+      ? noticeOf("warning", store.get().locale, [
+          say("zeros.keptLoadedOtherRobot", {
+            saved,
+            backupSerial: backup.serialNumber || say("zeros.unknownRobot"),
+            serial,
+          }),
+        ])
+      : noticeOf("info", store.get().locale, [say("zeros.keptLoaded", { saved })]);
+  patchZeros(store, {
+    draft: toDraft(backup.zeros),
+    source: { kind: "kept", savedAt: backup.savedAt },
+    confirming: false,
+    result: undefined,
+    fileNotice,
+  });
+  focusSoon("zero-0");
 }
 
 export async function restoreFromFile(ctx: AppContext, file: File): Promise<void> {
@@ -139,20 +234,19 @@ export async function restoreFromFile(ctx: AppContext, file: File): Promise<void
   }
   const { backup } = parsed;
   const serial = store.get().connection.serialNumber;
-  const saved = formatDateTime(new Date(backup.savedAt), locale);
+  const saved = inEveryLanguage((l) => formatDateTime(new Date(backup.savedAt), l));
   // serialMismatchWarning decides (the CLI warns with its sentence); the panel says it in its language.
   const fileNotice: Notice =
     serial !== undefined && serialMismatchWarning(backup, serial)
-      ? {
-          tone: "warning",
-          text: t("zeros.loadedOtherRobot", {
+      ? noticeOf("warning", locale, [
+          say("zeros.loadedOtherRobot", {
             file: file.name,
             saved,
-            backupSerial: backup.serialNumber || t("zeros.unknownRobot"),
+            backupSerial: backup.serialNumber || say("zeros.unknownRobot"),
             serial,
           }),
-        }
-      : { tone: "info", text: t("zeros.loaded", { file: file.name, saved }) };
+        ])
+      : noticeOf("info", locale, [say("zeros.loaded", { file: file.name, saved })]);
   patchZeros(store, {
     draft: toDraft(backup.zeros),
     source: { kind: "backup", file: file.name },
@@ -162,41 +256,50 @@ export async function restoreFromFile(ctx: AppContext, file: File): Promise<void
   });
 }
 
-function failureSentence(e: unknown, file: string, t: ZerosTranslator): Notice {
-  const backup = t("zeros.backupSaved", { file });
+/** Why the backup step ended the write (the Save dialog closed): nothing was written. */
+class BackupDialogClosed extends Error {
+  constructor(readonly saved: BackupSaved) {
+    super("The Save dialog for the backup file was closed: nothing was written.");
+  }
+}
+
+function failureSentence(e: unknown, saved: BackupSaved, locale: Locale): Notice {
+  const backup = whereSaid(saved);
   const detail = technicalDetail(e);
   if (e instanceof RbcVerifyError) {
     const wrong = e.expected
       .map((v, id) => (e.readBack[id] === v ? undefined : id))
       .filter((id) => id !== undefined);
-    return {
-      tone: "danger",
-      text: t("zeros.verifyFailed", {
-        read: ZERO_COUNT - wrong.length,
-        total: ZERO_COUNT,
-        servos: wrong.join(", "),
-        file,
-      }),
+    return noticeOf(
+      "danger",
+      locale,
+      [
+        say("zeros.verifyFailed", {
+          read: ZERO_COUNT - wrong.length,
+          total: ZERO_COUNT,
+          servos: wrong.join(", "),
+          backup,
+        }),
+      ],
       detail,
-    };
+    );
   }
   if (e instanceof RbcDisconnectedError) {
-    return { tone: "danger", text: t("zeros.writeDisconnected", { file }), detail };
+    return noticeOf("danger", locale, [say("zeros.writeDisconnected", { backup })], detail);
   }
   if (e instanceof RbcCancelledError) {
-    return { tone: "danger", text: t("zeros.writeCancelled", { file }), detail };
+    return noticeOf("danger", locale, [say("zeros.writeCancelled", { backup })], detail);
   }
   if (e instanceof RbcRejectedError) {
-    return { tone: "danger", text: `${errorMessage(e, t.locale)} ${backup}`, detail };
+    return noticeOf("danger", locale, [errorSaid(e), backup], detail);
   }
-  return {
-    tone: "danger",
-    text: `${t("zeros.writeFailed")} ${errorMessage(e, t.locale)} ${backup}`,
-    detail,
-  };
+  return noticeOf("danger", locale, [say("zeros.writeFailed"), errorSaid(e), backup], detail);
 }
 
-/** Backup first (the robot's current zeros, read fresh), then write, read back and verify. */
+/**
+ * Backup first (the robot's current zeros, read fresh, kept in this browser and saved as a file), then write,
+ * read back and verify. Closing the backup's Save dialog writes nothing.
+ */
 export async function writeZerosToRobot(ctx: AppContext): Promise<void> {
   const { session, store } = ctx;
   const state = store.get();
@@ -205,26 +308,31 @@ export async function writeZerosToRobot(ctx: AppContext): Promise<void> {
   const t = translator(zerosMessages, locale);
   const table = draftTable(checkDraft(state.zeros.draft, locale));
   if (!table) {
-    patchZeros(store, { confirming: false, result: { tone: "danger", text: t("zeros.invalidValues") } });
+    patchZeros(store, {
+      confirming: false,
+      result: noticeOf("danger", locale, [say("zeros.invalidValues")]),
+    });
     return;
   }
   patchZeros(store, { busy: "writing", confirming: false, result: undefined });
-  let backupName: string | undefined;
+  let saved: BackupSaved | undefined;
   const c = store.get().connection;
   let readBack: number[];
   try {
-    // The device's zero-write policy: check, read the current zeros, save them (here: a download), then
-    // write, read back and verify. The robot's zeros are never changed before the backup exists.
+    // The device's zero-write policy: check, read the current zeros, save them (here: kept in this browser and
+    // saved as a file), then write, read back and verify. The robot's zeros are never changed before the
+    // backup exists.
     const outcome = await session.run(t("zeros.runWriting"), (client) =>
       client.writeZerosWithBackup(table, {
         robot: {
           serialNumber: c.serialNumber,
           firmware: c.firmware ? formatFirmware(c.firmware) : undefined,
         },
-        saveBackup: (backup, name) => {
-          downloadTextFile(name, serializeZerosBackup(backup), "application/json");
-          backupName = name;
-          return name;
+        saveBackup: async (backup, name) => {
+          const where = await saveBackup(ctx, backup, name);
+          if (where.file.kind === "cancelled") throw new BackupDialogClosed(where);
+          saved = where;
+          return where.file.name;
         },
       }),
     );
@@ -234,16 +342,23 @@ export async function writeZerosToRobot(ctx: AppContext): Promise<void> {
         stored: outcome.current,
         draft: toDraft(outcome.current),
         source: { kind: "robot" },
-        result: { tone: "ok", text: t("zeros.alreadyHeld") },
+        result: noticeOf("ok", locale, [say("zeros.alreadyHeld")]),
       });
       return;
     }
     readBack = outcome.readBack;
   } catch (e) {
-    const cause: unknown = e instanceof ZeroWriteFailedError ? e.reason : e;
-    const result = backupName
-      ? failureSentence(cause, backupName, t)
-      : errorNotice(zerosNotReadText(locale), cause, locale);
+    const cause: unknown =
+      e instanceof ZeroWriteFailedError ? e.reason : e instanceof ZeroBackupError ? e.cause : e;
+    const result =
+      cause instanceof BackupDialogClosed
+        ? noticeOf("warning", locale, [
+            say("zeros.writeCancelledAtSave"),
+            cause.saved.kept ? say("zeros.keptInBrowser") : say("zeros.notKeptInBrowser"),
+          ])
+        : saved
+          ? failureSentence(cause, saved, locale)
+          : failureNotice(said(deviceOutcomeMessages, "outcome.zerosNotRead"), cause, locale);
     patchZeros(store, { busy: undefined, result });
     return;
   }
@@ -254,9 +369,9 @@ export async function writeZerosToRobot(ctx: AppContext): Promise<void> {
     draft: toDraft(readBack),
     source: { kind: "robot" },
     fileNotice: undefined,
-    result: {
-      tone: "verified",
-      text: t("zeros.written", { read: verified, total: ZERO_COUNT, file: backupName ?? "" }),
-    },
+    result: noticeOf("verified", locale, [
+      say("zeros.written", { read: verified, total: ZERO_COUNT }),
+      ...(saved ? [whereSaid(saved)] : []),
+    ]),
   });
 }

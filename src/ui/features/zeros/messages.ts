@@ -14,8 +14,8 @@ export const zerosMessages = defineMessages({
     ko: "로봇은 모션을 재생할 때마다 각 서보의 영점을 더해요.",
   },
   "zeros.backupWhy": {
-    en: "Back up zeros saves the robot's current zeros to a file you can restore later.",
-    ko: "'영점 백업'은 로봇의 지금 영점을 파일로 저장해요. 나중에 그 파일로 복원할 수 있어요.",
+    en: "Back up zeros keeps the robot's current zeros in this browser and saves them as a file; either can be restored later.",
+    ko: "'영점 백업'은 로봇의 지금 영점을 이 브라우저에 보관하고 파일로도 저장해요. 나중에 어느 쪽으로든 복원할 수 있어요.",
   },
   "zeros.source": {
     en: "Values in the editor come from {source}.",
@@ -24,6 +24,15 @@ export const zerosMessages = defineMessages({
   "zeros.sourceRobot": { en: "the robot", ko: "로봇" },
   "zeros.sourceFactory": { en: "the factory zeros", ko: "공장 영점" },
   "zeros.sourceBackup": { en: "backup {file}", ko: "백업 파일 {file}" },
+  "zeros.sourceKept": {
+    en: "the backup kept in this browser, saved {saved}",
+    ko: "이 브라우저에 보관한 백업({saved}에 저장)",
+  },
+  "zeros.tablesTitle": {
+    en: "Factory zeros and the reference the robot checks against",
+    ko: "공장 영점과 로봇이 비교하는 기준 영점",
+  },
+  "zeros.writePanel": { en: "Write the changed zeros", ko: "바뀐 영점 쓰기" },
   "zeros.factoryTitle": { en: "Factory zeros", ko: "공장 영점" },
   "zeros.factoryWhy": {
     en: "The values the robot's firmware holds when it is new: {list}.",
@@ -60,6 +69,10 @@ export const zerosMessages = defineMessages({
     en: "The editor matches the zeros stored in the robot.",
     ko: "편집 표가 로봇에 저장된 영점과 같아요.",
   },
+  "zeros.noOtherChanges": {
+    en: "No other value differs from the robot's zeros.",
+    ko: "다른 값은 로봇의 영점과 같아요.",
+  },
   "zeros.changes": {
     en: { one: "{count} change not yet written: {list}.", other: "{count} changes not yet written: {list}." },
     ko: "아직 쓰지 않은 변경 {count}개: {list}.",
@@ -92,8 +105,8 @@ export const zerosMessages = defineMessages({
     ko: "바뀐 영점 {count}개를 로봇에 쓸까요?",
   },
   "zeros.confirmText": {
-    en: "The robot's current zeros are saved to a backup file first, then the new table is written, read back and checked. The robot does not move.",
-    ko: "먼저 로봇의 지금 영점을 백업 파일로 저장하고, 새 표를 쓴 다음 다시 읽어 확인해요. 로봇은 움직이지 않아요.",
+    en: "The robot's current zeros are backed up first (kept in this browser and saved as a file), then the new table is written, read back and checked. The robot does not move.",
+    ko: "먼저 로봇의 지금 영점을 백업하고(이 브라우저에 보관하고 파일로 저장), 새 표를 쓴 다음 다시 읽어 확인해요. 로봇은 움직이지 않아요.",
   },
   "zeros.confirmWrite": { en: "Save backup and write", ko: "백업 저장 후 쓰기" },
   "zeros.cancel": { en: "Cancel", ko: "취소" },
@@ -114,8 +127,59 @@ export const zerosMessages = defineMessages({
     ko: "백업을 저장하지 않았어요. 로봇에서 영점을 읽지 못했어요.",
   },
   "zeros.backupDone": {
-    en: "Backup saved as {file}, {count} zeros read from the robot. To put them back later: Restore from backup.",
-    ko: "백업을 {file}(으)로 저장했어요. 로봇에서 영점 {count}개를 읽었어요. 나중에 되돌리려면 '백업에서 복원'을 눌러 주세요.",
+    en: "Backup made: {count} zeros read from the robot. To put them back later: Restore from backup.",
+    ko: "백업했어요. 로봇에서 영점 {count}개를 읽었어요. 나중에 되돌리려면 '백업에서 복원'을 눌러 주세요.",
+  },
+  // Where a backup went, never more than the page knows (backup-file.ts).
+  "zeros.keptInBrowser": {
+    en: "It is kept in this browser (Backups kept in this browser, below).",
+    ko: "이 브라우저에 보관했어요(아래 '이 브라우저에 보관한 백업').",
+  },
+  "zeros.notKeptInBrowser": {
+    en: "It could not be kept in this browser.",
+    ko: "이 브라우저에 보관하지 못했어요.",
+  },
+  "zeros.fileWritten": { en: "Backup file written: {file}.", ko: "백업 파일을 썼어요: {file}." },
+  "zeros.fileOffered": {
+    en: "Backup file offered as a download ({file}): the browser decides where it goes and may rename it.",
+    ko: "백업 파일을 다운로드로 내보냈어요({file}). 저장 위치와 이름은 브라우저가 정해요.",
+  },
+  "zeros.fileCancelled": {
+    en: "No backup file was saved: the Save dialog was closed.",
+    ko: "백업 파일을 저장하지 않았어요. 저장 창을 닫았어요.",
+  },
+  "zeros.writeCancelledAtSave": {
+    en: "Nothing was written: the Save dialog for the backup file was closed.",
+    ko: "아무것도 쓰지 않았어요. 백업 파일 저장 창을 닫았어요.",
+  },
+  "zeros.keptTitle": {
+    en: "Backups kept in this browser ({count})",
+    ko: "이 브라우저에 보관한 백업 ({count})",
+  },
+  "zeros.twoSentences": { en: "{first} {second}", ko: "{first} {second}" },
+  "zeros.keptNone": {
+    en: "No backup is kept in this browser yet. Back up zeros (or a write) keeps one here.",
+    ko: "이 브라우저에 보관한 백업이 아직 없어요. '영점 백업'이나 쓰기를 하면 여기에 보관해요.",
+  },
+  "zeros.keptCaption": {
+    en: "Zero backups kept in this browser, newest first",
+    ko: "이 브라우저에 보관한 영점 백업, 최신 순",
+  },
+  "zeros.keptColDate": { en: "Saved", ko: "저장 시각" },
+  "zeros.keptColSerial": { en: "Robot serial number", ko: "로봇 시리얼 번호" },
+  "zeros.keptColValues": { en: "Zeros (servo 0-15)", ko: "영점 (서보 0-15)" },
+  "zeros.keptRestore": { en: "Restore", ko: "복원" },
+  "zeros.keptRestoreLabel": {
+    en: "Restore the backup saved {saved} into the editor",
+    ko: "{saved}에 저장한 백업을 편집 표로 복원",
+  },
+  "zeros.keptLoaded": {
+    en: "Loaded the backup kept in this browser (saved {saved}) into the editor. Nothing is written until you press Write.",
+    ko: "이 브라우저에 보관한 백업({saved}에 저장)을 편집 표에 불러왔어요. '로봇에 쓰기'를 누르기 전에는 아무것도 쓰지 않아요.",
+  },
+  "zeros.keptLoadedOtherRobot": {
+    en: "Loaded the backup kept in this browser (saved {saved}) into the editor. It was saved from robot {backupSerial}, not the connected robot {serial}. Zeros are calibrated per robot: check each value before writing.",
+    ko: "이 브라우저에 보관한 백업({saved}에 저장)을 편집 표에 불러왔어요. 이 백업은 연결된 로봇({serial})이 아니라 다른 로봇({backupSerial})에서 저장했어요. 영점은 로봇마다 따로 맞춰요. 쓰기 전에 값을 하나하나 확인해 주세요.",
   },
   "zeros.fileUnreadable": { en: '"{file}" could not be read.', ko: '"{file}" 파일을 읽지 못했어요.' },
   "zeros.fileRefused": {
@@ -157,18 +221,17 @@ export const zerosMessages = defineMessages({
     ko: '"{file}" 파일({saved}에 저장)을 편집 표에 불러왔어요. 이 백업은 연결된 로봇({serial})이 아니라 다른 로봇({backupSerial})에서 저장했어요. 영점은 로봇마다 따로 맞춘 값이니, 쓰기 전에 값을 하나하나 확인해 주세요.',
   },
   "zeros.unknownRobot": { en: "(unknown)", ko: "(알 수 없음)" },
-  "zeros.backupSaved": { en: "Backup saved as {file}.", ko: "백업을 {file}(으)로 저장했어요." },
   "zeros.verifyFailed": {
-    en: "Zeros were sent but did not verify: read back {read}/{total} (servo {servos} differ). Backup saved as {file}. Read the zeros again; restore the backup if needed.",
-    ko: "영점을 보냈지만 확인되지 않았어요. 다시 읽은 값 중 {read}/{total}개만 맞아요(서보 {servos}이(가) 달라요). 백업을 {file}(으)로 저장했어요. 영점을 다시 읽고, 필요하면 백업을 복원해 주세요.",
+    en: "Zeros were sent but did not verify: read back {read}/{total} (servo {servos} differ). {backup} Read the zeros again; restore the backup if needed.",
+    ko: "영점을 보냈지만 확인되지 않았어요. 다시 읽은 값 중 {read}/{total}개만 맞아요(서보 {servos}이(가) 달라요). {backup} 영점을 다시 읽고, 필요하면 백업을 복원해 주세요.",
   },
   "zeros.writeDisconnected": {
-    en: "The write did not finish: the robot was disconnected. Backup saved as {file}. Reconnect and read the zeros before anything else.",
-    ko: "쓰기를 끝내지 못했어요. 로봇과의 연결이 끊겼어요. 백업을 {file}(으)로 저장했어요. 다시 연결한 뒤 다른 일보다 먼저 영점을 읽어 주세요.",
+    en: "The write did not finish: the robot was disconnected. {backup} Reconnect and read the zeros before anything else.",
+    ko: "쓰기를 끝내지 못했어요. 로봇과의 연결이 끊겼어요. {backup} 다시 연결한 뒤 다른 일보다 먼저 영점을 읽어 주세요.",
   },
   "zeros.writeCancelled": {
-    en: "The write was cancelled by Stop. Backup saved as {file}. Read the zeros to see what the robot holds.",
-    ko: "정지를 눌러 쓰기를 취소했어요. 백업을 {file}(으)로 저장했어요. 로봇에 어떤 값이 들어 있는지 영점을 읽어 확인해 주세요.",
+    en: "The write was cancelled by Stop. {backup} Read the zeros to see what the robot holds.",
+    ko: "정지를 눌러 쓰기를 취소했어요. {backup} 로봇에 어떤 값이 들어 있는지 영점을 읽어 확인해 주세요.",
   },
   "zeros.writeFailed": { en: "Writing the zeros failed.", ko: "영점을 쓰지 못했어요." },
   "zeros.invalidValues": {
@@ -180,8 +243,8 @@ export const zerosMessages = defineMessages({
     ko: "로봇에 이미 이 영점이 들어 있어요. 아무것도 쓰지 않았어요.",
   },
   "zeros.written": {
-    en: "Zeros written and verified (read back {read}/{total}). Backup saved as {file}.",
-    ko: "영점을 쓰고 다시 읽어 확인했어요({read}/{total}). 백업을 {file}(으)로 저장했어요.",
+    en: "Zeros written and verified (read back {read}/{total}).",
+    ko: "영점을 쓰고 다시 읽어 확인했어요({read}/{total}).",
   },
 
   // Why a field cannot be written (editor.ts).

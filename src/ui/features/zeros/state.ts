@@ -1,7 +1,13 @@
 import type { Notice } from "../../app-state.ts";
+import type { KeptBackup } from "./backup-store.ts";
 
 /** Where the editor's values came from (the view says it in the panel's language). */
-export type ZerosSource = { kind: "robot" } | { kind: "factory" } | { kind: "backup"; file: string };
+export type ZerosSource =
+  | { kind: "robot" }
+  | { kind: "factory" }
+  | { kind: "backup"; file: string }
+  /** A backup kept in this browser, by its time stamp (ISO). */
+  | { kind: "kept"; savedAt: string };
 
 /** The Zeros view's part of the app state. Reset with every connection. */
 export interface ZerosState {
@@ -15,6 +21,8 @@ export interface ZerosState {
   confirming: boolean;
   result?: Notice;
   fileNotice?: Notice;
+  /** The backups kept in this browser, newest first (read when the view opens and after each backup). */
+  kept?: KeptBackup[];
 }
 
 export function initialZeros(): ZerosState {

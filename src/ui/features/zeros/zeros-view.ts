@@ -9,15 +9,17 @@ import {
   type ZeroChange,
   zeroRange,
 } from "../../../protocol/zeros.ts";
-import { formatDelta } from "../../format.ts";
+import { formatDateTime, formatDelta } from "../../format.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
 import {
   askToWrite,
   backUpZeros,
   cancelWrite,
+  loadKeptBackups,
   readZerosFromRobot,
   restoreFromFile,
+  restoreKeptBackup,
   setZeroText,
   useFactoryZeros,
   writeZerosToRobot,
@@ -94,8 +96,14 @@ function row(
   `;
 }
 
-function changeSummary(t: ZerosTranslator, changes: readonly ZeroChange[]): string {
-  if (changes.length === 0) return t("zeros.noChanges");
+/**
+ * What would change on the robot. "The editor matches the robot" only when every field is valid: beside a value
+ * that cannot be written it would say more than is true, so then only the fields that differ are listed.
+ */
+function changeSummary(t: ZerosTranslator, changes: readonly ZeroChange[], check: DraftCheck): string {
+  if (changes.length === 0) {
+    return check.problems.size === 0 ? t("zeros.noChanges") : t("zeros.noOtherChanges");
+  }
   // Zero values as the robot holds them (0-254), not grouped.
   const list = changes
     .map((c) => t("zeros.changeItem", { id: String(c.id), from: String(c.from), to: String(c.to) }))
@@ -156,34 +164,88 @@ function writeControls(
 
 /**
  * The two tables people confuse, under the names the CLI uses too: the factory zeros (what a new robot holds)
- * and the reference zeros (what the robot checks every write against).
+ * and the reference zeros (what the robot checks every write against). Folded, so the editor comes first;
+ * "Load factory zeros" stays in sight beside the fold.
  */
 function zeroTables(disabled: boolean, ctx: ViewContext, t: ZerosTranslator): TemplateResult {
   const list = (zeros: readonly number[]) => html`<span class="num zero-list">${zeros.join(" ")}</span>`;
   return html`
-    <dl class="zero-tables" data-testid="zero-tables">
-      <div>
-        <dt>${t("zeros.factoryTitle")}</dt>
-        <dd>
-          <span id="factory-zeros-why">${t.parts("zeros.factoryWhy", { list: list(FACTORY_ZEROS) })}</span>
-          <button
-            type="button"
-            class="btn"
-            ?disabled=${disabled}
-            aria-describedby="factory-zeros-why"
-            @click=${() => useFactoryZeros(ctx)}
-          >
-            ${t("zeros.loadFactory")}
-          </button>
-        </dd>
-      </div>
-      <div>
-        <dt>${t("zeros.referenceTitle")}</dt>
-        <dd>
-          ${t.parts("zeros.referenceWhy", { list: list(STANDARD_ZEROS), tolerance: ZERO_TOLERANCE })}
-        </dd>
-      </div>
-    </dl>
+    <div class="zero-tables-row">
+    <details class="zero-tables-fold">
+      <summary>${t("zeros.tablesTitle")}</summary>
+      <dl class="zero-tables" data-testid="zero-tables">
+        <div>
+          <dt>${t("zeros.factoryTitle")}</dt>
+          <dd>
+            <span id="factory-zeros-why">${t.parts("zeros.factoryWhy", { list: list(FACTORY_ZEROS) })}</span>
+          </dd>
+        </div>
+        <div>
+          <dt>${t("zeros.referenceTitle")}</dt>
+          <dd>
+            ${t.parts("zeros.referenceWhy", { list: list(STANDARD_ZEROS), tolerance: ZERO_TOLERANCE })}
+          </dd>
+        </div>
+      </dl>
+    </details>
+    <button
+      type="button"
+      class="btn"
+      ?disabled=${disabled}
+      aria-describedby="factory-zeros-why"
+      @click=${() => useFactoryZeros(ctx)}
+    >
+      ${t("zeros.loadFactory")}
+    </button>
+    </div>
+  `;
+}
+
+/** Every backup kept in this browser: when, which robot, the values, and Restore (into the editor). */
+function keptList(ctx: ViewContext, t: ZerosTranslator, disabled: boolean): TemplateResult {
+  const kept = ctx.state.zeros.kept ?? [];
+  return html`
+    <details class="kept-backups" data-testid="kept-backups">
+      <summary>${t("zeros.keptTitle", { count: kept.length })}</summary>
+      ${
+        kept.length === 0
+          ? html`<p class="muted small">${t("zeros.keptNone")}</p>`
+          : html`<div class="kept-scroll">
+              <table class="kept-table">
+                <caption class="sr-only">${t("zeros.keptCaption")}</caption>
+                <thead>
+                  <tr>
+                    <th scope="col">${t("zeros.keptColDate")}</th>
+                    <th scope="col">${t("zeros.keptColSerial")}</th>
+                    <th scope="col">${t("zeros.keptColValues")}</th>
+                    <th scope="col"><span class="sr-only">${t("zeros.keptRestore")}</span></th>
+                  </tr>
+                </thead>
+                <tbody>
+                  ${kept.map((k) => {
+                    const saved = formatDateTime(new Date(k.backup.savedAt), t.locale);
+                    return html`<tr data-kept=${k.id}>
+                      <td class="num">${saved}</td>
+                      <td class="num">${k.backup.serialNumber}</td>
+                      <td class="num zero-list">${k.backup.zeros.join(" ")}</td>
+                      <td>
+                        <button
+                          type="button"
+                          class="btn btn--quiet"
+                          ?disabled=${disabled}
+                          aria-label=${t("zeros.keptRestoreLabel", { saved })}
+                          @click=${() => restoreKeptBackup(ctx, k)}
+                        >
+                          ${t("zeros.keptRestore")}
+                        </button>
+                      </td>
+                    </tr>`;
+                  })}
+                </tbody>
+              </table>
+            </div>`
+      }
+    </details>
   `;
 }
 
@@ -195,6 +257,8 @@ function sourceText(t: ZerosTranslator, source: ZerosSource): string {
       return t("zeros.sourceFactory");
     case "backup":
       return t("zeros.sourceBackup", { file: source.file });
+    case "kept":
+      return t("zeros.sourceKept", { saved: formatDateTime(new Date(source.savedAt), t.locale) });
   }
 }
 
@@ -257,28 +321,34 @@ function render(ctx: ViewContext): TemplateResult {
       ${
         ready
           ? html`
-              <table class="zeros-table">
-                <caption class="sr-only">${t("zeros.caption")}</caption>
-                <thead>
-                  <tr>
-                    <th scope="col">${t("zeros.colId")}</th>
-                    <th scope="col">${t("zeros.colJoint")}</th>
-                    <th scope="col">${t("zeros.colZero")}</th>
-                    <th scope="col"><span class="sr-only">${t("zeros.colSlider")}</span></th>
-                    <th scope="col">${t("zeros.colStored")}</th>
-                    <th scope="col">${t("zeros.colChange")}</th>
-                  </tr>
-                </thead>
-                <tbody>
-                  ${Array.from({ length: ZERO_COUNT }, (_, id) => row(ctx, t, id, check, stored))}
-                </tbody>
-              </table>
-              <p class="change-summary" data-testid="change-summary">${changeSummary(t, changes)}</p>
-              ${writeControls(ctx, t, check, changes)}
+              <div class="zeros-editor">
+                <table class="zeros-table">
+                  <caption class="sr-only">${t("zeros.caption")}</caption>
+                  <thead>
+                    <tr>
+                      <th scope="col">${t("zeros.colId")}</th>
+                      <th scope="col">${t("zeros.colJoint")}</th>
+                      <th scope="col">${t("zeros.colZero")}</th>
+                      <th scope="col"><span class="sr-only">${t("zeros.colSlider")}</span></th>
+                      <th scope="col">${t("zeros.colStored")}</th>
+                      <th scope="col">${t("zeros.colChange")}</th>
+                    </tr>
+                  </thead>
+                  <tbody>
+                    ${Array.from({ length: ZERO_COUNT }, (_, id) => row(ctx, t, id, check, stored))}
+                  </tbody>
+                </table>
+                <aside class="zeros-write" aria-label=${t("zeros.writePanel")} data-testid="zeros-write">
+                  <p class="change-summary" data-testid="change-summary">${changeSummary(t, changes, check)}</p>
+                  ${writeControls(ctx, t, check, changes)}
+                  ${liveNotice(z.result, t("zeros.resultLabel"), locale)}
+                </aside>
+              </div>
             `
-          : html`<p>${z.busy === "reading" ? t("zeros.readingZeros") : t("zeros.notRead")}</p>`
+          : html`<p>${z.busy === "reading" ? t("zeros.readingZeros") : t("zeros.notRead")}</p>
+              ${liveNotice(z.result, t("zeros.resultLabel"), locale)}`
       }
-      ${liveNotice(z.result, t("zeros.resultLabel"), locale)}
+      ${keptList(ctx, t, busy || !ready)}
     </section>
   `;
 }
@@ -288,6 +358,7 @@ const zerosView: AppView = {
   render,
   activate(ctx) {
     if (ctx.state.zeros.stored === undefined) void readZerosFromRobot(ctx);
+    void loadKeptBackups(ctx);
   },
 };
 

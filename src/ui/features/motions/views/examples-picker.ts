@@ -5,7 +5,8 @@ import type { MotionsTranslator } from "../messages.ts";
 
 /**
  * "Open an example": the project's own motions, opened exactly like a picked file. A disclosure (keyboard and
- * screen readers know it) with one button per example; each button says what the motion does.
+ * screen readers know it) with one button per example; each button says what the motion does. Choosing one
+ * folds the list again.
  */
 export function examplesPicker(ctx: ViewContext, t: MotionsTranslator): TemplateResult {
   return html`
@@ -21,7 +22,14 @@ export function examplesPicker(ctx: ViewContext, t: MotionsTranslator): Template
               class="btn"
               data-example=${example.fileName}
               aria-describedby=${id}
-              @click=${() => void openExample(ctx, example)}
+              @click=${(e: Event) => {
+                // The list folds away once a motion is chosen: its card, with Upload, comes into view.
+                // Focus goes to its summary, so it is not lost with the hidden button.
+                const fold = (e.currentTarget as HTMLElement).closest("details");
+                fold?.removeAttribute("open");
+                fold?.querySelector("summary")?.focus();
+                void openExample(ctx, example);
+              }}
             >
               ${t("motions.example.open", { file: example.fileName })}
             </button>

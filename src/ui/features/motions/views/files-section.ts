@@ -152,17 +152,6 @@ function fileCard(
             </dl>`
           : html`<p class="text-danger">${t("motions.files.unusable")}</p>`
       }
-      ${
-        previewing && entry.motion
-          ? motionPreview({
-              motion: entry.motion,
-              label: t("motions.files.previewLabel", { name: entry.motion.name }),
-              testId: "motion-preview",
-              locale: ctx.state.locale,
-            })
-          : nothing
-      }
-      ${fileIssues(t, entry, errors, warnings)}
       <div class="write-row">
         <button
           type="button"
@@ -183,7 +172,19 @@ function fileCard(
           }
         </span>
       </div>
-      ${uploadInPlace(ctx, target)} ${selected ? sceneTable(ctx, t, entry) : nothing}
+      ${uploadInPlace(ctx, target)}
+      ${
+        previewing && entry.motion
+          ? motionPreview({
+              motion: entry.motion,
+              label: t("motions.files.previewLabel", { name: entry.motion.name }),
+              testId: "motion-preview",
+              locale: ctx.state.locale,
+            })
+          : nothing
+      }
+      ${fileIssues(t, entry, errors, warnings)}
+      ${selected ? sceneTable(ctx, t, entry) : nothing}
     </article>
   `;
 }
@@ -197,11 +198,19 @@ function sceneTable(
   if (!motion) return nothing;
   const { locale } = t;
   const rows = sceneRows(motion);
+  // A long motion's scenes (284 in long-walk.rbm) scroll inside a box about a dozen rows tall, under a header
+  // that stays: the page keeps Upload and the chart in view (issue 21 item 7).
   return html`
     <section class="scene-section" id="scene-section" aria-labelledby="scenes-title" data-testid="scene-section">
       <h4 id="scenes-title" class="long-text">${t("motions.scenes.title", { name: motion.name })}</h4>
       <div class="scene-body">
-      <div class="table-wrap">
+      <div
+        class="table-wrap scene-table-box"
+        role="region"
+        tabindex="0"
+        aria-labelledby="scenes-title"
+        data-testid="scene-table-box"
+      >
         <table class="data-table scene-table">
           <thead>
             <tr>

@@ -1,0 +1,71 @@
+import { type Catalogue, defineMessages, type ParamArgs } from "../i18n/catalogue.ts";
+import { LOCALES, type Locale } from "../i18n/locale.ts";
+import { translator } from "../i18n/translate.ts";
+
+/**
+ * A message kept as what it says, not as a sentence: the catalogue it is in, its key (the stable code of the
+ * outcome) and its facts. It is worded when drawn, in the language of that moment, so a message made before a
+ * language switch ("Draft restored…") follows the switch.
+ *
+ *   const s = said(zerosMessages, "zeros.backupKept", { serial: "8958899989309" });
+ *   wordOf(s, "ko")   // the Korean sentence, whatever the language was when it was made
+ *
+ * A fact is a number or a name (worded the same in every language), another message (a motion's name, a
+ * joint's), or a text already made in each language (a time, a device error's sentence).
+ */
+export type Fact = string | number | Said | LocalText;
+
+/** A text made in every language at once (`inEveryLanguage`), chosen when drawn. */
+export type LocalText = { readonly [L in Locale]: string };
+
+export interface Said {
+  readonly catalogue: Catalogue;
+  readonly key: string;
+  readonly facts?: Readonly<Record<string, Fact>>;
+}
+
+/** A message of `catalogue` with its facts, checked like a translator call (key and placeholders). */
+export function said<M extends Catalogue, K extends keyof M & string>(
+  catalogue: M,
+  key: K,
+  ...facts: ParamArgs<M[K], Said | LocalText>
+): Said {
+  return { catalogue, key, facts: facts[0] as Readonly<Record<string, Fact>> | undefined };
+}
+
+/** Makes a text in every language (a date, a device error worded by its own catalogue). */
+export function inEveryLanguage(make: (locale: Locale) => string): LocalText {
+  const out: Partial<Record<Locale, string>> = {};
+  for (const locale of LOCALES) out[locale] = make(locale);
+  return out as LocalText;
+}
+
+function isSaid(fact: Fact): fact is Said {
+  return typeof fact === "object" && "key" in fact;
+}
+
+function factIn(fact: Fact, locale: Locale): string | number {
+  if (typeof fact === "string" || typeof fact === "number") return fact;
+  return isSaid(fact) ? wordOf(fact, locale) : fact[locale];
+}
+
+/** The message as a sentence in `locale`. */
+export function wordOf(s: Said, locale: Locale): string {
+  const facts: Record<string, string | number> = {};
+  for (const [name, fact] of Object.entries(s.facts ?? {})) facts[name] = factIn(fact, locale);
+  // The key and facts were checked against the catalogue when `said` made them.
+  const t = translator(s.catalogue, locale) as unknown as (key: string, facts: object) => string;
+  return t(s.key, facts);
+}
+
+/** Several messages as one text: the sentences in order, separated by a space. */
+export function wordsOf(sentences: readonly Said[], locale: Locale): string {
+  return sentences.map((s) => wordOf(s, locale)).join(" ");
+}
+
+const saidMessages = defineMessages({ "said.text": { en: "{text}", ko: "{text}" } });
+
+/** A sentence made in every language elsewhere (a device error's own words), as a message. */
+export function saidText(text: LocalText): Said {
+  return said(saidMessages, "said.text", { text });
+}

@@ -1,0 +1,65 @@
+import type { Page } from "playwright-core";
+import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { type AppHarness, FAST, squash, startHarness } from "./harness.ts";
+import "./rbc-test-globals.ts";
+
+// Issue 21 item 5: the Editor's questions say what the robot will actually do.
+
+let app: AppHarness;
+
+beforeAll(async () => {
+  app = await startHarness();
+});
+
+afterAll(async () => {
+  await app?.close();
+});
+
+async function openEditorOnDemo(page: Page): Promise<void> {
+  await page.goto(app.url);
+  await page.getByRole("button", { name: "Try the demo robot" }).click();
+  await page.getByTestId("device-card").waitFor();
+  await page.getByRole("link", { name: "Editor" }).click();
+  await page.getByTestId("pose-table").waitFor();
+}
+
+async function showTab(page: Page, tab: "pose" | "teach" | "play"): Promise<void> {
+  await page.locator(`#editor-tab-${tab}`).click();
+  await page.locator(`#editor-panel-${tab}`).waitFor();
+}
+
+describe("the Editor's questions match what the robot will do", () => {
+  it("Play on robot names the servos it will hold at the edge of their safe range, with the values", async () => {
+    const { page, context } = await app.newPage({ options: FAST });
+    await openEditorOnDemo(page);
+    // docs/protocol.md §5: servo 0's safe range ends at 174; the motion asks for 200.
+    await showTab(page, "pose");
+    await page.getByTestId("end-0").fill("200");
+    await page.getByTestId("end-0").press("Tab");
+    await showTab(page, "play");
+    await page.locator("#play-button").click();
+    const clamped = page.getByTestId("play-clamped");
+    await clamped.waitFor();
+    const text = squash(await clamped.textContent());
+    expect(text).toMatch(/^1 servo is outside its safe range in these scenes/);
+    expect(text).toMatch(/servo 0 \([^)]+\) 200 → 174/);
+    await page.locator("#cancel-play").click();
+    await context.close();
+  });
+
+  it("Teach-in after Limp says every servo stays limp, not that every servo holds", async () => {
+    const { page, context } = await app.newPage({ options: FAST });
+    await openEditorOnDemo(page);
+    await page.locator("#limp-button").click();
+    await page.locator("#confirm-limp").click();
+    await page.getByTestId("stop-banner").filter({ hasText: "limp" }).waitFor();
+    await showTab(page, "teach");
+    await page.locator("#start-teach-in").click();
+    const detail = squash(await page.getByTestId("teach-in-detail").textContent());
+    expect(detail).toContain(
+      "Every servo is limp now (Limp was pressed) and stays limp until you press Hold",
+    );
+    expect(detail).not.toContain("every servo holds");
+    await context.close();
+  });
+});
