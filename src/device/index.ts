@@ -16,6 +16,7 @@ export {
   type UploadActivity,
 } from "./activity.ts";
 export { DirectMode, SERVO_IDS } from "./direct-mode.ts";
+export { RbcCannotLimpError, RbcNotIdleError, RbcStillPlayingError } from "./direct-mode-errors.ts";
 export { type ErrorTextOptions, errorText, technicalDetail, uploadOutcomeText } from "./error-text.ts";
 export * from "./errors.ts";
 export {

@@ -33,6 +33,9 @@ const RBC_CODE = {
   "port-unavailable": "outcome.portUnavailable",
   "port-busy": "outcome.portBusy",
   "backup-failed": "outcome.backupFailed",
+  "not-idle": "outcome.direct.notIdle",
+  "still-playing": "outcome.direct.stillPlaying",
+  "cannot-limp": "outcome.direct.cannotLimp",
 } as const satisfies Readonly<Record<RbcErrorCode, Key>>;
 
 /** Codes whose sentence does not say enough on its own: the person is pointed to the technical detail. */
