@@ -7,8 +7,11 @@ import { RbcNotIdleError } from "./direct-mode-errors.ts";
 import { RbcBadReplyError, RbcTimeoutError } from "./errors.ts";
 import { WIRE_BYTE_MS } from "./raw-channel.ts";
 
-/** The 0x10 request and its reply on the wire (15 + 1 bytes each way): a paced link takes at least this. */
-const ENTER_WIRE_MS = 32 * WIRE_BYTE_MS;
+/**
+ * The 0x10 request and its reply on the wire (15 + 1 bytes each way): a paced link takes at least this (less a
+ * tenth of a millisecond for the clock's grain).
+ */
+const ENTER_WIRE_MS = 32 * WIRE_BYTE_MS - 0.1;
 
 /**
  * Enters direct mode (0x10, docs/protocol.md §5) for `use`, within the caller's turn. Only when the robot is

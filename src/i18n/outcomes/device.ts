@@ -79,6 +79,11 @@ export function unexpectedText(locale: Locale): string {
   return t(locale)("outcome.unexpected");
 }
 
+/** Limp found a motion started elsewhere and ended it with 7 before making the servos limp. */
+export function limpStoppedMotionFirstText(locale: Locale): string {
+  return t(locale)("outcome.limp.stoppedMotionFirst");
+}
+
 /** "Nothing was sent." */
 export function nothingSentText(locale: Locale): string {
   return t(locale)("outcome.nothingSent");

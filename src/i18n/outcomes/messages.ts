@@ -91,6 +91,10 @@ export const deviceOutcomeMessages = defineMessages({
     en: "The robot cannot be made limp while it plays: it did not stop when asked (no answer to the 7 that ends a motion), so no servo was made limp. Hold the robot and switch it off.",
     ko: "로봇이 재생하는 동안에는 힘 빼기를 할 수 없어요: 모션을 끝내는 7에 응답하지 않아서 어떤 서보도 힘을 빼지 않았어요. 로봇을 잡고 전원을 꺼 주세요.",
   },
+  "outcome.limp.stoppedMotionFirst": {
+    en: "A motion started elsewhere was playing: it was ended with 7 first (the robot answered 07), then the servos were made limp.",
+    ko: "다른 곳에서 시작한 모션이 재생 중이었어요: 먼저 7로 끝내고(로봇이 07로 응답했어요) 서보의 힘을 뺐어요.",
+  },
   "outcome.backupFailed": {
     en: "Nothing was written: the backup of the current zeros could not be saved.",
     ko: "현재 영점의 백업을 저장하지 못해서 아무것도 쓰지 않았어요.",
