@@ -1,10 +1,11 @@
+import { codeText } from "../i18n/outcomes/device.ts";
 import { COMMANDS } from "../protocol/commands.ts";
 import { EXIT_DIRECT_MODE } from "../protocol/wck.ts";
 import type { DirectUse } from "./activity.ts";
 import { probeBusy } from "./busy-probe.ts";
 import type { ClientCore } from "./client-core.ts";
 import { RbcNotIdleError } from "./direct-mode-errors.ts";
-import { RbcBadReplyError, RbcTimeoutError } from "./errors.ts";
+import { RbcBadReplyError, RbcError, RbcTimeoutError } from "./errors.ts";
 import { WIRE_BYTE_MS } from "./raw-channel.ts";
 
 /**
@@ -105,14 +106,14 @@ async function fenceServoBus(core: ClientCore): Promise<void> {
   c.parser.reset();
   c.setState({ mode: "packet" });
   try {
-    await c.request(COMMANDS.readFirmwareVersion, undefined, { retries: 0 });
+    await c.request(COMMANDS.readFirmwareVersion, undefined);
     await c.request(COMMANDS.enterDirectMode, undefined, { retries: 0 });
   } catch (e) {
-    c.raw.endServoBus();
     await c.writeRaw(EXIT_DIRECT_MODE, "leave direct mode (blind, after no reply)").catch(() => {});
     c.parser.reset();
     if (activity.direct) activity.exitDirect();
-    throw e;
+    // Not the servo's timeout (callers take that for a silent servo): the robot itself did not answer.
+    throw e instanceof RbcTimeoutError ? new RbcError("timeout", codeText("timeout", "en"), { cause: e }) : e;
   }
   c.setState({ mode: "direct" });
 }

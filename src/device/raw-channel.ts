@@ -90,7 +90,7 @@ export class RawChannel {
   private guard: AckGuard | undefined;
   private bus: ServoBusGuard | undefined;
   /** The fault that ended the last servo-bus session, kept until direct mode is entered again. */
-  private busFault: RbcStillPlayingError | undefined;
+  private busFault: RbcError | undefined;
 
   constructor(
     private readonly clock: Clock,
@@ -205,8 +205,8 @@ export class RawChannel {
   }
 
   /**
-   * Writes `bytes` and waits for `need` reply bytes (only bytes passing `accept` count). `need` 0 writes
-   * without waiting.
+   * A servo command in direct mode (see `guardServoBus`): writes `bytes` and waits for `need` reply bytes
+   * (`need` 0 writes without waiting). Outside direct mode it is refused (`wrong-mode`), nothing written.
    */
   exchange(
     bytes: Uint8Array,
@@ -219,8 +219,7 @@ export class RawChannel {
       notBefore?: number;
     },
   ): Promise<Uint8Array> {
-    if (this.bus || this.busFault) return this.servoExchange(bytes, options);
-    return this.plainExchange(bytes, options);
+    return this.servoExchange(bytes, options);
   }
 
   /** A servo command under the servo bus's rules (see `guardServoBus`). */
@@ -229,10 +228,24 @@ export class RawChannel {
     options: { need: number; timeoutMs: number; note: string; signal?: AbortSignal },
   ): Promise<Uint8Array> {
     const bus = this.bus;
-    if (!bus || bus.fault) throw bus?.fault ?? this.busFault;
+    if (!bus || bus.fault) {
+      throw (
+        bus?.fault ??
+        this.busFault ??
+        new RbcError("wrong-mode", "Servo control needs direct mode: press “Start servo control” first.")
+      );
+    }
     if (options.signal?.aborted) throw new RbcCancelledError();
     if (bus.unsettled) {
-      await bus.host.fence();
+      try {
+        await bus.host.fence();
+      } catch (e) {
+        // Direct mode is over (the host left it): every later servo command fails the same way, unsent.
+        if (this.bus === bus) this.bus = undefined;
+        const error = e instanceof RbcError ? e : new RbcError("timeout", String(e), { cause: e });
+        this.busFault = error;
+        throw error;
+      }
       if (this.bus !== bus || bus.fault) throw bus.fault ?? this.busFault ?? new RbcCancelledError();
       bus.unsettled = false;
     }
