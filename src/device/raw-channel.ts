@@ -206,7 +206,8 @@ export class RawChannel {
 
   /**
    * A servo command in direct mode (see `guardServoBus`): writes `bytes` and waits for `need` reply bytes
-   * (`need` 0 writes without waiting). Outside direct mode it is refused (`wrong-mode`), nothing written.
+   * (`need` 0 writes without waiting). Outside direct mode it is refused (`wrong-mode`), nothing written;
+   * only a write that wants no reply goes out then (abandoning a download).
    */
   exchange(
     bytes: Uint8Array,
@@ -219,7 +220,14 @@ export class RawChannel {
       notBefore?: number;
     },
   ): Promise<Uint8Array> {
+    // A write that wants no reply outside a servo session (abandoning a download) is only a write.
+    if (options.need === 0 && !this.bus && !this.busFault) return this.plainExchange(bytes, options);
     return this.servoExchange(bytes, options);
+  }
+
+  /** What ended the last servo session early (bytes nobody asked for, a failed fence), until direct mode is new. */
+  get servoFault(): RbcError | undefined {
+    return this.busFault;
   }
 
   /** A servo command under the servo bus's rules (see `guardServoBus`). */
