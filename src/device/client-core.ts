@@ -34,7 +34,10 @@ export function createClientCore(c: RbcConnection, servos: DirectMode): ClientCo
     }),
   );
   c.stateChanges.on((state) => {
-    if (state.mode === "disconnected") activity.disconnected();
+    if (state.mode === "disconnected") {
+      c.raw.endServoBus();
+      activity.disconnected();
+    }
   });
   return { c, activity, servos, plays: new Set() };
 }

@@ -1,12 +1,22 @@
+import { codeText } from "../i18n/outcomes/device.ts";
 import { COMMANDS } from "../protocol/commands.ts";
 import { EXIT_DIRECT_MODE } from "../protocol/wck.ts";
 import type { DirectUse } from "./activity.ts";
+import { probeBusy } from "./busy-probe.ts";
 import type { ClientCore } from "./client-core.ts";
-import { RbcBadReplyError, RbcTimeoutError } from "./errors.ts";
+import { RbcNotIdleError } from "./direct-mode-errors.ts";
+import { RbcBadReplyError, RbcError, RbcTimeoutError } from "./errors.ts";
+import { WIRE_BYTE_MS } from "./raw-channel.ts";
 
 /**
- * Enters direct mode (0x10, docs/protocol.md §5) for `use`, within the caller's turn. Only from idle: the
- * activity machine refuses it while a motion, a sound or an upload is under way, before anything is sent.
+ * The 0x10 request and its reply on the wire (15 + 1 bytes each way): a paced link takes at least this (less a
+ * tenth of a millisecond for the clock's grain).
+ */
+const ENTER_WIRE_MS = 32 * WIRE_BYTE_MS - 0.1;
+
+/**
+ * Enters direct mode (0x10, docs/protocol.md §5) for `use`, within the caller's turn. Only when the robot is
+ * idle (§3.6 [decision], `requireIdleRobot`): refused before anything reaches the servo bus otherwise.
  * Already in direct mode, `use` takes it over.
  */
 export async function enterDirect(core: ClientCore, use: DirectUse): Promise<void> {
@@ -15,7 +25,8 @@ export async function enterDirect(core: ClientCore, use: DirectUse): Promise<voi
     activity.handDirect(use);
     return;
   }
-  activity.requireIdle("enterDirect");
+  await requireIdleRobot(core, use);
+  const sentAt = c.clock.now();
   try {
     await c.request(COMMANDS.enterDirectMode, undefined);
   } catch (e) {
@@ -27,17 +38,82 @@ export async function enterDirect(core: ClientCore, use: DirectUse): Promise<voi
     }
     throw e;
   }
+  startDirect(core, use, c.clock.now() - sentAt);
+}
+
+/**
+ * Direct mode only when the robot is idle (docs/protocol.md §3.6 [decision]): nothing this client started is
+ * under way (the activity machine refuses otherwise, `ActivityRefusedError`, nothing sent), and the busy probe
+ * is clean (0x12 answered at once, 0x16 within its quick time). A busy main loop (a motion started elsewhere)
+ * is recorded in the activity machine and refused with `RbcNotIdleError`; a clean probe ends an earlier `busy`.
+ */
+export async function requireIdleRobot(core: ClientCore, use: DirectUse): Promise<void> {
+  const { c, activity } = core;
+  if (activity.doing.kind !== "busy") activity.requireIdle("enterDirect");
+  const probe = await probeBusy(c);
+  if (probe.busy) {
+    if (activity.doing.kind === "idle") activity.noticeBusy("probe");
+    throw new RbcNotIdleError(use, probe.waitedMs);
+  }
+  if (activity.doing.kind === "busy") activity.busyEnded();
+}
+
+/**
+ * The robot has switched to direct mode (its `01` came after `enterMs`, or is assumed): the client and the
+ * activity machine say so, and the servo bus's rules start (`RawChannel.guardServoBus`).
+ */
+export function startDirect(core: ClientCore, use: DirectUse, enterMs: number | undefined): void {
+  const { c, activity } = core;
   c.subscription = undefined;
   activity.enterDirect(use);
   c.setState({ mode: "direct", subscription: undefined });
+  c.raw.guardServoBus({
+    paced: enterMs !== undefined && enterMs >= ENTER_WIRE_MS,
+    leave: () => leaveStillPlaying(core),
+    fence: () => fenceServoBus(core),
+  });
 }
 
 /** Leaves direct mode with the 6-byte exit sequence (no reply), within the caller's turn. */
 export async function exitDirect(core: ClientCore): Promise<void> {
   const { c, activity } = core;
   if (c.mode !== "direct") return;
+  c.raw.endServoBus();
   await c.writeRaw(EXIT_DIRECT_MODE, "leave direct mode");
   c.parser.reset();
   if (activity.direct) activity.exitDirect();
   c.setState({ mode: "packet" });
+}
+
+/** Bytes nobody asked for came from the servo bus: leave direct mode at once (the operation fails with them). */
+function leaveStillPlaying(core: ClientCore): void {
+  const { c, activity } = core;
+  c.writeRaw(EXIT_DIRECT_MODE, "leave direct mode: the robot is still playing something").catch(() => {});
+  c.parser.reset();
+  if (activity.direct) activity.exitDirect();
+  c.setState({ mode: "packet" });
+}
+
+/**
+ * Makes sure a late servo reply has arrived or never will before the next servo command (see
+ * `RawChannel.guardServoBus`): leaves direct mode, waits for a 0x12 reply (the link keeps order, so every servo
+ * byte sent before it has come, and the packet parser discarded it), and enters direct mode again. If the
+ * robot does not answer, direct mode is over and the next command is not sent.
+ */
+async function fenceServoBus(core: ClientCore): Promise<void> {
+  const { c, activity } = core;
+  await c.writeRaw(EXIT_DIRECT_MODE, "leave direct mode (a late servo reply may still come)");
+  c.parser.reset();
+  c.setState({ mode: "packet" });
+  try {
+    await c.request(COMMANDS.readFirmwareVersion, undefined);
+    await c.request(COMMANDS.enterDirectMode, undefined, { retries: 0 });
+  } catch (e) {
+    await c.writeRaw(EXIT_DIRECT_MODE, "leave direct mode (blind, after no reply)").catch(() => {});
+    c.parser.reset();
+    if (activity.direct) activity.exitDirect();
+    // Not the servo's timeout (callers take that for a silent servo): the robot itself did not answer.
+    throw e instanceof RbcTimeoutError ? new RbcError("timeout", codeText("timeout", "en"), { cause: e }) : e;
+  }
+  c.setState({ mode: "direct" });
 }

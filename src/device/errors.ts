@@ -30,7 +30,10 @@ export type RbcErrorCode =
   | "wrong-mode"
   | "port-unavailable"
   | "port-busy"
-  | "backup-failed";
+  | "backup-failed"
+  | "not-idle"
+  | "still-playing"
+  | "cannot-limp";
 
 export class RbcError extends Error {
   override name = "RbcError";

@@ -17,6 +17,7 @@ export {
 } from "./activity.ts";
 export { BOOTLOADER_PROMPTS_NEEDED } from "./bootloader-prompt.ts";
 export { DirectMode, SERVO_IDS } from "./direct-mode.ts";
+export { RbcCannotLimpError, RbcNotIdleError, RbcStillPlayingError } from "./direct-mode-errors.ts";
 export { type ErrorTextOptions, errorText, technicalDetail, uploadOutcomeText } from "./error-text.ts";
 export * from "./errors.ts";
 export {

@@ -1,22 +1,34 @@
+import { BASIC_POSTURE_MOTION } from "../protocol/catalog.ts";
 import { COMMANDS } from "../protocol/commands.ts";
 import { EXIT_DIRECT_MODE } from "../protocol/wck.ts";
+import { probeBusy } from "./busy-probe.ts";
 import type { ClientCore } from "./client-core.ts";
 import { SERVO_IDS } from "./direct-mode.ts";
-import { RbcCancelledError, RbcError, RbcNotConnectedError } from "./errors.ts";
-import { endPlayingMotion, SCENE_END_MS } from "./motion-end.ts";
+import { RbcCannotLimpError } from "./direct-mode-errors.ts";
+import { startDirect } from "./direct-switch.ts";
+import { RbcCancelledError, RbcError, RbcNotConnectedError, RbcTimeoutError } from "./errors.ts";
+import { endPlayingMotion, postureDurationMs, SCENE_END_MS } from "./motion-end.ts";
 
 /** What Limp made passive: the servo ids that confirmed and those that stayed silent. */
 export interface LimpResult {
+  /** Servos whose reply answered our own passive command (in flight, after its wire time). */
   confirmed: number[];
   silent: number[];
+  /**
+   * A motion started elsewhere was playing (the busy probe, docs/protocol.md §3.6): Limp sent 7 first and the
+   * robot answered it, ending the motion at the end of its scene, before direct mode was entered.
+   */
+  stoppedMotionFirst?: boolean;
 }
 
 /**
  * `RbcClient.limp`, the Limp under way (the activity machine joins a second press to it): makes every servo
  * passive. Tethered play stops after the frame on the wire; a motion is ended with 7 and its `07` waited for,
  * a sound waited out (the RBC takes nothing else meanwhile, docs/protocol.md §3.6); whatever is pending or
- * queued is cancelled; then direct mode is entered (for Limp) and servos 0-15 are made passive. The client
- * stays in direct mode afterwards.
+ * queued is cancelled. Direct mode only when the robot is idle (§3.6 [decision]): a motion started elsewhere
+ * (the busy probe) is ended with 7 first and its reply waited for; without that reply Limp fails with
+ * `RbcCannotLimpError` (hold the robot and switch it off) and nothing reaches the servo bus. Then direct mode
+ * is entered (for Limp) and servos 0-15 are made passive. The client stays in direct mode afterwards.
  */
 export async function runLimp(core: ClientCore): Promise<LimpResult> {
   const { c, activity, servos } = core;
@@ -30,7 +42,12 @@ export async function runLimp(core: ClientCore): Promise<LimpResult> {
     upload.abort.abort();
     activity.uploadEnded(upload.abort);
   }
-  await endPlayingMotion(core, "limp", SCENE_END_MS + c.timeouts.marginMs);
+  const ownMotion = activity.motion;
+  const end = await endPlayingMotion(core, "limp", SCENE_END_MS + c.timeouts.marginMs);
+  if (end?.outcome === "unconfirmed" && ownMotion && activity.isCurrent(ownMotion)) {
+    // No `07` in time: the motion may still drive the servo bus, where direct mode is unsafe (§3.6).
+    throw new RbcCannotLimpError(SCENE_END_MS + c.timeouts.marginMs);
+  }
   const sound = activity.sound;
   c.failPending(new RbcCancelledError("Cancelled by Limp: every servo is being made limp."));
   return c.exclusive(async () => {
@@ -40,22 +57,25 @@ export async function runLimp(core: ClientCore): Promise<LimpResult> {
     }
     if (sound) await c.sleep(Math.max(0, sound.startedAt + sound.expectedMs - c.clock.now()) + 50);
     // Direct mode only from idle: the activity machine refuses it otherwise, before anything is sent.
-    activity.requireIdle("enterDirect");
+    if (activity.doing.kind !== "busy") activity.requireIdle("enterDirect");
+    const stoppedMotionFirst = await endMotionStartedElsewhere(core);
+    const sentAt = c.clock.now();
     const entered = await c.request(COMMANDS.enterDirectMode, undefined, { retries: 1 }).then(
       () => true,
       () => false,
     );
     // Its `01` may have been lost while the RBC did switch: direct mode is assumed until shown otherwise.
-    c.subscription = undefined;
-    activity.enterDirect("limp");
-    c.setState({ mode: "direct", subscription: undefined });
-    if (entered) return servos.limpAll();
+    startDirect(core, "limp", entered ? c.clock.now() - sentAt : undefined);
+    const done = (r: { confirmed: number[]; silent: number[] }): LimpResult =>
+      stoppedMotionFirst ? { ...r, stoppedMotionFirst } : r;
+    if (entered) return done(await servos.limpAll());
     // Try one servo (in normal mode the RBC ignores the wCK bytes, which carry no header).
     const probe = await servos.limpAll([0]);
     if (probe.confirmed.length > 0) {
       const rest = await servos.limpAll(SERVO_IDS.slice(1));
-      return { confirmed: [...probe.confirmed, ...rest.confirmed], silent: rest.silent };
+      return done({ confirmed: [...probe.confirmed, ...rest.confirmed], silent: rest.silent });
     }
+    c.raw.endServoBus();
     await c.writeRaw(EXIT_DIRECT_MODE, "leave direct mode (blind)").catch(() => {});
     activity.exitDirect();
     c.setMode("packet");
@@ -64,4 +84,31 @@ export async function runLimp(core: ClientCore): Promise<LimpResult> {
       "Limp: the robot did not switch to servo control, so its servos could not be made limp. Switch the robot off.",
     );
   }, epoch);
+}
+
+/**
+ * The busy probe (docs/protocol.md §3.6); when the main loop is busy (a motion started elsewhere), 7 ends it at
+ * the end of its scene and its single reply is waited for (a motion that had just ended takes the 7 as Basic
+ * posture, whose reply comes after it). No reply in that time, or still busy afterwards: `RbcCannotLimpError`,
+ * nothing sent to the servo bus. Returns whether a motion was ended.
+ */
+async function endMotionStartedElsewhere(core: ClientCore): Promise<boolean> {
+  const { c, activity } = core;
+  const first = await probeBusy(c);
+  if (!first.busy) {
+    if (activity.doing.kind === "busy") activity.busyEnded();
+    return false;
+  }
+  if (activity.doing.kind === "idle") activity.noticeBusy("probe");
+  const waitMs = SCENE_END_MS + postureDurationMs() + c.timeouts.marginMs;
+  try {
+    await c.request(COMMANDS.runMotion, BASIC_POSTURE_MOTION, { retries: 0, timeoutMs: waitMs });
+  } catch (e) {
+    if (e instanceof RbcTimeoutError) throw new RbcCannotLimpError(waitMs);
+    throw e;
+  }
+  const after = await probeBusy(c);
+  if (after.busy) throw new RbcCannotLimpError(waitMs);
+  if (activity.doing.kind === "busy") activity.busyEnded();
+  return true;
 }

@@ -1,5 +1,11 @@
 import type { Clock } from "../shared/clock.ts";
+import { RbcStillPlayingError } from "./direct-mode-errors.ts";
 import { RbcCancelledError, RbcError, RbcTimeoutError } from "./errors.ts";
+
+/** One byte at 115200 baud, 8N1 (10 bits), in ms: 86.8 µs (docs/protocol.md §1). */
+export const WIRE_BYTE_MS = 10_000 / 115_200;
+/** Slack for the clock's grain (`performance.now()` is coarsened to 0.1 ms in some browsers). */
+const CLOCK_SLACK_MS = 0.1;
 
 interface RawWaiter {
   need: number;
@@ -32,6 +38,36 @@ export class RbcUnexpectedAckError extends RbcError {
   }
 }
 
+/** What the servo bus's rules need from direct mode (see `RawChannel.guardServoBus`). */
+export interface ServoBusHost {
+  /**
+   * The link takes wire time (a real 115200-baud line always does; an unpaced simulator delivers at once):
+   * only then is a reply sooner than its bytes take on the wire refused as early.
+   */
+  paced: boolean;
+  /** Bytes nobody asked for arrived: leave direct mode (the leave sequence). Called once, at once. */
+  leave: (fault: RbcStillPlayingError) => void;
+  /**
+   * A reply may still arrive for a command whose wait ended: make sure it has arrived or never will before the
+   * next command is written (leave direct mode, a packet request answered, enter again). Rejects when the bus
+   * cannot be made quiet; the next command is then not sent.
+   */
+  fence: () => Promise<void>;
+}
+
+/** The servo bus's state in direct mode (see `RawChannel.guardServoBus`). */
+interface ServoBusGuard {
+  host: ServoBusHost;
+  /** A command's wait ended without its whole reply: a late reply may still come. */
+  unsettled: boolean;
+  /** Bytes that came after their command's wait ended, discarded. */
+  late: number;
+  /** The first bytes nobody asked for; every later servo exchange fails with it until direct mode is new. */
+  fault: RbcStillPlayingError | undefined;
+  /** The command in flight or last written, for the messages. */
+  last: string;
+}
+
 /** The strict count of acknowledgements during a download (see `RawChannel.guardAcks`). */
 interface AckGuard {
   byte: number;
@@ -52,6 +88,9 @@ export class RawChannel {
   private buffer: number[] = [];
   private waiter: RawWaiter | undefined;
   private guard: AckGuard | undefined;
+  private bus: ServoBusGuard | undefined;
+  /** The fault that ended the last servo-bus session, kept until direct mode is entered again. */
+  private busFault: RbcError | undefined;
 
   constructor(
     private readonly clock: Clock,
@@ -63,6 +102,10 @@ export class RawChannel {
       this.receiveAcks(this.guard, bytes);
       return;
     }
+    if (this.bus) {
+      this.receiveServo(this.bus, bytes);
+      return;
+    }
     if (!this.waiter) return;
     for (const b of bytes) {
       if (this.waiter.accept && !this.waiter.accept(b)) continue;
@@ -72,6 +115,39 @@ export class RawChannel {
       const reply = Uint8Array.from(this.buffer.splice(0, this.waiter.need));
       this.waiter.resolve(reply);
     }
+  }
+
+  /**
+   * The servo bus's rules in direct mode until `endServoBus()` (docs/protocol.md §3.6 [decision]; issue 20,
+   * items 3 and 4). The wCK protocol has no sequence numbers, so:
+   * - A reply is accepted only while its command is the one in flight, and no sooner than the command's bytes
+   *   and the reply's take on the wire (on a paced link). Bytes with no command in flight, more bytes than the
+   *   reply, or bytes sooner than that are nobody's answer: the robot is still playing something (its motion
+   *   drives the bus). Direct mode is left at once (`host.leave`) and the exchange fails with
+   *   `RbcStillPlayingError`, as does every later one until direct mode is entered again.
+   * - A command whose wait ended without its whole reply (timeout, cancel) may still be answered: the bus is
+   *   unsettled. Bytes that arrive meanwhile are late and discarded, and before the next command is written the
+   *   bus is fenced (`host.fence`: leave direct mode, one packet request answered, enter again). The link keeps
+   *   order, so once the fence's packet reply has come, every servo byte sent before it has come too (the
+   *   parser discarded it) or never will: a reply can never answer a command sent after it, the same guarantee
+   *   as packet mode's fences. A fence that fails fails the command, unsent.
+   */
+  guardServoBus(host: ServoBusHost): void {
+    this.bus = { host, unsettled: false, late: 0, fault: undefined, last: "direct mode" };
+    this.busFault = undefined;
+    this.buffer = [];
+  }
+
+  /** Ends the servo bus's rules (direct mode left); returns how many late bytes were discarded. */
+  endServoBus(): { late: number } {
+    const late = this.bus?.late ?? 0;
+    this.bus = undefined;
+    return { late };
+  }
+
+  /** Whether the servo bus's rules are on (direct mode, see `guardServoBus`). */
+  get servoBus(): boolean {
+    return this.bus !== undefined;
   }
 
   /**
@@ -119,7 +195,7 @@ export class RawChannel {
     if (!guard) return Promise.reject(new Error("ackExchange outside guardAcks"));
     if (guard.fault) return Promise.reject(guard.fault);
     guard.last = options.note;
-    return this.exchange(bytes, {
+    return this.plainExchange(bytes, {
       need: 1,
       timeoutMs: options.timeoutMs,
       note: options.note,
@@ -129,10 +205,71 @@ export class RawChannel {
   }
 
   /**
-   * Writes `bytes` and waits for `need` reply bytes (only bytes passing `accept` count). `need` 0 writes
-   * without waiting.
+   * A servo command in direct mode (see `guardServoBus`): writes `bytes` and waits for `need` reply bytes
+   * (`need` 0 writes without waiting). Outside direct mode it is refused (`wrong-mode`), nothing written;
+   * only a write that wants no reply goes out then (abandoning a download).
    */
   exchange(
+    bytes: Uint8Array,
+    options: {
+      need: number;
+      timeoutMs: number;
+      note: string;
+      signal?: AbortSignal;
+      accept?: (b: number) => boolean;
+      notBefore?: number;
+    },
+  ): Promise<Uint8Array> {
+    // A write that wants no reply outside a servo session (abandoning a download) is only a write.
+    if (options.need === 0 && !this.bus && !this.busFault) return this.plainExchange(bytes, options);
+    return this.servoExchange(bytes, options);
+  }
+
+  /** What ended the last servo session early (bytes nobody asked for, a failed fence), until direct mode is new. */
+  get servoFault(): RbcError | undefined {
+    return this.busFault;
+  }
+
+  /** A servo command under the servo bus's rules (see `guardServoBus`). */
+  private async servoExchange(
+    bytes: Uint8Array,
+    options: { need: number; timeoutMs: number; note: string; signal?: AbortSignal },
+  ): Promise<Uint8Array> {
+    const bus = this.bus;
+    if (!bus || bus.fault) {
+      throw (
+        bus?.fault ??
+        this.busFault ??
+        new RbcError("wrong-mode", "Servo control needs direct mode: press “Start servo control” first.")
+      );
+    }
+    if (options.signal?.aborted) throw new RbcCancelledError();
+    if (bus.unsettled) {
+      try {
+        await bus.host.fence();
+      } catch (e) {
+        // Direct mode is over (the host left it): every later servo command fails the same way, unsent.
+        if (this.bus === bus) this.bus = undefined;
+        const error = e instanceof RbcError ? e : new RbcError("timeout", String(e), { cause: e });
+        this.busFault = error;
+        throw error;
+      }
+      if (this.bus !== bus || bus.fault) throw bus.fault ?? this.busFault ?? new RbcCancelledError();
+      bus.unsettled = false;
+    }
+    bus.last = options.note;
+    const wireMs = (bytes.length + options.need) * WIRE_BYTE_MS - CLOCK_SLACK_MS;
+    const notBefore = this.clock.now() + (bus.host.paced ? Math.max(0, wireMs) : 0);
+    try {
+      return await this.plainExchange(bytes, { ...options, notBefore });
+    } catch (e) {
+      // Its reply may still be on its way: the next command waits for the bus to be fenced.
+      if (e instanceof RbcTimeoutError || e instanceof RbcCancelledError) bus.unsettled = true;
+      throw e;
+    }
+  }
+
+  private plainExchange(
     bytes: Uint8Array,
     options: {
       need: number;
@@ -179,6 +316,37 @@ export class RawChannel {
   fail(error: RbcError): void {
     this.waiter?.reject(error);
     this.buffer = [];
+  }
+
+  private receiveServo(bus: ServoBusGuard, bytes: Uint8Array): void {
+    const waiter = this.waiter;
+    if (bus.fault) return;
+    if (!waiter) {
+      if (bus.unsettled) bus.late += bytes.length;
+      else this.unasked(bus, "unasked");
+      return;
+    }
+    if (waiter.notBefore !== undefined && this.clock.now() < waiter.notBefore) {
+      this.unasked(bus, "early");
+      return;
+    }
+    this.buffer.push(...bytes);
+    if (this.buffer.length > waiter.need) {
+      this.unasked(bus, "unasked");
+      return;
+    }
+    if (this.buffer.length === waiter.need) waiter.resolve(Uint8Array.from(this.buffer.splice(0)));
+  }
+
+  /** Bytes nobody asked for on the servo bus: direct mode ends and the exchange fails (see `guardServoBus`). */
+  private unasked(bus: ServoBusGuard, kind: RbcStillPlayingError["kind"]): void {
+    const fault = new RbcStillPlayingError(kind, bus.last);
+    bus.fault = fault;
+    this.busFault = fault;
+    this.bus = undefined;
+    this.buffer = [];
+    this.waiter?.reject(fault);
+    bus.host.leave(fault);
   }
 
   private receiveAcks(guard: AckGuard, bytes: Uint8Array): void {

@@ -18,7 +18,13 @@ import { clampPosition, MotionError, PLATFORM_PF2, playFrames } from "../motion/
 import { COMMANDS } from "../protocol/commands.ts";
 import { WCK_MAX_POSITION, wckReadStatus, wckSyncMove } from "../protocol/wck.ts";
 import { STANDARD_ZEROS } from "../protocol/zeros.ts";
-import { RbcCancelledError, RbcDisconnectedError, RbcNotConnectedError, RbcTimeoutError } from "./errors.ts";
+import {
+  RbcCancelledError,
+  RbcDisconnectedError,
+  RbcError,
+  RbcNotConnectedError,
+  RbcTimeoutError,
+} from "./errors.ts";
 import type { RbcConnection } from "./rbc-connection.ts";
 import {
   byId,
@@ -159,7 +165,8 @@ export async function runTetheredPlay(
       const due = started.at + frame.atMs;
       await waitUntil(c, due, signal);
       if (signal.aborted) return result("stopped");
-      if (c.mode !== "direct") throw linkLost(control, undefined);
+      // Direct mode ended under the play: bytes nobody asked for (the robot plays something), or the link.
+      if (c.mode !== "direct") throw c.raw.servoFault ?? linkLost(control, undefined);
       started.late = Math.max(started.late, c.clock.now() - due);
       const positions = busIds.map((id) => {
         const k = slot.get(id);
@@ -295,7 +302,9 @@ async function readPose(
       // Servo replies carry no checksum; a position above 254 can only be noise on the line.
       return reply[1]! <= WCK_MAX_POSITION ? reply[1] : undefined;
     } catch (e) {
-      if (e instanceof RbcTimeoutError) return undefined;
+      // No answer: the servo's own timeout, or the robot's to the fence after a late reply (direct mode is then
+      // over and every later read fails the same way, unsent).
+      if (e instanceof RbcError && e.code === "timeout") return undefined;
       throw e;
     }
   };

@@ -280,14 +280,21 @@ const OPS: Op[] = [
       await client.enterDirectMode();
       return client.servos.read(5);
     },
-    reply: 1,
+    // Replies 1 and 2 are the busy probe's (0x12, 0x16: direct mode only when the robot is idle, §3.6).
+    reply: 3,
     byte: 14,
-    cutAfter: 5,
+    cutAfter: 2 * REQUEST + 5,
     lateMs: Q + 50,
     penaltyMs: Q,
-    // A copy of the 0x10 reply that arrives once direct mode has begun reaches the servo bus while the servo's
-    // answer is awaited: its first bytes (FF FF) are no position, and the read is refused as a bad reply.
-    expect: { ...ONCE, "duplicate reply": "bad-reply", "unsolicited repeats": "bad-reply" },
+    // A copy of the 0x10 reply that arrives once direct mode has begun reaches the servo bus: bytes no servo
+    // command asked for, so direct mode is left and the read fails with "the robot is still playing something".
+    // So is a stray byte after it.
+    expect: {
+      ...ONCE,
+      "duplicate reply": "still-playing",
+      "unsolicited repeats": "still-playing",
+      "stray ack": "still-playing",
+    },
   },
   {
     name: "enterDirectMode + servos.read(5) (fault on the servo's answer)",
@@ -295,20 +302,20 @@ const OPS: Op[] = [
       await client.enterDirectMode();
       return client.servos.read(5);
     },
-    reply: 2,
+    reply: 4,
     byte: 1,
-    cutAfter: REQUEST + 2,
+    cutAfter: 3 * REQUEST + 2,
     lateMs: Q + 50,
     penaltyMs: Q,
     // A wCK answer is two bare bytes with no header or checksum: a corrupted byte is taken as the answer (the
-    // client cannot tell; the cell "succeeds" with a wrong value). Noise before it (FF bytes here) gives an
-    // impossible position above 254, which the client refuses as a bad reply.
-    // A duplicated answer or a stray byte after it comes with no exchange waiting and is dropped; a wCK
-    // answer has no size byte.
+    // client cannot tell; the cell "succeeds" with a wrong value). Noise before it is more bytes than the
+    // command asked for: direct mode is left and the read fails, "the robot is still playing something" (§3.6).
+    // A duplicated answer or a stray byte after it comes once the read has its answer: the read succeeds, and
+    // those bytes, which nobody asked for, end direct mode. A wCK answer has no size byte.
     expect: {
       ...ONCE,
       "corrupt a byte": "ok",
-      "garbage before header": "bad-reply",
+      "garbage before header": "still-playing",
       "corrupt size byte": "ok",
     },
   },

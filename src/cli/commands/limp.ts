@@ -1,4 +1,4 @@
-import { nothingSentText } from "../../i18n/outcomes/device.ts";
+import { limpStoppedMotionFirstText, nothingSentText } from "../../i18n/outcomes/device.ts";
 import { translator } from "../../i18n/translate.ts";
 import { noExtraArguments, parseCommand } from "../args.ts";
 import { type CommandDef, localeOf } from "../command.ts";
@@ -35,7 +35,8 @@ export const limpCommand: CommandDef = {
       if (answer === "no")
         throw new CliError("not-confirmed", said(commandMessages, "cmd.limp.notConfirmed"));
     }
-    const { confirmed, silent } = await robot.client.limp();
+    const { confirmed, silent, stoppedMotionFirst } = await robot.client.limp();
+    if (stoppedMotionFirst) env.out.line(limpStoppedMotionFirstText(locale));
     if (silent.length === 0) {
       env.out.line(t("cmd.limp.allPassive", { confirmed: String(confirmed.length) }));
     } else {
@@ -43,7 +44,12 @@ export const limpCommand: CommandDef = {
         t("cmd.limp.someSilent", { confirmed: String(confirmed.length), silent: silent.join(", ") }),
       );
     }
-    env.out.result({ ok: silent.length === 0, confirmed, silent });
+    env.out.result({
+      ok: silent.length === 0,
+      confirmed,
+      silent,
+      stoppedMotionFirst: stoppedMotionFirst === true,
+    });
     return silent.length === 0 ? EXIT.ok : EXIT.failed;
   },
 };

@@ -34,6 +34,9 @@ const RBC_CODE = {
   "port-unavailable": "outcome.portUnavailable",
   "port-busy": "outcome.portBusy",
   "backup-failed": "outcome.backupFailed",
+  "not-idle": "outcome.direct.notIdle",
+  "still-playing": "outcome.direct.stillPlaying",
+  "cannot-limp": "outcome.direct.cannotLimp",
 } as const satisfies Readonly<Record<RbcErrorCode, Key>>;
 
 /** Codes whose sentence does not say enough on its own: the person is pointed to the technical detail. */
@@ -75,6 +78,11 @@ export function seeDetailText(locale: Locale): string {
 /** "Something unexpected went wrong." */
 export function unexpectedText(locale: Locale): string {
   return t(locale)("outcome.unexpected");
+}
+
+/** Limp found a motion started elsewhere and ended it with 7 before making the servos limp. */
+export function limpStoppedMotionFirstText(locale: Locale): string {
+  return t(locale)("outcome.limp.stoppedMotionFirst");
 }
 
 /** "Nothing was sent." */

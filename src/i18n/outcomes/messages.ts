@@ -95,6 +95,22 @@ export const deviceOutcomeMessages = defineMessages({
     en: "Bytes could not be written to the port. Check the cable, then connect again.",
     ko: "포트에 데이터를 쓰지 못했어요. 케이블을 확인한 뒤 다시 연결해 주세요.",
   },
+  "outcome.direct.notIdle": {
+    en: "Not started: the robot is busy, probably playing a motion started elsewhere (it answers, but its sensor reply waits for the motion to end). Servo control needs the robot idle: press Stop (the motion ends at the end of its scene) or wait until it ends. Nothing was sent to the servos.",
+    ko: "시작하지 않았어요: 로봇이 바빠요. 다른 곳에서 시작한 모션을 재생하고 있는 것 같아요(로봇은 응답하지만 센서 응답은 모션이 끝날 때까지 기다려요). 서보 제어는 로봇이 쉬고 있을 때만 할 수 있어요: 정지를 누르거나(모션은 지금 장면이 끝날 때 멈춰요) 끝날 때까지 기다려 주세요. 서보에는 아무것도 보내지 않았어요.",
+  },
+  "outcome.direct.stillPlaying": {
+    en: "The robot is still playing something: bytes came from the servo bus that no servo command asked for. Direct mode was left and nothing more was sent; what those servos did is not known. Press Stop or wait until the motion ends, then try again.",
+    ko: "로봇이 아직 무언가를 재생하고 있어요: 어떤 서보 명령도 요청하지 않은 바이트가 서보 버스에서 왔어요. 직접 모드를 나왔고 더는 보내지 않았어요. 그 서보들이 어떻게 했는지는 알 수 없어요. 정지를 누르거나 모션이 끝날 때까지 기다린 뒤 다시 해 보세요.",
+  },
+  "outcome.direct.cannotLimp": {
+    en: "The robot cannot be made limp while it plays: it did not stop when asked (no answer to the 7 that ends a motion), so no servo was made limp. Hold the robot and switch it off.",
+    ko: "로봇이 재생하는 동안에는 힘 빼기를 할 수 없어요: 모션을 끝내는 7에 응답하지 않아서 어떤 서보도 힘을 빼지 않았어요. 로봇을 잡고 전원을 꺼 주세요.",
+  },
+  "outcome.limp.stoppedMotionFirst": {
+    en: "A motion started elsewhere was playing: it was ended with 7 first (the robot answered 07), then the servos were made limp.",
+    ko: "다른 곳에서 시작한 모션이 재생 중이었어요: 먼저 7로 끝내고(로봇이 07로 응답했어요) 서보의 힘을 뺐어요.",
+  },
   "outcome.backupFailed": {
     en: "Nothing was written: the backup of the current zeros could not be saved.",
     ko: "현재 영점의 백업을 저장하지 못해서 아무것도 쓰지 않았어요.",
