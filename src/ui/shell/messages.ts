@@ -25,7 +25,6 @@ export const shellMessages = defineMessages({
   },
   "shell.tryAgain": { en: "Try again", ko: "다시 시도" },
   "shell.technicalDetail": { en: "Technical detail", ko: "기술 정보" },
-  "shell.dismiss": { en: "Dismiss", ko: "닫기" },
   "shell.bytesFree": {
     en: "{free} of {size} bytes free",
     ko: "{size}바이트 중 {free}바이트 남음",

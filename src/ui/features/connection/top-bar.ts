@@ -130,7 +130,7 @@ function stopResult(ctx: ViewContext): TemplateResult {
             }
           </div>
           <button type="button" class="btn btn--quiet" @click=${() => dismissStopNotice(ctx)}>
-            ${t("shell.dismiss")}
+            ${translator(connectionMessages, locale)("connection.dismiss")}
           </button>
         </div>`
       : nothing
