@@ -15,6 +15,7 @@ export {
   type Stop7Sender,
   type UploadActivity,
 } from "./activity.ts";
+export type { ProbeResult } from "./busy-probe.ts";
 export { DirectMode, SERVO_IDS } from "./direct-mode.ts";
 export { type ErrorTextOptions, errorText, technicalDetail, uploadOutcomeText } from "./error-text.ts";
 export * from "./errors.ts";
@@ -31,6 +32,7 @@ export {
   updateFirmware,
 } from "./firmware-update.ts";
 export type { MotionEndOutcome } from "./motion-end.ts";
+export type { RunMotionOptions } from "./motion-run.ts";
 export {
   type FileUploadOptions,
   type FileUploadResult,
@@ -53,6 +55,18 @@ export {
   RoundTripEstimator,
   type RoundTripLimits,
 } from "./round-trip.ts";
+export {
+  builtInDurationMs,
+  HAZARDOUS_MOTIONS,
+  isHazardousMotion,
+  judgeRun,
+  type NoReplyCause,
+  RUN_DURATION_TOLERANCE,
+  type RunBefore,
+  type RunNoReply,
+  type RunReport,
+  type RunVerdict,
+} from "./run-outcome.ts";
 export {
   frameLabel,
   TetheredPlayError,
