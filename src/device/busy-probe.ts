@@ -1,6 +1,6 @@
 import { COMMANDS, type CommandSpec } from "../protocol/commands.ts";
 import type { ClientCore } from "./client-core.ts";
-import { RbcBusyError, RbcTimeoutError } from "./errors.ts";
+import { RbcBadReplyError, RbcBusyError, RbcTimeoutError } from "./errors.ts";
 
 /**
  * Busy, not gone (docs/protocol.md §3.6 [decision]): the RBC answers 0x11/0x12 from its receive interrupt, at
@@ -14,24 +14,18 @@ import { RbcBusyError, RbcTimeoutError } from "./errors.ts";
 export type ProbeResult = "idle" | "busy";
 
 /**
- * The busy probe: 0x16 within the quick time (idle), else 0x12 (busy when it is answered). Rejects with the
- * 0x12's `RbcTimeoutError` when neither is answered: then the link (or the robot) is gone, not busy.
+ * The busy probe: a distance read (`readMainLoop`): answered, the main loop is free (`idle`); unanswered twice
+ * while the firmware version is answered at once, `busy`. Rejects with a timeout when nothing answers: then
+ * the link (or the robot) is gone, not busy.
  */
 export async function probeBusy(core: ClientCore): Promise<ProbeResult> {
-  const { c } = core;
-  const type = COMMANDS.readDistance.type;
-  const sentAt = c.clock.now();
   try {
-    await c.request(COMMANDS.readDistance, undefined, { retries: 0 });
+    await readMainLoop(core, COMMANDS.readDistance);
     return "idle";
   } catch (e) {
-    if (!(e instanceof RbcTimeoutError)) throw e;
+    if (e instanceof RbcBusyError) return "busy";
+    throw e;
   }
-  // Its main loop answered after the 0x16 was written, so it is free: that reply alone was lost.
-  if (c.mainLoopAnsweredSince(type, sentAt)) return "idle";
-  await c.request(COMMANDS.readFirmwareVersion, undefined, { retries: 0 });
-  noticeBusy(core);
-  return "busy";
 }
 
 /** Records a motion started elsewhere in the activity machine, when the client itself is doing nothing. */
@@ -40,26 +34,42 @@ export function noticeBusy(core: ClientCore): void {
 }
 
 /**
- * A read of a main-loop type (0x16) that says "busy" rather than blaming the link when it goes unanswered
- * while 0x12 is answered (`RbcBusyError`). No retries: each unanswered 0x16 would owe one more reply. Must run
- * inside `exclusive`.
+ * A read of a main-loop type (0x16) that says "busy" rather than blaming the link (`RbcBusyError`, docs/protocol.md
+ * §3.6). A reply that came damaged (a garbled or partial frame) is retried as any idempotent read is. Silence is
+ * told apart with 0x12, answered from the receive interrupt: unanswered too, the link is gone (the 0x16's
+ * timeout); answered, the 0x16 is asked once more (a merely late reply is then paid off by count and the new
+ * one read), and a second silence means busy. Each silent 0x16 owes the robot's late reply, which the
+ * connection discards when it comes. Must run inside `exclusive`.
  */
 export async function readMainLoop<R>(core: ClientCore, spec: CommandSpec<undefined, R>): Promise<R> {
   const { c } = core;
-  const sentAt = c.clock.now();
-  try {
-    return await c.request(spec, undefined, { retries: 0 });
-  } catch (e) {
-    if (!(e instanceof RbcTimeoutError)) throw e;
-    if (c.mainLoopAnsweredSince(spec.type, sentAt)) throw e;
+  let silences = 0;
+  for (let attempt = 0; ; attempt++) {
+    const sentAt = c.clock.now();
     try {
-      await c.request(COMMANDS.readFirmwareVersion, undefined, { retries: 0 });
-    } catch (e2) {
-      // Neither answered: the link or the robot is gone, and the first timeout says so.
-      if (e2 instanceof RbcTimeoutError) throw e;
-      throw e2;
+      return await c.request(spec, undefined, { retries: 0 });
+    } catch (e) {
+      const damaged =
+        e instanceof RbcBadReplyError ||
+        (e instanceof RbcTimeoutError && c.mainLoopAnsweredSince(spec.type, sentAt));
+      if (!(e instanceof RbcTimeoutError) && !damaged) throw e;
+      if (damaged) {
+        if (attempt < c.retries) continue;
+        throw e;
+      }
+      const waitedMs = (e as RbcTimeoutError).waitedMs;
+      try {
+        await c.request(COMMANDS.readFirmwareVersion, undefined, { retries: 0 });
+      } catch (e2) {
+        // Neither answered: the link or the robot is gone, and the first timeout says so.
+        if (e2 instanceof RbcTimeoutError) throw e;
+        throw e2;
+      }
+      silences++;
+      if (silences >= 2) {
+        noticeBusy(core);
+        throw new RbcBusyError(spec.name, waitedMs);
+      }
     }
-    noticeBusy(core);
-    throw new RbcBusyError(spec.name, e.waitedMs);
   }
 }

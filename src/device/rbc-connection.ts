@@ -114,6 +114,10 @@ export class RbcConnection {
    * interrupt-answered type proves nothing about them. `paidAt` is when the last debt was paid.
    */
   private readonly owed = new Map<number, { count: number; since: number; paidAt?: number }>();
+  /** When the parser last discarded bytes (a garbled frame): something answered, damaged. */
+  private lastDiscardAt = Number.NEGATIVE_INFINITY;
+  /** When a request's wait last ended with bytes of a partial or garbled frame. */
+  private garbledAt = Number.NEGATIVE_INFINITY;
   /** Told about every reply the RBC's main loop sent (0x14, 0x16): the main loop is free at that moment. */
   mainLoopAnswered: ((type: number) => void) | undefined;
   /** Replies no request took: late ones (discarded after a fence or a timeout) and unasked repeats. */
@@ -137,8 +141,10 @@ export class RbcConnection {
     );
     this.retries = options.retries ?? 2;
     this.parser = new PacketParser({
-      onDiscard: (reason, bytes) =>
-        this.emitLog({ direction: "in", kind: "discard", name: reason, bytes, note: `discarded: ${reason}` }),
+      onDiscard: (reason, bytes) => {
+        this.lastDiscardAt = this.clock.now();
+        this.emitLog({ direction: "in", kind: "discard", name: reason, bytes, note: `discarded: ${reason}` });
+      },
       // No reply carries more than its type can (docs/protocol.md §3.5): a corrupted size byte costs one reply.
       maxContent: (type) => COMMAND_BY_TYPE.get(type)?.replySize ?? MAX_REPLY_CONTENT,
     });
@@ -388,9 +394,12 @@ export class RbcConnection {
       timer = this.clock.setTimeout(() => {
         this.stats.timeouts++;
         if (quick) this.roundTrip.timedOut();
+        // Bytes came but no whole reply (a partial or garbled frame): the reply came damaged, it is not late.
+        const garbled = sentAt !== undefined && (this.parser.pending > 0 || this.lastDiscardAt >= sentAt);
         // A partial frame is not this reply's any more; the reply itself may still come later.
         this.parser.reset();
-        if (send) this.expectLate(type, sentAt);
+        if (send && !(garbled && MAIN_LOOP_REPLY_TYPES.has(type))) this.expectLate(type, sentAt);
+        if (garbled && sentAt !== undefined) this.garbledAt = this.clock.now();
         waiter.reject(new RbcTimeoutError(name, timeoutMs));
       }, timeoutMs);
       if (send) {
@@ -422,10 +431,14 @@ export class RbcConnection {
     if (COMMAND_BY_TYPE.get(type)?.timeout === "quick") this.suspect.add(type);
   }
 
-  /** Whether the main loop sent a reply of `type` at or after `since` (a debt paid): it was free then. */
+  /**
+   * Whether an answer to a request of `type` written at `since` came, but not whole or not as this request's:
+   * the main loop sent a reply of `type` after it (a debt paid: it was free then), or a frame arrived garbled
+   * before its timeout. Either way the robot is not busy: the reply was damaged or lost.
+   */
   mainLoopAnsweredSince(type: number, since: number): boolean {
     const paidAt = this.owed.get(type)?.paidAt;
-    return paidAt !== undefined && paidAt >= since;
+    return (paidAt !== undefined && paidAt >= since) || this.garbledAt >= since;
   }
 
   /** How many replies of main-loop type `type` are owed to requests no one waits for (docs/protocol.md §3.6). */
