@@ -11,10 +11,21 @@ import {
   uploadOutcomeText,
   zerosBackupKeptText,
 } from "../i18n/outcomes/device.ts";
+import {
+  busyReadText,
+  noMemoryReadText,
+  runNoReplyText,
+  runReportText,
+  stopNoReplyText,
+} from "../i18n/outcomes/run-words.ts";
 import { LinkError } from "../link/transport.ts";
 import {
+  RbcBusyError,
   RbcError,
   RbcInvalidArgumentError,
+  RbcNotSupportedError,
+  RbcRunNoReplyError,
+  RbcRunNotPlayedError,
   RbcTimeoutError,
   RbcUploadError,
   ZeroWriteFailedError,
@@ -54,6 +65,12 @@ function fromFacts(e: unknown, locale: Locale, hint: string): string {
     return `${fromFacts(e.reason, locale, hint)} ${zerosBackupKeptText(e.backupName, locale)}`;
   }
   if (e instanceof RbcTimeoutError) return timeoutText(e.command, e.waitedMs, locale);
+  if (e instanceof RbcBusyError) return busyReadText(e.command, e.waitedMs, locale);
+  if (e instanceof RbcRunNotPlayedError) return runReportText(e.report, locale) ?? said(e);
+  if (e instanceof RbcRunNoReplyError) {
+    return e.stop ? stopNoReplyText(e.facts, locale) : runNoReplyText(e.facts, locale);
+  }
+  if (e instanceof RbcNotSupportedError) return noMemoryReadText(locale);
   if (e instanceof RbcInvalidArgumentError) return `${said(e)} ${nothingSentText(locale)}`;
   if (e instanceof RbcError) return said(e);
   if (e instanceof LinkError) return linkCodeText(e.code, locale);

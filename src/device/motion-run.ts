@@ -67,7 +67,10 @@ export async function runMotionReport(
     if (epoch !== c.epoch) throw new RbcCancelledError(`Motion ${motion} was not started: Stop came first.`);
     c.requirePacketMode(COMMANDS.runMotion.name);
     const sent7Before = runs.sent7;
-    const started = activity.startMotion(motion, expectedMs);
+    // Busy before: the reply comes when the motion started elsewhere ends, which may take any time.
+    const waitMs =
+      activity.doing.kind === "busy" ? Math.max(expectedMs, c.timeouts.unknownMotionMs) : expectedMs;
+    const started = activity.startMotion(motion, waitMs);
     if (motion === BASIC_POSTURE_MOTION) runs.sent7 = true;
     const watch =
       slot !== undefined && codeBefore !== undefined && codeBefore !== EMPTY_SLOT_ERROR
@@ -76,7 +79,7 @@ export async function runMotionReport(
     const sentAt = c.clock.now();
     try {
       const n = await c.request(COMMANDS.runMotion, motion, {
-        expectedMs,
+        expectedMs: waitMs,
         signal: options.signal,
         // Once 7 was sent to end it, the robot's `07` is this Run's answer (the motion's own never comes).
         accept: (p) =>
@@ -101,7 +104,7 @@ export async function runMotionReport(
         );
       }
       if (e instanceof RbcTimeoutError && epoch === c.epoch) {
-        const facts = await whatIsKnown(core, motion, expectedMs, e.waitedMs, !sent7Before);
+        const facts = await whatIsKnown(core, motion, waitMs, e.waitedMs, !sent7Before);
         throw new RbcRunNoReplyError(facts, false, e);
       }
       throw e;

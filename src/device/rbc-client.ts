@@ -11,7 +11,7 @@ import { type ClientCore, createClientCore } from "./client-core.ts";
 import { stoppableUpload } from "./client-uploads.ts";
 import { DirectMode } from "./direct-mode.ts";
 import { enterDirect, exitDirect } from "./direct-switch.ts";
-import { RbcBadReplyError, RbcTimeoutError } from "./errors.ts";
+import { RbcBadReplyError, RbcNotSupportedError, RbcTimeoutError } from "./errors.ts";
 import {
   connectionFirmwareIo,
   type FirmwareUpdateOptions,
@@ -19,6 +19,7 @@ import {
   updateFirmware,
 } from "./firmware-update.ts";
 import { type LimpResult, runLimp } from "./limp.ts";
+import { readFreeMemory } from "./memory-read.ts";
 import { type RunMotionOptions, runMotion, runMotionReport, stopMotion } from "./motion-run.ts";
 import {
   type FileUploadOptions,
@@ -184,6 +185,19 @@ export class RbcClient {
 
   readAvailableMemory(area: MemoryArea): Promise<number> {
     return this.#c.command(COMMANDS.readAvailableMemory, area);
+  }
+
+  /**
+   * 0x0F where a firmware may not answer it (docs/protocol.md §3.5): the free bytes, or undefined when the robot
+   * answers the firmware version but never 0x0F ("not reported"). A lost link still rejects with the timeout.
+   */
+  readFreeMemory(area: MemoryArea): Promise<number | undefined> {
+    return this.#c.exclusive(() =>
+      readFreeMemory(this.#c, area).catch((e: unknown) => {
+        if (e instanceof RbcNotSupportedError) return undefined;
+        throw e;
+      }),
+    );
   }
 
   async readErrorCode(): Promise<number> {

@@ -75,7 +75,7 @@ export const runOutcomeMessages = defineMessages({
     ko: "이 로봇의 펌웨어는 이 요청을 지원하지 않아요.",
   },
   "outcome.noMemoryRead": {
-    en: "This robot's firmware does not report its free memory (it does not answer 0x0F), so an upload cannot be checked and is refused. Nothing was sent.",
-    ko: "이 로봇의 펌웨어는 남은 메모리를 알려 주지 않아요 (0x0F에 응답하지 않아요). 그래서 업로드를 확인할 수 없어 거부했어요. 아무것도 보내지 않았어요.",
+    en: "This robot's firmware does not report its free memory (it does not answer 0x0F), so an upload cannot be checked and is refused. No byte of the file was sent.",
+    ko: "이 로봇의 펌웨어는 남은 메모리를 알려 주지 않아요 (0x0F에 응답하지 않아요). 그래서 업로드를 확인할 수 없어 거부했어요. 파일은 한 바이트도 보내지 않았어요.",
   },
 });
