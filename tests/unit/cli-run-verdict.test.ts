@@ -92,6 +92,16 @@ describe.concurrent("rbc and a robot that may be busy", () => {
     );
   });
 
+  it("item 6: servos silent: rbc stop reads error 11 and says so after 'did not confirm'", {
+    timeout: T,
+  }, async () => {
+    const r = await rbc(["stop", "--demo"], "--servos-silent");
+    expect(r.code).toBe(1);
+    expect(r.stderr).toContain(
+      "Sent 7, but the robot did not confirm with 07. If it still moves, hold it (`rbc limp` makes every servo passive). The robot reports error 11: a servo does not answer: check the servo cables and the battery.",
+    );
+  });
+
   it("item 7: rbc info without 0x0F: free memory not reported, exit 0", { timeout: T }, async () => {
     const r = await rbc(["info", "--demo"], "--no-memory-read");
     expect(r.code, r.stderr).toBe(0);

@@ -46,7 +46,8 @@ export function stopNoReplyText(facts: RunNoReply, locale: Locale): string {
   return `${lead} ${noReplyCauseText(facts, locale)}`;
 }
 
-function noReplyCauseText(facts: RunNoReply, locale: Locale): string {
+/** What the error code and the busy probe showed after a Run or Stop went unanswered. */
+export function noReplyCauseText(facts: RunNoReply, locale: Locale): string {
   switch (facts.cause) {
     case "servo-silent":
       return t(locale)("outcome.run.servoSilent");
