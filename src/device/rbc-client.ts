@@ -326,6 +326,8 @@ export class RbcClient {
         } finally {
           this.#c.parser.reset();
           this.#c.subscription = undefined;
+          // A restarted RBC ignores every motion until 7 has run again (docs/protocol.md §3.1).
+          this.#core.runs.sent7 = false;
           this.#c.setState({
             basicPostureConfirmed: false,
             subscription: undefined,
