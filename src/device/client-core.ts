@@ -14,6 +14,15 @@ export interface ClientCore {
   readonly servos: DirectMode;
   /** Tethered plays under way or queued, for Stop and Limp to end. */
   readonly plays: Set<TetheredPlayControl>;
+  /** What this connection's Runs and uploads taught (docs/protocol.md §3.1). */
+  readonly runs: RunMemory;
+}
+
+export interface RunMemory {
+  /** Motion 7 was sent in this connection: a Run with no reply is never blamed on the power-up rule. */
+  sent7: boolean;
+  /** Durations (ms) recorded at upload, by Run Motion number. */
+  readonly durations: Map<number, number>;
 }
 
 /**
@@ -33,11 +42,18 @@ export function createClientCore(c: RbcConnection, servos: DirectMode): ClientCo
           : undefined,
     }),
   );
+  const runs: RunMemory = { sent7: false, durations: new Map() };
   c.stateChanges.on((state) => {
     if (state.mode === "disconnected") {
       c.raw.endServoBus();
       activity.disconnected();
+      runs.sent7 = false;
+      runs.durations.clear();
     }
   });
-  return { c, activity, servos, plays: new Set() };
+  // A reply from the main loop (a motion's end, a distance) means the motion started elsewhere has ended.
+  c.mainLoopAnswered = () => {
+    if (activity.doing.kind === "busy") activity.busyEnded();
+  };
+  return { c, activity, servos, plays: new Set(), runs };
 }

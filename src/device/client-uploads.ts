@@ -1,6 +1,7 @@
 import { COMMANDS } from "../protocol/commands.ts";
 import type { ClientCore } from "./client-core.ts";
 import { RbcCancelledError } from "./errors.ts";
+import { readFreeMemory } from "./memory-read.ts";
 import type { UploadHost } from "./motion-upload.ts";
 import { uploadFile } from "./upload.ts";
 
@@ -36,6 +37,7 @@ function uploadHost(core: ClientCore, abort: AbortController): UploadHost {
       }
     });
   return {
+    readFreeMemory: (area) => turn(() => readFreeMemory(c, area)),
     resetMemoryPointer: (area) => turn(() => c.request(COMMANDS.resetMemoryPointer, area)),
     upload: (area, bytes, options) =>
       turn(

@@ -50,11 +50,8 @@ export async function enterDirect(core: ClientCore, use: DirectUse): Promise<voi
 export async function requireIdleRobot(core: ClientCore, use: DirectUse): Promise<void> {
   const { c, activity } = core;
   if (activity.doing.kind !== "busy") activity.requireIdle("enterDirect");
-  const probe = await probeBusy(c);
-  if (probe.busy) {
-    if (activity.doing.kind === "idle") activity.noticeBusy("probe");
-    throw new RbcNotIdleError(use, probe.waitedMs);
-  }
+  // A busy main loop is recorded in the activity machine by the probe itself.
+  if ((await probeBusy(core)) === "busy") throw new RbcNotIdleError(use, c.timeouts.quickMs);
   if (activity.doing.kind === "busy") activity.busyEnded();
 }
 

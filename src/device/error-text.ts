@@ -13,11 +13,22 @@ import {
   uploadOutcomeText,
   zerosBackupKeptText,
 } from "../i18n/outcomes/device.ts";
+import {
+  busyReadText,
+  noMemoryReadText,
+  runNoReplyText,
+  runReportText,
+  stopNoReplyText,
+} from "../i18n/outcomes/run-words.ts";
 import { LinkError } from "../link/transport.ts";
 import {
+  RbcBusyError,
   RbcError,
   RbcInBootloaderError,
   RbcInvalidArgumentError,
+  RbcNotSupportedError,
+  RbcRunNoReplyError,
+  RbcRunNotPlayedError,
   RbcTimeoutError,
   RbcUploadError,
   ZeroWriteFailedError,
@@ -60,6 +71,12 @@ function fromFacts(e: unknown, locale: Locale, hint: string): string {
   if (e instanceof RbcInBootloaderError) {
     return `${inBootloaderText(e.facts.prompts, locale)} ${inBootloaderRecoverText(locale)}`;
   }
+  if (e instanceof RbcBusyError) return busyReadText(e.command, e.waitedMs, locale);
+  if (e instanceof RbcRunNotPlayedError) return runReportText(e.report, locale) ?? said(e);
+  if (e instanceof RbcRunNoReplyError) {
+    return e.stop ? stopNoReplyText(e.facts, locale) : runNoReplyText(e.facts, locale);
+  }
+  if (e instanceof RbcNotSupportedError) return noMemoryReadText(locale);
   if (e instanceof RbcInvalidArgumentError) return `${said(e)} ${nothingSentText(locale)}`;
   if (e instanceof RbcError) return said(e);
   if (e instanceof LinkError) return linkCodeText(e.code, locale);

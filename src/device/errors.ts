@@ -6,6 +6,14 @@ import {
   zerosBackupFailedText,
   zerosBackupKeptText,
 } from "../i18n/outcomes/device.ts";
+import {
+  busyReadText,
+  noMemoryReadText,
+  runNoReplyText,
+  runReportText,
+  stopNoReplyText,
+} from "../i18n/outcomes/run-words.ts";
+import type { RunNoReply, RunReport } from "./run-outcome.ts";
 
 /**
  * Failures of RBC operations, as typed errors with a stable `code`, the facts a person needs (fields), and a
@@ -33,7 +41,11 @@ export type RbcErrorCode =
   | "backup-failed"
   | "not-idle"
   | "still-playing"
-  | "cannot-limp";
+  | "cannot-limp"
+  | "busy"
+  | "not-played"
+  | "servo-silent"
+  | "not-supported";
 
 export class RbcError extends Error {
   override name = "RbcError";
@@ -203,5 +215,60 @@ export class ZeroWriteFailedError extends RbcError {
     readonly backupName: string,
   ) {
     super(reason.code, `${reason.message} ${zerosBackupKeptText(backupName, "en")}`, { cause: reason });
+  }
+}
+
+/**
+ * A read answered by the RBC's main loop (0x16) went unanswered while the firmware version (0x12, answered from
+ * the receive interrupt) was answered at once: the robot is busy, not gone (docs/protocol.md §3.6). Its reply
+ * is owed and comes when the motion ends; it is then discarded, never taken as a later request's answer.
+ */
+export class RbcBusyError extends RbcError {
+  override name = "RbcBusyError";
+  constructor(
+    readonly command: string,
+    readonly waitedMs: number,
+  ) {
+    super("busy", busyReadText(command, waitedMs, "en"));
+  }
+}
+
+/** A Run's reply came, but it does not prove that the motion played (docs/protocol.md §3.1): `report` says why. */
+export class RbcRunNotPlayedError extends RbcError {
+  override name = "RbcRunNotPlayedError";
+  constructor(readonly report: RunReport) {
+    super("not-played", runReportText(report, "en") ?? "");
+  }
+}
+
+/**
+ * A Run (or the 7 of a Stop) had no reply in its time: what the error code and the busy probe showed after the
+ * wait (`facts.cause`). Its code: `servo-silent` (error 11), `busy`, `motion-ignored` (no 7 has run in this
+ * connection), else `timeout`.
+ */
+export class RbcRunNoReplyError extends RbcError {
+  override name = "RbcRunNoReplyError";
+  constructor(
+    readonly facts: RunNoReply,
+    readonly stop = false,
+    cause?: unknown,
+  ) {
+    const code =
+      facts.cause === "servo-silent"
+        ? "servo-silent"
+        : facts.cause === "busy"
+          ? "busy"
+          : facts.cause === "power-up"
+            ? "motion-ignored"
+            : "timeout";
+    super(code, stop ? stopNoReplyText(facts, "en") : runNoReplyText(facts, "en"), { cause });
+  }
+}
+
+/** The firmware does not answer a request an operation needs (docs/protocol.md §3.5); nothing was sent. */
+export class RbcNotSupportedError extends RbcError {
+  override name = "RbcNotSupportedError";
+  constructor(readonly command: string) {
+    super("not-supported", noMemoryReadText("en"));
   }
 }

@@ -16,6 +16,7 @@ export {
   type UploadActivity,
 } from "./activity.ts";
 export { BOOTLOADER_PROMPTS_NEEDED } from "./bootloader-prompt.ts";
+export type { ProbeResult } from "./busy-probe.ts";
 export { DirectMode, SERVO_IDS } from "./direct-mode.ts";
 export { RbcCannotLimpError, RbcNotIdleError, RbcStillPlayingError } from "./direct-mode-errors.ts";
 export { type ErrorTextOptions, errorText, technicalDetail, uploadOutcomeText } from "./error-text.ts";
@@ -33,6 +34,7 @@ export {
   updateFirmware,
 } from "./firmware-update.ts";
 export type { MotionEndOutcome } from "./motion-end.ts";
+export type { RunMotionOptions } from "./motion-run.ts";
 export {
   type FileUploadOptions,
   type FileUploadResult,
@@ -55,6 +57,18 @@ export {
   RoundTripEstimator,
   type RoundTripLimits,
 } from "./round-trip.ts";
+export {
+  builtInDurationMs,
+  HAZARDOUS_MOTIONS,
+  isHazardousMotion,
+  judgeRun,
+  type NoReplyCause,
+  RUN_DURATION_TOLERANCE,
+  type RunBefore,
+  type RunNoReply,
+  type RunReport,
+  type RunVerdict,
+} from "./run-outcome.ts";
 export {
   frameLabel,
   TetheredPlayError,

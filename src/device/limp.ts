@@ -94,12 +94,10 @@ export async function runLimp(core: ClientCore): Promise<LimpResult> {
  */
 async function endMotionStartedElsewhere(core: ClientCore): Promise<boolean> {
   const { c, activity } = core;
-  const first = await probeBusy(c);
-  if (!first.busy) {
+  if ((await probeBusy(core)) === "idle") {
     if (activity.doing.kind === "busy") activity.busyEnded();
     return false;
   }
-  if (activity.doing.kind === "idle") activity.noticeBusy("probe");
   const waitMs = SCENE_END_MS + postureDurationMs() + c.timeouts.marginMs;
   try {
     await c.request(COMMANDS.runMotion, BASIC_POSTURE_MOTION, { retries: 0, timeoutMs: waitMs });
@@ -107,8 +105,7 @@ async function endMotionStartedElsewhere(core: ClientCore): Promise<boolean> {
     if (e instanceof RbcTimeoutError) throw new RbcCannotLimpError(waitMs);
     throw e;
   }
-  const after = await probeBusy(c);
-  if (after.busy) throw new RbcCannotLimpError(waitMs);
+  if ((await probeBusy(core)) === "busy") throw new RbcCannotLimpError(waitMs);
   if (activity.doing.kind === "busy") activity.busyEnded();
   return true;
 }

@@ -41,6 +41,8 @@ export interface FileUploadResult extends UploadResult {
 
 /** What `RbcClient.uploadMotion` needs from the client: the two requests around the download. */
 export interface UploadHost {
+  /** Reads the free memory; `RbcNotSupportedError` when the firmware does not answer 0x0F (memory-read.ts). */
+  readFreeMemory(area: MemoryArea): Promise<number>;
   resetMemoryPointer(area: MemoryArea): Promise<number>;
   upload(area: MemoryArea, bytes: Uint8Array, options: UploadOptions): Promise<UploadResult>;
 }
@@ -73,6 +75,8 @@ export async function uploadFileTo(
 ): Promise<FileUploadResult> {
   const { resetFirst = false, onPhase, ...rest } = options;
   if (resetFirst) {
+    // Without 0x0F the upload cannot be checked: refused before the reset forgets anything (§3.5).
+    await host.readFreeMemory(area);
     onPhase?.("resetting");
     await host.resetMemoryPointer(area);
   }

@@ -2,15 +2,16 @@ import type { Transport } from "../link/transport.ts";
 import type { Motion } from "../motion/index.ts";
 import { COMMANDS, type MemoryArea } from "../protocol/commands.ts";
 import { type IntelHexImage, parseIntelHex } from "../protocol/intel-hex.ts";
-import type { RbmMotion } from "../protocol/rbm.ts";
+import { motionDurationMs, type RbmMotion } from "../protocol/rbm.ts";
 import type { Clock } from "../shared/clock.ts";
 import type { Emitter } from "../shared/emitter.ts";
 import type { ActivitySnapshot, DirectUse } from "./activity.ts";
+import { type ProbeResult, probeBusy, readMainLoop } from "./busy-probe.ts";
 import { type ClientCore, createClientCore } from "./client-core.ts";
 import { stoppableUpload } from "./client-uploads.ts";
 import { DirectMode } from "./direct-mode.ts";
 import { enterDirect, exitDirect } from "./direct-switch.ts";
-import { RbcBadReplyError, RbcTimeoutError } from "./errors.ts";
+import { RbcBadReplyError, RbcNotSupportedError, RbcTimeoutError } from "./errors.ts";
 import {
   connectionFirmwareIo,
   type FirmwareUpdateOptions,
@@ -18,7 +19,8 @@ import {
   updateFirmware,
 } from "./firmware-update.ts";
 import { type LimpResult, runLimp } from "./limp.ts";
-import { runMotion, stopMotion } from "./motion-run.ts";
+import { readFreeMemory } from "./memory-read.ts";
+import { type RunMotionOptions, runMotion, runMotionReport, stopMotion } from "./motion-run.ts";
 import {
   type FileUploadOptions,
   type FileUploadResult,
@@ -27,6 +29,7 @@ import {
 } from "./motion-upload.ts";
 import { type RbcClientOptions, RbcConnection, type RbcTimeouts } from "./rbc-connection.ts";
 import type { LinkTiming } from "./round-trip.ts";
+import type { RunReport } from "./run-outcome.ts";
 import { runSound } from "./sound.ts";
 import { runStop, type StopActivityResult } from "./stop.ts";
 import { subscribe, unsubscribe } from "./subscriptions.ts";
@@ -184,12 +187,29 @@ export class RbcClient {
     return this.#c.command(COMMANDS.readAvailableMemory, area);
   }
 
+  /**
+   * 0x0F where a firmware may not answer it (docs/protocol.md §3.5): the free bytes, or undefined when the robot
+   * answers the firmware version but never 0x0F ("not reported"). A lost link still rejects with the timeout.
+   */
+  readFreeMemory(area: MemoryArea): Promise<number | undefined> {
+    return this.#c.exclusive(() =>
+      readFreeMemory(this.#c, area).catch((e: unknown) => {
+        if (e instanceof RbcNotSupportedError) return undefined;
+        throw e;
+      }),
+    );
+  }
+
   async readErrorCode(): Promise<number> {
     return (await this.#c.command(COMMANDS.readErrorCode, undefined)).code;
   }
 
+  /**
+   * 0x16, answered by the RBC's main loop: while a motion plays it is not answered, and the client says the
+   * robot is busy (`RbcBusyError`) rather than blaming the link (docs/protocol.md §3.6).
+   */
   readDistance(): Promise<number> {
-    return this.#c.command(COMMANDS.readDistance, undefined);
+    return this.#c.exclusive(() => readMainLoop(this.#core, COMMANDS.readDistance));
   }
 
   readAccelerometer(): Promise<{ x: number; y: number; z: number }> {
@@ -222,8 +242,28 @@ export class RbcClient {
    * Limp, it rejects with `RbcCancelledError`. An ignored motion is reported as no more than what is known
    * (see `motion-run.ts`).
    */
-  runMotion(motion: number, options: { expectedMs?: number; signal?: AbortSignal } = {}): Promise<number> {
+  runMotion(motion: number, options: RunMotionOptions = {}): Promise<number> {
     return runMotion(this.#core, motion, options);
+  }
+
+  /**
+   * Runs a motion like `runMotion` and resolves with what its reply proves, as data (`RunReport`,
+   * docs/protocol.md §3.1 [decision]): `played` only when nothing was playing before it and the reply came no
+   * sooner than its duration allows (built-in: minus 30 %; a download: `expectedMs`, or the duration recorded
+   * when this client uploaded it); otherwise `too-soon`, `after-busy`, `stopped-busy` (7 during a motion
+   * started elsewhere, as Stop does) or `unknown-duration`. No reply in time: `RbcRunNoReplyError`.
+   */
+  runMotionReport(motion: number, options: RunMotionOptions = {}): Promise<RunReport> {
+    return runMotionReport(this.#core, motion, options);
+  }
+
+  /**
+   * The busy probe of docs/protocol.md §3.6: `busy` when the firmware version (0x12) is answered at once and the
+   * distance sensor (0x16, answered by the main loop) is not within its quick time; the client then knows a
+   * motion started elsewhere plays (`activity`), and Stop ends it. Rejects with a timeout when neither answers.
+   */
+  probeBusy(): Promise<ProbeResult> {
+    return this.#c.exclusive(() => probeBusy(this.#core));
   }
 
   /**
@@ -246,9 +286,16 @@ export class RbcClient {
    * builds its image, optionally resets the motion memory first, checks the free memory, downloads the image
    * chunk by chunk and counts it done only when the robot's free memory dropped by exactly its footprint.
    */
-  uploadMotion(motion: RbmMotion, options: FileUploadOptions = {}): Promise<FileUploadResult> {
+  async uploadMotion(motion: RbmMotion, options: FileUploadOptions = {}): Promise<FileUploadResult> {
     const payload = motionPayload(motion);
-    return stoppableUpload(this.#core, (host) => uploadFileTo(host, "motion", payload, options));
+    const result = await stoppableUpload(this.#core, (host) =>
+      uploadFileTo(host, "motion", payload, options),
+    );
+    // Recorded, so that a later Run of it is judged against its duration (docs/protocol.md §3.1).
+    const { durations } = this.#core.runs;
+    if (result.reset) durations.clear();
+    if (result.motionNumber !== undefined) durations.set(result.motionNumber, motionDurationMs(motion));
+    return result;
   }
 
   /** Uploads an action file's bytes as they are (type 0x02), like `uploadMotion` (the format is unverified). */
@@ -279,6 +326,8 @@ export class RbcClient {
         } finally {
           this.#c.parser.reset();
           this.#c.subscription = undefined;
+          // A restarted RBC ignores every motion until 7 has run again (docs/protocol.md §3.1).
+          this.#core.runs.sent7 = false;
           this.#c.setState({
             basicPostureConfirmed: false,
             subscription: undefined,

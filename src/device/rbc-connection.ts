@@ -59,6 +59,9 @@ export const SUBSCRIPTIONS = {
   remote: COMMANDS.subscribeRemote,
 } as const;
 
+/** Quick requests the RBC answers from its main loop, so only once a playing motion ends (§3.6). */
+export const MAIN_LOOP_REPLY_TYPES: ReadonlySet<number> = new Set([COMMANDS.readDistance.type]);
+
 const SUBSCRIPTION_BY_TYPE = new Map<number, SubscriptionKind>(
   Object.entries(SUBSCRIPTIONS).map(([kind, spec]) => [spec.type, kind as SubscriptionKind]),
 );
@@ -105,6 +108,19 @@ export class RbcConnection {
    * reply can never answer a request sent after it: the protocol has no sequence numbers.
    */
   private readonly suspect = new Set<number>();
+  /**
+   * Replies owed by the RBC's main loop (docs/protocol.md §3.6): every request of a main-loop type (0x16) that
+   * went unanswered owes one reply, which comes when the main loop is free (a motion ended). The next replies of
+   * that type pay those debts first, so a late one never answers a later request; a fence of an
+   * interrupt-answered type proves nothing about them. `paidAt` is when the last debt was paid.
+   */
+  private readonly owed = new Map<number, { count: number; since: number; paidAt?: number }>();
+  /** When the parser last discarded bytes (a garbled frame): something answered, damaged. */
+  private lastDiscardAt = Number.NEGATIVE_INFINITY;
+  /** When a request's wait last ended with bytes of a partial or garbled frame. */
+  private garbledAt = Number.NEGATIVE_INFINITY;
+  /** Told about every reply the RBC's main loop sent (0x14, 0x16): the main loop is free at that moment. */
+  mainLoopAnswered: ((type: number) => void) | undefined;
   /** Replies no request took: late ones (discarded after a fence or a timeout) and unasked repeats. */
   readonly stats = { unansweredReplies: 0, fences: 0, timeouts: 0 };
 
@@ -126,8 +142,10 @@ export class RbcConnection {
     );
     this.retries = options.retries ?? 2;
     this.parser = new PacketParser({
-      onDiscard: (reason, bytes) =>
-        this.emitLog({ direction: "in", kind: "discard", name: reason, bytes, note: `discarded: ${reason}` }),
+      onDiscard: (reason, bytes) => {
+        this.lastDiscardAt = this.clock.now();
+        this.emitLog({ direction: "in", kind: "discard", name: reason, bytes, note: `discarded: ${reason}` });
+      },
       // No reply carries more than its type can (docs/protocol.md §3.5): a corrupted size byte costs one reply.
       maxContent: (type) => COMMAND_BY_TYPE.get(type)?.replySize ?? MAX_REPLY_CONTENT,
     });
@@ -201,6 +219,7 @@ export class RbcConnection {
       );
       await this.sleep(this.timeouts.settleMs);
       this.parser.reset();
+      this.owed.clear();
       this.setState({ mode: "packet" });
       return await handshake();
     } catch (e) {
@@ -385,9 +404,12 @@ export class RbcConnection {
       timer = this.clock.setTimeout(() => {
         this.stats.timeouts++;
         if (quick) this.roundTrip.timedOut();
+        // Bytes came but no whole reply (a partial or garbled frame): the reply came damaged, it is not late.
+        const garbled = sentAt !== undefined && (this.parser.pending > 0 || this.lastDiscardAt >= sentAt);
         // A partial frame is not this reply's any more; the reply itself may still come later.
         this.parser.reset();
-        if (send) this.expectLate(type);
+        if (send && !(garbled && MAIN_LOOP_REPLY_TYPES.has(type))) this.expectLate(type, sentAt);
+        if (garbled && sentAt !== undefined) this.garbledAt = this.clock.now();
         waiter.reject(new RbcTimeoutError(name, timeoutMs));
       }, timeoutMs);
       if (send) {
@@ -397,9 +419,66 @@ export class RbcConnection {
     });
   }
 
-  /** A reply of `type` may still arrive for a request that no one waits for any more (quick types only). */
-  expectLate(type: number): void {
+  /**
+   * A reply of `type` may still arrive for a request that no one waits for any more (quick types only). A
+   * main-loop type owes one more reply, unless its main loop answered after `sentAt` (the request's write):
+   * then the main loop is free, everything it owed has come, and this request's reply was lost.
+   */
+  expectLate(type: number, sentAt?: number): void {
+    if (MAIN_LOOP_REPLY_TYPES.has(type)) {
+      const debt = this.currentDebt(type);
+      if (sentAt !== undefined && debt?.paidAt !== undefined && debt.paidAt >= sentAt) {
+        this.owed.delete(type);
+        return;
+      }
+      this.owed.set(type, {
+        count: (debt?.count ?? 0) + 1,
+        since: debt && debt.count > 0 ? debt.since : this.clock.now(),
+        paidAt: debt?.paidAt,
+      });
+      return;
+    }
     if (COMMAND_BY_TYPE.get(type)?.timeout === "quick") this.suspect.add(type);
+  }
+
+  /**
+   * Whether an answer to a request of `type` written at `since` came, but not whole or not as this request's:
+   * the main loop sent a reply of `type` after it (a debt paid: it was free then), or a frame arrived garbled
+   * before its timeout. Either way the robot is not busy: the reply was damaged or lost.
+   */
+  mainLoopAnsweredSince(type: number, since: number): boolean {
+    const paidAt = this.owed.get(type)?.paidAt;
+    return (paidAt !== undefined && paidAt >= since) || this.garbledAt >= since;
+  }
+
+  /** How many replies of main-loop type `type` are owed to requests no one waits for (docs/protocol.md §3.6). */
+  owedReplies(type: number): number {
+    return this.currentDebt(type)?.count ?? 0;
+  }
+
+  /**
+   * The debt of `type`, forgotten once older than the longest wait for a motion (a reply owed that long was
+   * lost: no motion keeps the main loop busy longer, and one that never ends sends nothing more anyway).
+   */
+  private currentDebt(type: number): { count: number; since: number; paidAt?: number } | undefined {
+    const debt = this.owed.get(type);
+    if (!debt) return undefined;
+    const limit = this.timeouts.unknownMotionMs + this.timeouts.marginMs;
+    if (debt.count > 0 && this.clock.now() - debt.since > limit) {
+      this.owed.delete(type);
+      return undefined;
+    }
+    return debt;
+  }
+
+  /** A reply of a main-loop type pays its oldest debt, if any: discarded, as it answers an abandoned request. */
+  private payOwed(packet: Packet): boolean {
+    const debt = this.currentDebt(packet.type);
+    if (!debt || debt.count === 0) return false;
+    const now = this.clock.now();
+    this.owed.set(packet.type, { count: debt.count - 1, since: debt.since, paidAt: now });
+    this.stats.unansweredReplies++;
+    return true;
   }
 
   requirePacketMode(what: string): void {
@@ -464,6 +543,11 @@ export class RbcConnection {
       this.events.emit({ kind, value: packet.contents[0]!, time: this.clock.now() });
       return;
     }
+    if (MAIN_LOOP_REPLY_TYPES.has(packet.type) || packet.type === COMMANDS.runMotion.type) {
+      this.mainLoopAnswered?.(packet.type);
+    }
+    // A late main-loop reply pays its debt before any waiter sees it (docs/protocol.md §3.6: matched by count).
+    if (this.payOwed(packet)) return;
     if (this.waiter && this.waiter.type === packet.type && (this.waiter.accept?.(packet) ?? true)) {
       this.waiter.resolve(packet);
       return;
@@ -472,7 +556,9 @@ export class RbcConnection {
     // unless that claims it, counted and its type fenced before its next request (a repeat may follow).
     if (this.unsolicited?.(packet) === true) return;
     this.stats.unansweredReplies++;
-    this.expectLate(packet.type);
+    // An unasked main-loop reply with nothing owed (a firmware that repeats it): fenced as before.
+    if (MAIN_LOOP_REPLY_TYPES.has(packet.type)) this.suspect.add(packet.type);
+    else this.expectLate(packet.type);
   }
 
   private onTransportStatus(event: TransportStatusEvent): void {

@@ -21,6 +21,7 @@ import {
   RbcUploadError,
   type UploadOutcome,
 } from "./errors.ts";
+import { readFreeMemory } from "./memory-read.ts";
 import { type RawChannel, RbcUnexpectedAckError } from "./raw-channel.ts";
 import type { RbcConnection } from "./rbc-connection.ts";
 import type { UploadOptions, UploadResult } from "./types.ts";
@@ -80,9 +81,10 @@ export async function uploadFile(
   const started = io.now();
   const footprint = memoryFootprint(total);
   const readFree = () => client.request(COMMANDS.readAvailableMemory, area);
+  // The first read says whether the firmware answers 0x0F at all: without it, nothing more is sent.
   const readError = () => client.request(COMMANDS.readErrorCode, undefined).then((r) => r.code);
 
-  const freeBefore = await readFree();
+  const freeBefore = await readFreeMemory(client, area);
   // [decision] A file fits when its bytes do (the rounding only moves the next file's start), as the simulator
   // decides too (docs/protocol.md §6.1).
   if (total > freeBefore) {

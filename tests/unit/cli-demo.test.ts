@@ -389,7 +389,18 @@ describe.concurrent("rbc --demo", () => {
     ]);
     expect(seven.code, seven.stderr).toBe(0);
     const done = JSON.parse(seven.stdout).completed;
-    expect(done).toEqual([{ motion: 7, name: "7 (Basic posture)", elapsedMs: expect.any(Number) }]);
+    expect(done).toEqual([
+      {
+        motion: 7,
+        name: "7 (Basic posture)",
+        elapsedMs: expect.any(Number),
+        // What the reply proves (docs/protocol.md §3.1): nothing played before it, and it came in its time.
+        verdict: "played",
+        expectedMs: 1800,
+        replyAfterMs: expect.any(Number),
+        before: "idle",
+      },
+    ]);
     // Robot time: the basic posture takes about 1.8 s, however fast the demo robot's clock runs.
     expect(done[0].elapsedMs).toBeGreaterThanOrEqual(1700);
     expect(done[0].elapsedMs).toBeLessThan(1800 + 2000); // its timeout: expected time + 2 s margin

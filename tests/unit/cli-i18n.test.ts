@@ -233,7 +233,8 @@ describe.concurrent("rbc in Korean", () => {
     expect(run.stdout).toMatch(/^7 \(기본 자세\) 실행 중…\n완료: 7 \(기본 자세\), 1\.\d초 걸렸어요\.\n$/);
     expect(ignored.code).toBe(1);
     expect(ignored.stderr).toBe(
-      "rbc: 로봇이 모션을 재생하지 않고 있어요. 데모 로봇은 rbc 명령마다 새로 켜져요. 7을 먼저 넣어 주세요. 예: rbc run 7 4 --demo.\n",
+      // The facts in Korean (docs/protocol.md §3.1: no reply, the robot idle, no 7 yet), then the demo's hint.
+      "rbc: 로봇이 3.6초 안에 모션 4이(가) 끝났다고 알리지 않았어요. 그래서 아마 무시했을 거예요. RBC는 켜진 뒤 기본 자세(7)를 한 번 실행하기 전까지 모든 모션을 무시해요. 먼저 모션 7을 실행해 주세요. 데모 로봇은 rbc 명령마다 새로 켜져요. 7을 먼저 넣어 주세요. 예: rbc run 7 4 --demo.\n",
     );
     expect(upload.code, upload.stderr).toBe(0);
     expect(upload.stdout).toContain("확인했어요: 오류 없음, 경고 없음.\n");

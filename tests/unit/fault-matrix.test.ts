@@ -230,7 +230,8 @@ const OPS: Op[] = [
   {
     name: "runMotion(7)",
     run: ({ client }) => client.runMotion(7),
-    reply: 1,
+    // Reply 1 answers the busy probe's distance read (docs/protocol.md §3.6); reply 2 is the Run's.
+    reply: 2,
     byte: 14,
     cutAfter: 5,
     lateMs: 1800 + 2000 + 50,

@@ -44,7 +44,9 @@ describe("a reply can never answer a request sent after it", () => {
     const { client, run, port, sim } = await makeRig({ client: { retries: 0 } });
     sim.setDistance(40);
     port.faults.delayReplies(700); // later than the 400 ms quick timeout
-    expect(await run(client.readDistance().catch((e) => e))).toMatchObject({ code: "timeout" });
+    // 0x12 answered at once, 0x16 not: asked once more (docs/protocol.md §3.6); the late reply pays its debt by
+    // count and the second one answers, with the value the robot held then.
+    expect(await run(client.readDistance())).toBe(40);
     sim.setDistance(12);
     expect(await run(client.readDistance())).toBe(12);
   });
@@ -90,7 +92,7 @@ describe("a reply can never answer a request sent after it", () => {
                       : client.readFirmwareVersion()) as Promise<unknown>,
             ).catch((e) => ({ failed: e.code }));
             if (typeof got === "object" && got && "failed" in got) {
-              expect(["timeout", "bad-reply"]).toContain((got as { failed: string }).failed);
+              expect(["timeout", "bad-reply", "busy"]).toContain((got as { failed: string }).failed);
               continue;
             }
             if (step.read === "distance") expect(got).toBe(step.value);

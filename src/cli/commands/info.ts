@@ -33,8 +33,9 @@ export const infoCommand: CommandDef = {
     // 0x0C is optional: some firmware builds never answer it (docs/protocol.md §3.5).
     const { serialNumber, warnings } = await client.identify();
     const errorCode = await client.readErrorCode();
-    const freeMotion = await client.readAvailableMemory("motion");
-    const freeAction = await client.readAvailableMemory("action");
+    // 0x0F is not answered by every firmware either (docs/protocol.md §3.5): "not reported".
+    const freeMotion = await client.readFreeMemory("motion");
+    const freeAction = freeMotion === undefined ? undefined : await client.readFreeMemory("action");
     const platform = client.state.platform ?? robot.identity.platform;
     const firmware = formatFirmware(robot.identity.firmware);
     env.out.result({
@@ -46,7 +47,7 @@ export const infoCommand: CommandDef = {
       platformName: platformName(platform),
       errorCode,
       error: errorCodeWords(errorCode),
-      freeMemory: { motion: freeMotion, action: freeAction },
+      freeMemory: freeMotion === undefined ? null : { motion: freeMotion, action: freeAction ?? null },
       warnings,
       // Replies no request asked for (late, or repeated by a firmware that repeats them), discarded so far.
       unaskedReplies: client.stats.unansweredReplies,
@@ -65,12 +66,14 @@ export const infoCommand: CommandDef = {
       [t("cmd.info.errorCode"), errorCodeWords(errorCode, locale)],
       [
         t("cmd.info.freeMemory"),
-        t("cmd.info.free", {
-          motion: freeMotion,
-          motionSize: MOTION_AREA_BYTES,
-          action: freeAction,
-          actionSize: ACTION_AREA_BYTES,
-        }),
+        freeMotion === undefined || freeAction === undefined
+          ? t("cmd.info.memoryNotReported")
+          : t("cmd.info.free", {
+              motion: freeMotion,
+              motionSize: MOTION_AREA_BYTES,
+              action: freeAction,
+              actionSize: ACTION_AREA_BYTES,
+            }),
       ],
     ];
     for (const line of labelledRows(rows)) env.out.line(line);

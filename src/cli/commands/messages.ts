@@ -33,6 +33,10 @@ export const commandMessages = defineMessages({
   },
   "cmd.info.platform": { en: "Platform", ko: "플랫폼" },
   "cmd.info.errorCode": { en: "Error code", ko: "오류 코드" },
+  "cmd.info.memoryNotReported": {
+    en: "not reported (the robot did not answer 0x0F)",
+    ko: "알려 주지 않음 (로봇이 0x0F에 응답하지 않았어요)",
+  },
   "cmd.info.freeMemory": { en: "Free memory", ko: "남은 메모리" },
   "cmd.info.free": {
     en: "motion {motion} of {motionSize} bytes, action {action} of {actionSize} bytes",
@@ -287,6 +291,17 @@ export const commandMessages = defineMessages({
   "cmd.run.ignored": {
     en: "Run `rbc run {posture}` first (or `rbc run 7 {motion}`).",
     ko: "먼저 `rbc run {posture}`을(를) 실행해 주세요 (또는 `rbc run 7 {motion}`).",
+  },
+  "cmd.run.needsYes": {
+    en: "{hazard} Nothing was sent. To run it anyway: rbc run {motion} --yes.",
+    ko: "{hazard} 아무것도 보내지 않았어요. 그래도 실행하려면: rbc run {motion} --yes.",
+  },
+  "cmd.run.hazardNote": { en: "Warning: {hazard}", ko: "경고: {hazard}" },
+  "cmd.run.unknownDuration": { en: "Replied: {motion}. {what}", ko: "응답함: {motion}. {what}" },
+  "cmd.run.stoppedBusy": { en: "Stopped: {what}", ko: "멈춤: {what}" },
+  "cmd.run.stopHint": {
+    en: "To end it: rbc stop.",
+    ko: "멈추려면: rbc stop.",
   },
   "cmd.run.done": { en: "Done: {motion} in {duration}.", ko: "완료: {motion}, {duration} 걸렸어요." },
 

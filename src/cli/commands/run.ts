@@ -1,5 +1,8 @@
 import { RbcError } from "../../device/errors.ts";
 import type { StopActivityResult } from "../../device/rbc-client.ts";
+import { isHazardousMotion, type RunReport } from "../../device/run-outcome.ts";
+import type { Locale } from "../../i18n/locale.ts";
+import { motionHazardText, runReportText } from "../../i18n/outcomes/run-words.ts";
 import { translator } from "../../i18n/translate.ts";
 import { formatSeconds } from "../../i18n/units.ts";
 import { BASIC_POSTURE_MOTION, isOfferedMotionNumber } from "../../protocol/catalog.ts";
@@ -9,11 +12,13 @@ import { connectRobot } from "../connect.ts";
 import { CliError, EXIT, errorSaid, UsageError } from "../errors.ts";
 import { COMMAND_HELP } from "../help/command-help.ts";
 import { motionName } from "../motion-names.ts";
-import { joinSaid, said } from "../said.ts";
+import { joinSaid, said, saidBy } from "../said.ts";
 import { commandMessages } from "./messages.ts";
 import { stoppedMotionSentence } from "./stop.ts";
 
 export { motionName };
+
+const OPTIONS = { yes: { type: "boolean", short: "y" } } as const;
 
 export const runCommand: CommandDef = {
   name: "run",
@@ -26,7 +31,7 @@ export const runCommand: CommandDef = {
   ],
   talksToRobot: true,
   async run(env) {
-    const { values, positionals } = parseCommand("run", env.argv, {});
+    const { values, positionals } = parseCommand("run", env.argv, OPTIONS);
     const locale = localeOf(env);
     const t = translator(commandMessages, locale);
     if (positionals.length === 0) throw new UsageError(said(commandMessages, "cmd.run.noMotion"), "run");
@@ -37,8 +42,24 @@ export const runCommand: CommandDef = {
       }
       return n;
     });
+    // Motions 20 and 21 carry a warning (docs/protocol.md §3.1): without --yes, nothing is sent.
+    const hazardous = motions.find(isHazardousMotion);
+    if (hazardous !== undefined && !values.yes) {
+      throw new CliError(
+        "confirmation-required",
+        saidBy((l) =>
+          translator(commandMessages, l)("cmd.run.needsYes", {
+            hazard: motionHazardText(hazardous, l) ?? "",
+            motion: String(hazardous),
+          }),
+        ),
+      );
+    }
+    for (const n of new Set(motions.filter(isHazardousMotion))) {
+      env.out.note(`rbc: ${t("cmd.run.hazardNote", { hazard: motionHazardText(n, locale) ?? "" })}`);
+    }
     const robot = await connectRobot("run", values, env, { handlesInterrupt: true });
-    const results: Array<{ motion: number; name: string; elapsedMs: number }> = [];
+    const results: Array<Record<string, unknown>> = [];
     for (const motion of motions) {
       const name = motionName(motion);
       const shown = motionName(motion, locale);
@@ -63,8 +84,9 @@ export const runCommand: CommandDef = {
       };
       env.signal.addEventListener("abort", onInterrupt, { once: true });
       let failure: unknown;
+      let report: RunReport | undefined;
       try {
-        await robot.client.runMotion(motion);
+        report = await robot.client.runMotionReport(motion);
       } catch (e) {
         failure = e;
       } finally {
@@ -86,6 +108,16 @@ export const runCommand: CommandDef = {
       }
       if (failure !== undefined) {
         const e = failure;
+        if (e instanceof RbcError && e.code === "busy") {
+          throw new CliError(
+            "busy",
+            joinSaid([errorSaid(e), said(commandMessages, "cmd.run.stopHint")]),
+            EXIT.failed,
+            {
+              completed: results,
+            },
+          );
+        }
         if (e instanceof RbcError && e.code === "motion-ignored") {
           const hint = robot.demo
             ? said(commandMessages, "cmd.run.ignoredDemo", { motion: String(motion) })
@@ -99,9 +131,30 @@ export const runCommand: CommandDef = {
         }
         throw e;
       }
+      if (!report) throw new Error("unreachable: no report and no failure");
       const elapsedMs = Math.round(robot.clock.now() - started);
-      results.push({ motion, name, elapsedMs });
-      env.out.line(t("cmd.run.done", { motion: shown, duration: formatSeconds(elapsedMs / 1000, locale) }));
+      const facts = {
+        verdict: report.verdict,
+        expectedMs: report.expectedMs ?? null,
+        replyAfterMs: report.elapsedMs,
+        before: report.before,
+      };
+      const what = (l: Locale) => runReportText(report, l) ?? "";
+      if (report.verdict === "too-soon" || report.verdict === "after-busy") {
+        // The reply came, but it does not prove that the motion played (docs/protocol.md §3.1).
+        throw new CliError("not-played", saidBy(what), EXIT.failed, {
+          completed: results,
+          motion,
+          ...facts,
+        });
+      }
+      results.push({ motion, name, elapsedMs, ...facts });
+      if (report.verdict === "stopped-busy") env.out.line(t("cmd.run.stoppedBusy", { what: what(locale) }));
+      else if (report.verdict === "unknown-duration") {
+        env.out.line(t("cmd.run.unknownDuration", { motion: shown, what: what(locale) }));
+      } else {
+        env.out.line(t("cmd.run.done", { motion: shown, duration: formatSeconds(elapsedMs / 1000, locale) }));
+      }
     }
     env.out.result({ ok: true, completed: results });
     return EXIT.ok;

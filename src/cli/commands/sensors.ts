@@ -1,3 +1,4 @@
+import { RbcError } from "../../device/errors.ts";
 import type { Locale } from "../../i18n/locale.ts";
 import { translator } from "../../i18n/translate.ts";
 import { DISTANCE_MAX_CM, DISTANCE_MIN_CM, distanceWarning } from "../../protocol/plausibility.ts";
@@ -5,8 +6,9 @@ import type { Clock } from "../../shared/clock.ts";
 import { intOption, noExtraArguments, parseCommand } from "../args.ts";
 import { type CommandDef, localeOf } from "../command.ts";
 import { connectRobot } from "../connect.ts";
-import { EXIT } from "../errors.ts";
+import { CliError, EXIT, errorSaid } from "../errors.ts";
 import { COMMAND_HELP } from "../help/command-help.ts";
+import { joinSaid, said } from "../said.ts";
 import { commandMessages } from "./messages.ts";
 
 const OPTIONS = {
@@ -82,7 +84,13 @@ export const sensorsCommand: CommandDef = {
     if (!env.out.json) env.out.note(t("cmd.sensors.start"));
     let lastWarning: string | undefined;
     for (let i = 0; i < count && !env.signal.aborted; i++) {
-      const distanceCm = await robot.client.readDistance();
+      const distanceCm = await robot.client.readDistance().catch((e: unknown) => {
+        // Busy, not gone (docs/protocol.md §3.6): say so, and how to end what plays.
+        if (e instanceof RbcError && e.code === "busy") {
+          throw new CliError("busy", joinSaid([errorSaid(e), said(commandMessages, "cmd.run.stopHint")]));
+        }
+        throw e;
+      });
       const accelerometer = await robot.client.readAccelerometer();
       const ms = Math.round(robot.clock.now() - started);
       const reading = sensorReading(ms, distanceCm, accelerometer, locale);

@@ -1,6 +1,7 @@
-import { RbcError } from "../../device/errors.ts";
+import { RbcError, RbcRunNoReplyError } from "../../device/errors.ts";
 import type { StopActivityResult } from "../../device/rbc-client.ts";
 import type { Locale } from "../../i18n/locale.ts";
+import { noReplyCauseText } from "../../i18n/outcomes/run-words.ts";
 import { translator } from "../../i18n/translate.ts";
 import { formatSeconds } from "../../i18n/units.ts";
 import { BASIC_POSTURE_MOTION } from "../../protocol/catalog.ts";
@@ -9,7 +10,7 @@ import { type CommandDef, localeOf } from "../command.ts";
 import { connectRobot, robotPlace } from "../connect.ts";
 import { CliError, EXIT } from "../errors.ts";
 import { COMMAND_HELP } from "../help/command-help.ts";
-import { said } from "../said.ts";
+import { joinSaid, said, saidBy } from "../said.ts";
 import { commandMessages } from "./messages.ts";
 
 /**
@@ -53,6 +54,24 @@ export const stopCommand: CommandDef = {
     try {
       await robot.client.stopMotion();
     } catch (e) {
+      // Unanswered: what the error code (0x11) and the busy probe showed (docs/protocol.md §3.1 [decision]).
+      if (e instanceof RbcRunNoReplyError && e.facts.cause !== "unknown" && e.facts.cause !== "power-up") {
+        const { facts } = e;
+        throw new CliError(
+          "not-confirmed",
+          joinSaid([
+            said(commandMessages, "cmd.stop.notConfirmed"),
+            saidBy((l) => noReplyCauseText(facts, l)),
+          ]),
+          EXIT.failed,
+          {
+            sent: BASIC_POSTURE_MOTION,
+            confirmed: false,
+            cause: facts.cause,
+            errorCode: facts.errorCode ?? null,
+          },
+        );
+      }
       if (e instanceof RbcError && (e.code === "timeout" || e.code === "motion-ignored")) {
         throw new CliError("not-confirmed", said(commandMessages, "cmd.stop.notConfirmed"), EXIT.failed, {
           sent: BASIC_POSTURE_MOTION,

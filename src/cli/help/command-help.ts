@@ -65,7 +65,7 @@ export const COMMAND_HELP = {
   run: (t) => ({
     summary: t("cliHelp.run.summary"),
     description: t("cliHelp.run.description", { motions: builtInMotionList(t.locale) }),
-    options: [],
+    options: [["-y, --yes", t("cliHelp.run.yes")]],
   }),
   play: (t) => ({
     summary: t("cliHelp.play.summary"),

@@ -157,6 +157,10 @@ export const helpMessages = defineMessages({
     en: "Play only scenes A to B, or one scene with --scenes A (the first scene is 0).",
     ko: "장면 A부터 B까지만 재생해요. --scenes A는 장면 하나만 재생해요 (첫 장면은 0).",
   },
+  "cliHelp.run.yes": {
+    en: "Run motion 20 or 21, which carry a warning (without --yes they print it and send nothing).",
+    ko: "경고가 있는 모션 20이나 21을 실행해요 (--yes가 없으면 경고만 보여 주고 아무것도 보내지 않아요).",
+  },
   "cliHelp.play.yes": {
     en: "Play on a real robot without the question.",
     ko: "실제 로봇에서 묻지 않고 재생해요.",

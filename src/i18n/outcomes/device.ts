@@ -5,6 +5,7 @@ import type { Locale } from "../locale.ts";
 import { translator } from "../translate.ts";
 import { formatMilliseconds } from "../units.ts";
 import { deviceOutcomeMessages as messages } from "./messages.ts";
+import { runOutcomeMessages } from "./run-messages.ts";
 
 /**
  * The device's outcomes in words, from their codes and facts, in either language. The device's error classes
@@ -17,7 +18,7 @@ type Key = KeysWithoutParams<typeof messages>;
 const t = (locale: Locale) => translator(messages, locale);
 
 /** The sentence for each code of the device's errors, when no more facts are known. */
-const RBC_CODE = {
+const RBC_CODE: Readonly<Record<Exclude<RbcErrorCode, RunCode>, Key>> = {
   timeout: "outcome.noAnswer",
   disconnected: "outcome.disconnected",
   "not-connected": "outcome.notConnected",
@@ -37,7 +38,17 @@ const RBC_CODE = {
   "not-idle": "outcome.direct.notIdle",
   "still-playing": "outcome.direct.stillPlaying",
   "cannot-limp": "outcome.direct.cannotLimp",
-} as const satisfies Readonly<Record<RbcErrorCode, Key>>;
+};
+
+/** The codes worded by the run outcomes' catalogue (run-messages.ts). */
+type RunCode = "busy" | "not-played" | "servo-silent" | "not-supported";
+
+const RUN_CODE = {
+  busy: "outcome.busy",
+  "not-played": "outcome.notPlayed",
+  "servo-silent": "outcome.run.servoSilent",
+  "not-supported": "outcome.notSupported",
+} as const satisfies Readonly<Record<RunCode, keyof typeof runOutcomeMessages>>;
 
 /** Codes whose sentence does not say enough on its own: the person is pointed to the technical detail. */
 const NEEDS_DETAIL: ReadonlySet<RbcErrorCode> = new Set([
@@ -58,7 +69,8 @@ const LINK_CODE = {
 
 /** What a device error's code says, without its facts. */
 export function codeText(code: RbcErrorCode, locale: Locale): string {
-  return t(locale)(RBC_CODE[code]);
+  if (code in RUN_CODE) return translator(runOutcomeMessages, locale)(RUN_CODE[code as RunCode]);
+  return t(locale)(RBC_CODE[code as Exclude<RbcErrorCode, RunCode>]);
 }
 
 /** Whether `code`'s sentence needs the technical detail beside it (see `seeDetailText`). */

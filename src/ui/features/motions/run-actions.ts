@@ -1,4 +1,5 @@
 import { RbcError } from "../../../device/errors.ts";
+import { isHazardousMotion } from "../../../device/run-outcome.ts";
 import type { Locale } from "../../../i18n/locale.ts";
 import { builtInMotionName } from "../../../i18n/motion-names/built-in-motion-name.ts";
 import { translator } from "../../../i18n/translate.ts";
@@ -77,7 +78,8 @@ export function requestRun(ctx: AppContext, number: number): void {
   const s = ctx.store.get();
   // There is no UI for other numbers; this guards the command layer all the same.
   if (!isOfferedMotionNumber(number) || robotBusyReason(s)) return;
-  if (!s.acks?.movement) {
+  // Motions 20 and 21 carry a warning (docs/protocol.md §3.1): asked every time, not once per connection.
+  if (!s.acks?.movement || isHazardousMotion(number)) {
     patchMotions(ctx.store, { confirmMove: number, runNotice: undefined });
     focusSoon("confirm-move");
     return;

@@ -1,4 +1,5 @@
 import { html, nothing, type TemplateResult } from "lit-html";
+import { motionHazardText } from "../../../../i18n/outcomes/run-words.ts";
 import { translator } from "../../../../i18n/translate.ts";
 import { BASIC_POSTURE_MOTION, SOUND_LENGTHS_MS, soundLengthMs } from "../../../../protocol/catalog.ts";
 import type { AppState } from "../../../app-state.ts";
@@ -106,10 +107,13 @@ function runningPanel(ctx: ViewContext, t: MotionsTranslator, run: RunningMotion
 
 function confirmMove(ctx: ViewContext, t: MotionsTranslator, s: AppState, number: number): TemplateResult {
   const offer = offerFor(s, number);
+  // Motions 20 and 21: the hazard, from the outcome catalogue, every time (docs/protocol.md §3.1).
+  const hazard = motionHazardText(number, s.locale);
   return html`
     <div class="confirm confirm--warning" role="alertdialog" aria-labelledby="move-title" aria-describedby="move-stop" data-testid="move-confirm">
       <p id="move-title"><strong>${t("motions.run.movementWarning")}</strong></p>
-      <p id="move-stop">${t("motions.run.asksOnce")} ${t("motions.run.stopSentence")}</p>
+      ${hazard ? html`<p data-testid="motion-hazard"><strong>${hazard}</strong></p>` : nothing}
+      <p id="move-stop">${hazard ? "" : t("motions.run.asksOnce")} ${t("motions.run.stopSentence")}</p>
       <div class="actions">
         <button type="button" class="btn btn--primary long-label" id="confirm-move" @click=${() => confirmMovement(ctx)}>
           ${offer ? t("motions.run.confirmNamed", { number, name: offer.name }) : t("motions.run.confirm", { number })}
