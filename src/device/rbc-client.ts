@@ -27,6 +27,7 @@ import {
 } from "./motion-upload.ts";
 import { type RbcClientOptions, RbcConnection, type RbcTimeouts } from "./rbc-connection.ts";
 import type { LinkTiming } from "./round-trip.ts";
+import { ServoBus } from "./servo-doctor/servo-bus.ts";
 import { runSound } from "./sound.ts";
 import { runStop, type StopActivityResult } from "./stop.ts";
 import { subscribe, unsubscribe } from "./subscriptions.ts";
@@ -64,11 +65,14 @@ export class RbcClient {
   readonly #core: ClientCore;
   /** Servo control; usable after `enterDirectMode()`. */
   readonly servos: DirectMode;
+  /** The servo doctor's access to the servo bus (src/device/servo-doctor); usable in direct mode. */
+  readonly servoBus: ServoBus;
 
   constructor(transport: Transport, options: RbcClientOptions = {}) {
     const c = new RbcConnection(transport, options);
     this.#c = c;
     this.servos = new DirectMode(c, c.raw);
+    this.servoBus = new ServoBus(c, c.raw);
     this.#core = createClientCore(c, this.servos);
   }
 
