@@ -4,7 +4,7 @@ import { RbcCancelledError, RbcError, RbcInvalidArgumentError } from "../errors.
 import type { RbcClient } from "../rbc-client.ts";
 import type { Heard } from "./collect-reply.ts";
 import { scanFindings } from "./findings.ts";
-import { cleanStatus } from "./servo-bus.ts";
+import { cleanStatus, ServoDoctorStoppedError } from "./servo-bus.ts";
 import type { ScanResult, ServoReading, StopCode } from "./types.ts";
 
 export interface ScanOptions {
@@ -46,6 +46,7 @@ export function readingOf(id: number, heard: Heard): ServoReading {
 /** Why an operation stopped, from the error that stopped it. */
 export function stopCodeOf(e: unknown, client: RbcClient): StopCode {
   if (client.mode === "disconnected") return "disconnected";
+  if (e instanceof ServoDoctorStoppedError) return "stop-pressed";
   if (e instanceof RbcCancelledError) return "cancelled";
   if (e instanceof RbcError && e.code === "disconnected") return "disconnected";
   if (e instanceof RbcError && e.code === "wrong-mode") return "left-direct-mode";
@@ -63,15 +64,16 @@ export async function scanServos(client: RbcClient, options: ScanOptions = {}): 
   const expected = ids.filter((id) => id < HUNO_SERVO_COUNT);
   if (options.signal?.aborted) throw new RbcCancelledError();
   await client.enterDirectMode("servo-control");
+  const bus = client.servoBus.session();
   const servos: ServoReading[] = [];
   let stopped: ScanResult["stopped"];
   try {
     for (const id of ids) {
-      let reading = readingOf(id, await client.servoBus.readStatus(id, options.signal));
+      let reading = readingOf(id, await bus.readStatus(id, options.signal));
       // Bytes that are not one pair can be two servos at this id, or a late reply to the id before: read
       // again on a quiet line, and let the second reading decide (two servos garble it again).
       if (reading.status === "garbled") {
-        reading = readingOf(id, await client.servoBus.readStatus(id, options.signal));
+        reading = readingOf(id, await bus.readStatus(id, options.signal));
       }
       servos.push(reading);
       options.onProgress?.({ done: servos.length, total: ids.length, reading });

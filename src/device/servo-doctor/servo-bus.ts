@@ -8,7 +8,7 @@ import {
   wckSetId,
 } from "../../protocol/wck.ts";
 import type { Clock } from "../../shared/clock.ts";
-import { RbcError, RbcInvalidArgumentError } from "../errors.ts";
+import { RbcCancelledError, RbcError, RbcInvalidArgumentError } from "../errors.ts";
 import type { RawChannel } from "../raw-channel.ts";
 import { type Heard, type ListenTiming, writeAndListen } from "./collect-reply.ts";
 
@@ -18,7 +18,17 @@ export interface ServoBusHost {
   readonly clock: Clock;
   /** What the link adds above a wired link's timing (0 on USB): a Bluetooth link's servo replies come later. */
   readonly link: { extraMs: number };
-  exclusive<T>(fn: () => Promise<T>): Promise<T>;
+  /** Bumped by Stop and Limp (`RbcConnection.epoch`). */
+  readonly epoch: number;
+  exclusive<T>(fn: () => Promise<T>, epoch?: number): Promise<T>;
+}
+
+/** Stop or Limp was pressed during a doctor operation: it sends nothing more. */
+export class ServoDoctorStoppedError extends RbcCancelledError {
+  override name = "ServoDoctorStoppedError";
+  constructor() {
+    super("Stopped by Stop (or Limp): nothing more was sent to the servos.");
+  }
 }
 
 /** At 115200 8N1 one byte takes 86.8 µs (docs/protocol.md §1). */
@@ -66,6 +76,16 @@ export class ServoBus {
     this.#raw = raw;
   }
 
+  /**
+   * A doctor operation's view of the bus, from now until Stop or Limp: once either is pressed, every command
+   * of this session is refused (`ServoDoctorStoppedError`) before anything is written, even one asked for
+   * after the press. Operations made of several commands (a scan, a wiggle) therefore end at Stop.
+   */
+  session(): ServoBusSession {
+    const epoch = this.#host.epoch;
+    return new ServoBusSession(this, () => this.#host.epoch !== epoch, epoch);
+  }
+
   /** Listening times for a command of `requestBytes` bytes on this link. */
   timing(requestBytes: number): ListenTiming {
     const extra = this.#host.link.extraMs;
@@ -79,17 +99,22 @@ export class ServoBus {
   }
 
   /** Mode-5 status read `FF (A0|id) 00 cs`: an answer is load, position. */
-  readStatus(id: number, signal?: AbortSignal): Promise<Heard> {
-    return this.#send(() => wckReadStatus(id), `read servo ${id}`, signal);
+  readStatus(id: number, signal?: AbortSignal, epoch?: number): Promise<Heard> {
+    return this.#send(() => wckReadStatus(id), `read servo ${id}`, signal, epoch);
   }
 
   /** A parameter read `FF (E0|id) d2 00 00 cs` (docs/protocol.md §5: reads only). */
-  readParameter(id: number, parameter: WckParameter, signal?: AbortSignal): Promise<Heard> {
-    return this.#send(() => wckReadParameter(id, parameter), `read ${parameter} of servo ${id}`, signal);
+  readParameter(id: number, parameter: WckParameter, signal?: AbortSignal, epoch?: number): Promise<Heard> {
+    return this.#send(
+      () => wckReadParameter(id, parameter),
+      `read ${parameter} of servo ${id}`,
+      signal,
+      epoch,
+    );
   }
 
   /** A move within the servo's safe range (ids 0-15 only: other ids have no published range). */
-  move(id: number, position: number, torque: number, signal?: AbortSignal): Promise<Heard> {
+  move(id: number, position: number, torque: number, signal?: AbortSignal, epoch?: number): Promise<Heard> {
     const range = safeRange(id);
     if (!range || !Number.isInteger(position) || position < range.min || position > range.max) {
       return Promise.reject(
@@ -100,15 +125,20 @@ export class ServoBus {
         ),
       );
     }
-    return this.#send(() => wckMove(id, position, torque), `move servo ${id} to ${position}`, signal);
+    return this.#send(() => wckMove(id, position, torque), `move servo ${id} to ${position}`, signal, epoch);
   }
 
   /** The id set `FF (E0|from) 0C to to cs`: only the guided fix (servo-doctor/set-id.ts) calls it. */
-  setId(from: number, to: number, signal?: AbortSignal): Promise<Heard> {
-    return this.#send(() => wckSetId(from, to), `servo ${from} becomes id ${to}`, signal);
+  setId(from: number, to: number, signal?: AbortSignal, epoch?: number): Promise<Heard> {
+    return this.#send(() => wckSetId(from, to), `servo ${from} becomes id ${to}`, signal, epoch);
   }
 
-  #send(build: () => Uint8Array, note: string, signal: AbortSignal | undefined): Promise<Heard> {
+  #send(
+    build: () => Uint8Array,
+    note: string,
+    signal: AbortSignal | undefined,
+    epoch: number | undefined,
+  ): Promise<Heard> {
     let packet: Uint8Array;
     try {
       packet = build();
@@ -117,12 +147,45 @@ export class ServoBus {
         new RbcInvalidArgumentError(`${e instanceof Error ? e.message : String(e)} Nothing was sent.`),
       );
     }
-    return this.#host.exclusive(() => {
-      if (this.#host.mode !== "direct") {
-        throw new RbcError("wrong-mode", "The servo doctor needs direct mode, and the robot is not in it.");
-      }
-      return writeAndListen(this.#raw, this.#host.clock, packet, this.timing(packet.length), note, signal);
-    });
+    if (epoch !== undefined && epoch !== this.#host.epoch) {
+      return Promise.reject(new ServoDoctorStoppedError());
+    }
+    return this.#host
+      .exclusive(() => {
+        if (this.#host.mode !== "direct") {
+          throw new RbcError("wrong-mode", "The servo doctor needs direct mode, and the robot is not in it.");
+        }
+        return writeAndListen(this.#raw, this.#host.clock, packet, this.timing(packet.length), note, signal);
+      }, epoch)
+      .catch((e: unknown) => {
+        throw epoch !== undefined && epoch !== this.#host.epoch ? new ServoDoctorStoppedError() : e;
+      });
+  }
+}
+
+/** The bus for one doctor operation: ends at Stop or Limp (see `ServoBus.session`). */
+export class ServoBusSession {
+  constructor(
+    private readonly bus: ServoBus,
+    /** True once Stop or Limp was pressed after the session began. */
+    readonly stopped: () => boolean,
+    private readonly epoch: number,
+  ) {}
+
+  readStatus(id: number, signal?: AbortSignal): Promise<Heard> {
+    return this.bus.readStatus(id, signal, this.epoch);
+  }
+
+  readParameter(id: number, parameter: WckParameter, signal?: AbortSignal): Promise<Heard> {
+    return this.bus.readParameter(id, parameter, signal, this.epoch);
+  }
+
+  move(id: number, position: number, torque: number, signal?: AbortSignal): Promise<Heard> {
+    return this.bus.move(id, position, torque, signal, this.epoch);
+  }
+
+  setId(from: number, to: number, signal?: AbortSignal): Promise<Heard> {
+    return this.bus.setId(from, to, signal, this.epoch);
   }
 }
 

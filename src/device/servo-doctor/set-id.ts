@@ -68,12 +68,12 @@ export async function setServoId(
     throw new RbcInvalidArgumentError(`The new id must differ from ${from}; nothing was sent.`);
   }
   if (options.signal?.aborted) throw new RbcCancelledError();
-  const bus = client.servoBus;
   const read = async (id: number): Promise<ServoReading> => {
     const first = readingOf(id, await bus.readStatus(id, options.signal));
     return first.status === "garbled" ? readingOf(id, await bus.readStatus(id, options.signal)) : first;
   };
   await client.enterDirectMode("servo-control");
+  const bus = client.servoBus.session();
   let sent = false;
   try {
     const atFrom = await read(from);

@@ -28,7 +28,7 @@ export interface Finding {
 }
 
 /** Why a doctor operation stopped before its end. */
-export type StopCode = "cancelled" | "disconnected" | "left-direct-mode" | "failed";
+export type StopCode = "cancelled" | "stop-pressed" | "disconnected" | "left-direct-mode" | "failed";
 
 export interface ScanResult {
   /** One reading per id read, in the order read. */
