@@ -53,6 +53,7 @@ export {
   RoundTripEstimator,
   type RoundTripLimits,
 } from "./round-trip.ts";
+export * from "./servo-doctor/index.ts";
 export {
   frameLabel,
   TetheredPlayError,
