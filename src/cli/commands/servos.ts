@@ -11,10 +11,11 @@ import {
   wiggleServo,
 } from "../../device/servo-doctor/index.ts";
 import type { Locale } from "../../i18n/locale.ts";
-import { servoOutcomeMessages } from "../../i18n/outcomes/servos/messages.ts";
 import {
   findingText,
+  infoStoppedText,
   jointText,
+  parameterNameText,
   readingStatusText,
   scanStoppedText,
   setIdText,
@@ -145,17 +146,14 @@ async function info(env: RunEnv, values: GlobalValues, args: string[]): Promise<
   const robot = await connectRobot("servos", values, env);
   const result = await servoInfo(robot.client, id, { signal: env.signal });
   env.out.result(result);
-  const o = translator(servoOutcomeMessages, locale);
   for (const line of scanTable({ servos: [result.status], findings: [], ids: [id], expected: [] }, locale)) {
     env.out.line(line);
   }
   for (const parameter of INFO_PARAMETERS) {
     const reading = result.parameters[parameter];
-    if (reading)
-      env.out.line(`  ${o(`outcome.servo.parameter.${parameter}`)}: ${parameterText(reading, locale)}`);
+    if (reading) env.out.line(`  ${parameterNameText(parameter, locale)}: ${parameterText(reading, locale)}`);
   }
-  if (result.stopped)
-    env.out.line(o("outcome.servo.info.stopped", { why: stopText(result.stopped.code, locale) }));
+  if (result.stopped) env.out.line(infoStoppedText(result.stopped.code, locale));
   return result.status.status === "answered" && !result.stopped ? EXIT.ok : EXIT.failed;
 }
 

@@ -6,6 +6,7 @@ import type {
   StopCode,
   WiggleResult,
 } from "../../../device/servo-doctor/index.ts";
+import type { WckParameter } from "../../../protocol/wck.ts";
 import type { Locale } from "../../locale.ts";
 import { translator } from "../../translate.ts";
 import { servoOutcomeMessages as messages } from "./messages.ts";
@@ -18,22 +19,22 @@ import { servoOutcomeMessages as messages } from "./messages.ts";
 const t = (locale: Locale) => translator(messages, locale);
 
 const JOINT_KEYS = [
-  "outcome.servo.joint.0",
-  "outcome.servo.joint.1",
-  "outcome.servo.joint.2",
-  "outcome.servo.joint.3",
-  "outcome.servo.joint.4",
-  "outcome.servo.joint.5",
-  "outcome.servo.joint.6",
-  "outcome.servo.joint.7",
-  "outcome.servo.joint.8",
-  "outcome.servo.joint.9",
-  "outcome.servo.joint.10",
-  "outcome.servo.joint.11",
-  "outcome.servo.joint.12",
-  "outcome.servo.joint.13",
-  "outcome.servo.joint.14",
-  "outcome.servo.joint.15",
+  "outcome.servo.joint0",
+  "outcome.servo.joint1",
+  "outcome.servo.joint2",
+  "outcome.servo.joint3",
+  "outcome.servo.joint4",
+  "outcome.servo.joint5",
+  "outcome.servo.joint6",
+  "outcome.servo.joint7",
+  "outcome.servo.joint8",
+  "outcome.servo.joint9",
+  "outcome.servo.joint10",
+  "outcome.servo.joint11",
+  "outcome.servo.joint12",
+  "outcome.servo.joint13",
+  "outcome.servo.joint14",
+  "outcome.servo.joint15",
 ] as const;
 
 /** A HUNO joint's name by the robot's own left and right (docs/protocol.md §4), or undefined above 15. */
@@ -52,7 +53,27 @@ export function servoText(id: number, locale: Locale): string {
 
 /** "answered", "silent", "garbled". */
 export function readingStatusText(status: ServoReading["status"], locale: Locale): string {
-  return t(locale)(`outcome.servo.status.${status}`);
+  return t(locale)(STATUS_KEY[status]);
+}
+
+const STATUS_KEY = {
+  answered: "outcome.servo.status.answered",
+  silent: "outcome.servo.status.silent",
+  garbled: "outcome.servo.status.garbled",
+} as const satisfies Record<ServoReading["status"], string>;
+
+const PARAMETER_KEY = {
+  gains: "outcome.servo.parameter.gains",
+  speed: "outcome.servo.parameter.speed",
+  overload: "outcome.servo.parameter.overload",
+  bounds: "outcome.servo.parameter.bounds",
+  iGain: "outcome.servo.parameter.iGain",
+  io: "outcome.servo.parameter.io",
+} as const satisfies Record<WckParameter, string>;
+
+/** A parameter's name ("P and D gains", "bounds (lower, upper)"). */
+export function parameterNameText(parameter: WckParameter, locale: Locale): string {
+  return t(locale)(PARAMETER_KEY[parameter]);
 }
 
 /** A finding as one or two sentences. */
@@ -183,4 +204,9 @@ export function wiggleText(result: WiggleResult, counts: number, locale: Locale)
     case "stopped":
       return tr("outcome.servo.wiggle.stopped", { why: stopText(result.code, locale) });
   }
+}
+
+/** Parameter reads that stopped early. */
+export function infoStoppedText(code: StopCode, locale: Locale): string {
+  return t(locale)("outcome.servo.info.stopped", { why: stopText(code, locale) });
 }
