@@ -107,3 +107,15 @@ describe("rbc servos set-id, info, wiggle", () => {
     expect(r.stdout).toContain("Servo 4 (left ankle roll) did not follow the wiggle");
   });
 });
+
+describe("the servo doctor's words", () => {
+  it("name servos 0-15 as HUNO_JOINT_NAMES does (the robot's own left and right), in both languages", async () => {
+    const { HUNO_JOINT_NAMES } = await import("../../src/protocol/servo-limits.ts");
+    const { jointText } = await import("../../src/i18n/outcomes/servos/servo-words.ts");
+    expect(HUNO_JOINT_NAMES.map((_, id) => jointText(id, "en"))).toEqual(
+      HUNO_JOINT_NAMES.map((n) => n.toLowerCase()),
+    );
+    expect(jointText(7, "ko")).toBe("오른쪽 무릎");
+    expect(jointText(16, "en")).toBeUndefined();
+  });
+});

@@ -19,7 +19,6 @@ import {
   readingStatusText,
   scanStoppedText,
   setIdText,
-  stopText,
   wiggleText,
 } from "../../i18n/outcomes/servos/servo-words.ts";
 import { translator } from "../../i18n/translate.ts";
