@@ -276,6 +276,24 @@ const OPS: Op[] = [
     check: checkMotions,
   },
   {
+    // The busy probe's own 0x16 reply (docs/protocol.md §3.6) damaged on an idle robot: never taken for "busy".
+    // A garbled or partial frame is retried as a read; a late one makes the probe ask 0x12 (answered behind
+    // it, the link being FIFO) and 0x16 once more, the late reply paying its debt by count; with every reply
+    // swallowed, 0x12 goes unanswered too, so the link is gone: a timeout, not "not-idle".
+    name: "enterDirectMode + servos.read(5) (fault on the busy probe's 0x16 reply)",
+    run: async ({ client }) => {
+      await client.enterDirectMode();
+      return client.servos.read(5);
+    },
+    reply: 1,
+    byte: 14,
+    cutAfter: 5,
+    lateMs: Q + 50,
+    // A lost 0x16 waits its quick time, then 0x12 waits at most its own.
+    penaltyMs: 2 * Q,
+    expect: READ,
+  },
+  {
     name: "enterDirectMode + servos.read(5) (fault on the 0x10 reply)",
     run: async ({ client }) => {
       await client.enterDirectMode();
