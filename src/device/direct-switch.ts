@@ -44,13 +44,15 @@ export async function enterDirect(core: ClientCore, use: DirectUse): Promise<voi
 /**
  * Direct mode only when the robot is idle (docs/protocol.md §3.6 [decision]): nothing this client started is
  * under way (the activity machine refuses otherwise, `ActivityRefusedError`, nothing sent), and the busy probe
- * is clean (0x12 answered at once, 0x16 within its quick time). A busy main loop (a motion started elsewhere)
- * is recorded in the activity machine and refused with `RbcNotIdleError`; a clean probe ends an earlier `busy`.
+ * is clean (0x16 answered within its quick time; only after a silence is 0x12 asked, then 0x16 once more). A
+ * busy main loop (a motion started elsewhere) is recorded in the activity machine and refused with
+ * `RbcNotIdleError`; a clean probe ends an earlier `busy`.
  */
 export async function requireIdleRobot(core: ClientCore, use: DirectUse): Promise<void> {
   const { c, activity } = core;
   if (activity.doing.kind !== "busy") activity.requireIdle("enterDirect");
-  // A busy main loop is recorded in the activity machine by the probe itself.
+  // A busy main loop is recorded in the activity machine by the probe itself. Each of its two 0x16 went
+  // unanswered for the quick time: that is the wait the error reports.
   if ((await probeBusy(core)) === "busy") throw new RbcNotIdleError(use, c.timeouts.quickMs);
   if (activity.doing.kind === "busy") activity.busyEnded();
 }

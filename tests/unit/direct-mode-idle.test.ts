@@ -40,9 +40,11 @@ function servoBytesWritten(out: string[]): string[] {
 
 describe("direct mode only when the robot is idle (busy probe, docs/protocol.md §3.6)", () => {
   it("servo control, teach-in and tethered play are refused on a robot busy with a motion started elsewhere; nothing reaches the servo bus", async () => {
-    const rig = await makeRig({ sim: { busyMotion: 10 } });
+    // Each refusal costs the probe two quick timeouts (0x16 silent, 0x12 answered, twice): three refusals take
+    // 2.4 s, so a motion longer than that (motion 2, 6.6 s) is still playing at the last one.
+    const rig = await makeRig({ sim: { busyMotion: 2 } });
     const log = record(rig);
-    expect(rig.sim.playingMotion).toBe(10);
+    expect(rig.sim.playingMotion).toBe(2);
     for (const use of ["servo-control", "teach-in"] as const) {
       const e = await rig.fail(rig.client.enterDirectMode(use));
       expect(e).toBeInstanceOf(RbcNotIdleError);
@@ -56,7 +58,9 @@ describe("direct mode only when the robot is idle (busy probe, docs/protocol.md 
     const out = log.out();
     expect(out).not.toContain(ENTER_DIRECT);
     expect(servoBytesWritten(out)).toEqual([]);
-    expect(out.slice(0, 2)).toEqual([PROBE_VERSION, PROBE_DISTANCE]);
+    // The busy probe: 0x16 first; silent, so 0x12 (answered at once), 0x16 once more, silent again, 0x12.
+    expect(out.slice(0, 4)).toEqual([PROBE_DISTANCE, PROBE_VERSION, PROBE_DISTANCE, PROBE_VERSION]);
+    expect(rig.sim.playingMotion).toBe(2);
     expect(rig.sim.directMode).toBe(false);
     expect(rig.client.mode).toBe("packet");
     expect(rig.client.activity.doing.kind).toBe("busy");

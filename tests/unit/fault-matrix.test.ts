@@ -276,15 +276,34 @@ const OPS: Op[] = [
     check: checkMotions,
   },
   {
+    // The busy probe's own 0x16 reply (docs/protocol.md §3.6) damaged on an idle robot: never taken for "busy".
+    // A garbled or partial frame is retried as a read; a late one makes the probe ask 0x12 (answered behind
+    // it, the link being FIFO) and 0x16 once more, the late reply paying its debt by count; with every reply
+    // swallowed, 0x12 goes unanswered too, so the link is gone: a timeout, not "not-idle".
+    name: "enterDirectMode + servos.read(5) (fault on the busy probe's 0x16 reply)",
+    run: async ({ client }) => {
+      await client.enterDirectMode();
+      return client.servos.read(5);
+    },
+    reply: 1,
+    byte: 14,
+    cutAfter: 5,
+    lateMs: Q + 50,
+    // A lost 0x16 waits its quick time, then 0x12 waits at most its own.
+    penaltyMs: 2 * Q,
+    expect: READ,
+  },
+  {
     name: "enterDirectMode + servos.read(5) (fault on the 0x10 reply)",
     run: async ({ client }) => {
       await client.enterDirectMode();
       return client.servos.read(5);
     },
-    // Replies 1 and 2 are the busy probe's (0x12, 0x16: direct mode only when the robot is idle, §3.6).
-    reply: 3,
+    // Reply 1 is the busy probe's: on an idle robot its 0x16 is answered at once, so no 0x12 follows (direct
+    // mode only when the robot is idle, docs/protocol.md §3.6). Reply 2 is the 0x10's; the cut falls inside it.
+    reply: 2,
     byte: 14,
-    cutAfter: 2 * REQUEST + 5,
+    cutAfter: REQUEST + 5,
     lateMs: Q + 50,
     penaltyMs: Q,
     // A copy of the 0x10 reply that arrives once direct mode has begun reaches the servo bus: bytes no servo
@@ -303,9 +322,11 @@ const OPS: Op[] = [
       await client.enterDirectMode();
       return client.servos.read(5);
     },
-    reply: 4,
+    // Replies 1 and 2: the busy probe's 0x16 and the 0x10; reply 3 is the servo's; the cut falls inside the
+    // wCK read after the two 16-byte requests.
+    reply: 3,
     byte: 1,
-    cutAfter: 3 * REQUEST + 2,
+    cutAfter: 2 * REQUEST + 2,
     lateMs: Q + 50,
     penaltyMs: Q,
     // A wCK answer is two bare bytes with no header or checksum: a corrupted byte is taken as the answer (the
