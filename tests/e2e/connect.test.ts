@@ -214,7 +214,7 @@ describe("connecting a robot", () => {
  * and 390×844: `lang="ko"`, Korean shown, no catalogue key in place of its text, no label wider than its
  * button, nothing scrolling sideways, and no axe violation. With RBC_SHOTS=<dir>, screenshots go there.
  */
-describe("ko-KR: the Korean checks (each view in both languages: tests/e2e/i18n-every-view.test.ts)", () => {
+describe("in Korean (ko-KR)", () => {
   /** The panel in a Korean browser, with the fake serial port (`options`) or, with `noSerial`, no Web Serial. */
   const koreanPage = (size: Size, setup: { options?: RbcTestOptions; noSerial?: boolean } = {}) =>
     newLocalePage(app, "ko-KR", { size, ...setup });
