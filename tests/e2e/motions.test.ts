@@ -457,7 +457,7 @@ describe("in Korean (ko-KR)", () => {
         await expectGood(page, "files", viewport);
 
         // A file with warnings and one with an error: the panel's words and the checker's sentences in Korean
-        // (tests/e2e/i18n-motion-issues.test.ts has more of them).
+        // (the motion file checker's Korean block at the end of this file has more of them).
         await page
           .getByTestId("rbm-files")
           .setInputFiles([
