@@ -501,10 +501,10 @@ describe("in Korean (ko-KR)", () => {
         const problem = page.getByTestId("field-problem");
         await problem.waitFor();
         expect(squash(await problem.textContent())).toBe(
-          "오른쪽 발목 피치(서보 3)의 끝 위치에는 0에서 254 사이의 정수만 쓸 수 있어요. 입력한 값: 300.",
+          "왼쪽 발목 피치(서보 3)의 끝 위치에는 0에서 254 사이의 정수만 쓸 수 있어요. 입력한 값: 300.",
         );
         expect(
-          await page.getByLabel("오른쪽 발목 피치 (서보 3), 끝 위치", { exact: true }).inputValue(),
+          await page.getByLabel("왼쪽 발목 피치 (서보 3), 끝 위치", { exact: true }).inputValue(),
         ).toBe("300");
         if (viewport === DESKTOP) {
           expect(await page.locator('[data-testid="pose-table"] thead th').allTextContents()).toEqual([
@@ -521,7 +521,7 @@ describe("in Korean (ko-KR)", () => {
         await typeInto(page, "end-3", "");
         await problem.filter({ hasText: "써 주세요" }).waitFor();
         expect(squash(await problem.textContent())).toBe(
-          "오른쪽 발목 피치(서보 3)의 끝 위치에는 0에서 254 사이의 정수를 써 주세요.",
+          "왼쪽 발목 피치(서보 3)의 끝 위치에는 0에서 254 사이의 정수를 써 주세요.",
         );
 
         // Scene: its fields, continuity, and frames closer than the RBC plays them.
@@ -560,15 +560,15 @@ describe("in Korean (ko-KR)", () => {
         expect(await text(page, "teach-in-status")).toBe(
           "모든 서보가 제자리를 유지해요. 팔다리를 고르고 힘 빼기를 눌러 주세요.",
         );
-        await page.getByRole("checkbox", { name: "오른쪽 팔 (서보 10–12)" }).check();
-        await page.getByRole("button", { name: "오른쪽 팔 힘 빼기" }).click();
+        await page.getByRole("checkbox", { name: "왼쪽 팔 (서보 10–12)" }).check();
+        await page.getByRole("button", { name: "왼쪽 팔 힘 빼기" }).click();
         await page.getByTestId("teach-in").getByText("서보 10–12의 힘이 빠졌어요 (확인함).").waitFor();
         expect(await text(page, "teach-in-status")).toBe(
           "힘 빠짐: 서보 10–12. 나머지 서보는 제자리를 유지해요.",
         );
         await page.getByRole("tab", { name: "티칭 (켜짐)", exact: true }).waitFor();
         await page.getByRole("heading", { level: 3, name: "손으로 자세 잡기 (데모 로봇)" }).waitFor();
-        await page.getByLabel("오른쪽 팔꿈치 (서보 12)").fill("120");
+        await page.getByLabel("왼쪽 팔꿈치 (서보 12)").fill("120");
         await page.getByTestId("teach-pos-12").filter({ hasText: "120" }).waitFor();
         await expectTidy(page, "teach", viewport);
         await page.getByRole("button", { name: "장면 1에 자세 읽기" }).click();

@@ -293,8 +293,8 @@ describe("in Korean (ko-KR)", () => {
           "슬라이더",
           "토크",
         ]);
-        expect(await text(page.locator('label[for="servo-12"]'))).toBe("오른쪽 팔꿈치");
-        expect(await page.getByLabel("오른쪽 팔꿈치 (서보 12번), 목표 1~198").count()).toBe(1);
+        expect(await text(page.locator('label[for="servo-12"]'))).toBe("왼쪽 팔꿈치");
+        expect(await page.getByLabel("왼쪽 팔꿈치 (서보 12번), 목표 1~198").count()).toBe(1);
         // A refused value says why, in Korean; nothing is sent.
         await page.locator("#servo-12").fill("300");
         await page.locator("#servo-12").press("Enter");
