@@ -503,9 +503,9 @@ describe("in Korean (ko-KR)", () => {
         expect(squash(await problem.textContent())).toBe(
           "왼쪽 발목 피치(서보 3)의 끝 위치에는 0에서 254 사이의 정수만 쓸 수 있어요. 입력한 값: 300.",
         );
-        expect(
-          await page.getByLabel("왼쪽 발목 피치 (서보 3), 끝 위치", { exact: true }).inputValue(),
-        ).toBe("300");
+        expect(await page.getByLabel("왼쪽 발목 피치 (서보 3), 끝 위치", { exact: true }).inputValue()).toBe(
+          "300",
+        );
         if (viewport === DESKTOP) {
           expect(await page.locator('[data-testid="pose-table"] thead th').allTextContents()).toEqual([
             "ID",
