@@ -2,19 +2,25 @@
  * Runs an `rbc` command in the test's own process, on a virtual clock: the command's own `run` with a RunEnv
  * like the one src/cli/main.ts builds, its stdout and stderr collected, and the demo robot on a `VirtualClock`
  * the test drives (`driveClock`), so a 1.8 s motion takes no real time and no result depends on how busy the
- * machine is. Failures are told as main tells them (`rbc: ` and the error's line on stderr, the exit code of
- * its kind); main's own wiring (signals, EPIPE, flushing, `--version`, help) is covered by the few spawned
- * tests that remain (cli-demo, cli-serial).
+ * machine is. Help, failures and a reader that goes away are handled as main handles them (help from the same
+ * renderers, `rbc: ` and the error's line on stderr with "Run … --help" after a usage error and the English
+ * technical detail after `--log` in Korean, the exit code of its kind, a closed stdout stopping the command
+ * like Ctrl-C); main's own wiring (signals, EPIPE, flushing, `--version`, `--lang` refused, the installed bin)
+ * is covered by the few spawned tests that remain (cli-demo, cli-i18n, cli-serial).
  */
 import { PassThrough } from "node:stream";
-import { splitCommand } from "../../src/cli/args.ts";
+import { splitCommand, wantsHelp } from "../../src/cli/args.ts";
 import { Cleanups } from "../../src/cli/cleanups.ts";
 import type { RunEnv } from "../../src/cli/command.ts";
-import { findCommand } from "../../src/cli/commands/index.ts";
+import { COMMAND_LIST, findCommand } from "../../src/cli/commands/index.ts";
 import { CliError, EXIT, errorCode, errorLine, UsageError } from "../../src/cli/errors.ts";
+import { commandHelp, globalHelp } from "../../src/cli/help/render.ts";
 import { cliLocale } from "../../src/cli/locale.ts";
+import { cliMessages } from "../../src/cli/messages.ts";
 import { Output } from "../../src/cli/output.ts";
+import { technicalDetail } from "../../src/device/error-text.ts";
 import { RbcUploadError } from "../../src/device/errors.ts";
+import { translator } from "../../src/i18n/translate.ts";
 import { VirtualClock } from "../../src/shared/clock.ts";
 import { driveClock } from "../support/drive-clock.ts";
 import { REPO } from "./spawn-cli.ts";
@@ -30,35 +36,61 @@ export interface InProcessResult {
 export interface InProcessOptions {
   env?: NodeJS.ProcessEnv;
   cwd?: string;
+  /**
+   * stdout's reader goes away once it has read text matching this (`rbc … | head -1`): rbc's next write to
+   * stdout fails, as EPIPE does, and stops the command the way main does (quietly, as on Ctrl-C).
+   */
+  readerLeavesAfter?: RegExp;
 }
 
-/** Runs `rbc ARGV` (a subcommand and its options) in this process; never throws for a failed command. */
+/** Runs `rbc ARGV` (a subcommand and its options, or help) in this process; never throws for a failed command. */
 export async function runInProcess(argv: string[], options: InProcessOptions = {}): Promise<InProcessResult> {
   const { command: name, rest } = splitCommand(argv);
-  const def = name === undefined ? undefined : findCommand(name);
-  if (!def) throw new Error(`runInProcess: no command in ${argv.join(" ")}`);
   const env = { NO_COLOR: "1", LANG: "C", LC_ALL: "C", ...options.env };
   const { locale } = cliLocale(argv, env);
+  const t = translator(cliMessages, locale);
   const text = { stdout: "", stderr: "" };
   const stdout = new PassThrough();
   const stderr = new PassThrough();
-  stdout.on("data", (d: Buffer) => {
-    text.stdout += d.toString();
-  });
-  stderr.on("data", (d: Buffer) => {
-    text.stderr += d.toString();
-  });
+  let readerGone = false;
   const out = new Output(rest.includes("--json"), {
     stdout: stdout as unknown as NodeJS.WriteStream,
     stderr: stderr as unknown as NodeJS.WriteStream,
   });
-  if (def.streams) out.streaming();
+  stdout.on("data", (d: Buffer) => {
+    if (readerGone) return out.markBroken("stdout");
+    text.stdout += d.toString();
+    if (options.readerLeavesAfter?.test(text.stdout)) readerGone = true;
+  });
+  stderr.on("data", (d: Buffer) => {
+    text.stderr += d.toString();
+  });
+  const controller = new AbortController();
+  let outputClosed = false;
+  out.onBroken((which) => {
+    if (which !== "stdout") return;
+    outputClosed = true;
+    controller.abort(new Error("The output was closed."));
+  });
   const clock = new VirtualClock();
+  const done = (code: number) => ({ code, ...text, robotMs: clock.now() });
+
+  if (name === undefined || name === "help" || wantsHelp(rest)) {
+    const topic = name === "help" ? splitCommand(rest).command : name;
+    const about = topic === undefined ? undefined : findCommand(topic);
+    if (topic !== undefined && !about) throw new Error(`runInProcess: no command ${topic}`);
+    out.text(about ? commandHelp(about, locale) : globalHelp(COMMAND_LIST, locale));
+    await settled();
+    return done(EXIT.ok);
+  }
+  const def = findCommand(name);
+  if (!def) throw new Error(`runInProcess: no command in ${argv.join(" ")}`);
+  if (def.streams) out.streaming();
   const cleanups = new Cleanups();
   const stdin = new PassThrough() as unknown as NodeJS.ReadStream;
   const runEnv: RunEnv = {
     argv: rest,
-    signal: new AbortController().signal,
+    signal: controller.signal,
     onCleanup: (fn) => cleanups.add(fn),
     out,
     setExitNote: () => {},
@@ -72,18 +104,31 @@ export async function runInProcess(argv: string[], options: InProcessOptions = {
   try {
     code = await driveClock(clock, def.run(runEnv));
   } catch (e) {
-    out.note(`rbc: ${errorLine(e, locale)}`);
-    const details =
-      e instanceof RbcUploadError
-        ? { acknowledged: e.acknowledged, total: e.total, outcome: e.outcome }
-        : e instanceof CliError && !(e instanceof UsageError)
-          ? e.details
-          : {};
-    out.result({ ok: false, error: { code: errorCode(e), message: errorLine(e), ...details } });
-    code = e instanceof UsageError ? EXIT.usage : e instanceof CliError ? e.exitCode : EXIT.failed;
+    if (outputClosed && controller.signal.aborted && !(e instanceof UsageError)) {
+      code = EXIT.interrupted; // stopped because stdout's reader went away: quietly, as main does
+    } else {
+      const log = name === "log" || rest.includes("--log");
+      out.note(`rbc: ${errorLine(e, locale, { detailShown: log })}`);
+      if (locale !== "en" && log) out.note(`rbc: ${t("cli.error.detail", { detail: technicalDetail(e) })}`);
+      if (e instanceof UsageError)
+        out.note(t("cli.usage.seeHelp", { help: `rbc ${e.command ?? def.name} --help` }));
+      const details =
+        e instanceof RbcUploadError
+          ? { acknowledged: e.acknowledged, total: e.total, outcome: e.outcome }
+          : e instanceof CliError && !(e instanceof UsageError)
+            ? e.details
+            : {};
+      out.result({ ok: false, error: { code: errorCode(e), message: errorLine(e), ...details } });
+      code = e instanceof UsageError ? EXIT.usage : e instanceof CliError ? e.exitCode : EXIT.failed;
+    }
   } finally {
     await driveClock(clock, cleanups.run());
   }
-  await new Promise((resolve) => setImmediate(resolve));
-  return { code, ...text, robotMs: clock.now() };
+  await settled();
+  return done(code);
+}
+
+/** Lets the collecting streams take what was written. */
+function settled(): Promise<void> {
+  return new Promise((resolve) => setImmediate(resolve));
 }

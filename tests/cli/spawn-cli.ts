@@ -22,14 +22,6 @@ export const EXAMPLES = {
   armsOnly: "examples/arms-only.rbm",
 } as const;
 
-/**
- * For --demo: the demo robot's time runs this many times faster (RBC_DEMO_TIME_SCALE), so a 1.8 s motion takes
- * 36 real ms while rbc still reports robot time. The demo clock keeps the order of events when the process
- * stalls (src/cli/demo-clock.ts), so a loaded machine cannot turn a slow reply into a timeout; beyond about 50,
- * Node's 1 ms timer resolution, not the scale, sets the pace.
- */
-export const FAST_DEMO = { RBC_DEMO_TIME_SCALE: "50" } as const;
-
 let built = false;
 /**
  * dist-cli/main.js, built first (once per test worker) if it is missing or older than its sources. The build
@@ -75,9 +67,9 @@ async function kill(running: Set<ChildProcess>): Promise<void> {
 
 export interface CliOptions {
   cwd?: string;
-  /** Extra environment variables (e.g. FAST_DEMO). */
+  /** Extra environment variables. */
   env?: Readonly<Record<string, string>>;
-  /** SIGKILL after this long (default 20 s). */
+  /** SIGKILL after this long (default 60 s: a process starts slowly on a loaded machine). */
   timeoutMs?: number;
 }
 
@@ -148,7 +140,7 @@ function startIn(running: Set<ChildProcess>, args: readonly string[], options: C
   child.stderr?.on("data", (t: string) => {
     proc.stderr += t;
   });
-  const timeoutMs = options.timeoutMs ?? 20_000;
+  const timeoutMs = options.timeoutMs ?? 60_000;
   proc.done = new Promise((resolve) => {
     const timer = setTimeout(() => child.kill("SIGKILL"), timeoutMs);
     child.on("close", (code, signal) => {

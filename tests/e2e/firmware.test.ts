@@ -5,6 +5,15 @@ import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { firmwareHex } from "../support/hex.ts";
 import { type AppHarness, ROOT, squash, startHarness, watchPage } from "./harness.ts";
 import "./rbc-test-globals.ts";
+import {
+  connectDemo,
+  DESKTOP,
+  expectPageOk,
+  keysShown,
+  pageLang as lang,
+  newLocalePage,
+  PHONE,
+} from "./i18n-checks.ts";
 
 /**
  * The Firmware view on the demo robot (its bootloader in front of the simulated RBC; the panel switches it off
@@ -187,5 +196,241 @@ describe("a robot waiting in its bootloader (issue 20 item 11)", () => {
     await page.getByRole("button", { name: "Connect robot" }).click();
     await page.getByText("No port was chosen").waitFor();
     expect(await page.getByTestId("open-recovery").count()).toBe(0);
+  });
+});
+
+/**
+ * The Firmware view in Korean (issue #14 item 1): on the demo robot at 1280×800 and 390×844, the view with the
+ * demo file opened, the confirmation, the progress and the result sentence are Korean, with `lang="ko"`, no
+ * catalogue key shown, no button label overflowing and nothing scrolling sideways; axe finds no violation. The
+ * device's words are Korean too: a refused file names its line, a cancelled update says what the robot holds,
+ * and the device's English sentence stays in the technical detail. Recover (no robot connected) in Korean.
+ * With RBC_SHOTS=<dir>, screenshots go there.
+ */
+describe("in Korean (ko-KR)", () => {
+  /**
+   * No label overflows, nothing scrolls sideways, no key shows: at `where` (axe has a test of its own); the
+   * screenshot `shotName` with RBC_SHOTS.
+   */
+  const expectLaidOut = (page: Page, where: string, shotName?: string) =>
+    expectPageOk(page, where, { axe: false, shot: shotName });
+
+  /** The demo robot (the connect card's second button, whatever its language), then the Firmware view. */
+  async function openFirmwareOnDemo(page: Page): Promise<void> {
+    await connectDemo(page);
+    await page.getByRole("link", { name: "펌웨어" }).click();
+    await page.getByTestId("firmware-view").waitFor();
+  }
+
+  /** Opens the demo file and asks to update: the confirmation is shown. */
+  async function confirmDemoFile(page: Page): Promise<void> {
+    await page.getByTestId("fw-demo-file").click();
+    await page.getByTestId("fw-summary").waitFor();
+    await page.getByTestId("flash-start").click();
+    await page.getByTestId("flash-confirm").waitFor();
+  }
+
+  const RESULT =
+    /^펌웨어를 업데이트했어요\. 로봇이 알려 준 버전: 2\.50 \(이전: 2\.23\)\. [\d.]+초 동안 1,025줄을 썼어요\. 로봇이 다시 시작했어요\. 다른 모션을 실행하기 전에 기본 자세를 실행해 주세요\.$/;
+
+  describe("the Firmware view in Korean", () => {
+    for (const [name, viewport] of [
+      ["desktop", DESKTOP],
+      ["phone", PHONE],
+    ] as const) {
+      it(`shows the file, the confirmation, progress and the result in Korean (${name})`, {
+        timeout: 60_000,
+      }, async () => {
+        const { page, context } = await app.newPage({ locale: "ko-KR", viewport, options: { timeScale: 4 } });
+        const seen = watchPage(page, app.origin);
+        await page.goto(app.url, { waitUntil: "domcontentloaded" });
+        await openFirmwareOnDemo(page);
+        expect(await lang(page)).toBe("ko");
+        const view = page.getByTestId("firmware-view");
+        expect(await view.getByRole("heading", { level: 1 }).textContent()).toBe("펌웨어");
+        expect(await view.getByRole("heading", { level: 2 }).allTextContents()).toEqual([
+          "펌웨어 파일",
+          "로봇 업데이트",
+        ]);
+        expect(squash(await page.getByTestId("fw-current").textContent())).toBe(
+          "데모 로봇이 알려 준 펌웨어 버전: 2.23",
+        );
+        expect(squash(await page.getByTestId("fw-notice").textContent())).toBe(
+          "실제 로봇에서는 실험 단계예요. 부트로더 자체는 절대 덮어쓰지 않아요. 그래서 업데이트가 실패하거나 중간에 끊겨도 업데이트를 다시 하면 고쳐져요. " +
+            "업데이트가 끝날 때까지 로봇의 전원을 켜 둔 채(충전된 배터리나 어댑터) 로봇을 눕혀 두고, 케이블도 꽂아 두세요.",
+        );
+        await page.getByText("먼저 펌웨어 파일을 열어 주세요.").waitFor();
+        await page.getByRole("button", { name: "데모 펌웨어 파일 사용 (2.50)" }).waitFor();
+        await expectLaidOut(page, "the view");
+
+        await page.getByTestId("fw-demo-file").click();
+        await page.getByTestId("fw-summary").waitFor();
+        expect(await page.getByTestId("fw-size").textContent().then(squash)).toBe("16,384바이트");
+        expect(await page.getByTestId("fw-pages").textContent().then(squash)).toBe("256바이트 페이지 64개");
+        expect(await page.getByTestId("fw-lines").textContent().then(squash)).toBe(
+          "1,025줄 (보낼 데이터 46,093바이트)",
+        );
+        expect(await page.getByTestId("fw-summary").locator("dt").allTextContents()).toEqual([
+          "크기",
+          "주소 범위",
+          "플래시 페이지",
+          "줄 수",
+        ]);
+        await page.getByRole("button", { name: "파일 닫기" }).waitFor();
+        await expectLaidOut(page, "the file opened", `firmware-ko-file-${name}`);
+
+        await page.getByRole("button", { name: "펌웨어 업데이트…" }).click();
+        const confirm = page.getByTestId("flash-confirm");
+        await confirm.waitFor();
+        expect(squash(await confirm.textContent())).toBe(
+          "로봇의 펌웨어를 demo-2.50.hex(으)로 바꿀까요? 데모 로봇은 요청하면 스스로 다시 시작해요. " +
+            "다음으로 로봇을 껐다가 켜 달라는 안내가 나오고, 그다음 파일을 한 줄씩 써요. 펌웨어 업데이트 취소",
+        );
+        await expectLaidOut(page, "the confirmation", `firmware-ko-confirm-${name}`);
+        await page.getByRole("button", { name: "펌웨어 업데이트", exact: true }).click();
+
+        const progress = page.getByTestId("flash-progress");
+        await progress.waitFor();
+        expect(squash(await progress.textContent())).toContain("지금 로봇을 껐다가 다시 켜 주세요.");
+        const figures = page.getByTestId("flash-figures");
+        await figures.filter({ hasText: /초당/ }).waitFor({ timeout: 20_000 });
+        expect(squash(await figures.textContent())).toMatch(
+          /^1,025줄 중 [\d,]+줄 · 46,093바이트 중 [\d,]+바이트 \(\d+%\) · 초당 [\d,]+바이트 · (약 \d+초 남음|약 \d+분 \d+초 남음)$/,
+        );
+        expect(await progress.locator("progress").getAttribute("aria-label")).toBe(
+          "demo-2.50.hex(으)로 펌웨어 업데이트",
+        );
+        expect(squash(await progress.textContent())).toContain("demo-2.50.hex 쓰기");
+        await expectLaidOut(page, "the progress", `firmware-ko-progress-${name}`);
+
+        const result = page.getByTestId("flash-result").getByText(/펌웨어를 업데이트했어요/);
+        await result.waitFor({ timeout: 40_000 });
+        expect(squash(await result.textContent())).toMatch(RESULT);
+        expect(await page.getByTestId("fw-version").textContent().then(squash)).toBe("2.50");
+        expect(await page.getByTestId("flash-result").getByRole("status").getAttribute("aria-label")).toBe(
+          "펌웨어 업데이트 결과",
+        );
+        await expectLaidOut(page, "the result", `firmware-ko-result-${name}`);
+        expect(seen.errors).toEqual([]);
+        await context.close();
+      });
+    }
+
+    it("says in Korean why a file is refused and what a cancelled update leaves, with the device's English in the detail", {
+      timeout: 60_000,
+    }, async () => {
+      const { page, context } = await newLocalePage(app, "ko-KR", { options: { timeScale: 2 } });
+      await openFirmwareOnDemo(page);
+
+      const lines = firmwareHex("2.50", 512).split("\r\n");
+      lines[2] = `${lines[2]!.slice(0, -2)}00`;
+      await page.getByTestId("fw-file-input").setInputFiles({
+        name: "broken.hex",
+        mimeType: "text/plain",
+        buffer: Buffer.from(lines.join("\r\n")),
+      });
+      const problem = page.locator(".fw-file .notice");
+      await problem.waitFor();
+      expect(squash(await problem.locator("p").textContent())).toBe(
+        "broken.hex은(는) 로봇의 부트로더가 받을 수 있는 펌웨어 파일이 아니에요. 3번째 줄: 레코드의 체크섬이 맞지 않아요.",
+      );
+      expect(await problem.locator("summary").textContent()).toBe("기술 정보");
+      expect(squash(await problem.locator("pre").textContent())).toMatch(
+        /^IntelHexError: Line 3: the checksum is 00 but/,
+      );
+      expect(await problem.locator("pre").getAttribute("lang")).toBe("en");
+      expect(await page.getByTestId("fw-summary").count()).toBe(0);
+
+      await page.getByTestId("fw-file-input").setInputFiles({
+        name: "big-2.60.hex",
+        mimeType: "text/plain",
+        buffer: Buffer.from(firmwareHex("2.60", 64 * 1024)),
+      });
+      await page.getByTestId("fw-summary").waitFor();
+      await page.getByTestId("flash-start").click();
+      await page.getByRole("button", { name: "펌웨어 업데이트", exact: true }).click();
+      await page.getByTestId("flash-figures").filter({ hasText: /초당/ }).waitFor({ timeout: 20_000 });
+      expect(squash(await page.getByTestId("flash-progress").textContent())).toContain(
+        "지금 취소하면 업데이트가 성공할 때까지 로봇의 펌웨어가 불완전할 수 있어요.",
+      );
+      await page.getByRole("button", { name: "취소", exact: true }).click();
+      const result = page.getByTestId("flash-result").locator(".notice");
+      await result.getByText(/업데이트를 취소했어요/).waitFor({ timeout: 20_000 });
+      expect(squash(await result.locator("p").textContent())).toBe(
+        "펌웨어 업데이트를 취소했어요. 로봇의 펌웨어가 불완전할 수 있고, 업데이트가 성공할 때까지 로봇이 작동하지 않을 수 있어요. " +
+          "부트로더는 절대 덮어쓰지 않아요. 로봇을 껐다가 다시 켜고 업데이트를 다시 해 주세요.",
+      );
+      expect(squash(await result.locator("pre").textContent())).toBe(
+        "FirmwareUpdateError (cancelled): The firmware update was cancelled. The robot's firmware may now be incomplete, and the robot may not work until an update succeeds. The bootloader is never overwritten: switch the robot off and on and run the update again.",
+      );
+      expect(await page.getByTestId("fw-version").textContent().then(squash)).toBe("2.23");
+      await expectLaidOut(page, "the cancelled update");
+      await context.close();
+    });
+
+    for (const [name, viewport] of [
+      ["desktop", DESKTOP],
+      ["phone", PHONE],
+    ] as const) {
+      it(`offers Recover in Korean while no robot is connected (${name})`, async () => {
+        const { page, context } = await newLocalePage(app, "ko-KR", { size: viewport });
+        await page.getByTestId("connect-card").waitFor();
+        await page.getByRole("link", { name: "펌웨어" }).click();
+        await page.getByTestId("firmware-view").waitFor();
+        expect(await lang(page)).toBe("ko");
+        await page.getByRole("heading", { level: 2, name: "복구: 응답하지 않는 로봇 업데이트" }).waitFor();
+        expect(await page.getByTestId("recover-start").textContent().then(squash)).toBe("복구…");
+        expect(await page.getByTestId("recover-start").isDisabled()).toBe(true);
+        // A real file opens here too; Recover's confirmation asks for the port first.
+        await page.getByTestId("fw-file-input").setInputFiles({
+          name: "firmware-2.60.hex",
+          mimeType: "text/plain",
+          buffer: Buffer.from(firmwareHex("2.60", 1024)),
+        });
+        await page.getByTestId("fw-summary").waitFor();
+        await page.getByTestId("recover-start").click();
+        const confirm = page.getByTestId("flash-confirm");
+        await confirm.waitFor();
+        expect(squash(await confirm.textContent())).toContain(
+          "응답하지 않는 로봇에 firmware-2.60.hex을(를) 쓸까요?",
+        );
+        expect(squash(await confirm.textContent())).toContain("먼저 브라우저가 로봇의 포트를 물어봐요.");
+        await page.getByRole("button", { name: "포트 선택 후 업데이트" }).waitFor();
+        await expectLaidOut(page, "Recover", `firmware-ko-recover-${name}`);
+        await context.close();
+      });
+    }
+
+    it("says in Korean that a browser without Web Serial cannot Recover", async () => {
+      const { page, context } = await newLocalePage(app, "ko-KR", { noSerial: true, hash: "#/firmware" });
+      await page.getByTestId("firmware-view").waitFor();
+      const note = page.getByText(/Web Serial을 지원하지 않아요/);
+      expect(squash(await note.textContent())).toBe(
+        "이 브라우저는 Web Serial을 지원하지 않아요. 컴퓨터에서 Chrome이나 Edge를 쓰거나 rbc flash --recover 명령을 써 주세요.",
+      );
+      expect(await note.locator("code").textContent()).toBe("rbc flash --recover");
+      expect(await keysShown(page)).toEqual([]);
+      await context.close();
+    });
+
+    it("axe finds no violation: the file, the confirmation, the progress and the result", {
+      timeout: 60_000,
+    }, async () => {
+      const { page, context } = await newLocalePage(app, "ko-KR", { options: { timeScale: 4 } });
+      await openFirmwareOnDemo(page);
+      expect(await lang(page)).toBe("ko");
+      await expectPageOk(page, "the Firmware view", { lang: "ko" });
+      await confirmDemoFile(page);
+      await expectPageOk(page, "the confirmation", { lang: "ko" });
+      await page.getByRole("button", { name: "펌웨어 업데이트", exact: true }).click();
+      await page.getByTestId("flash-progress").waitFor();
+      await expectPageOk(page, "the progress", { lang: "ko" });
+      await page
+        .getByTestId("flash-result")
+        .getByText(/펌웨어를 업데이트했어요/)
+        .waitFor({ timeout: 40_000 });
+      await expectPageOk(page, "the result", { lang: "ko" });
+      await context.close();
+    });
   });
 });

@@ -1,6 +1,6 @@
 /**
  * The checks every page of the panel gets in both languages (issue #14, "Done when"), once for all the browser
- * tests in `i18n*.test.ts`: the page's `lang`, no catalogue key shown in place of its text, no label wider than
+ * tests: the feature files' "in Korean (ko-KR)" blocks, `i18n.test.ts` and `i18n-every-view.test.ts`. The page's `lang`, no catalogue key shown in place of its text, no label wider than
  * its button, nothing that scrolls sideways, no axe violation (nor an unreviewed "needs review"), and
  * screenshots on demand (`RBC_SHOTS=<dir>`). Also the pages themselves: a browser in a given language at a
  * given size, connected to the fake robot on a cable or to the demo robot.

@@ -11,6 +11,16 @@ import {
   watchPage,
 } from "./harness.ts";
 import "./rbc-test-globals.ts";
+import type { Page } from "playwright-core";
+import {
+  connectCable,
+  expectPageOk,
+  keysShown,
+  pageLang as lang,
+  newLocalePage,
+  SIZES,
+  sizeName as size,
+} from "./i18n-checks.ts";
 
 /** The packet log view: coalesced garbage, raw bytes, and a scroll area the keyboard can reach (issue #11 item 11). */
 
@@ -127,5 +137,136 @@ describe("packet log view", () => {
       "PC → RBC  Read firmware version (16 bytes)  FF FF AA 55 AA 55 37 BA 12 00 00 00 00 01 01 01",
     );
     await context.close();
+  });
+});
+
+/**
+ * The Zeros and Log views in Korean (issue #14 item 1): a Korean browser gets both views in Korean with
+ * `lang="ko"`, their sentences from the actions too (write, backup files, copy); no catalogue key shows; no
+ * button's label overflows it and nothing scrolls sideways at 1280×800 and 390×844; axe finds no violation.
+ * With RBC_SHOTS=<dir>, screenshots of both views at both sizes go there to be looked at.
+ */
+describe("in Korean (ko-KR)", () => {
+  /** Adds packets to the log: every "다시 읽기" on the Robot view reads the robot's details again. */
+  async function refreshTimes(page: Page, times: number): Promise<void> {
+    const refresh = page.getByTestId("device-card").getByRole("button", { name: "다시 읽기" });
+    for (let i = 0; i < times; i++) {
+      await refresh.click();
+      await refresh.waitFor();
+    }
+  }
+
+  const entries = async (page: Page) =>
+    Number(
+      squash(await page.getByTestId("log-count").textContent())
+        .match(/^항목 ([\d,]+)개/)?.[1]
+        ?.replace(/,/g, ""),
+    );
+
+  describe("the Log view in Korean", () => {
+    it("says in Korean that there is nothing yet, before a robot is connected", async () => {
+      const { page, context } = await newLocalePage(app, "ko-KR");
+      await page.getByRole("link", { name: "로그", exact: true }).click();
+      const card = page.getByTestId("log-card");
+      await card.waitFor();
+      expect(await card.getByRole("heading", { level: 1 }).textContent()).toBe("패킷 로그");
+      expect(squash(await card.locator(".empty").textContent())).toBe(
+        "아직 패킷이 없어요. 로봇(또는 데모 로봇)을 연결하면 주고받는 모든 패킷이 여기에 나와요.",
+      );
+      expect(squash(await page.getByTestId("log-count").textContent())).toBe(
+        "항목 0개 (최근 항목 5,000개까지, 바이트는 최대 1,024KB까지 보관해요). 연달아 버린 바이트는 한 항목으로 묶어요.",
+      );
+      expect(await card.getByRole("button", { name: "지우기" }).isDisabled()).toBe(true);
+      await context.close();
+    });
+
+    for (const viewport of SIZES) {
+      it(`is in Korean, fits and passes axe at ${viewport.width}×${viewport.height}`, async () => {
+        const { page, context } = await newLocalePage(app, "ko-KR", { size: viewport, options: FAST });
+        await connectCable(page);
+        // Stray bytes and a frame too long for its type before the next reply: one row of discarded bytes.
+        await page.evaluate(() => {
+          const stray = Array.from({ length: 3000 }, (_, i) => (i * 13 + 1) & 0x7f);
+          const oversize = [
+            0xff, 0xff, 0xaa, 0x55, 0xaa, 0x55, 0x37, 0xba, 0x11, 0x01, 0x00, 0x00, 0x0f, 0x00,
+          ];
+          window.__rbcTest?.port.faults.garbageBeforeReply([...stray, ...oversize, 0, 0]);
+        });
+        await refreshTimes(page, 20);
+        await page.getByRole("link", { name: "로그", exact: true }).click();
+        const card = page.getByTestId("log-card");
+        await card.locator("tbody tr").first().waitFor();
+        expect(await lang(page)).toBe("ko");
+
+        expect(await card.getByRole("heading", { level: 1 }).textContent()).toBe("패킷 로그");
+        for (const name of ["일시 정지", "지우기", "복사", "다운로드 (.txt)"]) {
+          await card.getByRole("button", { name, exact: true }).waitFor();
+        }
+        expect(await card.locator("thead th").allTextContents()).toEqual([
+          "시간",
+          "방향",
+          "종류",
+          "바이트 (16진수)",
+        ]);
+        const total = await entries(page);
+        expect(total).toBeGreaterThan(100);
+        expect(squash(await page.getByTestId("log-count").textContent())).toBe(
+          `항목 ${total.toLocaleString("ko")}개 (최근 항목 5,000개까지, 바이트는 최대 1,024KB까지 보관해요). 연달아 버린 바이트는 한 항목으로 묶어요. 한 쪽에 100개씩 보여요. '복사'와 '다운로드'는 전체를 가져가요.`,
+        );
+        expect(squash(await page.getByTestId("log-page").textContent())).toBe(
+          `${total.toLocaleString("ko")}개 중 1–100번째 (최신순)`,
+        );
+        const pages = page.getByRole("navigation", { name: "로그 쪽" });
+        await pages.getByRole("button", { name: "더 최근" }).waitFor();
+        await pages.getByRole("button", { name: "더 이전" }).waitFor();
+        await page.getByRole("region", { name: "패킷 (최신순)" }).waitFor();
+
+        // The view's words are Korean; the packets' names come from the device, in English, marked so.
+        const directions = await card.locator("tbody .log-dir").allTextContents();
+        expect(new Set(directions.map(squash))).toEqual(new Set(["→ 보냄", "← 받음"]));
+        const named = card.locator("tbody tr.log-packet .log-name span[lang='en']").first();
+        expect(await named.textContent()).toMatch(/^[A-Z][A-Za-z ()0-9-]+$/);
+        await expectPageOk(page, "the Log view", { shot: `log-ko-${size(viewport)}` });
+
+        // The run of discarded bytes is on an older page.
+        await pages.getByRole("button", { name: "더 이전" }).click();
+        const discard = card.locator("tr.log-discard");
+        await discard.first().waitFor();
+        const row = squash(await discard.first().textContent());
+        expect(row).toContain("버린 바이트 종류에 비해 너무 긴 프레임 1개, 프레임이 아닌 바이트");
+        expect(row).toContain("(3,016바이트)");
+        expect(row).toContain("01 0E 1B 28");
+
+        // Paused: the button says what it will do, and the line says what happens meanwhile.
+        await card.getByRole("button", { name: "일시 정지", exact: true }).click();
+        const resume = card.getByRole("button", { name: "계속", exact: true });
+        await resume.waitFor();
+        expect(await resume.getAttribute("aria-pressed")).toBe("true");
+        expect(squash(await page.getByTestId("log-count").textContent())).toMatch(
+          /일시 정지됨: 새 패킷은 계속 기록하지만 화면에는 보여 주지 않아요\.$/,
+        );
+        await expectPageOk(page, "the Log view, paused", { axe: false });
+        await context.close();
+      });
+    }
+
+    it("says in Korean what Copy did; the copied log stays a packet trace in English", async () => {
+      const { page, context } = await newLocalePage(app, "ko-KR", { options: FAST });
+      await connectCable(page);
+      await page.getByRole("link", { name: "로그", exact: true }).click();
+      const card = page.getByTestId("log-card");
+      await card.locator("tbody tr").first().waitFor();
+      const total = await entries(page);
+      await context.grantPermissions(["clipboard-read", "clipboard-write"], { origin: app.origin });
+      await card.getByRole("button", { name: "복사", exact: true }).click();
+      await page.getByText(`${total}줄을 클립보드에 복사했어요.`).waitFor();
+      const copied = await page.evaluate(() => navigator.clipboard.readText());
+      expect(copied).toMatch(/^RBC Panel packet log, /);
+      expect(copied).toContain(
+        "PC → RBC  Read firmware version (16 bytes)  FF FF AA 55 AA 55 37 BA 12 00 00 00 00 01 01 01",
+      );
+      expect(await keysShown(page)).toEqual([]);
+      await context.close();
+    });
   });
 });

@@ -3,6 +3,17 @@ import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { HUNO_BASIC_POSTURE } from "../../src/protocol/index.ts";
 import { type AppHarness, connectRobot, cspViolations, squash, startHarness } from "./harness.ts";
 import "./rbc-test-globals.ts";
+import {
+  connectCable,
+  connectDemo,
+  expectPageOk,
+  newLocalePage,
+  SIZES,
+  type Size,
+  shot,
+  text,
+} from "./i18n-checks.ts";
+import { exampleText, rbmFile } from "./motion-fixtures.ts";
 
 let app: AppHarness;
 
@@ -168,5 +179,219 @@ describe("servos view", () => {
     await page.getByTestId("connect-card").waitFor();
     await expect.poll(() => simDirect(page)).toBe(false);
     await context.close();
+  });
+});
+
+/**
+ * The Sensors view, the Servos view and the 3D robot in Korean (issue #14 item 1): a browser set to Korean
+ * (`locale: "ko-KR"`) gets `lang="ko"`, the views' words in Korean (literal strings checked), no catalogue key
+ * in place of its text, no button whose label overflows it, nothing scrolling sideways, and no axe violation, at
+ * 1280×800 and 390×844. The Servos view is checked with its "Robot in 3D" card open (the demo robot, and a robot
+ * on a cable), and the motion preview of the Motions view in Korean. With RBC_SHOTS=<dir>, screenshots go there.
+ */
+describe("in Korean (ko-KR)", () => {
+  /** The panel in a browser that prefers Korean, at `size`. */
+  const newKoreanPage = (size: Size) => newLocalePage(app, "ko-KR", { size });
+
+  /** The checks every view gets (the page's lang, keys, labels, sideways scrolling, axe), and its screenshot. */
+  const checkLayout = (page: Page, name: string, size: Size) =>
+    expectPageOk(page, name, { lang: "ko", shot: `sensors-servos-${name}-${size.width}` });
+
+  for (const viewport of SIZES) {
+    const size = `${viewport.width}×${viewport.height}`;
+
+    describe(`in Korean at ${size}`, () => {
+      it("the Sensors view: readings, events and the demo robot's world", async () => {
+        const { page, context } = await newKoreanPage(viewport);
+        await connectDemo(page);
+        await page.getByRole("link", { name: "센서", exact: true }).click();
+        await page.getByRole("heading", { level: 1, name: "센서" }).waitFor();
+        const status = page.getByTestId("poll-status");
+        await status.filter({ hasText: "마지막으로" }).waitFor();
+        expect(await text(status)).toMatch(
+          /^1초에 5번 읽고 있어요\. 마지막으로 \d\d:\d\d:\d\d에 읽었어요\.$/,
+        );
+        await page.getByTestId("distance-value").filter({ hasText: "10cm" }).waitFor();
+        expect(await text(page.getByTestId("distance-value"))).toBe("10cm");
+        expect(await page.getByRole("heading", { level: 2, name: "거리와 가속도" }).count()).toBe(1);
+        expect(await page.getByRole("button", { name: "일시 정지" }).count()).toBe(1);
+        expect(await page.getByTestId("poll-rate").locator("option").allTextContents()).toEqual([
+          "1초에 2번",
+          "1초에 5번",
+          "1초에 10번",
+        ]);
+        // The charts are named in Korean, their axes too.
+        const distanceChart = page.locator('[data-testid="distance-chart"][data-chart="drawn"]');
+        await distanceChart.waitFor();
+        expect(await distanceChart.locator('[role="img"]').getAttribute("aria-label")).toBe(
+          "최근 30초 동안의 거리 (cm)",
+        );
+        // The legend names the line (the axes' labels are drawn on the canvas).
+        expect(await distanceChart.locator(".u-legend").textContent()).toContain("거리 (cm)");
+        await page.locator('[data-testid="accel-chart"][data-chart="drawn"]').waitFor();
+
+        // The events: listening to the PF buttons, a press of the demo robot's PF2.
+        expect(await page.getByText("아직 이벤트가 없어요.").count()).toBe(1);
+        await page.getByRole("radio", { name: "PF 버튼" }).check();
+        await page.getByTestId("listen-status").filter({ hasText: "PF 버튼을 듣고 있어요." }).waitFor();
+        await page.getByRole("button", { name: "PF2 누르기" }).click();
+        await page.getByTestId("event-list").filter({ hasText: "PF2 눌림" }).waitFor();
+
+        // The demo robot's world.
+        const world = page.getByTestId("demo-world");
+        expect(await text(world.getByRole("heading", { level: 2 }))).toBe("데모 로봇의 주변 환경");
+        expect(await text(world.locator('label[for="demo-distance"]'))).toBe("앞에 있는 물체: 10cm");
+        expect(await world.locator("select option:checked").textContent()).toBe("7 기본 자세");
+        expect(await world.getByRole("button", { name: "IR 키 보내기" }).count()).toBe(1);
+
+        // Sound: the threshold and its level.
+        await page.getByRole("radio", { name: "소리 크기" }).check();
+        await page.getByTestId("listen-status").filter({ hasText: "소리 크기를 듣고 있어요." }).waitFor();
+        expect(await text(page.getByTestId("sound-level"))).toBe("아직 들린 소리 없음");
+        // Asked for 10 a second while listening to sound, it reads at most 5, and says why.
+        await page.getByTestId("poll-rate").selectOption("10");
+        await status.filter({ hasText: "최대 5번" }).waitFor();
+        expect(await text(status)).toMatch(
+          /^1초에 5번 읽고 있어요 \(소리를 듣는 동안에는 로봇이 소리를 알려 줄 수 있도록 최대 5번\)\. 마지막으로 \d\d:\d\d:\d\d에 읽었어요\.$/,
+        );
+
+        await checkLayout(page, "sensors", viewport);
+
+        // Switched to English, the view and its charts (drawn anew with the new words) speak English.
+        await page.getByLabel("언어 / Language").selectOption("en");
+        await page.getByRole("heading", { level: 1, name: "Sensors" }).waitFor();
+        await expect
+          .poll(() => page.locator('[data-testid="distance-chart"] [role="img"]').getAttribute("aria-label"))
+          .toBe("Distance in cm over the last 30 seconds");
+        await page
+          .getByTestId("poll-status")
+          .filter({ hasText: /^Reading 5 times a second \(at most 5/ })
+          .waitFor();
+        await context.close();
+      });
+
+      it("the Servos view, with the demo robot in 3D", async () => {
+        const { page, context } = await newKoreanPage(viewport);
+        await connectDemo(page);
+        await page.getByRole("link", { name: "서보", exact: true }).click();
+        await page.getByRole("heading", { level: 1, name: "서보" }).waitFor();
+        const safety = page.getByTestId("servo-safety");
+        expect(await text(safety.getByRole("heading", { level: 2 }))).toBe("서보를 움직이기 전에");
+        expect(await text(safety.locator("li").first())).toBe(
+          "로봇을 받쳐 주세요: 손으로 잡거나 등을 바닥에 대고 눕혀서, 관절이 움직이거나 힘이 빠져도 넘어지지 않게 해 주세요.",
+        );
+        await checkLayout(page, "servos-safety", viewport);
+
+        await page.getByRole("button", { name: "알겠어요: 로봇을 받쳐 두었어요" }).click();
+        await page.getByRole("button", { name: "서보 제어 시작" }).click();
+        await page.getByText("서보 16개를 모두 읽었어요.").waitFor();
+        expect(await page.locator(".servo-table thead th").allTextContents()).toEqual([
+          "ID",
+          "관절",
+          "위치",
+          "목표",
+          "슬라이더",
+          "토크",
+        ]);
+        expect(await text(page.locator('label[for="servo-12"]'))).toBe("왼쪽 팔꿈치");
+        expect(await page.getByLabel("왼쪽 팔꿈치 (서보 12번), 목표 1~198").count()).toBe(1);
+        // A refused value says why, in Korean; nothing is sent.
+        await page.locator("#servo-12").fill("300");
+        await page.locator("#servo-12").press("Enter");
+        expect(await text(page.getByTestId("servo-refused-12"))).toBe(
+          "서보 12번: 300은(는) 안전 범위(1–198) 밖이에요. 아무것도 보내지 않았고, 서보는 그대로 있어요.",
+        );
+
+        // The robot in 3D: the demo robot, live.
+        const toggle = page.getByTestId("live-robot-toggle");
+        expect(await text(toggle)).toBe("로봇을 3D로 보기");
+        await toggle.click();
+        await page.locator('[data-testid="live-robot-view"][data-state="ready"]').waitFor();
+        expect(await text(toggle)).toBe("3D 로봇 숨기기");
+        expect(await text(page.getByTestId("live-robot-caption"))).toBe("데모 로봇, 실시간");
+        expect(await page.getByTestId("live-robot-view").locator("canvas").getAttribute("aria-label")).toBe(
+          "데모 로봇의 실시간 3D 보기: 가상 서보가 움직이는 대로 따라가요; 서보 표에 읽은 위치가 숫자로 나와 있어요",
+        );
+
+        // The basic posture, asked in place.
+        await page.getByRole("button", { name: "모두 기본 자세로…" }).click();
+        await page.getByText("서보 16개가 모두 기본 자세로 움직여요 (속도 4). 로봇을 잡아 주세요.").waitFor();
+        expect(await page.getByRole("button", { name: "모든 서보 움직이기" }).count()).toBe(1);
+        await checkLayout(page, "servos", viewport);
+        await context.close();
+      });
+    });
+  }
+
+  describe("in Korean, the 3D robot of a robot on a cable and the motion preview", () => {
+    for (const viewport of SIZES) {
+      it(`says what it draws of a robot on a cable, ${viewport.width}×${viewport.height}`, async () => {
+        const { page, context } = await newKoreanPage(viewport);
+        await connectCable(page);
+        await page.getByRole("link", { name: "서보", exact: true }).click();
+        await page.getByTestId("live-robot-toggle").click();
+        await page.locator('[data-testid="live-robot-view"][data-state="ready"]').waitFor();
+        expect(await text(page.getByTestId("live-robot-caption"))).toBe(
+          "아직 읽은 위치가 없어요: 기본 자세로 그렸어요",
+        );
+        expect(await text(page.getByTestId("live-robot-unread"))).toContain(
+          "모든 관절을 로봇의 실제 자세가 아니라 기본 자세로 그렸어요",
+        );
+        expect(await text(page.getByTestId("live-robot"))).toContain(
+          "이번 연결에서 이 로봇의 영점을 읽지 않아서, 각도는 표준 영점 표를 기준으로 재요.",
+        );
+        await page.getByRole("button", { name: "알겠어요: 로봇을 받쳐 두었어요" }).click();
+        await page.getByRole("button", { name: "서보 제어 시작" }).click();
+        await page.getByText("서보 16개를 모두 읽었어요.").waitFor();
+        expect(await text(page.getByTestId("live-robot-caption"))).toMatch(
+          /^마지막으로 읽은 위치, \d\d:\d\d:\d\d$/,
+        );
+        expect(
+          await page.getByTestId("live-robot-view").locator("canvas").getAttribute("aria-label"),
+        ).toMatch(/^마지막으로 읽은 위치\(\d\d:\d\d:\d\d\)에 있는 로봇의 3D 보기; 서보 표에/);
+        await checkLayout(page, "servos-cable", viewport);
+        await context.close();
+      });
+
+      it(`plays a motion preview with Korean controls, ${viewport.width}×${viewport.height}`, async () => {
+        const { page, context } = await newKoreanPage(viewport);
+        await connectCable(page);
+        await page.getByRole("link", { name: "모션", exact: true }).click();
+        await page.getByTestId("rbm-files").setInputFiles(rbmFile("wave.rbm", exampleText("wave.rbm")));
+        const card = page.getByTestId("motion-file");
+        await card.getByTestId("preview-toggle").click();
+        const preview = card.getByTestId("motion-preview");
+        await preview.locator('[data-state="ready"]').waitFor();
+        // The page prefers reduced motion: the preview steps from scene to scene.
+        const play = preview.getByTestId("preview-play");
+        expect(await text(play)).toBe("다음 장면");
+        expect(await text(preview.getByTestId("preview-clock"))).toBe("0.0초 / 3.2초");
+        expect(await text(preview.locator("label"))).toBe("시간");
+        expect(await text(preview.locator(".robot3d-hint"))).toBe(
+          "동작 줄이기가 켜져 있어요. '다음 장면'을 누르면 움직이는 화면 없이 각 장면의 자세를 보여 줘요. " +
+            "시간: 화살표 키로 0.1초씩, Page Up과 Page Down으로 한 장면씩 움직여요. 로봇 돌리기: 로봇을 끌거나, 로봇을 선택한 뒤 화살표 키를 눌러 주세요.",
+        );
+        await play.click();
+        await expect.poll(() => preview.getAttribute("data-time")).toBe("800");
+        expect(await text(preview.getByTestId("preview-clock"))).toBe("0.8초 / 3.2초");
+        expect(await preview.getByTestId("preview-time").getAttribute("aria-valuetext")).toBe(
+          "0.8초 / 3.2초, 장면 0 끝, RaiseArm",
+        );
+        // To the end: the button goes back to the start.
+        await preview.getByTestId("preview-time").evaluate((input: HTMLInputElement) => {
+          input.value = input.max;
+          input.dispatchEvent(new Event("input", { bubbles: true }));
+        });
+        await expect.poll(() => text(play)).toBe("처음으로");
+
+        // Labels and axe in the preview; the page's lang, keys and sideways scrolling.
+        await expectPageOk(page, "the motion preview", {
+          lang: "ko",
+          within: '[data-testid="motion-preview"]',
+        });
+        await shot(preview, `sensors-servos-motion-preview-${viewport.width}`);
+        await context.close();
+      });
+    }
   });
 });

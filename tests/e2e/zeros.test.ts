@@ -5,6 +5,16 @@ import { FACTORY_ZEROS, STANDARD_ZEROS } from "../../src/protocol/index.ts";
 import { parseZerosBackup } from "../../src/protocol/zeros-backup.ts";
 import { type AppHarness, connectRobot, cspViolations, robotTime, squash, startHarness } from "./harness.ts";
 import "./rbc-test-globals.ts";
+import {
+  connectCable,
+  expectPageOk,
+  keysShown,
+  pageLang as lang,
+  newLocalePage,
+  SIZES,
+  shot,
+  sizeName as size,
+} from "./i18n-checks.ts";
 
 let app: AppHarness;
 
@@ -243,5 +253,196 @@ describe("zeros editor", () => {
     await page.getByText(/Zeros written and verified/).waitFor();
     expect((await simZeros(page))?.[1]).toBe(203);
     await context.close();
+  });
+});
+
+/**
+ * The Zeros and Log views in Korean (issue #14 item 1): a Korean browser gets both views in Korean with
+ * `lang="ko"`, their sentences from the actions too (write, backup files, copy); no catalogue key shows; no
+ * button's label overflows it and nothing scrolls sideways at 1280×800 and 390×844; axe finds no violation.
+ * With RBC_SHOTS=<dir>, screenshots of both views at both sizes go there to be looked at.
+ */
+describe("in Korean (ko-KR)", () => {
+  const simZeros = (page: Page) => page.evaluate(() => window.__rbcTest?.sim.zeros);
+
+  /** The paragraph under the Zeros view's heading: what zeros are, what a backup is, where the values came from. */
+  const intro = async (page: Page) =>
+    squash(await page.getByTestId("zeros-card").locator("p.muted").first().textContent());
+
+  /** Opens the Zeros view once its table has been read and the view is idle. */
+  async function openZeros(page: Page): Promise<void> {
+    await connectCable(page);
+    await page.getByRole("link", { name: "영점", exact: true }).click();
+    await page.getByTestId("zeros-card").waitFor();
+    await page.locator("#zero-15").waitFor();
+    await page.locator("button:not([disabled])", { hasText: "공장 영점 불러오기" }).waitFor();
+  }
+
+  describe("the Zeros view in Korean", () => {
+    for (const viewport of SIZES) {
+      it(`is in Korean, fits and passes axe at ${viewport.width}×${viewport.height}`, async () => {
+        const { page, context } = await newLocalePage(app, "ko-KR", { size: viewport });
+        await openZeros(page);
+        expect(await lang(page)).toBe("ko");
+        const card = page.getByTestId("zeros-card");
+        expect(await card.getByRole("heading", { level: 1 }).textContent()).toBe("영점 위치");
+        await card.getByRole("button", { name: "로봇에서 읽기" }).waitFor();
+        await card.getByRole("button", { name: "영점 백업" }).waitFor();
+        await card.getByRole("button", { name: "공장 영점 불러오기" }).waitFor();
+        expect(squash(await card.locator("label.file-button").textContent())).toBe("백업에서 복원…");
+        expect(await card.locator("thead th").allTextContents()).toEqual([
+          "ID",
+          "관절",
+          "영점",
+          "슬라이더",
+          "저장된 값",
+          "변경",
+        ]);
+        // Servo 3 is the robot's own left ankle pitch ("Left ankle pitch" above).
+        expect(await page.getByLabel("왼쪽 발목 피치", { exact: true }).inputValue()).toBe("65");
+        const slider = page.getByLabel("왼쪽 발목 피치 (서보 3) 슬라이더, 51–81");
+        expect(await slider.getAttribute("type")).toBe("range");
+        expect(await intro(page)).toBe(
+          "로봇은 모션을 재생할 때마다 각 서보의 영점을 더해요. '영점 백업'은 로봇의 지금 영점을 파일로 저장해요. 나중에 그 파일로 복원할 수 있어요. 편집 표의 값은 로봇에서 가져왔어요.",
+        );
+        expect(squash(await page.getByTestId("zero-tables").textContent())).toContain(
+          `공장 영점 새 로봇의 펌웨어에 들어 있는 값이에요: ${FACTORY_ZEROS.join(" ")}.`,
+        );
+        expect(await page.locator('tr[data-servo="1"] .zero-diff .sr-only').textContent()).toBe("변경 없음");
+        expect(squash(await page.getByTestId("change-summary").textContent())).toBe(
+          "편집 표가 로봇에 저장된 영점과 같아요.",
+        );
+        expect(squash(await page.getByTestId("write-why").textContent())).toBe(
+          "아직 쓸 것이 없어요. 먼저 값을 바꿔 주세요.",
+        );
+        await expectPageOk(page, "the Zeros view", { shot: `zeros-ko-${size(viewport)}` });
+
+        // An edit, and the question before the write.
+        await page.locator("#zero-3").fill("70");
+        await page
+          .getByTestId("change-summary")
+          .filter({ hasText: "아직 쓰지 않은 변경 1개: 서보 3 65 → 70." })
+          .waitFor();
+        expect(squash(await page.getByTestId("write-why").textContent())).toBe(
+          "쓰기 전에 로봇의 지금 영점을 백업 파일로 저장해요.",
+        );
+        await page.getByTestId("write-zeros").click();
+        const confirm = page.getByRole("group", { name: /바뀐 영점 1개를 로봇에 쓸까요\?/ });
+        await confirm.waitFor();
+        await confirm.getByRole("button", { name: "백업 저장 후 쓰기" }).waitFor();
+        await confirm.getByRole("button", { name: "취소" }).waitFor();
+        await confirm.scrollIntoViewIfNeeded();
+        await shot(page, `zeros-confirm-ko-${size(viewport)}`, { fullPage: false });
+        await expectPageOk(page, "the question before the write");
+        await confirm.getByRole("button", { name: "취소" }).click();
+
+        // A value the robot would refuse.
+        await page.locator("#zero-3").fill("200");
+        await page.getByTestId("write-why").filter({ hasText: "쓸 수 없어요" }).waitFor();
+        expect(squash(await page.getByTestId("write-why").textContent())).toBe(
+          "쓸 수 없어요: 허용 범위를 벗어난 값이 1개 있어요.",
+        );
+        expect(squash(await page.locator("#zero-3-hint").textContent())).toBe("51–81만 가능");
+        await expectPageOk(page, "a refused value", { axe: false });
+        await context.close();
+      });
+    }
+
+    it("says in Korean what a write, a backup and a backup file did", async () => {
+      const { page, context } = await newLocalePage(app, "ko-KR");
+      await openZeros(page);
+
+      // The write: a backup first, then the verified table.
+      await page.locator("#zero-3").fill("70");
+      await page.getByTestId("write-zeros").click();
+      const downloadPromise = page.waitForEvent("download");
+      await page.getByRole("button", { name: "백업 저장 후 쓰기" }).click();
+      const name = (await downloadPromise).suggestedFilename();
+      expect(name).toMatch(/^rbc-zeros-8958899989309-\d{4}-\d{2}-\d{2}\.json$/);
+      const written = page.getByText(/^영점을 쓰고 다시 읽어 확인했어요/);
+      await written.waitFor();
+      expect(squash(await written.textContent())).toBe(
+        `영점을 쓰고 다시 읽어 확인했어요(16/16). 백업을 ${name}(으)로 저장했어요.`,
+      );
+      expect((await simZeros(page))?.[3]).toBe(70);
+
+      // A backup on its own.
+      const backupPromise = page.waitForEvent("download");
+      await page.getByRole("button", { name: "영점 백업" }).click();
+      const backup = await backupPromise;
+      const saved = page.getByText(/^백업을 .*\.json\(으\)로 저장했어요\. 로봇에서/);
+      await saved.waitFor();
+      expect(squash(await saved.textContent())).toBe(
+        `백업을 ${backup.suggestedFilename()}(으)로 저장했어요. 로봇에서 영점 16개를 읽었어요. 나중에 되돌리려면 '백업에서 복원'을 눌러 주세요.`,
+      );
+      const parsed = parseZerosBackup(await readFile(await backup.path(), "utf8"));
+      expect(parsed.ok && parsed.backup.zeros[3]).toBe(70);
+
+      // Files that are refused: a Korean sentence from the parser's code, its English sentence as the detail.
+      const file = page.getByTestId("zeros-file");
+      await file.setInputFiles({
+        name: "broken.json",
+        mimeType: "application/json",
+        buffer: Buffer.from("{ no"),
+      });
+      const broken = page.getByText('"broken.json" 파일을 불러오지 않았어요.', { exact: false });
+      await broken.waitFor();
+      expect(squash(await broken.textContent())).toBe(
+        '"broken.json" 파일을 불러오지 않았어요. 영점 백업 파일이 아니에요(JSON 텍스트가 아님). 이 패널이 저장한 파일을 골라 주세요. 이름은 rbc-zeros-<시리얼 번호>-<날짜>.json 같은 모양이에요.',
+      );
+      const notice = page.locator(".notice", { has: broken });
+      expect(await notice.locator("summary").textContent()).toBe("기술 정보");
+      expect(await notice.locator("pre").getAttribute("lang")).toBe("en");
+      expect(await notice.locator("pre").textContent()).toMatch(/^not-json: This file is not a zero backup/);
+
+      const backupOf = (serialNumber: string, zeros: readonly number[]) =>
+        Buffer.from(
+          JSON.stringify({
+            format: "rbc-zeros",
+            version: 1,
+            serialNumber,
+            firmware: "2.23",
+            savedAt: "2026-11-21T10:00:00.000Z",
+            zeros,
+          }),
+        );
+      await file.setInputFiles({
+        name: "range.json",
+        mimeType: "application/json",
+        buffer: backupOf(
+          "8958899989309",
+          FACTORY_ZEROS.map((v, i) => (i === 5 ? 250 : v)),
+        ),
+      });
+      await page
+        .getByText(
+          '"range.json" 파일을 불러오지 않았어요. 로봇이 이 백업의 영점을 거부할 거예요. 서보 5의 값이',
+        )
+        .waitFor();
+
+      // A backup from another robot: loaded, with the warning and its date in Korean.
+      const zeros = FACTORY_ZEROS.map((v, i) => (i === 0 ? v + 3 : v));
+      await file.setInputFiles({
+        name: "other.json",
+        mimeType: "application/json",
+        buffer: backupOf("1111111111111", zeros),
+      });
+      const other = page.getByText(
+        /^"other\.json" 파일\(2026년 11월 21일 \d\d:\d\d에 저장\)을 편집 표에 불러왔어요\./,
+      );
+      await other.waitFor();
+      expect(squash(await other.textContent())).toContain(
+        "이 백업은 연결된 로봇(8958899989309)이 아니라 다른 로봇(1111111111111)에서 저장했어요.",
+      );
+      expect(await page.locator("#zero-0").inputValue()).toBe(String(zeros[0]));
+      expect(await intro(page)).toContain("편집 표의 값은 백업 파일 other.json에서 가져왔어요.");
+
+      await page.getByRole("button", { name: "공장 영점 불러오기" }).click();
+      await page
+        .getByText("공장 영점을 편집 표에 넣었어요. '로봇에 쓰기'를 누르기 전에는 아무것도 쓰지 않아요.")
+        .waitFor();
+      expect(await keysShown(page)).toEqual([]);
+      await context.close();
+    });
   });
 });

@@ -13,15 +13,22 @@ import {
   parseRbm,
   STANDARD_ZEROS,
 } from "../../src/protocol/index.ts";
-import { BIN, type CliOptions, CliScope, cliEntry, EXAMPLES, FAST_DEMO, REPO } from "../cli/spawn-cli.ts";
+import { type InProcessOptions, runInProcess } from "../cli/in-process.ts";
+import { BIN, type CliOptions, CliScope, cliEntry, EXAMPLES, REPO } from "../cli/spawn-cli.ts";
 
 /**
- * The `rbc` command against the built-in demo robot (`--demo`), as a user runs it: the built CLI
- * (dist-cli/main.js, what bin/rbc.mjs runs). The demo robot runs 50 times faster than real time (FAST_DEMO):
- * the durations rbc reports are the robot's time, so they are asserted as on a real robot.
+ * The `rbc` command against the built-in demo robot (`--demo`). Most tests run the command in this process
+ * with the demo robot on a virtual clock (tests/cli/in-process.ts): the durations rbc reports are the robot's
+ * time, so they are asserted as on a real robot, and no result depends on how busy the machine is. A few
+ * tests spawn the built CLI (dist-cli/main.js, what bin/rbc.mjs runs) for what only a process shows: the
+ * command line refused with exit code 2, a reader that goes away, the installed command. None of them waits
+ * for the robot's time; their timeouts allow for a slow process start on a loaded machine.
  */
 
-const T = 20_000;
+/** For a spawned rbc: process start-up on a loaded 2-core machine takes seconds. */
+const SPAWNED = 60_000;
+/** For rbc in this process: robot time is virtual; only the CPU work (a 284-scene upload) takes real time. */
+const T = 30_000;
 let dir: string;
 
 beforeAll(async () => {
@@ -31,16 +38,16 @@ afterAll(async () => {
   await rm(dir, { recursive: true, force: true });
 });
 
-/**
- * Processes of one test, killed when it ends (the tests run concurrently, so not in afterEach), with the demo
- * robot on FAST_DEMO time unless `options.env` says otherwise.
- */
-function scoped(onTestFinished: TestContext["onTestFinished"]) {
+/** Spawned processes of one test, killed when it ends (the tests run concurrently, so not in afterEach). */
+function spawned(onTestFinished: TestContext["onTestFinished"]) {
   const scope = new CliScope();
   onTestFinished(scope.killAll);
   return (args: readonly string[], options: CliOptions = {}) =>
-    scope.run(args, { ...options, env: { ...FAST_DEMO, ...options.env } });
+    scope.run(args, { timeoutMs: SPAWNED, ...options });
 }
+
+/** `rbc ARGS` in this process, the demo robot on a virtual clock. */
+const runCli = (args: readonly string[], options: InProcessOptions = {}) => runInProcess([...args], options);
 
 /** What uploading an example to an empty robot gives, computed from the file (16 servos: 108 + 86 per scene). */
 async function expectedUpload(file: string) {
@@ -60,11 +67,88 @@ async function expectedUpload(file: string) {
 /** 24576 → "24,576". */
 const n = (v: number) => v.toLocaleString("en-US");
 
+describe.concurrent("rbc, spawned: what only a process shows", () => {
+  it("bin/rbc.mjs, the installed command, runs the built CLI (tests/unit/rbc-bin.test.ts: when it is stale)", {
+    timeout: SPAWNED,
+  }, async () => {
+    const { version } = JSON.parse(await readFile(join(REPO, "package.json"), "utf8"));
+    cliEntry(); // built, if it was missing or stale
+    const r = await promisify(execFile)(process.execPath, [BIN, "--version"], { cwd: REPO });
+    expect(r.stdout).toBe(`${version}\n`);
+    expect(r.stderr).toBe("");
+  });
+
+  it("refuses a wrong command line with exit code 2 and one line of reason; help and `help zeros` exit 0", {
+    timeout: SPAWNED,
+  }, async ({ onTestFinished }) => {
+    const rbc = spawned(onTestFinished);
+    const [unknown, noRobot, badOption, badScale, help, helpZeros] = await Promise.all([
+      rbc(["dance", "--demo"]),
+      rbc(["info"]),
+      rbc(["info", "--demo", "--colour"]),
+      rbc(["info", "--demo"], { env: { RBC_DEMO_TIME_SCALE: "fast" } }),
+      rbc(["--help"]),
+      rbc(["help", "zeros"]),
+    ]);
+    expect(unknown.code).toBe(2);
+    expect(unknown.stderr).toMatch(/^rbc: Unknown command "dance"\./);
+    expect(noRobot.code).toBe(2);
+    expect(noRobot.stderr).toContain("--port PATH");
+    expect(badOption.code).toBe(2);
+    expect(badScale.code).toBe(2);
+    expect(badScale.stderr).toMatch(/^rbc: RBC_DEMO_TIME_SCALE must be a number above 0/);
+    // main routes help: the texts themselves are checked in process below.
+    expect(help.code).toBe(0);
+    expect(help.stdout).toMatch(/Exit codes: 0 .*130 interrupted/);
+    expect(helpZeros.code).toBe(0);
+    expect(helpZeros.stdout).toContain("±15");
+  });
+
+  it("--json: a usage error prints the JSON error document too; a port that does not open is one line", {
+    timeout: SPAWNED,
+  }, async ({ onTestFinished }) => {
+    const rbc = spawned(onTestFinished);
+    const [usage, unknown, sim] = await Promise.all([
+      rbc(["info", "--demo", "--json", "--colour"]),
+      rbc(["dance", "--json"]),
+      // Spawned: serialport's native addon cannot run in the unit tests' worker threads.
+      rbc(["sim", "--port", "/nonexistent/rbc-tty", "--json"]),
+    ]);
+    expect(usage.code).toBe(2);
+    expect(JSON.parse(usage.stdout)).toEqual({
+      ok: false,
+      error: { code: "usage", message: "Unknown option '--colour'." },
+    });
+    expect(usage.stderr).toContain('Run "rbc info --help" for usage.');
+    expect(unknown.code).toBe(2);
+    expect(JSON.parse(unknown.stdout).error.code).toBe("usage");
+    expect(sim.code).toBe(1);
+    expect(sim.stdout).toMatch(/^\{.*\}\n$/); // a streaming command's failure: exactly one JSON line
+    expect(JSON.parse(sim.stdout).error.code).toBe("open-failed");
+  });
+
+  it("a reader that goes away (| head -1) ends rbc quietly, without a stack trace", {
+    timeout: SPAWNED,
+  }, async ({ onTestFinished }) => {
+    const scope = new CliScope();
+    onTestFinished(scope.killAll);
+    // Nobody reads the result at all.
+    const info = scope.start(["info", "--demo"], { timeoutMs: SPAWNED });
+    info.child.stdout?.destroy();
+    // A stream whose reader leaves after the first line: stops like Ctrl-C, exit 0. The stream never ends by
+    // itself, so however slow the machine, the reader leaves while it runs.
+    const sensors = scope.start(["sensors", "--demo", "--interval-ms", "20"], { timeoutMs: SPAWNED });
+    await sensors.waitFor("stdout", /distance/, SPAWNED).then(() => sensors.child.stdout?.destroy());
+    const [i, s] = await Promise.all([info.done, sensors.done]);
+    expect(i.code, i.stderr).toBe(0);
+    expect(i.stderr).toBe("");
+    expect(s.code, s.stderr).toBe(0);
+    expect(s.stderr).toBe("Reading the sensors; Ctrl-C to stop.\n");
+  });
+});
+
 describe.concurrent("rbc --demo", () => {
-  it("prints the global help and a command's help for a newcomer", { timeout: T }, async ({
-    onTestFinished,
-  }) => {
-    const runCli = scoped(onTestFinished);
+  it("prints the global help and a command's help for a newcomer", { timeout: T }, async () => {
     const [global, run, upload, viaHelp] = await Promise.all([
       runCli(["--help"]),
       runCli(["run", "--help"]),
@@ -103,94 +187,36 @@ describe.concurrent("rbc --demo", () => {
     expect(viaHelp.stdout).toContain("±15");
   });
 
-  it("bin/rbc.mjs, the installed command, runs the built CLI (tests/unit/rbc-bin.test.ts: when it is stale)", {
+  it("--json: a streaming command's usage error is one line", {
     timeout: T,
   }, async () => {
-    const { version } = JSON.parse(await readFile(join(REPO, "package.json"), "utf8"));
-    cliEntry(); // built, if it was missing or stale
-    const r = await promisify(execFile)(process.execPath, [BIN, "--version"], { cwd: REPO });
-    expect(r.stdout).toBe(`${version}\n`);
-    expect(r.stderr).toBe("");
-  });
-
-  it("refuses a wrong command line with exit code 2 and one line of reason", { timeout: T }, async ({
-    onTestFinished,
-  }) => {
-    const runCli = scoped(onTestFinished);
-    const [unknown, noRobot, badOption, badScale] = await Promise.all([
-      runCli(["dance", "--demo"]),
-      runCli(["info"]),
-      runCli(["info", "--demo", "--colour"]),
-      runCli(["info", "--demo"], { env: { RBC_DEMO_TIME_SCALE: "fast" } }),
-    ]);
-    expect(unknown.code).toBe(2);
-    expect(unknown.stderr).toMatch(/^rbc: Unknown command "dance"\./);
-    expect(noRobot.code).toBe(2);
-    expect(noRobot.stderr).toContain("--port PATH");
-    expect(badOption.code).toBe(2);
-    expect(badScale.code).toBe(2);
-    expect(badScale.stderr).toMatch(/^rbc: RBC_DEMO_TIME_SCALE must be a number above 0/);
-  });
-
-  it("--json: a usage error prints the JSON error document too; a streaming command's failure is one line", {
-    timeout: T,
-  }, async ({ onTestFinished }) => {
-    const runCli = scoped(onTestFinished);
-    const [usage, unknown, sensors, log, sim] = await Promise.all([
-      runCli(["info", "--demo", "--json", "--colour"]),
-      runCli(["dance", "--json"]),
+    const [sensors, log] = await Promise.all([
       runCli(["sensors", "--demo", "--json", "--count", "0"]),
       runCli(["log", "sensors", "--demo", "--json", "--count", "0"]),
-      runCli(["sim", "--port", "/nonexistent/rbc-tty", "--json"]),
     ]);
-    expect(usage.code).toBe(2);
-    expect(JSON.parse(usage.stdout)).toEqual({
-      ok: false,
-      error: { code: "usage", message: "Unknown option '--colour'." },
-    });
-    expect(usage.stderr).toContain('Run "rbc info --help" for usage.');
-    expect(unknown.code).toBe(2);
-    expect(JSON.parse(unknown.stdout).error.code).toBe("usage");
     for (const stream of [sensors, log]) {
       expect(stream.code).toBe(2);
       expect(stream.stdout).toMatch(/^\{.*\}\n$/); // exactly one JSON line
       expect(JSON.parse(stream.stdout)).toMatchObject({ ok: false, error: { code: "usage" } });
     }
-    expect(sim.code).toBe(1);
-    expect(sim.stdout).toMatch(/^\{.*\}\n$/);
-    expect(JSON.parse(sim.stdout).error.code).toBe("open-failed");
   });
 
-  it("a reader that goes away (| head -1) ends rbc quietly, without a stack trace", { timeout: T }, async ({
-    onTestFinished,
-  }) => {
-    const scope = new CliScope();
-    onTestFinished(scope.killAll);
-    // Nobody reads the result at all.
-    const info = scope.start(["info", "--demo"], { env: FAST_DEMO });
-    info.child.stdout?.destroy();
-    // A stream whose reader leaves after the first line: stops like Ctrl-C, exit 0.
-    const sensors = scope.start(["sensors", "--demo", "--interval-ms", "20"], { env: FAST_DEMO });
-    // Between two motions: the second one is not started. In real time: the reader must leave while motion 7
-    // plays (1.8 s), which a faster demo robot would make a race.
-    const run = scope.start(["run", "7", "4", "--demo"]);
-    await Promise.all([
-      sensors.waitFor("stdout", /distance/).then(() => sensors.child.stdout?.destroy()),
-      run.waitFor("stdout", /Running 7/).then(() => run.child.stdout?.destroy()),
-    ]);
-    const [i, s, r] = await Promise.all([info.done, sensors.done, run.done]);
-    expect(i.code, i.stderr).toBe(0);
-    expect(i.stderr).toBe("");
-    expect(s.code, s.stderr).toBe(0);
-    expect(s.stderr).toBe("Reading the sensors; Ctrl-C to stop.\n");
+  it("a reader that goes away between two motions: the second one is not started", {
+    timeout: T,
+  }, async () => {
+    // The reader leaves after "Running 7": rbc's next write ("Done: 7 …") fails, as EPIPE does.
+    const r = await runCli(["run", "7", "4", "--demo"], { readerLeavesAfter: /Running 7/ });
     expect(r.code, r.stderr).toBe(130);
+    expect(r.stdout).toBe("Running 7 (Basic posture)…\n");
     expect(r.stderr).toBe("rbc: stopped before motion 4 (Walk forward); it was not started.\n");
+    // Motion 7 played to its end (about 1.8 s of robot time) and nothing after it.
+    expect(r.robotMs).toBeGreaterThanOrEqual(1700);
+    expect(r.robotMs).toBeLessThan(1800 + 2000);
   });
 
   it("info: firmware, serial, platform, error code in words, free memory (text and --json)", {
     timeout: T,
-  }, async ({ onTestFinished }) => {
-    const runCli = scoped(onTestFinished);
+  }, async () => {
     const [text, json] = await Promise.all([
       runCli(["info", "--demo"]),
       runCli(["info", "--demo", "--json"]),
@@ -219,15 +245,13 @@ describe.concurrent("rbc --demo", () => {
     });
   });
 
-  it("zeros read --json", { timeout: T }, async ({ onTestFinished }) => {
-    const runCli = scoped(onTestFinished);
+  it("zeros read --json", { timeout: T }, async () => {
     const r = await runCli(["zeros", "read", "--demo", "--json"]);
     expect(r.code).toBe(0);
     expect(JSON.parse(r.stdout)).toEqual({ serialNumber: "8958899989309", zeros: [...FACTORY_ZEROS] });
   });
 
-  it("zeros write: backup file first, then write and verify", { timeout: T }, async ({ onTestFinished }) => {
-    const runCli = scoped(onTestFinished);
+  it("zeros write: backup file first, then write and verify", { timeout: T }, async () => {
     const cwd = await mkdtemp(join(dir, "write-"));
     const r = await runCli(["zeros", "write", STANDARD_ZEROS.join(","), "--demo", "--json"], { cwd });
     expect(r.code).toBe(0);
@@ -255,8 +279,7 @@ describe.concurrent("rbc --demo", () => {
 
   it("zeros write out of range: exit 1, the reason, nothing written (no backup, no connection)", {
     timeout: T,
-  }, async ({ onTestFinished }) => {
-    const runCli = scoped(onTestFinished);
+  }, async () => {
     const cwd = await mkdtemp(join(dir, "refuse-"));
     const zeros = [...STANDARD_ZEROS];
     zeros[15] = 200;
@@ -273,15 +296,14 @@ describe.concurrent("rbc --demo", () => {
     expect(JSON.parse(json.stdout).error.code).toBe("zero-out-of-range");
   });
 
-  it("zeros backup + restore round trip in the panel's format", { timeout: T }, async ({
-    onTestFinished,
-  }) => {
-    const runCli = scoped(onTestFinished);
-    const cwd = await mkdtemp(join(dir, "restore-"));
-    expect((await runCli(["zeros", "backup", "mine.json", "--demo"], { cwd })).code).toBe(0);
+  it("zeros backup + restore round trip in the panel's format", { timeout: T }, async () => {
+    // An absolute path: rbc reads and writes FILE against the process's directory, not RunEnv.cwd.
+    const mine = join(await mkdtemp(join(dir, "restore-")), "mine.json");
+    const first = await runCli(["zeros", "backup", mine, "--demo"]);
+    expect(first.code, first.stderr).toBe(0);
     const [again, r] = await Promise.all([
-      runCli(["zeros", "backup", "mine.json", "--demo"], { cwd }),
-      runCli(["zeros", "restore", "mine.json", "--demo", "--json"], { cwd }),
+      runCli(["zeros", "backup", mine, "--demo"]),
+      runCli(["zeros", "restore", mine, "--demo", "--json"]),
     ]);
     expect(again.code).toBe(1);
     expect(again.stderr).toContain("already exists");
@@ -291,8 +313,7 @@ describe.concurrent("rbc --demo", () => {
 
   it("upload wave.rbm: validation report, progress on stderr, free memory and error code after", {
     timeout: T,
-  }, async ({ onTestFinished }) => {
-    const runCli = scoped(onTestFinished);
+  }, async () => {
     const wave = await expectedUpload(EXAMPLES.wave);
     const [r, json] = await Promise.all([
       runCli(["upload", EXAMPLES.wave, "--demo"]),
@@ -330,8 +351,7 @@ describe.concurrent("rbc --demo", () => {
 
   it("upload long-walk.rbm fills the motion memory; arms-only.rbm uploads with a warning about its 6 servos", {
     timeout: T,
-  }, async ({ onTestFinished }) => {
-    const runCli = scoped(onTestFinished);
+  }, async () => {
     const [walk, arms] = await Promise.all([
       expectedUpload(EXAMPLES.longWalk),
       expectedUpload(EXAMPLES.armsOnly),
@@ -361,10 +381,7 @@ describe.concurrent("rbc --demo", () => {
     expect(a.stderr).toContain(`${arms.total}/${arms.total} bytes 100%`);
   });
 
-  it("upload refuses an invalid motion file, and a real robot without --yes", { timeout: T }, async ({
-    onTestFinished,
-  }) => {
-    const runCli = scoped(onTestFinished);
+  it("upload refuses an invalid motion file, and a real robot without --yes", { timeout: T }, async () => {
     const bad = join(dir, "bad.rbm");
     await writeFile(bad, "1:13:0000000000000:");
     const [r, real] = await Promise.all([
@@ -379,8 +396,7 @@ describe.concurrent("rbc --demo", () => {
 
   it("run 7 waits for the motion; a motion before 7 gets the after-power-up guidance", {
     timeout: T,
-  }, async ({ onTestFinished }) => {
-    const runCli = scoped(onTestFinished);
+  }, async () => {
     const [seven, text, four, refused] = await Promise.all([
       runCli(["run", "7", "--demo", "--json"]),
       runCli(["run", "7", "--demo"]),
@@ -401,7 +417,7 @@ describe.concurrent("rbc --demo", () => {
         before: "idle",
       },
     ]);
-    // Robot time: the basic posture takes about 1.8 s, however fast the demo robot's clock runs.
+    // Robot time: the basic posture takes about 1.8 s.
     expect(done[0].elapsedMs).toBeGreaterThanOrEqual(1700);
     expect(done[0].elapsedMs).toBeLessThan(1800 + 2000); // its timeout: expected time + 2 s margin
     expect(text.stdout).toMatch(/^Running 7 \(Basic posture\)…\nDone: 7 \(Basic posture\) in 1\.\d s\.\n$/);
@@ -411,8 +427,7 @@ describe.concurrent("rbc --demo", () => {
     expect(refused.code).toBe(2);
   });
 
-  it("sound 3", { timeout: T }, async ({ onTestFinished }) => {
-    const runCli = scoped(onTestFinished);
+  it("sound 3", { timeout: T }, async () => {
     const r = await runCli(["sound", "3", "--demo", "--json"]);
     expect(r.code, r.stderr).toBe(0);
     expect(JSON.parse(r.stdout)).toMatchObject({ ok: true, sound: 3, lengthMs: 832 });
@@ -422,8 +437,7 @@ describe.concurrent("rbc --demo", () => {
 
   it("sensors --count streams JSON lines: the demo world's upright robot, its accelerometer with noise", {
     timeout: T,
-  }, async ({ onTestFinished }) => {
-    const runCli = scoped(onTestFinished);
+  }, async () => {
     const r = await runCli(["sensors", "--demo", "--json", "--count", "12", "--interval-ms", "20"]);
     expect(r.code, r.stderr).toBe(0);
     const lines = r.stdout
@@ -447,8 +461,7 @@ describe.concurrent("rbc --demo", () => {
 
   it("log info: the packet trace in hex with command names on stderr, the result on stdout", {
     timeout: T,
-  }, async ({ onTestFinished }) => {
-    const runCli = scoped(onTestFinished);
+  }, async () => {
     const r = await runCli(["log", "info", "--demo", "--json"]);
     expect(r.code).toBe(0);
     expect(JSON.parse(r.stdout).serialNumber).toBe("8958899989309");

@@ -2,7 +2,7 @@ import { mkdtemp, readFile, rm, writeFile } from "node:fs/promises";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { PassThrough } from "node:stream";
-import { afterAll, beforeAll, describe, expect, it, type TestContext } from "vitest";
+import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { Cleanups } from "../../src/cli/cleanups.ts";
 import type { RunEnv } from "../../src/cli/command.ts";
 import { limpCommand } from "../../src/cli/commands/limp.ts";
@@ -13,17 +13,24 @@ import { Output } from "../../src/cli/output.ts";
 import { errorText } from "../../src/device/error-text.ts";
 import { RbcError, RbcTimeoutError } from "../../src/device/errors.ts";
 import type { Locale } from "../../src/i18n/locale.ts";
-import { type CliOptions, CliScope, EXAMPLES, FAST_DEMO, REPO } from "../cli/spawn-cli.ts";
+import { VirtualClock } from "../../src/shared/clock.ts";
+import { type InProcessOptions, runInProcess } from "../cli/in-process.ts";
+import { CliScope, EXAMPLES, REPO } from "../cli/spawn-cli.ts";
+import { driveClock } from "../support/drive-clock.ts";
 
 /**
  * `rbc` in Korean (issue #14 item 1): `--lang en|ko`, else LC_ALL / LC_MESSAGES / LANG, else English. What rbc
  * prints for people is Korean; `--json` stays the same, the device's English sentence comes with `--log`, and
- * without the switch (or with an English locale) every line is the English it was. The spawned tests run the
- * built CLI (dist-cli/) like the other CLI tests; the question answered 예 runs the command in-process on a
+ * without the switch (or with an English locale) every line is the English it was. The commands run in this
+ * process with the demo robot on a virtual clock (tests/cli/in-process.ts); the one test of main's own
+ * refusal of a wrong --lang spawns the built CLI (dist-cli/). The question answered 예 runs the command on a
  * fake terminal.
  */
 
-const T = 20_000;
+/** For rbc in this process: robot time is virtual, only the CPU work takes real time. */
+const T = 30_000;
+/** For a spawned rbc: process start-up on a loaded 2-core machine takes seconds. */
+const SPAWNED = 60_000;
 /** An environment without a Korean locale, whatever the machine running the tests has. */
 const ENGLISH_ENV = { LANG: "C.UTF-8", LC_ALL: "", LC_MESSAGES: "" } as const;
 const KOREAN_ENV = { LANG: "ko_KR.UTF-8", LC_ALL: "", LC_MESSAGES: "" } as const;
@@ -38,12 +45,9 @@ afterAll(async () => {
   await rm(dir, { recursive: true, force: true });
 });
 
-function scoped(onTestFinished: TestContext["onTestFinished"]) {
-  const scope = new CliScope();
-  onTestFinished(scope.killAll);
-  return (args: readonly string[], options: CliOptions = {}) =>
-    scope.run(args, { ...options, env: { ...FAST_DEMO, ...ENGLISH_ENV, ...options.env } });
-}
+/** `rbc ARGS` in this process, the demo robot on a virtual clock, in an English environment unless told. */
+const runCli = (args: readonly string[], options: InProcessOptions = {}) =>
+  runInProcess([...args], { ...options, env: { ...ENGLISH_ENV, ...options.env } });
 
 describe("the language rbc speaks", () => {
   it("is --lang when given (last one wins, before any --), else LC_ALL, LC_MESSAGES, LANG in that order", () => {
@@ -100,8 +104,7 @@ describe("the device's errors on the command line", () => {
 describe.concurrent("rbc in Korean", () => {
   it("rbc info --demo --lang ko: the robot's facts in Korean; --json is the same in both languages", {
     timeout: T,
-  }, async ({ onTestFinished }) => {
-    const runCli = scoped(onTestFinished);
+  }, async () => {
     const [ko, en, koJson, enJson] = await Promise.all([
       runCli(["info", "--demo", "--lang", "ko"]),
       runCli(["info", "--demo"]),
@@ -131,8 +134,7 @@ describe.concurrent("rbc in Korean", () => {
 
   it("rbc zeros read --demo with LANG=ko_KR.UTF-8: the table in Korean, its columns lined up", {
     timeout: T,
-  }, async ({ onTestFinished }) => {
-    const runCli = scoped(onTestFinished);
+  }, async () => {
     const [ko, english] = await Promise.all([
       runCli(["zeros", "read", "--demo"], { env: KOREAN_ENV }),
       runCli(["zeros", "read", "--demo", "--lang", "en"], { env: KOREAN_ENV }),
@@ -141,8 +143,10 @@ describe.concurrent("rbc in Korean", () => {
     const lines = ko.stdout.split("\n");
     expect(lines[0]).toBe("로봇 8958899989309의 영점 위치 (데모 로봇):");
     expect(lines[1]).toBe("  서보  관절                영점  기준  차이  허용 범위  공장");
-    expect(lines[2]).toBe("     0  오른쪽 엉덩이 롤     124   125    -1    110-140   124");
-    expect(lines[17]).toBe("    15  왼쪽 팔꿈치          126   127    -1    112-142   126");
+    // Servo 0 is the robot's own left hip (tests/unit/cli-zeros-table.test.ts: "Left hip roll").
+    expect(lines[2]).toBe("     0  왼쪽 엉덩이 롤       124   125    -1    110-140   124");
+    expect(lines[7]).toBe("     5  오른쪽 엉덩이 롤     125   124    +1    109-139   125");
+    expect(lines[17]).toBe("    15  오른쪽 팔꿈치        126   127    -1    112-142   126");
     expect(ko.stdout).toContain("기준: RBC가 쓰기를 할 때마다 비교하는 표예요.");
     expect(ko.stdout).toContain("목록으로: 124,202,162,65,108,125,46,88,184,142,90,40,125,161,210,126");
     expect(ko.stdout).not.toMatch(RAW_KEY);
@@ -153,8 +157,7 @@ describe.concurrent("rbc in Korean", () => {
 
   it("rbc --help --lang ko: the overview, a command's help and the language switch in Korean", {
     timeout: T,
-  }, async ({ onTestFinished }) => {
-    const runCli = scoped(onTestFinished);
+  }, async () => {
     const [global, upload, english] = await Promise.all([
       runCli(["--help", "--lang", "ko"]),
       runCli(["upload", "--help"], { env: KOREAN_ENV }),
@@ -184,19 +187,17 @@ describe.concurrent("rbc in Korean", () => {
     expect(english.stdout).not.toMatch(/\p{Script=Hangul}/u);
   });
 
-  it("a corrupt motion file: the refusal in Korean, the English in --json and after --log; a wrong --lang", {
+  it("a corrupt motion file: the refusal in Korean, the English in --json and after --log", {
     timeout: T,
-  }, async ({ onTestFinished }) => {
-    const runCli = scoped(onTestFinished);
+  }, async () => {
     const wave = await readFile(join(REPO, EXAMPLES.wave), "utf8");
     const file = join(dir, "wave-cut.rbm");
     await writeFile(file, wave.slice(0, Math.floor(wave.length / 2)));
-    const [ko, log, json, en, badLang] = await Promise.all([
+    const [ko, log, json, en] = await Promise.all([
       runCli(["upload", file, "--demo", "--lang", "ko"]),
       runCli(["upload", file, "--demo", "--lang", "ko", "--log"]),
       runCli(["upload", file, "--demo", "--lang", "ko", "--json"]),
       runCli(["upload", file, "--demo"]),
-      runCli(["info", "--demo", "--lang", "fr"], { env: KOREAN_ENV }),
     ]);
     expect(ko.code).toBe(1);
     expect(ko.stdout).toBe("");
@@ -212,17 +213,24 @@ describe.concurrent("rbc in Korean", () => {
     expect(JSON.parse(json.stdout).error).toMatchObject({ code: "rbm-invalid" });
     expect(JSON.parse(json.stdout).error.message).toBe(en.stderr.replace(/^rbc: /, "").trim());
     expect(en.stderr).toMatch(/^rbc: wave-cut\.rbm: .*\. Nothing was sent\.\n$/);
-    // A --lang rbc does not speak is a usage error, in the environment's language.
+  });
+
+  it("a --lang rbc does not speak is a usage error, in the environment's language (spawned: main's own)", {
+    timeout: SPAWNED,
+  }, async ({ onTestFinished }) => {
+    const scope = new CliScope();
+    onTestFinished(scope.killAll);
+    const badLang = await scope.run(["info", "--demo", "--lang", "fr"], {
+      env: KOREAN_ENV,
+      timeoutMs: SPAWNED,
+    });
     expect(badLang.code).toBe(2);
     expect(badLang.stderr).toBe(
       'rbc: --lang에는 en(영어)이나 ko(한국어)를 써 주세요. 받은 값: "fr".\n사용법은 "rbc --help"로 볼 수 있어요.\n',
     );
   });
 
-  it("results, progress and failures of other commands in Korean", { timeout: T }, async ({
-    onTestFinished,
-  }) => {
-    const runCli = scoped(onTestFinished);
+  it("results, progress and failures of other commands in Korean", { timeout: T }, async () => {
     const [run, ignored, upload, usage] = await Promise.all([
       runCli(["run", "7", "--demo", "--lang", "ko"]),
       runCli(["run", "4", "--demo", "--lang", "ko"]),
@@ -262,6 +270,8 @@ function terminal(locale: Locale | undefined, argv: string[] = []) {
     text.stderr += d.toString();
   });
   const cleanups = new Cleanups();
+  /** The demo robot's clock, driven by the test (`driveClock`). */
+  const clock = new VirtualClock();
   const env: RunEnv = {
     argv,
     signal: new AbortController().signal,
@@ -270,15 +280,16 @@ function terminal(locale: Locale | undefined, argv: string[] = []) {
     setExitNote: () => {},
     stdin: stdin as unknown as NodeJS.ReadStream,
     cwd: REPO,
-    env: { RBC_DEMO_TIME_SCALE: "50" },
+    env: {},
     ...(locale ? { locale } : {}),
+    demoClock: clock,
   };
   /** Types `keys` once the prompt has been written. */
   const answer = async (keys: string) => {
     while (!text.stderr.includes("[y/N] ")) await new Promise((r) => setTimeout(r, 5));
     stdin.write(keys);
   };
-  return { env, text, answer, cleanups };
+  return { env, text, answer, cleanups, clock };
 }
 
 describe("the y/N question in Korean", () => {
@@ -298,12 +309,12 @@ describe("the y/N question in Korean", () => {
   });
 
   it("rbc limp --demo --lang ko asks in Korean, takes 예, and says what the servos confirmed", async () => {
-    const { env, text, answer, cleanups } = terminal("ko", ["--demo", "--lang", "ko"]);
+    const { env, text, answer, cleanups, clock } = terminal("ko", ["--demo", "--lang", "ko"]);
     let code: number;
     try {
-      [code] = await Promise.all([limpCommand.run(env), answer("예\r")]);
+      [code] = await Promise.all([driveClock(clock, limpCommand.run(env)), answer("예\r")]);
     } finally {
-      await cleanups.run();
+      await driveClock(clock, cleanups.run());
     }
     await new Promise((r) => setImmediate(r));
     expect(code).toBe(0);

@@ -1,7 +1,8 @@
 import { describe, expect, it } from "vitest";
 import { UsageError } from "../../src/cli/errors.ts";
 import { DEMO_VARIANT_VAR, demoVariant, variantFromValues } from "../../src/cli/sim-variant.ts";
-import { CliScope, FAST_DEMO } from "../cli/spawn-cli.ts";
+import { runInProcess } from "../cli/in-process.ts";
+import { CliScope } from "../cli/spawn-cli.ts";
 
 /**
  * The switches of `rbc sim` and RBC_DEMO_VARIANT for the firmware behaviours of docs/protocol.md §3.1, §3.5,
@@ -90,11 +91,10 @@ describe("the CLI accepts the switches", () => {
 
   it("rbc info --demo with RBC_DEMO_VARIANT of the user build, firmware pace, sound reply at once", {
     timeout: T,
-  }, async ({ onTestFinished }) => {
-    const scope = new CliScope();
-    onTestFinished(scope.killAll);
-    const r = await scope.run(["info", "--demo", "--json"], {
-      env: { ...FAST_DEMO, [DEMO_VARIANT_VAR]: "--user-firmware --firmware-events --sound-reply-at-once" },
+  }, async () => {
+    // In this process, the demo robot on a virtual clock (tests/cli/in-process.ts).
+    const r = await runInProcess(["info", "--demo", "--json"], {
+      env: { [DEMO_VARIANT_VAR]: "--user-firmware --firmware-events --sound-reply-at-once" },
     });
     expect(r.code, r.stderr).toBe(0);
     expect(JSON.parse(r.stdout)).toMatchObject({ firmware: "2.23", platform: 1 });
