@@ -1,3 +1,5 @@
+// The log view's own styles load with it, not with the first page (first load: issue 19).
+import "../../styles/log.css";
 import { html, nothing, type TemplateResult } from "lit-html";
 import { repeat } from "lit-html/directives/repeat.js";
 import { translator } from "../../../i18n/translate.ts";
