@@ -64,12 +64,18 @@ export class Session {
 
   constructor(
     private readonly store: Store<AppState>,
-    packetLog: PacketLog,
+    /** The log to feed; without one, the session makes one with its first connection (`packetLog`). */
+    packetLog: PacketLog | undefined,
     private readonly options: SessionOptions = {},
   ) {
     this.context = { store, session: this, packetLog };
     this.pageScope = new Scope(this.context, "page");
     this.scope = new Scope(this.context, "connection");
+  }
+
+  /** The packet log: the one given, or the one made with the first connection; none before. */
+  get packetLog(): PacketLog | undefined {
+    return this.context.packetLog;
   }
 
   /** The connected client, or undefined. */
@@ -191,11 +197,14 @@ export class Session {
       // The device and protocol code (and zod, through the .rbm validator) load with the first connection,
       // not with the first page. So do the bootloader's byte names for the log: they bring the bootloader
       // protocol and the firmware outcome words, which the first screen never shows (first load: issue 19).
-      const [{ createRbcClient }, bootloaderBytes] = await Promise.all([
+      // The packet log's code, too, comes with the first connection: before it there is nothing to log.
+      const [{ createRbcClient }, bootloaderBytes, { LOG_CAPACITY, PacketLog }] = await Promise.all([
         import("./robot-link.ts"),
         import("./features/log/bootloader-bytes.ts"),
+        import("./features/log/packet-log.ts"),
       ]);
       duringFirmwareUpdate = bootloaderBytes.duringFirmwareUpdate;
+      this.context.packetLog ??= new PacketLog(LOG_CAPACITY, (clockMs) => this.epochOf(clockMs));
       client = createRbcClient(port, simulated?.clock);
     } catch (e) {
       // If the code could not be loaded, the words of the failure may not load either: say it plainly then.
@@ -210,12 +219,13 @@ export class Session {
     this.simulated = simulated;
     this.renewScope();
     this.store.update({ connection: connectingTo(robot), ...freshConnectionState() });
+    const packetLog = this.context.packetLog;
     this.detachClient = [
       client.stateChanges.on((s) => this.onClientState(client, s)),
       client.log.on((entry) => {
         // The bootloader's flow control and status bytes are the update's normal dialogue, not stray bytes.
-        this.context.packetLog.push(this.updatingFirmware() ? duringFirmwareUpdate(entry) : entry);
-        this.store.update((s) => ({ log: { ...s.log, revision: this.context.packetLog.revision } }));
+        packetLog.push(this.updatingFirmware() ? duringFirmwareUpdate(entry) : entry);
+        this.store.update((s) => ({ log: { ...s.log, revision: packetLog.revision } }));
       }),
     ];
     try {
