@@ -1,22 +1,8 @@
 /** Facts about the RBC the panel shows to people: names, codes and durations (docs/protocol.md §2.2, §3). */
 
-export type Platform = "HUNO" | "DINO" | "DOGY" | "PF2";
-
-/** Platform byte of a reply → the robot's mode (docs/protocol.md §2.2). */
-export function platformName(platform: number): Platform | `unknown (${number})` {
-  switch (platform) {
-    case 1:
-      return "HUNO";
-    case 2:
-      return "DINO";
-    case 3:
-      return "DOGY";
-    case 4:
-      return "PF2";
-    default:
-      return `unknown (${platform})`;
-  }
-}
+// The platform names live in a file of their own: the panel's top bar needs them on its first page, without
+// the rest of this catalogue (first load: issue 19).
+export { type Platform, platformName } from "./platform.ts";
 
 /** Error codes of 0x11 (docs/protocol.md §3.2). */
 export const NO_ERROR = 0xff;

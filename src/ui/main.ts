@@ -5,9 +5,9 @@ import { keepLanguage, loadLanguage } from "../i18n/split-catalogue.ts";
 import type { Clock } from "../shared/clock.ts";
 import { initialState } from "./app-state.ts";
 import { answerBusyQueries, busySentence } from "./busy.ts";
+import type { AppContext } from "./context.ts";
 import type { DemoRobotOptions } from "./demo-robot.ts";
 import { refreshKnownPorts, stopActivity } from "./features/connection/actions.ts";
-import { LOG_CAPACITY, PacketLog } from "./features/log/packet-log.ts";
 import { routeFromHash, ViewLoader } from "./router.ts";
 import { webSerial } from "./serial-ports.ts";
 import { Session } from "./session.ts";
@@ -45,9 +45,15 @@ function startApp(root: HTMLElement, locale: Locale): void {
       locale,
     }),
   );
-  const packetLog = new PacketLog(LOG_CAPACITY, (clockMs) => session.epochOf(clockMs));
-  const session = new Session(store, packetLog, { demo: demoOptionsForTests() });
-  const app = { store, session, packetLog };
+  // The packet log is made by the session with the first connection (its code is not in the first load).
+  const session = new Session(store, undefined, { demo: demoOptionsForTests() });
+  const app: AppContext = {
+    store,
+    session,
+    get packetLog() {
+      return session.packetLog;
+    },
+  };
   const loader = new ViewLoader(VIEWS, () => viewArrived(store));
 
   /** Counts connections, so that each view is activated once per showing and connection. */

@@ -1,5 +1,4 @@
-import { RbcNotConnectedError } from "../device/errors.ts";
-import type { ClientState, RbcClient } from "../device/index.ts";
+import type { ClientState, LogEntry, RbcClient } from "../device/index.ts";
 import type { SerialPortLike } from "../link/index.ts";
 import { type Clock, realClock } from "../shared/clock.ts";
 import type { ServoBus } from "../sim/sim-servos.ts";
@@ -7,8 +6,6 @@ import type { SimulatedRbc } from "../sim/simulated-rbc.ts";
 import { type AppState, freshConnectionState, noticeOf } from "./app-state.ts";
 import type { AppContext } from "./context.ts";
 import type { DemoRobotOptions } from "./demo-robot.ts";
-import { chooserProblem } from "./error-text.ts";
-import { failureNotice } from "./failure-notice.ts";
 import { refreshKnownPorts } from "./features/connection/actions.ts";
 import {
   type ConnectionState,
@@ -17,13 +14,18 @@ import {
   NOTHING_RUNNING,
   type RobotLabel,
 } from "./features/connection/state.ts";
-import { duringFirmwareUpdate } from "./features/log/bootloader-bytes.ts";
 import type { PacketLog } from "./features/log/packet-log.ts";
 import { uiMessages } from "./messages.ts";
 import { said } from "./said.ts";
 import { Scope } from "./scope.ts";
 import { choosePort, describePort, linkKindOf, webSerial } from "./serial-ports.ts";
 import type { Store } from "./store.ts";
+
+/**
+ * The words of failures (the device's errors and outcomes, in every language) load when a failure is to be
+ * said, not with the first page, which shows none (first load: issue 19).
+ */
+const failureWords = () => import("./failure-words.ts");
 
 /** The demo robot; the panel names it in its language (`robotName`), `name` is its English name. */
 export const DEMO_ROBOT: RobotLabel = { kind: "demo", name: "Demo robot" };
@@ -62,12 +64,18 @@ export class Session {
 
   constructor(
     private readonly store: Store<AppState>,
-    packetLog: PacketLog,
+    /** The log to feed; without one, the session makes one with its first connection (`packetLog`). */
+    packetLog: PacketLog | undefined,
     private readonly options: SessionOptions = {},
   ) {
     this.context = { store, session: this, packetLog };
     this.pageScope = new Scope(this.context, "page");
     this.scope = new Scope(this.context, "connection");
+  }
+
+  /** The packet log: the one given, or the one made with the first connection; none before. */
+  get packetLog(): PacketLog | undefined {
+    return this.context.packetLog;
   }
 
   /** The connected client, or undefined. */
@@ -130,7 +138,9 @@ export class Session {
           info,
         });
       },
-      (e: unknown) => {
+      async (e: unknown) => {
+        if (chooser !== this.chooser) return;
+        const { chooserProblem } = await failureWords();
         if (chooser !== this.chooser) return;
         const { notice, showHelp } = chooserProblem(e, this.store.get().locale);
         this.setConnection({ phase: "disconnected", problem: notice, showHelp });
@@ -168,6 +178,7 @@ export class Session {
       this.demoServos = demo.servoBus;
       return await this.connectPort(demo.port, robot, demo);
     } catch (e) {
+      const { failureNotice } = await failureWords();
       this.setConnection({
         phase: "disconnected",
         problem: failureNotice(said(uiMessages, "session.demoFailed"), e, this.store.get().locale),
@@ -181,28 +192,40 @@ export class Session {
     await this.release();
     this.setConnection({ phase: "connecting", robot, problem: undefined, lostReason: undefined });
     let client: RbcClient;
+    let duringFirmwareUpdate: (entry: LogEntry) => LogEntry;
     try {
       // The device and protocol code (and zod, through the .rbm validator) load with the first connection,
-      // not with the first page.
-      const { createRbcClient } = await import("./robot-link.ts");
+      // not with the first page. So do the bootloader's byte names for the log: they bring the bootloader
+      // protocol and the firmware outcome words, which the first screen never shows (first load: issue 19).
+      // The packet log's code, too, comes with the first connection: before it there is nothing to log.
+      const [{ createRbcClient }, bootloaderBytes, { LOG_CAPACITY, PacketLog }] = await Promise.all([
+        import("./robot-link.ts"),
+        import("./features/log/bootloader-bytes.ts"),
+        import("./features/log/packet-log.ts"),
+      ]);
+      duringFirmwareUpdate = bootloaderBytes.duringFirmwareUpdate;
+      this.context.packetLog ??= new PacketLog(LOG_CAPACITY, (clockMs) => this.epochOf(clockMs));
       client = createRbcClient(port, simulated?.clock);
     } catch (e) {
-      this.setConnection({
-        phase: "disconnected",
-        problem: failureNotice(said(uiMessages, "session.codeNotLoaded"), e, locale),
-      });
+      // If the code could not be loaded, the words of the failure may not load either: say it plainly then.
+      const problem = await failureWords().then(
+        ({ failureNotice }) => failureNotice(said(uiMessages, "session.codeNotLoaded"), e, locale),
+        () => noticeOf("danger", locale, [said(uiMessages, "session.codeNotLoaded")]),
+      );
+      this.setConnection({ phase: "disconnected", problem });
       return false;
     }
     this.client = client;
     this.simulated = simulated;
     this.renewScope();
     this.store.update({ connection: connectingTo(robot), ...freshConnectionState() });
+    const packetLog = this.context.packetLog;
     this.detachClient = [
       client.stateChanges.on((s) => this.onClientState(client, s)),
       client.log.on((entry) => {
         // The bootloader's flow control and status bytes are the update's normal dialogue, not stray bytes.
-        this.context.packetLog.push(this.updatingFirmware() ? duringFirmwareUpdate(entry) : entry);
-        this.store.update((s) => ({ log: { ...s.log, revision: this.context.packetLog.revision } }));
+        packetLog.push(this.updatingFirmware() ? duringFirmwareUpdate(entry) : entry);
+        this.store.update((s) => ({ log: { ...s.log, revision: packetLog.revision } }));
       }),
     ];
     try {
@@ -229,6 +252,7 @@ export class Session {
       if (this.client === client) {
         this.forgetClient();
         await client.close().catch(() => {});
+        const { failureNotice } = await failureWords();
         this.setConnection({
           phase: "disconnected",
           problem: failureNotice(said(uiMessages, "error.couldNotConnect"), e, locale),
@@ -272,7 +296,7 @@ export class Session {
     options: { packetMode?: boolean } = {},
   ): Promise<T> {
     const client = this.current;
-    if (!client) throw new RbcNotConnectedError();
+    if (!client) throw new (await import("../device/errors.ts")).RbcNotConnectedError();
     this.store.update((s) => ({ running: [...s.running, label] }));
     try {
       if ((options.packetMode ?? true) && client.mode === "direct") await client.exitDirectMode();

@@ -5,8 +5,6 @@ import { translator } from "../../../i18n/translate.ts";
 import { formatSeconds } from "../../../i18n/units.ts";
 import { type AppState, type Notice, noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
-import { errorNotice } from "../../error-text.ts";
-import { failureNotice } from "../../failure-notice.ts";
 import { focusSoon } from "../../focus.ts";
 import { inEveryLanguage, type LocalText, type Said, said } from "../../said.ts";
 import { forgetPort, grantedPorts, webSerial } from "../../serial-ports.ts";
@@ -15,6 +13,12 @@ import { connectionMessages } from "./messages.ts";
 import type { ConnectionState, RobotLabel } from "./state.ts";
 
 /** Connecting, disconnecting and the list of earlier ports; Stop, Limp and their outcome banner. */
+
+/**
+ * The words of failures (the device's errors and outcomes) load when a failure is to be said: the first page
+ * shows none, and leaves them out of its load (first load: issue 19).
+ */
+const failureWords = () => import("../../failure-words.ts");
 
 function setConnection(store: Store<AppState>, patch: Partial<ConnectionState>): void {
   store.update((s) => ({ connection: { ...s.connection, ...patch } }));
@@ -38,6 +42,7 @@ export async function forgetKnownPort(ctx: AppContext, port: SerialPort): Promis
       setConnection(ctx.store, { problem: { tone: "warning", text: t("connection.cannotForget") } });
     }
   } catch (e) {
+    const { errorNotice } = await failureWords();
     setConnection(ctx.store, { problem: errorNotice(t("connection.forgetFailed"), e, t.locale) });
   }
   await refreshKnownPorts(ctx.store);
@@ -163,7 +168,7 @@ export async function stopActivity(ctx: AppContext): Promise<void> {
   try {
     notice = stopOutcome(await client.stopActivity(), store.get().connection.limp === true, locale);
   } catch (e) {
-    notice = failureNotice(say("connection.stopFailed"), e, locale);
+    notice = (await failureWords()).failureNotice(say("connection.stopFailed"), e, locale);
   }
   if (session.current === client) store.update({ stopNotice: notice });
 }
@@ -199,7 +204,7 @@ export async function limpAll(ctx: AppContext): Promise<void> {
             say("connection.limpPartial", { confirmed: confirmed.length, silent: silent.join(", ") }),
           ]);
   } catch (e) {
-    notice = failureNotice(say("connection.limpFailed"), e, locale);
+    notice = (await failureWords()).failureNotice(say("connection.limpFailed"), e, locale);
   }
   if (session.current === client) {
     // The robot is limp and someone is holding it: the next movement asks again.

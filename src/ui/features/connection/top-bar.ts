@@ -1,7 +1,7 @@
 import { html, nothing, type TemplateResult } from "lit-html";
 import type { Locale } from "../../../i18n/locale.ts";
 import { translator } from "../../../i18n/translate.ts";
-import { platformName } from "../../../protocol/catalog.ts";
+import { platformName } from "../../../protocol/platform.ts";
 import { formatFirmware } from "../../../shared/format.ts";
 import { noticeText } from "../../app-state.ts";
 import { uiMessages } from "../../messages.ts";

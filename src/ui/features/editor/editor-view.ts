@@ -1,3 +1,5 @@
+// The file warnings' styles (warning groups), shared with the Motions view.
+import "../../styles/motions.css";
 import "../../styles/tools.css";
 import "../../styles/editor.css";
 import "../../styles/editor-pose.css";

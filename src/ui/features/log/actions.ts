@@ -5,10 +5,20 @@ import type { AppContext } from "../../context.ts";
 import { downloadTextFile } from "../../download-file.ts";
 import { errorNotice } from "../../error-text.ts";
 import { logMessages } from "./messages.ts";
-import { logAsText } from "./packet-log.ts";
+import { logAsText, PacketLog } from "./packet-log.ts";
 import type { LogViewState } from "./state.ts";
 
 /** The Log view's actions: pause, page, clear, copy and download the packet log. */
+
+/**
+ * The session's packet log; before the first connection there is none (it is made with the connection, its
+ * code is not in the first load: issue 19), and the view shows this empty one, which never gets an entry.
+ */
+const NOTHING_LOGGED = new PacketLog(1);
+
+export function packetLogOf(ctx: AppContext): PacketLog {
+  return ctx.packetLog ?? NOTHING_LOGGED;
+}
 
 /** Rows drawn on one page (hex is rendered for these only); copy and download always take the whole log. */
 export const PAGE_ROWS = 100;
@@ -34,7 +44,7 @@ function header(ctx: AppContext): string {
 export async function copyLog(ctx: AppContext): Promise<void> {
   const { locale } = ctx.store.get();
   const t = translator(logMessages, locale);
-  const lines = ctx.packetLog.lines();
+  const lines = packetLogOf(ctx).lines();
   try {
     await navigator.clipboard.writeText(logAsText(lines, header(ctx)));
     setNotice(ctx, { tone: "ok", text: t("log.copied", { count: lines.length }) });
@@ -45,7 +55,7 @@ export async function copyLog(ctx: AppContext): Promise<void> {
 
 export function downloadLog(ctx: AppContext): void {
   const t = translator(logMessages, ctx.store.get().locale);
-  const lines = ctx.packetLog.lines();
+  const lines = packetLogOf(ctx).lines();
   const name = `rbc-packet-log-${formatLocalDate(new Date())}.txt`;
   downloadTextFile(name, logAsText(lines, header(ctx)));
   setNotice(ctx, { tone: "ok", text: t("log.saved", { count: lines.length, file: name }) });
@@ -55,14 +65,14 @@ export function downloadLog(ctx: AppContext): void {
 export function togglePause(ctx: AppContext): void {
   const log = ctx.store.get().log;
   if (log.paused) setLog(ctx, { paused: false, upTo: undefined, offset: 0, notice: undefined });
-  else setLog(ctx, { paused: true, upTo: log.upTo ?? ctx.packetLog.newestSeq, notice: undefined });
+  else setLog(ctx, { paused: true, upTo: log.upTo ?? packetLogOf(ctx).newestSeq, notice: undefined });
 }
 
 /** The next page of older entries; the view stops following new ones so the rows do not move. */
 export function olderPage(ctx: AppContext): void {
   const log = ctx.store.get().log;
-  const upTo = log.upTo ?? ctx.packetLog.newestSeq;
-  const total = ctx.packetLog.countUpTo(upTo);
+  const upTo = log.upTo ?? packetLogOf(ctx).newestSeq;
+  const total = packetLogOf(ctx).countUpTo(upTo);
   const offset = Math.min(log.offset + PAGE_ROWS, Math.max(0, total - 1));
   setLog(ctx, { upTo, offset });
 }
@@ -75,12 +85,13 @@ export function newerPage(ctx: AppContext): void {
 }
 
 export function clearLog(ctx: AppContext): void {
-  ctx.packetLog.clear();
+  const packetLog = packetLogOf(ctx);
+  if (packetLog !== NOTHING_LOGGED) packetLog.clear();
   const log = ctx.store.get().log;
   setLog(ctx, {
-    revision: ctx.packetLog.revision,
+    revision: packetLog.revision,
     offset: 0,
-    upTo: log.paused ? ctx.packetLog.newestSeq : undefined,
+    upTo: log.paused ? packetLog.newestSeq : undefined,
     notice: undefined,
   });
 }

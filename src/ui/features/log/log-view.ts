@@ -1,10 +1,21 @@
+// The log view's own styles load with it, not with the first page (first load: issue 19).
+import "../../styles/log.css";
 import { html, nothing, type TemplateResult } from "lit-html";
 import { repeat } from "lit-html/directives/repeat.js";
 import { translator } from "../../../i18n/translate.ts";
 import { formatBytes, formatClockTime, formatCount, formatKilobytes } from "../../format.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
-import { clearLog, copyLog, downloadLog, newerPage, olderPage, PAGE_ROWS, togglePause } from "./actions.ts";
+import {
+  clearLog,
+  copyLog,
+  downloadLog,
+  newerPage,
+  olderPage,
+  PAGE_ROWS,
+  packetLogOf,
+  togglePause,
+} from "./actions.ts";
 import { rowNote } from "./log-note.ts";
 import { type LogTranslator, logMessages } from "./messages.ts";
 import type { LogLine, PacketLog } from "./packet-log.ts";
@@ -67,7 +78,7 @@ function countLine(log: PacketLog, paused: boolean, t: LogTranslator): TemplateR
 }
 
 function render(ctx: ViewContext): TemplateResult {
-  const log = ctx.packetLog;
+  const log = packetLogOf(ctx);
   const { paused, upTo, offset } = ctx.state.log;
   const { locale } = ctx.state;
   const t = translator(logMessages, locale);

@@ -1,3 +1,5 @@
+// Before tools.css, as it was when motions.css came with the first page.
+import "../../styles/motions.css";
 import "../../styles/tools.css";
 import { html, nothing, type TemplateResult } from "lit-html";
 import { translator } from "../../../i18n/translate.ts";

@@ -1,3 +1,5 @@
+// The zero tables' styles load with this view, not with the first page (first load: issue 19).
+import "../../styles/features.css";
 import { html, nothing, type TemplateResult } from "lit-html";
 import { live } from "lit-html/directives/live.js";
 import { translator } from "../../../i18n/translate.ts";
