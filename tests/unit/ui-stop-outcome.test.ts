@@ -10,10 +10,12 @@ describe("Stop's outcome sentence", () => {
       { ...base, tetheredPlay: { framesSent: 14, totalFrames: 30, lastFrame: { scene: 1, frame: 4 } } },
       false,
     );
-    expect(notice).toEqual({
+    expect(notice).toMatchObject({
       tone: "ok",
       text: "Tethered play stopped after scene 1, frame 4 (14 of 30 frames sent); the servos hold that frame.",
     });
+    // Kept as a message too, so that a language switch words it again (docs/ui.md: results where the eyes are).
+    expect(notice.said?.length).toBeGreaterThan(0);
   });
 
   it("says nothing moved when play was stopped before its first frame, and names transition frames", () => {
