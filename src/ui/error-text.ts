@@ -1,5 +1,4 @@
 import { errorText, technicalDetail } from "../device/error-text.ts";
-import { RbcError } from "../device/errors.ts";
 import type { Locale } from "../i18n/locale.ts";
 import { translator } from "../i18n/translate.ts";
 import type { Notice } from "./app-state.ts";
@@ -26,12 +25,6 @@ export function errorMessage(e: unknown, locale: Locale = "en"): string {
 /** A failure as a notice: `lead` (what was being done, in the panel's language) and what went wrong. */
 export function errorNotice(lead: string, e: unknown, locale: Locale = "en"): Notice {
   return { tone: "danger", text: `${lead} ${errorMessage(e, locale)}`, detail: technicalDetail(e) };
-}
-
-/** A failed connect, with the device outcome's code (the connect card offers Recover for `in-bootloader`). */
-export function connectProblem(e: unknown, locale: Locale = "en"): Notice {
-  const notice = errorNotice(translator(uiMessages, locale)("error.couldNotConnect"), e, locale);
-  return e instanceof RbcError ? { ...notice, code: e.code } : notice;
 }
 
 /** Why requestPort() failed, and whether to open the "Can't find your robot?" help. */

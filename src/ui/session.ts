@@ -252,11 +252,10 @@ export class Session {
       if (this.client === client) {
         this.forgetClient();
         await client.close().catch(() => {});
-        const { failureNotice } = await failureWords();
-        this.setConnection({
-          phase: "disconnected",
-          problem: failureNotice(said(uiMessages, "error.couldNotConnect"), e, locale),
-        });
+        const { failureNotice, outcomeCode } = await failureWords();
+        const notice = failureNotice(said(uiMessages, "error.couldNotConnect"), e, locale);
+        const code = outcomeCode(e);
+        this.setConnection({ phase: "disconnected", problem: code ? { ...notice, code } : notice });
       }
       return false;
     }
