@@ -163,7 +163,7 @@ describe("editor: teach-in and tethered play on the demo robot", () => {
     expect(await endValues(page, [10, 12, 0])).toEqual([100, 80, 126]);
     await hold(page);
 
-    // Scene 1: the left arm.
+    // Scene 1: the right arm (13-15).
     await page.getByTestId("scene-add").click();
     await page.getByRole("button", { name: "Read pose into scene 1" }).waitFor();
     await poseByHand(page, ["right-arm"], { 13: 150 });
@@ -172,10 +172,10 @@ describe("editor: teach-in and tethered play on the demo robot", () => {
     expect(await endValues(page, [13])).toEqual([150]);
     await hold(page);
 
-    // Scene 2: the right knee; End teach-in holds it, then leaves servo control.
+    // Scene 2: the left knee (servo 2, the robot's own left leg 0-4); End teach-in holds it, then leaves servo control.
     await page.getByTestId("scene-add").click();
     await page.getByRole("button", { name: "Read pose into scene 2" }).waitFor();
-    await poseByHand(page, ["right-leg"], { 2: 180 });
+    await poseByHand(page, ["left-leg"], { 2: 180 });
     await readInto(page, 2);
     expect(await endValues(page, [2])).toEqual([180]);
     await page.getByTestId("end-teach-in").click();

@@ -5,16 +5,17 @@ import type { AppContext } from "../../context.ts";
 import { downloadTextFile } from "../../download-file.ts";
 import { errorNotice } from "../../error-text.ts";
 import { logMessages } from "./messages.ts";
-import { logAsText, PacketLog } from "./packet-log.ts";
+import { LOG_CAPACITY, logAsText, PacketLog } from "./packet-log.ts";
 import type { LogViewState } from "./state.ts";
 
 /** The Log view's actions: pause, page, clear, copy and download the packet log. */
 
 /**
  * The session's packet log; before the first connection there is none (it is made with the connection, its
- * code is not in the first load: issue 19), and the view shows this empty one, which never gets an entry.
+ * code is not in the first load: issue 19), and the view shows this empty one, which never gets an entry and
+ * says the same capacity as the real one.
  */
-const NOTHING_LOGGED = new PacketLog(1);
+const NOTHING_LOGGED = new PacketLog(LOG_CAPACITY);
 
 export function packetLogOf(ctx: AppContext): PacketLog {
   return ctx.packetLog ?? NOTHING_LOGGED;
