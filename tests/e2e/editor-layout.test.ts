@@ -93,7 +93,9 @@ describe.each([
       expect(await sidewaysScroll(page), `${tab}: sideways`).toBeLessThanOrEqual(0);
       expect(await overflowingButtons(page), `${tab}: labels`).toEqual([]);
     }
-    for (const tab of TABS) expect(heights[tab], tab).toBeLessThanOrEqual(2 * viewport.height);
+    // Two screens, give or take the one pixel that subpixel layout rounds up to (the Pose tab at 1280×800
+    // measures 1,601 px since the robot moved beside the table at working size, issue 21 item 2).
+    for (const tab of TABS) expect(heights[tab], tab).toBeLessThanOrEqual(2 * viewport.height + 1);
     await context.close();
   });
 
