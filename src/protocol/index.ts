@@ -7,6 +7,7 @@ export * from "./intel-hex.ts";
 export * from "./motion-image.ts";
 export * from "./packet.ts";
 export * from "./packet-parser.ts";
+export * from "./platform.ts";
 export * from "./plausibility.ts";
 export * from "./rbm.ts";
 export * from "./rbm-validate.ts";
