@@ -69,7 +69,6 @@ export {
   type RunReport,
   type RunVerdict,
 } from "./run-outcome.ts";
-export * from "./servo-doctor/index.ts";
 export {
   frameLabel,
   TetheredPlayError,
