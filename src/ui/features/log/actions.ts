@@ -12,13 +12,10 @@ import type { LogViewState } from "./state.ts";
 
 /**
  * The session's packet log; before the first connection there is none (it is made with the connection, its
- * code is not in the first load: issue 19), and the view shows this empty one, which never gets an entry and
- * says the same capacity as the real one.
+ * code is not in the first load: issue 19), and the view shows an empty one with the real one's capacity.
  */
-const NOTHING_LOGGED = new PacketLog(LOG_CAPACITY);
-
 export function packetLogOf(ctx: AppContext): PacketLog {
-  return ctx.packetLog ?? NOTHING_LOGGED;
+  return ctx.packetLog ?? new PacketLog(LOG_CAPACITY);
 }
 
 /** Rows drawn on one page (hex is rendered for these only); copy and download always take the whole log. */
@@ -87,7 +84,7 @@ export function newerPage(ctx: AppContext): void {
 
 export function clearLog(ctx: AppContext): void {
   const packetLog = packetLogOf(ctx);
-  if (packetLog !== NOTHING_LOGGED) packetLog.clear();
+  packetLog.clear();
   const log = ctx.store.get().log;
   setLog(ctx, {
     revision: packetLog.revision,

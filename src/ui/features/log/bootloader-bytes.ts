@@ -19,17 +19,17 @@ import {
  */
 
 /** Each bootloader byte's name in the log (English, like the packets' names). */
-const BOOTLOADER_BYTES: ReadonlyMap<number, string> = new Map([
-  [XOFF, "XOFF (pause)"],
-  [XON, "XON (resume)"],
-  [BOOTLOADER_ACTIVE, "^ bootloader active"],
-  [BOOTLOADER_READY, "? ready"],
-  [LINE_DONE, "~ line done"],
-  [LINE_CHECKSUM_ERROR, "- line checksum error"],
-  [PAGE_ERROR, "% flash page error"],
-  [FILE_COMPLETE, "@ file complete"],
-  [FILE_COMPLETE_WITH_ERRORS, "# file complete with errors"],
-]);
+const BOOTLOADER_BYTES: Readonly<Record<number, string>> = {
+  [XOFF]: "XOFF (pause)",
+  [XON]: "XON (resume)",
+  [BOOTLOADER_ACTIVE]: "^ bootloader active",
+  [BOOTLOADER_READY]: "? ready",
+  [LINE_DONE]: "~ line done",
+  [LINE_CHECKSUM_ERROR]: "- line checksum error",
+  [PAGE_ERROR]: "% flash page error",
+  [FILE_COMPLETE]: "@ file complete",
+  [FILE_COMPLETE_WITH_ERRORS]: "# file complete with errors",
+};
 
 /** The name the packet log gives such a run. */
 export const BOOTLOADER_ENTRY_NAME = "Bootloader flow control and status";
@@ -38,11 +38,11 @@ export const BOOTLOADER_ENTRY_NAME = "Bootloader flow control and status";
 export function bootloaderNote(bytes: Uint8Array): string | undefined {
   const counts = new Map<number, number>();
   for (const b of bytes) {
-    if (!BOOTLOADER_BYTES.has(b)) return undefined;
+    if (BOOTLOADER_BYTES[b] === undefined) return undefined;
     counts.set(b, (counts.get(b) ?? 0) + 1);
   }
   if (counts.size === 0) return undefined;
-  return [...counts].map(([b, n]) => `${BOOTLOADER_BYTES.get(b)} ×${n}`).join(", ");
+  return [...counts].map(([b, n]) => `${BOOTLOADER_BYTES[b]} ×${n}`).join(", ");
 }
 
 /**
