@@ -1,12 +1,12 @@
 import type { Clock } from "../../shared/clock.ts";
-import { RbcCancelledError, RbcTimeoutError } from "../errors.ts";
+import { RbcCancelledError } from "../errors.ts";
 import type { RawChannel } from "../raw-channel.ts";
 
 /**
  * "Write this, then collect every byte the servo bus sends back for a while" on the client's raw channel
- * (docs/protocol.md §5 "Servo doctor", §3.6), built only on `RawChannel.exchange`'s public shape: every byte
- * passes through `accept`, which records it with its arrival time and counts none, so the exchange never
- * completes by itself; it ends when the window closes (its own abort signal) or at `capMs` (its timeout).
+ * (docs/protocol.md §5 "Servo doctor", §3.6), through `RawChannel.servoListen`: every byte is recorded with
+ * its arrival time and none is counted; the exchange ends when the line has been quiet long enough (the
+ * window below closes it) or at `capMs` (a line that never goes quiet: noisy, and the next command is fenced).
  */
 
 /** How long to listen after a write. */
@@ -65,28 +65,24 @@ export async function writeAndListen(
       Math.max(0, endAt() - clock.now()),
     );
   };
-  const onOuterAbort = () => closer.abort();
+  const onOuterAbort = () => clock.clearTimeout(timer);
   signal?.addEventListener("abort", onOuterAbort);
   schedule();
   try {
-    await raw.exchange(packet, {
-      need: 1,
-      timeoutMs: timing.capMs,
+    const ended = await raw.servoListen(packet, {
       note,
-      signal: closer.signal,
-      accept: (b) => {
+      capMs: timing.capMs,
+      close: closer.signal,
+      signal,
+      onByte: (b) => {
         const now = clock.now();
         if (now - sentAt < timing.notBeforeMs) heard.early.push(b);
         else heard.bytes.push(b);
         lastAt = now;
         schedule();
-        return false;
       },
     });
-  } catch (e) {
-    if (signal?.aborted) throw new RbcCancelledError();
-    if (e instanceof RbcTimeoutError) heard.noisy = true;
-    else if (!(e instanceof RbcCancelledError)) throw e;
+    heard.noisy = ended === "cap";
   } finally {
     clock.clearTimeout(timer);
     signal?.removeEventListener("abort", onOuterAbort);
