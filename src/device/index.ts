@@ -69,6 +69,7 @@ export {
   type RunReport,
   type RunVerdict,
 } from "./run-outcome.ts";
+export * from "./servo-doctor/index.ts";
 export {
   frameLabel,
   TetheredPlayError,

@@ -12,6 +12,8 @@ interface RawWaiter {
   accept: ((byte: number) => boolean) | undefined;
   /** Acknowledgement exchanges only: a matching byte before this clock time is early, not the answer. */
   notBefore?: number;
+  /** A listening servo command (`servoListen`): every byte goes here, none is counted. */
+  listen?: (byte: number) => void;
   resolve: (bytes: Uint8Array) => void;
   reject: (e: unknown) => void;
 }
@@ -230,11 +232,64 @@ export class RawChannel {
     return this.busFault;
   }
 
-  /** A servo command under the servo bus's rules (see `guardServoBus`). */
-  private async servoExchange(
+  /**
+   * A servo command that listens instead of counting (the servo doctor, docs/protocol.md §5): writes `bytes`,
+   * hands every byte the bus sends back to `onByte` with no count and no timing rule (the listener records
+   * arrival times itself), and ends when the listener closes `close` because the line has gone quiet. Such an
+   * exchange leaves the bus settled: the listener waited for quiet. At `capMs` (a line that never goes quiet)
+   * it resolves `"cap"` and the bus is unsettled, as after a timeout, so the next command is fenced first. The
+   * other servo-bus rules hold: bytes between commands are nobody's answer (`RbcStillPlayingError`).
+   */
+  async servoListen(
     bytes: Uint8Array,
-    options: { need: number; timeoutMs: number; note: string; signal?: AbortSignal },
-  ): Promise<Uint8Array> {
+    options: {
+      note: string;
+      capMs: number;
+      close: AbortSignal;
+      onByte: (byte: number) => void;
+      signal?: AbortSignal;
+    },
+  ): Promise<"closed" | "cap"> {
+    const bus = await this.readyBus(options.signal);
+    bus.last = options.note;
+    const { note, capMs, close, signal } = options;
+    return new Promise<"closed" | "cap">((resolve, reject) => {
+      if (signal?.aborted) return reject(new RbcCancelledError());
+      this.buffer = [];
+      let timer = 0;
+      const end = (outcome: "closed" | "cap" | Error) => {
+        this.clock.clearTimeout(timer);
+        signal?.removeEventListener("abort", onAbort);
+        close.removeEventListener("abort", onClose);
+        if (this.waiter === waiter) this.waiter = undefined;
+        if (outcome instanceof Error) {
+          if (outcome instanceof RbcCancelledError) bus.unsettled = true;
+          reject(outcome);
+          return;
+        }
+        if (outcome === "cap") bus.unsettled = true;
+        resolve(outcome);
+      };
+      const onAbort = () => end(new RbcCancelledError());
+      const onClose = () => end("closed");
+      const waiter: RawWaiter = {
+        need: Number.POSITIVE_INFINITY,
+        accept: undefined,
+        listen: options.onByte,
+        resolve: () => end("closed"),
+        reject: (e) => end(e instanceof Error ? e : new RbcError("bad-reply", String(e))),
+      };
+      this.waiter = waiter;
+      signal?.addEventListener("abort", onAbort);
+      close.addEventListener("abort", onClose);
+      timer = this.clock.setTimeout(() => end("cap"), capMs);
+      this.write(bytes, note).catch((e) => waiter.reject(e));
+      if (close.aborted) onClose();
+    });
+  }
+
+  /** The servo bus, fenced first if a reply may still be on its way; throws when there is none to use. */
+  private async readyBus(signal: AbortSignal | undefined): Promise<ServoBusGuard> {
     const bus = this.bus;
     if (!bus || bus.fault) {
       throw (
@@ -243,7 +298,7 @@ export class RawChannel {
         new RbcError("wrong-mode", "Servo control needs direct mode: press “Start servo control” first.")
       );
     }
-    if (options.signal?.aborted) throw new RbcCancelledError();
+    if (signal?.aborted) throw new RbcCancelledError();
     if (bus.unsettled) {
       try {
         await bus.host.fence();
@@ -257,6 +312,15 @@ export class RawChannel {
       if (this.bus !== bus || bus.fault) throw bus.fault ?? this.busFault ?? new RbcCancelledError();
       bus.unsettled = false;
     }
+    return bus;
+  }
+
+  /** A servo command under the servo bus's rules (see `guardServoBus`). */
+  private async servoExchange(
+    bytes: Uint8Array,
+    options: { need: number; timeoutMs: number; note: string; signal?: AbortSignal },
+  ): Promise<Uint8Array> {
+    const bus = await this.readyBus(options.signal);
     bus.last = options.note;
     const wireMs = (bytes.length + options.need) * WIRE_BYTE_MS - CLOCK_SLACK_MS;
     const notBefore = this.clock.now() + (bus.host.paced ? Math.max(0, wireMs) : 0);
@@ -324,6 +388,10 @@ export class RawChannel {
     if (!waiter) {
       if (bus.unsettled) bus.late += bytes.length;
       else this.unasked(bus, "unasked");
+      return;
+    }
+    if (waiter.listen) {
+      for (const b of bytes) waiter.listen(b);
       return;
     }
     if (waiter.notBefore !== undefined && this.clock.now() < waiter.notBefore) {

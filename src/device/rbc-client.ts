@@ -1,7 +1,7 @@
 /*
  * Why this file passes 400 lines: it is the public facade, one short method per operation (each delegating to a
- * module of its own: motion-run.ts, stop.ts, limp.ts, sound.ts, busy-probe.ts, …) with the doc comment callers
- * read; splitting it would split the API's one page of documentation, not its logic.
+ * module of its own: motion-run.ts, stop.ts, limp.ts, sound.ts, busy-probe.ts, servo-doctor/…) with the doc
+ * comment callers read; splitting it would split the API's one page of documentation, not its logic.
  */
 import type { Transport } from "../link/transport.ts";
 import type { Motion } from "../motion/index.ts";
@@ -35,6 +35,7 @@ import {
 import { type RbcClientOptions, RbcConnection, type RbcTimeouts } from "./rbc-connection.ts";
 import type { LinkTiming } from "./round-trip.ts";
 import type { RunReport } from "./run-outcome.ts";
+import { ServoBus } from "./servo-doctor/servo-bus.ts";
 import { runSound } from "./sound.ts";
 import { runStop, type StopActivityResult } from "./stop.ts";
 import { subscribe, unsubscribe } from "./subscriptions.ts";
@@ -72,11 +73,14 @@ export class RbcClient {
   readonly #core: ClientCore;
   /** Servo control; usable after `enterDirectMode()`. */
   readonly servos: DirectMode;
+  /** The servo doctor's access to the servo bus (src/device/servo-doctor); usable in direct mode. */
+  readonly servoBus: ServoBus;
 
   constructor(transport: Transport, options: RbcClientOptions = {}) {
     const c = new RbcConnection(transport, options);
     this.#c = c;
     this.servos = new DirectMode(c, c.raw);
+    this.servoBus = new ServoBus(c, c.raw);
     this.#core = createClientCore(c, this.servos);
   }
 

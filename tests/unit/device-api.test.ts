@@ -99,8 +99,10 @@ describe("RbcClient's public surface", () => {
     ]) {
       expect(name in client, name).toBe(false);
     }
-    expect(Object.keys(client)).toEqual(["servos"]);
+    expect(Object.keys(client)).toEqual(["servos", "servoBus"]);
     expect(Object.keys(client.servos)).toEqual([]);
+    // The servo doctor's bus access (src/device/servo-doctor) holds the conversation in private fields too.
+    expect(Object.keys(client.servoBus)).toEqual([]);
   });
 
   it("copies a zero table once, checks the copy and sends the copy: a sparse array is refused", async () => {

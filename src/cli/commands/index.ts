@@ -7,6 +7,7 @@ import { playCommand } from "./play.ts";
 import { portsCommand } from "./ports.ts";
 import { runCommand } from "./run.ts";
 import { sensorsCommand } from "./sensors.ts";
+import { servosCommand } from "./servos.ts";
 import { simCommand } from "./sim.ts";
 import { soundCommand } from "./sound.ts";
 import { stopCommand } from "./stop.ts";
@@ -23,6 +24,7 @@ export const COMMAND_LIST: readonly CommandDef[] = [
   playCommand,
   stopCommand,
   limpCommand,
+  servosCommand,
   soundCommand,
   sensorsCommand,
   logCommand,

@@ -85,6 +85,14 @@ export const COMMAND_HELP = {
     description: t("cliHelp.limp.description"),
     options: [["-y, --yes", t("cliHelp.limp.yes")]],
   }),
+  servos: (t) => ({
+    summary: t("cliHelp.servos.summary"),
+    description: t("cliHelp.servos.description"),
+    options: [
+      ["--ids A-B", t("cliHelp.servos.ids")],
+      ["-y, --yes", t("cliHelp.servos.yes")],
+    ],
+  }),
   sound: (t) => ({
     summary: t("cliHelp.sound.summary"),
     description: t("cliHelp.sound.description"),

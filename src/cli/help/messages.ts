@@ -183,6 +183,22 @@ export const helpMessages = defineMessages({
     en: "Makes servos 0-15 passive: they stop holding, and a standing robot falls unless someone holds it. rbc asks\nfirst (y/N); --yes skips the question, and without a terminal --yes is required. A motion that plays is\nended with 7 first and a sound waited out, as the robot takes nothing else meanwhile. rbc reports how many\nservos confirmed. To end a motion and keep the robot standing, use `rbc stop` instead.\n\nThe robot is left in its normal mode when rbc exits; the servos stay passive until they are moved again\n(a motion, or the panel's Servos view).",
     ko: "서보 0-15의 힘을 빼요. 서보가 자세를 지키지 않으므로, 서 있는 로봇은 누가 잡지 않으면 쓰러져요. rbc가\n먼저 물어봐요 (y/N). --yes를 쓰면 묻지 않고, 터미널이 없으면 --yes가 꼭 필요해요. 재생 중인 모션은\n먼저 7로 끝내고 소리는 끝날 때까지 기다려요 (그동안 로봇은 다른 요청을 받지 않아요). rbc는 몇 개의\n서보가 확인했는지 알려 줘요. 모션을 끝내고 로봇을 세워 두려면 대신 `rbc stop`을 써 주세요.\n\nrbc가 끝나면 로봇은 보통 모드로 돌아가요. 서보는 다시 움직일 때까지 (모션, 또는 패널의 서보 화면)\n힘이 빠진 채로 있어요.",
   },
+  "cliHelp.servos.summary": {
+    en: "the servo doctor: scan the servo bus, read one servo, wiggle it, fix a wrong id",
+    ko: "서보 진단: 서보 버스 검사, 서보 하나 읽기, 흔들기 검사, 잘못된 ID 고치기",
+  },
+  "cliHelp.servos.description": {
+    en: "scan: reads every id once (default 0-15, a HUNO's; --ids 0-30 or all for every id) and says for each whether\na servo answered (position, load), was silent, or garbled (two servos share the id). Then the findings: a\nmissing servo, two servos at one id, a replacement servo still at the factory id 0, a high load at rest.\nExit 0 when every expected servo answered, 1 otherwise.\n\ninfo ID: reads the servo's gains, speed, overload limit, bounds and I/O (reads only).\nwiggle ID: moves servo ID (0-15) a few counts each way at the lowest torque and back, inside its safe range;\nasks first (hold the robot or lay it down); says whether it followed, how far, and its load.\nset-id FROM TO: the guided id fix. Only when exactly one servo answers at FROM and none at TO; asks once,\nchanges the id, then reads both ids and says what it read. The baud rate is never changed.\n\nThe robot must be idle (no motion playing). rbc leaves servo control at the end; Ctrl-C stops after the\ncommand on the wire and says which ids were read.",
+    ko: "scan: 모든 ID를 한 번씩 읽어요 (기본은 HUNO의 0-15, 모든 ID는 --ids 0-30 또는 all). ID마다 서보가 응답했는지\n(위치, 부하), 응답이 없는지, 깨진 응답인지 (두 서보가 같은 ID) 알려 줘요. 그다음 진단 결과: 빠진 서보, 한\nID의 서보 두 개, 아직 공장 ID 0인 교체 서보, 쉴 때의 높은 부하. 기대한 서보가 모두 응답하면 종료 코드 0, 아니면 1이에요.\n\ninfo ID: 서보의 게인, 속도, 과부하 한계, 범위, I/O를 읽어요 (읽기만 해요).\nwiggle ID: 서보 ID(0-15)를 가장 약한 힘으로 안전 범위 안에서 양쪽으로 조금씩 움직였다가 되돌려요. 먼저\n물어봐요 (로봇을 잡거나 눕혀 주세요). 따라왔는지, 얼마나, 부하는 얼마인지 알려 줘요.\nset-id FROM TO: ID 고치기. FROM에 서보 하나만 응답하고 TO에는 없을 때만 해요. 한 번 묻고, ID를 바꾼 뒤 두\nID를 읽어 읽은 그대로 알려 줘요. 통신 속도는 절대 바꾸지 않아요.\n\n로봇은 쉬고 있어야 해요 (재생 중인 모션 없음). rbc는 끝날 때 서보 조종 모드를 벗어나요. Ctrl-C는 보내는 중인\n명령 뒤에 멈추고 어떤 ID를 읽었는지 알려 줘요.",
+  },
+  "cliHelp.servos.ids": {
+    en: "Ids to scan: A-B, A,B,… or all (default 0-15).",
+    ko: "검사할 ID: A-B, A,B,… 또는 all (기본 0-15).",
+  },
+  "cliHelp.servos.yes": {
+    en: "Wiggle or change the id without the question.",
+    ko: "묻지 않고 흔들거나 ID를 바꿔요.",
+  },
   "cliHelp.limp.yes": {
     en: "Make the servos passive without the question.",
     ko: "묻지 않고 서보의 힘을 빼요.",
