@@ -1,5 +1,5 @@
 import { readFile } from "node:fs/promises";
-import { basename } from "node:path";
+import { basename, resolve } from "node:path";
 import {
   FirmwareUpdateError,
   type FirmwareUpdateOptions,
@@ -40,10 +40,10 @@ const OPTIONS = {
 const DEMO_POWER_CYCLE_MS = 500;
 
 /** Reads and checks the file; nothing is opened or sent when it is wrong. */
-async function readHex(file: string): Promise<IntelHexImage> {
+async function readHex(file: string, cwd: string): Promise<IntelHexImage> {
   let text: string;
   try {
-    text = await readFile(file, "utf8");
+    text = await readFile(resolve(cwd, file), "utf8");
   } catch (e) {
     throw unreadable(file, e);
   }
@@ -141,7 +141,7 @@ export const flashCommand: CommandDef = {
     const locale = localeOf(env);
     const t = translator(commandMessages, locale);
     const nothingSent = () => new CliError("interrupted", saidBy(nothingSentText), EXIT.interrupted);
-    const image = await readHex(file);
+    const image = await readHex(file, env.cwd);
     const name = basename(file);
     const summary = firmwareSummaryText(image.summary, locale);
     env.out.line(`${name}: ${summary}.`);

@@ -1,5 +1,5 @@
 import { readFile } from "node:fs/promises";
-import { basename } from "node:path";
+import { basename, resolve } from "node:path";
 import {
   frameLabel,
   TetheredPlayError,
@@ -95,7 +95,7 @@ function frameWords(frame: { scene: number; frame: number }, locale: Locale): st
 async function readMotion(env: RunEnv, file: string): Promise<Motion> {
   let text: string;
   try {
-    text = await readFile(file, "utf8");
+    text = await readFile(resolve(env.cwd, file), "utf8");
   } catch (e) {
     throw unreadable(file, e);
   }

@@ -1,5 +1,5 @@
 import { readFile } from "node:fs/promises";
-import { basename } from "node:path";
+import { basename, resolve } from "node:path";
 import { RbcUploadError } from "../../device/errors.ts";
 import type { FileUploadResult } from "../../device/index.ts";
 import type { Locale } from "../../i18n/locale.ts";
@@ -86,7 +86,7 @@ export function rbmInvalid(
 async function prepare(env: RunEnv, file: string, asAction: boolean): Promise<Prepared> {
   let bytes: Uint8Array;
   try {
-    bytes = new Uint8Array(await readFile(file));
+    bytes = new Uint8Array(await readFile(resolve(env.cwd, file)));
   } catch (e) {
     throw unreadable(file, e);
   }

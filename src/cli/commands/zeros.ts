@@ -1,3 +1,4 @@
+import { resolve } from "node:path";
 import { RbcCancelledError } from "../../device/errors.ts";
 import { type SafeZeroWrite, ZeroBackupError, ZeroWriteFailedError } from "../../device/index.ts";
 import type { ZeroWriteResult } from "../../device/types.ts";
@@ -159,7 +160,7 @@ async function backupAndWrite(
       robot: { serialNumber: current.serialNumber, firmware: current.firmware },
       signal: env.signal,
       saveBackup: async (backup) => {
-        backupFile = await saveAutomaticBackup(values["backup-dir"] ?? env.cwd, backup);
+        backupFile = await saveAutomaticBackup(resolve(env.cwd, values["backup-dir"] ?? "."), backup);
         env.out.note(t("cmd.zeros.backedUp", { file: backupFile }));
         const changes = diffZeros(backup.zeros, target);
         const list = changes.map((c) => `${c.id}: ${c.from} → ${c.to}`).join(", ");
@@ -286,12 +287,14 @@ async function write(env: RunEnv, values: Values, args: string[]): Promise<numbe
 async function backup(env: RunEnv, values: Values, args: string[]): Promise<number> {
   noExtraArguments("zeros", args, 1);
   const file = args[0];
-  if (file !== undefined) await refuseExisting(file, values.force === true);
+  if (file !== undefined) await refuseExisting(resolve(env.cwd, file), values.force === true);
   const robot = await connectRobot("zeros", values, env);
   const current = await identify(robot);
   const source = { ...current, serialNumber: current.serialNumber ?? "unknown" };
   const path = file ?? (await writeAutomaticBackup(env.cwd, source));
-  const saved = file ? await writeBackupFile(file, source, values.force === true) : undefined;
+  const saved = file
+    ? await writeBackupFile(resolve(env.cwd, file), source, values.force === true)
+    : undefined;
   env.out.result({
     file: path,
     zeros: current.zeros,
@@ -314,7 +317,7 @@ async function restore(env: RunEnv, values: Values, args: string[]): Promise<num
   noExtraArguments("zeros", args, 1);
   const file = args[0];
   if (file === undefined) throw new UsageError(said(commandMessages, "cmd.zeros.noBackupFile"), "zeros");
-  const saved = await readBackupFile(file);
+  const saved = await readBackupFile(resolve(env.cwd, file));
   if (saved.zeros.length !== ZERO_COUNT) {
     throw new CliError("backup-wrong-count", said(commandMessages, "cmd.zeros.not16", { file }));
   }
