@@ -41,6 +41,11 @@ export interface InProcessOptions {
    * stdout fails, as EPIPE does, and stops the command the way main does (quietly, as on Ctrl-C).
    */
   readerLeavesAfter?: RegExp;
+  /**
+   * Ctrl-C at this robot time (ms on the demo robot's virtual clock): the command is aborted as main aborts it on
+   * SIGINT, at a moment that does not depend on how busy the machine is.
+   */
+  interruptAtMs?: number;
 }
 
 /** Runs `rbc ARGV` (a subcommand and its options, or help) in this process; never throws for a failed command. */
@@ -74,6 +79,9 @@ export async function runInProcess(argv: string[], options: InProcessOptions = {
   });
   const clock = new VirtualClock();
   const done = (code: number) => ({ code, ...text, robotMs: clock.now() });
+  if (options.interruptAtMs !== undefined) {
+    clock.setTimeout(() => controller.abort(new Error("Interrupted.")), options.interruptAtMs);
+  }
 
   if (name === undefined || name === "help" || wantsHelp(rest)) {
     const topic = name === "help" ? splitCommand(rest).command : name;
@@ -104,8 +112,16 @@ export async function runInProcess(argv: string[], options: InProcessOptions = {
   try {
     code = await driveClock(clock, def.run(runEnv));
   } catch (e) {
+    const stopped = e instanceof CliError && e.exitCode === EXIT.interrupted;
     if (outputClosed && controller.signal.aborted && !(e instanceof UsageError)) {
       code = EXIT.interrupted; // stopped because stdout's reader went away: quietly, as main does
+    } else if ((controller.signal.aborted || stopped) && !(e instanceof UsageError)) {
+      // Ctrl-C (`interruptAtMs`), worded as main words it.
+      const why = e instanceof CliError ? errorLine(e) : "";
+      const told = e instanceof CliError ? errorLine(e, locale) : "";
+      out.note(`rbc: ${t("cli.main.interrupted")} ${told}`.trim());
+      out.result({ ok: false, error: { code: "interrupted", message: `Interrupted. ${why}`.trim() } });
+      code = EXIT.interrupted;
     } else {
       const log = name === "log" || rest.includes("--log");
       out.note(`rbc: ${errorLine(e, locale, { detailShown: log })}`);
