@@ -36,6 +36,11 @@ describe("the Editor's questions match what the robot will do", () => {
     await showTab(page, "pose");
     await page.getByTestId("end-0").fill("200");
     await page.getByTestId("end-0").press("Tab");
+    const robot = page.locator('[data-testid="editor-robot3d"][data-state="ready"]');
+    await robot.waitFor({ timeout: 20_000 });
+    const servo0 = async () => (await robot.getAttribute("data-pose"))?.split(" ")[0];
+    // The scene as the file has it: 200.
+    await expect.poll(servo0).toBe("200");
     await showTab(page, "play");
     await page.locator("#play-button").click();
     const clamped = page.getByTestId("play-clamped");
@@ -43,7 +48,13 @@ describe("the Editor's questions match what the robot will do", () => {
     const text = squash(await clamped.textContent());
     expect(text).toMatch(/^1 servo is outside its safe range in these scenes/);
     expect(text).toMatch(/servo 0 \([^)]+\) 200 → 174/);
+    // While it asks, the 3D shows what the robot will do: servo 0 at 174, not the file's 200.
+    await expect.poll(servo0).toBe("174");
+    expect(await page.getByTestId("editor-robot3d").locator("canvas").getAttribute("aria-label")).toContain(
+      "as the robot will take it",
+    );
     await page.locator("#cancel-play").click();
+    await expect.poll(servo0).toBe("200");
     await context.close();
   });
 

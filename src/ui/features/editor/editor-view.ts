@@ -6,7 +6,7 @@ import "../../styles/editor-pose.css";
 import "../../styles/editor-layout.css";
 import { html, type TemplateResult } from "lit-html";
 import { translator } from "../../../i18n/translate.ts";
-import type { Motion } from "../../../motion/index.ts";
+import { clampPosition, type Motion } from "../../../motion/index.ts";
 import { type Robot3dOptions, robot3d } from "../../robot3d/robot-view.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
 import { editorController } from "./controller.ts";
@@ -44,7 +44,9 @@ function byId(entries: readonly { id: number }[], value: (i: number) => number):
 
 /**
  * What the 3D view shows: the robot's live positions (teach-in, tethered play: measured from the robot's own
- * zeros) or the selected scene's end pose (measured from the motion file's zeros).
+ * zeros) or the selected scene's end pose (measured from the motion file's zeros). While Play on robot asks
+ * first, the scene as the robot will take it: tethered play sends a position outside a joint's safe range
+ * clamped to it (the question names those servos), so that is what the 3D shows.
  */
 export function shownPose(ctx: ViewContext, doc: Motion, k: number): Robot3dOptions {
   const t = translator(editorMessages, ctx.state.locale);
@@ -57,10 +59,15 @@ export function shownPose(ctx: ViewContext, doc: Motion, k: number): Robot3dOpti
     };
   }
   const scene = doc.scenes[k];
+  const asking = liveOf(ctx.state).play.confirming !== undefined;
+  const end = (i: number): number => {
+    const servo = scene!.servos[i]!;
+    return asking ? clampPosition(servo.id, servo.end) : servo.end;
+  };
   return {
-    pose: scene ? byId(scene.servos, (i) => scene.servos[i]!.end) : [],
+    pose: scene ? byId(scene.servos, end) : [],
     zeros: byId(doc.servos, (i) => doc.servos[i]!.zero),
-    label: t("editor.robotSceneLabel", { scene: String(k) }),
+    label: t(asking ? "editor.robotPlayLabel" : "editor.robotSceneLabel", { scene: String(k) }),
   };
 }
 
@@ -75,9 +82,9 @@ function header(t: EditorTranslator): TemplateResult {
 
 /** What the 3D view shows, in words under it (its canvas is named the same way). */
 function robotCaption(ctx: ViewContext, t: EditorTranslator, k: number): string {
-  return livePoseOf(ctx.state)
-    ? t("editor.robotCaptionLive")
-    : t("editor.robotCaptionScene", { scene: String(k) });
+  if (livePoseOf(ctx.state)) return t("editor.robotCaptionLive");
+  if (liveOf(ctx.state).play.confirming) return t("editor.robotCaptionPlay", { scene: String(k) });
+  return t("editor.robotCaptionScene", { scene: String(k) });
 }
 
 function render(ctx: ViewContext): TemplateResult {

@@ -24,7 +24,15 @@ export const editorMessages = defineMessages({
     en: "3D view of the end pose of scene {scene}; the pose table lists it in numbers",
     ko: "장면 {scene}의 끝 자세를 보여 주는 3D 화면. 자세 표에 숫자로 나와 있어요",
   },
+  "editor.robotPlayLabel": {
+    en: "3D view of scene {scene}'s end pose as the robot will take it: positions outside a joint's safe range clamped to it",
+    ko: "로봇이 실제로 취할 장면 {scene}의 끝 자세를 보여 주는 3D 화면. 관절의 안전 범위를 벗어난 위치는 범위 끝으로 맞춰져요",
+  },
   "editor.robotCaptionLive": { en: "The robot, live", ko: "실시간 로봇" },
+  "editor.robotCaptionPlay": {
+    en: "Scene {scene} as the robot will take it (safe ranges applied)",
+    ko: "로봇이 취할 장면 {scene} (안전 범위 적용)",
+  },
   "editor.robotCaptionScene": { en: "End pose of scene {scene}", ko: "장면 {scene}의 끝 자세" },
   "editor.sceneHeading": { en: "Scene {scene}: {name}", ko: "장면 {scene}: {name}" },
   "editor.servoParen": { en: "(servo {id})", ko: "(서보 {id})" },
