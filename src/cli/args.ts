@@ -27,7 +27,7 @@ export interface GlobalValues {
 }
 
 /** Global options that take a value, so that their value is not mistaken for the subcommand. */
-const VALUE_OPTIONS = new Set(["--port", "-p", "--lang"]);
+const VALUE_OPTIONS = new Set(["--port", "-p", "--ports", "--lang"]);
 
 /**
  * Splits `argv` into the subcommand and the rest: the subcommand is the first word that is neither an option

@@ -5,19 +5,18 @@
  * A closed stdout (`rbc … | head -1`) stops the command the same way, without a word.
  */
 import pkg from "../../package.json" with { type: "json" };
-import { technicalDetail } from "../device/error-text.ts";
-import { RbcUploadError } from "../device/errors.ts";
-import type { Locale } from "../i18n/locale.ts";
 import { translator } from "../i18n/translate.ts";
 import { splitCommand, wantsHelp } from "./args.ts";
 import { Cleanups } from "./cleanups.ts";
 import type { CommandDef, RunEnv } from "./command.ts";
 import { COMMAND_LIST, findCommand } from "./commands/index.ts";
-import { CliError, EXIT, errorCode, errorLine, UsageError } from "./errors.ts";
+import { CliError, EXIT, errorLine, UsageError } from "./errors.ts";
 import { commandHelp, globalHelp } from "./help/render.ts";
 import { cliLocale } from "./locale.ts";
 import { cliMessages } from "./messages.ts";
+import { checkSeveralPorts, portsGiven, runOnPorts } from "./multi-port.ts";
 import { Output } from "./output.ts";
+import { reportFailure, type Telling } from "./report-failure.ts";
 import { said } from "./said.ts";
 
 /** After Ctrl-C, how long a command may take to stop cleanly before rbc closes the port and exits anyway. */
@@ -26,44 +25,6 @@ const INTERRUPT_GRACE_MS = 5000;
 /** From package.json, imported (not read at run time) so that the bundle in dist-cli/ carries it. */
 function version(): string {
   return pkg.version;
-}
-
-/** How a failure is told to a person: in their language, with the English technical detail after `--log`. */
-interface Telling {
-  locale: Locale;
-  log: boolean;
-}
-
-/**
- * The failure's line for a person, on stderr. In English it is the line `--json` carries too; in another
- * language it is said in that language, and `--log` adds the English technical detail on the next line.
- */
-function tellFailure(out: Output, e: unknown, telling: Telling): void {
-  const { locale, log } = telling;
-  out.note(`rbc: ${errorLine(e, locale, { detailShown: log })}`);
-  if (locale !== "en" && log) {
-    out.note(`rbc: ${translator(cliMessages, locale)("cli.error.detail", { detail: technicalDetail(e) })}`);
-  }
-}
-
-function reportFailure(out: Output, e: unknown, command: CommandDef | undefined, telling: Telling): number {
-  const t = translator(cliMessages, telling.locale);
-  if (e instanceof UsageError) {
-    const which = e.command ?? command?.name;
-    tellFailure(out, e, telling);
-    out.note(t("cli.usage.seeHelp", { help: `rbc ${which ? `${which} ` : ""}--help` }));
-    out.result({ ok: false, error: { code: errorCode(e), message: errorLine(e) } });
-    return EXIT.usage;
-  }
-  tellFailure(out, e, telling);
-  const details =
-    e instanceof RbcUploadError
-      ? { acknowledged: e.acknowledged, total: e.total, outcome: e.outcome }
-      : e instanceof CliError
-        ? e.details
-        : {};
-  out.result({ ok: false, error: { code: errorCode(e), message: errorLine(e), ...details } });
-  return e instanceof CliError ? e.exitCode : EXIT.failed;
 }
 
 async function main(argv: readonly string[]): Promise<{ code: number; out: Output }> {
@@ -165,7 +126,16 @@ async function main(argv: readonly string[]): Promise<{ code: number; out: Outpu
       env: process.env,
       locale,
     };
-    const code = await def.run(env);
+    const given = portsGiven(rest);
+    let code: number;
+    if (given.ports.length > 1) {
+      checkSeveralPorts(def, given);
+      code = await runOnPorts(def, { ...env, argv: given.rest }, given.ports, telling);
+    } else {
+      // `--ports A` (one port) is `--port A`.
+      const argv = given.ports.length === 1 ? [...given.rest, "--port", given.ports[0]!] : given.rest;
+      code = await def.run({ ...env, argv });
+    }
     // Commands report an interruption as 130; after SIGTERM it is 143.
     return { code: code === EXIT.interrupted ? interruptCode : code, out };
   } catch (e) {

@@ -18,6 +18,24 @@ export const cliMessages = defineMessages({
     en: "Missing a command ({commands}).",
     ko: "명령이 없어요 ({commands}).",
   },
+  "cli.multi.notHere": {
+    en: "--port may be given once for rbc {command}; several ports work with {commands}.",
+    ko: "rbc {command}에는 --port를 한 번만 쓸 수 있어요. 포트 여러 개는 {commands}에서 쓸 수 있어요.",
+  },
+  "cli.multi.noDemo": {
+    en: "--demo cannot be combined with several ports: give each robot's --port (try `rbc sim --pty --count 3`).",
+    ko: "--demo는 포트 여러 개와 함께 쓸 수 없어요. 로봇마다 --port를 써 주세요 (`rbc sim --pty --count 3`으로 시험해 볼 수 있어요).",
+  },
+  "cli.multi.twice": {
+    en: 'Port "{port}" is given twice: each robot once.',
+    ko: '포트 "{port}"가 두 번 있어요. 로봇마다 한 번씩만 써 주세요.',
+  },
+  "cli.multi.header": { en: "── {port} ──", ko: "── {port} ──" },
+  "cli.multi.summary": {
+    en: "{ok} of {total} robots succeeded{failed}.",
+    ko: "로봇 {total}대 중 {ok}대가 성공했어요{failed}.",
+  },
+  "cli.multi.failedList": { en: "; not: {ports}", ko: ". 실패: {ports}" },
   "cli.usage.unknownCommand": { en: 'Unknown command "{name}".', ko: '알 수 없는 명령이에요: "{name}".' },
   "cli.usage.unknownOption": {
     en: "Unknown option '{option}'.",

@@ -28,6 +28,8 @@ export interface SimServerOptions extends SimLinkOptions {
   path: string;
   /** The firmware variant to simulate (docs/protocol.md §3.5); empty for the standard robot. */
   variant?: SimVariant;
+  /** The robot's serial number (13 characters) instead of the simulator's own (`rbc sim --count`). */
+  serialNumber?: string;
   /** Print nothing per packet. */
   quiet: boolean;
   out: Output;
@@ -109,7 +111,11 @@ function openPort(path: string): Promise<SerialPort> {
 export async function serveSimulator(options: SimServerOptions): Promise<void> {
   const { out } = options;
   const port = await openPort(options.path);
-  const sim = new SimulatedRbc({ ...rbcOptionsOf(options.variant ?? {}) });
+  const serial = options.serialNumber;
+  const sim = new SimulatedRbc({
+    ...rbcOptionsOf(options.variant ?? {}),
+    ...(serial ? { serialNumber: serial } : {}),
+  });
   const boot = new BootloaderRbc(sim, { faults: { waiting: options.variant?.inBootloader } });
   const print = (line: SimTraceLine) => {
     if (options.quiet) return;

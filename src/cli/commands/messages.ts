@@ -567,6 +567,11 @@ export const commandMessages = defineMessages({
     en: "Give either --port PATH (a serial device to serve) or --pty.",
     ko: "--port PATH(가상 로봇을 띄울 시리얼 장치)나 --pty 중 하나를 써 주세요.",
   },
+  "cmd.sim.countNeedsPty": {
+    en: "--count serves several robots, each on a PTY pair of its own: give --pty.",
+    ko: "--count는 로봇마다 PTY 쌍을 따로 만들어 여러 대를 띄워요. --pty를 써 주세요.",
+  },
+  "cmd.sim.robotLabel": { en: "robot {robot}:", ko: "로봇 {robot}:" },
   "cmd.sim.portOrPtyShort": { en: "Give --port PATH or --pty.", ko: "--port PATH나 --pty를 써 주세요." },
   "cmd.sim.unknownFault": {
     en: 'Unknown --fault "{fault}"; use one of {kinds}.',

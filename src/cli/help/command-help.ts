@@ -124,6 +124,7 @@ export const COMMAND_HELP = {
     description: t("cliHelp.sim.description"),
     options: [
       ["--pty", t("cliHelp.sim.pty")],
+      ["--count N", t("cliHelp.sim.count")],
       ["--latency-ms N", t("cliHelp.sim.latency")],
       ["--baud-pacing", t("cliHelp.sim.baudPacing")],
       ["--fault KIND", t("cliHelp.sim.fault", { kinds: FAULT_KINDS.join(", ") })],

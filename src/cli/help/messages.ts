@@ -28,6 +28,10 @@ export const helpMessages = defineMessages({
     en: "Serial port of the robot, e.g. /dev/ttyUSB0 or COM3 (see `rbc ports`). Default: $RBC_PORT.",
     ko: "로봇의 시리얼 포트, 예: /dev/ttyUSB0, COM3 (`rbc ports` 참고). 기본값: $RBC_PORT.",
   },
+  "cliHelp.option.ports": {
+    en: "Several robots at once (or --port given several times): info, zeros read, upload, run and stop run on every port in parallel, one block per port in the order given; exit code 0 only if every robot succeeded.",
+    ko: "여러 로봇을 한꺼번에 (또는 --port를 여러 번): info, zeros read, upload, run, stop이 모든 포트에서 동시에 실행되고, 준 순서대로 포트마다 한 덩어리씩 출력돼요. 모든 로봇이 성공했을 때만 종료 코드가 0이에요.",
+  },
   "cliHelp.option.demo": {
     en: "Use the built-in simulated robot instead (firmware 2.23, HUNO, just switched on).",
     ko: "대신 rbc에 들어 있는 가상 로봇을 써요 (펌웨어 2.23, HUNO, 막 켠 상태).",
@@ -267,6 +271,10 @@ export const helpMessages = defineMessages({
   "cliHelp.sim.pty": {
     en: "Create a PTY pair with socat and print the path for clients.",
     ko: "socat으로 PTY 쌍을 만들고 클라이언트가 쓸 경로를 출력해요.",
+  },
+  "cliHelp.sim.count": {
+    en: "With --pty: serve N simulated robots (1-12), each on its own PTY pair with its own serial number (…01, …02, …); their lines start with “robot K:”.",
+    ko: "--pty와 함께: 가상 로봇 N대(1-12)를 띄워요. 로봇마다 PTY 쌍과 시리얼 번호(…01, …02, …)가 따로 있고, 출력 줄은 “로봇 K:”로 시작해요.",
   },
   "cliHelp.sim.latency": {
     en: "Delay every reply by N ms (default 0).",

@@ -11,6 +11,7 @@ function globalOptions(locale: Locale) {
   const t = translator(helpMessages, locale);
   const robot: Row[] = [
     ["-p, --port PATH", t("cliHelp.option.port")],
+    ["--ports A,B,…", t("cliHelp.option.ports")],
     ["--demo", t("cliHelp.option.demo")],
   ];
   return {
