@@ -27,7 +27,10 @@ export type MetricKey =
   | "firmwareWirePercent"
   | "singleFileKB"
   | "singleFileGzipKB"
-  | "motionEditMs";
+  | "motionEditMs"
+  | "servoScanRatio"
+  | "multiRobotRatio4"
+  | "multiRobotRatio12";
 
 export interface Target {
   op: ">=" | "<=";
@@ -115,6 +118,9 @@ export const ROWS: readonly Row[] = [
     unit: "ms",
     digits: 3,
   },
+  { key: "servoScanRatio", label: "Servo scan 0-30, wired, real time ÷ ideal", unit: "×", digits: 2 },
+  { key: "multiRobotRatio4", label: "Upload to 4 robots at once ÷ to 1 (ideal 1.0)", unit: "×", digits: 2 },
+  { key: "multiRobotRatio12", label: "Upload to 12 robots at once ÷ to 1 (ideal 1.0)", unit: "×", digits: 2 },
 ];
 
 export type Metrics = Record<MetricKey, number | null>;

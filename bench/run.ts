@@ -28,10 +28,12 @@ import { describeFirmwareRun, measureFirmwareUpdate } from "./firmware-update.ts
 import { measureFirstRender } from "./first-render.ts";
 import { describeLogMemory, measureLogMemory } from "./log-memory.ts";
 import { describeMotionEdit, measureMotionEdit } from "./motion-edit.ts";
+import { measureMultiRobotUpload } from "./multi-robot-upload.ts";
 import { makeParserStream, measureParser } from "./parser-throughput.ts";
 import { type MetricKey, type Metrics, TARGETS, table, targetMet } from "./report.ts";
 import { measureRequestOverhead } from "./request-overhead.ts";
 import { describeRobot3d, measureRobot3d } from "./robot3d-fps.ts";
+import { measureServoScan } from "./servo-scan.ts";
 import { round } from "./stats.ts";
 import { measureUpload } from "./upload-efficiency.ts";
 import { WIRE_BYTES_PER_SECOND } from "./upload-ideal.ts";
@@ -84,6 +86,9 @@ const metrics: Metrics = {
   singleFileKB: null,
   singleFileGzipKB: null,
   motionEditMs: null,
+  servoScanRatio: null,
+  multiRobotRatio4: null,
+  multiRobotRatio12: null,
 };
 const skipped: Partial<Record<MetricKey, string>> = {};
 const details: Record<string, unknown> = {};
@@ -243,6 +248,25 @@ async function main(): Promise<void> {
     details.motionEditTable = describeMotionEdit(motionEdit);
   } catch (e) {
     skip(["motionEditMs"], errorText(e));
+  }
+
+  progress("servo scan, ids 0-30, wired link (virtual clock once, then real time)");
+  try {
+    const scan = await measureServoScan(quick ? 1 : 5);
+    metrics.servoScanRatio = scan.ratioReal;
+    details.servoScan = scan;
+  } catch (e) {
+    skip(["servoScanRatio"], errorText(e));
+  }
+
+  progress("upload of wave.rbm to 1, 4 and 12 simulated robots at once (real time)");
+  try {
+    const many = await measureMultiRobotUpload(quick ? 1 : 3);
+    metrics.multiRobotRatio4 = many.ratio["4"] ?? null;
+    metrics.multiRobotRatio12 = many.ratio["12"] ?? null;
+    details.multiRobotUpload = many;
+  } catch (e) {
+    skip(["multiRobotRatio4", "multiRobotRatio12"], errorText(e));
   }
 
   progress("CLI start-up (node bin/rbc.mjs --help against node -e 0, interleaved)");
