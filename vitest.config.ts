@@ -1,3 +1,5 @@
+import { tmpdir } from "node:os";
+import { join } from "node:path";
 import { defineConfig } from "vitest/config";
 
 /** Unit tests that open serial ports (over socat PTYs) in the test process itself. */
@@ -8,6 +10,9 @@ export default defineConfig({
     // Vitest's default on a 2-core machine is one worker (cores - 1), which runs every file one after another;
     // most of the suite waits on a browser or a child process rather than the CPU, so two workers fit.
     maxWorkers: 2,
+    // rbc keeps its shelf of uploaded motions in its config folder: tests (and the rbc they spawn) use a folder
+    // of their own, never the user's ~/.config/rbc.
+    env: { RBC_CONFIG_DIR: join(tmpdir(), `rbc-test-config-${process.pid}`) },
     reporters: process.env.CI
       ? ["default", ["json", { outputFile: "test-results/vitest.json" }]]
       : ["default"],

@@ -18,6 +18,18 @@ export const cliMessages = defineMessages({
     en: "Missing a command ({commands}).",
     ko: "명령이 없어요 ({commands}).",
   },
+  "cli.shelf.notRecorded": {
+    en: "The motion is stored, but rbc could not record it on its shelf: {why}",
+    ko: "동작은 저장됐지만 rbc가 기록하지 못했어요: {why}",
+  },
+  "cli.shelf.unreadable": {
+    en: "Cannot read the shelf file {path}: {why}",
+    ko: "기록 파일 {path}을(를) 읽을 수 없어요: {why}",
+  },
+  "cli.shelf.invalid": {
+    en: "{path} is not an rbc shelf file; it was left as it is and nothing is recorded until it is moved away.",
+    ko: "{path}은(는) rbc 기록 파일이 아니에요. 그대로 두었고, 옮기기 전까지는 아무것도 기록하지 않아요.",
+  },
   "cli.multi.notHere": {
     en: "--port may be given once for rbc {command}; several ports work with {commands}.",
     ko: "rbc {command}에는 --port를 한 번만 쓸 수 있어요. 포트 여러 개는 {commands}에서 쓸 수 있어요.",

@@ -86,3 +86,14 @@ export {
   writeZerosWithBackup,
   type ZeroPolicyOptions,
 } from "./zero-policy.ts";
+export {
+  emptied,
+  imageHash,
+  type RobotShelf,
+  reconcile,
+  recordUpload,
+  type ShelfDrop,
+  type ShelfSlot,
+  shelfDurationMs,
+  shelfKey,
+} from "./shelf.ts";

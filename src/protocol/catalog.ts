@@ -78,6 +78,17 @@ export function downloadSlotOf(number: number): number | undefined {
   return undefined;
 }
 
+/**
+ * The remote key that plays downloaded motion number `number` (docs/protocol.md §3.1): 12-21 are keys 1-9 and
+ * 0, 33-42 the same keys after `*`. Undefined for any other number.
+ */
+export function remoteKeyOf(number: number): { star: boolean; key: string } | undefined {
+  const slot = downloadSlotOf(number);
+  if (slot === undefined) return undefined;
+  const k = ((slot - 1) % 10) + 1;
+  return { star: slot > 10, key: k === 10 ? "0" : String(k) };
+}
+
 /** [decision] The numbers the panel offers: 1-11, 12-21 and 33-42. */
 export function isOfferedMotionNumber(number: number): boolean {
   return (

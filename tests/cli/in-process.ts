@@ -8,6 +8,9 @@
  * like Ctrl-C); main's own wiring (signals, EPIPE, flushing, `--version`, `--lang` refused, the installed bin)
  * is covered by the few spawned tests that remain (cli-demo, cli-i18n, cli-serial).
  */
+import { rm } from "node:fs/promises";
+import { tmpdir } from "node:os";
+import { join } from "node:path";
 import { PassThrough } from "node:stream";
 import { splitCommand, wantsHelp } from "../../src/cli/args.ts";
 import { Cleanups } from "../../src/cli/cleanups.ts";
@@ -48,10 +51,15 @@ export interface InProcessOptions {
   interruptAtMs?: number;
 }
 
+let runs = 0;
+
 /** Runs `rbc ARGV` (a subcommand and its options, or help) in this process; never throws for a failed command. */
 export async function runInProcess(argv: string[], options: InProcessOptions = {}): Promise<InProcessResult> {
   const { command: name, rest } = splitCommand(argv);
-  const env = { NO_COLOR: "1", LANG: "C", LC_ALL: "C", ...options.env };
+  // rbc's config folder (its shelf of uploads): one of this run's own unless the test gives one, so that no run
+  // sees another's records and none touches the user's.
+  const configDir = join(tmpdir(), `rbc-in-process-${process.pid}-${++runs}`);
+  const env = { NO_COLOR: "1", LANG: "C", LC_ALL: "C", RBC_CONFIG_DIR: configDir, ...options.env };
   const { locale } = cliLocale(argv, env);
   const t = translator(cliMessages, locale);
   const text = { stdout: "", stderr: "" };
@@ -141,6 +149,7 @@ export async function runInProcess(argv: string[], options: InProcessOptions = {
     await driveClock(clock, cleanups.run());
   }
   await settled();
+  if (options.env?.RBC_CONFIG_DIR === undefined) await rm(configDir, { recursive: true, force: true });
   return done(code);
 }
 

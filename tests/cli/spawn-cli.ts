@@ -1,4 +1,7 @@
 import { type ChildProcess, execFileSync, spawn } from "node:child_process";
+import { rmSync } from "node:fs";
+import { tmpdir } from "node:os";
+import { join } from "node:path";
 import { fileURLToPath } from "node:url";
 
 /**
@@ -90,10 +93,22 @@ export const startCli = defaultScope.start;
 /** Runs `rbc ARGS` to the end. */
 export const runCli = defaultScope.run;
 
+let spawned = 0;
+
 function startIn(running: Set<ChildProcess>, args: readonly string[], options: CliOptions): CliProcess {
+  // rbc's config folder (its shelf of uploads): the process's own unless the test gives one (to share it
+  // between commands), so that no command sees another test's records and none touches the user's.
+  const configDir = join(tmpdir(), `rbc-spawned-${process.pid}-${++spawned}`);
   const child = spawn(process.execPath, [cliEntry(), ...args], {
     cwd: options.cwd ?? REPO,
-    env: { ...process.env, RBC_PORT: "", RBC_DEMO_TIME_SCALE: "", NO_COLOR: "1", ...options.env },
+    env: {
+      ...process.env,
+      RBC_PORT: "",
+      RBC_DEMO_TIME_SCALE: "",
+      NO_COLOR: "1",
+      RBC_CONFIG_DIR: configDir,
+      ...options.env,
+    },
     stdio: ["ignore", "pipe", "pipe"],
   });
   running.add(child);
@@ -146,6 +161,7 @@ function startIn(running: Set<ChildProcess>, args: readonly string[], options: C
     child.on("close", (code, signal) => {
       clearTimeout(timer);
       running.delete(child);
+      if (options.env?.RBC_CONFIG_DIR === undefined) rmSync(configDir, { recursive: true, force: true });
       resolve({ code, signal, stdout: proc.stdout, stderr: proc.stderr });
     });
   });

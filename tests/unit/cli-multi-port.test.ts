@@ -1,3 +1,6 @@
+import { rmSync } from "node:fs";
+import { tmpdir } from "node:os";
+import { join } from "node:path";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import type { CommandDef, RunEnv } from "../../src/cli/command.ts";
 import { findCommand } from "../../src/cli/commands/index.ts";
@@ -144,6 +147,8 @@ describe("runOnPorts: every robot in parallel, reported in the order given", () 
 
 describe("over PTYs: rbc sim --pty --count 3 and one rbc for all three", () => {
   const scope = new CliScope();
+  /** One config folder for every command here: the shelf the upload records is the one rbc shelf and run read. */
+  const shared = { env: { RBC_CONFIG_DIR: join(tmpdir(), `rbc-multi-port-${process.pid}`) } };
   let sim: CliProcess;
   let ports: string[] = [];
 
@@ -159,13 +164,14 @@ describe("over PTYs: rbc sim --pty --count 3 and one rbc for all three", () => {
     sim.child.kill("SIGINT");
     await sim.done;
     await scope.killAll();
+    rmSync(shared.env.RBC_CONFIG_DIR, { recursive: true, force: true });
     ports = [];
   });
 
   it("rbc info --ports A,B,C: three blocks in order, three serial numbers, exit 0", {
     timeout: 60_000,
   }, async () => {
-    const result = await scope.run(["info", "--ports", ports.join(",")]);
+    const result = await scope.run(["info", "--ports", ports.join(",")], shared);
     expect(result.code, result.stderr).toBe(0);
     const blocks = result.stdout.split(/^── /m).slice(1);
     expect(blocks.map((b) => b.split(" ──")[0])).toEqual(ports);
@@ -181,18 +187,21 @@ describe("over PTYs: rbc sim --pty --count 3 and one rbc for all three", () => {
     timeout: 90_000,
   }, async () => {
     const missing = "/dev/rbc-no-such-port";
-    const result = await scope.run([
-      "upload",
-      EXAMPLES.wave,
-      "--port",
-      ports[0]!,
-      "--port",
-      missing,
-      "--port",
-      ports[2]!,
-      "--yes",
-      "--json",
-    ]);
+    const result = await scope.run(
+      [
+        "upload",
+        EXAMPLES.wave,
+        "--port",
+        ports[0]!,
+        "--port",
+        missing,
+        "--port",
+        ports[2]!,
+        "--yes",
+        "--json",
+      ],
+      shared,
+    );
     expect(result.code, result.stderr).toBe(1);
     const doc = JSON.parse(result.stdout) as {
       ok: boolean;
@@ -224,5 +233,27 @@ describe("over PTYs: rbc sim --pty --count 3 and one rbc for all three", () => {
         slot: 1,
       });
     }
+  });
+
+  it("the shelf remembers what the upload above stored: rbc shelf keeps slot 1 (the robot's memory holds it) and rbc run 12 is judged by its recorded 3.2 s", {
+    timeout: 90_000,
+  }, async () => {
+    const shelf = await scope.run(["shelf", "--port", ports[0]!, "--json"], shared);
+    expect(shelf.code, shelf.stderr).toBe(0);
+    expect(JSON.parse(shelf.stdout)).toMatchObject({
+      robot: "serial:8958899989301",
+      slots: [{ slot: 1, motionNumber: 12, name: "RbcPanel_Wave", durationMs: 3200 }],
+      dropped: [],
+      checked: true,
+    });
+    // The robot in the middle was never uploaded to: its shelf is empty.
+    const other = await scope.run(["shelf", "--port", ports[1]!, "--json"], shared);
+    expect(JSON.parse(other.stdout)).toMatchObject({ robot: "serial:8958899989302", slots: [] });
+    const run = await scope.run(["run", "7", "12", "--port", ports[0]!, "--json"], shared);
+    expect(run.code, run.stderr).toBe(0);
+    const completed = (
+      JSON.parse(run.stdout) as { completed: { motion: number; verdict: string; expectedMs: number }[] }
+    ).completed;
+    expect(completed[1]).toMatchObject({ motion: 12, verdict: "played", expectedMs: 3200 });
   });
 });

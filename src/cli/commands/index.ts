@@ -8,6 +8,7 @@ import { portsCommand } from "./ports.ts";
 import { runCommand } from "./run.ts";
 import { sensorsCommand } from "./sensors.ts";
 import { servosCommand } from "./servos.ts";
+import { shelfCommand } from "./shelf.ts";
 import { simCommand } from "./sim.ts";
 import { soundCommand } from "./sound.ts";
 import { stopCommand } from "./stop.ts";
@@ -20,6 +21,7 @@ export const COMMAND_LIST: readonly CommandDef[] = [
   infoCommand,
   zerosCommand,
   uploadCommand,
+  shelfCommand,
   runCommand,
   playCommand,
   stopCommand,

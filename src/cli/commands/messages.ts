@@ -567,6 +567,38 @@ export const commandMessages = defineMessages({
     en: "Give either --port PATH (a serial device to serve) or --pty.",
     ko: "--port PATH(가상 로봇을 띄울 시리얼 장치)나 --pty 중 하나를 써 주세요.",
   },
+  "cmd.shelf.key": { en: "key {key}", ko: "{key}번 키" },
+  "cmd.shelf.starKey": { en: "* then {key}", ko: "* 다음 {key}" },
+  "cmd.shelf.stored": { en: "stored {when}", ko: "{when}에 저장" },
+  "cmd.shelf.robotSerial": { en: "Robot {serial}:", ko: "로봇 {serial}:" },
+  "cmd.shelf.robotPort": {
+    en: "The robot on {port} (it reports no serial number):",
+    ko: "{port}의 로봇 (시리얼 번호를 알려 주지 않아요):",
+  },
+  "cmd.shelf.nothing": {
+    en: "Nothing recorded yet: rbc upload records each motion it stores ({path}).",
+    ko: "아직 기록이 없어요. rbc upload가 저장한 동작을 하나씩 기록해요 ({path}).",
+  },
+  "cmd.shelf.recorded": {
+    en: "What rbc recorded uploading ({path}); not read from the robots — add --port to check one:",
+    ko: "rbc가 업로드하며 기록한 내용이에요 ({path}). 로봇에서 읽은 것은 아니에요. 확인하려면 --port를 붙여 주세요:",
+  },
+  "cmd.shelf.empty": {
+    en: "Nothing recorded that this robot may still hold.",
+    ko: "이 로봇에 아직 남아 있을 수 있는 기록이 없어요.",
+  },
+  "cmd.shelf.dropped": {
+    en: "Forgotten: slot {slots}. The robot's motion memory holds {used} bytes, less than the files recorded up to there: its memory was reset or another program stored motions.",
+    ko: "지웠어요: 슬롯 {slots}. 로봇의 동작 메모리에 {used}바이트만 있어서, 그 슬롯까지 기록된 파일보다 적어요. 메모리가 초기화됐거나 다른 프로그램이 동작을 저장했어요.",
+  },
+  "cmd.shelf.checked": {
+    en: "Checked against the robot's free memory: these may still be there (the robot keeps no names).",
+    ko: "로봇의 남은 메모리와 맞춰 봤어요. 이 동작들은 아직 남아 있을 수 있어요 (로봇은 이름을 기억하지 않아요).",
+  },
+  "cmd.shelf.unchecked": {
+    en: "Not checked: the robot does not report its free memory (0x0F), so these are only what rbc recorded.",
+    ko: "확인하지 못했어요. 로봇이 남은 메모리(0x0F)를 알려 주지 않아서, rbc가 기록한 내용일 뿐이에요.",
+  },
   "cmd.sim.countNeedsPty": {
     en: "--count serves several robots, each on a PTY pair of its own: give --pty.",
     ko: "--count는 로봇마다 PTY 쌍을 따로 만들어 여러 대를 띄워요. --pty를 써 주세요.",

@@ -1,22 +1,53 @@
 import { RbcError } from "../../device/errors.ts";
 import type { StopActivityResult } from "../../device/rbc-client.ts";
 import { isHazardousMotion, type RunReport } from "../../device/run-outcome.ts";
+import { reconcile, shelfDurationMs, shelfKey } from "../../device/shelf.ts";
 import type { Locale } from "../../i18n/locale.ts";
 import { motionHazardText, runReportText } from "../../i18n/outcomes/run-words.ts";
 import { translator } from "../../i18n/translate.ts";
 import { formatSeconds } from "../../i18n/units.ts";
-import { BASIC_POSTURE_MOTION, isOfferedMotionNumber } from "../../protocol/catalog.ts";
+import { BASIC_POSTURE_MOTION, downloadSlotOf, isOfferedMotionNumber } from "../../protocol/catalog.ts";
 import { parseCommand } from "../args.ts";
-import { type CommandDef, localeOf } from "../command.ts";
-import { connectRobot } from "../connect.ts";
+import { type CommandDef, localeOf, type RunEnv } from "../command.ts";
+import { connectRobot, type Robot } from "../connect.ts";
 import { CliError, EXIT, errorSaid, UsageError } from "../errors.ts";
 import { COMMAND_HELP } from "../help/command-help.ts";
 import { motionName } from "../motion-names.ts";
 import { joinSaid, said, saidBy } from "../said.ts";
+import { readShelves, shelfOf, shelfPath } from "../shelf-file.ts";
 import { commandMessages } from "./messages.ts";
 import { stoppedMotionSentence } from "./stop.ts";
 
 export { motionName };
+
+/**
+ * The durations rbc recorded uploading the downloaded motions among `motions` (rbc shelf), for the Run check of
+ * docs/protocol.md §3.1 — used only while the robot's free memory still allows the record (`reconcile`); when
+ * it cannot be checked, or the shelf cannot be read, none (the check then says what is known).
+ */
+async function shelfDurations(
+  robot: Robot,
+  motions: readonly number[],
+  env: RunEnv,
+): Promise<Map<number, number>> {
+  const found = new Map<number, number>();
+  if (!motions.some((m) => downloadSlotOf(m) !== undefined)) return found;
+  try {
+    const file = await readShelves(shelfPath(env.env));
+    if (file.robots.length === 0) return found;
+    const { serialNumber } = await robot.client.identify();
+    const free = await robot.client.readFreeMemory("motion");
+    if (free === undefined) return found;
+    const { shelf } = reconcile(shelfOf(file, shelfKey(serialNumber, robot.where)), free);
+    for (const m of motions) {
+      const ms = shelfDurationMs(shelf, m);
+      if (ms !== undefined) found.set(m, ms);
+    }
+  } catch {
+    // A shelf file that cannot be read changes nothing about the Run: its check says what is known.
+  }
+  return found;
+}
 
 const OPTIONS = { yes: { type: "boolean", short: "y" } } as const;
 
@@ -59,6 +90,7 @@ export const runCommand: CommandDef = {
       env.out.note(`rbc: ${t("cmd.run.hazardNote", { hazard: motionHazardText(n, locale) ?? "" })}`);
     }
     const robot = await connectRobot("run", values, env, { handlesInterrupt: true });
+    const durations = await shelfDurations(robot, motions, env);
     const results: Array<Record<string, unknown>> = [];
     for (const motion of motions) {
       const name = motionName(motion);
@@ -86,7 +118,8 @@ export const runCommand: CommandDef = {
       let failure: unknown;
       let report: RunReport | undefined;
       try {
-        report = await robot.client.runMotionReport(motion);
+        const expectedMs = durations.get(motion);
+        report = await robot.client.runMotionReport(motion, expectedMs === undefined ? {} : { expectedMs });
       } catch (e) {
         failure = e;
       } finally {

@@ -7,8 +7,15 @@ import { nothingSentText, uploadNoticeText, uploadOutcomeText } from "../../i18n
 import { translator } from "../../i18n/translate.ts";
 import { formatSeconds } from "../../i18n/units.ts";
 import { downloadedMotionNumber, MOTION_AREA_BYTES } from "../../protocol/catalog.ts";
-import { motionImageSize } from "../../protocol/motion-image.ts";
-import { parseRbm, RbmError, type RbmMotion, type RbmValidation, validateRbm } from "../../protocol/rbm.ts";
+import { motionImage, motionImageSize } from "../../protocol/motion-image.ts";
+import {
+  motionDurationMs,
+  parseRbm,
+  RbmError,
+  type RbmMotion,
+  type RbmValidation,
+  validateRbm,
+} from "../../protocol/rbm.ts";
 import { noExtraArguments, parseCommand } from "../args.ts";
 import { type CommandDef, localeOf, type RunEnv } from "../command.ts";
 import { confirm } from "../confirm.ts";
@@ -18,6 +25,7 @@ import { COMMAND_HELP } from "../help/command-help.ts";
 import { ProgressBar } from "../progress.ts";
 import { errorCodeWords } from "../robot-words.ts";
 import { type Said, said, saidBy, saidEach } from "../said.ts";
+import { recordOnShelf } from "../shelf-record.ts";
 import {
   type IssueWords,
   issueLines,
@@ -153,9 +161,10 @@ export const uploadCommand: CommandDef = {
     const robot = await connectRobot("upload", values, env, { handlesInterrupt: true });
     const { client } = robot;
     let validation: RbmValidation = { errors: [], warnings: [] };
+    let serialNumber: string | undefined;
     if (prepared.area === "motion") {
       // 0x0C is optional (docs/protocol.md §3.5): without a serial number the file's robot check is skipped.
-      const { serialNumber } = await client.identify();
+      serialNumber = (await client.identify()).serialNumber;
       if (serialNumber === undefined) env.out.note(t("cmd.upload.noSerial"));
       validation = validateRbm(prepared.motion, { connectedSerialNumber: serialNumber });
       env.out.line(motionSummary(file, prepared.motion, prepared.imageBytes, locale));
@@ -269,6 +278,16 @@ export const uploadCommand: CommandDef = {
       env.out.line(real ? t("cmd.upload.becameHeld", became) : t("cmd.upload.became", became));
     } else if (result.area === "motion") {
       env.out.line(t("cmd.upload.numberUnknown"));
+    }
+    if (prepared.area === "motion" && placed.slot !== undefined && result.footprint !== undefined) {
+      await recordOnShelf(env, {
+        robot: { serialNumber, port: robot.where },
+        slot: placed.slot,
+        name: prepared.motion.name,
+        image: motionImage(prepared.motion),
+        durationMs: motionDurationMs(prepared.motion),
+        footprint: result.footprint,
+      });
     }
     return EXIT.ok;
   },

@@ -37,6 +37,11 @@ export const COMMAND_HELP = {
     description: t("cliHelp.ports.description"),
     options: [],
   }),
+  shelf: (t) => ({
+    summary: t("cliHelp.shelf.summary"),
+    description: t("cliHelp.shelf.description"),
+    options: [],
+  }),
   info: (t) => ({
     summary: t("cliHelp.info.summary"),
     description: t("cliHelp.info.description"),

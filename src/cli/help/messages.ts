@@ -272,6 +272,14 @@ export const helpMessages = defineMessages({
     en: "Create a PTY pair with socat and print the path for clients.",
     ko: "socat으로 PTY 쌍을 만들고 클라이언트가 쓸 경로를 출력해요.",
   },
+  "cliHelp.shelf.summary": {
+    en: "list the motions rbc uploaded: number, remote key, name, duration",
+    ko: "rbc가 업로드한 동작 보기: 번호, 리모컨 키, 이름, 길이",
+  },
+  "cliHelp.shelf.description": {
+    en: "The robot keeps the bytes of a downloaded motion, not its name. rbc upload records each motion it stores\n(slot, the number Run takes, name, duration, the file's SHA-256, date) per robot, by serial number (by port\nwhen the robot reports none), in shelf.json in rbc's config folder ($RBC_CONFIG_DIR, else\n$XDG_CONFIG_HOME/rbc or ~/.config/rbc). rbc run uses the recorded duration to tell whether a motion played.\n\nWithout --port it lists what this computer recorded for every robot. With --port (or --demo) it reads the\nrobot's free motion memory first and forgets the slots that memory shows were lost (a reset, another tool).",
+    ko: "로봇은 내려받은 동작의 바이트만 기억하고 이름은 기억하지 않아요. rbc upload는 저장한 동작마다 (슬롯, Run에\n쓰는 번호, 이름, 길이, 파일의 SHA-256, 날짜) 로봇별로 (시리얼 번호로, 없으면 포트로) rbc 설정 폴더의\nshelf.json에 기록해요 ($RBC_CONFIG_DIR, 없으면 $XDG_CONFIG_HOME/rbc나 ~/.config/rbc). rbc run은 기록된 길이로\n동작이 재생됐는지 판단해요.\n\n--port가 없으면 이 컴퓨터가 모든 로봇에 대해 기록한 내용을 보여 줘요. --port(또는 --demo)가 있으면 먼저 로봇의\n남은 동작 메모리를 읽고, 그 메모리로 보아 사라진 슬롯(초기화, 다른 프로그램)의 기록을 지워요.",
+  },
   "cliHelp.sim.count": {
     en: "With --pty: serve N simulated robots (1-12), each on its own PTY pair with its own serial number (…01, …02, …); their lines start with “robot K:”.",
     ko: "--pty와 함께: 가상 로봇 N대(1-12)를 띄워요. 로봇마다 PTY 쌍과 시리얼 번호(…01, …02, …)가 따로 있고, 출력 줄은 “로봇 K:”로 시작해요.",
