@@ -71,6 +71,17 @@ export {
 } from "./run-outcome.ts";
 export * from "./servo-doctor/index.ts";
 export {
+  emptied,
+  imageHash,
+  type RobotShelf,
+  reconcile,
+  recordUpload,
+  type ShelfDrop,
+  type ShelfSlot,
+  shelfDurationMs,
+  shelfKey,
+} from "./shelf.ts";
+export {
   frameLabel,
   TetheredPlayError,
   type TetheredPlayHolds,
@@ -86,14 +97,3 @@ export {
   writeZerosWithBackup,
   type ZeroPolicyOptions,
 } from "./zero-policy.ts";
-export {
-  emptied,
-  imageHash,
-  type RobotShelf,
-  reconcile,
-  recordUpload,
-  type ShelfDrop,
-  type ShelfSlot,
-  shelfDurationMs,
-  shelfKey,
-} from "./shelf.ts";
