@@ -34,6 +34,7 @@ export {
   updateFirmware,
 } from "./firmware-update.ts";
 export type { MotionEndOutcome } from "./motion-end.ts";
+export type { StopFound } from "./stop.ts";
 export type { RunMotionOptions } from "./motion-run.ts";
 export {
   type FileUploadOptions,

@@ -98,7 +98,9 @@ describe("Stop when this client started nothing (busy probe, docs/protocol.md §
     const rig = await makeRig({ sim: { userFirmware: true } });
     await rig.run(rig.client.runMotion(7));
     // Started elsewhere: the remote's key 9 is Run Motion 20 (docs/protocol.md §3.1).
-    rig.sim.receive(Uint8Array.from([0xff, 0xff, 0xaa, 0x55, 0xaa, 0x55, 0x37, 0xba, 0x14, 0, 0, 0, 0, 1, 20, 20]));
+    rig.sim.receive(
+      Uint8Array.from([0xff, 0xff, 0xaa, 0x55, 0xaa, 0x55, 0x37, 0xba, 0x14, 0, 0, 0, 0, 1, 20, 20]),
+    );
     await rig.clock.advance(100);
     expect(rig.sim.playingMotion).toBe(20);
     const log = record(rig);
@@ -170,5 +172,27 @@ describe("Stop in direct mode leaves it; the servos hold (issue 22 item 6, docs/
     // Literal: the first read is §5's mode-5 read of id 0, FF A0 00 20.
     expect(out[0]).toBe("FF A0 00 20");
     expect(out).not.toContain(ENTER_DIRECT);
+  });
+});
+
+describe("Stop's words when its 7 goes unanswered (the error code and the probe, docs/protocol.md §3.1)", () => {
+  it("error 11 read after the wait is said after the lead, in both languages", () => {
+    const found = {
+      kind: "unconfirmed",
+      noReply: {
+        motion: 7,
+        waitedMs: 4800,
+        expectedMs: 4800,
+        errorCode: 11,
+        busy: undefined,
+        cause: "servo-silent",
+      },
+    } as const;
+    expect(stopFoundText(found, "en")).toBe(
+      "The robot was busy playing a motion (started with the remote or another program). Stop sent 7, but the robot did not answer 07 within 4.8 s. The robot reports error 11: a servo does not answer: check the servo cables and the battery.",
+    );
+    expect(stopFoundText(found, "ko")).toBe(
+      "로봇이 모션을 재생하느라 바빴어요 (리모컨이나 다른 프로그램으로 시작한 모션). 정지가 7을 보냈지만 로봇이 4.8초 안에 07로 응답하지 않았어요. 로봇이 오류 11을 알려요. 서보가 응답하지 않아요. 서보 케이블과 배터리를 확인해 주세요.",
+    );
   });
 });
