@@ -34,7 +34,6 @@ export {
   updateFirmware,
 } from "./firmware-update.ts";
 export type { MotionEndOutcome } from "./motion-end.ts";
-export type { StopFound } from "./stop.ts";
 export type { RunMotionOptions } from "./motion-run.ts";
 export {
   type FileUploadOptions,
@@ -71,6 +70,7 @@ export {
   type RunVerdict,
 } from "./run-outcome.ts";
 export * from "./servo-doctor/index.ts";
+export type { StopFound } from "./stop.ts";
 export {
   frameLabel,
   TetheredPlayError,

@@ -1,7 +1,7 @@
 import { describe, expect, it } from "vitest";
-import { stopOutcome } from "../../src/ui/features/connection/actions.ts";
+import { stopOutcome } from "../../src/ui/features/connection/stop-outcome.ts";
 
-/** The top bar's sentence after Stop says only what the robot confirmed (src/ui/features/connection/actions.ts). */
+/** The top bar's sentence after Stop says only what the robot confirmed (src/ui/features/connection/stop-outcome.ts). */
 describe("Stop's outcome sentence", () => {
   const base = { uploadCancelled: false, servoMovesDropped: true };
 
