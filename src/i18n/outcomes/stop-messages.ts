@@ -26,8 +26,4 @@ export const stopOutcomeMessages = defineMessages({
     en: "The robot is busy playing a motion (started with the remote or another program); it answers when the motion ends.",
     ko: "로봇이 모션을 재생하느라 바빠요 (리모컨이나 다른 프로그램으로 시작한 모션). 모션이 끝나면 응답해요.",
   },
-  "outcome.busyAfterTimeout": {
-    en: 'The robot did not answer "{command}" within {wait}, and it is busy, probably playing a motion (it answers the firmware version but not the distance sensor). Stop ends the motion at the end of its scene; then try again.',
-    ko: '로봇이 {wait} 안에 "{command}"에 응답하지 않았고, 아마 모션을 재생하느라 바빠요 (펌웨어 버전에는 응답하지만 거리 센서에는 응답하지 않아요). 정지를 누르면 모션이 지금 장면이 끝날 때 멈춰요. 그다음 다시 해 보세요.',
-  },
 });

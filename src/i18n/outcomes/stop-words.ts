@@ -37,8 +37,3 @@ export function stopFoundUnsure(found: StopFound): boolean {
 export function busyNowText(locale: Locale): string {
   return t(locale)("outcome.busyNow");
 }
-
-/** A request that is answered at once went unanswered, and the busy probe then found the robot busy. */
-export function busyAfterTimeoutText(command: string, waitedMs: number, locale: Locale): string {
-  return t(locale)("outcome.busyAfterTimeout", { command, wait: formatMilliseconds(waitedMs, locale) });
-}
