@@ -83,6 +83,8 @@ export async function stopActivity(ctx: AppContext): Promise<void> {
   if (!client) return;
   const now = session.clock.now();
   const stopping = store.get();
+  // Whether every servo was limp before: Stop changes no servo, but leaving direct mode clears the flag.
+  const limp = stopping.connection.limp === true;
   store.update({ limpAsked: false });
   const done = client.stopActivity().then(
     (result) => ({ result }),
@@ -94,7 +96,7 @@ export async function stopActivity(ctx: AppContext): Promise<void> {
   const { locale } = store.get();
   const notice =
     "result" in outcome
-      ? words.stopOutcome(outcome.result, store.get().connection.limp === true, locale)
+      ? words.stopOutcome(outcome.result, limp, locale)
       : (await failureWords()).failureNotice(words.stopFailedSaid(), outcome.error, locale);
   if (session.current === client) store.update({ stopNotice: notice });
 }
