@@ -58,6 +58,16 @@ describe("Stop when this client started nothing (busy probe, docs/protocol.md §
     );
   });
 
+  it("a robot found busy already (its probe's 0x16 still owed): Stop sends the 7 at once, without probing again", async () => {
+    const rig = await makeRig({ sim: { busyMotion: 2 } });
+    expect(await rig.run(rig.client.probeBusy())).toBe("busy");
+    const log = record(rig);
+    const result = await rig.run(rig.client.stopActivity());
+    expect(log.out()).toEqual([RUN_7]);
+    expect(result.found).toMatchObject({ kind: "stopped" });
+    expect(rig.sim.playingMotion).toBeUndefined();
+  });
+
   it("an idle robot: the distance read is answered at once, nothing else is sent, and Stop says so", async () => {
     const rig = await makeRig();
     const log = record(rig);
