@@ -127,8 +127,8 @@ export async function runStop(core: ClientCore): Promise<StopActivityResult> {
 }
 
 /**
- * Stop when this client started nothing (docs/protocol.md §3.6 [decision]): the busy probe (unless the robot was
- * found busy already and has not answered from its main loop since), then 7 only when the main loop is busy.
+ * Stop when this client started nothing (docs/protocol.md §3.6 [decision]): the busy probe, then 7 only when the
+ * main loop is busy.
  * Its single `07` is waited for as long as the end of a scene may take, or Basic posture if the motion had just
  * ended (the robot then takes the 7 as Run Motion 7). Must run inside `exclusive`.
  */
@@ -136,9 +136,12 @@ async function stopElsewhere(core: ClientCore): Promise<StopFound> {
   const { c, activity } = core;
   const probedAt = c.clock.now();
   try {
-    // Found busy already: that probe's 0x16 is still owed (any main-loop reply would have ended `busy`), so
-    // the evidence stands and the 7 goes at once.
-    if (activity.doing.kind !== "busy" && (await probeBusy(core)) === "idle") return { kind: "idle" };
+    // Probed again even when found busy earlier: had that motion ended with its owed reply lost, a 7 sent to
+    // an idle robot would play Basic posture, a movement nobody asked for.
+    if ((await probeBusy(core)) === "idle") {
+      if (activity.doing.kind === "busy") activity.busyEnded();
+      return { kind: "idle" };
+    }
   } catch (e) {
     if (e instanceof RbcTimeoutError)
       return { kind: "no-answer", waitedMs: Math.round(c.clock.now() - probedAt) };

@@ -58,14 +58,33 @@ describe("Stop when this client started nothing (busy probe, docs/protocol.md §
     );
   });
 
-  it("a robot found busy already (its probe's 0x16 still owed): Stop sends the 7 at once, without probing again", async () => {
+  it("a robot found busy earlier is probed again before the 7 (a stale 'busy' must never send 7 to an idle robot)", async () => {
     const rig = await makeRig({ sim: { busyMotion: 2 } });
     expect(await rig.run(rig.client.probeBusy())).toBe("busy");
     const log = record(rig);
     const result = await rig.run(rig.client.stopActivity());
-    expect(log.out()).toEqual([RUN_7]);
+    const out = log.out();
+    expect(out[0]).toBe(PROBE_DISTANCE);
+    expect(out.at(-1)).toBe(RUN_7);
+    expect(out.filter((hex) => hex === RUN_7)).toHaveLength(1);
     expect(result.found).toMatchObject({ kind: "stopped" });
     expect(rig.sim.playingMotion).toBeUndefined();
+  });
+
+  it("a stale 'busy' (the motion ended, its owed replies lost on the line): the probe finds it idle and no 7 is sent", async () => {
+    const rig = await makeRig({ sim: { busyMotion: 6 } });
+    expect(await rig.run(rig.client.probeBusy())).toBe("busy");
+    // The two 0x16 replies the robot owes come when motion 6 (1.2 s) ends: both lost.
+    rig.port.faults.swallowReplies(2);
+    await rig.clock.advance(1500);
+    expect(rig.sim.playingMotion).toBeUndefined();
+    expect(rig.client.activity.doing.kind).toBe("busy");
+    const log = record(rig);
+    const result = await rig.run(rig.client.stopActivity());
+    expect(result.found).toEqual({ kind: "idle" });
+    expect(log.out()).not.toContain(RUN_7);
+    expect(rig.sim.basicPostureDone).toBe(false);
+    expect(rig.client.activity.doing.kind).toBe("idle");
   });
 
   it("an idle robot: the distance read is answered at once, nothing else is sent, and Stop says so", async () => {
