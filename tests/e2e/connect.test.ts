@@ -144,7 +144,9 @@ describe("connecting a robot", () => {
     await connectRobot(page, app.url);
     await page.getByTestId("memory-motion-text").filter({ hasText: "24,576" }).waitFor();
     await page.keyboard.press("Escape");
-    await page.getByText("The robot answered at once: it is idle, nothing to stop. Nothing was sent.").waitFor();
+    await page
+      .getByText("The robot answered at once: it is idle, nothing to stop. Nothing was sent.")
+      .waitFor();
     const servos = await page.evaluate(() => window.__rbcTest?.sim.servos.slice(0, 16).map((s) => s.passive));
     expect(servos).toEqual(Array(16).fill(false));
     expect(await page.evaluate(() => window.__rbcTest?.sim.directMode)).toBe(false);

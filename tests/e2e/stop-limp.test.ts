@@ -57,7 +57,9 @@ describe("Stop keeps the robot standing; Limp asks first", () => {
     await page.keyboard.press("Escape");
     // Escape in a number field is Stop (docs/ui.md "Keyboard"): nothing was running, and no servo went passive.
     const banner = page.getByTestId("stop-banner");
-    await banner.filter({ hasText: "The robot answered at once: it is idle, nothing to stop. Nothing was sent." }).waitFor();
+    await banner
+      .filter({ hasText: "The robot answered at once: it is idle, nothing to stop. Nothing was sent." })
+      .waitFor();
     expect(await banner.textContent().then(squash)).toBe(
       "The robot answered at once: it is idle, nothing to stop. Nothing was sent. Dismiss",
     );
