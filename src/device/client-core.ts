@@ -40,6 +40,7 @@ export function createClientCore(c: RbcConnection, servos: DirectMode): ClientCo
         doing.kind === "sound"
           ? { sound: doing.sound, startedAt: doing.startedAt, expectedMs: doing.expectedMs }
           : undefined,
+      busy: doing.kind === "busy" ? { since: doing.since } : undefined,
     }),
   );
   const runs: RunMemory = { sent7: false, durations: new Map() };

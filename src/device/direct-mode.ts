@@ -15,7 +15,9 @@ import type { ServoStatus } from "./types.ts";
 export interface DirectModeHost {
   readonly mode: string;
   readonly timeouts: { quickMs: number };
-  exclusive<T>(fn: () => Promise<T>): Promise<T>;
+  /** Bumped by Stop and Limp (`RbcConnection.epoch`): a turn queued under an older one is cancelled. */
+  readonly epoch: number;
+  exclusive<T>(fn: () => Promise<T>, epoch?: number): Promise<T>;
 }
 
 /** Servo ids the panel drives on a HUNO (the protocol layer's HUNO_SERVO_IDS). */
@@ -60,13 +62,18 @@ export class DirectMode {
     return this.ask(id, () => wckPassive(id), `servo ${id} limp`);
   }
 
-  /** Reads every servo; a servo that does not answer is reported as missing instead of failing the lot. */
+  /**
+   * Reads every servo; a servo that does not answer is reported as missing instead of failing the lot. Stop or
+   * Limp ends it: no read is sent after them, and it rejects with `RbcCancelledError`.
+   */
   async readAll(ids: readonly number[] = SERVO_IDS): Promise<{ servos: ServoStatus[]; silent: number[] }> {
     const servos: ServoStatus[] = [];
     const silent: number[] = [];
+    // Every read is queued under the epoch the whole read began in (issue 22 item 6).
+    const epoch = this.#host.epoch;
     for (const id of ids) {
       try {
-        servos.push(await this.read(id));
+        servos.push(await this.ask(id, () => wckReadStatus(id), `read servo ${id}`, epoch));
       } catch (e) {
         if (!(e instanceof RbcTimeoutError)) throw e;
         silent.push(id);
@@ -135,7 +142,7 @@ export class DirectMode {
     return { confirmed, silent };
   }
 
-  private ask(id: number, build: () => Uint8Array, note: string): Promise<ServoStatus> {
+  private ask(id: number, build: () => Uint8Array, note: string, epoch?: number): Promise<ServoStatus> {
     let packet: Uint8Array;
     try {
       packet = build();
@@ -156,7 +163,7 @@ export class DirectMode {
         throw new RbcBadReplyError(`Servo ${id} answered an impossible position (${reply[1]}); try again.`);
       }
       return { id, load: reply[0]!, position: reply[1]! };
-    });
+    }, epoch);
   }
 
   private requireDirect(): void {

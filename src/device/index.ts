@@ -70,6 +70,7 @@ export {
   type RunVerdict,
 } from "./run-outcome.ts";
 export * from "./servo-doctor/index.ts";
+export type { StopFound } from "./stop.ts";
 export {
   emptied,
   imageHash,

@@ -426,8 +426,11 @@ export class RbcClient {
    *   rejects with `RbcCancelledError`. Basic posture (7) itself cannot be stopped and is waited out.
    * - A sound is waited out: the RBC receives nothing while a sound plays (docs/protocol.md §3.6).
    * - An upload is cancelled as its own Cancel does (the download is abandoned; the robot's memory is checked).
-   * - In direct mode, servo moves not yet sent are dropped; the servos hold their last position.
+   * - In direct mode, servo moves not yet sent are dropped and direct mode is left (docs/protocol.md §5's exit
+   *   sequence); the servos hold their last position (limp ones stay limp).
    * - Tethered play (`playTethered`) stops after the frame on the wire; the servos hold that frame.
+   * - When this client started nothing, the busy probe asks the robot (docs/protocol.md §3.6): busy (a motion
+   *   started elsewhere), 7 is sent and its `07` waited for; idle, nothing is sent (`found`).
    * - Operations queued behind these are cancelled (`RbcCancelledError`); nothing is sent in their place.
    * Resolves with what was found and what the robot confirmed (see `StopActivityResult`). A Stop asked for
    * while one is under way joins it; during Limp it is refused (`ActivityRefusedError`, nothing sent).

@@ -1,6 +1,31 @@
+import { BASIC_POSTURE_MOTION } from "../protocol/catalog.ts";
+import { COMMANDS } from "../protocol/commands.ts";
+import { probeBusy } from "./busy-probe.ts";
 import type { ClientCore } from "./client-core.ts";
-import { RbcCancelledError, RbcNotConnectedError } from "./errors.ts";
-import { endPlayingMotion, type MotionEndOutcome, SCENE_END_MS } from "./motion-end.ts";
+import { exitDirect } from "./direct-switch.ts";
+import { RbcCancelledError, RbcNotConnectedError, RbcTimeoutError } from "./errors.ts";
+import { endPlayingMotion, type MotionEndOutcome, postureDurationMs, SCENE_END_MS } from "./motion-end.ts";
+import { whatIsKnown } from "./motion-run.ts";
+import type { RunNoReply } from "./run-outcome.ts";
+
+/**
+ * What Stop found when this client had started nothing (issue 21 item 4; docs/protocol.md §3.6): the busy probe
+ * asked the robot, and no more is claimed than its answers prove.
+ * - `idle`: the robot answered the distance read (0x16) at once, so its main loop is free: nothing plays, and
+ *   nothing was sent.
+ * - `stopped`: busy (0x12 answered, 0x16 not): a motion started elsewhere (the remote, the PF buttons, another
+ *   program) plays. 7 was sent and the robot answered `07` after `elapsedMs`: it took the 7, so the motion ends at
+ *   the end of its scene. The reply does not say which motion that was.
+ * - `unconfirmed`: busy; 7 was sent and no `07` came in time. `noReply` is what the error code and a second
+ *   probe showed afterwards.
+ * - `no-answer`: neither the distance read nor the firmware version was answered within `waitedMs`: whether
+ *   anything plays is not known, and nothing was sent.
+ */
+export type StopFound =
+  | { kind: "idle" }
+  | { kind: "stopped"; elapsedMs: number }
+  | { kind: "unconfirmed"; noReply: RunNoReply }
+  | { kind: "no-answer"; waitedMs: number };
 
 /**
  * What `stopActivity()` found under way and what came of it, no more certain than the robot confirmed. Nothing
@@ -26,6 +51,13 @@ export interface StopActivityResult {
    * servos hold their last position (a servo holds with torque on after a move; Limp is what makes them passive).
    */
   servoMovesDropped: boolean;
+  /**
+   * The client was in direct mode and Stop left it (the exit sequence of docs/protocol.md §5, which has no
+   * reply: sent, not confirmed). Leaving changes no servo: one holding stays holding, a limp one stays limp.
+   */
+  leftDirectMode?: boolean;
+  /** This client had started nothing: what the busy probe found and what came of it (`StopFound`). */
+  found?: StopFound;
   /**
    * Tethered play was under way and was stopped: how many of its frames were sent and the last one (undefined
    * when none was), which the servos hold with torque on. Sync moves have no reply: "sent", not "confirmed".
@@ -68,9 +100,21 @@ export async function runStop(core: ClientCore): Promise<StopActivityResult> {
     if (ended) result.motion = { number: ended.motion, outcome: ended.outcome };
   }
   // Let what was on the wire finish (an upload's clean-up, the servo move in flight), so that the result
-  // describes a robot that is done.
+  // describes a robot that is done; then leave direct mode (issue 22 item 6): Stop ends servo control too.
   if (upload || mode === "direct" || plays.length > 0)
     await c.exclusive(async () => {}, epoch, { rearm: false }).catch(() => {});
+  if (mode === "direct" && c.mode === "direct") {
+    result.leftDirectMode = await c
+      .exclusive(() => exitDirect(core), epoch, { rearm: false })
+      .then(
+        () => true,
+        () => false,
+      );
+  }
+  // Started nothing here: ask the robot whether something started elsewhere plays (issue 21 item 4).
+  if ((doing.kind === "idle" || doing.kind === "busy") && mode === "packet" && plays.length === 0) {
+    result.found = await c.exclusive(() => stopElsewhere(core), epoch);
+  }
   const play = plays.find((p) => p.framesSent > 0) ?? plays[0];
   if (play) {
     result.tetheredPlay = {
@@ -80,4 +124,43 @@ export async function runStop(core: ClientCore): Promise<StopActivityResult> {
     };
   }
   return result;
+}
+
+/**
+ * Stop when this client started nothing (docs/protocol.md §3.6 [decision]): the busy probe, then 7 only when the
+ * main loop is busy.
+ * Its single `07` is waited for as long as the end of a scene may take, or Basic posture if the motion had just
+ * ended (the robot then takes the 7 as Run Motion 7). Must run inside `exclusive`.
+ */
+async function stopElsewhere(core: ClientCore): Promise<StopFound> {
+  const { c, activity } = core;
+  const probedAt = c.clock.now();
+  try {
+    // Probed again even when found busy earlier: had that motion ended with its owed reply lost, a 7 sent to
+    // an idle robot would play Basic posture, a movement nobody asked for.
+    if ((await probeBusy(core)) === "idle") {
+      if (activity.doing.kind === "busy") activity.busyEnded();
+      return { kind: "idle" };
+    }
+  } catch (e) {
+    if (e instanceof RbcTimeoutError)
+      return { kind: "no-answer", waitedMs: Math.round(c.clock.now() - probedAt) };
+    throw e;
+  }
+  const waitMs = SCENE_END_MS + postureDurationMs() + c.timeouts.marginMs;
+  const sentAt = c.clock.now();
+  // A 7 went out in this connection: a later Run with no reply is not blamed on the power-up rule (§3.1).
+  core.runs.sent7 = true;
+  try {
+    await c.request(COMMANDS.runMotion, BASIC_POSTURE_MOTION, { retries: 0, timeoutMs: waitMs });
+  } catch (e) {
+    if (!(e instanceof RbcTimeoutError)) throw e;
+    return {
+      kind: "unconfirmed",
+      noReply: await whatIsKnown(core, BASIC_POSTURE_MOTION, waitMs, e.waitedMs, false),
+    };
+  }
+  // The reply came from the main loop, which the connection reports: the activity machine is idle again.
+  if (activity.doing.kind === "busy") activity.busyEnded();
+  return { kind: "stopped", elapsedMs: Math.round(c.clock.now() - sentAt) };
 }

@@ -12,6 +12,11 @@ export interface ClientState {
   playing?: { motion: number; startedAt: number; expectedMs: number };
   /** A sound the client is waiting on. */
   sounding?: { sound: number; startedAt: number; expectedMs: number };
+  /**
+   * The busy probe found a motion started elsewhere playing (the remote, the PF buttons, another program;
+   * docs/protocol.md §3.6), since this clock time; cleared when the robot's main loop answers again.
+   */
+  busy?: { since: number };
   /** True once motion 7 (basic posture) has answered in this session. */
   basicPostureConfirmed: boolean;
   /** The subscription the client keeps armed, if any. */

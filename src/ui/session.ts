@@ -6,7 +6,7 @@ import type { SimulatedRbc } from "../sim/simulated-rbc.ts";
 import { type AppState, freshConnectionState, noticeOf } from "./app-state.ts";
 import type { AppContext } from "./context.ts";
 import type { DemoRobotOptions } from "./demo-robot.ts";
-import { refreshKnownPorts } from "./features/connection/actions.ts";
+import { busyChanged, probeAfterConnect, refreshKnownPorts } from "./features/connection/actions.ts";
 import {
   type ConnectionState,
   connectingTo,
@@ -246,6 +246,8 @@ export class Session {
         ...mirrored(client.state),
       });
       void refreshKnownPorts(this.store);
+      // Busy, not gone (docs/protocol.md §3.6): a motion started with the remote may be playing.
+      probeAfterConnect(this.context);
       return true;
     } catch (e) {
       // If the link was lost meanwhile, onLost has already shown why.
@@ -326,8 +328,12 @@ export class Session {
         current.basicPostureConfirmed !== next.basicPostureConfirmed ||
         current.playing !== next.playing ||
         current.sounding !== next.sounding ||
+        current.busy?.since !== next.busy?.since ||
         current.subscription !== next.subscription
       ) {
+        if ((current.busy === undefined) !== (next.busy === undefined)) {
+          void busyChanged(this.context, next.busy !== undefined);
+        }
         this.setConnection({
           mode: state.mode,
           platform: state.platform ?? current.platform,

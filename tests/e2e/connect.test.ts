@@ -144,7 +144,9 @@ describe("connecting a robot", () => {
     await connectRobot(page, app.url);
     await page.getByTestId("memory-motion-text").filter({ hasText: "24,576" }).waitFor();
     await page.keyboard.press("Escape");
-    await page.getByText("Nothing was running; the robot keeps its pose.").waitFor();
+    await page
+      .getByText("The robot answered at once: it is idle, nothing to stop. Nothing was sent.")
+      .waitFor();
     const servos = await page.evaluate(() => window.__rbcTest?.sim.servos.slice(0, 16).map((s) => s.passive));
     expect(servos).toEqual(Array(16).fill(false));
     expect(await page.evaluate(() => window.__rbcTest?.sim.directMode)).toBe(false);
@@ -295,9 +297,9 @@ describe("in Korean (ko-KR)", () => {
         const stop = page.getByRole("button", { name: "정지", exact: true });
         expect(await stop.getAttribute("title")).toBe("로봇이 하던 일을 끝내요. 로봇은 선 채로 있어요 (Esc)");
         await stop.click();
-        await banner(page).filter({ hasText: "실행 중인 것이 없었어요." }).waitFor({ timeout: 15_000 });
+        await banner(page).filter({ hasText: "쉬고 있어서 멈출 것이 없어요." }).waitFor({ timeout: 15_000 });
         expect(squash(await banner(page).textContent())).toBe(
-          "실행 중인 것이 없었어요. 로봇은 지금 자세를 유지해요. 닫기",
+          "로봇이 바로 응답했어요. 쉬고 있어서 멈출 것이 없어요. 아무것도 보내지 않았어요. 닫기",
         );
 
         // The Limp question, with the safe choice focused.
@@ -334,7 +336,7 @@ describe("in Korean (ko-KR)", () => {
         await page.getByRole("button", { name: "정지", exact: true }).click();
         await banner(page).filter({ hasText: "서보는 힘이 빠진 채로 있어요" }).waitFor({ timeout: 15_000 });
         expect(squash(await banner(page).locator("p").first().textContent())).toBe(
-          "서보 움직임을 멈췄어요. 서보는 힘이 빠진 채로 있어요 (힘 빼기). 슬라이더를 움직이면 그 서보는 다시 힘을 줘요.",
+          "서보 제어를 끝냈어요 (로봇이 일반 모드로 돌아왔어요). 서보는 힘이 빠진 채로 있어요 (힘 빼기).",
         );
         await checkKorean(page, size, "demo-limp-stop");
         await context.close();

@@ -252,7 +252,8 @@ describe("editor: teach-in and tethered play on the demo robot", () => {
     const held = sceneFrames(end1!, end2!, 50)[k - 1];
     expect(await positions(page)).toEqual(held);
     expect(await passiveIds(page)).toEqual([]);
-    expect(await page.evaluate(() => window.__rbcDemoSim?.directMode)).toBe(true);
+    // Stop leaves direct mode (issue 22 item 6); leaving changes no servo.
+    expect(await page.evaluate(() => window.__rbcDemoSim?.directMode)).toBe(false);
     await context.close();
   });
 

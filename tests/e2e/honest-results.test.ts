@@ -134,7 +134,7 @@ describe("Stop's result is where the eyes are, in the language of the moment", (
     await page.evaluate(() => window.scrollTo(0, document.documentElement.scrollHeight));
     await page.getByRole("button", { name: "Stop", exact: true }).click();
     const banner = page.getByTestId("stop-banner");
-    await banner.filter({ hasText: "Nothing was running" }).waitFor();
+    await banner.filter({ hasText: "it is idle, nothing to stop" }).waitFor();
     // The result is inside the top bar and within the window, however far down the page is.
     expect(await banner.evaluate((el) => el.closest(".top-bar") !== null)).toBe(true);
     const box = await banner.boundingBox();
@@ -144,8 +144,8 @@ describe("Stop's result is where the eyes are, in the language of the moment", (
 
     // Made in English; after the switch it reads in Korean.
     await page.getByLabel("Language / 언어").selectOption("ko");
-    await banner.filter({ hasText: "실행 중인 것이 없었어요" }).waitFor();
-    expect(squash(await banner.textContent())).not.toContain("Nothing was running");
+    await banner.filter({ hasText: "쉬고 있어서 멈출 것이 없어요" }).waitFor();
+    expect(squash(await banner.textContent())).not.toContain("it is idle, nothing to stop");
     await context.close();
   });
 });

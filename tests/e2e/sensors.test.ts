@@ -191,7 +191,9 @@ describe("sensors view", () => {
 
     // Stop (Escape) keeps the robot as it is: nothing was running, and polling goes on in normal mode.
     await page.keyboard.press("Escape");
-    await page.getByText("Nothing was running; the robot keeps its pose.").waitFor();
+    await page
+      .getByText("The robot answered at once: it is idle, nothing to stop. Nothing was sent.")
+      .waitFor();
     const afterStop = await bytesFromPc(page);
     await expect.poll(() => bytesFromPc(page)).toBeGreaterThan(afterStop);
     expect(await page.evaluate(() => window.__rbcTest?.sim.directMode)).toBe(false);

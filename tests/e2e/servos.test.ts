@@ -109,11 +109,12 @@ describe("servos view", () => {
     // 60 changes, each move 4 bytes: latest-wins sends only a few of them.
     expect(sent).toBeLessThan(20 * 4);
 
-    // Stop: no further move is sent, the servos keep holding (torque on), servo control stays on.
+    // Stop: no further move is sent, the servos keep holding (torque on), and servo control ends (issue 22
+    // item 6: docs/protocol.md §5's leave sequence).
     await page.getByRole("button", { name: "Stop", exact: true }).click();
-    await page.getByTestId("stop-banner").filter({ hasText: "Servo moves stopped" }).waitFor();
+    await page.getByTestId("stop-banner").filter({ hasText: "Servo control ended" }).waitFor();
     expect((await simServos(page)).map((s) => s.passive)).toEqual(Array(16).fill(false));
-    expect(await simDirect(page)).toBe(true);
+    expect(await simDirect(page)).toBe(false);
 
     // Limp, after its question: every servo passive.
     await page.getByRole("button", { name: "Limp…" }).click();

@@ -57,9 +57,11 @@ describe("Stop keeps the robot standing; Limp asks first", () => {
     await page.keyboard.press("Escape");
     // Escape in a number field is Stop (docs/ui.md "Keyboard"): nothing was running, and no servo went passive.
     const banner = page.getByTestId("stop-banner");
-    await banner.filter({ hasText: "Nothing was running; the robot keeps its pose." }).waitFor();
+    await banner
+      .filter({ hasText: "The robot answered at once: it is idle, nothing to stop. Nothing was sent." })
+      .waitFor();
     expect(await banner.textContent().then(squash)).toBe(
-      "Nothing was running; the robot keeps its pose. Dismiss",
+      "The robot answered at once: it is idle, nothing to stop. Nothing was sent. Dismiss",
     );
     expect(await robot(page)).toMatchObject({ passive: NONE_PASSIVE, direct: false });
     expect(await page.getByTestId("connection-status").textContent().then(squash)).not.toContain("limp");
@@ -146,7 +148,7 @@ describe("Stop keeps the robot standing; Limp asks first", () => {
     // Escape afterwards is Stop: it does not undo Limp, and says the servos stay limp.
     await blur(page);
     await page.keyboard.press("Escape");
-    await page.getByTestId("stop-banner").filter({ hasText: "The servos stay limp" }).waitFor();
+    await page.getByTestId("stop-banner").filter({ hasText: "the servos stay limp" }).waitFor();
     expect(await robot(page)).toMatchObject({ passive: ALL_PASSIVE });
     await context.close();
   });

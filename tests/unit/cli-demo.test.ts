@@ -240,6 +240,8 @@ describe.concurrent("rbc --demo", () => {
       error: "no error",
       freeMemory: { motion: 24576, action: 8192 },
       warnings: [],
+      // The busy probe (docs/protocol.md §3.6): the demo robot plays nothing when rbc connects.
+      busy: false,
       // The standard robot sends no reply that was not asked for.
       unaskedReplies: 0,
     });

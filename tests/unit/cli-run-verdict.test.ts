@@ -92,14 +92,13 @@ describe.concurrent("rbc and a robot that may be busy", () => {
     );
   });
 
-  it("item 6: servos silent: rbc stop reads error 11 and says so after 'did not confirm'", {
+  it("item 6: servos silent on an idle robot: rbc stop finds it idle and sends no 7 (issue 21 item 4)", {
     timeout: T,
   }, async () => {
-    const r = await rbc(["stop", "--demo"], "--servos-silent");
-    expect(r.code).toBe(1);
-    expect(r.stderr).toContain(
-      "Sent 7, but the robot did not confirm with 07. If it still moves, hold it (`rbc limp` makes every servo passive). The robot reports error 11: a servo does not answer: check the servo cables and the battery.",
-    );
+    const r = await rbc(["stop", "--demo", "--log"], "--servos-silent");
+    expect(r.code, r.stderr).toBe(0);
+    expect(r.stdout).toContain("The robot answered at once: it is idle, nothing to stop. Nothing was sent.");
+    expect(r.stderr).not.toContain("FF FF AA 55 AA 55 37 BA 14 00 00 00 00 01 07 07");
   });
 
   it("item 7: rbc info without 0x0F: free memory not reported, exit 0", { timeout: T }, async () => {

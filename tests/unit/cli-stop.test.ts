@@ -10,18 +10,58 @@ import { runInProcess } from "../cli/in-process.ts";
  */
 
 describe("rbc stop and rbc limp", () => {
-  it("rbc stop sends one 7, says that the robot confirmed with 07, and makes no servo passive", async () => {
+  it("rbc stop on an idle robot asks it (one distance read), sends no 7 and says it is idle", async () => {
     const text = await runInProcess(["stop", "--demo", "--log"]);
     const json = await runInProcess(["stop", "--demo", "--json"]);
+    const ko = await runInProcess(["stop", "--demo", "--lang", "ko"]);
     expect(text.code, text.stderr).toBe(0);
-    // The demo robot plays nothing when rbc connects: it takes the 7 as Basic posture (1.8 s) and answers 07.
-    expect(text.stdout).toMatch(/^Sending 7 to the demo robot…\nThe robot confirmed with 07 after 1\.8 s: /);
-    expect(text.stdout).toContain("No servo was made passive.");
-    // The trace: one Run motion 7 out (the literal packet of docs/protocol.md §8), no direct mode, no servo byte.
-    expect(text.stderr.match(/FF FF AA 55 AA 55 37 BA 14 00 00 00 00 01 07 07/g)).toHaveLength(1);
+    expect(text.stdout).toBe(
+      "Asking the demo robot whether it is playing something…\n" +
+        "The robot answered at once: it is idle, nothing to stop. Nothing was sent.\n",
+    );
+    // The trace: the busy probe's 0x16 (docs/protocol.md §2 packet) and no Run motion 7, no direct mode.
+    expect(text.stderr).toContain("FF FF AA 55 AA 55 37 BA 16 00 00 00 00 01 01 01");
+    expect(text.stderr).not.toContain("FF FF AA 55 AA 55 37 BA 14 00 00 00 00 01 07 07");
     expect(text.stderr).not.toMatch(/Direct control mode on|limp/i);
     expect(json.code).toBe(0);
-    expect(JSON.parse(json.stdout)).toMatchObject({ ok: true, sent: 7, confirmed: true });
+    expect(JSON.parse(json.stdout)).toEqual({ ok: true, found: "idle", sent: null, confirmed: false });
+    expect(ko.code).toBe(0);
+    expect(ko.stdout).toContain(
+      "로봇이 바로 응답했어요. 쉬고 있어서 멈출 것이 없어요. 아무것도 보내지 않았어요.",
+    );
+  });
+
+  it("rbc stop on a robot busy with a motion started by the remote sends one 7 and reports its 07", async () => {
+    const env = { RBC_DEMO_VARIANT: "--busy-motion 2" };
+    const text = await runInProcess(["stop", "--demo", "--log"], { env });
+    const json = await runInProcess(["stop", "--demo", "--json"], { env });
+    expect(text.code, text.stderr).toBe(0);
+    expect(text.stdout).toMatch(
+      /^Asking the demo robot whether it is playing something…\nThe robot was busy playing a motion \(started with the remote or another program\)\. Stop sent 7 and the robot took it \(it answered 07 after 0\.\d s\): the motion ends at the end of its current scene and the robot holds that pose\. The reply does not say which motion it was\. No servo was made passive\.\n$/,
+    );
+    // One Run motion 7 out and its 07 back (docs/protocol.md §8), after the probe; nothing for the servos.
+    expect(text.stderr.match(/FF FF AA 55 AA 55 37 BA 14 00 00 00 00 01 07 07/g)).toHaveLength(1);
+    expect(text.stderr).toContain("FF FF AA 55 AA 55 37 BA 14 01 00 00 00 01 07 07");
+    expect(text.stderr).not.toMatch(/Direct control mode on|limp/i);
+    expect(json.code).toBe(0);
+    expect(JSON.parse(json.stdout)).toMatchObject({ ok: true, found: "busy", sent: 7, confirmed: true });
+    // Motion 2 plays 6.6 s: Stop ended it within the end of a scene after the probe.
+    expect(json.robotMs).toBeLessThan(3000);
+  });
+
+  it("rbc info on a busy robot says it is busy playing a motion, not gone, and offers rbc stop", async () => {
+    const env = { RBC_DEMO_VARIANT: "--busy-motion 2" };
+    const text = await runInProcess(["info", "--demo"], { env });
+    const json = await runInProcess(["info", "--demo", "--json"], { env });
+    expect(text.code, text.stderr).toBe(0);
+    expect(text.stdout).toMatch(/Firmware\s+2\.23/);
+    expect(text.stdout).toContain(
+      "The robot is busy playing a motion (started with the remote or another program); it answers when the motion ends. To end it: rbc stop.\n",
+    );
+    expect(text.stdout + text.stderr).not.toContain("cable");
+    expect(JSON.parse(json.stdout)).toMatchObject({ busy: true, firmware: "2.23" });
+    const idle = await runInProcess(["info", "--demo"]);
+    expect(idle.stdout).not.toContain("busy");
   });
 
   it("rbc limp asks first: without a terminal it needs --yes and sends nothing; with --yes all 16 servos confirm", async () => {

@@ -222,12 +222,13 @@ describe("RbcClient against the simulated RBC", () => {
     expect(again.sim.servos.slice(0, 16).every((s) => s.passive)).toBe(true);
   });
 
-  it("Stop with nothing running sends nothing and makes no servo passive", async () => {
+  it("Stop with nothing running asks the robot (one distance read), sends no 7 and makes no servo passive", async () => {
     const { client, run, sim, port } = await makeRig();
     const before = port.stats.bytesFromPc;
     const result = await run(client.stopActivity());
-    expect(result).toEqual({ uploadCancelled: false, servoMovesDropped: false });
-    expect(port.stats.bytesFromPc).toBe(before);
+    expect(result).toEqual({ uploadCancelled: false, servoMovesDropped: false, found: { kind: "idle" } });
+    // The busy probe's 0x16 (one 16-byte packet), answered at once: nothing else (docs/protocol.md §3.6).
+    expect(port.stats.bytesFromPc).toBe(before + 16);
     expect(sim.directMode).toBe(false);
     expect(sim.servos.slice(0, 16).some((s) => s.passive)).toBe(false);
   });
@@ -269,7 +270,7 @@ describe("Stop (stopActivity) keeps the robot standing", () => {
     expect(sim.servos.slice(0, 16).some((s) => s.passive)).toBe(false);
   });
 
-  it("in servo control drops the moves not yet sent; no servo is made passive and direct mode stays", async () => {
+  it("in servo control drops the moves not yet sent; no servo is made passive and direct mode is left", async () => {
     const { client, run, sim, clock } = await makeRig({ port: { latencyMs: 5 } });
     await run(client.enterDirectMode());
     const first = client.servos.move(5, 140, 2);
@@ -282,7 +283,9 @@ describe("Stop (stopActivity) keeps the robot standing", () => {
     expect(sim.servos[5]!.position).toBe(140);
     expect(sim.servos[6]!.position).not.toBe(100);
     expect(sim.servos.slice(0, 16).some((s) => s.passive)).toBe(false);
-    expect(sim.directMode).toBe(true);
+    // Issue 22 item 6: Stop leaves direct mode (docs/protocol.md §5's leave sequence); the servos hold.
+    expect(result.leftDirectMode).toBe(true);
+    expect(sim.directMode).toBe(false);
   });
 
   it("cancels an upload as its Cancel does: the download is abandoned and nothing is recorded", async () => {

@@ -324,9 +324,10 @@ describe("Stop, Limp and failures", () => {
     expect(frameWrites(log)).toHaveLength(sentBefore);
     expect(sim.servos.map((s) => s.position)).toEqual(result.lastPositions);
     expect(sim.servos.some((s) => s.passive)).toBe(false);
-    expect(client.mode).toBe("direct");
-    expect((await run(client.servos.read(3))).position).toBe(result.lastPositions[3]);
-    await run(client.exitDirectMode());
+    // Stop leaves direct mode (issue 22 item 6); leaving changes no servo.
+    expect(stop.leftDirectMode).toBe(true);
+    expect(client.mode).toBe("packet");
+    expect(sim.directMode).toBe(false);
     expect(await run(client.readFirmwareVersion())).toEqual({ major: 2, minor: 23 });
   });
 

@@ -1,7 +1,7 @@
 import { describe, expect, it } from "vitest";
-import { stopOutcome } from "../../src/ui/features/connection/actions.ts";
+import { stopOutcome } from "../../src/ui/features/connection/stop-outcome.ts";
 
-/** The top bar's sentence after Stop says only what the robot confirmed (src/ui/features/connection/actions.ts). */
+/** The top bar's sentence after Stop says only what the robot confirmed (src/ui/features/connection/stop-outcome.ts). */
 describe("Stop's outcome sentence", () => {
   const base = { uploadCancelled: false, servoMovesDropped: true };
 
@@ -35,6 +35,36 @@ describe("Stop's outcome sentence", () => {
   it("keeps the servo-control sentence when no tethered play ran", () => {
     expect(stopOutcome(base, false).text).toBe(
       "Servo moves stopped: no further move is sent, and the servos hold their last position.",
+    );
+  });
+
+  it("says what the robot answered when the panel had started nothing, as a warning when unconfirmed", () => {
+    const idle = stopOutcome(
+      { uploadCancelled: false, servoMovesDropped: false, found: { kind: "idle" } },
+      false,
+    );
+    expect(idle).toMatchObject({
+      tone: "ok",
+      text: "The robot answered at once: it is idle, nothing to stop. Nothing was sent.",
+    });
+    const none = stopOutcome(
+      { uploadCancelled: false, servoMovesDropped: false, found: { kind: "no-answer", waitedMs: 800 } },
+      false,
+    );
+    expect(none.tone).toBe("warning");
+    expect(none.text).toContain(
+      "answered neither the distance sensor nor the firmware version within 800 ms",
+    );
+    expect(none.text).not.toContain("Nothing was running");
+  });
+
+  it("says servo control ended when Stop left direct mode, and that limp servos stay limp", () => {
+    const left = { uploadCancelled: false, servoMovesDropped: true, leftDirectMode: true };
+    expect(stopOutcome(left, false).text).toBe(
+      "Servo control ended (the robot is back in its normal mode); the servos hold their last position.",
+    );
+    expect(stopOutcome(left, true).text).toBe(
+      "Servo control ended (the robot is back in its normal mode); the servos stay limp (Limp).",
     );
   });
 });

@@ -1,3 +1,5 @@
+import { RbcTimeoutError } from "../../device/errors.ts";
+import { busyNowText } from "../../i18n/outcomes/stop-words.ts";
 import { translator } from "../../i18n/translate.ts";
 import { ACTION_AREA_BYTES, MOTION_AREA_BYTES, platformName } from "../../protocol/catalog.ts";
 import { platformWarning } from "../../protocol/plausibility.ts";
@@ -36,6 +38,15 @@ export const infoCommand: CommandDef = {
     // 0x0F is not answered by every firmware either (docs/protocol.md §3.5): "not reported".
     const freeMotion = await client.readFreeMemory("motion");
     const freeAction = freeMotion === undefined ? undefined : await client.readFreeMemory("action");
+    // Busy, not gone (docs/protocol.md §3.6): the busy probe, last, since its 0x16 waits out a playing motion.
+    // Undefined when neither it nor the firmware version was answered.
+    const busy = await client.probeBusy().then(
+      (r) => r === "busy",
+      (e: unknown) => {
+        if (e instanceof RbcTimeoutError) return undefined;
+        throw e;
+      },
+    );
     const platform = client.state.platform ?? robot.identity.platform;
     const firmware = formatFirmware(robot.identity.firmware);
     env.out.result({
@@ -49,6 +60,7 @@ export const infoCommand: CommandDef = {
       error: errorCodeWords(errorCode),
       freeMemory: freeMotion === undefined ? null : { motion: freeMotion, action: freeAction ?? null },
       warnings,
+      busy: busy ?? null,
       // Replies no request asked for (late, or repeated by a firmware that repeats them), discarded so far.
       unaskedReplies: client.stats.unansweredReplies,
     });
@@ -77,6 +89,7 @@ export const infoCommand: CommandDef = {
       ],
     ];
     for (const line of labelledRows(rows)) env.out.line(line);
+    if (busy) env.out.line(`${busyNowText(locale)} ${t("cmd.run.stopHint")}`);
     // The client's warnings are English sentences; the one it gives (an unknown platform) is said here too.
     const said = (warning: string) =>
       locale !== "en" && warning === platformWarning(platform)

@@ -325,14 +325,14 @@ export const commandMessages = defineMessages({
     en: "motion {motion} was no longer playing; nothing was sent.",
     ko: "모션 {motion}은(는) 이미 재생 중이 아니었어요. 아무것도 보내지 않았어요.",
   },
-  "cmd.stop.sending": { en: "Sending 7 to {robot}…", ko: "{robot}에 7을 보내는 중…" },
-  "cmd.stop.notConfirmed": {
-    en: "Sent 7, but the robot did not confirm with 07. If it still moves, hold it (`rbc limp` makes every servo passive).",
-    ko: "7을 보냈지만 로봇이 07로 확인하지 않았어요. 아직 움직이면 로봇을 잡아 주세요 (`rbc limp`로 모든 서보의 힘을 뺄 수 있어요).",
+  "cmd.stop.asking": {
+    en: "Asking {robot} whether it is playing something…",
+    ko: "{robot}에 무언가를 재생하고 있는지 묻는 중…",
   },
-  "cmd.stop.confirmed": {
-    en: "The robot confirmed with 07 after {duration}: a motion that was playing stopped at the end of its scene and the robot holds that pose; with nothing playing, it went to Basic posture. No servo was made passive.",
-    ko: "{duration} 뒤에 로봇이 07로 확인했어요. 재생 중이던 모션은 장면이 끝날 때 멈췄고 로봇은 그 자세를 지켜요. 재생 중인 것이 없었다면 기본 자세로 섰어요. 서보의 힘은 빼지 않았어요.",
+  "cmd.stop.noServoPassive": { en: "No servo was made passive.", ko: "서보의 힘은 빼지 않았어요." },
+  "cmd.stop.holdHint": {
+    en: "If it still moves, hold it (`rbc limp` makes every servo passive).",
+    ko: "아직 움직이면 로봇을 잡아 주세요 (`rbc limp`로 모든 서보의 힘을 뺄 수 있어요).",
   },
 
   "cmd.limp.warning": {

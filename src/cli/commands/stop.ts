@@ -1,9 +1,7 @@
-import { RbcError, RbcRunNoReplyError } from "../../device/errors.ts";
 import type { StopActivityResult } from "../../device/rbc-client.ts";
 import type { Locale } from "../../i18n/locale.ts";
-import { noReplyCauseText } from "../../i18n/outcomes/run-words.ts";
+import { stopFoundText } from "../../i18n/outcomes/stop-words.ts";
 import { translator } from "../../i18n/translate.ts";
-import { formatSeconds } from "../../i18n/units.ts";
 import { BASIC_POSTURE_MOTION } from "../../protocol/catalog.ts";
 import { noExtraArguments, parseCommand } from "../args.ts";
 import { type CommandDef, localeOf } from "../command.ts";
@@ -49,40 +47,46 @@ export const stopCommand: CommandDef = {
     const locale = localeOf(env);
     const t = translator(commandMessages, locale);
     const robot = await connectRobot("stop", values, env);
-    const started = robot.clock.now();
-    env.out.line(t("cmd.stop.sending", { robot: robotPlace(robot, locale) }));
-    try {
-      await robot.client.stopMotion();
-    } catch (e) {
-      // Unanswered: what the error code (0x11) and the busy probe showed (docs/protocol.md §3.1 [decision]).
-      if (e instanceof RbcRunNoReplyError && e.facts.cause !== "unknown" && e.facts.cause !== "power-up") {
-        const { facts } = e;
+    env.out.line(t("cmd.stop.asking", { robot: robotPlace(robot, locale) }));
+    // A fresh connection started nothing: Stop asks the robot with the busy probe and sends 7 only when it is
+    // busy (docs/protocol.md §3.6; issue 21 item 4).
+    const { found } = await robot.client.stopActivity();
+    const words = (l: Locale) => (found ? stopFoundText(found, l) : "");
+    switch (found?.kind) {
+      case "idle":
+        env.out.line(words(locale));
+        env.out.result({ ok: true, found: "idle", sent: null, confirmed: false });
+        return EXIT.ok;
+      case "stopped":
+        env.out.line(`${words(locale)} ${t("cmd.stop.noServoPassive")}`);
+        env.out.result({
+          ok: true,
+          found: "busy",
+          sent: BASIC_POSTURE_MOTION,
+          confirmed: true,
+          elapsedMs: found.elapsedMs,
+        });
+        return EXIT.ok;
+      case "unconfirmed":
         throw new CliError(
           "not-confirmed",
-          joinSaid([
-            said(commandMessages, "cmd.stop.notConfirmed"),
-            saidBy((l) => noReplyCauseText(facts, l)),
-          ]),
+          joinSaid([saidBy(words), said(commandMessages, "cmd.stop.holdHint")]),
           EXIT.failed,
           {
+            found: "busy",
             sent: BASIC_POSTURE_MOTION,
             confirmed: false,
-            cause: facts.cause,
-            errorCode: facts.errorCode ?? null,
+            cause: found.noReply.cause,
+            errorCode: found.noReply.errorCode ?? null,
           },
         );
-      }
-      if (e instanceof RbcError && (e.code === "timeout" || e.code === "motion-ignored")) {
-        throw new CliError("not-confirmed", said(commandMessages, "cmd.stop.notConfirmed"), EXIT.failed, {
-          sent: BASIC_POSTURE_MOTION,
+      default:
+        // No answer at all (a fresh connection always probes, so `found` is there).
+        throw new CliError("timeout", saidBy(words), EXIT.failed, {
+          found: "unknown",
+          sent: null,
           confirmed: false,
         });
-      }
-      throw e;
     }
-    const elapsedMs = Math.round(robot.clock.now() - started);
-    env.out.line(t("cmd.stop.confirmed", { duration: formatSeconds(elapsedMs / 1000, locale) }));
-    env.out.result({ ok: true, sent: BASIC_POSTURE_MOTION, confirmed: true, elapsedMs });
-    return EXIT.ok;
   },
 };

@@ -1,12 +1,7 @@
-import type { StopActivityResult } from "../../../device/rbc-client.ts";
-import type { ParamArgs } from "../../../i18n/catalogue.ts";
-import type { Locale } from "../../../i18n/locale.ts";
 import { translator } from "../../../i18n/translate.ts";
-import { formatSeconds } from "../../../i18n/units.ts";
-import { type AppState, type Notice, noticeOf } from "../../app-state.ts";
+import type { AppState } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { focusSoon } from "../../focus.ts";
-import { inEveryLanguage, type LocalText, type Said, said } from "../../said.ts";
 import { forgetPort, grantedPorts, webSerial } from "../../serial-ports.ts";
 import type { Store } from "../../store.ts";
 import { connectionMessages } from "./messages.ts";
@@ -19,6 +14,8 @@ import type { ConnectionState, RobotLabel } from "./state.ts";
  * shows none, and leaves them out of its load (first load: issue 19).
  */
 const failureWords = () => import("../../failure-words.ts");
+/** Stop's and Limp's sentences load with the first press (or a robot found busy), not with the first page. */
+const stopWords = () => import("./stop-outcome.ts");
 
 function setConnection(store: Store<AppState>, patch: Partial<ConnectionState>): void {
   store.update((s) => ({ connection: { ...s.connection, ...patch } }));
@@ -75,101 +72,32 @@ export function disconnect(ctx: AppContext): void {
   void ctx.session.disconnect();
 }
 
-/** Whole seconds, rounded up, for "the sound ends in 3 s". */
-function secondsLeft(ms: number): LocalText {
-  return inEveryLanguage((locale) => formatSeconds(Math.max(1, Math.ceil(ms / 1000)), locale, 0));
-}
-
-const say = <K extends keyof typeof connectionMessages & string>(
-  key: K,
-  ...facts: ParamArgs<(typeof connectionMessages)[K], Said | LocalText>
-): Said => said(connectionMessages, key, ...facts);
-
-/** What Stop is waiting for, said before it is done (the robot's state mirrored in the store). */
-function stopping(state: AppState, now: number): Said {
-  const c = state.connection;
-  if (c.sounding) {
-    const left = c.sounding.startedAt + c.sounding.expectedMs - now;
-    return say("connection.stopping.sound", { time: secondsLeft(left) });
-  }
-  if (c.playing) return say("connection.stopping.motion", { motion: String(c.playing.motion) });
-  if (c.mode === "download") return say("connection.stopping.upload");
-  return say("connection.stopping");
-}
-
-/** Where tethered play stopped, and how far it got. */
-function playStopped(play: NonNullable<StopActivityResult["tetheredPlay"]>): Said {
-  const { framesSent: sent, totalFrames: total, lastFrame } = play;
-  if (!lastFrame) return say("connection.outcome.playNotStarted");
-  const frame = String(lastFrame.frame);
-  return lastFrame.scene < 0
-    ? say("connection.outcome.playStoppedTransition", { frame, sent, total })
-    : say("connection.outcome.playStoppedScene", { scene: String(lastFrame.scene), frame, sent, total });
-}
-
-/**
- * What Stop did, as plain sentences, never more certain than the robot confirmed. `limp` says whether every
- * servo had been made limp before (Stop does not change that). Kept as messages: worded in the language of the
- * moment.
- */
-export function stopOutcome(result: StopActivityResult, limp: boolean, locale: Locale = "en"): Notice {
-  const parts: Said[] = [];
-  let unsure = false;
-  if (result.uploadCancelled) parts.push(say("connection.outcome.uploadCancelled"));
-  if (result.sound) {
-    const sound = String(result.sound.number);
-    if (result.sound.confirmed) parts.push(say("connection.outcome.soundWaited", { sound }));
-    else {
-      unsure = true;
-      parts.push(say("connection.outcome.soundUnconfirmed", { sound }));
-    }
-  }
-  if (result.motion) {
-    const motion = String(result.motion.number);
-    switch (result.motion.outcome) {
-      case "stopped":
-        parts.push(say("connection.outcome.motionStopped", { motion }));
-        break;
-      case "ended-then-posture":
-        parts.push(say("connection.outcome.motionEnded", { motion }));
-        break;
-      case "posture":
-        parts.push(say("connection.outcome.posture"));
-        break;
-      case "unconfirmed":
-        unsure = true;
-        parts.push(say("connection.outcome.motionUnconfirmed", { motion }));
-        break;
-    }
-  }
-  if (result.tetheredPlay) {
-    parts.push(playStopped(result.tetheredPlay));
-  } else if (result.servoMovesDropped) {
-    parts.push(limp ? say("connection.outcome.servoMovesLimp") : say("connection.outcome.servoMoves"));
-  }
-  if (parts.length === 0) parts.push(say("connection.outcome.nothing"));
-  return noticeOf(unsure ? "warning" : "ok", locale, parts);
-}
-
 /**
  * Stop (the top bar's red button, and Escape when nothing else takes it): ends what the robot is doing and
- * keeps it standing (`RbcClient.stopActivity`). It never makes a servo passive: that is Limp.
+ * keeps it standing (`RbcClient.stopActivity`). It never makes a servo passive: that is Limp. Stop is asked of
+ * the robot first; its words load beside it (`stop-outcome.ts`, not in the first page load).
  */
 export async function stopActivity(ctx: AppContext): Promise<void> {
   const { store, session } = ctx;
   const client = session.current;
   if (!client) return;
-  store.update((s) => ({
-    stopNotice: noticeOf("info", s.locale, [stopping(s, session.clock.now())]),
-    limpAsked: false,
-  }));
+  const now = session.clock.now();
+  const stopping = store.get();
+  // Whether every servo was limp before: Stop changes no servo, but leaving direct mode clears the flag.
+  const limp = stopping.connection.limp === true;
+  store.update({ limpAsked: false });
+  const done = client.stopActivity().then(
+    (result) => ({ result }),
+    (error: unknown) => ({ error }),
+  );
+  const words = await stopWords();
+  if (session.current === client) store.update({ stopNotice: words.stoppingNotice(stopping, now) });
+  const outcome = await done;
   const { locale } = store.get();
-  let notice: Notice;
-  try {
-    notice = stopOutcome(await client.stopActivity(), store.get().connection.limp === true, locale);
-  } catch (e) {
-    notice = (await failureWords()).failureNotice(say("connection.stopFailed"), e, locale);
-  }
+  const notice =
+    "result" in outcome
+      ? words.stopOutcome(outcome.result, limp, locale)
+      : (await failureWords()).failureNotice(words.stopFailedSaid(), outcome.error, locale);
   if (session.current === client) store.update({ stopNotice: notice });
 }
 
@@ -192,25 +120,48 @@ export async function limpAll(ctx: AppContext): Promise<void> {
   const client = session.current;
   store.update({ limpAsked: false });
   if (!client) return;
+  const done = client.limp().then(
+    (result) => ({ result }),
+    (error: unknown) => ({ error }),
+  );
+  const words = await stopWords();
   const { locale } = store.get();
-  store.update({ stopNotice: noticeOf("warning", locale, [say("connection.limping")]) });
-  let notice: Notice;
-  try {
-    const { confirmed, silent } = await client.limp();
-    notice =
-      silent.length === 0
-        ? noticeOf("warning", locale, [say("connection.limpDone", { count: confirmed.length })])
-        : noticeOf("danger", locale, [
-            say("connection.limpPartial", { confirmed: confirmed.length, silent: silent.join(", ") }),
-          ]);
-  } catch (e) {
-    notice = (await failureWords()).failureNotice(say("connection.limpFailed"), e, locale);
-  }
+  if (session.current === client) store.update({ stopNotice: words.limpingNotice(locale) });
+  const outcome = await done;
+  const notice =
+    "result" in outcome
+      ? words.limpNotice(outcome.result, locale)
+      : (await failureWords()).failureNotice(words.limpFailedSaid(), outcome.error, locale);
   if (session.current === client) {
     // The robot is limp and someone is holding it: the next movement asks again.
     store.update((s) => ({ stopNotice: notice, acks: { ...s.acks, movement: false } }));
     if (client.mode === "direct") setConnection(store, { limp: true });
   }
+}
+
+/**
+ * The client found the robot busy with a motion started elsewhere, or no longer (docs/protocol.md §3.6; the busy
+ * probe runs on connect and before a main-loop read is blamed on the link): the top bar says so beside Stop.
+ */
+export async function busyChanged(ctx: AppContext, busy: boolean): Promise<void> {
+  const { store, session } = ctx;
+  if (!busy) {
+    setConnection(store, { busyNotice: undefined });
+    return;
+  }
+  const client = session.current;
+  const words = await stopWords();
+  if (session.current === client && store.get().connection.busy) {
+    setConnection(store, { busyNotice: words.busyNotice(store.get().locale) });
+  }
+}
+
+/**
+ * Just connected: the busy probe (docs/protocol.md §3.6). A robot busy with a motion started with the remote or
+ * another program is told apart from a silent one, and the top bar offers Stop (`busyChanged`).
+ */
+export function probeAfterConnect(ctx: AppContext): void {
+  void ctx.session.current?.probeBusy().catch(() => {});
 }
 
 /** A servo was moved or the user took servo control: the servos are no longer all limp. */

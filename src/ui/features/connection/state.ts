@@ -34,6 +34,13 @@ export interface ConnectionState {
   playing?: ClientState["playing"];
   /** Mirrored from the client: the sound it is waiting on. */
   sounding?: ClientState["sounding"];
+  /**
+   * Mirrored from the client: the busy probe found a motion started elsewhere playing (docs/protocol.md §3.6),
+   * until the robot's main loop answers again.
+   */
+  busy?: ClientState["busy"];
+  /** What the top bar says beside Stop while `busy` (made when the words have loaded: `busyChanged`). */
+  busyNotice?: Notice;
   /** Mirrored from the client: the event subscription it keeps armed. */
   subscription?: SubscriptionKind;
   firmware?: { major: number; minor: number };
@@ -71,6 +78,7 @@ export function mirrored(state: ClientState): Partial<ConnectionState> {
     basicPostureConfirmed: state.basicPostureConfirmed,
     playing: state.playing,
     sounding: state.sounding,
+    busy: state.busy,
     subscription: state.subscription,
   };
 }
@@ -80,5 +88,7 @@ export const NOTHING_RUNNING: Partial<ConnectionState> = {
   limp: undefined,
   playing: undefined,
   sounding: undefined,
+  busy: undefined,
+  busyNotice: undefined,
   subscription: undefined,
 };

@@ -114,8 +114,20 @@ function stopResult(ctx: ViewContext): TemplateResult {
   const n = ctx.state.stopNotice;
   const { locale } = ctx.state;
   const t = translator(shellMessages, locale);
+  const c = ctx.state.connection;
+  // A robot found busy with a motion started elsewhere (docs/protocol.md §3.6): said with a Stop right there.
+  const busy = c.phase === "connected" && c.busy ? c.busyNotice : undefined;
   // No whitespace around the content: the empty region matches :empty and takes no room in the bar.
   return html`<div class="stop-banner" role="status" aria-live="assertive" data-testid="stop-banner">${
+    busy
+      ? html`<div class="notice notice--${busy.tone} banner-notice" data-testid="busy-banner">
+          <p class="banner-text">${noticeText(busy, locale)}</p>
+          <button type="button" class="btn btn--danger" @click=${() => void stopActivity(ctx)}>
+            ${translator(connectionMessages, locale)("connection.stop")}
+          </button>
+        </div>`
+      : nothing
+  }${
     n
       ? html`<div class="notice notice--${n.tone} banner-notice">
           <div class="banner-text">

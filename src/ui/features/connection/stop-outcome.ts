@@ -1,0 +1,153 @@
+import type { StopActivityResult, StopFound } from "../../../device/index.ts";
+import type { ParamArgs } from "../../../i18n/catalogue.ts";
+import type { Locale } from "../../../i18n/locale.ts";
+import { noReplyCauseText } from "../../../i18n/outcomes/run-words.ts";
+import { stopOutcomeMessages } from "../../../i18n/outcomes/stop-messages.ts";
+import { formatMilliseconds, formatSeconds } from "../../../i18n/units.ts";
+import { type AppState, type Notice, noticeOf } from "../../app-state.ts";
+import { inEveryLanguage, type LocalText, type Said, said, saidText } from "../../said.ts";
+import { stopMessages } from "./stop-messages.ts";
+
+/**
+ * The sentences of Stop and Limp in the top bar: what Stop is waiting for, what it did (never more certain than
+ * the robot confirmed), what Limp did, and a robot found busy. Loaded with the first press of Stop or Limp (or a
+ * robot found busy), not with the first page (first load: bench/bundle-size.ts). Kept as messages, so they are
+ * worded in the language of the moment.
+ */
+
+const say = <K extends keyof typeof stopMessages & string>(
+  key: K,
+  ...facts: ParamArgs<(typeof stopMessages)[K], Said | LocalText>
+): Said => said(stopMessages, key, ...facts);
+
+/** Whole seconds, rounded up, for "the sound ends in 3 s". */
+function secondsLeft(ms: number): LocalText {
+  return inEveryLanguage((locale) => formatSeconds(Math.max(1, Math.ceil(ms / 1000)), locale, 0));
+}
+
+/** What Stop is waiting for, said before it is done (the robot's state mirrored in the store). */
+export function stoppingNotice(state: AppState, now: number): Notice {
+  const c = state.connection;
+  let what: Said;
+  if (c.sounding) {
+    const left = c.sounding.startedAt + c.sounding.expectedMs - now;
+    what = say("stop.stopping.sound", { time: secondsLeft(left) });
+  } else if (c.playing) what = say("stop.stopping.motion", { motion: String(c.playing.motion) });
+  else if (c.mode === "download") what = say("stop.stopping.upload");
+  else what = say("stop.stopping");
+  return noticeOf("info", state.locale, [what]);
+}
+
+/** Where tethered play stopped, and how far it got. */
+function playStopped(play: NonNullable<StopActivityResult["tetheredPlay"]>): Said {
+  const { framesSent: sent, totalFrames: total, lastFrame } = play;
+  if (!lastFrame) return say("stop.outcome.playNotStarted");
+  const frame = String(lastFrame.frame);
+  return lastFrame.scene < 0
+    ? say("stop.outcome.playStoppedTransition", { frame, sent, total })
+    : say("stop.outcome.playStoppedScene", { scene: String(lastFrame.scene), frame, sent, total });
+}
+
+/**
+ * What Stop found when the panel had started nothing (docs/protocol.md §3.6): the outcome catalogue's words
+ * (src/i18n/outcomes/stop-messages.ts), which `rbc stop` says too.
+ */
+export function foundSaid(found: StopFound): Said[] {
+  const seconds = (ms: number) => inEveryLanguage((l) => formatSeconds(ms / 1000, l));
+  switch (found.kind) {
+    case "idle":
+      return [said(stopOutcomeMessages, "outcome.stop.idle")];
+    case "stopped":
+      return [said(stopOutcomeMessages, "outcome.stop.busyStopped", { elapsed: seconds(found.elapsedMs) })];
+    case "unconfirmed":
+      return [
+        said(stopOutcomeMessages, "outcome.stop.busyUnconfirmed", { wait: seconds(found.noReply.waitedMs) }),
+        saidText(inEveryLanguage((l) => noReplyCauseText(found.noReply, l))),
+      ];
+    case "no-answer":
+      return [
+        said(stopOutcomeMessages, "outcome.stop.noAnswer", {
+          wait: inEveryLanguage((l) => formatMilliseconds(found.waitedMs, l)),
+        }),
+      ];
+  }
+}
+
+/**
+ * What Stop did, as plain sentences, never more certain than the robot confirmed. `limp` says whether every
+ * servo had been made limp before (Stop does not change that).
+ */
+export function stopOutcome(result: StopActivityResult, limp: boolean, locale: Locale = "en"): Notice {
+  const parts: Said[] = [];
+  let unsure = false;
+  if (result.uploadCancelled) parts.push(say("stop.outcome.uploadCancelled"));
+  if (result.sound) {
+    const sound = String(result.sound.number);
+    if (result.sound.confirmed) parts.push(say("stop.outcome.soundWaited", { sound }));
+    else {
+      unsure = true;
+      parts.push(say("stop.outcome.soundUnconfirmed", { sound }));
+    }
+  }
+  if (result.motion) {
+    const motion = String(result.motion.number);
+    switch (result.motion.outcome) {
+      case "stopped":
+        parts.push(say("stop.outcome.motionStopped", { motion }));
+        break;
+      case "ended-then-posture":
+        parts.push(say("stop.outcome.motionEnded", { motion }));
+        break;
+      case "posture":
+        parts.push(say("stop.outcome.posture"));
+        break;
+      case "unconfirmed":
+        unsure = true;
+        parts.push(say("stop.outcome.motionUnconfirmed", { motion }));
+        break;
+    }
+  }
+  if (result.tetheredPlay) parts.push(playStopped(result.tetheredPlay));
+  if (result.leftDirectMode) {
+    parts.push(limp ? say("stop.outcome.leftServoControlLimp") : say("stop.outcome.leftServoControl"));
+  } else if (result.servoMovesDropped && !result.tetheredPlay) {
+    parts.push(limp ? say("stop.outcome.servoMovesLimp") : say("stop.outcome.servoMoves"));
+  }
+  if (result.found) {
+    parts.push(...foundSaid(result.found));
+    unsure ||= result.found.kind === "unconfirmed" || result.found.kind === "no-answer";
+  }
+  if (parts.length === 0) parts.push(say("stop.outcome.nothing"));
+  return noticeOf(unsure ? "warning" : "ok", locale, parts);
+}
+
+/** Stop failed: the lead, beside the failure's own sentence (`failureNotice`). */
+export function stopFailedSaid(): Said {
+  return say("stop.stopFailed");
+}
+
+export function limpingNotice(locale: Locale): Notice {
+  return noticeOf("warning", locale, [say("stop.limping")]);
+}
+
+/** What Limp made passive: every servo confirmed, or which did not answer. */
+export function limpNotice(result: { confirmed: number[]; silent: number[] }, locale: Locale): Notice {
+  const { confirmed, silent } = result;
+  return silent.length === 0
+    ? noticeOf("warning", locale, [say("stop.limpDone", { count: confirmed.length })])
+    : noticeOf("danger", locale, [
+        say("stop.limpPartial", { confirmed: confirmed.length, silent: silent.join(", ") }),
+      ]);
+}
+
+export function limpFailedSaid(): Said {
+  return say("stop.limpFailed");
+}
+
+/**
+ * A robot found busy with a motion started elsewhere (docs/protocol.md §3.6), as the top bar says it beside its
+ * Stop button: the outcome catalogue's sentence, which `rbc info` says too.
+ */
+export function busyNotice(locale: Locale): Notice {
+  return noticeOf("warning", locale, [said(stopOutcomeMessages, "outcome.busyNow")]);
+}
