@@ -6,6 +6,7 @@
  */
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
+import { restampRefusalText } from "../../src/i18n/outcomes/restamp/restamp-words.ts";
 import {
   isRbmSerial,
   madeForAnotherRobot,
@@ -82,6 +83,12 @@ describe("restampRbm: refusals change nothing", () => {
     })();
     expect(error).toBeInstanceOf(RestampError);
     expect(error).toMatchObject({ code: "restamp-bad-serial", facts: { value: serial } });
+    // The outcome catalogue's English is the error's own sentence; Korean says the same from the facts.
+    const refusal = error as RestampError;
+    expect(restampRefusalText(refusal, "en")).toBe(refusal.message);
+    expect(restampRefusalText(refusal, "ko")).toBe(
+      `시리얼 번호 "${serial}"은(는) 모션 파일에 쓸 수 없어요. 숫자(0-9) 13자리여야 해요.`,
+    );
   });
 
   it("refuses a file whose field 2 is not 13 characters long", () => {
@@ -89,6 +96,11 @@ describe("restampRbm: refusals change nothing", () => {
     expect(() => restampRbm(short, RBM_ZERO_SERIAL)).toThrow(
       expect.objectContaining({ code: "restamp-serial-field", facts: { length: 4 } }),
     );
+    try {
+      restampRbm(short, RBM_ZERO_SERIAL);
+    } catch (e) {
+      expect(restampRefusalText(e as RestampError, "en")).toBe((e as RestampError).message);
+    }
   });
 
   it.each([
