@@ -133,6 +133,17 @@ export function restampRbmBytes(bytes: Uint8Array, serial: string): RestampResul
   return { ...result, output };
 }
 
+/**
+ * The name of a restamped copy: the file's name with the serial number, or "zeros", added before its extension
+ * (`wave.rbm` → `wave-zeros.rbm`, `dance.rbm` → `dance-8958899989309.rbm`).
+ */
+export function restampedFileName(fileName: string, serial: string): string {
+  const dot = fileName.lastIndexOf(".");
+  const stem = dot > 0 ? fileName.slice(0, dot) : fileName;
+  const ext = dot > 0 ? fileName.slice(dot) : ".rbm";
+  return `${stem}-${isZeroSerial(serial) ? "zeros" : serial}${ext}`;
+}
+
 /** The serial number in field 2 of an `.rbm` text (the reader's `RbmError` if it is not a motion file). */
 export function rbmSerial(text: string): string {
   return readRbm(text).serialNumber;

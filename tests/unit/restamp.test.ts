@@ -13,6 +13,7 @@ import {
   RBM_ZERO_SERIAL,
   RestampError,
   rbmSerial,
+  restampedFileName,
   restampRbm,
   restampRbmBytes,
 } from "../../src/motion/index.ts";
@@ -123,6 +124,9 @@ describe("serial helpers", () => {
     expect(madeForAnotherRobot("8958899989309", "8958899989309")).toBe(false);
     expect(madeForAnotherRobot("0000000000000", "1234567890123")).toBe(false);
     expect(madeForAnotherRobot("8958899989309", undefined)).toBe(false);
+    expect(restampedFileName("wave.rbm", RBM_ZERO_SERIAL)).toBe("wave-zeros.rbm");
+    expect(restampedFileName("my.dance.RBM", "8958899989309")).toBe("my.dance-8958899989309.RBM");
+    expect(restampedFileName("dance", "8958899989309")).toBe("dance-8958899989309.rbm");
   });
 });
 

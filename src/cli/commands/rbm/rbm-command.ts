@@ -1,12 +1,17 @@
 import { readFile, writeFile } from "node:fs/promises";
-import { basename, dirname, extname, join, resolve } from "node:path";
+import { basename, dirname, join, resolve } from "node:path";
 import {
   noRobotSerialText,
   restampChangeText,
   restampRefusalText,
 } from "../../../i18n/outcomes/restamp/restamp-words.ts";
 import { translator } from "../../../i18n/translate.ts";
-import { RBM_ZERO_SERIAL, RestampError, restampRbmBytes } from "../../../motion/restamp.ts";
+import {
+  RBM_ZERO_SERIAL,
+  RestampError,
+  restampedFileName,
+  restampRbmBytes,
+} from "../../../motion/restamp.ts";
 import { RbmError } from "../../../protocol/rbm.ts";
 import { type GlobalValues, noExtraArguments, parseCommand } from "../../args.ts";
 import { type CommandDef, localeOf, type RunEnv } from "../../command.ts";
@@ -37,10 +42,7 @@ type Values = GlobalValues & { serial?: string; zeros?: boolean; output?: string
 
 /** `wave.rbm` → `wave-zeros.rbm` / `wave-8958899989309.rbm`, beside FILE. */
 export function restampedName(file: string, serial: string): string {
-  const ext = extname(file) || ".rbm";
-  const stem = basename(file, extname(file));
-  const tag = serial === RBM_ZERO_SERIAL ? "zeros" : serial;
-  return join(dirname(file), `${stem}-${tag}${ext}`);
+  return join(dirname(file), restampedFileName(basename(file), serial));
 }
 
 /** The serial number to write: --serial, --zeros, or the connected robot's (which --port/--demo name). */
