@@ -17,8 +17,8 @@ export const remoteMessages = defineMessages({
     ko: "IR 리모컨을 듣고 있어요. 누른 키가 켜져요.",
   },
   "sensors.remote.lastKey": {
-    en: "Last key: {key}, code {code}, at {time}.",
-    ko: "마지막 키: {key}, 코드 {code}, {time}.",
+    en: "Last key: {key} (code {code}), at {time}.",
+    ko: "마지막 키: {key} (코드 {code}), {time}.",
   },
   "sensors.remote.lastUnknown": {
     en: "Last key: code {code} at {time}, a code this key map does not list.",

@@ -132,8 +132,12 @@ function lastKeyText(t: RemoteTranslator, last: { code: number; at: number } | u
   if (!last) return t("sensors.remote.noKeyYet");
   const time = formatTime(last.at, t.locale);
   const key = remoteKeyOf(last.code);
-  return key
-    ? t("sensors.remote.lastKey", { key: keyName(t, key), code: String(last.code), time })
+  const name =
+    key?.group === "builtin"
+      ? (builtInMotionName(translator(sensorsMessages, t.locale), key.code) ?? keyName(t, key))
+      : key && keyName(t, key);
+  return name
+    ? t("sensors.remote.lastKey", { key: name, code: String(last.code), time })
     : t("sensors.remote.lastUnknown", { code: String(last.code), time });
 }
 
