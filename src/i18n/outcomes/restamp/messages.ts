@@ -28,6 +28,6 @@ export const restampOutcomeMessages = defineMessages({
   },
   "outcome.restamp.anotherRobot": {
     en: "This motion was made for the robot with serial number {file}; this robot is {robot}. Motionbuilder refuses such a file.",
-    ko: "이 모션은 시리얼 번호 {file} 로봇용으로 만들어졌어요. 이 로봇은 {robot}이에요. Motionbuilder는 이런 파일을 받아들이지 않아요.",
+    ko: "이 모션은 시리얼 번호 {file} 로봇용으로 만들어졌어요 (이 로봇: {robot}). Motionbuilder는 이런 파일을 받아들이지 않아요.",
   },
 });

@@ -53,8 +53,12 @@ export const remoteMessages = defineMessages({
     ko: "로봇에 있다면 다운로드한 모션 {slot}. 로봇은 어떤 모션인지 알려 주지 않아요",
   },
   "sensors.remote.plays.empty": {
-    en: "Nothing: no motion downloaded into slot {slot}",
-    ko: "없음: 슬롯 {slot}에 다운로드한 모션이 없어요",
+    en: "Nothing: slot {slot} is empty",
+    ko: "없음: 비어 있는 슬롯 {slot}",
+  },
+  "sensors.remote.userKey9": {
+    en: "On the official “user” firmware: an endless walk that only switching the robot off ends",
+    ko: "공식 “user” 펌웨어에서는 로봇을 꺼야만 멈추는 끝없는 걷기",
   },
   "sensors.remote.plays.userNothing": {
     en: "Nothing on this firmware (it plays no downloads)",

@@ -92,24 +92,28 @@ function playsText(t: RemoteTranslator, plays: KeyPlays): string {
   }
 }
 
-function isHazard(key: RemoteKey, plays: KeyPlays): boolean {
-  return plays.kind === "hazard" || plays.kind === "user-endless-walk" || key.hazard === "endless-walk";
+/** A hazard on this robot: a `#` key, or key 9 on the official "user" build. */
+function isHazard(plays: KeyPlays): boolean {
+  return plays.kind === "hazard" || plays.kind === "user-endless-walk";
 }
 
 function keyTile(t: RemoteTranslator, key: RemoteKey, facts: RobotFacts, lit: boolean): TemplateResult {
   const plays = keyPlays(key, facts);
-  const hazard = isHazard(key, plays);
+  const hazard = isHazard(plays);
+  // Key 9 on another build: what it plays here, and the user build's walk named beside it.
+  const elsewhere = !hazard && key.hazard === "endless-walk";
   const quiet = plays.kind === "empty" || plays.kind === "user-nothing";
   return html`<li
-    class="remote-key ${lit ? "is-lit" : ""} ${hazard ? "is-hazard" : ""} ${quiet ? "is-quiet" : ""}"
+    class="remote-key remote-key--${key.group} ${lit ? "is-lit" : ""} ${hazard ? "is-hazard" : ""} ${quiet ? "is-quiet" : ""}"
     data-testid="remote-key"
     data-code=${key.code}
     aria-current=${lit ? "true" : nothing}
   >
-    <span class="remote-key-face">${key.face}</span>
+    ${key.group === "builtin" ? nothing : html`<span class="remote-key-face">${key.face}</span>`}
     <span class="remote-key-text">
       <span class="remote-key-name small muted">${keyName(t, key)}${key.group === "builtin" ? nothing : html` · ${t("sensors.remote.code", { code: String(key.code) })}`}</span>
       <span class="remote-key-plays">${hazard ? html`<strong class="text-warning">${t("sensors.remote.hazard")}:</strong> ` : nothing}${playsText(t, plays)}</span>
+      ${elsewhere ? html`<span class="small text-warning">${t("sensors.remote.userKey9")}</span>` : nothing}
       ${lit ? html`<span class="sr-only">(${t("sensors.remote.pressed")})</span>` : nothing}
     </span>
   </li>`;
@@ -160,7 +164,7 @@ export function remoteCard(ctx: ViewContext): TemplateResult {
           : nothing
       }
       ${GROUPS.map(
-        (group) => html`<section class="remote-group" aria-labelledby=${`remote-${group}`}>
+        (group) => html`<section class="remote-group remote-group--${group}" aria-labelledby=${`remote-${group}`}>
           <h3 id=${`remote-${group}`} class="remote-group-title">${groupTitle(t, group)}</h3>
           <ul class="remote-keys" role="list">
             ${REMOTE_KEYS.filter((k) => k.group === group).map((k) => keyTile(t, k, facts, last?.code === k.code))}
