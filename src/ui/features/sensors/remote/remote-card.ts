@@ -145,6 +145,21 @@ function lastKeyText(t: RemoteTranslator, last: { code: number; at: number } | u
     : t("sensors.remote.lastUnknown", { code: String(last.code), time });
 }
 
+function keyGroup(
+  t: RemoteTranslator,
+  group: RemoteKeyGroup,
+  facts: RobotFacts,
+  litCode: number | undefined,
+): TemplateResult {
+  const keys = REMOTE_KEYS.filter((k) => k.group === group);
+  return html`<section class="remote-group remote-group--${group}" aria-labelledby=${`remote-${group}`}>
+    <h3 id=${`remote-${group}`} class="remote-group-title">${groupTitle(t, group)}</h3>
+    <ul class="remote-keys" role="list">
+      ${keys.map((k) => keyTile(t, k, facts, litCode === k.code))}
+    </ul>
+  </section>`;
+}
+
 export function remoteCard(ctx: ViewContext): TemplateResult {
   const t = translator(remoteMessages, ctx.state.locale);
   const facts = robotFacts(ctx);
@@ -155,22 +170,13 @@ export function remoteCard(ctx: ViewContext): TemplateResult {
       <h2 id="remote-title" class="card-title">${t("sensors.remote.title")}</h2>
       <p class="muted small">${t("sensors.remote.intro")}</p>
       <p class="small" data-testid="remote-firmware">${firmwareNote(t, facts)}</p>
-      <p class="small" data-testid="remote-listen">
-        ${listening ? t("sensors.remote.listening") : t("sensors.remote.listenHint")}
-      </p>
-      ${
-        listening
-          ? html`<p class="small num" role="status" aria-live="polite" data-testid="remote-last">${lastKeyText(t, last)}</p>`
-          : nothing
-      }
-      ${GROUPS.map(
-        (group) => html`<section class="remote-group remote-group--${group}" aria-labelledby=${`remote-${group}`}>
-          <h3 id=${`remote-${group}`} class="remote-group-title">${groupTitle(t, group)}</h3>
-          <ul class="remote-keys" role="list">
-            ${REMOTE_KEYS.filter((k) => k.group === group).map((k) => keyTile(t, k, facts, last?.code === k.code))}
-          </ul>
-        </section>`,
-      )}
+      <div role="status" aria-live="polite" aria-label=${t("sensors.remote.title")}>
+        <p class="small" data-testid="remote-listen">
+          ${listening ? t("sensors.remote.listening") : t("sensors.remote.listenHint")}
+        </p>
+        ${listening ? html`<p class="small num" data-testid="remote-last">${lastKeyText(t, last)}</p>` : nothing}
+      </div>
+      ${GROUPS.map((group) => keyGroup(t, group, facts, last?.code))}
     </section>
   `;
 }
