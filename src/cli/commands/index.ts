@@ -5,6 +5,7 @@ import { limpCommand } from "./limp.ts";
 import { logCommand } from "./log.ts";
 import { playCommand } from "./play.ts";
 import { portsCommand } from "./ports.ts";
+import { rbmCommand } from "./rbm/rbm-command.ts";
 import { runCommand } from "./run.ts";
 import { sensorsCommand } from "./sensors.ts";
 import { servosCommand } from "./servos.ts";
@@ -27,6 +28,7 @@ export const COMMAND_LIST: readonly CommandDef[] = [
   stopCommand,
   limpCommand,
   servosCommand,
+  rbmCommand,
   soundCommand,
   sensorsCommand,
   logCommand,

@@ -98,6 +98,15 @@ export const COMMAND_HELP = {
       ["-y, --yes", t("cliHelp.servos.yes")],
     ],
   }),
+  rbm: (t) => ({
+    summary: t("cliHelp.rbm.summary"),
+    description: t("cliHelp.rbm.description"),
+    options: [
+      ["--serial N", t("cliHelp.rbm.serial")],
+      ["--zeros", t("cliHelp.rbm.zeros")],
+      ["-o, --output OUT", t("cliHelp.rbm.output")],
+    ],
+  }),
   sound: (t) => ({
     summary: t("cliHelp.sound.summary"),
     description: t("cliHelp.sound.description"),

@@ -208,6 +208,27 @@ export const helpMessages = defineMessages({
     ko: "묻지 않고 서보의 힘을 빼요.",
   },
 
+  "cliHelp.rbm.summary": {
+    en: "motion files: restamp a motion made for another robot (its serial number only)",
+    ko: "모션 파일: 다른 로봇용으로 만든 모션의 시리얼 번호만 바꾸기",
+  },
+  "cliHelp.rbm.description": {
+    en: "restamp FILE: Motionbuilder refuses a motion file whose serial number (field 2) is another robot's. rbc\nwrites the serial number you give (--serial N, 13 digits), zeros (--zeros: any robot accepts it), or with\n--port/--demo and neither flag the connected robot's, and changes no other byte of the file.\n\nFILE is never overwritten unless -o names it. Without -o the copy is written beside FILE, named after it\nwith the serial number or \"zeros\" added (wave.rbm -> wave-zeros.rbm), and an existing file of that name is\nleft alone. A file that is not a motion file, or a serial number that is not 13 digits, is refused and\nnothing is written. A file that already carries that serial number is left as it is.",
+    ko: 'restamp FILE: Motionbuilder는 시리얼 번호(2번 필드)가 다른 로봇의 것인 모션 파일을 받아들이지 않아요.\nrbc는 주어진 시리얼 번호(--serial N, 숫자 13자리)나 0(--zeros: 어느 로봇이나 받아들여요)을, 두 옵션이\n없으면 --port/--demo로 연결한 로봇의 번호를 써 넣고, 파일의 다른 바이트는 하나도 바꾸지 않아요.\n\n-o로 FILE을 지정하지 않으면 FILE을 덮어쓰지 않아요. -o가 없으면 FILE 옆에 이름 뒤에 시리얼 번호나\n"zeros"를 붙인 복사본을 써요 (wave.rbm -> wave-zeros.rbm). 그 이름의 파일이 이미 있으면 그대로 둬요.\n모션 파일이 아니거나 시리얼 번호가 숫자 13자리가 아니면 거절하고 아무것도 쓰지 않아요. 파일에 이미\n그 시리얼 번호가 있으면 그대로 둬요.',
+  },
+  "cliHelp.rbm.serial": {
+    en: "The serial number to write (13 digits).",
+    ko: "써 넣을 시리얼 번호 (숫자 13자리).",
+  },
+  "cliHelp.rbm.zeros": {
+    en: "Write zeros: the motion is accepted on any robot.",
+    ko: "0으로 채워요: 어느 로봇에서나 받아들여요.",
+  },
+  "cliHelp.rbm.output": {
+    en: "Where to write the copy (may be FILE itself).",
+    ko: "복사본을 쓸 곳 (FILE 자신이어도 돼요).",
+  },
+
   "cliHelp.sound.summary": {
     en: "play one of the robot's 25 built-in sounds",
     ko: "로봇에 들어 있는 소리 25개 중 하나 재생하기",

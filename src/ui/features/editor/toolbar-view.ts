@@ -4,10 +4,12 @@ import { canRedo, canUndo, type Motion, redoLabel, undoLabel } from "../../../mo
 import { liveNotice } from "../../shell/notice.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
 import { formatSeconds } from "../motions/plot-data.ts";
+import { restampOffer } from "../motions/restamp/restamp-offer.ts";
 import { redoNext, typeMotionName, undoLast } from "./actions.ts";
 import { newDocument, openDocumentFile, saveDocument, setEditorDragging } from "./document-actions.ts";
 import { motionFileName } from "./file-name.ts";
 import { type EditorTranslator, editorMessages } from "./messages.ts";
+import { restampDocument } from "./restamp-actions.ts";
 import { formatSavedAt } from "./saved-at.ts";
 import type { EditorState } from "./state.ts";
 import { problemText } from "./view-parts.ts";
@@ -153,6 +155,7 @@ export function toolbar(ctx: ViewContext, s: EditorState, doc: Motion): Template
       ${problemText("motion-name-problem", problem)}
       <p class="muted small editor-draft-status" data-testid="draft-status">${draftStatus(t, s)}</p>
       ${liveNotice(s.notice, t("editor.resultLabel"), t.locale)}
+      ${restampOffer(ctx, { fileSerial: doc.serialNumber, id: "editor", make: (serial) => void restampDocument(ctx, serial) })}
     </section>
   `;
 }

@@ -22,6 +22,8 @@ export interface MotionText {
   text: string;
   /** Size of the file (the text's length when not given). */
   fileBytes?: number;
+  /** The file's bytes as read (the text's UTF-8 when not given). */
+  bytes?: Uint8Array;
 }
 
 /** Issue codes the panel words itself (in the panel's language); the validator's are English sentences. */
@@ -82,7 +84,8 @@ async function readFile(file: File, locale: Locale): Promise<MotionText | Motion
       ],
     };
   }
-  return { fileName: file.name, text: await file.text(), fileBytes: file.size };
+  const bytes = new Uint8Array(await file.arrayBuffer());
+  return { fileName: file.name, text: new TextDecoder().decode(bytes), fileBytes: file.size, bytes };
 }
 
 /**
@@ -100,7 +103,10 @@ export function addMotionTexts(
   const added = opened.map((o, i) => {
     const id = files.nextId + i;
     return "text" in o
-      ? inspectMotionText(o.fileName, o.text, o.fileBytes ?? o.text.length, id, locale)
+      ? {
+          ...inspectMotionText(o.fileName, o.text, o.fileBytes ?? o.text.length, id, locale),
+          bytes: o.bytes ?? new TextEncoder().encode(o.text),
+        }
       : { ...o, id };
   });
   const names = new Set(added.map((e) => e.fileName));

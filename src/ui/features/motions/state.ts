@@ -25,6 +25,10 @@ export interface MotionFileEntry {
   image?: Uint8Array;
   /** Errors that make the file unusable, found while reading it (the §7 rules that parseRbm enforces). */
   errors: RbmIssue[];
+  /** The file's bytes as read, for a copy for another robot that changes its serial number only. */
+  bytes?: Uint8Array;
+  /** What became of the last such copy ("Make this motion usable on this robot"). */
+  restamped?: Notice;
 }
 
 /** The Motions view's tabs, each one task that fits on about one screen. */

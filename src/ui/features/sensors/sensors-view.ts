@@ -22,10 +22,14 @@ import { demoWorld } from "./demo-world.ts";
 import { distanceWarningText } from "./distance-warning.ts";
 import { describeEvent } from "./events.ts";
 import { type SensorsTranslator, sensorsMessages } from "./messages.ts";
+import { remoteCard } from "./remote/remote-card.ts";
 import { type ListenChoice, POLL_RATES, type PollRate, type SensorsState, sensorsOf } from "./state.ts";
 import { effectiveRate, SOUND_LISTEN_MAX_HZ, sensorWatch } from "./watch.ts";
 
-/** Sensors: distance and accelerometer polled live, and the sound / PF button / IR remote events (issue #4). */
+/**
+ * Sensors: distance and accelerometer polled live, the sound / PF button / IR remote events (issue #4), and the
+ * remote's key map with the key pressed lit (issue 23 item 3).
+ */
 
 const LISTEN: readonly ListenChoice[] = ["none", "sound", "buttons", "remote"];
 
@@ -229,6 +233,7 @@ function render(ctx: ViewContext): TemplateResult {
       </header>
       ${pollCard(ctx, t)} ${eventsCard(ctx, t)}
       ${ctx.state.connection.robot?.kind === "demo" ? demoWorld(ctx, BUILT_IN_MOTIONS) : nothing}
+      ${remoteCard(ctx)}
     </div>
   `;
 }

@@ -10,6 +10,8 @@ import type { ViewContext } from "../../../shell/view-types.ts";
 import { checkedEntry, entryFacts, openMotionFiles, removeMotionFile, setDragging } from "../files.ts";
 import { type MotionsTranslator, motionsMessages } from "../messages.ts";
 import { formatSeconds, sceneRows } from "../plot-data.ts";
+import { restampMotionFile } from "../restamp/restamp-actions.ts";
+import { restampOffer } from "../restamp/restamp-offer.ts";
 import type { MotionFileEntry } from "../state.ts";
 import { requestUpload, uploadBlocked } from "../upload-actions.ts";
 import { togglePreview, toggleScenes } from "../view-actions.ts";
@@ -180,6 +182,16 @@ function fileCard(
               label: t("motions.files.previewLabel", { name: entry.motion.name }),
               testId: "motion-preview",
               locale: ctx.state.locale,
+            })
+          : nothing
+      }
+      ${
+        entry.motion
+          ? restampOffer(ctx, {
+              fileSerial: entry.motion.serialNumber,
+              id: String(entry.id),
+              notice: entry.restamped,
+              make: (serial) => void restampMotionFile(ctx, entry.id, serial),
             })
           : nothing
       }

@@ -1,0 +1,30 @@
+import { saveMotion } from "../../../motion/index.ts";
+import type { AppContext } from "../../context.ts";
+import { errorMessage, technicalDetail } from "../../error-text.ts";
+import { saveRestampedCopy } from "../motions/restamp/restamp-save.ts";
+import { editorWords } from "./actions.ts";
+import { motionFileName } from "./file-name.ts";
+import { docOf, editorOf, patchEditor } from "./state.ts";
+
+/**
+ * Editor: "Make this motion usable on this robot" saves a copy of the motion, as Save would write it, with
+ * `serial` (13 digits, or zeros) in field 2 and nothing else changed. The document itself keeps its serial
+ * number (a copy is made; nothing is edited).
+ */
+export async function restampDocument(ctx: AppContext, serial: string): Promise<void> {
+  const doc = docOf(editorOf(ctx.store.get()));
+  if (!doc) return;
+  const t = editorWords(ctx);
+  let text: string;
+  try {
+    text = saveMotion(doc);
+  } catch (e) {
+    const why = errorMessage(e, t.locale);
+    patchEditor(ctx.store, {
+      notice: { tone: "danger", text: t("editor.doc.saveFailed", { why }), detail: technicalDetail(e) },
+    });
+    return;
+  }
+  const notice = await saveRestampedCopy(text, motionFileName(doc.name), serial, t.locale);
+  patchEditor(ctx.store, { notice });
+}
