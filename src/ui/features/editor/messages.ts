@@ -600,8 +600,12 @@ export const editorMessages = defineMessages({
     ko: "로봇을 잡아 주세요. 고른 서보의 힘이 빠져요.",
   },
   "editor.teach.questionDetail": {
-    en: "The controller enters servo control. Servos holding their position keep holding until you make some limp; a servo made limp earlier (Limp, the Servos view, an earlier teach-in) stays limp.",
-    ko: "컨트롤러가 서보 제어를 시작해요. 제자리를 유지하는 서보는 힘을 빼기 전까지 계속 유지해요. 전에 힘을 뺀 서보(힘 빼기, 서보 화면, 이전 티칭)는 계속 힘이 빠져 있어요.",
+    en: "The servos keep doing what they do now: as far as the panel knows, all 16 hold their position until you make some limp. A servo made limp outside this panel (for example with rbc limp) stays limp; the panel cannot see that.",
+    ko: "서보는 지금 하던 대로 있어요. 패널이 아는 한 서보 16개 모두 힘을 빼기 전까지 제자리를 유지해요. 이 패널 밖에서 힘을 뺀 서보(예: rbc limp)는 계속 힘이 빠져 있고, 패널은 그것을 알 수 없어요.",
+  },
+  "editor.teach.questionDetailSome": {
+    en: "The servos keep doing what they do now: {limp} stay limp (made limp earlier); {holding} hold their position until you make some limp.",
+    ko: "서보는 지금 하던 대로 있어요. {limp}은(는) 전에 힘을 빼서 계속 힘이 빠져 있고, {holding}은(는) 힘을 빼기 전까지 제자리를 유지해요.",
   },
   "editor.teach.questionDetailLimp": {
     en: "The controller stays in servo control. Every servo is limp now (Limp was pressed) and stays limp until you press Hold: the robot cannot stand by itself.",
@@ -687,8 +691,8 @@ export const editorMessages = defineMessages({
     ko: "티칭을 켰어요 (서보 제어). 모든 서보의 힘이 빠져 있어요 (힘 빼기). 로봇을 잡고 자세를 잡은 다음, 자세를 읽거나 고정을 눌러 주세요.",
   },
   "editor.teach.on": {
-    en: "Teach-in is on (servo control): choose the limbs to pose by hand and press Make limp. Every servo holds until then.",
-    ko: "티칭을 켰어요 (서보 제어). 손으로 자세를 잡을 팔다리를 고르고 힘 빼기를 눌러 주세요. 그때까지 모든 서보가 제자리를 유지해요.",
+    en: "Teach-in is on (servo control): choose the limbs to pose by hand and press Make limp. Until then the servos that were holding keep holding.",
+    ko: "티칭을 켰어요 (서보 제어). 손으로 자세를 잡을 팔다리를 고르고 힘 빼기를 눌러 주세요. 그때까지 제자리를 유지하던 서보는 계속 유지해요.",
   },
   "editor.teach.onSilentOne": {
     en: "Teach-in is on, but servo {ids} did not answer: check its cable.",
