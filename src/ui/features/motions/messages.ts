@@ -83,8 +83,10 @@ export const motionsMessages = defineMessages({
   "motions.files.scenes": { en: "Scenes", ko: "장면" },
   "motions.files.servos": { en: "Servos", ko: "서보" },
   "motions.files.playsFor": { en: "Plays for", ko: "재생 시간" },
-  "motions.files.image": { en: "Image", ko: "이미지" },
-  "motions.files.onRobot": { en: "On the robot", ko: "로봇에서" },
+  // What the robot receives (the motion image, docs/protocol.md §6.3) and the memory it then takes (whole
+  // 64-byte chunks, §6.2), in plain words.
+  "motions.files.image": { en: "Sent to the robot", ko: "로봇에 보낼 크기" },
+  "motions.files.onRobot": { en: "Memory it takes", ko: "차지할 메모리" },
   "motions.files.bytes": { en: "{bytes} bytes", ko: "{bytes}바이트" },
   "motions.files.unusable": {
     en: "This file cannot be used as a motion.",
