@@ -10,8 +10,8 @@ import type { Translator } from "../../../i18n/translate.ts";
 export const firmwareMessages = defineMessages({
   "firmware.title": { en: "Firmware", ko: "펌웨어" },
   "firmware.intro": {
-    en: "Replace the robot's firmware with an Intel HEX file, through the bootloader in the robot's controller.",
-    ko: "로봇 컨트롤러 안의 부트로더를 거쳐 로봇의 펌웨어를 Intel HEX 파일로 바꿔요.",
+    en: "Put a new version of the robot's own program (its firmware) on the robot, from a .hex file.",
+    ko: "로봇 자체 프로그램(펌웨어)의 새 버전을 .hex 파일로 로봇에 넣어요.",
   },
 
   // The file
