@@ -206,13 +206,7 @@ function confirmBlock(ctx: ViewContext, t: FirmwareTranslator, run: FirmwareRun)
           ?disabled=${run.demoFileOnRealRobot === true && run.demoFileAccepted !== true}
           @click=${() => void startFlash(ctx)}
         >
-          ${
-            run.demoFileOnRealRobot
-              ? t("firmware.demoMark.writeAnyway")
-              : run.recovery
-                ? t("firmware.choosePortAndUpdate")
-                : t("firmware.update")
-          }
+          ${run.recovery ? t("firmware.choosePortAndUpdate") : t("firmware.update")}
         </button>
         <button type="button" class="btn" @click=${() => cancelConfirm(ctx)}>${t("firmware.cancel")}</button>
       </div>

@@ -66,7 +66,6 @@ export const firmwareMessages = defineMessages({
     en: "I understand: the robot will not work until I write real firmware",
     ko: "알겠어요: 진짜 펌웨어를 쓸 때까지 로봇이 작동하지 않아요",
   },
-  "firmware.demoMark.writeAnyway": { en: "Write the demo file anyway", ko: "그래도 데모 파일 쓰기" },
   // The technical detail (one click away)
   "firmware.addressRange": { en: "Address range", ko: "주소 범위" },
   "firmware.flashPages": { en: "Flash pages", ko: "플래시 페이지" },
