@@ -606,12 +606,12 @@ export const editorMessages = defineMessages({
     en: "The servos keep doing what they do now: as far as the panel knows, all 16 hold their position until you make some limp. A servo made limp outside this panel (for example with rbc limp) stays limp; the panel cannot see that.",
     ko: "서보는 지금 하던 대로 있어요. 패널이 아는 한 서보 16개 모두 힘을 빼기 전까지 제자리를 유지해요. 이 패널 밖에서 힘을 뺀 서보(예: rbc limp)는 계속 힘이 빠져 있고, 패널은 그것을 알 수 없어요.",
   },
-  "editor.teach.questionDetailSome": {
-    en: {
-      one: "The servos keep doing what they do now: {limp} was made limp earlier and has not confirmed holding since, so it stays limp; {holding} hold their position until you make some limp.",
-      other:
-        "The servos keep doing what they do now: {limp} were made limp earlier and have not confirmed holding since, so they stay limp; {holding} hold their position until you make some limp.",
-    },
+  "editor.teach.questionDetailOneLimp": {
+    en: "The servos keep doing what they do now: {limp} was made limp earlier and has not confirmed holding since, so it stays limp; {holding} hold their position until you make some limp.",
+    ko: "서보는 지금 하던 대로 있어요. {limp}은(는) 전에 힘을 뺀 뒤 다시 힘을 준다고 확인하지 않아서 계속 힘이 빠져 있어요. {holding}은(는) 힘을 빼기 전까지 제자리를 유지해요.",
+  },
+  "editor.teach.questionDetailSomeLimp": {
+    en: "The servos keep doing what they do now: {limp} were made limp earlier and have not confirmed holding since, so they stay limp; {holding} hold their position until you make some limp.",
     ko: "서보는 지금 하던 대로 있어요. {limp}은(는) 전에 힘을 뺀 뒤 다시 힘을 준다고 확인하지 않아서 계속 힘이 빠져 있어요. {holding}은(는) 힘을 빼기 전까지 제자리를 유지해요.",
   },
   "editor.teach.questionDetailLimp": {

@@ -47,11 +47,10 @@ function questionDetail(ctx: ViewContext, w: EditorTranslator, t: TeachInState):
   const limp = t.passive;
   if (limp.length === 0) return w("editor.teach.questionDetail");
   const holding = HUNO_SERVO_IDS.filter((id) => !limp.includes(id));
-  return w("editor.teach.questionDetailSome", {
-    count: limp.length,
-    limp: servosText(w, limp),
-    holding: servosText(w, holding),
-  });
+  const servos = { limp: servosText(w, limp), holding: servosText(w, holding) };
+  return limp.length === 1
+    ? w("editor.teach.questionDetailOneLimp", servos)
+    : w("editor.teach.questionDetailSomeLimp", servos);
 }
 
 function startBlock(
