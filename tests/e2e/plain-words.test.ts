@@ -25,6 +25,7 @@ import {
   PHONE,
   shot,
   text,
+  texts,
   useApp,
 } from "./i18n-checks.ts";
 import "./rbc-test-globals.ts";
@@ -206,16 +207,20 @@ describe("Servos: what it does for the robot first, the protocol's words one cli
 describe("Sounds have names as well as numbers", () => {
   it("names each sound button in English and Korean, and says the name while it plays", async () => {
     for (const [locale, seven, label, playing] of [
-      ["en-US", "7 Long sound 5.7 s", "Sound 7, Long sound, 5.7 s", "Sound 7 (Long sound) is playing"],
-      ["ko-KR", "7 긴 소리 5.7초", "소리 7번, 긴 소리, 5.7초", "소리 7번(긴 소리) 재생 중"],
+      ["en-US", "7 Long sound 5.7 s", "Sound 7 Long sound 5.7 s", "Sound 7 (Long sound) is playing"],
+      ["ko-KR", "7 긴 소리 5.7초", "소리 7 긴 소리 5.7초", "소리 7번(긴 소리) 재생 중"],
     ] as const) {
       const { page, context } = await newLocalePage(app, locale, { options: FAST });
       await connectDemo(page);
       await go(page, "motions");
       await page.locator("#motions-tab-sounds").click();
       const button = page.locator('[data-sound="7"]');
-      expect(await text(button)).toBe(seven);
-      expect(await button.getAttribute("aria-label")).toBe(label);
+      // What is seen, and what a screen reader says (the seen text with "Sound" before it).
+      expect((await texts(button.locator(":scope > :not(.sr-only)"))).join(" ")).toBe(seven);
+      expect(await page.getByRole("button", { name: label, exact: true }).getAttribute("data-sound")).toBe(
+        "7",
+      );
+      expect(await axeProblems(page, { within: "[data-testid=sound-card]" })).toEqual([]);
       expect(await page.locator("[data-sound]").count()).toBe(25);
       for (let n = 1; n <= 25; n++) {
         expect(await text(page.locator(`[data-sound="${n}"] .motion-name`)), `sound ${n}`).toMatch(/\S/);

@@ -270,9 +270,9 @@ export function soundSection(ctx: ViewContext): TemplateResult {
             class="btn motion-btn sound-btn"
             data-sound=${i + 1}
             ?disabled=${busyReason !== undefined}
-            aria-label=${t("motions.sound.buttonLabel", { sound: i + 1, name, time: formatSeconds(ms, locale) })}
             @click=${() => void playSound(ctx, i + 1)}
           >
+            <span class="sr-only">${t("motions.sound.buttonPrefix")}</span>
             <span class="motion-num num">${i + 1}</span>
             <span class="motion-name">${name}</span>
             <span class="motion-time num muted">${formatSeconds(ms, locale)}</span>
