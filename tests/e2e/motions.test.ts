@@ -576,7 +576,7 @@ describe("in Korean (ko-KR)", () => {
         await showTab(page, "sounds");
         const sounds = page.getByTestId("sound-card");
         expect(await text(sounds.getByRole("heading"))).toBe("소리");
-        await sounds.getByRole("button", { name: "소리 4번, 아주 짧은 소리, 0.4초" }).click();
+        await sounds.getByRole("button", { name: "소리 4 아주 짧은 소리 0.4초" }).click();
         await sounds.getByText("소리 4번을 재생했어요 (0.4초).").waitFor();
         await expectGood(page, "sounds", viewport);
         await context.close();
