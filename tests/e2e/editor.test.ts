@@ -514,7 +514,7 @@ describe("in Korean (ko-KR)", () => {
             "끝",
             "끝 위치 슬라이더",
             "토크",
-            "포트",
+            "출력",
           ]);
         }
         await expectTidy(page, "pose", viewport);
