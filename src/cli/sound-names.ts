@@ -4,7 +4,7 @@ import { SOUND_KINDS, type SoundKind, soundName } from "../i18n/sound-names/soun
 const ORDER: readonly SoundKind[] = ["long", "medium", "short", "blip"];
 
 /**
- * The built-in sounds by name, one name a line, for `rbc sound --help`: "  Long sound: 7, 8". The names are the
+ * The built-in sounds by name, one name a line, for `rbc sound --help`: "  Long: 7, 8". The names are the
  * catalogue's that the panel's sound buttons use (src/i18n/sound-names/).
  */
 export function soundList(locale: Locale): string {

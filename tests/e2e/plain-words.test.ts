@@ -207,7 +207,7 @@ describe("Servos: what it does for the robot first, the protocol's words one cli
 describe("Sounds have names as well as numbers", () => {
   it("names each sound button in English and Korean, and says the name while it plays", async () => {
     for (const [locale, seven, label, playing] of [
-      ["en-US", "7 Long sound 5.7 s", "Sound 7 Long sound 5.7 s", "Sound 7 (Long sound) is playing"],
+      ["en-US", "7 Long 5.7 s", "Sound 7 Long 5.7 s", "Sound 7 (Long) is playing"],
       ["ko-KR", "7 긴 소리 5.7초", "소리 7 긴 소리 5.7초", "소리 7번(긴 소리) 재생 중"],
     ] as const) {
       const { page, context } = await newLocalePage(app, locale, { options: FAST });

@@ -43,13 +43,13 @@ describe("sound names", () => {
   });
 
   it("say the names literally in both languages", () => {
-    expect(soundNamed(7, "en")).toBe("Sound 7: Long sound");
+    expect(soundNamed(7, "en")).toBe("Sound 7: Long");
     expect(soundNamed(7, "ko")).toBe("소리 7번: 긴 소리");
-    expect(soundNamed(1, "en")).toBe("Sound 1: Medium-length sound");
+    expect(soundNamed(1, "en")).toBe("Sound 1: Medium");
     expect(soundNamed(1, "ko")).toBe("소리 1번: 중간 길이 소리");
-    expect(soundNamed(3, "en")).toBe("Sound 3: Short sound");
+    expect(soundNamed(3, "en")).toBe("Sound 3: Short");
     expect(soundNamed(3, "ko")).toBe("소리 3번: 짧은 소리");
-    expect(soundNamed(25, "en")).toBe("Sound 25: Very short sound");
+    expect(soundNamed(25, "en")).toBe("Sound 25: Very short");
     expect(soundNamed(25, "ko")).toBe("소리 25번: 아주 짧은 소리");
     expect(soundNamed(26, "en")).toBeUndefined();
   });
@@ -64,14 +64,14 @@ describe("rbc sound", () => {
       runInProcess(["sound", "25", "--demo", "--json"], { env: ENGLISH }),
     ]);
     expect(en.code, en.stderr).toBe(0);
-    expect(en.stdout).toMatch(/^Playing sound 7, Long sound \(5671 ms\)…\nDone in 5\.\d s\.\n$/);
+    expect(en.stdout).toMatch(/^Playing sound 7 \(Long, 5671 ms\)…\nDone in 5\.\d s\.\n$/);
     expect(ko.code, ko.stderr).toBe(0);
-    expect(ko.stdout).toMatch(/^소리 3번\(짧은 소리\) 재생 중 \(832ms\)…\n/);
+    expect(ko.stdout).toMatch(/^소리 3번 재생 중 \(짧은 소리, 832ms\)…\n/);
     expect(json.code, json.stderr).toBe(0);
     expect(JSON.parse(json.stdout)).toMatchObject({
       ok: true,
       sound: 25,
-      name: "Very short sound",
+      name: "Very short",
       lengthMs: 371,
     });
   });
@@ -83,10 +83,10 @@ describe("rbc sound", () => {
     ]);
     expect(en.stdout).toContain(
       "The sounds are named by how long they play (their real names are not known):\n" +
-        "  Long sound: 7, 8\n" +
-        "  Medium-length sound: 1, 10, 13, 14\n" +
-        "  Short sound: 2, 3, 5, 9, 11, 12\n" +
-        "  Very short sound: 4, 6, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25\n",
+        "  Long: 7, 8\n" +
+        "  Medium: 1, 10, 13, 14\n" +
+        "  Short: 2, 3, 5, 9, 11, 12\n" +
+        "  Very short: 4, 6, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25\n",
     );
     expect(ko.stdout).toContain(
       "소리 이름은 재생 길이로 붙였어요 (실제 이름은 알려져 있지 않아요):\n" +

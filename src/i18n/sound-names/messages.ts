@@ -8,10 +8,10 @@ import { defineMessages } from "../catalogue.ts";
  * These names describe the length; they do not claim what the sound is.
  */
 export const soundNameMessages = defineMessages({
-  "sound.kind.blip": { en: "Very short sound", ko: "아주 짧은 소리" },
-  "sound.kind.short": { en: "Short sound", ko: "짧은 소리" },
-  "sound.kind.medium": { en: "Medium-length sound", ko: "중간 길이 소리" },
-  "sound.kind.long": { en: "Long sound", ko: "긴 소리" },
-  /** A button's or a line's full name: "Sound 7: Long sound". */
+  "sound.kind.blip": { en: "Very short", ko: "아주 짧은 소리" },
+  "sound.kind.short": { en: "Short", ko: "짧은 소리" },
+  "sound.kind.medium": { en: "Medium", ko: "중간 길이 소리" },
+  "sound.kind.long": { en: "Long", ko: "긴 소리" },
+  /** A button's or a line's full name: "Sound 7: Long". */
   "sound.named": { en: "Sound {sound}: {name}", ko: "소리 {sound}번: {name}" },
 });

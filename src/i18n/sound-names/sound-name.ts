@@ -6,7 +6,7 @@ import { soundNameMessages } from "./messages.ts";
 /**
  * What each built-in sound is called (sounds 1-25), in the words the panel and `rbc` share. The names come from
  * the sounds' lengths in docs/protocol.md §3.3 (no names are known, see messages.ts): under 0.5 s "very short",
- * under 1.1 s "short", under 3 s "medium-length", longer "long". tests/unit/sound-names.test.ts checks this
+ * under 1.1 s "short", under 3 s "medium", longer "long". tests/unit/sound-names.test.ts checks this
  * table against the lengths of src/protocol/catalog.ts.
  */
 export type SoundKind = "blip" | "short" | "medium" | "long";
@@ -55,13 +55,13 @@ const KIND_KEYS = {
   long: "sound.kind.long",
 } as const satisfies Record<SoundKind, KeysWithoutParams<typeof soundNameMessages>>;
 
-/** Sound `sound`'s name (1-25) in `locale`, "Long sound"; undefined for any other number. */
+/** Sound `sound`'s name (1-25) in `locale`, "Long" ("긴 소리"); undefined for any other number. */
 export function soundName(sound: number, locale: Locale): string | undefined {
   const kind = Number.isInteger(sound) ? SOUND_KINDS[sound - 1] : undefined;
   return kind === undefined ? undefined : translator(soundNameMessages, locale)(KIND_KEYS[kind]);
 }
 
-/** "Sound 7: Long sound" ("소리 7번: 긴 소리"); undefined for a number outside 1-25. */
+/** "Sound 7: Long" ("소리 7번: 긴 소리"); undefined for a number outside 1-25. */
 export function soundNamed(sound: number, locale: Locale): string | undefined {
   const name = soundName(sound, locale);
   return name === undefined

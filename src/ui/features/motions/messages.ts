@@ -532,7 +532,7 @@ export const motionsMessages = defineMessages({
     en: "One sound at a time. While a sound plays the robot handles nothing else. The sounds are named by how long they play (their real names are not known).",
     ko: "소리는 한 번에 하나씩 재생해요. 소리가 나는 동안 로봇은 다른 일을 하지 않아요. 소리 이름은 재생 길이로 붙였어요 (실제 이름은 알려져 있지 않아요).",
   },
-  /** Read before a sound button's number by a screen reader: "Sound 7 Long sound 5.7 s". */
+  /** Read before a sound button's number by a screen reader: "Sound 7 Long 5.7 s". */
   "motions.sound.buttonPrefix": { en: "Sound", ko: "소리" },
   "motions.sound.playing": { en: "Sound {sound} ({name}) is playing", ko: "소리 {sound}번({name}) 재생 중" },
   "motions.sound.progressLabel": { en: "Sound {sound}", ko: "소리 {sound}번" },

@@ -261,7 +261,7 @@ export function soundSection(ctx: ViewContext): TemplateResult {
     <section class="card" aria-labelledby="sound-title" data-testid="sound-card">
       <h2 id="sound-title" class="card-title">${t("motions.sound.title")}</h2>
       <p class="muted small">${t("motions.sound.intro")}</p>
-      <div class="motion-grid" data-testid="sound-grid">
+      <div class="sound-grid" data-testid="sound-grid">
         ${SOUND_LENGTHS_MS.map((ms, i) => {
           // The sound's name from the one catalogue of sound names (src/i18n/sound-names/), shared with `rbc sound`.
           const name = soundName(i + 1, locale) ?? "";
@@ -274,8 +274,7 @@ export function soundSection(ctx: ViewContext): TemplateResult {
           >
             <span class="sr-only">${t("motions.sound.buttonPrefix")}</span>
             <span class="motion-num num">${i + 1}</span>
-            <span class="motion-name">${name}</span>
-            <span class="motion-time num muted">${formatSeconds(ms, locale)}</span>
+            <span class="motion-name">${name} <span class="sound-time num muted">${formatSeconds(ms, locale)}</span></span>
           </button>`;
         })}
       </div>
