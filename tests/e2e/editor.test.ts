@@ -514,7 +514,7 @@ describe("in Korean (ko-KR)", () => {
             "끝",
             "끝 위치 슬라이더",
             "토크",
-            "포트",
+            "출력",
           ]);
         }
         await expectTidy(page, "pose", viewport);
@@ -527,7 +527,9 @@ describe("in Korean (ko-KR)", () => {
         // Scene: its fields, continuity, and frames closer than the RBC plays them.
         await showTab(page, "scene");
         await page.getByRole("heading", { level: 3, name: "장면 사이 이어짐" }).waitFor();
-        expect(await text(page, "boundary-start")).toBe("장면 0의 끝에서 시작해요 (서보 16개 모두 이어짐).");
+        expect(await text(page, "boundary-start")).toBe(
+          "장면 0의 끝에서 시작해요. 서보 16개 모두 부드럽게 이어져요.",
+        );
         const time = Number(await page.getByTestId("scene-time").inputValue());
         await typeInto(page, "scene-frames", String(time));
         await page.locator("#frames-problem").waitFor();

@@ -270,8 +270,10 @@ describe("in Korean (ko-KR)", () => {
         expect(await page.getByTestId("fw-lines").textContent().then(squash)).toBe(
           "1,025줄 (보낼 데이터 46,093바이트)",
         );
+        // Plain facts first; the address range, pages and lines under "기술 정보" (technical detail).
         expect(await page.getByTestId("fw-summary").locator("dt").allTextContents()).toEqual([
           "크기",
+          "파일에 적힌 버전",
           "주소 범위",
           "플래시 페이지",
           "줄 수",

@@ -58,7 +58,7 @@ describe("the panel in Korean", () => {
       "플랫폼",
       "오류 코드",
     ]);
-    expect(squash(await page.getByTestId("error-code").textContent())).toBe("오류 없음 (0xFF)");
+    expect(squash(await page.getByTestId("error-code").textContent())).toBe("오류 없음");
     expect(squash(await page.getByTestId("memory-motion-text").textContent())).toBe(
       "24,576바이트 중 0바이트 사용",
     );
@@ -93,7 +93,7 @@ describe("the panel in Korean", () => {
       "Robot",
     );
     expect(squash(await page.getByTestId("memory-motion-text").textContent())).toBe("0 of 24,576 bytes used");
-    expect(squash(await page.getByTestId("error-code").textContent())).toBe("No error (0xFF)");
+    expect(squash(await page.getByTestId("error-code").textContent())).toBe("No error");
     await expect.poll(() => page.title()).toBe("Robot · RBC Panel");
     expect(await keysShown(page)).toEqual([]);
 

@@ -156,7 +156,7 @@ describe("motions view: running motions and sounds", () => {
       "The robot does nothing else until the sound ends",
     );
     // The same length as on its button (5.7 s), not the robot's reply time (5.9 s with its 200 ms delay).
-    expect(await page.locator('[data-sound="7"]').textContent().then(squash)).toBe("7 5.7 s");
+    expect(await page.locator('[data-sound="7"]').textContent().then(squash)).toBe("Sound 7 Long 5.7 s");
     expect(await page.getByTestId("sound-time").textContent().then(squash)).toMatch(/ of 5\.7 s$/);
     expect(await inViewport(page, "sound-playing")).toBe(true);
     expect(await page.locator('[data-sound="2"]').isDisabled()).toBe(true);

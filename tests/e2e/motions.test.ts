@@ -90,8 +90,8 @@ describe("motions view", () => {
     expect(facts).toContain("RbcPanel_Wave");
     expect(facts).toMatch(/Scenes\s*6 Servos\s*16/);
     expect(facts).toMatch(/Plays for\s*3\.2 s/);
-    expect(facts).toMatch(/Image\s*624 bytes/);
-    expect(facts).toMatch(/On the robot\s*640 bytes/);
+    expect(facts).toMatch(/Sent to the robot\s*624 bytes/);
+    expect(facts).toMatch(/Memory it takes\s*640 bytes/);
     // The scene table and the chart (uPlot, loaded on demand).
     await page.getByTestId("scene-section").waitFor();
     expect(await page.locator(".scene-table tbody tr").count()).toBe(6);
@@ -283,8 +283,8 @@ describe("motions view", () => {
     fact("Scenes", motion.scenes.length);
     fact("Servos", motion.servos.length);
     fact("Plays for", formatSeconds(motionDurationMs(motion)));
-    fact("Image", `${image.length.toLocaleString("en-US")} bytes`);
-    fact("On the robot", `${memoryFootprint(image.length).toLocaleString("en-US")} bytes`);
+    fact("Sent to the robot", `${image.length.toLocaleString("en-US")} bytes`);
+    fact("Memory it takes", `${memoryFootprint(image.length).toLocaleString("en-US")} bytes`);
     expect(facts).toContain("Checked: no errors, no warnings.");
     expect(await page.locator(".scene-table tbody tr").count()).toBe(motion.scenes.length);
 
@@ -415,8 +415,8 @@ describe("in Korean (ko-KR)", () => {
           "장면",
           "서보",
           "재생 시간",
-          "이미지",
-          "로봇에서",
+          "로봇에 보낼 크기",
+          "차지할 메모리",
         ]);
         expect(await texts(card.locator(".file-facts dd"))).toEqual([
           "6",
@@ -576,7 +576,7 @@ describe("in Korean (ko-KR)", () => {
         await showTab(page, "sounds");
         const sounds = page.getByTestId("sound-card");
         expect(await text(sounds.getByRole("heading"))).toBe("소리");
-        await sounds.getByRole("button", { name: "소리 4, 0.4초" }).click();
+        await sounds.getByRole("button", { name: "소리 4 아주 짧은 소리 0.4초" }).click();
         await sounds.getByText("소리 4번을 재생했어요 (0.4초).").waitFor();
         await expectGood(page, "sounds", viewport);
         await context.close();

@@ -362,8 +362,8 @@ export const commandMessages = defineMessages({
 
   "cmd.sound.number": { en: "The sound number", ko: "소리 번호" },
   "cmd.sound.playing": {
-    en: "Playing sound {sound} ({length} ms)…",
-    ko: "소리 {sound} 재생 중 ({length}ms)…",
+    en: "Playing sound {sound} ({name}, {length} ms)…",
+    ko: "소리 {sound}번 재생 중 ({name}, {length}ms)…",
   },
   "cmd.sound.stoppedWaiting": {
     en: "stopped waiting; the robot plays the sound to the end. Wait until it ends before the next rbc command (the robot answers nothing while it plays).",

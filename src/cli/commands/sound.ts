@@ -1,4 +1,5 @@
 import { RbcCancelledError } from "../../device/errors.ts";
+import { soundName } from "../../i18n/sound-names/sound-name.ts";
 import { translator } from "../../i18n/translate.ts";
 import { formatSeconds } from "../../i18n/units.ts";
 import { SOUND_COUNT, soundLengthMs } from "../../protocol/catalog.ts";
@@ -26,7 +27,11 @@ export const soundCommand: CommandDef = {
     const robot = await connectRobot("sound", values, env, { handlesInterrupt: true });
     const started = robot.clock.now();
     // The length as the catalogue gives it (2300 ms), not grouped by thousands.
-    env.out.line(t("cmd.sound.playing", { sound: String(sound), length: String(soundLengthMs(sound)) }));
+    // Its name from the catalogue the panel's sound buttons use (src/i18n/sound-names/).
+    const name = soundName(sound, locale) ?? "";
+    env.out.line(
+      t("cmd.sound.playing", { sound: String(sound), name, length: String(soundLengthMs(sound)) }),
+    );
     try {
       await robot.client.runSound(sound, { signal: env.signal });
     } catch (e) {
@@ -38,7 +43,13 @@ export const soundCommand: CommandDef = {
       throw e;
     }
     const elapsedMs = Math.round(robot.clock.now() - started);
-    env.out.result({ ok: true, sound, lengthMs: soundLengthMs(sound), elapsedMs });
+    env.out.result({
+      ok: true,
+      sound,
+      name: soundName(sound, "en"),
+      lengthMs: soundLengthMs(sound),
+      elapsedMs,
+    });
     env.out.line(t("cmd.sound.done", { duration: formatSeconds(elapsedMs / 1000, locale) }));
     return EXIT.ok;
   },

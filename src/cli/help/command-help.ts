@@ -5,6 +5,7 @@ import type { CommandHelp } from "../command.ts";
 import { cliMessages } from "../messages.ts";
 import { builtInMotionList } from "../motion-names.ts";
 import { FAULT_KINDS } from "../sim-faults.ts";
+import { soundList } from "../sound-names.ts";
 import type { helpMessages } from "./messages.ts";
 
 /**
@@ -109,7 +110,7 @@ export const COMMAND_HELP = {
   }),
   sound: (t) => ({
     summary: t("cliHelp.sound.summary"),
-    description: t("cliHelp.sound.description"),
+    description: t("cliHelp.sound.description", { sounds: soundList(t.locale) }),
     options: [],
   }),
   sensors: (t) => ({

@@ -234,8 +234,8 @@ export const helpMessages = defineMessages({
     ko: "로봇에 들어 있는 소리 25개 중 하나 재생하기",
   },
   "cliHelp.sound.description": {
-    en: "Plays built-in sound N (1-25) and waits until the robot reports it finished (200 ms plus the sound's\nlength, 0.3 to 5.9 s). The RBC handles nothing else while a sound plays. Ctrl-C stops waiting (exit 130).",
-    ko: "내장 소리 N(1-25)을 재생하고 로봇이 끝났다고 알려 줄 때까지 기다려요 (200ms에 소리 길이를 더한\n0.3초-5.9초). 소리가 재생되는 동안 RBC는 다른 일을 하지 않아요. Ctrl-C는 기다리기를 멈춰요 (종료 코드 130).",
+    en: "Plays built-in sound N (1-25) and waits until the robot reports it finished (200 ms plus the sound's\nlength, 0.3 to 5.9 s). The RBC handles nothing else while a sound plays. Ctrl-C stops waiting (exit 130).\n\nThe sounds are named by how long they play (their real names are not known):\n{sounds}",
+    ko: "내장 소리 N(1-25)을 재생하고 로봇이 끝났다고 알려 줄 때까지 기다려요 (200ms에 소리 길이를 더한\n0.3초-5.9초). 소리가 재생되는 동안 RBC는 다른 일을 하지 않아요. Ctrl-C는 기다리기를 멈춰요 (종료 코드 130).\n\n소리 이름은 재생 길이로 붙였어요 (실제 이름은 알려져 있지 않아요):\n{sounds}",
   },
 
   "cliHelp.sensors.summary": {

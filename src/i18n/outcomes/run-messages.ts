@@ -27,8 +27,8 @@ export const runOutcomeMessages = defineMessages({
     ko: "모션 {motion}은(는) 재생되지 않았어요. 로봇이 이미 다른 곳에서 시작한 모션을 재생하고 있었고, {elapsed} 뒤의 응답은 그 모션이 끝났다는 뜻이에요 (로봇은 마지막으로 받은 번호로 응답해요).",
   },
   "outcome.run.stoppedBusy": {
-    en: "The motion that was playing ended at the end of its scene (the robot confirmed with 07 after {elapsed}); the robot holds that pose. Basic posture was not played.",
-    ko: "재생 중이던 모션이 현재 장면이 끝날 때 멈췄어요 ({elapsed} 뒤에 로봇이 07로 확인했어요). 로봇은 그 자세를 유지해요. 기본 자세는 재생되지 않았어요.",
+    en: "The motion that was playing ended at the end of its scene (the robot said so after {elapsed}); the robot holds that pose. Basic posture was not played.",
+    ko: "재생 중이던 모션이 현재 장면이 끝날 때 멈췄어요 ({elapsed} 뒤에 로봇이 알려 줬어요). 로봇은 그 자세를 유지해요. 기본 자세는 재생되지 않았어요.",
   },
   "outcome.run.unknownDuration": {
     en: "The robot replied after {elapsed}. How long motion {motion} takes is not known, so what played is not known.",

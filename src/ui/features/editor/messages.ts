@@ -111,10 +111,10 @@ export const editorMessages = defineMessages({
   // ---- Pose table --------------------------------------------------------------------------------------
   "editor.pose.columns": { en: "Columns of the pose table", ko: "자세 표의 열" },
   "editor.pose.columnsEnd": { en: "End pose", ko: "끝 자세" },
-  "editor.pose.columnsMore": { en: "Start, torque, port", ko: "시작, 토크, 포트" },
+  "editor.pose.columnsMore": { en: "Start, torque, outputs", ko: "시작, 토크, 출력" },
   "editor.pose.caption": {
-    en: "Scene {scene}: each servo's start and end position (0 to 254), torque (0 strong to 4 weak) and port value",
-    ko: "장면 {scene}: 서보마다 시작 위치와 끝 위치(0~254), 토크(0 강함 ~ 4 약함), 포트 값",
+    en: "Scene {scene}: each servo's start and end position (0 to 254), torque (0 strong to 4 weak) and its two extra outputs (the port value, 0 to 3)",
+    ko: "장면 {scene}: 서보마다 시작 위치와 끝 위치(0~254), 토크(0 강함 ~ 4 약함), 추가 출력 두 개(포트 값, 0~3)",
   },
   "editor.pose.id": { en: "ID", ko: "ID" },
   "editor.pose.joint": { en: "Joint", ko: "관절" },
@@ -123,7 +123,7 @@ export const editorMessages = defineMessages({
   "editor.pose.endSlider": { en: "End slider", ko: "끝 위치 슬라이더" },
   "editor.pose.torque": { en: "Torque", ko: "토크" },
   "editor.pose.torqueScale": { en: "0 strong to 4 weak", ko: "0 강함 ~ 4 약함" },
-  "editor.pose.port": { en: "Port", ko: "포트" },
+  "editor.pose.port": { en: "Outputs", ko: "출력" },
   "editor.pose.startLabel": {
     en: "{joint} (servo {id}), start position",
     ko: "{joint} (서보 {id}), 시작 위치",
@@ -137,7 +137,10 @@ export const editorMessages = defineMessages({
     en: "Torque of {joint} (0 strong to 4 weak)",
     ko: "{joint} 토크 (0 강함 ~ 4 약함)",
   },
-  "editor.pose.portLabel": { en: "Port value of {joint}", ko: "{joint} 포트 값" },
+  "editor.pose.portLabel": {
+    en: "Extra outputs of {joint}, for add-ons such as lights: 0 off, 1 or 2 one on, 3 both on (port value)",
+    ko: "{joint}의 추가 출력(조명 같은 부품용): 0 꺼짐, 1·2 하나 켜짐, 3 둘 다 켜짐 (포트 값)",
+  },
   "editor.pose.jumps": { en: "jumps: the scene before ends at", ko: "건너뜀: 앞 장면의 끝 위치는" },
   "editor.pose.unsafeStart": {
     en: "Start {value} is outside the safe range {min}–{max}.",
@@ -163,8 +166,8 @@ export const editorMessages = defineMessages({
     ko: "모션의 첫 자세(장면 0의 시작)에서 시작해요.",
   },
   "editor.continuity.startsJoined": {
-    en: "Starts where scene {scene} ends (all {servos} servos joined).",
-    ko: "장면 {scene}의 끝에서 시작해요 (서보 {servos}개 모두 이어짐).",
+    en: "Starts where scene {scene} ends: all {servos} servos carry on smoothly.",
+    ko: "장면 {scene}의 끝에서 시작해요. 서보 {servos}개 모두 부드럽게 이어져요.",
   },
   "editor.continuity.startsJumps": {
     en: {
@@ -180,8 +183,8 @@ export const editorMessages = defineMessages({
     ko: "마지막 장면이에요. 모션은 이 장면의 끝 자세로 끝나요.",
   },
   "editor.continuity.nextJoined": {
-    en: "Scene {scene} starts where this one ends (all {servos} servos joined).",
-    ko: "장면 {scene}은(는) 이 장면의 끝에서 시작해요 (서보 {servos}개 모두 이어짐).",
+    en: "Scene {scene} starts where this one ends: all {servos} servos carry on smoothly.",
+    ko: "장면 {scene}은(는) 이 장면의 끝에서 시작해요. 서보 {servos}개 모두 부드럽게 이어져요.",
   },
   "editor.continuity.nextJumps": {
     en: {
@@ -191,8 +194,8 @@ export const editorMessages = defineMessages({
     ko: "장면 {scene}은(는) 이 장면의 끝에서 시작해요. 단, 서보 {count}개는 달라요.",
   },
   "editor.continuity.about": {
-    en: "Joined: changing a start also moves the end of the scene before, and changing an end also moves the start of the scene after, so the motion stays smooth. Detached: only the side you change moves (the servo then jumps).",
-    ko: "이어짐: 시작 위치를 바꾸면 앞 장면의 끝도, 끝 위치를 바꾸면 뒤 장면의 시작도 함께 바뀌어서 모션이 부드럽게 이어져요. 분리: 바꾼 쪽만 바뀌어요 (그러면 서보가 건너뛰어요).",
+    en: "The robot moves smoothly from one scene into the next: changing where a scene starts also changes where the scene before ends, and changing an end also changes the next start. Detach a scene to change only one side; that servo then jumps between the scenes.",
+    ko: "로봇은 한 장면에서 다음 장면으로 부드럽게 이어서 움직여요. 장면의 시작 위치를 바꾸면 앞 장면의 끝도, 끝 위치를 바꾸면 다음 장면의 시작도 함께 바뀌어요. 한쪽만 바꾸려면 장면을 분리해 주세요. 그러면 그 서보는 장면 사이에서 건너뛰어요.",
   },
 
   // ---- Tools -------------------------------------------------------------------------------------------
@@ -491,7 +494,7 @@ export const editorMessages = defineMessages({
   "editor.what.time": { en: "Scene {scene}: the time in ms", ko: "장면 {scene}의 시간" },
   "editor.what.duration": { en: "The duration", ko: "전체 시간" },
   "editor.what.torque": { en: "The torque of {joint}", ko: "{joint}의 토크" },
-  "editor.what.port": { en: "The port value of {joint}", ko: "{joint}의 포트 값" },
+  "editor.what.port": { en: "The extra outputs of {joint}", ko: "{joint}의 추가 출력" },
   "editor.what.sceneTorque": { en: "The torque of scene {scene}", ko: "장면 {scene}의 토크" },
   "editor.what.sceneName": { en: "The scene name", ko: "장면 이름" },
   "editor.what.motionName": { en: "The motion name", ko: "모션 이름" },
@@ -608,8 +611,16 @@ export const editorMessages = defineMessages({
     ko: "로봇을 잡아 주세요. 고른 서보의 힘이 빠져요.",
   },
   "editor.teach.questionDetail": {
-    en: "The controller enters servo control. Servos holding their position keep holding until you make some limp; a servo made limp earlier (Limp, the Servos view, an earlier teach-in) stays limp.",
-    ko: "컨트롤러가 서보 제어를 시작해요. 제자리를 유지하는 서보는 힘을 빼기 전까지 계속 유지해요. 전에 힘을 뺀 서보(힘 빼기, 서보 화면, 이전 티칭)는 계속 힘이 빠져 있어요.",
+    en: "The servos keep doing what they do now: as far as the panel knows, all 16 hold their position until you make some limp. A servo made limp outside this panel (for example with rbc limp) stays limp; the panel cannot see that.",
+    ko: "서보는 지금 하던 대로 있어요. 패널이 아는 한 서보 16개 모두 힘을 빼기 전까지 제자리를 유지해요. 이 패널 밖에서 힘을 뺀 서보(예: rbc limp)는 계속 힘이 빠져 있고, 패널은 그것을 알 수 없어요.",
+  },
+  "editor.teach.questionDetailOneLimp": {
+    en: "The servos keep doing what they do now: {limp} was made limp earlier and has not confirmed holding since, so it stays limp; {holding} hold their position until you make some limp.",
+    ko: "서보는 지금 하던 대로 있어요. {limp}은(는) 전에 힘을 뺀 뒤 다시 힘을 준다고 확인하지 않아서 계속 힘이 빠져 있어요. {holding}은(는) 힘을 빼기 전까지 제자리를 유지해요.",
+  },
+  "editor.teach.questionDetailSomeLimp": {
+    en: "The servos keep doing what they do now: {limp} were made limp earlier and have not confirmed holding since, so they stay limp; {holding} hold their position until you make some limp.",
+    ko: "서보는 지금 하던 대로 있어요. {limp}은(는) 전에 힘을 뺀 뒤 다시 힘을 준다고 확인하지 않아서 계속 힘이 빠져 있어요. {holding}은(는) 힘을 빼기 전까지 제자리를 유지해요.",
   },
   "editor.teach.questionDetailLimp": {
     en: "The controller stays in servo control. Every servo is limp now (Limp was pressed) and stays limp until you press Hold: the robot cannot stand by itself.",
@@ -695,8 +706,8 @@ export const editorMessages = defineMessages({
     ko: "티칭을 켰어요 (서보 제어). 모든 서보의 힘이 빠져 있어요 (힘 빼기). 로봇을 잡고 자세를 잡은 다음, 자세를 읽거나 고정을 눌러 주세요.",
   },
   "editor.teach.on": {
-    en: "Teach-in is on (servo control): choose the limbs to pose by hand and press Make limp. Every servo holds until then.",
-    ko: "티칭을 켰어요 (서보 제어). 손으로 자세를 잡을 팔다리를 고르고 힘 빼기를 눌러 주세요. 그때까지 모든 서보가 제자리를 유지해요.",
+    en: "Teach-in is on (servo control): choose the limbs to pose by hand and press Make limp. Until then the servos that were holding keep holding.",
+    ko: "티칭을 켰어요 (서보 제어). 손으로 자세를 잡을 팔다리를 고르고 힘 빼기를 눌러 주세요. 그때까지 제자리를 유지하던 서보는 계속 유지해요.",
   },
   "editor.teach.onSilentOne": {
     en: "Teach-in is on, but servo {ids} did not answer: check its cable.",

@@ -113,10 +113,10 @@ export async function endTeachIn(ctx: AppContext): Promise<void> {
       ? `${holdNotice(held.held, held.silent, false, t.locale).text} `
       : "";
   const ended = held.silent.length > 0 ? t("editor.teach.ended") : t("editor.teach.endedHolding");
+  // `passive` keeps the servos that did not answer Hold (holdLimp removed the held ones): they may still be limp.
   patchTeachIn(store, {
     phase: "off",
     busy: undefined,
-    passive: [],
     notice: { tone: held.silent.length > 0 ? "warning" : "ok", text: `${heldText}${ended}` },
   });
 }

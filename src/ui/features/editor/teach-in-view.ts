@@ -38,6 +38,21 @@ export function escapeTo(cancel: () => void): (e: KeyboardEvent) => void {
   };
 }
 
+/**
+ * What the robot will actually do when teach-in starts: which servos hold and which stay limp. Teach-in makes
+ * no servo hold: servos made limp earlier stay limp (all of them after Limp; those this teach-in knows of).
+ */
+function questionDetail(ctx: ViewContext, w: EditorTranslator, t: TeachInState): string {
+  if (ctx.state.connection.limp) return w("editor.teach.questionDetailLimp");
+  const limp = t.passive;
+  if (limp.length === 0) return w("editor.teach.questionDetail");
+  const holding = HUNO_SERVO_IDS.filter((id) => !limp.includes(id));
+  const servos = { limp: servosText(w, limp), holding: servosText(w, holding) };
+  return limp.length === 1
+    ? w("editor.teach.questionDetailOneLimp", servos)
+    : w("editor.teach.questionDetailSomeLimp", servos);
+}
+
 function startBlock(
   ctx: ViewContext,
   w: EditorTranslator,
@@ -55,14 +70,7 @@ function startBlock(
         @keydown=${escapeTo(() => cancelTeachIn(ctx))}
       >
         <p id="teach-in-question"><strong>${w("editor.teach.question")}</strong></p>
-        <p class="small" data-testid="teach-in-detail">
-          ${
-            // What the robot will actually do: servos made limp before stay limp (teach-in holds none).
-            ctx.state.connection.limp
-              ? w("editor.teach.questionDetailLimp")
-              : w("editor.teach.questionDetail")
-          }
-        </p>
+        <p class="small" data-testid="teach-in-detail">${questionDetail(ctx, w, t)}</p>
         <div class="actions">
           <button type="button" class="btn btn--primary" id="confirm-teach-in" @click=${() => void startTeachIn(ctx)}>
             ${w("editor.teach.start")}

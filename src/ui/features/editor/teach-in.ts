@@ -74,10 +74,10 @@ export async function startTeachIn(ctx: AppContext): Promise<void> {
   const client = session.current;
   if (!client) return;
   const t = words(ctx);
+  // `passive` is kept: servos an earlier teach-in made limp and could not hold again are still limp.
   patchTeachIn(store, {
     phase: "starting",
     notice: undefined,
-    passive: [],
     silent: [],
     confirmingAll: false,
   });

@@ -17,6 +17,7 @@ import { errorNotice, technicalDetail } from "../../error-text.ts";
 import { focusSoon } from "../../focus.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
 import { choosePort, webSerial } from "../../serial-ports.ts";
+import { declaredVersion } from "./declared-version.ts";
 import { hexProblem, tooLargeProblem } from "./file-problem.ts";
 import { firmwareMessages } from "./messages.ts";
 import { type FirmwareFile, type FirmwareRun, firmwareOf, patchFirmware } from "./state.ts";
@@ -60,7 +61,7 @@ export function openFirmwareText(ctx: AppContext, fileName: string, text: string
   if (firmwareOf(ctx.store.get()).run) return;
   try {
     const image = parseIntelHex(text);
-    const file: FirmwareFile = { fileName, fileBytes, image };
+    const file: FirmwareFile = { fileName, fileBytes, image, declared: declaredVersion(image) };
     patchFirmware(ctx.store, { file, fileProblem: undefined, result: undefined, loadingFile: false });
   } catch (e) {
     patchFirmware(ctx.store, {
@@ -124,11 +125,25 @@ export function closeFirmwareFile(ctx: AppContext): void {
 export function askToFlash(ctx: AppContext, recovery = false): void {
   const f = firmwareOf(ctx.store.get());
   if (!f.file || f.run) return;
+  // Recover always writes to a real robot's port; an update, unless the robot connected is the demo robot.
+  const demoRobot = !recovery && ctx.store.get().connection.robot?.kind === "demo";
+  const demoFileOnRealRobot = f.file.declared !== undefined && !demoRobot;
   patchFirmware(ctx.store, {
-    run: { step: "confirming", fileName: f.file.fileName, recovery },
+    run: { step: "confirming", fileName: f.file.fileName, recovery, demoFileOnRealRobot },
     result: undefined,
   });
-  focusSoon("confirm-flash");
+  focusSoon(demoFileOnRealRobot ? "accept-demo-file" : "confirm-flash");
+}
+
+/** The tick under a demo file's warning: "I understand: the robot will not work until real firmware is written". */
+export function acceptDemoFile(ctx: AppContext, accepted: boolean): void {
+  const run = firmwareOf(ctx.store.get()).run;
+  if (run?.step === "confirming") patchFirmware(ctx.store, { run: { ...run, demoFileAccepted: accepted } });
+}
+
+/** A demo file is written to a real robot only after its warning was ticked. */
+function mayWrite(run: FirmwareRun): boolean {
+  return run.demoFileOnRealRobot !== true || run.demoFileAccepted === true;
 }
 
 export function cancelConfirm(ctx: AppContext): void {
@@ -180,7 +195,7 @@ export async function startFlash(ctx: AppContext): Promise<void> {
   const { store, session } = ctx;
   const f = firmwareOf(store.get());
   const file = f.file;
-  if (!file || f.run?.step !== "confirming") return;
+  if (!file || f.run?.step !== "confirming" || !mayWrite(f.run)) return;
   const { locale } = store.get();
   const t = translator(firmwareMessages, locale);
   if (f.run.recovery) {
@@ -256,7 +271,7 @@ export async function startRecovery(ctx: AppContext): Promise<void> {
   const f = firmwareOf(store.get());
   const file = f.file;
   const serial = webSerial();
-  if (!file || !serial) return;
+  if (!file || !serial || (f.run && !mayWrite(f.run))) return;
   const { locale } = store.get();
   const t = translator(firmwareMessages, locale);
   if (store.get().connection.phase !== "disconnected") {

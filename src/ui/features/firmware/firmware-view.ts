@@ -7,9 +7,11 @@ import { ATMEGA128 } from "../../../protocol/intel-hex.ts";
 import { formatFirmware } from "../../../shared/format.ts";
 import type { AppState } from "../../app-state.ts";
 import { formatBytes } from "../../format.ts";
+import { shellMessages } from "../../shell/messages.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
 import {
+  acceptDemoFile,
   askToFlash,
   cancelConfirm,
   closeFirmwareFile,
@@ -95,6 +97,10 @@ function fileSection(ctx: ViewContext, t: FirmwareTranslator): TemplateResult {
   `;
 }
 
+/**
+ * What the file is, in plain words first (its size, the version it states, whether it was checked), then the
+ * technical detail one click away: the address range, the flash pages, the lines and the checks by name.
+ */
 function summary(ctx: ViewContext, t: FirmwareTranslator, file: FirmwareFile, busy: boolean): TemplateResult {
   const m = file.image.summary;
   return html`
@@ -109,26 +115,57 @@ function summary(ctx: ViewContext, t: FirmwareTranslator, file: FirmwareFile, bu
           <dd class="num" data-testid="fw-size">${formatBytes(m.bytes, t.locale)}</dd>
         </div>
         <div>
-          <dt>${t("firmware.addressRange")}</dt>
-          <dd class="num" data-testid="fw-range">${address(m.firstAddress)}–${address(m.lastAddress)}</dd>
-        </div>
-        <div>
-          <dt>${t("firmware.flashPages")}</dt>
-          <dd class="num" data-testid="fw-pages">
-            ${t("firmware.pagesOf", { count: m.pages, size: ATMEGA128.pageBytes })}
-          </dd>
-        </div>
-        <div>
-          <dt>${t("firmware.lines")}</dt>
-          <dd class="num" data-testid="fw-lines">
-            ${t("firmware.linesToSend", { lines: m.lines, bytes: m.wireBytes })}
+          <dt>${t("firmware.declared")}</dt>
+          <dd class="num" data-testid="fw-declared">
+            ${file.declared ? formatFirmware(file.declared) : t("firmware.notStated")}
           </dd>
         </div>
       </dl>
-      <p class="muted">${t("firmware.checked", { boot: address(ATMEGA128.bootSectionStart) })}</p>
+      ${file.declared ? demoMarkNotice(ctx, t, file.declared) : nothing}
+      <p class="muted" data-testid="fw-checked">${t("firmware.checkedPlain")}</p>
+      <details class="detail fw-detail" data-testid="fw-detail">
+        <summary>${translator(shellMessages, t.locale)("shell.technicalDetail")}</summary>
+        <dl class="fw-facts">
+          <div>
+            <dt>${t("firmware.addressRange")}</dt>
+            <dd class="num" data-testid="fw-range">${address(m.firstAddress)}–${address(m.lastAddress)}</dd>
+          </div>
+          <div>
+            <dt>${t("firmware.flashPages")}</dt>
+            <dd class="num" data-testid="fw-pages">
+              ${t("firmware.pagesOf", { count: m.pages, size: ATMEGA128.pageBytes })}
+            </dd>
+          </div>
+          <div>
+            <dt>${t("firmware.lines")}</dt>
+            <dd class="num" data-testid="fw-lines">
+              ${t("firmware.linesToSend", { lines: m.lines, bytes: m.wireBytes })}
+            </dd>
+          </div>
+        </dl>
+        <p class="muted small">${t("firmware.checked", { boot: address(ATMEGA128.bootSectionStart) })}</p>
+      </details>
       <button type="button" class="btn btn--quiet" ?disabled=${busy} @click=${() => closeFirmwareFile(ctx)}>
         ${t("firmware.closeFile")}
       </button>
+    </div>
+  `;
+}
+
+/** A file with the demo mark: fine on the demo robot; on a real one it would leave the robot without firmware. */
+function demoMarkNotice(
+  ctx: ViewContext,
+  t: FirmwareTranslator,
+  version: { major: number; minor: number },
+): TemplateResult {
+  const onDemo = isDemo(ctx.state) && connected(ctx.state);
+  return html`
+    <div class="notice ${onDemo ? "notice--info" : "notice--warning"}" data-testid="fw-demo-mark">
+      <p><strong>${t("firmware.demoMark.title")}</strong></p>
+      <p>
+        ${t("firmware.demoMark.text", { mark: `RBCFW ${formatFirmware(version)}` })}
+        ${onDemo ? t("firmware.demoMark.fineOnDemo") : t("firmware.demoMark.notOnReal")}
+      </p>
     </div>
   `;
 }
@@ -160,12 +197,38 @@ function confirmBlock(ctx: ViewContext, t: FirmwareTranslator, run: FirmwareRun)
         ${t("firmware.whatComesNext")}
       </p>
       ${run.recovery ? html`<p>${t("firmware.browserAsksPort")}</p>` : nothing}
+      ${run.demoFileOnRealRobot ? demoFileQuestion(ctx, t, run) : nothing}
       <div class="actions">
-        <button type="button" class="btn btn--primary" id="confirm-flash" @click=${() => void startFlash(ctx)}>
+        <button
+          type="button"
+          class="btn btn--primary"
+          id="confirm-flash"
+          ?disabled=${run.demoFileOnRealRobot === true && run.demoFileAccepted !== true}
+          @click=${() => void startFlash(ctx)}
+        >
           ${run.recovery ? t("firmware.choosePortAndUpdate") : t("firmware.update")}
         </button>
         <button type="button" class="btn" @click=${() => cancelConfirm(ctx)}>${t("firmware.cancel")}</button>
       </div>
+    </div>
+  `;
+}
+
+/** The extra question before a demo file is written to a real robot: a tick that says what will happen. */
+function demoFileQuestion(ctx: ViewContext, t: FirmwareTranslator, run: FirmwareRun): TemplateResult {
+  return html`
+    <div class="notice notice--danger" data-testid="fw-demo-confirm">
+      <p><strong>${t("firmware.demoMark.confirmLead", { file: run.fileName })}</strong></p>
+      <p>${t("firmware.demoMark.confirmText")}</p>
+      <label class="check">
+        <input
+          type="checkbox"
+          id="accept-demo-file"
+          .checked=${run.demoFileAccepted === true}
+          @change=${(e: Event) => acceptDemoFile(ctx, (e.target as HTMLInputElement).checked)}
+        />
+        ${t("firmware.demoMark.accept")}
+      </label>
     </div>
   `;
 }

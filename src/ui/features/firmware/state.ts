@@ -17,6 +17,12 @@ export interface FirmwareFile {
   image: IntelHexImage;
   /** The demo firmware (2.50) the panel made, rather than a file of this computer. */
   demo?: boolean;
+  /**
+   * The version the file states with the mark of this project's demo and test files (`declaredVersion`);
+   * undefined: the file states none, as real firmware does. A file with the mark is not firmware a real robot
+   * can run.
+   */
+  declared?: { major: number; minor: number };
 }
 
 export type FirmwareStep =
@@ -39,6 +45,12 @@ export interface FirmwareRun {
   cancelling?: boolean;
   /** The update runs on a bare port (Recover), not on the connected robot. */
   recovery?: boolean;
+  /**
+   * The file carries the demo mark and the robot is not the demo robot: the confirmation warns, and the update
+   * starts only once the person has ticked that they understand (`demoFileAccepted`).
+   */
+  demoFileOnRealRobot?: boolean;
+  demoFileAccepted?: boolean;
 }
 
 export interface FirmwareState {

@@ -83,8 +83,10 @@ export const motionsMessages = defineMessages({
   "motions.files.scenes": { en: "Scenes", ko: "장면" },
   "motions.files.servos": { en: "Servos", ko: "서보" },
   "motions.files.playsFor": { en: "Plays for", ko: "재생 시간" },
-  "motions.files.image": { en: "Image", ko: "이미지" },
-  "motions.files.onRobot": { en: "On the robot", ko: "로봇에서" },
+  // What the robot receives (the motion image, docs/protocol.md §6.3) and the memory it then takes (whole
+  // 64-byte chunks, §6.2), in plain words.
+  "motions.files.image": { en: "Sent to the robot", ko: "로봇에 보낼 크기" },
+  "motions.files.onRobot": { en: "Memory it takes", ko: "차지할 메모리" },
   "motions.files.bytes": { en: "{bytes} bytes", ko: "{bytes}바이트" },
   "motions.files.unusable": {
     en: "This file cannot be used as a motion.",
@@ -527,11 +529,12 @@ export const motionsMessages = defineMessages({
 
   "motions.sound.title": { en: "Sounds", ko: "소리" },
   "motions.sound.intro": {
-    en: "One sound at a time. While a sound plays the robot handles nothing else.",
-    ko: "소리는 한 번에 하나씩 재생해요. 소리가 나는 동안 로봇은 다른 일을 하지 않아요.",
+    en: "One sound at a time. While a sound plays the robot handles nothing else. The sounds are named by how long they play (their real names are not known).",
+    ko: "소리는 한 번에 하나씩 재생해요. 소리가 나는 동안 로봇은 다른 일을 하지 않아요. 소리 이름은 재생 길이로 붙였어요 (실제 이름은 알려져 있지 않아요).",
   },
-  "motions.sound.buttonLabel": { en: "Sound {sound}, {time}", ko: "소리 {sound}, {time}" },
-  "motions.sound.playing": { en: "Sound {sound} is playing", ko: "소리 {sound}번 재생 중" },
+  /** Read before a sound button's number by a screen reader: "Sound 7 Long 5.7 s". */
+  "motions.sound.buttonPrefix": { en: "Sound", ko: "소리" },
+  "motions.sound.playing": { en: "Sound {sound} ({name}) is playing", ko: "소리 {sound}번({name}) 재생 중" },
   "motions.sound.progressLabel": { en: "Sound {sound}", ko: "소리 {sound}번" },
   "motions.sound.busyNote": {
     en: "The robot does nothing else until the sound ends, so the other robot actions are disabled meanwhile.",

@@ -2,7 +2,7 @@ import { html, nothing, type TemplateResult } from "lit-html";
 import { translator } from "../../../i18n/translate.ts";
 import { ACTION_AREA_BYTES, MOTION_AREA_BYTES, NO_ERROR } from "../../../protocol/catalog.ts";
 import { formatFirmware } from "../../../shared/format.ts";
-import { formatByteHex, formatTime } from "../../format.ts";
+import { formatTime } from "../../format.ts";
 import { shellMessages } from "../../shell/messages.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
@@ -64,7 +64,8 @@ function errorCodeWords(t: RobotTranslator, code: number): string {
 function errorCodeLine(t: RobotTranslator, code: number | undefined): TemplateResult | string {
   if (code === undefined) return "—";
   const sentence = errorCodeWords(t, code);
-  if (code === NO_ERROR) return html`${sentence} <span class="muted">(${formatByteHex(code)})</span>`;
+  // "No error" in plain words; the code itself (FF) is in the packet log, one click away.
+  if (code === NO_ERROR) return sentence;
   return html`<span class="text-warning">${sentence}</span>
     <span class="muted">${t("robot.codeNumber", { code: String(code) })}</span>`;
 }

@@ -43,7 +43,10 @@ export const sensorsMessages = defineMessages({
   },
   "sensors.accelerometer": { en: "Accelerometer", ko: "가속도 센서" },
   "sensors.accelValue": { en: "X {x} · Y {y} · Z {z}", ko: "X {x} · Y {y} · Z {z}" },
-  "sensors.accelHint": { en: "raw readings, signed", ko: "센서가 보낸 값 그대로 (부호 있음)" },
+  "sensors.accelHint": {
+    en: "how the robot tilts and shakes, in the sensor's own units (the numbers change as it moves)",
+    ko: "로봇이 기울고 흔들리는 정도, 센서 자체 단위 (로봇이 움직이면 숫자가 바뀌어요)",
+  },
   "sensors.distanceCaption": { en: "Distance (cm), last 30 s", ko: "거리 (cm), 최근 30초" },
   "sensors.accelCaption": { en: "Accelerometer X, Y, Z, last 30 s", ko: "가속도 X, Y, Z, 최근 30초" },
 

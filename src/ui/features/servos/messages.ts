@@ -1,12 +1,16 @@
 import { defineMessages } from "../../../i18n/catalogue.ts";
 import type { Translator } from "../../../i18n/translate.ts";
 
-/** The Servos view: direct mode, single servos within their safe ranges, the basic posture. */
+/**
+ * The Servos view: servo control (the controller's direct mode), single servos within their safe ranges, the
+ * basic posture. Plain words first; the protocol's words (direct mode, wCK, synchronised move) are in the
+ * technical detail, one click away.
+ */
 export const servosMessages = defineMessages({
   "servos.title": { en: "Servos", ko: "서보" },
   "servos.intro": {
-    en: "Read and move single servos within their safe ranges, in the controller's direct mode.",
-    ko: "컨트롤러의 서보 제어(직접 모드)에서 서보를 하나씩 안전 범위 안에서 읽고 움직여요.",
+    en: "Move the robot's joints one at a time, each only within its safe range, and see where each one is.",
+    ko: "로봇의 관절을 하나씩, 각 관절의 안전 범위 안에서만 움직이고 지금 어디에 있는지 봐요.",
   },
 
   // Before you move servos
@@ -62,6 +66,14 @@ export const servosMessages = defineMessages({
     en: "Servo control is off. Start it to read and move single servos; the controller then does nothing else until you leave it.",
     ko: "서보 제어가 꺼져 있어요. 서보를 하나씩 읽고 움직이려면 시작해 주세요. 그동안 컨트롤러는 다른 일을 하지 않아요.",
   },
+  "servos.detail.control": {
+    en: "Servo control is the controller's direct mode: the RBC passes the wCK commands of this page straight to the servo bus and understands no RBC packet until the page sends the exit bytes FF E0 FB 01 00 1A.",
+    ko: "서보 제어는 컨트롤러의 직접 모드예요. RBC가 이 페이지의 wCK 명령을 서보 버스에 바로 전하고, 페이지가 끝내는 바이트 FF E0 FB 01 00 1A를 보낼 때까지 RBC 패킷을 알아듣지 못해요.",
+  },
+  "servos.detail.posture": {
+    en: "The basic posture is one wCK synchronised move (all {count} positions in one command): the servos do not answer it, so the panel reads them afterwards only when asked.",
+    ko: "기본 자세는 wCK 동시 이동 명령 하나(위치 {count}개를 한 번에)예요. 서보는 이 명령에 응답하지 않아서, 패널은 요청할 때만 위치를 다시 읽어요.",
+  },
   "servos.positionsReadAt": { en: "Positions read at {time}.", ko: "위치는 {time}에 읽었어요." },
   "servos.resultLabel": { en: "Servo result", ko: "서보 결과" },
   "servos.table.caption": {
@@ -78,8 +90,8 @@ export const servosMessages = defineMessages({
   // The basic posture
   "servos.posture.title": { en: "Basic posture", ko: "기본 자세" },
   "servos.posture.intro": {
-    en: "Moves all {count} servos together to the HUNO's basic posture (a synchronised move).",
-    ko: "서보 {count}개를 모두 함께 HUNO의 기본 자세로 움직여요 (동시 이동).",
+    en: "Moves all {count} joints at once into the HUNO's basic posture, standing straight.",
+    ko: "관절 {count}개를 한꺼번에 움직여 HUNO의 기본 자세(똑바로 선 자세)로 만들어요.",
   },
   "servos.posture.confirm": {
     en: "All {count} servos move to the basic posture at speed {speed}. Hold the robot.",

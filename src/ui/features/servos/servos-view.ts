@@ -4,6 +4,7 @@ import { live } from "lit-html/directives/live.js";
 import { translator } from "../../../i18n/translate.ts";
 import { formatClockTime } from "../../format.ts";
 import { liveRobotPanel } from "../../robot3d/live-robot.ts";
+import { shellMessages } from "../../shell/messages.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
 import { jointName, sidesNote } from "../zeros/joints/joint-name.ts";
@@ -188,6 +189,7 @@ function controlCard(ctx: ViewContext, t: ServosTranslator): TemplateResult {
         ${direct ? (c.limp ? t("servos.mode.limp") : t("servos.mode.on")) : t("servos.mode.off")}
         ${s.readAt ? t("servos.positionsReadAt", { time: formatClockTime(s.readAt) }) : ""}
       </p>
+      ${technicalDetail(t, [t("servos.detail.control"), t("servos.detail.posture", { count: SERVO_IDS.length })])}
       ${liveNotice(s.notice, t("servos.resultLabel"), ctx.state.locale)}
       <p class="muted small sides-note" data-testid="sides-note">${sidesNote(t.locale)}</p>
       <table class="zeros-table servo-table">
@@ -211,6 +213,14 @@ function controlCard(ctx: ViewContext, t: ServosTranslator): TemplateResult {
       ${postureControls(ctx, t, enabled)}
     </section>
   `;
+}
+
+/** The protocol's words for what this view does, one click away ("Technical detail"). */
+function technicalDetail(t: ServosTranslator, sentences: readonly string[]): TemplateResult {
+  return html`<details class="detail" data-testid="servo-detail">
+    <summary>${translator(shellMessages, t.locale)("shell.technicalDetail")}</summary>
+    ${sentences.map((text) => html`<p class="muted small">${text}</p>`)}
+  </details>`;
 }
 
 /** The robot in 3D: the demo robot follows its servos live; a robot on a cable is drawn as last read. */

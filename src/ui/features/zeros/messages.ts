@@ -70,8 +70,18 @@ export const zerosMessages = defineMessages({
     ko: "편집 표가 로봇에 저장된 영점과 같아요.",
   },
   "zeros.noOtherChanges": {
-    en: "No other value differs from the robot's zeros.",
-    ko: "다른 값은 로봇의 영점과 같아요.",
+    en: {
+      one: "The {count} value that can be written matches the robot's zeros.",
+      other: "The {count} values that can be written match the robot's zeros.",
+    },
+    ko: "쓸 수 있는 값 {count}개는 로봇의 영점과 같아요.",
+  },
+  "zeros.validChanges": {
+    en: {
+      one: "Of the values that can be written, {count} differs from the robot's zeros: {list}.",
+      other: "Of the values that can be written, {count} differ from the robot's zeros: {list}.",
+    },
+    ko: "쓸 수 있는 값 중 {count}개가 로봇의 영점과 달라요: {list}.",
   },
   "zeros.changes": {
     en: { one: "{count} change not yet written: {list}.", other: "{count} changes not yet written: {list}." },

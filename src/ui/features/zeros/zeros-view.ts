@@ -100,17 +100,21 @@ function row(
 
 /**
  * What would change on the robot. "The editor matches the robot" only when every field is valid: beside a value
- * that cannot be written it would say more than is true, so then only the fields that differ are listed.
+ * that cannot be written ("Cannot write: 1 value is outside…") the comparison speaks only of the values that
+ * can be written, and says so, so that the two sentences agree.
  */
 function changeSummary(t: ZerosTranslator, changes: readonly ZeroChange[], check: DraftCheck): string {
+  const valid = check.values.filter((v) => v !== undefined).length;
   if (changes.length === 0) {
-    return check.problems.size === 0 ? t("zeros.noChanges") : t("zeros.noOtherChanges");
+    return check.problems.size === 0 ? t("zeros.noChanges") : t("zeros.noOtherChanges", { count: valid });
   }
   // Zero values as the robot holds them (0-254), not grouped.
   const list = changes
     .map((c) => t("zeros.changeItem", { id: String(c.id), from: String(c.from), to: String(c.to) }))
     .join(", ");
-  return t("zeros.changes", { count: changes.length, list });
+  return check.problems.size === 0
+    ? t("zeros.changes", { count: changes.length, list })
+    : t("zeros.validChanges", { count: changes.length, list });
 }
 
 function writeControls(

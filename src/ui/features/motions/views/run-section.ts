@@ -1,5 +1,6 @@
 import { html, nothing, type TemplateResult } from "lit-html";
 import { motionHazardText } from "../../../../i18n/outcomes/run-words.ts";
+import { soundName } from "../../../../i18n/sound-names/sound-name.ts";
 import { translator } from "../../../../i18n/translate.ts";
 import { BASIC_POSTURE_MOTION, SOUND_LENGTHS_MS, soundLengthMs } from "../../../../protocol/catalog.ts";
 import type { AppState } from "../../../app-state.ts";
@@ -260,26 +261,29 @@ export function soundSection(ctx: ViewContext): TemplateResult {
     <section class="card" aria-labelledby="sound-title" data-testid="sound-card">
       <h2 id="sound-title" class="card-title">${t("motions.sound.title")}</h2>
       <p class="muted small">${t("motions.sound.intro")}</p>
-      <div class="sound-grid">
-        ${SOUND_LENGTHS_MS.map(
-          (ms, i) => html`<button
+      <div class="sound-grid" data-testid="sound-grid">
+        ${SOUND_LENGTHS_MS.map((ms, i) => {
+          // The sound's name from the one catalogue of sound names (src/i18n/sound-names/), shared with `rbc sound`.
+          const name = soundName(i + 1, locale) ?? "";
+          return html`<button
             type="button"
-            class="btn sound-btn"
+            class="btn motion-btn sound-btn"
             data-sound=${i + 1}
             ?disabled=${busyReason !== undefined}
-            aria-label=${t("motions.sound.buttonLabel", { sound: i + 1, time: formatSeconds(ms, locale) })}
             @click=${() => void playSound(ctx, i + 1)}
           >
-            <span class="num">${i + 1}</span> <span class="muted small num">${formatSeconds(ms, locale)}</span>
-          </button>`,
-        )}
+            <span class="sr-only">${t("motions.sound.buttonPrefix")}</span>
+            <span class="motion-num num">${i + 1}</span>
+            <span class="motion-name">${name} <span class="sound-time num muted">${formatSeconds(ms, locale)}</span></span>
+          </button>`;
+        })}
       </div>
       <div ${keepInView(sounding ? `sound-${sounding.sound}-${sounding.startedAt}` : m.soundNotice?.text)}>
       ${
         sounding
           ? html`<div class="progress-block" data-testid="sound-playing">
               <p>
-                <strong>${t("motions.sound.playing", { sound: sounding.sound })}</strong>
+                <strong>${t("motions.sound.playing", { sound: sounding.sound, name: soundName(sounding.sound, locale) ?? "" })}</strong>
                 <span class="num muted" data-testid="sound-time">${t("motions.run.elapsed", {
                   elapsed: formatSeconds(elapsed, locale),
                   total: formatSeconds(length, locale),
