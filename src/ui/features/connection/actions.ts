@@ -9,6 +9,7 @@ import { focusSoon } from "../../focus.ts";
 import { inEveryLanguage, type LocalText, type Said, said } from "../../said.ts";
 import { forgetPort, grantedPorts, webSerial } from "../../serial-ports.ts";
 import type { Store } from "../../store.ts";
+import { stopClassRobots } from "../class/stop-all.ts";
 import { connectionMessages } from "./messages.ts";
 import type { ConnectionState, RobotLabel } from "./state.ts";
 
@@ -157,6 +158,7 @@ export function stopOutcome(result: StopActivityResult, limp: boolean, locale: L
  */
 export async function stopActivity(ctx: AppContext): Promise<void> {
   const { store, session } = ctx;
+  void stopClassRobots(ctx);
   const client = session.current;
   if (!client) return;
   store.update((s) => ({
