@@ -8,7 +8,7 @@ import { said } from "../../said.ts";
 import type { Store } from "../../store.ts";
 import type { BackupStorage } from "../zeros/backup-store.ts";
 import { keptBackups } from "../zeros/backup-store.ts";
-import { createClassDemo } from "./demo-robots.ts";
+import { type ClassDemoRobot, createClassDemo } from "./demo-robots.ts";
 import { classMessages } from "./messages.ts";
 import type { NameStorage } from "./names.ts";
 import { tidyName } from "./names.ts";
@@ -44,6 +44,8 @@ export interface ClassRoomOptions {
   backups: () => Promise<BackupStorage>;
   /** Wall-clock ms for the skew of "Run on all" (performance.now in the page). */
   now: () => number;
+  /** Told of every demo robot made (tests pull its cable). */
+  onDemo?: (demo: ClassDemoRobot) => void;
 }
 
 export class ClassRoom implements ClassStopper {
@@ -106,6 +108,7 @@ export class ClassRoom implements ClassStopper {
   addDemo(): Promise<void> {
     const n = ++this.demoCount;
     const demo = createClassDemo(n, this.options.demoClock);
+    this.options.onDemo?.(demo);
     return this.connect(demo.port, { demo: true, portLabel: `demo ${n}`, demoNumber: n }, demo.clock);
   }
 

@@ -219,14 +219,14 @@ export const classMessages = defineMessages({
 
   "class.result.stored": {
     en: {
-      one: "Stored and verified: the motion is on the robot as {list}.",
-      other: "Stored and verified: all {count} motions are on the robot as {list}.",
+      one: "Stored and verified: {count} motion is on the robot: {list}.",
+      other: "Stored and verified: all {count} motions are on the robot: {list}.",
     },
-    ko: "저장하고 확인했어요: 모션 {count}개가 모두 로봇에 있어요 ({list}).",
+    ko: "저장하고 확인했어요. 모션 {count}개가 모두 로봇에 있어요: {list}.",
   },
   "class.result.partly": {
-    en: "Partly stored: {stored} of {files} motions are on the robot ({list}).",
-    ko: "일부만 저장했어요: 모션 {files}개 중 {stored}개가 로봇에 있어요 ({list}).",
+    en: "Partly stored: {stored} of {files} motions are on the robot: {list}.",
+    ko: "일부만 저장했어요. 모션 {files}개 중 {stored}개가 로봇에 있어요: {list}.",
   },
   "class.result.notStored": { en: "Not stored.", ko: "저장하지 못했어요." },
   "class.result.resetForgot": {

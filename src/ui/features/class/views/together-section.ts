@@ -1,4 +1,5 @@
 import { html, nothing, type TemplateResult } from "lit-html";
+import { isHazardousMotion } from "../../../../device/run-outcome.ts";
 import { builtInMotionName } from "../../../../i18n/motion-names/built-in-motion-name.ts";
 import { uploadNoticeText } from "../../../../i18n/outcomes/device.ts";
 import { formatDecimal } from "../../../../i18n/translate.ts";
@@ -26,8 +27,6 @@ import { type ClassState, chosenRobots } from "../state.ts";
  * off ends (docs/protocol.md §3.1); the Motions view runs them one robot at a time, with its warning.
  */
 
-const HAZARDOUS = new Set([20, 21]);
-
 function motionChoices(ctx: ViewContext, c: ClassState): { number: number; label: string }[] {
   const { locale } = ctx.state;
   const builtIn = BUILT_IN_MOTIONS.map((m) => ({
@@ -35,7 +34,7 @@ function motionChoices(ctx: ViewContext, c: ClassState): { number: number; label
     label: `${m.number} — ${builtInMotionName(m.number, locale) ?? ""}`,
   }));
   const pack = packCheck(ctx, c)
-    .files.filter((f) => f.motion && !HAZARDOUS.has(f.number))
+    .files.filter((f) => f.motion && !isHazardousMotion(f.number))
     .map((f) => ({ number: f.number, label: `${f.number} — ${f.motion?.name ?? f.file.fileName}` }));
   return [...builtIn, ...pack];
 }
