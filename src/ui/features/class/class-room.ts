@@ -5,6 +5,7 @@ import { type AppState, noticeOf } from "../../app-state.ts";
 import { failureNotice } from "../../failure-notice.ts";
 import { createRbcClient } from "../../robot-link.ts";
 import { said } from "../../said.ts";
+import type { Controller } from "../../scope.ts";
 import type { Store } from "../../store.ts";
 import type { BackupStorage } from "../zeros/backup-store.ts";
 import { keptBackups } from "../zeros/backup-store.ts";
@@ -16,7 +17,6 @@ import { checkPack, type PackCheck } from "./pack-check.ts";
 import { uploadPackTo } from "./pack-upload.ts";
 import { uploadSummary } from "./result-words.ts";
 import { type ClassRobot, classOf, type PackFile, patchClass, patchRobot } from "./state.ts";
-import type { ClassStopper } from "./stop-all.ts";
 import { limpEach, runOnEach, stopEach } from "./together.ts";
 
 /**
@@ -48,7 +48,7 @@ export interface ClassRoomOptions {
   onDemo?: (demo: ClassDemoRobot) => void;
 }
 
-export class ClassRoom implements ClassStopper {
+export class ClassRoom implements Controller {
   private readonly links = new Map<number, RobotLink>();
   private demoCount = 0;
   private checked: { pack: readonly PackFile[]; check: PackCheck } | undefined;

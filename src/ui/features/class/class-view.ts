@@ -1,40 +1,57 @@
-import "./class.css";
 import { html, type TemplateResult } from "lit-html";
 import { translator } from "../../../i18n/translate.ts";
-import { escapeTakenElsewhere } from "../../shell/escape.ts";
-import { notice } from "../../shell/notice.ts";
+import type { AppContext } from "../../context.ts";
+import { type Controller, controllerKey } from "../../scope.ts";
+import { viewArrived } from "../../shell/actions.ts";
+import { shellMessages } from "../../shell/messages.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
-import { classRoom, stopAll } from "./actions.ts";
-import { classMessages } from "./messages.ts";
-import { classOf } from "./state.ts";
-import { packSection } from "./views/pack-section.ts";
-import { robotsSection } from "./views/robots-section.ts";
-import { togetherSection } from "./views/together-section.ts";
 
 /**
- * The Class view (issue 24): several robots connected at once, each on its own connection, independent of the
- * robot in the top bar; one motion pack uploaded to all of them; a motion run on all of them together; Stop
- * all and Limp all. Usable without a robot in the top bar, so it needs none.
+ * The Class view's entry: it imports only what the first page load has already, and loads the page itself
+ * (class-page.ts: the device, the simulator, the pack checks) when first drawn. So the first load's list of
+ * chunks to preload for this view is one name long (the first-load budget, issue 19).
  */
+
+type ClassPage = typeof import("./class-page.ts");
+
+interface PageSlot extends Controller {
+  page?: ClassPage;
+  failed?: unknown;
+  loading?: boolean;
+}
+
+const PAGE = controllerKey<PageSlot, AppContext>("class page", () => ({}));
+
 function render(ctx: ViewContext): TemplateResult {
-  const t = translator(classMessages, ctx.state.locale);
-  const c = classOf(ctx.state);
-  classRoom(ctx);
-  // Escape here stops every class robot (never Limp), unless a field or a question takes it. With a robot in
-  // the top bar the page's own Escape (Stop) does it, and stops the class robots too.
-  const onKey = (e: KeyboardEvent) => {
-    if (e.key !== "Escape" || e.repeat || e.defaultPrevented) return;
-    if (ctx.state.connection.phase === "connected" || escapeTakenElsewhere(e.target, document)) return;
-    if (!c.robots.some((r) => r.phase === "connected")) return;
-    e.preventDefault();
-    stopAll(ctx);
-  };
-  return html`<div class="class-view" @keydown=${onKey}>
-    <h1>${t("class.title")}</h1>
-    <p class="muted">${t("class.intro")}</p>
-    <div class="class-summary" role="status" aria-live="polite" data-testid="class-summary">${notice(c.summary, ctx.state.locale)}</div>
-    ${robotsSection(ctx, t, c)} ${packSection(ctx, t, c)} ${togetherSection(ctx, t, c)}
-  </div>`;
+  const slot = ctx.session.pageScope.get(PAGE);
+  if (slot.page) return slot.page.renderClass(ctx);
+  const t = translator(shellMessages, ctx.state.locale);
+  if (slot.failed !== undefined) {
+    const retry = () => {
+      slot.failed = undefined;
+      viewArrived(ctx.store);
+    };
+    return html`<section class="card">
+      <h1>${t("shell.loadFailedTitle")}</h1>
+      <p>${t("shell.loadFailedText")}</p>
+      <button type="button" class="btn" @click=${retry}>${t("shell.tryAgain")}</button>
+    </section>`;
+  }
+  if (!slot.loading) {
+    slot.loading = true;
+    import("./class-page.ts").then(
+      (page) => {
+        slot.page = page;
+        viewArrived(ctx.store);
+      },
+      (e: unknown) => {
+        slot.loading = false;
+        slot.failed = e;
+        viewArrived(ctx.store);
+      },
+    );
+  }
+  return html`<p class="muted" aria-busy="true">${t("shell.loading")}</p>`;
 }
 
 const view: AppView = { needsRobot: false, render };
