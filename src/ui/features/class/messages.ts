@@ -156,6 +156,14 @@ export const classMessages = defineMessages({
   },
   "class.upload.cancelAll": { en: "Cancel all uploads", ko: "업로드 모두 취소" },
   "class.upload.cancel": { en: "Cancel", ko: "취소" },
+  "class.upload.overall": {
+    en: {
+      one: "Uploading to {count} robot: {acknowledged} bytes acknowledged so far (each robot's progress is in its row).",
+      other:
+        "Uploading to {count} robots: {acknowledged} bytes acknowledged so far (each robot's progress is in its row).",
+    },
+    ko: "로봇 {count}대에 업로드하는 중: 지금까지 {acknowledged}바이트를 받았다고 확인했어요 (로봇마다 진행 상황은 그 줄에 있어요).",
+  },
   "class.upload.cancelling": { en: "cancelling…", ko: "취소하는 중…" },
   "class.upload.file": { en: "{file} ({index} of {files})", ko: "{file} ({files}개 중 {index}번째)" },
   "class.upload.bytes": { en: "{acknowledged} / {total} bytes", ko: "{acknowledged} / {total}바이트" },

@@ -81,8 +81,9 @@ function packTotals(t: ClassTranslator, check: PackCheck): TemplateResult {
 export function packSection(ctx: ViewContext, t: ClassTranslator, c: ClassState): TemplateResult {
   const check = packCheck(ctx, c);
   const chosen = chosenRobots(c);
-  const ready = chosen.filter((r) => r.task === undefined);
-  const uploading = c.robots.some((r) => r.upload !== undefined);
+  const busy = chosen.some((r) => r.task !== undefined);
+  const uploads = c.robots.flatMap((r) => (r.upload ? [r.upload] : []));
+  const uploading = uploads.length > 0;
   return html`<section class="card" aria-labelledby="class-pack-title">
     <h2 id="class-pack-title">${t("class.pack.title")}</h2>
     <p class="small muted">${t("class.pack.explain")}</p>
@@ -124,12 +125,20 @@ export function packSection(ctx: ViewContext, t: ClassTranslator, c: ClassState)
         type="button"
         id="class-upload"
         class="btn btn--primary"
-        ?disabled=${!check.uploadable || ready.length === 0}
+        ?disabled=${!check.uploadable || chosen.length === 0 || busy}
         @click=${() => askUpload(ctx)}
       >
-        ${t("class.upload.toAll", { count: ready.length })}
+        ${t("class.upload.toAll", { count: chosen.length })}
       </button>
       <button type="button" class="btn" ?disabled=${!uploading} @click=${() => cancelAll(ctx)}>${t("class.upload.cancelAll")}</button>
     </div>
+    ${
+      uploading
+        ? html`<p class="small num" data-testid="class-upload-overall">${t("class.upload.overall", {
+            count: uploads.length,
+            acknowledged: uploads.reduce((sum, u) => sum + u.acknowledged, 0),
+          })}</p>`
+        : nothing
+    }
   </section>`;
 }

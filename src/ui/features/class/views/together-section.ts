@@ -84,7 +84,8 @@ function question(ctx: ViewContext, t: ClassTranslator, c: ClassState): Template
 
 export function togetherSection(ctx: ViewContext, t: ClassTranslator, c: ClassState): TemplateResult {
   const { locale } = ctx.state;
-  const ready = chosenRobots(c).filter((r) => r.task === undefined);
+  const chosen = chosenRobots(c);
+  const busy = chosen.some((r) => r.task !== undefined);
   const connected = c.robots.some((r) => r.phase === "connected");
   const choices = motionChoices(ctx, c);
   const last = c.lastRun;
@@ -95,8 +96,8 @@ export function togetherSection(ctx: ViewContext, t: ClassTranslator, c: ClassSt
       <select id="class-motion" @change=${(e: Event) => setRunNumber(ctx, Number((e.target as HTMLSelectElement).value))}>
         ${choices.map((m) => html`<option value=${m.number} .selected=${m.number === c.runNumber}>${m.label}</option>`)}
       </select>
-      <button type="button" id="class-run" class="btn btn--primary" ?disabled=${ready.length === 0} @click=${() => askRun(ctx)}>
-        ${t("class.run.onAll", { count: ready.length })}
+      <button type="button" id="class-run" class="btn btn--primary" ?disabled=${chosen.length === 0 || busy} @click=${() => askRun(ctx)}>
+        ${t("class.run.onAll", { count: chosen.length })}
       </button>
     </div>
     <p class="small muted">${t("class.run.hazardNote")}</p>
