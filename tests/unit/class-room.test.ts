@@ -32,6 +32,9 @@ function footprintOf(bytes: Uint8Array): number {
 }
 
 async function fourRobots() {
+  // The class loads the demo robot's code on first use (as the page does); loaded here first, the virtual
+  // clock below never waits on a module being read from disk.
+  await import("../../src/ui/demo-robot.ts");
   const clock = new VirtualClock();
   const store = createStore(initialState({ serialSupported: false, secureContext: true, route: "class" }));
   const demos: ClassDemoRobot[] = [];

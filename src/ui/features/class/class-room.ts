@@ -105,11 +105,11 @@ export class ClassRoom implements Controller {
   }
 
   /** "Add demo robot": a new simulated robot with its own serial number, connected at once. */
-  addDemo(): Promise<void> {
+  async addDemo(): Promise<void> {
     const n = ++this.demoCount;
-    const demo = createClassDemo(n, this.options.demoClock);
+    const demo = await createClassDemo(n, this.options.demoClock);
     this.options.onDemo?.(demo);
-    return this.connect(demo.port, { demo: true, portLabel: `demo ${n}`, demoNumber: n }, demo.clock);
+    await this.connect(demo.port, { demo: true, portLabel: `demo ${n}`, demoNumber: n }, demo.clock);
   }
 
   /** A port the person chose (or one the browser remembers): connected unless it is in the class already. */

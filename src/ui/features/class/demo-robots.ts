@@ -1,17 +1,17 @@
-import { type Clock, realClock } from "../../../shared/clock.ts";
-import { createDemoRbc } from "../../../sim/demo-world.ts";
-import { MockSerialPort } from "../../../sim/mock-serial-port.ts";
+import type { Clock } from "../../../shared/clock.ts";
+import type { MockSerialPort, SimEndpoint } from "../../../sim/mock-serial-port.ts";
 import type { SimulatedRbc } from "../../../sim/simulated-rbc.ts";
 
 /**
- * The Class view's demo robots: each its own simulated RBC (firmware 2.23, HUNO, the demo world) with its own
- * serial number, behind its own mock serial port, so a class can be tried without hardware. They are not the
- * session's demo robot: connecting one changes nothing in the rest of the panel.
+ * The Class view's demo robots: each its own simulated RBC (the panel's demo robot, src/ui/demo-robot.ts:
+ * firmware 2.23, HUNO, the demo world) with its own serial number, behind its own mock serial port, so a class
+ * can be tried without hardware. They are not the session's demo robot: connecting one changes nothing in the
+ * rest of the panel. The simulator's code loads with the first one (as the session's demo robot's does).
  */
 
 export interface ClassDemoRobot {
   sim: SimulatedRbc;
-  port: MockSerialPort<SimulatedRbc>;
+  port: MockSerialPort<SimEndpoint>;
   clock: Clock;
 }
 
@@ -34,14 +34,15 @@ export function testClock(): Clock | undefined {
 }
 
 /** Demo robot `n` of the class, on `clock` (real time unless a test gives its own). */
-export function createClassDemo(n: number, clock: Clock = realClock): ClassDemoRobot {
-  const sim = createDemoRbc({ clock, serialNumber: demoSerialNumber(n) });
-  const port = new MockSerialPort(sim, { clock, latencyMs: 2, record: false });
+export async function createClassDemo(n: number, clock?: Clock): Promise<ClassDemoRobot> {
+  const { createDemoRobot } = await import("../../demo-robot.ts");
+  const demo = createDemoRobot({ serialNumber: demoSerialNumber(n), ...(clock ? { clock } : {}) });
+  const made: ClassDemoRobot = { sim: demo.sim, port: demo.port, clock: demo.clock };
   // Browser tests (their `__rbcTestOptions` is set only by them) pull a demo robot's cable.
   const page = globalThis as { __rbcTestOptions?: unknown; __rbcClassDemos?: ClassDemoRobot[] };
   if (page.__rbcTestOptions !== undefined) {
     page.__rbcClassDemos ??= [];
-    page.__rbcClassDemos.push({ sim, port, clock });
+    page.__rbcClassDemos.push(made);
   }
-  return { sim, port, clock };
+  return made;
 }
