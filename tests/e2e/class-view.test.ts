@@ -172,6 +172,23 @@ describe("the Class view with four demo robots", () => {
     await page.getByRole("button", { name: "Cancel", exact: true }).click();
     expect((await sims(page)).map((s) => s.passive)).toEqual([0, 0, 0, 0]);
 
+    // With a robot connected in the top bar too, the top bar's Stop also stops every class robot (and the
+    // session's robot stays the session's: the class robots are not it).
+    await page.getByRole("link", { name: "Robot", exact: true }).click();
+    await page.getByRole("button", { name: "Try the demo robot" }).click();
+    await page.getByTestId("device-card").waitFor();
+    await page.getByRole("link", { name: "Class", exact: true }).click();
+    await page.getByRole("button", { name: "Run on all 3 robots" }).click();
+    await expect.poll(async () => (await sims(page)).map((s) => s.playing)).toEqual([12, 12, undefined, 12]);
+    await page.getByRole("button", { name: "Stop", exact: true }).click();
+    for (const i of [0, 1, 3]) {
+      await row(page, i)
+        .getByTestId("class-result")
+        .filter({ hasText: "Stopped by Stop" })
+        .waitFor({ timeout: 20_000 });
+    }
+    expect((await sims(page)).map((s) => s.playing)).toEqual([undefined, undefined, undefined, undefined]);
+
     expect(await axeViolations(page)).toEqual([]);
 
     // The name comes back with the robot (by its serial number) on the next visit.
