@@ -213,6 +213,30 @@ describe("the Class view in Korean", () => {
         /^저장하고 확인했어요\. 모션 1개가 모두 로봇에 있어요: 12 \(wave\.rbm\)\. 로봇이 알려 준 모션 메모리: 24,576바이트 중 [\d,]+바이트 남음\.$/,
       );
     }
+    // Run on all in Korean, then Escape (nothing focused, no robot in the top bar) stops every class robot.
+    await page.getByRole("button", { name: "로봇 2대에서 실행" }).click();
+    for (const i of [0, 1]) {
+      await row(page, i)
+        .getByTestId("class-result")
+        .filter({ hasText: "모션 7번을 재생했어요" })
+        .waitFor({ timeout: 20_000 });
+    }
+    await page.getByLabel("모션", { exact: true }).selectOption("12");
+    await page.getByRole("button", { name: "로봇 2대에서 실행" }).click();
+    await expect.poll(async () => (await sims(page)).map((s) => s.playing)).toEqual([12, 12]);
+    await page.evaluate(() => (document.activeElement as HTMLElement | null)?.blur());
+    await page.keyboard.press("Escape");
+    for (const i of [0, 1]) {
+      await row(page, i)
+        .getByTestId("class-result")
+        .filter({ hasText: "취소했어요." })
+        .waitFor({ timeout: 20_000 });
+    }
+    const after = await sims(page);
+    expect(after.map((s) => [s.playing, s.passive])).toEqual([
+      [undefined, 0],
+      [undefined, 0],
+    ]);
     expect(await axeViolations(page)).toEqual([]);
     await context.close();
   });

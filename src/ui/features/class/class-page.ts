@@ -1,10 +1,9 @@
 import "./class.css";
 import { html, type TemplateResult } from "lit-html";
 import { translator } from "../../../i18n/translate.ts";
-import { escapeTakenElsewhere } from "../../shell/escape.ts";
 import { notice } from "../../shell/notice.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
-import { classRoom, stopAll } from "./actions.ts";
+import { classRoom } from "./actions.ts";
 import { classMessages } from "./messages.ts";
 import { classOf } from "./state.ts";
 import { packSection } from "./views/pack-section.ts";
@@ -20,16 +19,7 @@ export function renderClass(ctx: ViewContext): TemplateResult {
   const t = translator(classMessages, ctx.state.locale);
   const c = classOf(ctx.state);
   classRoom(ctx);
-  // Escape here stops every class robot (never Limp), unless a field or a question takes it. With a robot in
-  // the top bar the page's own Escape (Stop) does it, and stops the class robots too.
-  const onKey = (e: KeyboardEvent) => {
-    if (e.key !== "Escape" || e.repeat || e.defaultPrevented) return;
-    if (ctx.state.connection.phase === "connected" || escapeTakenElsewhere(e.target, document)) return;
-    if (!c.robots.some((r) => r.phase === "connected")) return;
-    e.preventDefault();
-    stopAll(ctx);
-  };
-  return html`<div class="class-view" @keydown=${onKey}>
+  return html`<div class="class-view">
     <h1>${t("class.title")}</h1>
     <p class="muted">${t("class.intro")}</p>
     <div class="class-summary" role="status" aria-live="polite" data-testid="class-summary">${notice(c.summary, ctx.state.locale)}</div>
