@@ -1,5 +1,6 @@
 import type { RbcErrorCode } from "../device/errors.ts";
 import type { Locale } from "../i18n/locale.ts";
+import type { ClassState } from "./features/class/state.ts";
 import type { ConnectionState, KnownPort } from "./features/connection/state.ts";
 import { initialConnection } from "./features/connection/state.ts";
 import type { EditorLiveState } from "./features/editor/live-state.ts";
@@ -100,6 +101,8 @@ export interface AppState {
   editorLive?: EditorLiveState;
   /** Safety notices acknowledged in this connection (asked once per connection). */
   acks?: { movement?: boolean; servos?: boolean };
+  /** The Class view: several robots on connections of their own (not this session's), the pack, the results. */
+  classRoom?: ClassState;
   /** Bumped a few times a second while a motion, sound or upload runs, so time-based progress redraws. */
   tick?: number;
 }

@@ -45,6 +45,8 @@ export interface DemoRobotOptions {
    * servo bus survives a reconnect (docs/protocol.md §5). Default: new servos.
    */
   servoBus?: ServoBus;
+  /** Its serial number (the Class view's demo robots each have their own); default the simulator's. */
+  serialNumber?: string;
 }
 
 /**
@@ -58,7 +60,7 @@ export function createDemoRobot(options: DemoRobotOptions = {}): DemoRobot {
   const clock = options.clock ?? (scale === 1 ? realClock : scaledClock(scale));
   // The same world as the CLI's --demo (src/sim/demo-world.ts).
   const servoBus = options.servoBus ?? new ServoBus();
-  const sim = createDemoRbc({ clock, servoBus });
+  const sim = createDemoRbc({ clock, servoBus, serialNumber: options.serialNumber });
   const boot = new BootloaderRbc(sim);
   // Browser tests (tests/e2e/rbc-test-globals.ts: `__rbcTestOptions` is set only by them) watch its servos.
   const page = globalThis as { __rbcTestOptions?: unknown; __rbcDemoSim?: SimulatedRbc };

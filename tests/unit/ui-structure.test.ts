@@ -58,6 +58,7 @@ describe("the panel's structure", () => {
   it("gives every feature its state, actions and views in src/ui/features/<name>/", () => {
     const features = readdirSync(join(UI, "features"));
     expect(features.sort()).toEqual([
+      "class",
       "connection",
       "editor",
       "firmware",

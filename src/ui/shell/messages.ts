@@ -11,6 +11,7 @@ export const shellMessages = defineMessages({
   "nav.servos": { en: "Servos", ko: "서보" },
   "nav.firmware": { en: "Firmware", ko: "펌웨어" },
   "nav.log": { en: "Log", ko: "로그" },
+  "nav.class": { en: "Class", ko: "교실" },
 
   "shell.skipToContent": { en: "Skip to content", ko: "본문으로 건너뛰기" },
   "shell.language": { en: "Language / 언어", ko: "언어 / Language" },

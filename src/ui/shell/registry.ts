@@ -14,6 +14,7 @@ export const VIEWS: readonly NavRegistration[] = [
   { id: "servos", label: "nav.servos", load: () => import("../features/servos/servos-view.ts") },
   { id: "firmware", label: "nav.firmware", load: () => import("../features/firmware/firmware-view.ts") },
   { id: "log", label: "nav.log", load: () => import("../features/log/log-view.ts") },
+  { id: "class", label: "nav.class", load: () => import("../features/class/class-view.ts") },
 ];
 
 export const DEFAULT_VIEW = "robot";

@@ -4,6 +4,7 @@ import type { AppContext } from "../../context.ts";
 import { focusSoon } from "../../focus.ts";
 import { forgetPort, grantedPorts, webSerial } from "../../serial-ports.ts";
 import type { Store } from "../../store.ts";
+import { stopClassRobots } from "../class/stop-all.ts";
 import { connectionMessages } from "./messages.ts";
 import type { ConnectionState, RobotLabel } from "./state.ts";
 
@@ -79,6 +80,7 @@ export function disconnect(ctx: AppContext): void {
  */
 export async function stopActivity(ctx: AppContext): Promise<void> {
   const { store, session } = ctx;
+  void stopClassRobots(ctx);
   const client = session.current;
   if (!client) return;
   const now = session.clock.now();
