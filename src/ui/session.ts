@@ -111,6 +111,17 @@ export class Session {
   /** The demo robot's servos, kept for the page: an id set survives a reconnect (docs/protocol.md §5). */
   private demoServos: ServoBus | undefined;
 
+  /** The demo robot's servos while it is the connected robot (the Servo check unplugs one, as a person would). */
+  get demoServoBus(): ServoBus | undefined {
+    return this.demoSim && this.demoServos;
+  }
+
+  /** Switches the demo robot off and on with these servos (a fault to try the Servo check on), kept for the page. */
+  restartDemo(servoBus: ServoBus): Promise<boolean> {
+    this.demoServos = servoBus;
+    return this.connectDemo({ bluetooth: this.store.get().connection.robot?.link === "bluetooth" });
+  }
+
   /** Opens the chooser and connects to the chosen port. Call it straight from the click handler. */
   chooseAndConnect(): void {
     const serial = webSerial();

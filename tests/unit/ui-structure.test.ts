@@ -59,6 +59,7 @@ describe("the panel's structure", () => {
     const features = readdirSync(join(UI, "features"));
     expect(features.sort()).toEqual([
       "connection",
+      "doctor",
       "editor",
       "firmware",
       "log",
