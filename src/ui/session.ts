@@ -108,19 +108,11 @@ export class Session {
 
   /** Bumped by every chooser opened and by `cancelChoosing()`: a chooser's answer counts only while current. */
   private chooser = 0;
-  /** The demo robot's servos, kept for the page: an id set survives a reconnect (docs/protocol.md §5). */
-  private demoServos: ServoBus | undefined;
-
-  /** The demo robot's servos while it is the connected robot (the Servo check unplugs one, as a person would). */
-  get demoServoBus(): ServoBus | undefined {
-    return this.demoSim && this.demoServos;
-  }
-
-  /** Switches the demo robot off and on with these servos (a fault to try the Servo check on), kept for the page. */
-  restartDemo(servoBus: ServoBus): Promise<boolean> {
-    this.demoServos = servoBus;
-    return this.connectDemo({ bluetooth: this.store.get().connection.robot?.link === "bluetooth" });
-  }
+  /**
+   * The demo robot's servos, kept for the page: an id set survives a reconnect (docs/protocol.md §5). The Servo
+   * check replaces them with servos carrying a fault and connects the demo robot again (a restart).
+   */
+  demoServos: ServoBus | undefined;
 
   /** Opens the chooser and connects to the chosen port. Call it straight from the click handler. */
   chooseAndConnect(): void {
