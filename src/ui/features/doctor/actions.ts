@@ -1,20 +1,10 @@
-import { RbcError } from "../../../device/errors.ts";
-import {
-  ALL_SERVO_IDS,
-  HUNO_SCAN_IDS,
-  scanServos,
-  servoInfo,
-  setServoId,
-  wiggleServo,
-} from "../../../device/servo-doctor/index.ts";
 import { translator } from "../../../i18n/translate.ts";
 import type { AppContext } from "../../context.ts";
-import { failureNotice } from "../../failure-notice.ts";
 import { said } from "../../said.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
 import { stopActivity } from "../connection/actions.ts";
 import { doctorMessages } from "./messages.ts";
-import { checkFixIds, suggestedFix } from "./model.ts";
+import { ALL_SERVO_IDS, checkFixIds, HUNO_SERVO_IDS, suggestedFix } from "./model.ts";
 import { type DoctorFix, type DoctorState, doctorOf, patchDoctor } from "./state.ts";
 
 /**
@@ -23,6 +13,13 @@ import { type DoctorFix, type DoctorState, doctorOf, patchDoctor } from "./state
  * leaves it at the end; Stop (the top bar's) ends an operation through the device's servo-bus session, and the
  * result says so. One operation at a time.
  */
+
+/**
+ * The device's servo doctor and the words of failures load when an operation starts, not with the view: the
+ * view's first draw (and the page's list of what each view needs) stays free of the device's servo code.
+ */
+const servoDoctor = async () => (await import("../../robot-link.ts")).servoDoctor;
+const failureWords = () => import("../../failure-words.ts");
 
 /** The operation under way on this connection: its cancel, and the id fix's one question while it is asked. */
 class DoctorRun implements Controller {
@@ -68,8 +65,11 @@ function label(ctx: AppContext): string {
 }
 
 /** A failure of the operation: the robot refusing direct mode (not idle) offers Stop beside it. */
-function failed(ctx: AppContext, e: unknown): void {
-  const refused = e instanceof RbcError && (e.code === "wrong-mode" || e.code === "not-idle");
+async function failed(ctx: AppContext, e: unknown): Promise<void> {
+  // The device's codes (RbcError), read without loading its error classes here.
+  const code = e instanceof Error && "code" in e ? e.code : undefined;
+  const refused = code === "wrong-mode" || code === "not-idle";
+  const { failureNotice } = await failureWords();
   const notice = failureNotice(said(doctorMessages, "doctor.failed"), e, ctx.store.get().locale);
   patchDoctor(ctx.store, { busy: undefined, scanning: undefined, notice, refused });
 }
@@ -91,10 +91,11 @@ export function setAllIds(ctx: AppContext, allIds: boolean): void {
 
 /** Scans ids 0-15 (or all 31), one reading at a time into the table and the figure as it comes. */
 export async function scan(ctx: AppContext): Promise<void> {
-  const ids = [...(doctorOf(ctx.store.get()).allIds ? ALL_SERVO_IDS : HUNO_SCAN_IDS)];
+  const ids = [...(doctorOf(ctx.store.get()).allIds ? ALL_SERVO_IDS : HUNO_SERVO_IDS)];
   if (!begin(ctx, "scan", { scanning: { ids, readings: [] } })) return;
   const signal = runOf(ctx).start();
   try {
+    const { scanServos } = await servoDoctor();
     const result = await ctx.session.run(
       label(ctx),
       (client) =>
@@ -119,7 +120,7 @@ export async function scan(ctx: AppContext): Promise<void> {
       };
     });
   } catch (e) {
-    failed(ctx, e);
+    await failed(ctx, e);
   }
 }
 
@@ -146,12 +147,13 @@ export async function readInfo(ctx: AppContext): Promise<void> {
   if (id === undefined || !begin(ctx, "info", { info: undefined })) return;
   const signal = runOf(ctx).start();
   try {
+    const { servoInfo } = await servoDoctor();
     const info = await ctx.session.run(label(ctx), (client) => servoInfo(client, id, { signal }), {
       packetMode: false,
     });
     patchDoctor(ctx.store, { busy: undefined, info });
   } catch (e) {
-    failed(ctx, e);
+    await failed(ctx, e);
   }
 }
 
@@ -165,12 +167,13 @@ export async function wiggle(ctx: AppContext): Promise<void> {
   if (id === undefined || !begin(ctx, "wiggle", { wiggle: undefined, wiggleAsked: false })) return;
   const signal = runOf(ctx).start();
   try {
+    const { wiggleServo, WIGGLE_COUNTS } = await servoDoctor();
     const result = await ctx.session.run(label(ctx), (client) => wiggleServo(client, id, { signal }), {
       packetMode: false,
     });
-    patchDoctor(ctx.store, { busy: undefined, wiggle: result });
+    patchDoctor(ctx.store, { busy: undefined, wiggle: { result, counts: WIGGLE_COUNTS } });
   } catch (e) {
-    failed(ctx, e);
+    await failed(ctx, e);
   }
 }
 
@@ -194,6 +197,7 @@ export async function fixId(ctx: AppContext): Promise<void> {
   const run = runOf(ctx);
   const signal = run.start();
   try {
+    const { setServoId } = await servoDoctor();
     const result = await ctx.session.run(
       label(ctx),
       (client) =>
@@ -209,7 +213,7 @@ export async function fixId(ctx: AppContext): Promise<void> {
     patchDoctor(ctx.store, (x) => ({ busy: undefined, fix: { ...x.fix, asking: undefined, result } }));
   } catch (e) {
     patchDoctor(ctx.store, (x) => ({ fix: { ...x.fix, asking: undefined } }));
-    failed(ctx, e);
+    await failed(ctx, e);
   }
 }
 

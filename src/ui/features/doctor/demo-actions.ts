@@ -1,4 +1,5 @@
 import type { ServoFaults } from "../../../sim/sim-servo-faults.ts";
+import type { ServoBus } from "../../../sim/sim-servos.ts";
 import type { AppContext } from "../../context.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
 import type { DemoFault } from "./state.ts";
@@ -23,6 +24,11 @@ class DemoFaultChoice implements Controller {
 
 const DEMO_FAULT = controllerKey("demo servo fault", () => new DemoFaultChoice());
 
+/** The demo robot's servos while the demo robot is the connected robot; undefined for a robot on a cable. */
+export function demoBusOf(ctx: AppContext): ServoBus | undefined {
+  return ctx.session.demoSim ? ctx.session.demoServos : undefined;
+}
+
 /** The demo robot's fault as chosen here, and the servos unplugged here. */
 export function demoFaultOf(ctx: AppContext): { fault: DemoFault; unplugged: readonly number[] } {
   const choice = ctx.session.pageScope.peek(DEMO_FAULT);
@@ -37,20 +43,23 @@ export function servoFaultsOf(fault: DemoFault): ServoFaults {
 
 /** Restarts the demo robot with `fault` on new servos (healthy ones for "none"). */
 export async function restartWithFault(ctx: AppContext, fault: DemoFault): Promise<void> {
-  if (!ctx.session.demoServoBus || doctorOf(ctx.store.get()).busy) return;
+  if (!demoBusOf(ctx) || doctorOf(ctx.store.get()).busy) return;
   patchDoctor(ctx.store, { busy: "demo" });
-  const { ServoBus } = await import("../../../sim/sim-servos.ts");
+  const { demoServoBus } = await import("../../demo-robot.ts");
   const choice = ctx.session.pageScope.get(DEMO_FAULT);
   choice.fault = fault;
   choice.unplugged = [];
-  const connected = await ctx.session.restartDemo(new ServoBus(servoFaultsOf(fault)));
+  ctx.session.demoServos = demoServoBus(servoFaultsOf(fault));
+  const connected = await ctx.session.connectDemo({
+    bluetooth: ctx.store.get().connection.robot?.link === "bluetooth",
+  });
   // The new connection starts the view afresh; when it failed, the connection card says why.
   if (!connected) patchDoctor(ctx.store, { busy: undefined });
 }
 
 /** Unplugs joint `joint`'s servo from the demo robot's bus, or plugs every servo unplugged here back in. */
 export function plug(ctx: AppContext, joint: number | "all-back"): void {
-  const bus = ctx.session.demoServoBus;
+  const bus = demoBusOf(ctx);
   if (!bus) return;
   const choice = ctx.session.pageScope.get(DEMO_FAULT);
   if (joint === "all-back") {

@@ -1,9 +1,9 @@
 import { html, nothing, type TemplateResult } from "lit-html";
 import type { KeysWithoutParams } from "../../../i18n/catalogue.ts";
-import { HUNO_SERVO_IDS } from "../../../protocol/servo-limits.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
-import { demoFaultOf, plug, restartWithFault } from "./demo-actions.ts";
+import { demoBusOf, demoFaultOf, plug, restartWithFault } from "./demo-actions.ts";
 import type { DoctorTranslator, doctorMessages } from "./messages.ts";
+import { HUNO_SERVO_IDS } from "./model.ts";
 import { type DemoFaultKind, doctorOf } from "./state.ts";
 
 /**
@@ -25,7 +25,7 @@ function kindText(t: DoctorTranslator, kind: DemoFaultKind): string {
 }
 
 export function demoCard(ctx: ViewContext, t: DoctorTranslator): TemplateResult | typeof nothing {
-  const bus = ctx.session.demoServoBus;
+  const bus = demoBusOf(ctx);
   if (!bus) return nothing;
   const d = doctorOf(ctx.state);
   const busy = d.busy !== undefined || ctx.state.running.length > 0;

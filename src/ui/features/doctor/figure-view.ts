@@ -35,11 +35,10 @@ function shape(mark: ServoMark, p: FigurePoint): SVGTemplateResult {
 
 function servoMark(
   p: FigurePoint,
-  reading: ServoReading | undefined,
+  mark: ServoMark,
   picked: boolean,
   onPick: (id: number) => void,
 ): SVGTemplateResult {
-  const mark = markOf(reading);
   return svg`
     <g class=${`servo-mark mark--${mark}${picked ? " is-picked" : ""}`} data-servo=${p.id} @click=${() => onPick(p.id)}>
       ${picked ? svg`<circle class="mark-pick" cx=${p.x} cy=${p.y} r=${R + 5} />` : nothing}
@@ -85,6 +84,7 @@ function legendSwatch(mark: ServoMark): TemplateResult {
 export function servoFigure(
   t: DoctorTranslator,
   readings: readonly ServoReading[],
+  highLoad: readonly number[],
   picked: number | undefined,
   onPick: (id: number) => void,
 ): TemplateResult {
@@ -101,7 +101,7 @@ export function servoFigure(
         ${body(points)}
         <text class="side-label" x="6" y="14">${t("doctor.figure.itsRight")}</text>
         <text class="side-label" x=${FIGURE_WIDTH - 6} y="14" text-anchor="end">${t("doctor.figure.itsLeft")}</text>
-        ${points.map((p) => servoMark(p, byId.get(p.id), p.id === picked, onPick))}
+        ${points.map((p) => servoMark(p, markOf(byId.get(p.id), highLoad), p.id === picked, onPick))}
       </svg>
       <figcaption>
         <ul class="mark-legend" aria-label=${t("doctor.legend.label")}>

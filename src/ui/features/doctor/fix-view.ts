@@ -3,7 +3,7 @@ import type { SetIdResult } from "../../../device/servo-doctor/index.ts";
 import { hardwareResetText, servoText, setIdText } from "../../../i18n/outcomes/servos/servo-words.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
 import { answerFix, editFix, fixId, scan } from "./actions.ts";
-import { plug } from "./demo-actions.ts";
+import { demoBusOf, plug } from "./demo-actions.ts";
 import type { DoctorTranslator } from "./messages.ts";
 import { suggestedFix } from "./model.ts";
 import { doctorOf } from "./state.ts";
@@ -27,7 +27,7 @@ function nextSteps(ctx: ViewContext, t: DoctorTranslator, result: SetIdResult): 
   const nowhere =
     (result.outcome === "refused" && result.reason === "from-silent") ||
     (result.outcome === "failed" && result.reason === "answers-nowhere");
-  const demo = ctx.session.demoServoBus;
+  const demo = demoBusOf(ctx);
   const other = garbled ? demo?.servos[result.from] : undefined;
   const scanAgain =
     garbled ||

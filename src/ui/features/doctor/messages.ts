@@ -80,8 +80,8 @@ export const doctorMessages = defineMessages({
   "doctor.servo.resultLabel": { en: "Servo result", ko: "서보 결과" },
   "doctor.wiggle.title": { en: "Wiggle test", ko: "흔들기 검사" },
   "doctor.wiggle.intro": {
-    en: "At the lowest torque the servo moves {counts} counts each way from where it is and back; the panel reads where it got to and its load.",
-    ko: "가장 약한 힘으로 서보가 지금 자리에서 양쪽으로 {counts}씩 움직였다가 돌아와요. 패널은 도달한 위치와 부하를 읽어요.",
+    en: "At the lowest torque the servo moves a few counts each way from where it is and back, never outside its safe range; the panel reads where it got to and its load.",
+    ko: "가장 약한 힘으로 서보가 지금 자리에서 양쪽으로 조금씩 움직였다가 돌아와요. 안전 범위 밖으로는 움직이지 않아요. 패널은 도달한 위치와 부하를 읽어요.",
   },
   "doctor.wiggle.ask": { en: "Wiggle test…", ko: "흔들기 검사…" },
   "doctor.wiggle.question": {

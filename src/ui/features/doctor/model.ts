@@ -1,12 +1,15 @@
-import {
-  type Finding,
-  type FindingCode,
-  HIGH_LOAD_AT_REST,
-  type ScanResult,
-  type ServoReading,
-} from "../../../device/servo-doctor/index.ts";
-import { HUNO_SERVO_COUNT } from "../../../protocol/servo-limits.ts";
-import { WCK_MAX_ID } from "../../../protocol/wck.ts";
+import type { Finding, FindingCode, ScanResult, ServoReading } from "../../../device/servo-doctor/index.ts";
+import { HUNO_SERVO_COUNT, HUNO_SERVO_IDS } from "../../../protocol/servo-limits.ts";
+
+export { HUNO_SERVO_IDS };
+
+/**
+ * Every id a wCK servo can have, 0-30 (docs/protocol.md §5): the device's `ALL_SERVO_IDS`, listed here so that
+ * drawing the view does not load the device's servo code (tests/unit/servo-check-model.test.ts checks they agree).
+ */
+export const ALL_SERVO_IDS: readonly number[] = Array.from({ length: 31 }, (_, i) => i);
+const WCK_MAX_ID = ALL_SERVO_IDS.length - 1;
+
 import type { DoctorFix, DoctorState } from "./state.ts";
 
 /**
@@ -59,11 +62,20 @@ export function figurePoints(): FigurePoint[] {
 /** What a servo's mark on the figure and in the table says. */
 export type ServoMark = "answered" | "high-load" | "silent" | "garbled" | "unread";
 
-/** The mark of one reading (none yet: "unread"). A clean answer with a high load at rest is "high-load". */
-export function markOf(reading: ServoReading | undefined): ServoMark {
+/**
+ * The mark of one reading (none yet: "unread"). A clean answer is "high-load" when the scan's findings say so
+ * (the device judges the load, `servo-high-load`; during a scan, before its findings, it is "answered").
+ */
+export function markOf(reading: ServoReading | undefined, highLoad: readonly number[] = []): ServoMark {
   if (!reading) return "unread";
-  if (reading.status === "answered") return reading.load >= HIGH_LOAD_AT_REST ? "high-load" : "answered";
+  if (reading.status === "answered") return highLoad.includes(reading.id) ? "high-load" : "answered";
   return reading.status;
+}
+
+/** The ids the scan found carrying a high load at rest. */
+export function highLoadIds(d: DoctorState): number[] {
+  if (d.scanning || !d.scan) return [];
+  return d.scan.findings.filter((f) => f.code === "servo-high-load").flatMap((f) => f.ids);
 }
 
 /** The readings to show: the scan under way, else the last scan's. */

@@ -12,7 +12,7 @@ import { sidesNote } from "../zeros/joints/joint-name.ts";
 import { cancel, pick, scan, setAllIds } from "./actions.ts";
 import { servoFigure } from "./figure-view.ts";
 import type { DoctorTranslator } from "./messages.ts";
-import { markOf, orderedFindings, shownReadings } from "./model.ts";
+import { highLoadIds, markOf, orderedFindings, shownReadings } from "./model.ts";
 import { type DoctorState, doctorOf } from "./state.ts";
 
 /** The scan: its controls and progress, then the result as a figure and a table, and the findings in words. */
@@ -33,7 +33,7 @@ function row(ctx: ViewContext, t: DoctorTranslator, id: number, r: ServoReading 
   const d = doctorOf(ctx.state);
   const { locale } = ctx.state;
   const answered = r?.status === "answered" ? r : undefined;
-  const high = markOf(r) === "high-load";
+  const high = markOf(r, highLoadIds(d)) === "high-load";
   return html`
     <tr data-servo=${id} class=${d.picked === id ? "is-picked" : ""}>
       <td class="num">${id}</td>
@@ -170,7 +170,7 @@ export function scanCard(ctx: ViewContext, t: DoctorTranslator): TemplateResult 
             <p class="muted small sides-note">${sidesNote(locale)}</p>
             <div class="doctor-result">
               <div class="doctor-picture">
-                ${servoFigure(t, shownReadings(d), d.picked, (id) => pick(ctx, id))}
+                ${servoFigure(t, shownReadings(d), highLoadIds(d), d.picked, (id) => pick(ctx, id))}
                 ${
                   findings.length > 0
                     ? html`<div class="doctor-findings" data-testid="doctor-findings">

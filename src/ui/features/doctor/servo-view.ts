@@ -1,5 +1,5 @@
 import { html, nothing, type TemplateResult } from "lit-html";
-import { INFO_PARAMETERS, type ServoInfo, WIGGLE_COUNTS } from "../../../device/servo-doctor/index.ts";
+import type { ParameterReading, ServoInfo } from "../../../device/servo-doctor/index.ts";
 import type { Locale } from "../../../i18n/locale.ts";
 import {
   infoStoppedText,
@@ -9,16 +9,19 @@ import {
   servoText,
   wiggleText,
 } from "../../../i18n/outcomes/servos/servo-words.ts";
-import { safeRange } from "../../../protocol/servo-limits.ts";
-import { WCK_MAX_ID } from "../../../protocol/wck.ts";
+import type { WckParameter } from "../../../protocol/wck.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
 import { askWiggle, cancel, pick, readInfo, wiggle } from "./actions.ts";
 import type { DoctorTranslator } from "./messages.ts";
+import { ALL_SERVO_IDS, HUNO_SERVO_IDS } from "./model.ts";
 import { doctorOf } from "./state.ts";
 
 /** One servo's health: its settings as read (the manual's byte orders) and the wiggle test behind one question. */
 
-const ALL_IDS = Array.from({ length: WCK_MAX_ID + 1 }, (_, i) => i);
+/** The parameters read, in the order read (the device reads them in the manual's order). */
+function parameterOrder(info: ServoInfo) {
+  return Object.entries(info.parameters) as [WckParameter, ParameterReading][];
+}
 
 function infoBlock(t: DoctorTranslator, info: ServoInfo, locale: Locale): TemplateResult {
   const s = info.status;
@@ -37,9 +40,7 @@ function infoBlock(t: DoctorTranslator, info: ServoInfo, locale: Locale): Templa
           ? html`<table class="doctor-table doctor-params">
               <caption class="sr-only">${t("doctor.servo.settings", { id: String(info.id) })}</caption>
               <tbody>
-                ${INFO_PARAMETERS.map((p) => {
-                  const r = info.parameters[p];
-                  if (!r) return nothing;
+                ${parameterOrder(info).map(([p, r]) => {
                   return html`<tr>
                     <th scope="row">${parameterNameText(p, locale)}</th>
                     <td class="num">${r.status === "answered" ? parameterValueText(r.value) : readingStatusText(r.status, locale)}</td>
@@ -59,12 +60,14 @@ function wiggleBlock(ctx: ViewContext, t: DoctorTranslator, id: number): Templat
   const { locale } = ctx.state;
   const busy = d.busy !== undefined || ctx.state.running.length > 0;
   const who = String(id);
-  if (!safeRange(id)) return html`<p class="muted small">${t("doctor.wiggle.noRange")}</p>`;
-  const result = d.wiggle?.id === id ? d.wiggle : undefined;
+  // Only servos 0-15 have a published safe range (docs/protocol.md §5): the device wiggles no other.
+  if (!HUNO_SERVO_IDS.includes(id)) return html`<p class="muted small">${t("doctor.wiggle.noRange")}</p>`;
+  const result = d.wiggle?.result.id === id ? d.wiggle.result : undefined;
+  const counts = d.wiggle?.counts ?? 0;
   const steps = result && "steps" in result ? result.steps : [];
   return html`
     <h3>${t("doctor.wiggle.title")}</h3>
-    <p class="muted small">${t("doctor.wiggle.intro", { counts: String(WIGGLE_COUNTS) })}</p>
+    <p class="muted small">${t("doctor.wiggle.intro")}</p>
     ${
       d.wiggleAsked
         ? html`<div class="confirm confirm--warning" role="alertdialog" aria-labelledby="wiggle-question">
@@ -87,7 +90,7 @@ function wiggleBlock(ctx: ViewContext, t: DoctorTranslator, id: number): Templat
     }
     <div role="status" aria-live="polite" aria-label=${t("doctor.wiggle.title")}>${
       result
-        ? html`<p data-testid="doctor-wiggle-result">${wiggleText(result, WIGGLE_COUNTS, locale)}</p>
+        ? html`<p data-testid="doctor-wiggle-result">${wiggleText(result, counts, locale)}</p>
             ${
               steps.length > 0
                 ? html`<ul class="small muted mono">${steps.map(
@@ -119,7 +122,7 @@ export function servoCard(ctx: ViewContext, t: DoctorTranslator): TemplateResult
             @change=${(e: Event) => pick(ctx, Number((e.target as HTMLSelectElement).value))}
           >
             ${id === undefined ? html`<option value="" selected disabled>—</option>` : nothing}
-            ${ALL_IDS.map((i) => html`<option value=${i} ?selected=${i === id}>${servoText(i, locale)}</option>`)}
+            ${ALL_SERVO_IDS.map((i) => html`<option value=${i} ?selected=${i === id}>${servoText(i, locale)}</option>`)}
           </select>
         </label>
         <button type="button" class="btn" data-testid="doctor-read" ?disabled=${busy || id === undefined} @click=${() => void readInfo(ctx)}>

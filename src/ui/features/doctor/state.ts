@@ -27,7 +27,8 @@ export interface DoctorState {
   info?: ServoInfo;
   /** The wiggle's question is shown for the picked servo. */
   wiggleAsked?: boolean;
-  wiggle?: WiggleResult;
+  /** The last wiggle's result, and how many counts each way it asked for. */
+  wiggle?: { result: WiggleResult; counts: number };
   /** The guided id fix: the ids as typed, and what it asks or found. */
   fix: DoctorFix;
   /** A refusal or failure of the last operation (direct mode refused: `refused` offers Stop). */
