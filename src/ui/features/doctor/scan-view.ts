@@ -24,7 +24,7 @@ function statusCell(t: DoctorTranslator, r: ServoReading | undefined, locale: Lo
   if (!r) return html`<span class="muted">${t("doctor.table.notRead")}</span>`;
   const mark = markOf(r);
   const word = readingStatusText(r.status, locale);
-  return html`<span class=${`status status--${mark}`}>${word}</span>${
+  return html`<span class=${`doctor-status doctor-status--${mark}`}>${word}</span>${
     r.status === "garbled" ? html` <span class="mono small muted">${hex(r.bytes)}</span>` : nothing
   }`;
 }
@@ -40,7 +40,7 @@ function row(ctx: ViewContext, t: DoctorTranslator, id: number, r: ServoReading 
       <td>${jointText(id, locale) ?? "—"}</td>
       <td data-testid=${`doctor-status-${id}`}>${statusCell(t, r, locale)}</td>
       <td class="num">${answered?.position ?? ""}</td>
-      <td class="num">${answered ? html`${answered.load}${high ? html` <span class="status status--high-load">${t("doctor.table.highLoad")}</span>` : nothing}` : ""}</td>
+      <td class="num">${answered ? html`${answered.load}${high ? html` <span class="doctor-status doctor-status--high-load">${t("doctor.table.highLoad")}</span>` : nothing}` : ""}</td>
       <td>
         <button
           type="button"
