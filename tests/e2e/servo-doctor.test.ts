@@ -18,16 +18,16 @@ async function openDoctor(page: Page, link: string): Promise<void> {
   await page.getByTestId("doctor-scan-card").waitFor();
 }
 
-/** Restarts the demo robot with a fault of its servo bus, from the view's demo control. */
-async function simulateFault(page: Page, kind: string, servo: number): Promise<void> {
+/**
+ * Restarts the demo robot with a fault of its servo bus, from the view's demo control, and waits until the
+ * restarted robot is connected and the view names the fault (`now`, in the page's language).
+ */
+async function simulateFault(page: Page, kind: string, servo: number, now: string): Promise<void> {
   await page.getByTestId("doctor-demo-kind").selectOption(kind);
   await page.getByTestId("doctor-demo-servo").selectOption(String(servo));
   await page.getByTestId("doctor-demo-apply").click();
-  await page
-    .getByTestId("doctor-demo-now")
-    .filter({ hasText: `${servo}` })
-    .waitFor();
-  await page.getByTestId("doctor-scan-card").waitFor();
+  await page.getByTestId("doctor-demo-now").filter({ hasText: now }).waitFor();
+  await page.getByTestId("doctor-scan").and(page.locator(":enabled")).waitFor();
 }
 
 /** Scans and waits for the scan's result (its summary line). */
@@ -80,7 +80,7 @@ describe("Servo check on the demo robot", () => {
     expect(await axeProblems(page, { within: ".doctor-view" })).toEqual([]);
 
     // A replacement servo for the right knee (7), still at the factory id 0; it survives a reconnect.
-    await simulateFault(page, "replacement", 7);
+    await simulateFault(page, "replacement", 7, "replacement servo (still id 0), servo 7");
     await page.getByRole("link", { name: "Robot", exact: true }).click();
     await page.getByRole("button", { name: "Disconnect" }).click();
     await connectDemo(page);
@@ -154,7 +154,7 @@ describe("Servo check on the demo robot", () => {
   it("speaks Korean through the same walk", async () => {
     const { page, context } = await newLocalePage(app, "ko-KR", { options: FAST });
     await openDoctor(page, "서보 점검");
-    await simulateFault(page, "replacement", 3);
+    await simulateFault(page, "replacement", 3, "교체한 서보 (아직 ID 0), 서보 3번");
     await scanNow(page, /ID 16개를 검사했어요/);
     expect(await status(page, 0)).toMatch(/^깨진 응답/);
     expect(await status(page, 3)).toBe("응답 없음");

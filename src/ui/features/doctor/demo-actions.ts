@@ -46,15 +46,16 @@ export async function restartWithFault(ctx: AppContext, fault: DemoFault): Promi
   if (!demoBusOf(ctx) || doctorOf(ctx.store.get()).busy) return;
   patchDoctor(ctx.store, { busy: "demo" });
   const { demoServoBus } = await import("../../demo-robot.ts");
-  const choice = ctx.session.pageScope.get(DEMO_FAULT);
-  choice.fault = fault;
-  choice.unplugged = [];
   ctx.session.demoServos = demoServoBus(servoFaultsOf(fault));
   const connected = await ctx.session.connectDemo({
     bluetooth: ctx.store.get().connection.robot?.link === "bluetooth",
   });
-  // The new connection starts the view afresh; when it failed, the connection card says why.
-  if (!connected) patchDoctor(ctx.store, { busy: undefined });
+  // The servos are the session's now, connected or not: the next connection of the demo robot gets them.
+  const choice = ctx.session.pageScope.get(DEMO_FAULT);
+  choice.fault = fault;
+  choice.unplugged = [];
+  // The new connection started the view afresh (when it failed, the connection card says why).
+  patchDoctor(ctx.store, connected ? {} : { busy: undefined });
 }
 
 /** Unplugs joint `joint`'s servo from the demo robot's bus, or plugs every servo unplugged here back in. */
