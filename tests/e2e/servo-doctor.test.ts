@@ -1,6 +1,6 @@
 import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
-import { FAST, squash } from "./harness.ts";
+import { squash } from "./harness.ts";
 import "./rbc-test-globals.ts";
 import { axeProblems, connectDemo, keysShown, newLocalePage, text, useApp } from "./i18n-checks.ts";
 
@@ -72,7 +72,7 @@ async function holdAfterReads(page: Page, count: number): Promise<number[]> {
 
 describe("Servo check on the demo robot", () => {
   it("finds a replacement servo at id 0, fixes its id with the guided fix, and scans clean; axe clean before and after", async () => {
-    const { page, context } = await newLocalePage(app, "en-US", { options: FAST });
+    const { page, context } = await newLocalePage(app, "en-US");
     await openDoctor(page, "Servo check");
     expect(await text(page.locator(".doctor-view .view-head p"))).toContain(
       "Find servos that do not answer or carry the wrong id",
@@ -152,7 +152,7 @@ describe("Servo check on the demo robot", () => {
   });
 
   it("speaks Korean through the same walk", async () => {
-    const { page, context } = await newLocalePage(app, "ko-KR", { options: FAST });
+    const { page, context } = await newLocalePage(app, "ko-KR");
     await openDoctor(page, "서보 점검");
     await simulateFault(page, "replacement", 3, "교체한 서보 (아직 ID 0), 서보 3번");
     await scanNow(page, /ID 16개를 검사했어요/);
@@ -184,7 +184,7 @@ describe("Servo check on the demo robot", () => {
   });
 
   it("Cancel mid-scan says which ids were read and which were not", async () => {
-    const { page, context } = await newLocalePage(app, "en-US", { options: FAST });
+    const { page, context } = await newLocalePage(app, "en-US");
     await openDoctor(page, "Servo check");
     await page.getByText("All 31 ids (0-30)").click();
     await page.getByTestId("doctor-scan").click();
@@ -213,7 +213,7 @@ describe("Servo check on the demo robot", () => {
   });
 
   it("the top bar's Stop during a scan ends it, and the view says so", async () => {
-    const { page, context } = await newLocalePage(app, "en-US", { options: FAST });
+    const { page, context } = await newLocalePage(app, "en-US");
     await openDoctor(page, "Servo check");
     await page.getByText("All 31 ids (0-30)").click();
     await page.getByTestId("doctor-scan").click();
