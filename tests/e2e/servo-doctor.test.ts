@@ -1,6 +1,6 @@
 import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
-import { squash } from "./harness.ts";
+import { connectRobot, squash } from "./harness.ts";
 import "./rbc-test-globals.ts";
 import { axeProblems, connectDemo, keysShown, newLocalePage, text, useApp } from "./i18n-checks.ts";
 
@@ -11,6 +11,14 @@ import { axeProblems, connectDemo, keysShown, newLocalePage, text, useApp } from
  */
 
 const app = useApp();
+
+/**
+ * The robot's clock at a quarter of real speed. A scan reads each id within a 48 ms window of robot time; the
+ * paced clock lets robot time follow real time up to the next timer while a request is on its way through the
+ * page, so a page starved for a whole window (a loaded machine) would close it before the simulated servo's
+ * reply is due, and read the servo as silent. At a quarter speed that takes 192 ms of starvation.
+ */
+const QUARTER = { timeScale: 0.25 };
 
 async function openDoctor(page: Page, link: string): Promise<void> {
   await connectDemo(page);
@@ -72,7 +80,7 @@ async function holdAfterReads(page: Page, count: number): Promise<number[]> {
 
 describe("Servo check on the demo robot", () => {
   it("finds a replacement servo at id 0, fixes its id with the guided fix, and scans clean; axe clean before and after", async () => {
-    const { page, context } = await newLocalePage(app, "en-US");
+    const { page, context } = await newLocalePage(app, "en-US", { options: QUARTER });
     await openDoctor(page, "Servo check");
     expect(await text(page.locator(".doctor-view .view-head p"))).toContain(
       "Find servos that do not answer or carry the wrong id",
@@ -152,7 +160,7 @@ describe("Servo check on the demo robot", () => {
   });
 
   it("speaks Korean through the same walk", async () => {
-    const { page, context } = await newLocalePage(app, "ko-KR");
+    const { page, context } = await newLocalePage(app, "ko-KR", { options: QUARTER });
     await openDoctor(page, "서보 점검");
     await simulateFault(page, "replacement", 3, "교체한 서보 (아직 ID 0), 서보 3번");
     await scanNow(page, /ID 16개를 검사했어요/);
@@ -184,7 +192,7 @@ describe("Servo check on the demo robot", () => {
   });
 
   it("Cancel mid-scan says which ids were read and which were not", async () => {
-    const { page, context } = await newLocalePage(app, "en-US");
+    const { page, context } = await newLocalePage(app, "en-US", { options: QUARTER });
     await openDoctor(page, "Servo check");
     await page.getByText("All 31 ids (0-30)").click();
     await page.getByTestId("doctor-scan").click();
@@ -213,7 +221,7 @@ describe("Servo check on the demo robot", () => {
   });
 
   it("the top bar's Stop during a scan ends it, and the view says so", async () => {
-    const { page, context } = await newLocalePage(app, "en-US");
+    const { page, context } = await newLocalePage(app, "en-US", { options: QUARTER });
     await openDoctor(page, "Servo check");
     await page.getByText("All 31 ids (0-30)").click();
     await page.getByTestId("doctor-scan").click();
@@ -231,6 +239,68 @@ describe("Servo check on the demo robot", () => {
     // Stop keeps the robot standing: no servo was made passive.
     const passive = await page.evaluate(() => window.__rbcDemoSim?.servos.map((s) => s.passive));
     expect(passive).toEqual(Array(16).fill(false));
+    await context.close();
+  });
+
+  it("picks a servo on the figure, reads its settings, and wiggles it after one question: a loaded servo does not follow", async () => {
+    const { page, context } = await newLocalePage(app, "en-US", { options: QUARTER });
+    await openDoctor(page, "Servo check");
+    await simulateFault(page, "loaded", 4, "loaded servo, servo 4");
+    await scanNow(page, /Scanned 16 ids/);
+    const [finding] = await findings(page);
+    expect(finding).toMatch(/^Servo 4 \(left ankle roll\) carries a high load at rest \(\d+\)/);
+    const mark = page.locator('[data-testid=servo-figure] g[data-servo="4"]');
+    expect(await mark.getAttribute("class")).toContain("mark--high-load");
+    await mark.click();
+    expect(await page.getByTestId("doctor-pick").inputValue()).toBe("4");
+    await page.getByTestId("doctor-read").click();
+    const info = page.getByTestId("doctor-info");
+    await info.waitFor();
+    expect(await text(info)).toMatch(
+      /^Status: answered, position \d+, load 180\. Settings read from servo 4 P and D gains P \d+, D \d+ /,
+    );
+    expect(await text(info)).toContain("bounds (lower, upper) 1, 254");
+
+    // Nothing moves before the question is answered.
+    await page.getByTestId("doctor-wiggle-ask").click();
+    const question = page.getByRole("alertdialog");
+    expect(await text(question)).toContain(
+      "Hold the robot or lay it down: servo 4 will move a few counts each way.",
+    );
+    const before = await page.evaluate(() => window.__rbcDemoSim?.servos[4]?.position);
+    await page.getByTestId("doctor-wiggle-go").click();
+    const result = page.getByTestId("doctor-wiggle-result");
+    await result.waitFor();
+    expect(await text(result)).toMatch(
+      new RegExp(
+        `^Servo 4 \\(left ankle roll\\) did not follow the wiggle \\(±5 from ${before}, at the lowest torque\\): it made \\d+% of the swing; highest load \\d+\\.$`,
+      ),
+    );
+    expect(await axeProblems(page, { within: ".doctor-view" })).toEqual([]);
+    await context.close();
+  });
+
+  it("is refused while the robot plays a motion started elsewhere, says so, and offers Stop", async () => {
+    const { page, context } = await newLocalePage(app, "en-US", {
+      options: { ...QUARTER, variant: { busyMotion: 2 } },
+    });
+    await connectRobot(page, app.url);
+    await page.getByRole("link", { name: "Servo check", exact: true }).click();
+    await page.getByTestId("doctor-scan").click();
+    const problem = page.getByTestId("doctor-problem");
+    await problem.filter({ hasText: "Not started" }).waitFor();
+    expect(await text(problem)).toContain(
+      "The servo check could not run. Not started: the robot is busy, probably playing a motion started elsewhere",
+    );
+    expect(await page.evaluate(() => window.__rbcTest?.sim.directMode)).toBe(false);
+    await problem.getByRole("button", { name: "Stop" }).click();
+    await page.getByTestId("stop-banner").waitFor();
+    // The motion ends at the end of its scene (robot time at a quarter of real speed).
+    await expect
+      .poll(() => page.evaluate(() => window.__rbcTest?.sim.playingMotion ?? null), { timeout: 30_000 })
+      .toBe(null);
+    await scanNow(page, /Scanned 16 ids/);
+    expect(await problem.textContent().then(squash)).toBe("");
     await context.close();
   });
 });
