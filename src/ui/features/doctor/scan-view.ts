@@ -25,7 +25,9 @@ function statusCell(t: DoctorTranslator, r: ServoReading | undefined, locale: Lo
   const mark = markOf(r);
   const word = readingStatusText(r.status, locale);
   return html`<span class=${`doctor-status doctor-status--${mark}`}>${word}</span>${
-    r.status === "garbled" ? html` <span class="mono small muted">${hex(r.bytes)}</span>` : nothing
+    r.status === "garbled"
+      ? html` <span class="mono small muted doctor-bytes">${hex(r.bytes)}</span>`
+      : nothing
   }`;
 }
 
