@@ -2,7 +2,16 @@ import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
 import { connectRobot, squash } from "./harness.ts";
 import "./rbc-test-globals.ts";
-import { axeProblems, connectDemo, keysShown, newLocalePage, text, useApp } from "./i18n-checks.ts";
+import {
+  axeProblems,
+  connectDemo,
+  keysShown,
+  newLocalePage,
+  PHONE,
+  pageProblems,
+  text,
+  useApp,
+} from "./i18n-checks.ts";
 
 /**
  * The Servo check (issue 22) on the demo robot, on the paced virtual clock of the tests (tests/support/paced-clock.ts):
@@ -303,4 +312,22 @@ describe("Servo check on the demo robot", () => {
     expect(await problem.textContent().then(squash)).toBe("");
     await context.close();
   });
+
+  for (const [locale, lang, link, now] of [
+    ["en-US", "en", "Servo check", "replacement servo (still id 0), servo 12"],
+    ["ko-KR", "ko", "서보 점검", "교체한 서보 (아직 ID 0), 서보 12번"],
+  ] as const) {
+    it(`fits a phone in ${locale} after a scan and a refused fix: no key, no label overflow, no sideways scroll, axe clean`, async () => {
+      const { page, context } = await newLocalePage(app, locale, { size: PHONE, options: QUARTER });
+      await openDoctor(page, link);
+      await simulateFault(page, "replacement", 12, now);
+      await page.getByTestId("doctor-scan").click();
+      await page.getByTestId("doctor-findings").waitFor();
+      await page.getByTestId("doctor-fix").click();
+      await page.getByTestId("doctor-demo-unplug").waitFor();
+      await page.getByTestId("doctor-pick").selectOption("12");
+      expect(await pageProblems(page, { lang })).toEqual([]);
+      await context.close();
+    });
+  }
 });

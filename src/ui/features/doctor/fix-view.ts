@@ -45,7 +45,7 @@ function nextSteps(ctx: ViewContext, t: DoctorTranslator, result: SetIdResult): 
     <div class="write-row">
       ${
         other?.connected && other.busId === result.from
-          ? html`<button type="button" class="btn" data-testid="doctor-demo-unplug" @click=${() => plug(ctx, result.from)}>
+          ? html`<button type="button" class="btn doctor-wrap" data-testid="doctor-demo-unplug" @click=${() => plug(ctx, result.from)}>
               ${t("doctor.demo.unplug", { servo: servoText(result.from, locale) })}
             </button>`
           : nothing
