@@ -313,6 +313,33 @@ describe("Servo check on the demo robot", () => {
     await context.close();
   });
 
+  it("a scan ended by a pulled cable says, on the next connection, which ids were read", async () => {
+    const { page, context } = await newLocalePage(app, "en-US", { options: QUARTER });
+    await connectRobot(page, app.url);
+    await page.getByRole("link", { name: "Servo check", exact: true }).click();
+    await page.getByText("All 31 ids (0-30)").click();
+    await page.getByTestId("doctor-scan").click();
+    const read = await holdAfterReads(page, 3);
+    await page.evaluate(() => window.__rbcTest?.port.unplug());
+    await page.evaluate(() => window.__rbcTest?.clock.release());
+    await page.getByTestId("lost-notice").filter({ hasText: "Did not finish: Servo check" }).waitFor();
+
+    await page.evaluate(() => window.__rbcTest?.port.replug());
+    await page.getByRole("button", { name: "Connect robot" }).click();
+    const said = page.getByTestId("doctor-scan-status").filter({ hasText: "link was lost" });
+    await said.waitFor();
+    const sentence = await text(said);
+    const shown = /Read: ([\d, ]+)\. Not read: ([\d, ]+)\.$/.exec(sentence);
+    expect(sentence).toMatch(
+      /^The last scan, on the connection before this one: The scan stopped \(the robot's link was lost\)\. Read: /,
+    );
+    const readIds = (shown?.[1] ?? "").split(", ").map(Number);
+    const notRead = (shown?.[2] ?? "").split(", ").map(Number);
+    expect(readIds.slice(0, read.length)).toEqual(read);
+    expect([...readIds, ...notRead]).toEqual([...Array(31).keys()]);
+    await context.close();
+  });
+
   for (const [locale, lang, link, now] of [
     ["en-US", "en", "Servo check", "replacement servo (still id 0), servo 12"],
     ["ko-KR", "ko", "서보 점검", "교체한 서보 (아직 ID 0), 서보 12번"],

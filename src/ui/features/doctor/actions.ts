@@ -1,3 +1,4 @@
+import type { ScanResult } from "../../../device/servo-doctor/index.ts";
 import { translator } from "../../../i18n/translate.ts";
 import type { AppContext } from "../../context.ts";
 import { said } from "../../said.ts";
@@ -56,6 +57,25 @@ class DoctorRun implements Controller {
 
 const DOCTOR_RUN = controllerKey("servo check", () => new DoctorRun());
 
+/**
+ * A scan the lost link ended (a cable pulled), kept for the page: the view of that connection is gone with it,
+ * so the next connection's view says which ids were read before the link was lost.
+ */
+class LostScan implements Controller {
+  result: ScanResult | undefined;
+
+  dispose(): void {
+    this.result = undefined;
+  }
+}
+
+const LOST_SCAN = controllerKey("servo check: scan ended by a lost link", () => new LostScan());
+
+/** The scan a lost link ended, on an earlier connection of this page, if any. */
+export function lostScanOf(ctx: AppContext): ScanResult | undefined {
+  return ctx.session.pageScope.peek(LOST_SCAN)?.result;
+}
+
 function runOf(ctx: AppContext): DoctorRun {
   return ctx.session.connectionScope.get(DOCTOR_RUN);
 }
@@ -93,6 +113,8 @@ export function setAllIds(ctx: AppContext, allIds: boolean): void {
 export async function scan(ctx: AppContext): Promise<void> {
   const ids = [...(doctorOf(ctx.store.get()).allIds ? ALL_SERVO_IDS : HUNO_SERVO_IDS)];
   if (!begin(ctx, "scan", { scanning: { ids, readings: [] } })) return;
+  const lost = ctx.session.pageScope.get(LOST_SCAN);
+  lost.result = undefined;
   const signal = runOf(ctx).start();
   try {
     const { scanServos } = await servoDoctor();
@@ -109,6 +131,7 @@ export async function scan(ctx: AppContext): Promise<void> {
         }),
       { packetMode: false },
     );
+    if (result.stopped?.code === "disconnected") lost.result = result;
     patchDoctor(ctx.store, (d) => {
       const fix = suggestedFix(result);
       const empty = d.fix.from === "" && d.fix.to === "";

@@ -35,6 +35,10 @@ export const doctorMessages = defineMessages({
     en: "Every servo 0-15 answered, with no high load at rest.",
     ko: "서보 0-15가 모두 응답했고, 쉬는 동안 부하가 높은 서보도 없어요.",
   },
+  "doctor.scan.lost": {
+    en: "The last scan, on the connection before this one:",
+    ko: "이 연결 전의 연결에서 한 마지막 검사:",
+  },
   "doctor.scan.resultLabel": { en: "Scan result", ko: "검사 결과" },
   "doctor.scan.none": {
     en: "No scan yet on this connection.",

@@ -9,7 +9,7 @@ import {
 } from "../../../i18n/outcomes/servos/servo-words.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
 import { sidesNote } from "../zeros/joints/joint-name.ts";
-import { cancel, pick, scan, setAllIds } from "./actions.ts";
+import { cancel, lostScanOf, pick, scan, setAllIds } from "./actions.ts";
 import { servoFigure } from "./figure-view.ts";
 import type { DoctorTranslator } from "./messages.ts";
 import { highLoadIds, markOf, orderedFindings, shownReadings } from "./model.ts";
@@ -99,14 +99,14 @@ function summary(t: DoctorTranslator, result: ScanResult): string {
 }
 
 /** What a scan under way or finished says, in the live region. */
-function liveText(t: DoctorTranslator, d: DoctorState, locale: Locale): string {
+function liveText(t: DoctorTranslator, d: DoctorState, locale: Locale, lost?: ScanResult): string {
   if (d.scanning) {
     return t("doctor.scan.progress", {
       done: String(d.scanning.readings.length),
       total: String(d.scanning.ids.length),
     });
   }
-  if (!d.scan) return "";
+  if (!d.scan) return lost ? `${t("doctor.scan.lost")} ${scanStoppedText(lost, locale) ?? ""}` : "";
   const stopped = scanStoppedText(d.scan, locale);
   return stopped ? `${stopped} ${summary(t, d.scan)}` : summary(t, d.scan);
 }
@@ -164,7 +164,7 @@ export function scanCard(ctx: ViewContext, t: DoctorTranslator): TemplateResult 
       <h2 id="doctor-scan-title" class="card-title">${t("doctor.scan.title")}</h2>
       <p class="muted small">${t("doctor.scan.intro")}</p>
       ${controls(ctx, t)}
-      <p class="doctor-live" role="status" aria-live="polite" aria-label=${t("doctor.scan.resultLabel")} data-testid="doctor-scan-status">${liveText(t, d, locale)}</p>
+      <p class="doctor-live" role="status" aria-live="polite" aria-label=${t("doctor.scan.resultLabel")} data-testid="doctor-scan-status">${liveText(t, d, locale, lostScanOf(ctx))}</p>
       ${
         ids.length === 0
           ? html`<p class="muted">${t("doctor.scan.none")}</p>`
