@@ -91,7 +91,7 @@ describe("Servo check on the demo robot", () => {
   it("finds a replacement servo at id 0, fixes its id with the guided fix, and scans clean; axe clean before and after", async () => {
     const { page, context } = await newLocalePage(app, "en-US", { options: QUARTER });
     await openDoctor(page, "Servo check");
-    expect(await text(page.locator(".doctor-view .view-head p"))).toContain(
+    expect(await text(page.locator(".doctor-view .view-head p").first())).toContain(
       "Find servos that do not answer or carry the wrong id",
     );
     expect(await axeProblems(page, { within: ".doctor-view" })).toEqual([]);
@@ -310,6 +310,31 @@ describe("Servo check on the demo robot", () => {
       .toBe(null);
     await scanNow(page, /Scanned 16 ids/);
     expect(await problem.textContent().then(squash)).toBe("");
+    await context.close();
+  });
+
+  it("the top bar's Stop during a wiggle ends it, and the servo keeps holding", async () => {
+    const { page, context } = await newLocalePage(app, "en-US", { options: QUARTER });
+    await openDoctor(page, "Servo check");
+    await page.getByTestId("doctor-pick").selectOption("2");
+    await page.getByTestId("doctor-wiggle-ask").click();
+    await page.getByTestId("doctor-wiggle-go").click();
+    // Caught in the middle: the robot's clock held the moment the wiggle runs.
+    await page.waitForFunction(() => {
+      const running = document
+        .querySelector("[data-testid=doctor-servo-card]")
+        ?.textContent?.includes("Wiggling");
+      if (running) window.__rbcTest?.clock.hold();
+      return running;
+    });
+    await page.getByRole("button", { name: "Stop", exact: true }).click();
+    await page.evaluate(() => window.__rbcTest?.clock.release());
+    const result = page.getByTestId("doctor-wiggle-result");
+    await result.waitFor();
+    expect(await text(result)).toBe(
+      "The wiggle stopped (Stop was pressed); nothing more was sent. The servo holds where it got to.",
+    );
+    expect(await page.evaluate(() => window.__rbcDemoSim?.servos[2]?.passive)).toBe(false);
     await context.close();
   });
 

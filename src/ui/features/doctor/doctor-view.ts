@@ -4,6 +4,7 @@ import { html, nothing, type TemplateResult } from "lit-html";
 import { translator } from "../../../i18n/translate.ts";
 import { notice } from "../../shell/notice.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
+import { sidesNote } from "../zeros/joints/joint-name.ts";
 import { stopRobot } from "./actions.ts";
 import { demoCard } from "./demo-view.ts";
 import { fixCard } from "./fix-view.ts";
@@ -40,6 +41,7 @@ function render(ctx: ViewContext): TemplateResult {
       <header class="view-head">
         <h1 id="view-title">${t("doctor.title")}</h1>
         <p class="muted">${t("doctor.intro")}</p>
+        <p class="muted small sides-note">${sidesNote(ctx.state.locale)}</p>
       </header>
       ${problem(ctx, t)}
       ${scanCard(ctx, t)}

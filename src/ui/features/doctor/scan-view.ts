@@ -8,7 +8,6 @@ import {
   scanStoppedText,
 } from "../../../i18n/outcomes/servos/servo-words.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
-import { sidesNote } from "../zeros/joints/joint-name.ts";
 import { cancel, lostScanOf, pick, scan, setAllIds } from "./actions.ts";
 import { servoFigure } from "./figure-view.ts";
 import type { DoctorTranslator } from "./messages.ts";
@@ -169,7 +168,6 @@ export function scanCard(ctx: ViewContext, t: DoctorTranslator): TemplateResult 
         ids.length === 0
           ? html`<p class="muted">${t("doctor.scan.none")}</p>`
           : html`
-            <p class="muted small sides-note">${sidesNote(locale)}</p>
             <div class="doctor-result">
               <div class="doctor-picture">
                 ${servoFigure(t, shownReadings(d), highLoadIds(d), d.picked, (id) => pick(ctx, id))}
