@@ -3,6 +3,7 @@ import type { Locale } from "../i18n/locale.ts";
 import type { ClassState } from "./features/class/state.ts";
 import type { ConnectionState, KnownPort } from "./features/connection/state.ts";
 import { initialConnection } from "./features/connection/state.ts";
+import type { DoctorState } from "./features/doctor/state.ts";
 import type { EditorLiveState } from "./features/editor/live-state.ts";
 import type { EditorState } from "./features/editor/state.ts";
 import type { FirmwareState } from "./features/firmware/state.ts";
@@ -93,6 +94,8 @@ export interface AppState {
   sensors?: SensorsState;
   /** The Servos view of this connection. */
   servos?: ServosState;
+  /** The Servo check of this connection. */
+  doctor?: DoctorState;
   /** The Firmware view: the opened file and the last update's outcome (kept across connections). */
   firmware?: FirmwareState;
   /** The motion editor (kept across connections: the motion being made is on this computer). */
@@ -143,6 +146,7 @@ export function freshConnectionState(): Partial<AppState> {
     motions: undefined,
     sensors: undefined,
     servos: undefined,
+    doctor: undefined,
     editorLive: undefined,
     acks: undefined,
   };

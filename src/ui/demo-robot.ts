@@ -5,6 +5,7 @@ import {
   createDemoRbc,
   MockSerialPort,
   ServoBus,
+  type ServoFaults,
   type SimulatedRbc,
 } from "../sim/index.ts";
 
@@ -67,4 +68,9 @@ export function createDemoRobot(options: DemoRobotOptions = {}): DemoRobot {
   if (page.__rbcTestOptions !== undefined) page.__rbcDemoSim = sim;
   const link = options.bluetooth ? bluetoothLinkOptions() : { latencyMs: 2 };
   return { port: new MockSerialPort(boot, { clock, ...link, record: false }), boot, sim, clock, servoBus };
+}
+
+/** New servos with `faults` for the session's demo robot (the Servo check's "Demo robot: simulate a fault"). */
+export function demoServoBus(faults: ServoFaults): ServoBus {
+  return new ServoBus(faults);
 }

@@ -14,3 +14,9 @@ import { clockOfPort } from "./simulated-clock.ts";
 export function createRbcClient(port: SerialPortLike, clock: Clock = clockOfPort(port)): RbcClient {
   return new RbcClient(new WebSerialTransport(port, { clock }), { clock, link: linkKindOf(port.getInfo()) });
 }
+
+/**
+ * The servo doctor (the Servo check's operations) comes with the client: it shares the client's servo-bus code,
+ * and a chunk of its own would split that code out and lengthen the first page's list of chunks (issue 22).
+ */
+export * as servoDoctor from "../device/servo-doctor/index.ts";

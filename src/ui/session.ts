@@ -108,8 +108,11 @@ export class Session {
 
   /** Bumped by every chooser opened and by `cancelChoosing()`: a chooser's answer counts only while current. */
   private chooser = 0;
-  /** The demo robot's servos, kept for the page: an id set survives a reconnect (docs/protocol.md §5). */
-  private demoServos: ServoBus | undefined;
+  /**
+   * The demo robot's servos, kept for the page: an id set survives a reconnect (docs/protocol.md §5). The Servo
+   * check replaces them with servos carrying a fault and connects the demo robot again (a restart).
+   */
+  demoServos: ServoBus | undefined;
 
   /** Opens the chooser and connects to the chosen port. Call it straight from the click handler. */
   chooseAndConnect(): void {

@@ -60,6 +60,7 @@ describe("the panel's structure", () => {
     expect(features.sort()).toEqual([
       "class",
       "connection",
+      "doctor",
       "editor",
       "firmware",
       "log",

@@ -16,13 +16,13 @@ import {
   infoStoppedText,
   jointText,
   parameterNameText,
+  parameterValueText,
   readingStatusText,
   scanStoppedText,
   setIdText,
   wiggleText,
 } from "../../i18n/outcomes/servos/servo-words.ts";
 import { translator } from "../../i18n/translate.ts";
-import type { WckParameterValue } from "../../protocol/wck.ts";
 import { type GlobalValues, intArgument, noExtraArguments, parseCommand } from "../args.ts";
 import { type CommandDef, localeOf, type RunEnv } from "../command.ts";
 import { confirm } from "../confirm.ts";
@@ -112,23 +112,6 @@ async function scan(env: RunEnv, values: GlobalValues & { ids?: string }, args: 
   }
   if (result.stopped?.code === "cancelled") return EXIT.interrupted;
   return scanOk(result) ? EXIT.ok : EXIT.failed;
-}
-
-function parameterValueText(value: WckParameterValue): string {
-  switch (value.parameter) {
-    case "gains":
-      return `P ${value.p}, D ${value.d}`;
-    case "speed":
-      return `${value.speed}, ${value.acceleration}`;
-    case "overload":
-      return String(value.code);
-    case "bounds":
-      return `${value.lower}, ${value.upper}`;
-    case "iGain":
-      return String(value.i);
-    case "io":
-      return String(value.outputs);
-  }
 }
 
 function parameterText(reading: ParameterReading | undefined, locale: Locale): string {

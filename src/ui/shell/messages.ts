@@ -9,6 +9,7 @@ export const shellMessages = defineMessages({
   "nav.editor": { en: "Editor", ko: "편집기" },
   "nav.sensors": { en: "Sensors", ko: "센서" },
   "nav.servos": { en: "Servos", ko: "서보" },
+  "nav.doctor": { en: "Servo check", ko: "서보 점검" },
   "nav.firmware": { en: "Firmware", ko: "펌웨어" },
   "nav.log": { en: "Log", ko: "로그" },
   "nav.class": { en: "Class", ko: "교실" },

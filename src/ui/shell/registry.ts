@@ -12,6 +12,7 @@ export const VIEWS: readonly NavRegistration[] = [
   { id: "editor", label: "nav.editor", load: () => import("../features/editor/editor-view.ts") },
   { id: "sensors", label: "nav.sensors", load: () => import("../features/sensors/sensors-view.ts") },
   { id: "servos", label: "nav.servos", load: () => import("../features/servos/servos-view.ts") },
+  { id: "doctor", label: "nav.doctor", load: () => import("../features/doctor/doctor-view.ts") },
   { id: "firmware", label: "nav.firmware", load: () => import("../features/firmware/firmware-view.ts") },
   { id: "log", label: "nav.log", load: () => import("../features/log/log-view.ts") },
   { id: "class", label: "nav.class", load: () => import("../features/class/class-view.ts") },

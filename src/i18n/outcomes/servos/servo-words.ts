@@ -6,7 +6,7 @@ import type {
   StopCode,
   WiggleResult,
 } from "../../../device/servo-doctor/index.ts";
-import type { WckParameter } from "../../../protocol/wck.ts";
+import type { WckParameter, WckParameterValue } from "../../../protocol/wck.ts";
 import type { Locale } from "../../locale.ts";
 import { translator } from "../../translate.ts";
 import { servoOutcomeMessages as messages } from "./messages.ts";
@@ -74,6 +74,24 @@ const PARAMETER_KEY = {
 /** A parameter's name ("P and D gains", "bounds (lower, upper)"). */
 export function parameterNameText(parameter: WckParameter, locale: Locale): string {
   return t(locale)(PARAMETER_KEY[parameter]);
+}
+
+/** A parameter's value as read, in the manual's order: "P 30, D 20", "1, 254" (the same in every language). */
+export function parameterValueText(value: WckParameterValue): string {
+  switch (value.parameter) {
+    case "gains":
+      return `P ${value.p}, D ${value.d}`;
+    case "speed":
+      return `${value.speed}, ${value.acceleration}`;
+    case "overload":
+      return String(value.code);
+    case "bounds":
+      return `${value.lower}, ${value.upper}`;
+    case "iGain":
+      return String(value.i);
+    case "io":
+      return String(value.outputs);
+  }
 }
 
 /** A finding as one or two sentences. */
