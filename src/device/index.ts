@@ -70,7 +70,6 @@ export {
   type RunVerdict,
 } from "./run-outcome.ts";
 export * from "./servo-doctor/index.ts";
-export type { StopFound } from "./stop.ts";
 export {
   emptied,
   imageHash,
@@ -82,6 +81,7 @@ export {
   shelfDurationMs,
   shelfKey,
 } from "./shelf.ts";
+export type { StopFound } from "./stop.ts";
 export {
   frameLabel,
   TetheredPlayError,

@@ -15,7 +15,18 @@ const LANGUAGES = [
   { locale: "ko-KR", lang: "ko", demo: "데모 로봇 써 보기" },
 ] as const;
 /** The side navigation's views, by route. */
-const VIEWS = ["robot", "zeros", "motions", "editor", "sensors", "servos", "doctor", "firmware", "log", "class"] as const;
+const VIEWS = [
+  "robot",
+  "zeros",
+  "motions",
+  "editor",
+  "sensors",
+  "servos",
+  "doctor",
+  "firmware",
+  "log",
+  "class",
+] as const;
 
 const app = useApp();
 
