@@ -36,8 +36,10 @@ describe("the panel in Korean", () => {
       "편집기",
       "센서",
       "서보",
+      "서보 점검",
       "펌웨어",
       "로그",
+      "교실",
     ]);
     expect(await page.getByRole("navigation", { name: "화면" }).isVisible()).toBe(true);
     await expect.poll(() => page.title()).toBe("로봇 · RBC 패널");
@@ -86,8 +88,10 @@ describe("the panel in Korean", () => {
       "Editor",
       "Sensors",
       "Servos",
+      "Servo check",
       "Firmware",
       "Log",
+      "Class",
     ]);
     expect(await page.getByTestId("device-card").getByRole("heading", { level: 1 }).textContent()).toBe(
       "Robot",

@@ -103,7 +103,12 @@ describe.concurrent("rbc and NodeSerialTransport over PTY pairs", () => {
       });
 
       const connect = async () => {
-        client = new RbcClient(new NodeSerialTransport(rig!.pty.clientPath));
+        // These tests are about the bytes and the acknowledgements, not the speed: the simulator is a node process
+        // behind socat on a machine that runs browser tests at the same time, so a reply may take far longer than
+        // a robot's. A quick time of 2 s (not 400 ms) keeps a starved machine from failing a correct exchange.
+        client = new RbcClient(new NodeSerialTransport(rig!.pty.clientPath), {
+          timeouts: { quickMs: 2_000 },
+        });
         return { client, identity: await client.connect() };
       };
 

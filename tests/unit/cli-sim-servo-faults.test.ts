@@ -195,3 +195,55 @@ describe("rbc sim accepts the switches", () => {
     expect(r.stderr).toContain('--servo-replacement must be a servo id from 1 to 15, got "0".');
   });
 });
+
+describe("rbc servos against rbc sim over a PTY (the serial path, not the demo robot)", () => {
+  it("scan with every fault: id 7 silent, id 3 garbled, id 0 garbled and id 12 silent (a replacement), id 4 loaded; exit 1", {
+    timeout: T,
+  }, async ({ onTestFinished }) => {
+    const scope = new CliScope();
+    onTestFinished(scope.killAll);
+    const sim = scope.start(["sim", "--pty", "--quiet", ...SWITCHES.flatMap((s) => s.args)], {
+      timeoutMs: T,
+    });
+    const [, client] = await sim.waitFor("stdout", /Clients connect to (\S+),/, 20_000);
+    const scan = await scope.run(["servos", "scan", "--port", client!, "--json"], { timeoutMs: T });
+    expect(scan.code, scan.stderr).toBe(1);
+    const result = JSON.parse(scan.stdout) as {
+      servos: { id: number; status: string; load?: number }[];
+      findings: { code: string; ids: number[] }[];
+    };
+    const status = (id: number) => result.servos.find((s) => s.id === id)?.status;
+    expect([0, 3, 4, 7, 12].map(status)).toEqual(["garbled", "garbled", "answered", "silent", "silent"]);
+    // 16 ids: 0 and 3 garbled, 7 and 12 silent, the other 12 answered (4 among them, loaded).
+    expect(result.servos.filter((s) => s.status === "answered")).toHaveLength(12);
+    expect(result.servos.find((s) => s.id === 4)!.load).toBeGreaterThan(100);
+    // Id 0 garbled with ids 7 and 12 silent reads as a replacement servo for one of them (the scan cannot tell
+    // which); id 3 garbled alone is a duplicate; servo 4 is loaded.
+    expect(result.findings.map((f) => [f.code, f.ids])).toEqual([
+      ["servo-replacement", [0, 7, 12]],
+      ["servo-duplicate", [3]],
+      ["servo-high-load", [4]],
+    ]);
+    sim.child.kill("SIGINT");
+    expect((await sim.done).code).toBe(0);
+  });
+
+  it("a replacement servo for 12 alone: set-id 0 12 is refused while two servos answer at id 0 (exit 1, nothing written)", {
+    timeout: T,
+  }, async ({ onTestFinished }) => {
+    const scope = new CliScope();
+    onTestFinished(scope.killAll);
+    const sim = scope.start(["sim", "--pty", "--servo-replacement", "12"], { timeoutMs: T });
+    const [, client] = await sim.waitFor("stdout", /Clients connect to (\S+),/, 20_000);
+    const fix = await scope.run(["servos", "set-id", "0", "12", "--yes", "--port", client!], {
+      timeoutMs: T,
+    });
+    expect(fix.code).toBe(1);
+    // The refusal is the command's result (stdout), with exit 1.
+    expect(fix.stdout).toContain("Not changed: more than one servo answers at id 0");
+    // The sim's trace: no id-set packet (FF E0 0C …) ever reached the servo bus.
+    expect(sim.stdout).not.toMatch(/FF E0 0C/);
+    sim.child.kill("SIGINT");
+    expect((await sim.done).code).toBe(0);
+  });
+});

@@ -460,6 +460,8 @@ describe("teach-in and tethered play on the demo robot", () => {
     expect(sim.servoPositions()[10]).toBe(51 + 2 * frame);
     expect(frame).toBeLessThan(50);
     expect(sim.servos.some((s) => s.passive)).toBe(false);
-    expect(ctx.session.current?.mode).toBe("direct");
+    // Stop leaves direct mode (docs/protocol.md §5's leave sequence); the servos keep holding.
+    expect(ctx.session.current?.mode).toBe("packet");
+    expect(sim.directMode).toBe(false);
   });
 });
