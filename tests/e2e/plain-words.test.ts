@@ -106,12 +106,12 @@ describe("Firmware: plain words first, and the demo file flagged before a real r
         "I understand: the robot will not work until I write real firmware",
     );
     const update = page.getByRole("button", { name: "Update firmware", exact: true });
-    expect(await update.isDisabled()).toBe(true);
+    await expect.poll(() => update.isDisabled()).toBe(true);
     await shot(page, "plain-words-firmware-demo-file-real-robot");
     await page.locator("#accept-demo-file").check();
-    expect(await update.isEnabled()).toBe(true);
+    await expect.poll(() => update.isEnabled()).toBe(true);
     await page.locator("#accept-demo-file").uncheck();
-    expect(await update.isDisabled()).toBe(true);
+    await expect.poll(() => update.isDisabled()).toBe(true);
     expect(await axeProblems(page, { within: "[data-testid=firmware-view]" })).toEqual([]);
     await page.getByRole("button", { name: "Cancel", exact: true }).click();
 
@@ -122,7 +122,7 @@ describe("Firmware: plain words first, and the demo file flagged before a real r
     await page.getByTestId("flash-start").click();
     await page.getByTestId("flash-confirm").waitFor();
     expect(await page.getByTestId("fw-demo-confirm").count()).toBe(0);
-    expect(await update.isEnabled()).toBe(true);
+    await expect.poll(() => update.isEnabled()).toBe(true);
     await context.close();
   });
 
@@ -135,7 +135,9 @@ describe("Firmware: plain words first, and the demo file flagged before a real r
     await page.getByTestId("flash-start").click();
     await page.getByTestId("flash-confirm").waitFor();
     expect(await page.getByTestId("fw-demo-confirm").count()).toBe(0);
-    expect(await page.getByRole("button", { name: "Update firmware", exact: true }).isEnabled()).toBe(true);
+    await expect
+      .poll(() => page.getByRole("button", { name: "Update firmware", exact: true }).isEnabled())
+      .toBe(true);
     await context.close();
   });
 
@@ -156,9 +158,9 @@ describe("Firmware: plain words first, and the demo file flagged before a real r
     await confirm.waitFor();
     expect(await text(confirm)).toContain("demo-2.50.hex은(는) 데모 파일인데, 이 로봇은 실제 로봇이에요.");
     const update = page.getByRole("button", { name: "펌웨어 업데이트", exact: true });
-    expect(await update.isDisabled()).toBe(true);
+    await expect.poll(() => update.isDisabled()).toBe(true);
     await page.getByText("알겠어요: 진짜 펌웨어를 쓸 때까지 로봇이 작동하지 않아요").click();
-    expect(await update.isEnabled()).toBe(true);
+    await expect.poll(() => update.isEnabled()).toBe(true);
     await shot(page, "plain-words-firmware-ko-phone");
     await page.getByRole("button", { name: "취소", exact: true }).click();
     await openFile(page, plainFile());
