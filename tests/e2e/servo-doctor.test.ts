@@ -318,15 +318,21 @@ describe("Servo check on the demo robot", () => {
     await openDoctor(page, "Servo check");
     await page.getByTestId("doctor-pick").selectOption("2");
     await page.getByTestId("doctor-wiggle-ask").click();
-    await page.getByTestId("doctor-wiggle-go").click();
-    // Caught in the middle: the robot's clock held the moment the wiggle runs.
-    await page.waitForFunction(() => {
-      const running = document
-        .querySelector("[data-testid=doctor-servo-card]")
-        ?.textContent?.includes("Wiggling");
-      if (running) window.__rbcTest?.clock.hold();
-      return running;
+    // Caught in the middle: the robot's clock is held the moment servo 2 first moves (an event in the
+    // simulator, not a poll of the page that a short wiggle could slip past).
+    await page.evaluate(() => {
+      const sim = window.__rbcDemoSim;
+      const start = sim?.servoPositions()[2];
+      const unwatch = sim?.onServos((positions) => {
+        if (positions[2] === start) return;
+        window.__rbcTest?.clock.hold();
+        unwatch?.();
+      });
     });
+    await page.getByTestId("doctor-wiggle-go").click();
+    await page.waitForFunction(() =>
+      document.querySelector("[data-testid=doctor-servo-card]")?.textContent?.includes("Wiggling"),
+    );
     await page.getByRole("button", { name: "Stop", exact: true }).click();
     await page.evaluate(() => window.__rbcTest?.clock.release());
     const result = page.getByTestId("doctor-wiggle-result");

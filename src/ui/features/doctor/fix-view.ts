@@ -83,38 +83,22 @@ export function fixCard(ctx: ViewContext, t: DoctorTranslator): TemplateResult {
           void fixId(ctx);
         }}
       >
-        <label class="inline-field">
-          ${t("doctor.fix.from")}
-          <input
-            id="doctor-fix-from"
-            class="num"
-            type="number"
-            min="0"
-            max="30"
-            step="1"
-            inputmode="numeric"
-            .value=${fix.from}
-            ?disabled=${busy}
-            aria-invalid=${fix.problem === "bad-from" || fix.problem === "same" ? "true" : "false"}
-            @input=${(e: Event) => editFix(ctx, { from: (e.target as HTMLInputElement).value })}
-          />
-        </label>
-        <label class="inline-field">
-          ${t("doctor.fix.to")}
-          <input
-            id="doctor-fix-to"
-            class="num"
-            type="number"
-            min="0"
-            max="30"
-            step="1"
-            inputmode="numeric"
-            .value=${fix.to}
-            ?disabled=${busy}
-            aria-invalid=${fix.problem === "bad-to" || fix.problem === "same" ? "true" : "false"}
-            @input=${(e: Event) => editFix(ctx, { to: (e.target as HTMLInputElement).value })}
-          />
-        </label>
+        ${idField(
+          t("doctor.fix.from"),
+          "doctor-fix-from",
+          fix.from,
+          busy,
+          fix.problem === "bad-from" || fix.problem === "same",
+          (value) => editFix(ctx, { from: value }),
+        )}
+        ${idField(
+          t("doctor.fix.to"),
+          "doctor-fix-to",
+          fix.to,
+          busy,
+          fix.problem === "bad-to" || fix.problem === "same",
+          (value) => editFix(ctx, { to: value }),
+        )}
         <button type="submit" class="btn btn--primary" data-testid="doctor-fix" ?disabled=${busy}>
           ${d.busy === "fix" && !fix.asking ? t("doctor.fix.checking") : t("doctor.fix.check")}
         </button>
@@ -143,4 +127,31 @@ export function fixCard(ctx: ViewContext, t: DoctorTranslator): TemplateResult {
       ${fix.result && !busy ? nextSteps(ctx, t, fix.result) : nothing}
     </section>
   `;
+}
+
+/** One servo id field of the fix form (0-30). */
+function idField(
+  label: string,
+  id: string,
+  value: string,
+  busy: boolean,
+  invalid: boolean,
+  onValue: (value: string) => void,
+): TemplateResult {
+  return html`<label class="inline-field">
+    ${label}
+    <input
+      id=${id}
+      class="num"
+      type="number"
+      min="0"
+      max="30"
+      step="1"
+      inputmode="numeric"
+      .value=${value}
+      ?disabled=${busy}
+      aria-invalid=${invalid ? "true" : "false"}
+      @input=${(e: Event) => onValue((e.target as HTMLInputElement).value)}
+    />
+  </label>`;
 }
