@@ -12,6 +12,8 @@
  *   node --expose-gc --import tsx bench/event-flood.ts          (text)
  *   node --expose-gc --import tsx bench/event-flood.ts --json   (one JSON object)
  */
+import { spawnSync } from "node:child_process";
+import { fileURLToPath } from "node:url";
 import { RbcClient, type RbcEvent } from "../src/device/index.ts";
 import { WebSerialTransport } from "../src/link/index.ts";
 import { VirtualClock } from "../src/shared/clock.ts";
@@ -118,6 +120,19 @@ export function describeFlood(f: FloodFigures): string {
     `  packet log            ${f.logEntries.toLocaleString("en-US")} entries kept, ${f.logDropped.toLocaleString("en-US")} dropped (ring buffer)`,
     `  wall time             ${(f.wallMs / 1000).toFixed(1)} s`,
   ].join("\n");
+}
+
+const SELF = fileURLToPath(import.meta.url);
+
+/** The flood in a fresh `node --expose-gc` child (bench/run.ts runs without --expose-gc), its figures parsed. */
+export function measureFloodInChild(): FloodFigures {
+  const r = spawnSync(process.execPath, ["--expose-gc", "--import", "tsx", SELF, "--json"], {
+    encoding: "utf8",
+    maxBuffer: 1 << 20,
+  });
+  if (r.status !== 0)
+    throw new Error(`event flood child failed (${r.status}): ${r.stderr.trim().split("\n")[0]}`);
+  return JSON.parse(r.stdout.trim().split("\n").at(-1) ?? "") as FloodFigures;
 }
 
 if (import.meta.url === `file://${process.argv[1]}`) {

@@ -30,7 +30,9 @@ export type MetricKey =
   | "motionEditMs"
   | "servoScanRatio"
   | "multiRobotRatio4"
-  | "multiRobotRatio12";
+  | "multiRobotRatio12"
+  | "floodLateHeapMB"
+  | "floodLongestStepMs";
 
 export interface Target {
   op: ">=" | "<=";
@@ -121,6 +123,18 @@ export const ROWS: readonly Row[] = [
   { key: "servoScanRatio", label: "Servo scan 0-30, wired, real time ÷ ideal", unit: "×", digits: 2 },
   { key: "multiRobotRatio4", label: "Upload to 4 robots at once ÷ to 1 (ideal 1.0)", unit: "×", digits: 2 },
   { key: "multiRobotRatio12", label: "Upload to 12 robots at once ÷ to 1 (ideal 1.0)", unit: "×", digits: 2 },
+  {
+    key: "floodLateHeapMB",
+    label: "Event flood (60 s at 285 events/s): heap growth 10-60 s",
+    unit: "MB",
+    digits: 2,
+  },
+  {
+    key: "floodLongestStepMs",
+    label: "Event flood: longest handling of one event, end to end",
+    unit: "ms",
+    digits: 2,
+  },
 ];
 
 export type Metrics = Record<MetricKey, number | null>;

@@ -10,6 +10,7 @@
  *   --no-pty         skip the upload over a PTY (rbc sim --pty in a child process)
  *   --no-log-memory  skip the packet log's memory figures (nine `node --expose-gc` children, about 20 s)
  *   --no-firmware    skip the firmware update figures (three simulated flashes, about 12 s)
+ *   --no-flood       skip the event flood (60 virtual seconds in a `node --expose-gc` child, about 15 s)
  *   --quick          fewer repetitions (1 upload per path instead of 7, 4 CLI start-ups instead of 10, 1 page
  *                    load instead of 5)
  */
@@ -24,6 +25,7 @@ import {
   viteBuildSingle,
 } from "./bundle-size.ts";
 import { measureCliStartup } from "./cli-startup.ts";
+import { describeFlood, measureFloodInChild } from "./event-flood.ts";
 import { describeFirmwareRun, measureFirmwareUpdate } from "./firmware-update.ts";
 import { measureFirstRender } from "./first-render.ts";
 import { describeLogMemory, measureLogMemory } from "./log-memory.ts";
@@ -48,6 +50,7 @@ const noBrowser = args.includes("--no-browser");
 const noPty = args.includes("--no-pty");
 const noLogMemory = args.includes("--no-log-memory");
 const noFirmware = args.includes("--no-firmware");
+const noFlood = args.includes("--no-flood");
 const distIndex = args.indexOf("--dist");
 const distArg = distIndex >= 0 ? args[distIndex + 1] : undefined;
 
@@ -89,6 +92,8 @@ const metrics: Metrics = {
   servoScanRatio: null,
   multiRobotRatio4: null,
   multiRobotRatio12: null,
+  floodLateHeapMB: null,
+  floodLongestStepMs: null,
 };
 const skipped: Partial<Record<MetricKey, string>> = {};
 const details: Record<string, unknown> = {};
@@ -269,6 +274,22 @@ async function main(): Promise<void> {
     skip(["multiRobotRatio4", "multiRobotRatio12"], errorText(e));
   }
 
+  const FLOOD_KEYS: MetricKey[] = ["floodLateHeapMB", "floodLongestStepMs"];
+  if (noFlood) {
+    skip(FLOOD_KEYS, "--no-flood");
+  } else {
+    progress("event flood (0x17 at the firmware's pace for 60 virtual seconds, in a node --expose-gc child)");
+    try {
+      const flood = measureFloodInChild();
+      metrics.floodLateHeapMB = round(flood.lateGrowthMB, 3);
+      metrics.floodLongestStepMs = round(flood.longestStepMs, 2);
+      details.eventFlood = flood;
+      details.eventFloodTable = describeFlood(flood);
+    } catch (e) {
+      skip(FLOOD_KEYS, errorText(e));
+    }
+  }
+
   progress("CLI start-up (node bin/rbc.mjs --help against node -e 0, interleaved)");
   try {
     const cli = measureCliStartup(quick ? 4 : 10);
@@ -396,6 +417,8 @@ if (json) {
   if (logTable) process.stdout.write(`\n${logTable}\n`);
   const motionEditTable = details.motionEditTable as string | undefined;
   if (motionEditTable) process.stdout.write(`\nMotion editing:\n${motionEditTable}\n`);
+  const floodTable = details.eventFloodTable as string | undefined;
+  if (floodTable) process.stdout.write(`\n${floodTable}\n`);
   const firmwareLines = details.firmwareUpdateLines as string[] | undefined;
   if (firmwareLines)
     process.stdout.write(`\nFirmware update:\n${firmwareLines.map((l) => `  ${l}`).join("\n")}\n`);
