@@ -21,7 +21,7 @@ import { COMMANDS } from "../protocol/commands.ts";
 import { type IntelHexImage, parseIntelHex } from "../protocol/intel-hex.ts";
 import { encodePacket } from "../protocol/packet.ts";
 import { PacketParser } from "../protocol/packet-parser.ts";
-import { type Clock, realClock, type TimerId } from "../shared/clock.ts";
+import { type Clock, realClock, sleep, type TimerId } from "../shared/clock.ts";
 import {
   RbcBadReplyError,
   RbcDisconnectedError,
@@ -339,17 +339,7 @@ function progressOf(dialogue: BootloaderDialogue, start: number | undefined, now
 }
 
 function cancellableSleep(clock: Clock, ms: number, signal: AbortSignal | undefined, holds: RobotHolds) {
-  return new Promise<void>((resolve, reject) => {
-    const onAbort = () => {
-      clock.clearTimeout(timer);
-      reject(fromDialogue(bootloaderError("cancelled", holds)));
-    };
-    const timer = clock.setTimeout(() => {
-      signal?.removeEventListener("abort", onAbort);
-      resolve();
-    }, ms);
-    signal?.addEventListener("abort", onAbort, { once: true });
-  });
+  return sleep(clock, ms, signal, () => fromDialogue(bootloaderError("cancelled", holds)));
 }
 
 /** Runs the dialogue to `@`; resolves with when the first line went out and when `@` came (clock ms). */

@@ -81,6 +81,7 @@ export {
   shelfDurationMs,
   shelfKey,
 } from "./shelf.ts";
+export type { SoundReport } from "./sound.ts";
 export type { StopFound } from "./stop.ts";
 export {
   frameLabel,

@@ -36,7 +36,7 @@ import { type RbcClientOptions, RbcConnection, type RbcTimeouts } from "./rbc-co
 import type { LinkTiming } from "./round-trip.ts";
 import type { RunReport } from "./run-outcome.ts";
 import { ServoBus } from "./servo-doctor/servo-bus.ts";
-import { runSound } from "./sound.ts";
+import { playSound, runSound, type SoundReport } from "./sound.ts";
 import { runStop, type StopActivityResult } from "./stop.ts";
 import { subscribe, unsubscribe } from "./subscriptions.ts";
 import type { TetheredPlayOptions, TetheredPlayResult } from "./tethered-play.ts";
@@ -288,6 +288,14 @@ export class RbcClient {
   /** Plays sound 1-25 and resolves when the robot reports it finished (200 ms + its length). */
   runSound(sound: number, options: { signal?: AbortSignal } = {}): Promise<number> {
     return runSound(this.#core, sound, options);
+  }
+
+  /**
+   * Plays sound 1-25 and resolves when it has ended, with what the reply showed: when it came, and whether it
+   * came at once (a firmware that answers before it plays; the client then waits out the sound's length).
+   */
+  playSound(sound: number, options: { signal?: AbortSignal } = {}): Promise<SoundReport> {
+    return playSound(this.#core, sound, options);
   }
 
   /**

@@ -43,6 +43,33 @@ interface Timer {
   fn: () => void;
 }
 
+/**
+ * Waits `ms` on `clock`, or rejects with `cancelled()` as soon as `signal` aborts (at once if it already has).
+ * The timer is cleared on abort and the listener removed when the time is up, so nothing is left behind.
+ */
+export function sleep(
+  clock: Clock,
+  ms: number,
+  signal: AbortSignal | undefined,
+  cancelled: () => unknown,
+): Promise<void> {
+  return new Promise((resolve, reject) => {
+    if (signal?.aborted) return reject(cancelled());
+    const onAbort = () => {
+      clock.clearTimeout(timer);
+      reject(cancelled());
+    };
+    const timer = clock.setTimeout(
+      () => {
+        signal?.removeEventListener("abort", onAbort);
+        resolve();
+      },
+      Math.max(0, ms),
+    );
+    signal?.addEventListener("abort", onAbort, { once: true });
+  });
+}
+
 /** Lets every pending promise callback run (streams resolve through several microtask hops). */
 export function settle(): Promise<void> {
   const immediate = (globalThis as { setImmediate?: (cb: () => void) => unknown }).setImmediate;

@@ -1,4 +1,6 @@
 import { RbcCancelledError } from "../../device/errors.ts";
+import type { SoundReport } from "../../device/sound.ts";
+import { soundOutcomeMessages } from "../../i18n/outcomes/sound-messages.ts";
 import { soundName } from "../../i18n/sound-names/sound-name.ts";
 import { translator } from "../../i18n/translate.ts";
 import { formatSeconds } from "../../i18n/units.ts";
@@ -32,8 +34,9 @@ export const soundCommand: CommandDef = {
     env.out.line(
       t("cmd.sound.playing", { sound: String(sound), name, length: String(soundLengthMs(sound)) }),
     );
+    let report: SoundReport;
     try {
-      await robot.client.runSound(sound, { signal: env.signal });
+      report = await robot.client.playSound(sound, { signal: env.signal });
     } catch (e) {
       if (e instanceof RbcCancelledError && env.signal.aborted) {
         env.out.note(`rbc: ${t("cmd.sound.stoppedWaiting")}`);
@@ -49,7 +52,18 @@ export const soundCommand: CommandDef = {
       name: soundName(sound, "en"),
       lengthMs: soundLengthMs(sound),
       elapsedMs,
+      replyAfterMs: Math.round(report.replyAfterMs),
+      repliedAtOnce: report.repliedAtOnce,
     });
+    if (report.repliedAtOnce) {
+      env.out.line(
+        translator(soundOutcomeMessages, locale)("outcome.sound.repliedAtOnce", {
+          reply: formatSeconds(report.replyAfterMs / 1000, locale),
+          length: formatSeconds(report.expectedMs / 1000, locale),
+        }),
+      );
+      return EXIT.ok;
+    }
     env.out.line(t("cmd.sound.done", { duration: formatSeconds(elapsedMs / 1000, locale) }));
     return EXIT.ok;
   },

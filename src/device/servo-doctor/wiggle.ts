@@ -1,6 +1,6 @@
 import { safeRange } from "../../protocol/servo-limits.ts";
 import { WCK_MAX_TORQUE } from "../../protocol/wck.ts";
-import type { Clock } from "../../shared/clock.ts";
+import { type Clock, sleep } from "../../shared/clock.ts";
 import { RbcCancelledError, RbcInvalidArgumentError } from "../errors.ts";
 import type { RbcClient } from "../rbc-client.ts";
 import { leaveDirect, readingOf, stopCodeOf } from "./scan.ts";
@@ -43,19 +43,8 @@ export type WiggleResult =
   | { outcome: "lost"; id: number; start: number; steps: WiggleStep[]; reading: ServoReading }
   | { outcome: "stopped"; id: number; code: StopCode; steps: WiggleStep[] };
 
-function sleep(clock: Clock, ms: number, signal?: AbortSignal): Promise<void> {
-  return new Promise((resolve, reject) => {
-    if (signal?.aborted) return reject(new RbcCancelledError());
-    const onAbort = () => {
-      clock.clearTimeout(timer);
-      reject(new RbcCancelledError());
-    };
-    const timer = clock.setTimeout(() => {
-      signal?.removeEventListener("abort", onAbort);
-      resolve();
-    }, ms);
-    signal?.addEventListener("abort", onAbort, { once: true });
-  });
+function pause(clock: Clock, ms: number, signal?: AbortSignal): Promise<void> {
+  return sleep(clock, ms, signal, () => new RbcCancelledError());
 }
 
 /**
@@ -95,7 +84,7 @@ export async function wiggleServo(
     const clamp = (p: number) => Math.max(range.min, Math.min(range.max, p));
     for (const target of [clamp(start + counts), clamp(start - counts), start]) {
       await bus.move(id, target, WIGGLE_TORQUE, signal);
-      await sleep(client.clock, WIGGLE_SETTLE_MS, signal);
+      await pause(client.clock, WIGGLE_SETTLE_MS, signal);
       const reading = readingOf(id, await bus.readStatus(id, signal));
       if (reading.status !== "answered") return { outcome: "lost", id, start, steps, reading };
       steps.push({ target, reached: reading.position, load: reading.load });
