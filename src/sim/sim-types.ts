@@ -41,8 +41,9 @@ export interface SimulatedRbcOptions {
   /** After its first reply of `type`, the robot sends that reply again every `intervalMs` (default 1 ms). */
   repeatReplies?: { type: number; intervalMs?: number };
   /**
-   * What real firmwares do (docs/protocol.md §3.1, §3.5, §3.6), off by default: 0x17 events at the firmware's
-   * pace, one about every 3.5 ms while the level meets the threshold (default: every 100 ms).
+   * 0x17 events at the firmware's pace (docs/protocol.md §3.6): one about every 3.5 ms while the level meets the
+   * threshold, as real firmwares send them. On by default; false sends one every 100 ms instead (gentler, for
+   * a test that wants to count events by hand).
    */
   firmwareEventPace?: boolean;
   /** The official "user" build's keys: 12-19 and 33-42 empty (reply at once), 20 endless, 21 a flash demo. */
@@ -128,7 +129,7 @@ export function resolveOptions(options: SimulatedRbcOptions) {
     repeatReplies: options.repeatReplies
       ? { type: options.repeatReplies.type, intervalMs: Math.max(0.1, options.repeatReplies.intervalMs ?? 1) }
       : undefined,
-    firmwareEventPace: options.firmwareEventPace ?? false,
+    firmwareEventPace: options.firmwareEventPace ?? true,
     userFirmware: options.userFirmware ?? false,
     answersMemoryRead: options.answersMemoryRead ?? true,
     servosSilent: options.servosSilent ?? false,

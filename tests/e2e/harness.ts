@@ -90,10 +90,12 @@ export async function buildOnce(): Promise<{ outDir: string; fakeSerial: string 
   if (!existsSync(join(dir, ".complete"))) {
     // Clear out stale builds, but not ones another test run (other inputs) may be serving right now.
     for (const entry of await readdir(tmpdir())) {
+      if (!entry.startsWith(CACHE_PREFIX)) continue;
       const path = join(tmpdir(), entry);
-      if (entry.startsWith(CACHE_PREFIX) && Date.now() - (await stat(path)).mtimeMs > STALE_BUILD_MS) {
+      // Another test run (another checkout) may be removing the same stale build at this moment.
+      const info = await stat(path).catch(() => undefined);
+      if (info && Date.now() - info.mtimeMs > STALE_BUILD_MS)
         await rm(path, { recursive: true, force: true });
-      }
     }
     const work = `${dir}.tmp-${process.pid}`;
     await mkdir(work, { recursive: true });

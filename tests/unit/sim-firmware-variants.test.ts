@@ -69,8 +69,13 @@ describe("events at the firmware's pace (docs/protocol.md §3.6)", () => {
     expect(take()).toEqual([VERSION_2_23]);
   });
 
-  it("without the switch, the standard pace stays one packet every 100 ms", async () => {
-    const { sim, clock, send, take } = rig();
+  it("the firmware's pace is the default; firmwareEventPace: false keeps a gentler one packet every 100 ms", async () => {
+    const byDefault = rig();
+    byDefault.sim.setSoundLevel(40);
+    byDefault.send(SOUND_THRESHOLD_30);
+    await byDefault.clock.advance(1000);
+    expect(byDefault.take()).toHaveLength(286);
+    const { sim, clock, send, take } = rig({ firmwareEventPace: false });
     sim.setSoundLevel(40);
     send(SOUND_THRESHOLD_30);
     await clock.advance(1000);

@@ -193,15 +193,15 @@ describe("SimulatedRbc: sensors (docs/protocol.md §3)", () => {
 });
 
 describe("SimulatedRbc: subscriptions (docs/protocol.md §3.4)", () => {
-  it("emits sound levels at or above the threshold every 100 ms until the next header", async () => {
+  it("emits sound levels at or above the threshold about every 3.5 ms (the firmware's pace) until the next header", async () => {
     const { sim, clock, send, take } = rig();
     send(EX9_SOUND_THRESHOLD_30);
     sim.setSoundLevel(20);
     await clock.advance(300);
     expect(take()).toEqual([]);
     sim.setSoundLevel(40);
-    await clock.advance(300);
-    expect(take()).toEqual(Array(3).fill(`${H} 17 01 00 00 00 02 28 00 28`));
+    await clock.advance(35);
+    expect(take()).toEqual(Array(10).fill(`${H} 17 01 00 00 00 02 28 00 28`));
     expect(sim.state.sensors.subscription).toBe(0x17);
     send(EX1_READ_VERSION);
     await clock.advance(1000);
@@ -214,7 +214,7 @@ describe("SimulatedRbc: subscriptions (docs/protocol.md §3.4)", () => {
     sim.setSoundLevel(40);
     for (let i = 0; i < 5; i++) {
       send(EX9_SOUND_THRESHOLD_30);
-      await clock.advance(50);
+      await clock.advance(3);
     }
     expect(take()).toEqual(Array(5).fill(`${H} 17 01 00 00 00 02 28 00 28`));
   });

@@ -351,8 +351,8 @@ export const helpMessages = defineMessages({
     ko: "--repeat-replies와 같아요: 홈브루 포트의 끝없는 0x16 응답.",
   },
   "cliHelp.sim.firmwareEvents": {
-    en: "Send 0x17 events at the firmware's pace: about every 3.5 ms while the level meets the threshold.",
-    ko: "펌웨어 속도로 0x17 이벤트를 보내요: 소리 크기가 기준을 넘는 동안 약 3.5ms마다.",
+    en: "Send 0x17 events at the firmware's pace: about every 3.5 ms while the level meets the threshold. This is the default; the switch stays so that older scripts keep working.",
+    ko: "펌웨어 속도로 0x17 이벤트를 보내요: 소리 크기가 기준을 넘는 동안 약 3.5ms마다. 지금은 기본값이에요. 예전 스크립트가 계속 동작하도록 스위치를 남겨 두었어요.",
   },
   "cliHelp.sim.busyMotion": {
     en: "Be busy: built-in motion N (1-11) starts from the remote when a client first sends a byte.",
