@@ -10,6 +10,7 @@ import {
   XOFF,
   XON,
 } from "../protocol/bootloader.ts";
+import { firmwareMarker } from "../protocol/firmware-marker.ts";
 import { ATMEGA128, encodeIntelHex } from "../protocol/intel-hex.ts";
 import type { Clock } from "../shared/clock.ts";
 import { SimTimers } from "./sim-timers.ts";
@@ -104,17 +105,8 @@ export interface BootloaderStats {
   updates: number;
 }
 
-const MARKER = /RBCFW (\d{1,3})\.(\d{2})/;
-
-/** The version a firmware image declares with the `RBCFW M.mm` marker, or undefined. */
-export function firmwareMarker(image: Uint8Array): { major: number; minor: number } | undefined {
-  let text = "";
-  for (const b of image) text += String.fromCharCode(b);
-  const m = MARKER.exec(text);
-  if (!m) return undefined;
-  const major = Number(m[1]);
-  return major <= 255 ? { major, minor: Number(m[2]) } : undefined;
-}
+/** The version a firmware image declares with the `RBCFW M.mm` mark (src/protocol/firmware-marker.ts). */
+export { firmwareMarker };
 
 /**
  * A firmware file for the simulated robot: `sizeBytes` of filler (a fixed pseudo-random pattern, so the file

@@ -100,9 +100,36 @@ describe("rbc flash --demo", () => {
 
   it("a real robot needs --yes when there is no terminal to ask on; nothing is sent", async () => {
     const file = await write("ok.hex", firmwareHex("2.50", 256));
-    const r = await runCli(["flash", file, "--port", "/dev/rbc-no-such-port"]);
+    const r = await runCli(["flash", file, "--port", "/dev/rbc-no-such-port", "--demo-file"]);
     expect(r.code).toBe(1);
     expect(r.stderr).toContain("Add --yes to update anyway (nothing was sent).");
+  });
+
+  it("a demo file (the RBCFW mark) is refused for a robot on a port without --demo-file, even with --yes", async () => {
+    const file = await write("demo-mark.hex", firmwareHex("2.50", 256));
+    // The port does not exist: the file is refused before rbc tries to open it.
+    const r = await runInProcess(["flash", file, "--port", "/dev/rbc-no-such-port", "--yes"]);
+    expect(r.code).toBe(1);
+    expect(r.stderr).toContain("A demo file: not firmware a real robot can run.");
+    expect(r.stderr).toContain("(RBCFW 2.50)");
+    expect(r.stderr).toContain("Nothing was sent.");
+    expect(r.stderr).toContain("add --demo-file");
+    expect(r.stderr).not.toMatch(/rbc-no-such-port/);
+    const json = await runInProcess(["flash", file, "--port", "/dev/rbc-no-such-port", "--yes", "--json"]);
+    expect(JSON.parse(json.stdout)).toMatchObject({
+      ok: false,
+      error: { code: "demo-file", declaredVersion: "2.50" },
+    });
+    const ko = await runInProcess([
+      "flash",
+      file,
+      "--port",
+      "/dev/rbc-no-such-port",
+      "--yes",
+      "--lang",
+      "ko",
+    ]);
+    expect(ko.stderr).toContain("데모 파일이에요. 실제 로봇이 실행할 수 있는 펌웨어가 아니에요.");
   });
 
   it("Ctrl-C mid-file says the firmware may be incomplete and how to recover; exit 130", {
@@ -150,7 +177,9 @@ describe("rbc flash over a socat PTY pair against rbc sim", () => {
       expect(help).toContain(`kill -USR1 ${sim.child.pid}`);
 
       const file = await write("pty-2.50.hex", firmwareHex("2.50", 4096));
-      const flash = scope.start(["flash", file, "--port", pty.clientPath, "--yes"], { timeoutMs: 60_000 });
+      const flash = scope.start(["flash", file, "--port", pty.clientPath, "--yes", "--demo-file"], {
+        timeoutMs: 60_000,
+      });
       await flash.waitFor("stderr", /Switch the robot off and on now/, 20_000);
       sim.child.kill("SIGUSR1");
       const r = await flash.done;

@@ -17,7 +17,9 @@ import {
   firmwareSummaryText,
   hexProblemText,
 } from "../../i18n/outcomes/firmware/firmware-words.ts";
+import { firmwareOutcomeMessages } from "../../i18n/outcomes/firmware/messages.ts";
 import { formatNumber, translator } from "../../i18n/translate.ts";
+import { declaredVersion } from "../../protocol/firmware-marker.ts";
 import { IntelHexError, type IntelHexImage, parseIntelHex } from "../../protocol/intel-hex.ts";
 import { formatFirmware } from "../../shared/format.ts";
 import { noExtraArguments, parseCommand } from "../args.ts";
@@ -33,6 +35,7 @@ import { commandMessages } from "./messages.ts";
 
 const OPTIONS = {
   yes: { type: "boolean", short: "y" },
+  "demo-file": { type: "boolean" },
   recover: { type: "boolean" },
 } as const;
 
@@ -125,7 +128,7 @@ export function renderProgress(p: FirmwareUpdateProgress, locale: Locale = "en")
 
 export const flashCommand: CommandDef = {
   name: "flash",
-  usage: "rbc flash FILE.hex [--yes] [--recover] (--port PATH | --demo)",
+  usage: "rbc flash FILE.hex [--yes] [--recover] [--demo-file] (--port PATH | --demo)",
   help: COMMAND_HELP.flash,
   examples: [
     "rbc flash examples/firmware/demo-2.50.hex --demo",
@@ -146,6 +149,26 @@ export const flashCommand: CommandDef = {
     const summary = firmwareSummaryText(image.summary, locale);
     env.out.line(`${name}: ${summary}.`);
     const real = !values.demo;
+    const declared = declaredVersion(image);
+    if (real && declared && !values["demo-file"]) {
+      // A demo file on a real robot would leave it without working firmware (docs/firmware-update.md).
+      throw new CliError(
+        "demo-file",
+        saidEach(commandMessages, "cmd.flash.demoFileRefused", (l) => {
+          const o = translator(firmwareOutcomeMessages, l);
+          return [
+            {
+              title: o("outcome.firmware.demoFile.title"),
+              text: o("outcome.firmware.demoFile.text", { mark: `RBCFW ${formatFirmware(declared)}` }),
+              cannotRun: o("outcome.firmware.demoFile.cannotRun"),
+              file,
+            },
+          ];
+        }),
+        EXIT.failed,
+        { declaredVersion: formatFirmware(declared) },
+      );
+    }
     if (real && !values.yes && !env.stdin.isTTY) {
       throw new CliError(
         "confirmation-required",

@@ -399,6 +399,10 @@ export const commandMessages = defineMessages({
     en: "{file} is not a firmware file the RBC's bootloader can take. {reason} Nothing was sent.",
     ko: "{file}은(는) RBC의 부트로더가 받을 수 있는 펌웨어 파일이 아니에요. {reason} 아무것도 보내지 않았어요.",
   },
+  "cmd.flash.demoFileRefused": {
+    en: "{title} {text} {cannotRun} Nothing was sent. Try it on the demo robot (rbc flash {file} --demo); to write it to a simulated robot on a serial port (rbc sim), add --demo-file.",
+    ko: "{title} {text} {cannotRun} 아무것도 보내지 않았어요. 데모 로봇에서 해 보세요 (rbc flash {file} --demo). 시리얼 포트의 시뮬레이션 로봇(rbc sim)에 쓰려면 --demo-file을 붙여 주세요.",
+  },
   "cmd.flash.needsYes": {
     en: "{notice} Add --yes to update anyway (nothing was sent).",
     ko: "{notice} 그래도 업데이트하려면 --yes를 붙여 주세요 (아무것도 보내지 않았어요).",

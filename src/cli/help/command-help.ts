@@ -132,6 +132,7 @@ export const COMMAND_HELP = {
     options: [
       ["-y, --yes", t("cliHelp.flash.yes")],
       ["--recover", t("cliHelp.flash.recover")],
+      ["--demo-file", t("cliHelp.flash.demoFile")],
     ],
   }),
   sim: (t) => ({

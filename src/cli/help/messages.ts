@@ -276,6 +276,10 @@ export const helpMessages = defineMessages({
     en: "Confirm an update of a real robot without the prompt.",
     ko: "실제 로봇의 업데이트를 묻지 않고 확인해요.",
   },
+  "cliHelp.flash.demoFile": {
+    en: "Write a demo firmware file (one that carries the RBCFW mark) to a robot on a port: only for a simulated robot (rbc sim). A real robot cannot run it.",
+    ko: "데모 펌웨어 파일(RBCFW 표시가 있는 파일)을 포트의 로봇에 써요: 시뮬레이션 로봇(rbc sim)에만 쓰세요. 실제 로봇은 실행할 수 없어요.",
+  },
   "cliHelp.flash.recover": {
     en: "Do not expect the robot to answer first (a robot left without a working firmware).",
     ko: "먼저 로봇의 응답을 기다리지 않아요 (동작하는 펌웨어가 없는 로봇).",

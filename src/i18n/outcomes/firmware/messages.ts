@@ -6,6 +6,23 @@ import { defineMessages } from "../../catalogue.ts";
  * more certain than the bootloader confirmed.
  */
 export const firmwareOutcomeMessages = defineMessages({
+  // A file with the mark of this project's demo and test files (src/protocol/firmware-marker.ts)
+  "outcome.firmware.demoFile.title": {
+    en: "A demo file: not firmware a real robot can run.",
+    ko: "데모 파일이에요. 실제 로봇이 실행할 수 있는 펌웨어가 아니에요.",
+  },
+  "outcome.firmware.demoFile.text": {
+    en: "It carries the mark of this project's demo and test files ({mark}), which only the demo robot understands.",
+    ko: "이 프로젝트의 데모·테스트 파일 표시({mark})가 들어 있어요. 이 표시는 데모 로봇만 알아들어요.",
+  },
+  "outcome.firmware.demoFile.notOnReal": {
+    en: "Written to a real robot, it would leave that robot without working firmware until real firmware is written again.",
+    ko: "실제 로봇에 쓰면, 진짜 펌웨어를 다시 쓸 때까지 그 로봇에는 작동하는 펌웨어가 없어요.",
+  },
+  "outcome.firmware.demoFile.cannotRun": {
+    en: "The robot cannot run it: after the update it will not move or answer until you write real firmware to it (the bootloader stays, so that remains possible).",
+    ko: "로봇은 이 파일을 실행할 수 없어요. 업데이트 뒤에는 진짜 펌웨어를 쓸 때까지 움직이지도 응답하지도 않아요 (부트로더는 그대로라서 진짜 펌웨어는 언제든 쓸 수 있어요).",
+  },
   "outcome.firmware.notice.experimental": {
     en: "Updating the firmware is experimental on real robots: the bootloader dialogue follows RBCLoader (the Java loader) and has not been verified on a real RBC by this project.",
     ko: "실제 로봇의 펌웨어 업데이트는 실험 단계예요. 부트로더와 주고받는 방식은 RBCLoader(Java 로더)를 따랐지만, 이 프로젝트에서 실제 RBC로 확인하지는 못했어요.",

@@ -10,6 +10,7 @@ import {
 import type { Locale } from "../../../i18n/locale.ts";
 import { firmwareFailureText, firmwareResultText } from "../../../i18n/outcomes/firmware/firmware-words.ts";
 import { translator } from "../../../i18n/translate.ts";
+import { declaredVersion } from "../../../protocol/firmware-marker.ts";
 import { MAX_HEX_TEXT_CHARS, parseIntelHex } from "../../../protocol/intel-hex.ts";
 import type { Notice } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
@@ -17,7 +18,6 @@ import { errorNotice, technicalDetail } from "../../error-text.ts";
 import { focusSoon } from "../../focus.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
 import { choosePort, webSerial } from "../../serial-ports.ts";
-import { declaredVersion } from "./declared-version.ts";
 import { hexProblem, tooLargeProblem } from "./file-problem.ts";
 import { firmwareMessages } from "./messages.ts";
 import { type FirmwareFile, type FirmwareRun, firmwareOf, patchFirmware } from "./state.ts";

@@ -37,30 +37,15 @@ export const firmwareMessages = defineMessages({
     en: "Checked: the file is complete and undamaged, fits the robot's controller, and leaves its bootloader alone, so a failed update can always be run again.",
     ko: "확인했어요: 파일이 온전하고 손상되지 않았으며, 로봇 컨트롤러에 맞고, 부트로더는 건드리지 않아요. 그래서 업데이트가 실패해도 언제든 다시 할 수 있어요.",
   },
-  // A file with the mark of this project's demo and test files (declared-version.ts)
-  "firmware.demoMark.title": {
-    en: "A demo file: not firmware a real robot can run.",
-    ko: "데모 파일이에요. 실제 로봇이 실행할 수 있는 펌웨어가 아니에요.",
-  },
-  "firmware.demoMark.text": {
-    en: "It carries the mark of this project's demo and test files ({mark}), which only the demo robot understands.",
-    ko: "이 프로젝트의 데모·테스트 파일 표시({mark})가 들어 있어요. 이 표시는 데모 로봇만 알아들어요.",
-  },
+  // A file with the mark of this project's demo and test files (src/protocol/firmware-marker.ts): the panel's
+  // framing; what the file is and does comes from the outcome catalogue (outcome.firmware.demoFile.*)
   "firmware.demoMark.fineOnDemo": {
     en: "On the demo robot it is fine to try.",
     ko: "데모 로봇에서는 마음껏 해 봐도 돼요.",
   },
-  "firmware.demoMark.notOnReal": {
-    en: "Written to a real robot, it would leave that robot without working firmware until real firmware is written again.",
-    ko: "실제 로봇에 쓰면, 진짜 펌웨어를 다시 쓸 때까지 그 로봇에는 작동하는 펌웨어가 없어요.",
-  },
   "firmware.demoMark.confirmLead": {
     en: "{file} is a demo file, and this is a real robot.",
     ko: "{file}은(는) 데모 파일인데, 이 로봇은 실제 로봇이에요.",
-  },
-  "firmware.demoMark.confirmText": {
-    en: "The robot cannot run it: after the update it will not move or answer until you write real firmware to it (the bootloader stays, so that remains possible).",
-    ko: "로봇은 이 파일을 실행할 수 없어요. 업데이트 뒤에는 진짜 펌웨어를 쓸 때까지 움직이지도 응답하지도 않아요 (부트로더는 그대로라서 진짜 펌웨어는 언제든 쓸 수 있어요).",
   },
   "firmware.demoMark.accept": {
     en: "I understand: the robot will not work until I write real firmware",
