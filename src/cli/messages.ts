@@ -283,34 +283,6 @@ export const cliMessages = defineMessages({
     ko: ".rbm 파일에 쓸 수 없는 값이 있어요.",
   },
 
-  "cli.robotError.none": { en: "no error", ko: "오류 없음" },
-  "cli.robotError.eeprom": { en: "serial EEPROM write error", ko: "시리얼 EEPROM 쓰기 오류" },
-  "cli.robotError.checksum": {
-    en: "checksum error (a download chunk was corrupted)",
-    ko: "체크섬 오류 (다운로드한 조각이 손상됨)",
-  },
-  "cli.robotError.motionsFull": {
-    en: "too many motions, or motion memory full",
-    ko: "모션이 너무 많거나 모션 메모리가 가득 참",
-  },
-  "cli.robotError.actionsFull": {
-    en: "too many actions, or action memory full",
-    ko: "액션이 너무 많거나 액션 메모리가 가득 참",
-  },
-  "cli.robotError.platform": { en: "platform mismatch", ko: "플랫폼이 맞지 않음" },
-  "cli.robotError.frameInterval": {
-    en: "frame interval error (frames closer than 20 ms)",
-    ko: "프레임 간격 오류 (프레임 사이가 20ms보다 짧음)",
-  },
-  "cli.robotError.zeroSet": {
-    en: "zero-set error (a zero value was out of range)",
-    ko: "영점 설정 오류 (영점 값이 범위를 벗어남)",
-  },
-  "cli.robotError.zeroData": { en: "stored zero data invalid", ko: "저장된 영점 데이터가 잘못됨" },
-  "cli.robotError.servoCount": { en: "wrong servo count", ko: "서보 개수가 맞지 않음" },
-  "cli.robotError.servoPosition": { en: "servo position error", ko: "서보 위치 오류" },
-  "cli.robotError.servoSilent": { en: "a servo did not answer", ko: "응답하지 않은 서보가 있음" },
-  "cli.robotError.unknown": { en: "unknown error code", ko: "알 수 없는 오류 코드" },
   "cli.platform.unknown": { en: "unknown ({platform})", ko: "알 수 없음 ({platform})" },
 
   "cli.motion.downloaded": {

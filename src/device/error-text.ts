@@ -20,6 +20,7 @@ import {
   runReportText,
   stopNoReplyText,
 } from "../i18n/outcomes/run-words.ts";
+import { uploadFailureText } from "../i18n/outcomes/upload-words.ts";
 import { LinkError } from "../link/transport.ts";
 import {
   RbcBusyError,
@@ -60,6 +61,7 @@ function fromFacts(e: unknown, locale: Locale, hint: string): string {
   const said = (e: RbcError) =>
     codeNeedsDetail(e.code) ? withHint(codeText(e.code, locale)) : codeText(e.code, locale);
   if (e instanceof RbcUploadError) {
+    if (e.facts) return uploadFailureText(e.facts, locale);
     const lead = e.code === "upload-failed" ? codeText("upload-failed", locale) : said(e);
     const acknowledged = uploadAcknowledgedText(e.acknowledged, e.total, locale);
     return `${lead} ${acknowledged} ${uploadOutcomeText(e.outcome, locale)}`;

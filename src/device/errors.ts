@@ -13,6 +13,7 @@ import {
   runReportText,
   stopNoReplyText,
 } from "../i18n/outcomes/run-words.ts";
+import { uploadFailureText } from "../i18n/outcomes/upload-words.ts";
 import type { RunNoReply, RunReport } from "./run-outcome.ts";
 
 /**
@@ -172,6 +173,38 @@ export type UploadOutcome =
   /** The robot is still waiting for download bytes (link lost mid-upload): switch it off and on. */
   | "interrupted";
 
+/** Where an upload stopped (docs/protocol.md §6). */
+export type UploadStop =
+  /** The link was lost. */
+  | "lost"
+  | "cancelled"
+  /** The robot never acknowledged the download's first part. */
+  | "start-not-acknowledged"
+  /** It acknowledged some parts, then no more. */
+  | "stopped-acknowledging"
+  /** An acknowledgement came when none was due (`RbcUnexpectedAckError` "extra"). */
+  | "extra-ack"
+  /** An acknowledgement came sooner than its part could have crossed the wire ("early"). */
+  | "early-ack"
+  /** Every part was acknowledged, but the robot's free memory does not show the file. */
+  | "unconfirmed";
+
+/** The facts of a failed or cancelled upload, which the outcome catalogue words (src/i18n/outcomes/upload-words.ts). */
+export interface UploadFailureFacts {
+  area: "motion" | "action";
+  stop: UploadStop;
+  acknowledged: number;
+  total: number;
+  outcome: UploadOutcome;
+  /** Free bytes of the area before the upload, and after it when the robot answered (undefined: it did not). */
+  freeBefore: number;
+  freeNow: number | undefined;
+  /** Bytes the file takes in the area (rounded up to whole 64-byte chunks). */
+  footprint: number;
+  /** The robot's error code read after it (0x11), when it answered. */
+  deviceErrorCode?: number;
+}
+
 export class RbcUploadError extends RbcError {
   override name = "RbcUploadError";
   constructor(
@@ -182,8 +215,28 @@ export class RbcUploadError extends RbcError {
     readonly outcome: UploadOutcome,
     readonly deviceErrorCode?: number,
     cause?: unknown,
+    /** What is known, for the outcome catalogue (the device's own uploads always give them). */
+    readonly facts?: UploadFailureFacts,
   ) {
     super(code, message, { cause });
+  }
+
+  /** The error for `facts`, its message in the outcome catalogue's English. */
+  static of(
+    code: "upload-failed" | "cancelled" | "disconnected",
+    facts: UploadFailureFacts,
+    cause?: unknown,
+  ): RbcUploadError {
+    return new RbcUploadError(
+      code,
+      uploadFailureText(facts, "en"),
+      facts.acknowledged,
+      facts.total,
+      facts.outcome,
+      facts.deviceErrorCode,
+      cause,
+      facts,
+    );
   }
 }
 

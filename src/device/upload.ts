@@ -4,7 +4,6 @@ import {
   ACTION_AREA_BYTES,
   DOWNLOAD_ACK,
   DOWNLOAD_CHUNK,
-  errorCodeText,
   MOTION_AREA_BYTES,
   memoryFootprint,
   NO_ERROR,
@@ -20,6 +19,7 @@ import {
   RbcTimeoutError,
   RbcUploadError,
   type UploadOutcome,
+  type UploadStop,
 } from "./errors.ts";
 import { readFreeMemory } from "./memory-read.ts";
 import { type RawChannel, RbcUnexpectedAckError } from "./raw-channel.ts";
@@ -32,9 +32,6 @@ export interface UploadIo {
   now(): number;
   sleep(ms: number): Promise<void>;
 }
-
-/** The RBC's error code for a bad chunk checksum (docs/protocol.md §3.2). */
-const CHECKSUM_ERROR = 2;
 
 /**
  * How much longer than a quick reply each `40` may take (the RBC writes a 64-byte EEPROM page first). The wait
@@ -198,33 +195,17 @@ function wireMs(bytes: number): number {
 
 /** Every chunk was acknowledged but the robot's free memory does not show the file: say what is known. */
 function unconfirmedUpload(r: UploadResult): RbcUploadError {
-  const acked = `Every chunk of the ${r.total}-byte ${r.area} file was acknowledged`;
-  const why =
-    r.errorCode === undefined || r.errorCode === NO_ERROR
-      ? ""
-      : ` The robot reports: ${errorCodeText(r.errorCode)}.`;
-  if (r.freeAfter === r.freeBefore) {
-    return new RbcUploadError(
-      "upload-failed",
-      `${acked}, but the robot's free ${r.area} memory is unchanged (${r.freeAfter} bytes): it recorded nothing.${why} Upload it again.`,
-      r.total,
-      r.total,
-      "nothing-recorded",
-      r.errorCode,
-    );
-  }
-  const state =
-    r.freeAfter === undefined
-      ? `the robot did not answer the memory check afterwards, so whether it recorded the file is unknown`
-      : `the robot's free ${r.area} memory is now ${r.freeAfter} bytes (was ${r.freeBefore}; the file needs ${r.footprint}), so whether it recorded the file is unknown`;
-  return new RbcUploadError(
-    "upload-failed",
-    `${acked}, but ${state}.${why} Switch the robot off and on, reset its ${r.area} memory and upload again.`,
-    r.total,
-    r.total,
-    "unknown",
-    r.errorCode,
-  );
+  return RbcUploadError.of("upload-failed", {
+    area: r.area,
+    stop: "unconfirmed",
+    acknowledged: r.total,
+    total: r.total,
+    outcome: r.freeAfter === r.freeBefore ? "nothing-recorded" : "unknown",
+    freeBefore: r.freeBefore,
+    freeNow: r.freeAfter,
+    footprint: r.footprint,
+    deviceErrorCode: r.errorCode,
+  });
 }
 
 interface FailureContext {
@@ -280,24 +261,12 @@ async function settleAndRead(
 
 /** Works out what the robot holds after a failed or cancelled download and says so. */
 async function explainFailure(io: UploadIo, error: unknown, ctx: FailureContext): Promise<Explained> {
-  const { area, acknowledged, total } = ctx;
-  const sent = `${acknowledged} of ${total} bytes were acknowledged`;
+  const { area, acknowledged, total, freeBefore, footprint } = ctx;
+  const known = { area, acknowledged, total, freeBefore, footprint };
   if (error instanceof RbcDisconnectedError) {
     // Once the last chunk was written the robot may have every byte (the link died before its `40` came back).
     const outcome: UploadOutcome = acknowledged >= total || ctx.lastChunkSent ? "unknown" : "interrupted";
-    const state =
-      outcome === "unknown"
-        ? "The last chunk had been sent, so the robot may have recorded the file: switch it off and on, then check its free memory or upload again."
-        : "The robot is probably still waiting for the rest of the file and has recorded nothing: switch it off and on before the next upload.";
-    return new RbcUploadError(
-      "disconnected",
-      `The connection was lost during the upload (${sent}). ${state}`,
-      acknowledged,
-      total,
-      outcome,
-      undefined,
-      error,
-    );
+    return RbcUploadError.of("disconnected", { ...known, stop: "lost", outcome, freeNow: undefined }, error);
   }
   const unexpected = error instanceof RbcUnexpectedAckError ? error : undefined;
   if (!(error instanceof RbcTimeoutError) && !(error instanceof RbcCancelledError) && !unexpected) {
@@ -305,54 +274,19 @@ async function explainFailure(io: UploadIo, error: unknown, ctx: FailureContext)
   }
   const cancelled = error instanceof RbcCancelledError;
   const { deviceError, freeNow } = await settleAndRead(io, ctx);
-  let outcome: UploadOutcome;
-  let state: string;
-  if (freeNow === ctx.freeBefore) {
-    outcome = "nothing-recorded";
-    state = `The robot recorded nothing: its free ${area} memory is unchanged (${freeNow} bytes).`;
-  } else if (
-    freeNow === freeAfterRecording(ctx.freeBefore, ctx.footprint) &&
-    ctx.lastChunkSent &&
-    !cancelled
-  ) {
+  if (freeNow === freeAfterRecording(freeBefore, footprint) && ctx.lastChunkSent && !cancelled) {
     // The RBC accounts memory only when the last chunk's checksum is right: the file is complete.
     return { recorded: true, freeAfter: freeNow, errorCode: deviceError ?? NO_ERROR };
-  } else {
-    outcome = "unknown";
-    state =
-      freeNow === undefined
-        ? "The robot did not answer afterwards; its memory state is unknown. Switch it off and on, then upload again."
-        : `The robot's free ${area} memory is now ${freeNow} bytes (was ${ctx.freeBefore}); its state is uncertain. Switch it off and on, then upload again.`;
   }
-  // Error 2 (checksum) is also what the abandon bytes above make the RBC set, so it is reported as such.
-  const why =
-    deviceError === undefined || deviceError === NO_ERROR
-      ? ""
-      : deviceError === CHECKSUM_ERROR
-        ? ` The robot reports: ${errorCodeText(deviceError)} (which the panel's own abandon bytes also cause).`
-        : ` The robot reports: ${errorCodeText(deviceError)}.`;
-  if (cancelled) {
-    return new RbcUploadError(
-      "cancelled",
-      `Upload cancelled (${sent}). ${state}`,
-      acknowledged,
-      total,
-      outcome,
-      deviceError,
-    );
-  }
-  const where = unexpected
-    ? `${unexpected.message} The upload stopped there (${sent}).`
+  const outcome: UploadOutcome = freeNow === freeBefore ? "nothing-recorded" : "unknown";
+  const facts = { ...known, outcome, freeNow, deviceErrorCode: deviceError };
+  if (cancelled) return RbcUploadError.of("cancelled", { ...facts, stop: "cancelled" });
+  const stop: UploadStop = unexpected
+    ? unexpected.kind === "early"
+      ? "early-ack"
+      : "extra-ack"
     : acknowledged === 0 && error instanceof RbcTimeoutError && error.command === "first part"
-      ? `The robot did not acknowledge the start of the download (${sent}); it may have refused it.`
-      : `The robot stopped acknowledging (${sent}).`;
-  return new RbcUploadError(
-    "upload-failed",
-    `${where}${why} ${state}`,
-    acknowledged,
-    total,
-    outcome,
-    deviceError,
-    error,
-  );
+      ? "start-not-acknowledged"
+      : "stopped-acknowledging";
+  return RbcUploadError.of("upload-failed", { ...facts, stop }, error);
 }

@@ -346,7 +346,8 @@ describe("the whole flow over a Bluetooth link (300 ± 150 ms, 20 ms bursts)", (
     expect(e).toBeInstanceOf(RbcUploadError);
     expect((e as RbcUploadError).outcome).toBe("nothing-recorded");
     expect((e as RbcUploadError).cause).toBeInstanceOf(RbcUnexpectedAckError);
-    expect((e as Error).message).toMatch(/sooner than that part could have reached the robot/);
+    expect((e as RbcUploadError).facts?.stop).toBe("early-ack");
+    expect((e as Error).message).toMatch(/sooner than its part could have reached the robot/);
     expect(rig.sim.motions).toHaveLength(0);
     // And a clean upload over the same link is confirmed by the robot's memory.
     rig.port.faults.clear();

@@ -139,7 +139,7 @@ async function cell(kind: Kind, k: number): Promise<void> {
   if (error instanceof RbcUploadError) {
     expect(error.total).toBe(IMAGE.length);
     expect(error.message).toContain(`${error.acknowledged} of ${IMAGE.length} bytes were acknowledged`);
-    expect(error.message).toMatch(/recorded nothing: its free motion memory is unchanged \(24576 bytes\)/);
+    expect(error.message).toMatch(/recorded nothing: its free motion memory is unchanged \(24,576 bytes\)/);
   }
 
   const counted = rig.client.stats.unansweredReplies - unansweredBefore;
@@ -147,11 +147,14 @@ async function cell(kind: Kind, k: number): Promise<void> {
     expect(counted, "the unexpected 40 is counted").toBeGreaterThanOrEqual(1);
     if (error instanceof RbcUploadError) {
       expect(error.code).toBe("upload-failed");
-      expect(error.message).toMatch(/unexpected acknowledgement/);
+      expect(error.facts?.stop).toMatch(/^(extra|early)-ack$/);
+      expect(error.message).toMatch(
+        /An acknowledgement came (when none was due|sooner than its part could have reached the robot)/,
+      );
       expect(error.cause).toBeInstanceOf(RbcUnexpectedAckError);
     }
   } else if (error instanceof RbcError) {
-    expect(error.message).not.toMatch(/unexpected acknowledgement/);
+    expect(error.message).not.toMatch(/An acknowledgement came/);
   }
 
   // Still usable: the mode is back, a read works, the next upload succeeds and the robot shows it.
@@ -207,7 +210,10 @@ describe("unexpected acknowledgements on a link without wire time", () => {
     if (k < CHUNKS - 1) {
       expect(e).toBeInstanceOf(RbcUploadError);
       expect((e as RbcUploadError).outcome).toBe("nothing-recorded");
-      expect((e as Error).message).toMatch(/unexpected acknowledgement/);
+      expect((e as RbcUploadError).facts?.stop).toBe("extra-ack");
+      expect((e as Error).message).toMatch(
+        /^An acknowledgement came when none was due, so the upload stopped there/,
+      );
       expect(stored).toBe(false);
     }
     expect(rig.client.stats.unansweredReplies).toBeGreaterThanOrEqual(1);

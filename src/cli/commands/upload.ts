@@ -4,6 +4,7 @@ import { RbcUploadError } from "../../device/errors.ts";
 import type { FileUploadResult } from "../../device/index.ts";
 import type { Locale } from "../../i18n/locale.ts";
 import { nothingSentText, uploadNoticeText, uploadOutcomeText } from "../../i18n/outcomes/device.ts";
+import { uploadAfterText } from "../../i18n/outcomes/upload-words.ts";
 import { translator } from "../../i18n/translate.ts";
 import { formatSeconds } from "../../i18n/units.ts";
 import { downloadedMotionNumber, MOTION_AREA_BYTES } from "../../protocol/catalog.ts";
@@ -220,8 +221,8 @@ export const uploadCommand: CommandDef = {
     } catch (e) {
       bar.finish();
       if (e instanceof RbcUploadError && e.code === "cancelled") {
-        // In English the device's sentence; otherwise what the outcome means for the robot.
-        const what = locale === "en" ? e.message : uploadOutcomeText(e.outcome, locale);
+        // What the robot's memory shows and what to do, from the outcome catalogue in every language.
+        const what = e.facts ? uploadAfterText(e.facts, locale) : uploadOutcomeText(e.outcome, locale);
         const counts = { acknowledged: String(e.acknowledged), total: String(e.total) };
         env.out.note(`rbc: ${t("cmd.upload.interrupted", { ...counts, outcome: e.outcome, what })}`);
         env.out.result({

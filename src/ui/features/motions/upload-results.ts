@@ -5,16 +5,15 @@ import {
   RbcUploadError,
 } from "../../../device/errors.ts";
 import type { UploadResult } from "../../../device/types.ts";
-import type { KeysWithoutParams } from "../../../i18n/catalogue.ts";
 import type { Locale } from "../../../i18n/locale.ts";
 import { uploadNoticeText } from "../../../i18n/outcomes/device.ts";
+import { robotErrorText } from "../../../i18n/outcomes/robot-error.ts";
 import { translator } from "../../../i18n/translate.ts";
-import { ACTION_AREA_BYTES, errorCodeText, MOTION_AREA_BYTES, NO_ERROR } from "../../../protocol/catalog.ts";
+import { ACTION_AREA_BYTES, MOTION_AREA_BYTES, NO_ERROR } from "../../../protocol/catalog.ts";
 import type { RbmMotion } from "../../../protocol/rbm.ts";
 import type { Notice } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { errorMessage, errorNotice, technicalDetail } from "../../error-text.ts";
-import { robotMessages } from "../robot/messages.ts";
 import { motionsMessages } from "./messages.ts";
 import { formatSeconds } from "./plot-data.ts";
 import {
@@ -46,35 +45,12 @@ export interface Payload {
   durationMs?: number;
 }
 
-/** The RBC's error codes (docs/protocol.md §3.4) in Korean: the Robot view's words for them. */
-const KOREAN_ERROR_CODES: Readonly<Record<number, KeysWithoutParams<typeof robotMessages>>> = {
-  1: "robot.error.eeprom",
-  2: "robot.error.checksum",
-  3: "robot.error.motionsFull",
-  4: "robot.error.actionsFull",
-  5: "robot.error.platform",
-  6: "robot.error.frameInterval",
-  7: "robot.error.zeroSet",
-  8: "robot.error.zeroData",
-  9: "robot.error.servoCount",
-  10: "robot.error.servoPosition",
-  11: "robot.error.servoSilent",
-};
-
 /** The error code the robot reported after an upload, in words. */
 function errorCodeWords(code: number | undefined, locale: Locale): string {
   const t = translator(motionsMessages, locale);
   if (code === undefined) return t("motions.upload.errorNotRead");
   if (code === NO_ERROR) return t("motions.upload.noError");
-  const robot = translator(robotMessages, locale);
-  const key = KOREAN_ERROR_CODES[code];
-  const text =
-    locale === "en"
-      ? errorCodeText(code)
-      : key
-        ? robot(key)
-        : robot("robot.error.unknown", { code: String(code) });
-  return t("motions.upload.errorCode", { text, code: String(code) });
+  return t("motions.upload.errorCode", { text: robotErrorText(code, locale), code: String(code) });
 }
 
 export function uploadSucceeded(

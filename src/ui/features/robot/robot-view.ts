@@ -1,4 +1,5 @@
 import { html, nothing, type TemplateResult } from "lit-html";
+import { robotErrorTitle } from "../../../i18n/outcomes/robot-error.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { ACTION_AREA_BYTES, MOTION_AREA_BYTES, NO_ERROR } from "../../../protocol/catalog.ts";
 import { formatFirmware } from "../../../shared/format.ts";
@@ -29,41 +30,9 @@ function platformText(t: RobotTranslator, platform: number): string {
   }
 }
 
-/** The RBC's error codes (docs/protocol.md §3.4; the same list as protocol/catalog.ts), as a person reads them. */
-function errorCodeWords(t: RobotTranslator, code: number): string {
-  switch (code) {
-    case NO_ERROR:
-      return t("robot.error.none");
-    case 1:
-      return t("robot.error.eeprom");
-    case 2:
-      return t("robot.error.checksum");
-    case 3:
-      return t("robot.error.motionsFull");
-    case 4:
-      return t("robot.error.actionsFull");
-    case 5:
-      return t("robot.error.platform");
-    case 6:
-      return t("robot.error.frameInterval");
-    case 7:
-      return t("robot.error.zeroSet");
-    case 8:
-      return t("robot.error.zeroData");
-    case 9:
-      return t("robot.error.servoCount");
-    case 10:
-      return t("robot.error.servoPosition");
-    case 11:
-      return t("robot.error.servoSilent");
-    default:
-      return t("robot.error.unknown", { code: String(code) });
-  }
-}
-
 function errorCodeLine(t: RobotTranslator, code: number | undefined): TemplateResult | string {
   if (code === undefined) return "—";
-  const sentence = errorCodeWords(t, code);
+  const sentence = robotErrorTitle(code, t.locale);
   // "No error" in plain words; the code itself (FF) is in the packet log, one click away.
   if (code === NO_ERROR) return sentence;
   return html`<span class="text-warning">${sentence}</span>
