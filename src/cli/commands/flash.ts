@@ -11,13 +11,14 @@ import {
 import type { Locale } from "../../i18n/locale.ts";
 import { nothingSentText } from "../../i18n/outcomes/device.ts";
 import {
+  demoFileCannotRunText,
+  demoFileWords,
   firmwareFailureText,
   firmwareNoticeText as firmwareNotice,
   firmwareResultText,
   firmwareSummaryText,
   hexProblemText,
 } from "../../i18n/outcomes/firmware/firmware-words.ts";
-import { firmwareOutcomeMessages } from "../../i18n/outcomes/firmware/messages.ts";
 import { formatNumber, translator } from "../../i18n/translate.ts";
 import { declaredVersion } from "../../protocol/firmware-marker.ts";
 import { IntelHexError, type IntelHexImage, parseIntelHex } from "../../protocol/intel-hex.ts";
@@ -155,15 +156,8 @@ export const flashCommand: CommandDef = {
       throw new CliError(
         "demo-file",
         saidEach(commandMessages, "cmd.flash.demoFileRefused", (l) => {
-          const o = translator(firmwareOutcomeMessages, l);
-          return [
-            {
-              title: o("outcome.firmware.demoFile.title"),
-              text: o("outcome.firmware.demoFile.text", { mark: `RBCFW ${formatFirmware(declared)}` }),
-              cannotRun: o("outcome.firmware.demoFile.cannotRun"),
-              file,
-            },
-          ];
+          const { title, text } = demoFileWords(declared, l);
+          return [{ title, text, cannotRun: demoFileCannotRunText(l), file }];
         }),
         EXIT.failed,
         { declaredVersion: formatFirmware(declared) },

@@ -1,5 +1,6 @@
 import type { BootloaderFailure, RobotHolds } from "../../../protocol/bootloader.ts";
 import type { IntelHexErrorCode } from "../../../protocol/intel-hex.ts";
+import { formatFirmware } from "../../../shared/format.ts";
 import type { KeysWithoutParams } from "../../catalogue.ts";
 import type { Locale } from "../../locale.ts";
 import { translator } from "../../translate.ts";
@@ -198,4 +199,29 @@ export function hexProblemText(
   if (e.code === "no-end" && e.line === undefined) return t("outcome.hex.empty");
   const problem = t(HEX[e.code]);
   return e.line === undefined ? problem : t("outcome.hex.onLine", { line: String(e.line), problem });
+}
+
+/** What a firmware file with the demo files' mark is (src/protocol/firmware-marker.ts), for the panel and `rbc flash`. */
+export interface DemoFileWords {
+  /** "A demo file: not firmware a real robot can run." */
+  title: string;
+  /** "It carries the mark of this project's demo and test files (RBCFW 2.50), …" */
+  text: string;
+  /** What writing it to a real robot would leave (before anything is chosen). */
+  notOnReal: string;
+}
+
+export function demoFileWords(version: { major: number; minor: number }, locale: Locale): DemoFileWords {
+  const t = translator(messages, locale);
+  const mark = `RBCFW ${formatFirmware(version)}`;
+  return {
+    title: t("outcome.firmware.demoFile.title"),
+    text: t("outcome.firmware.demoFile.text", { mark }),
+    notOnReal: t("outcome.firmware.demoFile.notOnReal"),
+  };
+}
+
+/** What a real robot would do after a demo file is written to it (asked just before it is). */
+export function demoFileCannotRunText(locale: Locale): string {
+  return translator(messages, locale)("outcome.firmware.demoFile.cannotRun");
 }

@@ -1,8 +1,11 @@
 import "../../styles/tools.css";
 import "../../styles/firmware.css";
 import { html, nothing, type TemplateResult } from "lit-html";
-import { firmwareNoticeText } from "../../../i18n/outcomes/firmware/firmware-words.ts";
-import { firmwareOutcomeMessages } from "../../../i18n/outcomes/firmware/messages.ts";
+import {
+  demoFileCannotRunText,
+  demoFileWords,
+  firmwareNoticeText,
+} from "../../../i18n/outcomes/firmware/firmware-words.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { ATMEGA128 } from "../../../protocol/intel-hex.ts";
 import { formatFirmware } from "../../../shared/format.ts";
@@ -160,13 +163,13 @@ function demoMarkNotice(
   version: { major: number; minor: number },
 ): TemplateResult {
   const onDemo = isDemo(ctx.state) && connected(ctx.state);
-  const o = translator(firmwareOutcomeMessages, ctx.state.locale);
+  const words = demoFileWords(version, ctx.state.locale);
   return html`
     <div class="notice ${onDemo ? "notice--info" : "notice--warning"}" data-testid="fw-demo-mark">
-      <p><strong>${o("outcome.firmware.demoFile.title")}</strong></p>
+      <p><strong>${words.title}</strong></p>
       <p>
-        ${o("outcome.firmware.demoFile.text", { mark: `RBCFW ${formatFirmware(version)}` })}
-        ${onDemo ? t("firmware.demoMark.fineOnDemo") : o("outcome.firmware.demoFile.notOnReal")}
+        ${words.text}
+        ${onDemo ? t("firmware.demoMark.fineOnDemo") : words.notOnReal}
       </p>
     </div>
   `;
@@ -218,11 +221,10 @@ function confirmBlock(ctx: ViewContext, t: FirmwareTranslator, run: FirmwareRun)
 
 /** The extra question before a demo file is written to a real robot: a tick that says what will happen. */
 function demoFileQuestion(ctx: ViewContext, t: FirmwareTranslator, run: FirmwareRun): TemplateResult {
-  const o = translator(firmwareOutcomeMessages, ctx.state.locale);
   return html`
     <div class="notice notice--danger" data-testid="fw-demo-confirm">
       <p><strong>${t("firmware.demoMark.confirmLead", { file: run.fileName })}</strong></p>
-      <p>${o("outcome.firmware.demoFile.cannotRun")}</p>
+      <p>${demoFileCannotRunText(ctx.state.locale)}</p>
       <label class="check">
         <input
           type="checkbox"
