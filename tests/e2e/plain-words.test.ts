@@ -263,7 +263,8 @@ describe("Zeros: the comparison agrees with 'Cannot write'", () => {
       const five = Number(await page.locator("#zero-5").inputValue());
       await page.locator("#zero-5").fill(String(five + 1));
       await page.locator("#zero-5").press("Tab");
-      expect(await text(page.getByTestId("change-summary"))).toMatch(some);
+      // The summary is drawn on the panel's next render, not at once: polled.
+      await expect.poll(() => text(page.getByTestId("change-summary"))).toMatch(some);
       await context.close();
     });
   }
