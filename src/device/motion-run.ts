@@ -26,6 +26,12 @@ export interface RunMotionOptions {
   /** The motion's duration when the caller knows it (a downloaded motion): the Run is judged against it. */
   expectedMs?: number;
   signal?: AbortSignal;
+  /**
+   * Awaited after the checks (the busy probe, the error code) and just before the Run packet is written, so that
+   * several robots can be started together: the Class view resolves it when every robot has got this far, and
+   * every Run is then written in the same tick. Stop during the wait cancels the Run as usual.
+   */
+  ready?: () => Promise<void>;
 }
 
 /**
@@ -63,7 +69,8 @@ export async function runMotionReport(
             (r) => r.code,
             () => undefined,
           );
-    // Stop (or Limp) came during those reads: the motion is not started.
+    if (options.ready) await options.ready();
+    // Stop (or Limp) came during those reads (or the wait for the others): the motion is not started.
     if (epoch !== c.epoch) throw new RbcCancelledError(`Motion ${motion} was not started: Stop came first.`);
     c.requirePacketMode(COMMANDS.runMotion.name);
     const sent7Before = runs.sent7;

@@ -155,6 +155,16 @@ describe("the class of robots", () => {
     for (const w of words) expect(w).toMatch(/Stopped by Stop|stopped at the end of its scene/);
   });
 
+  it("writes every Run in the same tick even when one robot answers its checks later (the starting gate)", async () => {
+    const { clock, room, demos, rows } = await fourRobots();
+    await clock.run(room.runOnAll(7));
+    // Robot 3 answers its next two requests (the busy probe before the Run) 40 ms late.
+    demos[2]!.port.faults.delayReplies(40, 2);
+    await clock.run(room.runOnAll(7));
+    expect(rows().map((r) => r.result?.said?.[0]?.key)).toEqual(Array(4).fill("class.result.played"));
+    expect(classOf(room.store.get()).lastRun).toMatchObject({ number: 7, robots: 4, skewMs: 0 });
+  });
+
   it("keeps a robot's result its own when another robot is gone before Run on all", async () => {
     const { clock, room, demos, rows } = await fourRobots();
     await clock.run(room.runOnAll(7));

@@ -14,11 +14,35 @@ import { patchClass, patchRobot } from "./state.ts";
 const RUN_MOTION = COMMANDS.runMotion.type;
 
 /**
- * Sends motion `number` to every robot of `links`: all Runs are started in the same tick, before any reply is
- * awaited. Each client first makes sure nothing else is playing (the busy probe of docs/protocol.md §3.6, which
- * the device's verdict needs), then writes its Run; the skew is measured where the Run packets are written
- * (the clients' packet logs), first to last, in `now()` time (performance.now in the page). Each robot's
- * result is the device's verdict (`runMotionReport`): a `14 nn` reply alone never proves motion nn played.
+ * A gate that opens when each of `count` runners has arrived or dropped out (failed before it got there), so
+ * that none waits for a robot that will never come.
+ */
+export function startingGate(count: number): { arrive(): Promise<void>; dropOut(): void } {
+  let waiting = count;
+  let open!: () => void;
+  const opened = new Promise<void>((resolve) => {
+    open = resolve;
+  });
+  const one = () => {
+    waiting--;
+    if (waiting <= 0) open();
+  };
+  return {
+    arrive() {
+      one();
+      return opened;
+    },
+    dropOut: one,
+  };
+}
+
+/**
+ * Sends motion `number` to every robot of `links`, written in the same tick: each client first makes sure
+ * nothing else is playing (the busy probe of docs/protocol.md §3.6, which the device's verdict needs) and then
+ * waits at a starting gate (`RunMotionOptions.ready`) until every robot has got that far or dropped out; then
+ * every Run packet is written. The skew is measured where the Run packets are written (the clients' packet
+ * logs), first to last, in `now()` time (performance.now in the page). Each robot's result is the device's
+ * verdict (`runMotionReport`): a `14 nn` reply alone never proves motion nn played.
  */
 export async function runOnEach(
   room: ClassRoom,
@@ -36,9 +60,20 @@ export async function runOnEach(
     }),
   );
   for (const link of links) patchRobot(store, link.id, { task: "run", result: undefined });
+  const gate = startingGate(links.length);
   const runs: Promise<RunReport>[] = links.map(async (link) => {
-    if (link.client.mode === "direct") await link.client.exitDirectMode();
-    return link.client.runMotionReport(number);
+    let arrived = false;
+    try {
+      if (link.client.mode === "direct") await link.client.exitDirectMode();
+      return await link.client.runMotionReport(number, {
+        ready: () => {
+          arrived = true;
+          return gate.arrive();
+        },
+      });
+    } finally {
+      if (!arrived) gate.dropOut();
+    }
   });
   const settled = await Promise.allSettled(runs);
   for (const stop of listening) stop();
