@@ -20,6 +20,7 @@ import { formatSeconds } from "./plot-data.ts";
 import {
   afterFailedUpload,
   afterUpload,
+  type BookEntry,
   motionNumberOf,
   observeFreeMemory,
   type SlotBook,
@@ -82,7 +83,7 @@ export function uploadSucceeded(
   payload: Payload,
   result: UploadResult,
   real: boolean,
-): void {
+): BookEntry | undefined {
   const { store } = ctx;
   const { area } = payload;
   const { locale } = store.get();
@@ -151,6 +152,7 @@ export function uploadSucceeded(
     },
   }));
   patchMotions(store, { upload: undefined, uploadResult: notice, [bookKey(area)]: book });
+  return entry;
 }
 
 export async function uploadFailed(
