@@ -6,6 +6,7 @@ import { translator } from "../../../i18n/translate.ts";
 import { ACTION_AREA_BYTES } from "../../../protocol/catalog.ts";
 import { motionImage } from "../../../protocol/motion-image.ts";
 import { RbmError, type RbmMotion } from "../../../protocol/rbm.ts";
+import { validateRbm } from "../../../protocol/rbm-validate.ts";
 import type { AppContext } from "../../context.ts";
 import { focusSoon } from "../../focus.ts";
 import { motionsController } from "./controllers.ts";
@@ -70,7 +71,15 @@ export function uploadPayload(ctx: AppContext, target: UploadTarget): Payload | 
  * against the connected robot and an image the RBC can take (docs/protocol.md §6.3, §7).
  */
 function documentEntry(motion: RbmMotion, fileName: string): MotionFileEntry {
-  const entry: MotionFileEntry = { id: -1, fileName, fileBytes: 0, motion, errors: [] };
+  // As for a file (`inspectMotionText`): a motion that breaks the rules gets no image, and no second report.
+  const entry: MotionFileEntry = {
+    id: -1,
+    fileName,
+    fileBytes: 0,
+    motion,
+    errors: validateRbm(motion).errors,
+  };
+  if (entry.errors.length > 0) return entry;
   try {
     entry.image = motionImage(motion);
   } catch (e) {
