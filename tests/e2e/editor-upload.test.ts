@@ -13,7 +13,7 @@
 import type { Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { type AppHarness, FAST, releaseRobot, squash, startHarness } from "./harness.ts";
-import { axeProblems, expectPageOk, PHONE } from "./i18n-checks.ts";
+import { axeProblems, expectPageOk, PHONE, pageProblems } from "./i18n-checks.ts";
 import "./rbc-test-globals.ts";
 
 let app: AppHarness;
@@ -72,6 +72,16 @@ async function holdWhenPlaying(page: Page, number: number): Promise<void> {
       window.__rbcTest?.clock.hold();
     });
   }, number);
+}
+
+/** The card's buttons that reach past its right edge (a long label that does not wrap). */
+async function outsideCard(page: Page): Promise<string[]> {
+  return card(page).evaluate((el) => {
+    const right = el.getBoundingClientRect().right;
+    return [...el.querySelectorAll("button")]
+      .filter((b) => b.getBoundingClientRect().right > right + 0.5)
+      .map((b) => (b.textContent ?? "").replace(/\s+/g, " ").trim());
+  });
 }
 
 /** Opens the Editor with a second scene added (a motion of 2 × 0.5 s) and shows its Play tab. */
@@ -173,6 +183,9 @@ describe("the Editor: upload to the robot and run it there", () => {
     await page
       .getByRole("button", { name: "Run the earlier version: motion 12 (remote key 1)", exact: true })
       .waitFor();
+    // Its long label wraps inside the card (the Play tab is a narrow column beside the scenes).
+    expect(await pageProblems(page, { within: '[data-testid="editor-upload"]' })).toEqual([]);
+    expect(await outsideCard(page)).toEqual([]);
     await page.getByTestId("editor-undo").click();
     expect(await copyText(page)).toBe("The robot holds this motion as motion 12 (remote key 1).");
     await context.close();

@@ -77,7 +77,7 @@ function copyBlock(
     <div class="actions">
       <button
         type="button"
-        class="btn"
+        class="btn btn--wrap"
         data-testid="editor-run"
         ?disabled=${refused}
         aria-describedby=${busy ? "editor-robot-busy" : nothing}
@@ -95,7 +95,7 @@ function postureBlock(ctx: ViewContext, mt: MotionsTranslator, refused: boolean)
   return html`<div class="notice notice--warning" data-testid="editor-posture">
     <p><strong>${mt("motions.run.postureGuidance")}</strong> ${mt("motions.run.ignoresOthers")}</p>
     <div class="actions">
-      <button type="button" class="btn" ?disabled=${refused} @click=${() => runOnRobot(ctx, BASIC_POSTURE_MOTION)}>
+      <button type="button" class="btn btn--wrap" ?disabled=${refused} @click=${() => runOnRobot(ctx, BASIC_POSTURE_MOTION)}>
         ${mt("motions.run.confirmNamed", { number: BASIC_POSTURE_MOTION, name })}
       </button>
     </div>
