@@ -12,7 +12,12 @@ import { initialState } from "../../src/ui/app-state.ts";
 import type { AppContext } from "../../src/ui/context.ts";
 import { liveOf, type RobotCopy } from "../../src/ui/features/editor/live-state.ts";
 import { editorMessages } from "../../src/ui/features/editor/messages.ts";
-import { requestEditorUpload, startEditorUpload } from "../../src/ui/features/editor/robot-actions.ts";
+import {
+  motionPlaying,
+  requestEditorUpload,
+  robotRefusal,
+  startEditorUpload,
+} from "../../src/ui/features/editor/robot-actions.ts";
 import {
   copyInBook,
   editorUploadTarget,
@@ -105,6 +110,27 @@ describe("what the robot holds of the Editor's motion", () => {
     const entry = book.entries[0]!;
     expect(entry.slot).toBeUndefined();
     expect(robotCopyStatus({ doc, entry }, book, doc)).toEqual({ kind: "same", number: undefined, entry });
+  });
+});
+
+describe("why the Editor's robot buttons refuse", () => {
+  const base = initialState({ serialSupported: false, secureContext: true, route: "editor" });
+  const connected = { ...base.connection, phase: "connected" as const, mode: "packet" as const };
+
+  it("not connected, a motion started here or found playing, direct mode; nothing when idle", () => {
+    expect(robotRefusal(base)).toBe("Connect a robot first.");
+    expect(robotRefusal({ ...base, connection: connected })).toBeUndefined();
+    expect(motionPlaying({ ...base, connection: connected })).toBe(false);
+    const busy = { ...base, connection: { ...connected, busy: { since: 0 } } };
+    expect(robotRefusal(busy)).toBe(
+      "A motion is playing: the robot ignores everything but Basic posture (7) until it ends.",
+    );
+    expect(motionPlaying(busy)).toBe(true);
+    const direct = { ...base, connection: { ...connected, mode: "direct" as const } };
+    expect(robotRefusal(direct)).toBe(
+      "The robot is in servo control (direct mode): end teach-in, or servo control in the Servos view, first.",
+    );
+    expect(motionPlaying(direct)).toBe(false);
   });
 });
 

@@ -999,8 +999,8 @@ export const editorMessages = defineMessages({
     ko: "업로드할 수 없어요. 모션에 오류가 {count}개 있어요(검사 탭). 아무것도 보내지 않아요.",
   },
   "editor.robot.direct": {
-    en: "The robot is in servo control (direct mode, for teach-in or the Servos view): end it first.",
-    ko: "로봇이 서보 제어(직접 모드) 중이에요(티칭 또는 서보 화면). 먼저 끝내 주세요.",
+    en: "The robot is in servo control (direct mode): end teach-in, or servo control in the Servos view, first.",
+    ko: "로봇이 서보 제어(직접 모드) 중이에요. 티칭이나 서보 화면의 서보 제어를 먼저 끝내 주세요.",
   },
   "editor.robot.key": { en: "remote key {key}", ko: "리모컨 {key}번 키" },
   "editor.robot.starKey": { en: "remote * then {key}", ko: "리모컨 * 다음 {key}번 키" },

@@ -10,6 +10,7 @@ import { translator } from "../../../i18n/translate.ts";
 import type { Motion } from "../../../motion/index.ts";
 import type { AppState } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
+import { motionsMessages } from "../motions/messages.ts";
 import { robotBusyReason, type UploadTarget } from "../motions/state.ts";
 import { requestUpload, startUpload } from "../motions/upload-actions.ts";
 import { pressRun } from "../motions/view-actions.ts";
@@ -43,12 +44,14 @@ export function runOnRobot(ctx: AppContext, number: number): void {
 
 /**
  * Why the robot cannot take an upload or a Run now, in the panel's language, or undefined: the Motions view's
- * reasons (not connected, a sound, an upload, a motion playing, another task), and direct mode (teach-in or
- * servo control hold the servos; the RBC takes no packet then, docs/protocol.md §5).
+ * reasons (not connected, a sound, an upload, a motion playing, another task), a motion started elsewhere
+ * that the busy probe found playing (docs/protocol.md §3.6: its main loop answers nothing else until it ends),
+ * and direct mode (teach-in or servo control hold the servos; the RBC takes no packet then, §5).
  */
 export function robotRefusal(s: AppState): string | undefined {
   const busy = robotBusyReason(s);
   if (busy) return busy;
+  if (s.connection.busy) return translator(motionsMessages, s.locale)("motions.busy.motion");
   if (s.connection.mode === "direct") return translator(editorMessages, s.locale)("editor.robot.direct");
   return undefined;
 }
