@@ -13,7 +13,7 @@
 import type { Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { type AppHarness, FAST, releaseRobot, squash, startHarness } from "./harness.ts";
-import { axeProblems, expectPageOk, PHONE, pageProblems } from "./i18n-checks.ts";
+import { axeProblems, expectPageOk, PHONE, pageProblems, shot } from "./i18n-checks.ts";
 import "./rbc-test-globals.ts";
 
 let app: AppHarness;
@@ -130,6 +130,9 @@ describe("the Editor: upload to the robot and run it there", () => {
     expect(squash(await progress.textContent())).toContain("Uploading NewMotion.rbm");
     expect(await progress.getByRole("button", { name: "Cancel upload" }).isEnabled()).toBe(true);
     expect(await page.getByRole("button", { name: "Upload to robot" }).isDisabled()).toBe(true);
+    // Its own upload is not "busy" beside it: the progress and Cancel are right there.
+    expect(await page.getByTestId("editor-robot-busy").count()).toBe(0);
+    await shot(card(page), "editor-upload-progress");
     await releaseRobot(page);
 
     // Stored: the Motions view's result, then the number and the remote key.
@@ -228,6 +231,7 @@ describe("the Editor: upload to the robot and run it there", () => {
     );
     expect(await page.evaluate(() => window.__rbcDemoSim?.playingMotion)).toBe(1);
     expect(await axeProblems(page, { within: '[data-testid="editor-upload"]' })).toEqual([]);
+    await shot(card(page), "editor-upload-busy");
     await busy.getByRole("button", { name: "Stop" }).click();
     await releaseRobot(page);
     await busy.waitFor({ state: "detached" });

@@ -23,7 +23,13 @@ import {
   runOnRobot,
   startEditorUpload,
 } from "./robot-actions.ts";
-import { type CopyStatus, editorUploadTarget, remoteKeyText, robotCopyStatus } from "./robot-model.ts";
+import {
+  type CopyStatus,
+  editorUploadTarget,
+  isEditorTarget,
+  remoteKeyText,
+  robotCopyStatus,
+} from "./robot-model.ts";
 
 /**
  * The Play tab's "Store on the robot" card (issue 23 item 1): "Upload to robot" stores the document on screen
@@ -128,7 +134,10 @@ export function robotCard(ctx: ViewContext, doc: Motion): TemplateResult {
   // A motion this card started shows its own progress with "Stop motion"; any other gets a Stop here.
   const ownRun = m.run !== undefined && m.runFrom === liveOf(s).runFrom;
   const why = refusedUpload ?? busy;
-  const describedBy = busy ? "editor-upload-why editor-robot-busy" : "editor-upload-why";
+  // The Editor's own upload shows its progress and Cancel right here: no busy sentence above it.
+  const ownUpload = m.upload !== undefined && isEditorTarget(m.upload.target);
+  const showBusy = busy !== undefined && !ownUpload;
+  const describedBy = showBusy ? "editor-upload-why editor-robot-busy" : "editor-upload-why";
   return html`
     <section class="card editor-robot-store" aria-labelledby="robot-store-title" data-testid="editor-upload">
       <h2 id="robot-store-title" class="card-title">${t("editor.robot.title")}</h2>
@@ -160,10 +169,10 @@ export function robotCard(ctx: ViewContext, doc: Motion): TemplateResult {
                 }
               </span>
             </div>
-            ${busy ? busyLine(ctx, busy, motionPlaying(s) && !ownRun) : nothing}
+            ${busy && showBusy ? busyLine(ctx, busy, motionPlaying(s) && !ownRun) : nothing}
             ${uploadInPlace(ctx, editorUploadTarget(doc), startEditorUpload)}
             ${status.kind !== "none" && !s.connection.basicPostureConfirmed ? postureBlock(ctx, mt, busy !== undefined || confirming) : nothing}
-            ${status.kind !== "none" ? copyBlock(ctx, t, status, busy !== undefined || confirming, busy !== undefined) : nothing}
+            ${status.kind !== "none" ? copyBlock(ctx, t, status, busy !== undefined || confirming, showBusy) : nothing}
             ${runInPlace(ctx, mt)}
           `
       }
