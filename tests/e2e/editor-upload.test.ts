@@ -153,7 +153,9 @@ describe("the Editor: upload to the robot and run it there", () => {
     );
     await posture.getByRole("button", { name: "Run motion 7 (Basic posture)" }).click();
     await page.getByTestId("move-confirm").waitFor();
-    await page.locator("#confirm-move").click();
+    // The question takes the focus, so the keyboard answers it.
+    await expect.poll(() => page.evaluate(() => document.activeElement?.id)).toBe("confirm-move");
+    await page.keyboard.press("Enter");
     await card(page).getByText("Motion 7 (Basic posture) finished.").waitFor();
     await posture.waitFor({ state: "detached" });
 
