@@ -9,6 +9,7 @@ import { translator } from "../../../i18n/translate.ts";
 import { clampPosition, type Motion } from "../../../motion/index.ts";
 import { type Robot3dOptions, robot3d } from "../../robot3d/robot-view.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
+import { showMemory } from "../motions/memory.ts";
 import { editorController } from "./controller.ts";
 import { openEditor } from "./document-actions.ts";
 import { draftsCard } from "./drafts-view.ts";
@@ -119,6 +120,10 @@ function render(ctx: ViewContext): TemplateResult {
 const editorView: AppView = {
   needsRobot: false,
   render,
+  activate(ctx) {
+    // The Play tab's upload names the slot it fills when the free memory shows the robot's downloads (as Motions does).
+    void showMemory(ctx);
+  },
 };
 
 export default editorView;

@@ -1,10 +1,13 @@
 /**
  * The editor's live part, one per connection (the session resets it to undefined, which `liveOf` reads as the
  * initial value): teach-in (servos made passive, posed by hand, read into a scene, held) and tethered play (a
- * scene, a range or the whole motion played frame by frame in direct mode, docs/protocol.md §10).
+ * scene, a range or the whole motion played frame by frame in direct mode, docs/protocol.md §10), and the
+ * document last uploaded from the Editor (docs/protocol.md §6).
  */
+import type { Motion } from "../../../motion/index.ts";
 import type { AppState, Notice } from "../../app-state.ts";
 import type { Store } from "../../store.ts";
+import type { BookEntry } from "../motions/slot-book.ts";
 
 /** The HUNO's limbs, by which teach-in chooses the servos to make passive. */
 export type Limb = "right-leg" | "left-leg" | "right-arm" | "left-arm";
@@ -70,9 +73,24 @@ export interface PlayState {
   notice?: Notice;
 }
 
+/**
+ * The Editor's document as the robot stored it in this connection ("Upload to robot" in the Play tab): the
+ * document sent and the slot the Motions upload path recorded for it (its Run number follows from the slot).
+ */
+export interface RobotCopy {
+  /** The document uploaded (documents are values: an edit after the upload makes a new one). */
+  doc: Motion;
+  /** Its download slot, as the Motions view's slot book recorded it. */
+  entry: BookEntry;
+}
+
 export interface EditorLiveState {
   teach: TeachInState;
   play: PlayState;
+  /** The last upload from the Editor that the robot stored, in this connection. */
+  robotCopy?: RobotCopy;
+  /** The motion number last run from the Editor, so that its question, progress and result show there. */
+  runFrom?: number;
 }
 
 /** Servo ids 0-15, by id. */

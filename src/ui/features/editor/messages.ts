@@ -980,6 +980,50 @@ export const editorMessages = defineMessages({
     en: "Tethered play failed after {where}: whether the robot got the last frame is not known. Hold it.",
     ko: "{where} 다음에 로봇에서 재생하지 못했어요. 로봇이 마지막 프레임을 받았는지 알 수 없어요. 로봇을 잡아 주세요.",
   },
+
+  // ---- Store on the robot: upload and run (robot-view.ts; the upload's and the Run's own words are the Motions view's)
+  "editor.robot.title": { en: "Store on the robot", ko: "로봇에 저장" },
+  "editor.robot.difference": {
+    en: "Play on robot (above) tries the motion from this computer and stores nothing. Upload to robot stores it in the robot's memory, where it runs by its number or from the remote, without the cable.",
+    ko: "위의 ‘로봇에서 재생’은 이 컴퓨터에서 모션을 시험해 볼 뿐 아무것도 저장하지 않아요. ‘로봇에 업로드’는 모션을 로봇 메모리에 저장해서 케이블 없이도 번호나 리모컨으로 실행할 수 있어요.",
+  },
+  "editor.robot.hint": {
+    en: "Connect a robot (or the demo robot) to store this motion on it.",
+    ko: "로봇(또는 데모 로봇)을 연결하면 이 모션을 로봇에 저장할 수 있어요.",
+  },
+  "editor.robot.hasErrors": {
+    en: {
+      one: "Cannot upload: the motion has {count} error (on the Check tab). Nothing is sent.",
+      other: "Cannot upload: the motion has {count} errors (on the Check tab). Nothing is sent.",
+    },
+    ko: "업로드할 수 없어요. 모션에 오류가 {count}개 있어요(검사 탭). 아무것도 보내지 않아요.",
+  },
+  "editor.robot.direct": {
+    en: "The robot is in servo control (direct mode): end teach-in, or servo control in the Servos view, first.",
+    ko: "로봇이 서보 제어(직접 모드) 중이에요. 티칭이나 서보 화면의 서보 제어를 먼저 끝내 주세요.",
+  },
+  "editor.robot.key": { en: "remote key {key}", ko: "리모컨 {key}번 키" },
+  "editor.robot.starKey": { en: "remote * then {key}", ko: "리모컨 * 다음 {key}번 키" },
+  "editor.robot.holds": {
+    en: "The robot holds this motion as motion {number} ({key}).",
+    ko: "로봇에 이 모션이 모션 {number}번({key})으로 저장되어 있어요.",
+  },
+  "editor.robot.earlier": {
+    en: "The robot holds an earlier version of this motion as motion {number} ({key}): the draft changed after the upload. Upload again to store what is on screen.",
+    ko: "로봇에는 이 모션의 이전 버전이 모션 {number}번({key})으로 저장되어 있어요. 업로드한 뒤에 임시 저장본이 바뀌었어요. 화면의 모션을 저장하려면 다시 업로드해 주세요.",
+  },
+  "editor.robot.run": {
+    en: "Run on robot: motion {number} ({key})",
+    ko: "로봇에서 실행: 모션 {number}번({key})",
+  },
+  "editor.robot.runEarlier": {
+    en: "Run the earlier version: motion {number} ({key})",
+    ko: "이전 버전 실행: 모션 {number}번({key})",
+  },
+  "editor.robot.numberUnknown": {
+    en: "The robot stored it, but in which slot is not known (it held downloads the panel did not see arrive), so there is no number to run it by. Tick “Reset motion memory first” above and upload again to know it.",
+    ko: "로봇에 저장했지만 어느 슬롯인지 알 수 없어요(패널이 모르는 다운로드가 이미 있었어요). 그래서 실행할 번호가 없어요. 번호를 알려면 위의 “먼저 모션 메모리 초기화”를 선택하고 다시 업로드해 주세요.",
+  },
 });
 
 export type EditorTranslator = Translator<typeof editorMessages>;

@@ -10,6 +10,7 @@ import { liveOf, teachInOn } from "./live-state.ts";
 import { type EditorTranslator, editorMessages } from "./messages.ts";
 import { playPanel } from "./play-view.ts";
 import { poseCard } from "./pose-table-view.ts";
+import { robotCard } from "./robot-view.ts";
 import { sceneCard } from "./scene-view.ts";
 import { EDITOR_TABS, type EditorState, type EditorTab, editorTabAfterKey } from "./state.ts";
 import { teachInPanel } from "./teach-in-view.ts";
@@ -96,7 +97,8 @@ function panel(ctx: ViewContext, s: EditorState, doc: Motion, tab: EditorTab, ch
     case "teach":
       return teachInPanel(ctx, editorHost(ctx, doc, s.scene));
     case "play":
-      return playPanel(ctx, editorHost(ctx, doc, s.scene));
+      // Tethered play (try it, nothing stored), then storing it on the robot and running it from there.
+      return html`${playPanel(ctx, editorHost(ctx, doc, s.scene))} ${robotCard(ctx, doc)}`;
     case "check":
       return issuesCard(ctx, doc, check);
   }

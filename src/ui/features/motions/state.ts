@@ -61,7 +61,14 @@ export interface ActionFile {
   bytes: Uint8Array;
 }
 
-export type UploadTarget = { area: "motion"; entryId: number } | { area: "action" };
+/**
+ * Where an upload starts: a file card (an opened file), the action files, or the Editor, whose document (as
+ * shown when Upload was pressed or confirmed) travels with the target.
+ */
+export type UploadTarget =
+  | { area: "motion"; entryId: number }
+  | { area: "motion"; place: "editor"; motion: RbmMotion; fileName: string }
+  | { area: "action" };
 
 export interface UploadRun {
   target: UploadTarget;

@@ -4,13 +4,23 @@ import type { RbcClient } from "../../../device/rbc-client.ts";
 import type { UploadOptions, UploadResult } from "../../../device/types.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { ACTION_AREA_BYTES } from "../../../protocol/catalog.ts";
+import { motionImage } from "../../../protocol/motion-image.ts";
+import { RbmError, type RbmMotion } from "../../../protocol/rbm.ts";
+import { validateRbm } from "../../../protocol/rbm-validate.ts";
 import type { AppContext } from "../../context.ts";
 import { focusSoon } from "../../focus.ts";
 import { motionsController } from "./controllers.ts";
-import { checkedEntry, entryFacts } from "./files.ts";
+import { checkEntry, checkedEntry, entryFacts } from "./files.ts";
 import { motionsMessages } from "./messages.ts";
-import { afterReset } from "./slot-book.ts";
-import { type ActionFile, motionsOf, patchMotions, robotBusyReason, type UploadTarget } from "./state.ts";
+import { afterReset, type BookEntry } from "./slot-book.ts";
+import {
+  type ActionFile,
+  type MotionFileEntry,
+  motionsOf,
+  patchMotions,
+  robotBusyReason,
+  type UploadTarget,
+} from "./state.ts";
 import { addSample } from "./upload-rate.ts";
 import { bookKey, type Payload, uploadFailed, uploadSucceeded } from "./upload-results.ts";
 
@@ -34,9 +44,14 @@ export function uploadPayload(ctx: AppContext, target: UploadTarget): Payload | 
     if (file.bytes.length === 0) return { refused: t("motions.upload.actionEmpty") };
     return { area: "action", fileName: file.fileName, bytes: file.bytes, name: file.fileName };
   }
-  const entry = s.motionFiles?.entries.find((e) => e.id === target.entryId);
+  const entry =
+    "place" in target
+      ? documentEntry(target.motion, target.fileName)
+      : s.motionFiles?.entries.find((e) => e.id === target.entryId);
   if (!entry) return { refused: t("motions.upload.fileClosed") };
-  const { errors } = checkedEntry(ctx, entry);
+  // A document is a new value at every edit: checked here, not from the page's cache of opened files.
+  const { errors } =
+    "place" in target ? checkEntry(entry, s.connection.serialNumber) : checkedEntry(ctx, entry);
   const facts = entryFacts(entry);
   if (errors.length > 0 || !entry.image || !facts) {
     return { refused: t("motions.upload.hasErrors", { count: errors.length }) };
@@ -51,6 +66,28 @@ export function uploadPayload(ctx: AppContext, target: UploadTarget): Payload | 
   };
 }
 
+/**
+ * A motion document (the Editor's) as an opened file, so that it gets the same checks: the validator's rules
+ * against the connected robot and an image the RBC can take (docs/protocol.md §6.3, §7).
+ */
+function documentEntry(motion: RbmMotion, fileName: string): MotionFileEntry {
+  // As for a file (`inspectMotionText`): a motion that breaks the rules gets no image, and no second report.
+  const entry: MotionFileEntry = {
+    id: -1,
+    fileName,
+    fileBytes: 0,
+    motion,
+    errors: validateRbm(motion).errors,
+  };
+  if (entry.errors.length > 0) return entry;
+  try {
+    entry.image = motionImage(motion);
+  } catch (e) {
+    entry.errors = e instanceof RbmError ? [...e.issues] : [{ code: "rbm-image", message: String(e) }];
+  }
+  return entry;
+}
+
 /** Why the upload button is disabled, or undefined. */
 export function uploadBlocked(ctx: AppContext, target: UploadTarget): string | undefined {
   const payload = uploadPayload(ctx, target);
@@ -58,12 +95,19 @@ export function uploadBlocked(ctx: AppContext, target: UploadTarget): string | u
   return robotBusyReason(ctx.store.get());
 }
 
-/** Upload pressed: a real robot asks first (§6.3); the demo robot uploads at once. */
-export function requestUpload(ctx: AppContext, target: UploadTarget): void {
+/**
+ * Upload pressed: a real robot asks first (§6.3); the demo robot uploads at once. `start` is what starts it
+ * (`startUpload`, or a caller's wrapper that also wants its outcome, as the Editor does).
+ */
+export function requestUpload(
+  ctx: AppContext,
+  target: UploadTarget,
+  start: (ctx: AppContext, target: UploadTarget) => Promise<unknown> = startUpload,
+): void {
   const s = ctx.store.get();
   if (uploadBlocked(ctx, target)) return;
   if (s.connection.robot?.kind === "demo") {
-    void startUpload(ctx, target);
+    void start(ctx, target);
   } else {
     patchMotions(ctx.store, { confirming: target, uploadResult: undefined, resultFor: target });
     focusSoon("confirm-upload");
@@ -102,11 +146,12 @@ async function sendUpload(
   return client.uploadMotion(payload.motion, device);
 }
 
-export async function startUpload(ctx: AppContext, target: UploadTarget): Promise<void> {
+/** Uploads what `target` holds; resolves with the slot it went into when the robot stored it. */
+export async function startUpload(ctx: AppContext, target: UploadTarget): Promise<BookEntry | undefined> {
   const { session, store } = ctx;
   const s = store.get();
   const payload = uploadPayload(ctx, target);
-  if ("refused" in payload || robotBusyReason(s)) return;
+  if ("refused" in payload || robotBusyReason(s)) return undefined;
   const { area, bytes, fileName } = payload;
   const t = translator(motionsMessages, s.locale);
   const reset = area === "motion" ? motionsOf(s).resetMotionFirst : motionsOf(s).resetActionFirst;
@@ -159,11 +204,11 @@ export async function startUpload(ctx: AppContext, target: UploadTarget): Promis
     );
   } catch (e) {
     await uploadFailed(ctx, payload, e, didReset);
-    return;
+    return undefined;
   } finally {
     if (controller.upload === abort) controller.upload = undefined;
   }
-  uploadSucceeded(ctx, payload, result, real);
+  return uploadSucceeded(ctx, payload, result, real);
 }
 
 export function setResetFirst(ctx: AppContext, area: "motion" | "action", on: boolean): void {

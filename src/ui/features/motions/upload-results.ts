@@ -19,6 +19,7 @@ import { formatSeconds } from "./plot-data.ts";
 import {
   afterFailedUpload,
   afterUpload,
+  type BookEntry,
   motionNumberOf,
   observeFreeMemory,
   type SlotBook,
@@ -58,7 +59,7 @@ export function uploadSucceeded(
   payload: Payload,
   result: UploadResult,
   real: boolean,
-): void {
+): BookEntry | undefined {
   const { store } = ctx;
   const { area } = payload;
   const { locale } = store.get();
@@ -127,6 +128,7 @@ export function uploadSucceeded(
     },
   }));
   patchMotions(store, { upload: undefined, uploadResult: notice, [bookKey(area)]: book });
+  return entry;
 }
 
 export async function uploadFailed(

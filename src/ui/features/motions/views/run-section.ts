@@ -65,7 +65,7 @@ function motionButton(
   `;
 }
 
-function runningPanel(ctx: ViewContext, t: MotionsTranslator, run: RunningMotion): TemplateResult {
+export function runningPanel(ctx: ViewContext, t: MotionsTranslator, run: RunningMotion): TemplateResult {
   const { locale } = t;
   const elapsed = ctx.session.clock.now() - run.startedAt;
   const known = run.expectedMs !== undefined;
@@ -106,7 +106,12 @@ function runningPanel(ctx: ViewContext, t: MotionsTranslator, run: RunningMotion
   `;
 }
 
-function confirmMove(ctx: ViewContext, t: MotionsTranslator, s: AppState, number: number): TemplateResult {
+export function confirmMove(
+  ctx: ViewContext,
+  t: MotionsTranslator,
+  s: AppState,
+  number: number,
+): TemplateResult {
   const offer = offerFor(s, number);
   // Motions 20 and 21: the hazard, from the outcome catalogue, every time (docs/protocol.md §3.1).
   const hazard = motionHazardText(number, s.locale);

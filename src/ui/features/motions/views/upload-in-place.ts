@@ -17,7 +17,10 @@ import { keepInView } from "./keep-in-view.ts";
 
 export function sameTarget(a: UploadTarget | undefined, b: UploadTarget): boolean {
   if (!a || a.area !== b.area) return false;
-  return a.area === "action" || (b.area === "motion" && a.entryId === b.entryId);
+  if (a.area === "action") return true;
+  // The Editor is one place whatever its document; a file card is its file's.
+  if ("place" in a || "place" in b) return "place" in a && "place" in b && a.place === b.place;
+  return b.area === "motion" && a.entryId === b.entryId;
 }
 
 /** What an upload does before its first byte: "Resetting the motion memory…", "Checking free motion memory…". */
@@ -76,12 +79,15 @@ function confirmBlock(
   t: MotionsTranslator,
   s: AppState,
   target: UploadTarget,
+  start: UploadStart,
 ): TemplateResult {
   const m = motionsOf(s);
   const file =
-    target.area === "motion"
-      ? s.motionFiles?.entries.find((e) => e.id === target.entryId)?.fileName
-      : m.actionFile?.fileName;
+    target.area === "action"
+      ? m.actionFile?.fileName
+      : "place" in target
+        ? target.fileName
+        : s.motionFiles?.entries.find((e) => e.id === target.entryId)?.fileName;
   const reset = target.area === "motion" ? m.resetMotionFirst : m.resetActionFirst;
   const resetNote =
     target.area === "motion"
@@ -100,7 +106,7 @@ function confirmBlock(
       <p>${uploadNoticeText(target.area === "action" ? "action" : "holdAdvice", t.locale)}</p>
       ${reset ? html`<p>${resetNote}</p>` : nothing}
       <div class="actions">
-        <button type="button" class="btn btn--primary" id="confirm-upload" @click=${() => void startUpload(ctx, target)}>
+        <button type="button" class="btn btn--primary" id="confirm-upload" @click=${() => void start(ctx, target)}>
           ${t("motions.upload.confirm")}
         </button>
         <button type="button" class="btn" @click=${() => cancelConfirm(ctx)}>${t("motions.upload.cancelConfirm")}</button>
@@ -109,8 +115,15 @@ function confirmBlock(
   `;
 }
 
+/** What starts an upload once confirmed: `startUpload`, or a caller's wrapper that also wants its outcome. */
+export type UploadStart = (ctx: ViewContext, target: UploadTarget) => Promise<unknown>;
+
 /** Confirmation, progress and result of an upload started at `target`, or only the (empty) live region. */
-export function uploadInPlace(ctx: ViewContext, target: UploadTarget): TemplateResult {
+export function uploadInPlace(
+  ctx: ViewContext,
+  target: UploadTarget,
+  start: UploadStart = startUpload,
+): TemplateResult {
   const s = ctx.state;
   const t = translator(motionsMessages, s.locale);
   const m = motionsOf(s);
@@ -127,7 +140,7 @@ export function uploadInPlace(ctx: ViewContext, target: UploadTarget): TemplateR
         : undefined;
   return html`
     <div class="upload-in-place" ${keepInView(shown)}>
-      ${confirming ? confirmBlock(ctx, t, s, target) : nothing} ${uploading ? progress(ctx, t, uploading) : nothing}
+      ${confirming ? confirmBlock(ctx, t, s, target, start) : nothing} ${uploading ? progress(ctx, t, uploading) : nothing}
       ${liveNotice(result, t("motions.upload.resultLabel"), s.locale)}
     </div>
   `;

@@ -1,0 +1,66 @@
+/**
+ * "Upload to robot" and "Run on robot" in the Editor (issue 23 item 1). Both go through the Motions view's
+ * paths, never copies of them: the upload is `requestUpload`/`startUpload` (the same checks, the §6.3
+ * confirmation on a real robot, progress, Cancel and the truthful result, docs/protocol.md §6), with the
+ * document on screen as its target; the run is the Run tab's `pressRun` (the movement question, motions 20/21
+ * asked every time, a Run judged by what its reply proves, §3.1). The Editor keeps only what it needs for this
+ * connection: which document the robot stored, and where.
+ */
+import { translator } from "../../../i18n/translate.ts";
+import type { Motion } from "../../../motion/index.ts";
+import type { AppState } from "../../app-state.ts";
+import type { AppContext } from "../../context.ts";
+import { motionsMessages } from "../motions/messages.ts";
+import { robotBusyReason, type UploadTarget } from "../motions/state.ts";
+import { requestUpload, startUpload } from "../motions/upload-actions.ts";
+import { pressRun } from "../motions/view-actions.ts";
+import { liveOf } from "./live-state.ts";
+import { editorMessages } from "./messages.ts";
+import { editorUploadTarget, isEditorTarget } from "./robot-model.ts";
+
+/** "Upload to robot" pressed: the Motions upload with the document on screen. */
+export function requestEditorUpload(ctx: AppContext, doc: Motion): void {
+  requestUpload(ctx, editorUploadTarget(doc), startEditorUpload);
+}
+
+/**
+ * Starts the Editor's upload (at once on the demo robot, or when a real robot's confirmation is accepted) and,
+ * when the robot stored it, remembers which document went into which slot.
+ */
+export async function startEditorUpload(ctx: AppContext, target: UploadTarget): Promise<void> {
+  if (!isEditorTarget(target)) return;
+  const entry = await startUpload(ctx, target);
+  if (!entry) return;
+  // `asRbm` is a cast: the motion sent is the Editor's document value itself.
+  const doc = target.motion as Motion;
+  ctx.store.update((s) => ({ editorLive: { ...liveOf(s), robotCopy: { doc, entry } } }));
+}
+
+/** "Run on robot": the Run tab's button for that number (asks first, judged by the reply, §3.1). */
+export function runOnRobot(ctx: AppContext, number: number): void {
+  ctx.store.update((s) => ({ editorLive: { ...liveOf(s), runFrom: number } }));
+  pressRun(ctx, number);
+}
+
+/**
+ * Why the robot cannot take an upload or a Run now, in the panel's language, or undefined: the Motions view's
+ * reasons (not connected, a sound, an upload, a motion playing, another task), a motion started elsewhere
+ * that the busy probe found playing (docs/protocol.md §3.6: its main loop answers nothing else until it ends),
+ * and direct mode (teach-in or servo control hold the servos; the RBC takes no packet then, §5).
+ */
+export function robotRefusal(s: AppState): string | undefined {
+  const busy = robotBusyReason(s);
+  if (busy) return busy;
+  if (s.connection.busy) return translator(motionsMessages, s.locale)("motions.busy.motion");
+  if (s.connection.mode === "direct") return translator(editorMessages, s.locale)("editor.robot.direct");
+  return undefined;
+}
+
+/** A motion is playing (started here, in the Motions view, or found busy): Stop belongs beside the refusal. */
+export function motionPlaying(s: AppState): boolean {
+  const c = s.connection;
+  return (
+    c.phase === "connected" &&
+    (c.playing !== undefined || c.busy !== undefined || s.motions?.run !== undefined)
+  );
+}
