@@ -113,7 +113,10 @@ function startApp(root: HTMLElement, locale: Locale): void {
   // the person ("Leave site?") while something runs.
   answerBusyQueries(() => busySentence(store.get().running, store.get().locale));
   window.addEventListener("beforeunload", (e) => {
-    if (store.get().running.length > 0) e.preventDefault();
+    const state = store.get();
+    // The Class view's robots run their own work (an upload, a Run) beside the top bar's robot.
+    const classBusy = state.classRoom?.robots.some((r) => r.task !== undefined) ?? false;
+    if (state.running.length > 0 || classBusy) e.preventDefault();
   });
 
   // Release the port when the page goes away, so the next page (or program) can open it.

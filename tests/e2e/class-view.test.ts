@@ -120,9 +120,19 @@ describe("the Class view with four demo robots", () => {
       const port = demos[2]!.port;
       port.faults.disconnectAtPcBytes = port.stats.bytesFromPc + 400;
     });
+    // While the robots upload, closing or reloading the page asks first ("Leave site?"); afterwards it does not.
+    const leaveAsks = () =>
+      page.evaluate(() => {
+        const e = new Event("beforeunload", { cancelable: true });
+        window.dispatchEvent(e);
+        return e.defaultPrevented;
+      });
+    expect(await leaveAsks()).toBe(false);
     await page.getByRole("button", { name: "Upload to 4 robots" }).click();
+    await expect.poll(leaveAsks, { interval: 5 }).toBe(true);
     const summary = page.getByTestId("class-summary");
     await summary.filter({ hasText: "Pack upload finished" }).waitFor({ timeout: 30_000 });
+    expect(await leaveAsks()).toBe(false);
     expect(squash(await summary.textContent())).toBe(
       "Pack upload finished on 4 robots: 3 stored, 0 partly stored, 1 not stored.",
     );
