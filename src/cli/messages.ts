@@ -1,3 +1,4 @@
+// Over 400 lines: a catalogue, one entry per sentence in two languages.
 import { defineMessages } from "../i18n/catalogue.ts";
 
 /**

@@ -1,3 +1,5 @@
+// Over 400 lines: one conversation with the bootloader (its timers, the per-line deadline, flow control,
+// cancellation and what the flash holds after each failure), which reads best in one place.
 import {
   type FirmwareFailureFacts,
   type FirmwareNotice,

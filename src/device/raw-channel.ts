@@ -1,3 +1,5 @@
+// Over 400 lines: one set of rules for the raw link (download acknowledgements and the servo bus share the wire-
+// time and late-reply guards), kept together so that they cannot drift apart.
 import type { Clock } from "../shared/clock.ts";
 import { RbcStillPlayingError } from "./direct-mode-errors.ts";
 import { RbcCancelledError, RbcError, RbcTimeoutError } from "./errors.ts";

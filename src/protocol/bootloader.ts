@@ -1,3 +1,4 @@
+// Over 400 lines: one state machine (docs/protocol.md §11); its states and transitions read best together.
 import { firmwareFailureText } from "../i18n/outcomes/firmware/firmware-words.ts";
 import { ProtocolError } from "./errors.ts";
 

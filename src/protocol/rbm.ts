@@ -1,3 +1,5 @@
+// Over 400 lines: one file format, its parser and serializer side by side so that a round trip is checked by
+// reading one file.
 /**
  * Motionbuilder `.rbm` motion files (docs/protocol.md §7): parser, serializer and duration.
  *

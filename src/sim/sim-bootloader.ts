@@ -1,3 +1,4 @@
+// Over 400 lines: the simulated bootloader is one state machine, the other side of src/protocol/bootloader.ts.
 import {
   BOOTLOADER_ACTIVE,
   BOOTLOADER_ENTRY,

@@ -1,3 +1,5 @@
+// Over 400 lines: a catalogue, one entry per sentence in two languages. The editor has many small parts; their
+// words stay together so a translator reads them in order.
 import type { KeysWithoutParams } from "../../../i18n/catalogue.ts";
 import { defineMessages } from "../../../i18n/catalogue.ts";
 import type { Translator } from "../../../i18n/translate.ts";
