@@ -26,14 +26,17 @@ afterAll(async () => {
   await app?.close();
 });
 
+/** Takes the Save dialog away (an own property shadows the browser's), so the page offers a download. */
+const withoutSaveDialog = () => {
+  Object.defineProperty(window, "showSaveFilePicker", { value: undefined, configurable: true });
+};
+
 async function openZeros(page: Page): Promise<void> {
   // This file tests the download path: a browser without the Save dialog (honest-results.test.ts has both).
-  await page.addInitScript(() => {
-    Reflect.deleteProperty(window, "showSaveFilePicker");
-  });
+  await page.addInitScript(withoutSaveDialog);
   await connectRobot(page, app.url);
   // A page opened before this script was added (the Korean tests open theirs first) loses the dialog here.
-  await page.evaluate(() => Reflect.deleteProperty(window, "showSaveFilePicker"));
+  await page.evaluate(withoutSaveDialog);
   await page.getByRole("link", { name: "Zeros" }).click();
   await page.getByTestId("zeros-card").waitFor();
   await page.locator("#zero-0").waitFor();
@@ -272,6 +275,11 @@ describe("in Korean (ko-KR)", () => {
     squash(await page.getByTestId("zeros-card").locator("p.muted").first().textContent());
 
   /** Opens the Zeros view once its table has been read and the view is idle. */
+  /** Takes the Save dialog away (an own property shadows the browser's), so the page offers a download. */
+  const withoutSaveDialog = () => {
+    Object.defineProperty(window, "showSaveFilePicker", { value: undefined, configurable: true });
+  };
+
   async function openZeros(page: Page): Promise<void> {
     await connectCable(page);
     await page.getByRole("link", { name: "영점", exact: true }).click();
@@ -350,10 +358,7 @@ describe("in Korean (ko-KR)", () => {
       });
     }
 
-    // Skipped, with a reason: after the zero backups moved to a Save dialog with a download fallback (#21 item 5),
-    // this Korean walk no longer sees the download event in time (the English walk above does); found at the end
-    // of the session that merged both, not yet diagnosed. The English tests cover the same flow; to fix next.
-    it.skip("says in Korean what a write, a backup and a backup file did", async () => {
+    it("says in Korean what a write, a backup and a backup file did", async () => {
       const { page, context } = await newLocalePage(app, "ko-KR");
       await openZeros(page);
 
@@ -361,6 +366,8 @@ describe("in Korean (ko-KR)", () => {
       await page.locator("#zero-3").fill("70");
       await page.getByTestId("write-zeros").click();
       const downloadPromise = page.waitForEvent("download");
+      // The page was loaded in Korean before openZeros: its Save dialog is taken away again here, at the write.
+      await page.evaluate(withoutSaveDialog);
       await page.getByRole("button", { name: "백업 저장 후 쓰기" }).click();
       const name = (await downloadPromise).suggestedFilename();
       expect(name).toMatch(/^rbc-zeros-8958899989309-\d{4}-\d{2}-\d{2}\.json$/);
@@ -377,9 +384,10 @@ describe("in Korean (ko-KR)", () => {
       const backupPromise = page.waitForEvent("download");
       await page.getByRole("button", { name: "영점 백업" }).click();
       const backup = await backupPromise;
-      const saved = page.getByText(`백업 파일을 다운로드로 내보냈어요(${backup.suggestedFilename()})`, {
-        exact: false,
-      });
+      // The write's notice above names the same file (one backup name a day): this is the backup's own.
+      const saved = page
+        .getByText(`백업 파일을 다운로드로 내보냈어요(${backup.suggestedFilename()})`, { exact: false })
+        .filter({ hasText: "백업했어요" });
       await saved.waitFor();
       expect(squash(await saved.textContent())).toContain("저장 위치와 이름은 브라우저가 정해요.");
       const parsed = parseZerosBackup(await readFile(await backup.path(), "utf8"));
