@@ -67,6 +67,13 @@ export { BUILT_IN_KEYFRAMES, builtInPlayback } from "./sim-builtin-motions.ts";
 export type { DownloadProgress } from "./sim-downloader.ts";
 export type { StoredFile } from "./sim-downloads.ts";
 export {
+  checkLastingMemory,
+  type SimAreaMemory,
+  type SimLastingMemory,
+  type SimServoMemory,
+  servoBusFromMemory,
+} from "./sim-memory.ts";
+export {
   buildPlayback,
   imagePlayback,
   type PlaybackInput,
