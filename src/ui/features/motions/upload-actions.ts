@@ -118,6 +118,7 @@ export async function startUpload(ctx: AppContext, target: UploadTarget): Promis
   patchMotions(store, {
     confirming: undefined,
     uploadResult: undefined,
+    uploadStored: undefined,
     resultFor: target,
     upload: {
       target,
@@ -163,7 +164,7 @@ export async function startUpload(ctx: AppContext, target: UploadTarget): Promis
   } finally {
     if (controller.upload === abort) controller.upload = undefined;
   }
-  uploadSucceeded(ctx, payload, result, real);
+  await uploadSucceeded(ctx, payload, result, real);
 }
 
 export function setResetFirst(ctx: AppContext, area: "motion" | "action", on: boolean): void {
