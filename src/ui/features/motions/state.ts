@@ -103,6 +103,8 @@ export interface MotionsState {
   resultFor?: UploadTarget;
   motionBook: SlotBook;
   actionBook: SlotBook;
+  /** "Reset the demo robot" connected it again as new: what became of it. */
+  demoReset?: Notice;
   /** The robot's shelf: what this browser recorded uploading to this robot (issue 23 item 2). */
   shelf?: ShelfState;
   run?: RunningMotion;

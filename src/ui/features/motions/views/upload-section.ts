@@ -9,6 +9,7 @@ import {
   MOTION_AREA_BYTES,
 } from "../../../../protocol/catalog.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
+import { demoResetOffer } from "../../shelf/demo-reset.ts";
 import { shelfList } from "../../shelf/shelf-list.ts";
 import { type MotionsTranslator, motionsMessages } from "../messages.ts";
 import { downloadedOffers } from "../run-actions.ts";
@@ -56,6 +57,7 @@ function uploadsCard(ctx: ViewContext, t: MotionsTranslator): TemplateResult {
     <section class="card" aria-labelledby="uploads-title" data-testid="uploads-card">
       <h2 id="uploads-title" class="card-title">${t("motions.upload.listTitle")}</h2>
       ${shelfList(ctx, downloadedOffers(ctx.state))} ${unnumbered(t, m.motionBook)}
+      ${demoResetOffer(ctx)}
       <details class="memory-help">
         <summary>${t("motions.upload.howCounted")}</summary>
         <p class="small">
