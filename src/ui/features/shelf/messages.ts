@@ -18,7 +18,7 @@ export const shelfMessages = defineMessages({
   "shelf.starKey": { en: "* then {key}", ko: "* 다음 {key}" },
   "shelf.keyLabel": { en: "remote: {key}", ko: "리모컨: {key}" },
   "shelf.runNow": { en: "Run now", ko: "지금 실행" },
-  "shelf.runNowLabel": { en: "Run motion {number} ({name}) now", ko: "모션 {number}번({name}) 지금 실행" },
+  "shelf.runNowLabel": { en: "Run now: motion {number} ({name})", ko: "지금 실행: 모션 {number}번({name})" },
   "shelf.thisConnection": {
     en: "uploaded now; the robot's memory accounting showed it stored",
     ko: "방금 업로드했고, 로봇의 메모리 계산에서 저장된 게 확인됐어요",

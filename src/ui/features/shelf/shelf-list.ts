@@ -74,8 +74,10 @@ function entry(ctx: ViewContext, t: ShelfTranslator, offer: OfferedMotion): Temp
 /** The list of downloaded motions the panel knows on this robot, or a sentence when it knows none. */
 export function shelfList(ctx: ViewContext, offers: readonly OfferedMotion[]): TemplateResult {
   const t = translator(shelfMessages, ctx.state.locale);
+  // The numbers this browser has on record for the robot (tests wait for a record to be kept).
+  const kept = (ctx.state.motions?.shelf?.slots ?? []).map((s) => s.motionNumber).join(" ");
   return html`
-    <p class="muted small">${t("shelf.intro")}</p>
+    <p class="muted small" data-testid="shelf-intro" data-kept=${kept}>${t("shelf.intro")}</p>
     ${shelfDropNotice(ctx.state.motions?.shelf?.notice, t.locale)}
     ${
       offers.length === 0
