@@ -15,9 +15,8 @@ import type { Notice } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { errorMessage, errorNotice, technicalDetail } from "../../error-text.ts";
 import { robotMessages } from "../robot/messages.ts";
-import { shelfMessages } from "../shelf/messages.ts";
 import { recordShelf } from "../shelf/shelf-actions.ts";
-import { remoteKeyWords } from "../shelf/shelf-words.ts";
+import { storedSentence } from "../shelf/shelf-words.ts";
 import { motionsMessages } from "./messages.ts";
 import { formatSeconds } from "./plot-data.ts";
 import {
@@ -127,7 +126,7 @@ export async function uploadSucceeded(
         ? t("motions.upload.isAction", { slot: entry.slot })
         : ""
       : number !== undefined
-        ? translator(shelfMessages, locale)("shelf.stored", { number, key: remoteKeyWords(number, locale) })
+        ? storedSentence(number, locale)
         : t("motions.upload.numberUnknown");
   const free =
     result.freeAfter === undefined

@@ -27,3 +27,9 @@ export function storedWords(stored: StoredWay, locale: Locale): string {
   const when = Number.isNaN(at.getTime()) ? stored.at : formatDateTime(at, locale);
   return stored.checked ? t("shelf.mayBeThere", { when }) : t("shelf.unchecked", { when });
 }
+
+/** After an upload into a known slot: "Stored as motion 12 (key 1): Run takes this number." */
+export function storedSentence(motionNumber: number, locale: Locale): string {
+  const t = translator(shelfMessages, locale);
+  return t("shelf.stored", { number: motionNumber, key: remoteKeyWords(motionNumber, locale) });
+}
