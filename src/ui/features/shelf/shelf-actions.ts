@@ -157,14 +157,12 @@ export interface StoredUpload {
 }
 
 /**
- * Records an upload on the connected robot's shelf. The upload stands whatever happens here: a failure is
- * returned as a sentence for the upload's notice.
+ * Records an upload into a known slot on the shelf of the robot kept under `key` (`panelShelfKey`): the one
+ * function every upload that stores a motion calls (Motions, and the Editor through it; the Class view per robot).
+ * Queued at once, before any await, so a check that a later free-memory reading starts comes after it.
  */
-export async function recordShelf(ctx: AppContext, stored: StoredUpload): Promise<string | undefined> {
-  const key = shelfKeyOf(ctx.store.get());
-  if (key === undefined) return undefined;
-  // Queued at once (before any await), so a check that the upload's free-memory reading starts comes after it.
-  const recorded = keeper(ctx).run(async (storage) =>
+export function recordOnRobotShelf(ctx: AppContext, key: string, stored: StoredUpload): Promise<RobotShelf> {
+  return keeper(ctx).run(async (storage) =>
     recordOnShelf(storage, key, {
       slot: stored.slot,
       name: stored.name,
@@ -174,6 +172,16 @@ export async function recordShelf(ctx: AppContext, stored: StoredUpload): Promis
       storedAt: new Date().toISOString(),
     }),
   );
+}
+
+/**
+ * Records an upload on the connected robot's shelf and shows it. The upload stands whatever happens here: a
+ * failure is returned as a sentence for the upload's notice.
+ */
+export async function recordShelf(ctx: AppContext, stored: StoredUpload): Promise<string | undefined> {
+  const key = shelfKeyOf(ctx.store.get());
+  if (key === undefined) return undefined;
+  const recorded = recordOnRobotShelf(ctx, key, stored);
   try {
     showShelf(ctx, key, await recorded, { notice: undefined });
     return undefined;
