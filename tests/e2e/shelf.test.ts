@@ -108,7 +108,7 @@ describe("the robot's shelf on the demo robot", () => {
     const dropped = page.getByTestId("shelf-dropped");
     await dropped.getByText(/^Forgotten: motion 12 \(RbcPanel_Wave\)/).waitFor();
     expect(await text(dropped)).toBe(
-      "Forgotten: motion 12 (RbcPanel_Wave). The robot's free memory (0 of 24,576 bytes in use) cannot hold them any more: its memory was reset, or another program uploaded to it.",
+      "Forgotten: motion 12 (RbcPanel_Wave). The robot's free memory (0 of 24,576 bytes in use) has no room for what was recorded: its memory was reset, or another program uploaded to it.",
     );
     await page.getByTestId("shelf-none").waitFor();
     expect(await demoMotionsHex(page)).toEqual([]);

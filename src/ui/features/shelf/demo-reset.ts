@@ -45,7 +45,7 @@ export function demoResetOffer(ctx: ViewContext): TemplateResult | typeof nothin
   const t = translator(shelfMessages, s.locale);
   const done = motionsOf(s).demoReset;
   return html`
-    <details class="demo-reset" data-testid="demo-reset">
+    <details class="memory-help demo-reset" data-testid="demo-reset">
       <summary>${t("shelf.demoResetTitle")}</summary>
       <p class="small">${t("shelf.demoResetAsk")}</p>
       <button type="button" class="btn" data-testid="demo-reset-confirm" @click=${() => void resetDemoRobot(ctx)}>

@@ -33,8 +33,8 @@ export const shelfMessages = defineMessages({
   },
   "shelf.plays": { en: "plays {duration}", ko: "재생 시간 {duration}" },
   "shelf.dropped": {
-    en: "Forgotten: {motions}. The robot's free memory ({used} of {size} bytes in use) cannot hold them any more: its memory was reset, or another program uploaded to it.",
-    ko: "기록에서 지웠어요: {motions}. 로봇의 남은 메모리({size}바이트 중 {used}바이트 사용)로는 더 이상 그 모션이 있을 수 없어요. 메모리가 초기화됐거나 다른 프로그램이 업로드했어요.",
+    en: "Forgotten: {motions}. The robot's free memory ({used} of {size} bytes in use) has no room for what was recorded: its memory was reset, or another program uploaded to it.",
+    ko: "기록에서 지웠어요: {motions}. 로봇의 남은 메모리({size}바이트 중 {used}바이트 사용)에는 기록된 모션이 들어갈 자리가 없어요. 메모리가 초기화됐거나 다른 프로그램이 업로드했어요.",
   },
   "shelf.droppedOne": { en: "motion {number} ({name})", ko: "모션 {number}번({name})" },
   "shelf.stored": {

@@ -60,8 +60,11 @@ function motionButton(
       @click=${() => pressRun(ctx, offer.number)}
     >
       <span class="motion-num num">${offer.number}</span>
-      <span class="motion-name name-text">${nameWithBreaks(offer.name)}</span>
-      ${offer.stored ? html`<span class="motion-key muted small" data-testid="motion-key">${remoteKeyWords(offer.number, t.locale)}</span>` : nothing}
+      <span class="motion-name name-text">${nameWithBreaks(offer.name)} ${
+        offer.stored
+          ? html`<span class="motion-key muted small" data-testid="motion-key">${remoteKeyWords(offer.number, t.locale)}</span>`
+          : nothing
+      }</span>
       <span class="motion-time num muted">${offer.expectedMs === undefined ? "?" : formatSeconds(offer.expectedMs, t.locale)}</span>
       ${recommended ? html`<span class="badge">${t("motions.run.runFirst")}</span>` : nothing}
     </button>

@@ -57,7 +57,6 @@ function uploadsCard(ctx: ViewContext, t: MotionsTranslator): TemplateResult {
     <section class="card" aria-labelledby="uploads-title" data-testid="uploads-card">
       <h2 id="uploads-title" class="card-title">${t("motions.upload.listTitle")}</h2>
       ${shelfList(ctx, downloadedOffers(ctx.state))} ${unnumbered(t, m.motionBook)}
-      ${demoResetOffer(ctx)}
       <details class="memory-help">
         <summary>${t("motions.upload.howCounted")}</summary>
         <p class="small">
@@ -70,6 +69,7 @@ function uploadsCard(ctx: ViewContext, t: MotionsTranslator): TemplateResult {
           })}
         </p>
       </details>
+      ${demoResetOffer(ctx)}
     </section>
   `;
 }
