@@ -142,6 +142,16 @@ export async function checkAgainst(ctx: AppContext, free: number): Promise<void>
             }),
           };
     showShelf(ctx, key, check.shelf, { checked: true, ...(notice ? { notice } : {}) });
+    if (check.dropped.length > 0) {
+      // Uploads of this connection into those slots are gone as well: the panel no longer offers them by name.
+      const lost = new Set(check.dropped.map((s) => s.slot));
+      patchMotions(ctx.store, (m) => ({
+        motionBook: {
+          ...m.motionBook,
+          entries: m.motionBook.entries.filter((e) => e.slot === undefined || !lost.has(e.slot)),
+        },
+      }));
+    }
   } catch {
     // As in loadShelf: without storage nothing is recorded, so nothing can be wrong.
   }
