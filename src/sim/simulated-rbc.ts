@@ -33,7 +33,8 @@ import {
  * through `onTransmit` listeners (one Uint8Array per reply or event). All timing follows the injected clock.
 
  * The decisions it makes where docs/protocol.md is silent are listed in `index.ts`. Over 400 lines: the request
- * dispatch is one switch that reads best whole; Run Motion's key handling is in `sim-run-keys.ts`.
+ * dispatch is one switch that reads best whole; Run Motion's key handling is in `sim-run-keys.ts`, what it keeps
+ * while the cable is out (`lastingMemory`, `restoreLastingMemory`) is checked in `sim-memory.ts`.
  */
 
 const ERROR_ZERO_SET = 7;
