@@ -67,6 +67,13 @@ export { BUILT_IN_KEYFRAMES, builtInPlayback } from "./sim-builtin-motions.ts";
 export type { DownloadProgress } from "./sim-downloader.ts";
 export type { StoredFile } from "./sim-downloads.ts";
 export {
+  checkLastingMemory,
+  type SimAreaMemory,
+  type SimLastingMemory,
+  type SimServoMemory,
+  servoBusFromMemory,
+} from "./sim-memory.ts";
+export {
   buildPlayback,
   imagePlayback,
   type PlaybackInput,
@@ -97,5 +104,10 @@ export {
 export { DEFAULT_SERVO_PARAMETERS } from "./sim-servo-parameters.ts";
 export type { ServoListener } from "./sim-servo-watch.ts";
 export { ServoBus, type ServoState } from "./sim-servos.ts";
-export type { SimulatedRbcOptions, SimulatedRbcState, SimulatedRbcStats } from "./sim-types.ts";
+export {
+  DEFAULT_SERIAL_NUMBER,
+  type SimulatedRbcOptions,
+  type SimulatedRbcState,
+  type SimulatedRbcStats,
+} from "./sim-types.ts";
 export { SimulatedRbc } from "./simulated-rbc.ts";

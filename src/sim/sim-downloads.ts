@@ -75,6 +75,14 @@ export class MemoryArea {
   fileInSlot(slot: number): StoredFile | undefined {
     return this.files[slot - 1];
   }
+
+  /** Puts back a memory taken earlier (`sim-memory.ts`, which checks it first): files, count, next address. */
+  restore(memory: { count: number; next: number; files: readonly StoredFile[] }): void {
+    this.files.length = 0;
+    this.files.push(...memory.files.map((f) => ({ ...f, bytes: f.bytes.slice() })));
+    this.count = memory.count;
+    this.next = memory.next;
+  }
 }
 
 export function createMotionArea(): MemoryArea {

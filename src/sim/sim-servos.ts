@@ -121,9 +121,12 @@ export class ServoBus {
   private decoder = new WckDecoder();
   /** Decoded servo-bus commands, for tests. */
   commandCount = 0;
+  /** The faults this bus was made with (checked). */
+  readonly faults: Required<ServoFaults>;
 
   constructor(faults?: ServoFaults) {
     const f = checkServoFaults(faults);
+    this.faults = f;
     this.joints = Array.from({ length: HUNO_SERVO_COUNT }, (_, joint) =>
       newServo(joint, f.loaded.includes(joint)),
     );
@@ -205,6 +208,28 @@ export class ServoBus {
 
   snapshot(): ServoState[] {
     return this.servos.map((s) => ({ ...s }));
+  }
+
+  /** Each joint's bus id (joints 0-15) and each extra servo's, as an id set left them. */
+  busIds(): { joints: number[]; extras: number[] } {
+    return { joints: this.joints.map((s) => s.state.busId), extras: this.extras.map((s) => s.state.busId) };
+  }
+
+  /**
+   * Gives the servos the bus ids they had (`busIds()` of an earlier bus with the same faults): each wCK keeps its
+   * id in its own EEPROM. False, and nothing changes, when the lists do not fit this bus or hold an id outside 0-30.
+   */
+  restoreBusIds(ids: { joints: readonly number[]; extras: readonly number[] }): boolean {
+    const ok = (list: readonly number[], length: number) =>
+      list.length === length && list.every((id) => Number.isInteger(id) && id >= 0 && id <= 30);
+    if (!ok(ids.joints, this.joints.length) || !ok(ids.extras, this.extras.length)) return false;
+    ids.joints.forEach((id, i) => {
+      this.joints[i]!.state.busId = id;
+    });
+    ids.extras.forEach((id, i) => {
+      this.extras[i]!.state.busId = id;
+    });
+    return true;
   }
 
   /** The extra servos a fault put on the bus (a duplicate id), as copies. */

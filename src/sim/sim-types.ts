@@ -106,9 +106,12 @@ export interface SimulatedRbcState {
   stats: SimulatedRbcStats;
 }
 
+/** The serial number a simulated RBC reports unless given another (the demo robot's). */
+export const DEFAULT_SERIAL_NUMBER = "8958899989309";
+
 /** The options with their defaults, checked. */
 export function resolveOptions(options: SimulatedRbcOptions) {
-  const serialNumber = options.serialNumber ?? "8958899989309";
+  const serialNumber = options.serialNumber ?? DEFAULT_SERIAL_NUMBER;
   if (!/^[\x20-\x7e]{13}$/.test(serialNumber)) {
     throw new RangeError(`The serial number must be 13 printable ASCII characters, got "${serialNumber}".`);
   }

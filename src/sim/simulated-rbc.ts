@@ -6,6 +6,7 @@ import { isAcceptedZeroTable } from "../protocol/zeros.ts";
 import type { Clock, TimerId } from "../shared/clock.ts";
 import { SimDownloader } from "./sim-downloader.ts";
 import type { StoredFile } from "./sim-downloads.ts";
+import { areaMemory, checkLastingMemory, type SimLastingMemory } from "./sim-memory.ts";
 import { SimPlayer } from "./sim-player.ts";
 import { type DropReason, type ReceiverHandler, SimReceiver } from "./sim-receiver.ts";
 import { SimRunKeys } from "./sim-run-keys.ts";
@@ -32,7 +33,8 @@ import {
  * through `onTransmit` listeners (one Uint8Array per reply or event). All timing follows the injected clock.
 
  * The decisions it makes where docs/protocol.md is silent are listed in `index.ts`. Over 400 lines: the request
- * dispatch is one switch that reads best whole; Run Motion's key handling is in `sim-run-keys.ts`.
+ * dispatch is one switch that reads best whole; Run Motion's key handling is in `sim-run-keys.ts`, what it keeps
+ * while the cable is out (`lastingMemory`, `restoreLastingMemory`) is checked in `sim-memory.ts`.
  */
 
 const ERROR_ZERO_SET = 7;
@@ -279,6 +281,58 @@ export class SimulatedRbc {
   setFirmwareVersion(version: { major: number; minor: number }): void {
     this.firmware.major = version.major;
     this.firmware.minor = version.minor;
+  }
+
+  /**
+   * What this robot keeps while its cable is out (`sim-memory.ts`): zeros and downloaded files (EEPROM), the
+   * memory counts and whether Basic posture has run (it stays switched on), its servos' bus ids and faults.
+   * Copies: later requests do not change it.
+   */
+  lastingMemory(): SimLastingMemory {
+    const ids = this.servoBus.busIds();
+    const f = this.servoBus.faults;
+    return {
+      format: "rbc-sim-memory",
+      version: 1,
+      serialNumber: this.serialNumber,
+      zeros: this.zeros,
+      basicPostureDone: this.postureDone,
+      motion: areaMemory(this.downloader.motionArea),
+      action: areaMemory(this.downloader.actionArea),
+      servos: {
+        faults: {
+          missing: [...f.missing],
+          duplicate: [...f.duplicate],
+          replacement: [...f.replacement],
+          loaded: [...f.loaded],
+        },
+        busIds: ids.joints,
+        extraBusIds: ids.extras,
+      },
+    };
+  }
+
+  /**
+   * Puts back a memory taken with `lastingMemory()` (e.g. on another page load), as if the cable had only been
+   * out: zeros, files, counts and Basic posture; the servos' bus ids when this robot's servo bus has the same
+   * faults (the caller makes the bus: `servoBusFromMemory`). Anything that is not this robot's memory throws a
+   * RangeError saying what is wrong, and nothing changes. Call it before the first byte arrives.
+   */
+  restoreLastingMemory(value: unknown): void {
+    const { motionArea: motion, actionArea: action } = this.downloader;
+    const memory = checkLastingMemory(value, { motion, action });
+    if (memory.serialNumber !== this.serialNumber) {
+      throw new RangeError(
+        `This memory belongs to robot ${memory.serialNumber}, not ${this.serialNumber}. Nothing was restored.`,
+      );
+    }
+    this.zeroTable = [...memory.zeros];
+    this.postureDone = memory.basicPostureDone;
+    this.downloader.motionArea.restore(memory.motion);
+    this.downloader.actionArea.restore(memory.action);
+    if (JSON.stringify(this.servoBus.faults) === JSON.stringify(memory.servos.faults)) {
+      this.servoBus.restoreBusIds({ joints: memory.servos.busIds, extras: memory.servos.extraBusIds });
+    }
   }
 
   /** Power off and on: volatile state resets; zeros and downloaded files (EEPROM) persist. */

@@ -5,7 +5,7 @@ import type { ServoBus } from "../sim/sim-servos.ts";
 import type { SimulatedRbc } from "../sim/simulated-rbc.ts";
 import { type AppState, freshConnectionState, noticeOf } from "./app-state.ts";
 import type { AppContext } from "./context.ts";
-import type { DemoRobotOptions } from "./demo-robot.ts";
+import type { DemoRobotOptions, KeptDemoRobot } from "./demo-robot.ts";
 import { busyChanged, probeAfterConnect, refreshKnownPorts } from "./features/connection/actions.ts";
 import {
   type ConnectionState,
@@ -113,6 +113,8 @@ export class Session {
    * check replaces them with servos carrying a fault and connects the demo robot again (a restart).
    */
   demoServos: ServoBus | undefined;
+  /** The demo robot of the last connection: the next one starts with its memory (issue 23 item 2). */
+  demoRobot: KeptDemoRobot | undefined;
 
   /** Opens the chooser and connects to the chosen port. Call it straight from the click handler. */
   chooseAndConnect(): void {
@@ -172,13 +174,15 @@ export class Session {
     const robot = options.bluetooth ? DEMO_BLUETOOTH_ROBOT : DEMO_ROBOT;
     this.setConnection({ phase: "connecting", robot, problem: undefined, lostReason: undefined });
     try {
-      const { createDemoRobot } = await import("./demo-robot.ts");
-      const demo = createDemoRobot({
+      const { openDemoRobot } = await import("./demo-robot.ts");
+      const demo = await openDemoRobot({
         ...this.options.demo,
         bluetooth: options.bluetooth,
         servoBus: this.demoServos,
+        previous: this.demoRobot,
       });
       this.demoServos = demo.servoBus;
+      this.demoRobot = demo;
       return await this.connectPort(demo.port, robot, demo);
     } catch (e) {
       const { failureNotice } = await failureWords();

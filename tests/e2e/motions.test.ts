@@ -118,7 +118,9 @@ describe("motions view", () => {
     const text = await result.textContent().then(squash);
     expect(text).toMatch(/624 bytes in 10 chunks/);
     expect(text).toMatch(/bytes\/s/);
-    expect(text).toContain("It is downloaded motion 1: run it as motion number 12");
+    // One number: the one Run takes, with the remote key that plays it (issue 23 item 2).
+    expect(text).toContain("Stored as motion 12 (key 1): Run takes this number.");
+    expect(text).not.toContain("downloaded motion 1");
     expect(text).toContain("Free motion memory: 23,936 of 24,576 bytes (was 24,576");
     expect(text).toContain("Error code after the upload: no error");
     expect(text).toContain("held or lying down");
@@ -137,13 +139,13 @@ describe("motions view", () => {
       "640 of 24,576 bytes used",
     );
     expect(await page.getByTestId("mem-motion-count").textContent().then(squash)).toMatch(/^1 of 20 motions/);
-    expect(await page.getByTestId("uploaded-list").textContent().then(squash)).toContain(
-      "slot 1 → motion number 12",
-    );
+    expect(
+      await page.locator('[data-testid="shelf-entry"][data-motion="12"]').textContent().then(squash),
+    ).toMatch(/^12 RbcPanel_Wave remote: key 1 · plays 3\.2 s /);
     // Run offers it by name and length.
     await showTab(page, "Run");
     const download = page.locator('[data-testid="downloaded-motions"] [data-motion="12"]');
-    expect(await download.textContent().then(squash)).toBe("12 RbcPanel_Wave 3.2 s");
+    expect(await download.textContent().then(squash)).toBe("12 RbcPanel_Wave key 1 3.2 s");
     await page.getByRole("link", { name: "Robot" }).click();
     expect(await page.getByTestId("memory-motion-text").textContent().then(squash)).toMatch(
       /640 of 24,576 bytes used|23,936 of 24,576 bytes free/,
@@ -322,8 +324,8 @@ describe("motions view", () => {
     await cards.nth(1).getByTestId("upload-motion").click();
     await page.getByText(/^Uploaded bow\.rbm/).waitFor();
     await showTab(page, "Memory");
-    expect(await page.getByTestId("uploaded-list").textContent().then(squash)).toMatch(
-      /RbcPanel_Wave wave\.rbm — slot 1 → motion number 12.*RbcPanel_Bow bow\.rbm — slot 2 → motion number 13/,
+    expect(await page.getByTestId("shelf-list").textContent().then(squash)).toMatch(
+      /^12 RbcPanel_Wave remote: key 1 · plays 3\.2 s .* 13 RbcPanel_Bow remote: key 2 · plays /,
     );
     await showTab(page, "Files");
     await page.getByTestId("reset-first").check();
@@ -334,8 +336,8 @@ describe("motions view", () => {
       "24,064 of 24,576 bytes free",
     );
     await showTab(page, "Memory");
-    const list = await page.getByTestId("uploaded-list").textContent().then(squash);
-    expect(list).toContain("RbcPanel_Bow bow.rbm — slot 1 → motion number 12");
+    const list = await page.getByTestId("shelf-list").textContent().then(squash);
+    expect(list).toMatch(/^12 RbcPanel_Bow remote: key 1 · /);
     expect(list).not.toContain("RbcPanel_Wave");
 
     // An action file goes up byte for byte, with the format called unverified; its result shows beside it.
@@ -506,9 +508,7 @@ describe("in Korean (ko-KR)", () => {
         expect(sentence).toMatch(
           /^wave\.rbm을\(를\) 업로드했어요\. 624바이트를 조각 \d+개로 [\d.]+초 동안 보냈고 \([\d,]+바이트\/초\), 로봇이 모든 조각을 받았다고 확인했어요\./,
         );
-        expect(sentence).toContain(
-          "다운로드된 모션 1번이에요. 실행 탭에서 모션 번호 12번으로 실행할 수 있어요.",
-        );
+        expect(sentence).toContain("모션 12번(1 키)으로 저장했어요. 실행할 때 이 번호를 써요.");
         expect(sentence).toContain("남은 모션 메모리: 24,576바이트 중 23,936바이트 (전에는 24,576바이트");
         expect(sentence).toContain("업로드 후 오류 코드: 오류 없음.");
         await expectGood(page, "uploaded", viewport);
@@ -532,8 +532,8 @@ describe("in Korean (ko-KR)", () => {
         expect(await text(page.getByTestId("mem-motion-count"))).toBe(
           "마지막 초기화나 전원을 켠 뒤로 모션 20개 중 1개 저장됨",
         );
-        expect(await text(page.getByTestId("uploaded-list"))).toBe(
-          "RbcPanel_Wave wave.rbm — 슬롯 1 → 모션 번호 12, 재생 시간 3.2초",
+        expect(await text(page.locator('[data-testid="shelf-entry"][data-motion="12"]'))).toBe(
+          "12 RbcPanel_Wave 리모컨: 1 키 · 재생 시간 3.2초 방금 업로드했고, 로봇의 메모리 계산에서 저장된 게 확인됐어요 지금 실행",
         );
         expect(await text(page.getByTestId("uploads-card").locator("summary"))).toBe("메모리를 세는 방법");
         await page.getByTestId("action-file").setInputFiles({
@@ -558,10 +558,10 @@ describe("in Korean (ko-KR)", () => {
           "로봇을 켠 뒤에는 기본 자세(7)만 받아들여요. 먼저 기본 자세를 실행해 주세요. 그 전까지는 다른 모션을 모두 아무 말 없이 무시해요.",
         );
         expect(await text(run.locator('[data-motion="7"]'))).toBe("7 기본 자세 1.8초 먼저 실행");
-        expect(await text(run.locator('[data-motion="12"]'))).toBe("12 RbcPanel_Wave 3.2초");
+        expect(await text(run.locator('[data-motion="12"]'))).toBe("12 RbcPanel_Wave 1 키 3.2초");
         await run.getByText("다른 다운로드 슬롯 (19)").click();
-        // The slot button shows its number; a screen reader hears "모션 13번 실행" and its slot.
-        await run.getByRole("button", { name: /^모션 13\s?번 실행 슬롯 2$/ }).waitFor();
+        // The slot button shows its number and key; a screen reader hears "모션 13번 실행" and the key.
+        await run.getByRole("button", { name: /^모션 13\s?번 실행 2 키$/ }).waitFor();
         await run.locator('[data-motion="7"]').click();
         const ask = page.getByTestId("move-confirm");
         expect(await text(ask)).toBe(

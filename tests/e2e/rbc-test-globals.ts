@@ -78,6 +78,8 @@ declare global {
     __rbcTestOptions?: RbcTestOptions;
     /** The demo robot's simulator ("Try the demo robot"), set by src/ui/demo-robot.ts in browser tests only. */
     __rbcDemoSim?: SimulatedRbc;
+    /** How many times the demo robot's memory was saved in this browser (src/ui/demo-robot.ts, tests only). */
+    __rbcDemoSaves?: number;
     /** CSP violations seen by the page (recorded by an init script). */
     __cspViolations?: string[];
   }

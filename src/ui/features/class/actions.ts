@@ -6,6 +6,7 @@ import { said } from "../../said.ts";
 import { choosePort, describePort, webSerial } from "../../serial-ports.ts";
 import { escapeTakenElsewhere } from "../../shell/escape.ts";
 import { refreshKnownPorts } from "../connection/actions.ts";
+import { recordOnRobotShelf } from "../shelf/shelf-actions.ts";
 import { idbBackupStorage } from "../zeros/backup-store.ts";
 import { ClassRoom } from "./class-room.ts";
 import { testClock } from "./demo-robots.ts";
@@ -34,6 +35,7 @@ export function classRoom(ctx: AppContext): ClassRoom {
     names: idbNameStorage,
     backups: idbBackupStorage,
     now: () => performance.now(),
+    shelf: (key, stored) => recordOnRobotShelf(ctx, key, stored),
   });
   slot.room = room;
   void room.loadKept();

@@ -7,6 +7,8 @@ import { createRbcClient } from "../../robot-link.ts";
 import { said } from "../../said.ts";
 import type { Controller } from "../../scope.ts";
 import type { Store } from "../../store.ts";
+import type { StoredUpload } from "../shelf/shelf-actions.ts";
+import { panelShelfKey } from "../shelf/shelf-store.ts";
 import type { BackupStorage } from "../zeros/backup-store.ts";
 import { keptBackups } from "../zeros/backup-store.ts";
 import { type ClassDemoRobot, createClassDemo } from "./demo-robots.ts";
@@ -46,6 +48,8 @@ export interface ClassRoomOptions {
   now: () => number;
   /** Told of every demo robot made (tests pull its cable). */
   onDemo?: (demo: ClassDemoRobot) => void;
+  /** Records a motion stored into a known slot on the robot's shelf (issue 23 item 2; `recordOnRobotShelf`). */
+  shelf?: (key: string, stored: StoredUpload) => Promise<unknown>;
 }
 
 export class ClassRoom implements Controller {
@@ -228,6 +232,18 @@ export class ClassRoom implements Controller {
     } catch {
       // Kept for this page; the browser refused to keep it longer (private window, storage full).
     }
+  }
+
+  /**
+   * A motion stored into download slot `stored.slot` of robot `id`: recorded on that robot's shelf (by serial
+   * number, else by port). The upload stands whatever happens here.
+   */
+  async recordOnShelf(id: number, stored: StoredUpload): Promise<void> {
+    const robot = classOf(this.store.get()).robots.find((r) => r.id === id);
+    if (!robot || !this.options.shelf) return;
+    await this.options
+      .shelf(panelShelfKey(robot.serialNumber, { name: robot.portLabel }), stored)
+      .catch(() => {});
   }
 
   /** Uploads the checked pack to every chosen robot at once; each robot's result in its row. */

@@ -1,4 +1,6 @@
 import type { FileUploadResult } from "../../../device/motion-upload.ts";
+import { motionImage } from "../../../protocol/motion-image.ts";
+import { motionDurationMs } from "../../../protocol/rbm.ts";
 import type { ClassRoom, RobotLink } from "./class-room.ts";
 import type { PackCheck } from "./pack-check.ts";
 import { type PackOutcome, uploadResultNotice } from "./result-words.ts";
@@ -52,6 +54,14 @@ export async function uploadPackTo(room: ClassRoom, link: RobotLink, check: Pack
             ),
         });
         stored.push({ fileName: f.file.fileName, number: f.number, result });
+        // File k went into slot k (the first upload reset the memory): the robot's shelf records it.
+        await room.recordOnShelf(id, {
+          slot: i + 1,
+          name: motion.name,
+          image: motionImage(motion),
+          durationMs: motionDurationMs(motion),
+          footprint: result.footprint,
+        });
       } catch (e) {
         failure = { fileName: f.file.fileName, error: e };
         break;

@@ -1,6 +1,7 @@
 import { ACTION_AREA_BYTES, MOTION_AREA_BYTES } from "../../../protocol/catalog.ts";
 import type { AppContext } from "../../context.ts";
 import { refreshDeviceInfo } from "../robot/actions.ts";
+import { loadShelf } from "../shelf/shelf-actions.ts";
 import { observeFreeMemory } from "./slot-book.ts";
 import { type MotionsState, motionsOf, patchMotions } from "./state.ts";
 
@@ -22,9 +23,13 @@ export function syncBooksWithMemory(ctx: AppContext): void {
   }
 }
 
-/** The Motions view is shown: know the robot's free memory (read it if the device card has not) and use it. */
+/**
+ * The Motions view is shown: load the robot's shelf (checked against every free-memory reading from now on), know
+ * the robot's free memory (read it if the device card has not) and use it.
+ */
 export async function showMemory(ctx: AppContext): Promise<void> {
   const { store } = ctx;
+  void loadShelf(ctx);
   if (store.get().device.loading) {
     // The device card is reading the memory right now: use its figures when they arrive.
     const stop = store.subscribe((s) => {

@@ -254,12 +254,8 @@ export const motionsMessages = defineMessages({
     ko: "먼저 모션 메모리 초기화 (이전 다운로드를 지우고, 이번 업로드가 모션 12번이 돼요)",
   },
 
-  "motions.upload.listTitle": { en: "Uploaded motions", ko: "업로드한 모션" },
-  "motions.upload.none": {
-    en: "Nothing uploaded in this connection yet. Upload motion files from the Files tab; they appear here and on the Run tab with their motion numbers.",
-    ko: "이번 연결에서 아직 업로드한 것이 없어요. 파일 탭에서 모션 파일을 업로드하면 여기와 실행 탭에 모션 번호와 함께 나타나요.",
-  },
-  "motions.upload.slotPlays": { en: "{slot}, plays {duration}", ko: "{slot}, 재생 시간 {duration}" },
+  "motions.upload.listTitle": { en: "Motions stored on this robot", ko: "이 로봇에 저장된 모션" },
+  "motions.upload.actionSlot": { en: "action {slot}", ko: "액션 {slot}" },
   "motions.upload.howCounted": { en: "How the memory is counted", ko: "메모리를 세는 방법" },
   "motions.upload.howCountedText": {
     en: "The robot keeps up to {motions} downloaded motions ({motionBytes} bytes) and {actions} actions ({actionBytes} bytes). Each file starts on a {block}-byte block, so it takes its size rounded up to the next block (a size that is already a multiple of {block} takes one block more).",
@@ -274,14 +270,9 @@ export const motionsMessages = defineMessages({
   },
   "motions.upload.uploadAction": { en: "Upload action file", ko: "액션 파일 업로드" },
   "motions.upload.slotUnknown": {
-    en: "slot unknown (the robot held other downloads)",
-    ko: "슬롯 알 수 없음 (로봇에 다른 다운로드가 있었음)",
+    en: "number not known (the robot held other downloads)",
+    ko: "번호 알 수 없음 (로봇에 다른 다운로드가 있었음)",
   },
-  "motions.upload.slot": {
-    en: "slot {slot} → motion number {number}",
-    ko: "슬롯 {slot} → 모션 번호 {number}",
-  },
-
   "motions.upload.rateUnknown": { en: "— bytes/s", ko: "— 바이트/초" },
   "motions.upload.rate": { en: "{rate} bytes/s", ko: "{rate}바이트/초" },
   "motions.upload.estimating": { en: "time left: estimating…", ko: "남은 시간: 계산 중…" },
@@ -369,10 +360,6 @@ export const motionsMessages = defineMessages({
     ko: "{file}을(를) 업로드했어요. {bytes}바이트를 조각 {chunks}개로 {time} 동안 보냈고 ({rate}), 로봇이 모든 조각을 받았다고 확인했어요.",
   },
   "motions.upload.isAction": { en: "It is downloaded action {slot}.", ko: "다운로드된 액션 {slot}번이에요." },
-  "motions.upload.isMotion": {
-    en: "It is downloaded motion {slot}: run it as motion number {number} (on the Run tab).",
-    ko: "다운로드된 모션 {slot}번이에요. 실행 탭에서 모션 번호 {number}번으로 실행할 수 있어요.",
-  },
   "motions.upload.numberUnknown": {
     en: "The robot already held downloads the panel did not see arrive, so its motion number is not known; tick “Reset motion memory first” next time to know it.",
     ko: "로봇에 패널이 모르는 다운로드가 이미 있어서 이 모션의 번호를 알 수 없어요. 번호를 알려면 다음에는 “먼저 모션 메모리 초기화”를 선택해 주세요.",
@@ -439,7 +426,10 @@ export const motionsMessages = defineMessages({
     en: "Limp, in the top bar, makes every servo passive: hold the robot first.",
     ko: "상단 바의 힘 빼기를 누르면 모든 서보의 힘이 빠져요. 먼저 로봇을 잡아 주세요.",
   },
-  "motions.run.downloadSlot": { en: "Download slot {slot}", ko: "다운로드 슬롯 {slot}" },
+  "motions.run.downloadSlot": {
+    en: "a motion not uploaded from this browser, {key}",
+    ko: "이 브라우저에서 업로드하지 않은 모션, {key}",
+  },
 
   "motions.run.task": { en: "Running motion {number}", ko: "모션 {number}번 실행" },
   "motions.run.stopTask": { en: "Stopping the motion", ko: "모션 멈추기" },
@@ -518,10 +508,9 @@ export const motionsMessages = defineMessages({
   "motions.run.resultLabel": { en: "Motion result", ko: "모션 결과" },
   "motions.run.otherSlots": { en: "Other download slots ({slots})", ko: "다른 다운로드 슬롯 ({slots})" },
   "motions.run.otherSlotsText": {
-    en: "Motions downloaded before this connection, e.g. with Motionbuilder: the panel does not know their names or lengths. The robot ignores the number of an empty slot.",
-    ko: "이번 연결 전에 (예를 들어 Motionbuilder로) 다운로드한 모션이에요. 패널은 이름이나 길이를 몰라요. 빈 슬롯의 번호는 로봇이 무시해요.",
+    en: "Numbers of motions this browser has no record of (downloaded e.g. with Motionbuilder): the panel does not know their names or lengths. The robot ignores the number of an empty slot.",
+    ko: "이 브라우저에 기록이 없는 모션의 번호예요(예를 들어 Motionbuilder로 다운로드한 모션). 패널은 이름이나 길이를 몰라요. 빈 슬롯의 번호는 로봇이 무시해요.",
   },
-  "motions.run.slot": { en: "slot {slot}", ko: "슬롯 {slot}" },
   "motions.run.textVersion": {
     en: "the Servos view lists the positions in numbers",
     ko: "서보 화면에 위치가 숫자로 나와요",

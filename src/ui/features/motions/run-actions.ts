@@ -14,10 +14,11 @@ import type { AppState, Notice } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { errorMessage, errorNotice, technicalDetail } from "../../error-text.ts";
 import { focusSoon } from "../../focus.ts";
+import { remoteKeyWords } from "../shelf/shelf-words.ts";
 import { type MotionRun, motionsController } from "./controllers.ts";
 import { type MotionsTranslator, motionsMessages } from "./messages.ts";
 import { formatSeconds } from "./plot-data.ts";
-import { motionNumberOf, type SlotBook } from "./slot-book.ts";
+import { type BookEntry, motionNumberOf } from "./slot-book.ts";
 import { motionsOf, patchMotions, robotBusyReason } from "./state.ts";
 
 /** Running motions and sounds (docs/protocol.md §3.1, §3.3), with the 7-first rule and the movement warning. */
@@ -27,8 +28,14 @@ export interface OfferedMotion {
   name: string;
   /** Known playback time; undefined for a download slot the panel did not fill. */
   expectedMs?: number;
-  /** Set for downloads: "slot 1". */
+  /** Set for downloads: the download slot (never shown: the panel shows the number Run takes). */
   slot?: number;
+  /**
+   * For downloads the panel knows: `now`, uploaded on this connection (the robot's memory accounting showed
+   * it stored); `recorded`, on the shelf from an earlier upload (`checked`: the robot's free memory read on this
+   * connection still has room for it; never more than "may still be there").
+   */
+  stored?: { kind: "now" } | { kind: "recorded"; at: string; checked: boolean };
 }
 
 /** The built-in motions (Run Motion 1-11) with their names in the panel's language. */
@@ -44,14 +51,38 @@ export function isBuiltIn(number: number): boolean {
   return BUILT_IN_MOTIONS.some((m) => m.number === number);
 }
 
-/** Motions uploaded in this connection whose slot (so Run Motion number) is known. */
-export function downloadedOffers(book: SlotBook): OfferedMotion[] {
-  const out: OfferedMotion[] = [];
-  for (const e of book.entries) {
-    const number = motionNumberOf(e);
-    if (number !== undefined) out.push({ number, name: e.name, expectedMs: e.durationMs, slot: e.slot });
+/**
+ * The downloaded motions the panel knows by number: those on the robot's shelf (issue 23 item 2: recorded by
+ * this browser, names and durations kept across connections) and those uploaded on this connection into a
+ * known slot (which win: the robot's memory accounting showed them stored).
+ */
+export function downloadedOffers(s: AppState): OfferedMotion[] {
+  const m = motionsOf(s);
+  const byNumber = new Map<number, OfferedMotion>();
+  const shelf = m.shelf;
+  for (const r of shelf?.slots ?? []) {
+    byNumber.set(r.motionNumber, {
+      number: r.motionNumber,
+      name: r.name,
+      expectedMs: r.durationMs,
+      slot: r.slot,
+      stored: { kind: "recorded", at: r.storedAt, checked: shelf?.checked === true },
+    });
   }
-  return out.sort((a, b) => a.number - b.number);
+  for (const e of m.motionBook.entries) addBookEntry(byNumber, e);
+  return [...byNumber.values()].sort((a, b) => a.number - b.number);
+}
+
+function addBookEntry(byNumber: Map<number, OfferedMotion>, e: BookEntry): void {
+  const number = motionNumberOf(e);
+  if (number === undefined) return;
+  byNumber.set(number, {
+    number,
+    name: e.name,
+    expectedMs: e.durationMs,
+    slot: e.slot,
+    stored: { kind: "now" },
+  });
 }
 
 /**
@@ -62,13 +93,15 @@ export function offerFor(s: AppState, number: number): OfferedMotion | undefined
   if (!isOfferedMotionNumber(number)) return undefined;
   const known =
     builtInOffers(s.locale).find((m) => m.number === number) ??
-    downloadedOffers(motionsOf(s).motionBook).find((m) => m.number === number);
+    downloadedOffers(s).find((m) => m.number === number);
   if (known) return known;
   const slot = downloadSlotOf(number);
   if (slot === undefined) return undefined;
   return {
     number,
-    name: translator(motionsMessages, s.locale)("motions.run.downloadSlot", { slot }),
+    name: translator(motionsMessages, s.locale)("motions.run.downloadSlot", {
+      key: remoteKeyWords(number, s.locale),
+    }),
     slot,
   };
 }

@@ -1,7 +1,4 @@
-import type { Locale } from "../../../i18n/locale.ts";
-import { translator } from "../../../i18n/translate.ts";
 import { downloadedMotionNumber, MAX_ACTIONS, MAX_MOTIONS } from "../../../protocol/catalog.ts";
-import { motionsMessages } from "./messages.ts";
 
 /**
  * Which download slot each upload of this connection went into (docs/protocol.md §6.1, §3.1). The RBC records
@@ -69,15 +66,6 @@ export function slotsLeft(book: SlotBook): number | undefined {
 /** Run Motion number of a motion upload, when its slot is known. */
 export function motionNumberOf(entry: BookEntry): number | undefined {
   return entry.slot === undefined ? undefined : downloadedMotionNumber(entry.slot);
-}
-
-/** "slot 1 → motion number 12", or why the number is not known (in the panel's language). */
-export function slotLabel(entry: BookEntry, locale: Locale = "en"): string {
-  const t = translator(motionsMessages, locale);
-  const n = motionNumberOf(entry);
-  return n === undefined || entry.slot === undefined
-    ? t("motions.upload.slotUnknown")
-    : t("motions.upload.slot", { slot: entry.slot, number: n });
 }
 
 /** The Run Motion numbers of download slots 1-20: 12-21 and 33-42. */

@@ -3,6 +3,7 @@ import type { RbmMotion } from "../../../protocol/rbm.ts";
 import type { RbmIssue } from "../../../protocol/rbm-validate.ts";
 import type { AppState, Notice } from "../../app-state.ts";
 import type { Store } from "../../store.ts";
+import type { ShelfState } from "../shelf/shelf-state.ts";
 import { motionsMessages } from "./messages.ts";
 import { emptyBook, type SlotBook } from "./slot-book.ts";
 import type { ProgressSample } from "./upload-rate.ts";
@@ -103,10 +104,16 @@ export interface MotionsState {
   confirming?: UploadTarget;
   upload?: UploadRun;
   uploadResult?: Notice;
+  /** The number Run takes for the motion whose upload `uploadResult` tells ("Run now" beside it). */
+  uploadStored?: number;
   /** Where the last upload was started, so its result shows there (the file card or the action files). */
   resultFor?: UploadTarget;
   motionBook: SlotBook;
   actionBook: SlotBook;
+  /** "Reset the demo robot" connected it again as new: what became of it. */
+  demoReset?: Notice;
+  /** The robot's shelf: what this browser recorded uploading to this robot (issue 23 item 2). */
+  shelf?: ShelfState;
   run?: RunningMotion;
   /** A motion waiting for the once-per-connection "the robot will move" confirmation. */
   confirmMove?: number;

@@ -163,6 +163,7 @@ export async function startUpload(ctx: AppContext, target: UploadTarget): Promis
   patchMotions(store, {
     confirming: undefined,
     uploadResult: undefined,
+    uploadStored: undefined,
     resultFor: target,
     upload: {
       target,

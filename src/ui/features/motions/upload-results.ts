@@ -14,6 +14,8 @@ import type { RbmMotion } from "../../../protocol/rbm.ts";
 import type { Notice } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { errorMessage, errorNotice, technicalDetail } from "../../error-text.ts";
+import { recordShelf } from "../shelf/shelf-actions.ts";
+import { storedSentence } from "../shelf/shelf-words.ts";
 import { motionsMessages } from "./messages.ts";
 import { formatSeconds } from "./plot-data.ts";
 import {
@@ -54,12 +56,17 @@ function errorCodeWords(code: number | undefined, locale: Locale): string {
   return t("motions.upload.errorCode", { text: robotErrorText(code, locale), code: String(code) });
 }
 
-export function uploadSucceeded(
+/**
+ * A completed upload: its slot (known when the robot's memory was empty or reset before it, docs/protocol.md
+ * §6.1), the robot's shelf (issue 23 item 2: a motion into a known slot is recorded, before the free memory read
+ * after it is shown, so the check that reading starts sees the new record), and the result in sentences.
+ */
+export async function uploadSucceeded(
   ctx: AppContext,
   payload: Payload,
   result: UploadResult,
   real: boolean,
-): BookEntry | undefined {
+): Promise<BookEntry | undefined> {
   const { store } = ctx;
   const { area } = payload;
   const { locale } = store.get();
@@ -70,7 +77,8 @@ export function uploadSucceeded(
   const sendMs =
     sendingSince !== undefined && lastSample ? Math.max(1, lastSample.t - sendingSince) : result.elapsedMs;
   const rate = (result.total / sendMs) * 1000;
-  let book: SlotBook = m[bookKey(area)];
+  // The free memory read just before the download: a whole free area means it went into slot 1.
+  let book: SlotBook = observeFreeMemory(m[bookKey(area)], result.freeBefore, areaBytes(area));
   book = afterUpload(book, {
     name: payload.name,
     fileName: payload.fileName,
@@ -79,13 +87,23 @@ export function uploadSucceeded(
   });
   const entry = book.entries.at(-1);
   const number = area === "motion" && entry ? motionNumberOf(entry) : undefined;
+  const recorded =
+    area === "motion" && entry?.slot !== undefined && payload.durationMs !== undefined
+      ? recordShelf(ctx, {
+          slot: entry.slot,
+          name: payload.name,
+          image: payload.bytes,
+          durationMs: payload.durationMs,
+          footprint: result.footprint,
+        })
+      : Promise.resolve(undefined);
   const where =
     area === "action"
       ? entry?.slot !== undefined
         ? t("motions.upload.isAction", { slot: entry.slot })
         : ""
-      : number !== undefined && entry?.slot !== undefined
-        ? t("motions.upload.isMotion", { slot: entry.slot, number })
+      : number !== undefined
+        ? storedSentence(number, locale)
         : t("motions.upload.numberUnknown");
   const free =
     result.freeAfter === undefined
@@ -127,7 +145,20 @@ export function uploadSucceeded(
       readAt: Date.now(),
     },
   }));
-  patchMotions(store, { upload: undefined, uploadResult: notice, [bookKey(area)]: book });
+  patchMotions(store, {
+    upload: undefined,
+    uploadResult: notice,
+    uploadStored: number,
+    [bookKey(area)]: book,
+  });
+  const notRecorded = await recorded;
+  if (notRecorded) {
+    patchMotions(store, (now) =>
+      now.uploadResult === notice
+        ? { uploadResult: { ...notice, tone: "warning", text: `${notice.text} ${notRecorded}` } }
+        : {},
+    );
+  }
   return entry;
 }
 
@@ -174,6 +205,7 @@ export async function uploadFailed(
   patchMotions(store, (m) => ({
     upload: undefined,
     uploadResult: notice,
+    uploadStored: undefined,
     [bookKey(area)]: afterFailedUpload(m[bookKey(area)], outcome),
   }));
   if (e instanceof RbcDisconnectedError || store.get().connection.phase !== "connected") return;

@@ -9,6 +9,8 @@ import { nameWithBreaks } from "../../../shell/name-breaks.ts";
 import { liveNotice } from "../../../shell/notice.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
 import { servosOf } from "../../servos/state.ts";
+import { shelfDropNotice, shelfRecordedNote } from "../../shelf/shelf-list.ts";
+import { remoteKeyWords } from "../../shelf/shelf-words.ts";
 import { type MotionsTranslator, motionsMessages } from "../messages.ts";
 import { formatSeconds } from "../plot-data.ts";
 import {
@@ -37,7 +39,7 @@ type Group = "built-in" | "downloaded" | "slots";
 
 function groupOf(s: AppState, number: number): Group {
   if (isBuiltIn(number)) return "built-in";
-  if (downloadedOffers(motionsOf(s).motionBook).some((o) => o.number === number)) return "downloaded";
+  if (downloadedOffers(s).some((o) => o.number === number)) return "downloaded";
   return "slots";
 }
 
@@ -58,7 +60,11 @@ function motionButton(
       @click=${() => pressRun(ctx, offer.number)}
     >
       <span class="motion-num num">${offer.number}</span>
-      <span class="motion-name name-text">${nameWithBreaks(offer.name)}</span>
+      <span class="motion-name name-text">${nameWithBreaks(offer.name)} ${
+        offer.stored
+          ? html`<span class="motion-key muted small" data-testid="motion-key">${remoteKeyWords(offer.number, t.locale)}</span>`
+          : nothing
+      }</span>
       <span class="motion-time num muted">${offer.expectedMs === undefined ? "?" : formatSeconds(offer.expectedMs, t.locale)}</span>
       ${recommended ? html`<span class="badge">${t("motions.run.runFirst")}</span>` : nothing}
     </button>
@@ -155,7 +161,7 @@ function runInPlace(ctx: ViewContext, t: MotionsTranslator, group: Group): Templ
 }
 
 function otherSlots(ctx: ViewContext, t: MotionsTranslator, s: AppState, busy: boolean): TemplateResult {
-  const known = new Set(downloadedOffers(motionsOf(s).motionBook).map((o) => o.number));
+  const known = new Set(downloadedOffers(s).map((o) => o.number));
   const others = DOWNLOAD_MOTION_NUMBERS.filter((n) => !known.has(n));
   return html`
     <details class="other-slots">
@@ -163,7 +169,6 @@ function otherSlots(ctx: ViewContext, t: MotionsTranslator, s: AppState, busy: b
       <p class="muted small">${t("motions.run.otherSlotsText")}</p>
       <div class="slot-grid">
         ${others.map((n) => {
-          const offer = offerFor(s, n);
           return html`<button
             type="button"
             class="btn slot-btn"
@@ -172,7 +177,7 @@ function otherSlots(ctx: ViewContext, t: MotionsTranslator, s: AppState, busy: b
             @click=${() => pressRun(ctx, n)}
           >
             <span class="slot-num num">${runNumber(t, n)}</span>
-            <span class="muted small">${offer?.slot === undefined ? "" : t("motions.run.slot", { slot: offer.slot })}</span>
+            <span class="muted small">${remoteKeyWords(n, t.locale)}</span>
           </button>`;
         })}
       </div>
@@ -212,7 +217,8 @@ export function runSection(ctx: ViewContext): TemplateResult {
   const busyReason = robotBusyReason(s);
   const busy = busyReason !== undefined || m.confirmMove !== undefined;
   const needsPosture = c.phase === "connected" && !c.basicPostureConfirmed;
-  const downloads = downloadedOffers(m.motionBook);
+  const downloads = downloadedOffers(s);
+  const recorded = downloads.some((o) => o.stored?.kind === "recorded");
   const t = translator(motionsMessages, s.locale);
   return html`
     ${liveRobot(ctx, t)}
@@ -239,11 +245,13 @@ export function runSection(ctx: ViewContext): TemplateResult {
       </div>
       ${runInPlace(ctx, t, "built-in")}
       <h3>${t("motions.run.downloadedTitle")}</h3>
+      ${shelfDropNotice(m.shelf?.notice, s.locale)}
       ${
         downloads.length > 0
           ? html`<div class="motion-grid" data-testid="downloaded-motions">
               ${downloads.map((o) => motionButton(ctx, t, o, busy, false))}
-            </div>`
+            </div>
+            ${recorded ? html`<p class="muted small" data-testid="shelf-recorded-note">${shelfRecordedNote(s.locale)}</p>` : nothing}`
           : html`<p class="muted small">${t("motions.run.downloadedNone")}</p>`
       }
       ${runInPlace(ctx, t, "downloaded")} ${otherSlots(ctx, t, s, busy)}

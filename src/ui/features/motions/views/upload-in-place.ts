@@ -4,7 +4,10 @@ import { translator } from "../../../../i18n/translate.ts";
 import type { AppState } from "../../../app-state.ts";
 import { liveNotice } from "../../../shell/notice.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
+import { shelfMessages } from "../../shelf/messages.ts";
+import { runNowButton } from "../../shelf/shelf-list.ts";
 import { type MotionsTranslator, motionsMessages } from "../messages.ts";
+import { offerFor } from "../run-actions.ts";
 import { motionsOf, type UploadRun, type UploadTarget } from "../state.ts";
 import { cancelConfirm, cancelUpload, startUpload } from "../upload-actions.ts";
 import { formatRate, formatTimeLeft, uploadFigures } from "../upload-rate.ts";
@@ -142,6 +145,14 @@ export function uploadInPlace(
     <div class="upload-in-place" ${keepInView(shown)}>
       ${confirming ? confirmBlock(ctx, t, s, target, start) : nothing} ${uploading ? progress(ctx, t, uploading) : nothing}
       ${liveNotice(result, t("motions.upload.resultLabel"), s.locale)}
+      ${
+        result && target.area === "motion" && m.uploadStored !== undefined
+          ? html`<div class="actions">${runNowButton(ctx, translator(shelfMessages, s.locale), {
+              number: m.uploadStored,
+              name: offerFor(s, m.uploadStored)?.name ?? "",
+            })}</div>`
+          : nothing
+      }
     </div>
   `;
 }

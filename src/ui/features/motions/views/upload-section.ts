@@ -9,33 +9,44 @@ import {
   MOTION_AREA_BYTES,
 } from "../../../../protocol/catalog.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
+import { demoResetOffer } from "../../shelf/demo-reset.ts";
+import { shelfList } from "../../shelf/shelf-list.ts";
 import { type MotionsTranslator, motionsMessages } from "../messages.ts";
-import { formatSeconds } from "../plot-data.ts";
-import { type SlotBook, slotLabel } from "../slot-book.ts";
+import { downloadedOffers } from "../run-actions.ts";
+import type { SlotBook } from "../slot-book.ts";
 import { motionsOf } from "../state.ts";
 import { openActionFile, requestUpload, setResetFirst, uploadBlocked } from "../upload-actions.ts";
 import { uploadInPlace } from "./upload-in-place.ts";
 
 /** The Memory tab: what this connection uploaded, how the memory is counted, and action files. */
 
-function uploadedList(t: MotionsTranslator, book: SlotBook, testId: string): TemplateResult | typeof nothing {
+/** Uploads of this connection the panel could not number (the robot held files it did not see arrive). */
+function unnumbered(t: MotionsTranslator, book: SlotBook): TemplateResult | typeof nothing {
+  const entries = book.entries.filter((e) => e.slot === undefined);
+  if (entries.length === 0) return nothing;
+  return html`
+    <ul class="uploaded-list" data-testid="uploaded-unnumbered">
+      ${entries.map(
+        (e) => html`<li>
+          <strong class="long-text">${e.name}</strong> <span class="muted long-text">${e.fileName}</span> —
+          ${t("motions.upload.slotUnknown")}
+        </li>`,
+      )}
+    </ul>
+  `;
+}
+
+/** Action uploads of this connection: "action 1" (the action memory's own count), or why it is not known. */
+function actionList(t: MotionsTranslator, book: SlotBook): TemplateResult | typeof nothing {
   if (book.entries.length === 0) return nothing;
   return html`
-    <ul class="uploaded-list" data-testid=${testId}>
-      ${book.entries.map((e) => {
-        const slot = html`<span class="num">${slotLabel(e, t.locale)}</span>`;
-        return html`<li>
-          <strong class="long-text">${e.name}</strong> <span class="muted long-text">${e.fileName}</span> —
-          ${
-            e.durationMs === undefined
-              ? slot
-              : t.parts("motions.upload.slotPlays", {
-                  slot,
-                  duration: formatSeconds(e.durationMs, t.locale),
-                })
-          }
-        </li>`;
-      })}
+    <ul class="uploaded-list" data-testid="uploaded-actions">
+      ${book.entries.map(
+        (e) => html`<li>
+          <span class="muted long-text">${e.fileName}</span> —
+          <span class="num">${e.slot === undefined ? t("motions.upload.slotUnknown") : t("motions.upload.actionSlot", { slot: e.slot })}</span>
+        </li>`,
+      )}
     </ul>
   `;
 }
@@ -45,11 +56,7 @@ function uploadsCard(ctx: ViewContext, t: MotionsTranslator): TemplateResult {
   return html`
     <section class="card" aria-labelledby="uploads-title" data-testid="uploads-card">
       <h2 id="uploads-title" class="card-title">${t("motions.upload.listTitle")}</h2>
-      ${
-        m.motionBook.entries.length > 0
-          ? uploadedList(t, m.motionBook, "uploaded-list")
-          : html`<p class="muted small">${t("motions.upload.none")}</p>`
-      }
+      ${shelfList(ctx, downloadedOffers(ctx.state))} ${unnumbered(t, m.motionBook)}
       <details class="memory-help">
         <summary>${t("motions.upload.howCounted")}</summary>
         <p class="small">
@@ -62,6 +69,7 @@ function uploadsCard(ctx: ViewContext, t: MotionsTranslator): TemplateResult {
           })}
         </p>
       </details>
+      ${demoResetOffer(ctx)}
     </section>
   `;
 }
@@ -119,7 +127,7 @@ function actionCard(ctx: ViewContext, t: MotionsTranslator): TemplateResult {
             `
           : nothing
       }
-      ${uploadInPlace(ctx, { area: "action" })} ${uploadedList(t, m.actionBook, "uploaded-actions")}
+      ${uploadInPlace(ctx, { area: "action" })} ${actionList(t, m.actionBook)}
     </section>
   `;
 }

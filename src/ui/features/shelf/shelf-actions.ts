@@ -1,0 +1,202 @@
+import { imageHash, type RobotShelf } from "../../../device/shelf.ts";
+import { translator } from "../../../i18n/translate.ts";
+import { MOTION_AREA_BYTES } from "../../../protocol/catalog.ts";
+import type { AppState, Notice } from "../../app-state.ts";
+import type { AppContext } from "../../context.ts";
+import { type Controller, controllerKey } from "../../scope.ts";
+import { motionsOf, patchMotions } from "../motions/state.ts";
+import { shelfMessages } from "./messages.ts";
+import type { ShelfState } from "./shelf-state.ts";
+import {
+  checkShelf,
+  idbShelfStorage,
+  panelShelfKey,
+  readShelf,
+  recordOnShelf,
+  type ShelfStorage,
+} from "./shelf-store.ts";
+
+/**
+ * The panel's side of the robot's shelf (issue 23 item 2): load the connected robot's records, check them
+ * against every reading of its free motion memory (dropping, and saying so, what that memory shows was lost),
+ * and record each upload into a known slot. The records live in `motions.shelf` for the connection.
+ */
+
+/** The page's storage and the queue that keeps its reads and writes in order. */
+class ShelfKeeper implements Controller {
+  private storage: Promise<ShelfStorage> | undefined;
+  private queue: Promise<unknown> = Promise.resolve();
+
+  constructor(private readonly make: () => Promise<ShelfStorage>) {}
+
+  /** Runs `task` with the storage after every task queued before it. */
+  run<T>(task: (storage: ShelfStorage) => Promise<T>): Promise<T> {
+    this.storage ??= this.make();
+    const storage = this.storage;
+    const next = this.queue.then(async () => task(await storage));
+    this.queue = next.catch(() => {});
+    return next;
+  }
+
+  dispose(): void {
+    this.storage = undefined;
+  }
+}
+
+let makeStorage: () => Promise<ShelfStorage> = idbShelfStorage;
+
+/** Tests only: the storage the next page scope's shelf uses (a Map, `memoryShelfStorage`). */
+export function useShelfStorage(make: () => Promise<ShelfStorage>): void {
+  makeStorage = make;
+}
+
+const SHELF_KEEPER = controllerKey("robot shelf", () => new ShelfKeeper(makeStorage));
+
+/** Checks the shelf whenever the robot's free motion memory is read on this connection. */
+class ShelfWatch implements Controller {
+  private seen: number | undefined;
+  private readonly stop: () => void;
+
+  constructor(ctx: AppContext) {
+    this.seen = ctx.store.get().device.readAt;
+    this.stop = ctx.store.subscribe((s) => {
+      const { readAt, freeMotion } = s.device;
+      if (readAt === this.seen || freeMotion === undefined) return;
+      this.seen = readAt;
+      void checkAgainst(ctx, freeMotion);
+    });
+  }
+
+  dispose(): void {
+    this.stop();
+  }
+}
+
+const SHELF_WATCH = controllerKey("robot shelf watch", (ctx: AppContext) => new ShelfWatch(ctx));
+
+/** The connected robot's shelf key, or undefined while no robot is connected. */
+export function shelfKeyOf(s: AppState): string | undefined {
+  const c = s.connection;
+  if (c.phase !== "connected" || !c.robot) return undefined;
+  return panelShelfKey(c.serialNumber, {
+    name: c.robot.kind === "demo" ? "demo robot" : c.robot.name,
+    usbVendorId: c.robot.info?.usbVendorId,
+    usbProductId: c.robot.info?.usbProductId,
+  });
+}
+
+function keeper(ctx: AppContext): ShelfKeeper {
+  return ctx.session.pageScope.get(SHELF_KEEPER);
+}
+
+function showShelf(ctx: AppContext, key: string, shelf: RobotShelf, patch: Partial<ShelfState> = {}): void {
+  if (shelfKeyOf(ctx.store.get()) !== key) return;
+  patchMotions(ctx.store, (m) => ({
+    shelf: {
+      key,
+      checked: m.shelf?.key === key ? m.shelf.checked : false,
+      ...(m.shelf?.key === key && m.shelf.notice ? { notice: m.shelf.notice } : {}),
+      ...patch,
+      slots: shelf.slots,
+    },
+  }));
+}
+
+/**
+ * The Motions view is shown: load this robot's records (once per connection) and check them against the free
+ * memory already read, if any; later readings are watched.
+ */
+export async function loadShelf(ctx: AppContext): Promise<void> {
+  const key = shelfKeyOf(ctx.store.get());
+  if (key === undefined) return;
+  ctx.session.connectionScope.get(SHELF_WATCH);
+  if (motionsOf(ctx.store.get()).shelf?.key === key) return;
+  try {
+    const shelf = await keeper(ctx).run((storage) => readShelf(storage, key));
+    showShelf(ctx, key, shelf);
+    const free = ctx.store.get().device.freeMotion;
+    if (free !== undefined) await checkAgainst(ctx, free);
+  } catch {
+    // No storage (a private window may refuse IndexedDB): the panel knows this connection's uploads only.
+  }
+}
+
+/** Drops the records the free motion memory `free` shows were lost, and says which. */
+export async function checkAgainst(ctx: AppContext, free: number): Promise<void> {
+  const key = shelfKeyOf(ctx.store.get());
+  if (key === undefined) return;
+  try {
+    const check = await keeper(ctx).run((storage) => checkShelf(storage, key, free));
+    const t = translator(shelfMessages, ctx.store.get().locale);
+    const notice: Notice | undefined =
+      check.dropped.length === 0
+        ? undefined
+        : {
+            tone: "warning",
+            text: t("shelf.dropped", {
+              motions: check.dropped
+                .map((s) => t("shelf.droppedOne", { number: s.motionNumber, name: s.name }))
+                .join(", "),
+              used: check.usedBytes,
+              size: MOTION_AREA_BYTES,
+            }),
+          };
+    showShelf(ctx, key, check.shelf, { checked: true, ...(notice ? { notice } : {}) });
+    if (check.dropped.length > 0) {
+      // Uploads of this connection into those slots are gone as well: the panel no longer offers them by name.
+      const lost = new Set(check.dropped.map((s) => s.slot));
+      patchMotions(ctx.store, (m) => ({
+        motionBook: {
+          ...m.motionBook,
+          entries: m.motionBook.entries.filter((e) => e.slot === undefined || !lost.has(e.slot)),
+        },
+      }));
+    }
+  } catch {
+    // As in loadShelf: without storage nothing is recorded, so nothing can be wrong.
+  }
+}
+
+/** What an upload into a known slot tells the shelf. */
+export interface StoredUpload {
+  slot: number;
+  name: string;
+  image: Uint8Array;
+  durationMs: number;
+  footprint: number;
+}
+
+/**
+ * Records an upload into a known slot on the shelf of the robot kept under `key` (`panelShelfKey`): the one
+ * function every upload that stores a motion calls (Motions, and the Editor through it; the Class view per robot).
+ * Queued at once, before any await, so a check that a later free-memory reading starts comes after it.
+ */
+export function recordOnRobotShelf(ctx: AppContext, key: string, stored: StoredUpload): Promise<RobotShelf> {
+  return keeper(ctx).run(async (storage) =>
+    recordOnShelf(storage, key, {
+      slot: stored.slot,
+      name: stored.name,
+      hash: await imageHash(stored.image),
+      durationMs: stored.durationMs,
+      footprint: stored.footprint,
+      storedAt: new Date().toISOString(),
+    }),
+  );
+}
+
+/**
+ * Records an upload on the connected robot's shelf and shows it. The upload stands whatever happens here: a
+ * failure is returned as a sentence for the upload's notice.
+ */
+export async function recordShelf(ctx: AppContext, stored: StoredUpload): Promise<string | undefined> {
+  const key = shelfKeyOf(ctx.store.get());
+  if (key === undefined) return undefined;
+  const recorded = recordOnRobotShelf(ctx, key, stored);
+  try {
+    showShelf(ctx, key, await recorded, { notice: undefined });
+    return undefined;
+  } catch (e) {
+    const t = translator(shelfMessages, ctx.store.get().locale);
+    return t("shelf.notRecorded", { why: e instanceof Error ? e.message : String(e) });
+  }
+}

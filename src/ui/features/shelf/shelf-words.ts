@@ -1,0 +1,35 @@
+import type { Locale } from "../../../i18n/locale.ts";
+import { translator } from "../../../i18n/translate.ts";
+import { formatDateTime } from "../../../i18n/units.ts";
+import { remoteKeyOf } from "../../../protocol/catalog.ts";
+import { shelfMessages } from "./messages.ts";
+
+/**
+ * The words of one motion on the shelf: its remote key (docs/protocol.md §3.1: 12 is key 1 … 21 key 0, 33 is
+ * `*` then 1 …) and how sure the panel is that it is there.
+ */
+
+/** "key 1", "* then 0", or "" for a number no download key plays. */
+export function remoteKeyWords(motionNumber: number, locale: Locale): string {
+  const key = remoteKeyOf(motionNumber);
+  if (!key) return "";
+  const t = translator(shelfMessages, locale);
+  return key.star ? t("shelf.starKey", { key: key.key }) : t("shelf.key", { key: key.key });
+}
+
+/** How a download is known: uploaded now, or recorded earlier (checked against free memory, or not yet). */
+export type StoredWay = { kind: "now" } | { kind: "recorded"; at: string; checked: boolean };
+
+export function storedWords(stored: StoredWay, locale: Locale): string {
+  const t = translator(shelfMessages, locale);
+  if (stored.kind === "now") return t("shelf.thisConnection");
+  const at = new Date(stored.at);
+  const when = Number.isNaN(at.getTime()) ? stored.at : formatDateTime(at, locale);
+  return stored.checked ? t("shelf.mayBeThere", { when }) : t("shelf.unchecked", { when });
+}
+
+/** After an upload into a known slot: "Stored as motion 12 (key 1): Run takes this number." */
+export function storedSentence(motionNumber: number, locale: Locale): string {
+  const t = translator(shelfMessages, locale);
+  return t("shelf.stored", { number: motionNumber, key: remoteKeyWords(motionNumber, locale) });
+}
