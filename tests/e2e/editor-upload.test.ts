@@ -139,7 +139,7 @@ describe("the Editor: upload to the robot and run it there", () => {
     const result = card(page).locator(".upload-in-place .notice");
     await result.waitFor();
     expect(squash(await result.textContent())).toMatch(
-      /^Uploaded NewMotion\.rbm: 280 bytes in 5 chunks .* It is downloaded motion 1: run it as motion number 12 .* Free motion memory: 24,256 of 24,576 bytes \(was 24,576; the file takes 320\)\. Error code after the upload: no error\.$/,
+      /^Uploaded NewMotion\.rbm: 280 bytes in 5 chunks .* Stored as motion 12 \(key 1\): Run takes this number\. Free motion memory: 24,256 of 24,576 bytes \(was 24,576; the file takes 320\)\. Error code after the upload: no error\.$/,
     );
     expect(await copyText(page)).toBe("The robot holds this motion as motion 12 (remote key 1).");
     const run = page.getByRole("button", { name: "Run on robot: motion 12 (remote key 1)", exact: true });

@@ -180,7 +180,9 @@ describe("the Editor's upload on the demo robot", () => {
       kind: "same",
       number: 12,
     });
-    expect(motionsOf(ctx.store.get()).uploadResult?.text).toContain("run it as motion number 12");
+    expect(motionsOf(ctx.store.get()).uploadResult?.text).toContain(
+      "Stored as motion 12 (key 1): Run takes this number.",
+    );
   });
 
   it("refuses a document with errors before any byte, and changes nothing", async () => {
