@@ -170,4 +170,20 @@ describe("motions view: running motions and sounds", () => {
     expect(await page.locator('[data-motion="7"]').isEnabled()).toBe(true);
     await context.close();
   });
+
+  it("a firmware that answers a sound at once: says the answer proves only that the request arrived", async () => {
+    const { page, context } = await app.newPage({
+      options: { ...FAST, variant: { soundReplyAtOnce: true } },
+    });
+    await openTab(page, "Sounds");
+    await page.locator('[data-sound="4"]').click();
+    const said = page.getByText("The robot answered at once", { exact: false });
+    await said.waitFor({ timeout: 6000 });
+    // Sound 4 lasts 365 ms: busy for 0.6 s with the 200 ms before it (docs/protocol.md §3.3).
+    expect(squash(await said.textContent())).toMatch(
+      /^The robot answered at once \(after \d+ ms\): this firmware answers before it plays a sound, so the answer shows only that the request arrived, not that the sound played\. The sound keeps the robot busy for 0\.6 s/,
+    );
+    expect(await page.getByText("Sound 4 played", { exact: false }).count()).toBe(0);
+    await context.close();
+  });
 });

@@ -2,6 +2,7 @@ import { RbcError } from "../../../device/errors.ts";
 import { isHazardousMotion } from "../../../device/run-outcome.ts";
 import type { Locale } from "../../../i18n/locale.ts";
 import { builtInMotionName } from "../../../i18n/motion-names/built-in-motion-name.ts";
+import { soundOutcomeMessages } from "../../../i18n/outcomes/sound-messages.ts";
 import { translator } from "../../../i18n/translate.ts";
 import {
   BASIC_POSTURE_MOTION,
@@ -10,10 +11,11 @@ import {
   isOfferedMotionNumber,
   soundLengthMs,
 } from "../../../protocol/catalog.ts";
-import type { AppState, Notice } from "../../app-state.ts";
+import { type AppState, type Notice, noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { errorMessage, errorNotice, technicalDetail } from "../../error-text.ts";
 import { focusSoon } from "../../focus.ts";
+import { inEveryLanguage, said } from "../../said.ts";
 import { remoteKeyWords } from "../shelf/shelf-words.ts";
 import { type MotionRun, motionsController } from "./controllers.ts";
 import { type MotionsTranslator, motionsMessages } from "./messages.ts";
@@ -237,12 +239,21 @@ export async function playSound(ctx: AppContext, n: number): Promise<void> {
   patchMotions(store, { soundNotice: undefined });
   motionsController(ctx).ticker.ensure();
   try {
-    await session.run(t("motions.sound.task", { sound: n }), (client) => client.runSound(n));
+    const report = await session.run(t("motions.sound.task", { sound: n }), (client) => client.playSound(n));
+    // A firmware that answers at once proves only that the request arrived (docs/protocol.md §9).
+    const seconds = (ms: number) => inEveryLanguage((l) => formatSeconds(ms, l));
     patchMotions(store, {
-      soundNotice: {
-        tone: "ok",
-        text: t("motions.sound.played", { sound: n, time: formatSeconds(length, locale) }),
-      },
+      soundNotice: report.repliedAtOnce
+        ? noticeOf("warning", locale, [
+            said(soundOutcomeMessages, "outcome.sound.repliedAtOnce", {
+              reply: seconds(report.replyAfterMs),
+              length: seconds(report.expectedMs),
+            }),
+          ])
+        : {
+            tone: "ok",
+            text: t("motions.sound.played", { sound: n, time: formatSeconds(length, locale) }),
+          },
     });
   } catch (e) {
     patchMotions(store, {
