@@ -28,6 +28,7 @@ export const zerosMessages = defineMessages({
     en: "the backup kept in this browser, saved {saved}",
     ko: "이 브라우저에 보관한 백업({saved}에 저장)",
   },
+  "zeros.sourceCapture": { en: "the pose captured by hand", ko: "손으로 잡은 자세" },
   "zeros.tablesTitle": {
     en: "Factory zeros and the reference the robot checks against",
     ko: "공장 영점과 로봇이 비교하는 기준 영점",

@@ -14,6 +14,8 @@ import {
 import { formatDateTime, formatDelta } from "../../format.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
+import { connectCard } from "../connection/connect-card.ts";
+import { unsupportedCard } from "../connection/unsupported-card.ts";
 import {
   askToWrite,
   backUpZeros,
@@ -28,6 +30,9 @@ import {
 } from "./actions.ts";
 import { checkDraft, type DraftCheck, draftTable, jointName, pendingChanges } from "./editor.ts";
 import { sidesNote } from "./joints/joint-name.ts";
+import { comparePanel, compareWith } from "./live/compare-view.ts";
+import { captureResultPanel, livePanel, lostTrimPanel } from "./live/live-view.ts";
+import { zerosLiveMessages } from "./live/messages.ts";
 import { type ZerosTranslator, zerosMessages } from "./messages.ts";
 import type { ZerosSource } from "./state.ts";
 
@@ -44,8 +49,12 @@ function row(
   const storedValue = stored[id];
   const problem = check.problems.get(id);
   const delta = value !== undefined && storedValue !== undefined ? value - storedValue : 0;
-  const busy = ctx.state.zeros.busy !== undefined;
+  const z = ctx.state.zeros;
+  // Trim live on: the fields move their servo; while it moves, returns or writes, and during a capture, they wait.
+  const busy =
+    z.busy !== undefined || (z.live !== undefined && z.live.phase !== "on") || z.capture !== undefined;
   const name = jointName(id, t.locale);
+  const writeHere = !problem && delta !== 0 && !busy && !z.confirming && !z.live?.phase.startsWith("ask");
   return html`
     <tr class=${problem ? "is-invalid" : delta !== 0 ? "is-changed" : ""} data-servo=${id}>
       <td class="num zero-id">${id}</td>
@@ -92,6 +101,17 @@ function row(
           delta === 0
             ? html`<span class="muted" aria-hidden="true">·</span><span class="sr-only">${t("zeros.unchanged")}</span>`
             : formatDelta(delta, t.locale)
+        }
+        ${
+          writeHere
+            ? html`<button
+                type="button"
+                class="btn btn--quiet btn--small write-here"
+                aria-label=${translator(zerosLiveMessages, t.locale)("live.writeHereLabel")}
+                aria-describedby="change-summary"
+                @click=${() => askToWrite(ctx)}
+              >${translator(zerosLiveMessages, t.locale)("live.writeHere")}</button>`
+            : nothing
         }
       </td>
     </tr>
@@ -157,7 +177,7 @@ function writeControls(
         type="button"
         class="btn btn--primary"
         data-testid="write-zeros"
-        ?disabled=${!valid || changes.length === 0 || z.busy !== undefined}
+        ?disabled=${!valid || changes.length === 0 || z.busy !== undefined || (z.live !== undefined && z.live.phase !== "on") || (z.capture !== undefined && z.capture.phase !== "checked")}
         aria-describedby="write-why"
         @click=${() => askToWrite(ctx)}
       >
@@ -210,9 +230,10 @@ function zeroTables(disabled: boolean, ctx: ViewContext, t: ZerosTranslator): Te
 /** Every backup kept in this browser: when, which robot, the values, and Restore (into the editor). */
 function keptList(ctx: ViewContext, t: ZerosTranslator, disabled: boolean): TemplateResult {
   const kept = ctx.state.zeros.kept ?? [];
+  const lt = translator(zerosLiveMessages, t.locale);
   return html`
-    <details class="kept-backups" data-testid="kept-backups">
-      <summary>${t("zeros.keptTitle", { count: kept.length })}</summary>
+    <details class="kept-backups" data-testid="kept-backups" ?open=${ctx.state.zeros.compareWith !== undefined}>
+      <summary id="kept-title" tabindex="-1">${t("zeros.keptTitle", { count: kept.length })}</summary>
       ${
         kept.length === 0
           ? html`<p class="muted small">${t("zeros.keptNone")}</p>`
@@ -238,6 +259,16 @@ function keptList(ctx: ViewContext, t: ZerosTranslator, disabled: boolean): Temp
                         <button
                           type="button"
                           class="btn btn--quiet"
+                          data-testid="compare-kept"
+                          aria-label=${lt("compare.buttonLabel", { saved })}
+                          aria-pressed=${ctx.state.zeros.compareWith === k.id ? "true" : "false"}
+                          @click=${() => compareWith(ctx, ctx.state.zeros.compareWith === k.id ? undefined : k.id)}
+                        >
+                          ${lt("compare.button")}
+                        </button>
+                        <button
+                          type="button"
+                          class="btn btn--quiet"
                           ?disabled=${disabled}
                           aria-label=${t("zeros.keptRestoreLabel", { saved })}
                           @click=${() => restoreKeptBackup(ctx, k)}
@@ -251,6 +282,7 @@ function keptList(ctx: ViewContext, t: ZerosTranslator, disabled: boolean): Temp
               </table>
             </div>`
       }
+      ${comparePanel(ctx)}
     </details>
   `;
 }
@@ -265,17 +297,29 @@ function sourceText(t: ZerosTranslator, source: ZerosSource): string {
       return t("zeros.sourceBackup", { file: source.file });
     case "kept":
       return t("zeros.sourceKept", { saved: formatDateTime(new Date(source.savedAt), t.locale) });
+    case "capture":
+      return t("zeros.sourceCapture");
   }
 }
 
 function render(ctx: ViewContext): TemplateResult {
+  if (ctx.state.connection.phase !== "connected") {
+    // Not a robot view while disconnected: what a lost link left during trim live, then the connect card.
+    const card = ctx.state.serialSupported ? connectCard(ctx) : unsupportedCard(ctx);
+    return html`${lostTrimPanel(ctx)}${card}`;
+  }
+  return renderConnected(ctx);
+}
+
+function renderConnected(ctx: ViewContext): TemplateResult {
   const { zeros: z, locale } = ctx.state;
   const t = translator(zerosMessages, locale);
   const stored = z.stored;
   const ready = stored !== undefined && z.draft.length === ZERO_COUNT;
   const check = checkDraft(z.draft, locale);
   const changes = pendingChanges(stored, check);
-  const busy = z.busy !== undefined;
+  // Trim live or a capture under way: reading, backups and whole-table loads wait (each would end it).
+  const busy = z.busy !== undefined || z.live !== undefined || z.capture !== undefined;
   return html`
     <section class="card" aria-labelledby="view-title" data-testid="zeros-card">
       <div class="card-head">
@@ -324,6 +368,7 @@ function render(ctx: ViewContext): TemplateResult {
       ${ready ? html`<p class="muted small sides-note" data-testid="sides-note">${sidesNote(locale)}</p>` : nothing}
       ${zeroTables(busy || !ready, ctx, t)}
       ${liveNotice(z.fileNotice, t("zeros.fileNoticeLabel"), locale)}
+      ${ready ? captureResultPanel(ctx) : nothing}
       ${
         ready
           ? html`
@@ -345,7 +390,8 @@ function render(ctx: ViewContext): TemplateResult {
                   </tbody>
                 </table>
                 <aside class="zeros-write" aria-label=${t("zeros.writePanel")} data-testid="zeros-write">
-                  <p class="change-summary" data-testid="change-summary">${changeSummary(t, changes, check)}</p>
+                  ${livePanel(ctx, busy)}
+                  <p id="change-summary" class="change-summary" data-testid="change-summary">${changeSummary(t, changes, check)}</p>
                   ${writeControls(ctx, t, check, changes)}
                   ${liveNotice(z.result, t("zeros.resultLabel"), locale)}
                 </aside>
@@ -360,7 +406,8 @@ function render(ctx: ViewContext): TemplateResult {
 }
 
 const zerosView: AppView = {
-  needsRobot: true,
+  // It draws the connect card itself while disconnected, below what a lost link left during trim live.
+  needsRobot: false,
   render,
   activate(ctx) {
     if (ctx.state.zeros.stored === undefined) void readZerosFromRobot(ctx);
