@@ -31,7 +31,7 @@ import {
 import { checkDraft, type DraftCheck, draftTable, jointName, pendingChanges } from "./editor.ts";
 import { sidesNote } from "./joints/joint-name.ts";
 import { comparePanel, compareWith } from "./live/compare-view.ts";
-import { captureResultPanel, livePanel, lostTrimPanel } from "./live/live-view.ts";
+import { captureResultPanel, livePanel, lostTrimPanel, trimOnBox } from "./live/live-view.ts";
 import { zerosLiveMessages } from "./live/messages.ts";
 import { type ZerosTranslator, zerosMessages } from "./messages.ts";
 import type { ZerosSource } from "./state.ts";
@@ -368,7 +368,7 @@ function renderConnected(ctx: ViewContext): TemplateResult {
       ${ready ? html`<p class="muted small sides-note" data-testid="sides-note">${sidesNote(locale)}</p>` : nothing}
       ${zeroTables(busy || !ready, ctx, t)}
       ${liveNotice(z.fileNotice, t("zeros.fileNoticeLabel"), locale)}
-      ${ready ? captureResultPanel(ctx) : nothing}
+      ${ready ? html`${livePanel(ctx, busy)}${captureResultPanel(ctx)}` : nothing}
       ${
         ready
           ? html`
@@ -390,7 +390,7 @@ function renderConnected(ctx: ViewContext): TemplateResult {
                   </tbody>
                 </table>
                 <aside class="zeros-write" aria-label=${t("zeros.writePanel")} data-testid="zeros-write">
-                  ${livePanel(ctx, busy)}
+                  ${trimOnBox(ctx)}
                   <p id="change-summary" class="change-summary" data-testid="change-summary">${changeSummary(t, changes, check)}</p>
                   ${writeControls(ctx, t, check, changes)}
                   ${liveNotice(z.result, t("zeros.resultLabel"), locale)}

@@ -71,8 +71,8 @@ const COUNTDOWN = controllerKey("capture zeros: countdown", () => new Countdown(
 /** "Capture zeros…": asks once, in place (the robot goes limp and can fall); nothing is sent. */
 export function askCapture(ctx: AppContext): void {
   const z = ctx.store.get().zeros;
-  if (z.busy || z.live || z.stored === undefined) return;
-  patchZeros(ctx.store, { capture: { phase: "asking" } });
+  if (z.busy || z.live || z.stored === undefined || (z.capture && z.capture.phase !== "checked")) return;
+  patchZeros(ctx.store, { capture: { phase: "asking" }, liveNotice: undefined, liveRefused: false });
   focusSoon("capture-cancel");
 }
 

@@ -16,6 +16,8 @@ export interface TrimLiveState {
   positions: (number | undefined)[];
   /** Servos moved away from the stored zero pose during this trim (their ids, in the order first moved). */
   moved: number[];
+  /** The last move: the servo, the position sent, what its reply confirmed, and the value asked when clamped. */
+  last?: { id: number; sent: number; position: number; asked?: number };
 }
 
 /** Capture zeros' part of the state (issue 23 item 5). */

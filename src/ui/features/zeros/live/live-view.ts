@@ -1,4 +1,4 @@
-import { html, nothing, type TemplateResult } from "lit-html";
+import { html, nothing, svg, type TemplateResult } from "lit-html";
 import { translator } from "../../../../i18n/translate.ts";
 import { liveNotice, notice } from "../../../shell/notice.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
@@ -15,7 +15,7 @@ import {
   startTrimLive,
   stopFromTrim,
 } from "./trim-live.ts";
-import { type CaptureCheck, type CapturedJoint, windowFraction } from "./trim-model.ts";
+import { type CaptureCheck, type CapturedJoint, trimRange, windowFraction } from "./trim-model.ts";
 
 type T = ReturnType<typeof translator<typeof zerosLiveMessages>>;
 
@@ -74,6 +74,7 @@ export function captureResultPanel(ctx: ViewContext): TemplateResult | typeof no
 
 function startButtons(ctx: ViewContext, t: T, disabled: boolean): TemplateResult {
   return html`
+    <div class="zeros-live-start">
     <p class="muted small">${t("live.intro")}</p>
     <div class="row-actions">
       <button id="trim-live" type="button" class="btn" ?disabled=${disabled} @click=${() => askTrimLive(ctx)}>
@@ -82,6 +83,7 @@ function startButtons(ctx: ViewContext, t: T, disabled: boolean): TemplateResult
       <button id="capture-zeros" type="button" class="btn" ?disabled=${disabled} @click=${() => askCapture(ctx)}>
         ${t("capture.button")}
       </button>
+    </div>
     </div>
   `;
 }
@@ -110,17 +112,36 @@ function trimPart(ctx: ViewContext, t: T): TemplateResult {
         ${live.phase === "returning" ? t("live.returning") : live.phase === "moving" ? t("live.moving") : t("live.on")}
       </p>`;
     case "on":
-      return html`
-        <div class="trim-on" data-testid="trim-on">
-          <p class="trim-status" data-testid="trim-status"><strong>${t("live.on")}</strong></p>
-          <div class="row-actions">
-            <button id="trim-cancel" type="button" class="btn" @click=${() => void cancelTrimLive(ctx)}>
-              ${t("live.cancelTrim")}
-            </button>
-          </div>
-        </div>
-      `;
+      // Its status and Cancel sit beside the values, in the Write panel (`trimOnBox`).
+      return html`<p class="muted small">${t("live.intro")}</p>`;
   }
+}
+
+/** The last move the servo confirmed (and, when the value had to be clamped, where it went instead). */
+function lastMove(ctx: ViewContext, t: T): string {
+  const last = ctx.state.zeros.live?.last;
+  if (!last) return "";
+  const joint = jointName(last.id, ctx.state.locale);
+  const id = String(last.id);
+  const moved = t("live.lastMove", { joint, id, position: String(last.position) });
+  if (last.asked === undefined) return moved;
+  const { min, max } = trimRange(last.id);
+  return `${moved} ${t("live.clamped", { joint, id, position: String(last.sent), min, max })}`;
+}
+
+/** Trim live on: its status and Cancel, in the Write panel beside the values being changed. */
+export function trimOnBox(ctx: ViewContext): TemplateResult | typeof nothing {
+  if (ctx.state.zeros.live?.phase !== "on") return nothing;
+  const t = translator(zerosLiveMessages, ctx.state.locale);
+  return html`
+    <div class="trim-on" data-testid="trim-on">
+      <p class="trim-status" data-testid="trim-status"><strong>${t("live.on")}</strong></p>
+      <p class="small" role="status" aria-live="polite" data-testid="trim-last">${lastMove(ctx, t)}</p>
+      <button id="trim-cancel" type="button" class="btn" @click=${() => void cancelTrimLive(ctx)}>
+        ${t("live.cancelTrim")}
+      </button>
+    </div>
+  `;
 }
 
 function capturePart(ctx: ViewContext, t: T): TemplateResult {
@@ -170,6 +191,7 @@ function capturePart(ctx: ViewContext, t: T): TemplateResult {
                 </button>`
               : nothing
           }
+          <button type="button" class="btn" @click=${() => askCapture(ctx)}>${t("capture.again")}</button>
           <button id="capture-cancel" type="button" class="btn" @click=${() => cancelCapture(ctx)}>
             ${t("capture.close")}
           </button>
@@ -210,7 +232,7 @@ function band(j: CapturedJoint): TemplateResult {
     ${
       j.captured === undefined
         ? nothing
-        : html`<circle class=${j.verdict === "outside" ? "band-captured is-outside" : "band-captured"} cx=${x(j.captured)} cy="8" r="3.5"></circle>`
+        : svg`<circle class=${j.verdict === "outside" ? "band-captured is-outside" : "band-captured"} cx=${x(j.captured)} cy="8" r="3.5"></circle>`
     }
   </svg>`;
 }

@@ -13,11 +13,10 @@ import type { Store } from "../../../store.ts";
 import { servosTaken, stopActivity } from "../../connection/actions.ts";
 import { LatestMoveSender } from "../../servos/move-sender.ts";
 import { checkDraft, toDraft } from "../editor.ts";
-import { jointName } from "../joints/joint-name.ts";
 import type { ZerosState } from "../state.ts";
 import type { TrimLiveState } from "./live-state.ts";
 import { zerosLiveMessages } from "./messages.ts";
-import { trimRange, trimTarget, zeroPose } from "./trim-model.ts";
+import { trimTarget, zeroPose } from "./trim-model.ts";
 import { zeroPoseMotion } from "./zero-pose-motion.ts";
 
 /**
@@ -104,31 +103,14 @@ class TrimLive implements Controller {
         const positions = [...live.positions];
         positions[id] = status.position;
         const moved = live.moved.includes(id) ? live.moved : [...live.moved, id];
-        const { min, max } = trimRange(id);
-        return {
-          zeros: {
-            ...s.zeros,
-            live: { ...live, positions, moved },
-            liveNotice: noticeOf("ok", s.locale, [
-              say("live.lastMove", {
-                joint: jointSaid(id),
-                id: String(id),
-                position: String(status.position),
-              }),
-              ...(this.clampedFrom.get(id) !== undefined
-                ? [
-                    say("live.clamped", {
-                      joint: jointSaid(id),
-                      id: String(id),
-                      position: String(position),
-                      min,
-                      max,
-                    }),
-                  ]
-                : []),
-            ]),
-          },
+        const asked = this.clampedFrom.get(id);
+        const last = {
+          id,
+          sent: position,
+          position: status.position,
+          ...(asked !== undefined ? { asked } : {}),
         };
+        return { zeros: { ...s.zeros, live: { ...live, positions, moved, last } } };
       });
     } catch (e) {
       if (e instanceof Error && "code" in e && e.code === "cancelled") {
@@ -202,10 +184,6 @@ const TRIM_LIVE = controllerKey("trim live", (ctx: AppContext) => new TrimLive(c
 function tableOf(s: AppState): number[] | undefined {
   const values = checkDraft(s.zeros.draft).values;
   return values.every((v) => v !== undefined) ? (values as number[]) : undefined;
-}
-
-function jointSaid(id: number): LocalText {
-  return inEveryLanguage((locale) => jointName(id, locale));
 }
 
 /** "the stored zero pose" or "the zero pose with these servos moved: servo 5 at 126, …". */
