@@ -239,7 +239,7 @@ describe("trim live", () => {
     const lost = page.getByTestId("trim-lost");
     await lost.waitFor();
     const said = await text(lost);
-    expect(said).toMatch(/^The link was lost during trim live \(.+\)\. /);
+    expect(said).toMatch(/^The connection ended during trim live \(.+\)\. /);
     expect(said).toContain(
       `No zeros were written: the robot keeps ${FACTORY.join(" ")}. While it had power its servos held the zero pose with these servos moved: servo 5 at 127;`,
     );
@@ -261,11 +261,13 @@ describe("capture zeros on the demo robot", () => {
     await page.getByRole("button", { name: "Make it limp and start the countdown" }).click();
     const countdown = page.getByTestId("capture-countdown");
     await countdown.filter({ hasText: "Reading in 5 s." }).waitFor();
-    // A hand poses the limp robot: the left knee too far (window 147–177), the left hip roll within its window.
-    await page.evaluate(() => {
+    // A hand poses the limp robot in its zero pose (every joint at its stored zero), but the left knee too far
+    // (window 147–177) and the left hip roll moved within its window.
+    await page.evaluate((zeros) => {
+      for (const [id, z] of zeros.entries()) window.__rbcDemoSim?.poseByHand(id, z);
       window.__rbcDemoSim?.poseByHand(2, 180);
       window.__rbcDemoSim?.poseByHand(0, 130);
-    });
+    }, FACTORY);
     const summary = page.getByTestId("capture-summary");
     await summary.waitFor();
     expect(await text(summary)).toBe(
@@ -285,7 +287,11 @@ describe("capture zeros on the demo robot", () => {
     await page.getByRole("button", { name: "Capture again…" }).click();
     await page.getByRole("button", { name: "Make it limp and start the countdown" }).click();
     await countdown.filter({ hasText: "Reading in" }).waitFor();
-    await page.evaluate(() => window.__rbcDemoSim?.poseByHand(2, 170));
+    await page.evaluate((zeros) => {
+      for (const [id, z] of zeros.entries()) window.__rbcDemoSim?.poseByHand(id, z);
+      window.__rbcDemoSim?.poseByHand(2, 170);
+      window.__rbcDemoSim?.poseByHand(0, 130);
+    }, FACTORY);
     await summary.filter({ hasText: "All 16" }).waitFor();
     expect(await text(summary)).toBe(
       "All 16 positions are inside their windows; 2 differ from the stored zeros.",

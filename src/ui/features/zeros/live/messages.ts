@@ -59,6 +59,10 @@ export const zerosLiveMessages = defineMessages({
     en: "the zero pose with these servos moved: {list}",
     ko: "이 서보들을 움직인 영점 자세({list})",
   },
+  "live.poseOnTheWay": {
+    en: "whichever frame on the way to the zero pose reached them last",
+    ko: "영점 자세로 가는 도중 마지막으로 받은 프레임의 자세",
+  },
   "live.servoAt": { en: "servo {id} at {position}", ko: "서보 {id}번 {position}" },
   "live.notStarted": { en: "Trim live was not started.", ko: "실시간 영점 맞추기를 시작하지 않았어요." },
   "live.failed": { en: "Trim live failed.", ko: "실시간 영점 맞추기에 실패했어요." },
@@ -71,8 +75,8 @@ export const zerosLiveMessages = defineMessages({
   "live.run": { en: "Trim live", ko: "실시간 영점 맞추기" },
   // ---- A link lost during trim live (said on the next connection's Zeros view) ----
   "live.lost": {
-    en: "The link was lost during trim live ({time}).",
-    ko: "실시간 영점 맞추기 중에 통신이 끊어졌어요({time}).",
+    en: "The connection ended during trim live ({time}).",
+    ko: "실시간 영점 맞추기 중에 연결이 끊어졌어요({time}).",
   },
   "live.lostNothingWritten": {
     en: "No zeros were written: the robot keeps {zeros}. While it had power its servos held {pose}; it stays in servo control until it is switched off or the panel connects again.",

@@ -56,6 +56,8 @@ export interface LostTrim {
   writing?: number[];
   /** Servos moved away from the stored zero pose, with the position each last confirmed. */
   moved: { id: number; position: number | undefined }[];
+  /** The servos were on their way to (or back to) the zero pose: the last frame they got is not known. */
+  onTheWay?: boolean;
 }
 
 class LostTrimRecord implements Controller {
@@ -139,20 +141,9 @@ class TrimLive implements Controller {
 
   private check(s: AppState): void {
     const live = s.zeros.live;
-    if (!live || live.phase === "asking" || live.phase === "moving" || live.phase === "returning") return;
+    if (live?.phase !== "on") return;
     const c = s.connection;
-    if (c.phase !== "connected") {
-      this.ctx.session.pageScope.get(LOST_TRIM).lost = {
-        at: Date.now(),
-        stored: [...(s.zeros.stored ?? [])],
-        ...(live.phase === "writing" ? { writing: tableOf(s) } : {}),
-        moved: live.moved.map((id) => ({ id, position: live.positions[id] })),
-      };
-      this.end();
-      patchZeros(this.ctx.store, { live: undefined });
-      return;
-    }
-    if (live.phase !== "on") return;
+    if (c.phase !== "connected") return; // `dispose` (the connection's scope ends first) keeps what it left.
     if (c.limp) {
       this.end();
       patchZeros(this.ctx.store, {
@@ -174,8 +165,23 @@ class TrimLive implements Controller {
     this.unwatch();
   }
 
+  /**
+   * The connection ended (a pulled cable, a lost link, Disconnect): its scope ends before the state says so.
+   * Trim live under way leaves a record for the page: which zeros the robot has, what its servos held.
+   */
   dispose(): void {
     this.end();
+    const s = this.ctx.store.get();
+    const live = s.zeros.live;
+    if (!live || live.phase === "asking") return;
+    this.ctx.session.pageScope.get(LOST_TRIM).lost = {
+      at: Date.now(),
+      stored: [...(s.zeros.stored ?? [])],
+      ...(live.phase === "writing" ? { writing: tableOf(s) } : {}),
+      ...(live.phase === "moving" || live.phase === "returning" ? { onTheWay: true } : {}),
+      moved: live.moved.map((id) => ({ id, position: live.positions[id] })),
+    };
+    this.ctx.store.update((x) => ({ zeros: { ...x.zeros, live: undefined } }));
   }
 }
 
@@ -363,7 +369,9 @@ export function lostTrimNotice(lost: LostTrim, locale: Locale): Notice {
   const time = inEveryLanguage((l) => formatDateTime(new Date(lost.at), l));
   const positions: (number | undefined)[] = [];
   for (const m of lost.moved) positions[m.id] = m.position;
-  const pose = poseSaid({ moved: lost.moved.map((m) => m.id), positions });
+  const pose = lost.onTheWay
+    ? say("live.poseOnTheWay")
+    : poseSaid({ moved: lost.moved.map((m) => m.id), positions });
   return noticeOf("warning", locale, [
     say("live.lost", { time }),
     lost.writing
