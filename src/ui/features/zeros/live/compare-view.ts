@@ -45,7 +45,7 @@ export function comparePanel(ctx: ViewContext): TemplateResult | typeof nothing 
         ${result.differing.length === 0 ? t("compare.allSame") : t("compare.someDiffer", { count: result.differing.length, list })}
         ${other ? t("compare.otherRobot", { serial: kept.backup.serialNumber }) : nothing}
       </p>
-      <div class="kept-scroll">
+      <div class="compare-box">
         <table class="kept-table compare-table">
           <caption class="sr-only">${t("compare.caption")}</caption>
           <thead>

@@ -244,7 +244,7 @@ function captureResult(ctx: ViewContext, t: T, check: CaptureCheck): TemplateRes
     <p id="capture-result" tabindex="-1" class=${writable ? "" : "text-danger"} data-testid="capture-summary">
       ${captureSummary(ctx, t, check)}
     </p>
-    <div class="kept-scroll capture-scroll">
+    <div class="capture-scroll">
       <table class="kept-table capture-table" data-testid="capture-table">
         <caption class="sr-only">${t("capture.caption")}</caption>
         <thead>
