@@ -31,7 +31,7 @@ import {
 import { checkDraft, type DraftCheck, draftTable, jointName, pendingChanges } from "./editor.ts";
 import { sidesNote } from "./joints/joint-name.ts";
 import { comparePanel, compareWith } from "./live/compare-view.ts";
-import { captureResultPanel, livePanel, lostTrimPanel, trimOnBox } from "./live/live-view.ts";
+import { captureResultPanel, livePanel, liveStart, lostTrimPanel, trimOnBox } from "./live/live-view.ts";
 import { zerosLiveMessages } from "./live/messages.ts";
 import { type ZerosTranslator, zerosMessages } from "./messages.ts";
 import type { ZerosSource } from "./state.ts";
@@ -102,18 +102,18 @@ function row(
             ? html`<span class="muted" aria-hidden="true">·</span><span class="sr-only">${t("zeros.unchanged")}</span>`
             : formatDelta(delta, t.locale)
         }
-        ${
-          writeHere
-            ? html`<button
-                type="button"
-                class="btn btn--quiet btn--small write-here"
-                aria-label=${translator(zerosLiveMessages, t.locale)("live.writeHereLabel")}
-                aria-describedby="change-summary"
-                @click=${() => askToWrite(ctx)}
-              >${translator(zerosLiveMessages, t.locale)("live.writeHere")}</button>`
-            : nothing
-        }
       </td>
+      <td class="zero-write">${
+        writeHere
+          ? html`<button
+              type="button"
+              class="btn btn--quiet write-here"
+              aria-label=${translator(zerosLiveMessages, t.locale)("live.writeHereLabel")}
+              aria-describedby="change-summary"
+              @click=${() => askToWrite(ctx)}
+            >${translator(zerosLiveMessages, t.locale)("live.writeHere")}</button>`
+          : nothing
+      }</td>
     </tr>
   `;
 }
@@ -368,7 +368,7 @@ function renderConnected(ctx: ViewContext): TemplateResult {
       ${ready ? html`<p class="muted small sides-note" data-testid="sides-note">${sidesNote(locale)}</p>` : nothing}
       ${zeroTables(busy || !ready, ctx, t)}
       ${liveNotice(z.fileNotice, t("zeros.fileNoticeLabel"), locale)}
-      ${ready ? html`${livePanel(ctx, busy)}${captureResultPanel(ctx)}` : nothing}
+      ${ready ? html`${livePanel(ctx)}${captureResultPanel(ctx)}` : nothing}
       ${
         ready
           ? html`
@@ -383,6 +383,7 @@ function renderConnected(ctx: ViewContext): TemplateResult {
                       <th scope="col"><span class="sr-only">${t("zeros.colSlider")}</span></th>
                       <th scope="col">${t("zeros.colStored")}</th>
                       <th scope="col">${t("zeros.colChange")}</th>
+                      <th scope="col"><span class="sr-only">${translator(zerosLiveMessages, locale)("live.writeHere")}</span></th>
                     </tr>
                   </thead>
                   <tbody>
@@ -390,7 +391,7 @@ function renderConnected(ctx: ViewContext): TemplateResult {
                   </tbody>
                 </table>
                 <aside class="zeros-write" aria-label=${t("zeros.writePanel")} data-testid="zeros-write">
-                  ${trimOnBox(ctx)}
+                  ${z.live?.phase === "on" ? trimOnBox(ctx) : liveStart(ctx, busy || !ready)}
                   <p id="change-summary" class="change-summary" data-testid="change-summary">${changeSummary(t, changes, check)}</p>
                   ${writeControls(ctx, t, check, changes)}
                   ${liveNotice(z.result, t("zeros.resultLabel"), locale)}

@@ -23,27 +23,29 @@ type T = ReturnType<typeof translator<typeof zerosLiveMessages>>;
  * The Zeros view's "on the standing robot" panel: Trim live and Capture zeros (their questions, state and
  * results), and what a lost link left behind. The editor's table below is where the values change.
  */
-export function livePanel(ctx: ViewContext, disabled: boolean): TemplateResult {
+export function livePanel(ctx: ViewContext): TemplateResult {
   const { zeros: z, locale } = ctx.state;
   const t = translator(zerosLiveMessages, locale);
+  const lost = lostTrimPanel(ctx);
+  const asking = z.live !== undefined && z.live.phase !== "on";
+  const capturing = z.capture !== undefined && z.capture.phase !== "checked";
+  // Only while something is asked or under way does it take room above the table (issue 21 item 7: one screen).
   return html`
-    <section class="zeros-live" aria-labelledby="zeros-live-title" data-testid="zeros-live">
-      <h2 id="zeros-live-title" class="zeros-subtitle">${t("live.title")}</h2>
-      ${lostTrimPanel(ctx)}
-      ${
-        z.live
-          ? trimPart(ctx, t)
-          : z.capture && z.capture.phase !== "checked"
-            ? capturePart(ctx, t)
-            : startButtons(ctx, t, disabled || z.capture !== undefined)
-      }
-      ${liveNotice(z.liveNotice, t("live.noticeLabel"), locale)}
-      ${
-        z.liveRefused && z.liveNotice
-          ? html`<div class="write-row"><button type="button" class="btn btn--danger" data-testid="trim-stop" @click=${() => stopFromTrim(ctx)}>${t("live.stop")}</button></div>`
-          : nothing
-      }
-    </section>
+    ${
+      lost !== nothing || asking || capturing
+        ? html`<section class="zeros-live" aria-labelledby="zeros-live-title" data-testid="zeros-live">
+            <h2 id="zeros-live-title" class="zeros-subtitle">${t("live.title")}</h2>
+            ${lost}
+            ${asking ? trimPart(ctx, t) : capturing ? capturePart(ctx, t) : nothing}
+          </section>`
+        : nothing
+    }
+    ${liveNotice(z.liveNotice, t("live.noticeLabel"), locale)}
+    ${
+      z.liveRefused && z.liveNotice
+        ? html`<div class="write-row"><button type="button" class="btn btn--danger" data-testid="trim-stop" @click=${() => stopFromTrim(ctx)}>${t("live.stop")}</button></div>`
+        : nothing
+    }
   `;
 }
 
@@ -72,15 +74,20 @@ export function captureResultPanel(ctx: ViewContext): TemplateResult | typeof no
   `;
 }
 
-function startButtons(ctx: ViewContext, t: T, disabled: boolean): TemplateResult {
+/** Trim live… and Capture zeros…, in the Write panel beside the values (nothing asked or under way). */
+export function liveStart(ctx: ViewContext, disabled: boolean): TemplateResult {
+  const z = ctx.state.zeros;
+  const t = translator(zerosLiveMessages, ctx.state.locale);
+  const off = disabled || z.live !== undefined || (z.capture !== undefined && z.capture.phase !== "checked");
   return html`
-    <div class="zeros-live-start">
-    <p class="muted small">${t("live.intro")}</p>
+    <div class="zeros-live-start" role="group" aria-labelledby="live-start-title" aria-describedby="live-start-intro">
+    <p id="live-start-title" class="zeros-subtitle">${t("live.title")}</p>
+    <p id="live-start-intro" class="muted small">${t("live.intro")}</p>
     <div class="row-actions">
-      <button id="trim-live" type="button" class="btn" ?disabled=${disabled} @click=${() => askTrimLive(ctx)}>
+      <button id="trim-live" type="button" class="btn" ?disabled=${off} @click=${() => askTrimLive(ctx)}>
         ${t("live.trimButton")}
       </button>
-      <button id="capture-zeros" type="button" class="btn" ?disabled=${disabled} @click=${() => askCapture(ctx)}>
+      <button id="capture-zeros" type="button" class="btn" ?disabled=${off} @click=${() => askCapture(ctx)}>
         ${t("capture.button")}
       </button>
     </div>
@@ -113,7 +120,7 @@ function trimPart(ctx: ViewContext, t: T): TemplateResult {
       </p>`;
     case "on":
       // Its status and Cancel sit beside the values, in the Write panel (`trimOnBox`).
-      return html`<p class="muted small">${t("live.intro")}</p>`;
+      return html``;
   }
 }
 
