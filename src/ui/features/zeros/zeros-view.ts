@@ -32,7 +32,6 @@ import { checkDraft, type DraftCheck, draftTable, jointName, pendingChanges } fr
 import { sidesNote } from "./joints/joint-name.ts";
 import { comparePanel, compareWith } from "./live/compare-view.ts";
 import { captureResultPanel, livePanel, liveStart, lostTrimPanel, trimOnBox } from "./live/live-view.ts";
-import { zerosLiveMessages } from "./live/messages.ts";
 import { type ZerosTranslator, zerosMessages } from "./messages.ts";
 import type { ZerosSource } from "./state.ts";
 
@@ -108,10 +107,10 @@ function row(
           ? html`<button
               type="button"
               class="btn btn--quiet write-here"
-              aria-label=${translator(zerosLiveMessages, t.locale)("live.writeHereLabel")}
+              aria-label=${t("zeros.writeHereLabel")}
               aria-describedby="change-summary"
               @click=${() => askToWrite(ctx)}
-            >${translator(zerosLiveMessages, t.locale)("live.writeHere")}</button>`
+            >${t("zeros.writeHere")}</button>`
           : nothing
       }</td>
     </tr>
@@ -230,7 +229,6 @@ function zeroTables(disabled: boolean, ctx: ViewContext, t: ZerosTranslator): Te
 /** Every backup kept in this browser: when, which robot, the values, and Restore (into the editor). */
 function keptList(ctx: ViewContext, t: ZerosTranslator, disabled: boolean): TemplateResult {
   const kept = ctx.state.zeros.kept ?? [];
-  const lt = translator(zerosLiveMessages, t.locale);
   return html`
     <details class="kept-backups" data-testid="kept-backups" ?open=${ctx.state.zeros.compareWith !== undefined}>
       <summary id="kept-title" tabindex="-1">${t("zeros.keptTitle", { count: kept.length })}</summary>
@@ -260,11 +258,11 @@ function keptList(ctx: ViewContext, t: ZerosTranslator, disabled: boolean): Temp
                           type="button"
                           class="btn btn--quiet"
                           data-testid="compare-kept"
-                          aria-label=${lt("compare.buttonLabel", { saved })}
+                          aria-label=${t("zeros.compareLabel", { saved })}
                           aria-pressed=${ctx.state.zeros.compareWith === k.id ? "true" : "false"}
                           @click=${() => compareWith(ctx, ctx.state.zeros.compareWith === k.id ? undefined : k.id)}
                         >
-                          ${lt("compare.button")}
+                          ${t("zeros.compare")}
                         </button>
                         <button
                           type="button"
@@ -383,7 +381,7 @@ function renderConnected(ctx: ViewContext): TemplateResult {
                       <th scope="col"><span class="sr-only">${t("zeros.colSlider")}</span></th>
                       <th scope="col">${t("zeros.colStored")}</th>
                       <th scope="col">${t("zeros.colChange")}</th>
-                      <th scope="col"><span class="sr-only">${translator(zerosLiveMessages, locale)("live.writeHere")}</span></th>
+                      <th scope="col"><span class="sr-only">${t("zeros.writeHere")}</span></th>
                     </tr>
                   </thead>
                   <tbody>

@@ -159,14 +159,8 @@ export const zerosLiveMessages = defineMessages({
   },
   "capture.again": { en: "Capture again…", ko: "다시 잡기…" },
   "capture.close": { en: "Close", ko: "닫기" },
-  "capture.noticeLabel": { en: "Capture zeros", ko: "자세로 영점 잡기" },
   "capture.run": { en: "Capture zeros", ko: "자세로 영점 잡기" },
   // ---- Compare with a backup ----
-  "compare.button": { en: "Compare", ko: "비교" },
-  "compare.buttonLabel": {
-    en: "Compare the robot's zeros with the backup saved {saved}",
-    ko: "로봇의 영점을 {saved}에 저장한 백업과 비교",
-  },
   "compare.title": {
     en: "The robot's zeros against the backup saved {saved}",
     ko: "로봇의 영점과 {saved}에 저장한 백업",
@@ -205,10 +199,4 @@ export const zerosLiveMessages = defineMessages({
   },
   "compare.item": { en: "{joint} by {delta}", ko: "{joint} {delta}" },
   "compare.close": { en: "Close comparison", ko: "비교 닫기" },
-  // ---- Write beside the changed values ----
-  "live.writeHere": { en: "Write…", ko: "쓰기…" },
-  "live.writeHereLabel": {
-    en: "Write the changed zeros to the robot…",
-    ko: "바뀐 영점을 로봇에 쓰기…",
-  },
 });
