@@ -381,7 +381,7 @@ function renderConnected(ctx: ViewContext): TemplateResult {
                       <th scope="col"><span class="sr-only">${t("zeros.colSlider")}</span></th>
                       <th scope="col">${t("zeros.colStored")}</th>
                       <th scope="col">${t("zeros.colChange")}</th>
-                      <th scope="col"><span class="sr-only">${t("zeros.writeHere")}</span></th>
+                      <td class="zero-write"></td>
                     </tr>
                   </thead>
                   <tbody>

@@ -40,7 +40,7 @@ export function comparePanel(ctx: ViewContext): TemplateResult | typeof nothing 
     .join(", ");
   return html`
     <section class="compare" aria-labelledby="compare-title" data-testid="compare">
-      <h3 id="compare-title" tabindex="-1" class="zeros-subtitle">${t("compare.title", { saved })}</h3>
+      <h2 id="compare-title" tabindex="-1" class="zeros-subtitle">${t("compare.title", { saved })}</h2>
       <p data-testid="compare-summary">
         ${result.differing.length === 0 ? t("compare.allSame") : t("compare.someDiffer", { count: result.differing.length, list })}
         ${other ? t("compare.otherRobot", { serial: kept.backup.serialNumber }) : nothing}
