@@ -247,6 +247,27 @@ describe("trim live", () => {
     await page.getByTestId("connect-card").waitFor();
     await context.close();
   });
+
+  it("Disconnect during trim live leaves servo control first and says so on the Zeros view", async () => {
+    const { page, context } = await app.newPage({ options: FAST });
+    await openZeros(page);
+    await startTrim(page);
+    await page.locator("#zero-5").fill("126");
+    await lastMove(page, 126);
+    const mark = await writtenCount(page);
+    await page.getByRole("link", { name: "Robot" }).click();
+    await page.getByRole("button", { name: "Disconnect" }).click();
+    await page.getByRole("link", { name: "Zeros" }).click();
+    const lost = page.getByTestId("trim-lost");
+    await lost.waitFor();
+    expect(await text(lost)).toContain(
+      "Its servos hold the zero pose with these servos moved: servo 5 at 126: the panel left servo control as it disconnected.",
+    );
+    expect(await writtenSince(page, mark)).toEqual([DIRECT_OFF]);
+    expect(await page.evaluate(() => window.__rbcTest?.sim.directMode)).toBe(false);
+    expect(await passive(page)).toEqual([]);
+    await context.close();
+  });
 });
 
 describe("capture zeros on the demo robot", () => {

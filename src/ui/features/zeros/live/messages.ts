@@ -82,6 +82,10 @@ export const zerosLiveMessages = defineMessages({
     en: "No zeros were written: the robot keeps {zeros}. While it had power its servos held {pose}; it stays in servo control until it is switched off or the panel connects again.",
     ko: "영점은 쓰지 않았어요. 로봇의 영점은 그대로 {zeros}예요. 전원이 있는 동안 서보는 {pose}을(를) 유지했고, 로봇을 끄거나 패널이 다시 연결할 때까지 서보 제어 상태로 있어요.",
   },
+  "live.closedNothingWritten": {
+    en: "No zeros were written: the robot keeps {zeros}. Its servos hold {pose}: the panel left servo control as it disconnected.",
+    ko: "영점은 쓰지 않았어요. 로봇의 영점은 그대로 {zeros}예요. 서보는 {pose}을(를) 유지해요. 패널이 연결을 끊으면서 서보 제어를 끝냈어요.",
+  },
   "live.lostWriting": {
     en: "A write of {zeros} was under way: whether the robot took it is not known. Read the zeros after connecting.",
     ko: "{zeros}을(를) 쓰는 중이었어요. 로봇이 받았는지는 알 수 없어요. 연결한 뒤 영점을 다시 읽어 주세요.",

@@ -1,4 +1,4 @@
-import type { TetheredPlayResult } from "../../../../device/index.ts";
+import type { RbcClient, TetheredPlayResult } from "../../../../device/index.ts";
 import type { ParamArgs } from "../../../../i18n/catalogue.ts";
 import type { Locale } from "../../../../i18n/locale.ts";
 import { ZERO_COUNT } from "../../../../protocol/zeros.ts";
@@ -58,6 +58,8 @@ export interface LostTrim {
   moved: { id: number; position: number | undefined }[];
   /** The servos were on their way to (or back to) the zero pose: the last frame they got is not known. */
   onTheWay?: boolean;
+  /** Disconnect (the link was open: the panel sent the exit sequence), not a lost link. */
+  closed: boolean;
 }
 
 class LostTrimRecord implements Controller {
@@ -84,9 +86,12 @@ export function dismissLostTrim(ctx: AppContext): void {
 class TrimLive implements Controller {
   readonly sender: LatestMoveSender<number>;
   #unwatch: (() => void) | undefined;
+  /** This connection's client: when the scope ends, its mode tells a lost link from Disconnect. */
+  readonly #client: RbcClient | undefined;
 
   constructor(private readonly ctx: AppContext) {
     this.sender = new LatestMoveSender((id, position) => this.move(id, position));
+    this.#client = ctx.session.current;
   }
 
   private async move(id: number, position: number): Promise<void> {
@@ -179,6 +184,8 @@ class TrimLive implements Controller {
       stored: [...(s.zeros.stored ?? [])],
       ...(live.phase === "writing" ? { writing: tableOf(s) } : {}),
       ...(live.phase === "moving" || live.phase === "returning" ? { onTheWay: true } : {}),
+      // Disconnect closes a link that is still open, with direct mode's exit sequence (RbcConnection.close).
+      closed: this.#client !== undefined && this.#client.mode !== "disconnected",
       moved: live.moved.map((id) => ({ id, position: live.positions[id] })),
     };
     this.ctx.store.update((x) => ({ zeros: { ...x.zeros, live: undefined } }));
@@ -376,6 +383,8 @@ export function lostTrimNotice(lost: LostTrim, locale: Locale): Notice {
     say("live.lost", { time }),
     lost.writing
       ? say("live.lostWriting", { zeros: lost.writing.join(" ") })
-      : say("live.lostNothingWritten", { zeros: lost.stored.join(" "), pose }),
+      : lost.closed
+        ? say("live.closedNothingWritten", { zeros: lost.stored.join(" "), pose })
+        : say("live.lostNothingWritten", { zeros: lost.stored.join(" "), pose }),
   ]);
 }
