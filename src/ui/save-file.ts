@@ -2,7 +2,7 @@
  * Saves a file the panel made: through the browser's Save dialog where there is one (the File System Access
  * API, `showSaveFilePicker`: Chrome and Edge on a computer), so the page writes the file itself and knows the
  * name it went under; else as a download, which is only offered: the browser may ask where, rename it ("… (1)")
- * or be told no, and the page is never told. The same rule as the zero backups (features/zeros/backup-file.ts).
+ * or be told no, and the page is never told. The zero backups save through it too (features/zeros/backup-file.ts).
  */
 
 export type SavedFile =
@@ -34,7 +34,8 @@ function isAbort(e: unknown): boolean {
   return e instanceof DOMException && e.name === "AbortError";
 }
 
-function offerDownload(name: string, blob: Blob): void {
+/** Offers `blob` as a download named `name` (the browser decides where it goes; the page is never told). */
+export function offerDownload(name: string, blob: Blob): void {
   const url = URL.createObjectURL(blob);
   const a = document.createElement("a");
   a.href = url;

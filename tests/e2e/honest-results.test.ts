@@ -40,8 +40,9 @@ async function withSavePicker(page: Page, name: string | "cancel"): Promise<void
       return {
         name: chosen,
         createWritable: async () => ({
-          write: async (text: string) => {
-            w.__saved?.push(text);
+          // Text or a Blob: the panel's save paths write either (src/ui/save-file.ts writes a Blob).
+          write: async (data: string | Blob) => {
+            w.__saved?.push(typeof data === "string" ? data : await data.text());
           },
           close: async () => {},
         }),

@@ -52,7 +52,9 @@ async function withSavePicker(page: Page): Promise<void> {
     w.showSaveFilePicker = async ({ suggestedName }: { suggestedName: string }) => ({
       name: suggestedName,
       createWritable: async () => ({
-        write: async (blob: Blob) => {
+        // A Blob or text (UTF-8): the panel's save paths write either.
+        write: async (data: Blob | string) => {
+          const blob = typeof data === "string" ? new Blob([data]) : data;
           w.__saved?.push([...new Uint8Array(await blob.arrayBuffer())]);
         },
         close: async () => {},

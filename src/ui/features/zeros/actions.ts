@@ -30,6 +30,7 @@ import { type BackupFileOutcome, saveBackupFile } from "./backup-file.ts";
 import { refusal } from "./backup-refusal.ts";
 import { idbBackupStorage, type KeptBackup, keepBackup, keptBackups } from "./backup-store.ts";
 import { checkDraft, draftTable, factoryDraft, toDraft } from "./editor.ts";
+import { trimChanged, trimWriteBegins, trimWriteEnded } from "./live/trim-live.ts";
 import { zerosMessages } from "./messages.ts";
 import type { ZerosState } from "./state.ts";
 
@@ -43,6 +44,8 @@ export function setZeroText(ctx: AppContext, id: number, text: string): void {
   const draft = [...ctx.store.get().zeros.draft];
   draft[id] = text;
   patchZeros(ctx.store, { draft, confirming: false });
+  // Trim live: that servo moves to the new value (clamped), and only that one.
+  trimChanged(ctx, id, text);
 }
 
 /** "Write to robot…": asks once, in place, before anything is written. */
@@ -314,6 +317,9 @@ export async function writeZerosToRobot(ctx: AppContext): Promise<void> {
     });
     return;
   }
+  // Trim live on: Write leaves direct mode (the servos hold the trimmed pose) and ends it (trim-live.ts).
+  const trimming = trimWriteBegins(ctx);
+  const trimEnded = (): Said[] => (trimming ? [trimWriteEnded(ctx)] : []);
   patchZeros(store, { busy: "writing", confirming: false, result: undefined });
   let saved: BackupSaved | undefined;
   const c = store.get().connection;
@@ -342,7 +348,7 @@ export async function writeZerosToRobot(ctx: AppContext): Promise<void> {
         stored: outcome.current,
         draft: toDraft(outcome.current),
         source: { kind: "robot" },
-        result: noticeOf("ok", locale, [say("zeros.alreadyHeld")]),
+        result: noticeOf("ok", locale, [say("zeros.alreadyHeld"), ...trimEnded()]),
       });
       return;
     }
@@ -359,7 +365,14 @@ export async function writeZerosToRobot(ctx: AppContext): Promise<void> {
         : saved
           ? failureSentence(cause, saved, locale)
           : failureNotice(said(deviceOutcomeMessages, "outcome.zerosNotRead"), cause, locale);
-    patchZeros(store, { busy: undefined, result });
+    const ended = trimEnded();
+    patchZeros(store, {
+      busy: undefined,
+      result:
+        ended.length > 0 && result.said
+          ? noticeOf(result.tone, locale, [...result.said, ...ended], result.detail)
+          : result,
+    });
     return;
   }
   const verified = readBack.filter((v, id) => v === table[id]).length;
@@ -372,6 +385,7 @@ export async function writeZerosToRobot(ctx: AppContext): Promise<void> {
     result: noticeOf("verified", locale, [
       say("zeros.written", { read: verified, total: ZERO_COUNT }),
       ...(saved ? [whereSaid(saved)] : []),
+      ...trimEnded(),
     ]),
   });
 }

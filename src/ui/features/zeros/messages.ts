@@ -28,6 +28,17 @@ export const zerosMessages = defineMessages({
     en: "the backup kept in this browser, saved {saved}",
     ko: "이 브라우저에 보관한 백업({saved}에 저장)",
   },
+  "zeros.compare": { en: "Compare", ko: "비교" },
+  "zeros.compareLabel": {
+    en: "Compare the robot's zeros with the backup saved {saved}",
+    ko: "로봇의 영점을 {saved}에 저장한 백업과 비교",
+  },
+  "zeros.writeHere": { en: "Write…", ko: "쓰기…" },
+  "zeros.writeHereLabel": {
+    en: "Write the changed zeros to the robot…",
+    ko: "바뀐 영점을 로봇에 쓰기…",
+  },
+  "zeros.sourceCapture": { en: "the pose captured by hand", ko: "손으로 잡은 자세" },
   "zeros.tablesTitle": {
     en: "Factory zeros and the reference the robot checks against",
     ko: "공장 영점과 로봇이 비교하는 기준 영점",

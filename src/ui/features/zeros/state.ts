@@ -1,5 +1,6 @@
 import type { Notice } from "../../app-state.ts";
 import type { KeptBackup } from "./backup-store.ts";
+import type { CaptureState, TrimLiveState } from "./live/live-state.ts";
 
 /** Where the editor's values came from (the view says it in the panel's language). */
 export type ZerosSource =
@@ -7,7 +8,9 @@ export type ZerosSource =
   | { kind: "factory" }
   | { kind: "backup"; file: string }
   /** A backup kept in this browser, by its time stamp (ISO). */
-  | { kind: "kept"; savedAt: string };
+  | { kind: "kept"; savedAt: string }
+  /** A pose read from the limp robot ("Capture zeros"), by the robot clock's time it was read. */
+  | { kind: "capture" };
 
 /** The Zeros view's part of the app state. Reset with every connection. */
 export interface ZerosState {
@@ -23,6 +26,15 @@ export interface ZerosState {
   fileNotice?: Notice;
   /** The backups kept in this browser, newest first (read when the view opens and after each backup). */
   kept?: KeptBackup[];
+  /** Trim live: asked, moving to the zero pose, on (each change moves its servo), returning, writing. */
+  live?: TrimLiveState;
+  /** What trim live last said (it ended, was refused, failed); `refused`: the robot was busy, Stop beside it. */
+  liveNotice?: Notice;
+  liveRefused?: boolean;
+  /** Capture zeros: asked, making the robot limp, counting down, reading, the captured pose checked. */
+  capture?: CaptureState;
+  /** The kept backup (its id) the robot's zeros are compared with ("Compare with a backup"). */
+  compareWith?: string;
 }
 
 export function initialZeros(): ZerosState {

@@ -14,6 +14,8 @@ import {
 import { formatDateTime, formatDelta } from "../../format.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
+import { connectCard } from "../connection/connect-card.ts";
+import { unsupportedCard } from "../connection/unsupported-card.ts";
 import {
   askToWrite,
   backUpZeros,
@@ -21,13 +23,14 @@ import {
   loadKeptBackups,
   readZerosFromRobot,
   restoreFromFile,
-  restoreKeptBackup,
   setZeroText,
   useFactoryZeros,
   writeZerosToRobot,
 } from "./actions.ts";
 import { checkDraft, type DraftCheck, draftTable, jointName, pendingChanges } from "./editor.ts";
 import { sidesNote } from "./joints/joint-name.ts";
+import { keptList } from "./kept-list-view.ts";
+import { captureResultPanel, livePanel, liveStart, lostTrimPanel, trimOnBox } from "./live/live-view.ts";
 import { type ZerosTranslator, zerosMessages } from "./messages.ts";
 import type { ZerosSource } from "./state.ts";
 
@@ -44,8 +47,12 @@ function row(
   const storedValue = stored[id];
   const problem = check.problems.get(id);
   const delta = value !== undefined && storedValue !== undefined ? value - storedValue : 0;
-  const busy = ctx.state.zeros.busy !== undefined;
+  const z = ctx.state.zeros;
+  // Trim live on: the fields move their servo; while it moves, returns or writes, and during a capture, they wait.
+  const busy =
+    z.busy !== undefined || (z.live !== undefined && z.live.phase !== "on") || z.capture !== undefined;
   const name = jointName(id, t.locale);
+  const writeHere = !problem && delta !== 0 && !busy && !z.confirming && !z.live?.phase.startsWith("ask");
   return html`
     <tr class=${problem ? "is-invalid" : delta !== 0 ? "is-changed" : ""} data-servo=${id}>
       <td class="num zero-id">${id}</td>
@@ -94,6 +101,17 @@ function row(
             : formatDelta(delta, t.locale)
         }
       </td>
+      <td class="zero-write">${
+        writeHere
+          ? html`<button
+              type="button"
+              class="btn btn--quiet write-here"
+              aria-label=${t("zeros.writeHereLabel")}
+              aria-describedby="change-summary"
+              @click=${() => askToWrite(ctx)}
+            >${t("zeros.writeHere")}</button>`
+          : nothing
+      }</td>
     </tr>
   `;
 }
@@ -157,7 +175,7 @@ function writeControls(
         type="button"
         class="btn btn--primary"
         data-testid="write-zeros"
-        ?disabled=${!valid || changes.length === 0 || z.busy !== undefined}
+        ?disabled=${!valid || changes.length === 0 || z.busy !== undefined || (z.live !== undefined && z.live.phase !== "on") || (z.capture !== undefined && z.capture.phase !== "checked")}
         aria-describedby="write-why"
         @click=${() => askToWrite(ctx)}
       >
@@ -207,54 +225,6 @@ function zeroTables(disabled: boolean, ctx: ViewContext, t: ZerosTranslator): Te
   `;
 }
 
-/** Every backup kept in this browser: when, which robot, the values, and Restore (into the editor). */
-function keptList(ctx: ViewContext, t: ZerosTranslator, disabled: boolean): TemplateResult {
-  const kept = ctx.state.zeros.kept ?? [];
-  return html`
-    <details class="kept-backups" data-testid="kept-backups">
-      <summary>${t("zeros.keptTitle", { count: kept.length })}</summary>
-      ${
-        kept.length === 0
-          ? html`<p class="muted small">${t("zeros.keptNone")}</p>`
-          : html`<div class="kept-scroll">
-              <table class="kept-table">
-                <caption class="sr-only">${t("zeros.keptCaption")}</caption>
-                <thead>
-                  <tr>
-                    <th scope="col">${t("zeros.keptColDate")}</th>
-                    <th scope="col">${t("zeros.keptColSerial")}</th>
-                    <th scope="col">${t("zeros.keptColValues")}</th>
-                    <th scope="col"><span class="sr-only">${t("zeros.keptRestore")}</span></th>
-                  </tr>
-                </thead>
-                <tbody>
-                  ${kept.map((k) => {
-                    const saved = formatDateTime(new Date(k.backup.savedAt), t.locale);
-                    return html`<tr data-kept=${k.id}>
-                      <td class="num">${saved}</td>
-                      <td class="num">${k.backup.serialNumber}</td>
-                      <td class="num zero-list">${k.backup.zeros.join(" ")}</td>
-                      <td>
-                        <button
-                          type="button"
-                          class="btn btn--quiet"
-                          ?disabled=${disabled}
-                          aria-label=${t("zeros.keptRestoreLabel", { saved })}
-                          @click=${() => restoreKeptBackup(ctx, k)}
-                        >
-                          ${t("zeros.keptRestore")}
-                        </button>
-                      </td>
-                    </tr>`;
-                  })}
-                </tbody>
-              </table>
-            </div>`
-      }
-    </details>
-  `;
-}
-
 function sourceText(t: ZerosTranslator, source: ZerosSource): string {
   switch (source.kind) {
     case "robot":
@@ -265,17 +235,29 @@ function sourceText(t: ZerosTranslator, source: ZerosSource): string {
       return t("zeros.sourceBackup", { file: source.file });
     case "kept":
       return t("zeros.sourceKept", { saved: formatDateTime(new Date(source.savedAt), t.locale) });
+    case "capture":
+      return t("zeros.sourceCapture");
   }
 }
 
 function render(ctx: ViewContext): TemplateResult {
+  if (ctx.state.connection.phase !== "connected") {
+    // Not a robot view while disconnected: what a lost link left during trim live, then the connect card.
+    const card = ctx.state.serialSupported ? connectCard(ctx) : unsupportedCard(ctx);
+    return html`${lostTrimPanel(ctx)}${card}`;
+  }
+  return renderConnected(ctx);
+}
+
+function renderConnected(ctx: ViewContext): TemplateResult {
   const { zeros: z, locale } = ctx.state;
   const t = translator(zerosMessages, locale);
   const stored = z.stored;
   const ready = stored !== undefined && z.draft.length === ZERO_COUNT;
   const check = checkDraft(z.draft, locale);
   const changes = pendingChanges(stored, check);
-  const busy = z.busy !== undefined;
+  // Trim live or a capture under way: reading, backups and whole-table loads wait (each would end it).
+  const busy = z.busy !== undefined || z.live !== undefined || z.capture !== undefined;
   return html`
     <section class="card" aria-labelledby="view-title" data-testid="zeros-card">
       <div class="card-head">
@@ -324,6 +306,7 @@ function render(ctx: ViewContext): TemplateResult {
       ${ready ? html`<p class="muted small sides-note" data-testid="sides-note">${sidesNote(locale)}</p>` : nothing}
       ${zeroTables(busy || !ready, ctx, t)}
       ${liveNotice(z.fileNotice, t("zeros.fileNoticeLabel"), locale)}
+      ${ready ? html`${livePanel(ctx)}${captureResultPanel(ctx)}` : nothing}
       ${
         ready
           ? html`
@@ -338,6 +321,7 @@ function render(ctx: ViewContext): TemplateResult {
                       <th scope="col"><span class="sr-only">${t("zeros.colSlider")}</span></th>
                       <th scope="col">${t("zeros.colStored")}</th>
                       <th scope="col">${t("zeros.colChange")}</th>
+                      <td class="zero-write"></td>
                     </tr>
                   </thead>
                   <tbody>
@@ -345,7 +329,8 @@ function render(ctx: ViewContext): TemplateResult {
                   </tbody>
                 </table>
                 <aside class="zeros-write" aria-label=${t("zeros.writePanel")} data-testid="zeros-write">
-                  <p class="change-summary" data-testid="change-summary">${changeSummary(t, changes, check)}</p>
+                  ${z.live?.phase === "on" ? trimOnBox(ctx) : liveStart(ctx, busy || !ready)}
+                  <p id="change-summary" class="change-summary" data-testid="change-summary">${changeSummary(t, changes, check)}</p>
                   ${writeControls(ctx, t, check, changes)}
                   ${liveNotice(z.result, t("zeros.resultLabel"), locale)}
                 </aside>
@@ -360,7 +345,8 @@ function render(ctx: ViewContext): TemplateResult {
 }
 
 const zerosView: AppView = {
-  needsRobot: true,
+  // It draws the connect card itself while disconnected, below what a lost link left during trim live.
+  needsRobot: false,
   render,
   activate(ctx) {
     if (ctx.state.zeros.stored === undefined) void readZerosFromRobot(ctx);
