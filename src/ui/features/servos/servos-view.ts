@@ -4,6 +4,7 @@ import { live } from "lit-html/directives/live.js";
 import { translator } from "../../../i18n/translate.ts";
 import { formatClockTime } from "../../format.ts";
 import { liveRobotPanel } from "../../robot3d/live-robot.ts";
+import { wordOf } from "../../said.ts";
 import { shellMessages } from "../../shell/messages.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
@@ -92,7 +93,7 @@ function servoRow(ctx: ViewContext, t: ServosTranslator, id: number, enabled: bo
           @change=${(e: Event) => applyTypedTarget(ctx, id, (e.target as HTMLInputElement).value)}
         />
         <span id=${`servo-${id}-range`} class="zero-hint">${min}–${max}</span>
-        ${refused ? html`<span id=${`servo-${id}-refused`} class="text-danger small servo-refused" data-testid=${`servo-refused-${id}`}>${refused}</span>` : nothing}
+        ${refused ? html`<span id=${`servo-${id}-refused`} class="text-danger small servo-refused" data-testid=${`servo-refused-${id}`}>${wordOf(refused, t.locale)}</span>` : nothing}
       </td>
       <td class="servo-slider">
         <input
