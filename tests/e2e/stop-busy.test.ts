@@ -132,8 +132,14 @@ describe("in Korean", () => {
     );
     await busy.getByRole("button", { name: "정지" }).click();
     await releaseRobot(page);
-    await banner(page).filter({ hasText: "정지가 7을 보냈고 로봇이 받아들였어요" }).waitFor();
-    expect(squash(await banner(page).textContent())).toContain("어떤 모션이었는지는 응답으로 알 수 없어요.");
+    await banner(page).filter({ hasText: "로봇이 정지를 받았어요" }).waitFor();
+    expect(squash(await banner(page).locator(".banner-text > p").textContent())).toContain(
+      "어떤 모션이었는지는 로봇이 알려 주지 않아요.",
+    );
+    // The 7 and the 07, one click away, in Korean too.
+    expect(squash(await banner(page).getByTestId("notice-more").textContent())).toMatch(
+      /^정지가 7을 보냈고, 로봇이 .+ 뒤에 07로 응답했어요\.$/,
+    );
     await context.close();
   });
 });

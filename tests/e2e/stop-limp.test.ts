@@ -107,7 +107,7 @@ describe("Stop keeps the robot standing; Limp asks first", () => {
     await banner
       .getByTestId("notice-more")
       .filter({ hasText: "while motion 1, started here" })
-      .waitFor({ timeout: 8000 });
+      .waitFor({ state: "attached", timeout: 8000 });
     expect(await robot(page)).toEqual({ passive: NONE_PASSIVE, direct: false, playing: undefined });
     // Nothing stays in the way of the next motion.
     expect(await page.locator('[data-motion="4"]').isEnabled()).toBe(true);
