@@ -1,6 +1,7 @@
 import { translator } from "../../../i18n/translate.ts";
 import type { AppContext } from "../../context.ts";
 import { errorNotice } from "../../error-text.ts";
+import { said } from "../../said.ts";
 import { addMotionTexts } from "./files.ts";
 import { type MotionsKey, motionsMessages } from "./messages.ts";
 import { patchMotionFiles } from "./state.ts";
@@ -55,7 +56,7 @@ export async function openExample(ctx: AppContext, example: ExampleMotion): Prom
     text = (await example.load()).default;
   } catch (e) {
     patchMotionFiles(ctx.store, {
-      notice: errorNotice(t("motions.example.loadFailed", { file }), e, locale),
+      notice: errorNotice(said(motionsMessages, "motions.example.loadFailed", { file }), e, locale),
     });
     return;
   }

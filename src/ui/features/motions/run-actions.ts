@@ -14,6 +14,7 @@ import type { AppState, Notice } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { errorMessage, errorNotice, technicalDetail } from "../../error-text.ts";
 import { focusSoon } from "../../focus.ts";
+import { said } from "../../said.ts";
 import { type MotionRun, motionsController } from "./controllers.ts";
 import { type MotionsTranslator, motionsMessages } from "./messages.ts";
 import { formatSeconds } from "./plot-data.ts";
@@ -186,7 +187,7 @@ export async function stopMotion(ctx: AppContext): Promise<void> {
       runNotice:
         e instanceof RbcError && e.code === "cancelled"
           ? { tone: "warning", text: t("motions.run.endedByStop", { number: run.number }) }
-          : errorNotice(t("motions.run.stopFailed"), e, locale),
+          : errorNotice(said(motionsMessages, "motions.run.stopFailed"), e, locale),
     });
   } finally {
     patchMotions(store, { run: undefined });
@@ -216,7 +217,7 @@ export async function playSound(ctx: AppContext, n: number): Promise<void> {
       soundNotice:
         e instanceof RbcError && e.code === "cancelled"
           ? { tone: "warning", text: t("motions.sound.cancelled", { sound: n }) }
-          : errorNotice(t("motions.sound.failed", { sound: n }), e, locale),
+          : errorNotice(said(motionsMessages, "motions.sound.failed", { sound: n }), e, locale),
     });
   }
 }
