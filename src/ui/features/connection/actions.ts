@@ -106,10 +106,13 @@ export async function stopActivity(ctx: AppContext): Promise<void> {
   if (session.current === client) store.update({ stopNotice: notice });
 }
 
-/** "Limp…": asks first, in place (the robot falls unless someone holds it). */
+/**
+ * "Limp…": asks first, in place (the robot falls unless someone holds it). The question takes the place of an
+ * earlier Stop or Limp result, so the top bar says one thing at a time.
+ */
 export function askLimp(ctx: AppContext): void {
   if (!ctx.session.current) return;
-  ctx.store.update({ limpAsked: true });
+  ctx.store.update({ limpAsked: true, stopNotice: undefined });
   // Cancel first: Enter right after the question appears must not make the robot fall.
   focusSoon("cancel-limp");
 }
