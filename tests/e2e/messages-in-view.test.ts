@@ -104,7 +104,7 @@ describe("Stop's and Limp's results are seen and announced however far down the 
 });
 
 describe("messages made before a language switch follow it", () => {
-  it("a Servos result, a refusal under a field, and Stop's technical detail: Korean after the switch, English after the switch back", async () => {
+  it("a Servos result, a refusal under a field and Stop's result: Korean after the switch, English after the switch back", async () => {
     const { page, context } = await app.newPage();
     await connectRobot(page, app.url);
     await page.getByRole("link", { name: "Servos" }).click();
