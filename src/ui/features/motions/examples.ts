@@ -1,4 +1,4 @@
-import { translator } from "../../../i18n/translate.ts";
+import { noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { errorNotice } from "../../error-text.ts";
 import { said } from "../../said.ts";
@@ -49,7 +49,6 @@ export const EXAMPLE_MOTIONS: readonly ExampleMotion[] = [
 /** Opens an example as if the user had picked its file. */
 export async function openExample(ctx: AppContext, example: ExampleMotion): Promise<void> {
   const { locale } = ctx.store.get();
-  const t = translator(motionsMessages, locale);
   const file = example.fileName;
   let text: string;
   try {
@@ -62,5 +61,7 @@ export async function openExample(ctx: AppContext, example: ExampleMotion): Prom
   }
   addMotionTexts(ctx.store, [{ fileName: file, text }]);
   // Said in the "Opened files" live region, for screen readers (the file's card appears below).
-  patchMotionFiles(ctx.store, { notice: { tone: "info", text: t("motions.example.opened", { file }) } });
+  patchMotionFiles(ctx.store, {
+    notice: noticeOf("info", locale, [said(motionsMessages, "motions.example.opened", { file })]),
+  });
 }
