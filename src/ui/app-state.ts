@@ -51,6 +51,11 @@ export interface Notice {
   /** The device outcome's code, when the notice says one (a failed connect's `in-bootloader` offers Recover). */
   code?: RbcErrorCode;
   said?: readonly Said[];
+  /**
+   * The technical detail as messages (the 7 sent, the 07 answered), worded when drawn like `said` and shown one
+   * click away, before `detail` (which stays in English: a device error's own sentence).
+   */
+  more?: readonly Said[];
 }
 
 /** A notice kept as messages (worded again after a language switch); `text` is their wording in `locale`. */
@@ -61,6 +66,11 @@ export function noticeOf(tone: Tone, locale: Locale, sentences: readonly Said[],
 /** What a notice says in `locale`: worded from its messages when it has them, else as it was made. */
 export function noticeText(n: Notice, locale: Locale): string {
   return n.said ? wordsOf(n.said, locale) : n.text;
+}
+
+/** The technical detail of a notice kept as messages (`more`), in `locale`; undefined when it has none. */
+export function noticeMore(n: Notice, locale: Locale): string | undefined {
+  return n.more && n.more.length > 0 ? wordsOf(n.more, locale) : undefined;
 }
 
 export interface AppState {

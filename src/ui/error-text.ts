@@ -1,8 +1,8 @@
 import { errorText, technicalDetail } from "../device/error-text.ts";
 import type { Locale } from "../i18n/locale.ts";
-import { translator } from "../i18n/translate.ts";
-import type { Notice } from "./app-state.ts";
+import { type Notice, noticeOf } from "./app-state.ts";
 import { uiMessages } from "./messages.ts";
+import { inEveryLanguage, type Said, said, saidText } from "./said.ts";
 import { domErrorName } from "./serial-ports.ts";
 
 /**
@@ -22,26 +22,36 @@ export function errorMessage(e: unknown, locale: Locale = "en"): string {
   return errorText(e, locale);
 }
 
-/** A failure as a notice: `lead` (what was being done, in the panel's language) and what went wrong. */
-export function errorNotice(lead: string, e: unknown, locale: Locale = "en"): Notice {
+/**
+ * A failure as a notice: `lead` (what was being done) and what went wrong. Give the lead as a message
+ * (`said(…)`): the notice is then worded again after a language switch, the error's sentence too. A lead
+ * already worded (a string) stays in the language it was made in.
+ */
+export function errorNotice(lead: string | Said, e: unknown, locale: Locale = "en"): Notice {
+  if (typeof lead !== "string") return noticeOf("danger", locale, [lead, errorSaid(e)], technicalDetail(e));
   return { tone: "danger", text: `${lead} ${errorMessage(e, locale)}`, detail: technicalDetail(e) };
+}
+
+/** The error's sentence (RbcError and LinkError say what to do), as a message in every language. */
+export function errorSaid(e: unknown): Said {
+  return saidText(inEveryLanguage((locale) => errorMessage(e, locale)));
 }
 
 /** Why requestPort() failed, and whether to open the "Can't find your robot?" help. */
 export function chooserProblem(e: unknown, locale: Locale = "en"): { notice: Notice; showHelp: boolean } {
-  const t = translator(uiMessages, locale);
   const name = domErrorName(e);
+  const say = (key: "error.chooserNotFound" | "error.chooserSecurity") => [said(uiMessages, key)];
   if (name === "NotFoundError") {
     return {
-      notice: { tone: "warning", text: t("error.chooserNotFound"), detail: technicalDetail(e) },
+      notice: noticeOf("warning", locale, say("error.chooserNotFound"), technicalDetail(e)),
       showHelp: true,
     };
   }
   if (name === "SecurityError") {
     return {
-      notice: { tone: "danger", text: t("error.chooserSecurity"), detail: technicalDetail(e) },
+      notice: noticeOf("danger", locale, say("error.chooserSecurity"), technicalDetail(e)),
       showHelp: false,
     };
   }
-  return { notice: errorNotice(t("error.chooserFailed"), e, locale), showHelp: true };
+  return { notice: errorNotice(said(uiMessages, "error.chooserFailed"), e, locale), showHelp: true };
 }

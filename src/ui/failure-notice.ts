@@ -1,7 +1,7 @@
 import type { Locale } from "../i18n/locale.ts";
 import { type Notice, noticeOf } from "./app-state.ts";
-import { errorMessage, technicalDetail } from "./error-text.ts";
-import { inEveryLanguage, type Said, saidText } from "./said.ts";
+import { errorSaid, technicalDetail } from "./error-text.ts";
+import type { Said } from "./said.ts";
 
 /**
  * A failure as a notice kept as messages: `lead` (what was being done) and the error's own sentence, made in
@@ -12,7 +12,4 @@ export function failureNotice(lead: Said, e: unknown, locale: Locale): Notice {
   return noticeOf("danger", locale, [lead, errorSaid(e)], technicalDetail(e));
 }
 
-/** The error's sentence (RbcError and LinkError say what to do), as a message in every language. */
-export function errorSaid(e: unknown): Said {
-  return saidText(inEveryLanguage((locale) => errorMessage(e, locale)));
-}
+export { errorSaid };

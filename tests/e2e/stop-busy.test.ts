@@ -61,13 +61,20 @@ describe("a robot busy with a motion started by the remote", () => {
     await busy.getByRole("button", { name: "Stop" }).click();
     await releaseRobot(page);
     const said = banner(page).locator(".notice--ok");
-    await said.filter({ hasText: "Stop sent 7" }).waitFor();
-    expect(squash(await said.textContent())).toMatch(
-      /^The robot was busy playing a motion \(started with the remote or another program\)\. Stop sent 7 and the robot took it \(it answered 07 after \d\.\d s\): the motion ends at the end of its current scene and the robot holds that pose\. The reply does not say which motion it was\./,
+    await said.filter({ hasText: "It took Stop" }).waitFor();
+    expect(squash(await said.locator(".banner-text > p").textContent())).toBe(
+      "The robot was busy with a motion started with the remote or another program. It took Stop: it finishes the current scene and stands in that pose. Which motion it was, the robot does not say.",
+    );
+    // The 7 and the 07 are the technical detail, one click away.
+    const detail = said.getByTestId("notice-more");
+    expect(await detail.isVisible()).toBe(false);
+    await said.locator("summary").click();
+    expect(squash(await detail.textContent())).toMatch(
+      /^Stop sent 7; the robot answered 07 after \d\.\d s\.$/,
     );
     // The 07 came within the end of a scene (at most 1 s here), not at the end of motion 2's 6.6 s; the robot
     // stands, in packet mode.
-    const elapsed = Number(/answered 07 after (\d\.\d) s/.exec(squash(await said.textContent()))?.[1]);
+    const elapsed = Number(/answered 07 after (\d\.\d) s/.exec(squash(await detail.textContent()))?.[1]);
     expect(elapsed).toBeLessThanOrEqual(1);
     expect(await robot(page)).toMatchObject({ playing: undefined, anyPassive: false, direct: false });
     // Its main loop answered again: the busy sentence is gone.
@@ -85,7 +92,7 @@ describe("a robot busy with a motion started by the remote", () => {
     expect(await page.evaluate(() => window.__rbcTest?.sim.playFromRemote(10))).toBe(true);
     await page.getByRole("button", { name: "Stop", exact: true }).click();
     await releaseRobot(page);
-    await banner(page).filter({ hasText: "Stop sent 7 and the robot took it" }).waitFor();
+    await banner(page).filter({ hasText: "It took Stop" }).waitFor();
     expect(squash(await banner(page).textContent())).not.toContain("Nothing was running");
     expect(await robot(page)).toMatchObject({ playing: undefined, anyPassive: false, direct: false });
     // The probe (0x16, 0x12, 0x16, 0x12) and one 7: five packets reached the robot for this Stop.
@@ -125,8 +132,14 @@ describe("in Korean", () => {
     );
     await busy.getByRole("button", { name: "정지" }).click();
     await releaseRobot(page);
-    await banner(page).filter({ hasText: "정지가 7을 보냈고 로봇이 받아들였어요" }).waitFor();
-    expect(squash(await banner(page).textContent())).toContain("어떤 모션이었는지는 응답으로 알 수 없어요.");
+    await banner(page).filter({ hasText: "로봇이 정지를 받았어요" }).waitFor();
+    expect(squash(await banner(page).locator(".banner-text > p").textContent())).toContain(
+      "어떤 모션이었는지는 로봇이 알려 주지 않아요.",
+    );
+    // The 7 and the 07, one click away, in Korean too.
+    expect(squash(await banner(page).getByTestId("notice-more").textContent())).toMatch(
+      /^정지가 7을 보냈고, 로봇이 .+ 뒤에 07로 응답했어요\.$/,
+    );
     await context.close();
   });
 });

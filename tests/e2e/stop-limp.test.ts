@@ -79,15 +79,19 @@ describe("Stop keeps the robot standing; Limp asks first", () => {
     await page.locator("#confirm-move").click();
     await page.getByText("Motion 7 (Basic posture) finished.", { exact: false }).waitFor({ timeout: 8000 });
 
-    // Escape during motion 2 (6.6 s): Stop sends 7 and the robot confirms with 07.
+    // Escape during motion 2 (6.6 s): Stop sends 7 and the robot confirms with 07 (said in plain words; the 07
+    // is the technical detail).
     await startMotion(page, 2, "Get up B");
     const sentBefore = await page.evaluate(() => window.__rbcTest?.sim.stats.packetsReceived ?? 0);
     await blur(page);
     await page.keyboard.press("Escape");
     const banner = page.getByTestId("stop-banner");
-    await banner.filter({ hasText: "(the robot confirmed with 07)" }).waitFor({ timeout: 8000 });
-    expect(await banner.textContent().then(squash)).toContain(
-      "Motion 2 stopped at the end of its scene (the robot confirmed with 07). The robot keeps standing",
+    await banner.filter({ hasText: "The robot took Stop" }).waitFor({ timeout: 8000 });
+    expect(await banner.locator(".banner-text > p").textContent().then(squash)).toContain(
+      "The robot took Stop: it finishes the current scene and stands in that pose.",
+    );
+    expect(await banner.getByTestId("notice-more").textContent().then(squash)).toContain(
+      "Stop sent 7 while motion 2, started here, was playing, and the robot answered 07.",
     );
     expect(await robot(page)).toEqual({ passive: NONE_PASSIVE, direct: false, playing: undefined });
     // One packet: the 7 (no direct-mode switch, no passive command to any servo).
@@ -100,7 +104,10 @@ describe("Stop keeps the robot standing; Limp asks first", () => {
     // The red Stop button during motion 1 does the same.
     await startMotion(page, 1, "Get up A");
     await stopButton(page).click();
-    await banner.filter({ hasText: "Motion 1 stopped at the end of its scene" }).waitFor({ timeout: 8000 });
+    await banner
+      .getByTestId("notice-more")
+      .filter({ hasText: "while motion 1, started here" })
+      .waitFor({ state: "attached", timeout: 8000 });
     expect(await robot(page)).toEqual({ passive: NONE_PASSIVE, direct: false, playing: undefined });
     // Nothing stays in the way of the next motion.
     expect(await page.locator('[data-motion="4"]').isEnabled()).toBe(true);

@@ -37,7 +37,7 @@ describe("rbc stop and rbc limp", () => {
     const json = await runInProcess(["stop", "--demo", "--json"], { env });
     expect(text.code, text.stderr).toBe(0);
     expect(text.stdout).toMatch(
-      /^Asking the demo robot whether it is playing something…\nThe robot was busy playing a motion \(started with the remote or another program\)\. Stop sent 7 and the robot took it \(it answered 07 after 0\.\d s\): the motion ends at the end of its current scene and the robot holds that pose\. The reply does not say which motion it was\. No servo was made passive\.\n$/,
+      /^Asking the demo robot whether it is playing something…\nThe robot was busy with a motion started with the remote or another program\. It took Stop: it finishes the current scene and stands in that pose\. Which motion it was, the robot does not say\. Stop sent 7; the robot answered 07 after 0\.\d s\. No servo was made passive\.\n$/,
     );
     // One Run motion 7 out and its 07 back (docs/protocol.md §8), after the probe; nothing for the servos.
     expect(text.stderr.match(/FF FF AA 55 AA 55 37 BA 14 00 00 00 00 01 07 07/g)).toHaveLength(1);

@@ -54,7 +54,7 @@ describe("Stop when this client started nothing (busy probe, docs/protocol.md §
     expect(rig.sim.directMode).toBe(false);
     expect(rig.client.activity.doing.kind).toBe("idle");
     expect(stopFoundText(result.found!, "en")).toMatch(
-      /^The robot was busy playing a motion \(started with the remote or another program\)\. Stop sent 7 and the robot took it \(it answered 07 after 0\.\d s\): the motion ends at the end of its current scene and the robot holds that pose\. The reply does not say which motion it was\.$/,
+      /^The robot was busy with a motion started with the remote or another program\. It took Stop: it finishes the current scene and stands in that pose\. Which motion it was, the robot does not say\. Stop sent 7; the robot answered 07 after 0\.\d s\.$/,
     );
   });
 
@@ -138,7 +138,7 @@ describe("Stop when this client started nothing (busy probe, docs/protocol.md §
     expect(result.found).toMatchObject({ kind: "unconfirmed", noReply: { busy: true, cause: "busy" } });
     expect(stopFoundText(result.found!, "en")).toContain(
       // The wait: the end of a scene (1 s) or Basic posture after it (1.8 s), and the margin (2 s).
-      "Stop sent 7, but the robot did not answer 07 within 4.8 s. The robot is still busy",
+      "Stop was sent, but the robot did not confirm it within 4.8 s. Stop sent 7; the robot did not answer 07. The robot is still busy",
     );
     expect(rig.sim.servos.some((s) => s.passive)).toBe(false);
   });
@@ -218,10 +218,10 @@ describe("Stop's words when its 7 goes unanswered (the error code and the probe,
       },
     } as const;
     expect(stopFoundText(found, "en")).toBe(
-      "The robot was busy playing a motion (started with the remote or another program). Stop sent 7, but the robot did not answer 07 within 4.8 s. The robot reports error 11: a servo does not answer: check the servo cables and the battery.",
+      "The robot was busy with a motion started with the remote or another program. Stop was sent, but the robot did not confirm it within 4.8 s. Stop sent 7; the robot did not answer 07. The robot reports error 11: a servo does not answer: check the servo cables and the battery.",
     );
     expect(stopFoundText(found, "ko")).toBe(
-      "로봇이 모션을 재생하느라 바빴어요 (리모컨이나 다른 프로그램으로 시작한 모션). 정지가 7을 보냈지만 로봇이 4.8초 안에 07로 응답하지 않았어요. 로봇이 오류 11을 알려요. 서보가 응답하지 않아요. 서보 케이블과 배터리를 확인해 주세요.",
+      "로봇이 리모컨이나 다른 프로그램으로 시작한 모션을 하고 있었어요. 정지를 보냈지만 로봇이 4.8초 안에 받았다고 확인하지 않았어요. 정지가 7을 보냈지만 로봇이 07로 응답하지 않았어요. 로봇이 오류 11을 알려요. 서보가 응답하지 않아요. 서보 케이블과 배터리를 확인해 주세요.",
     );
   });
 });

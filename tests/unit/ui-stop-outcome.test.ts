@@ -1,4 +1,5 @@
 import { describe, expect, it } from "vitest";
+import { noticeMore, noticeText } from "../../src/ui/app-state.ts";
 import { stopOutcome } from "../../src/ui/features/connection/stop-outcome.ts";
 
 /** The top bar's sentence after Stop says only what the robot confirmed (src/ui/features/connection/stop-outcome.ts). */
@@ -66,5 +67,31 @@ describe("Stop's outcome sentence", () => {
     expect(stopOutcome(left, true).text).toBe(
       "Servo control ended (the robot is back in its normal mode); the servos stay limp (Limp).",
     );
+  });
+
+  it("says first in plain words what Stop meant for the robot; the 7 and the 07 are the detail, which names no stopped motion", () => {
+    const stopped = stopOutcome({ ...base, motion: { number: 2, outcome: "stopped" } }, false);
+    expect(noticeText(stopped, "en")).toBe(
+      "The robot took Stop: it finishes the current scene and stands in that pose. Basic posture (7) straightens it. Servo moves stopped: no further move is sent, and the servos hold their last position.",
+    );
+    expect(noticeText(stopped, "ko")).toMatch(
+      /^로봇이 정지를 받았어요\. 지금 장면까지 마치고 그 자세로 서 있어요\./,
+    );
+    for (const locale of ["en", "ko"] as const) expect(noticeText(stopped, locale)).not.toMatch(/\b07\b/);
+    // docs/protocol.md §3.1: a 07 reply says that what played ended, not which motion it was.
+    expect(noticeMore(stopped, "en")).toBe(
+      "Stop sent 7 while motion 2, started here, was playing, and the robot answered 07. That reply says that what the robot was playing ended at the end of a scene; it does not say which motion that was.",
+    );
+    expect(noticeMore(stopped, "ko")).toContain("07로 응답했어요");
+
+    const unconfirmed = stopOutcome({ ...base, motion: { number: 2, outcome: "unconfirmed" } }, false);
+    expect(unconfirmed.tone).toBe("warning");
+    expect(noticeText(unconfirmed, "en")).toMatch(
+      /^Stop was sent, but the robot did not confirm that it took it\./,
+    );
+    expect(noticeMore(unconfirmed, "en")).toBe(
+      "Stop's 7 to end motion 2 was not answered with 07 in time (or could not be sent).",
+    );
+    expect(noticeMore(stopOutcome(base, false), "en")).toBeUndefined();
   });
 });

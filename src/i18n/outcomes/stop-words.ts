@@ -10,18 +10,23 @@ import { stopOutcomeMessages as messages } from "./stop-messages.ts";
 const t = (locale: Locale) => translator(messages, locale);
 const seconds = (ms: number, locale: Locale) => formatSeconds(ms / 1000, locale);
 
-/** What Stop found and did when the program had started nothing, never more certain than the robot's replies. */
+/**
+ * What Stop found and did when the program had started nothing, never more certain than the robot's replies: the
+ * plain sentence, then its technical detail (the command line has no "one click away").
+ */
 export function stopFoundText(found: StopFound, locale: Locale): string {
   switch (found.kind) {
     case "idle":
       return t(locale)("outcome.stop.idle");
-    case "stopped":
-      return t(locale)("outcome.stop.busyStopped", { elapsed: seconds(found.elapsedMs, locale) });
+    case "stopped": {
+      const elapsed = seconds(found.elapsedMs, locale);
+      return `${t(locale)("outcome.stop.busyStopped")} ${t(locale)("outcome.stop.busyStopped.detail", { elapsed })}`;
+    }
     case "unconfirmed": {
-      const lead = t(locale)("outcome.stop.busyUnconfirmed", {
-        wait: seconds(found.noReply.waitedMs, locale),
-      });
-      return `${lead} ${noReplyCauseText(found.noReply, locale)}`;
+      const wait = seconds(found.noReply.waitedMs, locale);
+      const lead = t(locale)("outcome.stop.busyUnconfirmed", { wait });
+      const detail = t(locale)("outcome.stop.busyUnconfirmed.detail");
+      return `${lead} ${detail} ${noReplyCauseText(found.noReply, locale)}`;
     }
     case "no-answer":
       return t(locale)("outcome.stop.noAnswer", { wait: formatMilliseconds(found.waitedMs, locale) });

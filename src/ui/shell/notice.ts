@@ -1,7 +1,7 @@
 import { html, nothing, type TemplateResult } from "lit-html";
 import type { Locale } from "../../i18n/locale.ts";
 import { translator } from "../../i18n/translate.ts";
-import { type Notice, noticeText } from "../app-state.ts";
+import { type Notice, noticeMore, noticeText } from "../app-state.ts";
 import { shellMessages } from "./messages.ts";
 
 /**
@@ -13,16 +13,23 @@ export function notice(n: Notice | undefined, locale: Locale = "en"): TemplateRe
   return html`
     <div class="notice notice--${n.tone}">
       <p>${noticeText(n, locale)}</p>
-      ${
-        n.detail
-          ? html`<details class="detail">
-              <summary>${translator(shellMessages, locale)("shell.technicalDetail")}</summary>
-              <pre lang="en">${n.detail}</pre>
-            </details>`
-          : nothing
-      }
+      ${noticeDetail(n, locale)}
     </div>
   `;
+}
+
+/**
+ * A notice's technical detail, one click away: its detail kept as messages (worded in `locale`), then the
+ * device's own English sentence. Nothing when it has neither.
+ */
+export function noticeDetail(n: Notice, locale: Locale): TemplateResult | typeof nothing {
+  const more = noticeMore(n, locale);
+  if (!more && !n.detail) return nothing;
+  return html`<details class="detail">
+    <summary>${translator(shellMessages, locale)("shell.technicalDetail")}</summary>
+    ${more ? html`<p class="small" data-testid="notice-more">${more}</p>` : nothing}
+    ${n.detail ? html`<pre lang="en">${n.detail}</pre>` : nothing}
+  </details>`;
 }
 
 /**

@@ -1,7 +1,7 @@
-import { translator } from "../../../i18n/translate.ts";
-import type { AppState } from "../../app-state.ts";
+import { type AppState, noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { focusSoon } from "../../focus.ts";
+import { said } from "../../said.ts";
 import { forgetPort, grantedPorts, webSerial } from "../../serial-ports.ts";
 import type { Store } from "../../store.ts";
 import { stopClassRobots } from "../class/stop-all.ts";
@@ -34,14 +34,17 @@ export async function refreshKnownPorts(store: Store<AppState>): Promise<void> {
 }
 
 export async function forgetKnownPort(ctx: AppContext, port: SerialPort): Promise<void> {
-  const t = translator(connectionMessages, ctx.store.get().locale);
+  const { locale } = ctx.store.get();
   try {
     if (!(await forgetPort(port))) {
-      setConnection(ctx.store, { problem: { tone: "warning", text: t("connection.cannotForget") } });
+      const problem = noticeOf("warning", locale, [said(connectionMessages, "connection.cannotForget")]);
+      setConnection(ctx.store, { problem });
     }
   } catch (e) {
-    const { errorNotice } = await failureWords();
-    setConnection(ctx.store, { problem: errorNotice(t("connection.forgetFailed"), e, t.locale) });
+    const { failureNotice } = await failureWords();
+    setConnection(ctx.store, {
+      problem: failureNotice(said(connectionMessages, "connection.forgetFailed"), e, locale),
+    });
   }
   await refreshKnownPorts(ctx.store);
 }
@@ -103,10 +106,13 @@ export async function stopActivity(ctx: AppContext): Promise<void> {
   if (session.current === client) store.update({ stopNotice: notice });
 }
 
-/** "Limp…": asks first, in place (the robot falls unless someone holds it). */
+/**
+ * "Limp…": asks first, in place (the robot falls unless someone holds it). The question takes the place of an
+ * earlier Stop or Limp result, so the top bar says one thing at a time.
+ */
 export function askLimp(ctx: AppContext): void {
   if (!ctx.session.current) return;
-  ctx.store.update({ limpAsked: true });
+  ctx.store.update({ limpAsked: true, stopNotice: undefined });
   // Cancel first: Enter right after the question appears must not make the robot fall.
   focusSoon("cancel-limp");
 }

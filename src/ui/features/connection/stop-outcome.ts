@@ -48,37 +48,86 @@ function playStopped(play: NonNullable<StopActivityResult["tetheredPlay"]>): Sai
     : say("stop.outcome.playStoppedScene", { scene: String(lastFrame.scene), frame, sent, total });
 }
 
+/** Plain sentences, and their technical detail (shown one click away). */
+interface Worded {
+  said: Said[];
+  more: Said[];
+}
+
 /**
  * What Stop found when the panel had started nothing (docs/protocol.md §3.6): the outcome catalogue's words
  * (src/i18n/outcomes/stop-messages.ts), which `rbc stop` says too.
  */
 export function foundSaid(found: StopFound): Said[] {
+  return foundWorded(found).said;
+}
+
+function foundWorded(found: StopFound): Worded {
   const seconds = (ms: number) => inEveryLanguage((l) => formatSeconds(ms / 1000, l));
   switch (found.kind) {
     case "idle":
-      return [said(stopOutcomeMessages, "outcome.stop.idle")];
+      return { said: [said(stopOutcomeMessages, "outcome.stop.idle")], more: [] };
     case "stopped":
-      return [said(stopOutcomeMessages, "outcome.stop.busyStopped", { elapsed: seconds(found.elapsedMs) })];
-    case "unconfirmed":
-      return [
-        said(stopOutcomeMessages, "outcome.stop.busyUnconfirmed", { wait: seconds(found.noReply.waitedMs) }),
-        saidText(inEveryLanguage((l) => noReplyCauseText(found.noReply, l))),
-      ];
+      return {
+        said: [said(stopOutcomeMessages, "outcome.stop.busyStopped")],
+        more: [
+          said(stopOutcomeMessages, "outcome.stop.busyStopped.detail", { elapsed: seconds(found.elapsedMs) }),
+        ],
+      };
+    case "unconfirmed": {
+      const wait = seconds(found.noReply.waitedMs);
+      return {
+        said: [
+          said(stopOutcomeMessages, "outcome.stop.busyUnconfirmed", { wait }),
+          saidText(inEveryLanguage((l) => noReplyCauseText(found.noReply, l))),
+        ],
+        more: [said(stopOutcomeMessages, "outcome.stop.busyUnconfirmed.detail")],
+      };
+    }
     case "no-answer":
-      return [
-        said(stopOutcomeMessages, "outcome.stop.noAnswer", {
-          wait: inEveryLanguage((l) => formatMilliseconds(found.waitedMs, l)),
-        }),
-      ];
+      return {
+        said: [
+          said(stopOutcomeMessages, "outcome.stop.noAnswer", {
+            wait: inEveryLanguage((l) => formatMilliseconds(found.waitedMs, l)),
+          }),
+        ],
+        more: [],
+      };
+  }
+}
+
+/** How a motion this panel started ended when Stop sent 7: the plain sentence and the 7/07 detail. */
+function motionWorded(motion: NonNullable<StopActivityResult["motion"]>): Worded {
+  const number = { motion: String(motion.number) };
+  switch (motion.outcome) {
+    case "stopped":
+      return {
+        said: [say("stop.outcome.motionStopped")],
+        more: [say("stop.outcome.motionStopped.detail", number)],
+      };
+    case "ended-then-posture":
+      return {
+        said: [say("stop.outcome.motionEnded")],
+        more: [say("stop.outcome.motionEnded.detail", number)],
+      };
+    case "posture":
+      return { said: [say("stop.outcome.posture")], more: [say("stop.outcome.posture.detail")] };
+    case "unconfirmed":
+      return {
+        said: [say("stop.outcome.motionUnconfirmed")],
+        more: [say("stop.outcome.motionUnconfirmed.detail", number)],
+      };
   }
 }
 
 /**
- * What Stop did, as plain sentences, never more certain than the robot confirmed. `limp` says whether every
- * servo had been made limp before (Stop does not change that).
+ * What Stop did, as plain sentences, never more certain than the robot confirmed; the 7 sent and the 07
+ * answered are the technical detail (`more`). `limp` says whether every servo had been made limp before (Stop
+ * does not change that).
  */
 export function stopOutcome(result: StopActivityResult, limp: boolean, locale: Locale = "en"): Notice {
   const parts: Said[] = [];
+  const more: Said[] = [];
   let unsure = false;
   if (result.uploadCancelled) parts.push(say("stop.outcome.uploadCancelled"));
   if (result.sound) {
@@ -90,22 +139,10 @@ export function stopOutcome(result: StopActivityResult, limp: boolean, locale: L
     }
   }
   if (result.motion) {
-    const motion = String(result.motion.number);
-    switch (result.motion.outcome) {
-      case "stopped":
-        parts.push(say("stop.outcome.motionStopped", { motion }));
-        break;
-      case "ended-then-posture":
-        parts.push(say("stop.outcome.motionEnded", { motion }));
-        break;
-      case "posture":
-        parts.push(say("stop.outcome.posture"));
-        break;
-      case "unconfirmed":
-        unsure = true;
-        parts.push(say("stop.outcome.motionUnconfirmed", { motion }));
-        break;
-    }
+    const worded = motionWorded(result.motion);
+    parts.push(...worded.said);
+    more.push(...worded.more);
+    unsure ||= result.motion.outcome === "unconfirmed";
   }
   if (result.tetheredPlay) parts.push(playStopped(result.tetheredPlay));
   if (result.leftDirectMode) {
@@ -114,11 +151,14 @@ export function stopOutcome(result: StopActivityResult, limp: boolean, locale: L
     parts.push(limp ? say("stop.outcome.servoMovesLimp") : say("stop.outcome.servoMoves"));
   }
   if (result.found) {
-    parts.push(...foundSaid(result.found));
+    const worded = foundWorded(result.found);
+    parts.push(...worded.said);
+    more.push(...worded.more);
     unsure ||= result.found.kind === "unconfirmed" || result.found.kind === "no-answer";
   }
   if (parts.length === 0) parts.push(say("stop.outcome.nothing"));
-  return noticeOf(unsure ? "warning" : "ok", locale, parts);
+  const notice = noticeOf(unsure ? "warning" : "ok", locale, parts);
+  return more.length > 0 ? { ...notice, more } : notice;
 }
 
 /** Stop failed: the lead, beside the failure's own sentence (`failureNotice`). */

@@ -5,7 +5,7 @@ import { platformName } from "../../../protocol/platform.ts";
 import { formatFirmware } from "../../../shared/format.ts";
 import { noticeText } from "../../app-state.ts";
 import { uiMessages } from "../../messages.ts";
-import { shellMessages } from "../../shell/messages.ts";
+import { noticeDetail } from "../../shell/notice.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
 import { askLimp, cancelLimp, dismissStopNotice, limpAll, stopActivity } from "./actions.ts";
 import { type ConnectionTranslator, connectionMessages } from "./messages.ts";
@@ -98,9 +98,9 @@ export function topBar(ctx: ViewContext): TemplateResult {
             </div>`
           : nothing
       }
+      ${connected && ctx.state.limpAsked ? limpQuestion(ctx, t) : nothing}
       ${stopResult(ctx)}
     </header>
-    ${connected && ctx.state.limpAsked ? limpQuestion(ctx, t) : nothing}
   `;
 }
 
@@ -113,7 +113,6 @@ export function topBar(ctx: ViewContext): TemplateResult {
 function stopResult(ctx: ViewContext): TemplateResult {
   const n = ctx.state.stopNotice;
   const { locale } = ctx.state;
-  const t = translator(shellMessages, locale);
   const c = ctx.state.connection;
   // A robot found busy with a motion started elsewhere (docs/protocol.md §3.6): said with a Stop right there.
   const busy = c.phase === "connected" && c.busy ? c.busyNotice : undefined;
@@ -132,14 +131,7 @@ function stopResult(ctx: ViewContext): TemplateResult {
       ? html`<div class="notice notice--${n.tone} banner-notice">
           <div class="banner-text">
             <p>${noticeText(n, locale)}</p>
-            ${
-              n.detail
-                ? html`<details class="detail">
-                    <summary>${t("shell.technicalDetail")}</summary>
-                    <pre lang="en">${n.detail}</pre>
-                  </details>`
-                : nothing
-            }
+            ${noticeDetail(n, locale)}
           </div>
           <button type="button" class="btn btn--quiet" @click=${() => dismissStopNotice(ctx)}>
             ${translator(connectionMessages, locale)("connection.dismiss")}
@@ -150,7 +142,8 @@ function stopResult(ctx: ViewContext): TemplateResult {
 }
 
 /**
- * Limp asks first, in place under the top bar: every servo goes passive and a standing robot falls. Escape or
+ * Limp asks first, in place in the top bar (which stays at the top of the window, so the page keeps its place
+ * however far down it was): every servo goes passive and a standing robot falls. Escape or
  * Cancel closes the question (Escape never makes a servo limp); the safe choice is the one focused first.
  */
 function limpQuestion(ctx: ViewContext, t: ConnectionTranslator): TemplateResult {

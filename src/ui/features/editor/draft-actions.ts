@@ -1,7 +1,9 @@
 import type { Locale } from "../../../i18n/locale.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { type Motion, newMotion, openMotion, saveMotion } from "../../../motion/index.ts";
+import { noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
+import { inEveryLanguage, said } from "../../said.ts";
 import { editorController } from "./controller.ts";
 import { DRAFT_OPEN_TIMEOUT_MS, DraftTimeoutError, withDeadline } from "./draft-deadline.ts";
 import {
@@ -178,24 +180,27 @@ function finishStart(ctx: AppContext, latest: LatestDraft, listProblem: string |
     if (!restored) {
       const started = startDocument(s, newMotion({ zeros: robotZeros(ctx) }), undefined);
       if (!setAside) return { ...started, ...common };
-      const text = t("editor.drafts.setAside", { name: setAside.name, problem: setAside.problem });
-      return { ...started, ...common, notice: { tone: "warning", text } };
+      const text = said(editorMessages, "editor.drafts.setAside", {
+        name: setAside.name,
+        problem: setAside.problem,
+      });
+      return { ...started, ...common, notice: noticeOf("warning", locale, [text]) };
     }
     const { record, doc } = restored;
-    const restoredText = t("editor.drafts.restored", {
-      name: doc.name,
-      time: formatSavedAt(record.savedAt, Date.now(), locale),
-    });
+    // Kept as messages (worded when drawn), so "Draft restored…" follows a language switch.
+    const now = Date.now();
+    const time = inEveryLanguage((l) => formatSavedAt(record.savedAt, now, l));
+    const restoredText = said(editorMessages, "editor.drafts.restored", { name: doc.name, time });
     const asideText = setAside
-      ? t("editor.drafts.setAside", { name: setAside.name, problem: setAside.problem })
+      ? said(editorMessages, "editor.drafts.setAside", { name: setAside.name, problem: setAside.problem })
       : undefined;
     return {
       ...startDocument(s, doc, record.id),
       ...common,
       savedAt: record.savedAt,
       notice: asideText
-        ? { tone: "warning", text: `${restoredText} ${asideText}` }
-        : { tone: "info", text: restoredText },
+        ? noticeOf("warning", locale, [restoredText, asideText])
+        : noticeOf("info", locale, [restoredText]),
     };
   });
 }

@@ -7,6 +7,7 @@ import { translator } from "../../../i18n/translate.ts";
 import { HUNO_SERVO_IDS } from "../../../protocol/servo-limits.ts";
 import type { AppContext } from "../../context.ts";
 import { errorNotice } from "../../error-text.ts";
+import { said } from "../../said.ts";
 import { servosTaken } from "../connection/actions.ts";
 import { clampToSafe, DEFAULT_TORQUE } from "../servos/state.ts";
 import { liveOf, patchTeachIn, teachInOn } from "./live-state.ts";
@@ -66,7 +67,7 @@ export async function holdPassive(ctx: AppContext): Promise<void> {
   } catch (e) {
     patchTeachIn(store, {
       busy: undefined,
-      notice: errorNotice(t("editor.teach.holdFailed"), e, t.locale),
+      notice: errorNotice(said(editorMessages, "editor.teach.holdFailed"), e, t.locale),
     });
   }
 }
@@ -84,7 +85,7 @@ export async function endTeachIn(ctx: AppContext): Promise<void> {
     patchTeachIn(store, {
       phase: "on",
       busy: undefined,
-      notice: errorNotice(t("editor.teach.endHoldFailed"), e, t.locale),
+      notice: errorNotice(said(editorMessages, "editor.teach.endHoldFailed"), e, t.locale),
     });
     return;
   }
@@ -104,7 +105,7 @@ export async function endTeachIn(ctx: AppContext): Promise<void> {
     patchTeachIn(store, {
       phase: "off",
       busy: undefined,
-      notice: errorNotice(t("editor.teach.leaveFailed"), e, t.locale),
+      notice: errorNotice(said(editorMessages, "editor.teach.leaveFailed"), e, t.locale),
     });
     return;
   }

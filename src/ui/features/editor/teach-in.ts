@@ -11,6 +11,7 @@ import type { SimulatedRbc } from "../../../sim/simulated-rbc.ts";
 import type { AppContext } from "../../context.ts";
 import { errorMessage, errorNotice, technicalDetail } from "../../error-text.ts";
 import { focusSoon } from "../../focus.ts";
+import { said } from "../../said.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
 import type { EditorHost } from "./host.ts";
 import { type Limb, liveOf, patchTeachIn, sceneNumber, teachInOn } from "./live-state.ts";
@@ -138,7 +139,9 @@ export async function startTeachIn(ctx: AppContext): Promise<void> {
       });
     }
   } catch (e) {
-    patchTeachIn(store, { notice: errorNotice(t("editor.teach.onReadFailed"), e, t.locale) });
+    patchTeachIn(store, {
+      notice: errorNotice(said(editorMessages, "editor.teach.onReadFailed"), e, t.locale),
+    });
   }
 }
 
@@ -282,7 +285,7 @@ export async function readIntoScene(ctx: AppContext, host: EditorHost): Promise<
       notice:
         e instanceof MotionError
           ? { tone: "danger", text: t("editor.teach.sceneUnchanged", { reason: refusalText(e, t) }) }
-          : errorNotice(t("editor.teach.readFailed", { scene: n }), e, t.locale),
+          : errorNotice(said(editorMessages, "editor.teach.readFailed", { scene: n }), e, t.locale),
     });
   }
 }

@@ -12,10 +12,11 @@ import { firmwareFailureText, firmwareResultText } from "../../../i18n/outcomes/
 import { translator } from "../../../i18n/translate.ts";
 import { declaredVersion } from "../../../protocol/firmware-marker.ts";
 import { MAX_HEX_TEXT_CHARS, parseIntelHex } from "../../../protocol/intel-hex.ts";
-import type { Notice } from "../../app-state.ts";
+import { type Notice, noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { errorNotice, technicalDetail } from "../../error-text.ts";
 import { focusSoon } from "../../focus.ts";
+import { said } from "../../said.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
 import { choosePort, webSerial } from "../../serial-ports.ts";
 import { hexProblem, tooLargeProblem } from "./file-problem.ts";
@@ -88,7 +89,7 @@ export async function openFirmwareFile(ctx: AppContext, file: File | undefined):
     patchFirmware(ctx.store, {
       loadingFile: false,
       fileProblem: errorNotice(
-        translator(firmwareMessages, locale)("firmware.fileUnreadable", { file: file.name }),
+        said(firmwareMessages, "firmware.fileUnreadable", { file: file.name }),
         e,
         locale,
       ),
@@ -111,7 +112,7 @@ export async function openDemoFirmware(ctx: AppContext): Promise<void> {
   } catch (e) {
     patchFirmware(ctx.store, {
       loadingFile: false,
-      fileProblem: errorNotice(translator(firmwareMessages, locale)("firmware.demoFileFailed"), e, locale),
+      fileProblem: errorNotice(said(firmwareMessages, "firmware.demoFileFailed"), e, locale),
     });
   }
 }
@@ -231,7 +232,7 @@ export async function startFlash(ctx: AppContext): Promise<void> {
       run: undefined,
       result:
         e instanceof RbcNotConnectedError
-          ? { tone: "warning", text: t("firmware.notConnected") }
+          ? noticeOf("warning", locale, [said(firmwareMessages, "firmware.notConnected")])
           : failureNotice(e, locale),
     });
   } finally {
@@ -277,7 +278,7 @@ export async function startRecovery(ctx: AppContext): Promise<void> {
   if (store.get().connection.phase !== "disconnected") {
     patchFirmware(store, {
       run: undefined,
-      result: { tone: "warning", text: t("firmware.disconnectFirst") },
+      result: noticeOf("warning", locale, [said(firmwareMessages, "firmware.disconnectFirst")]),
     });
     return;
   }
@@ -285,7 +286,10 @@ export async function startRecovery(ctx: AppContext): Promise<void> {
   try {
     port = await choosePort(serial, store.get().showAllPorts);
   } catch (e) {
-    patchFirmware(store, { run: undefined, result: errorNotice(t("firmware.noPortChosen"), e, locale) });
+    patchFirmware(store, {
+      run: undefined,
+      result: errorNotice(said(firmwareMessages, "firmware.noPortChosen"), e, locale),
+    });
     return;
   }
   const c = session.pageScope.get(RECOVERY);
@@ -325,7 +329,8 @@ export async function startRecovery(ctx: AppContext): Promise<void> {
  */
 function failureNotice(e: unknown, locale: Locale): Notice {
   const t = translator(firmwareMessages, locale);
-  if (!(e instanceof FirmwareUpdateError)) return errorNotice(t("firmware.failed"), e, locale);
+  if (!(e instanceof FirmwareUpdateError))
+    return errorNotice(said(firmwareMessages, "firmware.failed"), e, locale);
   const tone = e.holds === "previous-firmware" ? "warning" : "danger";
   const what = firmwareFailureText(e, locale);
   const text = e.failure === "cancelled" ? what : `${t("firmware.failed")} ${what}`;

@@ -1,9 +1,9 @@
-import { translator } from "../../../i18n/translate.ts";
 import { formatLocalDate } from "../../../shared/format.ts";
-import type { Notice } from "../../app-state.ts";
+import { type Notice, noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { downloadTextFile } from "../../download-file.ts";
 import { errorNotice } from "../../error-text.ts";
+import { said } from "../../said.ts";
 import { logMessages } from "./messages.ts";
 import { LOG_CAPACITY, logAsText, PacketLog } from "./packet-log.ts";
 import type { LogViewState } from "./state.ts";
@@ -41,22 +41,24 @@ function header(ctx: AppContext): string {
 
 export async function copyLog(ctx: AppContext): Promise<void> {
   const { locale } = ctx.store.get();
-  const t = translator(logMessages, locale);
   const lines = packetLogOf(ctx).lines();
   try {
     await navigator.clipboard.writeText(logAsText(lines, header(ctx)));
-    setNotice(ctx, { tone: "ok", text: t("log.copied", { count: lines.length }) });
+    setNotice(ctx, noticeOf("ok", locale, [said(logMessages, "log.copied", { count: lines.length })]));
   } catch (e) {
-    setNotice(ctx, errorNotice(t("log.copyFailed"), e, locale));
+    setNotice(ctx, errorNotice(said(logMessages, "log.copyFailed"), e, locale));
   }
 }
 
 export function downloadLog(ctx: AppContext): void {
-  const t = translator(logMessages, ctx.store.get().locale);
+  const { locale } = ctx.store.get();
   const lines = packetLogOf(ctx).lines();
   const name = `rbc-packet-log-${formatLocalDate(new Date())}.txt`;
   downloadTextFile(name, logAsText(lines, header(ctx)));
-  setNotice(ctx, { tone: "ok", text: t("log.saved", { count: lines.length, file: name }) });
+  setNotice(
+    ctx,
+    noticeOf("ok", locale, [said(logMessages, "log.saved", { count: lines.length, file: name })]),
+  );
 }
 
 /** While paused, the view keeps showing the same entries; capture goes on underneath. */

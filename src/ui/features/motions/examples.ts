@@ -1,6 +1,7 @@
-import { translator } from "../../../i18n/translate.ts";
+import { noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { errorNotice } from "../../error-text.ts";
+import { said } from "../../said.ts";
 import { addMotionTexts } from "./files.ts";
 import { type MotionsKey, motionsMessages } from "./messages.ts";
 import { patchMotionFiles } from "./state.ts";
@@ -48,18 +49,19 @@ export const EXAMPLE_MOTIONS: readonly ExampleMotion[] = [
 /** Opens an example as if the user had picked its file. */
 export async function openExample(ctx: AppContext, example: ExampleMotion): Promise<void> {
   const { locale } = ctx.store.get();
-  const t = translator(motionsMessages, locale);
   const file = example.fileName;
   let text: string;
   try {
     text = (await example.load()).default;
   } catch (e) {
     patchMotionFiles(ctx.store, {
-      notice: errorNotice(t("motions.example.loadFailed", { file }), e, locale),
+      notice: errorNotice(said(motionsMessages, "motions.example.loadFailed", { file }), e, locale),
     });
     return;
   }
   addMotionTexts(ctx.store, [{ fileName: file, text }]);
   // Said in the "Opened files" live region, for screen readers (the file's card appears below).
-  patchMotionFiles(ctx.store, { notice: { tone: "info", text: t("motions.example.opened", { file }) } });
+  patchMotionFiles(ctx.store, {
+    notice: noticeOf("info", locale, [said(motionsMessages, "motions.example.opened", { file })]),
+  });
 }

@@ -221,7 +221,7 @@ export async function stopMotion(ctx: AppContext): Promise<void> {
       runNotice:
         e instanceof RbcError && e.code === "cancelled"
           ? { tone: "warning", text: t("motions.run.endedByStop", { number: run.number }) }
-          : errorNotice(t("motions.run.stopFailed"), e, locale),
+          : errorNotice(said(motionsMessages, "motions.run.stopFailed"), e, locale),
     });
   } finally {
     patchMotions(store, { run: undefined });
@@ -260,7 +260,7 @@ export async function playSound(ctx: AppContext, n: number): Promise<void> {
       soundNotice:
         e instanceof RbcError && e.code === "cancelled"
           ? { tone: "warning", text: t("motions.sound.cancelled", { sound: n }) }
-          : errorNotice(t("motions.sound.failed", { sound: n }), e, locale),
+          : errorNotice(said(motionsMessages, "motions.sound.failed", { sound: n }), e, locale),
     });
   }
 }

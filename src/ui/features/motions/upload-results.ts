@@ -14,6 +14,7 @@ import type { RbmMotion } from "../../../protocol/rbm.ts";
 import type { Notice } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { errorMessage, errorNotice, technicalDetail } from "../../error-text.ts";
+import { said } from "../../said.ts";
 import { recordShelf } from "../shelf/shelf-actions.ts";
 import { storedSentence } from "../shelf/shelf-words.ts";
 import { motionsMessages } from "./messages.ts";
@@ -199,7 +200,7 @@ export async function uploadFailed(
       text: `${byStop ? t("motions.upload.cancelledByStop") : t("motions.upload.cancelledEarly")}${resetNote}`,
     };
   } else {
-    notice = errorNotice(t("motions.upload.failed"), e, locale);
+    notice = errorNotice(said(motionsMessages, "motions.upload.failed"), e, locale);
     if (resetNote) notice.text += resetNote;
   }
   patchMotions(store, (m) => ({

@@ -1,13 +1,14 @@
 import { translator } from "../../../i18n/translate.ts";
 import type { AppContext } from "../../context.ts";
 import { errorNotice } from "../../error-text.ts";
+import { said } from "../../said.ts";
 import { robotMessages } from "./messages.ts";
 
 /** Reads what the device card shows: identity, error code and free memory of both areas. */
 export async function refreshDeviceInfo(ctx: AppContext): Promise<void> {
   const { session, store } = ctx;
   if (store.get().device.loading || !session.current) return;
-  // Sentences are made in the language of the moment (a notice keeps its language if the switch changes).
+  // Its failure is kept as a message, worded when drawn (it follows a language switch).
   const { locale } = store.get();
   const t = translator(robotMessages, locale);
   store.update((s) => ({ device: { ...s.device, loading: true, notice: undefined } }));
@@ -34,7 +35,11 @@ export async function refreshDeviceInfo(ctx: AppContext): Promise<void> {
     }));
   } catch (e) {
     store.update((s) => ({
-      device: { ...s.device, loading: false, notice: errorNotice(t("robot.readFailed"), e, locale) },
+      device: {
+        ...s.device,
+        loading: false,
+        notice: errorNotice(said(robotMessages, "robot.readFailed"), e, locale),
+      },
     }));
   }
 }

@@ -3,9 +3,10 @@ import type { RbcClient } from "../../../device/rbc-client.ts";
 import type { RbcEvent } from "../../../device/types.ts";
 import type { Locale } from "../../../i18n/locale.ts";
 import { translator } from "../../../i18n/translate.ts";
-import type { Notice } from "../../app-state.ts";
+import { type Notice, noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { errorNotice } from "../../error-text.ts";
+import { said } from "../../said.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
 import { addEvent } from "./events.ts";
 import { sensorsMessages } from "./messages.ts";
@@ -34,7 +35,7 @@ export function effectiveRate(s: Pick<SensorsState, "rateHz" | "listen">): numbe
 
 /** Why polling waits while the robot is in direct mode, in the panel's language. */
 function inServoControl(locale: Locale): Notice {
-  return { tone: "warning", text: translator(sensorsMessages, locale)("sensors.inServoControl") };
+  return noticeOf("warning", locale, [said(sensorsMessages, "sensors.inServoControl")]);
 }
 
 export class SensorWatch implements Controller {
@@ -51,7 +52,7 @@ export class SensorWatch implements Controller {
 
   constructor(private readonly ctx: AppContext) {}
 
-  /** The sentences of the moment's language (a notice keeps its language if the switch changes). */
+  /** The moment's language (notices are kept as messages and worded when drawn). */
   private words() {
     const { locale } = this.ctx.store.get();
     return { locale, t: translator(sensorsMessages, locale) };
@@ -63,7 +64,7 @@ export class SensorWatch implements Controller {
       this.halt();
       void this.quiet();
       patchSensors(this.ctx.store, {
-        pausedWhy: { tone: "info", text: this.words().t("sensors.tabHidden") },
+        pausedWhy: noticeOf("info", this.words().locale, [said(sensorsMessages, "sensors.tabHidden")]),
       });
     } else {
       patchSensors(this.ctx.store, { pausedWhy: undefined });
@@ -129,7 +130,9 @@ export class SensorWatch implements Controller {
       patchSensors(this.ctx.store, { pausedWhy: undefined });
       await this.resume();
     } catch (e) {
-      patchSensors(this.ctx.store, { pausedWhy: errorNotice(t("sensors.normalModeFailed"), e, locale) });
+      patchSensors(this.ctx.store, {
+        pausedWhy: errorNotice(said(sensorsMessages, "sensors.normalModeFailed"), e, locale),
+      });
     }
   }
 
@@ -169,8 +172,10 @@ export class SensorWatch implements Controller {
       if (listen === "none") await client.unsubscribe();
       else await client.subscribe(listen, listen === "sound" ? threshold : 0);
     } catch (e) {
-      const { locale, t } = this.words();
-      patchSensors(this.ctx.store, { listenNotice: errorNotice(t("sensors.listenFailed"), e, locale) });
+      const { locale } = this.words();
+      patchSensors(this.ctx.store, {
+        listenNotice: errorNotice(said(sensorsMessages, "sensors.listenFailed"), e, locale),
+      });
     }
   }
 
@@ -227,9 +232,9 @@ export class SensorWatch implements Controller {
         if (e instanceof RbcError && (e.code === "disconnected" || e.code === "not-connected")) break;
         if (!cancelled) failures++;
         if (failures >= FAILURES_BEFORE_PAUSE) {
-          const { locale, t } = this.words();
+          const { locale } = this.words();
           patchSensors(store, {
-            pausedWhy: errorNotice(t("sensors.readFailures", { failures }), e, locale),
+            pausedWhy: errorNotice(said(sensorsMessages, "sensors.readFailures", { failures }), e, locale),
             running: false,
           });
           this.token++;

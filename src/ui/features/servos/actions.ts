@@ -1,15 +1,19 @@
 import { RbcError } from "../../../device/errors.ts";
+import type { ParamArgs } from "../../../i18n/catalogue.ts";
+import type { Locale } from "../../../i18n/locale.ts";
 import { translator } from "../../../i18n/translate.ts";
+import { type Notice, noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
-import { errorNotice } from "../../error-text.ts";
+import { failureNotice } from "../../failure-notice.ts";
 import { focusSoon } from "../../focus.ts";
+import { type LocalText, type Said, said } from "../../said.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
 import { servosTaken } from "../connection/actions.ts";
 import { servosMessages } from "./messages.ts";
 import { LatestMoveSender } from "./move-sender.ts";
 import {
   basicPostureTargets,
-  checkTypedTarget,
+  checkTyped,
   clampToSafe,
   DEFAULT_TORQUE,
   patchServos,
@@ -19,12 +23,22 @@ import {
 
 /**
  * The Servos view's actions: direct mode on and off, reading, moving within safe ranges, basic posture. Their
- * sentences are made in the language of the moment (a notice keeps its language if the switch changes).
+ * notices are kept as messages (said.ts), worded when drawn, so they follow a language switch.
  */
 
 function wordsOf(ctx: AppContext) {
   const { locale } = ctx.store.get();
   return { locale, t: translator(servosMessages, locale) };
+}
+
+const say = <K extends keyof typeof servosMessages & string>(
+  key: K,
+  ...facts: ParamArgs<(typeof servosMessages)[K], Said | LocalText>
+): Said => said(servosMessages, key, ...facts);
+
+/** A servos notice of one message. */
+function servoNotice(tone: Notice["tone"], locale: Locale, message: Said): Notice {
+  return noticeOf(tone, locale, [message]);
 }
 
 function setAt<T>(list: readonly T[], i: number, value: T): T[] {
@@ -66,9 +80,9 @@ export class ServoMoves implements Controller {
           this.sender.clear();
           return;
         }
-        const { locale, t } = wordsOf(ctx);
+        const { locale } = wordsOf(ctx);
         patchServos(ctx.store, (x) => ({
-          notice: errorNotice(t("servos.moveFailed", { id: String(id) }), e, locale),
+          notice: failureNotice(say("servos.moveFailed", { id: String(id) }), e, locale),
           silent:
             e instanceof RbcError && e.code === "timeout" && !x.silent.includes(id)
               ? [...x.silent, id]
@@ -99,7 +113,7 @@ export async function startServoControl(ctx: AppContext): Promise<void> {
     await session.run(t("servos.starting"), (client) => client.enterDirectMode(), { packetMode: false });
     patchServos(store, { busy: undefined });
   } catch (e) {
-    patchServos(store, { busy: undefined, notice: errorNotice(t("servos.startFailed"), e, locale) });
+    patchServos(store, { busy: undefined, notice: failureNotice(say("servos.startFailed"), e, locale) });
     return;
   }
   await readAllPositions(ctx);
@@ -112,9 +126,9 @@ export async function leaveServoControl(ctx: AppContext): Promise<void> {
   patchServos(store, { busy: "leaving", notice: undefined, confirmingPosture: false });
   try {
     await session.run(t("servos.leaving"), (client) => client.exitDirectMode(), { packetMode: false });
-    patchServos(store, { busy: undefined, notice: { tone: "info", text: t("servos.ended") } });
+    patchServos(store, { busy: undefined, notice: servoNotice("info", locale, say("servos.ended")) });
   } catch (e) {
-    patchServos(store, { busy: undefined, notice: errorNotice(t("servos.leaveFailed"), e, locale) });
+    patchServos(store, { busy: undefined, notice: failureNotice(say("servos.leaveFailed"), e, locale) });
   }
 }
 
@@ -147,19 +161,20 @@ export async function readAllPositions(ctx: AppContext): Promise<void> {
         positionsAt: Date.now(),
         notice:
           silent.length === 0
-            ? { tone: "ok", text: t("servos.readAllDone", { total: servos.length }) }
-            : {
-                tone: "warning",
-                text: t("servos.silentServos", {
+            ? servoNotice("ok", locale, say("servos.readAllDone", { total: servos.length }))
+            : servoNotice(
+                "warning",
+                locale,
+                say("servos.silentServos", {
                   ids: silent.join(", "),
                   read: servos.length,
                   total: SERVO_IDS.length,
                 }),
-              },
+              ),
       };
     });
   } catch (e) {
-    patchServos(store, { busy: undefined, notice: errorNotice(t("servos.readFailed"), e, locale) });
+    patchServos(store, { busy: undefined, notice: failureNotice(say("servos.readFailed"), e, locale) });
   }
 }
 
@@ -184,7 +199,8 @@ export function moveServo(ctx: AppContext, id: number, position: number): void {
  * is sent, and the typed text stays so it can be corrected.
  */
 export function applyTypedTarget(ctx: AppContext, id: number, text: string): void {
-  const checked = checkTypedTarget(id, text, ctx.store.get().locale);
+  const checked = checkTyped(id, text);
+  const { locale } = ctx.store.get();
   if ("position" in checked) {
     moveServo(ctx, id, checked.position);
     return;
@@ -192,7 +208,7 @@ export function applyTypedTarget(ctx: AppContext, id: number, text: string): voi
   patchServos(ctx.store, (x) => ({
     drafts: { ...x.drafts, [id]: text },
     refused: { ...x.refused, [id]: checked.problem },
-    notice: { tone: "danger", text: checked.problem },
+    notice: servoNotice("danger", locale, checked.problem),
   }));
 }
 
@@ -220,13 +236,14 @@ export async function basicPosture(ctx: AppContext): Promise<void> {
       busy: undefined,
       targets: basicPostureTargets(),
       drafts: {},
-      notice: {
-        tone: "ok",
-        text: t("servos.postureSent", { count: SERVO_IDS.length, speed: String(speed) }),
-      },
+      notice: servoNotice(
+        "ok",
+        locale,
+        say("servos.postureSent", { count: SERVO_IDS.length, speed: String(speed) }),
+      ),
     });
   } catch (e) {
-    patchServos(store, { busy: undefined, notice: errorNotice(t("servos.postureFailed"), e, locale) });
+    patchServos(store, { busy: undefined, notice: failureNotice(say("servos.postureFailed"), e, locale) });
   }
 }
 

@@ -4,6 +4,7 @@ import { live } from "lit-html/directives/live.js";
 import { translator } from "../../../i18n/translate.ts";
 import { formatClockTime } from "../../format.ts";
 import { liveRobotPanel } from "../../robot3d/live-robot.ts";
+import { wordOf } from "../../said.ts";
 import { shellMessages } from "../../shell/messages.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
@@ -92,7 +93,7 @@ function servoRow(ctx: ViewContext, t: ServosTranslator, id: number, enabled: bo
           @change=${(e: Event) => applyTypedTarget(ctx, id, (e.target as HTMLInputElement).value)}
         />
         <span id=${`servo-${id}-range`} class="zero-hint">${min}–${max}</span>
-        ${refused ? html`<span id=${`servo-${id}-refused`} class="text-danger small servo-refused" data-testid=${`servo-refused-${id}`}>${refused}</span>` : nothing}
+        ${refused ? html`<span id=${`servo-${id}-refused`} class="text-danger small servo-refused" data-testid=${`servo-refused-${id}`}>${wordOf(refused, t.locale)}</span>` : nothing}
       </td>
       <td class="servo-slider">
         <input
@@ -159,15 +160,22 @@ function postureControls(ctx: ViewContext, t: ServosTranslator, enabled: boolean
   `;
 }
 
+/** Whether servos can be moved now: servo control on, the safety notice acknowledged, nothing under way. */
+function controlsEnabled(ctx: ViewContext): boolean {
+  const s = servosOf(ctx.state);
+  const busy = s.busy !== undefined || ctx.state.running.length > 0;
+  return ctx.state.connection.mode === "direct" && ctx.state.acks?.servos === true && !busy;
+}
+
 function controlCard(ctx: ViewContext, t: ServosTranslator): TemplateResult {
   const s = servosOf(ctx.state);
   const c = ctx.state.connection;
   const direct = c.mode === "direct";
   const acked = ctx.state.acks?.servos === true;
   const busy = s.busy !== undefined || ctx.state.running.length > 0;
-  const enabled = direct && acked && !busy;
+  const enabled = controlsEnabled(ctx);
   return html`
-    <section class="card" aria-labelledby="servo-title" data-testid="servo-card">
+    <section class="card servo-card" aria-labelledby="servo-title" data-testid="servo-card">
       <div class="card-head">
         <h2 id="servo-title" class="card-title">${t("servos.control.title")}</h2>
         <div class="row-actions">
@@ -189,9 +197,36 @@ function controlCard(ctx: ViewContext, t: ServosTranslator): TemplateResult {
         ${direct ? (c.limp ? t("servos.mode.limp") : t("servos.mode.on")) : t("servos.mode.off")}
         ${s.readAt ? t("servos.positionsReadAt", { time: formatClockTime(s.readAt) }) : ""}
       </p>
-      ${technicalDetail(t, [t("servos.detail.control"), t("servos.detail.posture", { count: SERVO_IDS.length })])}
       ${liveNotice(s.notice, t("servos.resultLabel"), ctx.state.locale)}
-      <p class="muted small sides-note" data-testid="sides-note">${sidesNote(t.locale)}</p>
+      <div class="servo-meta">
+        <p class="muted small sides-note" data-testid="sides-note">${sidesNote(t.locale)}</p>
+        ${technicalDetail(t, [t("servos.detail.control"), t("servos.detail.posture", { count: SERVO_IDS.length })])}
+      </div>
+      ${servoTable(ctx, t, enabled)}
+    </section>
+  `;
+}
+
+/** Basic posture: every servo at once, asked first. Beside the table on a wide screen, under it on a narrow one. */
+function postureCard(ctx: ViewContext, t: ServosTranslator): TemplateResult {
+  return html`
+    <section class="card posture-card" aria-labelledby="posture-heading" data-testid="posture-card">
+      <h2 id="posture-heading" class="card-title">${t("servos.posture.title")}</h2>
+      <p class="muted small">${t("servos.posture.intro", { count: SERVO_IDS.length })}</p>
+      ${postureControls(ctx, t, controlsEnabled(ctx))}
+    </section>
+  `;
+}
+
+/**
+ * The sixteen servos. On a wide screen they scroll inside a box as tall as the window leaves free, under a
+ * header that stays (issue 21 item 7: the whole task, the table and Basic posture, on one screen at 1280×800);
+ * the box is a labelled region that takes focus, so it scrolls from the keyboard even while its fields are
+ * disabled. Tab goes from row to row, and the box scrolls the focused row into view.
+ */
+function servoTable(ctx: ViewContext, t: ServosTranslator, enabled: boolean): TemplateResult {
+  return html`
+    <div class="servo-table-box" data-testid="servo-table-box" role="region" tabindex="0" aria-label=${t("servos.table.caption")}>
       <table class="zeros-table servo-table">
         <caption class="sr-only">${t("servos.table.caption")}</caption>
         <thead>
@@ -208,10 +243,7 @@ function controlCard(ctx: ViewContext, t: ServosTranslator): TemplateResult {
           ${SERVO_IDS.map((id) => servoRow(ctx, t, id, enabled))}
         </tbody>
       </table>
-      <h3>${t("servos.posture.title")}</h3>
-      <p class="muted small">${t("servos.posture.intro", { count: SERVO_IDS.length })}</p>
-      ${postureControls(ctx, t, enabled)}
-    </section>
+    </div>
   `;
 }
 
@@ -249,7 +281,10 @@ function render(ctx: ViewContext): TemplateResult {
         <p class="muted">${t("servos.intro")}</p>
       </header>
       ${acked ? nothing : safetyNotice(ctx, t)}
-      <div class="servos-work">${liveRobot(ctx, t)} ${controlCard(ctx, t)}</div>
+      <div class="servos-work">
+        ${controlCard(ctx, t)}
+        <div class="servos-side">${postureCard(ctx, t)} ${liveRobot(ctx, t)}</div>
+      </div>
     </div>
   `;
 }

@@ -1,7 +1,7 @@
 import type { Locale } from "../../../i18n/locale.ts";
-import { translator } from "../../../i18n/translate.ts";
 import { HUNO_BASIC_POSTURE, HUNO_SERVO_IDS, safeRange } from "../../../protocol/servo-limits.ts";
 import type { AppState, Notice } from "../../app-state.ts";
+import { type Said, said, wordOf } from "../../said.ts";
 import type { Store } from "../../store.ts";
 import { servosMessages } from "./messages.ts";
 
@@ -17,7 +17,7 @@ export interface ServosState {
   /** Text being typed into a servo's number box, not applied yet (so redraws do not reset it). */
   drafts?: Partial<Record<number, string>>;
   /** Why a typed target was refused, by servo id (nothing was sent for it). */
-  refused?: Partial<Record<number, string>>;
+  refused?: Partial<Record<number, Said>>;
   /** Torque per servo for moves: 0 (strong) .. 4 (weak). */
   torques: number[];
   /** Servos that did not answer the last read. */
@@ -53,18 +53,24 @@ export function checkTypedTarget(
   text: string,
   locale: Locale = "en",
 ): { position: number } | { problem: string } {
-  const t = translator(servosMessages, locale);
+  const checked = checkTyped(id, text);
+  return "position" in checked ? checked : { problem: wordOf(checked.problem, locale) };
+}
+
+/** `checkTypedTarget`, the refusal kept as a message (worded when drawn, in the language of that moment). */
+export function checkTyped(id: number, text: string): { position: number } | { problem: Said } {
   const range = servoRange(id);
   const [min, max] = [String(range.min), String(range.max)];
   const trimmed = text.trim();
   const who = String(id);
-  if (trimmed === "") return { problem: t("servos.typed.empty", { id: who, min, max }) };
+  if (trimmed === "") return { problem: said(servosMessages, "servos.typed.empty", { id: who, min, max }) };
   if (!/^-?\d+$/.test(trimmed)) {
-    return { problem: t("servos.typed.notWhole", { id: who, text: trimmed, min, max }) };
+    return { problem: said(servosMessages, "servos.typed.notWhole", { id: who, text: trimmed, min, max }) };
   }
   const position = Number(trimmed);
   if (position < range.min || position > range.max) {
-    return { problem: t("servos.typed.outside", { id: who, position: String(position), min, max }) };
+    const facts = { id: who, position: String(position), min, max };
+    return { problem: said(servosMessages, "servos.typed.outside", facts) };
   }
   return { position };
 }

@@ -74,7 +74,10 @@ export async function readZerosFromRobot(ctx: AppContext): Promise<void> {
       fileNotice: undefined,
     });
   } catch (e) {
-    patchZeros(store, { busy: undefined, result: errorNotice(t("zeros.readFailed"), e, locale) });
+    patchZeros(store, {
+      busy: undefined,
+      result: errorNotice(said(zerosMessages, "zeros.readFailed"), e, locale),
+    });
   }
 }
 
@@ -176,7 +179,10 @@ export async function backUpZeros(ctx: AppContext): Promise<void> {
   try {
     saved = await saveBackup(ctx, backup, zerosBackupFileName(serialNumber, savedAt));
   } catch (e) {
-    patchZeros(store, { busy: undefined, fileNotice: errorNotice(t("zeros.notKeptInBrowser"), e, locale) });
+    patchZeros(store, {
+      busy: undefined,
+      fileNotice: errorNotice(said(zerosMessages, "zeros.notKeptInBrowser"), e, locale),
+    });
     return;
   }
   const z = store.get().zeros;
@@ -227,7 +233,9 @@ export async function restoreFromFile(ctx: AppContext, file: File): Promise<void
   try {
     text = await file.text();
   } catch (e) {
-    patchZeros(store, { fileNotice: errorNotice(t("zeros.fileUnreadable", { file: file.name }), e, locale) });
+    patchZeros(store, {
+      fileNotice: errorNotice(said(zerosMessages, "zeros.fileUnreadable", { file: file.name }), e, locale),
+    });
     return;
   }
   const parsed = parseZerosBackup(text);
