@@ -1,5 +1,6 @@
 import { html, nothing, type TemplateResult } from "lit-html";
 import { translator } from "../../../i18n/translate.ts";
+import { lazyPart } from "../../lazy-part.ts";
 import { hrefFor } from "../../router.ts";
 import { describePort, linkKindOf } from "../../serial-ports.ts";
 import { shellMessages } from "../../shell/messages.ts";
@@ -14,7 +15,6 @@ import {
   forgetKnownPort,
   setShowAllPorts,
 } from "./actions.ts";
-import { connectHelp } from "./connect-help.ts";
 import { type ConnectionTranslator, connectionMessages } from "./messages.ts";
 import { robotName } from "./robot-name.ts";
 import type { ConnectionState } from "./state.ts";
@@ -149,6 +149,16 @@ function recoverOffer(c: ConnectionState, t: ConnectionTranslator): TemplateResu
 }
 
 /** The main area while no robot is connected: connect, demo, earlier ports, help. */
+/** "Can't find your robot?" loads just after the first paint; until then its title stands alone. */
+const help = lazyPart(() => import("./connect-help.ts"));
+
+function helpPart(ctx: ViewContext, open: boolean, t: ConnectionTranslator): TemplateResult {
+  const title = t("connection.help.title");
+  const part = help.get(() => ctx.store.update({}));
+  if (part) return part.connectHelp(open, title, ctx.state.locale);
+  return html`<details class="help" ?open=${open} data-testid="connect-help"><summary>${title}</summary></details>`;
+}
+
 export function connectCard(ctx: ViewContext): TemplateResult {
   const c = ctx.state.connection;
   const { locale } = ctx.state;
@@ -187,7 +197,7 @@ export function connectCard(ctx: ViewContext): TemplateResult {
         </button>
         <p class="muted small">${t("connection.demoBluetoothHint", DEMO_BLUETOOTH_LATENCY)}</p>
       </div>
-      ${progress(ctx, c, t)} ${knownPorts(ctx, busy, t)} ${connectHelp(c.showHelp, t)}
+      ${progress(ctx, c, t)} ${knownPorts(ctx, busy, t)} ${helpPart(ctx, c.showHelp, t)}
       <p class="muted small">${t("connection.demoNote")}</p>
     </section>
   `;

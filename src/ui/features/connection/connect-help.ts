@@ -1,13 +1,19 @@
 import { html, type TemplateResult } from "lit-html";
-import type { ConnectionTranslator } from "./messages.ts";
+import type { Locale } from "../../../i18n/locale.ts";
+import { translator } from "../../../i18n/translate.ts";
+import { connectHelpMessages } from "./help-messages.ts";
 
 const code = (text: string): TemplateResult => html`<code>${text}</code>`;
 
-/** "Can't find your robot?": the usual reasons a port does not show up or will not open. */
-export function connectHelp(open: boolean, t: ConnectionTranslator): TemplateResult {
+/**
+ * "Can't find your robot?": the usual reasons a port does not show up or will not open. Loaded just after the
+ * first paint (connect-card.ts draws the title alone until then).
+ */
+export function connectHelp(open: boolean, title: string, locale: Locale): TemplateResult {
+  const t = translator(connectHelpMessages, locale);
   return html`
     <details class="help" ?open=${open} data-testid="connect-help">
-      <summary>${t("connection.help.title")}</summary>
+      <summary>${title}</summary>
       <ul>
         <li><strong>${t("connection.help.cable")}:</strong> ${t("connection.help.cableText")}</li>
         <li><strong>${t("connection.help.power")}:</strong> ${t("connection.help.powerText")}</li>

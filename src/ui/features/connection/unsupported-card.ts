@@ -4,6 +4,7 @@ import { notice } from "../../shell/notice.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
 import { connectDemo } from "./actions.ts";
 import { connectionMessages } from "./messages.ts";
+import { unsupportedMessages } from "./unsupported-messages.ts";
 
 const code = (text: string): TemplateResult => html`<code>${text}</code>`;
 
@@ -11,7 +12,8 @@ const code = (text: string): TemplateResult => html`<code>${text}</code>`;
 export function unsupportedCard(ctx: ViewContext): TemplateResult {
   const c = ctx.state.connection;
   const { locale } = ctx.state;
-  const t = translator(connectionMessages, locale);
+  const t = translator(unsupportedMessages, locale);
+  const words = translator(connectionMessages, locale);
   const busy = c.phase !== "disconnected";
   return html`
     <section class="card connect-card" aria-labelledby="unsupported-title" data-testid="unsupported-card">
@@ -38,12 +40,12 @@ export function unsupportedCard(ctx: ViewContext): TemplateResult {
       <p>${t("connection.unsupported.demo")}</p>
       <div class="actions">
         <button type="button" class="btn btn--primary" ?disabled=${busy} @click=${() => connectDemo(ctx)}>
-          ${t("connection.tryDemo")}
+          ${words("connection.tryDemo")}
         </button>
       </div>
       ${
         c.phase === "connecting" || c.phase === "handshaking"
-          ? html`<div class="progress-block"><p>${t("connection.unsupported.starting")}</p><progress aria-label=${t("connection.connecting")}></progress></div>`
+          ? html`<div class="progress-block"><p>${t("connection.unsupported.starting")}</p><progress aria-label=${words("connection.connecting")}></progress></div>`
           : nothing
       }
     </section>
