@@ -96,6 +96,13 @@ describe("the robot's shelf on the demo robot", () => {
     await page.getByText("Motion 12 (RbcPanel_Wave) finished.").waitFor();
     expect(await text(page.locator(".other-slots summary"))).toBe("Other download slots (19)");
     await expectPageOk(page, "the Run tab after a reload", { lang: "en" });
+    // The Remote card names key 1 from the shelf too (not only from this connection's uploads).
+    await page.getByRole("link", { name: "Sensors", exact: true }).click();
+    await page
+      .locator('[data-testid="remote-key"][data-code="12"]')
+      .filter({ hasText: "RbcPanel_Wave" })
+      .waitFor();
+    await page.getByRole("link", { name: "Motions", exact: true }).click();
 
     // Reset the demo robot: asked once, connected again as new; the record goes, and the panel says so.
     await showTab(page, "Memory");
