@@ -122,7 +122,7 @@ export async function runMotionReport(
   if (ended.report.echoed === BASIC_POSTURE_MOTION && motion !== BASIC_POSTURE_MOTION) {
     if (ended.by === "stop") {
       throw new RbcCancelledError(
-        `Stopped by Stop: motion ${motion} ended at the end of its scene (the robot confirmed with 07) and the robot holds that pose.`,
+        `Stopped by Stop: motion ${motion} ended at the end of its scene and the robot holds that pose (the robot answered 07).`,
       );
     }
     if (ended.by === "limp")

@@ -91,7 +91,7 @@ describe("Ctrl-C in rbc run", () => {
     expect(result.stdout).toMatch(/Running 2 /);
     expect(result.code, result.stderr).toBe(130);
     expect(result.stderr).toContain(
-      "rbc: interrupted: sent 7: motion 2 (Get up B (from back)) stopped at the end of its scene (the robot confirmed with 07). The robot keeps standing in that pose",
+      "rbc: interrupted: The robot took Stop: motion 2 (Get up B (from back)) ended at the end of its scene and the robot stands in that pose; `rbc run 7` straightens it. (Sent 7; the robot answered 07.)",
     );
     expect(result.stdout).not.toContain("Done: 2");
     expect(result.stderr).not.toMatch(/Direct control mode on|limp/i);
