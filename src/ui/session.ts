@@ -15,6 +15,7 @@ import {
   type RobotLabel,
 } from "./features/connection/state.ts";
 import type { PacketLog } from "./features/log/packet-log.ts";
+import type { ShelfStorage } from "./features/shelf/shelf-store.ts";
 import { uiMessages } from "./messages.ts";
 import { said } from "./said.ts";
 import { Scope } from "./scope.ts";
@@ -39,6 +40,8 @@ export const DEMO_BLUETOOTH_ROBOT: RobotLabel = {
 export interface SessionOptions {
   /** How the demo robot is made (browser tests run it faster). */
   demo?: DemoRobotOptions;
+  /** Where the robot's shelf is kept (unit tests: a Map, `memoryShelfStorage`); default IndexedDB. */
+  shelfStorage?: () => Promise<ShelfStorage>;
 }
 
 /** A simulated robot in this page (the demo robot): its simulator and the clock it runs on. */
@@ -66,7 +69,7 @@ export class Session {
     private readonly store: Store<AppState>,
     /** The log to feed; without one, the session makes one with its first connection (`packetLog`). */
     packetLog: PacketLog | undefined,
-    private readonly options: SessionOptions = {},
+    readonly options: SessionOptions = {},
   ) {
     this.context = { store, session: this, packetLog };
     this.pageScope = new Scope(this.context, "page");

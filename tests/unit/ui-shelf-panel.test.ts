@@ -1,4 +1,4 @@
-import { afterEach, describe, expect, it, vi } from "vitest";
+import { describe, expect, it, vi } from "vitest";
 import { VirtualClock } from "../../src/shared/clock.ts";
 import { initialState } from "../../src/ui/app-state.ts";
 import type { AppContext } from "../../src/ui/context.ts";
@@ -6,8 +6,8 @@ import { PacketLog } from "../../src/ui/features/log/packet-log.ts";
 import { offerFor } from "../../src/ui/features/motions/run-actions.ts";
 import { motionsOf } from "../../src/ui/features/motions/state.ts";
 import { refreshDeviceInfo } from "../../src/ui/features/robot/actions.ts";
-import { loadShelf, useShelfStorage } from "../../src/ui/features/shelf/shelf-actions.ts";
-import { idbShelfStorage, memoryShelfStorage } from "../../src/ui/features/shelf/shelf-store.ts";
+import { loadShelf } from "../../src/ui/features/shelf/shelf-actions.ts";
+import { memoryShelfStorage } from "../../src/ui/features/shelf/shelf-store.ts";
 import { Session } from "../../src/ui/session.ts";
 import { createStore } from "../../src/ui/store.ts";
 import { driveClock } from "../support/drive-clock.ts";
@@ -29,18 +29,18 @@ const WAVE = {
   storedAt: "2026-11-26T21:00:00.000Z",
 };
 
-afterEach(() => useShelfStorage(idbShelfStorage));
-
 describe("the shelf on a connection", () => {
   it("names motion 12 and times its Run from the record, then drops it with a sentence when the free memory shows it gone", async () => {
     const map = new Map<string, unknown>([[SERIAL_KEY, { robot: SERIAL_KEY, slots: [WAVE] }]]);
-    useShelfStorage(async () => memoryShelfStorage(map));
     const clock = new VirtualClock();
     const run = <T>(done: Promise<T>) => driveClock(clock, done);
     const store = createStore(
       initialState({ serialSupported: false, secureContext: true, route: "motions" }),
     );
-    const session = new Session(store, new PacketLog(), { demo: { clock } });
+    const session = new Session(store, new PacketLog(), {
+      demo: { clock },
+      shelfStorage: async () => memoryShelfStorage(map),
+    });
     expect(await run(session.connectDemo())).toBe(true);
     const ctx: AppContext = { store, session };
 

@@ -68,6 +68,7 @@ describe("the panel's structure", () => {
       "robot",
       "sensors",
       "servos",
+      "shelf",
       "zeros",
     ]);
     for (const feature of features) {

@@ -38,3 +38,8 @@ export async function chooseLocale(
   saveLocale(storage, locale);
   return true;
 }
+
+/** Draws the page again (a part of it loaded after the first paint: `lazyPart`). */
+export function redraw(store: Store<AppState>): void {
+  store.update({});
+}

@@ -7,6 +7,7 @@ import { lazyPart } from "../lazy-part.ts";
 import { uiMessages } from "../messages.ts";
 import type { ViewLoader } from "../router.ts";
 import { versionFooter } from "../version.ts";
+import { redraw } from "./actions.ts";
 import { shellMessages } from "./messages.ts";
 import { VIEWS } from "./registry.ts";
 import { sideNav } from "./side-nav.ts";
@@ -17,7 +18,7 @@ const unsupported = lazyPart(() => import("../features/connection/unsupported-ca
 
 function connectPlace(ctx: ViewContext, loading: string): TemplateResult {
   if (ctx.state.serialSupported) return connectCard(ctx);
-  const part = unsupported.get(() => ctx.store.update({}));
+  const part = unsupported.get(() => redraw(ctx.store));
   return part ? part.unsupportedCard(ctx) : html`<p class="muted" aria-busy="true">${loading}</p>`;
 }
 

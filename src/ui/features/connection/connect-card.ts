@@ -3,6 +3,7 @@ import { translator } from "../../../i18n/translate.ts";
 import { lazyPart } from "../../lazy-part.ts";
 import { hrefFor } from "../../router.ts";
 import { describePort, linkKindOf } from "../../serial-ports.ts";
+import { redraw } from "../../shell/actions.ts";
 import { shellMessages } from "../../shell/messages.ts";
 import { notice } from "../../shell/notice.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
@@ -154,7 +155,7 @@ const help = lazyPart(() => import("./connect-help.ts"));
 
 function helpPart(ctx: ViewContext, open: boolean, t: ConnectionTranslator): TemplateResult {
   const title = t("connection.help.title");
-  const part = help.get(() => ctx.store.update({}));
+  const part = help.get(() => redraw(ctx.store));
   if (part) return part.connectHelp(open, title, ctx.state.locale);
   return html`<details class="help" ?open=${open} data-testid="connect-help"><summary>${title}</summary></details>`;
 }

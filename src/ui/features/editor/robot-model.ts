@@ -22,20 +22,13 @@ export function isEditorTarget(target: UploadTarget): target is Extract<UploadTa
   return "place" in target && target.place === "editor";
 }
 
-const texts = new WeakMap<Motion, string | null>();
-
-/** The document as `.rbm` text (cached by document; null for a value with no `.rbm` form). */
+/** The document as `.rbm` text (null for a value with no `.rbm` form). Compared only after an edit. */
 function textOf(doc: Motion): string | null {
-  let text = texts.get(doc);
-  if (text === undefined) {
-    try {
-      text = saveMotion(doc);
-    } catch {
-      text = null;
-    }
-    texts.set(doc, text);
+  try {
+    return saveMotion(doc);
+  } catch {
+    return null;
   }
-  return text;
 }
 
 /**

@@ -6,7 +6,6 @@ import type { AppContext } from "../../context.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
 import { motionsOf, patchMotions } from "../motions/state.ts";
 import { shelfMessages } from "./messages.ts";
-import type { ShelfState } from "./shelf-state.ts";
 import {
   checkShelf,
   idbShelfStorage,
@@ -15,6 +14,7 @@ import {
   recordOnShelf,
   type ShelfStorage,
 } from "./shelf-store.ts";
+import type { ShelfState } from "./state.ts";
 
 /**
  * The panel's side of the robot's shelf (issue 23 item 2): load the connected robot's records, check them
@@ -43,14 +43,11 @@ class ShelfKeeper implements Controller {
   }
 }
 
-let makeStorage: () => Promise<ShelfStorage> = idbShelfStorage;
-
-/** Tests only: the storage the next page scope's shelf uses (a Map, `memoryShelfStorage`). */
-export function useShelfStorage(make: () => Promise<ShelfStorage>): void {
-  makeStorage = make;
-}
-
-const SHELF_KEEPER = controllerKey("robot shelf", () => new ShelfKeeper(makeStorage));
+/** The page's shelf keeper, on the session's storage (IndexedDB unless a test gave a Map). */
+const SHELF_KEEPER = controllerKey(
+  "robot shelf",
+  (ctx: AppContext) => new ShelfKeeper(ctx.session.options.shelfStorage ?? idbShelfStorage),
+);
 
 /** Checks the shelf whenever the robot's free motion memory is read on this connection. */
 class ShelfWatch implements Controller {

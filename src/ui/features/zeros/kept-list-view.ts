@@ -2,7 +2,8 @@ import { html, type TemplateResult } from "lit-html";
 import { formatDateTime } from "../../format.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
 import { restoreKeptBackup } from "./actions.ts";
-import { comparePanel, compareWith } from "./live/compare-view.ts";
+import { compareWith } from "./live/compare-actions.ts";
+import { comparePanel } from "./live/compare-view.ts";
 import type { ZerosTranslator } from "./messages.ts";
 
 /** Every backup kept in this browser: when, which robot, the values, and Restore (into the editor). */

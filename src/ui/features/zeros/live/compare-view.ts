@@ -1,12 +1,11 @@
 import { html, nothing, type TemplateResult } from "lit-html";
 import { translator } from "../../../../i18n/translate.ts";
 import { serialMismatchWarning } from "../../../../protocol/zeros-backup.ts";
-import type { AppContext } from "../../../context.ts";
-import { focusSoon } from "../../../focus.ts";
 import { formatDateTime, formatDelta } from "../../../format.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
 import type { KeptBackup } from "../backup-store.ts";
 import { jointName } from "../joints/joint-name.ts";
+import { compareWith } from "./compare-actions.ts";
 import { zerosLiveMessages } from "./messages.ts";
 import { compareZeros } from "./trim-model.ts";
 
@@ -15,11 +14,6 @@ import { compareZeros } from "./trim-model.ts";
  * backup kept in this browser, joint by joint, named by the robot's own left and right (docs/protocol.md §4).
  * Reading only: nothing is sent or written.
  */
-
-export function compareWith(ctx: AppContext, id: string | undefined): void {
-  ctx.store.update((s) => ({ zeros: { ...s.zeros, compareWith: id } }));
-  focusSoon(id === undefined ? "kept-title" : "compare-title");
-}
 
 export function comparePanel(ctx: ViewContext): TemplateResult | typeof nothing {
   const { zeros: z, locale } = ctx.state;
