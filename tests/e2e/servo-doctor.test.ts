@@ -261,7 +261,8 @@ describe("Servo check on the demo robot", () => {
     const mark = page.locator('[data-testid=servo-figure] g[data-servo="4"]');
     expect(await mark.getAttribute("class")).toContain("mark--high-load");
     await mark.click();
-    expect(await page.getByTestId("doctor-pick").inputValue()).toBe("4");
+    // The pick is drawn on the panel's next render: polled.
+    await expect.poll(() => page.getByTestId("doctor-pick").inputValue()).toBe("4");
     await page.getByTestId("doctor-read").click();
     const info = page.getByTestId("doctor-info");
     await info.waitFor();

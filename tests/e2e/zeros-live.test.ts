@@ -318,8 +318,9 @@ describe("capture zeros on the demo robot", () => {
       "All 16 positions are inside their windows; 2 differ from the stored zeros.",
     );
     await page.getByTestId("capture-use").click();
-    expect(await page.locator("#zero-0").inputValue()).toBe("130");
-    expect(await page.locator("#zero-2").inputValue()).toBe("170");
+    // The editor is drawn on the panel's next render: polled.
+    await expect.poll(() => page.locator("#zero-0").inputValue()).toBe("130");
+    await expect.poll(() => page.locator("#zero-2").inputValue()).toBe("170");
     await page.getByTestId("change-summary").filter({ hasText: "2 changes not yet written" }).waitFor();
     expect(await page.getByTestId("write-zeros").isEnabled()).toBe(true);
     await context.close();
