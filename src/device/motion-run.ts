@@ -1,3 +1,4 @@
+import { codeText } from "../i18n/outcomes/device.ts";
 import { BASIC_POSTURE_MOTION, downloadSlotOf } from "../protocol/catalog.ts";
 import { COMMANDS } from "../protocol/commands.ts";
 import { encodePacket } from "../protocol/packet.ts";
@@ -230,7 +231,7 @@ function watchForEmptySlot(core: ClientCore): { emptySlot: boolean; dispose(): v
     answered = true;
     if (p.contents[0] === EMPTY_SLOT_ERROR) {
       watch.emptySlot = true;
-      c.failPending(new RbcError("motion-ignored", "The robot is not playing the motion."));
+      c.failPending(new RbcError("motion-ignored", codeText("motion-ignored", "en")));
     }
     return true;
   };

@@ -4,6 +4,7 @@
  * operations on top of it live in their own files (motion-run.ts, stop.ts, limp.ts, …), its options in
  * connection-options.ts.
  */
+import { codeText } from "../i18n/outcomes/device.ts";
 import { LinkError, type Transport, type TransportStatusEvent } from "../link/transport.ts";
 import { concatBytes } from "../protocol/bytes.ts";
 import { ABANDON_DOWNLOAD } from "../protocol/catalog.ts";
@@ -227,11 +228,7 @@ export class RbcConnection {
       await this.close();
       if (inBootloader) throw new RbcInBootloaderError(inBootloader, e);
       if (e instanceof RbcTimeoutError) {
-        throw new RbcError(
-          "no-robot",
-          "The port opened but no robot answered. Check that the robot is switched on, that this is its port, and that no other program is using it.",
-          { cause: e },
-        );
+        throw new RbcError("no-robot", codeText("no-robot", "en"), { cause: e });
       }
       if (e instanceof LinkError) throw RbcPortError.fromLink(e);
       throw e;

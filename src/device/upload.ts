@@ -1,3 +1,4 @@
+import { uploadCancelledEarlyText } from "../i18n/outcomes/upload-words.ts";
 import { xorBytes } from "../protocol/bytes.ts";
 import {
   ABANDON_DOWNLOAD,
@@ -74,7 +75,7 @@ export async function uploadFile(
       `A ${area} file must be 1-${areaBytes} bytes; this one is ${total}. Nothing was sent.`,
     );
   }
-  if (signal?.aborted) throw new RbcCancelledError("Upload cancelled before any byte was sent.");
+  if (signal?.aborted) throw new RbcCancelledError(uploadCancelledEarlyText(false, "en"));
   const started = io.now();
   const footprint = memoryFootprint(total);
   const readFree = () => client.request(COMMANDS.readAvailableMemory, area);

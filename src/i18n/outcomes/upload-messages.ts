@@ -8,6 +8,14 @@ import { defineMessages } from "../catalogue.ts";
 export const uploadOutcomeMessages = defineMessages({
   "outcome.area.motion": { en: "motion", ko: "모션" },
   "outcome.area.action": { en: "action", ko: "액션" },
+  "outcome.uploadCancelledEarly": {
+    en: "Upload cancelled before any byte was sent.",
+    ko: "바이트를 하나도 보내기 전에 업로드를 취소했어요.",
+  },
+  "outcome.uploadCancelledEarlyByStop": {
+    en: "Upload cancelled by Stop before any byte was sent.",
+    ko: "바이트를 하나도 보내기 전에 정지로 업로드를 취소했어요.",
+  },
   "outcome.uploadStop.lost": {
     en: "The connection was lost during the upload ({acknowledged} of {total} bytes were acknowledged).",
     ko: "업로드 중에 연결이 끊겼어요 ({total}바이트 중 {acknowledged}바이트를 받았다고 확인했어요).",

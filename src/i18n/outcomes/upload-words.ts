@@ -75,3 +75,9 @@ function stateText(f: UploadFailureFacts, area: string, locale: Locale): string 
     footprint: f.footprint,
   });
 }
+
+/** "Upload cancelled before any byte was sent." (by Stop, when it was Stop). */
+export function uploadCancelledEarlyText(byStop: boolean, locale: Locale): string {
+  const t = translator(messages, locale);
+  return byStop ? t("outcome.uploadCancelledEarlyByStop") : t("outcome.uploadCancelledEarly");
+}

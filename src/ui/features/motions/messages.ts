@@ -399,14 +399,6 @@ export const motionsMessages = defineMessages({
     ko: "먼저 액션 메모리를 초기화했기 때문에, 로봇에 전에 다운로드한 액션은 지워졌어요.",
   },
   "motions.upload.refused": { en: "Upload refused.", ko: "로봇이 업로드를 거부했어요." },
-  "motions.upload.cancelledByStop": {
-    en: "Upload cancelled by Stop before any byte was sent.",
-    ko: "바이트를 하나도 보내기 전에 정지로 업로드를 취소했어요.",
-  },
-  "motions.upload.cancelledEarly": {
-    en: "Upload cancelled before any byte was sent.",
-    ko: "바이트를 하나도 보내기 전에 업로드를 취소했어요.",
-  },
   "motions.upload.failed": { en: "The upload failed.", ko: "업로드하지 못했어요." },
 
   // Running motions (built-in, downloaded, other slots), sounds, and why the robot cannot take them now.

@@ -8,6 +8,7 @@ import type { UploadResult } from "../../../device/types.ts";
 import type { Locale } from "../../../i18n/locale.ts";
 import { uploadNoticeText } from "../../../i18n/outcomes/device.ts";
 import { robotErrorText } from "../../../i18n/outcomes/robot-error.ts";
+import { uploadCancelledEarlyText } from "../../../i18n/outcomes/upload-words.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { ACTION_AREA_BYTES, MOTION_AREA_BYTES, NO_ERROR } from "../../../protocol/catalog.ts";
 import type { RbmMotion } from "../../../protocol/rbm.ts";
@@ -197,7 +198,7 @@ export async function uploadFailed(
     const byStop = e.message.includes("by Stop");
     notice = {
       tone: "warning",
-      text: `${byStop ? t("motions.upload.cancelledByStop") : t("motions.upload.cancelledEarly")}${resetNote}`,
+      text: `${uploadCancelledEarlyText(byStop, locale)}${resetNote}`,
     };
   } else {
     notice = errorNotice(said(motionsMessages, "motions.upload.failed"), e, locale);
