@@ -47,9 +47,16 @@ async function simulateFault(page: Page, kind: string, servo: number, now: strin
   await page.getByTestId("doctor-scan").and(page.locator(":enabled")).waitFor();
 }
 
-/** Scans and waits for the scan's result (its summary line). */
+/**
+ * Scans and waits for this scan's result (its summary line). The last scan's summary stays on screen until the
+ * click is drawn, and may read the same words, so the robot's clock is held until the view shows this scan under
+ * way (its Cancel): the summary waited for is then the new one.
+ */
 async function scanNow(page: Page, done: RegExp): Promise<string> {
+  await page.evaluate(() => window.__rbcTest?.clock.hold());
   await page.getByTestId("doctor-scan").click();
+  await page.getByTestId("doctor-cancel").waitFor();
+  await page.evaluate(() => window.__rbcTest?.clock.release());
   const status = page.getByTestId("doctor-scan-status").filter({ hasText: done });
   await status.waitFor();
   return text(status);
