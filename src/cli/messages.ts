@@ -286,10 +286,8 @@ export const cliMessages = defineMessages({
 
   "cli.platform.unknown": { en: "unknown ({platform})", ko: "알 수 없음 ({platform})" },
 
-  "cli.motion.downloaded": {
-    en: "{motion} (downloaded motion {slot})",
-    ko: "{motion} (다운로드한 모션 {slot})",
-  },
+  "cli.motion.downloaded": { en: "{motion} (downloaded, {key})", ko: "{motion} (다운로드한 모션, {key})" },
+  "cli.motion.recorded": { en: "{motion} ({name}, {key})", ko: "{motion} ({name}, {key})" },
 
   "cli.play.moveWarning": {
     en: "The robot will move. Hold it or make sure it can stand.",

@@ -15,6 +15,7 @@ import {
 } from "../i18n/outcomes/device.ts";
 import {
   busyReadText,
+  emptySlotText,
   noMemoryReadText,
   runNoReplyText,
   runReportText,
@@ -24,6 +25,7 @@ import { uploadFailureText } from "../i18n/outcomes/upload-words.ts";
 import { LinkError } from "../link/transport.ts";
 import {
   RbcBusyError,
+  RbcEmptySlotError,
   RbcError,
   RbcInBootloaderError,
   RbcInvalidArgumentError,
@@ -74,6 +76,7 @@ function fromFacts(e: unknown, locale: Locale, hint: string): string {
     return `${inBootloaderText(e.facts.prompts, locale)} ${inBootloaderRecoverText(locale)}`;
   }
   if (e instanceof RbcBusyError) return busyReadText(e.command, e.waitedMs, locale);
+  if (e instanceof RbcEmptySlotError) return emptySlotText(e.motion, locale);
   if (e instanceof RbcRunNotPlayedError) return runReportText(e.report, locale) ?? said(e);
   if (e instanceof RbcRunNoReplyError) {
     return e.stop ? stopNoReplyText(e.facts, locale) : runNoReplyText(e.facts, locale);

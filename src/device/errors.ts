@@ -8,6 +8,7 @@ import {
 } from "../i18n/outcomes/device.ts";
 import {
   busyReadText,
+  emptySlotText,
   noMemoryReadText,
   runNoReplyText,
   runReportText,
@@ -283,6 +284,17 @@ export class RbcBusyError extends RbcError {
     readonly waitedMs: number,
   ) {
     super("busy", busyReadText(command, waitedMs, "en"));
+  }
+}
+
+/**
+ * Run Motion of a download number under which the robot holds nothing: it set error 3 (docs/protocol.md §3.1).
+ * `motion` is the number Run took (12-21, 33-42); `deviceErrorCode` is 3.
+ */
+export class RbcEmptySlotError extends RbcRejectedError {
+  override name = "RbcEmptySlotError";
+  constructor(readonly motion: number) {
+    super(emptySlotText(motion, "en"), 3);
   }
 }
 

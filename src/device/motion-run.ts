@@ -6,9 +6,9 @@ import { probeBusy } from "./busy-probe.ts";
 import type { ClientCore } from "./client-core.ts";
 import {
   RbcCancelledError,
+  RbcEmptySlotError,
   RbcError,
   RbcInvalidArgumentError,
-  RbcRejectedError,
   RbcRunNoReplyError,
   RbcRunNotPlayedError,
   RbcTimeoutError,
@@ -106,10 +106,7 @@ export async function runMotionReport(
     } catch (e) {
       if (activity.isCurrent(started)) activity.motionFailed();
       if (watch?.emptySlot && slot !== undefined) {
-        throw new RbcRejectedError(
-          `Motion ${motion} did not run: download slot ${slot} holds no motion (the robot reports error 3). Upload a motion into it first.`,
-          EMPTY_SLOT_ERROR,
-        );
+        throw new RbcEmptySlotError(motion);
       }
       if (e instanceof RbcTimeoutError && epoch === c.epoch) {
         const facts = await whatIsKnown(core, motion, waitMs, e.waitedMs, !sent7Before);

@@ -508,7 +508,7 @@ describe("in Korean (ko-KR)", () => {
         expect(sentence).toMatch(
           /^wave\.rbm을\(를\) 업로드했어요\. 624바이트를 조각 \d+개로 [\d.]+초 동안 보냈고 \([\d,]+바이트\/초\), 로봇이 모든 조각을 받았다고 확인했어요\./,
         );
-        expect(sentence).toContain("모션 12번(1 키)으로 저장했어요. 실행할 때 이 번호를 써요.");
+        expect(sentence).toContain("모션 12번(1번 키)으로 저장했어요. 실행할 때 이 번호를 써요.");
         expect(sentence).toContain("남은 모션 메모리: 24,576바이트 중 23,936바이트 (전에는 24,576바이트");
         expect(sentence).toContain("업로드 후 오류 코드: 오류 없음.");
         await expectGood(page, "uploaded", viewport);
@@ -533,7 +533,7 @@ describe("in Korean (ko-KR)", () => {
           "마지막 초기화나 전원을 켠 뒤로 모션 20개 중 1개 저장됨",
         );
         expect(await text(page.locator('[data-testid="shelf-entry"][data-motion="12"]'))).toBe(
-          "12 RbcPanel_Wave 리모컨: 1 키 · 재생 시간 3.2초 방금 업로드했고, 로봇의 메모리 계산에서 저장된 게 확인됐어요 지금 실행",
+          "12 RbcPanel_Wave 리모컨: 1번 키 · 재생 시간 3.2초 방금 업로드했고, 로봇의 메모리 계산에서 저장된 게 확인됐어요 지금 실행",
         );
         expect(await text(page.getByTestId("uploads-card").locator("summary"))).toBe("메모리를 세는 방법");
         await page.getByTestId("action-file").setInputFiles({
@@ -558,10 +558,10 @@ describe("in Korean (ko-KR)", () => {
           "로봇을 켠 뒤에는 기본 자세(7)만 받아들여요. 먼저 기본 자세를 실행해 주세요. 그 전까지는 다른 모션을 모두 아무 말 없이 무시해요.",
         );
         expect(await text(run.locator('[data-motion="7"]'))).toBe("7 기본 자세 1.8초 먼저 실행");
-        expect(await text(run.locator('[data-motion="12"]'))).toBe("12 RbcPanel_Wave 1 키 3.2초");
+        expect(await text(run.locator('[data-motion="12"]'))).toBe("12 RbcPanel_Wave 1번 키 3.2초");
         await run.getByText("다른 다운로드 슬롯 (19)").click();
         // The slot button shows its number and key; a screen reader hears "모션 13번 실행" and the key.
-        await run.getByRole("button", { name: /^모션 13\s?번 실행 2 키$/ }).waitFor();
+        await run.getByRole("button", { name: /^모션 13\s?번 실행 2번 키$/ }).waitFor();
         await run.locator('[data-motion="7"]').click();
         const ask = page.getByTestId("move-confirm");
         expect(await text(ask)).toBe(

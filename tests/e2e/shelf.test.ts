@@ -133,11 +133,11 @@ describe("the robot's shelf on the demo robot", () => {
     await demoMotions(page, "24,576");
     await uploadWave(page);
     const result = page.getByTestId("motion-file").getByText(/^wave\.rbm/);
-    await result.filter({ hasText: "모션 12번(1 키)으로 저장했어요. 실행할 때 이 번호를 써요." }).waitFor();
+    await result.filter({ hasText: "모션 12번(1번 키)으로 저장했어요. 실행할 때 이 번호를 써요." }).waitFor();
     await page.locator('.motions-tab[id="motions-tab-uploads"]').click();
     await page.locator('[data-testid="shelf-intro"][data-kept="12"]').waitFor();
     expect(await text(page.locator('[data-testid="shelf-entry"][data-motion="12"]'))).toBe(
-      "12 RbcPanel_Wave 리모컨: 1 키 · 재생 시간 3.2초 방금 업로드했고, 로봇의 메모리 계산에서 저장된 게 확인됐어요 지금 실행",
+      "12 RbcPanel_Wave 리모컨: 1번 키 · 재생 시간 3.2초 방금 업로드했고, 로봇의 메모리 계산에서 저장된 게 확인됐어요 지금 실행",
     );
     await page.getByTestId("demo-reset").locator("summary").click();
     await expectPageOk(page, "the Memory tab in Korean", { lang: "ko" });

@@ -346,7 +346,7 @@ describe.concurrent("rbc --demo", () => {
       motionNumber: 12,
     });
     // Without --reset: the demo robot's motion memory was empty (free 24,576 before), so the file is download 1.
-    expect(r.stdout).toContain("It became motion 12 (downloaded motion 1): play it with `rbc run 12`.");
+    expect(r.stdout).toContain("It became motion 12 (remote: key 1): play it with `rbc run 12`.");
     // Robot time: every chunk waits for the simulated EEPROM page write (5 ms) before its acknowledgement.
     expect(JSON.parse(json.stdout).elapsedMs).toBeGreaterThanOrEqual(5 * wave.chunks);
   });

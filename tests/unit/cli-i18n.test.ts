@@ -247,7 +247,7 @@ describe.concurrent("rbc in Korean", () => {
     expect(upload.code, upload.stderr).toBe(0);
     expect(upload.stdout).toContain("확인했어요: 오류 없음, 경고 없음.\n");
     expect(upload.stdout).toContain("남은 모션 메모리: 23,936바이트 (전에는 24,576바이트).\n");
-    expect(upload.stdout).toContain("저장된 번호: 모션 12 (다운로드한 모션 1). 재생하려면: `rbc run 12`.\n");
+    expect(upload.stdout).toContain("저장된 번호: 모션 12 (리모컨: 1번 키). 재생하려면: `rbc run 12`.\n");
     expect(upload.stderr).toMatch(/\[#{20}\] 624\/624바이트 100% +[\d,]+B\/s {2}완료\n/);
     expect(usage.code).toBe(2);
     expect(usage.stderr).toBe(

@@ -38,7 +38,7 @@ describe.concurrent("rbc and a robot that may be busy", () => {
     expect(r.code, r.stderr).toBe(0);
     expect(r.stdout).toContain("Done: 7 (Basic posture) in 1.8 s.");
     expect(r.stdout).toContain(
-      "Replied: 12 (downloaded motion 1). The robot replied after 0.0 s. How long motion 12 takes is not known, so what played is not known.",
+      "Replied: 12 (downloaded, key 1). The robot replied after 0.0 s. How long motion 12 takes is not known, so what played is not known.",
     );
     expect(r.stdout).not.toContain("Done: 12");
   });

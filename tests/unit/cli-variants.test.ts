@@ -87,7 +87,7 @@ describe.concurrent("the demo robot as a firmware that does not answer 0x0C (nor
       "The robot does not report its serial number, so the file's robot check was skipped.",
     );
     expect(text.stdout).toContain(`Free motion memory: ${WAVE.freeAfter.toLocaleString("en-US")} bytes`);
-    expect(text.stdout).toContain("It became motion 12 (downloaded motion 1)");
+    expect(text.stdout).toContain("It became motion 12 (remote: key 1)");
     expect(json.code, json.stderr).toBe(0);
     expect(JSON.parse(json.stdout)).toMatchObject({
       ok: true,

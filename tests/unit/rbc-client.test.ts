@@ -1,5 +1,11 @@
 import { describe, expect, it } from "vitest";
-import { type LogEntry, RbcClient, type RbcEvent, type UploadProgress } from "../../src/device/index.ts";
+import {
+  errorText,
+  type LogEntry,
+  RbcClient,
+  type RbcEvent,
+  type UploadProgress,
+} from "../../src/device/index.ts";
 import { type Transport, WebSerialTransport } from "../../src/link/index.ts";
 import { FACTORY_ZEROS, motionImage, parseRbm, STANDARD_ZEROS, toHex } from "../../src/protocol/index.ts";
 import { VirtualClock } from "../../src/shared/clock.ts";
@@ -442,8 +448,14 @@ describe("a motion the robot ignores, told from one that plays (docs/protocol.md
     const { client, run, clock } = await makeRig({ sim: { basicPostureDone: true } });
     const t0 = clock.now();
     const error = await run(client.runMotion(12).catch((e) => e));
-    expect(error).toMatchObject({ code: "rejected", deviceErrorCode: 3 });
-    expect(String(error.message)).toMatch(/download slot 1 holds no motion/);
+    expect(error).toMatchObject({ code: "rejected", deviceErrorCode: 3, motion: 12 });
+    // One number per motion: the one Run took, never the download slot's own count.
+    expect(error.message).toBe(
+      "Motion 12 did not run: the robot holds no motion under that number (it reports error 3). Upload a motion first.",
+    );
+    expect(errorText(error, "ko")).toBe(
+      "모션 12은(는) 실행되지 않았어요. 로봇에 그 번호로 저장된 모션이 없어요 (오류 3을 알려 줬어요). 먼저 모션을 업로드해 주세요.",
+    );
     expect(clock.now() - t0).toBeLessThan(1500);
     expect(client.state.playing).toBeUndefined();
     expect(await run(client.readFirmwareVersion())).toEqual({ major: 2, minor: 23 });

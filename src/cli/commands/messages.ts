@@ -257,12 +257,12 @@ export const commandMessages = defineMessages({
   },
   "cmd.upload.errorCode": { en: "Error code: {words}.", ko: "오류 코드: {words}." },
   "cmd.upload.became": {
-    en: "It became motion {motion} (downloaded motion {slot}): play it with `rbc run {motion}`.",
-    ko: "저장된 번호: 모션 {motion} (다운로드한 모션 {slot}). 재생하려면: `rbc run {motion}`.",
+    en: "It became motion {motion} (remote: {key}): play it with `rbc run {motion}`.",
+    ko: "저장된 번호: 모션 {motion} (리모컨: {key}). 재생하려면: `rbc run {motion}`.",
   },
   "cmd.upload.becameHeld": {
-    en: "It became motion {motion} (downloaded motion {slot}): play it with `rbc run {motion}` — first with the robot held or lying down.",
-    ko: "저장된 번호: 모션 {motion} (다운로드한 모션 {slot}). 재생하려면: `rbc run {motion}`. 처음에는 로봇을 잡거나 눕힌 채로 실행해 주세요.",
+    en: "It became motion {motion} (remote: {key}): play it with `rbc run {motion}` — first with the robot held or lying down.",
+    ko: "저장된 번호: 모션 {motion} (리모컨: {key}). 재생하려면: `rbc run {motion}`. 처음에는 로봇을 잡거나 눕힌 채로 실행해 주세요.",
   },
   "cmd.upload.numberUnknown": {
     en: "The robot already held downloaded motions and does not say how many, so this one's number is not known: the first 10 uploads play with `rbc run 12` … `rbc run 21`, the next 10 with 33 … 42. Upload with --reset to make it motion 12 (the others are forgotten).",
@@ -573,8 +573,6 @@ export const commandMessages = defineMessages({
     en: "Give either --port PATH (a serial device to serve) or --pty.",
     ko: "--port PATH(가상 로봇을 띄울 시리얼 장치)나 --pty 중 하나를 써 주세요.",
   },
-  "cmd.shelf.key": { en: "key {key}", ko: "{key}번 키" },
-  "cmd.shelf.starKey": { en: "* then {key}", ko: "* 다음 {key}" },
   "cmd.shelf.stored": { en: "stored {when}", ko: "{when}에 저장" },
   "cmd.shelf.robotSerial": { en: "Robot {serial}:", ko: "로봇 {serial}:" },
   "cmd.shelf.robotPort": {

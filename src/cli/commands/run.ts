@@ -1,7 +1,7 @@
 import { RbcError } from "../../device/errors.ts";
 import type { StopActivityResult } from "../../device/rbc-client.ts";
 import { isHazardousMotion, type RunReport } from "../../device/run-outcome.ts";
-import { reconcile, shelfDurationMs, shelfKey } from "../../device/shelf.ts";
+import { reconcile, shelfKey } from "../../device/shelf.ts";
 import type { Locale } from "../../i18n/locale.ts";
 import { motionHazardText, runReportText } from "../../i18n/outcomes/run-words.ts";
 import { translator } from "../../i18n/translate.ts";
@@ -20,17 +20,24 @@ import { stoppedMotionSentence } from "./stop.ts";
 
 export { motionName };
 
+/** What rbc recorded uploading a downloaded motion (rbc shelf). */
+interface Recorded {
+  durationMs: number;
+  name: string;
+}
+
 /**
- * The durations rbc recorded uploading the downloaded motions among `motions` (rbc shelf), for the Run check of
- * docs/protocol.md §3.1 — used only while the robot's free memory still allows the record (`reconcile`); when
- * it cannot be checked, or the shelf cannot be read, none (the check then says what is known).
+ * What rbc recorded uploading the downloaded motions among `motions` (rbc shelf): the duration for the Run
+ * check of docs/protocol.md §3.1 and the name to show — used only while the robot's free memory still allows
+ * the record (`reconcile`); when it cannot be checked, or the shelf cannot be read, none (the check then says
+ * what is known, and the motion is shown by its number and key).
  */
-async function shelfDurations(
+async function shelfRecords(
   robot: Robot,
   motions: readonly number[],
   env: RunEnv,
-): Promise<Map<number, number>> {
-  const found = new Map<number, number>();
+): Promise<Map<number, Recorded>> {
+  const found = new Map<number, Recorded>();
   if (!motions.some((m) => downloadSlotOf(m) !== undefined)) return found;
   try {
     const file = await readShelves(shelfPath(env.env));
@@ -40,8 +47,8 @@ async function shelfDurations(
     if (free === undefined) return found;
     const { shelf } = reconcile(shelfOf(file, shelfKey(serialNumber, robot.where)), free);
     for (const m of motions) {
-      const ms = shelfDurationMs(shelf, m);
-      if (ms !== undefined) found.set(m, ms);
+      const slot = shelf.slots.find((s) => s.motionNumber === m);
+      if (slot) found.set(m, { durationMs: slot.durationMs, name: slot.name });
     }
   } catch {
     // A shelf file that cannot be read changes nothing about the Run: its check says what is known.
@@ -90,11 +97,12 @@ export const runCommand: CommandDef = {
       env.out.note(`rbc: ${t("cmd.run.hazardNote", { hazard: motionHazardText(n, locale) ?? "" })}`);
     }
     const robot = await connectRobot("run", values, env, { handlesInterrupt: true });
-    const durations = await shelfDurations(robot, motions, env);
+    const recorded = await shelfRecords(robot, motions, env);
     const results: Array<Record<string, unknown>> = [];
     for (const motion of motions) {
-      const name = motionName(motion);
-      const shown = motionName(motion, locale);
+      const record = recorded.get(motion);
+      const name = motionName(motion, "en", record?.name);
+      const shown = motionName(motion, locale, record?.name);
       if (results.length > 0) await env.out.settle();
       if (env.signal.aborted) {
         // Interrupted between two motions (or stdout was closed): do not start the next one.
@@ -118,7 +126,7 @@ export const runCommand: CommandDef = {
       let failure: unknown;
       let report: RunReport | undefined;
       try {
-        const expectedMs = durations.get(motion);
+        const expectedMs = record?.durationMs;
         report = await robot.client.runMotionReport(motion, expectedMs === undefined ? {} : { expectedMs });
       } catch (e) {
         failure = e;

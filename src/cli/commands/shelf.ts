@@ -1,5 +1,6 @@
 import { type RobotShelf, reconcile, type ShelfSlot, shelfKey } from "../../device/shelf.ts";
 import type { Locale } from "../../i18n/locale.ts";
+import { remoteKeyWords } from "../../i18n/outcomes/remote-key.ts";
 import { translator } from "../../i18n/translate.ts";
 import { formatSeconds } from "../../i18n/units.ts";
 import { remoteKeyOf } from "../../protocol/catalog.ts";
@@ -21,16 +22,9 @@ import { commandMessages } from "./messages.ts";
 
 type T = ReturnType<typeof translator<typeof commandMessages>>;
 
-/** "key 1" or "* then 0": how the remote plays it. */
-function keyWords(motionNumber: number, t: T): string {
-  const key = remoteKeyOf(motionNumber);
-  if (!key) return "";
-  return key.star ? t("cmd.shelf.starKey", { key: key.key }) : t("cmd.shelf.key", { key: key.key });
-}
-
 function slotLine(s: ShelfSlot, t: T, locale: Locale): string {
   const when = s.storedAt.slice(0, 16).replace("T", " ");
-  const key = keyWords(s.motionNumber, t);
+  const key = remoteKeyWords(s.motionNumber, locale);
   const keyColumn = `${key}${" ".repeat(Math.max(0, 10 - displayWidth(key)))}`;
   const duration = formatSeconds(s.durationMs / 1000, locale);
   return `  ${String(s.motionNumber).padStart(2)}  ${keyColumn}  ${s.name}  ${duration}  ${t("cmd.shelf.stored", { when })}`;

@@ -4,6 +4,7 @@ import { RbcUploadError } from "../../device/errors.ts";
 import type { FileUploadResult } from "../../device/index.ts";
 import type { Locale } from "../../i18n/locale.ts";
 import { nothingSentText, uploadNoticeText, uploadOutcomeText } from "../../i18n/outcomes/device.ts";
+import { remoteKeyWords } from "../../i18n/outcomes/remote-key.ts";
 import { uploadAfterText } from "../../i18n/outcomes/upload-words.ts";
 import { translator } from "../../i18n/translate.ts";
 import { formatSeconds } from "../../i18n/units.ts";
@@ -275,7 +276,10 @@ export const uploadCommand: CommandDef = {
     );
     const placed = uploadedSlot(result);
     if (placed.motionNumber !== undefined) {
-      const became = { motion: String(placed.motionNumber), slot: String(placed.slot) };
+      const became = {
+        motion: String(placed.motionNumber),
+        key: remoteKeyWords(placed.motionNumber, locale),
+      };
       env.out.line(real ? t("cmd.upload.becameHeld", became) : t("cmd.upload.became", became));
     } else if (result.area === "motion") {
       env.out.line(t("cmd.upload.numberUnknown"));

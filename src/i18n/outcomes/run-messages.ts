@@ -34,6 +34,10 @@ export const runOutcomeMessages = defineMessages({
     en: "The robot replied after {elapsed}. How long motion {motion} takes is not known, so what played is not known.",
     ko: "로봇이 {elapsed} 뒤에 응답했어요. 모션 {motion}의 길이를 몰라서 무엇이 재생되었는지 알 수 없어요.",
   },
+  "outcome.run.emptySlot": {
+    en: "Motion {motion} did not run: the robot holds no motion under that number (it reports error 3). Upload a motion first.",
+    ko: "모션 {motion}은(는) 실행되지 않았어요. 로봇에 그 번호로 저장된 모션이 없어요 (오류 3을 알려 줬어요). 먼저 모션을 업로드해 주세요.",
+  },
   "outcome.run.noReply": {
     en: "The robot did not report the end of motion {motion} within {wait}.",
     ko: "로봇이 {wait} 안에 모션 {motion}이(가) 끝났다고 알리지 않았어요.",

@@ -9,6 +9,11 @@ import { runOutcomeMessages as messages } from "./run-messages.ts";
 const t = (locale: Locale) => translator(messages, locale);
 const seconds = (ms: number, locale: Locale) => formatSeconds(ms / 1000, locale);
 
+/** Run Motion of a download number the robot holds nothing under: it set error 3 (docs/protocol.md §3.1). */
+export function emptySlotText(motion: number, locale: Locale): string {
+  return t(locale)("outcome.run.emptySlot", { motion: String(motion) });
+}
+
 /** The sentence for a Run that was not confirmed as played; undefined for `played`. */
 export function runReportText(report: RunReport, locale: Locale): string | undefined {
   const elapsed = seconds(report.elapsedMs, locale);

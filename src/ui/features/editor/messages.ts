@@ -1004,8 +1004,7 @@ export const editorMessages = defineMessages({
     en: "The robot is in servo control (direct mode): end teach-in, or servo control in the Servos view, first.",
     ko: "로봇이 서보 제어(직접 모드) 중이에요. 티칭이나 서보 화면의 서보 제어를 먼저 끝내 주세요.",
   },
-  "editor.robot.key": { en: "remote key {key}", ko: "리모컨 {key}번 키" },
-  "editor.robot.starKey": { en: "remote * then {key}", ko: "리모컨 * 다음 {key}번 키" },
+  "editor.robot.remoteKey": { en: "remote {key}", ko: "리모컨 {key}" },
   "editor.robot.holds": {
     en: "The robot holds this motion as motion {number} ({key}).",
     ko: "로봇에 이 모션이 모션 {number}번({key})으로 저장되어 있어요.",

@@ -4,8 +4,9 @@
  * the draft changed since), and the remote key that plays it (docs/protocol.md §3.1). The upload itself, its
  * checks, confirmation, progress and result are the Motions view's (motions/upload-actions.ts).
  */
+
+import { remoteKeyWords } from "../../../i18n/outcomes/remote-key.ts";
 import { asRbm, type Motion, saveMotion } from "../../../motion/index.ts";
-import { remoteKeyOf } from "../../../protocol/catalog.ts";
 import { type BookEntry, motionNumberOf, type SlotBook } from "../motions/slot-book.ts";
 import type { UploadTarget } from "../motions/state.ts";
 import { motionFileName } from "./file-name.ts";
@@ -75,7 +76,6 @@ export function robotCopyStatus(copy: RobotCopy | undefined, book: SlotBook, doc
 
 /** The remote key that plays Run number `number`: "key 1", "* then 1" (docs/protocol.md §3.1), or undefined. */
 export function remoteKeyText(number: number, t: EditorTranslator): string | undefined {
-  const key = remoteKeyOf(number);
-  if (!key) return undefined;
-  return key.star ? t("editor.robot.starKey", { key: key.key }) : t("editor.robot.key", { key: key.key });
+  const key = remoteKeyWords(number, t.locale);
+  return key === "" ? undefined : t("editor.robot.remoteKey", { key });
 }

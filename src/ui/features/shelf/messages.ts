@@ -14,8 +14,6 @@ export const shelfMessages = defineMessages({
     en: "No motion uploaded from this browser is recorded for this robot.",
     ko: "이 브라우저에서 이 로봇에 업로드한 모션 기록이 없어요.",
   },
-  "shelf.key": { en: "key {key}", ko: "{key} 키" },
-  "shelf.starKey": { en: "* then {key}", ko: "* 다음 {key}" },
   "shelf.keyLabel": { en: "remote: {key}", ko: "리모컨: {key}" },
   "shelf.runNow": { en: "Run now", ko: "지금 실행" },
   "shelf.runNowLabel": { en: "Run now: motion {number} ({name})", ko: "지금 실행: 모션 {number}번({name})" },

@@ -1,7 +1,7 @@
 import type { Locale } from "../../../i18n/locale.ts";
+import { remoteKeyWords } from "../../../i18n/outcomes/remote-key.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { formatDateTime } from "../../../i18n/units.ts";
-import { remoteKeyOf } from "../../../protocol/catalog.ts";
 import { shelfMessages } from "./messages.ts";
 
 /**
@@ -9,13 +9,7 @@ import { shelfMessages } from "./messages.ts";
  * `*` then 1 …) and how sure the panel is that it is there.
  */
 
-/** "key 1", "* then 0", or "" for a number no download key plays. */
-export function remoteKeyWords(motionNumber: number, locale: Locale): string {
-  const key = remoteKeyOf(motionNumber);
-  if (!key) return "";
-  const t = translator(shelfMessages, locale);
-  return key.star ? t("shelf.starKey", { key: key.key }) : t("shelf.key", { key: key.key });
-}
+export { remoteKeyWords };
 
 /** How a download is known: uploaded now, or recorded earlier (checked against free memory, or not yet). */
 export type StoredWay = { kind: "now" } | { kind: "recorded"; at: string; checked: boolean };
