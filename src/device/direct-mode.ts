@@ -1,3 +1,4 @@
+import { directModeNeededText, servoRangeText } from "../i18n/outcomes/device.ts";
 import { HUNO_BASIC_POSTURE, HUNO_SERVO_IDS, safeRange } from "../protocol/servo-limits.ts";
 import {
   WCK_MAX_POSITION,
@@ -45,11 +46,7 @@ export class DirectMode {
   move(id: number, position: number, torque: number): Promise<ServoStatus> {
     const { min, max } = DirectMode.safeRange(id);
     if (!Number.isInteger(position) || position < min || position > max) {
-      return Promise.reject(
-        new RbcInvalidArgumentError(
-          `Servo ${id} may only move within ${min}-${max}; ${position} was not sent.`,
-        ),
-      );
+      return Promise.reject(new RbcInvalidArgumentError(servoRangeText(id, { min, max }, position, "en")));
     }
     return this.ask(id, () => wckMove(id, position, torque), `move servo ${id} to ${position}`);
   }
@@ -168,7 +165,7 @@ export class DirectMode {
 
   private requireDirect(): void {
     if (this.#host.mode !== "direct") {
-      throw new RbcError("wrong-mode", "Servo control needs direct mode: press “Start servo control” first.");
+      throw new RbcError("wrong-mode", directModeNeededText("en"));
     }
   }
 }

@@ -8,6 +8,9 @@ import { RbcNotIdleError } from "./direct-mode-errors.ts";
 import { RbcBadReplyError, RbcError, RbcTimeoutError } from "./errors.ts";
 import { WIRE_BYTE_MS } from "./raw-channel.ts";
 
+/** The log's note for 0xFF sent to leave direct mode when the RBC did not answer (it may have switched). */
+const BLIND_EXIT_NOTE = "leave direct mode (blind, after no reply)";
+
 /**
  * The 0x10 request and its reply on the wire (15 + 1 bytes each way): a paced link takes at least this (less a
  * tenth of a millisecond for the clock's grain).
@@ -33,7 +36,7 @@ export async function enterDirect(core: ClientCore, use: DirectUse): Promise<voi
     // The RBC may have switched even though its `01` was lost or garbled; it would then relay every later
     // packet to the servo bus. The exit sequence is harmless garbage in packet mode, so send it blindly.
     if (e instanceof RbcTimeoutError || e instanceof RbcBadReplyError) {
-      await c.writeRaw(EXIT_DIRECT_MODE, "leave direct mode (blind, after no reply)").catch(() => {});
+      await c.writeRaw(EXIT_DIRECT_MODE, BLIND_EXIT_NOTE).catch(() => {});
       c.parser.reset();
     }
     throw e;
@@ -108,7 +111,7 @@ async function fenceServoBus(core: ClientCore): Promise<void> {
     await c.request(COMMANDS.readFirmwareVersion, undefined);
     await c.request(COMMANDS.enterDirectMode, undefined, { retries: 0 });
   } catch (e) {
-    await c.writeRaw(EXIT_DIRECT_MODE, "leave direct mode (blind, after no reply)").catch(() => {});
+    await c.writeRaw(EXIT_DIRECT_MODE, BLIND_EXIT_NOTE).catch(() => {});
     c.parser.reset();
     if (activity.direct) activity.exitDirect();
     // Not the servo's timeout (callers take that for a silent servo): the robot itself did not answer.

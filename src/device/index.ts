@@ -76,6 +76,7 @@ export {
   type RobotShelf,
   reconcile,
   recordUpload,
+  remoteKeyWords,
   type ShelfDrop,
   type ShelfSlot,
   shelfDurationMs,

@@ -1,3 +1,4 @@
+import { cancelledByLimpText } from "../i18n/outcomes/device.ts";
 import { BASIC_POSTURE_MOTION } from "../protocol/catalog.ts";
 import { COMMANDS } from "../protocol/commands.ts";
 import { EXIT_DIRECT_MODE } from "../protocol/wck.ts";
@@ -49,7 +50,7 @@ export async function runLimp(core: ClientCore): Promise<LimpResult> {
     throw new RbcCannotLimpError(SCENE_END_MS + c.timeouts.marginMs);
   }
   const sound = activity.sound;
-  c.failPending(new RbcCancelledError("Cancelled by Limp: every servo is being made limp."));
+  c.failPending(new RbcCancelledError(cancelledByLimpText("en")));
   return c.exclusive(async () => {
     if (c.mode === "direct") {
       activity.handDirect("limp");

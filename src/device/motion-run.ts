@@ -1,4 +1,4 @@
-import { codeText } from "../i18n/outcomes/device.ts";
+import { cancelledByLimpText, codeText } from "../i18n/outcomes/device.ts";
 import { BASIC_POSTURE_MOTION, downloadSlotOf } from "../protocol/catalog.ts";
 import { COMMANDS } from "../protocol/commands.ts";
 import { encodePacket } from "../protocol/packet.ts";
@@ -123,8 +123,7 @@ export async function runMotionReport(
         `Stopped by Stop: motion ${motion} ended at the end of its scene and the robot holds that pose (the robot answered 07).`,
       );
     }
-    if (ended.by === "limp")
-      throw new RbcCancelledError("Cancelled by Limp: every servo is being made limp.");
+    if (ended.by === "limp") throw new RbcCancelledError(cancelledByLimpText("en"));
   }
   return ended.report;
 }

@@ -7,6 +7,7 @@ import type { Transport } from "../link/transport.ts";
 import type { Motion } from "../motion/index.ts";
 import { COMMANDS, type MemoryArea } from "../protocol/commands.ts";
 import { type IntelHexImage, parseIntelHex } from "../protocol/intel-hex.ts";
+import { platformWarning } from "../protocol/plausibility.ts";
 import { motionDurationMs, type RbmMotion } from "../protocol/rbm.ts";
 import type { Clock } from "../shared/clock.ts";
 import type { Emitter } from "../shared/emitter.ts";
@@ -179,12 +180,8 @@ export class RbcClient {
         throw e;
       });
     const platform = this.#c.state.platform ?? 0;
-    const warnings: string[] = [];
-    if (platform < 1 || platform > 4) {
-      warnings.push(
-        `The robot reports platform ${platform}; known platforms are 1-4 (HUNO, DINO, DOGY, PF2).`,
-      );
-    }
+    const unknownPlatform = platformWarning(platform);
+    const warnings: string[] = unknownPlatform === undefined ? [] : [unknownPlatform];
     return { firmware, platform, serialNumber, warnings };
   }
 

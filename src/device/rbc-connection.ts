@@ -481,7 +481,10 @@ export class RbcConnection {
   requirePacketMode(what: string): void {
     if (this.mode === "disconnected") {
       const lost = this._state.reason;
-      throw lost ? new RbcDisconnectedError(`${lost} Connect again.`) : new RbcNotConnectedError();
+      if (!lost) throw new RbcNotConnectedError();
+      throw new RbcDisconnectedError(
+        lost === codeText("disconnected", "en") ? lost : `${lost} Connect again.`,
+      );
     }
     if (this.mode === "direct") {
       throw new RbcError("wrong-mode", `"${what}" needs the normal mode: leave direct servo control first.`);
@@ -560,8 +563,10 @@ export class RbcConnection {
 
   private onTransportStatus(event: TransportStatusEvent): void {
     if (event.status !== "lost") return;
-    const reason = event.reason ?? "The connection to the robot was lost.";
-    this.failPending(new RbcDisconnectedError(`${reason} Check the cable, then connect again.`, event.error));
+    // The link says what happened; without its words, the outcome catalogue's sentence for a lost link.
+    const reason = event.reason ?? codeText("disconnected", "en");
+    const message = event.reason === undefined ? reason : `${reason} Check the cable, then connect again.`;
+    this.failPending(new RbcDisconnectedError(message, event.error));
     this.subscription = undefined;
     this.setState({
       mode: "disconnected",

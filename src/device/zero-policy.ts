@@ -1,5 +1,5 @@
 import { zerosCancelledBeforeWriteText, zerosNotReadText } from "../i18n/outcomes/device.ts";
-import { zeroProblems } from "../protocol/zeros.ts";
+import { zeroProblems, zerosNotWrittenText } from "../protocol/zeros.ts";
 import { createZerosBackup, type ZerosBackup, zerosBackupFileName } from "../protocol/zeros-backup.ts";
 import {
   RbcCancelledError,
@@ -56,9 +56,7 @@ export async function writeZerosWithBackup(
 ): Promise<SafeZeroWrite> {
   const problems = zeroProblems(target);
   if (problems.length > 0) {
-    throw new RbcInvalidArgumentError(
-      `Not written: ${problems.map((p) => p.message).join(" ")} Nothing was sent to the robot.`,
-    );
+    throw new RbcInvalidArgumentError(zerosNotWrittenText(problems, "en"));
   }
   let current: number[];
   try {

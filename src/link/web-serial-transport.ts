@@ -93,14 +93,9 @@ export class WebSerialTransport extends TransportBase implements Transport {
     try {
       await this.writer.write(bytes);
     } catch (e) {
-      this.lost("Writing to the port failed; the adapter may have been unplugged.", e);
-      throw new LinkError(
-        "disconnected",
-        "Writing to the port failed; the adapter may have been unplugged.",
-        {
-          cause: e,
-        },
-      );
+      const reason = "Writing to the port failed; the adapter may have been unplugged.";
+      this.lost(reason, e);
+      throw new LinkError("disconnected", reason, { cause: e });
     }
   }
 

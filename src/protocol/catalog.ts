@@ -78,11 +78,17 @@ export function downloadSlotOf(number: number): number | undefined {
   return undefined;
 }
 
+/** A key of the IR remote that plays a downloaded motion: `key` ("1"-"9", "0"), after `*` when `star`. */
+export interface RemoteKey {
+  star: boolean;
+  key: string;
+}
+
 /**
  * The remote key that plays downloaded motion number `number` (docs/protocol.md §3.1): 12-21 are keys 1-9 and
  * 0, 33-42 the same keys after `*`. Undefined for any other number.
  */
-export function remoteKeyOf(number: number): { star: boolean; key: string } | undefined {
+export function remoteKeyOf(number: number): RemoteKey | undefined {
   const slot = downloadSlotOf(number);
   if (slot === undefined) return undefined;
   const k = ((slot - 1) % 10) + 1;

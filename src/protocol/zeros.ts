@@ -1,3 +1,6 @@
+import type { Locale } from "../i18n/locale.ts";
+import { zeroOutcomeMessages } from "../i18n/outcomes/zero-messages.ts";
+import { translator } from "../i18n/translate.ts";
 import { ProtocolError } from "./errors.ts";
 
 /** Zero positions of servo IDs 0-15 (docs/protocol.md §4). */
@@ -25,44 +28,59 @@ export interface ZeroProblem {
   message: string;
 }
 
-/** Every reason the RBC would refuse this table (empty when it would accept it). */
+/** Every reason the RBC would refuse this table (empty when it would accept it); `message` in English. */
 export function zeroProblems(zeros: readonly unknown[]): ZeroProblem[] {
-  const problems: ZeroProblem[] = [];
+  const found: Omit<ZeroProblem, "message">[] = [];
   if (zeros.length !== ZERO_COUNT) {
-    problems.push({
-      id: -1,
-      value: zeros.length,
-      message: `A zero table has 16 values, not ${zeros.length}.`,
-    });
-    return problems;
-  }
-  // A plain loop, not forEach: forEach skips the holes of a sparse array, and a hole is not a zero.
-  for (let id = 0; id < ZERO_COUNT; id++) {
-    const value = zeros[id];
-    const { min, max } = zeroRange(id);
-    if (typeof value !== "number" || !Number.isInteger(value)) {
-      problems.push({ id, value, message: `Servo ${id}: ${describeValue(value)} is not a whole number.` });
-    } else if (value < min || value > max) {
-      problems.push({
-        id,
-        value,
-        message: `Servo ${id}: ${value} is outside ${min}-${max} (standard ${STANDARD_ZEROS[id]} ± ${ZERO_TOLERANCE}); the RBC would refuse the whole table.`,
-      });
+    found.push({ id: -1, value: zeros.length });
+  } else {
+    // A plain loop, not forEach: forEach skips the holes of a sparse array, and a hole is not a zero.
+    for (let id = 0; id < ZERO_COUNT; id++) {
+      const value = zeros[id];
+      const { min, max } = zeroRange(id);
+      const whole = typeof value === "number" && Number.isInteger(value);
+      if (!whole || value < min || value > max) found.push({ id, value });
     }
   }
-  return problems;
+  return found.map((p) => ({ ...p, message: zeroProblemText(p, "en") }));
+}
+
+/** Why the RBC would refuse a zero table, in `locale`, from the problem's facts (its servo id and value). */
+export function zeroProblemText(problem: Omit<ZeroProblem, "message">, locale: Locale): string {
+  const t = translator(zeroOutcomeMessages, locale);
+  const { id, value } = problem;
+  if (id < 0) return t("outcome.zeros.count", { given: String(value) });
+  if (typeof value !== "number" || !Number.isInteger(value)) {
+    return t("outcome.zeros.notWhole", { servo: String(id), value: describeValue(value, locale) });
+  }
+  const { min, max } = zeroRange(id);
+  return t("outcome.zeros.range", {
+    servo: String(id),
+    value: String(value),
+    min: String(min),
+    max: String(max),
+    standard: String(STANDARD_ZEROS[id]),
+    tolerance: String(ZERO_TOLERANCE),
+  });
+}
+
+/** "Not written: <every problem> Nothing was sent to the robot.", in `locale`. */
+export function zerosNotWrittenText(problems: readonly ZeroProblem[], locale: Locale): string {
+  const words = problems.map((p) => zeroProblemText(p, locale)).join(" ");
+  return translator(zeroOutcomeMessages, locale)("outcome.zeros.notWritten", { problems: words });
 }
 
 /**
  * A value as a person reads it in a message, never throwing: `String()` throws for objects whose `toString`
  * is not a function (`{ toString: [] }` in a damaged backup file), and a message must not fail.
  */
-function describeValue(value: unknown): string {
-  if (value === undefined) return "an empty value";
+function describeValue(value: unknown, locale: Locale): string {
+  const t = translator(zeroOutcomeMessages, locale);
+  if (value === undefined) return t("outcome.value.empty");
   if (typeof value === "string") return JSON.stringify(value.length > 20 ? `${value.slice(0, 20)}…` : value);
   if (typeof value === "number" || typeof value === "boolean" || value === null) return `"${value}"`;
-  if (Array.isArray(value)) return "a list";
-  return typeof value === "object" ? "an object" : `a ${typeof value}`;
+  if (Array.isArray(value)) return t("outcome.value.list");
+  return typeof value === "object" ? t("outcome.value.object") : `a ${typeof value}`;
 }
 
 export function isAcceptedZeroTable(zeros: readonly unknown[]): zeros is number[] {

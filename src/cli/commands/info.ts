@@ -93,7 +93,7 @@ export const infoCommand: CommandDef = {
     // The client's warnings are English sentences; the one it gives (an unknown platform) is said here too.
     const said = (warning: string) =>
       locale !== "en" && warning === platformWarning(platform)
-        ? t("cmd.info.platformWarning", { platform: String(platform) })
+        ? (platformWarning(platform, locale) ?? warning)
         : warning;
     for (const warning of warnings) env.out.note(t("cmd.warning", { warning: said(warning) }));
     return EXIT.ok;

@@ -44,10 +44,6 @@ export const commandMessages = defineMessages({
     en: "motion {motion} of {motionSize} bytes, action {action} of {actionSize} bytes",
     ko: "모션 {motionSize}바이트 중 {motion}바이트, 액션 {actionSize}바이트 중 {action}바이트",
   },
-  "cmd.info.platformWarning": {
-    en: "The robot reports platform {platform}; known platforms are 1-4 (HUNO, DINO, DOGY, PF2).",
-    ko: "로봇이 플랫폼을 {platform}(으)로 알려 왔어요. 알려진 플랫폼은 1-4(HUNO, DINO, DOGY, PF2)예요.",
-  },
 
   "cmd.zeros.noValues": {
     en: "Give the 16 zero values, e.g. 125,202,162,66,…",
@@ -122,22 +118,6 @@ export const commandMessages = defineMessages({
     ko: "로봇 {robot}의 영점 위치 ({where}):",
   },
   "cmd.zeros.asList": { en: "As a list: {zeros}", ko: "목록으로: {zeros}" },
-  "cmd.zeros.notWritten": {
-    en: "Not written: {problems} Nothing was sent to the robot.",
-    ko: "쓰지 않았어요: {problems} 로봇에 아무것도 보내지 않았어요.",
-  },
-  "cmd.zeros.problem.count": {
-    en: "A zero table has 16 values, not {given}.",
-    ko: "영점 표에는 값이 16개 있어야 해요. 받은 값은 {given}개예요.",
-  },
-  "cmd.zeros.problem.notWhole": {
-    en: "Servo {servo}: {value} is not a whole number.",
-    ko: "서보 {servo}: {value}은(는) 정수가 아니에요.",
-  },
-  "cmd.zeros.problem.range": {
-    en: "Servo {servo}: {value} is outside {min}-{max} (standard {standard} ± {tolerance}); the RBC would refuse the whole table.",
-    ko: "서보 {servo}: {value}은(는) {min}-{max} 범위를 벗어나요 (기준 {standard} ± {tolerance}). RBC가 표 전체를 거부할 거예요.",
-  },
   "cmd.zeros.backupSaved": {
     en: "Backup saved as {file}, {number} zeros read from robot {robot}: {zeros}",
     ko: "백업을 {file}(으)로 저장했어요. 로봇 {robot}에서 영점 {number}개를 읽었어요: {zeros}",
@@ -382,10 +362,6 @@ export const commandMessages = defineMessages({
     ko: "{time}초  거리 {distance}cm{implausible}   가속도 x {x}  y {y}  z {z}",
   },
   "cmd.sensors.implausible": { en: "(implausible)", ko: "(믿기 어려움)" },
-  "cmd.sensors.distanceWarning": {
-    en: "The distance sensor reports {distance} cm, outside the {min}-{max} cm it can measure: the reading is shown as it is but is not plausible.",
-    ko: "거리 센서가 {distance}cm를 알려 왔어요. 잴 수 있는 {min}-{max}cm를 벗어난 값이라 읽은 그대로 보여 주지만 믿기 어려워요.",
-  },
 
   "cmd.log.unknown": {
     en: 'Unknown command "{name}" to log.',

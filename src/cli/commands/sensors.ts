@@ -1,7 +1,7 @@
 import { RbcError } from "../../device/errors.ts";
 import type { Locale } from "../../i18n/locale.ts";
 import { translator } from "../../i18n/translate.ts";
-import { DISTANCE_MAX_CM, DISTANCE_MIN_CM, distanceWarning } from "../../protocol/plausibility.ts";
+import { distanceWarning } from "../../protocol/plausibility.ts";
 import type { Clock } from "../../shared/clock.ts";
 import { intOption, noExtraArguments, parseCommand } from "../args.ts";
 import { type CommandDef, localeOf } from "../command.ts";
@@ -54,14 +54,7 @@ export function sensorReading(
     z: axis(z),
   });
   const json = { ms, distanceCm, accelerometer, ...(warning ? { warnings: [warning] } : {}) };
-  const said =
-    warning === undefined || locale === "en"
-      ? warning
-      : t("cmd.sensors.distanceWarning", {
-          distance: String(distanceCm),
-          min: String(DISTANCE_MIN_CM),
-          max: String(DISTANCE_MAX_CM),
-        });
+  const said = distanceWarning(distanceCm, locale);
   return { line, json, warning, said };
 }
 

@@ -13,6 +13,7 @@ import {
   ZERO_TOLERANCE,
   zeroProblems,
   zeroRange,
+  zerosNotWrittenText,
 } from "../../protocol/zeros.ts";
 import { serialMismatchWarning } from "../../protocol/zeros-backup.ts";
 import { formatFirmware } from "../../shared/format.ts";
@@ -22,7 +23,7 @@ import { connectRobot, type Robot, robotPlace } from "../connect.ts";
 import { CliError, EXIT, errorCode, errorSaid, UsageError } from "../errors.ts";
 import { COMMAND_HELP } from "../help/command-help.ts";
 import { displayWidth } from "../help/render.ts";
-import { joinSaid, type Said, said, saidEach } from "../said.ts";
+import { joinSaid, type Said, said, saidBy } from "../said.ts";
 import {
   readBackupFile,
   refuseExisting,
@@ -31,7 +32,7 @@ import {
   writeBackupFile,
 } from "../zeros-files.ts";
 import { commandMessages } from "./messages.ts";
-import { jointName, zeroProblemText } from "./zeros-words.ts";
+import { jointName } from "./zeros-words.ts";
 
 const OPTIONS = {
   "backup-dir": { type: "string" },
@@ -263,10 +264,9 @@ async function write(env: RunEnv, values: Values, args: string[]): Promise<numbe
   const target = parseZeroList(args);
   const problems = zeroProblems(target);
   if (problems.length > 0) {
-    const words = (l: Locale) => problems.map((p) => zeroProblemText(p, l)).join(" ");
     throw new CliError(
       "zero-out-of-range",
-      saidEach(commandMessages, "cmd.zeros.notWritten", (l) => [{ problems: words(l) }]),
+      saidBy((l) => zerosNotWrittenText(problems, l)),
     );
   }
   // Ctrl-C must not close the port in the middle of the write: backupAndWrite handles it.

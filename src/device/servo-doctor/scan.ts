@@ -1,3 +1,4 @@
+import { servoIdRangeText } from "../../i18n/outcomes/device.ts";
 import { HUNO_SERVO_COUNT } from "../../protocol/servo-limits.ts";
 import { WCK_MAX_ID } from "../../protocol/wck.ts";
 import { RbcCancelledError, RbcError, RbcInvalidArgumentError } from "../errors.ts";
@@ -26,7 +27,7 @@ export function checkServoIds(ids: readonly number[]): number[] {
   const seen = new Set<number>();
   for (const id of ids) {
     if (!Number.isInteger(id) || id < 0 || id > WCK_MAX_ID) {
-      throw new RbcInvalidArgumentError(`Servo id must be 0-${WCK_MAX_ID}, got ${id}; nothing was sent.`);
+      throw new RbcInvalidArgumentError(servoIdRangeText(id, WCK_MAX_ID, "en"));
     }
     if (seen.has(id)) throw new RbcInvalidArgumentError(`Servo id ${id} is listed twice; nothing was sent.`);
     seen.add(id);

@@ -1,3 +1,4 @@
+import { servoRangeText } from "../../i18n/outcomes/device.ts";
 import { safeRange } from "../../protocol/servo-limits.ts";
 import {
   WCK_MAX_POSITION,
@@ -120,7 +121,7 @@ export class ServoBus {
       return Promise.reject(
         new RbcInvalidArgumentError(
           range
-            ? `Servo ${id} may only move within ${range.min}-${range.max}; ${position} was not sent.`
+            ? servoRangeText(id, range, position, "en")
             : `Servo ${id} has no published safe range; nothing was sent.`,
         ),
       );

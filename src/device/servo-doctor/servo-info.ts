@@ -1,3 +1,4 @@
+import { servoIdRangeText } from "../../i18n/outcomes/device.ts";
 import { ProtocolError } from "../../protocol/errors.ts";
 import {
   decodeWckParameter,
@@ -54,7 +55,7 @@ export async function servoInfo(
   options: { signal?: AbortSignal } = {},
 ): Promise<ServoInfo> {
   if (!Number.isInteger(id) || id < 0 || id > WCK_MAX_ID) {
-    throw new RbcInvalidArgumentError(`Servo id must be 0-${WCK_MAX_ID}, got ${id}; nothing was sent.`);
+    throw new RbcInvalidArgumentError(servoIdRangeText(id, WCK_MAX_ID, "en"));
   }
   if (options.signal?.aborted) throw new RbcCancelledError();
   await client.enterDirectMode("servo-control");

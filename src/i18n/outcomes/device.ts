@@ -97,6 +97,36 @@ export function limpStoppedMotionFirstText(locale: Locale): string {
   return t(locale)("outcome.limp.stoppedMotionFirst");
 }
 
+/** A servo command outside direct mode: "Servo control needs direct mode: …". */
+export function directModeNeededText(locale: Locale): string {
+  return t(locale)("outcome.direct.needed");
+}
+
+/** What Limp does to the requests it cancels. */
+export function cancelledByLimpText(locale: Locale): string {
+  return t(locale)("outcome.limp.cancelledBy");
+}
+
+/** A move outside servo `id`'s safe range (docs/protocol.md §5); it was not sent. */
+export function servoRangeText(
+  id: number,
+  range: { min: number; max: number },
+  position: number,
+  locale: Locale,
+): string {
+  return t(locale)("outcome.servoRange", {
+    id: String(id),
+    min: String(range.min),
+    max: String(range.max),
+    position: String(position),
+  });
+}
+
+/** A servo id outside 0-`max` (docs/protocol.md §5); nothing was sent. */
+export function servoIdRangeText(id: number, max: number, locale: Locale): string {
+  return t(locale)("outcome.servoIdRange", { id: String(id), max: String(max) });
+}
+
 /** "Nothing was sent." */
 export function nothingSentText(locale: Locale): string {
   return t(locale)("outcome.nothingSent");

@@ -95,6 +95,22 @@ export const deviceOutcomeMessages = defineMessages({
     en: "Bytes could not be written to the port. Check the cable, then connect again.",
     ko: "포트에 데이터를 쓰지 못했어요. 케이블을 확인한 뒤 다시 연결해 주세요.",
   },
+  "outcome.direct.needed": {
+    en: "Servo control needs direct mode: press “Start servo control” first.",
+    ko: "서보 제어에는 직접 모드가 필요해요. 먼저 “서보 제어 시작”을 눌러 주세요.",
+  },
+  "outcome.limp.cancelledBy": {
+    en: "Cancelled by Limp: every servo is being made limp.",
+    ko: "힘 빼기 때문에 취소했어요. 모든 서보의 힘을 빼고 있어요.",
+  },
+  "outcome.servoRange": {
+    en: "Servo {id} may only move within {min}-{max}; {position} was not sent.",
+    ko: "서보 {id}번은 {min}-{max} 안에서만 움직일 수 있어요. {position}은(는) 보내지 않았어요.",
+  },
+  "outcome.servoIdRange": {
+    en: "Servo id must be 0-{max}, got {id}; nothing was sent.",
+    ko: "서보 ID는 0-{max}이어야 해요. 받은 값: {id}. 아무것도 보내지 않았어요.",
+  },
   "outcome.direct.notIdle": {
     en: "Not started: the robot is busy, probably playing a motion started elsewhere (it answers, but its sensor reply waits for the motion to end). Servo control needs the robot idle: press Stop (the motion ends at the end of its scene) or wait until it ends. Nothing was sent to the servos.",
     ko: "시작하지 않았어요: 로봇이 바빠요. 다른 곳에서 시작한 모션을 재생하고 있는 것 같아요(로봇은 응답하지만 센서 응답은 모션이 끝날 때까지 기다려요). 서보 제어는 로봇이 쉬고 있을 때만 할 수 있어요: 정지를 누르거나(모션은 지금 장면이 끝날 때 멈춰요) 끝날 때까지 기다려 주세요. 서보에는 아무것도 보내지 않았어요.",

@@ -25,10 +25,6 @@ export const robotMessages = defineMessages({
   "robot.platformDogy": { en: "DOGY (dog)", ko: "DOGY (강아지)" },
   "robot.platformPf2": { en: "PF2 (user mode)", ko: "PF2 (사용자 모드)" },
   "robot.platformUnknown": { en: "unknown ({platform})", ko: "알 수 없음 ({platform})" },
-  "robot.platformWarning": {
-    en: "The robot reports platform {platform}; known platforms are 1-4 (HUNO, DINO, DOGY, PF2).",
-    ko: "로봇이 플랫폼을 {platform}(으)로 알려 왔어요. 알려진 플랫폼은 1-4(HUNO, DINO, DOGY, PF2)예요.",
-  },
   "robot.identityWarning": {
     en: "Something the robot reports about itself looks wrong.",
     ko: "로봇이 알려 준 정보 중에 이상해 보이는 값이 있어요.",

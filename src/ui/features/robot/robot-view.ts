@@ -2,6 +2,7 @@ import { html, nothing, type TemplateResult } from "lit-html";
 import { robotErrorTitle } from "../../../i18n/outcomes/robot-error.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { ACTION_AREA_BYTES, MOTION_AREA_BYTES, NO_ERROR } from "../../../protocol/catalog.ts";
+import { platformWarning } from "../../../protocol/plausibility.ts";
 import { formatFirmware } from "../../../shared/format.ts";
 import { formatTime } from "../../format.ts";
 import { shellMessages } from "../../shell/messages.ts";
@@ -54,11 +55,7 @@ function identityWarnings(ctx: ViewContext, t: RobotTranslator): TemplateResult 
   const unknownPlatform = platform !== undefined && (platform < 1 || platform > 4);
   return html`<div class="notice notice--warning" data-testid="identity-warnings">
     <p>
-      ${
-        unknownPlatform
-          ? t("robot.platformWarning", { platform: String(platform) })
-          : t("robot.identityWarning")
-      }
+      ${unknownPlatform ? platformWarning(platform, t.locale) : t("robot.identityWarning")}
     </p>
     <details class="detail">
       <summary>${translator(shellMessages, t.locale)("shell.technicalDetail")}</summary>

@@ -37,10 +37,6 @@ export const sensorsMessages = defineMessages({
     en: "10 cm means nothing in front (or no sensor)",
     ko: "10cm이면 앞에 아무것도 없어요 (또는 센서가 없어요)",
   },
-  "sensors.distanceWarning": {
-    en: "The distance sensor reports {cm} cm, outside the {min}-{max} cm it can measure: the reading is shown as it is but is not plausible.",
-    ko: "거리 센서가 {cm}cm를 알려 왔어요. 이 센서가 잴 수 있는 {min}-{max}cm를 벗어나요. 값은 그대로 보여 주지만 믿기 어려운 값이에요.",
-  },
   "sensors.accelerometer": { en: "Accelerometer", ko: "가속도 센서" },
   "sensors.accelValue": { en: "X {x} · Y {y} · Z {z}", ko: "X {x} · Y {y} · Z {z}" },
   "sensors.accelHint": {

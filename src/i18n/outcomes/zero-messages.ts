@@ -1,0 +1,27 @@
+import { defineMessages } from "../catalogue.ts";
+
+/**
+ * Why the RBC would refuse a zero table (docs/protocol.md §4, §3 0x0E): the outcome catalogue's words, used by
+ * `zeroProblemText` in src/protocol/zeros.ts for the device's errors and `rbc zeros write` alike.
+ */
+export const zeroOutcomeMessages = defineMessages({
+  "outcome.zeros.notWritten": {
+    en: "Not written: {problems} Nothing was sent to the robot.",
+    ko: "쓰지 않았어요: {problems} 로봇에 아무것도 보내지 않았어요.",
+  },
+  "outcome.zeros.count": {
+    en: "A zero table has 16 values, not {given}.",
+    ko: "영점 표에는 값이 16개 있어야 해요. 받은 값은 {given}개예요.",
+  },
+  "outcome.zeros.notWhole": {
+    en: "Servo {servo}: {value} is not a whole number.",
+    ko: "서보 {servo}: {value}은(는) 정수가 아니에요.",
+  },
+  "outcome.zeros.range": {
+    en: "Servo {servo}: {value} is outside {min}-{max} (standard {standard} ± {tolerance}); the RBC would refuse the whole table.",
+    ko: "서보 {servo}: {value}은(는) {min}-{max} 범위를 벗어나요 (기준 {standard} ± {tolerance}). RBC가 표 전체를 거부할 거예요.",
+  },
+  "outcome.value.empty": { en: "an empty value", ko: "빈 값" },
+  "outcome.value.list": { en: "a list", ko: "목록" },
+  "outcome.value.object": { en: "an object", ko: "객체" },
+});
