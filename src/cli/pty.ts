@@ -13,8 +13,12 @@ export interface PtyPair {
   close(): Promise<void>;
 }
 
-/** Starts `socat -d -d pty,raw,echo=0 pty,raw,echo=0` and reads the two paths it prints. */
-export function createPtyPair(timeoutMs = 5000): Promise<PtyPair> {
+/**
+ * Starts `socat -d -d pty,raw,echo=0 pty,raw,echo=0` and reads the two paths it prints. socat prints them within
+ * milliseconds; the generous bound is for a machine so busy that starting a process takes seconds (it took more
+ * than 5 s with two test suites running on two cores).
+ */
+export function createPtyPair(timeoutMs = 20_000): Promise<PtyPair> {
   return new Promise((resolve, reject) => {
     const child = spawn("socat", ["-d", "-d", "pty,raw,echo=0", "pty,raw,echo=0"], {
       stdio: ["ignore", "ignore", "pipe"],

@@ -74,7 +74,7 @@ function runOnTerminal(args: readonly string[], prompt: RegExp, keys: string) {
   };
   child.stdout.on("data", onData);
   child.stderr.on("data", onData);
-  const timer = setTimeout(() => child.kill("SIGKILL"), 15_000);
+  const timer = setTimeout(() => child.kill("SIGKILL"), 60_000);
   return new Promise<{ code: number | null; screen: string }>((resolve) =>
     child.on("close", (code) => {
       clearTimeout(timer);
@@ -92,7 +92,7 @@ describe.concurrent("rbc and NodeSerialTransport over PTY pairs", () => {
 
       beforeAll(async () => {
         rig = await startSim();
-      }, 15_000);
+      }, 60_000);
       afterEach(async () => {
         await client?.close();
         client = undefined;
@@ -160,7 +160,7 @@ describe.concurrent("rbc and NodeSerialTransport over PTY pairs", () => {
         );
       });
 
-      it("rbc info --port works against the PTY", { timeout: 15_000 }, async () => {
+      it("rbc info --port works against the PTY", { timeout: 60_000 }, async () => {
         const info = startCli(["info", "--port", rig!.pty.clientPath, "--json"]);
         const result = await info.done;
         expect(result.code).toBe(0);
@@ -169,7 +169,7 @@ describe.concurrent("rbc and NodeSerialTransport over PTY pairs", () => {
 
       it.skipIf(!HAS_SCRIPT)(
         "Ctrl-C at the upload's y/N prompt exits 130 like any interrupt, and nothing is sent",
-        { timeout: 15_000 },
+        { timeout: 60_000 },
         async () => {
           const { client } = await connect();
           const free = await client.readAvailableMemory("motion");
@@ -193,7 +193,7 @@ describe.concurrent("rbc and NodeSerialTransport over PTY pairs", () => {
     afterAll(killAll);
 
     it("rbc info --port times out cleanly, and names the busy robot as a possible reason", {
-      timeout: 15_000,
+      timeout: 60_000,
     }, async () => {
       const lonely = await createPtyPair();
       try {
@@ -217,7 +217,7 @@ describe.concurrent("rbc and NodeSerialTransport over PTY pairs", () => {
     beforeAll(async () => {
       rig = await startSim(["--latency-ms", "250", "--quiet"]);
       dir = await mkdtemp(join(tmpdir(), "rbc-zeros-"));
-    }, 15_000);
+    }, 60_000);
     afterEach(killAll);
     afterAll(async () => {
       await stopSim(rig);
@@ -270,7 +270,7 @@ describe.concurrent("rbc and NodeSerialTransport over PTY pairs", () => {
 
     beforeAll(async () => {
       rig = await startSim(["--baud-pacing", "--latency-ms", "16", "--quiet"]);
-    }, 15_000);
+    }, 60_000);
     afterEach(killAll);
     afterAll(async () => {
       await stopSim(rig);
