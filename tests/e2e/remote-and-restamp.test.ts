@@ -100,11 +100,11 @@ describe("the Remote card", () => {
     );
     // Built-in 4, key 1 (the motion memory reads wholly free), key 9's hazard, and the # keys.
     expect(await text(tile(page, 4))).toBe("code 4 Walk forward");
-    expect(await text(tile(page, 12))).toBe("1 key 1 · code 12 Nothing: slot 1 is empty");
+    expect(await text(tile(page, 12))).toBe("1 key 1 · code 12 Nothing stored");
     expect(await text(tile(page, 20))).toBe(
-      "9 key 9 · code 20 Nothing: slot 9 is empty On the official “user” firmware: an endless walk that only switching the robot off ends",
+      "9 key 9 · code 20 Nothing stored On the official “user” firmware: an endless walk that only switching the robot off ends",
     );
-    expect(await text(tile(page, 33))).toBe("1 * + 1 · code 33 Nothing: slot 11 is empty");
+    expect(await text(tile(page, 33))).toBe("1 * + 1 · code 33 Nothing stored");
     expect(await text(tile(page, 0x2b))).toBe(
       "A # + A · code 43 Hazard: Starts battery charging when a charger is connected",
     );
@@ -237,7 +237,7 @@ describe("in Korean (ko-KR)", () => {
       await openSensors(page, "센서");
       const card = page.getByTestId("remote-card");
       expect(await text(card.locator("h2"))).toBe("리모컨");
-      expect(await text(tile(page, 12))).toBe("1 1 키 · 코드 12 없음: 비어 있는 슬롯 1");
+      expect(await text(tile(page, 12))).toBe("1 1 키 · 코드 12 저장된 모션 없음");
       await page.getByRole("radio", { name: "IR 리모컨" }).check();
       await pressKey(page, 34);
       await tile(page, 34).and(page.locator(".is-lit")).waitFor();

@@ -231,8 +231,11 @@ function render(ctx: ViewContext): TemplateResult {
         <h1 id="view-title">${t("sensors.title")}</h1>
         <p class="muted">${t("sensors.intro")}</p>
       </header>
-      ${pollCard(ctx, t)} ${eventsCard(ctx, t)}
-      ${ctx.state.connection.robot?.kind === "demo" ? demoWorld(ctx, BUILT_IN_MOTIONS) : nothing}
+      ${pollCard(ctx, t)}
+      <div class="sensors-pair">
+        ${eventsCard(ctx, t)}
+        ${ctx.state.connection.robot?.kind === "demo" ? demoWorld(ctx, BUILT_IN_MOTIONS) : nothing}
+      </div>
       ${remoteCard(ctx)}
     </div>
   `;

@@ -29,12 +29,12 @@ export const remoteMessages = defineMessages({
 
   "sensors.remote.group.builtin": { en: "Built-in motions (codes 1-11)", ko: "내장 모션 (코드 1-11)" },
   "sensors.remote.group.number": {
-    en: "Number keys: downloaded motions 1-10 (codes 12-21)",
-    ko: "숫자 키: 다운로드한 모션 1-10 (코드 12-21)",
+    en: "Number keys: the first ten downloaded motions (codes 12-21)",
+    ko: "숫자 키: 처음 다운로드한 모션 10개 (코드 12-21)",
   },
   "sensors.remote.group.star": {
-    en: "* + number key: downloaded motions 11-20 (codes 33-42)",
-    ko: "* + 숫자 키: 다운로드한 모션 11-20 (코드 33-42)",
+    en: "* + number key: the next ten (codes 33-42)",
+    ko: "* + 숫자 키: 그다음 10개 (코드 33-42)",
   },
   "sensors.remote.group.hash": { en: "# + key: special functions", ko: "# + 키: 특수 기능" },
 
@@ -45,16 +45,16 @@ export const remoteMessages = defineMessages({
   "sensors.remote.code": { en: "code {code}", ko: "코드 {code}" },
 
   "sensors.remote.plays.download": {
-    en: "Downloaded motion {slot}: {name} (uploaded in this connection)",
-    ko: "다운로드한 모션 {slot}: {name} (이번 연결에서 업로드함)",
+    en: "{name} (uploaded in this connection)",
+    ko: "{name} (이번 연결에서 업로드함)",
   },
   "sensors.remote.plays.unknown": {
-    en: "Downloaded motion {slot}, if the robot holds one: it does not say which",
-    ko: "로봇에 있다면 다운로드한 모션 {slot}. 로봇은 어떤 모션인지 알려 주지 않아요",
+    en: "A downloaded motion, if the robot holds one: it does not say which",
+    ko: "로봇에 있다면 다운로드한 모션. 로봇은 어떤 모션인지 알려 주지 않아요",
   },
   "sensors.remote.plays.empty": {
-    en: "Nothing: slot {slot} is empty",
-    ko: "없음: 비어 있는 슬롯 {slot}",
+    en: "Nothing stored",
+    ko: "저장된 모션 없음",
   },
   "sensors.remote.userKey9": {
     en: "On the official “user” firmware: an endless walk that only switching the robot off ends",

@@ -80,11 +80,11 @@ function playsText(t: RemoteTranslator, plays: KeyPlays): string {
         ? t("sensors.remote.plays.charging")
         : t("sensors.remote.plays.zeroPose");
     case "download":
-      return t("sensors.remote.plays.download", { slot: plays.slot, name: plays.name });
+      return t("sensors.remote.plays.download", { name: plays.name });
     case "download-unknown":
-      return t("sensors.remote.plays.unknown", { slot: plays.slot });
+      return t("sensors.remote.plays.unknown");
     case "empty":
-      return t("sensors.remote.plays.empty", { slot: plays.slot });
+      return t("sensors.remote.plays.empty");
     case "user-nothing":
       return t("sensors.remote.plays.userNothing");
     case "user-flash-demo":
