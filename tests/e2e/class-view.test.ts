@@ -251,3 +251,32 @@ describe("the Class view in Korean", () => {
     await context.close();
   });
 });
+
+describe("the Class view's demo robots keep their memory", () => {
+  it("a pack stored on demo robot 1 is still on it after a page reload, as a real robot's EEPROM keeps it", async () => {
+    const { page, context } = await classPage("en-US");
+    await addDemos(page, 1);
+    const free = () =>
+      row(page, 0)
+        .getByText(/bytes free/)
+        .textContent();
+    expect(squash(await free())).toBe("24,576 of 24,576 bytes free");
+    await page.getByTestId("class-rbm-input").setInputFiles([rbmFile("wave.rbm", exampleText("wave.rbm"))]);
+    await page.getByText("Checked: the pack takes", { exact: false }).waitFor();
+    await page.getByRole("button", { name: "Upload to 1 robot" }).click();
+    await page.getByTestId("class-summary").filter({ hasText: "Pack upload finished" }).waitFor();
+    await expect.poll(async () => squash(await free())).toBe("23,936 of 24,576 bytes free");
+
+    // The robot saves its memory a moment after it changed (the page counts the saves for tests); then the page
+    // reloads and demo robot 1 comes back as the same robot.
+    await expect
+      .poll(() => page.evaluate(() => (window as { __rbcDemoSaves?: number }).__rbcDemoSaves ?? 0))
+      .toBeGreaterThan(0);
+    await page.reload({ waitUntil: "domcontentloaded" });
+    await addDemos(page, 1);
+    expect(squash(await row(page, 0).locator("dd.mono").first().textContent())).toBe("DEMO-00000001");
+    await expect.poll(async () => squash(await free())).toBe("23,936 of 24,576 bytes free");
+    expect((await sims(page))[0]?.motions).toBe(1);
+    await context.close();
+  });
+});

@@ -37,6 +37,8 @@ export interface RobotLink {
   /** Cancels the pack's upload to this robot ("Cancel" in its row, or "Cancel all"). */
   abort?: AbortController;
   detach: Array<() => void>;
+  /** A demo robot's memory keeper: saves what is pending when the robot is put away. */
+  keeper?: { stop(): void };
 }
 
 export interface ClassRoomOptions {
@@ -113,7 +115,12 @@ export class ClassRoom implements Controller {
     const n = ++this.demoCount;
     const demo = await createClassDemo(n, this.options.demoClock);
     this.options.onDemo?.(demo);
-    await this.connect(demo.port, { demo: true, portLabel: `demo ${n}`, demoNumber: n }, demo.clock);
+    await this.connect(
+      demo.port,
+      { demo: true, portLabel: `demo ${n}`, demoNumber: n },
+      demo.clock,
+      demo.keeper,
+    );
   }
 
   /** A port the person chose (or one the browser remembers): connected unless it is in the class already. */
@@ -133,6 +140,7 @@ export class ClassRoom implements Controller {
     port: SerialPortLike,
     label: Pick<ClassRobot, "demo" | "portLabel" | "demoNumber">,
     clock?: Clock,
+    keeper?: { stop(): void },
   ): Promise<void> {
     const c = classOf(this.store.get());
     const id = c.nextId;
@@ -141,7 +149,7 @@ export class ClassRoom implements Controller {
       robots: [...c.robots, { id, ...label, phase: "connecting", selected: true }],
     });
     const client = createRbcClient(port, clock);
-    const link: RobotLink = { id, client, port, detach: [] };
+    const link: RobotLink = { id, client, port, detach: [], ...(keeper ? { keeper } : {}) };
     this.links.set(id, link);
     link.detach.push(
       client.stateChanges.on((s) => {
@@ -202,6 +210,8 @@ export class ClassRoom implements Controller {
   }
 
   private forget(link: RobotLink): void {
+    link.keeper?.stop();
+    delete link.keeper;
     for (const detach of link.detach) detach();
     link.detach = [];
     if (this.links.get(link.id) === link) this.links.delete(link.id);
