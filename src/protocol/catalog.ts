@@ -1,28 +1,17 @@
 /** Facts about the RBC the panel shows to people: names, codes and durations (docs/protocol.md §2.2, §3). */
 
+import { robotErrorText } from "../i18n/outcomes/robot-error.ts";
+
 // The platform names live in a file of their own: the panel's top bar needs them on its first page, without
 // the rest of this catalogue (first load: issue 19).
 export { type Platform, platformName } from "./platform.ts";
 
 /** Error codes of 0x11 (docs/protocol.md §3.2). */
 export const NO_ERROR = 0xff;
-const ERROR_TEXT: Record<number, string> = {
-  [NO_ERROR]: "no error",
-  1: "serial EEPROM write error",
-  2: "checksum error (a download chunk was corrupted)",
-  3: "too many motions, or motion memory full",
-  4: "too many actions, or action memory full",
-  5: "platform mismatch",
-  6: "frame interval error (frames closer than 20 ms)",
-  7: "zero-set error (a zero value was out of range)",
-  8: "stored zero data invalid",
-  9: "wrong servo count",
-  10: "servo position error",
-  11: "a servo did not answer",
-};
 
+/** Error code `code` in English words, from the outcome catalogue ("checksum error (…)", "unknown error code 12"). */
 export function errorCodeText(code: number): string {
-  return ERROR_TEXT[code] ?? `unknown error code ${code}`;
+  return robotErrorText(code, "en");
 }
 
 /** Sound lengths in ms for sounds 1..25 (docs/protocol.md §3.3); index 0 is sound 1. */

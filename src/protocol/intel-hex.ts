@@ -1,4 +1,9 @@
+import { firmwareOutcomeMessages } from "../i18n/outcomes/firmware/messages.ts";
+import { translator } from "../i18n/translate.ts";
 import { ProtocolError } from "./errors.ts";
+
+/** The outcome catalogue's English, where a problem has no more facts to give than the catalogue's words. */
+const english = translator(firmwareOutcomeMessages, "en");
 
 /**
  * Intel HEX files for the RBC's bootloader (docs/protocol.md §11): read, validate and summarise a firmware file
@@ -168,7 +173,7 @@ export function parseIntelHex(text: string): IntelHexImage {
     switch (type) {
       case HEX_RECORD.data: {
         if (field + count > 0x10000) {
-          fail("crosses-64k", "the record runs past the end of its 64 KiB segment.");
+          fail("crosses-64k", english("outcome.hex.crosses64k"));
         }
         address = base + field;
         const end = address + count; // exclusive
@@ -233,11 +238,7 @@ export function parseIntelHex(text: string): IntelHexImage {
     );
   }
   if (bytes === 0) {
-    throw new IntelHexError(
-      "no-records",
-      undefined,
-      "The file holds no data records: there is nothing to write.",
-    );
+    throw new IntelHexError("no-records", undefined, english("outcome.hex.noRecords"));
   }
   let pages = 0;
   for (let p = 0; p < ATMEGA128.flashBytes; p += ATMEGA128.pageBytes) {

@@ -1,3 +1,6 @@
+import type { Locale } from "../i18n/locale.ts";
+import { zeroOutcomeMessages } from "../i18n/outcomes/zero-messages.ts";
+import { translator } from "../i18n/translate.ts";
 import { formatLocalDate } from "../shared/format.ts";
 import { ZERO_COUNT, zeroProblems } from "./zeros.ts";
 import { z } from "./zod.ts";
@@ -111,11 +114,14 @@ export function parseZerosBackup(text: string): ParsedBackup {
   return { ok: true, backup: parsed.data };
 }
 
-/** A warning when the backup was saved from another robot, or undefined. */
+/** A warning when the backup was saved from another robot (in `locale`, English by default), or undefined. */
 export function serialMismatchWarning(
   backup: ZerosBackup,
   connectedSerial: string | undefined,
+  locale: Locale = "en",
 ): string | undefined {
   if (!connectedSerial || backup.serialNumber === connectedSerial) return undefined;
-  return `This backup was saved from robot ${backup.serialNumber || "(unknown)"}, not the connected robot ${connectedSerial}. Zeros are calibrated per robot: check each value before writing.`;
+  const t = translator(zeroOutcomeMessages, locale);
+  const saved = backup.serialNumber || t("outcome.zeros.unknownRobot");
+  return t("outcome.zeros.otherRobot", { saved, connected: connectedSerial });
 }

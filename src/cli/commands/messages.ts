@@ -128,10 +128,6 @@ export const commandMessages = defineMessages({
   },
   "cmd.zeros.not16": { en: "{file} does not hold 16 values.", ko: "{file}에 값이 16개 있지 않아요." },
   "cmd.zeros.unknownRobot": { en: "(unknown)", ko: "(알 수 없음)" },
-  "cmd.zeros.otherRobot": {
-    en: "This backup was saved from robot {saved}, not the connected robot {connected}. Zeros are calibrated per robot: check each value before writing.",
-    ko: "이 백업은 연결된 로봇 {connected}이(가) 아니라 로봇 {saved}에서 저장했어요. 영점은 로봇마다 보정하므로 쓰기 전에 값을 하나하나 확인해 주세요.",
-  },
   "cmd.zeros.restoring": {
     en: "Restoring {file} (saved {savedAt} from robot {robot}).",
     ko: "{file}을(를) 복원해요 ({savedAt}에 로봇 {robot}에서 저장함).",

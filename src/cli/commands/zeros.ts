@@ -324,17 +324,11 @@ async function restore(env: RunEnv, values: Values, args: string[]): Promise<num
   // Ctrl-C must not close the port in the middle of the write: backupAndWrite handles it.
   const robot = await connectRobot("zeros", values, env, { handlesInterrupt: true });
   const current = await identify(robot);
-  const warning = serialMismatchWarning(saved, current.serialNumber);
   const locale = localeOf(env);
   const t = translator(commandMessages, locale);
+  const warning = serialMismatchWarning(saved, current.serialNumber, locale);
   const savedFrom = saved.serialNumber || t("cmd.zeros.unknownRobot");
-  if (warning) {
-    const text =
-      locale === "en"
-        ? warning
-        : t("cmd.zeros.otherRobot", { saved: savedFrom, connected: current.serialNumber ?? "" });
-    env.out.note(t("cmd.warning", { warning: text }));
-  }
+  if (warning) env.out.note(t("cmd.warning", { warning }));
   // English shows the file's own timestamp, as it always did; other languages a date and time of theirs.
   const savedAt = locale === "en" ? saved.savedAt : formatDateTime(new Date(saved.savedAt), locale);
   env.out.line(t("cmd.zeros.restoring", { file, savedAt, robot: savedFrom }));
