@@ -157,6 +157,20 @@ const VIEWS: readonly [string, (page: Page) => Promise<void>][] = [
   ["Log", (page) => heading(page, "Packet log")],
 ];
 
+/**
+ * Connects the demo robot unless it already is, so each test stands on its own (`-t` runs one alone): it waits
+ * for the page to show either the start card or the connected robot before it looks, never a first render's
+ * "not there yet".
+ */
+async function connectDemo(page: Page): Promise<void> {
+  const demo = page.getByRole("button", { name: "Try the demo robot" });
+  const card = page.getByTestId("device-card");
+  await demo.or(card).first().waitFor();
+  if (await card.isVisible()) return;
+  await demo.click();
+  await card.waitFor();
+}
+
 for (const scheme of ["light", "dark"] as const) {
   describe(`axe on every view, ${scheme} mode`, () => {
     let context: BrowserContext;
@@ -178,10 +192,7 @@ for (const scheme of ["light", "dark"] as const) {
 
     for (const [name, ready] of VIEWS) {
       it(`the ${name} view`, async () => {
-        if (await page.getByRole("button", { name: "Try the demo robot" }).isVisible()) {
-          await page.getByRole("button", { name: "Try the demo robot" }).click();
-          await page.getByTestId("device-card").waitFor();
-        }
+        await connectDemo(page);
         await page.getByRole("link", { name, exact: true }).click();
         await ready(page);
         await expectNoViolations(page, `the ${name} view, ${scheme} mode`);
@@ -189,6 +200,7 @@ for (const scheme of ["light", "dark"] as const) {
     }
 
     it("every Motions tab, with a motion file open and its scenes shown", async () => {
+      await connectDemo(page);
       await page.getByRole("link", { name: "Motions", exact: true }).click();
       await page.getByTestId("rbm-files").setInputFiles(rbmFile("wave.rbm", exampleText("wave.rbm")));
       await page.getByTestId("scene-section").waitFor();
@@ -200,6 +212,7 @@ for (const scheme of ["light", "dark"] as const) {
     });
 
     it("the Limp question", async () => {
+      await connectDemo(page);
       await page.getByRole("button", { name: "Limp…" }).click();
       await page.getByRole("alertdialog").waitFor();
       await expectNoViolations(page, `the Limp question, ${scheme} mode`);

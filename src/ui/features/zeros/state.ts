@@ -1,4 +1,5 @@
-import type { Notice } from "../../app-state.ts";
+import type { AppState, Notice } from "../../app-state.ts";
+import type { Store } from "../../store.ts";
 import type { KeptBackup } from "./backup-store.ts";
 import type { CaptureState, TrimLiveState } from "./live/live-state.ts";
 
@@ -39,4 +40,9 @@ export interface ZerosState {
 
 export function initialZeros(): ZerosState {
   return { draft: [], confirming: false };
+}
+
+/** Merges a patch into the Zeros view's state (one store update). */
+export function patchZeros(store: Store<AppState>, patch: Partial<ZerosState>): void {
+  store.update((s) => ({ zeros: { ...s.zeros, ...patch } }));
 }

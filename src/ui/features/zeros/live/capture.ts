@@ -1,18 +1,17 @@
 import { SERVO_IDS } from "../../../../device/index.ts";
-import type { ParamArgs } from "../../../../i18n/catalogue.ts";
 import type { TimerId } from "../../../../shared/clock.ts";
 import { type AppState, noticeOf } from "../../../app-state.ts";
 import type { AppContext } from "../../../context.ts";
 import { failureNotice } from "../../../failure-notice.ts";
 import { focusSoon } from "../../../focus.ts";
-import { type LocalText, type Said, said, wordOf } from "../../../said.ts";
+import { wordOf } from "../../../said.ts";
 import { type Controller, controllerKey } from "../../../scope.ts";
 import type { Store } from "../../../store.ts";
 import { limpAll } from "../../connection/actions.ts";
 import { toDraft } from "../editor.ts";
-import type { ZerosState } from "../state.ts";
+import { patchZeros } from "../state.ts";
 import type { CaptureState } from "./live-state.ts";
-import { zerosLiveMessages } from "./messages.ts";
+import { say } from "./say.ts";
 import { checkCapture } from "./trim-model.ts";
 
 /**
@@ -25,15 +24,6 @@ import { checkCapture } from "./trim-model.ts";
 
 /** The countdown, in seconds. */
 export const CAPTURE_SECONDS = 5;
-
-const say = <K extends keyof typeof zerosLiveMessages & string>(
-  key: K,
-  ...facts: ParamArgs<(typeof zerosLiveMessages)[K], Said | LocalText>
-): Said => said(zerosLiveMessages, key, ...facts);
-
-function patchZeros(store: Store<AppState>, patch: Partial<ZerosState>): void {
-  store.update((s) => ({ zeros: { ...s.zeros, ...patch } }));
-}
 
 function patchCapture(store: Store<AppState>, patch: Partial<CaptureState>): void {
   store.update((s) =>

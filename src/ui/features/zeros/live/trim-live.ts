@@ -1,5 +1,4 @@
 import type { RbcClient, TetheredPlayResult } from "../../../../device/index.ts";
-import type { ParamArgs } from "../../../../i18n/catalogue.ts";
 import type { Locale } from "../../../../i18n/locale.ts";
 import { ZERO_COUNT } from "../../../../protocol/zeros.ts";
 import { type AppState, type Notice, noticeOf } from "../../../app-state.ts";
@@ -7,15 +6,15 @@ import type { AppContext } from "../../../context.ts";
 import { failureNotice } from "../../../failure-notice.ts";
 import { focusSoon } from "../../../focus.ts";
 import { formatDateTime } from "../../../format.ts";
-import { inEveryLanguage, type LocalText, type Said, said, wordOf } from "../../../said.ts";
+import { inEveryLanguage, type Said, wordOf } from "../../../said.ts";
 import { type Controller, controllerKey } from "../../../scope.ts";
 import type { Store } from "../../../store.ts";
 import { servosTaken, stopActivity } from "../../connection/actions.ts";
 import { LatestMoveSender } from "../../servos/move-sender.ts";
 import { checkDraft, toDraft } from "../editor.ts";
-import type { ZerosState } from "../state.ts";
+import { patchZeros } from "../state.ts";
 import type { TrimLiveState } from "./live-state.ts";
-import { zerosLiveMessages } from "./messages.ts";
+import { say } from "./say.ts";
 import { trimTarget, zeroPose } from "./trim-model.ts";
 import { zeroPoseMotion } from "./zero-pose-motion.ts";
 
@@ -32,15 +31,6 @@ import { zeroPoseMotion } from "./zero-pose-motion.ts";
 
 /** wCK move torque for a nudged servo (docs/protocol.md §5: 0 strongest .. 4 weakest; the Servos view's default). */
 export const TRIM_TORQUE = 2;
-
-const say = <K extends keyof typeof zerosLiveMessages & string>(
-  key: K,
-  ...facts: ParamArgs<(typeof zerosLiveMessages)[K], Said | LocalText>
-): Said => said(zerosLiveMessages, key, ...facts);
-
-function patchZeros(store: Store<AppState>, patch: Partial<ZerosState>): void {
-  store.update((s) => ({ zeros: { ...s.zeros, ...patch } }));
-}
 
 function patchLive(store: Store<AppState>, patch: Partial<TrimLiveState>): void {
   store.update((s) => (s.zeros.live ? { zeros: { ...s.zeros, live: { ...s.zeros.live, ...patch } } } : {}));
