@@ -69,11 +69,12 @@ describe("motions view: running motions and sounds", () => {
 
     // 7 runs without asking again; afterwards the guidance is gone.
     await page.locator('[data-motion="7"]').click();
-    expect(await page.getByTestId("move-confirm").count()).toBe(0);
     await page.getByText("Motion 7 (Basic posture) finished. The robot now accepts every motion.").waitFor({
       timeout: 6000,
     });
-    expect(await guidance.count()).toBe(0);
+    // Read after the motion's own result, not before the click was drawn (when no question could show yet).
+    expect(await page.getByTestId("move-confirm").count()).toBe(0);
+    await expect.poll(() => guidance.count()).toBe(0);
 
     // Stop motion sends 7: the robot ends the scene and holds that pose (no basic posture, docs/protocol.md §3.6).
     await page.locator('[data-motion="2"]').click();
