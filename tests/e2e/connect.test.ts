@@ -71,8 +71,8 @@ describe("connecting a robot", () => {
     await page.getByRole("button", { name: "Connect robot" }).click();
     await page.getByText("No port was chosen").waitFor();
     const help = page.getByTestId("connect-help");
-    expect(await help.getAttribute("open")).not.toBeNull();
-    const text = await help.textContent().then(squash);
+    // The help opens on the render after the cancel, and its text is a part that loads after the first paint.
+    await expect.poll(() => help.getAttribute("open")).not.toBeNull();
     for (const hint of [
       "dialout",
       "brltty",
@@ -81,11 +81,15 @@ describe("connecting a robot", () => {
       "CH340",
       "FTDI",
     ]) {
-      expect(text).toContain(hint);
+      await expect.poll(() => help.textContent().then(squash)).toContain(hint);
     }
-    // "Show all ports" drops the filters.
+    // "Show all ports" drops the filters. The first cancel's sentence is still on screen, so wait for the second
+    // request itself, not for the sentence.
+    const requests = () => page.evaluate(() => window.__rbcTest?.serial.requests.length ?? 0);
+    const before = await requests();
     await page.getByLabel("Show all serial ports").check();
     await page.getByRole("button", { name: "Connect robot" }).click();
+    await expect.poll(requests).toBe(before + 1);
     await page.getByText("No port was chosen").waitFor();
     const last = await page.evaluate(() => window.__rbcTest?.serial.requests.at(-1));
     expect(last?.filters).toBeUndefined();

@@ -97,14 +97,34 @@ async function openEditorPlay(page: Page, words: { editor: string; addAfter: str
 
 const EN = { editor: "Editor", addAfter: "Add after" };
 
+type PageOptions = Parameters<AppHarness["newPage"]>[0];
+
+/**
+ * A new page connected to a robot by the button named `connect` (the demo robot or the fake cable), once its
+ * motion memory is read (all 24,576 bytes free), showing the Editor's Play tab with a second scene added.
+ */
+async function openOnRobot(options: PageOptions, connect: string, words: typeof EN) {
+  const opened = await app.newPage(options);
+  const { page } = opened;
+  await page.goto(app.url, { waitUntil: "domcontentloaded" });
+  await page.getByRole("button", { name: connect, exact: true }).click();
+  await page.getByTestId("device-card").waitFor();
+  await page.getByTestId("memory-motion-text").filter({ hasText: "24,576" }).waitFor();
+  await openEditorPlay(page, words);
+  return opened;
+}
+
+/** Sets scene 1's end position of servo 0 on the Pose tab, then shows the Play tab again. */
+async function editServo0End(page: Page, value: string): Promise<void> {
+  await openEditorTab(page, "pose");
+  await page.getByTestId("end-0").fill(value);
+  await page.getByTestId("end-0").press("Tab");
+  await openEditorTab(page, "play");
+}
+
 describe("the Editor: upload to the robot and run it there", () => {
   it("uploads the draft with progress in place, runs it as motion 12 (remote key 1), and says when the robot holds an earlier version", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
-    await page.goto(app.url, { waitUntil: "domcontentloaded" });
-    await page.getByRole("button", { name: "Try the demo robot", exact: true }).click();
-    await page.getByTestId("device-card").waitFor();
-    await page.getByTestId("memory-motion-text").filter({ hasText: "24,576" }).waitFor();
-    await openEditorPlay(page, EN);
+    const { page, context } = await openOnRobot({ options: FAST }, "Try the demo robot", EN);
 
     // One line near the two buttons says how storing differs from tethered play.
     expect(squash(await page.getByTestId("editor-robot-difference").textContent())).toBe(
@@ -141,7 +161,7 @@ describe("the Editor: upload to the robot and run it there", () => {
     expect(squash(await result.textContent())).toMatch(
       /^Uploaded NewMotion\.rbm: 280 bytes in 5 chunks .* Stored as motion 12 \(key 1\): Run takes this number\. Free motion memory: 24,256 of 24,576 bytes \(was 24,576; the file takes 320\)\. Error code after the upload: no error\.$/,
     );
-    expect(await copyText(page)).toBe("The robot holds this motion as motion 12 (remote key 1).");
+    await expect.poll(() => copyText(page)).toBe("The robot holds this motion as motion 12 (remote key 1).");
     const run = page.getByRole("button", { name: "Run on robot: motion 12 (remote key 1)", exact: true });
     await run.waitFor();
     expect(await page.evaluate(() => window.__rbcDemoSim?.motions.length)).toBe(1);
@@ -178,13 +198,12 @@ describe("the Editor: upload to the robot and run it there", () => {
     // An edit after the upload: the robot holds the earlier version; Undo makes the draft the uploaded one again.
     await page.getByRole("link", { name: "Editor", exact: true }).click();
     await page.getByTestId("editor").waitFor();
-    await openEditorTab(page, "pose");
-    await page.getByTestId("end-0").fill("120");
-    await page.getByTestId("end-0").press("Tab");
-    await openEditorTab(page, "play");
-    expect(await copyText(page)).toBe(
-      "The robot holds an earlier version of this motion as motion 12 (remote key 1): the draft changed after the upload. Upload again to store what is on screen.",
-    );
+    await editServo0End(page, "120");
+    await expect
+      .poll(() => copyText(page))
+      .toBe(
+        "The robot holds an earlier version of this motion as motion 12 (remote key 1): the draft changed after the upload. Upload again to store what is on screen.",
+      );
     await page
       .getByRole("button", { name: "Run the earlier version: motion 12 (remote key 1)", exact: true })
       .waitFor();
@@ -192,22 +211,14 @@ describe("the Editor: upload to the robot and run it there", () => {
     expect(await pageProblems(page, { within: '[data-testid="editor-upload"]' })).toEqual([]);
     expect(await outsideCard(page)).toEqual([]);
     await page.getByTestId("editor-undo").click();
-    expect(await copyText(page)).toBe("The robot holds this motion as motion 12 (remote key 1).");
+    await expect.poll(() => copyText(page)).toBe("The robot holds this motion as motion 12 (remote key 1).");
     await context.close();
   });
 
   it("refuses while a motion plays, with the busy sentence and a Stop beside it; Escape stops a run started here", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
-    await page.goto(app.url, { waitUntil: "domcontentloaded" });
-    await page.getByRole("button", { name: "Try the demo robot", exact: true }).click();
-    await page.getByTestId("device-card").waitFor();
-    await page.getByTestId("memory-motion-text").filter({ hasText: "24,576" }).waitFor();
-    await openEditorPlay(page, EN);
+    const { page, context } = await openOnRobot({ options: FAST }, "Try the demo robot", EN);
     // Scene 1 moves servo 0, so that motion 12 moves a servo (and can be caught playing).
-    await openEditorTab(page, "pose");
-    await page.getByTestId("end-0").fill("100");
-    await page.getByTestId("end-0").press("Tab");
-    await openEditorTab(page, "play");
+    await editServo0End(page, "100");
     await page.getByRole("button", { name: "Upload to robot" }).click();
     const posture = page.getByTestId("editor-posture");
     await posture.getByRole("button", { name: "Run motion 7 (Basic posture)" }).click();
@@ -257,12 +268,7 @@ describe("the Editor: upload to the robot and run it there", () => {
   });
 
   it("on a real robot (the fake cable) asks first, as the Motions upload does, then stores it", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
-    await page.goto(app.url, { waitUntil: "domcontentloaded" });
-    await page.getByRole("button", { name: "Connect robot" }).click();
-    await page.getByTestId("device-card").waitFor();
-    await page.getByTestId("memory-motion-text").filter({ hasText: "24,576" }).waitFor();
-    await openEditorPlay(page, EN);
+    const { page, context } = await openOnRobot({ options: FAST }, "Connect robot", EN);
     expect(squash(await page.getByTestId("editor-upload-why").textContent())).toBe(
       "Asks for confirmation first: uploading to a real robot is experimental.",
     );
@@ -287,12 +293,11 @@ async function openEditorTab(page: Page, tab: "pose" | "play"): Promise<void> {
 
 describe("in Korean (ko-KR), at phone width", () => {
   it("says it all in Korean, fits and passes axe", async () => {
-    const { page, context } = await app.newPage({ locale: "ko-KR", viewport: PHONE, options: FAST });
-    await page.goto(app.url, { waitUntil: "domcontentloaded" });
-    await page.getByRole("button", { name: "데모 로봇 써 보기", exact: true }).click();
-    await page.getByTestId("device-card").waitFor();
-    await page.getByTestId("memory-motion-text").filter({ hasText: "24,576" }).waitFor();
-    await openEditorPlay(page, { editor: "편집기", addAfter: "뒤에 추가" });
+    const { page, context } = await openOnRobot(
+      { locale: "ko-KR", viewport: PHONE, options: FAST },
+      "데모 로봇 써 보기",
+      { editor: "편집기", addAfter: "뒤에 추가" },
+    );
     expect(squash(await card(page).getByRole("heading", { level: 2 }).textContent())).toBe("로봇에 저장");
     expect(squash(await page.getByTestId("editor-robot-difference").textContent())).toBe(
       "위의 ‘로봇에서 재생’은 이 컴퓨터에서 모션을 시험해 볼 뿐 아무것도 저장하지 않아요. ‘로봇에 업로드’는 모션을 로봇 메모리에 저장해서 케이블 없이도 번호나 리모컨으로 실행할 수 있어요.",
@@ -301,18 +306,19 @@ describe("in Korean (ko-KR), at phone width", () => {
     await page
       .getByRole("button", { name: "로봇에서 실행: 모션 12번(리모컨 1번 키)", exact: true })
       .waitFor();
-    expect(await copyText(page)).toBe("로봇에 이 모션이 모션 12번(리모컨 1번 키)으로 저장되어 있어요.");
+    await expect
+      .poll(() => copyText(page))
+      .toBe("로봇에 이 모션이 모션 12번(리모컨 1번 키)으로 저장되어 있어요.");
     await expectPageOk(page, "the Editor's Play tab after an upload, in Korean", {
       lang: "ko",
       within: '[data-testid="editor-upload"]',
     });
-    await openEditorTab(page, "pose");
-    await page.getByTestId("end-0").fill("120");
-    await page.getByTestId("end-0").press("Tab");
-    await openEditorTab(page, "play");
-    expect(await copyText(page)).toBe(
-      "로봇에는 이 모션의 이전 버전이 모션 12번(리모컨 1번 키)으로 저장되어 있어요. 업로드한 뒤에 임시 저장본이 바뀌었어요. 화면의 모션을 저장하려면 다시 업로드해 주세요.",
-    );
+    await editServo0End(page, "120");
+    await expect
+      .poll(() => copyText(page))
+      .toBe(
+        "로봇에는 이 모션의 이전 버전이 모션 12번(리모컨 1번 키)으로 저장되어 있어요. 업로드한 뒤에 임시 저장본이 바뀌었어요. 화면의 모션을 저장하려면 다시 업로드해 주세요.",
+      );
     await page
       .getByRole("button", { name: "이전 버전 실행: 모션 12번(리모컨 1번 키)", exact: true })
       .waitFor();

@@ -293,5 +293,22 @@ export async function robotTimeWhenShown(page: Page, selector: string, text: Reg
   return (await handle.jsonValue()) as number;
 }
 
+/**
+ * Waits in the page until `selector`'s text matches `text` and holds the robot's time in that same frame (see
+ * `holdRobot`): the test's next steps (posing the robot by hand, a Cancel) happen at the moment it was shown,
+ * however slowly they run. Call `releaseRobot` after them.
+ */
+export async function holdRobotWhenShown(page: Page, selector: string, text: RegExp): Promise<void> {
+  await page.waitForFunction(
+    ({ selector, source, flags }) => {
+      const pattern = new RegExp(source, flags);
+      const shown = [...document.querySelectorAll(selector)].some((e) => pattern.test(e.textContent ?? ""));
+      if (shown) window.__rbcTest?.clock.hold();
+      return shown;
+    },
+    { selector, source: text.source, flags: text.flags },
+  );
+}
+
 /** The simulated robot's time (ms of its clock). */
 export const robotNow = (page: Page) => page.evaluate(() => window.__rbcTest?.clock.now() ?? Number.NaN);

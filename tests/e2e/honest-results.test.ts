@@ -83,8 +83,8 @@ describe("zero backups say where they went, and are kept in this browser", () =>
     // Restore puts the backup into the editor; nothing is written until Write.
     const written = await page.evaluate(() => window.__rbcTest?.port.written.length);
     await row.getByRole("button", { name: "Restore" }).click();
-    expect(await page.locator("#zero-3").inputValue()).toBe(String(FACTORY_ZEROS[3]));
     await page.getByText(/Loaded the backup kept in this browser/).waitFor();
+    await expect.poll(() => page.locator("#zero-3").inputValue()).toBe(String(FACTORY_ZEROS[3]));
     expect(await page.evaluate(() => window.__rbcTest?.port.written.length)).toBe(written);
     await context.close();
   });

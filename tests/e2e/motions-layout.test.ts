@@ -193,7 +193,7 @@ describe("motions view layout", () => {
     );
     // Details on demand: the single warnings, where they are.
     await groups.nth(1).locator("summary").click();
-    expect(await groups.nth(1).locator("li.issue").count()).toBe(count("rbm-scene-jump"));
+    await expect.poll(() => groups.nth(1).locator("li.issue").count()).toBe(count("rbm-scene-jump"));
     await context.close();
   });
 

@@ -4,6 +4,7 @@ import {
   type AppHarness,
   FAST,
   holdRobot,
+  holdRobotWhenShown,
   openMotions,
   releaseRobot,
   robotNow,
@@ -42,6 +43,9 @@ async function inViewport(page: Page, testId: string, within?: string): Promise<
   return box.y >= 0 && box.x >= 0 && box.y + box.height <= size.height && box.x + box.width <= size.width;
 }
 
+/** The panel that shows the motion playing now. */
+const RUNNING = '[data-testid="running-motion"]';
+
 describe("motions view: running motions and sounds", () => {
   it("guides to basic posture first, asks once before moving, and both Stop motion and Stop end a motion with 7, the robot standing", async () => {
     const { page, context } = await app.newPage({ options: FAST });
@@ -69,17 +73,21 @@ describe("motions view: running motions and sounds", () => {
 
     // 7 runs without asking again; afterwards the guidance is gone.
     await page.locator('[data-motion="7"]').click();
-    expect(await page.getByTestId("move-confirm").count()).toBe(0);
     await page.getByText("Motion 7 (Basic posture) finished. The robot now accepts every motion.").waitFor({
       timeout: 6000,
     });
-    expect(await guidance.count()).toBe(0);
+    // Read after the motion's own result, not before the click was drawn (when no question could show yet).
+    expect(await page.getByTestId("move-confirm").count()).toBe(0);
+    await expect.poll(() => guidance.count()).toBe(0);
 
     // Stop motion sends 7: the robot ends the scene and holds that pose (no basic posture, docs/protocol.md §3.6).
     await page.locator('[data-motion="2"]').click();
     const motion2Started = await robotNow(page);
-    await page.getByTestId("running-motion").filter({ hasText: "Get up B" }).waitFor();
+    // Held from the frame the motion shows as running until Stop motion is pressed: motion 2's 6.6 s are
+    // 1.65 s of real time at FAST, which a loaded machine can spend before the click lands.
+    await holdRobotWhenShown(page, RUNNING, /Get up B/);
     await page.getByTestId("stop-motion").click();
+    await releaseRobot(page);
     await page
       .getByText(
         /Motion 2 \(Get up B \(from back\)\) stopped at the end of its scene\. The robot holds the pose/,
@@ -93,12 +101,14 @@ describe("motions view: running motions and sounds", () => {
     // The top bar's Stop during a motion ends it with 7 as well: no servo goes limp. The running panel says so.
     await page.locator('[data-motion="1"]').click();
     const running = page.getByTestId("running-motion");
-    await running.waitFor();
+    // Held likewise while the test reads the running panel and presses Stop.
+    await holdRobotWhenShown(page, RUNNING, /./);
     expect(await running.textContent().then(squash)).toContain(
       "Stop (Esc) ends the motion and keeps the robot standing",
     );
     expect(await running.textContent().then(squash)).not.toContain("Stop — limp");
     await page.getByRole("button", { name: "Stop", exact: true }).click();
+    await releaseRobot(page);
     await running.waitFor({ state: "detached", timeout: 8000 });
     expect(await page.evaluate(() => window.__rbcTest?.sim.playingMotion)).toBeUndefined();
     const passive = await page.evaluate(() => window.__rbcTest?.sim.servos.map((s) => s.passive));

@@ -205,7 +205,7 @@ describe("sensors view", () => {
     await page.getByText(/Paused: the robot is in servo control/).waitFor();
     await page.getByRole("button", { name: "Resume reading" }).click();
     await page.getByTestId("poll-status").filter({ hasText: "Reading 5 times a second" }).waitFor();
-    expect(await page.evaluate(() => window.__rbcTest?.sim.directMode)).toBe(false);
+    await expect.poll(() => page.evaluate(() => window.__rbcTest?.sim.directMode)).toBe(false);
     await context.close();
   });
 

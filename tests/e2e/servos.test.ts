@@ -165,7 +165,10 @@ describe("servos view", () => {
     await page.getByText("All 16 servos move to the basic posture at speed 4. Hold the robot.").waitFor();
     await page.getByRole("button", { name: "Move all servos" }).click();
     await page.getByText(/Sent: all 16 servos move to the basic posture/).waitFor();
-    expect((await simServos(page)).map((s) => s.position)).toEqual([...HUNO_BASIC_POSTURE]);
+    // "Sent" says the bytes left the panel; the simulated robot moves when it reads them.
+    await expect
+      .poll(async () => (await simServos(page)).map((s) => s.position))
+      .toEqual([...HUNO_BASIC_POSTURE]);
 
     await page.getByTestId("leave-direct").click();
     await page.getByText(/Servo control ended/).waitFor();

@@ -42,8 +42,11 @@ async function blur(page: Page): Promise<void> {
 async function startMotion(page: Page, n: number, name: string): Promise<void> {
   await page.locator(`[data-motion="${n}"]`).click();
   const confirm = page.locator("#confirm-move");
+  const running = page.getByTestId("running-motion").filter({ hasText: name });
+  // The click's own effect first: the question or the motion running (a count read at once sees neither).
+  await confirm.or(running).first().waitFor();
   if (await confirm.count()) await confirm.click();
-  await page.getByTestId("running-motion").filter({ hasText: name }).waitFor();
+  await running.waitFor();
   await expect.poll(() => robot(page).then((r) => r.playing)).toBe(n);
 }
 

@@ -13,7 +13,15 @@
  */
 import type { Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { type AppHarness, connectRobot, FAST, squash, startHarness } from "./harness.ts";
+import {
+  type AppHarness,
+  connectRobot,
+  FAST,
+  holdRobotWhenShown,
+  releaseRobot,
+  squash,
+  startHarness,
+} from "./harness.ts";
 import "./rbc-test-globals.ts";
 import { axeProblems, connectDemo, keysShown, newLocalePage, text } from "./i18n-checks.ts";
 
@@ -270,6 +278,9 @@ describe("trim live", () => {
   });
 });
 
+/** The capture's countdown (its text says how long until the reading). */
+const COUNTDOWN = '[data-testid="capture-countdown"]';
+
 describe("capture zeros on the demo robot", () => {
   it("limps, counts down, reads the pose made by hand, checks each joint's window, and fills the editor", async () => {
     const { page, context } = await app.newPage({ options: FAST });
@@ -280,8 +291,9 @@ describe("capture zeros on the demo robot", () => {
     await page.getByRole("button", { name: "Capture zeros…" }).click();
     expect(await text(page.getByTestId("capture-question"))).toContain("the robot falls unless you hold it");
     await page.getByRole("button", { name: "Make it limp and start the countdown" }).click();
-    const countdown = page.getByTestId("capture-countdown");
-    await countdown.filter({ hasText: "Reading in 5 s." }).waitFor();
+    // The robot's time stands still from the frame the countdown shows until the pose is made: the 5 s
+    // (1.25 s of real time at FAST) cannot run out while a loaded machine runs the test's next step.
+    await holdRobotWhenShown(page, COUNTDOWN, /Reading in 5 s\./);
     // A hand poses the limp robot in its zero pose (every joint at its stored zero), but the left knee too far
     // (window 147–177) and the left hip roll moved within its window.
     await page.evaluate((zeros) => {
@@ -289,6 +301,7 @@ describe("capture zeros on the demo robot", () => {
       window.__rbcDemoSim?.poseByHand(2, 180);
       window.__rbcDemoSim?.poseByHand(0, 130);
     }, FACTORY);
+    await releaseRobot(page);
     const summary = page.getByTestId("capture-summary");
     await summary.waitFor();
     expect(await text(summary)).toBe(
@@ -307,12 +320,13 @@ describe("capture zeros on the demo robot", () => {
     // Again, the knee within its window this time: the pose goes into the editor, and Write is the editor's.
     await page.getByRole("button", { name: "Capture again…" }).click();
     await page.getByRole("button", { name: "Make it limp and start the countdown" }).click();
-    await countdown.filter({ hasText: "Reading in" }).waitFor();
+    await holdRobotWhenShown(page, COUNTDOWN, /Reading in/);
     await page.evaluate((zeros) => {
       for (const [id, z] of zeros.entries()) window.__rbcDemoSim?.poseByHand(id, z);
       window.__rbcDemoSim?.poseByHand(2, 170);
       window.__rbcDemoSim?.poseByHand(0, 130);
     }, FACTORY);
+    await releaseRobot(page);
     await summary.filter({ hasText: "All 16" }).waitFor();
     expect(await text(summary)).toBe(
       "All 16 positions are inside their windows; 2 differ from the stored zeros.",
@@ -333,8 +347,10 @@ describe("capture zeros on the demo robot", () => {
     await page.getByRole("link", { name: "Zeros" }).click();
     await page.getByRole("button", { name: "Capture zeros…" }).click();
     await page.getByRole("button", { name: "Make it limp and start the countdown" }).click();
-    await page.getByTestId("capture-countdown").waitFor();
+    // Held from the frame the countdown shows, so the Cancel lands before the reading on a loaded machine.
+    await holdRobotWhenShown(page, COUNTDOWN, /Reading in/);
     await page.getByTestId("capture-countdown").getByRole("button", { name: "Cancel" }).click();
+    await releaseRobot(page);
     await page.getByText("Capture cancelled: nothing was read or written.").waitFor();
     expect(await page.getByTestId("capture-table").count()).toBe(0);
     await context.close();

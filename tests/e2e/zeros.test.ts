@@ -179,7 +179,7 @@ describe("zeros editor", () => {
     await page.locator("#zero-0").fill("130");
     await page.getByRole("button", { name: "Load factory zeros" }).click();
     await page.getByText(/The factory zeros are in the editor/).waitFor();
-    expect(await page.locator("#zero-0").inputValue()).toBe(String(FACTORY_ZEROS[0]));
+    await expect.poll(() => page.locator("#zero-0").inputValue()).toBe(String(FACTORY_ZEROS[0]));
     await context.close();
   });
 

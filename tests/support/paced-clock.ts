@@ -12,6 +12,12 @@
  * the page is a pause of the robot, never a burst of expired timeouts. `now()` between timers follows real time
  * at the same pace, but never passes the next timer that has not run yet; inside a timer's callback it is
  * exactly that timer's due time.
+ *
+ * A stall also pauses `now()`: while timers are pending the clock beats on the host every BEAT_MS. When `now()`
+ * is asked more than BEAT_MS + SLACK_MS after the last beat, the page was starved (the host could not run the
+ * beat), so robot time has moved at most CATCH_UP_MS past the last beat; the next beat goes on from there. So a
+ * simulator that reads a request long after the client wrote it (and set its timeout) stamps it near the write,
+ * and its reply is still due before that timeout.
  */
 import { type Clock, realClock, type TimerId } from "../../src/shared/clock.ts";
 
@@ -24,6 +30,10 @@ interface Timer {
 
 /** Robot time may lag the pace by this much (ms of robot time) before the clock stops catching up. */
 const CATCH_UP_MS = 20;
+/** While timers are pending, the clock beats on the host this often (real ms). */
+const BEAT_MS = 4;
+/** A beat later than this past its due time (real ms) means the page was starved. */
+const SLACK_MS = 16;
 
 export class PacedVirtualClock implements Clock {
   private time = 0;
@@ -39,6 +49,11 @@ export class PacedVirtualClock implements Clock {
   private inTimer = false;
   /** Robot time stands still (`hold`) while a test looks at the panel. */
   private held = false;
+  /** The host task of the next beat, while timers are pending and time is not held. */
+  private beatTask: TimerId | undefined;
+  /** Host time and robot time at the last beat. */
+  private beatHost = 0;
+  private beatTime = 0;
 
   /**
    * @param pace robot ms per real ms at most (1: real speed; 4: four times faster).
@@ -55,7 +70,9 @@ export class PacedVirtualClock implements Clock {
   now(): number {
     if (this.inTimer || this.held) return this.time;
     const next = this.earliest();
-    const paced = this.anchorTime + (this.host.now() - this.anchorHost) * this.pace;
+    const hostNow = this.host.now();
+    let paced = this.anchorTime + (hostNow - this.anchorHost) * this.pace;
+    if (this.starved(hostNow)) paced = Math.min(paced, this.beatTime + CATCH_UP_MS);
     this.time = Math.max(this.time, Math.min(paced, next ? next.due : paced));
     return this.time;
   }
@@ -64,6 +81,7 @@ export class PacedVirtualClock implements Clock {
     const id = this.nextId++;
     this.timers.push({ id, due: this.now() + Math.max(0, ms), seq: this.seq++, fn });
     this.schedule();
+    this.startBeat();
     return id;
   }
 
@@ -82,6 +100,8 @@ export class PacedVirtualClock implements Clock {
     if (this.wake !== undefined) this.host.clearTimeout(this.wake);
     this.wake = undefined;
     this.wakeAt = Number.POSITIVE_INFINITY;
+    if (this.beatTask !== undefined) this.host.clearTimeout(this.beatTask);
+    this.beatTask = undefined;
   }
 
   /** Lets robot time run again from where `hold` stopped it. */
@@ -91,6 +111,7 @@ export class PacedVirtualClock implements Clock {
     this.anchorHost = this.host.now();
     this.anchorTime = this.time;
     this.schedule();
+    this.startBeat();
   }
 
   /** Timers not yet run. */
@@ -116,6 +137,7 @@ export class PacedVirtualClock implements Clock {
     const next = this.earliest();
     if (!next || this.held) return;
     const hostNow = this.host.now();
+    this.pulse(hostNow);
     const paced = this.anchorTime + (hostNow - this.anchorHost) * this.pace;
     if (paced < next.due) {
       // Woken early (the host rounds timers): wait for the rest.
@@ -136,6 +158,42 @@ export class PacedVirtualClock implements Clock {
       this.inTimer = false;
       this.schedule();
     }
+  }
+
+  /** True when the host has not run a beat for longer than it would if the page were not starved. */
+  private starved(hostNow: number): boolean {
+    return this.beatTask !== undefined && hostNow - this.beatHost > BEAT_MS + SLACK_MS;
+  }
+
+  /** Starts beating (timers are pending), counting from now. */
+  private startBeat(): void {
+    if (this.beatTask !== undefined || this.held || this.timers.length === 0) return;
+    this.beatHost = this.host.now();
+    this.beatTime = this.time;
+    this.beatTask = this.host.setTimeout(() => this.beat(), BEAT_MS);
+  }
+
+  /** One beat: notes the page is running, then beats again while timers are pending. */
+  private beat(): void {
+    this.pulse(this.host.now());
+    this.beatTask = undefined;
+    if (this.held || this.timers.length === 0) return;
+    this.beatTask = this.host.setTimeout(() => this.beat(), BEAT_MS);
+  }
+
+  /**
+   * The page runs at `hostNow`: after a stall, robot time goes on from where `now()` held it (at most
+   * CATCH_UP_MS past the last beat) instead of jumping by the stall.
+   */
+  private pulse(hostNow: number): void {
+    if (this.beatTask === undefined) return;
+    if (this.starved(hostNow)) {
+      this.now();
+      this.anchorHost = hostNow;
+      this.anchorTime = this.time;
+    }
+    this.beatHost = hostNow;
+    this.beatTime = this.now();
   }
 
   private earliest(): Timer | undefined {

@@ -25,15 +25,20 @@ class ManualHost implements Clock {
       undefined,
     );
   }
-  /** Moves real time to `t` (at once, as a stalled page sees it), then runs the tasks due by then, in order. */
+  /** A healthy page: real time moves to `t`, each task running at its own due time (or now, if overdue). */
   runUntil(t: number): void {
-    this.time = Math.max(this.time, t);
     for (;;) {
-      const due = this.tasks.filter((x) => x.due <= this.time).sort((a, b) => a.due - b.due)[0];
-      if (!due) return;
+      const due = this.tasks.filter((x) => x.due <= t).sort((a, b) => a.due - b.due)[0];
+      if (!due) break;
+      this.time = Math.max(this.time, due.due);
       this.tasks = this.tasks.filter((x) => x !== due);
       due.fn();
     }
+    this.time = Math.max(this.time, t);
+  }
+  /** A starved page: `ms` of real time pass and none of its tasks runs (they run late, at the next `runUntil`). */
+  stall(ms: number): void {
+    this.time += ms;
   }
 }
 
@@ -43,7 +48,6 @@ describe("PacedVirtualClock (the browser tests' robot clock)", () => {
     const clock = new PacedVirtualClock(4, host);
     const seen: number[] = [];
     clock.setTimeout(() => seen.push(clock.now()), 400);
-    expect(host.nextDue).toBe(100);
     host.runUntil(99);
     expect(seen).toEqual([]);
     host.runUntil(100);
@@ -63,6 +67,7 @@ describe("PacedVirtualClock (the browser tests' robot clock)", () => {
       events.push(`reply at ${clock.now()}`);
     }, 2);
     // The page stalls for 10 s of real time before any of its tasks runs.
+    host.stall(10_000);
     host.runUntil(10_000);
     expect(events).toEqual(["reply at 2"]);
     // The robot's time paused during the stall: the timeout is still 398 ms of it (99.5 real ms) away.
@@ -81,14 +86,18 @@ describe("PacedVirtualClock (the browser tests' robot clock)", () => {
       if (seen.length < 3) clock.setTimeout(tick, 100);
     };
     clock.setTimeout(tick, 100);
-    // 5 s of real time pass in one go (20 s of robot time at pace 4): the robot has lived only 100 ms of it.
+    // 5 s of real time pass in one go (20 s of robot time at pace 4): the robot has lived only 20 ms of it
+    // (CATCH_UP_MS past its last beat, at the start).
+    host.stall(5_000);
     host.runUntil(5_000);
+    expect(seen).toEqual([]);
+    expect(clock.now()).toBe(20);
+    // From there it runs at its pace again: the tick 80 robot ms = 20 real ms later, the next 25 real ms on.
+    host.runUntil(5_019);
+    expect(seen).toEqual([]);
+    host.runUntil(5_020);
     expect(seen).toEqual([100]);
-    expect(clock.now()).toBe(100);
-    // From there it runs at its pace again: the next tick 100 robot ms = 25 real ms later.
-    host.runUntil(5_024);
-    expect(seen).toEqual([100]);
-    host.runUntil(5_025);
+    host.runUntil(5_045);
     expect(seen).toEqual([100, 200]);
   });
 
@@ -96,13 +105,57 @@ describe("PacedVirtualClock (the browser tests' robot clock)", () => {
     const host = new ManualHost();
     const clock = new PacedVirtualClock(2, host);
     clock.setTimeout(() => {}, 50);
-    host.time = 10;
+    host.runUntil(10);
     expect(clock.now()).toBe(20);
-    host.time = 100; // the wake-up task has not run yet
+    host.runUntil(20);
+    expect(clock.now()).toBe(40);
+    host.time = 30; // the page runs (its last beat was 10 real ms ago) but the wake-up task has not run yet
     expect(clock.now()).toBe(50);
-    host.runUntil(100);
+    host.runUntil(30);
     expect(clock.pending).toBe(0);
     expect(clock.now()).toBeGreaterThanOrEqual(50);
+  });
+
+  it("stamps a request read long after a stall near the write, so its reply comes before the client's timeout", () => {
+    const host = new ManualHost();
+    const clock = new PacedVirtualClock(4, host);
+    const events: string[] = [];
+    let replied = false;
+    // The client writes a request and sets its 400 ms timeout at robot time 0; the page runs 10 real ms.
+    clock.setTimeout(() => events.push(`timeout, replied=${replied}`), 400);
+    host.runUntil(10);
+    expect(clock.now()).toBe(40);
+    // The page is starved for 2 s; then the simulator reads the request first and answers 2 ms after it.
+    host.stall(2_000);
+    const stamped = clock.now();
+    clock.setTimeout(() => {
+      replied = true;
+      events.push("reply");
+    }, 2);
+    // Robot time moved at most CATCH_UP_MS (20) past the last beat (host 8 ms = robot 32), not to the timeout.
+    expect(stamped).toBe(52);
+    host.runUntil(2_011);
+    expect(events).toEqual(["reply"]);
+    // The next beats go on from there at the pace: 5 real ms later is 20 robot ms later.
+    const after = clock.now();
+    host.runUntil(2_016);
+    expect(clock.now()).toBe(after + 20);
+    host.runUntil(3_000);
+    expect(events).toEqual(["reply", "timeout, replied=true"]);
+  });
+
+  it("does not beat while nothing is pending or while held", () => {
+    const host = new ManualHost();
+    const clock = new PacedVirtualClock(1, host);
+    expect(host.nextDue).toBeUndefined();
+    clock.setTimeout(() => {}, 10);
+    expect(host.nextDue).toBe(4);
+    clock.hold();
+    expect(host.nextDue).toBeUndefined();
+    clock.release();
+    host.runUntil(20);
+    expect(clock.pending).toBe(0);
+    expect(host.nextDue).toBeUndefined();
   });
 
   it("runs timers due at the same time in the order they were set, and forgets cleared ones", () => {
@@ -126,6 +179,7 @@ describe("PacedVirtualClock (the browser tests' robot clock)", () => {
     host.runUntil(50); // 200 ms of robot time
     clock.hold();
     expect(clock.now()).toBe(200);
+    host.stall(9_950);
     host.runUntil(10_000);
     expect(seen).toEqual([]);
     expect(clock.now()).toBe(200);

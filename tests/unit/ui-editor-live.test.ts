@@ -53,6 +53,7 @@ import { PacketLog } from "../../src/ui/features/log/packet-log.ts";
 import { Session } from "../../src/ui/session.ts";
 import { SIMULATED_CLOCK } from "../../src/ui/simulated-clock.ts";
 import { createStore } from "../../src/ui/store.ts";
+import { demoContext } from "../support/demo-context.ts";
 import { driveClock } from "../support/drive-clock.ts";
 
 /** The motion template's zeros (docs/protocol.md §4, the standard table) and the demo robot's (the factory table). */
@@ -270,24 +271,6 @@ class TestHost implements EditorHost {
     this.doc = next;
     this.commits.push(label);
   }
-}
-
-/** The demo robot on a virtual clock: `run` drives its time until an operation settles. */
-async function demoContext(): Promise<{
-  ctx: AppContext;
-  sim: SimulatedRbc;
-  run: <T>(done: Promise<T>) => Promise<T>;
-  close: () => Promise<void>;
-}> {
-  const clock = new VirtualClock();
-  const run = <T>(done: Promise<T>) => driveClock(clock, done);
-  const store = createStore(initialState({ serialSupported: false, secureContext: true, route: "editor" }));
-  const packetLog = new PacketLog();
-  const session = new Session(store, packetLog, { demo: { clock } });
-  expect(await run(session.connectDemo())).toBe(true);
-  const sim = session.demoSim;
-  if (!sim) throw new Error("the demo robot has no simulator");
-  return { ctx: { store, session, packetLog }, sim, run, close: () => run(session.disconnect()) };
 }
 
 describe("teach-in and tethered play on the demo robot", () => {

@@ -6,10 +6,7 @@
 import { afterEach, beforeAll, describe, expect, it } from "vitest";
 import { translator } from "../../src/i18n/translate.ts";
 import { type Motion, motionIssues, newMotion, setPosition } from "../../src/motion/index.ts";
-import { VirtualClock } from "../../src/shared/clock.ts";
-import type { SimulatedRbc } from "../../src/sim/index.ts";
 import { initialState } from "../../src/ui/app-state.ts";
-import type { AppContext } from "../../src/ui/context.ts";
 import { liveOf, type RobotCopy } from "../../src/ui/features/editor/live-state.ts";
 import { editorMessages } from "../../src/ui/features/editor/messages.ts";
 import {
@@ -26,7 +23,6 @@ import {
   robotCopyStatus,
   sameDocument,
 } from "../../src/ui/features/editor/robot-model.ts";
-import { PacketLog } from "../../src/ui/features/log/packet-log.ts";
 import { showMemory } from "../../src/ui/features/motions/memory.ts";
 import {
   afterReset,
@@ -37,9 +33,7 @@ import {
 } from "../../src/ui/features/motions/slot-book.ts";
 import { motionsOf } from "../../src/ui/features/motions/state.ts";
 import { uploadPayload } from "../../src/ui/features/motions/upload-actions.ts";
-import { Session } from "../../src/ui/session.ts";
-import { createStore } from "../../src/ui/store.ts";
-import { driveClock } from "../support/drive-clock.ts";
+import { demoContext } from "../support/demo-context.ts";
 
 const en = translator(editorMessages, "en");
 const ko = translator(editorMessages, "ko");
@@ -133,25 +127,6 @@ describe("why the Editor's robot buttons refuse", () => {
     expect(motionPlaying(direct)).toBe(false);
   });
 });
-
-/** The demo robot on a virtual clock: `run` drives its time until an operation settles. */
-async function demoContext(): Promise<{
-  ctx: AppContext;
-  sim: SimulatedRbc;
-  packetLog: PacketLog;
-  run: <T>(done: Promise<T>) => Promise<T>;
-  close: () => Promise<void>;
-}> {
-  const clock = new VirtualClock();
-  const run = <T>(done: Promise<T>) => driveClock(clock, done);
-  const store = createStore(initialState({ serialSupported: false, secureContext: true, route: "editor" }));
-  const packetLog = new PacketLog();
-  const session = new Session(store, packetLog, { demo: { clock } });
-  expect(await run(session.connectDemo())).toBe(true);
-  const sim = session.demoSim;
-  if (!sim) throw new Error("the demo robot has no simulator");
-  return { ctx: { store, session, packetLog }, sim, packetLog, run, close: () => run(session.disconnect()) };
-}
 
 describe("the Editor's upload on the demo robot", () => {
   let close: (() => Promise<void>) | undefined;
