@@ -1,14 +1,16 @@
-import type { Locale } from "../../../../i18n/locale.ts";
-import { translator } from "../../../../i18n/translate.ts";
-import type { RbmIssue } from "../../../../protocol/rbm-validate.ts";
+import type { RbmIssue } from "../../../protocol/rbm-validate.ts";
+import type { Locale } from "../../locale.ts";
+import { translator } from "../../translate.ts";
 import { fromParser } from "./file-sentences.ts";
 import { type IssueTranslator, issueMessages } from "./messages.ts";
 import { IssueValues, servoName, subject } from "./subject.ts";
 
 /**
  * The motion file checker's issues (protocol/rbm.ts, rbm-validate.ts, motion-image.ts) said from their code and
- * `values`, for a language other than English. Every code those produce has its sentences here
- * (tests/unit/rbm-issue-text.test.ts drives each one).
+ * `values`: the outcome catalogue's one wording of a motion file's problems, used by the panel (Motions view,
+ * Editor) and by `rbc upload`, `rbc play` and `rbc rbm` alike. English is the protocol's own sentence
+ * (`issue.message`); every code those produce has its sentences here (tests/unit/rbm-issue-text.test.ts drives
+ * each one). Types only from src/protocol (this folder stays pure).
  */
 
 /** What a value was in a motion built in code: "값이 없음", "지금 값: 12.5". */
@@ -259,9 +261,30 @@ function fromWarnings(t: IssueTranslator, code: string, r: IssueValues): string 
  * An issue's sentence in `locale` from its code and values, or undefined when there is none (a code this does
  * not know, or values missing): then the English `issue.message` is shown, marked as English.
  */
-export function issueSentence(issue: RbmIssue, locale: Locale): string | undefined {
+export function rbmIssueSentence(issue: RbmIssue, locale: Locale): string | undefined {
   if (issue.values === undefined) return undefined;
   const r = new IssueValues(issue.values);
   const text = fromRules(translator(issueMessages, locale), issue.code, r);
   return r.complete ? text : undefined;
+}
+
+/** The issue's sentence and the language it is in: "en" for an English sentence kept in another language. */
+export interface RbmIssueWords {
+  text: string;
+  lang: Locale;
+}
+
+/**
+ * A motion file's problem in `locale`: in English the protocol's own sentence (`issue.message`); in Korean the
+ * catalogue's sentence with the issue's facts, or the English sentence (and `lang: "en"`) when it has none.
+ */
+export function rbmIssueWords(issue: RbmIssue, locale: Locale): RbmIssueWords {
+  if (locale === "en") return { text: issue.message, lang: "en" };
+  const text = rbmIssueSentence(issue, locale);
+  return text === undefined ? { text: issue.message, lang: "en" } : { text, lang: locale };
+}
+
+/** A motion file's problem in `locale` (`rbmIssueWords`'s text). */
+export function rbmIssueText(issue: RbmIssue, locale: Locale): string {
+  return rbmIssueWords(issue, locale).text;
 }

@@ -1,12 +1,11 @@
-import type { KeysWithoutParams } from "../../../../i18n/catalogue.ts";
-import type { RbmIssueValues } from "../../../../protocol/rbm-validate.ts";
-import { HUNO_JOINT_NAMES } from "../../../../protocol/servo-limits.ts";
-import { jointName } from "../../zeros/joints/joint-name.ts";
+import type { RbmIssueValues } from "../../../protocol/rbm-validate.ts";
+import type { KeysWithoutParams } from "../../catalogue.ts";
+import { jointOf } from "../../joint-names/joint-name.ts";
 import type { IssueTranslator, issueMessages } from "./messages.ts";
 
 /**
  * Reads an issue's `values` for its sentence, and remembers whether one the sentence needs was missing (or of
- * the wrong type): such a sentence is not said, the English one is (`issueSentence`).
+ * the wrong type): such a sentence is not said, the English one is (`rbmIssueSentence`).
  */
 export class IssueValues {
   complete = true;
@@ -99,9 +98,10 @@ export function fieldName(t: IssueTranslator, r: IssueValues): string {
 
 /** A servo by id, with its HUNO joint when it has one: "서보 2번(오른쪽 무릎)", "서보 20번". */
 export function servoName(t: IssueTranslator, id: number): string {
-  return HUNO_JOINT_NAMES[id] === undefined
+  const joint = jointOf(id, t.locale);
+  return joint === undefined
     ? t("motions.issue.servo", { id: String(id) })
-    : t("motions.issue.servoJoint", { id: String(id), joint: jointName(id, t.locale) });
+    : t("motions.issue.servoJoint", { id: String(id), joint });
 }
 
 /**

@@ -1,9 +1,9 @@
-import { defineMessages } from "../../../../i18n/catalogue.ts";
-import type { Translator } from "../../../../i18n/translate.ts";
+import { defineMessages } from "../../catalogue.ts";
+import type { Translator } from "../../translate.ts";
 
 /**
  * The motion file checker's sentences (protocol/rbm.ts, rbm-validate.ts, motion-image.ts), one per issue code
- * and kind, filled from the issue's `values` (`issueSentence`). The English texts mirror the protocol's own
+ * and kind, filled from the issue's `values` (`rbmIssueSentence`). The English texts mirror the protocol's own
  * sentences, which stay what English shows (`issue.message`, also used by the CLI and the tests); the Korean
  * ones are what Korean shows. A servo is "서보 3번(오른쪽 무릎)": its head word is 번, so "{servo}의" and
  * "{servo}이" read right.
