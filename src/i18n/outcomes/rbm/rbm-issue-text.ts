@@ -257,11 +257,14 @@ function fromWarnings(t: IssueTranslator, code: string, r: IssueValues): string 
   }
 }
 
+/** What the words of an issue come from: its code, its facts, and the protocol's English sentence. */
+export type RbmIssueFacts = Pick<RbmIssue, "code" | "message" | "values">;
+
 /**
  * An issue's sentence in `locale` from its code and values, or undefined when there is none (a code this does
  * not know, or values missing): then the English `issue.message` is shown, marked as English.
  */
-export function rbmIssueSentence(issue: RbmIssue, locale: Locale): string | undefined {
+export function rbmIssueSentence(issue: RbmIssueFacts, locale: Locale): string | undefined {
   if (issue.values === undefined) return undefined;
   const r = new IssueValues(issue.values);
   const text = fromRules(translator(issueMessages, locale), issue.code, r);
@@ -278,13 +281,13 @@ export interface RbmIssueWords {
  * A motion file's problem in `locale`: in English the protocol's own sentence (`issue.message`); in Korean the
  * catalogue's sentence with the issue's facts, or the English sentence (and `lang: "en"`) when it has none.
  */
-export function rbmIssueWords(issue: RbmIssue, locale: Locale): RbmIssueWords {
+export function rbmIssueWords(issue: RbmIssueFacts, locale: Locale): RbmIssueWords {
   if (locale === "en") return { text: issue.message, lang: "en" };
   const text = rbmIssueSentence(issue, locale);
   return text === undefined ? { text: issue.message, lang: "en" } : { text, lang: locale };
 }
 
 /** A motion file's problem in `locale` (`rbmIssueWords`'s text). */
-export function rbmIssueText(issue: RbmIssue, locale: Locale): string {
+export function rbmIssueText(issue: RbmIssueFacts, locale: Locale): string {
   return rbmIssueWords(issue, locale).text;
 }
