@@ -95,7 +95,7 @@ export function validateRbm(motion: RbmMotion, options: RbmValidateOptions = {})
   const textFields = ["serialNumber", "text1", "text2", "name"];
   texts.forEach((value, i) => {
     if (value.includes(":")) {
-      err("rbm-text", `${textNames[i]} contains ":", which would split the field in an .rbm file.`, {
+      err("rbm-text", en("outcome.rbm.text", { what: String(textNames[i]) }), {
         field: textFields[i] ?? "",
       });
     }
@@ -120,7 +120,11 @@ export function validateRbm(motion: RbmMotion, options: RbmValidateOptions = {})
   for (const [value, usual, what, field, index] of constants) {
     if (value !== usual) {
       const values = { field, index, value, usual };
-      warn("rbm-header-constant", `${what} is ${value}; Motionbuilder always writes ${usual}.`, values);
+      warn(
+        "rbm-header-constant",
+        en("outcome.rbm.headerConstant", { what, value: String(value), usual: String(usual) }),
+        values,
+      );
     }
   }
   byte(motion.motionIndex, "The motion index", "motionIndex");

@@ -413,7 +413,11 @@ export function serializeRbm(motion: RbmMotion): string {
     if (scene.servos.length !== W) {
       fail(
         "rbm-unwritable",
-        `Scene ${s} has ${scene.servos.length} servo records; the motion has ${W} servos.`,
+        en("outcome.rbm.servoCount.scene", {
+          scene: String(s),
+          records: String(scene.servos.length),
+          servos: String(W),
+        }),
       );
     }
     num(`${k}index`, scene.index, 3, `${what} index`);

@@ -3,9 +3,10 @@ import type { Translator } from "../../translate.ts";
 
 /**
  * The motion file checker's sentences (protocol/rbm.ts, rbm-validate.ts, motion-image.ts), one per issue code
- * and kind, filled from the issue's `values` (`rbmIssueSentence`). The English texts mirror the protocol's own
- * sentences, which stay what English shows (`issue.message`, also used by the CLI and the tests); the Korean
- * ones are what Korean shows. A servo is "서보 3번(오른쪽 무릎)": its head word is 번, so "{servo}의" and
+ * and kind, filled from the issue's `values` (`rbmIssueSentence`). English shows the protocol's `issue.message`:
+ * protocol/rbm*.ts take it from here where the sentence is the same (`en(...)` there); where the protocol
+ * builds its own subject or formats numbers differently, its sentence is still its own and the English here
+ * mirrors it. Korean shows the Korean here, in the panel and in `rbc` alike. A servo is "서보 3번(오른쪽 무릎)": its head word is 번, so "{servo}의" and
  * "{servo}이" read right.
  */
 export const rbmIssueMessages = defineMessages({
