@@ -1,5 +1,5 @@
-import type { KeysWithoutParams } from "../i18n/catalogue.ts";
 import type { Locale } from "../i18n/locale.ts";
+import { rbmIssueWords } from "../i18n/outcomes/rbm/rbm-issue-text.ts";
 import { translator } from "../i18n/translate.ts";
 import { formatSeconds } from "../i18n/units.ts";
 import { memoryFootprint } from "../protocol/catalog.ts";
@@ -8,51 +8,12 @@ import type { RbmIssue, RbmValidation } from "../protocol/rbm-validate.ts";
 import { cliMessages } from "./messages.ts";
 
 /**
- * The validation report of `rbc upload` (and `rbc play`), in words. A problem of a motion file is the
- * protocol's English sentence (with its values); in Korean it is said from its stable code, and `--log`
- * adds the English sentence after it.
+ * The validation report of `rbc upload` (and `rbc play`, `rbc rbm`), in words. A problem of a motion file is
+ * worded by the outcome catalogue (src/i18n/outcomes/rbm/), as the panel shows it: in English the protocol's
+ * sentence, in Korean the same facts in Korean; `--log` adds the English sentence after a Korean one.
  */
 
-type Key = KeysWithoutParams<typeof cliMessages>;
-
-/** The Korean (or English gist) of each problem a motion file can have, by its code (protocol/rbm*.ts). */
-const ISSUE_TEXT: Readonly<Record<string, Key>> = {
-  "rbm-shape": "cli.rbm.shape",
-  "rbm-not-a-number": "cli.rbm.notANumber",
-  "rbm-out-of-range": "cli.rbm.outOfRange",
-  "rbm-position": "cli.rbm.position",
-  "rbm-text": "cli.rbm.text",
-  "rbm-serial-format": "cli.rbm.serialFormat",
-  "rbm-serial-mismatch": "cli.rbm.serialMismatch",
-  "rbm-header-constant": "cli.rbm.headerConstant",
-  "rbm-servo-count": "cli.rbm.servoCount",
-  "rbm-scene-count": "cli.rbm.sceneCount",
-  "rbm-no-scenes": "cli.rbm.noScenes",
-  "rbm-huno-servo-count": "cli.rbm.hunoServoCount",
-  "rbm-servo-id": "cli.rbm.servoId",
-  "rbm-scene-index": "cli.rbm.sceneIndex",
-  "rbm-frames": "cli.rbm.frames",
-  "rbm-frame-interval-short": "cli.rbm.frameIntervalShort",
-  "rbm-frame-interval-long": "cli.rbm.frameIntervalLong",
-  "rbm-many-frames": "cli.rbm.manyFrames",
-  "rbm-long-scene": "cli.rbm.longScene",
-  "rbm-torque": "cli.rbm.torque",
-  "rbm-port": "cli.rbm.port",
-  "rbm-unsafe-position": "cli.rbm.unsafePosition",
-  "rbm-scene-jump": "cli.rbm.sceneJump",
-  "rbm-not-text": "cli.rbm.notText",
-  "rbm-too-large": "cli.rbm.tooLarge",
-  "rbm-empty": "cli.rbm.empty",
-  "rbm-not-motion": "cli.rbm.notMotion",
-  "rbm-end": "cli.rbm.end",
-  "rbm-field-count": "cli.rbm.fieldCount",
-  "rbm-field-too-long": "cli.rbm.fieldTooLong",
-  "rbm-length-mismatch": "cli.rbm.lengthMismatch",
-  "rbm-image-range": "cli.rbm.imageRange",
-  "rbm-unwritable": "cli.rbm.unwritable",
-};
-
-/** How a motion file's problems are told: in English as the protocol words them, else from their code. */
+/** How a motion file's problems are told: in the person's language, with the English after `--log`. */
 export interface IssueWords {
   locale: Locale;
   /** Add the protocol's English sentence after a translated one (`--log`). */
@@ -60,14 +21,17 @@ export interface IssueWords {
 }
 
 /**
- * What is wrong, in `words.locale`: the protocol's own sentence in English; in Korean the sentence for its
- * code (a general one for a code without its own), with the English sentence in brackets after `--log`.
+ * What is wrong, in `words.locale`: the outcome catalogue's sentence with the file's facts (the panel's own,
+ * `rbmIssueText`), the protocol's English sentence in brackets after it with `--log`. An issue the catalogue
+ * cannot word (a code it does not know, or one without its facts) says so in general, then the English.
  */
-export function issueText(issue: { code: string; message: string }, words: IssueWords): string {
-  if (words.locale === "en") return issue.message;
-  const t = translator(cliMessages, words.locale);
-  const text = t(ISSUE_TEXT[issue.code] ?? "cli.rbm.other");
-  return words.withEnglish ? `${text} [${issue.message}]` : text;
+export function issueText(issue: Pick<RbmIssue, "code" | "message" | "values">, words: IssueWords): string {
+  const said = rbmIssueWords(issue, words.locale);
+  if (words.locale === "en") return said.text;
+  if (said.lang !== words.locale) {
+    return `${translator(cliMessages, words.locale)("cli.rbm.other")} [${issue.message}]`;
+  }
+  return words.withEnglish ? `${said.text} [${issue.message}]` : said.text;
 }
 
 function where(issue: RbmIssue, locale: Locale): string {

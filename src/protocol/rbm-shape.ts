@@ -3,8 +3,13 @@
  * place where a motion built in code does not have that shape put into words and values.
  */
 
+import { rbmIssueMessages } from "../i18n/outcomes/rbm/messages.ts";
+import { translator } from "../i18n/translate.ts";
 import type { RbmIssue, RbmIssueValues } from "./rbm-validate.ts";
 import { z } from "./zod.ts";
+
+/** A file problem's English sentence, from the outcome catalogue (src/i18n/outcomes/rbm/), as Korean is. */
+const en = translator(rbmIssueMessages, "en");
 
 const whole = z.number().int().min(0);
 const text = z.string();
@@ -70,7 +75,7 @@ export function shapeIssue(root: unknown, path: readonly PropertyKey[]): RbmIssu
   if (path.length === 0) {
     return {
       code: "rbm-shape",
-      message: "A motion must be an object with servos and scenes.",
+      message: en("outcome.rbm.shape.motion"),
       values: { kind: "motion" },
     };
   }

@@ -3,9 +3,14 @@
  * motion unusable on the RBC; warnings are worth telling the user about.
  */
 
+import { rbmIssueMessages } from "../i18n/outcomes/rbm/messages.ts";
+import { translator } from "../i18n/translate.ts";
 import type { RbmMotion } from "./rbm.ts";
 import { rbmMotionSchema, shapeIssue } from "./rbm-shape.ts";
 import { HUNO_SERVO_COUNT, safeRange, servoLabel } from "./servo-limits.ts";
+
+/** A file problem's English sentence, from the outcome catalogue (src/i18n/outcomes/rbm/), as Korean is. */
+const en = translator(rbmIssueMessages, "en");
 
 export { rbmMotionSchema } from "./rbm-shape.ts";
 
@@ -90,26 +95,21 @@ export function validateRbm(motion: RbmMotion, options: RbmValidateOptions = {})
   const textFields = ["serialNumber", "text1", "text2", "name"];
   texts.forEach((value, i) => {
     if (value.includes(":")) {
-      err("rbm-text", `${textNames[i]} contains ":", which would split the field in an .rbm file.`, {
+      err("rbm-text", en("outcome.rbm.text", { what: String(textNames[i]) }), {
         field: textFields[i] ?? "",
       });
     }
   });
   const serial = motion.serialNumber;
   if (!/^[0-9]{13}$/.test(serial)) {
-    warn(
-      "rbm-serial-format",
-      `The serial number "${serial}" is not 13 digits, the form Motionbuilder writes.`,
-      { serial },
-    );
+    warn("rbm-serial-format", en("outcome.rbm.serialFormat", { serial }), { serial });
   }
   const connected = options.connectedSerialNumber;
   if (connected !== undefined && !/^0+$/.test(serial) && serial !== connected) {
-    warn(
-      "rbm-serial-mismatch",
-      `This motion was made for the robot with serial number ${serial}, but the connected robot is ${connected}; Motionbuilder refuses such files. Check that the motion suits this robot.`,
-      { serial, connected },
-    );
+    warn("rbm-serial-mismatch", en("outcome.rbm.serialMismatch", { serial, connected }), {
+      serial,
+      connected,
+    });
   }
   const constants: [number, number, string, string, number][] = [
     [motion.format, 1, "Field 0 (format)", "format", 0],
@@ -120,7 +120,11 @@ export function validateRbm(motion: RbmMotion, options: RbmValidateOptions = {})
   for (const [value, usual, what, field, index] of constants) {
     if (value !== usual) {
       const values = { field, index, value, usual };
-      warn("rbm-header-constant", `${what} is ${value}; Motionbuilder always writes ${usual}.`, values);
+      warn(
+        "rbm-header-constant",
+        en("outcome.rbm.headerConstant", { what, value: String(value), usual: String(usual) }),
+        values,
+      );
     }
   }
   byte(motion.motionIndex, "The motion index", "motionIndex");
@@ -129,17 +133,25 @@ export function validateRbm(motion: RbmMotion, options: RbmValidateOptions = {})
   const W = motion.servos.length;
   const S = motion.scenes.length;
   if (motion.servoCount !== undefined && motion.servoCount !== W) {
-    err("rbm-servo-count", `The motion says it has ${motion.servoCount} servos but lists ${W}.`, {
-      kind: "declared",
-      declared: motion.servoCount,
-      listed: W,
-    });
+    err(
+      "rbm-servo-count",
+      en("outcome.rbm.servoCount.declared", { declared: String(motion.servoCount), listed: String(W) }),
+      {
+        kind: "declared",
+        declared: motion.servoCount,
+        listed: W,
+      },
+    );
   }
   if (motion.sceneCount !== undefined && motion.sceneCount !== S) {
-    err("rbm-scene-count", `The motion says it has ${motion.sceneCount} scenes but lists ${S}.`, {
-      declared: motion.sceneCount,
-      listed: S,
-    });
+    err(
+      "rbm-scene-count",
+      en("outcome.rbm.sceneCount", { declared: String(motion.sceneCount), listed: String(S) }),
+      {
+        declared: motion.sceneCount,
+        listed: S,
+      },
+    );
   }
   if (W < 1 || W > RBM_MAX_SERVOS) {
     err("rbm-servo-count", `The motion has ${W} servos; a motion has 1 to 31.`, {
@@ -149,10 +161,14 @@ export function validateRbm(motion: RbmMotion, options: RbmValidateOptions = {})
       max: RBM_MAX_SERVOS,
     });
   } else if (motion.platform === 1 && W !== HUNO_SERVO_COUNT) {
-    warn("rbm-huno-servo-count", `The motion has ${W} servos; a HUNO has ${HUNO_SERVO_COUNT}.`, {
-      servos: W,
-      huno: HUNO_SERVO_COUNT,
-    });
+    warn(
+      "rbm-huno-servo-count",
+      en("outcome.rbm.hunoServoCount", { servos: String(W), huno: String(HUNO_SERVO_COUNT) }),
+      {
+        servos: W,
+        huno: HUNO_SERVO_COUNT,
+      },
+    );
   }
   if (S < 1) {
     // A motion needs at least one scene (§7): the editor, the image and the robot all assume one.
@@ -179,7 +195,12 @@ export function validateRbm(motion: RbmMotion, options: RbmValidateOptions = {})
     const before = seen.get(id);
     if (before !== undefined) {
       const values = { kind: "twice", id, first: before, second: i };
-      err("rbm-servo-id", `Servo id ${id} is listed twice (records ${before} and ${i}).`, values, at);
+      err(
+        "rbm-servo-id",
+        en("outcome.rbm.servoId.twice", { id: String(id), first: String(before), second: String(i) }),
+        values,
+        at,
+      );
     } else {
       seen.set(id, i);
     }
@@ -197,7 +218,7 @@ export function validateRbm(motion: RbmMotion, options: RbmValidateOptions = {})
     if (scene.index !== k) {
       err(
         "rbm-scene-index",
-        `Scene ${k} is numbered ${scene.index}; scenes are numbered 0 to ${S - 1} in order.`,
+        en("outcome.rbm.sceneIndex", { scene: String(k), index: String(scene.index), last: String(S - 1) }),
         { ...at, index: scene.index, last: S - 1 },
         at,
       );
@@ -261,7 +282,11 @@ export function validateRbm(motion: RbmMotion, options: RbmValidateOptions = {})
     if (scene.servos.length !== W) {
       err(
         "rbm-servo-count",
-        `Scene ${k} has ${scene.servos.length} servo records; the motion has ${W} servos.`,
+        en("outcome.rbm.servoCount.scene", {
+          scene: String(k),
+          records: String(scene.servos.length),
+          servos: String(W),
+        }),
         { kind: "scene", ...at, records: scene.servos.length, servos: W },
         at,
       );

@@ -7,6 +7,8 @@
  * has 13 + 6·W + S·(5 + 6·W) fields. The file is untrusted input: `parseRbm` throws only `RbmError`, whatever the
  * text, and `serializeRbm(parseRbm(text)) === text` for every file it accepts.
  */
+import { rbmIssueMessages } from "../i18n/outcomes/rbm/messages.ts";
+import { translator } from "../i18n/translate.ts";
 import { ProtocolError } from "./errors.ts";
 import { type RbmIssue, type RbmIssueValues, validateRbm } from "./rbm-validate.ts";
 
@@ -18,6 +20,9 @@ export {
   rbmMotionSchema,
   validateRbm,
 } from "./rbm-validate.ts";
+
+/** A file problem's English sentence, from the outcome catalogue (src/i18n/outcomes/rbm/), as Korean is. */
+const en = translator(rbmIssueMessages, "en");
 
 /** One servo of the motion (file section after the header): `id:P:D:I:portEnable:zero`. */
 export interface RbmServo {
@@ -196,7 +201,7 @@ export function parseRbm(text: string): RbmMotion {
  * nothing else) if the text is not an `.rbm` file at all.
  */
 export function readRbm(text: string): RbmMotion {
-  if (typeof text !== "string") fail("rbm-not-text", "A motion file must be read as text.", {});
+  if (typeof text !== "string") fail("rbm-not-text", en("outcome.rbm.notText"), {});
   if (text.length > RBM_MAX_TEXT_LENGTH) {
     fail(
       "rbm-too-large",
@@ -210,18 +215,12 @@ export function readRbm(text: string): RbmMotion {
   const trailing = text.slice(end);
   if (body.length === 0) fail("rbm-empty", "The motion file is empty.", {});
   if (!RBM_START.test(text)) {
-    fail(
-      "rbm-not-motion",
-      'This is not a Motionbuilder motion file (.rbm): such a file is one line of fields separated by ":", starting with "1:13:" and the 13-digit serial number of a robot.',
-      {},
-    );
+    fail("rbm-not-motion", en("outcome.rbm.notMotion"), {});
   }
   if (!body.endsWith(":")) {
-    fail(
-      "rbm-end",
-      `The file should end with ":", not ${shown(body.slice(-12))}; it is truncated or damaged.`,
-      { ending: shown(body.slice(-12)) },
-    );
+    fail("rbm-end", en("outcome.rbm.end", { ending: shown(body.slice(-12)) }), {
+      ending: shown(body.slice(-12)),
+    });
   }
   const f = body.slice(0, -1).split(":");
   if (f.length < RBM_HEADER_FIELDS) {
@@ -317,7 +316,12 @@ export function readRbm(text: string): RbmMotion {
   if (f.length !== expected) {
     fail(
       "rbm-field-count",
-      `The file has ${f.length} fields, but a motion with ${servoCount} servos and ${sceneCount} scenes has ${expected}; the file is truncated or damaged.`,
+      en("outcome.rbm.fieldCount.total", {
+        fields: String(f.length),
+        servos: String(servoCount),
+        scenes: String(sceneCount),
+        expected: String(expected),
+      }),
       { kind: "total", fields: f.length, servos: servoCount, scenes: sceneCount, expected },
     );
   }
@@ -409,7 +413,11 @@ export function serializeRbm(motion: RbmMotion): string {
     if (scene.servos.length !== W) {
       fail(
         "rbm-unwritable",
-        `Scene ${s} has ${scene.servos.length} servo records; the motion has ${W} servos.`,
+        en("outcome.rbm.servoCount.scene", {
+          scene: String(s),
+          records: String(scene.servos.length),
+          servos: String(W),
+        }),
       );
     }
     num(`${k}index`, scene.index, 3, `${what} index`);

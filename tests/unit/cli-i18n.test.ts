@@ -201,8 +201,9 @@ describe.concurrent("rbc in Korean", () => {
     ]);
     expect(ko.code).toBe(1);
     expect(ko.stdout).toBe("");
+    // The catalogue's sentence with the file's facts (the panel's words), not a general one.
     expect(ko.stderr).toMatch(
-      /^rbc: wave-cut\.rbm: .*(잘렸거나 손상된 파일이에요|필드 수가 맞지 않아요).*\. 아무것도 보내지 않았어요\.\n$/,
+      /^rbc: wave-cut\.rbm: 파일(의 필드가 [\d,]+개인데|은 ":" 문자로 끝나야 하는데).*(잘렸거나 손상됐어요).*아무것도 보내지 않았어요\.\n$/,
     );
     expect(ko.stderr).not.toMatch(/[A-Za-z]{4,} [a-z]{3,}/); // no English sentence in it
     // --log: the same line, then the English as the technical detail.
@@ -213,6 +214,43 @@ describe.concurrent("rbc in Korean", () => {
     expect(JSON.parse(json.stdout).error).toMatchObject({ code: "rbm-invalid" });
     expect(JSON.parse(json.stdout).error.message).toBe(en.stderr.replace(/^rbc: /, "").trim());
     expect(en.stderr).toMatch(/^rbc: wave-cut\.rbm: .*\. Nothing was sent\.\n$/);
+  });
+
+  it("a motion file with a problem: rbc upload in Korean says the panel's sentence with the scene and the ms", {
+    timeout: T,
+  }, async () => {
+    // wave.rbm's scene 0 (20 frames) given 200 ms: frames 10 ms apart, the RBC needs 20 (docs/protocol.md §7);
+    // then also servo 3's zero position (field 36) 300, past 254: two errors, listed one a line.
+    const fields = (await readFile(join(REPO, EXAMPLES.wave), "latin1")).split(":");
+    fields[13 + 6 * 16 + 4] = "200";
+    const fast = join(dir, "wave-fast.rbm");
+    await writeFile(fast, fields.join(":"), "latin1");
+    fields[13 + 6 * 3 + 5] = "300";
+    const twice = join(dir, "wave-fast-zero.rbm");
+    await writeFile(twice, fields.join(":"), "latin1");
+    const [ko, log, two] = await Promise.all([
+      runCli(["upload", fast, "--demo", "--lang", "ko"]),
+      runCli(["upload", fast, "--demo", "--lang", "ko", "--log"]),
+      runCli(["upload", twice, "--demo", "--lang", "ko"]),
+    ]);
+    const interval =
+      "장면 0의 프레임 간격이 10ms예요 (200ms / 프레임 20개). RBC에는 20ms 이상이 필요해요. 프레임 수를 줄여 주세요";
+    expect(ko.code).toBe(1);
+    expect(ko.stderr).toBe(`rbc: wave-fast.rbm: ${interval}. 아무것도 보내지 않았어요.\n`);
+    // --log: the same line, then the protocol's English sentence as the technical detail.
+    expect(log.stderr.split("\n")).toEqual([
+      ko.stderr.trim(),
+      "rbc: 기술 정보: CliError: wave-fast.rbm: Scene 0 has frames 10 ms apart (200 ms / 20 frames); the RBC needs at least 20 ms. Use fewer frames. Nothing was sent.",
+      "",
+    ]);
+    expect(two.code).toBe(1);
+    expect(two.stdout.split("\n")).toEqual(
+      expect.arrayContaining([
+        "  오류: (서보 3) 서보 3번(왼쪽 발목 피치)의 영점 위치 값이 300인데, 위치는 0부터 254까지예요.",
+        `  오류: (장면 0) ${interval}.`,
+      ]),
+    );
+    expect(two.stdout + two.stderr).not.toMatch(/[A-Za-z]{4,} [a-z]{3,}/); // no English sentence in it
   });
 
   it("a --lang rbc does not speak is a usage error, in the environment's language (spawned: main's own)", {

@@ -1,12 +1,12 @@
 import type { Locale } from "../../../i18n/locale.ts";
+import { rbmIssueWords } from "../../../i18n/outcomes/rbm/rbm-issue-text.ts";
 import type { RbmIssue } from "../../../protocol/rbm-validate.ts";
 import { PANEL_ISSUE_CODES } from "./files.ts";
-import { issueSentence } from "./issues/sentences.ts";
 
 /**
  * A motion file's issue in words, for the Motions view and the Editor. The checker (protocol/rbm*.ts) words its
  * issues in English (`message`, also the CLI's and the tests'); in another language the sentence is made from
- * the issue's code and `values` (issues/messages.ts). An issue without such a sentence keeps its English one,
+ * the issue's code and `values` (the outcome catalogue, src/i18n/outcomes/rbm/). An issue without such a sentence keeps its English one,
  * which the view marks with `lang="en"`.
  */
 export interface IssueWords {
@@ -19,8 +19,7 @@ export interface IssueWords {
 export function issueWords(issue: RbmIssue, locale: Locale): IssueWords {
   // English, and the panel's own issues (already worded in the panel's language), are shown as they are.
   if (locale === "en" || PANEL_ISSUE_CODES.includes(issue.code)) return { text: issue.message, lang: locale };
-  const text = issueSentence(issue, locale);
-  return text === undefined ? { text: issue.message, lang: "en" } : { text, lang: locale };
+  return rbmIssueWords(issue, locale);
 }
 
 /** The issue's sentence in `locale`: English `issue.message` unchanged; Korean from its code and values. */

@@ -1,27 +1,29 @@
-import type { Locale } from "../../../../i18n/locale.ts";
-import { translator } from "../../../../i18n/translate.ts";
-import type { RbmIssue } from "../../../../protocol/rbm-validate.ts";
+import type { RbmIssue } from "../../../protocol/rbm-validate.ts";
+import type { Locale } from "../../locale.ts";
+import { translator } from "../../translate.ts";
 import { fromParser } from "./file-sentences.ts";
-import { type IssueTranslator, issueMessages } from "./messages.ts";
+import { type IssueTranslator, rbmIssueMessages } from "./messages.ts";
 import { IssueValues, servoName, subject } from "./subject.ts";
 
 /**
  * The motion file checker's issues (protocol/rbm.ts, rbm-validate.ts, motion-image.ts) said from their code and
- * `values`, for a language other than English. Every code those produce has its sentences here
- * (tests/unit/rbm-issue-text.test.ts drives each one).
+ * `values`: the outcome catalogue's one wording of a motion file's problems, used by the panel (Motions view,
+ * Editor) and by `rbc upload`, `rbc play` and `rbc rbm` alike. English is the protocol's own sentence
+ * (`issue.message`); every code those produce has its sentences here (tests/unit/rbm-issue-text.test.ts drives
+ * each one). Types only from src/protocol (this folder stays pure).
  */
 
 /** What a value was in a motion built in code: "값이 없음", "지금 값: 12.5". */
 function got(t: IssueTranslator, r: IssueValues): string {
   switch (r.text("got")) {
     case "missing":
-      return t("motions.issue.got.missing");
+      return t("outcome.rbm.got.missing");
     case "list":
-      return t("motions.issue.got.list");
+      return t("outcome.rbm.got.list");
     case "object":
-      return t("motions.issue.got.object");
+      return t("outcome.rbm.got.object");
     case "value":
-      return t("motions.issue.got.value", { value: r.text("value") });
+      return t("outcome.rbm.got.value", { value: r.text("value") });
     default:
       r.complete = false;
       return "";
@@ -31,13 +33,13 @@ function got(t: IssueTranslator, r: IssueValues): string {
 function shape(t: IssueTranslator, r: IssueValues): string | undefined {
   switch (r.text("kind")) {
     case "motion":
-      return t("motions.issue.shape.motion");
+      return t("outcome.rbm.shape.motion");
     case "list":
-      return t("motions.issue.shape.list", { path: r.text("path"), got: got(t, r) });
+      return t("outcome.rbm.shape.list", { path: r.text("path"), got: got(t, r) });
     case "text":
-      return t("motions.issue.shape.text", { path: r.text("path"), got: got(t, r) });
+      return t("outcome.rbm.shape.text", { path: r.text("path"), got: got(t, r) });
     case "form":
-      return t("motions.issue.shape.form", { path: r.text("path") });
+      return t("outcome.rbm.shape.form", { path: r.text("path") });
     default:
       return undefined;
   }
@@ -46,9 +48,9 @@ function shape(t: IssueTranslator, r: IssueValues): string | undefined {
 function notANumber(t: IssueTranslator, r: IssueValues): string | undefined {
   switch (r.text("kind")) {
     case "shape":
-      return t("motions.issue.shape.number", { path: r.text("path"), got: got(t, r) });
+      return t("outcome.rbm.shape.number", { path: r.text("path"), got: got(t, r) });
     case "field":
-      return t("motions.issue.notANumber", {
+      return t("outcome.rbm.notANumber", {
         index: r.ordinal("index"),
         what: subject(t, r),
         text: r.text("text"),
@@ -62,11 +64,11 @@ function outOfRange(t: IssueTranslator, r: IssueValues): string | undefined {
   const max = r.number("max");
   switch (r.text("kind")) {
     case "byte":
-      return t("motions.issue.outOfRange.byte", { what: subject(t, r), value: r.number("value"), max });
+      return t("outcome.rbm.outOfRange.byte", { what: subject(t, r), value: r.number("value"), max });
     case "scenes":
-      return t("motions.issue.outOfRange.scenes", { scenes: r.number("scenes"), max });
+      return t("outcome.rbm.outOfRange.scenes", { scenes: r.number("scenes"), max });
     case "timing":
-      return t("motions.issue.outOfRange.timing", { scene: r.ordinal("scene"), max });
+      return t("outcome.rbm.outOfRange.timing", { scene: r.ordinal("scene"), max });
     default:
       return undefined;
   }
@@ -75,24 +77,24 @@ function outOfRange(t: IssueTranslator, r: IssueValues): string | undefined {
 function servoCount(t: IssueTranslator, r: IssueValues): string | undefined {
   switch (r.text("kind")) {
     case "declared":
-      return t("motions.issue.servoCount.declared", {
+      return t("outcome.rbm.servoCount.declared", {
         declared: r.number("declared"),
         listed: r.number("listed"),
       });
     case "range":
-      return t("motions.issue.servoCount.range", {
+      return t("outcome.rbm.servoCount.range", {
         servos: r.number("servos"),
         min: r.number("min"),
         max: r.number("max"),
       });
     case "file":
-      return t("motions.issue.servoCount.file", {
+      return t("outcome.rbm.servoCount.file", {
         servos: r.number("servos"),
         min: r.number("min"),
         max: r.number("max"),
       });
     case "scene":
-      return t("motions.issue.servoCount.scene", {
+      return t("outcome.rbm.servoCount.scene", {
         scene: r.ordinal("scene"),
         records: r.number("records"),
         servos: r.number("servos"),
@@ -105,19 +107,19 @@ function servoCount(t: IssueTranslator, r: IssueValues): string | undefined {
 function servoId(t: IssueTranslator, r: IssueValues): string | undefined {
   switch (r.text("kind")) {
     case "range":
-      return t("motions.issue.servoId.range", {
+      return t("outcome.rbm.servoId.range", {
         record: r.ordinal("record"),
         id: r.ordinal("id"),
         max: r.number("max"),
       });
     case "twice":
-      return t("motions.issue.servoId.twice", {
+      return t("outcome.rbm.servoId.twice", {
         id: r.ordinal("id"),
         first: r.ordinal("first"),
         second: r.ordinal("second"),
       });
     case "order":
-      return t("motions.issue.servoId.order", {
+      return t("outcome.rbm.servoId.order", {
         scene: r.ordinal("scene"),
         record: r.ordinal("record"),
         id: r.ordinal("servo"),
@@ -133,9 +135,9 @@ function headerConstant(t: IssueTranslator, r: IssueValues): string {
   const field = r.text("field");
   const named = field === "format" || field === "platform";
   const what = named
-    ? t("motions.issue.numberedField", { index: r.ordinal("index"), field: subject(t, r) })
+    ? t("outcome.rbm.numberedField", { index: r.ordinal("index"), field: subject(t, r) })
     : subject(t, r);
-  return t("motions.issue.headerConstant", { what, value: r.number("value"), usual: r.number("usual") });
+  return t("outcome.rbm.headerConstant", { what, value: r.number("value"), usual: r.number("usual") });
 }
 
 function timing(r: IssueValues) {
@@ -156,37 +158,37 @@ function fromRules(t: IssueTranslator, code: string, r: IssueValues): string | u
     case "rbm-out-of-range":
       return outOfRange(t, r);
     case "rbm-position":
-      return t("motions.issue.position", {
+      return t("outcome.rbm.position", {
         what: subject(t, r),
         value: r.number("value"),
         max: r.number("max"),
       });
     case "rbm-text":
-      return t("motions.issue.text", { what: subject(t, r) });
+      return t("outcome.rbm.text", { what: subject(t, r) });
     case "rbm-servo-count":
       return servoCount(t, r);
     case "rbm-scene-count":
-      return t("motions.issue.sceneCount", { declared: r.number("declared"), listed: r.number("listed") });
+      return t("outcome.rbm.sceneCount", { declared: r.number("declared"), listed: r.number("listed") });
     case "rbm-no-scenes":
-      return t("motions.issue.noScenes", { min: r.number("min") });
+      return t("outcome.rbm.noScenes", { min: r.number("min") });
     case "rbm-servo-id":
       return servoId(t, r);
     case "rbm-scene-index":
-      return t("motions.issue.sceneIndex", {
+      return t("outcome.rbm.sceneIndex", {
         scene: r.ordinal("scene"),
         index: r.ordinal("index"),
         last: r.ordinal("last"),
       });
     case "rbm-frames":
-      return t("motions.issue.frames", {
+      return t("outcome.rbm.frames", {
         scene: r.ordinal("scene"),
         frames: r.number("frames"),
         min: r.number("min"),
       });
     case "rbm-frame-interval-short":
-      return t("motions.issue.frameIntervalShort", { ...timing(r), min: r.number("min") });
+      return t("outcome.rbm.frameIntervalShort", { ...timing(r), min: r.number("min") });
     case "rbm-frame-interval-long":
-      return t("motions.issue.frameIntervalLong", { ...timing(r), max: r.number("max") });
+      return t("outcome.rbm.frameIntervalLong", { ...timing(r), max: r.number("max") });
     case "rbm-torque":
     case "rbm-port": {
       const params = {
@@ -195,10 +197,10 @@ function fromRules(t: IssueTranslator, code: string, r: IssueValues): string | u
         value: r.number("value"),
         max: r.number("max"),
       };
-      return code === "rbm-torque" ? t("motions.issue.torque", params) : t("motions.issue.port", params);
+      return code === "rbm-torque" ? t("outcome.rbm.torque", params) : t("outcome.rbm.port", params);
     }
     case "rbm-image-range":
-      return t("motions.issue.imageRange", {
+      return t("outcome.rbm.imageRange", {
         what: subject(t, r),
         value: r.value("value"),
         max: r.number("max"),
@@ -211,21 +213,21 @@ function fromRules(t: IssueTranslator, code: string, r: IssueValues): string | u
 function fromWarnings(t: IssueTranslator, code: string, r: IssueValues): string | undefined {
   switch (code) {
     case "rbm-serial-format":
-      return t("motions.issue.serialFormat", { serial: r.text("serial") });
+      return t("outcome.rbm.serialFormat", { serial: r.text("serial") });
     case "rbm-serial-mismatch":
-      return t("motions.issue.serialMismatch", { serial: r.text("serial"), connected: r.text("connected") });
+      return t("outcome.rbm.serialMismatch", { serial: r.text("serial"), connected: r.text("connected") });
     case "rbm-header-constant":
       return headerConstant(t, r);
     case "rbm-huno-servo-count":
-      return t("motions.issue.hunoServoCount", { servos: r.number("servos"), huno: r.number("huno") });
+      return t("outcome.rbm.hunoServoCount", { servos: r.number("servos"), huno: r.number("huno") });
     case "rbm-many-frames":
-      return t("motions.issue.manyFrames", {
+      return t("outcome.rbm.manyFrames", {
         scene: r.ordinal("scene"),
         frames: r.number("frames"),
         max: r.number("max"),
       });
     case "rbm-long-scene":
-      return t("motions.issue.longScene", {
+      return t("outcome.rbm.longScene", {
         scene: r.ordinal("scene"),
         time: r.number("time"),
         max: r.number("max"),
@@ -239,11 +241,11 @@ function fromWarnings(t: IssueTranslator, code: string, r: IssueValues): string 
         max: r.number("max"),
       };
       return r.has("other")
-        ? t("motions.issue.unsafePositions", { ...place, other: r.number("other") })
-        : t("motions.issue.unsafePosition", place);
+        ? t("outcome.rbm.unsafePositions", { ...place, other: r.number("other") })
+        : t("outcome.rbm.unsafePosition", place);
     }
     case "rbm-scene-jump":
-      return t("motions.issue.sceneJump", {
+      return t("outcome.rbm.sceneJump", {
         scene: r.ordinal("scene"),
         servo: servoName(t, r.number("servo")),
         start: r.number("start"),
@@ -255,13 +257,37 @@ function fromWarnings(t: IssueTranslator, code: string, r: IssueValues): string 
   }
 }
 
+/** What the words of an issue come from: its code, its facts, and the protocol's English sentence. */
+export type RbmIssueFacts = Pick<RbmIssue, "code" | "message" | "values">;
+
 /**
  * An issue's sentence in `locale` from its code and values, or undefined when there is none (a code this does
  * not know, or values missing): then the English `issue.message` is shown, marked as English.
  */
-export function issueSentence(issue: RbmIssue, locale: Locale): string | undefined {
+export function rbmIssueSentence(issue: RbmIssueFacts, locale: Locale): string | undefined {
   if (issue.values === undefined) return undefined;
   const r = new IssueValues(issue.values);
-  const text = fromRules(translator(issueMessages, locale), issue.code, r);
+  const text = fromRules(translator(rbmIssueMessages, locale), issue.code, r);
   return r.complete ? text : undefined;
+}
+
+/** The issue's sentence and the language it is in: "en" for an English sentence kept in another language. */
+export interface RbmIssueWords {
+  text: string;
+  lang: Locale;
+}
+
+/**
+ * A motion file's problem in `locale`: in English the protocol's own sentence (`issue.message`); in Korean the
+ * catalogue's sentence with the issue's facts, or the English sentence (and `lang: "en"`) when it has none.
+ */
+export function rbmIssueWords(issue: RbmIssueFacts, locale: Locale): RbmIssueWords {
+  if (locale === "en") return { text: issue.message, lang: "en" };
+  const text = rbmIssueSentence(issue, locale);
+  return text === undefined ? { text: issue.message, lang: "en" } : { text, lang: locale };
+}
+
+/** A motion file's problem in `locale` (`rbmIssueWords`'s text). */
+export function rbmIssueText(issue: RbmIssueFacts, locale: Locale): string {
+  return rbmIssueWords(issue, locale).text;
 }

@@ -1,4 +1,4 @@
-import { defineMessages } from "../../../../i18n/catalogue.ts";
+import { defineMessages } from "../catalogue.ts";
 
 /**
  * The HUNO's joints by servo id (`jointName`). The English names are protocol/servo-limits.ts's

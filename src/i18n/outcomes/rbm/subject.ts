@@ -1,12 +1,11 @@
-import type { KeysWithoutParams } from "../../../../i18n/catalogue.ts";
-import type { RbmIssueValues } from "../../../../protocol/rbm-validate.ts";
-import { HUNO_JOINT_NAMES } from "../../../../protocol/servo-limits.ts";
-import { jointName } from "../../zeros/joints/joint-name.ts";
-import type { IssueTranslator, issueMessages } from "./messages.ts";
+import type { RbmIssueValues } from "../../../protocol/rbm-validate.ts";
+import type { KeysWithoutParams } from "../../catalogue.ts";
+import { jointOf } from "../../joint-names/joint-name.ts";
+import type { IssueTranslator, rbmIssueMessages } from "./messages.ts";
 
 /**
  * Reads an issue's `values` for its sentence, and remembers whether one the sentence needs was missing (or of
- * the wrong type): such a sentence is not said, the English one is (`issueSentence`).
+ * the wrong type): such a sentence is not said, the English one is (`rbmIssueSentence`).
  */
 export class IssueValues {
   complete = true;
@@ -46,44 +45,44 @@ export class IssueValues {
   }
 }
 
-type Key = KeysWithoutParams<typeof issueMessages>;
+type Key = KeysWithoutParams<typeof rbmIssueMessages>;
 
 /** The fields by their name in `RbmMotion` (protocol/rbm.ts), or a length field's ("nameLength"). */
 const FIELDS: Readonly<Record<string, Key>> = {
-  format: "motions.issue.field.format",
-  serialNumber: "motions.issue.field.serialNumber",
-  serialNumberLength: "motions.issue.field.serialNumberLength",
-  text1: "motions.issue.field.text1",
-  text2: "motions.issue.field.text2",
-  motionIndex: "motions.issue.field.motionIndex",
-  platform: "motions.issue.field.platform",
-  sceneCount: "motions.issue.field.sceneCount",
-  servoCount: "motions.issue.field.servoCount",
-  unknown10: "motions.issue.field.unknown10",
-  unknown12: "motions.issue.field.unknown12",
-  imageSize: "motions.issue.field.imageSize",
-  index: "motions.issue.field.index",
-  name: "motions.issue.field.name",
-  nameLength: "motions.issue.field.nameLength",
-  frames: "motions.issue.field.frames",
-  timeMs: "motions.issue.field.timeMs",
-  id: "motions.issue.field.id",
-  p: "motions.issue.field.p",
-  d: "motions.issue.field.d",
-  i: "motions.issue.field.i",
-  portEnable: "motions.issue.field.portEnable",
-  zero: "motions.issue.field.zero",
-  reserved: "motions.issue.field.reserved",
-  start: "motions.issue.field.start",
-  end: "motions.issue.field.end",
-  torque: "motions.issue.field.torque",
-  port: "motions.issue.field.port",
+  format: "outcome.rbm.field.format",
+  serialNumber: "outcome.rbm.field.serialNumber",
+  serialNumberLength: "outcome.rbm.field.serialNumberLength",
+  text1: "outcome.rbm.field.text1",
+  text2: "outcome.rbm.field.text2",
+  motionIndex: "outcome.rbm.field.motionIndex",
+  platform: "outcome.rbm.field.platform",
+  sceneCount: "outcome.rbm.field.sceneCount",
+  servoCount: "outcome.rbm.field.servoCount",
+  unknown10: "outcome.rbm.field.unknown10",
+  unknown12: "outcome.rbm.field.unknown12",
+  imageSize: "outcome.rbm.field.imageSize",
+  index: "outcome.rbm.field.index",
+  name: "outcome.rbm.field.name",
+  nameLength: "outcome.rbm.field.nameLength",
+  frames: "outcome.rbm.field.frames",
+  timeMs: "outcome.rbm.field.timeMs",
+  id: "outcome.rbm.field.id",
+  p: "outcome.rbm.field.p",
+  d: "outcome.rbm.field.d",
+  i: "outcome.rbm.field.i",
+  portEnable: "outcome.rbm.field.portEnable",
+  zero: "outcome.rbm.field.zero",
+  reserved: "outcome.rbm.field.reserved",
+  start: "outcome.rbm.field.start",
+  end: "outcome.rbm.field.end",
+  torque: "outcome.rbm.field.torque",
+  port: "outcome.rbm.field.port",
 };
 
 /** The motion's own name (no scene given): "the motion name", not a scene's "name". */
 const MOTION_FIELDS: Readonly<Record<string, Key>> = {
-  name: "motions.issue.field.motionName",
-  nameLength: "motions.issue.field.motionNameLength",
+  name: "outcome.rbm.field.motionName",
+  nameLength: "outcome.rbm.field.motionNameLength",
 };
 
 /** The field named by `values.field`, in words: "P gain" / "P 게인". */
@@ -99,9 +98,10 @@ export function fieldName(t: IssueTranslator, r: IssueValues): string {
 
 /** A servo by id, with its HUNO joint when it has one: "서보 2번(오른쪽 무릎)", "서보 20번". */
 export function servoName(t: IssueTranslator, id: number): string {
-  return HUNO_JOINT_NAMES[id] === undefined
-    ? t("motions.issue.servo", { id: String(id) })
-    : t("motions.issue.servoJoint", { id: String(id), joint: jointName(id, t.locale) });
+  const joint = jointOf(id, t.locale);
+  return joint === undefined
+    ? t("outcome.rbm.servo", { id: String(id) })
+    : t("outcome.rbm.servoJoint", { id: String(id), joint });
 }
 
 /**
@@ -114,13 +114,13 @@ export function subject(t: IssueTranslator, r: IssueValues): string {
   const servo = r.has("servo") ? servoName(t, r.number("servo")) : undefined;
   const record = r.has("record") ? r.ordinal("record") : undefined;
   if (scene !== undefined && servo !== undefined) {
-    return t("motions.issue.ofSceneServo", { scene, servo, field });
+    return t("outcome.rbm.ofSceneServo", { scene, servo, field });
   }
   if (scene !== undefined && record !== undefined) {
-    return t("motions.issue.ofSceneRecord", { scene, record, field });
+    return t("outcome.rbm.ofSceneRecord", { scene, record, field });
   }
-  if (scene !== undefined) return t("motions.issue.ofScene", { scene, field });
-  if (servo !== undefined) return t("motions.issue.ofServo", { servo, field });
-  if (record !== undefined) return t("motions.issue.ofRecord", { record, field });
+  if (scene !== undefined) return t("outcome.rbm.ofScene", { scene, field });
+  if (servo !== undefined) return t("outcome.rbm.ofServo", { servo, field });
+  if (record !== undefined) return t("outcome.rbm.ofRecord", { record, field });
   return field;
 }

@@ -5,27 +5,27 @@ import { type IssueValues, subject } from "./subject.ts";
 export function fromParser(t: IssueTranslator, code: string, r: IssueValues): string | undefined {
   switch (code) {
     case "rbm-not-text":
-      return t("motions.issue.notText");
+      return t("outcome.rbm.notText");
     case "rbm-too-large":
-      return t("motions.issue.tooLarge", {
+      return t("outcome.rbm.tooLarge", {
         characters: r.number("characters"),
         largest: r.number("largest"),
       });
     case "rbm-empty":
-      return t("motions.issue.empty");
+      return t("outcome.rbm.empty");
     case "rbm-not-motion":
-      return t("motions.issue.notMotion");
+      return t("outcome.rbm.notMotion");
     case "rbm-end":
-      return t("motions.issue.end", { ending: r.text("ending") });
+      return t("outcome.rbm.end", { ending: r.text("ending") });
     case "rbm-field-count":
       if (r.text("kind") === "header") {
-        return t("motions.issue.fieldCount.header", {
+        return t("outcome.rbm.fieldCount.header", {
           fields: r.number("fields"),
           header: r.number("header"),
         });
       }
       if (r.text("kind") !== "total") return undefined;
-      return t("motions.issue.fieldCount.total", {
+      return t("outcome.rbm.fieldCount.total", {
         fields: r.number("fields"),
         servos: r.number("servos"),
         scenes: r.number("scenes"),
@@ -34,11 +34,11 @@ export function fromParser(t: IssueTranslator, code: string, r: IssueValues): st
     case "rbm-field-too-long": {
       const kind = r.text("kind");
       const sizes = { what: subject(t, r), length: r.number("length"), max: r.number("max") };
-      if (kind === "text") return t("motions.issue.fieldTooLong.text", sizes);
-      return kind === "name" ? t("motions.issue.fieldTooLong.name", sizes) : undefined;
+      if (kind === "text") return t("outcome.rbm.fieldTooLong.text", sizes);
+      return kind === "name" ? t("outcome.rbm.fieldTooLong.name", sizes) : undefined;
     }
     case "rbm-length-mismatch":
-      return t("motions.issue.lengthMismatch", {
+      return t("outcome.rbm.lengthMismatch", {
         what: subject(t, r),
         text: r.text("text"),
         length: r.number("length"),
