@@ -164,11 +164,12 @@ const VIEWS: readonly [string, (page: Page) => Promise<void>][] = [
  */
 async function connectDemo(page: Page): Promise<void> {
   const demo = page.getByRole("button", { name: "Try the demo robot" });
-  const card = page.getByTestId("device-card");
-  await demo.or(card).first().waitFor();
-  if (await card.isVisible()) return;
+  // The top bar's Limp button is there on every view while a robot is connected, and only then.
+  const connected = page.locator("#limp-button");
+  await demo.or(connected).first().waitFor();
+  if (await connected.isVisible()) return;
   await demo.click();
-  await card.waitFor();
+  await connected.waitFor();
 }
 
 for (const scheme of ["light", "dark"] as const) {
