@@ -240,7 +240,7 @@ export async function restoreFromFile(ctx: AppContext, file: File): Promise<void
   }
   const parsed = parseZerosBackup(text);
   if (!parsed.ok) {
-    patchZeros(store, { fileNotice: refusal(file, text, parsed, t) });
+    patchZeros(store, { fileNotice: refusal(file, text, parsed, t.locale) });
     return;
   }
   const { backup } = parsed;
