@@ -226,7 +226,8 @@ export async function stopMotion(ctx: AppContext): Promise<void> {
   const shown = motionsOf(store.get()).run;
   if (!run || run.stopRequested || !shown) return;
   run.stopRequested = true;
-  const { locale } = store.get();
+  const then = store.get();
+  const { locale } = then;
   const t = translator(motionsMessages, locale);
   patchMotions(store, { run: { ...shown, stopping: true } });
   try {
@@ -235,9 +236,7 @@ export async function stopMotion(ctx: AppContext): Promise<void> {
       runNotice: noticeOf("ok", locale, [
         said(motionsMessages, "motions.run.stopped", {
           number: run.number,
-          name: inEveryLanguage(
-            (l) => offerFor({ ...store.get(), locale: l }, run.number)?.name ?? shown.name,
-          ),
+          name: inEveryLanguage((l) => offerFor({ ...then, locale: l }, run.number)?.name ?? shown.name),
         }),
       ]),
     });

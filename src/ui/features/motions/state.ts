@@ -1,7 +1,7 @@
 import { translator } from "../../../i18n/translate.ts";
 import type { RbmMotion } from "../../../protocol/rbm.ts";
 import type { RbmIssue } from "../../../protocol/rbm-validate.ts";
-import type { AppState, Notice } from "../../app-state.ts";
+import { type AppState, type Notice, runningWords } from "../../app-state.ts";
 import type { Store } from "../../store.ts";
 import type { ShelfState } from "../shelf/state.ts";
 import { motionsMessages } from "./messages.ts";
@@ -170,6 +170,7 @@ export function robotBusyReason(s: AppState): string | undefined {
   // A motion started elsewhere (the remote, the PF buttons) that the busy probe found playing counts too
   // (docs/protocol.md §3.6: until it ends the robot drops every request but 7).
   if (c.playing || m?.run || c.busy) return t("motions.busy.motion");
-  if (s.running.length > 0) return t("motions.busy.other", { tasks: s.running.join(", ") });
+  if (s.running.length > 0)
+    return t("motions.busy.other", { tasks: runningWords(s.running, s.locale).join(", ") });
   return undefined;
 }
