@@ -9,7 +9,6 @@ import {
 } from "../../../device/firmware-update.ts";
 import type { Locale } from "../../../i18n/locale.ts";
 import { firmwareFailureText, firmwareResultText } from "../../../i18n/outcomes/firmware/firmware-words.ts";
-import { translator } from "../../../i18n/translate.ts";
 import { declaredVersion } from "../../../protocol/firmware-marker.ts";
 import { MAX_HEX_TEXT_CHARS, parseIntelHex } from "../../../protocol/intel-hex.ts";
 import { type Notice, noticeOf } from "../../app-state.ts";
@@ -198,7 +197,6 @@ export async function startFlash(ctx: AppContext): Promise<void> {
   const file = f.file;
   if (!file || f.run?.step !== "confirming" || !mayWrite(f.run)) return;
   const { locale } = store.get();
-  const t = translator(firmwareMessages, locale);
   if (f.run.recovery) {
     await startRecovery(ctx);
     return;
@@ -215,7 +213,7 @@ export async function startFlash(ctx: AppContext): Promise<void> {
     const boot = demoSim
       ? (await import("../../../sim/sim-bootloader.ts")).BootloaderRbc.of(demoSim)
       : undefined;
-    const result = await session.run(t("firmware.running"), (client) =>
+    const result = await session.run(said(firmwareMessages, "firmware.running"), (client) =>
       client.updateFirmware(file.image, {
         signal: abort.signal,
         wireTimed: boot === undefined, // the demo robot's link has no baud pacing

@@ -149,7 +149,6 @@ export async function runMotionNow(ctx: AppContext, number: number): Promise<voi
   const { store, session } = ctx;
   const offer = offerFor(store.get(), number);
   if (!offer || robotBusyReason(store.get())) return;
-  const t = translator(motionsMessages, store.get().locale);
   const run: MotionRun = { number, stopRequested: false };
   const controller = motionsController(ctx);
   controller.run = run;
@@ -162,7 +161,7 @@ export async function runMotionNow(ctx: AppContext, number: number): Promise<voi
   });
   controller.ticker.ensure();
   try {
-    await session.run(t("motions.run.task", { number }), (client) =>
+    await session.run(said(motionsMessages, "motions.run.task", { number }), (client) =>
       client.runMotion(number, { expectedMs: offer.expectedMs }),
     );
     // After "Stop motion", stopMotion says how it ended.
@@ -228,10 +227,9 @@ export async function stopMotion(ctx: AppContext): Promise<void> {
   run.stopRequested = true;
   const then = store.get();
   const { locale } = then;
-  const t = translator(motionsMessages, locale);
   patchMotions(store, { run: { ...shown, stopping: true } });
   try {
-    await session.run(t("motions.run.stopTask"), (client) => client.stopMotion());
+    await session.run(said(motionsMessages, "motions.run.stopTask"), (client) => client.stopMotion());
     patchMotions(store, {
       runNotice: noticeOf("ok", locale, [
         said(motionsMessages, "motions.run.stopped", {
@@ -261,11 +259,12 @@ export async function playSound(ctx: AppContext, n: number): Promise<void> {
   const length = soundLengthMs(n);
   if (length === undefined || robotBusyReason(store.get())) return;
   const { locale } = store.get();
-  const t = translator(motionsMessages, locale);
   patchMotions(store, { soundNotice: undefined });
   motionsController(ctx).ticker.ensure();
   try {
-    const report = await session.run(t("motions.sound.task", { sound: n }), (client) => client.playSound(n));
+    const report = await session.run(said(motionsMessages, "motions.sound.task", { sound: n }), (client) =>
+      client.playSound(n),
+    );
     // A firmware that answers at once proves only that the request arrived (docs/protocol.md §9).
     const seconds = (ms: number) => inEveryLanguage((l) => formatSeconds(ms, l));
     patchMotions(store, {

@@ -9,7 +9,6 @@ import type { Locale } from "../../../i18n/locale.ts";
 import { uploadNoticeText } from "../../../i18n/outcomes/device.ts";
 import { robotErrorText } from "../../../i18n/outcomes/robot-error.ts";
 import { uploadCancelledEarlyText } from "../../../i18n/outcomes/upload-words.ts";
-import { translator } from "../../../i18n/translate.ts";
 import { ACTION_AREA_BYTES, MOTION_AREA_BYTES, NO_ERROR } from "../../../protocol/catalog.ts";
 import type { RbmMotion } from "../../../protocol/rbm.ts";
 import { type Notice, noticeOf } from "../../app-state.ts";
@@ -190,7 +189,6 @@ export async function uploadFailed(
   const { store, session } = ctx;
   const { area } = payload;
   const { locale } = store.get();
-  const t = translator(motionsMessages, locale);
   const resetNote: Said[] = didReset
     ? [
         said(
@@ -233,7 +231,7 @@ export async function uploadFailed(
   if (e instanceof RbcDisconnectedError || store.get().connection.phase !== "connected") return;
   // Show the memory as it is now.
   try {
-    const free = await session.run(t("motions.upload.readingFree"), (client) =>
+    const free = await session.run(said(motionsMessages, "motions.upload.readingFree"), (client) =>
       client.readAvailableMemory(area),
     );
     store.update((s) => ({
