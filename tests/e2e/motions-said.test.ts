@@ -42,6 +42,8 @@ const showTab = async (page: Page, tab: "files" | "run") => {
 describe("Motions and Firmware messages made before a language switch follow it", () => {
   it("a Run result, an upload result and a firmware file problem: Korean after the switch, English after the switch back", async () => {
     const { page, context } = await app.newPage({ options: FAST });
+    const pageErrors: string[] = [];
+    page.on("pageerror", (e) => pageErrors.push(String(e)));
     await openMotions(page, app.url);
 
     // A Run result: Basic posture, asked once, then run to its end.
@@ -58,7 +60,14 @@ describe("Motions and Firmware messages made before a language switch follow it"
     await page.getByTestId("upload-motion").click();
     await page.getByRole("button", { name: "Upload (experimental)" }).click();
     const uploadResult = page.getByTestId("motion-file").locator(".upload-in-place .live .notice p");
-    await uploadResult.filter({ hasText: /^Uploaded wave\.rbm/ }).waitFor();
+    await uploadResult
+      .filter({ hasText: /^Uploaded wave\.rbm/ })
+      .waitFor()
+      .catch(async (e: unknown) => {
+        throw new Error(
+          `${String(e)}\nupload card: ${squash(await page.getByTestId("motion-file").textContent())}\npage errors: ${pageErrors.join("; ")}`,
+        );
+      });
     const uploadEn = squash(await uploadResult.textContent());
     expect(uploadEn).toContain("Stored as motion 12 (key 1): Run takes this number.");
 
@@ -104,6 +113,7 @@ describe("Motions and Firmware messages made before a language switch follow it"
     await page.getByRole("link", { name: "Firmware" }).click();
     await problem.filter({ hasText: /not a firmware file/ }).waitFor();
     expect(squash(await problem.textContent())).toBe(problemEn);
+    expect(pageErrors).toEqual([]);
     await context.close();
   });
 });
