@@ -40,7 +40,9 @@ const showTab = async (page: Page, tab: "files" | "run") => {
 };
 
 describe("Motions and Firmware messages made before a language switch follow it", () => {
-  it("a Run result, an upload result and a firmware file problem: Korean after the switch, English after the switch back", async () => {
+  it("a Run result, an upload result and a firmware file problem: Korean after the switch, English after the switch back", {
+    timeout: 180_000,
+  }, async () => {
     const { page, context } = await app.newPage({ options: FAST });
     const pageErrors: string[] = [];
     page.on("pageerror", (e) => pageErrors.push(String(e)));
@@ -62,7 +64,8 @@ describe("Motions and Firmware messages made before a language switch follow it"
     const uploadResult = page.getByTestId("motion-file").locator(".upload-in-place .live .notice p");
     await uploadResult
       .filter({ hasText: /^Uploaded wave\.rbm/ })
-      .waitFor()
+      // The upload's 10 chunks at the paced link's speed; a loaded machine slows the page, not the robot's clock.
+      .waitFor({ timeout: 60_000 })
       .catch(async (e: unknown) => {
         throw new Error(
           `${String(e)}\nupload card: ${squash(await page.getByTestId("motion-file").textContent())}\npage errors: ${pageErrors.join("; ")}`,
