@@ -121,7 +121,14 @@ export class RbcBadReplyError extends RbcError {
 
 export class RbcCancelledError extends RbcError {
   override name = "RbcCancelledError";
-  constructor(message = codeText("cancelled", "en")) {
+  /**
+   * @param by What cancelled it, when that is known for certain (Stop's or Limp's own cancel of a waiting
+   *   download); undefined otherwise (an abort signal, a queued turn of an older epoch).
+   */
+  constructor(
+    message = codeText("cancelled", "en"),
+    readonly by?: "stop" | "limp",
+  ) {
     super("cancelled", message);
   }
 }

@@ -50,7 +50,7 @@ export async function runLimp(core: ClientCore): Promise<LimpResult> {
     throw new RbcCannotLimpError(SCENE_END_MS + c.timeouts.marginMs);
   }
   const sound = activity.sound;
-  c.failPending(new RbcCancelledError(cancelledByLimpText("en")));
+  c.failPending(new RbcCancelledError(cancelledByLimpText("en"), "limp"));
   return c.exclusive(async () => {
     if (c.mode === "direct") {
       activity.handDirect("limp");

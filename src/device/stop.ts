@@ -89,7 +89,8 @@ export async function runStop(core: ClientCore): Promise<StopActivityResult> {
     activity.uploadEnded(upload.abort);
   }
   // A download waits for the robot's acknowledgement of a chunk: end that wait now, as its Cancel would.
-  if (upload && mode === "download") c.failPending(new RbcCancelledError("Upload cancelled by Stop."));
+  if (upload && mode === "download")
+    c.failPending(new RbcCancelledError("Upload cancelled by Stop.", "stop"));
   if (doing.kind === "sound") {
     const endsInMs = Math.max(0, doing.startedAt + doing.expectedMs - c.clock.now());
     result.sound = { number: doing.sound, endsInMs, confirmed: await doing.ended };

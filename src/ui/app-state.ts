@@ -16,7 +16,7 @@ import type { SensorsState } from "./features/sensors/state.ts";
 import type { ServosState } from "./features/servos/state.ts";
 import type { ZerosState } from "./features/zeros/state.ts";
 import { initialZeros } from "./features/zeros/state.ts";
-import { type Said, wordsOf } from "./said.ts";
+import { type Said, wordOf, wordsOf } from "./said.ts";
 
 export type {
   ConnectionPhase,
@@ -73,6 +73,18 @@ export function noticeMore(n: Notice, locale: Locale): string | undefined {
   return n.more && n.more.length > 0 ? wordsOf(n.more, locale) : undefined;
 }
 
+/**
+ * The name of an operation under way ("Reading zeros"), kept as a message so the top bar and the busy
+ * sentences word it in the language of the moment. A plain string is a name already worded (features not yet
+ * converted).
+ */
+export type RunningLabel = string | Said;
+
+/** The names of the operations under way, in `locale`. */
+export function runningWords(running: readonly RunningLabel[], locale: Locale): string[] {
+  return running.map((label) => (typeof label === "string" ? label : wordOf(label, locale)));
+}
+
 export interface AppState {
   /**
    * The language the panel speaks (chosen at start from the saved choice or the browser's languages; the
@@ -87,8 +99,8 @@ export interface AppState {
   connection: ConnectionState;
   knownPorts: KnownPort[];
   showAllPorts: boolean;
-  /** Operations in progress, by label ("Reading zeros"). */
-  running: string[];
+  /** Operations in progress, by label ("Reading zeros"), worded when drawn (`runningWords`). */
+  running: RunningLabel[];
   device: DeviceInfoState;
   zeros: ZerosState;
   log: LogViewState;

@@ -3,7 +3,7 @@ import { render } from "lit-html";
 import type { Locale } from "../i18n/locale.ts";
 import { keepLanguage, loadLanguage } from "../i18n/split-catalogue.ts";
 import type { Clock } from "../shared/clock.ts";
-import { initialState } from "./app-state.ts";
+import { initialState, runningWords } from "./app-state.ts";
 import { answerBusyQueries, busySentence } from "./busy.ts";
 import type { AppContext } from "./context.ts";
 import type { DemoRobotOptions } from "./demo-robot.ts";
@@ -111,7 +111,9 @@ function startApp(root: HTMLElement, locale: Locale): void {
   // A reload (the update prompt's, or the browser's) or a closed tab would cut short what runs on the robot: an
   // upload would leave its download half done. The update prompt asks this before reloading; the browser asks
   // the person ("Leave site?") while something runs.
-  answerBusyQueries(() => busySentence(store.get().running, store.get().locale));
+  answerBusyQueries(() =>
+    busySentence(runningWords(store.get().running, store.get().locale), store.get().locale),
+  );
   window.addEventListener("beforeunload", (e) => {
     const state = store.get();
     // The Class view's robots run their own work (an upload, a Run) beside the top bar's robot.

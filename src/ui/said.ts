@@ -33,10 +33,17 @@ export function said<M extends Catalogue, K extends keyof M & string>(
   return { catalogue, key, facts: facts[0] as Readonly<Record<string, Fact>> | undefined };
 }
 
-/** Makes a text in every language (a date, a device error worded by its own catalogue). */
+/**
+ * A text in every language (a date, a device error worded by its own catalogue), each made when it is read:
+ * in the hosted build a language's words load only when that language is chosen (src/i18n/split-catalogue.ts),
+ * so a Korean text made while the panel spoke English would be English. `make` must give the same text for the
+ * same language whenever it is called (take its facts by value, not from the store).
+ */
 export function inEveryLanguage(make: (locale: Locale) => string): LocalText {
   const out: Partial<Record<Locale, string>> = {};
-  for (const locale of LOCALES) out[locale] = make(locale);
+  for (const locale of LOCALES) {
+    Object.defineProperty(out, locale, { get: () => make(locale), enumerable: true });
+  }
   return out as LocalText;
 }
 

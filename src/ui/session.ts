@@ -3,7 +3,13 @@ import type { SerialPortLike } from "../link/index.ts";
 import { type Clock, realClock } from "../shared/clock.ts";
 import type { ServoBus } from "../sim/sim-servos.ts";
 import type { SimulatedRbc } from "../sim/simulated-rbc.ts";
-import { type AppState, freshConnectionState, noticeOf } from "./app-state.ts";
+import {
+  type AppState,
+  freshConnectionState,
+  noticeOf,
+  type RunningLabel,
+  runningWords,
+} from "./app-state.ts";
 import type { AppContext } from "./context.ts";
 import type { DemoRobotOptions, KeptDemoRobot } from "./demo-robot.ts";
 import { busyChanged, probeAfterConnect, refreshKnownPorts } from "./features/connection/actions.ts";
@@ -17,7 +23,7 @@ import {
 import type { PacketLog } from "./features/log/packet-log.ts";
 import type { ShelfStorage } from "./features/shelf/shelf-store.ts";
 import { uiMessages } from "./messages.ts";
-import { said } from "./said.ts";
+import { inEveryLanguage, said } from "./said.ts";
 import { Scope } from "./scope.ts";
 import { choosePort, describePort, linkKindOf, webSerial } from "./serial-ports.ts";
 import type { Store } from "./store.ts";
@@ -285,7 +291,9 @@ export class Session {
       problem:
         interrupted.length > 0
           ? noticeOf("warning", this.store.get().locale, [
-              said(uiMessages, "session.disconnectedWhileRunning", { list: interrupted.join(", ") }),
+              said(uiMessages, "session.disconnectedWhileRunning", {
+                list: inEveryLanguage((l) => runningWords(interrupted, l).join(", ")),
+              }),
             ])
           : undefined,
       lostReason: undefined,
@@ -302,7 +310,7 @@ export class Session {
    * direct mode (after Limp or servo control the client is on the servo bus; limp servos stay limp).
    */
   async run<T>(
-    label: string,
+    label: RunningLabel,
     fn: (client: RbcClient) => Promise<T>,
     options: { packetMode?: boolean } = {},
   ): Promise<T> {

@@ -155,7 +155,11 @@ describe("Firmware view on the demo robot", () => {
       "Cancel now and the robot's firmware may be incomplete",
     );
     await page.getByTestId("flash-cancel").click();
-    const result = page.getByTestId("flash-result").getByText(/The firmware update was cancelled/);
+    // The notice's sentence (the updater's English sentence is its technical detail, one click away).
+    const result = page
+      .getByTestId("flash-result")
+      .locator("p")
+      .filter({ hasText: /The firmware update was cancelled/ });
     await result.waitFor({ timeout: 20_000 });
     expect(squash(await result.textContent())).toBe(
       "The firmware update was cancelled. The robot's firmware may now be incomplete, and the robot may not work until an update succeeds. The bootloader is never overwritten: switch the robot off and on and run the update again.",

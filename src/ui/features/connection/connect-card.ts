@@ -1,5 +1,6 @@
 import { html, nothing, type TemplateResult } from "lit-html";
 import { translator } from "../../../i18n/translate.ts";
+import { runningWords } from "../../app-state.ts";
 import { lazyPart } from "../../lazy-part.ts";
 import { hrefFor } from "../../router.ts";
 import { describePort, linkKindOf } from "../../serial-ports.ts";
@@ -71,7 +72,7 @@ function lostNotice(c: ConnectionState, t: ConnectionTranslator): TemplateResult
       <p><strong>${lost}</strong> ${english ? c.lostReason : nothing}</p>
       ${
         c.interrupted.length > 0
-          ? html`<p>${t("connection.didNotFinish", { list: c.interrupted.join(", ") })}</p>`
+          ? html`<p>${t("connection.didNotFinish", { list: runningWords(c.interrupted, t.locale).join(", ") })}</p>`
           : nothing
       }
       <p>${t("connection.checkCable")}</p>

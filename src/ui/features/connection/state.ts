@@ -1,5 +1,5 @@
 import type { ClientMode, ClientState, LinkKind, SubscriptionKind } from "../../../device/index.ts";
-import type { Notice } from "../../app-state.ts";
+import type { Notice, RunningLabel } from "../../app-state.ts";
 import type { PortInfo } from "../../serial-ports.ts";
 
 /** The connection's part of the app state: which robot, in which phase, and what its client reports. */
@@ -51,7 +51,7 @@ export interface ConnectionState {
   /** Why the link was lost (cable pulled, …), shown on the disconnected card. */
   lostReason?: string;
   /** Operations that were running when the link was lost and so did not finish. */
-  interrupted: string[];
+  interrupted: RunningLabel[];
   /** Why the last connect attempt failed. */
   problem?: Notice;
   /** Open the "Can't find your robot?" help (after a cancelled chooser). */

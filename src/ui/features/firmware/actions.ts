@@ -9,14 +9,13 @@ import {
 } from "../../../device/firmware-update.ts";
 import type { Locale } from "../../../i18n/locale.ts";
 import { firmwareFailureText, firmwareResultText } from "../../../i18n/outcomes/firmware/firmware-words.ts";
-import { translator } from "../../../i18n/translate.ts";
 import { declaredVersion } from "../../../protocol/firmware-marker.ts";
 import { MAX_HEX_TEXT_CHARS, parseIntelHex } from "../../../protocol/intel-hex.ts";
 import { type Notice, noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { errorNotice, technicalDetail } from "../../error-text.ts";
 import { focusSoon } from "../../focus.ts";
-import { said } from "../../said.ts";
+import { inEveryLanguage, type Said, said, saidText } from "../../said.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
 import { choosePort, webSerial } from "../../serial-ports.ts";
 import { hexProblem, tooLargeProblem } from "./file-problem.ts";
@@ -198,7 +197,6 @@ export async function startFlash(ctx: AppContext): Promise<void> {
   const file = f.file;
   if (!file || f.run?.step !== "confirming" || !mayWrite(f.run)) return;
   const { locale } = store.get();
-  const t = translator(firmwareMessages, locale);
   if (f.run.recovery) {
     await startRecovery(ctx);
     return;
@@ -215,7 +213,7 @@ export async function startFlash(ctx: AppContext): Promise<void> {
     const boot = demoSim
       ? (await import("../../../sim/sim-bootloader.ts")).BootloaderRbc.of(demoSim)
       : undefined;
-    const result = await session.run(t("firmware.running"), (client) =>
+    const result = await session.run(said(firmwareMessages, "firmware.running"), (client) =>
       client.updateFirmware(file.image, {
         signal: abort.signal,
         wireTimed: boot === undefined, // the demo robot's link has no baud pacing
@@ -226,7 +224,7 @@ export async function startFlash(ctx: AppContext): Promise<void> {
         },
       }),
     );
-    finish(ctx, `${firmwareResultText(result, before, locale)} ${t("firmware.restarted")}`, result);
+    finish(ctx, [resultSaid(result, before), said(firmwareMessages, "firmware.restarted")], result);
   } catch (e) {
     patchFirmware(store, {
       run: undefined,
@@ -241,10 +239,15 @@ export async function startFlash(ctx: AppContext): Promise<void> {
   }
 }
 
-/** The update succeeded: `text` says so, in the language of the moment it started. */
-function finish(ctx: AppContext, text: string, result: FirmwareUpdateResult): void {
+/** What the update did (the outcome catalogue's words), as a message worded when drawn. */
+function resultSaid(result: FirmwareUpdateResult, before: Parameters<typeof firmwareResultText>[1]): Said {
+  return saidText(inEveryLanguage((l) => firmwareResultText(result, before, l)));
+}
+
+/** The update succeeded: `sentences` say so (worded when drawn, so a language switch rewords them). */
+function finish(ctx: AppContext, sentences: readonly Said[], result: FirmwareUpdateResult): void {
   const { store } = ctx;
-  patchFirmware(store, { run: undefined, result: { tone: "ok", text } });
+  patchFirmware(store, { run: undefined, result: noticeOf("ok", store.get().locale, sentences) });
   // The version the robot itself just reported.
   if (store.get().connection.phase === "connected") {
     store.update((s) => ({ connection: { ...s.connection, firmware: result.firmware } }));
@@ -274,7 +277,6 @@ export async function startRecovery(ctx: AppContext): Promise<void> {
   const serial = webSerial();
   if (!file || !serial || (f.run && !mayWrite(f.run))) return;
   const { locale } = store.get();
-  const t = translator(firmwareMessages, locale);
   if (store.get().connection.phase !== "disconnected") {
     patchFirmware(store, {
       run: undefined,
@@ -308,10 +310,10 @@ export async function startRecovery(ctx: AppContext): Promise<void> {
     const result = await updateFirmware(transportFirmwareIo(transport), file.image, options);
     patchFirmware(store, {
       run: undefined,
-      result: {
-        tone: "ok",
-        text: `${firmwareResultText(result, undefined, locale)} ${t("firmware.connectNow")}`,
-      },
+      result: noticeOf("ok", locale, [
+        resultSaid(result, undefined),
+        said(firmwareMessages, "firmware.connectNow"),
+      ]),
     });
   } catch (e) {
     patchFirmware(store, { run: undefined, result: failureNotice(e, locale) });
@@ -328,11 +330,10 @@ export async function startRecovery(ctx: AppContext): Promise<void> {
  * warning). In Korean the device's English sentence is the technical detail.
  */
 function failureNotice(e: unknown, locale: Locale): Notice {
-  const t = translator(firmwareMessages, locale);
   if (!(e instanceof FirmwareUpdateError))
     return errorNotice(said(firmwareMessages, "firmware.failed"), e, locale);
   const tone = e.holds === "previous-firmware" ? "warning" : "danger";
-  const what = firmwareFailureText(e, locale);
-  const text = e.failure === "cancelled" ? what : `${t("firmware.failed")} ${what}`;
-  return locale === "en" ? { tone, text } : { tone, text, detail: technicalDetail(e) };
+  const what = saidText(inEveryLanguage((l) => firmwareFailureText(e, l)));
+  const sentences = e.failure === "cancelled" ? [what] : [said(firmwareMessages, "firmware.failed"), what];
+  return noticeOf(tone, locale, sentences, technicalDetail(e));
 }

@@ -4,8 +4,9 @@ import { memoryFootprint } from "../../../protocol/catalog.ts";
 import { motionImage } from "../../../protocol/motion-image.ts";
 import { motionDurationMs, RbmError, readRbm } from "../../../protocol/rbm.ts";
 import { type RbmValidation, validateRbm } from "../../../protocol/rbm-validate.ts";
-import type { AppState } from "../../app-state.ts";
+import { type AppState, noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
+import { said } from "../../said.ts";
 import type { Store } from "../../store.ts";
 import { FILE_CHECKS } from "./controllers.ts";
 import { motionsMessages } from "./messages.ts";
@@ -98,7 +99,6 @@ export function addMotionTexts(
 ): void {
   if (opened.length === 0) return;
   const { locale } = store.get();
-  const t = translator(motionsMessages, locale);
   const files = motionFilesOf(store.get());
   const added = opened.map((o, i) => {
     const id = files.nextId + i;
@@ -121,13 +121,11 @@ export function addMotionTexts(
     notice:
       added.length === 1
         ? undefined
-        : {
-            tone: bad > 0 ? "warning" : "info",
-            text:
-              bad > 0
-                ? t("motions.files.openedBad", { files: added.length, bad })
-                : t("motions.files.opened", { files: added.length }),
-          },
+        : noticeOf(bad > 0 ? "warning" : "info", locale, [
+            bad > 0
+              ? said(motionsMessages, "motions.files.openedBad", { files: added.length, bad })
+              : said(motionsMessages, "motions.files.opened", { files: added.length }),
+          ]),
   });
 }
 

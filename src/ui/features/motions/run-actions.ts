@@ -13,12 +13,12 @@ import {
 } from "../../../protocol/catalog.ts";
 import { type AppState, type Notice, noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
-import { errorMessage, errorNotice, technicalDetail } from "../../error-text.ts";
+import { errorNotice, errorSaid, technicalDetail } from "../../error-text.ts";
 import { focusSoon } from "../../focus.ts";
-import { inEveryLanguage, said } from "../../said.ts";
+import { inEveryLanguage, type LocalText, said } from "../../said.ts";
 import { remoteKeyWords } from "../shelf/shelf-words.ts";
 import { type MotionRun, motionsController } from "./controllers.ts";
-import { type MotionsTranslator, motionsMessages } from "./messages.ts";
+import { motionsMessages } from "./messages.ts";
 import { formatSeconds } from "./plot-data.ts";
 import { type BookEntry, motionNumberOf } from "./slot-book.ts";
 import { motionsOf, patchMotions, robotBusyReason } from "./state.ts";
@@ -133,18 +133,27 @@ export function cancelMovement(ctx: AppContext): void {
   patchMotions(ctx.store, { confirmMove: undefined });
 }
 
-/** The motion in a sentence: "Motion 7 (Basic posture) finished." */
-const named = (offer: OfferedMotion) => ({ number: offer.number, name: offer.name });
+/**
+ * The motion's facts for a sentence ("Motion 7 (Basic posture) finished."): its name in every language (a
+ * built-in's name is translated; a download's is the name it was uploaded with), so the sentence follows a
+ * language switch.
+ */
+function named(s: AppState, offer: OfferedMotion): { number: number; name: LocalText } {
+  return {
+    number: offer.number,
+    name: inEveryLanguage((locale) => offerFor({ ...s, locale }, offer.number)?.name ?? offer.name),
+  };
+}
 
 export async function runMotionNow(ctx: AppContext, number: number): Promise<void> {
   const { store, session } = ctx;
   const offer = offerFor(store.get(), number);
   if (!offer || robotBusyReason(store.get())) return;
-  const t = translator(motionsMessages, store.get().locale);
   const run: MotionRun = { number, stopRequested: false };
   const controller = motionsController(ctx);
   controller.run = run;
   const firstPosture = number === BASIC_POSTURE_MOTION && !store.get().connection.basicPostureConfirmed;
+  const facts = named(store.get(), offer);
   patchMotions(store, {
     run: { number, name: offer.name, expectedMs: offer.expectedMs, startedAt: session.clock.now() },
     runNotice: undefined,
@@ -152,23 +161,21 @@ export async function runMotionNow(ctx: AppContext, number: number): Promise<voi
   });
   controller.ticker.ensure();
   try {
-    await session.run(t("motions.run.task", { number }), (client) =>
+    await session.run(said(motionsMessages, "motions.run.task", { number }), (client) =>
       client.runMotion(number, { expectedMs: offer.expectedMs }),
     );
     // After "Stop motion", stopMotion says how it ended.
     if (!run.stopRequested) {
       patchMotions(store, {
-        runNotice: {
-          tone: "ok",
-          text: [t("motions.run.finished", named(offer)), firstPosture ? t("motions.run.nowAcceptsAll") : ""]
-            .filter((x) => x)
-            .join(" "),
-        },
+        runNotice: noticeOf("ok", store.get().locale, [
+          said(motionsMessages, "motions.run.finished", facts),
+          ...(firstPosture ? [said(motionsMessages, "motions.run.nowAcceptsAll")] : []),
+        ]),
       });
     }
   } catch (e) {
     if (run.stopRequested) return;
-    patchMotions(store, { runNotice: runFailure(t, offer, e) });
+    patchMotions(store, { runNotice: runFailure(store.get().locale, offer, facts, e) });
   } finally {
     if (!run.stopRequested) {
       patchMotions(store, { run: undefined });
@@ -177,25 +184,35 @@ export async function runMotionNow(ctx: AppContext, number: number): Promise<voi
   }
 }
 
-function runFailure(t: MotionsTranslator, offer: OfferedMotion, e: unknown): Notice {
+function runFailure(
+  locale: Locale,
+  offer: OfferedMotion,
+  facts: ReturnType<typeof named>,
+  e: unknown,
+): Notice {
+  const say = (key: RunFailureKey) => said(motionsMessages, key, facts);
   if (e instanceof RbcError && e.code === "motion-ignored") {
-    return {
-      tone: "warning",
-      text: `${t("motions.run.postureGuidance")} ${t("motions.run.ignored", named(offer))}`,
-      detail: technicalDetail(e),
-    };
+    return noticeOf(
+      "warning",
+      locale,
+      [said(motionsMessages, "motions.run.postureGuidance"), say("motions.run.ignored")],
+      technicalDetail(e),
+    );
   }
   if (e instanceof RbcError && e.code === "cancelled") {
-    return {
-      tone: "warning",
-      text: `${t("motions.run.notFinished", named(offer))} ${errorMessage(e, t.locale)}`,
-    };
+    return noticeOf("warning", locale, [say("motions.run.notFinished"), errorSaid(e)]);
   }
   if (e instanceof RbcError && e.code === "timeout" && offer.expectedMs === undefined) {
-    return { tone: "danger", text: t("motions.run.noEnd", named(offer)), detail: technicalDetail(e) };
+    return noticeOf("danger", locale, [say("motions.run.noEnd")], technicalDetail(e));
   }
-  return errorNotice(t("motions.run.failed", named(offer)), e, t.locale);
+  return errorNotice(say("motions.run.failed"), e, locale);
 }
+
+type RunFailureKey =
+  | "motions.run.ignored"
+  | "motions.run.notFinished"
+  | "motions.run.noEnd"
+  | "motions.run.failed";
 
 /**
  * "Stop motion": the client sends 7, which the RBC obeys at the end of the current scene (docs/protocol.md §3.6). It
@@ -208,19 +225,26 @@ export async function stopMotion(ctx: AppContext): Promise<void> {
   const shown = motionsOf(store.get()).run;
   if (!run || run.stopRequested || !shown) return;
   run.stopRequested = true;
-  const { locale } = store.get();
-  const t = translator(motionsMessages, locale);
+  const then = store.get();
+  const { locale } = then;
   patchMotions(store, { run: { ...shown, stopping: true } });
   try {
-    await session.run(t("motions.run.stopTask"), (client) => client.stopMotion());
+    await session.run(said(motionsMessages, "motions.run.stopTask"), (client) => client.stopMotion());
     patchMotions(store, {
-      runNotice: { tone: "ok", text: t("motions.run.stopped", { number: run.number, name: shown.name }) },
+      runNotice: noticeOf("ok", locale, [
+        said(motionsMessages, "motions.run.stopped", {
+          number: run.number,
+          name: inEveryLanguage((l) => offerFor({ ...then, locale: l }, run.number)?.name ?? shown.name),
+        }),
+      ]),
     });
   } catch (e) {
     patchMotions(store, {
       runNotice:
         e instanceof RbcError && e.code === "cancelled"
-          ? { tone: "warning", text: t("motions.run.endedByStop", { number: run.number }) }
+          ? noticeOf("warning", locale, [
+              said(motionsMessages, "motions.run.endedByStop", { number: run.number }),
+            ])
           : errorNotice(said(motionsMessages, "motions.run.stopFailed"), e, locale),
     });
   } finally {
@@ -235,11 +259,12 @@ export async function playSound(ctx: AppContext, n: number): Promise<void> {
   const length = soundLengthMs(n);
   if (length === undefined || robotBusyReason(store.get())) return;
   const { locale } = store.get();
-  const t = translator(motionsMessages, locale);
   patchMotions(store, { soundNotice: undefined });
   motionsController(ctx).ticker.ensure();
   try {
-    const report = await session.run(t("motions.sound.task", { sound: n }), (client) => client.playSound(n));
+    const report = await session.run(said(motionsMessages, "motions.sound.task", { sound: n }), (client) =>
+      client.playSound(n),
+    );
     // A firmware that answers at once proves only that the request arrived (docs/protocol.md §9).
     const seconds = (ms: number) => inEveryLanguage((l) => formatSeconds(ms, l));
     patchMotions(store, {
@@ -250,16 +275,15 @@ export async function playSound(ctx: AppContext, n: number): Promise<void> {
               length: seconds(report.expectedMs),
             }),
           ])
-        : {
-            tone: "ok",
-            text: t("motions.sound.played", { sound: n, time: formatSeconds(length, locale) }),
-          },
+        : noticeOf("ok", locale, [
+            said(motionsMessages, "motions.sound.played", { sound: n, time: seconds(length) }),
+          ]),
     });
   } catch (e) {
     patchMotions(store, {
       soundNotice:
         e instanceof RbcError && e.code === "cancelled"
-          ? { tone: "warning", text: t("motions.sound.cancelled", { sound: n }) }
+          ? noticeOf("warning", locale, [said(motionsMessages, "motions.sound.cancelled", { sound: n })])
           : errorNotice(said(motionsMessages, "motions.sound.failed", { sound: n }), e, locale),
     });
   }

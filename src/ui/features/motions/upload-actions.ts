@@ -9,6 +9,7 @@ import { RbmError, type RbmMotion } from "../../../protocol/rbm.ts";
 import { validateRbm } from "../../../protocol/rbm-validate.ts";
 import type { AppContext } from "../../context.ts";
 import { focusSoon } from "../../focus.ts";
+import { said } from "../../said.ts";
 import { motionsController } from "./controllers.ts";
 import { checkEntry, checkedEntry, entryFacts } from "./files.ts";
 import { motionsMessages } from "./messages.ts";
@@ -153,7 +154,6 @@ export async function startUpload(ctx: AppContext, target: UploadTarget): Promis
   const payload = uploadPayload(ctx, target);
   if ("refused" in payload || robotBusyReason(s)) return undefined;
   const { area, bytes, fileName } = payload;
-  const t = translator(motionsMessages, s.locale);
   const reset = area === "motion" ? motionsOf(s).resetMotionFirst : motionsOf(s).resetActionFirst;
   const real = s.connection.robot?.kind !== "demo";
   const abort = new AbortController();
@@ -175,7 +175,7 @@ export async function startUpload(ctx: AppContext, target: UploadTarget): Promis
   });
   let result: UploadResult;
   try {
-    result = await session.run(t("motions.upload.task", { file: fileName }), (client) =>
+    result = await session.run(said(motionsMessages, "motions.upload.task", { file: fileName }), (client) =>
       sendUpload(client, payload, {
         resetFirst: reset,
         onReset: () => {

@@ -9,13 +9,12 @@ import type { Locale } from "../../../i18n/locale.ts";
 import { uploadNoticeText } from "../../../i18n/outcomes/device.ts";
 import { robotErrorText } from "../../../i18n/outcomes/robot-error.ts";
 import { uploadCancelledEarlyText } from "../../../i18n/outcomes/upload-words.ts";
-import { translator } from "../../../i18n/translate.ts";
 import { ACTION_AREA_BYTES, MOTION_AREA_BYTES, NO_ERROR } from "../../../protocol/catalog.ts";
 import type { RbmMotion } from "../../../protocol/rbm.ts";
-import type { Notice } from "../../app-state.ts";
+import { type Notice, noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
-import { errorMessage, errorNotice, technicalDetail } from "../../error-text.ts";
-import { said } from "../../said.ts";
+import { errorSaid, technicalDetail } from "../../error-text.ts";
+import { inEveryLanguage, type Said, said, saidText } from "../../said.ts";
 import { recordShelf } from "../shelf/shelf-actions.ts";
 import { storedSentence } from "../shelf/shelf-words.ts";
 import { motionsMessages } from "./messages.ts";
@@ -32,8 +31,8 @@ import { motionsOf, patchMotions } from "./state.ts";
 import { formatRate } from "./upload-rate.ts";
 
 /**
- * How an upload ended, in sentences (the panel's language when the upload started): what was sent, where it
- * went, what the robot's memory says now.
+ * How an upload ended, kept as messages and worded when drawn (so a language switch rewords it): what was
+ * sent, where it went, what the robot's memory says now.
  */
 
 export const bookKey = (area: "motion" | "action") => (area === "motion" ? "motionBook" : "actionBook");
@@ -50,13 +49,18 @@ export interface Payload {
   durationMs?: number;
 }
 
-/** The error code the robot reported after an upload, in words. */
-function errorCodeWords(code: number | undefined, locale: Locale): string {
-  const t = translator(motionsMessages, locale);
-  if (code === undefined) return t("motions.upload.errorNotRead");
-  if (code === NO_ERROR) return t("motions.upload.noError");
-  return t("motions.upload.errorCode", { text: robotErrorText(code, locale), code: String(code) });
+/** The error code the robot reported after an upload, as a message. */
+function errorCodeSaid(code: number | undefined): Said {
+  if (code === undefined) return said(motionsMessages, "motions.upload.errorNotRead");
+  if (code === NO_ERROR) return said(motionsMessages, "motions.upload.noError");
+  return said(motionsMessages, "motions.upload.errorCode", {
+    text: inEveryLanguage((locale) => robotErrorText(code, locale)),
+    code: String(code),
+  });
 }
+
+/** A sentence worded elsewhere in each language (by a function of the locale), as a message. */
+const wordedBy = (make: (locale: Locale) => string): Said => saidText(inEveryLanguage(make));
 
 /**
  * A completed upload: its slot (known when the robot's memory was empty or reset before it, docs/protocol.md
@@ -72,7 +76,6 @@ export async function uploadSucceeded(
   const { store } = ctx;
   const { area } = payload;
   const { locale } = store.get();
-  const t = translator(motionsMessages, locale);
   const m = motionsOf(store.get());
   const sendingSince = m.upload?.sendingSince;
   const lastSample = m.upload?.samples.at(-1);
@@ -99,42 +102,40 @@ export async function uploadSucceeded(
           footprint: result.footprint,
         })
       : Promise.resolve(undefined);
-  const where =
+  const where: Said[] =
     area === "action"
       ? entry?.slot !== undefined
-        ? t("motions.upload.isAction", { slot: entry.slot })
-        : ""
+        ? [said(motionsMessages, "motions.upload.isAction", { slot: entry.slot })]
+        : []
       : number !== undefined
-        ? storedSentence(number, locale)
-        : t("motions.upload.numberUnknown");
+        ? [wordedBy((l) => storedSentence(number, l))]
+        : [said(motionsMessages, "motions.upload.numberUnknown")];
   const free =
     result.freeAfter === undefined
-      ? area === "motion"
-        ? t("motions.upload.freeNotReadMotion")
-        : t("motions.upload.freeNotReadAction")
-      : t(area === "motion" ? "motions.upload.freeMotion" : "motions.upload.freeAction", {
+      ? said(
+          motionsMessages,
+          area === "motion" ? "motions.upload.freeNotReadMotion" : "motions.upload.freeNotReadAction",
+        )
+      : said(motionsMessages, area === "motion" ? "motions.upload.freeMotion" : "motions.upload.freeAction", {
           free: result.freeAfter,
           size: areaBytes(area),
           before: result.freeBefore,
           footprint: result.footprint,
         });
-  const sentences = [
-    t("motions.upload.done", {
+  const sentences: Said[] = [
+    said(motionsMessages, "motions.upload.done", {
       file: payload.fileName,
       bytes: result.total,
       chunks: result.chunks,
-      time: formatSeconds(sendMs, locale),
-      rate: formatRate(rate, locale),
+      time: inEveryLanguage((l) => formatSeconds(sendMs, l)),
+      rate: inEveryLanguage((l) => formatRate(rate, l)),
     }),
-    where,
+    ...where,
     free,
-    t("motions.upload.errorAfter", { words: errorCodeWords(result.errorCode, locale) }),
+    said(motionsMessages, "motions.upload.errorAfter", { words: errorCodeSaid(result.errorCode) }),
   ];
-  if (real && area === "motion") sentences.push(uploadNoticeText("holdAdvice", t.locale));
-  const notice: Notice = {
-    tone: result.errorCode === NO_ERROR ? "ok" : "warning",
-    text: sentences.filter((x) => x).join(" "),
-  };
+  if (real && area === "motion") sentences.push(wordedBy((l) => uploadNoticeText("holdAdvice", l)));
+  const notice: Notice = noticeOf(result.errorCode === NO_ERROR ? "ok" : "warning", locale, sentences);
   store.update((s) => ({
     device: {
       ...s.device,
@@ -157,11 +158,26 @@ export async function uploadSucceeded(
   if (notRecorded) {
     patchMotions(store, (now) =>
       now.uploadResult === notice
-        ? { uploadResult: { ...notice, tone: "warning", text: `${notice.text} ${notRecorded}` } }
+        ? {
+            // The shelf words its own failure once (not kept as a message: see the report in issue 21).
+            uploadResult: noticeOf("warning", locale, [
+              ...sentences,
+              saidText(inEveryLanguage(() => notRecorded)),
+            ]),
+          }
         : {},
     );
   }
   return entry;
+}
+
+/**
+ * "Upload cancelled before any byte was sent", saying "by Stop" only when the device's cancel says Stop made it
+ * (the error's `by`, set by Stop's own cancel of the waiting download; never read from its message).
+ */
+export function cancelledEarlySaid(e: RbcCancelledError): Said {
+  const byStop = e.by === "stop";
+  return wordedBy((l) => uploadCancelledEarlyText(byStop, l));
 }
 
 export async function uploadFailed(
@@ -173,36 +189,38 @@ export async function uploadFailed(
   const { store, session } = ctx;
   const { area } = payload;
   const { locale } = store.get();
-  const t = translator(motionsMessages, locale);
-  const resetNote = didReset
-    ? ` ${area === "motion" ? t("motions.upload.resetForgotMotion") : t("motions.upload.resetForgotAction")}`
-    : "";
+  const resetNote: Said[] = didReset
+    ? [
+        said(
+          motionsMessages,
+          area === "motion" ? "motions.upload.resetForgotMotion" : "motions.upload.resetForgotAction",
+        ),
+      ]
+    : [];
   let notice: Notice;
   let outcome: string | undefined;
   if (e instanceof RbcUploadError) {
     outcome = e.outcome;
-    notice = {
-      tone: e.code === "cancelled" ? "warning" : "danger",
-      text: `${errorMessage(e, locale)}${resetNote}`,
-      detail: technicalDetail(e),
-    };
+    notice = noticeOf(
+      e.code === "cancelled" ? "warning" : "danger",
+      locale,
+      [errorSaid(e), ...resetNote],
+      technicalDetail(e),
+    );
   } else if (e instanceof RbcRejectedError) {
     outcome = "nothing-recorded";
-    notice = {
-      tone: "danger",
-      text: `${t("motions.upload.refused")} ${errorMessage(e, locale)}${resetNote}`,
-      detail: technicalDetail(e),
-    };
+    notice = noticeOf(
+      "danger",
+      locale,
+      [said(motionsMessages, "motions.upload.refused"), errorSaid(e), ...resetNote],
+      technicalDetail(e),
+    );
   } else if (e instanceof RbcCancelledError) {
     outcome = "nothing-recorded";
-    const byStop = e.message.includes("by Stop");
-    notice = {
-      tone: "warning",
-      text: `${uploadCancelledEarlyText(byStop, locale)}${resetNote}`,
-    };
+    notice = noticeOf("warning", locale, [cancelledEarlySaid(e), ...resetNote]);
   } else {
-    notice = errorNotice(said(motionsMessages, "motions.upload.failed"), e, locale);
-    if (resetNote) notice.text += resetNote;
+    const lead = said(motionsMessages, "motions.upload.failed");
+    notice = noticeOf("danger", locale, [lead, errorSaid(e), ...resetNote], technicalDetail(e));
   }
   patchMotions(store, (m) => ({
     upload: undefined,
@@ -213,7 +231,7 @@ export async function uploadFailed(
   if (e instanceof RbcDisconnectedError || store.get().connection.phase !== "connected") return;
   // Show the memory as it is now.
   try {
-    const free = await session.run(t("motions.upload.readingFree"), (client) =>
+    const free = await session.run(said(motionsMessages, "motions.upload.readingFree"), (client) =>
       client.readAvailableMemory(area),
     );
     store.update((s) => ({

@@ -62,10 +62,9 @@ export async function readZerosFromRobot(ctx: AppContext): Promise<void> {
   const { session, store } = ctx;
   const { zeros: z, locale } = store.get();
   if (z.busy) return;
-  const t = translator(zerosMessages, locale);
   patchZeros(store, { busy: "reading", result: undefined, confirming: false });
   try {
-    const zeros = await session.run(t("zeros.runReading"), (client) => client.readZeros());
+    const zeros = await session.run(said(zerosMessages, "zeros.runReading"), (client) => client.readZeros());
     patchZeros(store, {
       busy: undefined,
       stored: zeros,
@@ -154,11 +153,10 @@ export async function backUpZeros(ctx: AppContext): Promise<void> {
   const { session, store } = ctx;
   const { zeros: before, locale } = store.get();
   if (before.busy) return;
-  const t = translator(zerosMessages, locale);
   patchZeros(store, { busy: "backing-up", confirming: false, fileNotice: undefined });
   let zeros: number[];
   try {
-    zeros = await session.run(t("zeros.runBackingUp"), (client) => client.readZeros());
+    zeros = await session.run(said(zerosMessages, "zeros.runBackingUp"), (client) => client.readZeros());
   } catch (e) {
     patchZeros(store, {
       busy: undefined,
@@ -240,7 +238,7 @@ export async function restoreFromFile(ctx: AppContext, file: File): Promise<void
   }
   const parsed = parseZerosBackup(text);
   if (!parsed.ok) {
-    patchZeros(store, { fileNotice: refusal(file, text, parsed, t) });
+    patchZeros(store, { fileNotice: refusal(file, text, parsed, t.locale) });
     return;
   }
   const { backup } = parsed;
@@ -316,7 +314,6 @@ export async function writeZerosToRobot(ctx: AppContext): Promise<void> {
   const state = store.get();
   if (state.zeros.busy) return;
   const locale: Locale = state.locale;
-  const t = translator(zerosMessages, locale);
   const table = draftTable(checkDraft(state.zeros.draft, locale));
   if (!table) {
     patchZeros(store, {
@@ -336,7 +333,7 @@ export async function writeZerosToRobot(ctx: AppContext): Promise<void> {
     // The device's zero-write policy: check, read the current zeros, save them (here: kept in this browser and
     // saved as a file), then write, read back and verify. The robot's zeros are never changed before the
     // backup exists.
-    const outcome = await session.run(t("zeros.runWriting"), (client) =>
+    const outcome = await session.run(said(zerosMessages, "zeros.runWriting"), (client) =>
       client.writeZerosWithBackup(table, {
         robot: {
           serialNumber: c.serialNumber,

@@ -1,8 +1,11 @@
 import type { KeysWithoutParams } from "../../../i18n/catalogue.ts";
+import type { Locale } from "../../../i18n/locale.ts";
+import { translator } from "../../../i18n/translate.ts";
 import { ZERO_COUNT, zeroProblems } from "../../../protocol/zeros.ts";
 import type { BackupProblem, ParsedBackup } from "../../../protocol/zeros-backup.ts";
-import type { Notice } from "../../app-state.ts";
-import type { ZerosTranslator, zerosMessages } from "./messages.ts";
+import { type Notice, noticeOf } from "../../app-state.ts";
+import { inEveryLanguage, said } from "../../said.ts";
+import { zerosMessages } from "./messages.ts";
 
 /**
  * A backup file the parser refused, as a notice. The parser (protocol/zeros-backup.ts, shared with the CLI)
@@ -35,30 +38,30 @@ function refusedServos(text: string): string {
   }
 }
 
-/** "… was not loaded." with the reason: the parser's sentence in English, a sentence from its code otherwise. */
+/** Why the parser refused the file, in `locale`: its own sentence in English, a sentence from its code otherwise. */
+function reasonIn(text: string, parsed: Extract<ParsedBackup, { ok: false }>, locale: Locale): string {
+  if (locale === "en") return parsed.message;
+  const t = translator(zerosMessages, locale);
+  if (parsed.problem !== "out-of-range") return t(BACKUP_PROBLEM_TEXT[parsed.problem]);
+  const servos = refusedServos(text);
+  return servos ? t("zeros.backupOutOfRange", { servos }) : t("zeros.backupDamaged");
+}
+
+/**
+ * "… was not loaded." with the reason, kept as a message (worded when drawn, so it follows a language switch).
+ * The detail carries the parser's code and English sentence.
+ */
 export function refusal(
   file: File,
   text: string,
   parsed: Extract<ParsedBackup, { ok: false }>,
-  t: ZerosTranslator,
+  locale: Locale,
 ): Notice {
-  if (t.locale === "en") {
-    return {
-      tone: "danger",
-      text: t("zeros.fileRefused", { file: file.name, reason: parsed.message }),
-      detail: parsed.problem,
-    };
-  }
-  const servos = parsed.problem === "out-of-range" ? refusedServos(text) : "";
-  const reason =
-    parsed.problem !== "out-of-range"
-      ? t(BACKUP_PROBLEM_TEXT[parsed.problem])
-      : servos
-        ? t("zeros.backupOutOfRange", { servos })
-        : t("zeros.backupDamaged");
-  return {
-    tone: "danger",
-    text: t("zeros.fileRefused", { file: file.name, reason }),
-    detail: `${parsed.problem}: ${parsed.message}`,
-  };
+  const reason = inEveryLanguage((l) => reasonIn(text, parsed, l));
+  return noticeOf(
+    "danger",
+    locale,
+    [said(zerosMessages, "zeros.fileRefused", { file: file.name, reason })],
+    `${parsed.problem}: ${parsed.message}`,
+  );
 }

@@ -3,15 +3,16 @@ import { restampChangeText, restampRefusalText } from "../../../../i18n/outcomes
 import { translator } from "../../../../i18n/translate.ts";
 import { RestampError, restampedFileName, restampRbm, restampRbmBytes } from "../../../../motion/restamp.ts";
 import { RbmError } from "../../../../protocol/rbm.ts";
-import type { Notice } from "../../../app-state.ts";
+import { type Notice, noticeOf } from "../../../app-state.ts";
 import { errorMessage, technicalDetail } from "../../../error-text.ts";
+import { inEveryLanguage, type LocalText, type Said, said, saidText } from "../../../said.ts";
 import { saveFile } from "../../../save-file.ts";
 import { restampMessages } from "./messages.ts";
 
 /**
  * Makes and saves the restamped copy of a motion file (src/motion/restamp.ts: field 2 and nothing else), then
- * says where it went and what changed, as a notice in `locale`. Never throws: a refusal or a failed save is
- * the notice.
+ * says where it went and what changed, as a notice kept as messages (worded when drawn, so it follows a
+ * language switch; `text` is its wording in `locale`). Never throws: a refusal or a failed save is the notice.
  */
 export async function saveRestampedCopy(
   source: Uint8Array | string,
@@ -21,19 +22,20 @@ export async function saveRestampedCopy(
 ): Promise<Notice> {
   const t = translator(restampMessages, locale);
   let output: Uint8Array | string;
-  let change: string;
+  let change: Said;
   try {
     const result = typeof source === "string" ? restampRbm(source, serial) : restampRbmBytes(source, serial);
     output = result.output;
-    change = restampChangeText(result, locale);
+    change = saidText(inEveryLanguage((l) => restampChangeText(result, l)));
   } catch (e) {
-    const why =
+    const why = inEveryLanguage((l) =>
       e instanceof RestampError
-        ? restampRefusalText(e, locale)
-        : e instanceof RbmError && locale === "en"
+        ? restampRefusalText(e, l)
+        : e instanceof RbmError && l === "en"
           ? e.message
-          : errorMessage(e, locale);
-    return { tone: "danger", text: t("motions.restamp.failed", { why }), detail: technicalDetail(e) };
+          : errorMessage(e, l),
+    );
+    return failed(locale, why, e);
   }
   const name = restampedFileName(fileName, serial);
   try {
@@ -44,17 +46,33 @@ export async function saveRestampedCopy(
     });
     switch (saved.kind) {
       case "cancelled":
-        return { tone: "info", text: t("motions.restamp.cancelled") };
+        return noticeOf("info", locale, [said(restampMessages, "motions.restamp.cancelled")]);
       case "written":
-        return { tone: "ok", text: `${t("motions.restamp.written", { file: saved.name })} ${change}` };
+        return noticeOf("ok", locale, [
+          said(restampMessages, "motions.restamp.written", { file: saved.name }),
+          change,
+        ]);
       case "offered":
-        return { tone: "ok", text: `${t("motions.restamp.offered", { file: saved.name })} ${change}` };
+        return noticeOf("ok", locale, [
+          said(restampMessages, "motions.restamp.offered", { file: saved.name }),
+          change,
+        ]);
     }
   } catch (e) {
-    return {
-      tone: "danger",
-      text: t("motions.restamp.failed", { why: errorMessage(e, locale) }),
-      detail: technicalDetail(e),
-    };
+    return failed(
+      locale,
+      inEveryLanguage((l) => errorMessage(e, l)),
+      e,
+    );
   }
+}
+
+/** "The restamped copy was not made: …" with the reason in every language and the error one click away. */
+function failed(locale: Locale, why: LocalText, e: unknown): Notice {
+  return noticeOf(
+    "danger",
+    locale,
+    [said(restampMessages, "motions.restamp.failed", { why })],
+    technicalDetail(e),
+  );
 }

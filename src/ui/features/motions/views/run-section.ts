@@ -8,6 +8,8 @@ import { liveRobotPanel } from "../../../robot3d/live-robot.ts";
 import { nameWithBreaks } from "../../../shell/name-breaks.ts";
 import { liveNotice } from "../../../shell/notice.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
+import { stopActivity } from "../../connection/actions.ts";
+import { connectionMessages } from "../../connection/messages.ts";
 import { servosOf } from "../../servos/state.ts";
 import { shelfDropNotice, shelfRecordedNote } from "../../shelf/shelf-list.ts";
 import { remoteKeyWords } from "../../shelf/shelf-words.ts";
@@ -210,6 +212,26 @@ function liveRobot(ctx: ViewContext, t: MotionsTranslator): TemplateResult {
   });
 }
 
+/**
+ * Why Run is disabled; with Stop beside it while a motion started elsewhere plays (the busy probe found it, or
+ * the client saw it start), as in the Editor: Stop is the one request the robot takes then.
+ */
+function busyWhy(ctx: ViewContext, reason: string): TemplateResult {
+  const c = ctx.state.connection;
+  const elsewhere = c.busy !== undefined || c.playing !== undefined;
+  const stop = translator(connectionMessages, ctx.state.locale)("connection.stop");
+  return html`<p class="muted small robot-busy" data-testid="busy-why">
+    <span>${reason}</span>
+    ${
+      elsewhere
+        ? html`<button type="button" class="btn btn--danger" data-testid="motions-busy-stop" aria-keyshortcuts="Escape" @click=${() => void stopActivity(ctx)}>
+            ${stop}
+          </button>`
+        : nothing
+    }
+  </p>`;
+}
+
 export function runSection(ctx: ViewContext): TemplateResult {
   const s = ctx.state;
   const c = s.connection;
@@ -232,11 +254,7 @@ export function runSection(ctx: ViewContext): TemplateResult {
             </div>`
           : nothing
       }
-      ${
-        busyReason && !m.run && c.phase === "connected"
-          ? html`<p class="muted small" data-testid="busy-why">${busyReason}</p>`
-          : nothing
-      }
+      ${busyReason && !m.run && c.phase === "connected" ? busyWhy(ctx, busyReason) : nothing}
       <h3>${t("motions.run.builtInTitle")}</h3>
       <div class="motion-grid">
         ${builtInOffers(s.locale).map((o) =>

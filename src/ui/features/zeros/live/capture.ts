@@ -4,7 +4,6 @@ import { type AppState, noticeOf } from "../../../app-state.ts";
 import type { AppContext } from "../../../context.ts";
 import { failureNotice } from "../../../failure-notice.ts";
 import { focusSoon } from "../../../focus.ts";
-import { wordOf } from "../../../said.ts";
 import { type Controller, controllerKey } from "../../../scope.ts";
 import type { Store } from "../../../store.ts";
 import { limpAll } from "../../connection/actions.ts";
@@ -130,11 +129,9 @@ async function readCapture(ctx: AppContext): Promise<void> {
   if (!stored) return;
   patchCapture(store, { phase: "reading", secondsLeft: undefined });
   try {
-    const { servos } = await session.run(
-      wordOf(say("capture.run"), store.get().locale),
-      (client) => client.servos.readAll(SERVO_IDS),
-      { packetMode: false },
-    );
+    const { servos } = await session.run(say("capture.run"), (client) => client.servos.readAll(SERVO_IDS), {
+      packetMode: false,
+    });
     const positions: (number | undefined)[] = [];
     for (const s of servos) positions[s.id] = s.position;
     patchCapture(store, { phase: "checked", check: checkCapture(positions, stored) });

@@ -1,7 +1,7 @@
 import type { RbcClient, TetheredPlayResult } from "../../../../device/index.ts";
 import type { Locale } from "../../../../i18n/locale.ts";
 import { ZERO_COUNT } from "../../../../protocol/zeros.ts";
-import { type AppState, type Notice, noticeOf } from "../../../app-state.ts";
+import { type AppState, type Notice, noticeOf, type RunningLabel } from "../../../app-state.ts";
 import type { AppContext } from "../../../context.ts";
 import { failureNotice } from "../../../failure-notice.ts";
 import { focusSoon } from "../../../focus.ts";
@@ -226,7 +226,11 @@ export function dismissTrimQuestion(ctx: AppContext): void {
 }
 
 /** Plays the zero pose of `zeros` (tethered play: transition frames, then the pose), in direct mode. */
-function playZeroPose(ctx: AppContext, zeros: readonly number[], label: string): Promise<TetheredPlayResult> {
+function playZeroPose(
+  ctx: AppContext,
+  zeros: readonly number[],
+  label: RunningLabel,
+): Promise<TetheredPlayResult> {
   return ctx.session.run(
     label,
     (client) => client.playTethered(zeroPoseMotion(zeros), { robotZeros: zeros }),
@@ -242,7 +246,6 @@ export async function startTrimLive(ctx: AppContext): Promise<void> {
   const z = store.get().zeros;
   const stored = z.stored;
   if (z.live?.phase !== "asking" || !stored || !ctx.session.current) return;
-  const { locale } = store.get();
   patchZeros(store, {
     live: { phase: "moving", positions: [], moved: [] },
     liveNotice: undefined,
@@ -251,7 +254,7 @@ export async function startTrimLive(ctx: AppContext): Promise<void> {
   const controller = ctx.session.connectionScope.get(TRIM_LIVE);
   let result: TetheredPlayResult;
   try {
-    result = await playZeroPose(ctx, stored, wordOf(say("live.run"), locale));
+    result = await playZeroPose(ctx, stored, say("live.run"));
   } catch (e) {
     const code = e instanceof Error && "code" in e ? e.code : undefined;
     const refused = code === "not-idle" || code === "wrong-mode" || code === "activity-refused";
@@ -311,9 +314,8 @@ export async function cancelTrimLive(ctx: AppContext): Promise<void> {
   const controller = session.connectionScope.get(TRIM_LIVE);
   controller.end();
   patchLive(store, { phase: "returning" });
-  const { locale } = store.get();
   try {
-    const result = await playZeroPose(ctx, stored, wordOf(say("live.returning"), locale));
+    const result = await playZeroPose(ctx, stored, say("live.returning"));
     if (result.outcome === "stopped") {
       patchZeros(store, {
         live: undefined,
@@ -322,7 +324,7 @@ export async function cancelTrimLive(ctx: AppContext): Promise<void> {
       });
       return;
     }
-    await session.run(wordOf(say("live.returning"), locale), (client) => client.exitDirectMode(), {
+    await session.run(say("live.returning"), (client) => client.exitDirectMode(), {
       packetMode: false,
     });
   } catch (e) {

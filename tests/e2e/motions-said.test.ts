@@ -1,0 +1,153 @@
+import type { Page } from "playwright-core";
+import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { firmwareHex } from "../support/hex.ts";
+import {
+  type AppHarness,
+  connectRobot,
+  FAST,
+  holdRobot,
+  openMotions,
+  releaseRobot,
+  squash,
+  startHarness,
+} from "./harness.ts";
+import { axeProblems } from "./i18n-checks.ts";
+import { exampleText, rbmFile } from "./motion-fixtures.ts";
+import "./rbc-test-globals.ts";
+
+// Issue 21 item 6 in Motions and Firmware: a Run result, an upload result and a firmware file problem made in
+// English read in Korean after the panel's own language switch, and in English again after the switch back.
+// And Motions' Run buttons honour the busy probe: a motion started elsewhere disables them, with the busy
+// sentence and Stop beside it; after Stop they are enabled again. The robot runs on the paced virtual clock
+// (FAST); nothing is retried.
+
+let app: AppHarness;
+
+beforeAll(async () => {
+  app = await startHarness();
+});
+
+afterAll(async () => {
+  await app?.close();
+});
+
+const switchLanguage = (page: Page, to: "en" | "ko") => page.getByTestId("language-switch").selectOption(to);
+
+/** A Motions tab by its id (its name changes with the language). */
+const showTab = async (page: Page, tab: "files" | "run") => {
+  await page.locator(`#motions-tab-${tab}`).click();
+  await page.locator(`#motions-panel-${tab}`).waitFor();
+};
+
+describe("Motions and Firmware messages made before a language switch follow it", () => {
+  it("a Run result, an upload result and a firmware file problem: Korean after the switch, English after the switch back", {
+    timeout: 180_000,
+  }, async () => {
+    const { page, context } = await app.newPage({ options: FAST });
+    const pageErrors: string[] = [];
+    page.on("pageerror", (e) => pageErrors.push(String(e)));
+    await openMotions(page, app.url);
+
+    // A Run result: Basic posture, asked once, then run to its end.
+    await showTab(page, "run");
+    await page.locator('[data-motion="7"]').click();
+    await page.getByRole("button", { name: "Run motion 7 (Basic posture)" }).click();
+    const runResult = page.getByTestId("run-place-built-in").locator(".notice p");
+    const runEn = "Motion 7 (Basic posture) finished. The robot now accepts every motion.";
+    await runResult.filter({ hasText: runEn }).waitFor();
+
+    // An upload result: wave.rbm, after the experimental notice (the fake port is a real robot to the panel).
+    await showTab(page, "files");
+    await page.getByTestId("rbm-files").setInputFiles(rbmFile("wave.rbm", exampleText("wave.rbm")));
+    await page.getByTestId("upload-motion").click();
+    await page.getByRole("button", { name: "Upload (experimental)" }).click();
+    const uploadResult = page.getByTestId("motion-file").locator(".upload-in-place .live .notice p");
+    await uploadResult
+      .filter({ hasText: /^Uploaded wave\.rbm/ })
+      // The upload's 10 chunks at the paced link's speed; a loaded machine slows the page, not the robot's clock.
+      .waitFor({ timeout: 60_000 })
+      .catch(async (e: unknown) => {
+        throw new Error(
+          `${String(e)}\nupload card: ${squash(await page.getByTestId("motion-file").textContent())}\npage errors: ${pageErrors.join("; ")}`,
+        );
+      });
+    const uploadEn = squash(await uploadResult.textContent());
+    expect(uploadEn).toContain("Stored as motion 12 (key 1): Run takes this number.");
+
+    // A firmware file problem: a checksum broken on line 3.
+    await page.getByRole("link", { name: "Firmware" }).click();
+    const lines = firmwareHex("2.50", 512).split("\r\n");
+    lines[2] = `${lines[2]!.slice(0, -2)}00`;
+    await page.getByTestId("fw-file-input").setInputFiles({
+      name: "broken.hex",
+      mimeType: "text/plain",
+      buffer: Buffer.from(lines.join("\r\n")),
+    });
+    const problem = page.getByTestId("firmware-view").locator(".notice--danger p").first();
+    await problem.filter({ hasText: /broken\.hex is not a firmware file/ }).waitFor();
+    const problemEn = squash(await problem.textContent());
+    expect(problemEn).toMatch(/Line 3: the checksum is 00/);
+
+    // The switch: each reads in Korean, nothing of it left in English.
+    await switchLanguage(page, "ko");
+    await page.getByRole("heading", { level: 1, name: "펌웨어" }).waitFor();
+    await problem.filter({ hasText: /broken\.hex/ }).waitFor();
+    const problemKo = squash(await problem.textContent());
+    expect(problemKo).toMatch(/^"?broken\.hex"?.*[가-힣]/);
+    expect(problemKo).not.toMatch(/not a firmware file|checksum/);
+
+    await page.locator('a[href="#/motions"]').first().click();
+    await showTab(page, "run");
+    expect(squash(await runResult.textContent())).toBe(
+      "모션 7번(기본 자세)을 마쳤어요. 이제 로봇이 모든 모션을 받아들여요.",
+    );
+    await showTab(page, "files");
+    const uploadKo = squash(await uploadResult.textContent());
+    expect(uploadKo).toMatch(/^wave\.rbm을\(를\) 업로드했어요\. 624바이트를 조각 10개로 /);
+    expect(uploadKo).not.toMatch(/Uploaded|Stored as|Free motion memory|Error code/);
+    expect(await axeProblems(page)).toEqual([]);
+
+    // And back: the English words as they were made.
+    await switchLanguage(page, "en");
+    await showTab(page, "run");
+    expect(squash(await runResult.textContent())).toBe(runEn);
+    await showTab(page, "files");
+    expect(squash(await uploadResult.textContent())).toBe(uploadEn);
+    await page.getByRole("link", { name: "Firmware" }).click();
+    await problem.filter({ hasText: /not a firmware file/ }).waitFor();
+    expect(squash(await problem.textContent())).toBe(problemEn);
+    expect(pageErrors).toEqual([]);
+    await context.close();
+  });
+});
+
+describe("Motions' Run buttons and a motion started elsewhere", () => {
+  it("the busy probe's motion disables Run, with the busy sentence and Stop beside it; after Stop Run is enabled again", async () => {
+    const { page, context } = await app.newPage({ options: { ...FAST, variant: { busyMotion: 2 } } });
+    await connectRobot(page, app.url);
+    await page.getByTestId("busy-banner").waitFor();
+    // The robot's time stands still while the test looks (motion 2 plays 6.6 s of it).
+    await holdRobot(page);
+    await page.getByRole("link", { name: "Motions" }).click();
+    await showTab(page, "run");
+    const runButtons = page.getByTestId("run-card").locator("[data-motion]");
+    expect(await runButtons.count()).toBeGreaterThanOrEqual(11);
+    const disabled = () => runButtons.evaluateAll((els) => els.map((e) => (e as HTMLButtonElement).disabled));
+    expect(new Set(await disabled())).toEqual(new Set([true]));
+    const why = page.getByTestId("busy-why");
+    expect(squash(await why.locator("span").textContent())).toBe(
+      "A motion is playing: the robot ignores everything but Basic posture (7) until it ends.",
+    );
+    const stop = why.getByRole("button", { name: "Stop" });
+    expect(await stop.isEnabled()).toBe(true);
+    expect(await axeProblems(page, { within: "#motions-panel-run" })).toEqual([]);
+
+    await stop.click();
+    await releaseRobot(page);
+    await page.getByTestId("stop-banner").filter({ hasText: "It took Stop" }).waitFor();
+    await page.getByTestId("busy-banner").waitFor({ state: "detached" });
+    await why.waitFor({ state: "detached" });
+    expect(new Set(await disabled())).toEqual(new Set([false]));
+    await context.close();
+  });
+});
