@@ -15,7 +15,7 @@ import { translator } from "../i18n/translate.ts";
  */
 export type Fact = string | number | Said | LocalText;
 
-/** A text made in every language at once (`inEveryLanguage`), chosen when drawn. */
+/** A text in every language (`inEveryLanguage`), made in the language chosen when it is drawn. */
 export type LocalText = { readonly [L in Locale]: string };
 
 export interface Said {
@@ -33,10 +33,17 @@ export function said<M extends Catalogue, K extends keyof M & string>(
   return { catalogue, key, facts: facts[0] as Readonly<Record<string, Fact>> | undefined };
 }
 
-/** Makes a text in every language (a date, a device error worded by its own catalogue). */
+/**
+ * A text in every language (a date, a device error worded by its own catalogue). Each language's text is made
+ * when it is read, that is when the message is drawn: the hosted panel loads one language's words at a time
+ * (docs/i18n.md, "One language at a time"), so a text made at once in a language not yet loaded would keep the
+ * English fallback after a switch to it.
+ */
 export function inEveryLanguage(make: (locale: Locale) => string): LocalText {
   const out: Partial<Record<Locale, string>> = {};
-  for (const locale of LOCALES) out[locale] = make(locale);
+  for (const locale of LOCALES) {
+    Object.defineProperty(out, locale, { enumerable: true, get: () => make(locale) });
+  }
   return out as LocalText;
 }
 
