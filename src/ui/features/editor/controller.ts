@@ -1,7 +1,8 @@
-import { translator } from "../../../i18n/translate.ts";
 import { type Motion, motionIssues } from "../../../motion/index.ts";
 import type { RbmValidation } from "../../../protocol/rbm-validate.ts";
 import type { AppContext } from "../../context.ts";
+import { errorSaid } from "../../failure-notice.ts";
+import { said } from "../../said.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
 import { Autosaver } from "./autosave.ts";
 import {
@@ -115,9 +116,7 @@ export const EDITOR = controllerKey(
         })),
       onError: (e) =>
         patchEditor(ctx.store, {
-          saveProblem: translator(editorMessages, ctx.store.get().locale)("editor.draftSaveFailed", {
-            error: e instanceof Error ? e.message : String(e),
-          }),
+          saveProblem: said(editorMessages, "editor.draftSaveFailed", { error: errorSaid(e) }),
         }),
     }),
 );
