@@ -9,7 +9,7 @@ import { editorWords } from "./actions.ts";
 import { editorController } from "./controller.ts";
 import { flushAutosave, readDraftDocument, scheduleAutosave } from "./draft-actions.ts";
 import { draftRecord, storedName, storedRbmText, summarize } from "./drafts.ts";
-import { editorNotice } from "./editor-notice.ts";
+import { editorFailure, editorNotice } from "./editor-notice.ts";
 import { motionFileName } from "./file-name.ts";
 import { editorMessages } from "./messages.ts";
 import { refusalText } from "./refusal-text.ts";
@@ -131,10 +131,10 @@ export async function renameDraft(ctx: AppContext, id: string, name: string): Pr
     await (await editorController(ctx).storage).set(id, record);
   } catch (e) {
     patchEditor(ctx.store, {
-      draftsNotice: editorNotice(
+      draftsNotice: editorFailure(
         ctx,
-        "danger",
         said(editorMessages, "editor.drafts.notRenamed", { error: errorSaid(e) }),
+        e,
       ),
     });
     return;
@@ -183,10 +183,10 @@ export async function exportSetAside(ctx: AppContext, key: string): Promise<void
     value = await (await editorController(ctx).storage).get(key);
   } catch (e) {
     patchEditor(ctx.store, {
-      draftsNotice: editorNotice(
+      draftsNotice: editorFailure(
         ctx,
-        "danger",
         said(editorMessages, "editor.drafts.exportFailed", { problem: errorSaid(e) }),
+        e,
       ),
     });
     return;
@@ -231,10 +231,10 @@ export async function deleteDraft(ctx: AppContext, id: string): Promise<void> {
   } catch (e) {
     patchEditor(ctx.store, {
       confirmDelete: undefined,
-      draftsNotice: editorNotice(
+      draftsNotice: editorFailure(
         ctx,
-        "danger",
         said(editorMessages, "editor.drafts.notDeleted", { error: errorSaid(e) }),
+        e,
       ),
     });
     return;
