@@ -1,7 +1,6 @@
 import { type Motion, motionIssues } from "../../../motion/index.ts";
 import type { RbmValidation } from "../../../protocol/rbm-validate.ts";
 import type { AppContext } from "../../context.ts";
-import { errorSaid } from "../../failure-notice.ts";
 import { said } from "../../said.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
 import { Autosaver } from "./autosave.ts";
@@ -116,7 +115,10 @@ export const EDITOR = controllerKey(
         })),
       onError: (e) =>
         patchEditor(ctx.store, {
-          saveProblem: said(editorMessages, "editor.draftSaveFailed", { error: errorSaid(e) }),
+          // The browser's own sentence (the status line has no technical detail to point to).
+          saveProblem: said(editorMessages, "editor.draftSaveFailed", {
+            error: e instanceof Error ? e.message : String(e),
+          }),
         }),
     }),
 );

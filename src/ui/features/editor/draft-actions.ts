@@ -3,6 +3,7 @@ import { translator } from "../../../i18n/translate.ts";
 import { type Motion, newMotion, openMotion, saveMotion } from "../../../motion/index.ts";
 import { noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
+import { technicalDetail } from "../../error-text.ts";
 import { errorSaid } from "../../failure-notice.ts";
 import { inEveryLanguage, type Said, said } from "../../said.ts";
 import { editorController } from "./controller.ts";
@@ -138,14 +139,21 @@ export async function startEditor(ctx: AppContext, deadlineMs = DRAFT_OPEN_TIMEO
   const { locale } = ctx.store.get();
   const t = translator(editorMessages, locale);
   let latest: LatestDraft = { drafts: [], broken: [] };
-  let listProblem: Said | undefined;
+  let listProblem: ListProblem | undefined;
   try {
     latest = await withDeadline(readDraftsAtStart(ctx, locale), deadlineMs);
   } catch (e) {
     listProblem =
       e instanceof DraftTimeoutError
-        ? said(editorMessages, "editor.drafts.openTimedOut", { seconds: String(Math.round(e.ms / 1000)) })
-        : said(editorMessages, "editor.drafts.readFailed", { error: errorSaid(e) });
+        ? {
+            said: said(editorMessages, "editor.drafts.openTimedOut", {
+              seconds: String(Math.round(e.ms / 1000)),
+            }),
+          }
+        : {
+            said: said(editorMessages, "editor.drafts.readFailed", { error: errorSaid(e) }),
+            detail: technicalDetail(e),
+          };
   }
   try {
     finishStart(ctx, latest, listProblem);
@@ -160,7 +168,13 @@ export async function startEditor(ctx: AppContext, deadlineMs = DRAFT_OPEN_TIMEO
   }
 }
 
-function finishStart(ctx: AppContext, latest: LatestDraft, listProblem: Said | undefined): void {
+/** Why the drafts could not be listed, with the error's technical detail when there was one. */
+interface ListProblem {
+  said: Said;
+  detail?: string;
+}
+
+function finishStart(ctx: AppContext, latest: LatestDraft, listProblem: ListProblem | undefined): void {
   const { locale } = ctx.store.get();
   const controller = editorController(ctx);
   const { restored, drafts, broken, setAside } = latest;
@@ -168,14 +182,14 @@ function finishStart(ctx: AppContext, latest: LatestDraft, listProblem: Said | u
     controller.storageProblem === undefined
       ? undefined
       : said(editorMessages, "editor.drafts.storageProblem", { error: controller.storageProblem });
-  const problem = listProblem ?? storageProblem ?? brokenNotice(broken);
+  const problem = listProblem?.said ?? storageProblem ?? brokenNotice(broken);
   patchEditor(ctx.store, (s) => {
     if (s.history) return { starting: false };
     const common = {
       starting: false,
       drafts,
       brokenDrafts: broken,
-      draftsNotice: problem ? noticeOf("warning", locale, [problem]) : undefined,
+      draftsNotice: problem ? noticeOf("warning", locale, [problem], listProblem?.detail) : undefined,
     };
     if (!restored) {
       const started = startDocument(s, newMotion({ zeros: robotZeros(ctx) }), undefined);
