@@ -15,7 +15,7 @@ import { translator } from "../i18n/translate.ts";
  */
 export type Fact = string | number | Said | LocalText;
 
-/** A text made in every language at once (`inEveryLanguage`), chosen when drawn. */
+/** A text in every language (`inEveryLanguage`), made in the language chosen when it is drawn. */
 export type LocalText = { readonly [L in Locale]: string };
 
 export interface Said {

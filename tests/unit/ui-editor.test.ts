@@ -14,6 +14,7 @@ import {
   setPosition,
   setTiming,
 } from "../../src/motion/index.ts";
+import { noticeText } from "../../src/ui/app-state.ts";
 import { Autosaver } from "../../src/ui/features/editor/autosave.ts";
 import { findLatestDraft, readDraftDocument } from "../../src/ui/features/editor/draft-actions.ts";
 import {
@@ -613,6 +614,34 @@ describe("the editor in Korean", () => {
     );
     expect(holdNotice([{ id: 4, read: 30, held: 41 }], [], false, "ko").text).toBe(
       "서보 4을(를) 자세를 잡은 자리에 고정했어요 (토크 켜짐, 확인함). 서보 4은(는) 안전 범위 밖인 30에 있어서 41에 고정했어요.",
+    );
+  });
+
+  it("keeps teach-in's and play's notices as messages: made in English, they read in Korean after a switch", () => {
+    const limp = limpNotice([10, 11, 12], [13], false, "en");
+    expect(limp.text).toBe(
+      "Servos 10–12 are limp (confirmed): pose them by hand. Servo 13 did not answer and may still hold; check its cable.",
+    );
+    expect(noticeText(limp, "ko")).toBe(
+      "서보 10–12의 힘이 빠졌어요 (확인함). 손으로 자세를 잡아 주세요. 서보 13에서 응답이 없어서 아직 힘이 들어가 있을 수 있어요. 케이블을 확인해 주세요.",
+    );
+    const hold = holdNotice([{ id: 4, read: 30, held: 41 }], [], false, "en");
+    expect(noticeText(hold, "ko")).toBe(
+      "서보 4을(를) 자세를 잡은 자리에 고정했어요 (토크 켜짐, 확인함). 서보 4은(는) 안전 범위 밖인 30에 있어서 41에 고정했어요.",
+    );
+    const played = playResultNotice({ outcome: "finished", framesSent: 42, durationMs: 1500 }, 1, 1, "en");
+    expect(played.text).toBe("Played scene 1 (42 frames, 1.5 s); the servos hold the last frame.");
+    expect(noticeText(played, "ko")).toBe(
+      "장면 1을(를) 재생했어요 (프레임 42개, 1.5초). 서보는 마지막 프레임 자세를 유지해요.",
+    );
+    const stopped = playResultNotice(
+      { outcome: "stopped", framesSent: 5, durationMs: 0, lastFrame: { scene: -1, frame: 3 } },
+      0,
+      2,
+      "ko",
+    );
+    expect(noticeText(stopped, "en")).toBe(
+      "Stopped at the move to the first pose (step 3); the servos hold that pose.",
     );
   });
 

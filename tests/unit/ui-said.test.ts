@@ -21,6 +21,14 @@ describe("messages kept as codes and facts", () => {
     expect(wordOf(saidText({ en: "Plain.", ko: "그냥요." }), "ko")).toBe("그냥요.");
   });
 
+  it("makes a text in every language when it is drawn, not when it is made (a language's words may load later)", () => {
+    const words: Record<string, string> = { en: "later" };
+    const text = inEveryLanguage((locale) => words[locale] ?? "not loaded");
+    words.ko = "나중에";
+    expect(text.ko).toBe("나중에");
+    expect(wordOf(saidText(text), "en")).toBe("later");
+  });
+
   it("keeps a notice made as a sentence as it was made", () => {
     expect(noticeText({ tone: "info", text: "As made." }, "ko")).toBe("As made.");
   });

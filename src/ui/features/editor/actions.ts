@@ -16,9 +16,11 @@ import {
 } from "../../../motion/index.ts";
 import type { AppContext } from "../../context.ts";
 import { focusSoon } from "../../focus.ts";
+import { inEveryLanguage, type LocalText, said } from "../../said.ts";
 import { jointName } from "../zeros/joints/joint-name.ts";
 import { editorController } from "./controller.ts";
 import { scheduleAutosave } from "./draft-actions.ts";
+import { editorNotice } from "./editor-notice.ts";
 import type { EditorHost } from "./host.ts";
 import { type EditorTranslator, editorMessages } from "./messages.ts";
 import { refusalText, TypedValueError } from "./refusal-text.ts";
@@ -240,38 +242,55 @@ export function choosePoseColumns(ctx: AppContext, columns: PoseColumns): void {
 
 // ---- Scenes ----------------------------------------------------------------------------------------------
 
-function structural(ctx: AppContext, change: (doc: Motion) => Motion, label: string, select: number): void {
+/**
+ * An undo step's label in the panel's language (for the history) and in every language (for the notice that
+ * names it, worded again after a language switch).
+ */
+export function labelled(
+  ctx: AppContext,
+  labelOf: (t: EditorTranslator) => string,
+): { label: string; what: LocalText } {
+  return {
+    label: labelOf(editorWords(ctx)),
+    what: inEveryLanguage((l) => labelOf(translator(editorMessages, l))),
+  };
+}
+
+function structural(
+  ctx: AppContext,
+  change: (doc: Motion) => Motion,
+  labelOf: (t: EditorTranslator) => string,
+  select: number,
+): void {
+  const { label, what } = labelled(ctx, labelOf);
   if (edit(ctx, change, label, { field: "structure", structural: true, select: () => select })) {
     patchEditor(ctx.store, {
-      notice: { tone: "ok", text: editorWords(ctx)("editor.done", { what: label }) },
+      notice: editorNotice(ctx, "ok", said(editorMessages, "editor.done", { what })),
     });
   }
 }
 
 export function addSceneAfter(ctx: AppContext): void {
   const at = selectedScene(ctx);
-  const t = editorWords(ctx);
   if (at) {
-    const label = t("editor.label.addScene", { scene: String(at.k + 1) });
+    const label = (t: EditorTranslator) => t("editor.label.addScene", { scene: String(at.k + 1) });
     structural(ctx, (doc) => addScene(doc, at.k + 1), label, at.k + 1);
   }
 }
 
 export function duplicateSelected(ctx: AppContext): void {
   const at = selectedScene(ctx);
-  const t = editorWords(ctx);
   if (at) {
-    const label = t("editor.label.duplicate", { scene: String(at.k) });
+    const label = (t: EditorTranslator) => t("editor.label.duplicate", { scene: String(at.k) });
     structural(ctx, (doc) => duplicateScene(doc, at.k), label, at.k + 1);
   }
 }
 
 export function deleteSelected(ctx: AppContext): void {
   const at = selectedScene(ctx);
-  const t = editorWords(ctx);
   if (at) {
     const name = String(at.doc.scenes[at.k]?.name);
-    const label = t("editor.label.delete", { scene: String(at.k), name });
+    const label = (t: EditorTranslator) => t("editor.label.delete", { scene: String(at.k), name });
     structural(ctx, (doc) => deleteScene(doc, at.k), label, at.k);
   }
 }
@@ -281,9 +300,9 @@ export function moveSelected(ctx: AppContext, by: -1 | 1): void {
   if (!at) return;
   const to = at.k + by;
   if (to < 0 || to >= at.doc.scenes.length) return;
-  const t = editorWords(ctx);
   const scene = String(at.k);
-  const label = by < 0 ? t("editor.label.moveUp", { scene }) : t("editor.label.moveDown", { scene });
+  const label = (t: EditorTranslator) =>
+    by < 0 ? t("editor.label.moveUp", { scene }) : t("editor.label.moveDown", { scene });
   structural(ctx, (doc) => moveScene(doc, at.k, to), label, to);
 }
 
@@ -293,8 +312,9 @@ export function undoLast(ctx: AppContext): void {
   const before = editorOf(ctx.store.get()).history?.label;
   const out = undoEdit(editorOf(ctx.store.get()));
   if (!out.changed) return;
-  const text = editorWords(ctx)("editor.undone", { what: String(before) });
-  patchEditor(ctx.store, { ...out.state, notice: { tone: "info", text } });
+  // The step's label is the history's, worded in the language of the moment the edit was made.
+  const undone = said(editorMessages, "editor.undone", { what: String(before) });
+  patchEditor(ctx.store, { ...out.state, notice: editorNotice(ctx, "info", undone) });
   scheduleAutosave(ctx);
 }
 
@@ -303,10 +323,11 @@ export function redoNext(ctx: AppContext): void {
   if (!out.changed) return;
   patchEditor(ctx.store, {
     ...out.state,
-    notice: {
-      tone: "info",
-      text: editorWords(ctx)("editor.redone", { what: String(out.state.history?.label) }),
-    },
+    notice: editorNotice(
+      ctx,
+      "info",
+      said(editorMessages, "editor.redone", { what: String(out.state.history?.label) }),
+    ),
   });
   scheduleAutosave(ctx);
 }

@@ -1,7 +1,7 @@
-import { translator } from "../../../i18n/translate.ts";
 import { type Motion, motionIssues } from "../../../motion/index.ts";
 import type { RbmValidation } from "../../../protocol/rbm-validate.ts";
 import type { AppContext } from "../../context.ts";
+import { said } from "../../said.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
 import { Autosaver } from "./autosave.ts";
 import {
@@ -115,7 +115,8 @@ export const EDITOR = controllerKey(
         })),
       onError: (e) =>
         patchEditor(ctx.store, {
-          saveProblem: translator(editorMessages, ctx.store.get().locale)("editor.draftSaveFailed", {
+          // The browser's own sentence (the status line has no technical detail to point to).
+          saveProblem: said(editorMessages, "editor.draftSaveFailed", {
             error: e instanceof Error ? e.message : String(e),
           }),
         }),

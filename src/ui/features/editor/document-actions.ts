@@ -1,12 +1,17 @@
 import { MotionError, newMotion, openMotion, saveMotion } from "../../../motion/index.ts";
+import type { Notice } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { downloadTextFile } from "../../download-file.ts";
-import { errorMessage, technicalDetail } from "../../error-text.ts";
-import { editorWords, redoNext, undoLast } from "./actions.ts";
+import { technicalDetail } from "../../error-text.ts";
+import { errorSaid } from "../../failure-notice.ts";
+import { inEveryLanguage, type LocalText, type Said, said, wordOf } from "../../said.ts";
+import { redoNext, undoLast } from "./actions.ts";
 import { editorController } from "./controller.ts";
 import { flushAutosave, robotZeros, scheduleAutosave, startEditor } from "./draft-actions.ts";
+import { editorNotice } from "./editor-notice.ts";
 import { motionFileName } from "./file-name.ts";
-import { refusalText } from "./refusal-text.ts";
+import { editorMessages } from "./messages.ts";
+import { refusalWords } from "./refusal-text.ts";
 import { isTextEntry, shortcutOf } from "./shortcuts.ts";
 import { docOf, editorOf, patchEditor, startDocument } from "./state.ts";
 
@@ -50,14 +55,14 @@ export function openEditor(ctx: AppContext): void {
 
 /** A new motion from the HUNO template (basic posture), with the connected robot's zeros if they were read. */
 export async function newDocument(ctx: AppContext): Promise<void> {
-  const t = editorWords(ctx);
   await flushAutosave(ctx);
   const zeros = robotZeros(ctx);
   const kept = editorOf(ctx.store.get()).draftId !== undefined;
-  const made = zeros ? t("editor.doc.newRobotZeros") : t("editor.doc.newStandardZeros");
+  const made = said(editorMessages, zeros ? "editor.doc.newRobotZeros" : "editor.doc.newStandardZeros");
+  const sentences = kept ? [made, said(editorMessages, "editor.doc.kept")] : [made];
   patchEditor(ctx.store, (s) => ({
     ...startDocument(s, newMotion({ zeros }), undefined),
-    notice: { tone: "ok", text: kept ? `${made} ${t("editor.doc.kept")}` : made },
+    notice: editorNotice(ctx, "ok", ...sentences),
   }));
   scheduleAutosave(ctx);
 }
@@ -66,34 +71,42 @@ export async function newDocument(ctx: AppContext): Promise<void> {
 export async function openDocumentFile(ctx: AppContext, file: File | undefined): Promise<void> {
   patchEditor(ctx.store, { dragging: false });
   if (!file) return;
-  const t = editorWords(ctx);
-  const refuse = (why: string, detail?: string) =>
-    patchEditor(ctx.store, {
-      notice: {
-        tone: "danger",
-        text: t("editor.doc.notOpened", { file: file.name, why }),
-        ...(detail === undefined ? {} : { detail }),
-      },
-    });
+  const refuse = (why: Said | LocalText, detail?: string) => {
+    const notice = editorNotice(
+      ctx,
+      "danger",
+      said(editorMessages, "editor.doc.notOpened", { file: file.name, why }),
+    );
+    patchEditor(ctx.store, { notice: detail === undefined ? notice : { ...notice, detail } });
+  };
   if (file.size > MAX_RBM_BYTES) {
-    refuse(t("editor.doc.tooLarge", { size: file.size }));
+    refuse(said(editorMessages, "editor.doc.tooLarge", { size: file.size }));
     return;
   }
   let doc: ReturnType<typeof openMotion>;
   try {
     doc = openMotion(await file.text());
   } catch (e) {
-    // The parser's sentence is English: in another language the panel says what it means, the sentence apart.
-    if (t.locale === "en") refuse(message(e).replace(/([^.])$/, "$1."));
-    else refuse(t("editor.doc.unreadable"), technicalDetail(e));
+    // The parser's sentence is English: in another language the panel says what it means, the sentence apart
+    // (the technical detail, one click away).
+    const unreadable = said(editorMessages, "editor.doc.unreadable");
+    const why = inEveryLanguage((l) =>
+      l === "en" ? message(e).replace(/([^.])$/, "$1.") : wordOf(unreadable, l),
+    );
+    refuse(why, technicalDetail(e));
     return;
   }
   await flushAutosave(ctx);
   const kept = editorOf(ctx.store.get()).draftId !== undefined;
-  const opened = t("editor.doc.opened", { file: file.name, name: doc.name, count: doc.scenes.length });
+  const opened = said(editorMessages, "editor.doc.opened", {
+    file: file.name,
+    name: doc.name,
+    count: doc.scenes.length,
+  });
+  const sentences = kept ? [opened, said(editorMessages, "editor.doc.kept")] : [opened];
   patchEditor(ctx.store, (s) => ({
     ...startDocument(s, doc, undefined),
-    notice: { tone: "ok", text: kept ? `${opened} ${t("editor.doc.kept")}` : opened },
+    notice: editorNotice(ctx, "ok", ...sentences),
   }));
   scheduleAutosave(ctx);
 }
@@ -102,36 +115,29 @@ export async function openDocumentFile(ctx: AppContext, file: File | undefined):
 export function saveDocument(ctx: AppContext): void {
   const doc = docOf(editorOf(ctx.store.get()));
   if (!doc) return;
-  const t = editorWords(ctx);
   let text: string;
   try {
     text = saveMotion(doc);
   } catch (e) {
-    if (t.locale === "en") {
-      patchEditor(ctx.store, {
-        notice: { tone: "danger", text: t("editor.doc.saveFailed", { why: message(e) }) },
-      });
-    } else {
-      const why = e instanceof MotionError ? refusalText(e, t) : errorMessage(e, t.locale);
-      patchEditor(ctx.store, {
-        notice: { tone: "danger", text: t("editor.doc.saveFailed", { why }), detail: technicalDetail(e) },
-      });
-    }
+    patchEditor(ctx.store, { notice: saveFailedNotice(ctx, e) });
     return;
   }
   const fileName = motionFileName(doc.name);
   downloadTextFile(fileName, text);
-  patchEditor(ctx.store, {
-    notice: {
-      tone: "ok",
-      text: t("editor.doc.saved", {
-        name: doc.name,
-        file: fileName,
-        count: doc.scenes.length,
-        bytes: text.length,
-      }),
-    },
+  const saved = said(editorMessages, "editor.doc.saved", {
+    name: doc.name,
+    file: fileName,
+    count: doc.scenes.length,
+    bytes: text.length,
   });
+  patchEditor(ctx.store, { notice: editorNotice(ctx, "ok", saved) });
+}
+
+/** "The motion cannot be saved: …", the refusal or error kept in every language, the technical detail apart. */
+export function saveFailedNotice(ctx: AppContext, e: unknown): Notice {
+  const why = e instanceof MotionError ? refusalWords(e) : errorSaid(e);
+  const notice = editorNotice(ctx, "danger", said(editorMessages, "editor.doc.saveFailed", { why }));
+  return { ...notice, detail: technicalDetail(e) };
 }
 
 export function setEditorDragging(ctx: AppContext, dragging: boolean): void {

@@ -3,7 +3,9 @@ import { translator } from "../../../i18n/translate.ts";
 import { type Motion, newMotion, openMotion, saveMotion } from "../../../motion/index.ts";
 import { noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
-import { inEveryLanguage, said } from "../../said.ts";
+import { technicalDetail } from "../../error-text.ts";
+import { errorSaid } from "../../failure-notice.ts";
+import { inEveryLanguage, type Said, said } from "../../said.ts";
 import { editorController } from "./controller.ts";
 import { DRAFT_OPEN_TIMEOUT_MS, DraftTimeoutError, withDeadline } from "./draft-deadline.ts";
 import {
@@ -110,9 +112,9 @@ export async function findLatestDraft(storage: DraftStorage, locale: Locale = "e
   return { ...(restored ? { restored } : {}), ...(setAside ? { setAside } : {}), drafts, broken };
 }
 
-function brokenNotice(broken: readonly BrokenDraft[], locale: Locale): string | undefined {
+function brokenNotice(broken: readonly BrokenDraft[]): Said | undefined {
   if (broken.length === 0) return undefined;
-  return translator(editorMessages, locale)("editor.drafts.skippedNotice", { count: broken.length });
+  return said(editorMessages, "editor.drafts.skippedNotice", { count: broken.length });
 }
 
 /** The drafts as the Editor opens: recovered, listed, the newest that opens found. */
@@ -137,14 +139,21 @@ export async function startEditor(ctx: AppContext, deadlineMs = DRAFT_OPEN_TIMEO
   const { locale } = ctx.store.get();
   const t = translator(editorMessages, locale);
   let latest: LatestDraft = { drafts: [], broken: [] };
-  let listProblem: string | undefined;
+  let listProblem: ListProblem | undefined;
   try {
     latest = await withDeadline(readDraftsAtStart(ctx, locale), deadlineMs);
   } catch (e) {
     listProblem =
       e instanceof DraftTimeoutError
-        ? t("editor.drafts.openTimedOut", { seconds: String(Math.round(e.ms / 1000)) })
-        : t("editor.drafts.readFailed", { error: message(e) });
+        ? {
+            said: said(editorMessages, "editor.drafts.openTimedOut", {
+              seconds: String(Math.round(e.ms / 1000)),
+            }),
+          }
+        : {
+            said: said(editorMessages, "editor.drafts.readFailed", { error: errorSaid(e) }),
+            detail: technicalDetail(e),
+          };
   }
   try {
     finishStart(ctx, latest, listProblem);
@@ -159,23 +168,28 @@ export async function startEditor(ctx: AppContext, deadlineMs = DRAFT_OPEN_TIMEO
   }
 }
 
-function finishStart(ctx: AppContext, latest: LatestDraft, listProblem: string | undefined): void {
+/** Why the drafts could not be listed, with the error's technical detail when there was one. */
+interface ListProblem {
+  said: Said;
+  detail?: string;
+}
+
+function finishStart(ctx: AppContext, latest: LatestDraft, listProblem: ListProblem | undefined): void {
   const { locale } = ctx.store.get();
-  const t = translator(editorMessages, locale);
   const controller = editorController(ctx);
   const { restored, drafts, broken, setAside } = latest;
   const storageProblem =
     controller.storageProblem === undefined
       ? undefined
-      : t("editor.drafts.storageProblem", { error: controller.storageProblem });
-  const problem = listProblem ?? storageProblem ?? brokenNotice(broken, locale);
+      : said(editorMessages, "editor.drafts.storageProblem", { error: controller.storageProblem });
+  const problem = listProblem?.said ?? storageProblem ?? brokenNotice(broken);
   patchEditor(ctx.store, (s) => {
     if (s.history) return { starting: false };
     const common = {
       starting: false,
       drafts,
       brokenDrafts: broken,
-      draftsNotice: problem ? { tone: "warning" as const, text: problem } : undefined,
+      draftsNotice: problem ? noticeOf("warning", locale, [problem], listProblem?.detail) : undefined,
     };
     if (!restored) {
       const started = startDocument(s, newMotion({ zeros: robotZeros(ctx) }), undefined);

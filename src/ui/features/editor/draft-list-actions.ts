@@ -1,12 +1,17 @@
+import { LOCALES, type Locale } from "../../../i18n/locale.ts";
 import { type Motion, MotionError, saveMotion, setMotionName } from "../../../motion/index.ts";
 import type { AppContext } from "../../context.ts";
 import { downloadTextFile } from "../../download-file.ts";
+import { errorSaid } from "../../failure-notice.ts";
 import { focusSoon } from "../../focus.ts";
+import { type LocalText, said } from "../../said.ts";
 import { editorWords } from "./actions.ts";
 import { editorController } from "./controller.ts";
 import { flushAutosave, readDraftDocument, scheduleAutosave } from "./draft-actions.ts";
 import { draftRecord, storedName, storedRbmText, summarize } from "./drafts.ts";
+import { editorFailure, editorNotice } from "./editor-notice.ts";
 import { motionFileName } from "./file-name.ts";
+import { editorMessages } from "./messages.ts";
 import { refusalText } from "./refusal-text.ts";
 import { applyEdit, editorOf, patchEditor, startDocument } from "./state.ts";
 
@@ -16,18 +21,40 @@ function message(e: unknown): string {
   return e instanceof Error ? e.message : String(e);
 }
 
-async function readDocument(ctx: AppContext, id: string) {
-  return readDraftDocument(await editorController(ctx).storage, id, ctx.store.get().locale);
+/**
+ * A stored draft as a document, or why it cannot be opened in every language (a fact of the notice that says
+ * so, worded again after a language switch).
+ */
+async function readDocument(
+  ctx: AppContext,
+  id: string,
+): Promise<
+  Exclude<Awaited<ReturnType<typeof readDraftDocument>>, { problem: string }> | { problem: LocalText }
+> {
+  const storage = await editorController(ctx).storage;
+  const read = await readDraftDocument(storage, id, "en");
+  if ("doc" in read) return read;
+  const problem: Partial<Record<Locale, string>> = { en: read.problem };
+  for (const locale of LOCALES) {
+    if (locale === "en") continue;
+    const again = await readDraftDocument(storage, id, locale);
+    problem[locale] = "problem" in again ? again.problem : read.problem;
+  }
+  return { problem: problem as LocalText };
 }
 
 /** Opens a stored draft in the editor (the motion open now is saved first). */
 export async function openDraft(ctx: AppContext, id: string): Promise<void> {
-  const t = editorWords(ctx);
   await flushAutosave(ctx);
   const read = await readDocument(ctx, id);
   if (!("doc" in read)) {
+    const problem = read.problem;
     patchEditor(ctx.store, {
-      draftsNotice: { tone: "danger", text: t("editor.drafts.openFailed", { problem: read.problem }) },
+      draftsNotice: editorNotice(
+        ctx,
+        "danger",
+        said(editorMessages, "editor.drafts.openFailed", { problem }),
+      ),
     });
     return;
   }
@@ -37,10 +64,11 @@ export async function openDraft(ctx: AppContext, id: string): Promise<void> {
     confirmDelete: undefined,
     renaming: undefined,
     draftsNotice: undefined,
-    notice: {
-      tone: "info",
-      text: t("editor.drafts.opened", { name: read.doc.name, scenes: read.doc.scenes.length }),
-    },
+    notice: editorNotice(
+      ctx,
+      "info",
+      said(editorMessages, "editor.drafts.opened", { name: read.doc.name, scenes: read.doc.scenes.length }),
+    ),
   }));
   focusSoon("editor-title");
 }
@@ -80,7 +108,11 @@ export async function renameDraft(ctx: AppContext, id: string, name: string): Pr
   const read = await readDocument(ctx, id);
   if (!("doc" in read)) {
     patchEditor(ctx.store, {
-      draftsNotice: { tone: "danger", text: t("editor.drafts.renameFailed", { problem: read.problem }) },
+      draftsNotice: editorNotice(
+        ctx,
+        "danger",
+        said(editorMessages, "editor.drafts.renameFailed", { problem: read.problem }),
+      ),
     });
     return;
   }
@@ -99,7 +131,11 @@ export async function renameDraft(ctx: AppContext, id: string, name: string): Pr
     await (await editorController(ctx).storage).set(id, record);
   } catch (e) {
     patchEditor(ctx.store, {
-      draftsNotice: { tone: "danger", text: t("editor.drafts.notRenamed", { error: message(e) }) },
+      draftsNotice: editorFailure(
+        ctx,
+        said(editorMessages, "editor.drafts.notRenamed", { error: errorSaid(e) }),
+        e,
+      ),
     });
     return;
   }
@@ -107,26 +143,33 @@ export async function renameDraft(ctx: AppContext, id: string, name: string): Pr
     renaming: undefined,
     problems: withoutRename(x.problems),
     drafts: x.drafts?.map((d) => (d.id === id ? summarize(record) : d)),
-    draftsNotice: { tone: "ok", text: t("editor.drafts.renamed", { name: doc.name }) },
+    draftsNotice: editorNotice(ctx, "ok", said(editorMessages, "editor.drafts.renamed", { name: doc.name })),
   }));
 }
 
 /** Downloads a draft as its `.rbm` file. */
 export async function exportDraft(ctx: AppContext, id: string): Promise<void> {
-  const t = editorWords(ctx);
   const s = editorOf(ctx.store.get());
   if (s.draftId === id) await flushAutosave(ctx);
   const read = await readDocument(ctx, id);
   if (!("doc" in read)) {
     patchEditor(ctx.store, {
-      draftsNotice: { tone: "danger", text: t("editor.drafts.exportFailed", { problem: read.problem }) },
+      draftsNotice: editorNotice(
+        ctx,
+        "danger",
+        said(editorMessages, "editor.drafts.exportFailed", { problem: read.problem }),
+      ),
     });
     return;
   }
   const fileName = motionFileName(read.doc.name);
   downloadTextFile(fileName, read.record.rbm);
   patchEditor(ctx.store, {
-    draftsNotice: { tone: "ok", text: t("editor.drafts.exported", { name: read.doc.name, file: fileName }) },
+    draftsNotice: editorNotice(
+      ctx,
+      "ok",
+      said(editorMessages, "editor.drafts.exported", { name: read.doc.name, file: fileName }),
+    ),
   });
 }
 
@@ -135,26 +178,35 @@ export async function exportDraft(ctx: AppContext, id: string): Promise<void> {
  * text unchanged, so that nothing the user made is lost even when the panel cannot read it.
  */
 export async function exportSetAside(ctx: AppContext, key: string): Promise<void> {
-  const t = editorWords(ctx);
   let value: unknown;
   try {
     value = await (await editorController(ctx).storage).get(key);
   } catch (e) {
     patchEditor(ctx.store, {
-      draftsNotice: { tone: "danger", text: t("editor.drafts.exportFailed", { problem: message(e) }) },
+      draftsNotice: editorFailure(
+        ctx,
+        said(editorMessages, "editor.drafts.exportFailed", { problem: errorSaid(e) }),
+        e,
+      ),
     });
     return;
   }
   const text = storedRbmText(value);
   if (text === undefined) {
-    patchEditor(ctx.store, { draftsNotice: { tone: "danger", text: t("editor.drafts.nothingToExport") } });
+    patchEditor(ctx.store, {
+      draftsNotice: editorNotice(ctx, "danger", said(editorMessages, "editor.drafts.nothingToExport")),
+    });
     return;
   }
   const name = storedName(value) ?? key;
   const fileName = motionFileName(name);
   downloadTextFile(fileName, text);
   patchEditor(ctx.store, {
-    draftsNotice: { tone: "ok", text: t("editor.drafts.exportedAside", { name, file: fileName }) },
+    draftsNotice: editorNotice(
+      ctx,
+      "ok",
+      said(editorMessages, "editor.drafts.exportedAside", { name, file: fileName }),
+    ),
   });
 }
 
@@ -169,7 +221,6 @@ export function cancelDelete(ctx: AppContext): void {
 
 /** Deletes a stored draft (after the one question). The motion open in the editor stays open. */
 export async function deleteDraft(ctx: AppContext, id: string): Promise<void> {
-  const t = editorWords(ctx);
   const controller = editorController(ctx);
   const s = editorOf(ctx.store.get());
   const current = s.draftId === id;
@@ -180,7 +231,11 @@ export async function deleteDraft(ctx: AppContext, id: string): Promise<void> {
   } catch (e) {
     patchEditor(ctx.store, {
       confirmDelete: undefined,
-      draftsNotice: { tone: "danger", text: t("editor.drafts.notDeleted", { error: message(e) }) },
+      draftsNotice: editorFailure(
+        ctx,
+        said(editorMessages, "editor.drafts.notDeleted", { error: errorSaid(e) }),
+        e,
+      ),
     });
     return;
   }
@@ -190,9 +245,10 @@ export async function deleteDraft(ctx: AppContext, id: string): Promise<void> {
     savedAt: current ? undefined : x.savedAt,
     drafts: x.drafts?.filter((d) => d.id !== id),
     brokenDrafts: x.brokenDrafts?.filter((b) => b.key !== id),
-    draftsNotice: {
-      tone: "ok",
-      text: current ? t("editor.drafts.deletedOpen", { name }) : t("editor.drafts.deleted", { name }),
-    },
+    draftsNotice: editorNotice(
+      ctx,
+      "ok",
+      said(editorMessages, current ? "editor.drafts.deletedOpen" : "editor.drafts.deleted", { name }),
+    ),
   }));
 }

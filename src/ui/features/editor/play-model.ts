@@ -3,12 +3,14 @@
  * reads, and the one sentence of what the robot confirmed at the end (in the language given; English unless
  * given).
  */
+import type { KeysWithoutParams } from "../../../i18n/catalogue.ts";
 import type { Locale } from "../../../i18n/locale.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { formatSeconds } from "../../../i18n/units.ts";
 import type { Motion } from "../../../motion/index.ts";
 import { clampPosition, frameIntervalMs } from "../../../motion/index.ts";
-import type { Notice } from "../../app-state.ts";
+import { type Notice, noticeOf } from "../../app-state.ts";
+import { inEveryLanguage, type Said, said, wordOf } from "../../said.ts";
 import type { PlayChoice, PlayProgress } from "./live-state.ts";
 import { sceneNumber } from "./live-state.ts";
 import { editorMessages } from "./messages.ts";
@@ -162,57 +164,71 @@ export function whereText(frame: { scene: number; frame: number }, locale: Local
     : t("editor.play.whereScene", { scene: String(sceneNumber(frame.scene)), frame: String(frame.frame) });
 }
 
-/** The one sentence of what the robot did, no more certain than it confirmed. */
+/** The one sentence of what the robot did, no more certain than it confirmed (kept as messages: see said.ts). */
 export function playResultNotice(
   result: PlayOutcome,
   from: number,
   to: number,
   locale: Locale = "en",
 ): Notice {
-  const t = translator(editorMessages, locale);
   if (result.outcome === "finished") {
     const silent = result.readBack?.silent ?? [];
-    const text = t("editor.play.played", {
-      scenes: scenesText(from, to, locale),
+    const played = said(editorMessages, "editor.play.played", {
+      scenes: inEveryLanguage((l) => scenesText(from, to, l)),
       frames: String(result.framesSent),
-      time: secondsText(result.durationMs, locale),
+      time: inEveryLanguage((l) => secondsText(result.durationMs, l)),
     });
     const ids = { ids: silent.join(", ") };
     return silent.length === 0
-      ? { tone: "ok", text }
-      : {
-          tone: "warning",
-          text: `${text} ${silent.length === 1 ? t("editor.play.silentOne", ids) : t("editor.play.silentMany", ids)}`,
-        };
+      ? noticeOf("ok", locale, [played])
+      : noticeOf("warning", locale, [
+          played,
+          said(editorMessages, silent.length === 1 ? "editor.play.silentOne" : "editor.play.silentMany", ids),
+        ]);
   }
   if (result.framesSent === 0 || !result.lastFrame) {
-    return { tone: "info", text: t("editor.play.stoppedBefore") };
+    return noticeOf("info", locale, [said(editorMessages, "editor.play.stoppedBefore")]);
   }
-  return { tone: "info", text: t("editor.play.stoppedAt", { where: whereText(result.lastFrame, locale) }) };
+  const last = result.lastFrame;
+  const where = inEveryLanguage((l) => whereText(last, l));
+  return noticeOf("info", locale, [said(editorMessages, "editor.play.stoppedAt", { where })]);
 }
 
 /** What the servos hold after a failed play (the device layer's `TetheredPlayError.holds`). */
 export type PlayHolds = "nothing-sent" | "last-frame" | "unknown";
 
-/** Play failed: how far it got and the state the robot is in (the error's own message follows). */
+/** Play failed: how far it got and the state the robot is in (the error's own message follows), as a message. */
+export function playFailureSaid(
+  holds: PlayHolds,
+  last: { scene: number; frame: number } | undefined,
+  direct: boolean,
+): Said {
+  const say = (key: KeysWithoutParams<typeof editorMessages>) => said(editorMessages, key);
+  switch (holds) {
+    case "nothing-sent":
+      return say(direct ? "editor.play.notStartedDirect" : "editor.play.notStartedNormal");
+    case "last-frame": {
+      if (!last) return say(direct ? "editor.play.failedDirect" : "editor.play.failedNormal");
+      const where = { where: inEveryLanguage((l) => whereText(last, l)) };
+      return direct
+        ? said(editorMessages, "editor.play.failedAfterDirect", where)
+        : said(editorMessages, "editor.play.failedAfterNormal", where);
+    }
+    case "unknown":
+      return last
+        ? said(editorMessages, "editor.play.failedAfterUnknown", {
+            where: inEveryLanguage((l) => whereText(last, l)),
+          })
+        : say("editor.play.failedUnknown");
+  }
+}
+
+/** Play failed: how far it got and the state the robot is in, in `locale`. */
 export function playFailureText(
   holds: PlayHolds,
   last: { scene: number; frame: number } | undefined,
   direct: boolean,
   locale: Locale = "en",
 ): string {
-  const t = translator(editorMessages, locale);
-  switch (holds) {
-    case "nothing-sent":
-      return direct ? t("editor.play.notStartedDirect") : t("editor.play.notStartedNormal");
-    case "last-frame": {
-      if (!last) return direct ? t("editor.play.failedDirect") : t("editor.play.failedNormal");
-      const where = { where: whereText(last, locale) };
-      return direct ? t("editor.play.failedAfterDirect", where) : t("editor.play.failedAfterNormal", where);
-    }
-    case "unknown":
-      return last
-        ? t("editor.play.failedAfterUnknown", { where: whereText(last, locale) })
-        : t("editor.play.failedUnknown");
-  }
+  return wordOf(playFailureSaid(holds, last, direct), locale);
 }

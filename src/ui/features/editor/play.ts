@@ -5,18 +5,22 @@
  */
 import { RbcCancelledError, RbcDisconnectedError, RbcNotConnectedError } from "../../../device/errors.ts";
 import { TetheredPlayError } from "../../../device/tethered-play.ts";
+import type { Locale } from "../../../i18n/locale.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { type Motion, MotionError } from "../../../motion/index.ts";
+import { type Notice, noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
-import { errorMessage, technicalDetail } from "../../error-text.ts";
+import { technicalDetail } from "../../error-text.ts";
+import { errorSaid } from "../../failure-notice.ts";
 import { focusSoon } from "../../focus.ts";
+import { said } from "../../said.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
 import { servosTaken, stopActivity } from "../connection/actions.ts";
 import type { EditorHost } from "./host.ts";
 import { liveOf, type PlayChoice, type PlayProgress, patchPlay, patchTeachIn } from "./live-state.ts";
 import { editorMessages } from "./messages.ts";
-import { type PlayHolds, playFailureText, playRange, playResultNotice, playSpan } from "./play-model.ts";
-import { refusalText } from "./refusal-text.ts";
+import { type PlayHolds, playFailureSaid, playRange, playResultNotice, playSpan } from "./play-model.ts";
+import { refusalWords } from "./refusal-text.ts";
 
 /** The play of this connection: aborted when the connection ends. */
 export class PlayControl implements Controller {
@@ -55,19 +59,25 @@ export function chosenRange(ctx: AppContext, host: EditorHost): { from: number; 
 export function askPlay(ctx: AppContext, host: EditorHost): void {
   const state = ctx.store.get();
   if (!ctx.session.current || liveOf(state).play.running) return;
-  const t = translator(editorMessages, state.locale);
   const { from, to } = chosenRange(ctx, host);
   try {
     const { frames, durationMs } = playSpan(host.doc, from, to);
     patchPlay(ctx.store, { confirming: { from, to, frames, durationMs }, notice: undefined });
     focusSoon("cancel-play");
   } catch (e) {
-    const reason = e instanceof MotionError ? refusalText(e, t) : errorMessage(e, t.locale);
-    patchPlay(ctx.store, {
-      confirming: undefined,
-      notice: { tone: "danger", text: t("editor.play.notSent", { reason }), detail: technicalDetail(e) },
-    });
+    patchPlay(ctx.store, { confirming: undefined, notice: notSentNotice(state.locale, e) });
   }
+}
+
+/** "Not sent: …": the motion core's refusal (or another error) kept in every language, the detail apart. */
+function notSentNotice(locale: Locale, e: unknown): Notice {
+  const reason = e instanceof MotionError ? refusalWords(e) : errorSaid(e);
+  return noticeOf(
+    "danger",
+    locale,
+    [said(editorMessages, "editor.play.notSent", { reason })],
+    technicalDetail(e),
+  );
 }
 
 export function cancelPlay(ctx: AppContext): void {
@@ -156,11 +166,19 @@ export async function confirmPlay(ctx: AppContext, host: EditorHost): Promise<vo
       });
     } else {
       const { holds, lastFrame } = failure(e, last);
-      const text =
+      const notice =
         e instanceof MotionError
-          ? t("editor.play.notSent", { reason: refusalText(e, t) })
-          : `${playFailureText(connected ? holds : "unknown", lastFrame, client.mode === "direct", t.locale)} ${errorMessage(e, t.locale)}`;
-      patchPlay(store, { running: undefined, notice: { tone: "danger", text, detail: technicalDetail(e) } });
+          ? notSentNotice(t.locale, e)
+          : noticeOf(
+              "danger",
+              t.locale,
+              [
+                playFailureSaid(connected ? holds : "unknown", lastFrame, client.mode === "direct"),
+                errorSaid(e),
+              ],
+              technicalDetail(e),
+            );
+      patchPlay(store, { running: undefined, notice });
     }
   } finally {
     if (control.abort === abort) control.abort = undefined;

@@ -8,8 +8,10 @@ import {
   setDuration,
 } from "../../../motion/index.ts";
 import type { AppContext } from "../../context.ts";
-import { edit, editorWords, selectedScene, whole } from "./actions.ts";
-import type { EditorKey } from "./messages.ts";
+import { said } from "../../said.ts";
+import { edit, editorWords, labelled, selectedScene, whole } from "./actions.ts";
+import { editorNotice } from "./editor-notice.ts";
+import { type EditorKey, type EditorTranslator, editorMessages } from "./messages.ts";
 import { TypedValueError } from "./refusal-text.ts";
 import { editorOf, isDetached, patchEditor, setDetached } from "./state.ts";
 
@@ -29,7 +31,7 @@ export function joinSelected(ctx: AppContext): void {
   if (edit(ctx, (doc) => joinScene(doc, at.k), t("editor.label.join", where), { field: "join" })) {
     patchEditor(ctx.store, (s) => ({
       ...setDetached(s, at.k, false),
-      notice: { tone: "ok", text: t("editor.joined", where) },
+      notice: editorNotice(ctx, "ok", said(editorMessages, "editor.joined", where)),
     }));
   }
 }
@@ -51,7 +53,9 @@ export function mirrorSelected(ctx: AppContext, mode: MirrorMode): void {
       field: "mirror",
     })
   ) {
-    patchEditor(ctx.store, { notice: { tone: "ok", text: t("editor.mirrored", words) } });
+    const how = said(editorMessages, MIRROR_WORDS[mode]);
+    const mirrored = said(editorMessages, "editor.mirrored", { scene: String(k), how });
+    patchEditor(ctx.store, { notice: editorNotice(ctx, "ok", mirrored) });
   }
 }
 
@@ -66,8 +70,8 @@ export function copyPoseFrom(ctx: AppContext, from: number): void {
   });
   patchEditor(ctx.store, {
     notice: changed
-      ? { tone: "ok", text: t("editor.copied", words) }
-      : { tone: "info", text: t("editor.copyUnchanged", words) },
+      ? editorNotice(ctx, "ok", said(editorMessages, "editor.copied", words))
+      : editorNotice(ctx, "info", said(editorMessages, "editor.copyUnchanged", words)),
   });
 }
 
@@ -94,15 +98,18 @@ export function retimeFromForm(ctx: AppContext, r: RetimeRequest): void {
     return retime(doc, factor, range);
   };
   const words = { scene: String(k), value: typed };
-  const label =
+  const { label, what } = labelled(ctx, (w: EditorTranslator) =>
     r.mode === "duration"
       ? r.scope === "scene"
-        ? t("editor.label.retimeSceneTo", words)
-        : t("editor.label.retimeMotionTo", words)
+        ? w("editor.label.retimeSceneTo", words)
+        : w("editor.label.retimeMotionTo", words)
       : r.scope === "scene"
-        ? t("editor.label.retimeSceneBy", words)
-        : t("editor.label.retimeMotionBy", words);
+        ? w("editor.label.retimeSceneBy", words)
+        : w("editor.label.retimeMotionBy", words),
+  );
   if (edit(ctx, change, label, { field: "retime", text: typed })) {
-    patchEditor(ctx.store, { notice: { tone: "ok", text: t("editor.done", { what: label }) } });
+    patchEditor(ctx.store, {
+      notice: editorNotice(ctx, "ok", said(editorMessages, "editor.done", { what })),
+    });
   }
 }

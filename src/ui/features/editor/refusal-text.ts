@@ -1,6 +1,7 @@
-import { formatDecimal } from "../../../i18n/translate.ts";
+import { formatDecimal, translator } from "../../../i18n/translate.ts";
 import { MotionError, type MotionErrorFacts } from "../../../motion/index.ts";
-import type { EditorKey, EditorTranslator } from "./messages.ts";
+import { inEveryLanguage, type LocalText } from "../../said.ts";
+import { type EditorKey, type EditorTranslator, editorMessages } from "./messages.ts";
 
 /**
  * A refused edit in the panel's language. The motion core refuses with a `MotionError`: an English sentence, a
@@ -110,4 +111,12 @@ function byRule(t: EditorTranslator, f: MotionErrorFacts, what: string | undefin
 export function refusalText(e: MotionError, t: EditorTranslator, what?: string): string {
   if (t.locale === "en" || e instanceof TypedValueError) return e.message;
   return byRule(t, e.facts, what) ?? t(CODE_TEXT[e.code]);
+}
+
+/**
+ * A refusal in every language (`refusalText` for each), for a notice kept as a message: it follows a language
+ * switch. `what` names what was being set, in every language.
+ */
+export function refusalWords(e: MotionError, what?: LocalText): LocalText {
+  return inEveryLanguage((locale) => refusalText(e, translator(editorMessages, locale), what?.[locale]));
 }

@@ -1,8 +1,7 @@
 import { saveMotion } from "../../../motion/index.ts";
 import type { AppContext } from "../../context.ts";
-import { errorMessage, technicalDetail } from "../../error-text.ts";
 import { saveRestampedCopy } from "../motions/restamp/restamp-save.ts";
-import { editorWords } from "./actions.ts";
+import { saveFailedNotice } from "./document-actions.ts";
 import { motionFileName } from "./file-name.ts";
 import { docOf, editorOf, patchEditor } from "./state.ts";
 
@@ -14,17 +13,13 @@ import { docOf, editorOf, patchEditor } from "./state.ts";
 export async function restampDocument(ctx: AppContext, serial: string): Promise<void> {
   const doc = docOf(editorOf(ctx.store.get()));
   if (!doc) return;
-  const t = editorWords(ctx);
   let text: string;
   try {
     text = saveMotion(doc);
   } catch (e) {
-    const why = errorMessage(e, t.locale);
-    patchEditor(ctx.store, {
-      notice: { tone: "danger", text: t("editor.doc.saveFailed", { why }), detail: technicalDetail(e) },
-    });
+    patchEditor(ctx.store, { notice: saveFailedNotice(ctx, e) });
     return;
   }
-  const notice = await saveRestampedCopy(text, motionFileName(doc.name), serial, t.locale);
+  const notice = await saveRestampedCopy(text, motionFileName(doc.name), serial, ctx.store.get().locale);
   patchEditor(ctx.store, { notice });
 }

@@ -14,6 +14,7 @@ import {
   undo,
 } from "../../../motion/index.ts";
 import type { AppState, Notice } from "../../app-state.ts";
+import type { Said } from "../../said.ts";
 import type { Store } from "../../store.ts";
 import type { BrokenDraft, DraftSummary } from "./drafts.ts";
 import type { EditorKey } from "./messages.ts";
@@ -59,8 +60,8 @@ export interface EditorState {
   starting?: boolean;
   /** When the document was last autosaved (epoch ms). */
   savedAt?: number;
-  /** Why the last autosave failed (drafts cannot be kept). */
-  saveProblem?: string;
+  /** Why the last autosave failed (drafts cannot be kept), worded when drawn. */
+  saveProblem?: Said;
   /** Refused edits, by field ("end:3", "frames", "retime"...). Cleared when the field is edited successfully. */
   problems: Readonly<Record<string, FieldProblem>>;
   /**

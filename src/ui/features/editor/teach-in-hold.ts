@@ -5,6 +5,7 @@
 import { RbcCancelledError, RbcTimeoutError } from "../../../device/errors.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { HUNO_SERVO_IDS } from "../../../protocol/servo-limits.ts";
+import { noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { errorNotice } from "../../error-text.ts";
 import { said } from "../../said.ts";
@@ -91,10 +92,11 @@ export async function endTeachIn(ctx: AppContext): Promise<void> {
   }
   if (held.stopped) {
     const stoppedNotice = holdNotice(held.held, held.silent, true, t.locale);
+    const sentences = [...(stoppedNotice.said ?? []), said(editorMessages, "editor.teach.staysOn")];
     patchTeachIn(store, {
       phase: "on",
       busy: undefined,
-      notice: { ...stoppedNotice, text: `${stoppedNotice.text} ${t("editor.teach.staysOn")}` },
+      notice: noticeOf(stoppedNotice.tone, t.locale, sentences),
     });
     return;
   }
@@ -109,15 +111,18 @@ export async function endTeachIn(ctx: AppContext): Promise<void> {
     });
     return;
   }
-  const heldText =
+  const heldSaid =
     held.held.length > 0 || held.silent.length > 0
-      ? `${holdNotice(held.held, held.silent, false, t.locale).text} `
-      : "";
-  const ended = held.silent.length > 0 ? t("editor.teach.ended") : t("editor.teach.endedHolding");
+      ? (holdNotice(held.held, held.silent, false, t.locale).said ?? [])
+      : [];
+  const ended = said(
+    editorMessages,
+    held.silent.length > 0 ? "editor.teach.ended" : "editor.teach.endedHolding",
+  );
   // `passive` keeps the servos that did not answer Hold (holdLimp removed the held ones): they may still be limp.
   patchTeachIn(store, {
     phase: "off",
     busy: undefined,
-    notice: { tone: held.silent.length > 0 ? "warning" : "ok", text: `${heldText}${ended}` },
+    notice: noticeOf(held.silent.length > 0 ? "warning" : "ok", t.locale, [...heldSaid, ended]),
   });
 }

@@ -3,12 +3,14 @@
  * become a scene's pose (the robot's zeros → the motion's), and the sentences that say what the robot confirmed
  * (in the language given; English unless given).
  */
+import type { KeysWithoutParams } from "../../../i18n/catalogue.ts";
 import type { Locale } from "../../../i18n/locale.ts";
 import { translator } from "../../../i18n/translate.ts";
 import type { Motion } from "../../../motion/index.ts";
 import { PLATFORM_PF2 } from "../../../motion/index.ts";
 import { HUNO_SERVO_IDS } from "../../../protocol/servo-limits.ts";
-import type { Notice } from "../../app-state.ts";
+import { type Notice, noticeOf } from "../../app-state.ts";
+import { inEveryLanguage, type LocalText, type Said, said } from "../../said.ts";
 import type { Limb } from "./live-state.ts";
 import { sceneNumber } from "./live-state.ts";
 import { type EditorKey, type EditorTranslator, editorMessages } from "./messages.ts";
@@ -96,16 +98,24 @@ export function idList(ids: readonly number[]): string {
   return parts.join(", ");
 }
 
-/** Joins sentences, each starting with a capital letter. */
-function sentences(parts: readonly string[]): string {
-  return parts.map((p) => p.charAt(0).toUpperCase() + p.slice(1)).join(" ");
-}
-
 /** "servo 3", "servos 0–4, 10" (Korean: "서보 3", "서보 0–4, 10"). */
 export function servosText(t: EditorTranslator, ids: readonly number[]): string {
   const list = { ids: idList(ids) };
   return ids.length === 1 ? t("editor.servosOne", list) : t("editor.servosMany", list);
 }
+
+/**
+ * The servos as a fact of a message, in every language: "Servos 0–4" where it starts the sentence, "servos
+ * 0–4" inside it.
+ */
+function servosFact(ids: readonly number[], atStart = true): LocalText {
+  return inEveryLanguage((l) => {
+    const text = servosText(translator(editorMessages, l), ids);
+    return atStart ? text.charAt(0).toUpperCase() + text.slice(1) : text;
+  });
+}
+
+const say = (key: KeysWithoutParams<typeof editorMessages>): Said => said(editorMessages, key);
 
 /** The chosen limbs in words: "the left arm", "the left leg and the right arm", "every servo". */
 export function limbsText(limbs: readonly Limb[], locale: Locale = "en"): string {
@@ -123,21 +133,20 @@ export function limpNotice(
   stopped = false,
   locale: Locale = "en",
 ): Notice {
-  const t = translator(editorMessages, locale);
-  const parts: string[] = [];
+  const parts: Said[] = [];
   if (confirmed.length > 0) {
-    const words = { servos: servosText(t, confirmed) };
-    parts.push(confirmed.length === 1 ? t("editor.teach.limpOne", words) : t("editor.teach.limpMany", words));
+    const words = { servos: servosFact(confirmed) };
+    const key = confirmed.length === 1 ? "editor.teach.limpOne" : "editor.teach.limpMany";
+    parts.push(said(editorMessages, key, words));
   }
   if (silent.length > 0) {
-    const words = { servos: servosText(t, silent) };
-    parts.push(
-      silent.length === 1 ? t("editor.teach.limpSilentOne", words) : t("editor.teach.limpSilentMany", words),
-    );
+    const words = { servos: servosFact(silent) };
+    const key = silent.length === 1 ? "editor.teach.limpSilentOne" : "editor.teach.limpSilentMany";
+    parts.push(said(editorMessages, key, words));
   }
-  if (stopped) parts.push(t("editor.teach.limpStopped"));
-  if (parts.length === 0) parts.push(t("editor.teach.noneMadeLimp"));
-  return { tone: silent.length > 0 || stopped ? "warning" : "ok", text: sentences(parts) };
+  if (stopped) parts.push(say("editor.teach.limpStopped"));
+  if (parts.length === 0) parts.push(say("editor.teach.noneMadeLimp"));
+  return noticeOf(silent.length > 0 || stopped ? "warning" : "ok", locale, parts);
 }
 
 /** A position read from the robot, by servo id. */
@@ -192,37 +201,33 @@ export function readNotice(
   zerosKnown: boolean,
   locale: Locale = "en",
 ): Notice {
-  const t = translator(editorMessages, locale);
   const read = [...reading.pose.keys()];
   const n = String(sceneNumber(scene));
-  const parts: string[] = [];
+  const parts: Said[] = [];
   parts.push(
     read.length === 0
-      ? t("editor.teach.readNothing", { scene: n })
-      : t("editor.teach.readDone", { servos: servosText(t, read), scene: n }),
+      ? said(editorMessages, "editor.teach.readNothing", { scene: n })
+      : said(editorMessages, "editor.teach.readDone", { servos: servosFact(read, false), scene: n }),
   );
   if (silent.length > 0) {
-    const words = { servos: servosText(t, silent) };
-    parts.push(
-      silent.length === 1 ? t("editor.teach.readSilentOne", words) : t("editor.teach.readSilentMany", words),
-    );
+    const words = { servos: servosFact(silent) };
+    const key = silent.length === 1 ? "editor.teach.readSilentOne" : "editor.teach.readSilentMany";
+    parts.push(said(editorMessages, key, words));
   }
   if (reading.converted.length > 0) {
-    parts.push(t("editor.teach.readConverted", { servos: servosText(t, reading.converted) }));
-  }
-  if (!zerosKnown) parts.push(t("editor.teach.readNoZeros"));
-  if (reading.notInMotion.length > 0) {
-    const words = { servos: servosText(t, reading.notInMotion) };
     parts.push(
-      reading.notInMotion.length === 1
-        ? t("editor.teach.notInMotionOne", words)
-        : t("editor.teach.notInMotionMany", words),
+      said(editorMessages, "editor.teach.readConverted", { servos: servosFact(reading.converted, false) }),
     );
   }
-  return {
-    tone: read.length === 0 ? "danger" : silent.length > 0 || !zerosKnown ? "warning" : "ok",
-    text: sentences(parts),
-  };
+  if (!zerosKnown) parts.push(say("editor.teach.readNoZeros"));
+  if (reading.notInMotion.length > 0) {
+    const words = { servos: servosFact(reading.notInMotion) };
+    const key =
+      reading.notInMotion.length === 1 ? "editor.teach.notInMotionOne" : "editor.teach.notInMotionMany";
+    parts.push(said(editorMessages, key, words));
+  }
+  const tone = read.length === 0 ? "danger" : silent.length > 0 || !zerosKnown ? "warning" : "ok";
+  return noticeOf(tone, locale, parts);
 }
 
 /** One servo that "Hold" moved: where it was read and where it was told to hold (its safe range). */
@@ -239,27 +244,26 @@ export function holdNotice(
   stopped = false,
   locale: Locale = "en",
 ): Notice {
-  const t = translator(editorMessages, locale);
-  const parts: string[] = [];
+  const parts: Said[] = [];
   const ids = held.map((h) => h.id);
   if (held.length > 0) {
-    const words = { servos: servosText(t, ids) };
-    parts.push(held.length === 1 ? t("editor.teach.heldOne", words) : t("editor.teach.heldMany", words));
+    const words = { servos: servosFact(ids) };
+    parts.push(
+      said(editorMessages, held.length === 1 ? "editor.teach.heldOne" : "editor.teach.heldMany", words),
+    );
   }
   for (const h of held) {
     if (h.held !== h.read) {
-      parts.push(
-        t("editor.teach.heldClamped", { id: String(h.id), read: String(h.read), held: String(h.held) }),
-      );
+      const facts = { id: String(h.id), read: String(h.read), held: String(h.held) };
+      parts.push(said(editorMessages, "editor.teach.heldClamped", facts));
     }
   }
   if (silent.length > 0) {
-    const words = { servos: servosText(t, silent) };
-    parts.push(
-      silent.length === 1 ? t("editor.teach.holdSilentOne", words) : t("editor.teach.holdSilentMany", words),
-    );
+    const words = { servos: servosFact(silent) };
+    const key = silent.length === 1 ? "editor.teach.holdSilentOne" : "editor.teach.holdSilentMany";
+    parts.push(said(editorMessages, key, words));
   }
-  if (stopped) parts.push(t("editor.teach.holdStopped"));
-  if (parts.length === 0) parts.push(t("editor.teach.nothingToHold"));
-  return { tone: silent.length > 0 || stopped ? "warning" : "ok", text: sentences(parts) };
+  if (stopped) parts.push(say("editor.teach.holdStopped"));
+  if (parts.length === 0) parts.push(say("editor.teach.nothingToHold"));
+  return noticeOf(silent.length > 0 || stopped ? "warning" : "ok", locale, parts);
 }

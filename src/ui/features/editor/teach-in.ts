@@ -8,15 +8,17 @@ import { translator } from "../../../i18n/translate.ts";
 import { MotionError, PLATFORM_PF2, setPose } from "../../../motion/index.ts";
 import { HUNO_SERVO_IDS } from "../../../protocol/servo-limits.ts";
 import type { SimulatedRbc } from "../../../sim/simulated-rbc.ts";
+import { noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
-import { errorMessage, errorNotice, technicalDetail } from "../../error-text.ts";
+import { errorNotice, technicalDetail } from "../../error-text.ts";
+import { errorSaid } from "../../failure-notice.ts";
 import { focusSoon } from "../../focus.ts";
 import { said } from "../../said.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
 import type { EditorHost } from "./host.ts";
 import { type Limb, liveOf, patchTeachIn, sceneNumber, teachInOn } from "./live-state.ts";
 import { type EditorTranslator, editorMessages } from "./messages.ts";
-import { refusalText } from "./refusal-text.ts";
+import { refusalWords } from "./refusal-text.ts";
 import { choosesAll, chosenIds, limpNotice, readNotice, sceneReading } from "./teach-in-model.ts";
 
 /** The demo robot's servos, watched while teach-in is on (the hand moves them; the 3D view follows). */
@@ -103,9 +105,12 @@ export async function startTeachIn(ctx: AppContext): Promise<void> {
     patchTeachIn(store, {
       phase: "off",
       notice: errorNotice(
-        session.current?.mode === "direct"
-          ? t("editor.teach.startFailedDirect")
-          : t("editor.teach.startFailedNormal"),
+        said(
+          editorMessages,
+          session.current?.mode === "direct"
+            ? "editor.teach.startFailedDirect"
+            : "editor.teach.startFailedNormal",
+        ),
         e,
         t.locale,
       ),
@@ -116,10 +121,9 @@ export async function startTeachIn(ctx: AppContext): Promise<void> {
   patchTeachIn(store, {
     phase: "on",
     robotZeros,
-    notice: {
-      tone: limp ? "warning" : "info",
-      text: limp ? t("editor.teach.onAllLimp") : t("editor.teach.on"),
-    },
+    notice: noticeOf(limp ? "warning" : "info", t.locale, [
+      said(editorMessages, limp ? "editor.teach.onAllLimp" : "editor.teach.on"),
+    ]),
   });
   const sim = session.demoSim;
   if (sim) {
@@ -131,11 +135,13 @@ export async function startTeachIn(ctx: AppContext): Promise<void> {
     if (silent.length > 0) {
       const ids = { ids: silent.join(", ") };
       patchTeachIn(store, {
-        notice: {
-          tone: "warning",
-          text:
-            silent.length === 1 ? t("editor.teach.onSilentOne", ids) : t("editor.teach.onSilentMany", ids),
-        },
+        notice: noticeOf("warning", t.locale, [
+          said(
+            editorMessages,
+            silent.length === 1 ? "editor.teach.onSilentOne" : "editor.teach.onSilentMany",
+            ids,
+          ),
+        ]),
       });
     }
   } catch (e) {
@@ -214,17 +220,20 @@ export async function makeChosenLimp(ctx: AppContext, confirmed = false): Promis
       patchTeachIn(store, (x) => ({
         busy: undefined,
         passive: merge(x.passive, done),
-        notice: {
-          tone: "danger",
-          text: t("editor.teach.limpFailed", {
-            error: errorMessage(e, t.locale),
-            after:
-              done.length > 0
-                ? t("editor.teach.wentLimp", { ids: done.join(", ") })
-                : t("editor.teach.noneWentLimp"),
-          }),
-          detail: technicalDetail(e),
-        },
+        notice: noticeOf(
+          "danger",
+          t.locale,
+          [
+            said(editorMessages, "editor.teach.limpFailed", {
+              error: errorSaid(e),
+              after:
+                done.length > 0
+                  ? said(editorMessages, "editor.teach.wentLimp", { ids: done.join(", ") })
+                  : said(editorMessages, "editor.teach.noneWentLimp"),
+            }),
+          ],
+          technicalDetail(e),
+        ),
       }));
       return;
     }
@@ -252,9 +261,8 @@ export function poseByHand(ctx: AppContext, id: number, position: number): void 
   const sim = ctx.session.demoSim;
   if (!sim) return;
   if (!sim.poseByHand(id, position)) {
-    patchTeachIn(ctx.store, {
-      notice: { tone: "warning", text: words(ctx)("editor.teach.holdsTorque", { id: String(id) }) },
-    });
+    const holds = said(editorMessages, "editor.teach.holdsTorque", { id: String(id) });
+    patchTeachIn(ctx.store, { notice: noticeOf("warning", ctx.store.get().locale, [holds]) });
   }
 }
 
@@ -284,7 +292,9 @@ export async function readIntoScene(ctx: AppContext, host: EditorHost): Promise<
       busy: undefined,
       notice:
         e instanceof MotionError
-          ? { tone: "danger", text: t("editor.teach.sceneUnchanged", { reason: refusalText(e, t) }) }
+          ? noticeOf("danger", t.locale, [
+              said(editorMessages, "editor.teach.sceneUnchanged", { reason: refusalWords(e) }),
+            ])
           : errorNotice(said(editorMessages, "editor.teach.readFailed", { scene: n }), e, t.locale),
     });
   }

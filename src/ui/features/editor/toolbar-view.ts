@@ -1,6 +1,7 @@
 import { html, nothing, type TemplateResult } from "lit-html";
 import { translator } from "../../../i18n/translate.ts";
 import { canRedo, canUndo, type Motion, redoLabel, undoLabel } from "../../../motion/index.ts";
+import { wordOf } from "../../said.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
 import { formatSeconds } from "../motions/plot-data.ts";
@@ -17,7 +18,7 @@ import { problemText } from "./view-parts.ts";
 /** The editor's toolbar: New, Open (picker or drop), Save, the motion's name, Undo and Redo, the draft's state. */
 
 function draftStatus(t: EditorTranslator, s: EditorState): TemplateResult | string {
-  if (s.saveProblem) return html`<span class="text-danger">${s.saveProblem}</span>`;
+  if (s.saveProblem) return html`<span class="text-danger">${wordOf(s.saveProblem, t.locale)}</span>`;
   if (s.savedAt !== undefined) {
     return t("editor.draftKept", { time: formatSavedAt(s.savedAt, Date.now(), t.locale) });
   }
