@@ -1,7 +1,6 @@
 import type { ScanResult } from "../../../device/servo-doctor/index.ts";
-import { translator } from "../../../i18n/translate.ts";
 import type { AppContext } from "../../context.ts";
-import { said } from "../../said.ts";
+import { type Said, said } from "../../said.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
 import { stopActivity } from "../connection/actions.ts";
 import { doctorMessages } from "./messages.ts";
@@ -80,8 +79,9 @@ function runOf(ctx: AppContext): DoctorRun {
   return ctx.session.connectionScope.get(DOCTOR_RUN);
 }
 
-function label(ctx: AppContext): string {
-  return translator(doctorMessages, ctx.store.get().locale)("doctor.title");
+/** The Servo check's name while it works (worded in the language of the moment). */
+function label(_ctx: AppContext): Said {
+  return said(doctorMessages, "doctor.title");
 }
 
 /** A failure of the operation: the robot refusing direct mode (not idle) offers Stop beside it. */

@@ -127,7 +127,7 @@ export async function confirmPlay(ctx: AppContext, host: EditorHost): Promise<vo
   patchPlay(store, { confirming: undefined, running: { from, to }, notice: undefined });
   try {
     const result = await session.run(
-      t("editor.play.run"),
+      said(editorMessages, "editor.play.run"),
       (c) =>
         c.playTethered(doc, {
           range: { from, to },

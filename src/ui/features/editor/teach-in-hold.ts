@@ -29,7 +29,7 @@ async function holdLimp(ctx: AppContext): Promise<{ held: HeldServo[]; silent: n
   let stopped = false;
   try {
     await session.run(
-      translator(editorMessages, state.locale)("editor.teach.run.hold"),
+      said(editorMessages, "editor.teach.run.hold"),
       async (c) => {
         for (const id of ids) {
           try {
@@ -102,7 +102,9 @@ export async function endTeachIn(ctx: AppContext): Promise<void> {
   }
   session.connectionScope.peek(TEACH_IN_WATCH)?.end();
   try {
-    await session.run(t("editor.teach.run.end"), (c) => c.exitDirectMode(), { packetMode: false });
+    await session.run(said(editorMessages, "editor.teach.run.end"), (c) => c.exitDirectMode(), {
+      packetMode: false,
+    });
   } catch (e) {
     patchTeachIn(store, {
       phase: "off",

@@ -91,7 +91,7 @@ export async function startTeachIn(ctx: AppContext): Promise<void> {
   const readZeros = robotZeros === undefined && !(client.mode === "direct" && state.connection.limp === true);
   try {
     await session.run(
-      t("editor.teach.run.start"),
+      said(editorMessages, "editor.teach.run.start"),
       async (c) => {
         if (readZeros) {
           if (c.mode === "direct") await c.exitDirectMode();
@@ -156,7 +156,7 @@ async function readPositions(
   ctx: AppContext,
 ): Promise<{ reads: { id: number; position: number }[]; silent: number[] }> {
   const { servos, silent } = await ctx.session.run(
-    words(ctx)("editor.teach.run.read"),
+    said(editorMessages, "editor.teach.run.read"),
     (c) => c.servos.readAll(HUNO_SERVO_IDS),
     { packetMode: false },
   );
@@ -201,7 +201,7 @@ export async function makeChosenLimp(ctx: AppContext, confirmed = false): Promis
   let stopped = false;
   try {
     await session.run(
-      t("editor.teach.run.limp"),
+      said(editorMessages, "editor.teach.run.limp"),
       async (c) => {
         for (const id of ids) {
           try {

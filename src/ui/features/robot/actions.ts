@@ -1,4 +1,3 @@
-import { translator } from "../../../i18n/translate.ts";
 import type { AppContext } from "../../context.ts";
 import { errorNotice } from "../../error-text.ts";
 import { said } from "../../said.ts";
@@ -10,11 +9,10 @@ export async function refreshDeviceInfo(ctx: AppContext): Promise<void> {
   if (store.get().device.loading || !session.current) return;
   // Its failure is kept as a message, worded when drawn (it follows a language switch).
   const { locale } = store.get();
-  const t = translator(robotMessages, locale);
   store.update((s) => ({ device: { ...s.device, loading: true, notice: undefined } }));
   try {
     // Firmware and serial number were read when connecting; what changes is read here.
-    const info = await session.run(t("robot.readingInfo"), async (client) => {
+    const info = await session.run(said(robotMessages, "robot.readingInfo"), async (client) => {
       const errorCode = await client.readErrorCode();
       const freeMotion = await client.readAvailableMemory("motion");
       const freeAction = await client.readAvailableMemory("action");

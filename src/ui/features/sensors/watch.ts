@@ -124,9 +124,11 @@ export class SensorWatch implements Controller {
   /** Leaves servo control (after Limp or the Servos view) and resumes. */
   async leaveDirectAndResume(): Promise<void> {
     if (!this.shown) return;
-    const { locale, t } = this.words();
+    const { locale } = this.words();
     try {
-      await this.ctx.session.run(t("sensors.leavingServoControl"), (client) => client.exitDirectMode());
+      await this.ctx.session.run(said(sensorsMessages, "sensors.leavingServoControl"), (client) =>
+        client.exitDirectMode(),
+      );
       patchSensors(this.ctx.store, { pausedWhy: undefined });
       await this.resume();
     } catch (e) {

@@ -107,10 +107,12 @@ function dropMoves(ctx: AppContext): void {
 export async function startServoControl(ctx: AppContext): Promise<void> {
   const { store, session } = ctx;
   if (!store.get().acks?.servos || servosOf(store.get()).busy) return;
-  const { locale, t } = wordsOf(ctx);
+  const { locale } = wordsOf(ctx);
   patchServos(store, { busy: "entering", notice: undefined });
   try {
-    await session.run(t("servos.starting"), (client) => client.enterDirectMode(), { packetMode: false });
+    await session.run(said(servosMessages, "servos.starting"), (client) => client.enterDirectMode(), {
+      packetMode: false,
+    });
     patchServos(store, { busy: undefined });
   } catch (e) {
     patchServos(store, { busy: undefined, notice: failureNotice(say("servos.startFailed"), e, locale) });
@@ -121,11 +123,13 @@ export async function startServoControl(ctx: AppContext): Promise<void> {
 
 export async function leaveServoControl(ctx: AppContext): Promise<void> {
   const { store, session } = ctx;
-  const { locale, t } = wordsOf(ctx);
+  const { locale } = wordsOf(ctx);
   dropMoves(ctx);
   patchServos(store, { busy: "leaving", notice: undefined, confirmingPosture: false });
   try {
-    await session.run(t("servos.leaving"), (client) => client.exitDirectMode(), { packetMode: false });
+    await session.run(said(servosMessages, "servos.leaving"), (client) => client.exitDirectMode(), {
+      packetMode: false,
+    });
     patchServos(store, { busy: undefined, notice: servoNotice("info", locale, say("servos.ended")) });
   } catch (e) {
     patchServos(store, { busy: undefined, notice: failureNotice(say("servos.leaveFailed"), e, locale) });
@@ -135,11 +139,11 @@ export async function leaveServoControl(ctx: AppContext): Promise<void> {
 export async function readAllPositions(ctx: AppContext): Promise<void> {
   const { store, session } = ctx;
   if (session.current?.mode !== "direct") return;
-  const { locale, t } = wordsOf(ctx);
+  const { locale } = wordsOf(ctx);
   patchServos(store, { busy: "reading" });
   try {
     const { servos, silent } = await session.run(
-      t("servos.readingPositions"),
+      said(servosMessages, "servos.readingPositions"),
       (client) => client.servos.readAll(SERVO_IDS),
       { packetMode: false },
     );
@@ -224,13 +228,17 @@ export function setTorque(ctx: AppContext, id: number, torque: number): void {
 export async function basicPosture(ctx: AppContext): Promise<void> {
   const { store, session } = ctx;
   const speed = servosOf(store.get()).speed;
-  const { locale, t } = wordsOf(ctx);
+  const { locale } = wordsOf(ctx);
   dropMoves(ctx);
   patchServos(store, { busy: "posture", confirmingPosture: false, notice: undefined });
   try {
-    await session.run(t("servos.movingToPosture"), (client) => client.servos.basicPosture(speed), {
-      packetMode: false,
-    });
+    await session.run(
+      said(servosMessages, "servos.movingToPosture"),
+      (client) => client.servos.basicPosture(speed),
+      {
+        packetMode: false,
+      },
+    );
     servosTaken(ctx);
     patchServos(store, {
       busy: undefined,
