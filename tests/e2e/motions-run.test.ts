@@ -116,7 +116,7 @@ describe("motions view: running motions and sounds", () => {
     await context.close();
   });
 
-  it("says at once, beside the slot button pressed, that an empty download slot holds no motion (error 3)", async () => {
+  it("says at once, beside the slot button pressed, that the robot holds no motion under that number (error 3)", async () => {
     // A phone: the slot buttons are far below the top of the Run card there.
     const { page, context } = await app.newPage({ options: FAST, viewport: { width: 390, height: 844 } });
     await openTab(page, "Run");
@@ -136,7 +136,7 @@ describe("motions view: running motions and sounds", () => {
     const shownAt = await robotTimeWhenShown(
       page,
       '[data-testid="run-place-slots"]',
-      /download slot 20 holds no motion \(the robot reports error 3\)/,
+      /Motion 42 did not run: the robot holds no motion under that number \(it reports error 3\)/,
     );
     // Shown under the slot buttons, in view, and not at the top of the card.
     expect(await page.getByTestId("run-place-built-in").textContent().then(squash)).toBe("");
