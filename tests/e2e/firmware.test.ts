@@ -2,7 +2,7 @@ import { mkdir } from "node:fs/promises";
 import { join } from "node:path";
 import type { Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { firmwareHex } from "../support/hex.ts";
+import { firmwareHex, firmwareHexWithBadChecksum } from "../support/hex.ts";
 import { type AppHarness, ROOT, squash, startHarness, watchPage } from "./harness.ts";
 import "./rbc-test-globals.ts";
 import {
@@ -123,12 +123,10 @@ describe("Firmware view on the demo robot", () => {
     await openFirmwareOnDemo(page);
 
     // A bad file first: refused with the line to blame, nothing opened.
-    const lines = firmwareHex("2.50", 512).split("\r\n");
-    lines[2] = `${lines[2]!.slice(0, -2)}00`;
     await page.getByTestId("fw-file-input").setInputFiles({
       name: "broken.hex",
       mimeType: "text/plain",
-      buffer: Buffer.from(lines.join("\r\n")),
+      buffer: Buffer.from(firmwareHexWithBadChecksum(3)),
     });
     const problem = page.getByText(/broken\.hex is not a firmware file/);
     await problem.waitFor();
@@ -328,12 +326,10 @@ describe("in Korean (ko-KR)", () => {
       const { page, context } = await newLocalePage(app, "ko-KR", { options: { timeScale: 2 } });
       await openFirmwareOnDemo(page);
 
-      const lines = firmwareHex("2.50", 512).split("\r\n");
-      lines[2] = `${lines[2]!.slice(0, -2)}00`;
       await page.getByTestId("fw-file-input").setInputFiles({
         name: "broken.hex",
         mimeType: "text/plain",
-        buffer: Buffer.from(lines.join("\r\n")),
+        buffer: Buffer.from(firmwareHexWithBadChecksum(3)),
       });
       const problem = page.locator(".fw-file .notice");
       await problem.waitFor();

@@ -90,7 +90,8 @@ describe("Stop's and Limp's results are seen and announced however far down the 
       const question = page.locator("#limp-confirm");
       await question.waitFor();
       await expectInWindow(question, size);
-      expect(await page.evaluate(() => document.activeElement?.id)).toBe("cancel-limp");
+      // Focus moves to the question's Cancel when it is drawn (the next render): polled, not read once.
+      await expect.poll(() => page.evaluate(() => document.activeElement?.id)).toBe("cancel-limp");
       await expectStillAt(page, bottom);
       await question.getByRole("button", { name: "Limp", exact: true }).click();
       await result.filter({ hasText: "all 16 servos confirmed passive" }).waitFor();

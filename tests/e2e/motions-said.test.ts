@@ -1,6 +1,6 @@
 import type { Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { firmwareHex } from "../support/hex.ts";
+import { firmwareHexWithBadChecksum } from "../support/hex.ts";
 import {
   type AppHarness,
   connectRobot,
@@ -76,12 +76,10 @@ describe("Motions and Firmware messages made before a language switch follow it"
 
     // A firmware file problem: a checksum broken on line 3.
     await page.getByRole("link", { name: "Firmware" }).click();
-    const lines = firmwareHex("2.50", 512).split("\r\n");
-    lines[2] = `${lines[2]!.slice(0, -2)}00`;
     await page.getByTestId("fw-file-input").setInputFiles({
       name: "broken.hex",
       mimeType: "text/plain",
-      buffer: Buffer.from(lines.join("\r\n")),
+      buffer: Buffer.from(firmwareHexWithBadChecksum(3)),
     });
     const problem = page.getByTestId("firmware-view").locator(".notice--danger p").first();
     await problem.filter({ hasText: /broken\.hex is not a firmware file/ }).waitFor();

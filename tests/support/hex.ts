@@ -165,3 +165,10 @@ export async function makeBootloaderRig(
   await rig.connect();
   return rig;
 }
+
+/** `firmwareHex(version, size)` with the checksum of line `line` (1-based) made wrong: a file to refuse. */
+export function firmwareHexWithBadChecksum(line: number, version = "2.50", size = 512): string {
+  const lines = firmwareHex(version, size).split("\r\n");
+  lines[line - 1] = `${lines[line - 1]!.slice(0, -2)}00`;
+  return lines.join("\r\n");
+}

@@ -4,7 +4,7 @@ import { WebSerialTransport } from "../../src/link/index.ts";
 import { IntelHexError } from "../../src/protocol/intel-hex.ts";
 import { VirtualClock } from "../../src/shared/clock.ts";
 import { BootloaderRbc, MockSerialPort, SimulatedRbc } from "../../src/sim/index.ts";
-import { firmwareHex } from "../support/hex.ts";
+import { firmwareHex, firmwareHexWithBadChecksum } from "../support/hex.ts";
 
 /**
  * `RbcClient.updateFirmware`: the client's own method on the whole stack (RbcClient → WebSerialTransport →
@@ -65,10 +65,8 @@ describe("RbcClient.updateFirmware", () => {
     const r = await rig();
     await r.clock.run(r.client.runMotion(7));
     const sent = r.port.stats.bytesFromPc;
-    const lines = firmwareHex("2.50", 512).split("\r\n");
-    lines[3] = `${lines[3]!.slice(0, -2)}00`; // a wrong checksum on line 4
     const error = await r.fail(
-      r.client.updateFirmware(lines.join("\r\n"), { onAskPowerCycle: r.onAskPowerCycle }),
+      r.client.updateFirmware(firmwareHexWithBadChecksum(4), { onAskPowerCycle: r.onAskPowerCycle }),
     );
     expect(error).toBeInstanceOf(IntelHexError);
     expect(error).toMatchObject({ code: "checksum", line: 4 });
