@@ -123,7 +123,8 @@ export class RbcCancelledError extends RbcError {
   override name = "RbcCancelledError";
   /**
    * @param by What cancelled it, when that is known for certain (Stop's or Limp's own cancel of a waiting
-   *   download); undefined otherwise (an abort signal, a queued turn of an older epoch).
+   *   download, or of a turn queued before it: `RbcConnection.cancelQueued`); undefined otherwise (an abort
+   *   signal).
    */
   constructor(
     message = codeText("cancelled", "en"),

@@ -35,8 +35,7 @@ export async function runLimp(core: ClientCore): Promise<LimpResult> {
   const { c, activity, servos } = core;
   if (c.mode === "disconnected" || c.mode === "connecting") throw new RbcNotConnectedError();
   for (const play of core.plays) play.stop();
-  c.epoch++;
-  const epoch = c.epoch;
+  const epoch = c.cancelQueued("limp");
   // An upload ends as its own Cancel ends it; its clean-up (if any) runs before Limp's turn.
   const upload = activity.upload;
   if (upload) {

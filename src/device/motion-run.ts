@@ -1,4 +1,4 @@
-import { cancelledByLimpText, codeText } from "../i18n/outcomes/device.ts";
+import { cancelledByLimpText, codeText, motionNotStartedText } from "../i18n/outcomes/device.ts";
 import { BASIC_POSTURE_MOTION, downloadSlotOf } from "../protocol/catalog.ts";
 import { COMMANDS } from "../protocol/commands.ts";
 import { encodePacket } from "../protocol/packet.ts";
@@ -72,7 +72,10 @@ export async function runMotionReport(
           );
     if (options.ready) await options.ready();
     // Stop (or Limp) came during those reads (or the wait for the others): the motion is not started.
-    if (epoch !== c.epoch) throw new RbcCancelledError(`Motion ${motion} was not started: Stop came first.`);
+    if (epoch !== c.epoch) {
+      const by = c.cancelledBy(epoch);
+      throw new RbcCancelledError(motionNotStartedText(motion, by, "en"), by);
+    }
     c.requirePacketMode(COMMANDS.runMotion.name);
     const sent7Before = runs.sent7;
     // Busy before: the reply comes when the motion started elsewhere ends, which may take any time.

@@ -4,7 +4,7 @@
  * operations on top of it live in their own files (motion-run.ts, stop.ts, limp.ts, …), its options in
  * connection-options.ts.
  */
-import { codeText } from "../i18n/outcomes/device.ts";
+import { cancelledByText, codeText } from "../i18n/outcomes/device.ts";
 import { LinkError, type Transport, type TransportStatusEvent } from "../link/transport.ts";
 import { concatBytes } from "../protocol/bytes.ts";
 import { ABANDON_DOWNLOAD } from "../protocol/catalog.ts";
@@ -92,8 +92,10 @@ export class RbcConnection {
   readonly raw: RawChannel;
   private waiter: PacketWaiter | undefined;
   private queue: Promise<unknown> = Promise.resolve();
-  /** Bumped by Stop and Limp: queued operations from an older epoch are cancelled. */
+  /** Bumped by Stop and Limp (`cancelQueued`): queued operations from an older epoch are cancelled. */
   epoch = 0;
+  /** Which of Stop or Limp began each epoch after the first, so a cancelled turn can say which one it was. */
+  private readonly epochBy = new Map<number, "stop" | "limp">();
   private _state: ClientState = { mode: "disconnected", basicPostureConfirmed: false };
   subscription: { kind: SubscriptionKind; request: Uint8Array } | undefined;
   /**
@@ -263,7 +265,7 @@ export class RbcConnection {
    */
   exclusive<T>(fn: () => Promise<T>, epoch = this.epoch, { rearm = true } = {}): Promise<T> {
     const run = this.queue.then(async () => {
-      if (epoch !== this.epoch) throw new RbcCancelledError("Cancelled by Stop.");
+      if (epoch !== this.epoch) throw this.cancelledSince(epoch);
       try {
         return await fn();
       } finally {
@@ -272,6 +274,24 @@ export class RbcConnection {
     });
     this.queue = run.catch(() => {});
     return run;
+  }
+
+  /** Starts a new epoch for Stop or Limp: every turn queued under an older one is cancelled when it comes up. */
+  cancelQueued(by: "stop" | "limp"): number {
+    this.epoch++;
+    this.epochBy.set(this.epoch, by);
+    return this.epoch;
+  }
+
+  /** The error for a turn of `epoch` that Stop or Limp overtook: names the first of them after it. */
+  cancelledSince(epoch: number): RbcCancelledError {
+    const by = this.epochBy.get(epoch + 1) ?? "stop";
+    return new RbcCancelledError(cancelledByText(by, "en"), by);
+  }
+
+  /** Which of Stop or Limp began the first epoch after `epoch` (for a sentence of the operation it overtook). */
+  cancelledBy(epoch: number): "stop" | "limp" {
+    return this.epochBy.get(epoch + 1) ?? "stop";
   }
 
   /** One request of the table, queued behind everything before it (`exclusive`), with its reply decoded. */

@@ -1,3 +1,4 @@
+import { uploadCancelledByStopText } from "../i18n/outcomes/device.ts";
 import { BASIC_POSTURE_MOTION } from "../protocol/catalog.ts";
 import { COMMANDS } from "../protocol/commands.ts";
 import { probeBusy } from "./busy-probe.ts";
@@ -77,8 +78,7 @@ export async function runStop(core: ClientCore): Promise<StopActivityResult> {
   const plays = [...core.plays];
   for (const play of plays) play.stop();
   // Nothing queued starts after Stop: a motion or moves waiting their turn are cancelled, not sent.
-  c.epoch++;
-  const epoch = c.epoch;
+  const epoch = c.cancelQueued("stop");
   const upload = doing.kind === "upload" ? doing : undefined;
   const result: StopActivityResult = {
     uploadCancelled: upload !== undefined,
@@ -90,7 +90,7 @@ export async function runStop(core: ClientCore): Promise<StopActivityResult> {
   }
   // A download waits for the robot's acknowledgement of a chunk: end that wait now, as its Cancel would.
   if (upload && mode === "download")
-    c.failPending(new RbcCancelledError("Upload cancelled by Stop.", "stop"));
+    c.failPending(new RbcCancelledError(uploadCancelledByStopText("en"), "stop"));
   if (doing.kind === "sound") {
     const endsInMs = Math.max(0, doing.startedAt + doing.expectedMs - c.clock.now());
     result.sound = { number: doing.sound, endsInMs, confirmed: await doing.ended };

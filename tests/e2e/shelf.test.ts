@@ -117,6 +117,16 @@ describe("the robot's shelf on the demo robot", () => {
     expect(await text(dropped)).toBe(
       "Forgotten: motion 12 (RbcPanel_Wave). The robot's free memory (0 of 24,576 bytes in use) has no room for what was recorded: its memory was reset, or another program uploaded to it.",
     );
+    // Kept as a message, so a language switch rewords it (issue 21 item 6).
+    await page.getByLabel(/Language/).selectOption("ko");
+    await dropped
+      .filter({
+        hasText:
+          "기록에서 지웠어요: 모션 12번(RbcPanel_Wave). 로봇의 남은 메모리(24,576바이트 중 0바이트 사용)에는 기록된 모션이 들어갈 자리가 없어요.",
+      })
+      .waitFor();
+    await page.getByLabel(/언어|Language/).selectOption("en");
+    await dropped.getByText(/^Forgotten: motion 12 \(RbcPanel_Wave\)/).waitFor();
     await page.getByTestId("shelf-none").waitFor();
     expect(await demoMotionsHex(page)).toEqual([]);
     expect(await page.evaluate(() => window.__rbcDemoSim?.basicPostureDone)).toBe(false);

@@ -107,6 +107,25 @@ export function cancelledByLimpText(locale: Locale): string {
   return t(locale)("outcome.limp.cancelledBy");
 }
 
+/** What Stop or Limp does to the requests queued behind it (they had not started). */
+export function cancelledByText(by: "stop" | "limp", locale: Locale): string {
+  return t(locale)(by === "stop" ? "outcome.stop.cancelledBy" : "outcome.limp.cancelledBy");
+}
+
+/** Stop's end of an upload waiting for the robot's acknowledgement. */
+export function uploadCancelledByStopText(locale: Locale): string {
+  return t(locale)("outcome.stop.uploadCancelled");
+}
+
+/** A Run that Stop or Limp overtook during its checks: nothing was sent for it. */
+export function motionNotStartedText(motion: number, by: "stop" | "limp", locale: Locale): string {
+  const say = t(locale);
+  return say("outcome.motionNotStarted", {
+    motion,
+    by: say(by === "stop" ? "outcome.by.stop" : "outcome.by.limp"),
+  });
+}
+
 /** A move outside servo `id`'s safe range (docs/protocol.md §5); it was not sent. */
 export function servoRangeText(
   id: number,

@@ -103,6 +103,20 @@ export const deviceOutcomeMessages = defineMessages({
     en: "Cancelled by Limp: every servo is being made limp.",
     ko: "힘 빼기 때문에 취소했어요. 모든 서보의 힘을 빼고 있어요.",
   },
+  "outcome.stop.cancelledBy": {
+    en: "Cancelled by Stop: it had not started yet.",
+    ko: "정지 때문에 취소했어요. 아직 시작하지 않았던 일이에요.",
+  },
+  "outcome.stop.uploadCancelled": {
+    en: "Upload cancelled by Stop.",
+    ko: "정지 때문에 업로드를 취소했어요.",
+  },
+  "outcome.motionNotStarted": {
+    en: "Motion {motion} was not started: {by} came first.",
+    ko: "모션 {motion}번은 시작하지 않았어요. {by}이(가) 먼저 들어왔어요.",
+  },
+  "outcome.by.stop": { en: "Stop", ko: "정지" },
+  "outcome.by.limp": { en: "Limp", ko: "힘 빼기" },
   "outcome.servoRange": {
     en: "Servo {id} may only move within {min}-{max}; {position} was not sent.",
     ko: "서보 {id}번은 {min}-{max} 안에서만 움직일 수 있어요. {position}은(는) 보내지 않았어요.",

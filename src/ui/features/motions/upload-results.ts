@@ -159,11 +159,8 @@ export async function uploadSucceeded(
     patchMotions(store, (now) =>
       now.uploadResult === notice
         ? {
-            // The shelf words its own failure once (not kept as a message: see the report in issue 21).
-            uploadResult: noticeOf("warning", locale, [
-              ...sentences,
-              saidText(inEveryLanguage(() => notRecorded)),
-            ]),
+            // The shelf words its own failure, as a message worded when drawn.
+            uploadResult: noticeOf("warning", locale, [...sentences, notRecorded]),
           }
         : {},
     );

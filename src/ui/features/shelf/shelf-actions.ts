@@ -1,8 +1,9 @@
 import { imageHash, type RobotShelf } from "../../../device/shelf.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { MOTION_AREA_BYTES } from "../../../protocol/catalog.ts";
-import type { AppState, Notice } from "../../app-state.ts";
+import { type AppState, type Notice, noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
+import { inEveryLanguage, type Said, said } from "../../said.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
 import { motionsOf, patchMotions } from "../motions/state.ts";
 import { shelfMessages } from "./messages.ts";
@@ -124,20 +125,22 @@ export async function checkAgainst(ctx: AppContext, free: number): Promise<void>
   if (key === undefined) return;
   try {
     const check = await keeper(ctx).run((storage) => checkShelf(storage, key, free));
-    const t = translator(shelfMessages, ctx.store.get().locale);
+    const dropped = check.dropped;
     const notice: Notice | undefined =
-      check.dropped.length === 0
+      dropped.length === 0
         ? undefined
-        : {
-            tone: "warning",
-            text: t("shelf.dropped", {
-              motions: check.dropped
-                .map((s) => t("shelf.droppedOne", { number: s.motionNumber, name: s.name }))
-                .join(", "),
+        : noticeOf("warning", ctx.store.get().locale, [
+            said(shelfMessages, "shelf.dropped", {
+              motions: inEveryLanguage((l) => {
+                const t = translator(shelfMessages, l);
+                return dropped
+                  .map((s) => t("shelf.droppedOne", { number: s.motionNumber, name: s.name }))
+                  .join(", ");
+              }),
               used: check.usedBytes,
               size: MOTION_AREA_BYTES,
             }),
-          };
+          ]);
     showShelf(ctx, key, check.shelf, { checked: true, ...(notice ? { notice } : {}) });
     if (check.dropped.length > 0) {
       // Uploads of this connection into those slots are gone as well: the panel no longer offers them by name.
@@ -183,9 +186,10 @@ export function recordOnRobotShelf(ctx: AppContext, key: string, stored: StoredU
 
 /**
  * Records an upload on the connected robot's shelf and shows it. The upload stands whatever happens here: a
- * failure is returned as a sentence for the upload's notice.
+ * failure is returned as a message for the upload's notice (worded when drawn; the storage's own reason is its
+ * technical detail, as the browser gave it).
  */
-export async function recordShelf(ctx: AppContext, stored: StoredUpload): Promise<string | undefined> {
+export async function recordShelf(ctx: AppContext, stored: StoredUpload): Promise<Said | undefined> {
   const key = shelfKeyOf(ctx.store.get());
   if (key === undefined) return undefined;
   const recorded = recordOnRobotShelf(ctx, key, stored);
@@ -193,7 +197,6 @@ export async function recordShelf(ctx: AppContext, stored: StoredUpload): Promis
     showShelf(ctx, key, await recorded, { notice: undefined });
     return undefined;
   } catch (e) {
-    const t = translator(shelfMessages, ctx.store.get().locale);
-    return t("shelf.notRecorded", { why: e instanceof Error ? e.message : String(e) });
+    return said(shelfMessages, "shelf.notRecorded", { why: e instanceof Error ? e.message : String(e) });
   }
 }
