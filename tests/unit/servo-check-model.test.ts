@@ -7,6 +7,7 @@ import {
   type ServoReading,
   scanFindings,
 } from "../../src/device/servo-doctor/index.ts";
+import { findingText } from "../../src/i18n/outcomes/servos/servo-words.ts";
 import { servoFaultsOf } from "../../src/ui/features/doctor/demo-actions.ts";
 import {
   ALL_SERVO_IDS,
@@ -167,6 +168,15 @@ describe("the suggested id fix", () => {
       },
     );
     expect(suggestedFix(stopped)).toBeUndefined();
+    // A replacement at id 0 while joints 7 and 12 are both silent: which one it replaced is the owner's to say.
+    const twoSilent = scan(
+      huno((id) => (id === 0 ? garbled(0) : id === 7 || id === 12 ? silent(id) : undefined)),
+    );
+    expect(twoSilent.findings.map((f) => f.code)).toEqual(["servo-replacement"]);
+    expect(suggestedFix(twoSilent)).toBeUndefined();
+    expect(findingText(twoSilent.findings[0]!, "en")).toBe(
+      "Id 0 is answered by two servos and ids 7, 12 by none: a replacement servo still has the factory id 0, and more than one joint is silent. Unplug servo 0, then give the new servo the id of the joint it replaced (7 or 12) with the guided id fix; the scan cannot tell which.",
+    );
   });
 });
 

@@ -104,11 +104,17 @@ export function findingText(finding: Finding, locale: Locale): string {
     case "servo-duplicate":
       return tr("outcome.servo.finding.duplicate", { id: String(first) });
     case "servo-replacement": {
+      // Several silent joints: which one the new servo replaced is the owner's to say, not the scan's.
       const missing = finding.ids.slice(1);
-      return tr("outcome.servo.finding.replacement", {
-        missing: missing.join(", "),
-        first: String(missing[0] ?? "?"),
-      });
+      return missing.length > 1
+        ? tr("outcome.servo.finding.replacementOneOf", {
+            missing: missing.join(", "),
+            choices: `${missing.slice(0, -1).join(", ")}${tr("outcome.servo.or")}${missing.at(-1)}`,
+          })
+        : tr("outcome.servo.finding.replacement", {
+            missing: missing.join(", "),
+            first: String(missing[0] ?? "?"),
+          });
     }
     case "servo-high-load":
       return tr("outcome.servo.finding.highLoad", {

@@ -101,14 +101,17 @@ export function orderedFindings(findings: readonly Finding[]): Finding[] {
 
 /**
  * The id fix a scan suggests, to fill in the guided fix (the person still checks and confirms it): a replacement
- * servo at the factory id 0 should take the first silent id; else one servo answering at an id no HUNO joint has
+ * servo at the factory id 0 should take the silent joint's id when exactly one joint is silent (with several, which
+ * one it replaced is the owner's to say: nothing is suggested); else one servo answering at an id no HUNO joint has
  * (16-30) while exactly one joint is silent should take that joint's id. Otherwise none.
  */
 export function suggestedFix(result: ScanResult | undefined): { from: number; to: number } | undefined {
   if (!result || result.stopped) return undefined;
   const replacement = result.findings.find((f) => f.code === "servo-replacement");
-  const to = replacement?.ids[1];
-  if (to !== undefined) return { from: 0, to };
+  if (replacement) {
+    const [, to, other] = replacement.ids;
+    return to !== undefined && other === undefined ? { from: 0, to } : undefined;
+  }
   const missing = result.findings.filter((f) => f.code === "servo-missing").map((f) => f.ids[0] ?? 0);
   const strays = result.servos.filter((r) => r.status === "answered" && r.id >= HUNO_SERVO_COUNT);
   const [stray] = strays;
