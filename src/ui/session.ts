@@ -356,8 +356,9 @@ export class Session {
           mode: state.mode,
           platform: state.platform ?? current.platform,
           ...next,
-          // Leaving direct mode (or a download) ends the "all limp" state the top bar reports.
-          limp: state.mode === "direct" ? current.limp : false,
+          // Limp servos stay limp when the client leaves direct mode (docs/protocol.md §5: the leave sequence
+          // moves no servo); a motion (this panel's, Stop's 7 or one started elsewhere) drives them again.
+          limp: next.playing !== undefined || next.busy !== undefined ? false : current.limp,
         });
       }
     }

@@ -73,4 +73,28 @@ describe("the Editor's questions match what the robot will do", () => {
     expect(detail).not.toContain("every servo holds");
     await context.close();
   });
+
+  it("Teach-in after Limp and then Stop (which leaves servo control and moves no servo) still says every servo is limp", async () => {
+    const { page, context } = await app.newPage({ options: FAST });
+    await openEditorOnDemo(page);
+    await page.locator("#limp-button").click();
+    await page.locator("#confirm-limp").click();
+    await page.getByTestId("stop-banner").filter({ hasText: "limp" }).waitFor();
+    const allPassive = () =>
+      page.evaluate(() => window.__rbcDemoSim?.servos.slice(0, 16).every((s) => s.passive));
+    await expect.poll(allPassive).toBe(true);
+    await page.getByTestId("stop-banner").filter({ hasText: "all 16 servos confirmed passive" }).waitFor();
+    // Stop leaves direct mode (docs/protocol.md §5's leave sequence): no servo is commanded, so all stay limp.
+    await page.getByRole("button", { name: "Stop", exact: true }).click();
+    await expect.poll(() => page.evaluate(() => window.__rbcDemoSim?.directMode)).toBe(false);
+    expect(await allPassive()).toBe(true);
+    await showTab(page, "teach");
+    await page.locator("#start-teach-in").click();
+    const detail = page.getByTestId("teach-in-detail");
+    await expect
+      .poll(async () => squash(await detail.textContent()))
+      .toContain("Every servo is still limp from Limp (leaving servo control moved none of them)");
+    expect(squash(await detail.textContent())).not.toContain("hold their position");
+    await context.close();
+  });
 });

@@ -88,7 +88,7 @@ export async function stopActivity(ctx: AppContext): Promise<void> {
   if (!client) return;
   const now = session.clock.now();
   const stopping = store.get();
-  // Whether every servo was limp before: Stop changes no servo, but leaving direct mode clears the flag.
+  // Whether every servo was limp before: Stop's leave sequence moves no servo (a 7 it sends clears the flag).
   const limp = stopping.connection.limp === true;
   store.update({ limpAsked: false });
   const done = client.stopActivity().then(

@@ -26,7 +26,10 @@ export interface ConnectionState {
   robot?: RobotLabel;
   /** The client's mode once connected ("packet" normally, "direct" after Limp or for servo control). */
   mode?: ClientMode;
-  /** True after Limp made every servo passive, until the panel moves a servo or leaves direct mode. */
+  /**
+   * True after Limp made every servo passive, until the panel moves a servo or a motion plays (the panel's, or
+   * one the busy probe found). Leaving direct mode moves no servo, so it keeps the flag.
+   */
   limp?: boolean;
   /** Mirrored from the client: motion 7 has answered in this connection (the 7-first rule is satisfied). */
   basicPostureConfirmed?: boolean;

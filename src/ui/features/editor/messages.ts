@@ -624,6 +624,10 @@ export const editorMessages = defineMessages({
     en: "The servos keep doing what they do now: {limp} were made limp earlier and have not confirmed holding since, so they stay limp; {holding} hold their position until you make some limp.",
     ko: "서보는 지금 하던 대로 있어요. {limp}은(는) 전에 힘을 뺀 뒤 다시 힘을 준다고 확인하지 않아서 계속 힘이 빠져 있어요. {holding}은(는) 힘을 빼기 전까지 제자리를 유지해요.",
   },
+  "editor.teach.questionDetailLimpAfterLeaving": {
+    en: "Every servo is still limp from Limp (leaving servo control moved none of them) and stays limp until you press Hold: the robot cannot stand by itself.",
+    ko: "힘 빼기로 뺀 서보의 힘이 아직 모두 빠져 있어요(서보 제어를 끝내도 서보는 움직이지 않아요). 고정을 누를 때까지 그대로예요. 로봇은 혼자 서지 못해요.",
+  },
   "editor.teach.questionDetailLimp": {
     en: "The controller stays in servo control. Every servo is limp now (Limp was pressed) and stays limp until you press Hold: the robot cannot stand by itself.",
     ko: "컨트롤러는 서보 제어를 계속해요. 지금 모든 서보의 힘이 빠져 있고(힘 빼기를 눌렀어요) 고정을 누를 때까지 그대로예요. 로봇은 혼자 서지 못해요.",

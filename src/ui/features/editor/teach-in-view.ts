@@ -43,7 +43,13 @@ export function escapeTo(cancel: () => void): (e: KeyboardEvent) => void {
  * no servo hold: servos made limp earlier stay limp (all of them after Limp; those this teach-in knows of).
  */
 function questionDetail(ctx: ViewContext, w: EditorTranslator, t: TeachInState): string {
-  if (ctx.state.connection.limp) return w("editor.teach.questionDetailLimp");
+  if (ctx.state.connection.limp) {
+    return w(
+      ctx.state.connection.mode === "direct"
+        ? "editor.teach.questionDetailLimp"
+        : "editor.teach.questionDetailLimpAfterLeaving",
+    );
+  }
   const limp = t.passive;
   if (limp.length === 0) return w("editor.teach.questionDetail");
   const holding = HUNO_SERVO_IDS.filter((id) => !limp.includes(id));
