@@ -19,7 +19,7 @@ const STANDARD_ZEROS: readonly number[] = [
   125, 202, 162, 66, 108, 124, 48, 88, 184, 142, 90, 40, 125, 161, 210, 127,
 ];
 
-/** Joint ids (docs/protocol.md §5; src/protocol/servo-limits.ts HUNO_JOINT_NAMES). */
+/** Joint ids (docs/protocol.md §4; their names: src/i18n/joint-names/). */
 const J = {
   lHipRoll: 0,
   lHipPitch: 1,

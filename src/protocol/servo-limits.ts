@@ -1,4 +1,9 @@
-/** Per-joint data of the HUNO's 16 servos, ids 0-15 (docs/protocol.md §5). Index = servo id. */
+import { jointOf } from "../i18n/joint-names/joint-name.ts";
+
+/**
+ * Per-joint data of the HUNO's 16 servos, ids 0-15 (docs/protocol.md §5). Index = servo id. The joints' names are
+ * the catalogue's (src/i18n/joint-names/); `HUNO_JOINT_NAMES` is in huno-joint-names.ts.
+ */
 
 /** Number of servos on a stock HUNO (ids 0-15). */
 export const HUNO_SERVO_COUNT = 16;
@@ -19,26 +24,6 @@ export const HUNO_BASIC_POSTURE: readonly number[] = [
   125, 179, 199, 88, 108, 126, 72, 49, 163, 141, 51, 47, 49, 199, 205, 205,
 ];
 
-/** Short joint names, from the robot's own point of view (docs/protocol.md §4): 0-4 left leg, 5-9 right leg, 10-12 left arm, 13-15 right arm. */
-export const HUNO_JOINT_NAMES: readonly string[] = [
-  "Left hip roll",
-  "Left hip pitch",
-  "Left knee",
-  "Left ankle pitch",
-  "Left ankle roll",
-  "Right hip roll",
-  "Right hip pitch",
-  "Right knee",
-  "Right ankle pitch",
-  "Right ankle roll",
-  "Left shoulder pitch",
-  "Left shoulder roll",
-  "Left elbow",
-  "Right shoulder pitch",
-  "Right shoulder roll",
-  "Right elbow",
-];
-
 /** The safe range of a HUNO servo id, or undefined for ids above 15 (no published limits). */
 export function safeRange(id: number): { min: number; max: number } | undefined {
   const min = SAFE_LOWER[id];
@@ -46,8 +31,11 @@ export function safeRange(id: number): { min: number; max: number } | undefined 
   return min === undefined || max === undefined ? undefined : { min, max };
 }
 
-/** "servo 3 (Left ankle pitch)" for HUNO ids, "servo 20" otherwise. */
+/**
+ * "servo 3 (Left ankle pitch)" for HUNO ids, "servo 20" otherwise: English, for the protocol's messages. The joint
+ * is the joint-name catalogue's (src/i18n/joint-names/, docs/protocol.md §4), looked up when called.
+ */
 export function servoLabel(id: number): string {
-  const name = HUNO_JOINT_NAMES[id];
+  const name = jointOf(id, "en");
   return name === undefined ? `servo ${id}` : `servo ${id} (${name})`;
 }

@@ -207,7 +207,7 @@ describe.each(VIEWPORTS)("motion editor at $name", ({ width, height }) => {
     await typeInto(page, "motion-name", "Wave test");
     await expectText(page, "editor-save-as", "as Wave-test.rbm");
 
-    // Scene 0: raise the right shoulder by typing.
+    // Scene 0: raise the left shoulder (servo 10, the robot's own left arm) by typing.
     await typeInto(page, "end-10", "100");
     await expectText(page, "editor-undo", "Undo: set Left shoulder pitch (end of scene 0)");
 
@@ -501,9 +501,9 @@ describe("in Korean (ko-KR)", () => {
         const problem = page.getByTestId("field-problem");
         await problem.waitFor();
         expect(squash(await problem.textContent())).toBe(
-          "왼쪽 발목 피치(서보 3)의 끝 위치에는 0에서 254 사이의 정수만 쓸 수 있어요. 입력한 값: 300.",
+          "왼쪽 발목 앞뒤(서보 3)의 끝 위치에는 0에서 254 사이의 정수만 쓸 수 있어요. 입력한 값: 300.",
         );
-        expect(await page.getByLabel("왼쪽 발목 피치 (서보 3), 끝 위치", { exact: true }).inputValue()).toBe(
+        expect(await page.getByLabel("왼쪽 발목 앞뒤 (서보 3), 끝 위치", { exact: true }).inputValue()).toBe(
           "300",
         );
         if (viewport === DESKTOP) {
@@ -521,7 +521,7 @@ describe("in Korean (ko-KR)", () => {
         await typeInto(page, "end-3", "");
         await problem.filter({ hasText: "써 주세요" }).waitFor();
         expect(squash(await problem.textContent())).toBe(
-          "왼쪽 발목 피치(서보 3)의 끝 위치에는 0에서 254 사이의 정수를 써 주세요.",
+          "왼쪽 발목 앞뒤(서보 3)의 끝 위치에는 0에서 254 사이의 정수를 써 주세요.",
         );
 
         // Scene: its fields, continuity, and frames closer than the RBC plays them.

@@ -216,7 +216,7 @@ describe("the robot in 3D, on the demo robot", () => {
     await page.getByRole("button", { name: "I understand: the robot is supported" }).click();
     await page.getByTestId("enter-direct").click();
     await page.getByText("Read all 16 servos.").waitFor();
-    // Servo 10 (right shoulder pitch) from 51 to 140: the arm goes forward, and the drawing follows.
+    // Servo 10 (left shoulder pitch) from 51 to 140: the arm goes forward, and the drawing follows.
     const frames = Number(await attr(view, "data-frames"));
     await page.locator("#servo-10").fill("140");
     await page.locator("#servo-10").press("Enter");

@@ -482,7 +482,7 @@ describe("in Korean (ko-KR)", () => {
         await group.getByText("16개 모두 보기").click();
         const first = group.locator(".issues li").first();
         expect(await text(first)).toBe(
-          "장면 0에서 서보 0번(왼쪽 엉덩이 롤)의 끝 위치는 125인데, 장면 1에서는 127에서 시작해서 서보가 튀어요.",
+          "장면 0에서 서보 0번(왼쪽 엉덩이 좌우)의 끝 위치는 125인데, 장면 1에서는 127에서 시작해서 서보가 튀어요.",
         );
         expect(await first.locator('[lang="en"]').count()).toBe(0);
         const edited = page.getByTestId("motion-file").filter({ hasText: "Edited.rbm" });
@@ -647,14 +647,14 @@ describe("in Korean (ko-KR): the motion file checker", () => {
         const jumps = card("Jumpy.rbm").getByTestId("warning-group");
         await jumps.getByText("16개 모두 보기").click();
         expect(await text(jumps.locator(".issues li").first())).toBe(
-          "장면 0에서 서보 0번(왼쪽 엉덩이 롤)의 끝 위치는 125인데, 장면 1에서는 127에서 시작해서 서보가 튀어요.",
+          "장면 0에서 서보 0번(왼쪽 엉덩이 좌우)의 끝 위치는 125인데, 장면 1에서는 127에서 시작해서 서보가 튀어요.",
         );
         const odd = card("Odd.rbm");
         for (const summary of await odd.locator(".warning-details summary").all()) await summary.click();
         const said = await texts(odd.locator(".warning-details .issues li"));
         expect(said).toContainEqual(
           expect.stringMatching(
-            /^장면 0에서 서보 0번\(왼쪽 엉덩이 롤\)이 안전 범위\(\d+-174\) 밖인 254 위치로 가요\.$/,
+            /^장면 0에서 서보 0번\(왼쪽 엉덩이 좌우\)이 안전 범위\(\d+-174\) 밖인 254 위치로 가요\.$/,
           ),
         );
         expect(said).toContainEqual(
@@ -664,7 +664,7 @@ describe("in Korean (ko-KR): the motion file checker", () => {
         );
         expect(said).toContain("10번 필드 값이 5인데, Motionbuilder는 항상 2(으)로 써요.");
         expect(said).toContainEqual(
-          expect.stringMatching(/^장면 0에서 서보 0번\(왼쪽 엉덩이 롤\)의 끝 위치는 254인데/),
+          expect.stringMatching(/^장면 0에서 서보 0번\(왼쪽 엉덩이 좌우\)의 끝 위치는 254인데/),
         );
 
         // Nothing is left in English: no sentence marked as English, no English sentence unmarked.

@@ -130,7 +130,7 @@ describe("item 1: left and right are the robot's own (docs/protocol.md §4)", ()
       const expected =
         lang === "en"
           ? { 0: "Left hip roll", 5: "Right hip roll", 10: "Left shoulder pitch", 15: "Right elbow" }
-          : { 0: "왼쪽 엉덩이 롤", 5: "오른쪽 엉덩이 롤", 10: "왼쪽 어깨 피치", 15: "오른쪽 팔꿈치" };
+          : { 0: "왼쪽 엉덩이 좌우", 5: "오른쪽 엉덩이 좌우", 10: "왼쪽 어깨 앞뒤", 15: "오른쪽 팔꿈치" };
 
       await go(page, "zeros");
       await page.locator("#zero-0").waitFor();

@@ -147,7 +147,7 @@ describe("Servo check on the demo robot", () => {
     expect(await status(page, 0)).toBe("answered");
     expect(await status(page, 7)).toBe("silent");
     expect(await findings(page)).toEqual([
-      "Servo 7 (right knee) does not answer: check its cable and the one before it in the chain.",
+      "Servo 7 (Right knee) does not answer: check its cable and the one before it in the chain.",
     ]);
 
     // The fix asks once, then says what it read after.
@@ -264,7 +264,7 @@ describe("Servo check on the demo robot", () => {
     await simulateFault(page, "loaded", 4, "loaded servo, servo 4");
     await scanNow(page, /Scanned 16 ids/);
     const [finding] = await findings(page);
-    expect(finding).toMatch(/^Servo 4 \(left ankle roll\) carries a high load at rest \(\d+\)/);
+    expect(finding).toMatch(/^Servo 4 \(Left ankle roll\) carries a high load at rest \(\d+\)/);
     const mark = page.locator('[data-testid=servo-figure] g[data-servo="4"]');
     expect(await mark.getAttribute("class")).toContain("mark--high-load");
     await mark.click();
@@ -290,7 +290,7 @@ describe("Servo check on the demo robot", () => {
     await result.waitFor();
     expect(await text(result)).toMatch(
       new RegExp(
-        `^Servo 4 \\(left ankle roll\\) did not follow the wiggle \\(±5 from ${before}, at the lowest torque\\): it made \\d+% of the swing; highest load \\d+\\.$`,
+        `^Servo 4 \\(Left ankle roll\\) did not follow the wiggle \\(±5 from ${before}, at the lowest torque\\): it made \\d+% of the swing; highest load \\d+\\.$`,
       ),
     );
     expect(await axeProblems(page, { within: ".doctor-view" })).toEqual([]);

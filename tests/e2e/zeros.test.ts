@@ -309,8 +309,8 @@ describe("in Korean (ko-KR)", () => {
           "변경",
         ]);
         // Servo 3 is the robot's own left ankle pitch ("Left ankle pitch" above).
-        expect(await page.getByLabel("왼쪽 발목 피치", { exact: true }).inputValue()).toBe("65");
-        const slider = page.getByLabel("왼쪽 발목 피치 (서보 3) 슬라이더, 51–81");
+        expect(await page.getByLabel("왼쪽 발목 앞뒤", { exact: true }).inputValue()).toBe("65");
+        const slider = page.getByLabel("왼쪽 발목 앞뒤 (서보 3) 슬라이더, 51–81");
         expect(await slider.getAttribute("type")).toBe("range");
         expect(await intro(page)).toBe(
           "로봇은 모션을 재생할 때마다 각 서보의 영점을 더해요. '영점 백업'은 로봇의 지금 영점을 이 브라우저에 보관하고 파일로도 저장해요. 나중에 어느 쪽으로든 복원할 수 있어요. 편집 표의 값은 로봇에서 가져왔어요.",

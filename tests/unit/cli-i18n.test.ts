@@ -144,8 +144,8 @@ describe.concurrent("rbc in Korean", () => {
     expect(lines[0]).toBe("로봇 8958899989309의 영점 위치 (데모 로봇):");
     expect(lines[1]).toBe("  서보  관절                영점  기준  차이  허용 범위  공장");
     // Servo 0 is the robot's own left hip (tests/unit/cli-zeros-table.test.ts: "Left hip roll").
-    expect(lines[2]).toBe("     0  왼쪽 엉덩이 롤       124   125    -1    110-140   124");
-    expect(lines[7]).toBe("     5  오른쪽 엉덩이 롤     125   124    +1    109-139   125");
+    expect(lines[2]).toBe("     0  왼쪽 엉덩이 좌우     124   125    -1    110-140   124");
+    expect(lines[7]).toBe("     5  오른쪽 엉덩이 좌우   125   124    +1    109-139   125");
     expect(lines[17]).toBe("    15  오른쪽 팔꿈치        126   127    -1    112-142   126");
     expect(ko.stdout).toContain("기준: RBC가 쓰기를 할 때마다 비교하는 표예요.");
     expect(ko.stdout).toContain("목록으로: 124,202,162,65,108,125,46,88,184,142,90,40,125,161,210,126");
@@ -246,7 +246,7 @@ describe.concurrent("rbc in Korean", () => {
     expect(two.code).toBe(1);
     expect(two.stdout.split("\n")).toEqual(
       expect.arrayContaining([
-        "  오류: (서보 3) 서보 3번(왼쪽 발목 피치)의 영점 위치 값이 300인데, 위치는 0부터 254까지예요.",
+        "  오류: (서보 3) 서보 3번(왼쪽 발목 앞뒤)의 영점 위치 값이 300인데, 위치는 0부터 254까지예요.",
         `  오류: (장면 0) ${interval}.`,
       ]),
     );

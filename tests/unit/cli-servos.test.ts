@@ -28,7 +28,7 @@ describe("rbc servos scan", () => {
       {
         code: "servo-missing",
         ids: [7],
-        message: "Servo 7 (right knee) does not answer: check its cable and the one before it in the chain.",
+        message: "Servo 7 (Right knee) does not answer: check its cable and the one before it in the chain.",
       },
     ]);
   });
@@ -40,8 +40,8 @@ describe("rbc servos scan", () => {
     expect(json.servos[3]).toEqual({ id: 3, status: "garbled", bytes: [0, 0, 88] });
     expect(json.findings.map((f: { code: string }) => f.code)).toEqual(["servo-duplicate"]);
     const human = await runInProcess(["servos", "scan", "--demo"], variant("--servo-duplicate 3"));
-    expect(human.stdout).toMatch(/^ {3}3 {2}left ankle pitch {6}garbled \(00 00 58\)$/m);
-    expect(human.stdout).toMatch(/^ {3}4 {2}left ankle roll {7}answered {17}108 {5}0$/m);
+    expect(human.stdout).toMatch(/^ {3}3 {2}Left ankle pitch {6}garbled \(00 00 58\)$/m);
+    expect(human.stdout).toMatch(/^ {3}4 {2}Left ankle roll {7}answered {17}108 {5}0$/m);
     expect(human.stdout).toContain("Id 3 is answered by two servos at once");
   });
 
@@ -66,7 +66,7 @@ describe("rbc servos scan", () => {
     const r = await runInProcess(["servos", "scan", "--demo", "--lang", "ko"], variant("--servo-loaded 4"));
     expect(r.code).toBe(0);
     expect(r.stdout).toMatch(/ID\s+관절\s+상태\s+위치\s+부하/);
-    expect(r.stdout).toContain("서보 4번(왼쪽 발목 옆)이 쉬고 있는데도 부하가 높아요 (180)");
+    expect(r.stdout).toContain("서보 4번(왼쪽 발목 좌우)이 쉬고 있는데도 부하가 높아요 (180)");
   });
 
   it("bad --ids: a usage error (exit 2), nothing sent", async () => {
@@ -104,18 +104,16 @@ describe("rbc servos set-id, info, wiggle", () => {
   it("wiggle 4 on a loaded servo: not followed, exit 1", async () => {
     const r = await runInProcess(["servos", "wiggle", "4", "--yes", "--demo"], variant("--servo-loaded 4"));
     expect(r.code).toBe(1);
-    expect(r.stdout).toContain("Servo 4 (left ankle roll) did not follow the wiggle");
+    expect(r.stdout).toContain("Servo 4 (Left ankle roll) did not follow the wiggle");
   });
 });
 
 describe("the servo doctor's words", () => {
-  it("name servos 0-15 as HUNO_JOINT_NAMES does (the robot's own left and right), in both languages", async () => {
-    const { HUNO_JOINT_NAMES } = await import("../../src/protocol/servo-limits.ts");
-    const { jointText } = await import("../../src/i18n/outcomes/servos/servo-words.ts");
-    expect(HUNO_JOINT_NAMES.map((_, id) => jointText(id, "en"))).toEqual(
-      HUNO_JOINT_NAMES.map((n) => n.toLowerCase()),
-    );
-    expect(jointText(7, "ko")).toBe("오른쪽 무릎");
-    expect(jointText(16, "en")).toBeUndefined();
+  it("name servos 0-15 by the joint-name catalogue (the robot's own left and right), in both languages", async () => {
+    const { servoText } = await import("../../src/i18n/outcomes/servos/servo-words.ts");
+    expect(servoText(7, "en")).toBe("Servo 7 (Right knee)");
+    expect(servoText(7, "ko")).toBe("서보 7번(오른쪽 무릎)");
+    expect(servoText(10, "ko")).toBe("서보 10번(왼쪽 어깨 앞뒤)");
+    expect(servoText(16, "en")).toBe("Servo 16");
   });
 });

@@ -199,13 +199,13 @@ describe("a motion file's issues in Korean", () => {
       "장면 0의 프레임 간격이 10ms예요 (200ms / 프레임 20개). RBC에는 20ms 이상이 필요해요. 프레임 수를 줄여 주세요.",
     ]);
     expect(korean(issuesOf(edit(WAVE, [recordField(W, 1, 10, 2), "060"])), "rbm-scene-jump")).toEqual([
-      "장면 0에서 서보 10번(왼쪽 어깨 피치)의 끝 위치는 160인데, 장면 1에서는 60에서 시작해서 서보가 튀어요.",
+      "장면 0에서 서보 10번(왼쪽 어깨 앞뒤)의 끝 위치는 160인데, 장면 1에서는 60에서 시작해서 서보가 튀어요.",
     ]);
     expect(korean(issuesOf(edit(WAVE, [servoField(3, 5), "300"])), "rbm-position")).toEqual([
-      "서보 3번(왼쪽 발목 피치)의 영점 위치 값이 300인데, 위치는 0부터 254까지예요.",
+      "서보 3번(왼쪽 발목 앞뒤)의 영점 위치 값이 300인데, 위치는 0부터 254까지예요.",
     ]);
     expect(korean(issuesOf(edit(WAVE, [recordField(W, 1, 4, 3), "255"])), "rbm-position")).toEqual([
-      "장면 1에서 서보 4번(왼쪽 발목 롤)의 끝 위치 값이 255인데, 위치는 0부터 254까지예요.",
+      "장면 1에서 서보 4번(왼쪽 발목 좌우)의 끝 위치 값이 255인데, 위치는 0부터 254까지예요.",
     ]);
     const long = edit(WAVE, [sceneField(W, 0, 3), "10"], [sceneField(W, 0, 4), "12000"]);
     expect(korean(issuesOf(long), "rbm-long-scene")).toEqual([

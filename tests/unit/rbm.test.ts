@@ -1,6 +1,7 @@
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
 import { ProtocolError } from "../../src/protocol/errors.ts";
+import { HUNO_JOINT_NAMES } from "../../src/protocol/huno-joint-names.ts";
 import {
   motionDurationMs,
   parseRbm,
@@ -10,12 +11,7 @@ import {
   serializeRbm,
   validateRbm,
 } from "../../src/protocol/rbm.ts";
-import {
-  HUNO_BASIC_POSTURE,
-  HUNO_JOINT_NAMES,
-  SAFE_LOWER,
-  SAFE_UPPER,
-} from "../../src/protocol/servo-limits.ts";
+import { HUNO_BASIC_POSTURE, SAFE_LOWER, SAFE_UPPER } from "../../src/protocol/servo-limits.ts";
 import { EXAMPLE_NAMES, exampleText } from "../data/project-data.ts";
 
 // The project's own motions (examples/, MIT). Checks on the third-party Motionbuilder samples are in

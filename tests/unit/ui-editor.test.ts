@@ -351,16 +351,16 @@ describe("editor state", () => {
 
   it("applies an edit as one undo step, with its label", () => {
     const s = started();
-    const out = applyEdit(s, (d) => setPosition(d, 0, 2, 150), "set Right knee", { field: "end:2" });
+    const out = applyEdit(s, (d) => setPosition(d, 0, 2, 150), "set Left knee", { field: "end:2" });
     expect(out.changed).toBe(true);
     expect(out.state.history?.present.scenes[0]?.servos[2]?.end).toBe(150);
-    expect(out.state.history?.label).toBe("set Right knee");
+    expect(out.state.history?.label).toBe("set Left knee");
     expect(out.state.history?.undoCount).toBe(1);
   });
 
   it("puts a refused edit's message next to its field and changes nothing; a good edit clears it", () => {
     const s = started();
-    const out = applyEdit(s, (d) => setPosition(d, 0, 2, 300), "set Right knee", {
+    const out = applyEdit(s, (d) => setPosition(d, 0, 2, 300), "set Left knee", {
       field: "end:2",
       text: "300",
     });
@@ -371,7 +371,7 @@ describe("editor state", () => {
       text: "300",
       message: "Scene 0: the end position of servo 2 must be a whole number from 0 to 254, not 300.",
     });
-    const fixed = applyEdit(out.state, (d) => setPosition(d, 0, 2, 200), "set Right knee", {
+    const fixed = applyEdit(out.state, (d) => setPosition(d, 0, 2, 200), "set Left knee", {
       field: "end:2",
     });
     expect(fixed.state.problems).toEqual({});
@@ -521,11 +521,11 @@ describe("the editor in Korean", () => {
 
   it("says a refused value from the core's rule and values, and keeps the core's sentence in English", () => {
     const value = refused(() => setPosition(newMotion(), 0, 2, 300));
-    const what = ko("editor.what.end", { joint: "오른쪽 무릎", id: "2" });
+    const what = ko("editor.what.end", { joint: "왼쪽 무릎", id: "2" });
     expect(refusalText(value, ko, what)).toBe(
-      "오른쪽 무릎(서보 2)의 끝 위치에는 0에서 254 사이의 정수만 쓸 수 있어요. 입력한 값: 300.",
+      "왼쪽 무릎(서보 2)의 끝 위치에는 0에서 254 사이의 정수만 쓸 수 있어요. 입력한 값: 300.",
     );
-    expect(refusalText(value, en, "The end position of Right knee (servo 2)")).toBe(
+    expect(refusalText(value, en, "The end position of Left knee (servo 2)")).toBe(
       "Scene 0: the end position of servo 2 must be a whole number from 0 to 254, not 300.",
     );
     const name = refused(() => setMotionName(newMotion(), "인사"));
@@ -577,14 +577,14 @@ describe("the editor in Korean", () => {
 
   it("puts a refusal next to its field in the words it is given", () => {
     const s = startDocument(initialEditor(), newMotion(), "d-1");
-    const out = applyEdit(s, (d) => setPosition(d, 0, 2, 300), "오른쪽 무릎 설정", {
+    const out = applyEdit(s, (d) => setPosition(d, 0, 2, 300), "왼쪽 무릎 설정", {
       field: "end:2",
       text: "300",
-      word: (e) => refusalText(e, ko, "오른쪽 무릎(서보 2)의 끝 위치"),
+      word: (e) => refusalText(e, ko, "왼쪽 무릎(서보 2)의 끝 위치"),
     });
     expect(out.state.problems["end:2"]).toEqual({
       text: "300",
-      message: "오른쪽 무릎(서보 2)의 끝 위치에는 0에서 254 사이의 정수만 쓸 수 있어요. 입력한 값: 300.",
+      message: "왼쪽 무릎(서보 2)의 끝 위치에는 0에서 254 사이의 정수만 쓸 수 있어요. 입력한 값: 300.",
     });
   });
 

@@ -133,23 +133,6 @@ export const commandMessages = defineMessages({
     ko: "{file}을(를) 복원해요 ({savedAt}에 로봇 {robot}에서 저장함).",
   },
 
-  "cmd.joint.rightHipRoll": { en: "Right hip roll", ko: "오른쪽 엉덩이 롤" },
-  "cmd.joint.rightHipPitch": { en: "Right hip pitch", ko: "오른쪽 엉덩이 피치" },
-  "cmd.joint.rightKnee": { en: "Right knee", ko: "오른쪽 무릎" },
-  "cmd.joint.rightAnklePitch": { en: "Right ankle pitch", ko: "오른쪽 발목 피치" },
-  "cmd.joint.rightAnkleRoll": { en: "Right ankle roll", ko: "오른쪽 발목 롤" },
-  "cmd.joint.leftHipRoll": { en: "Left hip roll", ko: "왼쪽 엉덩이 롤" },
-  "cmd.joint.leftHipPitch": { en: "Left hip pitch", ko: "왼쪽 엉덩이 피치" },
-  "cmd.joint.leftKnee": { en: "Left knee", ko: "왼쪽 무릎" },
-  "cmd.joint.leftAnklePitch": { en: "Left ankle pitch", ko: "왼쪽 발목 피치" },
-  "cmd.joint.leftAnkleRoll": { en: "Left ankle roll", ko: "왼쪽 발목 롤" },
-  "cmd.joint.rightShoulderPitch": { en: "Right shoulder pitch", ko: "오른쪽 어깨 피치" },
-  "cmd.joint.rightShoulderRoll": { en: "Right shoulder roll", ko: "오른쪽 어깨 롤" },
-  "cmd.joint.rightElbow": { en: "Right elbow", ko: "오른쪽 팔꿈치" },
-  "cmd.joint.leftShoulderPitch": { en: "Left shoulder pitch", ko: "왼쪽 어깨 피치" },
-  "cmd.joint.leftShoulderRoll": { en: "Left shoulder roll", ko: "왼쪽 어깨 롤" },
-  "cmd.joint.leftElbow": { en: "Left elbow", ko: "왼쪽 팔꿈치" },
-
   "cmd.upload.fileRefused": {
     en: "{file}: {reason}. Nothing was sent.",
     ko: "{file}: {reason}. 아무것도 보내지 않았어요.",

@@ -10,11 +10,11 @@ import {
   WIGGLE_COUNTS,
   wiggleServo,
 } from "../../device/servo-doctor/index.ts";
+import { jointOf } from "../../i18n/joint-names/joint-name.ts";
 import type { Locale } from "../../i18n/locale.ts";
 import {
   findingText,
   infoStoppedText,
-  jointText,
   parameterNameText,
   parameterValueText,
   readingStatusText,
@@ -71,7 +71,7 @@ export function scanTable(result: ScanResult, locale: Locale): string[] {
   const s = result.servos;
   return alignColumns([
     { header: t("cmd.servos.head.id"), align: "right", cells: s.map((r) => String(r.id)) },
-    { header: t("cmd.servos.head.joint"), align: "left", cells: s.map((r) => jointText(r.id, locale) ?? "") },
+    { header: t("cmd.servos.head.joint"), align: "left", cells: s.map((r) => jointOf(r.id, locale) ?? "") },
     {
       header: t("cmd.servos.head.status"),
       align: "left",

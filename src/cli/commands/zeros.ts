@@ -2,6 +2,7 @@ import { resolve } from "node:path";
 import { RbcCancelledError } from "../../device/errors.ts";
 import { type SafeZeroWrite, ZeroBackupError, ZeroWriteFailedError } from "../../device/index.ts";
 import type { ZeroWriteResult } from "../../device/types.ts";
+import { jointOf } from "../../i18n/joint-names/joint-name.ts";
 import type { Locale } from "../../i18n/locale.ts";
 import { translator } from "../../i18n/translate.ts";
 import { formatDateTime } from "../../i18n/units.ts";
@@ -32,7 +33,6 @@ import {
   writeBackupFile,
 } from "../zeros-files.ts";
 import { commandMessages } from "./messages.ts";
-import { jointName } from "./zeros-words.ts";
 
 const OPTIONS = {
   "backup-dir": { type: "string" },
@@ -87,7 +87,7 @@ export function zerosTable(zeros: readonly number[], locale: Locale = "en"): str
   };
   const lines = alignColumns([
     { header: t("cmd.zeros.column.servo"), align: "right", cells: ids.map(String) },
-    { header: t("cmd.zeros.column.joint"), align: "left", cells: ids.map((id) => jointName(id, locale)) },
+    { header: t("cmd.zeros.column.joint"), align: "left", cells: ids.map((id) => jointOf(id, locale) ?? "") },
     { header: t("cmd.zeros.column.zero"), align: "right", cells: zeros.map(String) },
     {
       header: t("cmd.zeros.column.reference"),

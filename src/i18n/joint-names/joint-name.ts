@@ -5,7 +5,7 @@ import { jointMessages } from "./messages.ts";
 
 /**
  * The HUNO's joints by servo id, named from the robot's own point of view (docs/protocol.md §4): 0-4 left leg, 5-9
- * right leg, 10-12 left arm, 13-15 right arm (the same English names as protocol/servo-limits.ts's HUNO_JOINT_NAMES).
+ * right leg, 10-12 left arm, 13-15 right arm. Every name a view, `rbc` or an outcome gives a joint comes from here.
  */
 const JOINT_KEYS: readonly KeysWithoutParams<typeof jointMessages>[] = [
   "joint.leftHipRoll",
@@ -27,8 +27,8 @@ const JOINT_KEYS: readonly KeysWithoutParams<typeof jointMessages>[] = [
 ];
 
 /**
- * A servo's joint, "Left ankle pitch" / "왼쪽 발목 피치" (the robot's own left, docs/protocol.md §4); "Servo 16" above 15. Pass the panel's language
- * (`ctx.state.locale`); English when not given (views not yet translated).
+ * A servo's joint, "Left ankle pitch" / "왼쪽 발목 앞뒤" (the robot's own left, docs/protocol.md §4); "Servo 16" /
+ * "서보 16번" above 15. Pass the panel's language (`ctx.state.locale`); English when not given.
  */
 export function jointName(id: number, locale: Locale = "en"): string {
   const t = translator(jointMessages, locale);

@@ -21,7 +21,6 @@
  * reversed. Mirrored servos (docs/motion-document.md, Mirror) have opposite signs for pitch and equal signs for
  * roll, so a mirrored pose is the mirror image of the robot.
  */
-import { HUNO_JOINT_NAMES } from "../../protocol/servo-limits.ts";
 import { STANDARD_ZEROS } from "../../protocol/zeros.ts";
 import type { Vec3 } from "./mat4.ts";
 
@@ -70,10 +69,9 @@ const D = HUNO_DIMENSIONS;
 
 export type Side = "right" | "left" | "centre";
 
-/** One joint: the servo it is, the link it moves and how. */
+/** One joint: the servo it is, the link it moves and how (its name, in a person's language: `jointName(id, locale)`). */
 export interface HunoJoint {
   id: number;
-  name: string;
   side: Exclude<Side, "centre">;
   /** The joint (servo id) whose link carries this joint, or "torso". */
   parent: number | "torso";
@@ -87,7 +85,6 @@ export interface HunoJoint {
 function joint(id: number, parent: number | "torso", offset: Vec3, axis: "x" | "y", sign: 1 | -1): HunoJoint {
   return {
     id,
-    name: HUNO_JOINT_NAMES[id] ?? `Servo ${id}`,
     side: id <= 4 || (id >= 10 && id <= 12) ? "left" : "right",
     parent,
     offset,

@@ -6,7 +6,7 @@ import type { Translator } from "../../translate.ts";
  * and kind, filled from the issue's `values` (`rbmIssueSentence`). English shows the protocol's `issue.message`:
  * protocol/rbm*.ts take it from here where the sentence is the same (`en(...)` there); where the protocol
  * builds its own subject or formats numbers differently, its sentence is still its own and the English here
- * mirrors it. Korean shows the Korean here, in the panel and in `rbc` alike. A servo is "서보 3번(오른쪽 무릎)": its head word is 번, so "{servo}의" and
+ * mirrors it. Korean shows the Korean here, in the panel and in `rbc` alike. A servo is "서보 2번(왼쪽 무릎)": its head word is 번, so "{servo}의" and
  * "{servo}이" read right.
  */
 export const rbmIssueMessages = defineMessages({

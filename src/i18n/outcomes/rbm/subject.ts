@@ -96,7 +96,7 @@ export function fieldName(t: IssueTranslator, r: IssueValues): string {
   return t(key);
 }
 
-/** A servo by id, with its HUNO joint when it has one: "서보 2번(오른쪽 무릎)", "서보 20번". */
+/** A servo by id, with its HUNO joint when it has one: "서보 2번(왼쪽 무릎)", "서보 20번". */
 export function servoName(t: IssueTranslator, id: number): string {
   const joint = jointOf(id, t.locale);
   return joint === undefined
@@ -105,8 +105,8 @@ export function servoName(t: IssueTranslator, id: number): string {
 }
 
 /**
- * The field an issue is about, with whose it is (`values.scene`, `servo`, `record`): "장면 2에서 서보 3번(오른쪽
- * 발목 피치)의 시작 위치", "서보 레코드 4번의 P 게인", "모션 번호".
+ * The field an issue is about, with whose it is (`values.scene`, `servo`, `record`): "장면 2에서 서보 3번(왼쪽
+ * 발목 앞뒤)의 시작 위치", "서보 레코드 4번의 P 게인", "모션 번호".
  */
 export function subject(t: IssueTranslator, r: IssueValues): string {
   const field = fieldName(t, r);

@@ -2,26 +2,11 @@ import { defineMessages } from "../../catalogue.ts";
 
 /**
  * The servo doctor's outcomes (docs/protocol.md §5 "Servo doctor"): the scan's readings and findings, the guided
- * id fix, a servo's parameters and its wiggle test. Servos are named by the robot's own left and right (§4).
- * Korean: a servo is "서보 7번(오른쪽 무릎)"; its head word is 번, so it takes 이/은/을/의.
+ * id fix, a servo's parameters and its wiggle test. A servo's joint is the joint-name catalogue's
+ * (src/i18n/joint-names/, the robot's own left and right, §4). Korean: a servo is "서보 7번(오른쪽 무릎)"; its
+ * head word is 번, so it takes 이/은/을/의.
  */
 export const servoOutcomeMessages = defineMessages({
-  "outcome.servo.joint0": { en: "left hip roll", ko: "왼쪽 엉덩이 옆" },
-  "outcome.servo.joint1": { en: "left hip pitch", ko: "왼쪽 엉덩이 앞뒤" },
-  "outcome.servo.joint2": { en: "left knee", ko: "왼쪽 무릎" },
-  "outcome.servo.joint3": { en: "left ankle pitch", ko: "왼쪽 발목 앞뒤" },
-  "outcome.servo.joint4": { en: "left ankle roll", ko: "왼쪽 발목 옆" },
-  "outcome.servo.joint5": { en: "right hip roll", ko: "오른쪽 엉덩이 옆" },
-  "outcome.servo.joint6": { en: "right hip pitch", ko: "오른쪽 엉덩이 앞뒤" },
-  "outcome.servo.joint7": { en: "right knee", ko: "오른쪽 무릎" },
-  "outcome.servo.joint8": { en: "right ankle pitch", ko: "오른쪽 발목 앞뒤" },
-  "outcome.servo.joint9": { en: "right ankle roll", ko: "오른쪽 발목 옆" },
-  "outcome.servo.joint10": { en: "left shoulder pitch", ko: "왼쪽 어깨 앞뒤" },
-  "outcome.servo.joint11": { en: "left shoulder roll", ko: "왼쪽 어깨 옆" },
-  "outcome.servo.joint12": { en: "left elbow", ko: "왼쪽 팔꿈치" },
-  "outcome.servo.joint13": { en: "right shoulder pitch", ko: "오른쪽 어깨 앞뒤" },
-  "outcome.servo.joint14": { en: "right shoulder roll", ko: "오른쪽 어깨 옆" },
-  "outcome.servo.joint15": { en: "right elbow", ko: "오른쪽 팔꿈치" },
   "outcome.servo.withJoint": { en: "Servo {id} ({joint})", ko: "서보 {id}번({joint})" },
   "outcome.servo.plain": { en: "Servo {id}", ko: "서보 {id}번" },
 

@@ -7,6 +7,7 @@ import type {
   WiggleResult,
 } from "../../../device/servo-doctor/index.ts";
 import type { WckParameter, WckParameterValue } from "../../../protocol/wck.ts";
+import { jointOf } from "../../joint-names/joint-name.ts";
 import type { Locale } from "../../locale.ts";
 import { translator } from "../../translate.ts";
 import { servoOutcomeMessages as messages } from "./messages.ts";
@@ -18,34 +19,9 @@ import { servoOutcomeMessages as messages } from "./messages.ts";
 
 const t = (locale: Locale) => translator(messages, locale);
 
-const JOINT_KEYS = [
-  "outcome.servo.joint0",
-  "outcome.servo.joint1",
-  "outcome.servo.joint2",
-  "outcome.servo.joint3",
-  "outcome.servo.joint4",
-  "outcome.servo.joint5",
-  "outcome.servo.joint6",
-  "outcome.servo.joint7",
-  "outcome.servo.joint8",
-  "outcome.servo.joint9",
-  "outcome.servo.joint10",
-  "outcome.servo.joint11",
-  "outcome.servo.joint12",
-  "outcome.servo.joint13",
-  "outcome.servo.joint14",
-  "outcome.servo.joint15",
-] as const;
-
-/** A HUNO joint's name by the robot's own left and right (docs/protocol.md §4), or undefined above 15. */
-export function jointText(id: number, locale: Locale): string | undefined {
-  const key = JOINT_KEYS[id];
-  return key === undefined ? undefined : t(locale)(key);
-}
-
-/** "Servo 7 (right knee)", "Servo 20"; Korean "서보 7번(오른쪽 무릎)". */
+/** "Servo 7 (Right knee)", "Servo 20"; Korean "서보 7번(오른쪽 무릎)". The joint is the catalogue's (jointOf). */
 export function servoText(id: number, locale: Locale): string {
-  const joint = jointText(id, locale);
+  const joint = jointOf(id, locale);
   return joint === undefined
     ? t(locale)("outcome.servo.plain", { id: String(id) })
     : t(locale)("outcome.servo.withJoint", { id: String(id), joint });

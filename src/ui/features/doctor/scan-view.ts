@@ -1,9 +1,9 @@
 import { html, nothing, type TemplateResult } from "lit-html";
 import type { ScanResult, ServoReading } from "../../../device/servo-doctor/index.ts";
+import { jointOf } from "../../../i18n/joint-names/joint-name.ts";
 import type { Locale } from "../../../i18n/locale.ts";
 import {
   findingText,
-  jointText,
   readingStatusText,
   scanStoppedText,
 } from "../../../i18n/outcomes/servos/servo-words.ts";
@@ -38,7 +38,7 @@ function row(ctx: ViewContext, t: DoctorTranslator, id: number, r: ServoReading 
   return html`
     <tr data-servo=${id} class=${d.picked === id ? "is-picked" : ""}>
       <td class="num">${id}</td>
-      <td>${jointText(id, locale) ?? "—"}</td>
+      <td>${jointOf(id, locale) ?? "—"}</td>
       <td data-testid=${`doctor-status-${id}`}>${statusCell(t, r, locale)}</td>
       <td class="num">${answered?.position ?? ""}</td>
       <td class="num">${answered ? html`${answered.load}${high ? html` <span class="doctor-status doctor-status--high-load">${t("doctor.table.highLoad")}</span>` : nothing}` : ""}</td>

@@ -103,13 +103,13 @@ export function selectedScene(ctx: AppContext): { k: number; doc: Motion } | und
   return doc ? { k: s.scene, doc } : undefined;
 }
 
-/** "The end position of Right knee (servo 2)", in the language of `t`. */
+/** "The end position of Left knee (servo 2)", in the language of `t`. */
 function positionWhat(t: EditorTranslator, id: number, side: SceneSide): string {
   const who = { joint: jointName(id, t.locale), id: String(id) };
   return side === "start" ? t("editor.what.start", who) : t("editor.what.end", who);
 }
 
-/** "set Right knee (end of scene 3)": the undo step of a position edit. */
+/** "set Left knee (end of scene 3)": the undo step of a position edit. */
 function positionLabel(t: EditorTranslator, id: number, side: SceneSide, k: number): string {
   const what = { joint: jointName(id, t.locale), scene: String(k) };
   return side === "start" ? t("editor.label.setStart", what) : t("editor.label.setEnd", what);

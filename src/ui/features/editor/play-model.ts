@@ -101,7 +101,7 @@ export function clampedInPlay(doc: Motion, from: number, to: number): ClampedSer
   return [...worst.values()].sort((a, b) => a.id - b.id);
 }
 
-/** "Servo 3 (Right ankle pitch) 200 → 81, …": what the question says about clamped servos, or nothing. */
+/** "Servo 3 (Left ankle pitch) 200 → 81, …": what the question says about clamped servos, or nothing. */
 export function clampedText(
   clamped: readonly ClampedServo[],
   jointOf: (id: number) => string,

@@ -7,7 +7,7 @@ import { type EditorKey, type EditorTranslator, editorMessages } from "./message
  * A refused edit in the panel's language. The motion core refuses with a `MotionError`: an English sentence, a
  * stable code and the values it checked (`facts`). In English the panel shows the core's sentence, as it always
  * has; in Korean it says the same from the rule and the values, with what was being set (`what`, a noun phrase
- * the action makes: "오른쪽 무릎(서보 2)의 끝 위치"). The editor's own checks of what was typed are worded in the
+ * the action makes: "왼쪽 무릎(서보 2)의 끝 위치"). The editor's own checks of what was typed are worded in the
  * panel's language when they are made (`TypedValueError`).
  */
 

@@ -1,8 +1,7 @@
+import { jointName, jointOf } from "../../../i18n/joint-names/joint-name.ts";
 import type { Locale } from "../../../i18n/locale.ts";
-import { translator } from "../../../i18n/translate.ts";
 import { formatMilliseconds, formatSeconds as secondsText } from "../../../i18n/units.ts";
 import type { RbmMotion } from "../../../protocol/rbm.ts";
-import { type MotionsKey, motionsMessages } from "./messages.ts";
 
 /**
  * What the motion chart draws: each servo's position over time. A scene moves every servo from its start to
@@ -16,31 +15,10 @@ export interface MotionPlot {
   series: { id: number; label: string; values: number[] }[];
 }
 
-/** The HUNO's joints by servo id (protocol/servo-limits.ts HUNO_JOINT_NAMES), in the panel's words. */
-const HUNO_JOINTS: readonly MotionsKey[] = [
-  "motions.joint.leftHipRoll",
-  "motions.joint.leftHipPitch",
-  "motions.joint.leftKnee",
-  "motions.joint.leftAnklePitch",
-  "motions.joint.leftAnkleRoll",
-  "motions.joint.rightHipRoll",
-  "motions.joint.rightHipPitch",
-  "motions.joint.rightKnee",
-  "motions.joint.rightAnklePitch",
-  "motions.joint.rightAnkleRoll",
-  "motions.joint.leftShoulderPitch",
-  "motions.joint.leftShoulderRoll",
-  "motions.joint.leftElbow",
-  "motions.joint.rightShoulderPitch",
-  "motions.joint.rightShoulderRoll",
-  "motions.joint.rightElbow",
-];
-
-/** "0 Left hip roll" ("0 왼쪽 엉덩이 롤") for HUNO ids, "Servo 20" otherwise. */
+/** "0 Left hip roll" ("0 왼쪽 엉덩이 좌우") for HUNO ids, "Servo 20" otherwise: the joint-name catalogue's names. */
 export function jointLabel(id: number, locale: Locale = "en"): string {
-  const t = translator(motionsMessages, locale);
-  const joint = HUNO_JOINTS[id];
-  return joint === undefined ? t("motions.joint.servo", { id: String(id) }) : `${id} ${t(joint)}`;
+  const joint = jointOf(id, locale);
+  return joint === undefined ? jointName(id, locale) : `${id} ${joint}`;
 }
 
 export function motionPlotData(motion: RbmMotion, locale: Locale = "en"): MotionPlot {
