@@ -10,7 +10,7 @@ import { defineMessages } from "../../catalogue.ts";
 export const motionOutcomeMessages = defineMessages({
   // Who a value belongs to, and what was being set.
   "outcome.motion.who.joint": { en: "{joint} (servo {servo})", ko: "{joint}(서보 {servo})" },
-  "outcome.motion.who.servo": { en: "servo {servo}", ko: "서보 {servo}" },
+  "outcome.motion.who.servo": { en: "servo {servo}", ko: "서보 {servo}번" },
   "outcome.motion.subject.start": { en: "The start position of {who}", ko: "{who}의 시작 위치" },
   "outcome.motion.subject.end": { en: "The end position of {who}", ko: "{who}의 끝 위치" },
   "outcome.motion.subject.torque": { en: "The torque of {who}", ko: "{who}의 토크" },
@@ -75,7 +75,7 @@ export const motionOutcomeMessages = defineMessages({
   },
   "outcome.motion.noSuchServo": {
     en: "Servo {value} is not in this motion (it has {ids}).",
-    ko: "서보 {value}은(는) 이 모션에 없어요 (있는 서보: {ids}).",
+    ko: "서보 {value}번은 이 모션에 없어요 (있는 서보: {ids}).",
   },
   "outcome.motion.lastScene": {
     en: "A motion needs at least one scene, so its only scene cannot be deleted.",

@@ -34,7 +34,7 @@ const CODE_TEXT: Readonly<Record<MotionErrorCode, KeysWithoutParams<typeof motio
   "motion-play": "outcome.motion.code.play",
 };
 
-/** A servo with its HUNO joint when it has one: "Left knee (servo 2)", "서보 20". */
+/** A servo with its HUNO joint when it has one: "Left knee (servo 2)", "서보 20번". */
 function who(t: T, servo: number): string {
   const joint = jointOf(servo, t.locale);
   return joint === undefined
