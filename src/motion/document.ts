@@ -21,7 +21,7 @@ import {
   validateRbm,
 } from "../protocol/index.ts";
 import { RBM_MAX_POSITION } from "../protocol/rbm-validate.ts";
-import { MotionError } from "./errors.ts";
+import { type MotionSubject, motionError } from "./errors.ts";
 
 export type MotionServo = Readonly<RbmServo>;
 export type SceneRecord = Readonly<RbmSceneServo>;
@@ -102,13 +102,13 @@ export const TEMPLATE_GAINS = { p: 20, d: 30, i: 0, portEnable: 0 } as const;
  */
 export function newMotion(options: NewMotionOptions = {}): Motion {
   const name = options.name ?? "NewMotion";
-  checkName(name, "The motion name");
+  checkName(name, { field: "motionName" });
   const zeros = options.zeros ?? STANDARD_ZEROS;
   if (zeros.length !== HUNO_SERVO_IDS.length) {
-    throw new MotionError("motion-value", `A zero table has 16 values, not ${zeros.length}.`);
+    throw motionError("motion-value", { rule: "zero-count", value: zeros.length });
   }
   zeros.forEach((z, id) => {
-    checkWhole(z, 0, RBM_MAX_POSITION, `The zero of servo ${id}`);
+    checkWhole(z, 0, RBM_MAX_POSITION, { field: "zero", servo: id });
   });
   const servos = HUNO_SERVO_IDS.map((id) => ({ id, ...TEMPLATE_GAINS, zero: zeros[id]! }));
   const records = HUNO_SERVO_IDS.map((id) => {
@@ -136,14 +136,24 @@ export function newMotion(options: NewMotionOptions = {}): Motion {
 
 // ---- Checks shared by the operations ----------------------------------------------------------------------
 
-/** Throws `motion-value` unless `value` is a whole number in min..max. */
-export function checkWhole(value: number, min: number, max: number, what: string): void {
+/**
+ * What was being set, as data: a `MotionSubject`, or a program's own name for it (a string, said as it is in
+ * every language).
+ */
+export function subjectOf(what: MotionSubject | string): MotionSubject {
+  return typeof what === "string" ? { field: "named", name: what } : what;
+}
+
+/** Throws `motion-value` unless `value` is a whole number in min..max; `what` names what was being set. */
+export function checkWhole(value: number, min: number, max: number, what: MotionSubject | string): void {
   if (typeof value !== "number" || !Number.isInteger(value) || value < min || value > max) {
-    throw new MotionError(
-      "motion-value",
-      `${what} must be a whole number from ${min} to ${max}, not ${String(value)}.`,
-      { rule: "whole", value: typeof value === "number" ? value : String(value), min, max },
-    );
+    throw motionError("motion-value", {
+      rule: "whole",
+      subject: subjectOf(what),
+      value: typeof value === "number" ? value : String(value),
+      min,
+      max,
+    });
   }
 }
 
@@ -154,41 +164,32 @@ export const MOTION_NAME_MAX = 99;
  * [decision] A name the editor accepts: 1 to 99 printable ASCII characters without ":" (the field separator).
  * Motionbuilder's files are ASCII and every name in them has at least one character.
  */
-export function checkName(name: string, what: string): void {
+export function checkName(name: string, what: MotionSubject | string): void {
+  const subject = subjectOf(what);
   if (typeof name !== "string" || name.length === 0) {
-    throw new MotionError("motion-name", `${what} cannot be empty.`, { rule: "name-empty" });
+    throw motionError("motion-name", { rule: "name-empty", subject });
   }
   if (name.length > MOTION_NAME_MAX) {
-    throw new MotionError(
-      "motion-name",
-      `${what} has ${name.length} characters; a motion file holds at most ${MOTION_NAME_MAX}.`,
-      { rule: "name-length", length: name.length, max: MOTION_NAME_MAX },
-    );
+    throw motionError("motion-name", {
+      rule: "name-length",
+      subject,
+      length: name.length,
+      max: MOTION_NAME_MAX,
+    });
   }
-  if (name.includes(":")) {
-    throw new MotionError(
-      "motion-name",
-      `${what} cannot contain ":", which separates the fields of a motion file.`,
-      { rule: "name-colon" },
-    );
-  }
-  if (!/^[\x20-\x7e]*$/.test(name)) {
-    throw new MotionError(
-      "motion-name",
-      `${what} can use only plain letters, digits, spaces and punctuation (ASCII), as Motionbuilder does.`,
-      { rule: "name-ascii" },
-    );
-  }
+  if (name.includes(":")) throw motionError("motion-name", { rule: "name-colon", subject });
+  if (!/^[\x20-\x7e]*$/.test(name)) throw motionError("motion-name", { rule: "name-ascii", subject });
 }
 
 /** The scene at `k`, or a `motion-no-such-scene` error. */
 export function sceneAt(doc: Motion, k: number): MotionScene {
   const scene = Number.isInteger(k) ? doc.scenes[k] : undefined;
   if (scene === undefined) {
-    throw new MotionError(
-      "motion-no-such-scene",
-      `The motion has scenes 0 to ${doc.scenes.length - 1}; there is no scene ${String(k)}.`,
-    );
+    throw motionError("motion-no-such-scene", {
+      rule: "no-such-scene",
+      value: typeof k === "number" ? k : String(k),
+      max: doc.scenes.length - 1,
+    });
   }
   return scene;
 }
@@ -197,11 +198,11 @@ export function sceneAt(doc: Motion, k: number): MotionScene {
 export function servoIndex(doc: Motion, id: number): number {
   const i = doc.servos.findIndex((s) => s.id === id);
   if (i < 0) {
-    const ids = doc.servos.map((s) => s.id).join(", ");
-    throw new MotionError(
-      "motion-no-such-servo",
-      `Servo ${String(id)} is not in this motion (it has ${ids}).`,
-    );
+    throw motionError("motion-no-such-servo", {
+      rule: "no-such-servo",
+      value: typeof id === "number" ? id : String(id),
+      ids: doc.servos.map((s) => s.id),
+    });
   }
   return i;
 }

@@ -33,7 +33,7 @@ import {
   servoIndex,
   withScenes,
 } from "./document.ts";
-import { MotionError } from "./errors.ts";
+import { type MotionSubject, motionError } from "./errors.ts";
 
 /** Largest frames or time a motion image holds (16 bits, docs/protocol.md §6.3). */
 export const MAX_U16 = 0xffff;
@@ -46,33 +46,44 @@ export interface PositionOptions {
 }
 
 export function setMotionName(doc: Motion, name: string): Motion {
-  checkName(name, "The motion name");
+  checkName(name, { field: "motionName" });
   return name === doc.name ? doc : { ...doc, name };
 }
 
 export function setSceneName(doc: Motion, k: number, name: string): Motion {
   const scene = sceneAt(doc, k);
-  checkName(name, `The name of scene ${k}`);
+  checkName(name, { field: "sceneName", scene: k });
   return name === scene.name ? doc : withScenes(doc, new Map([[k, { ...scene, name }]]));
 }
 
-/** Throws `motion-frame-interval` unless frames and time give an interval the RBC plays (20..4,550 ms). */
-export function checkTiming(frames: number, timeMs: number, what: string): void {
-  checkWhole(frames, 1, MAX_U16, `${what}: the number of frames`);
-  checkWhole(timeMs, 0, MAX_U16, `${what}: the time in ms`);
+/** The scene's frames and time as subjects of a refusal; a program's own name for the scene ("Scene 3") as well. */
+function timingSubjects(scene: number | string): [frames: MotionSubject, time: MotionSubject] {
+  return typeof scene === "number"
+    ? [
+        { field: "frames", scene },
+        { field: "time", scene },
+      ]
+    : [
+        { field: "named", name: `${scene}: the number of frames` },
+        { field: "named", name: `${scene}: the time in ms` },
+      ];
+}
+
+/**
+ * Throws `motion-frame-interval` unless frames and time give an interval the RBC plays (20..4,550 ms). `scene`
+ * is the scene's position (or a program's own name for it, said as it is).
+ */
+export function checkTiming(frames: number, timeMs: number, scene: number | string): void {
+  const [framesSubject, timeSubject] = timingSubjects(scene);
+  checkWhole(frames, 1, MAX_U16, framesSubject);
+  checkWhole(timeMs, 0, MAX_U16, timeSubject);
+  const at = typeof scene === "number" ? { scene } : {};
+  const timing = { ...at, frames, timeMs, intervalMs: timeMs / frames };
   if (timeMs < RBC_MIN_FRAME_MS * frames) {
-    throw new MotionError(
-      "motion-frame-interval",
-      `${what}: ${frames} frames in ${timeMs} ms are ${(timeMs / frames).toFixed(1)} ms apart; the RBC needs at least ${RBC_MIN_FRAME_MS} ms, so use at most ${Math.max(1, Math.floor(timeMs / RBC_MIN_FRAME_MS))} frames or at least ${RBC_MIN_FRAME_MS * frames} ms.`,
-      { rule: "interval-short", frames, timeMs, intervalMs: timeMs / frames, min: RBC_MIN_FRAME_MS },
-    );
+    throw motionError("motion-frame-interval", { rule: "interval-short", ...timing, min: RBC_MIN_FRAME_MS });
   }
   if (timeMs > RBC_MAX_FRAME_MS * frames) {
-    throw new MotionError(
-      "motion-frame-interval",
-      `${what}: ${frames} frames in ${timeMs} ms are ${(timeMs / frames).toFixed(1)} ms apart; the RBC allows at most ${RBC_MAX_FRAME_MS} ms, so use at least ${Math.ceil(timeMs / RBC_MAX_FRAME_MS)} frames.`,
-      { rule: "interval-long", frames, timeMs, intervalMs: timeMs / frames, max: RBC_MAX_FRAME_MS },
-    );
+    throw motionError("motion-frame-interval", { rule: "interval-long", ...timing, max: RBC_MAX_FRAME_MS });
   }
 }
 
@@ -81,7 +92,7 @@ export function setTiming(doc: Motion, k: number, timing: { frames?: number; tim
   const scene = sceneAt(doc, k);
   const frames = timing.frames ?? scene.frames;
   const timeMs = timing.timeMs ?? scene.timeMs;
-  checkTiming(frames, timeMs, `Scene ${k}`);
+  checkTiming(frames, timeMs, k);
   if (frames === scene.frames && timeMs === scene.timeMs) return doc;
   return withScenes(doc, new Map([[k, { ...scene, frames, timeMs }]]));
 }
@@ -117,7 +128,7 @@ export function applyPositions(
   const neighbour = doc.scenes[neighbourIndex];
   for (const [i, value] of positions) {
     const rec = scene.servos[i]!;
-    checkWhole(value, 0, RBM_MAX_POSITION, `Scene ${k}: the ${side} position of servo ${rec.id}`);
+    checkWhole(value, 0, RBM_MAX_POSITION, { field: side, scene: k, servo: rec.id });
     const old = side === "end" ? rec.end : rec.start;
     here.set(i, side === "end" ? { end: value } : { start: value });
     const other = neighbour?.servos[i];
@@ -173,12 +184,7 @@ export function copyPose(doc: Motion, from: number, to: number, options: Positio
 /** Makes scene k start where scene k−1 ends, for every servo (closes jumps). */
 export function joinScene(doc: Motion, k: number): Motion {
   const scene = sceneAt(doc, k);
-  if (k === 0) {
-    throw new MotionError(
-      "motion-no-such-scene",
-      "Scene 0 is the first scene: there is no scene before it to join.",
-    );
-  }
+  if (k === 0) throw motionError("motion-no-such-scene", { rule: "join-first", scene: 0 });
   const previous = doc.scenes[k - 1]!;
   const patches = new Map(previous.servos.map((r, i) => [i, { start: r.end }]));
   const joined = patchRecords(scene, patches);
@@ -189,7 +195,7 @@ export function joinScene(doc: Motion, k: number): Motion {
 export function setTorque(doc: Motion, k: number, id: number, torque: number): Motion {
   const scene = sceneAt(doc, k);
   const i = servoIndex(doc, id);
-  checkWhole(torque, 0, RBM_MAX_TORQUE, `Scene ${k}: the torque of servo ${id}`);
+  checkWhole(torque, 0, RBM_MAX_TORQUE, { field: "torque", scene: k, servo: id });
   const next = patchRecords(scene, new Map([[i, { torque }]]));
   return next === scene ? doc : withScenes(doc, new Map([[k, next]]));
 }
@@ -197,7 +203,7 @@ export function setTorque(doc: Motion, k: number, id: number, torque: number): M
 /** Sets the torque of every servo in scene k. */
 export function setSceneTorque(doc: Motion, k: number, torque: number): Motion {
   const scene = sceneAt(doc, k);
-  checkWhole(torque, 0, RBM_MAX_TORQUE, `Scene ${k}: the torque`);
+  checkWhole(torque, 0, RBM_MAX_TORQUE, { field: "sceneTorque", scene: k });
   const next = patchRecords(scene, new Map(scene.servos.map((_, i) => [i, { torque }])));
   return next === scene ? doc : withScenes(doc, new Map([[k, next]]));
 }
@@ -206,7 +212,7 @@ export function setSceneTorque(doc: Motion, k: number, torque: number): Motion {
 export function setPort(doc: Motion, k: number, id: number, port: number): Motion {
   const scene = sceneAt(doc, k);
   const i = servoIndex(doc, id);
-  checkWhole(port, 0, RBM_MAX_PORT, `Scene ${k}: the port value of servo ${id}`);
+  checkWhole(port, 0, RBM_MAX_PORT, { field: "port", scene: k, servo: id });
   const next = patchRecords(scene, new Map([[i, { port }]]));
   return next === scene ? doc : withScenes(doc, new Map([[k, next]]));
 }

@@ -1,7 +1,11 @@
+import { motionRefusalText } from "../i18n/outcomes/motion/motion-words.ts";
+
 /**
  * The one error family of the motion layer. An edit that would break a rule of docs/protocol.md §7 that the RBC
  * enforces (an error of `validateRbm`) is refused with a `MotionError` and the document is left as it was; the
- * `code` is stable (for programs and tests), the message is a sentence for the person typing.
+ * `code` is stable (for programs and tests), the `facts` say what was refused (the rule, the values, the field),
+ * and the message is the outcome catalogue's English sentence for them (src/i18n/outcomes/motion/), the one the
+ * Editor says in the panel's language.
  */
 export class MotionError extends Error {
   override name = "MotionError";
@@ -15,13 +19,20 @@ export class MotionError extends Error {
   }
 }
 
+/** A refusal with its English sentence from the outcome catalogue (`motionRefusalText(…, "en")`). */
+export function motionError(code: MotionErrorCode, facts: MotionErrorFacts): MotionError {
+  return new MotionError(code, motionRefusalText({ code, facts }, "en"), facts);
+}
+
 /**
- * What a refusal was checked with, for a sentence in another language than the message's English (the panel's
- * Korean) or for a program: the rule (finer than the code) and the values. A refusal carries the fields that
- * say what it refused; the message stays the English sentence.
+ * What a refusal was checked with, for its sentence in any language (src/i18n/outcomes/motion/) and for a
+ * program: the rule (finer than the code), the values and what was being set. A refusal carries the fields that
+ * say what it refused.
  */
 export interface MotionErrorFacts {
   readonly rule?: MotionRule;
+  /** What was being set (a position, a name, a scene's frames...), as data. */
+  readonly subject?: MotionSubject;
   /** The value refused, as given. */
   readonly value?: number | string;
   /** The range the value must be in (for intervals: the shortest or longest interval the RBC allows, ms). */
@@ -39,12 +50,43 @@ export interface MotionErrorFacts {
   readonly platform?: number;
   /** Servos and the positions a mirror would give them outside 0-254. */
   readonly positions?: readonly { readonly id: number; readonly position: number }[];
+  /** The servo ids the motion has (a servo it does not have was asked for). */
+  readonly ids?: readonly number[];
+  /** A range of scenes (first and last). */
+  readonly from?: number;
+  readonly to?: number;
 }
+
+/**
+ * What a refused value was for: a servo's position, torque, extra outputs or zero (`servo`: its id), a scene's
+ * torque, frames, time or name (`scene`: its position), the motion's name, a new scene's name; or a name a
+ * program gave in its own words (`named`, said as it is in every language).
+ */
+export type MotionSubject =
+  | {
+      readonly field: "start" | "end" | "torque" | "port";
+      readonly scene: number;
+      readonly servo: number;
+    }
+  | { readonly field: "zero"; readonly servo: number }
+  | { readonly field: "sceneTorque" | "frames" | "time" | "sceneName"; readonly scene: number }
+  | { readonly field: "motionName" | "newSceneName" }
+  | { readonly field: "named"; readonly name: string };
 
 /** The rule a refusal broke, finer than its code. */
 export type MotionRule =
+  /** `motion-no-such-scene`: scene `value` is not one of 0..`max`; a new scene's position outside 0..`max`. */
+  | "no-such-scene"
+  | "new-scene-position"
+  /** `motion-no-such-scene`: a range `from` > `to`; joining scene 0 (nothing before it). */
+  | "range-backwards"
+  | "join-first"
+  /** `motion-no-such-servo`: servo `value` is not one of `ids`. */
+  | "no-such-servo"
   /** `motion-value`: not a whole number from `min` to `max`. */
   | "whole"
+  /** `motion-value`: a zero table of `value` values, not 16. */
+  | "zero-count"
   /** `motion-name`: empty; longer than `max` (`length`); with ":"; outside printable ASCII. */
   | "name-empty"
   | "name-length"
@@ -56,15 +98,18 @@ export type MotionRule =
   /** `motion-retime`: scene `scene` would last `timeMs`, under `min` (one frame) or over `max`. */
   | "scene-short"
   | "scene-long"
+  /** `motion-retime`: a factor (`value`) that is not a number above 0. */
+  | "factor"
   /** `motion-retime`: a duration that is not a whole number of ms above 0; scenes that last 0 ms. */
   | "duration"
   | "zero-duration"
   /** `motion-mirror`: not a HUNO motion (`platform`); `positions` outside 0-254. */
   | "mirror-platform"
   | "mirror-outside"
-  /** `motion-play`: a scene without frames; frames under `min` ms apart. */
+  /** `motion-play`: a scene without frames; frames under `min` ms apart; a robot zero table that is not 16 positions. */
   | "play-frames"
-  | "play-interval";
+  | "play-interval"
+  | "play-zeros";
 
 export type MotionErrorCode =
   /** A scene number, servo id or range that the motion does not have. */

@@ -20,7 +20,7 @@ import { RBC_MIN_FRAME_MS } from "../protocol/rbm-validate.ts";
 import { SAFE_LOWER, SAFE_UPPER } from "../protocol/servo-limits.ts";
 import { ZERO_COUNT } from "../protocol/zeros.ts";
 import type { Motion } from "./document.ts";
-import { MotionError } from "./errors.ts";
+import { motionError } from "./errors.ts";
 import { resolveRange, type SceneRange } from "./retime.ts";
 
 /** Platform byte of a PF2 robot (docs/protocol.md §2.2), which applies no zero correction. */
@@ -112,19 +112,18 @@ export function framePosition(
 /** The scene's frame interval in whole ms, or a `motion-play` error when the RBC would refuse it. */
 export function frameIntervalMs(frames: number, timeMs: number, scene: number): number {
   if (!Number.isInteger(frames) || frames < 1) {
-    throw new MotionError("motion-play", `Scene ${scene} has ${frames} frames; a scene needs at least 1.`, {
-      rule: "play-frames",
-      scene,
-      frames,
-    });
+    throw motionError("motion-play", { rule: "play-frames", scene, frames, min: 1 });
   }
   const interval = Math.floor(timeMs / frames);
   if (interval < RBC_MIN_FRAME_MS) {
-    throw new MotionError(
-      "motion-play",
-      `Scene ${scene} has frames ${interval} ms apart (${timeMs} ms / ${frames} frames); the RBC needs at least ${RBC_MIN_FRAME_MS} ms (error 6). Use fewer frames.`,
-      { rule: "play-interval", scene, frames, timeMs, intervalMs: interval, min: RBC_MIN_FRAME_MS },
-    );
+    throw motionError("motion-play", {
+      rule: "play-interval",
+      scene,
+      frames,
+      timeMs,
+      intervalMs: interval,
+      min: RBC_MIN_FRAME_MS,
+    });
   }
   return interval;
 }
@@ -137,7 +136,7 @@ export function playFrames(doc: Motion, options: PlayOptions): PlayPlan {
     robotZeros.length !== ZERO_COUNT ||
     !robotZeros.every((z) => Number.isInteger(z) && z >= 0 && z <= 254)
   ) {
-    throw new MotionError("motion-play", "The robot's zero table must be 16 whole numbers from 0 to 254.");
+    throw motionError("motion-play", { rule: "play-zeros" });
   }
   const ids = doc.servos.map((s) => s.id);
   const zeroDelta = doc.servos.map((s) =>

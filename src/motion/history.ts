@@ -9,32 +9,38 @@
  *
  * A run of small edits of the same thing (a slider dragged, digits typed into one field) can be merged into one
  * undo step by giving them the same `mergeKey`.
+ *
+ * A step's label is whatever the caller gives (`L`): a string by default ("Move servo 3"), or a message kept
+ * as data that a panel words when it draws the Undo button, so the label follows a language switch.
  */
 import type { Motion } from "./document.ts";
 
-interface Entry {
+interface Entry<L> {
   readonly doc: Motion;
   /** What the edit that produced `doc` did ("Move servo 3"), for "Undo …" labels. */
-  readonly label: string;
-  readonly next: Entry | undefined;
+  readonly label: L;
+  readonly next: Entry<L> | undefined;
 }
 
-export interface MotionHistory {
+export interface MotionHistory<L = string> {
   readonly present: Motion;
-  /** Label of the edit that produced `present` ("" for the opened document). */
-  readonly label: string;
-  readonly past: Entry | undefined;
-  readonly future: Entry | undefined;
+  /** Label of the edit that produced `present` ("" for the opened document, or the label given to `createHistory`). */
+  readonly label: L;
+  readonly past: Entry<L> | undefined;
+  readonly future: Entry<L> | undefined;
   readonly undoCount: number;
   readonly redoCount: number;
   /** The merge key of the last commit, while it may still be merged into. */
   readonly mergeKey: string | undefined;
 }
 
-export function createHistory(doc: Motion): MotionHistory {
+/** A history of `doc` alone, labelled "" (or `label`, the label of the opened document). */
+export function createHistory(doc: Motion): MotionHistory;
+export function createHistory<L>(doc: Motion, label: L): MotionHistory<L>;
+export function createHistory<L>(doc: Motion, label?: L): MotionHistory<L | string> {
   return {
     present: doc,
-    label: "",
+    label: label ?? "",
     past: undefined,
     future: undefined,
     undoCount: 0,
@@ -52,12 +58,12 @@ export interface CommitOptions {
  * Records `doc` as the new present (the result of an edit of `history.present`); clears the redo stack. A
  * document identical to the present (an edit that changed nothing) leaves the history as it is.
  */
-export function commit(
-  history: MotionHistory,
+export function commit<L>(
+  history: MotionHistory<L>,
   doc: Motion,
-  label: string,
+  label: L,
   options: CommitOptions = {},
-): MotionHistory {
+): MotionHistory<L> {
   if (doc === history.present) return history;
   const key = options.mergeKey;
   if (key !== undefined && key === history.mergeKey && history.future === undefined) {
@@ -75,35 +81,35 @@ export function commit(
 }
 
 /** Applies an edit to the present document and commits it. The edit's `MotionError` leaves the history as it was. */
-export function apply(
-  history: MotionHistory,
+export function apply<L>(
+  history: MotionHistory<L>,
   edit: (doc: Motion) => Motion,
-  label: string,
+  label: L,
   options: CommitOptions = {},
-): MotionHistory {
+): MotionHistory<L> {
   return commit(history, edit(history.present), label, options);
 }
 
-export function canUndo(history: MotionHistory): boolean {
+export function canUndo<L>(history: MotionHistory<L>): boolean {
   return history.past !== undefined;
 }
 
-export function canRedo(history: MotionHistory): boolean {
+export function canRedo<L>(history: MotionHistory<L>): boolean {
   return history.future !== undefined;
 }
 
 /** The label of the edit an undo would take back, or undefined. */
-export function undoLabel(history: MotionHistory): string | undefined {
+export function undoLabel<L>(history: MotionHistory<L>): L | undefined {
   return history.past === undefined ? undefined : history.label;
 }
 
 /** The label of the edit a redo would make again, or undefined. */
-export function redoLabel(history: MotionHistory): string | undefined {
+export function redoLabel<L>(history: MotionHistory<L>): L | undefined {
   return history.future?.label;
 }
 
 /** One step back; the same history when there is nothing to undo. */
-export function undo(history: MotionHistory): MotionHistory {
+export function undo<L>(history: MotionHistory<L>): MotionHistory<L> {
   const back = history.past;
   if (back === undefined) return history;
   return {
@@ -118,7 +124,7 @@ export function undo(history: MotionHistory): MotionHistory {
 }
 
 /** One step forward again; the same history when there is nothing to redo. */
-export function redo(history: MotionHistory): MotionHistory {
+export function redo<L>(history: MotionHistory<L>): MotionHistory<L> {
   const forward = history.future;
   if (forward === undefined) return history;
   return {

@@ -21,7 +21,7 @@
 import { RBM_MAX_POSITION } from "../protocol/rbm-validate.ts";
 import { HUNO_PLATFORM, type Motion, type SceneSide, sceneAt } from "./document.ts";
 import { applyPositions } from "./edits.ts";
-import { MotionError } from "./errors.ts";
+import { motionError } from "./errors.ts";
 
 /** [left id, right id] for each of the HUNO's 8 joint pairs (the robot's own left and right). */
 export const HUNO_MIRROR_PAIRS: readonly (readonly [left: number, right: number])[] = [
@@ -65,11 +65,7 @@ export function mirrorPosition(p: number, fromZero: number, toZero: number): num
 export function mirrorPose(doc: Motion, k: number, options: MirrorOptions = {}): Motion {
   const scene = sceneAt(doc, k);
   if (doc.platform !== HUNO_PLATFORM) {
-    throw new MotionError(
-      "motion-mirror",
-      `Mirroring knows the joints of a HUNO (platform 1); this motion is for platform ${doc.platform}.`,
-      { rule: "mirror-platform", platform: doc.platform },
-    );
+    throw motionError("motion-mirror", { rule: "mirror-platform", platform: doc.platform });
   }
   const mode = options.mode ?? "swap";
   const side = options.side ?? "end";
@@ -98,11 +94,7 @@ export function mirrorPose(doc: Motion, k: number, options: MirrorOptions = {}):
     }
   }
   if (outside.length > 0) {
-    throw new MotionError(
-      "motion-mirror",
-      `Scene ${k} cannot be mirrored: ${outside.map((o) => `servo ${o.id} would go to ${o.position}`).join(", ")}, outside the positions 0-254.`,
-      { rule: "mirror-outside", scene: k, positions: outside },
-    );
+    throw motionError("motion-mirror", { rule: "mirror-outside", scene: k, positions: outside });
   }
   return applyPositions(doc, k, positions, { side, detach: options.detach ?? false });
 }

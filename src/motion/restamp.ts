@@ -8,6 +8,7 @@
  * (its structure is checked with `readRbm`; the RBC's rules are not applied: a restamp makes no file worse). A
  * serial that is not 13 digits is refused with a `RestampError`. Either way nothing is written.
  */
+import { restampRefusalText } from "../i18n/outcomes/restamp/restamp-words.ts";
 import { readRbm } from "../protocol/rbm.ts";
 
 /** The serial number of a motion made for no particular robot (Motionbuilder accepts it on any robot). */
@@ -30,7 +31,10 @@ export interface RestampErrorFacts {
   readonly length?: number;
 }
 
-/** A refused restamp: a stable code, the facts behind it and an English sentence. Nothing was changed. */
+/**
+ * A refused restamp: a stable code, the facts behind it and the outcome catalogue's English sentence for them
+ * (src/i18n/outcomes/restamp/). Nothing was changed.
+ */
 export class RestampError extends Error {
   override name = "RestampError";
   constructor(
@@ -40,6 +44,11 @@ export class RestampError extends Error {
   ) {
     super(message);
   }
+}
+
+/** A refused restamp with its English sentence from the outcome catalogue. */
+function refused(code: RestampErrorCode, facts: RestampErrorFacts): RestampError {
+  return new RestampError(code, restampRefusalText({ code, facts }, "en"), facts);
 }
 
 /** What a restamp did: the new text, and the serial number before and after (the only thing that changed). */
@@ -75,11 +84,7 @@ export function madeForAnotherRobot(fileSerial: string, robotSerial: string | un
 function checkSerial(serial: string): void {
   if (typeof serial !== "string" || !isRbmSerial(serial)) {
     const value = typeof serial === "string" ? serial : String(serial);
-    throw new RestampError(
-      "restamp-bad-serial",
-      `The serial number "${value.slice(0, 24)}" cannot be written into a motion file: it must be 13 digits (0-9).`,
-      { value: value.slice(0, 24) },
-    );
+    throw refused("restamp-bad-serial", { value: value.slice(0, 24) });
   }
 }
 
@@ -93,11 +98,7 @@ function serialSpan(text: string): { start: number; end: number } {
 
 function checkField(before: string): void {
   if (before.length !== RBM_SERIAL_LENGTH) {
-    throw new RestampError(
-      "restamp-serial-field",
-      `This file's serial number field has ${before.length} characters, not 13, so it cannot be rewritten without changing other bytes of the file.`,
-      { length: before.length },
-    );
+    throw refused("restamp-serial-field", { length: before.length });
   }
 }
 

@@ -11,7 +11,7 @@
 import { RBC_MAX_FRAME_MS, RBC_MIN_FRAME_MS } from "../protocol/rbm-validate.ts";
 import { type Motion, type MotionScene, sceneAt, withScenes } from "./document.ts";
 import { MAX_U16 } from "./edits.ts";
-import { MotionError } from "./errors.ts";
+import { motionError } from "./errors.ts";
 
 export interface SceneRange {
   /** First scene, 0 by default. */
@@ -26,12 +26,7 @@ export function resolveRange(doc: Motion, range: SceneRange = {}): [number, numb
   const to = range.to ?? doc.scenes.length - 1;
   sceneAt(doc, from);
   sceneAt(doc, to);
-  if (to < from) {
-    throw new MotionError(
-      "motion-no-such-scene",
-      `A range of scenes runs forwards; ${from} to ${to} does not.`,
-    );
-  }
+  if (to < from) throw motionError("motion-no-such-scene", { rule: "range-backwards", from, to });
   return [from, to];
 }
 
@@ -46,7 +41,10 @@ function framesFor(frames: number, timeMs: number): number {
 export function retime(doc: Motion, factor: number, range: SceneRange = {}): Motion {
   const [from, to] = resolveRange(doc, range);
   if (typeof factor !== "number" || !Number.isFinite(factor) || factor <= 0) {
-    throw new MotionError("motion-retime", `A time factor must be a number above 0, not ${String(factor)}.`);
+    throw motionError("motion-retime", {
+      rule: "factor",
+      value: typeof factor === "number" ? factor : String(factor),
+    });
   }
   const changes = new Map<number, MotionScene>();
   let oldEnd = 0;
@@ -58,18 +56,10 @@ export function retime(doc: Motion, factor: number, range: SceneRange = {}): Mot
     const timeMs = end - newEnd;
     newEnd = end;
     if (timeMs < RBC_MIN_FRAME_MS) {
-      throw new MotionError(
-        "motion-retime",
-        `Scene ${k} would last ${timeMs} ms; a scene lasts at least ${RBC_MIN_FRAME_MS} ms (one frame), so this motion cannot be made that fast.`,
-        { rule: "scene-short", scene: k, timeMs, min: RBC_MIN_FRAME_MS },
-      );
+      throw motionError("motion-retime", { rule: "scene-short", scene: k, timeMs, min: RBC_MIN_FRAME_MS });
     }
     if (timeMs > MAX_U16) {
-      throw new MotionError(
-        "motion-retime",
-        `Scene ${k} would last ${timeMs.toLocaleString("en-US")} ms; a scene lasts at most 65,535 ms.`,
-        { rule: "scene-long", scene: k, timeMs, max: MAX_U16 },
-      );
+      throw motionError("motion-retime", { rule: "scene-long", scene: k, timeMs, max: MAX_U16 });
     }
     const frames = framesFor(scene.frames, timeMs);
     if (timeMs !== scene.timeMs || frames !== scene.frames) changes.set(k, { ...scene, timeMs, frames });
@@ -93,19 +83,14 @@ export function rangeDurationMs(doc: Motion, range: SceneRange = {}): number {
 /** Retimes the scenes in `range` (the whole motion by default) so that together they last `totalMs`. */
 export function setDuration(doc: Motion, totalMs: number, range: SceneRange = {}): Motion {
   if (typeof totalMs !== "number" || !Number.isInteger(totalMs) || totalMs <= 0) {
-    throw new MotionError(
-      "motion-retime",
-      `A duration must be a whole number of ms above 0, not ${String(totalMs)}.`,
-      { rule: "duration", value: typeof totalMs === "number" ? totalMs : String(totalMs) },
-    );
+    throw motionError("motion-retime", {
+      rule: "duration",
+      value: typeof totalMs === "number" ? totalMs : String(totalMs),
+    });
   }
   const current = rangeDurationMs(doc, range);
   if (current === 0) {
-    throw new MotionError(
-      "motion-retime",
-      "These scenes last 0 ms, so they cannot be stretched to a duration.",
-      { rule: "zero-duration" },
-    );
+    throw motionError("motion-retime", { rule: "zero-duration" });
   }
   return retime(doc, totalMs / current, range);
 }

@@ -12,7 +12,7 @@
  * `raw` texts follow their scene to its new position.
  */
 import { checkName, type Motion, type MotionScene, sceneAt } from "./document.ts";
-import { MotionError } from "./errors.ts";
+import { motionError } from "./errors.ts";
 
 interface Placed {
   scene: MotionScene;
@@ -76,13 +76,14 @@ export interface AddSceneOptions {
  */
 export function addScene(doc: Motion, at: number = doc.scenes.length, options: AddSceneOptions = {}): Motion {
   if (!Number.isInteger(at) || at < 0 || at > doc.scenes.length) {
-    throw new MotionError(
-      "motion-no-such-scene",
-      `A new scene goes at a position from 0 to ${doc.scenes.length}, not ${String(at)}.`,
-    );
+    throw motionError("motion-no-such-scene", {
+      rule: "new-scene-position",
+      value: typeof at === "number" ? at : String(at),
+      max: doc.scenes.length,
+    });
   }
   const name = options.name ?? `Scene_${at}`;
-  checkName(name, "The scene name");
+  checkName(name, { field: "newSceneName" });
   const model = doc.scenes[Math.max(0, at - 1)]!;
   const pose = at === 0 ? doc.scenes[0]!.servos.map((r) => r.start) : model.servos.map((r) => r.end);
   const scene: MotionScene = {
@@ -112,10 +113,7 @@ export function duplicateScene(doc: Motion, k: number): Motion {
 export function deleteScene(doc: Motion, k: number): Motion {
   sceneAt(doc, k);
   if (doc.scenes.length === 1) {
-    throw new MotionError(
-      "motion-last-scene",
-      "A motion needs at least one scene, so its only scene cannot be deleted.",
-    );
+    throw motionError("motion-last-scene", { scene: k });
   }
   const placed = existing(doc);
   placed.splice(k, 1);

@@ -14,7 +14,12 @@
  * | B_k = 12+6W+k(6+5W)  | 6     | scene k: index, frames, time (ms), u16 LE |
  * | B_k + 6 + 5i         | 5     | id, start, end, torque, port              |
  */
+import { rbmIssueMessages } from "../i18n/outcomes/rbm/messages.ts";
+import { translator } from "../i18n/translate.ts";
 import { RbmError, type RbmIssueValues, type RbmMotion } from "./rbm.ts";
+
+/** A file problem's English sentence, from the outcome catalogue (src/i18n/outcomes/rbm/), as Korean is. */
+const en = translator(rbmIssueMessages, "en");
 
 /** Image size for W servos and S scenes: 12 + 6W + S(6 + 5W). */
 export function motionImageSize(servoCount: number, sceneCount: number): number {
@@ -62,7 +67,11 @@ export function motionImage(motion: RbmMotion): Uint8Array {
   u16le(size, "The image size", { field: "imageSize" });
   motion.scenes.forEach((scene, k) => {
     if (scene.servos.length !== W) {
-      const message = `Scene ${k} has ${scene.servos.length} servo records but the motion has ${W} servos.`;
+      const message = en("outcome.rbm.servoCount.scene", {
+        scene: String(k),
+        records: String(scene.servos.length),
+        servos: String(W),
+      });
       const values = { kind: "scene", scene: k, records: scene.servos.length, servos: W };
       throw new RbmError("rbm-servo-count", message, [
         { code: "rbm-servo-count", message, scene: k, values },
@@ -87,7 +96,7 @@ export function motionImage(motion: RbmMotion): Uint8Array {
 
 function check(value: number, max: number, what: string, subject: RbmIssueValues): void {
   if (!Number.isInteger(value) || value < 0 || value > max) {
-    const message = `${what} is ${String(value)}; the motion image holds whole numbers from 0 to ${max} there.`;
+    const message = en("outcome.rbm.imageRange", { what, value: String(value), max: String(max) });
     const values = { ...subject, value: Number.isSafeInteger(value) ? value : String(value), max };
     throw new RbmError("rbm-image-range", message, [{ code: "rbm-image-range", message, values }]);
   }

@@ -58,14 +58,14 @@ function valueAt(root: unknown, path: readonly PropertyKey[]): unknown {
 
 /** What a value is, in words and as issue values: "it is a list" / `{ got: "list" }`. */
 function describe(value: unknown): [string, RbmIssueValues] {
-  if (value === undefined) return ["it is missing", { got: "missing" }];
+  if (value === undefined) return [en("outcome.rbm.got.missing"), { got: "missing" }];
   if (typeof value === "string") {
     const shown = JSON.stringify(value.length > 30 ? `${value.slice(0, 30)}…` : value);
-    return [`it is ${shown}`, { got: "value", value: shown }];
+    return [en("outcome.rbm.got.value", { value: shown }), { got: "value", value: shown }];
   }
-  if (Array.isArray(value)) return ["it is a list", { got: "list" }];
-  if (typeof value === "object" && value !== null) return ["it is an object", { got: "object" }];
-  return [`it is ${String(value)}`, { got: "value", value: String(value) }];
+  if (Array.isArray(value)) return [en("outcome.rbm.got.list"), { got: "list" }];
+  if (typeof value === "object" && value !== null) return [en("outcome.rbm.got.object"), { got: "object" }];
+  return [en("outcome.rbm.got.value", { value: String(value) }), { got: "value", value: String(value) }];
 }
 
 const TEXT_KEYS: readonly PropertyKey[] = ["serialNumber", "text1", "text2", "name", "trailing"];
@@ -95,18 +95,19 @@ export function shapeIssue(root: unknown, path: readonly PropertyKey[]): RbmIssu
   const [got, gotValues] = describe(valueAt(root, path));
   const last = path[path.length - 1];
   const at = { path: path.map(String).join("."), ...gotValues };
+  // The catalogue's sentences, with the protocol's own English for the place (`where`) and the value (`got`).
   if (last === "servos" || last === "scenes") {
-    issue.message = `${where} must be a list (${got}).`;
+    issue.message = en("outcome.rbm.shape.list", { path: where, got });
     issue.values = { kind: "list", ...at };
   } else if (TEXT_KEYS.includes(last ?? "")) {
-    issue.message = `${where} must be text (${got}).`;
+    issue.message = en("outcome.rbm.shape.text", { path: where, got });
     issue.values = { kind: "text", ...at };
   } else if (last === "raw" || last === "fields") {
-    issue.message = `${where} is not in the form parseRbm produces.`;
+    issue.message = en("outcome.rbm.shape.form", { path: where });
     issue.values = { kind: "form", path: at.path };
   } else {
     issue.code = "rbm-not-a-number";
-    issue.message = `${where} must be a whole number of 0 or more (${got}).`;
+    issue.message = en("outcome.rbm.shape.number", { path: where, got });
     issue.values = { kind: "shape", ...at };
   }
   return issue;

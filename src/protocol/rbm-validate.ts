@@ -236,7 +236,7 @@ export function validateRbm(motion: RbmMotion, options: RbmValidateOptions = {})
     if (frames < 1) {
       err(
         "rbm-frames",
-        `Scene ${k} has ${frames} frames; a scene needs at least 1.`,
+        en("outcome.rbm.frames", { scene: String(k), frames: String(frames), min: "1" }),
         { ...at, frames, min: 1 },
         at,
       );

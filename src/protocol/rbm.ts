@@ -236,7 +236,7 @@ export function readRbm(text: string): RbmMotion {
   const num = (index: number, key: string, width: number, what: string, subject: RbmIssueValues): number => {
     const t = field(index);
     if (!isDigits(t)) {
-      fail("rbm-not-a-number", `Field ${index} (${what}) should be a whole number but is ${shown(t)}.`, {
+      fail("rbm-not-a-number", en("outcome.rbm.notANumber", { index: String(index), what, text: shown(t) }), {
         kind: "field",
         index,
         ...subject,
@@ -263,13 +263,18 @@ export function readRbm(text: string): RbmMotion {
     if (length > RBM_NAME_MAX) {
       fail(
         "rbm-field-too-long",
-        `The length of ${what} is ${length}; a name in a motion file has at most ${RBM_NAME_MAX} characters.`,
+        en("outcome.rbm.fieldTooLong.name", { what, length: String(length), max: String(RBM_NAME_MAX) }),
         { kind: "name", ...subject, length, max: RBM_NAME_MAX },
       );
     }
     const t = field(lengthIndex + 1);
     if (t.length !== length) {
-      const message = `${what} ${shown(t)} has ${t.length} characters, but its length field says ${length}.`;
+      const message = en("outcome.rbm.lengthMismatch", {
+        what,
+        text: shown(t),
+        length: String(t.length),
+        declared: String(length),
+      });
       fail("rbm-length-mismatch", message.charAt(0).toUpperCase() + message.slice(1), {
         ...subject,
         text: shown(t),

@@ -1,4 +1,4 @@
-import { FACTORY_ZEROS } from "../protocol/zeros.ts";
+import { FACTORY_ZEROS, ZERO_COUNT, zeroProblemText } from "../protocol/zeros.ts";
 import { type Clock, realClock } from "../shared/clock.ts";
 import type { DownloadProgress } from "./sim-downloader.ts";
 import type { StoredFile } from "./sim-downloads.ts";
@@ -116,7 +116,10 @@ export function resolveOptions(options: SimulatedRbcOptions) {
     throw new RangeError(`The serial number must be 13 printable ASCII characters, got "${serialNumber}".`);
   }
   const zeros = [...(options.zeros ?? FACTORY_ZEROS)];
-  if (zeros.length !== 16) throw new RangeError("A zero table has 16 values.");
+  if (zeros.length !== ZERO_COUNT) {
+    // The protocol's sentence (the outcome catalogue's), not a copy of it.
+    throw new RangeError(zeroProblemText({ id: -1, value: zeros.length }, "en"));
+  }
   return {
     clock: options.clock ?? realClock,
     firmware: { ...(options.firmware ?? { major: 2, minor: 23 }) },

@@ -1,9 +1,10 @@
 /**
  * Issue 21 item 6 in the Editor: its messages are kept as what they say (a catalogue key and its facts) and
- * worded when drawn, so a message made before a language switch follows the switch. Three messages of three
- * kinds, each in its own place: a tethered play's result (Play tab), a deleted draft (Drafts) and a file that
- * was not opened (the toolbar). Made in English, switched to Korean with the panel's own language control,
- * then back.
+ * worded when drawn, so a message made before a language switch follows the switch. Messages of every kind,
+ * each in its own place: a tethered play's result (Play tab), a deleted draft (Drafts) and a file that was not
+ * opened (the toolbar); a refusal beside a field (the motion core's, and the Editor's own), the undo and redo
+ * steps' names (the buttons and the notice) and why a stored draft is not usable (Drafts). Made in English,
+ * switched to Korean with the panel's own language control, then back.
  */
 import type { Locator, Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
@@ -24,6 +25,42 @@ afterAll(async () => {
 const switchLanguage = (page: Page, to: "en" | "ko") => page.getByLabel(/Language/).selectOption(to);
 
 const textOf = async (where: Locator) => squash(await where.textContent());
+
+/** Types a value into a field and leaves it (a `change`, as a person pressing Tab). */
+async function typeInto(page: Page, testId: string, value: string): Promise<void> {
+  const field = page.getByTestId(testId);
+  await field.fill(value);
+  await field.press("Tab");
+}
+
+/** Shows a tab of the selected scene's work (only the shown tab's panel is drawn) and waits for its panel. */
+async function showTab(page: Page, tab: "pose" | "tools"): Promise<void> {
+  await page.locator(`#editor-tab-${tab}`).click();
+  await page.locator(`#editor-panel-${tab}`).waitFor();
+}
+
+/** Stores a draft record straight into the panel's IndexedDB (database "rbc-panel-drafts", store "drafts"). */
+async function storeDraft(page: Page, key: string, record: unknown): Promise<void> {
+  await page.evaluate(
+    ({ key, record }) =>
+      new Promise<void>((resolve, reject) => {
+        const open = indexedDB.open("rbc-panel-drafts");
+        open.onupgradeneeded = () => open.result.createObjectStore("drafts");
+        open.onerror = () => reject(open.error);
+        open.onsuccess = () => {
+          const db = open.result;
+          const tx = db.transaction("drafts", "readwrite");
+          tx.objectStore("drafts").put(record, key);
+          tx.oncomplete = () => {
+            db.close();
+            resolve();
+          };
+          tx.onerror = () => reject(tx.error);
+        };
+      }),
+    { key, record },
+  );
+}
 
 describe("the Editor's messages follow a language switch", () => {
   it("a play result, a deleted draft and a file not opened read in Korean after the switch and in English after the switch back", async () => {
@@ -88,6 +125,91 @@ describe("the Editor's messages follow a language switch", () => {
     expect(await textOf(played)).toBe(playedEn);
     expect(await textOf(deleted)).toBe(deletedEn);
     expect(await textOf(refused)).toBe(refusedEn);
+    await context.close();
+  });
+
+  it("a refusal beside a field, the undo and redo steps' names and a draft set aside read in Korean after the switch and in English after the switch back", async () => {
+    const { page, context } = await app.newPage();
+    await page.goto(`${app.url}#/editor`, { waitUntil: "domcontentloaded" });
+    await page.getByTestId("pose-table").waitFor();
+    // A draft a newer panel saved: the Editor lists it apart, with why, when it opens.
+    await storeDraft(page, "d-newer", {
+      version: 2,
+      id: "d-newer",
+      name: "Later",
+      savedAt: Date.now(),
+      rbm: "x",
+    });
+    await page.reload({ waitUntil: "domcontentloaded" });
+    await page.getByTestId("pose-table").waitFor();
+    // In a closed <details> (the list of drafts set aside): on the page, not shown until opened.
+    const aside = page.getByTestId("broken-drafts").locator("li");
+    await aside.waitFor({ state: "attached" });
+    const asideEn = "It was saved by a newer panel (draft format 2); this panel reads format 1.";
+    expect(await textOf(aside)).toContain(`d-newer: ${asideEn}`);
+
+    // Two edits, the second one undone: the buttons and the notice name both steps.
+    await typeInto(page, "end-2", "120");
+    await page.getByTestId("editor-undo").filter({ hasText: "Left knee" }).waitFor();
+    await typeInto(page, "end-4", "100");
+    await page.getByTestId("editor-undo").filter({ hasText: "Left ankle roll" }).waitFor();
+    await page.getByTestId("editor-undo").click();
+    const undo = page.getByTestId("editor-undo");
+    const redo = page.getByTestId("editor-redo");
+    const undone = page.getByTestId("editor-toolbar").locator(".live .notice p");
+    await redo.filter({ hasText: "Left ankle roll" }).waitFor();
+    const steps = async () => [await textOf(undo), await textOf(redo), await textOf(undone)];
+    const stepsEn = [
+      "Undo: set Left knee (end of scene 0)",
+      "Redo: set Left ankle roll (end of scene 0)",
+      "Undone: set Left ankle roll (end of scene 0).",
+    ];
+    expect(await steps()).toEqual(stepsEn);
+
+    // Refused: a position the motion file cannot hold (the motion core's, on the Pose tab) and a time factor
+    // that is not a number (the Editor's own, on the Tools tab). Nothing changes; each reason stays beside its
+    // field, and a tab shows its own when shown again.
+    await typeInto(page, "end-3", "300");
+    const position = page.locator("#problem-end-3");
+    await position.waitFor();
+    const positionEn =
+      "The end position of Left ankle pitch (servo 3) must be a whole number from 0 to 254, not 300.";
+    expect(await textOf(position)).toBe(positionEn);
+    await showTab(page, "tools");
+    await page.getByTestId("retime-mode").selectOption("factor");
+    await page.getByTestId("retime-value").fill("fast");
+    await page.getByTestId("retime-apply").click();
+    const factor = page.locator("#retime-problem");
+    await factor.waitFor();
+    const factorEn =
+      'A time factor is a number above 0 (2 = half as fast, 0.5 = twice as fast); "fast" is not.';
+    expect(await textOf(factor)).toBe(factorEn);
+
+    await switchLanguage(page, "ko");
+    await page.getByRole("heading", { level: 1, name: "모션 편집기" }).waitFor();
+    expect(await textOf(factor)).toBe(
+      '시간 배수는 0보다 큰 수여야 해요 (2 = 절반 속도, 0.5 = 두 배 속도). 입력한 값: "fast".',
+    );
+    await showTab(page, "pose");
+    expect(await textOf(position)).toBe(
+      "왼쪽 발목 앞뒤(서보 3)의 끝 위치에는 0에서 254 사이의 정수만 쓸 수 있어요. 입력한 값: 300.",
+    );
+    expect(await steps()).toEqual([
+      "실행 취소: 왼쪽 무릎 설정 (장면 0 끝)",
+      "다시 실행: 왼쪽 발목 롤 설정 (장면 0 끝)",
+      "실행 취소: 왼쪽 발목 롤 설정 (장면 0 끝).",
+    ]);
+    expect(await textOf(aside)).toContain(
+      "d-newer: 더 새로운 패널이 저장했어요 (임시 저장본 형식 2). 이 패널은 형식 1만 읽을 수 있어요.",
+    );
+
+    await switchLanguage(page, "en");
+    await page.getByRole("heading", { level: 1, name: "Motion editor" }).waitFor();
+    expect(await textOf(position)).toBe(positionEn);
+    expect(await steps()).toEqual(stepsEn);
+    expect(await textOf(aside)).toContain(`d-newer: ${asideEn}`);
+    await showTab(page, "tools");
+    expect(await textOf(factor)).toBe(factorEn);
     await context.close();
   });
 });

@@ -26,7 +26,7 @@ const MAY_IMPORT: Record<Layer, readonly Layer[]> = {
   i18n: ["shared"],
   protocol: ["shared", "i18n"],
   link: ["shared"],
-  motion: ["protocol", "shared"],
+  motion: ["protocol", "shared", "i18n"],
   sim: ["protocol", "motion", "shared"],
   device: ["protocol", "link", "motion", "shared", "i18n"],
   ui: ["device", "protocol", "motion", "link", "sim", "shared", "i18n"],
@@ -35,10 +35,11 @@ const MAY_IMPORT: Record<Layer, readonly Layer[]> = {
 
 /**
  * Type-only imports (`import type`) allowed beyond MAY_IMPORT: the outcome catalogue (src/i18n/outcomes) words
- * the codes and facts that protocol/, link/ and device/ define, so it names their types; it never runs their code.
+ * the codes and facts that protocol/, link/, device/ and motion/ define, so it names their types; it never runs
+ * their code.
  */
 const MAY_IMPORT_TYPES: Partial<Record<Layer, readonly Layer[]>> = {
-  i18n: ["protocol", "link", "device"],
+  i18n: ["protocol", "link", "device", "motion"],
 };
 
 /** The layers whose index.ts is the public API (docs/architecture.md); shared/ and i18n/ are leaves used file by file. */
@@ -246,6 +247,7 @@ describe("the import rule (docs/architecture.md)", () => {
       fake("src/device/upload.ts", "../protocol/packet.ts", "../link/transport.ts", "../i18n/translate.ts"),
       fake("src/cli/connect.ts", "../link/node-serial-transport.ts", "../../package.json"),
       fake("src/protocol/packet.ts", "../shared/format.ts", "./bytes.ts"),
+      fake("src/motion/errors.ts", "../i18n/outcomes/motion/motion-words.ts", "../protocol/packet.ts"),
     ];
     expect(importViolations(files)).toEqual([]);
   });
@@ -256,7 +258,8 @@ describe("the import rule (docs/architecture.md)", () => {
       fake("src/protocol/packet.ts", "../device/index.ts"),
       fake("src/device/upload.ts", "../ui/store.ts"),
       fake("src/sim/simulated-rbc.ts", "../link/index.ts"),
-      fake("src/motion/document.ts", "../i18n/translate.ts"),
+      fake("src/link/transport.ts", "../i18n/translate.ts"),
+      fake("src/motion/document.ts", "../device/index.ts"),
       fake("src/ui/app.ts", "../cli/main.ts"),
       fake("src/shared/clock.ts", "../protocol/index.ts"),
     ];
@@ -264,7 +267,8 @@ describe("the import rule (docs/architecture.md)", () => {
       'src/protocol/packet.ts: "../device/index.ts" (protocol/ may not import device/)',
       'src/device/upload.ts: "../ui/store.ts" (device/ may not import ui/)',
       'src/sim/simulated-rbc.ts: "../link/index.ts" (sim/ may not import link/)',
-      'src/motion/document.ts: "../i18n/translate.ts" (motion/ may not import i18n/)',
+      'src/link/transport.ts: "../i18n/translate.ts" (link/ may not import i18n/)',
+      'src/motion/document.ts: "../device/index.ts" (motion/ may not import device/)',
       'src/ui/app.ts: "../cli/main.ts" (ui/ may not import cli/)',
       'src/shared/clock.ts: "../protocol/index.ts" (shared/ may not import protocol/)',
     ]);
@@ -273,13 +277,15 @@ describe("the import rule (docs/architecture.md)", () => {
   it("lets the outcome catalogue name the types it words, and nothing more", () => {
     const typeOnly = {
       path: "src/i18n/outcomes/words.ts",
-      text: 'import type { RbcErrorCode } from "../../device/index.ts";\n',
+      text:
+        'import type { RbcErrorCode } from "../../device/index.ts";\n' +
+        'import type { MotionErrorFacts } from "../../motion/errors.ts";\n',
     };
     const value = {
       path: "src/i18n/outcomes/other.ts",
       text: 'import { RbcError } from "../../device/errors.ts";\n',
     };
-    expect(importViolations([...base, typeOnly, value])).toEqual([
+    expect(importViolations([...base, index("motion", "errors"), typeOnly, value])).toEqual([
       'src/i18n/outcomes/other.ts: "../../device/errors.ts" (i18n/ may not import device/)',
     ]);
   });

@@ -3,12 +3,13 @@ import { join, relative } from "node:path";
 import { describe, expect, it } from "vitest";
 
 /**
- * Issue 19's rule for the robot's outcomes: no English sentence about what the robot or the link did is written
- * twice in src/. The device and link layers take their sentences from the outcome catalogue (src/i18n/outcomes)
- * or write them once; a second copy (a CLI or panel catalogue repeating the device's English, two device files
- * each spelling the same refusal) is how the Korean drifted before. The scan reads every string and template
- * literal of src/ (comments removed), keeps sentences of six words or more, treats `${…}` and `{name}` alike,
- * and reports each device or link sentence found in more than one place.
+ * Issue 19's rule for the robot's outcomes: no English sentence about what the robot, the link, a motion file,
+ * a motion edit or the simulated robot did is written twice in src/. The device, link, protocol, motion and sim
+ * layers take their sentences from the outcome catalogue (src/i18n/outcomes) or write them once; a second copy
+ * (a CLI or panel catalogue repeating the device's English, two device files each spelling the same refusal,
+ * the Editor repeating the motion layer's refusals) is how the Korean drifted before. The scan reads every
+ * string and template literal of src/ (comments removed), keeps sentences of six words or more, treats `${…}`
+ * and `{name}` alike, and reports each sentence of those layers found in more than one place.
  */
 
 const ROOT = join(import.meta.dirname, "../../src");
@@ -46,7 +47,8 @@ function sentencesIn(files: readonly { path: string; text: string }[]): Map<stri
   return seen;
 }
 
-const OUTCOME_LAYERS = /^(device|link)\//;
+/** The layers whose outcomes are worded once, and the outcome catalogue itself (no second copy of its entries). */
+const OUTCOME_LAYERS = /^(device|link|protocol|motion|sim|i18n\/outcomes)\//;
 
 describe("one wording for the robot's outcomes", () => {
   it("finds a sentence written twice, whatever its placeholders are called", () => {
@@ -66,7 +68,7 @@ describe("one wording for the robot's outcomes", () => {
     expect([...found.keys()]).toHaveLength(1);
   });
 
-  it("no sentence of the device or link layer is written twice in src/", () => {
+  it("no sentence of the device, link, protocol, motion or sim layer is written twice in src/", () => {
     const files = tsFiles(ROOT).map((path) => ({
       path: relative(ROOT, path),
       text: readFileSync(path, "utf8"),

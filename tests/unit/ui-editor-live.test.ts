@@ -50,6 +50,7 @@ import {
   TEACH_IN_QUESTION,
 } from "../../src/ui/features/editor/teach-in-model.ts";
 import { PacketLog } from "../../src/ui/features/log/packet-log.ts";
+import { type Said, wordOf } from "../../src/ui/said.ts";
 import { Session } from "../../src/ui/session.ts";
 import { SIMULATED_CLOCK } from "../../src/ui/simulated-clock.ts";
 import { createStore } from "../../src/ui/store.ts";
@@ -267,9 +268,9 @@ class TestHost implements EditorHost {
     public doc: Motion,
     public scene = 0,
   ) {}
-  commit(next: Motion, label: string): void {
+  commit(next: Motion, label: Said): void {
     this.doc = next;
-    this.commits.push(label);
+    this.commits.push(wordOf(label, "en"));
   }
 }
 

@@ -33,7 +33,7 @@ import {
 import { motionFileName } from "../../src/ui/features/editor/file-name.ts";
 import { editorMessages } from "../../src/ui/features/editor/messages.ts";
 import { playFailureText, playQuestion, playResultNotice } from "../../src/ui/features/editor/play-model.ts";
-import { refusalText, TypedValueError } from "../../src/ui/features/editor/refusal-text.ts";
+import { refusalOf, refusalText, TypedValueError } from "../../src/ui/features/editor/refusal-text.ts";
 import { formatSavedAt } from "../../src/ui/features/editor/saved-at.ts";
 import { isTextEntry, shortcutOf } from "../../src/ui/features/editor/shortcuts.ts";
 import {
@@ -55,6 +55,7 @@ import {
   limpNotice,
   readNotice,
 } from "../../src/ui/features/editor/teach-in-model.ts";
+import { said, wordOf } from "../../src/ui/said.ts";
 
 const WAVE = readFileSync(new URL("../../examples/wave.rbm", import.meta.url), "latin1");
 
@@ -80,20 +81,21 @@ describe("draft records", () => {
     const later = readDraft("d-1", { ...good, version: 2 });
     expect(later.ok).toBe(false);
     if (!later.ok)
-      expect(later.problem).toBe(
+      expect(wordOf(later.problem, "en")).toBe(
         "It was saved by a newer panel (draft format 2); this panel reads format 1.",
       );
     const noText = readDraft("d-1", { ...good, rbm: undefined });
     expect(noText.ok).toBe(false);
-    if (!noText.ok) expect(noText.problem).toMatch(/^It is not a draft this panel wrote \(rbm\)/);
+    if (!noText.ok)
+      expect(wordOf(noText.problem, "en")).toMatch(/^It is not a draft this panel wrote \(rbm\)/);
     const negative = readDraft("d-1", { ...good, savedAt: -3 });
     expect(negative.ok).toBe(false);
     const moved = readDraft("d-2", good);
-    expect(moved).toEqual({
-      ok: false,
-      key: "d-2",
-      problem: 'It is stored under "d-2" but names itself "d-1".',
-    });
+    expect(moved.ok).toBe(false);
+    if (!moved.ok) {
+      expect(moved.key).toBe("d-2");
+      expect(wordOf(moved.problem, "en")).toBe('It is stored under "d-2" but names itself "d-1".');
+    }
     for (const junk of [null, undefined, 42, "text", [], { version: DRAFT_VERSION }]) {
       expect(readDraft("k", junk).ok).toBe(false);
     }
@@ -131,11 +133,13 @@ describe("draft records", () => {
     expect(saveMotion(latest.restored!.doc)).toBe(WAVE);
     expect(latest.drafts.map((d) => d.id)).toEqual(["old"]);
     expect(latest.broken.map((b) => b.key).sort()).toEqual(["newest", "other"]);
-    expect(latest.broken.find((b) => b.key === "newest")?.problem).toMatch(/^Its motion cannot be read: /);
+    const newest = latest.broken.find((b) => b.key === "newest");
+    expect(newest && wordOf(newest.problem, "en")).toMatch(/^Its motion cannot be read: /);
     expect(await findLatestDraft(memoryDraftStorage())).toEqual({ drafts: [], broken: [] });
-    expect(await readDraftDocument(storage, "gone")).toEqual({
-      problem: "It is no longer stored (deleted in another tab?).",
-    });
+    const gone = await readDraftDocument(storage, "gone");
+    expect("problem" in gone && wordOf(gone.problem, "en")).toBe(
+      "It is no longer stored (deleted in another tab?).",
+    );
   });
 
   it("get ids from the time and a random number", () => {
@@ -287,7 +291,7 @@ describe("a change written as the page went away", () => {
     items.set(PENDING_DRAFT_KEY, "{not json");
     const broken = await recoverPending(storage, store);
     expect(broken?.key).toBe(PENDING_DRAFT_KEY);
-    expect(broken?.problem).toMatch(/^It is not a draft this panel wrote/);
+    expect(broken && wordOf(broken.problem, "en")).toMatch(/^It is not a draft this panel wrote/);
     expect((await storage.entries()).map(([k]) => k)).toEqual(["d"]);
   });
 });
@@ -345,22 +349,26 @@ describe("keyboard shortcuts", () => {
   });
 });
 
+/** An undo step's name, as the Editor makes them: a message of its catalogue. */
+const step = (scene: string) => said(editorMessages, "editor.label.addScene", { scene });
+
 describe("editor state", () => {
   const started = (doc: Motion = newMotion()): EditorState => startDocument(initialEditor(), doc, "d-1");
   const three = () => addScene(addScene(newMotion()));
 
   it("applies an edit as one undo step, with its label", () => {
     const s = started();
-    const out = applyEdit(s, (d) => setPosition(d, 0, 2, 150), "set Left knee", { field: "end:2" });
+    const label = said(editorMessages, "editor.label.setEnd", { joint: "Left knee", scene: "0" });
+    const out = applyEdit(s, (d) => setPosition(d, 0, 2, 150), label, { field: "end:2" });
     expect(out.changed).toBe(true);
     expect(out.state.history?.present.scenes[0]?.servos[2]?.end).toBe(150);
-    expect(out.state.history?.label).toBe("set Left knee");
+    expect(out.state.history?.label).toBe(label);
     expect(out.state.history?.undoCount).toBe(1);
   });
 
-  it("puts a refused edit's message next to its field and changes nothing; a good edit clears it", () => {
+  it("puts a refused edit next to its field as the core's code and facts, and changes nothing; a good edit clears it", () => {
     const s = started();
-    const out = applyEdit(s, (d) => setPosition(d, 0, 2, 300), "set Left knee", {
+    const out = applyEdit(s, (d) => setPosition(d, 0, 2, 300), step("0"), {
       field: "end:2",
       text: "300",
     });
@@ -369,9 +377,12 @@ describe("editor state", () => {
     expect(out.state.history).toBe(s.history);
     expect(out.state.problems["end:2"]).toEqual({
       text: "300",
-      message: "Scene 0: the end position of servo 2 must be a whole number from 0 to 254, not 300.",
+      why: {
+        code: "motion-value",
+        facts: { rule: "whole", subject: { field: "end", scene: 0, servo: 2 }, value: 300, min: 0, max: 254 },
+      },
     });
-    const fixed = applyEdit(out.state, (d) => setPosition(d, 0, 2, 200), "set Left knee", {
+    const fixed = applyEdit(out.state, (d) => setPosition(d, 0, 2, 200), step("0"), {
       field: "end:2",
     });
     expect(fixed.state.problems).toEqual({});
@@ -385,7 +396,7 @@ describe("editor state", () => {
         () => {
           throw new TypeError("oops");
         },
-        "x",
+        step("x"),
         { field: "f" },
       ),
     ).toThrow(TypeError);
@@ -394,13 +405,13 @@ describe("editor state", () => {
   it("merges a slider drag into one undo step, and a new drag is a step of its own", () => {
     let s = started();
     for (const v of [130, 140, 150]) {
-      s = applyEdit(s, (d) => setPosition(d, 0, 2, v), "slide", {
+      s = applyEdit(s, (d) => setPosition(d, 0, 2, v), step("0"), {
         field: "end:2",
         mergeKey: "slide:0:2:0",
       }).state;
     }
     expect(s.history?.undoCount).toBe(1);
-    s = applyEdit(s, (d) => setPosition(d, 0, 2, 160), "slide", {
+    s = applyEdit(s, (d) => setPosition(d, 0, 2, 160), step("0"), {
       field: "end:2",
       mergeKey: "slide:0:2:1",
     }).state;
@@ -415,7 +426,7 @@ describe("editor state", () => {
     let s = started(three());
     s = selectScene(s, 2);
     expect(s.scene).toBe(2);
-    s = applyEdit(s, (d) => addScene(d, 3), "add scene 3", {
+    s = applyEdit(s, (d) => addScene(d, 3), step("3"), {
       field: "structure",
       structural: true,
       select: () => 3,
@@ -432,11 +443,11 @@ describe("editor state", () => {
 
   it("clears the problems shown when the document moves (undo, another scene)", () => {
     let s = started(three());
-    s = applyEdit(s, (d) => setPosition(d, 1, 2, 10), "x", { field: "end:2" }).state;
-    s = applyEdit(s, (d) => setPosition(d, 1, 2, 999), "x", { field: "end:2", text: "999" }).state;
+    s = applyEdit(s, (d) => setPosition(d, 1, 2, 10), step("1"), { field: "end:2" }).state;
+    s = applyEdit(s, (d) => setPosition(d, 1, 2, 999), step("1"), { field: "end:2", text: "999" }).state;
     expect(Object.keys(s.problems)).toEqual(["end:2"]);
     expect(undoEdit(s).state.problems).toEqual({});
-    s = applyEdit(s, (d) => setPosition(d, 1, 2, 999), "x", { field: "end:2", text: "999" }).state;
+    s = applyEdit(s, (d) => setPosition(d, 1, 2, 999), step("1"), { field: "end:2", text: "999" }).state;
     expect(selectScene(s, 2).problems).toEqual({});
   });
 
@@ -450,13 +461,13 @@ describe("editor state", () => {
     expect(setDetached(s, 2, true)).toBe(s);
     expect(setDetached(s, 2, false).detached).toEqual([]);
     // Structural edits reset the options (the boundaries move with the scenes).
-    const moved = applyEdit(s, (d) => addScene(d, 0), "add", { field: "structure", structural: true });
+    const moved = applyEdit(s, (d) => addScene(d, 0), step("0"), { field: "structure", structural: true });
     expect(moved.state.detached).toEqual([]);
   });
 
   it("starts a document with a fresh history on its first scene", () => {
     const s = startDocument(
-      { ...started(three()), scene: 2, problems: { x: { text: "", message: "m" } } },
+      { ...started(three()), scene: 2, problems: { x: { text: "", why: step("2") } } },
       openMotion(WAVE),
       undefined,
     );
@@ -507,8 +518,6 @@ describe("the tab list's keys", () => {
 });
 
 describe("the editor in Korean", () => {
-  const ko = translator(editorMessages, "ko");
-  const en = translator(editorMessages, "en");
   const refused = (change: () => unknown): MotionError => {
     try {
       change();
@@ -519,85 +528,94 @@ describe("the editor in Korean", () => {
     throw new Error("expected a MotionError");
   };
 
-  it("says a refused value from the core's rule and values, and keeps the core's sentence in English", () => {
+  const words = (e: MotionError) => ({
+    en: refusalText(refusalOf(e), "en"),
+    ko: refusalText(refusalOf(e), "ko"),
+  });
+
+  it("says a refused value from the core's code and facts, in English the core's own message", () => {
     const value = refused(() => setPosition(newMotion(), 0, 2, 300));
-    const what = ko("editor.what.end", { joint: "왼쪽 무릎", id: "2" });
-    expect(refusalText(value, ko, what)).toBe(
-      "왼쪽 무릎(서보 2)의 끝 위치에는 0에서 254 사이의 정수만 쓸 수 있어요. 입력한 값: 300.",
+    expect(value.message).toBe(
+      "The end position of Left knee (servo 2) must be a whole number from 0 to 254, not 300.",
     );
-    expect(refusalText(value, en, "The end position of Left knee (servo 2)")).toBe(
-      "Scene 0: the end position of servo 2 must be a whole number from 0 to 254, not 300.",
+    expect(words(value)).toEqual({
+      en: value.message,
+      ko: "왼쪽 무릎(서보 2)의 끝 위치에는 0에서 254 사이의 정수만 쓸 수 있어요. 입력한 값: 300.",
+    });
+    expect(words(refused(() => setMotionName(newMotion(), "인사")))).toEqual({
+      en: "The motion name can use only plain letters, digits, spaces and punctuation (ASCII), as Motionbuilder does.",
+      ko: "모션 이름에는 영문 글자, 숫자, 공백, 문장 부호(ASCII)만 쓸 수 있어요. Motionbuilder와 같아요.",
+    });
+    expect(words(refused(() => setMotionName(newMotion(), "a:b"))).ko).toBe(
+      '모션 이름에는 ":"을 쓸 수 없어요. 모션 파일에서 칸을 나누는 기호예요.',
     );
-    const name = refused(() => setMotionName(newMotion(), "인사"));
-    expect(refusalText(name, ko, ko("editor.what.motionName"))).toBe(
-      "모션 이름에는 영문 글자, 숫자, 공백, 문장 부호(ASCII)만 쓸 수 있어요. Motionbuilder와 같아요.",
-    );
-    expect(
-      refusalText(
-        refused(() => setMotionName(newMotion(), "a:b")),
-        ko,
-        "모션 이름",
-      ),
-    ).toBe('모션 이름에는 ":"을 쓸 수 없어요. 모션 파일에서 칸을 나누는 기호예요.');
   });
 
   it("says frames too close or too far apart with the numbers that would fix them", () => {
     const close = refused(() => setTiming(newMotion(), 0, { frames: 10, timeMs: 100 }));
-    expect(refusalText(close, ko)).toBe(
-      "프레임 10개를 100ms에 재생하면 프레임 사이가 10.0ms예요. RBC는 20ms 이상이 필요해요. 프레임을 5개 이하로 하거나 시간을 200ms 이상으로 해 주세요.",
-    );
+    expect(words(close)).toEqual({
+      en: "10 frames in 100 ms are 10.0 ms apart; the RBC needs at least 20 ms, so use at most 5 frames or at least 200 ms.",
+      ko: "프레임 10개를 100ms에 재생하면 프레임 사이가 10.0ms예요. RBC는 20ms 이상이 필요해요. 프레임을 5개 이하로 하거나 시간을 200ms 이상으로 해 주세요.",
+    });
     const far = refused(() => setTiming(newMotion(), 0, { frames: 1, timeMs: 10_000 }));
-    expect(refusalText(far, ko)).toBe(
+    expect(words(far).ko).toBe(
       "프레임 1개를 10,000ms에 재생하면 프레임 사이가 10,000.0ms예요. RBC는 4,550ms까지만 허용해요. 프레임을 3개 이상으로 해 주세요.",
     );
   });
 
   it("says a retime or a mirror the core refuses, naming the scene and the servos", () => {
     const fast = refused(() => retime(newMotion(), 0.001));
-    expect(refusalText(fast, ko)).toBe(
+    expect(words(fast).ko).toBe(
       "그러면 장면 0의 시간이 1ms가 돼요. 장면은 적어도 20ms(프레임 1개)는 걸리므로 모션을 그만큼 빠르게 할 수 없어요.",
     );
     const doc = setPosition(newMotion(), 0, 10, 254);
     const mirror = refused(() => mirrorPose(doc, 0, { mode: "left-to-right" }));
     expect(mirror.facts.positions?.length).toBeGreaterThan(0);
-    expect(refusalText(mirror, ko)).toMatch(
+    expect(words(mirror).ko).toMatch(
       /^장면 0은\(는\) 좌우 대칭할 수 없어요\. 서보 13 → -?\d+: 위치 0-254를 벗어나요\.$/,
     );
   });
 
-  it("keeps what the editor itself refused as it was worded, and falls back to the code without values", () => {
-    const typed = new TypedValueError("motion-value", ko("editor.refusal.factor", { text: "빠르게" }));
-    expect(refusalText(typed, ko)).toBe(
+  it("keeps what the editor itself refused as its message, and says a refusal without facts by its code", () => {
+    const typed = new TypedValueError(
+      "motion-value",
+      said(editorMessages, "editor.refusal.factor", { text: "빠르게" }),
+    );
+    expect(typed.message).toBe(
+      'A time factor is a number above 0 (2 = half as fast, 0.5 = twice as fast); "빠르게" is not.',
+    );
+    expect(words(typed).ko).toBe(
       '시간 배수는 0보다 큰 수여야 해요 (2 = 절반 속도, 0.5 = 두 배 속도). 입력한 값: "빠르게".',
     );
-    expect(refusalText(new MotionError("motion-last-scene", "A motion needs at least one scene…"), ko)).toBe(
+    expect(words(new MotionError("motion-last-scene", "A motion needs at least one scene…")).ko).toBe(
       "모션에는 장면이 하나 이상 있어야 해서 하나뿐인 장면은 지울 수 없어요.",
     );
+    expect(words(new MotionError("motion-mirror", "no")).en).toBe("This scene cannot be mirrored.");
   });
 
-  it("puts a refusal next to its field in the words it is given", () => {
+  it("keeps a refusal beside its field as data: the same state reads in English, then in Korean", () => {
     const s = startDocument(initialEditor(), newMotion(), "d-1");
-    const out = applyEdit(s, (d) => setPosition(d, 0, 2, 300), "왼쪽 무릎 설정", {
-      field: "end:2",
-      text: "300",
-      word: (e) => refusalText(e, ko, "왼쪽 무릎(서보 2)의 끝 위치"),
-    });
-    expect(out.state.problems["end:2"]).toEqual({
-      text: "300",
-      message: "왼쪽 무릎(서보 2)의 끝 위치에는 0에서 254 사이의 정수만 쓸 수 있어요. 입력한 값: 300.",
-    });
+    const out = applyEdit(s, (d) => setPosition(d, 0, 3, 300), step("0"), { field: "end:3", text: "300" });
+    const problem = out.state.problems["end:3"];
+    expect(problem?.text).toBe("300");
+    expect(problem && refusalText(problem.why, "en")).toBe(
+      "The end position of Left ankle pitch (servo 3) must be a whole number from 0 to 254, not 300.",
+    );
+    expect(problem && refusalText(problem.why, "ko")).toBe(
+      "왼쪽 발목 앞뒤(서보 3)의 끝 위치에는 0에서 254 사이의 정수만 쓸 수 있어요. 입력한 값: 300.",
+    );
   });
 
   it("writes a draft's time with a Korean date on another day, and a broken draft's reason in Korean", () => {
     const now = new Date(2026, 10, 21, 15, 30).getTime();
     expect(formatSavedAt(new Date(2026, 10, 21, 9, 5).getTime(), now, "ko")).toBe("09:05");
     expect(formatSavedAt(new Date(2026, 10, 20, 23, 59).getTime(), now, "ko")).toBe("11월 20일 23:59");
-    const later = readDraft("d-1", { ...record("d-1", 5), version: 2 }, "ko");
-    expect(later.ok ? "" : later.problem).toBe(
+    const later = readDraft("d-1", { ...record("d-1", 5), version: 2 });
+    expect(later.ok ? "" : wordOf(later.problem, "ko")).toBe(
       "더 새로운 패널이 저장했어요 (임시 저장본 형식 2). 이 패널은 형식 1만 읽을 수 있어요.",
     );
-    const noText = readDraft("d-1", { ...record("d-1", 5), rbm: undefined }, "ko");
-    expect(noText.ok ? "" : noText.problem).toBe(
+    const noText = readDraft("d-1", { ...record("d-1", 5), rbm: undefined });
+    expect(noText.ok ? "" : wordOf(noText.problem, "ko")).toBe(
       "이 패널이 저장한 임시 저장본이 아니에요 (rbm): 저장된 값의 형식이 맞지 않아요.",
     );
   });

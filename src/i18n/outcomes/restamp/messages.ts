@@ -3,7 +3,7 @@ import { defineMessages } from "../../catalogue.ts";
 /**
  * Restamping a motion file for another robot (docs/protocol.md §7, field 2; src/motion/restamp.ts): what
  * changed, and why a restamp was refused. One catalogue for the panel (Motions, Editor) and `rbc rbm restamp`.
- * The refusals' English is the motion layer's own `RestampError` message, word for word.
+ * The refusals' English is the motion layer's `RestampError` message (it is made from here).
  */
 export const restampOutcomeMessages = defineMessages({
   "outcome.restamp.changed": {

@@ -1,17 +1,18 @@
+import type { RestampErrorCode, RestampErrorFacts } from "../../../motion/restamp.ts";
 import type { Locale } from "../../locale.ts";
 import { translator } from "../../translate.ts";
 import { restampOutcomeMessages } from "./messages.ts";
 
 /**
- * The words of a restamp (src/motion/restamp.ts) in a language. The motion layer's `RestampError` is read by its
- * shape (src/i18n may not import src/motion): a stable code and the facts behind it.
+ * The words of a restamp (src/motion/restamp.ts) in a language. Types only from src/motion: a refusal is its
+ * stable code and the facts behind it (a `RestampError` is one).
  */
 export interface RestampRefusal {
-  readonly code: "restamp-bad-serial" | "restamp-serial-field";
-  readonly facts: { readonly value?: string; readonly length?: number };
+  readonly code: RestampErrorCode;
+  readonly facts: RestampErrorFacts;
 }
 
-/** Why a restamp was refused, in `locale` (in English, the `RestampError`'s own message). */
+/** Why a restamp was refused, in `locale` (the `RestampError`'s English message is this, in English). */
 export function restampRefusalText(refusal: RestampRefusal, locale: Locale): string {
   const t = translator(restampOutcomeMessages, locale);
   switch (refusal.code) {

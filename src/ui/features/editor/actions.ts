@@ -1,9 +1,10 @@
-import { translator } from "../../../i18n/translate.ts";
+import { motionSubjectText } from "../../../i18n/outcomes/motion/motion-words.ts";
 import {
   addScene,
   deleteScene,
   duplicateScene,
   type Motion,
+  type MotionSubject,
   moveScene,
   type SceneSide,
   setMotionName,
@@ -16,14 +17,14 @@ import {
 } from "../../../motion/index.ts";
 import type { AppContext } from "../../context.ts";
 import { focusSoon } from "../../focus.ts";
-import { inEveryLanguage, type LocalText, said } from "../../said.ts";
+import { inEveryLanguage, type LocalText, type Said, said } from "../../said.ts";
 import { jointName } from "../zeros/joints/joint-name.ts";
 import { editorController } from "./controller.ts";
 import { scheduleAutosave } from "./draft-actions.ts";
 import { editorNotice } from "./editor-notice.ts";
 import type { EditorHost } from "./host.ts";
-import { type EditorTranslator, editorMessages } from "./messages.ts";
-import { refusalText, TypedValueError } from "./refusal-text.ts";
+import { type EditorKey, editorMessages } from "./messages.ts";
+import { TypedValueError } from "./refusal-text.ts";
 import {
   applyEdit,
   docOf,
@@ -39,31 +40,18 @@ import {
 } from "./state.ts";
 
 /**
- * The editor's edits of the document: each one undo step, autosaved; a refusal shows next to its control, in
- * the panel's language (refusal-text.ts). Undo labels and notices are made in the language of the moment.
+ * The editor's edits of the document: each one undo step, autosaved; a refusal shows next to its control
+ * (refusal-text.ts). Refusals, undo steps' names and notices are kept as messages, worded when drawn.
  */
 
-/** The editor's words in the panel's language of the moment (for actions, which make sentences). */
-export function editorWords(ctx: AppContext): EditorTranslator {
-  return translator(editorMessages, ctx.store.get().locale);
-}
-
-/**
- * Applies an edit of the document; returns true when it changed (and is being autosaved). `what` names what
- * is being set, in the panel's language (a refusal in Korean says it).
- */
+/** Applies an edit of the document as the undo step `label`; returns true when it changed (and is being autosaved). */
 export function edit(
   ctx: AppContext,
   change: (doc: Motion) => Motion,
-  label: string,
-  request: EditRequest & { what?: string },
+  label: Said,
+  request: EditRequest,
 ): boolean {
-  const t = editorWords(ctx);
-  const { what, ...rest } = request;
-  const out = applyEdit(editorOf(ctx.store.get()), change, label, {
-    ...rest,
-    word: (e) => refusalText(e, t, what),
-  });
+  const out = applyEdit(editorOf(ctx.store.get()), change, label, request);
   patchEditor(ctx.store, out.state);
   if (out.changed) scheduleAutosave(ctx);
   return out.changed;
@@ -80,18 +68,24 @@ export function editorHost(ctx: AppContext, doc: Motion, scene: number): EditorH
   };
 }
 
+/** What was being set, in every language: the outcome catalogue's words for the motion core's subject. */
+export function subjectWords(subject: MotionSubject): LocalText {
+  return inEveryLanguage((locale) => motionSubjectText(subject, locale));
+}
+
 /**
- * A whole number typed into a field, or a `MotionError` that says what to type (in the language of `t`; `what`
- * and `range` are made with it too).
+ * A whole number typed into a field, or a `TypedValueError` that says what to type: `what` names the field,
+ * `range` is the editor's words for the numbers it takes.
  */
-export function whole(text: string, what: string, range: string, t: EditorTranslator): number {
+export function whole(text: string, what: Said | LocalText, range: EditorKey): number {
   const typed = text.trim();
   if (!/^-?\d+$/.test(typed)) {
+    const numbers = said(editorMessages, range);
     throw new TypedValueError(
       "motion-value",
       typed === ""
-        ? t("editor.refusal.enterWhole", { what, range })
-        : t("editor.refusal.notWhole", { what, range, text: typed }),
+        ? said(editorMessages, "editor.refusal.enterWhole", { what, range: numbers })
+        : said(editorMessages, "editor.refusal.notWhole", { what, range: numbers, text: typed }),
     );
   }
   return Number(typed);
@@ -103,49 +97,43 @@ export function selectedScene(ctx: AppContext): { k: number; doc: Motion } | und
   return doc ? { k: s.scene, doc } : undefined;
 }
 
-/** "The end position of Left knee (servo 2)", in the language of `t`. */
-function positionWhat(t: EditorTranslator, id: number, side: SceneSide): string {
-  const who = { joint: jointName(id, t.locale), id: String(id) };
-  return side === "start" ? t("editor.what.start", who) : t("editor.what.end", who);
+/** A servo's joint in every language ("Left knee", "왼쪽 무릎"), a fact of an undo step's name. */
+function jointWords(id: number): LocalText {
+  return inEveryLanguage((locale) => jointName(id, locale));
 }
 
 /** "set Left knee (end of scene 3)": the undo step of a position edit. */
-function positionLabel(t: EditorTranslator, id: number, side: SceneSide, k: number): string {
-  const what = { joint: jointName(id, t.locale), scene: String(k) };
-  return side === "start" ? t("editor.label.setStart", what) : t("editor.label.setEnd", what);
+function positionLabel(id: number, side: SceneSide, k: number): Said {
+  const what = { joint: jointWords(id), scene: String(k) };
+  return side === "start"
+    ? said(editorMessages, "editor.label.setStart", what)
+    : said(editorMessages, "editor.label.setEnd", what);
 }
 
 /** A position typed into the start or end field of a servo of the selected scene. */
 export function typePosition(ctx: AppContext, id: number, side: SceneSide, text: string): void {
-  const t = editorWords(ctx);
   const s = editorOf(ctx.store.get());
   const k = s.scene;
   const detach = isDetached(s, k, side);
-  const what = positionWhat(t, id, side);
+  const what = subjectWords({ field: side, scene: k, servo: id });
   edit(
     ctx,
-    (doc) => setPosition(doc, k, id, whole(text, what, t("editor.range.position"), t), { side, detach }),
-    positionLabel(t, id, side, k),
-    { field: `${side}:${id}`, text, what },
+    (doc) => setPosition(doc, k, id, whole(text, what, "editor.range.position"), { side, detach }),
+    positionLabel(id, side, k),
+    { field: `${side}:${id}`, text },
   );
 }
 
 /** The end-pose slider of a servo moved: one undo step per drag. */
 export function slidePosition(ctx: AppContext, id: number, value: number): void {
-  const t = editorWords(ctx);
   const s = editorOf(ctx.store.get());
   const k = s.scene;
   const drag = editorController(ctx).drag;
   edit(
     ctx,
     (doc) => setPosition(doc, k, id, value, { side: "end", detach: isDetached(s, k, "end") }),
-    positionLabel(t, id, "end", k),
-    {
-      field: `end:${id}`,
-      text: String(value),
-      mergeKey: `slide:${k}:${id}:${drag}`,
-      what: positionWhat(t, id, "end"),
-    },
+    positionLabel(id, "end", k),
+    { field: `end:${id}`, text: String(value), mergeKey: `slide:${k}:${id}:${drag}` },
   );
 }
 
@@ -155,65 +143,48 @@ export function endSlide(ctx: AppContext): void {
 }
 
 export function chooseTorque(ctx: AppContext, id: number, torque: number): void {
-  const t = editorWords(ctx);
   const k = editorOf(ctx.store.get()).scene;
-  const joint = jointName(id, t.locale);
-  edit(ctx, (doc) => setTorque(doc, k, id, torque), t("editor.label.torque", { joint, scene: String(k) }), {
-    field: `torque:${id}`,
-    what: t("editor.what.torque", { joint }),
-  });
+  const label = said(editorMessages, "editor.label.torque", { joint: jointWords(id), scene: String(k) });
+  edit(ctx, (doc) => setTorque(doc, k, id, torque), label, { field: `torque:${id}` });
 }
 
 export function choosePort(ctx: AppContext, id: number, port: number): void {
-  const t = editorWords(ctx);
   const k = editorOf(ctx.store.get()).scene;
-  const joint = jointName(id, t.locale);
-  edit(ctx, (doc) => setPort(doc, k, id, port), t("editor.label.port", { joint, scene: String(k) }), {
-    field: `port:${id}`,
-    what: t("editor.what.port", { joint }),
-  });
+  const label = said(editorMessages, "editor.label.port", { joint: jointWords(id), scene: String(k) });
+  edit(ctx, (doc) => setPort(doc, k, id, port), label, { field: `port:${id}` });
 }
 
 export function chooseSceneTorque(ctx: AppContext, torque: number): void {
-  const t = editorWords(ctx);
   const k = editorOf(ctx.store.get()).scene;
-  const scene = String(k);
-  edit(ctx, (doc) => setSceneTorque(doc, k, torque), t("editor.label.sceneTorque", { scene }), {
-    field: "scene-torque",
-    what: t("editor.what.sceneTorque", { scene }),
-  });
+  const label = said(editorMessages, "editor.label.sceneTorque", { scene: String(k) });
+  edit(ctx, (doc) => setSceneTorque(doc, k, torque), label, { field: "scene-torque" });
 }
 
 export function typeTiming(ctx: AppContext, which: "frames" | "timeMs", text: string): void {
-  const t = editorWords(ctx);
   const k = editorOf(ctx.store.get()).scene;
   const scene = String(k);
-  const what = which === "frames" ? t("editor.what.frames", { scene }) : t("editor.what.time", { scene });
-  const range = which === "frames" ? t("editor.range.frames") : t("editor.range.time");
+  const what = subjectWords({ field: which === "frames" ? "frames" : "time", scene: k });
+  const range = which === "frames" ? "editor.range.frames" : "editor.range.time";
   edit(
     ctx,
-    (doc) => setTiming(doc, k, { [which]: whole(text, what, range, t) }),
-    which === "frames" ? t("editor.label.frames", { scene }) : t("editor.label.time", { scene }),
-    { field: which, text, what },
+    (doc) => setTiming(doc, k, { [which]: whole(text, what, range) }),
+    which === "frames"
+      ? said(editorMessages, "editor.label.frames", { scene })
+      : said(editorMessages, "editor.label.time", { scene }),
+    { field: which, text },
   );
 }
 
 export function typeSceneName(ctx: AppContext, name: string): void {
-  const t = editorWords(ctx);
   const k = editorOf(ctx.store.get()).scene;
-  edit(ctx, (doc) => setSceneName(doc, k, name), t("editor.label.renameScene", { scene: String(k) }), {
-    field: "scene-name",
-    text: name,
-    what: t("editor.what.sceneName"),
-  });
+  const label = said(editorMessages, "editor.label.renameScene", { scene: String(k) });
+  edit(ctx, (doc) => setSceneName(doc, k, name), label, { field: "scene-name", text: name });
 }
 
 export function typeMotionName(ctx: AppContext, name: string): void {
-  const t = editorWords(ctx);
-  edit(ctx, (doc) => setMotionName(doc, name), t("editor.label.renameMotion"), {
+  edit(ctx, (doc) => setMotionName(doc, name), said(editorMessages, "editor.label.renameMotion"), {
     field: "motion-name",
     text: name,
-    what: t("editor.what.motionName"),
   });
 }
 
@@ -242,30 +213,10 @@ export function choosePoseColumns(ctx: AppContext, columns: PoseColumns): void {
 
 // ---- Scenes ----------------------------------------------------------------------------------------------
 
-/**
- * An undo step's label in the panel's language (for the history) and in every language (for the notice that
- * names it, worded again after a language switch).
- */
-export function labelled(
-  ctx: AppContext,
-  labelOf: (t: EditorTranslator) => string,
-): { label: string; what: LocalText } {
-  return {
-    label: labelOf(editorWords(ctx)),
-    what: inEveryLanguage((l) => labelOf(translator(editorMessages, l))),
-  };
-}
-
-function structural(
-  ctx: AppContext,
-  change: (doc: Motion) => Motion,
-  labelOf: (t: EditorTranslator) => string,
-  select: number,
-): void {
-  const { label, what } = labelled(ctx, labelOf);
+function structural(ctx: AppContext, change: (doc: Motion) => Motion, label: Said, select: number): void {
   if (edit(ctx, change, label, { field: "structure", structural: true, select: () => select })) {
     patchEditor(ctx.store, {
-      notice: editorNotice(ctx, "ok", said(editorMessages, "editor.done", { what })),
+      notice: editorNotice(ctx, "ok", said(editorMessages, "editor.done", { what: label })),
     });
   }
 }
@@ -273,7 +224,7 @@ function structural(
 export function addSceneAfter(ctx: AppContext): void {
   const at = selectedScene(ctx);
   if (at) {
-    const label = (t: EditorTranslator) => t("editor.label.addScene", { scene: String(at.k + 1) });
+    const label = said(editorMessages, "editor.label.addScene", { scene: String(at.k + 1) });
     structural(ctx, (doc) => addScene(doc, at.k + 1), label, at.k + 1);
   }
 }
@@ -281,7 +232,7 @@ export function addSceneAfter(ctx: AppContext): void {
 export function duplicateSelected(ctx: AppContext): void {
   const at = selectedScene(ctx);
   if (at) {
-    const label = (t: EditorTranslator) => t("editor.label.duplicate", { scene: String(at.k) });
+    const label = said(editorMessages, "editor.label.duplicate", { scene: String(at.k) });
     structural(ctx, (doc) => duplicateScene(doc, at.k), label, at.k + 1);
   }
 }
@@ -290,7 +241,7 @@ export function deleteSelected(ctx: AppContext): void {
   const at = selectedScene(ctx);
   if (at) {
     const name = String(at.doc.scenes[at.k]?.name);
-    const label = (t: EditorTranslator) => t("editor.label.delete", { scene: String(at.k), name });
+    const label = said(editorMessages, "editor.label.delete", { scene: String(at.k), name });
     structural(ctx, (doc) => deleteScene(doc, at.k), label, at.k);
   }
 }
@@ -301,8 +252,10 @@ export function moveSelected(ctx: AppContext, by: -1 | 1): void {
   const to = at.k + by;
   if (to < 0 || to >= at.doc.scenes.length) return;
   const scene = String(at.k);
-  const label = (t: EditorTranslator) =>
-    by < 0 ? t("editor.label.moveUp", { scene }) : t("editor.label.moveDown", { scene });
+  const label =
+    by < 0
+      ? said(editorMessages, "editor.label.moveUp", { scene })
+      : said(editorMessages, "editor.label.moveDown", { scene });
   structural(ctx, (doc) => moveScene(doc, at.k, to), label, to);
 }
 
@@ -311,23 +264,20 @@ export function moveSelected(ctx: AppContext, by: -1 | 1): void {
 export function undoLast(ctx: AppContext): void {
   const before = editorOf(ctx.store.get()).history?.label;
   const out = undoEdit(editorOf(ctx.store.get()));
-  if (!out.changed) return;
-  // The step's label is the history's, worded in the language of the moment the edit was made.
-  const undone = said(editorMessages, "editor.undone", { what: String(before) });
+  if (!out.changed || before === undefined) return;
+  // The step's name is a message: the notice says it in the language of the moment it is drawn.
+  const undone = said(editorMessages, "editor.undone", { what: before });
   patchEditor(ctx.store, { ...out.state, notice: editorNotice(ctx, "info", undone) });
   scheduleAutosave(ctx);
 }
 
 export function redoNext(ctx: AppContext): void {
   const out = redoEdit(editorOf(ctx.store.get()));
-  if (!out.changed) return;
+  const label = out.state.history?.label;
+  if (!out.changed || label === undefined) return;
   patchEditor(ctx.store, {
     ...out.state,
-    notice: editorNotice(
-      ctx,
-      "info",
-      said(editorMessages, "editor.redone", { what: String(out.state.history?.label) }),
-    ),
+    notice: editorNotice(ctx, "info", said(editorMessages, "editor.redone", { what: label })),
   });
   scheduleAutosave(ctx);
 }

@@ -1,11 +1,9 @@
-import type { Locale } from "../../../i18n/locale.ts";
-import { translator } from "../../../i18n/translate.ts";
 import { type Motion, newMotion, openMotion, saveMotion } from "../../../motion/index.ts";
 import { noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { technicalDetail } from "../../error-text.ts";
 import { errorSaid } from "../../failure-notice.ts";
-import { inEveryLanguage, type Said, said } from "../../said.ts";
+import { inEveryLanguage, type Said, said, wordOf } from "../../said.ts";
 import { editorController } from "./controller.ts";
 import { DRAFT_OPEN_TIMEOUT_MS, DraftTimeoutError, withDeadline } from "./draft-deadline.ts";
 import {
@@ -63,22 +61,29 @@ export function flushAutosave(ctx: AppContext): Promise<void> {
   return editorController(ctx).autosaver.flush();
 }
 
-/** A stored draft as a document, or why it cannot be opened (in `locale`). */
+/**
+ * "Its motion cannot be read: …" as a message. The parser's sentence is English: in another language the panel
+ * says what it means, the sentence apart (the technical detail).
+ */
+export function unreadableProblem(e: unknown): Said {
+  const parser = message(e);
+  const meaning = said(editorMessages, "editor.draftProblem.unreadableReason");
+  const reason = inEveryLanguage((l) => (l === "en" ? parser : wordOf(meaning, l)));
+  return said(editorMessages, "editor.draftProblem.unreadable", { reason });
+}
+
+/** A stored draft as a document, or why it cannot be opened (a message, worded when drawn). */
 export async function readDraftDocument(
   storage: DraftStorage,
   id: string,
-  locale: Locale = "en",
-): Promise<{ record: DraftRecord; doc: Motion } | { problem: string }> {
-  const t = translator(editorMessages, locale);
-  const read = await loadDraft(storage, id, locale);
-  if (read === undefined) return { problem: t("editor.draftProblem.missing") };
+): Promise<{ record: DraftRecord; doc: Motion } | { problem: Said }> {
+  const read = await loadDraft(storage, id);
+  if (read === undefined) return { problem: said(editorMessages, "editor.draftProblem.missing") };
   if (!read.ok) return { problem: read.problem };
   try {
     return { record: read.record, doc: openMotion(read.record.rbm) };
   } catch (e) {
-    // The parser's sentence is English: in another language the panel says what it means.
-    const reason = locale === "en" ? message(e) : t("editor.draftProblem.unreadableReason");
-    return { problem: t("editor.draftProblem.unreadable", { reason }) };
+    return { problem: unreadableProblem(e) };
   }
 }
 
@@ -86,21 +91,21 @@ export interface LatestDraft {
   /** The newest draft that opens, if any. */
   restored?: { record: DraftRecord; doc: Motion };
   /** The newest draft, set aside because its motion does not open (it was newer than `restored`). */
-  setAside?: { key: string; name: string; problem: string };
+  setAside?: { key: string; name: string; problem: Said };
   /** The drafts that can be listed. */
   drafts: DraftSummary[];
   /** Records that cannot be used, with why (a newer draft whose motion does not open is one). */
   broken: BrokenDraft[];
 }
 
-/** The newest draft whose motion opens; newer ones that do not are reported (in `locale`) and skipped. */
-export async function findLatestDraft(storage: DraftStorage, locale: Locale = "en"): Promise<LatestDraft> {
-  const listing = await listDrafts(storage, locale);
+/** The newest draft whose motion opens; newer ones that do not are reported (with why) and skipped. */
+export async function findLatestDraft(storage: DraftStorage): Promise<LatestDraft> {
+  const listing = await listDrafts(storage);
   const broken = [...listing.broken];
   let restored: LatestDraft["restored"];
   let setAside: LatestDraft["setAside"];
   for (const draft of listing.drafts) {
-    const read = await readDraftDocument(storage, draft.id, locale);
+    const read = await readDraftDocument(storage, draft.id);
     if ("doc" in read) {
       restored = read;
       break;
@@ -118,11 +123,11 @@ function brokenNotice(broken: readonly BrokenDraft[]): Said | undefined {
 }
 
 /** The drafts as the Editor opens: recovered, listed, the newest that opens found. */
-async function readDraftsAtStart(ctx: AppContext, locale: Locale): Promise<LatestDraft> {
+async function readDraftsAtStart(ctx: AppContext): Promise<LatestDraft> {
   const controller = editorController(ctx);
   const storage = await controller.storage;
-  const lost = await recoverPending(storage, controller.pending, locale);
-  const latest = await findLatestDraft(storage, locale);
+  const lost = await recoverPending(storage, controller.pending);
+  const latest = await findLatestDraft(storage);
   return lost ? { ...latest, broken: [...latest.broken, lost] } : latest;
 }
 
@@ -136,12 +141,10 @@ export async function startEditor(ctx: AppContext, deadlineMs = DRAFT_OPEN_TIMEO
   const first = editorOf(ctx.store.get());
   if (first.history || first.starting) return;
   patchEditor(ctx.store, { starting: true });
-  const { locale } = ctx.store.get();
-  const t = translator(editorMessages, locale);
   let latest: LatestDraft = { drafts: [], broken: [] };
   let listProblem: ListProblem | undefined;
   try {
-    latest = await withDeadline(readDraftsAtStart(ctx, locale), deadlineMs);
+    latest = await withDeadline(readDraftsAtStart(ctx), deadlineMs);
   } catch (e) {
     listProblem =
       e instanceof DraftTimeoutError
@@ -160,7 +163,7 @@ export async function startEditor(ctx: AppContext, deadlineMs = DRAFT_OPEN_TIMEO
   } catch (e) {
     // A restored draft the editor cannot show: set it aside and open the template instead.
     const aside = latest.restored;
-    const problem = t("editor.draftProblem.unreadable", { reason: message(e) });
+    const problem = unreadableProblem(e);
     const setAside = aside ? { key: aside.record.id, name: aside.record.name, problem } : latest.setAside;
     const broken = aside ? [...latest.broken, { key: aside.record.id, problem }] : latest.broken;
     const drafts = aside ? latest.drafts.filter((d) => d.id !== aside.record.id) : latest.drafts;

@@ -1,46 +1,23 @@
-import { LOCALES, type Locale } from "../../../i18n/locale.ts";
 import { type Motion, MotionError, saveMotion, setMotionName } from "../../../motion/index.ts";
 import type { AppContext } from "../../context.ts";
 import { downloadTextFile } from "../../download-file.ts";
 import { errorSaid } from "../../failure-notice.ts";
 import { focusSoon } from "../../focus.ts";
-import { type LocalText, said } from "../../said.ts";
-import { editorWords } from "./actions.ts";
+import { said } from "../../said.ts";
 import { editorController } from "./controller.ts";
 import { flushAutosave, readDraftDocument, scheduleAutosave } from "./draft-actions.ts";
 import { draftRecord, storedName, storedRbmText, summarize } from "./drafts.ts";
 import { editorFailure, editorNotice } from "./editor-notice.ts";
 import { motionFileName } from "./file-name.ts";
 import { editorMessages } from "./messages.ts";
-import { refusalText } from "./refusal-text.ts";
-import { applyEdit, editorOf, patchEditor, startDocument } from "./state.ts";
+import { refusalOf } from "./refusal-text.ts";
+import { applyEdit, type EditorState, editorOf, patchEditor, startDocument } from "./state.ts";
 
 /** The Drafts list: open, rename, export and delete drafts (asked once). */
 
-function message(e: unknown): string {
-  return e instanceof Error ? e.message : String(e);
-}
-
-/**
- * A stored draft as a document, or why it cannot be opened in every language (a fact of the notice that says
- * so, worded again after a language switch).
- */
-async function readDocument(
-  ctx: AppContext,
-  id: string,
-): Promise<
-  Exclude<Awaited<ReturnType<typeof readDraftDocument>>, { problem: string }> | { problem: LocalText }
-> {
-  const storage = await editorController(ctx).storage;
-  const read = await readDraftDocument(storage, id, "en");
-  if ("doc" in read) return read;
-  const problem: Partial<Record<Locale, string>> = { en: read.problem };
-  for (const locale of LOCALES) {
-    if (locale === "en") continue;
-    const again = await readDraftDocument(storage, id, locale);
-    problem[locale] = "problem" in again ? again.problem : read.problem;
-  }
-  return { problem: problem as LocalText };
+/** A stored draft as a document, or why it cannot be opened (a message: a fact of the notice that says so). */
+async function readDocument(ctx: AppContext, id: string): ReturnType<typeof readDraftDocument> {
+  return readDraftDocument(await editorController(ctx).storage, id);
 }
 
 /** Opens a stored draft in the editor (the motion open now is saved first). */
@@ -82,7 +59,7 @@ export function cancelRename(ctx: AppContext): void {
   patchEditor(ctx.store, (s) => ({ renaming: undefined, problems: withoutRename(s.problems) }));
 }
 
-function withoutRename(problems: Record<string, { text: string; message: string }>) {
+function withoutRename(problems: EditorState["problems"]): EditorState["problems"] {
   return Object.fromEntries(Object.entries(problems).filter(([k]) => !k.startsWith("rename:")));
 }
 
@@ -91,16 +68,18 @@ function withoutRename(problems: Record<string, { text: string; message: string 
  * autosaved); another draft is rewritten in place, keeping its time.
  */
 export async function renameDraft(ctx: AppContext, id: string, name: string): Promise<void> {
-  const t = editorWords(ctx);
   const field = `rename:${id}`;
-  const what = t("editor.what.motionName");
   const s = editorOf(ctx.store.get());
   if (s.draftId === id && s.history) {
-    const out = applyEdit(s, (doc) => setMotionName(doc, name), t("editor.label.renameMotion"), {
-      field,
-      text: name,
-      word: (e) => refusalText(e, t, what),
-    });
+    const out = applyEdit(
+      s,
+      (doc) => setMotionName(doc, name),
+      said(editorMessages, "editor.label.renameMotion"),
+      {
+        field,
+        text: name,
+      },
+    );
     patchEditor(ctx.store, out.error ? out.state : { ...out.state, renaming: undefined });
     if (out.changed) scheduleAutosave(ctx);
     return;
@@ -120,9 +99,9 @@ export async function renameDraft(ctx: AppContext, id: string, name: string): Pr
   try {
     doc = setMotionName(read.doc, name);
   } catch (e) {
-    const why = e instanceof MotionError ? refusalText(e, t, what) : message(e);
+    if (!(e instanceof MotionError)) throw e;
     patchEditor(ctx.store, (x) => ({
-      problems: { ...x.problems, [field]: { text: name, message: why } },
+      problems: { ...x.problems, [field]: { text: name, why: refusalOf(e) } },
     }));
     return;
   }

@@ -1,5 +1,6 @@
 import { html, nothing, type TemplateResult } from "lit-html";
 import { translator } from "../../../i18n/translate.ts";
+import { wordOf } from "../../said.ts";
 import { nameWithBreaks } from "../../shell/name-breaks.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
@@ -67,7 +68,7 @@ function renameForm(ctx: ViewContext, t: EditorTranslator, s: EditorState, d: Dr
       <button type="submit" class="btn btn--primary">${t("editor.drafts.rename")}</button>
       <button type="button" class="btn" @click=${() => cancelRename(ctx)}>${t("editor.drafts.cancel")}</button>
     </div>
-    ${problemText(`rename-problem-${d.id}`, problem)}
+    ${problemText(`rename-problem-${d.id}`, problem, t.locale)}
   </form>`;
 }
 
@@ -124,7 +125,7 @@ function brokenList(ctx: ViewContext, t: EditorTranslator, s: EditorState): Temp
     <ul>
       ${broken.map(
         (b) => html`<li class="small">
-          <span class="num">${b.key}</span>: ${b.problem}
+          <span class="num">${b.key}</span>: ${wordOf(b.problem, t.locale)}
           <button type="button" class="btn btn--quiet" aria-label=${t("editor.drafts.exportAsideLabel", { name: b.key })} @click=${() => void exportSetAside(ctx, b.key)}>
             ${t("editor.drafts.exportAside")}
           </button>

@@ -1,7 +1,6 @@
-import type { Locale } from "../../../i18n/locale.ts";
-import { translator } from "../../../i18n/translate.ts";
 import { RBM_MAX_TEXT_LENGTH } from "../../../protocol/rbm.ts";
 import { z } from "../../../protocol/zod.ts";
+import { inEveryLanguage, type Said, said, wordOf } from "../../said.ts";
 import { editorMessages } from "./messages.ts";
 
 /**
@@ -12,8 +11,8 @@ import { editorMessages } from "./messages.ts";
  * Motionbuilder's file text (`saveMotion`), so a draft is exactly the file it exports. Records are checked with
  * zod when read back: a record that does not match (a later version, a damaged database) is reported and
  * skipped, never trusted. Storage sits behind `DraftStorage`, so tests use a Map and the panel uses idb-keyval,
- * loaded only when the editor opens (it stays out of the first page load). Why a record is not usable is said in
- * the language given when it is read (English unless given).
+ * loaded only when the editor opens (it stays out of the first page load). Why a record is not usable is kept
+ * as a message (key and facts), worded when drawn, so it follows a language switch.
  */
 
 export const DRAFT_VERSION = 1;
@@ -78,30 +77,31 @@ export async function idbDraftStorage(): Promise<DraftStorage> {
   };
 }
 
-/** A record read back, or why it cannot be used. */
-export type DraftRead = { ok: true; record: DraftRecord } | { ok: false; key: string; problem: string };
+/** A record read back, or why it cannot be used (a message, worded when drawn). */
+export type DraftRead = { ok: true; record: DraftRecord } | { ok: false; key: string; problem: Said };
 
-/** Checks one stored value; what is wrong is said in `locale`. Never throws. */
-export function readDraft(key: string, value: unknown, locale: Locale = "en"): DraftRead {
-  const t = translator(editorMessages, locale);
+/** Checks one stored value; what is wrong is kept as a message. Never throws. */
+export function readDraft(key: string, value: unknown): DraftRead {
   const version = (value as { version?: unknown } | null)?.version;
   if (typeof version === "number" && version !== DRAFT_VERSION) {
-    return {
-      ok: false,
-      key,
-      problem: t("editor.draftProblem.newer", { version: String(version), supported: String(DRAFT_VERSION) }),
-    };
+    const facts = { version: String(version), supported: String(DRAFT_VERSION) };
+    return { ok: false, key, problem: said(editorMessages, "editor.draftProblem.newer", facts) };
   }
   const parsed = draftSchema.safeParse(value);
   if (!parsed.success) {
     const first = parsed.error.issues[0];
     const where = first && first.path.length > 0 ? ` (${first.path.join(".")})` : "";
     // The schema's own words are English: in another language the panel says what they mean.
-    const reason = locale === "en" && first ? first.message : t("editor.draftProblem.shapeReason");
-    return { ok: false, key, problem: t("editor.draftProblem.shape", { where, reason }) };
+    const shapeReason = said(editorMessages, "editor.draftProblem.shapeReason");
+    const schemaWords = first?.message;
+    const reason = inEveryLanguage((locale) =>
+      locale === "en" && schemaWords !== undefined ? schemaWords : wordOf(shapeReason, locale),
+    );
+    return { ok: false, key, problem: said(editorMessages, "editor.draftProblem.shape", { where, reason }) };
   }
   if (parsed.data.id !== key) {
-    return { ok: false, key, problem: t("editor.draftProblem.key", { key, id: parsed.data.id }) };
+    const facts = { key, id: parsed.data.id };
+    return { ok: false, key, problem: said(editorMessages, "editor.draftProblem.key", facts) };
   }
   return { ok: true, record: parsed.data as DraftRecord };
 }
@@ -115,10 +115,10 @@ export interface DraftSummary {
   scenes: number | undefined;
 }
 
-/** A stored value that is not a usable draft: its key and why. */
+/** A stored value that is not a usable draft: its key and why (a message, worded when drawn). */
 export interface BrokenDraft {
   key: string;
-  problem: string;
+  problem: Said;
 }
 
 export interface DraftListing {
@@ -137,12 +137,12 @@ export function summarize(record: DraftRecord): DraftSummary {
   return { id: record.id, name: record.name, savedAt: record.savedAt, scenes: sceneCountOf(record.rbm) };
 }
 
-/** Every draft in the storage, checked; broken records are listed apart (why, in `locale`), never thrown. */
-export async function listDrafts(storage: DraftStorage, locale: Locale = "en"): Promise<DraftListing> {
+/** Every draft in the storage, checked; broken records are listed apart (with why), never thrown. */
+export async function listDrafts(storage: DraftStorage): Promise<DraftListing> {
   const drafts: DraftSummary[] = [];
   const broken: BrokenDraft[] = [];
   for (const [key, value] of await storage.entries()) {
-    const read = readDraft(key, value, locale);
+    const read = readDraft(key, value);
     if (read.ok) drafts.push(summarize(read.record));
     else broken.push({ key: read.key, problem: read.problem });
   }
@@ -151,13 +151,9 @@ export async function listDrafts(storage: DraftStorage, locale: Locale = "en"): 
 }
 
 /** One draft, checked; undefined when there is none under `id`. */
-export async function loadDraft(
-  storage: DraftStorage,
-  id: string,
-  locale: Locale = "en",
-): Promise<DraftRead | undefined> {
+export async function loadDraft(storage: DraftStorage, id: string): Promise<DraftRead | undefined> {
   const value = await storage.get(id);
-  return value === undefined ? undefined : readDraft(id, value, locale);
+  return value === undefined ? undefined : readDraft(id, value);
 }
 
 /**
@@ -226,12 +222,11 @@ export function storagePendingStore(
 export async function recoverPending(
   storage: DraftStorage,
   pending: PendingDraftStore,
-  locale: Locale = "en",
 ): Promise<BrokenDraft | undefined> {
   const value = pending.take();
   if (value === undefined) return undefined;
   const id = (value as { id?: unknown } | null)?.id;
-  const read = readDraft(typeof id === "string" ? id : PENDING_DRAFT_KEY, value, locale);
+  const read = readDraft(typeof id === "string" ? id : PENDING_DRAFT_KEY, value);
   if (!read.ok) return { key: PENDING_DRAFT_KEY, problem: read.problem };
   const stored = await storage.get(read.record.id);
   const current = stored === undefined ? undefined : readDraft(read.record.id, stored);

@@ -1,4 +1,5 @@
 import type { Motion } from "../../../motion/index.ts";
+import type { Said } from "../../said.ts";
 
 /**
  * What the teach-in and tethered-play panels need from the editor: the document, the selected scene, and a way
@@ -9,6 +10,6 @@ export interface EditorHost {
   readonly doc: Motion;
   /** The selected scene (its position in the motion). */
   readonly scene: number;
-  /** Applies `next` as one undo step labelled `label` ("Read pose into scene 2") and autosaves. */
-  commit(next: Motion, label: string): void;
+  /** Applies `next` as one undo step named `label` ("read the pose into scene 2", a message) and autosaves. */
+  commit(next: Motion, label: Said): void;
 }

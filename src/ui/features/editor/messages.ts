@@ -6,9 +6,9 @@ import type { Translator } from "../../../i18n/translate.ts";
 
 /**
  * The motion editor's words: the view, its tabs, the scene list, the pose table, the tools, the drafts, the
- * check, teach-in and tethered play, the notices its actions make and the refused edits shown beside fields
- * (the motion core's refusals are English sentences with a code: in Korean they are said here, from the code
- * and the values the refusal carries, refusal-text.ts). The validator's own sentences stay English.
+ * check, teach-in and tethered play, the notices its actions make, the names of undo steps and the Editor's own
+ * refusals of what was typed. The motion core's refusals are not here: the outcome catalogue words them
+ * (src/i18n/outcomes/motion/, refusal-text.ts), and names what was being set for the refusals here too.
  */
 export const editorMessages = defineMessages({
   // ---- The view ----------------------------------------------------------------------------------------
@@ -424,6 +424,7 @@ export const editorMessages = defineMessages({
   },
 
   // ---- Edits: undo labels and results ------------------------------------------------------------------
+  "editor.label.open": { en: "open the motion", ko: "모션 열기" },
   "editor.label.setStart": {
     en: "set {joint} (start of scene {scene})",
     ko: "{joint} 설정 (장면 {scene} 시작)",
@@ -487,19 +488,7 @@ export const editorMessages = defineMessages({
   },
 
   // ---- Refused edits -----------------------------------------------------------------------------------
-  "editor.what.start": {
-    en: "The start position of {joint} (servo {id})",
-    ko: "{joint}(서보 {id})의 시작 위치",
-  },
-  "editor.what.end": { en: "The end position of {joint} (servo {id})", ko: "{joint}(서보 {id})의 끝 위치" },
-  "editor.what.frames": { en: "Scene {scene}: the number of frames", ko: "장면 {scene}의 프레임 수" },
-  "editor.what.time": { en: "Scene {scene}: the time in ms", ko: "장면 {scene}의 시간" },
   "editor.what.duration": { en: "The duration", ko: "전체 시간" },
-  "editor.what.torque": { en: "The torque of {joint}", ko: "{joint}의 토크" },
-  "editor.what.port": { en: "The extra outputs of {joint}", ko: "{joint}의 추가 출력" },
-  "editor.what.sceneTorque": { en: "The torque of scene {scene}", ko: "장면 {scene}의 토크" },
-  "editor.what.sceneName": { en: "The scene name", ko: "장면 이름" },
-  "editor.what.motionName": { en: "The motion name", ko: "모션 이름" },
   "editor.range.position": { en: "from 0 to 254", ko: "0에서 254 사이의" },
   "editor.range.frames": { en: "from 1 to 65,535", ko: "1에서 65,535 사이의" },
   "editor.range.time": { en: "of ms, at least 20 per frame", ko: "프레임마다 20ms 이상인 ms 단위" },
@@ -515,91 +504,6 @@ export const editorMessages = defineMessages({
   "editor.refusal.factor": {
     en: 'A time factor is a number above 0 (2 = half as fast, 0.5 = twice as fast); "{text}" is not.',
     ko: '시간 배수는 0보다 큰 수여야 해요 (2 = 절반 속도, 0.5 = 두 배 속도). 입력한 값: "{text}".',
-  },
-  "editor.refusal.whole": {
-    en: "{what} must be a whole number from {min} to {max}, not {value}.",
-    ko: "{what}에는 {min}에서 {max} 사이의 정수만 쓸 수 있어요. 입력한 값: {value}.",
-  },
-  "editor.refusal.nameEmpty": { en: "{what} cannot be empty.", ko: "{what}에 한 글자 이상 써 주세요." },
-  "editor.refusal.nameLength": {
-    en: "{what} has {length} characters; a motion file holds at most {max}.",
-    ko: "{what}: {length}자예요. 모션 파일에는 {max}자까지만 들어가요.",
-  },
-  "editor.refusal.nameColon": {
-    en: '{what} cannot contain ":", which separates the fields of a motion file.',
-    ko: '{what}에는 ":"을 쓸 수 없어요. 모션 파일에서 칸을 나누는 기호예요.',
-  },
-  "editor.refusal.nameAscii": {
-    en: "{what} can use only plain letters, digits, spaces and punctuation (ASCII), as Motionbuilder does.",
-    ko: "{what}에는 영문 글자, 숫자, 공백, 문장 부호(ASCII)만 쓸 수 있어요. Motionbuilder와 같아요.",
-  },
-  "editor.refusal.intervalShort": {
-    en: "{frames} frames in {time} ms are {interval} ms apart; the RBC needs at least {min} ms, so use at most {fewer} frames or at least {longer} ms.",
-    ko: "프레임 {frames}개를 {time}ms에 재생하면 프레임 사이가 {interval}ms예요. RBC는 {min}ms 이상이 필요해요. 프레임을 {fewer}개 이하로 하거나 시간을 {longer}ms 이상으로 해 주세요.",
-  },
-  "editor.refusal.intervalLong": {
-    en: "{frames} frames in {time} ms are {interval} ms apart; the RBC allows at most {max} ms, so use at least {more} frames.",
-    ko: "프레임 {frames}개를 {time}ms에 재생하면 프레임 사이가 {interval}ms예요. RBC는 {max}ms까지만 허용해요. 프레임을 {more}개 이상으로 해 주세요.",
-  },
-  "editor.refusal.sceneShort": {
-    en: "Scene {scene} would last {time} ms; a scene lasts at least {min} ms (one frame), so this motion cannot be made that fast.",
-    ko: "그러면 장면 {scene}의 시간이 {time}ms가 돼요. 장면은 적어도 {min}ms(프레임 1개)는 걸리므로 모션을 그만큼 빠르게 할 수 없어요.",
-  },
-  "editor.refusal.sceneLong": {
-    en: "Scene {scene} would last {time} ms; a scene lasts at most {max} ms.",
-    ko: "그러면 장면 {scene}의 시간이 {time}ms가 돼요. 장면은 {max}ms보다 길 수 없어요.",
-  },
-  "editor.refusal.duration": {
-    en: "A duration must be a whole number of ms above 0, not {value}.",
-    ko: "전체 시간은 0보다 큰 ms 단위 정수여야 해요. 입력한 값: {value}.",
-  },
-  "editor.refusal.zeroDuration": {
-    en: "These scenes last 0 ms, so they cannot be stretched to a duration.",
-    ko: "이 장면들은 0ms라서 정한 시간으로 늘릴 수 없어요.",
-  },
-  "editor.refusal.mirrorPlatform": {
-    en: "Mirroring knows the joints of a HUNO (platform 1); this motion is for platform {platform}.",
-    ko: "좌우 대칭은 HUNO(플랫폼 1)의 관절만 알아요. 이 모션은 플랫폼 {platform}용이에요.",
-  },
-  "editor.refusal.mirrorOutside": {
-    en: "Scene {scene} cannot be mirrored: {positions}, outside the positions 0-254.",
-    ko: "장면 {scene}은(는) 좌우 대칭할 수 없어요. {positions}: 위치 0-254를 벗어나요.",
-  },
-  "editor.refusal.mirrorPosition": { en: "servo {id} would go to {position}", ko: "서보 {id} → {position}" },
-  "editor.refusal.playFrames": {
-    en: "Scene {scene} has {frames} frames; a scene needs at least 1.",
-    ko: "장면 {scene}의 프레임이 {frames}개예요. 장면에는 프레임이 1개 이상 있어야 해요.",
-  },
-  "editor.refusal.playInterval": {
-    en: "Scene {scene} has frames {interval} ms apart ({time} ms / {frames} frames); the RBC needs at least {min} ms (error 6). Use fewer frames.",
-    ko: "장면 {scene}의 프레임 사이가 {interval}ms예요 ({time}ms / 프레임 {frames}개). RBC는 {min}ms 이상이 필요해요 (오류 6). 프레임 수를 줄여 주세요.",
-  },
-  "editor.refusal.noSuchScene": { en: "The motion has no such scene.", ko: "모션에 그런 장면이 없어요." },
-  "editor.refusal.noSuchServo": { en: "This motion has no such servo.", ko: "이 모션에 없는 서보예요." },
-  "editor.refusal.value": {
-    en: "The value is outside what the motion file allows.",
-    ko: "모션 파일이 허용하는 범위를 벗어난 값이에요.",
-  },
-  "editor.refusal.name": {
-    en: "A motion file cannot hold this name.",
-    ko: "모션 파일에 쓸 수 없는 이름이에요.",
-  },
-  "editor.refusal.frameInterval": {
-    en: "The frames would be closer than 20 ms or further apart than 4,550 ms.",
-    ko: "프레임 사이가 20ms보다 짧거나 4,550ms보다 길어져요.",
-  },
-  "editor.refusal.retime": {
-    en: "The motion cannot be retimed that way.",
-    ko: "모션 시간을 그렇게 조정할 수 없어요.",
-  },
-  "editor.refusal.lastScene": {
-    en: "A motion needs at least one scene, so its only scene cannot be deleted.",
-    ko: "모션에는 장면이 하나 이상 있어야 해서 하나뿐인 장면은 지울 수 없어요.",
-  },
-  "editor.refusal.mirror": { en: "This scene cannot be mirrored.", ko: "이 장면은 좌우 대칭할 수 없어요." },
-  "editor.refusal.play": {
-    en: "The RBC would refuse to play these scenes.",
-    ko: "RBC가 이 장면들을 재생할 수 없어요.",
   },
   // ---- Teach-in ----------------------------------------------------------------------------------------
   "editor.teach.title": { en: "Teach-in", ko: "티칭" },

@@ -28,7 +28,7 @@ import {
   scenesText,
   secondsText,
 } from "./play-model.ts";
-import { refusalText } from "./refusal-text.ts";
+import { refusalOf, refusalText } from "./refusal-text.ts";
 import { escapeTo } from "./teach-in-view.ts";
 
 /**
@@ -180,7 +180,7 @@ function summary(ctx: ViewContext, t: EditorTranslator, host: EditorHost): Templ
       }
     </p>`;
   } catch (e) {
-    const why = e instanceof MotionError ? refusalText(e, t) : errorMessage(e, t.locale);
+    const why = e instanceof MotionError ? refusalText(refusalOf(e), t.locale) : errorMessage(e, t.locale);
     return html`<p class="small text-danger" data-testid="play-summary">${why}</p>`;
   }
 }

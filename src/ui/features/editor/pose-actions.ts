@@ -8,10 +8,10 @@ import {
   setDuration,
 } from "../../../motion/index.ts";
 import type { AppContext } from "../../context.ts";
-import { said } from "../../said.ts";
-import { edit, editorWords, labelled, selectedScene, whole } from "./actions.ts";
+import { type Said, said } from "../../said.ts";
+import { edit, selectedScene, whole } from "./actions.ts";
 import { editorNotice } from "./editor-notice.ts";
-import { type EditorKey, type EditorTranslator, editorMessages } from "./messages.ts";
+import { type EditorKey, editorMessages } from "./messages.ts";
 import { TypedValueError } from "./refusal-text.ts";
 import { editorOf, isDetached, patchEditor, setDetached } from "./state.ts";
 
@@ -26,9 +26,9 @@ export function detachBoundary(ctx: AppContext, b: number, detached: boolean): v
 export function joinSelected(ctx: AppContext): void {
   const at = selectedScene(ctx);
   if (!at) return;
-  const t = editorWords(ctx);
   const where = { scene: String(at.k), before: String(at.k - 1) };
-  if (edit(ctx, (doc) => joinScene(doc, at.k), t("editor.label.join", where), { field: "join" })) {
+  const label = said(editorMessages, "editor.label.join", where);
+  if (edit(ctx, (doc) => joinScene(doc, at.k), label, { field: "join" })) {
     patchEditor(ctx.store, (s) => ({
       ...setDetached(s, at.k, false),
       notice: editorNotice(ctx, "ok", said(editorMessages, "editor.joined", where)),
@@ -43,31 +43,24 @@ const MIRROR_WORDS: Readonly<Record<MirrorMode, EditorKey>> = {
 };
 
 export function mirrorSelected(ctx: AppContext, mode: MirrorMode): void {
-  const t = editorWords(ctx);
   const s = editorOf(ctx.store.get());
   const k = s.scene;
-  const words = { scene: String(k), how: t(MIRROR_WORDS[mode]) };
+  const words = { scene: String(k), how: said(editorMessages, MIRROR_WORDS[mode]) };
   const detach = isDetached(s, k, "end");
-  if (
-    edit(ctx, (doc) => mirrorPose(doc, k, { mode, detach }), t("editor.label.mirror", words), {
-      field: "mirror",
-    })
-  ) {
-    const how = said(editorMessages, MIRROR_WORDS[mode]);
-    const mirrored = said(editorMessages, "editor.mirrored", { scene: String(k), how });
+  const label = said(editorMessages, "editor.label.mirror", words);
+  if (edit(ctx, (doc) => mirrorPose(doc, k, { mode, detach }), label, { field: "mirror" })) {
+    const mirrored = said(editorMessages, "editor.mirrored", words);
     patchEditor(ctx.store, { notice: editorNotice(ctx, "ok", mirrored) });
   }
 }
 
 export function copyPoseFrom(ctx: AppContext, from: number): void {
-  const t = editorWords(ctx);
   const s = editorOf(ctx.store.get());
   const k = s.scene;
   const detach = isDetached(s, k, "end");
   const words = { from: String(from), scene: String(k) };
-  const changed = edit(ctx, (doc) => copyPose(doc, from, k, { detach }), t("editor.label.copy", words), {
-    field: "copy",
-  });
+  const label = said(editorMessages, "editor.label.copy", words);
+  const changed = edit(ctx, (doc) => copyPose(doc, from, k, { detach }), label, { field: "copy" });
   patchEditor(ctx.store, {
     notice: changed
       ? editorNotice(ctx, "ok", said(editorMessages, "editor.copied", words))
@@ -83,33 +76,39 @@ export interface RetimeRequest {
 
 /** Retimes the selected scene or the whole motion, by a factor ("1.5") or to a total duration in ms. */
 export function retimeFromForm(ctx: AppContext, r: RetimeRequest): void {
-  const t = editorWords(ctx);
   const k = editorOf(ctx.store.get()).scene;
   const range = r.scope === "scene" ? { from: k, to: k } : {};
   const typed = r.text.trim();
   const change = (doc: Motion): Motion => {
     if (r.mode === "duration") {
-      return setDuration(doc, whole(typed, t("editor.what.duration"), t("editor.range.duration"), t), range);
+      const what = said(editorMessages, "editor.what.duration");
+      return setDuration(doc, whole(typed, what, "editor.range.duration"), range);
     }
     const factor = Number(typed);
     if (typed === "" || !Number.isFinite(factor) || factor <= 0) {
-      throw new TypedValueError("motion-retime", t("editor.refusal.factor", { text: typed }));
+      throw new TypedValueError(
+        "motion-retime",
+        said(editorMessages, "editor.refusal.factor", { text: typed }),
+      );
     }
     return retime(doc, factor, range);
   };
-  const words = { scene: String(k), value: typed };
-  const { label, what } = labelled(ctx, (w: EditorTranslator) =>
-    r.mode === "duration"
-      ? r.scope === "scene"
-        ? w("editor.label.retimeSceneTo", words)
-        : w("editor.label.retimeMotionTo", words)
-      : r.scope === "scene"
-        ? w("editor.label.retimeSceneBy", words)
-        : w("editor.label.retimeMotionBy", words),
-  );
+  const label = retimeLabel(r, { scene: String(k), value: typed });
   if (edit(ctx, change, label, { field: "retime", text: typed })) {
     patchEditor(ctx.store, {
-      notice: editorNotice(ctx, "ok", said(editorMessages, "editor.done", { what })),
+      notice: editorNotice(ctx, "ok", said(editorMessages, "editor.done", { what: label })),
     });
   }
+}
+
+/** "retime scene 2 ×1.5", "retime the motion to 3000 ms": the undo step of a retime. */
+function retimeLabel(r: RetimeRequest, words: { scene: string; value: string }): Said {
+  if (r.mode === "duration") {
+    return r.scope === "scene"
+      ? said(editorMessages, "editor.label.retimeSceneTo", words)
+      : said(editorMessages, "editor.label.retimeMotionTo", words);
+  }
+  return r.scope === "scene"
+    ? said(editorMessages, "editor.label.retimeSceneBy", words)
+    : said(editorMessages, "editor.label.retimeMotionBy", words);
 }

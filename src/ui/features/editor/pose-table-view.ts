@@ -15,7 +15,7 @@ import {
 } from "./actions.ts";
 import { type EditorTranslator, editorMessages } from "./messages.ts";
 import type { EditorState, FieldProblem, PoseColumns } from "./state.ts";
-import { inputValue, PORT_VALUES, TORQUE_VALUES } from "./view-parts.ts";
+import { inputValue, PORT_VALUES, problemText, TORQUE_VALUES } from "./view-parts.ts";
 
 /**
  * The pose table of the selected scene (the Pose tab): every servo with its joint name, start and end positions
@@ -123,8 +123,8 @@ function poseRow(
         ? html`<tr class="pose-note" data-servo-note=${id}>
             <td></td>
             <td colspan="6">
-              ${startProblem ? html`<p id=${`problem-start-${id}`} class="text-danger small field-problem" data-testid="field-problem">${startProblem.message}</p>` : nothing}
-              ${endProblem ? html`<p id=${`problem-end-${id}`} class="text-danger small field-problem" data-testid="field-problem">${endProblem.message}</p>` : nothing}
+              ${problemText(`problem-start-${id}`, startProblem, t.locale)}
+              ${problemText(`problem-end-${id}`, endProblem, t.locale)}
               ${unsafeStart ? html`<p id=${`unsafe-start-${id}`} class="text-warning small">${t("editor.pose.unsafeStart", { value: String(rec.start), min: String(range.min), max: String(range.max) })}</p>` : nothing}
               ${unsafeEnd ? html`<p id=${`unsafe-end-${id}`} class="text-warning small">${t("editor.pose.unsafeEnd", { value: String(rec.end), min: String(range.min), max: String(range.max) })}</p>` : nothing}
             </td>

@@ -127,7 +127,7 @@ export function sceneList(ctx: ViewContext, s: EditorState, doc: Motion): Templa
         </button>
       </div>
       <p id="scene-keys" class="muted small scene-keys">${t("editor.scenes.keys")}</p>
-      ${problemText("structure-problem", s.problems.structure)}
+      ${problemText("structure-problem", s.problems.structure, t.locale)}
     </section>
   `;
 }

@@ -79,7 +79,7 @@ function boundaries(ctx: ViewContext, t: EditorTranslator, s: EditorState, doc: 
         }
       </div>
       <p class="muted small">${t("editor.continuity.about")}</p>
-      ${problemText("join-problem", s.problems.join)}
+      ${problemText("join-problem", s.problems.join, t.locale)}
     </div>
   `;
 }
@@ -145,8 +145,8 @@ function fields(ctx: ViewContext, t: EditorTranslator, s: EditorState, scene: Mo
       </label>
       <p id="frame-every" class="muted small scene-every">${t("editor.scene.every", { ms: String(every) })}</p>
     </div>
-    ${problemText("scene-name-problem", p["scene-name"])} ${problemText("frames-problem", p.frames)}
-    ${problemText("time-problem", p.timeMs)} ${problemText("scene-torque-problem", p["scene-torque"])}
+    ${problemText("scene-name-problem", p["scene-name"], t.locale)} ${problemText("frames-problem", p.frames, t.locale)}
+    ${problemText("time-problem", p.timeMs, t.locale)} ${problemText("scene-torque-problem", p["scene-torque"], t.locale)}
   `;
 }
 

@@ -1,8 +1,9 @@
 /**
  * The editor's part of the app state (kept across connections: the motion being made lives on this computer),
  * and the pure reducers the editor's actions apply to it. The document and its undo history are values
- * (src/motion/): an edit the motion core refuses (`MotionError`) leaves them as they were and puts its message
- * next to the control it came from.
+ * (src/motion/): an edit the motion core refuses (`MotionError`) leaves them as they were and puts its refusal
+ * next to the control it came from. What the state says (a refusal, an undo step's name, a notice) is kept as
+ * data and worded when drawn, so it follows a language switch.
  */
 import {
   commit,
@@ -14,10 +15,11 @@ import {
   undo,
 } from "../../../motion/index.ts";
 import type { AppState, Notice } from "../../app-state.ts";
-import type { Said } from "../../said.ts";
+import { type Said, said } from "../../said.ts";
 import type { Store } from "../../store.ts";
 import type { BrokenDraft, DraftSummary } from "./drafts.ts";
-import type { EditorKey } from "./messages.ts";
+import { type EditorKey, editorMessages } from "./messages.ts";
+import { type Refusal, refusalOf } from "./refusal-text.ts";
 
 /**
  * The tabs of the selected scene's work (docs/ui.md: a view that grows past two screens is split). The toolbar, the
@@ -41,17 +43,20 @@ export const EDITOR_TABS: readonly { id: EditorTab; key: EditorKey }[] = [
 export type PoseColumns = "end" | "more";
 
 /**
- * A refused edit: the text the person typed (kept in the field) and why it was refused, in the language the
- * panel spoke when it was refused.
+ * A refused edit: the text the person typed (kept in the field) and why it was refused, kept as data (the
+ * motion core's code and facts, or the Editor's own message) and worded when drawn (`refusalText`).
  */
 export interface FieldProblem {
   text: string;
-  message: string;
+  why: Refusal;
 }
+
+/** The Editor's undo history: each step named by a message (key and facts), worded when the Undo button is drawn. */
+export type EditorHistory = MotionHistory<Said>;
 
 export interface EditorState {
   /** The document and its undo history; undefined until the editor has started (draft restored, or new). */
-  history?: MotionHistory;
+  history?: EditorHistory;
   /** The selected scene (its position). */
   scene: number;
   /** The draft the document autosaves into; undefined until its first save. */
@@ -134,8 +139,6 @@ export interface EditRequest {
   select?: (doc: Motion) => number;
   /** Structural edits reset the detach options (boundaries move with the scenes). */
   structural?: boolean;
-  /** Words a refusal for the person (the panel's language); its English message when not given. */
-  word?: (e: MotionError) => string;
 }
 
 export interface EditOutcome {
@@ -153,7 +156,7 @@ export interface EditOutcome {
 export function applyEdit(
   s: EditorState,
   edit: (doc: Motion) => Motion,
-  label: string,
+  label: Said,
   request: EditRequest,
 ): EditOutcome {
   const history = s.history;
@@ -163,7 +166,7 @@ export function applyEdit(
     next = edit(history.present);
   } catch (e) {
     if (!(e instanceof MotionError)) throw e;
-    const problem = { text: request.text ?? "", message: request.word ? request.word(e) : e.message };
+    const problem: FieldProblem = { text: request.text ?? "", why: refusalOf(e) };
     return {
       state: { ...s, problems: { ...s.problems, [request.field]: problem } },
       changed: false,
@@ -187,7 +190,7 @@ export function applyEdit(
 }
 
 /** The document after undo or redo: problems cleared (they belong to the document left), selection kept in range. */
-function moved(s: EditorState, history: MotionHistory): EditorState {
+function moved(s: EditorState, history: EditorHistory): EditorState {
   const doc = history.present;
   return {
     ...s,
@@ -210,11 +213,14 @@ export function redoEdit(s: EditorState): EditOutcome {
   return { state: moved(s, redo(h)), changed: true };
 }
 
+/** The name of the history's first step, the document as opened (never shown: there is nothing before it to undo). */
+const OPENED = said(editorMessages, "editor.label.open");
+
 /** A new document (New, Open, a draft opened): fresh history, first scene, no problems or detach options. */
 export function startDocument(s: EditorState, doc: Motion, draftId: string | undefined): EditorState {
   return {
     ...s,
-    history: createHistory(doc),
+    history: createHistory(doc, OPENED),
     scene: 0,
     draftId,
     savedAt: undefined,

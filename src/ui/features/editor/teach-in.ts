@@ -280,7 +280,10 @@ export async function readIntoScene(ctx: AppContext, host: EditorHost): Promise<
     const platform = store.get().connection.platform;
     const reading = sceneReading(host.doc, reads, teach.robotZeros, platform);
     if (reading.pose.size > 0) {
-      host.commit(setPose(host.doc, scene, reading.pose), t("editor.teach.readInto", { scene: n }));
+      host.commit(
+        setPose(host.doc, scene, reading.pose),
+        said(editorMessages, "editor.teach.readInto", { scene: n }),
+      );
     }
     const zerosKnown = teach.robotZeros !== undefined || platform === PLATFORM_PF2;
     patchTeachIn(store, {

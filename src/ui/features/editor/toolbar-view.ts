@@ -87,7 +87,7 @@ function historyButtons(
         ?disabled=${!canUndo(h)}
         @click=${() => undoLast(ctx)}
       >
-        ${undoWhat === undefined ? t("editor.undo") : t("editor.undoWhat", { what: undoWhat })}
+        ${undoWhat === undefined ? t("editor.undo") : t("editor.undoWhat", { what: wordOf(undoWhat, t.locale) })}
       </button>
       <button
         type="button"
@@ -97,7 +97,7 @@ function historyButtons(
         ?disabled=${!canRedo(h)}
         @click=${() => redoNext(ctx)}
       >
-        ${redoWhat === undefined ? t("editor.redo") : t("editor.redoWhat", { what: redoWhat })}
+        ${redoWhat === undefined ? t("editor.redo") : t("editor.redoWhat", { what: wordOf(redoWhat, t.locale) })}
       </button>
     </div>
   `;
@@ -153,7 +153,7 @@ export function toolbar(ctx: ViewContext, s: EditorState, doc: Motion): Template
         </span>
         ${historyButtons(ctx, t, s)}
       </div>
-      ${problemText("motion-name-problem", problem)}
+      ${problemText("motion-name-problem", problem, t.locale)}
       <p class="muted small editor-draft-status" data-testid="draft-status">${draftStatus(t, s)}</p>
       ${liveNotice(s.notice, t("editor.resultLabel"), t.locale)}
       ${restampOffer(ctx, { fileSerial: doc.serialNumber, id: "editor", make: (serial) => void restampDocument(ctx, serial) })}

@@ -28,7 +28,7 @@ function mirrorTools(ctx: ViewContext, t: EditorTranslator, s: EditorState, doc:
       <p class="muted small">
         ${huno ? t("editor.mirror.hint") : t("editor.mirror.notHuno", { platform: String(doc.platform) })}
       </p>
-      ${problemText("mirror-problem", s.problems.mirror)}
+      ${problemText("mirror-problem", s.problems.mirror, t.locale)}
     </div>
   `;
 }
@@ -67,7 +67,7 @@ function copyTools(
           ${t("editor.copy.into", { scene: String(s.scene) })}
         </button>
       </div>
-      ${problemText("copy-problem", s.problems.copy)}
+      ${problemText("copy-problem", s.problems.copy, t.locale)}
     </form>
   `;
 }
@@ -122,7 +122,7 @@ function retimeTools(ctx: ViewContext, t: EditorTranslator, s: EditorState): Tem
         <button type="submit" class="btn" data-testid="retime-apply">${t("editor.retime.apply")}</button>
       </div>
       <p id="retime-hint" class="muted small">${t("editor.retime.hint")}</p>
-      ${problemText("retime-problem", problem)}
+      ${problemText("retime-problem", problem, t.locale)}
     </form>
   `;
 }
