@@ -196,8 +196,8 @@ describe("the Editor's messages follow a language switch", () => {
     );
     expect(await steps()).toEqual([
       "실행 취소: 왼쪽 무릎 설정 (장면 0 끝)",
-      "다시 실행: 왼쪽 발목 롤 설정 (장면 0 끝)",
-      "실행 취소: 왼쪽 발목 롤 설정 (장면 0 끝).",
+      "다시 실행: 왼쪽 발목 좌우 설정 (장면 0 끝)",
+      "실행 취소: 왼쪽 발목 좌우 설정 (장면 0 끝).",
     ]);
     expect(await textOf(aside)).toContain(
       "d-newer: 더 새로운 패널이 저장했어요 (임시 저장본 형식 2). 이 패널은 형식 1만 읽을 수 있어요.",

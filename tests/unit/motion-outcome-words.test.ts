@@ -78,7 +78,7 @@ describe("the motion layer's refusals, worded by the outcome catalogue", () => {
       "motion-value",
       both(
         "The extra outputs of Left hip roll (servo 0) must be a whole number from 0 to 3, not 9.",
-        "왼쪽 엉덩이 롤(서보 0)의 추가 출력에는 0에서 3 사이의 정수만 쓸 수 있어요. 입력한 값: 9.",
+        "왼쪽 엉덩이 좌우(서보 0)의 추가 출력에는 0에서 3 사이의 정수만 쓸 수 있어요. 입력한 값: 9.",
       ),
     ],
     [

@@ -30,7 +30,7 @@ export const servoOutcomeMessages = defineMessages({
     en: "Id 0 is answered by two servos and ids {missing} by none: a replacement servo still has the factory id 0, and more than one joint is silent. Unplug servo 0, then give the new servo the id of the joint it replaced ({choices}) with the guided id fix; the scan cannot tell which.",
     ko: "ID 0에는 서보 두 개가 응답하고 ID {missing}에는 아무것도 응답하지 않아요. 새로 바꾼 서보가 아직 공장 ID 0을 갖고 있고, 응답하지 않는 관절이 둘 이상이에요. 서보 0번을 뺀 다음, ID 고치기로 새 서보에 그 서보가 대신하는 관절의 ID({choices})를 주세요. 어느 쪽인지는 검사로 알 수 없어요.",
   },
-  "outcome.servo.or": { en: " or ", ko: " 또는 " },
+  "outcome.servo.orList": { en: "{list} or {last}", ko: "{list} 또는 {last}" },
   "outcome.servo.finding.highLoad": {
     en: "{servo} carries a high load at rest ({load}): something presses on it, or its gears bind. Run the wiggle test on it.",
     ko: "{servo}이 쉬고 있는데도 부하가 높아요 ({load}). 무언가가 누르고 있거나 기어가 걸려 있어요. 이 서보로 흔들기 검사를 해 보세요.",

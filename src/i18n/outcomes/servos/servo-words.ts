@@ -85,7 +85,10 @@ export function findingText(finding: Finding, locale: Locale): string {
       return missing.length > 1
         ? tr("outcome.servo.finding.replacementOneOf", {
             missing: missing.join(", "),
-            choices: `${missing.slice(0, -1).join(", ")}${tr("outcome.servo.or")}${missing.at(-1)}`,
+            choices: tr("outcome.servo.orList", {
+              list: missing.slice(0, -1).join(", "),
+              last: String(missing.at(-1)),
+            }),
           })
         : tr("outcome.servo.finding.replacement", {
             missing: missing.join(", "),
