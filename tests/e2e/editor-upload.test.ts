@@ -12,7 +12,7 @@
  */
 import type { Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { type AppHarness, FAST, releaseRobot, squash, startHarness } from "./harness.ts";
+import { type AppHarness, FAST, releaseRobot, squash, startHarness, watchText } from "./harness.ts";
 import { axeProblems, expectPageOk, PHONE, pageProblems, shot } from "./i18n-checks.ts";
 import "./rbc-test-globals.ts";
 
@@ -31,32 +31,6 @@ const RUN_12 = "FF FF AA 55 AA 55 37 BA 14 00 00 00 00 01 0C 0C";
 
 const card = (page: Page) => page.getByTestId("editor-upload");
 const copyText = async (page: Page) => squash(await page.getByTestId("editor-robot-copy").textContent());
-
-/**
- * Holds the robot's clock (`holdRobot`) the moment an element matching `selector` shows text matching `text`:
- * an event (a mutation observer), so a moment that lasts a few ms of robot time is caught however slow the test
- * is.
- */
-async function holdWhenShown(page: Page, selector: string, text: RegExp): Promise<void> {
-  await page.evaluate(
-    ({ sel, source }) => {
-      const pattern = new RegExp(source);
-      const shown = () => [...document.querySelectorAll(sel)].some((e) => pattern.test(e.textContent ?? ""));
-      const hold = () => window.__rbcTest?.clock.hold();
-      if (shown()) {
-        hold();
-        return;
-      }
-      const observer = new MutationObserver(() => {
-        if (!shown()) return;
-        observer.disconnect();
-        hold();
-      });
-      observer.observe(document.body, { childList: true, subtree: true, characterData: true });
-    },
-    { sel: selector, source: text.source },
-  );
-}
 
 /**
  * Holds the robot's clock the moment the demo robot's servos move in motion `number` (its servo listener: an
@@ -138,8 +112,14 @@ describe("the Editor: upload to the robot and run it there", () => {
     expect(await page.getByTestId("editor-run").count()).toBe(0);
 
     // Upload: the progress in place, held at the first progress report (bytes, percent, Cancel).
-    await holdWhenShown(page, '[data-testid="editor-upload"] [data-testid="upload-figures"]', /^\s*[1-9]/);
+    const firstReport = await watchText(
+      page,
+      '[data-testid="editor-upload"] [data-testid="upload-figures"]',
+      /^\s*[1-9]/,
+      { hold: true },
+    );
     await page.getByRole("button", { name: "Upload to robot" }).click();
+    await firstReport.moment();
     const progress = card(page).getByTestId("upload-progress");
     await progress.waitFor();
     await card(page).getByTestId("upload-figures").waitFor();

@@ -7,8 +7,9 @@
  */
 import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
-import { newLocalePage, pageLang, pageProblems, SIZES, useApp } from "./i18n-checks.ts";
+import { newLocalePage, pageLang, pageProblems, SIZES } from "./i18n-checks.ts";
 import "./rbc-test-globals.ts";
+import { useApp } from "./harness.ts";
 
 const LANGUAGES = [
   { locale: "en-US", lang: "en", demo: "Try the demo robot" },

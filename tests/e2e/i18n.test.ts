@@ -6,7 +6,7 @@
  */
 import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
-import { squash } from "./harness.ts";
+import { squash, useApp } from "./harness.ts";
 import {
   axeProblems,
   connectCable,
@@ -15,7 +15,6 @@ import {
   pageLang as lang,
   newLocalePage,
   SIZES,
-  useApp,
 } from "./i18n-checks.ts";
 import "./rbc-test-globals.ts";
 

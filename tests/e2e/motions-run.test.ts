@@ -8,9 +8,9 @@ import {
   openMotions,
   releaseRobot,
   robotNow,
-  robotTimeWhenShown,
   squash,
   startHarness,
+  watchText,
 } from "./harness.ts";
 import { showTab } from "./motion-fixtures.ts";
 import "./rbc-test-globals.ts";
@@ -130,14 +130,15 @@ describe("motions view: running motions and sounds", () => {
     // however long the click takes on a busy machine.
     await holdRobot(page);
     const started = await robotNow(page);
-    await page.locator('[data-slot-motion="42"]').click();
-    await releaseRobot(page);
-    // The robot's time when the notice appeared (read in the page, not after the test's next steps).
-    const shownAt = await robotTimeWhenShown(
+    // The robot's time when the notice appears, noted in the page (not after the test's next steps).
+    const notice = await watchText(
       page,
       '[data-testid="run-place-slots"]',
       /Motion 42 did not run: the robot holds no motion under that number \(it reports error 3\)/,
     );
+    await page.locator('[data-slot-motion="42"]').click();
+    await releaseRobot(page);
+    const shownAt = await notice.moment();
     // Shown under the slot buttons, in view, and not at the top of the card.
     expect(await page.getByTestId("run-place-built-in").textContent().then(squash)).toBe("");
     expect(

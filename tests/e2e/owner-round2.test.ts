@@ -14,7 +14,7 @@ import type { Locator, Page } from "playwright-core";
 import { describe, expect, it, vi } from "vitest";
 import { mirrorPosition } from "../../src/motion/index.ts";
 import { STANDARD_ZEROS } from "../../src/protocol/zeros.ts";
-import { squash } from "./harness.ts";
+import { squash, useApp } from "./harness.ts";
 import {
   axeProblems,
   connectCable,
@@ -26,7 +26,6 @@ import {
   scrollsSideways,
   shot,
   sizeName,
-  useApp,
 } from "./i18n-checks.ts";
 import { exampleText, rbmFile } from "./motion-fixtures.ts";
 import "./rbc-test-globals.ts";

@@ -16,7 +16,7 @@ import { join } from "node:path";
 import type { Page } from "playwright-core";
 import { describe, expect, it, vi } from "vitest";
 import { hexLines } from "../support/hex.ts";
-import { FAST, ROOT, squash } from "./harness.ts";
+import { FAST, ROOT, squash, useApp } from "./harness.ts";
 import {
   axeProblems,
   connectCable,
@@ -26,7 +26,6 @@ import {
   shot,
   text,
   texts,
-  useApp,
 } from "./i18n-checks.ts";
 import "./rbc-test-globals.ts";
 

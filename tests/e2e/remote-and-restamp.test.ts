@@ -9,16 +9,8 @@
 import { readFile } from "node:fs/promises";
 import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
-import { connectRobot, FAST, openMotions, squash } from "./harness.ts";
-import {
-  axeProblems,
-  connectCable,
-  expectPageOk,
-  newLocalePage,
-  SIZES,
-  text,
-  useApp,
-} from "./i18n-checks.ts";
+import { connectRobot, FAST, openMotions, squash, useApp } from "./harness.ts";
+import { axeProblems, connectCable, expectPageOk, newLocalePage, SIZES, text } from "./i18n-checks.ts";
 import "./rbc-test-globals.ts";
 
 const app = useApp();

@@ -1,6 +1,6 @@
 import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
-import { connectRobot, squash } from "./harness.ts";
+import { connectRobot, squash, useApp } from "./harness.ts";
 import "./rbc-test-globals.ts";
 import {
   axeProblems,
@@ -10,7 +10,6 @@ import {
   PHONE,
   pageProblems,
   text,
-  useApp,
 } from "./i18n-checks.ts";
 
 /**

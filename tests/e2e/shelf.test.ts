@@ -1,8 +1,8 @@
 import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
 import { goldenImage } from "../data/project-data.ts";
-import { FAST, squash } from "./harness.ts";
-import { connectDemo, expectPageOk, newLocalePage, text, useApp } from "./i18n-checks.ts";
+import { FAST, squash, useApp } from "./harness.ts";
+import { connectDemo, expectPageOk, newLocalePage, text } from "./i18n-checks.ts";
 import { exampleText, rbmFile, showTab } from "./motion-fixtures.ts";
 import "./rbc-test-globals.ts";
 
