@@ -5,9 +5,9 @@
  * USB adapters (and an older browser still getting the USB chooser); the help for pairing.
  */
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { describe, expect, it } from "vitest";
 import { FACTORY_ZEROS } from "../../src/protocol/zeros.ts";
-import { type AppHarness, cspViolations, FAST, squash, startHarness, watchPage } from "./harness.ts";
+import { cspViolations, FAST, squash, useApp, watchPage } from "./harness.ts";
 import { exampleText, imageHex, rbmFile, showTab } from "./motion-fixtures.ts";
 import "./rbc-test-globals.ts";
 
@@ -15,15 +15,7 @@ const SPP = "00001101-0000-1000-8000-00805f9b34fb";
 /** What a timeout says anywhere in the panel (RbcTimeoutError and the motion/upload sentences built on it). */
 const TIMEOUT_WORDS = /did not answer|did not report|stopped acknowledging|did not acknowledge|timed? ?out/i;
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 /** The demo robot's stored motions, as hex. */
 const demoMotionsHex = (page: Page) =>

@@ -1,7 +1,7 @@
 import { createRequire } from "node:module";
 import type { BrowserContext, Locator, Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { type AppHarness, buildOnce, squash, startHarness } from "./harness.ts";
+import { beforeAll, describe, expect, it } from "vitest";
+import { buildOnce, squash, useApp } from "./harness.ts";
 import { exampleText, rbmFile } from "./motion-fixtures.ts";
 import "./rbc-test-globals.ts";
 
@@ -15,16 +15,11 @@ import "./rbc-test-globals.ts";
 const require = createRequire(import.meta.url);
 const AXE_PATH = require.resolve("axe-core/axe.min.js");
 
-let app: AppHarness;
+const app = useApp();
 let fakeSerial: string;
 
 beforeAll(async () => {
-  app = await startHarness();
   ({ fakeSerial } = await buildOnce());
-});
-
-afterAll(async () => {
-  await app?.close();
 });
 
 /** A page with the fake serial port at 4× robot time, its CSP bypassed so that axe can be added. */

@@ -1,27 +1,11 @@
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import {
-  type AppHarness,
-  connectRobot,
-  cspViolations,
-  FAST,
-  squash,
-  startHarness,
-  watchPage,
-} from "./harness.ts";
+import { describe, expect, it } from "vitest";
+import { connectRobot, cspViolations, FAST, squash, useApp, watchPage } from "./harness.ts";
 import "./rbc-test-globals.ts";
 import type { Page } from "playwright-core";
 import { expectPageOk, newLocalePage, SIZES, type Size } from "./i18n-checks.ts";
 import type { RbcTestOptions } from "./rbc-test-globals.ts";
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 describe("connecting a robot", () => {
   it("connects through the chooser and shows the simulator's identity and memory", async () => {

@@ -1,16 +1,8 @@
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { type AppHarness, cspViolations, squash, startHarness, watchPage } from "./harness.ts";
+import { describe, expect, it } from "vitest";
+import { cspViolations, squash, useApp, watchPage } from "./harness.ts";
 import "./rbc-test-globals.ts";
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 describe("demo robot, browsers without Web Serial, offline", () => {
   it("without navigator.serial shows which browsers work, and the demo robot still works", async () => {

@@ -1,7 +1,7 @@
 import { readFile } from "node:fs/promises";
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { type AppHarness, startHarness, watchPage } from "./harness.ts";
+import { describe, expect, it } from "vitest";
+import { useApp, watchPage } from "./harness.ts";
 import "./rbc-test-globals.ts";
 
 /**
@@ -10,15 +10,7 @@ import "./rbc-test-globals.ts";
  * says in one sentence that the draft was set aside, and exports the stored text as it is on request.
  */
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 /** One servo, zero scenes. */
 const ZERO_SCENES =

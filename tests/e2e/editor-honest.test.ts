@@ -1,19 +1,11 @@
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { type AppHarness, FAST, squash, startHarness } from "./harness.ts";
+import { describe, expect, it } from "vitest";
+import { FAST, squash, useApp } from "./harness.ts";
 import "./rbc-test-globals.ts";
 
 // Issue 21 item 5: the Editor's questions say what the robot will actually do.
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 async function openEditorOnDemo(page: Page): Promise<void> {
   await page.goto(app.url);

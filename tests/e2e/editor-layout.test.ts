@@ -1,6 +1,6 @@
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { type AppHarness, FAST, squash, startHarness } from "./harness.ts";
+import { describe, expect, it } from "vitest";
+import { FAST, squash, useApp } from "./harness.ts";
 import { exampleText, rbmFile } from "./motion-fixtures.ts";
 import "./rbc-test-globals.ts";
 
@@ -12,15 +12,7 @@ import "./rbc-test-globals.ts";
  * stays in sight in the tabs whose work it shows.
  */
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 const DESKTOP = { width: 1280, height: 800 };
 const PHONE = { width: 390, height: 844 };

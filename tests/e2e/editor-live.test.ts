@@ -5,19 +5,11 @@
  * by hand; Stop mid-play holds the frame sent and nothing goes limp.
  */
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { type AppHarness, FAST, squash, startHarness } from "./harness.ts";
+import { describe, expect, it } from "vitest";
+import { FAST, squash, useApp } from "./harness.ts";
 import "./rbc-test-globals.ts";
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 /** docs/protocol.md §4: the standard zero table (the template's) and the firmware's factory table (the demo robot's). */
 const STANDARD = [125, 202, 162, 66, 108, 124, 48, 88, 184, 142, 90, 40, 125, 161, 210, 127];

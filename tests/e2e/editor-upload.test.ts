@@ -11,20 +11,12 @@
  * first progress report, a motion playing) are held by an event in the page, never by waiting a while.
  */
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { type AppHarness, FAST, releaseRobot, squash, startHarness, watchText } from "./harness.ts";
+import { describe, expect, it } from "vitest";
+import { FAST, type PageOptions, releaseRobot, squash, useApp, watchText } from "./harness.ts";
 import { axeProblems, expectPageOk, PHONE, pageProblems, shot } from "./i18n-checks.ts";
 import "./rbc-test-globals.ts";
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 /** docs/protocol.md §2 and §8 example 6: Run motion 12 (0x0C), its checksum the one content byte. */
 const RUN_12 = "FF FF AA 55 AA 55 37 BA 14 00 00 00 00 01 0C 0C";
@@ -70,8 +62,6 @@ async function openEditorPlay(page: Page, words: { editor: string; addAfter: str
 }
 
 const EN = { editor: "Editor", addAfter: "Add after" };
-
-type PageOptions = Parameters<AppHarness["newPage"]>[0];
 
 /**
  * A new page connected to a robot by the button named `connect` (the demo robot or the fake cable), once its

@@ -1,10 +1,10 @@
 import { readFile } from "node:fs/promises";
 import { createRequire } from "node:module";
 import type { Download, Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { describe, expect, it } from "vitest";
 import { mirrorPosition } from "../../src/motion/index.ts";
 import { HUNO_BASIC_POSTURE, parseRbm, STANDARD_ZEROS } from "../../src/protocol/index.ts";
-import { type AppHarness, cspViolations, FAST, squash, startHarness, watchPage } from "./harness.ts";
+import { cspViolations, FAST, squash, useApp, watchPage } from "./harness.ts";
 import { rbmFile } from "./motion-fixtures.ts";
 import "./rbc-test-globals.ts";
 import { DESKTOP, expectPageOk, pageLang as lang, PHONE } from "./i18n-checks.ts";
@@ -16,15 +16,7 @@ import { DESKTOP, expectPageOk, pageLang as lang, PHONE } from "./i18n-checks.ts
  * Scene, Tools, Teach-in, Play, Check); editor-layout.test.ts checks the layout itself.
  */
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 const VIEWPORTS = [
   { name: "1280×800", width: 1280, height: 800 },

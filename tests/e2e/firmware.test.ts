@@ -1,9 +1,9 @@
 import { mkdir } from "node:fs/promises";
 import { join } from "node:path";
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { describe, expect, it } from "vitest";
 import { firmwareHex, firmwareHexWithBadChecksum } from "../support/hex.ts";
-import { type AppHarness, ROOT, squash, startHarness, watchPage } from "./harness.ts";
+import { ROOT, squash, useApp, watchPage } from "./harness.ts";
 import "./rbc-test-globals.ts";
 import {
   connectDemo,
@@ -21,15 +21,7 @@ import {
  * the version the robot reports change; Cancel mid-way says what the robot holds. Robot time runs faster.
  */
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 /** Screenshots for people to look at (not compared): SCREENSHOTS=dir. */
 const SHOTS = process.env.FIRMWARE_SCREENSHOTS;

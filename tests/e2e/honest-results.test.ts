@@ -1,21 +1,13 @@
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { describe, expect, it } from "vitest";
 import { FACTORY_ZEROS } from "../../src/protocol/index.ts";
-import { type AppHarness, connectRobot, squash, startHarness } from "./harness.ts";
+import { connectRobot, squash, useApp } from "./harness.ts";
 import "./rbc-test-globals.ts";
 
 // Issue 21 items 5 and 6: nothing the panel says is more certain than what happened, and results appear where
 // the eyes are, in the language of the moment.
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 async function openZeros(page: Page): Promise<void> {
   await connectRobot(page, app.url);

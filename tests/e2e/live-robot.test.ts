@@ -9,32 +9,19 @@
  */
 import { createRequire } from "node:module";
 import type { BrowserContext, Locator, Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import {
-  type AppHarness,
-  buildOnce,
-  cspViolations,
-  openMotions,
-  squash,
-  startHarness,
-  watchPage,
-} from "./harness.ts";
+import { beforeAll, describe, expect, it } from "vitest";
+import { buildOnce, cspViolations, openMotions, squash, useApp, watchPage } from "./harness.ts";
 import { showTab } from "./motion-fixtures.ts";
 import "./rbc-test-globals.ts";
 
 const require = createRequire(import.meta.url);
 const AXE_PATH = require.resolve("axe-core/axe.min.js");
 
-let app: AppHarness;
+const app = useApp();
 let fakeSerial: string;
 
 beforeAll(async () => {
-  app = await startHarness();
   ({ fakeSerial } = await buildOnce());
-});
-
-afterAll(async () => {
-  await app?.close();
 });
 
 /** docs/protocol.md §5: the HUNO basic posture, where the simulated servos start and where every built-in ends. */

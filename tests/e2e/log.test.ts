@@ -1,15 +1,7 @@
 import { readFileSync } from "node:fs";
 import { createRequire } from "node:module";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import {
-  type AppHarness,
-  connectRobot,
-  cspViolations,
-  FAST,
-  squash,
-  startHarness,
-  watchPage,
-} from "./harness.ts";
+import { describe, expect, it } from "vitest";
+import { connectRobot, cspViolations, FAST, squash, useApp, watchPage } from "./harness.ts";
 import "./rbc-test-globals.ts";
 import type { Page } from "playwright-core";
 import {
@@ -24,15 +16,7 @@ import {
 
 /** The packet log view: coalesced garbage, raw bytes, and a scroll area the keyboard can reach (issue #11 item 11). */
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 const AXE_SOURCE = readFileSync(createRequire(import.meta.url).resolve("axe-core/axe.min.js"), "utf8");
 

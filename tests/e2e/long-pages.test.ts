@@ -1,20 +1,12 @@
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { type AppHarness, connectRobot, openMotions, startHarness } from "./harness.ts";
+import { describe, expect, it } from "vitest";
+import { connectRobot, openMotions, useApp } from "./harness.ts";
 import "./rbc-test-globals.ts";
 
 // Issue 21 item 7: long pages. With long-walk.rbm (284 scenes) open, Motions was 10,592 px tall; Zeros put Write
 // 1,355 px down the page. Each task fits one screen at 1280×800.
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 const VIEWPORT = { width: 1280, height: 800 };
 

@@ -1,21 +1,13 @@
 import type { Locator, Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { type AppHarness, connectRobot, squash, startHarness } from "./harness.ts";
+import { describe, expect, it } from "vitest";
+import { connectRobot, squash, useApp } from "./harness.ts";
 import { axeProblems } from "./i18n-checks.ts";
 import "./rbc-test-globals.ts";
 
 // Issue 21 items 6 and 7: messages where the eyes are, worded in the language of the moment; the Servos task on
 // one screen at 1280×800.
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 const SIZES = [
   { width: 1280, height: 800 },

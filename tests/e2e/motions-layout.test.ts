@@ -1,8 +1,8 @@
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { describe, expect, it } from "vitest";
 import { parseRbm } from "../../src/protocol/rbm.ts";
 import { validateRbm } from "../../src/protocol/rbm-validate.ts";
-import { type AppHarness, FAST, openMotions, squash, startHarness } from "./harness.ts";
+import { FAST, openMotions, squash, useApp } from "./harness.ts";
 import {
   exampleText,
   longMotion,
@@ -18,15 +18,7 @@ import "./rbc-test-globals.ts";
 // Issue #11: the Motions view in tabs that fit a screen, progress and results where the action started,
 // labels that never overflow, warnings grouped by kind, memory shown as used.
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 const TABS = ["Files", "Memory", "Run", "Sounds"] as const;
 const PHONE = { width: 390, height: 844 };

@@ -1,7 +1,6 @@
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { describe, expect, it } from "vitest";
 import {
-  type AppHarness,
   FAST,
   holdRobot,
   holdRobotWhenShown,
@@ -9,7 +8,7 @@ import {
   releaseRobot,
   robotNow,
   squash,
-  startHarness,
+  useApp,
   watchText,
 } from "./harness.ts";
 import { showTab } from "./motion-fixtures.ts";
@@ -18,15 +17,7 @@ import "./rbc-test-globals.ts";
 // The Motions view's run and sound tests, in a file of their own so that two browser files can share the
 // suite's time (motions.test.ts has the file and upload tests).
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 /** The Motions view's Run or Sounds tab, with the fake robot connected. */
 async function openTab(page: Page, tab: "Run" | "Sounds"): Promise<void> {

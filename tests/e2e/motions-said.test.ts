@@ -1,16 +1,7 @@
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { describe, expect, it } from "vitest";
 import { firmwareHexWithBadChecksum } from "../support/hex.ts";
-import {
-  type AppHarness,
-  connectRobot,
-  FAST,
-  holdRobot,
-  openMotions,
-  releaseRobot,
-  squash,
-  startHarness,
-} from "./harness.ts";
+import { connectRobot, FAST, holdRobot, openMotions, releaseRobot, squash, useApp } from "./harness.ts";
 import { axeProblems } from "./i18n-checks.ts";
 import { exampleText, rbmFile } from "./motion-fixtures.ts";
 import "./rbc-test-globals.ts";
@@ -21,15 +12,7 @@ import "./rbc-test-globals.ts";
 // sentence and Stop beside it; after Stop they are enabled again. The robot runs on the paced virtual clock
 // (FAST); nothing is retried.
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 const switchLanguage = (page: Page, to: "en" | "ko") => page.getByTestId("language-switch").selectOption(to);
 

@@ -1,19 +1,10 @@
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { describe, expect, it } from "vitest";
 import { memoryFootprint } from "../../src/protocol/catalog.ts";
 import { motionImage } from "../../src/protocol/motion-image.ts";
 import { motionDurationMs, parseRbm } from "../../src/protocol/rbm.ts";
 import { formatSeconds } from "../../src/ui/features/motions/plot-data.ts";
-import {
-  type AppHarness,
-  cspViolations,
-  FAST,
-  openMotions,
-  robotTime,
-  squash,
-  startHarness,
-  watchPage,
-} from "./harness.ts";
+import { cspViolations, FAST, openMotions, robotTime, squash, useApp, watchPage } from "./harness.ts";
 import {
   exampleText,
   imageHex,
@@ -40,15 +31,7 @@ import {
   texts,
 } from "./i18n-checks.ts";
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 /** A paced link (115200 baud, 16 ms FTDI latency), so uploads take as long as on the wire. */
 const PACED: RbcTestOptions = { baudPacing: true, latencyMs: 16 };

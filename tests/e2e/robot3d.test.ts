@@ -7,27 +7,12 @@
  */
 import { createRequire } from "node:module";
 import type { Locator, Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import {
-  type AppHarness,
-  buildOnce,
-  cspViolations,
-  openMotions,
-  startHarness,
-  watchPage,
-} from "./harness.ts";
+import { describe, expect, it } from "vitest";
+import { buildOnce, cspViolations, openMotions, useApp, watchPage } from "./harness.ts";
 import { exampleText, rbmFile } from "./motion-fixtures.ts";
 import "./rbc-test-globals.ts";
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 const BASIC = "125 179 199 88 108 126 72 49 163 141 51 47 49 199 205 205";
 /** wave.rbm at 800 ms, the end of its first scene (RaiseArm): the left arm up (examples/README.md). */

@@ -1,5 +1,5 @@
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { type AppHarness, connectRobot, startHarness, watchPage } from "./harness.ts";
+import { describe, expect, it } from "vitest";
+import { connectRobot, useApp, watchPage } from "./harness.ts";
 import "./rbc-test-globals.ts";
 
 /**
@@ -9,15 +9,7 @@ import "./rbc-test-globals.ts";
  * task and the heap are printed (figures for the report; bench/event-flood.ts measures the client in Node).
  */
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 const FLOOD_MS = 10_000;
 

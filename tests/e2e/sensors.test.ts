@@ -1,25 +1,9 @@
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import {
-  type AppHarness,
-  connectRobot,
-  cspViolations,
-  FAST,
-  robotTime,
-  startHarness,
-  watchPage,
-} from "./harness.ts";
+import { describe, expect, it } from "vitest";
+import { connectRobot, cspViolations, FAST, robotTime, useApp, watchPage } from "./harness.ts";
 import "./rbc-test-globals.ts";
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 async function openSensors(page: Page): Promise<void> {
   await connectRobot(page, app.url);

@@ -1,7 +1,7 @@
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { describe, expect, it } from "vitest";
 import { HUNO_BASIC_POSTURE } from "../../src/protocol/index.ts";
-import { type AppHarness, connectRobot, cspViolations, squash, startHarness } from "./harness.ts";
+import { connectRobot, cspViolations, squash, useApp } from "./harness.ts";
 import "./rbc-test-globals.ts";
 import {
   connectCable,
@@ -15,15 +15,7 @@ import {
 } from "./i18n-checks.ts";
 import { exampleText, rbmFile } from "./motion-fixtures.ts";
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 const simServos = (page: Page) => page.evaluate(() => window.__rbcTest?.sim.servos ?? []);
 const simDirect = (page: Page) => page.evaluate(() => window.__rbcTest?.sim.directMode);

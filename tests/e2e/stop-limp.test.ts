@@ -1,21 +1,13 @@
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { type AppHarness, connectRobot, FAST, openMotions, squash, startHarness } from "./harness.ts";
+import { describe, expect, it } from "vitest";
+import { connectRobot, FAST, openMotions, squash, useApp } from "./harness.ts";
 import "./rbc-test-globals.ts";
 
 // Stop and Limp are two things (issue #11 item 1): Stop ends what the robot is doing
 // and keeps it standing (a motion ends with 7); Limp makes every servo passive, only after asking. Escape keeps
 // its meaning in a text field, a dialog or an open menu/list, and otherwise (a number field too) means Stop, never Limp.
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 /** The simulated robot as the test sees it: servo torque, direct mode, what it plays. */
 const robot = (page: Page) =>

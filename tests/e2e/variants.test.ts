@@ -1,5 +1,5 @@
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { type AppHarness, connectRobot, squash, startHarness, watchPage } from "./harness.ts";
+import { describe, expect, it } from "vitest";
+import { connectRobot, squash, useApp, watchPage } from "./harness.ts";
 import "./rbc-test-globals.ts";
 
 /**
@@ -12,15 +12,7 @@ import "./rbc-test-globals.ts";
 const EMPTY_MOTION = /^0 of 24,576 bytes used|24,576 of 24,576 bytes free/;
 const EMPTY_ACTION = /^0 of 8,192 bytes used|8,192 of 8,192 bytes free/;
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 describe("firmware variants", () => {
   it("a robot that answers neither 0x0C nor 0x1E connects; its serial number is 'not reported'", async () => {

@@ -12,28 +12,12 @@
  * Robot time is the paced virtual clock (FAST: at most 4× real time); waits are on what the page shows.
  */
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import {
-  type AppHarness,
-  connectRobot,
-  FAST,
-  holdRobotWhenShown,
-  releaseRobot,
-  squash,
-  startHarness,
-} from "./harness.ts";
+import { describe, expect, it } from "vitest";
+import { connectRobot, FAST, holdRobotWhenShown, releaseRobot, squash, useApp } from "./harness.ts";
 import "./rbc-test-globals.ts";
 import { axeProblems, connectDemo, keysShown, newLocalePage, text } from "./i18n-checks.ts";
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 /** §4: the firmware's factory zeros (the simulated robot's). */
 const FACTORY = [124, 202, 162, 65, 108, 125, 46, 88, 184, 142, 90, 40, 125, 161, 210, 126];

@@ -1,9 +1,9 @@
 import { readFile } from "node:fs/promises";
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { describe, expect, it } from "vitest";
 import { FACTORY_ZEROS, STANDARD_ZEROS } from "../../src/protocol/index.ts";
 import { parseZerosBackup } from "../../src/protocol/zeros-backup.ts";
-import { type AppHarness, connectRobot, cspViolations, robotTime, squash, startHarness } from "./harness.ts";
+import { connectRobot, cspViolations, robotTime, squash, useApp } from "./harness.ts";
 import "./rbc-test-globals.ts";
 import {
   connectCable,
@@ -16,15 +16,7 @@ import {
   sizeName as size,
 } from "./i18n-checks.ts";
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 /** Takes the Save dialog away (an own property shadows the browser's), so the page offers a download. */
 const withoutSaveDialog = () => {
