@@ -60,9 +60,9 @@ describe("a stored draft with no scenes", () => {
       "The last draft, Broken, could not be opened and was set aside: Its motion cannot be read: The motion has no scenes; a motion needs at least one. It stays in Drafts, where you can export it as it is or delete it.",
     );
     await sentence.waitFor({ timeout: 10_000 });
-    expect(await page.getByTestId("editor-starting").count()).toBe(0);
+    await expect.poll(() => page.getByTestId("editor-starting").count()).toBe(0);
     // The Editor works: the template motion is open, with its one scene.
-    expect(await page.getByTestId("motion-name").inputValue()).toBe("NewMotion");
+    await expect.poll(() => page.getByTestId("motion-name").inputValue()).toBe("NewMotion");
 
     // Set aside, not lost: listed with why, and exported unchanged on request.
     const aside = page.getByTestId("broken-drafts");
