@@ -7,7 +7,7 @@
 import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
 import { FACTORY_ZEROS } from "../../src/protocol/zeros.ts";
-import { cspViolations, FAST, squash, useApp, watchPage } from "./harness.ts";
+import { cspViolations, expectText, FAST, squash, useApp, watchPage } from "./harness.ts";
 import { exampleText, imageHex, rbmFile, showTab } from "./motion-fixtures.ts";
 import "./rbc-test-globals.ts";
 
@@ -40,12 +40,13 @@ describe("the robot over Bluetooth", () => {
     await page.getByRole("link", { name: "Zeros" }).click();
     await page.getByTestId("zeros-card").waitFor();
     await page.locator("#zero-0").waitFor({ timeout: 15_000 });
-    const shown = await page
-      .locator("[id^=zero-]")
-      .evaluateAll((els) =>
-        els.filter((e) => /^zero-\d+$/.test(e.id)).map((e) => Number((e as HTMLInputElement).value)),
-      );
-    expect(shown).toEqual([...FACTORY_ZEROS]);
+    const shown = () =>
+      page
+        .locator("[id^=zero-]")
+        .evaluateAll((els) =>
+          els.filter((e) => /^zero-\d+$/.test(e.id)).map((e) => Number((e as HTMLInputElement).value)),
+        );
+    await expect.poll(shown).toEqual([...FACTORY_ZEROS]);
     expect(await page.evaluate(() => window.__rbcDemoSim?.zeros)).toEqual([...FACTORY_ZEROS]);
 
     // Upload wave.rbm (the demo robot uploads at once) and check the robot holds its exact image.
@@ -57,7 +58,7 @@ describe("the robot over Bluetooth", () => {
     await page.getByTestId("upload-motion").click();
     const uploaded = card.getByText(/^Uploaded wave\.rbm/);
     await uploaded.waitFor({ timeout: 30_000 });
-    expect(await uploaded.textContent().then(squash)).toMatch(/624 bytes in 10 chunks/);
+    await expectText(uploaded, /624 bytes in 10 chunks/);
     expect(await demoMotionsHex(page)).toEqual([imageHex(wave)]);
 
     // Run basic posture, then the uploaded wave (motion 12), each confirmed by the robot.
@@ -86,9 +87,7 @@ describe("the robot over Bluetooth", () => {
     await page.getByRole("link", { name: "Robot" }).click();
     await page.getByTestId("device-card").waitFor();
     expect(await page.locator("body").textContent().then(squash)).not.toMatch(TIMEOUT_WORDS);
-    expect(await page.getByTestId("connection-status").textContent().then(squash)).toMatch(
-      /^Demo robot \(Bluetooth\)/,
-    );
+    await expectText(page.getByTestId("connection-status"), /^Demo robot \(Bluetooth\)/);
     expect(seen.errors).toEqual([]);
     expect(seen.foreignRequests).toEqual([]);
     expect(await cspViolations(page)).toEqual([]);
@@ -134,7 +133,7 @@ describe("the robot over Bluetooth", () => {
       { usbVendorId: 0x10c4 },
       { usbVendorId: 0x1a86 },
     ]);
-    expect(await page.getByTestId("connection-status").textContent().then(squash)).toMatch(/^Connected/);
+    await expectText(page.getByTestId("connection-status"), /^Connected/);
     expect(seen.errors).toEqual([]);
     await context.close();
   });
@@ -143,7 +142,7 @@ describe("the robot over Bluetooth", () => {
     const { page, context } = await app.newPage();
     await page.goto(app.url, { waitUntil: "domcontentloaded" });
     await page.getByText("Can't find your robot?").click();
-    const help = await page.getByTestId("bluetooth-help").textContent().then(squash);
+    const help = page.getByTestId("bluetooth-help");
     for (const words of [
       "switch the robot on",
       "pair the module in the computer's Bluetooth settings first",
@@ -151,7 +150,7 @@ describe("the robot over Bluetooth", () => {
       "Bluetooth serial port",
       "Replies are slower over Bluetooth",
     ]) {
-      expect(help).toContain(words);
+      await expectText(help, words, { contains: true });
     }
     await context.close();
   });

@@ -1,5 +1,5 @@
 import { describe, expect, it } from "vitest";
-import { cspViolations, squash, useApp, watchPage } from "./harness.ts";
+import { cspViolations, expectText, squash, useApp, watchPage } from "./harness.ts";
 import "./rbc-test-globals.ts";
 
 const app = useApp();
@@ -11,9 +11,8 @@ describe("demo robot, browsers without Web Serial, offline", () => {
     await page.goto(app.url);
     const card = page.getByTestId("unsupported-card");
     await card.waitFor();
-    const text = await card.textContent().then(squash);
-    expect(text).toMatch(/Chrome, Edge and Opera \(version 89 or later\)/);
-    expect(text).toMatch(/Firefox, Safari/);
+    await expectText(card, /Chrome, Edge and Opera \(version 89 or later\)/);
+    await expectText(card, /Firefox, Safari/);
     expect(await page.getByRole("button", { name: "Connect robot" }).count()).toBe(0);
     expect(await page.evaluate(() => "serial" in navigator)).toBe(false);
 
@@ -50,7 +49,7 @@ describe("demo robot, browsers without Web Serial, offline", () => {
       .poll(() => page.getByTestId("memory-action-text").textContent().then(squash))
       // Free of total, or (the Robot view being reworded) used of total: either way nothing is used yet.
       .toMatch(/8,192 of 8,192|\b0 of 8,192 bytes used/);
-    expect(await page.getByRole("heading", { level: 1 }).textContent().then(squash)).toBe("Demo robot");
+    await expectText(page.getByRole("heading", { level: 1 }), "Demo robot");
     // The page's fake port was never touched: this was the built-in demo.
     expect(await page.evaluate(() => window.__rbcTest?.port.stats.opens)).toBe(0);
 
@@ -58,7 +57,7 @@ describe("demo robot, browsers without Web Serial, offline", () => {
     const log = page.getByTestId("log-card");
     await log.waitFor();
     await log.getByText("Read firmware version").first().waitFor();
-    expect(await log.textContent().then(squash)).toContain("FF FF AA 55 AA 55 37 BA 12 00 00 00 00 01 01 01");
+    await expectText(log, "FF FF AA 55 AA 55 37 BA 12 00 00 00 00 01 01 01", { contains: true });
     // Pause freezes the view while capture goes on.
     const rowsBefore = await log.locator("tbody tr").count();
     // Refresh reads the error code and both free memories (3 requests, 3 replies); firmware and serial number
