@@ -73,7 +73,7 @@ for (const language of LANGUAGES) {
           const report: string[] = [];
           for (const view of VIEWS) {
             await openView(page, view);
-            expect(await pageLang(page), view).toBe(language.lang);
+            await expect.poll(() => pageLang(page), { message: view }).toBe(language.lang);
             // The view speaks the page's language: its heading has Hangul in Korean, none in English.
             const title = await page.evaluate(() => document.querySelector("main h1")?.textContent ?? "");
             expect(/[가-힣]/.test(title), `${view}: "${title}"`).toBe(language.lang === "ko");
