@@ -32,9 +32,10 @@ describe("the robot over Bluetooth", () => {
     await page.goto(app.url, { waitUntil: "domcontentloaded" });
     await page.getByTestId("demo-bluetooth").click();
     await page.getByTestId("device-card").waitFor({ timeout: 15_000 });
-    await expect
-      .poll(() => page.getByTestId("connection-status").textContent().then(squash))
-      .toMatch(/^Demo robot \(Bluetooth\)\s*·\s*Connected\s*·\s*HUNO\s*·\s*fw 2\.23\s*·\s*SN 8958899989309/);
+    await expectText(
+      page.getByTestId("connection-status"),
+      /^Demo robot \(Bluetooth\)\s*·\s*Connected\s*·\s*HUNO\s*·\s*fw 2\.23\s*·\s*SN 8958899989309/,
+    );
 
     // Zeros: read from the robot over the slow link.
     await page.getByRole("link", { name: "Zeros" }).click();
@@ -99,9 +100,10 @@ describe("the robot over Bluetooth", () => {
     await page.goto(app.url, { waitUntil: "domcontentloaded" });
     await page.getByRole("button", { name: "Connect robot" }).click();
     await page.getByTestId("device-card").waitFor({ timeout: 15_000 });
-    await expect
-      .poll(() => page.getByTestId("connection-status").textContent().then(squash))
-      .toMatch(/^Connected\s*·\s*Bluetooth\s*·\s*HUNO\s*·\s*fw 2\.23/);
+    await expectText(
+      page.getByTestId("connection-status"),
+      /^Connected\s*·\s*Bluetooth\s*·\s*HUNO\s*·\s*fw 2\.23/,
+    );
     const request = await page.evaluate(() => window.__rbcTest?.serial.requests[0]);
     expect(request?.filters?.at(-1)).toEqual({ bluetoothServiceClassId: SPP });
     expect(request?.filters?.slice(0, -1).map((f) => f.usbVendorId)).toEqual([
@@ -113,9 +115,7 @@ describe("the robot over Bluetooth", () => {
     await page.getByRole("button", { name: "Disconnect" }).click();
     await page.getByRole("button", { name: "Connect to Bluetooth serial port" }).click();
     await page.getByTestId("device-card").waitFor({ timeout: 15_000 });
-    await expect
-      .poll(() => page.getByTestId("connection-status").textContent().then(squash))
-      .toMatch(/^Connected\s*·\s*Bluetooth/);
+    await expectText(page.getByTestId("connection-status"), /^Connected\s*·\s*Bluetooth/);
     await context.close();
   });
 

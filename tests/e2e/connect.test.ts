@@ -14,14 +14,10 @@ describe("connecting a robot", () => {
     await connectRobot(page, app.url);
 
     const status = page.getByTestId("connection-status");
-    await expect
-      .poll(() => status.textContent().then(squash))
-      .toMatch(/Connected\s*·\s*HUNO\s*·\s*fw 2\.23\s*·\s*SN 8958899989309/);
-    await expect.poll(() => page.getByTestId("firmware").textContent().then(squash)).toBe("2.23");
+    await expectText(status, /Connected\s*·\s*HUNO\s*·\s*fw 2\.23\s*·\s*SN 8958899989309/);
+    await expectText(page.getByTestId("firmware"), "2.23");
     await expectText(page.getByTestId("serial-number"), "8958899989309");
-    await expect
-      .poll(() => page.getByTestId("memory-motion-text").textContent().then(squash))
-      .toMatch(/0 of 24,576 bytes used/);
+    await expectText(page.getByTestId("memory-motion-text"), /0 of 24,576 bytes used/);
     await expectText(page.getByTestId("memory-action-text"), /0 of 8,192 bytes used/);
     await expect.poll(() => page.locator("#memory-motion").getAttribute("max")).toBe("24576");
     await expectText(page.getByTestId("error-code"), /No error/);
@@ -63,7 +59,7 @@ describe("connecting a robot", () => {
       "CH340",
       "FTDI",
     ]) {
-      await expect.poll(() => help.textContent().then(squash)).toContain(hint);
+      await expectText(help, hint, { contains: true });
     }
     // "Show all ports" drops the filters. The first cancel's sentence is still on screen, so wait for the second
     // request itself, not for the sentence.

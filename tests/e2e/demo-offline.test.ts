@@ -1,5 +1,5 @@
 import { describe, expect, it } from "vitest";
-import { cspViolations, expectText, squash, useApp, watchPage } from "./harness.ts";
+import { cspViolations, expectText, useApp, watchPage } from "./harness.ts";
 import "./rbc-test-globals.ts";
 
 const app = useApp();
@@ -18,10 +18,8 @@ describe("demo robot, browsers without Web Serial, offline", () => {
 
     await page.getByRole("button", { name: "Try the demo robot" }).click();
     await page.getByTestId("device-card").waitFor();
-    await expect
-      .poll(() => page.getByTestId("connection-status").textContent().then(squash))
-      .toMatch(/Demo robot\s*·\s*Connected/);
-    await expect.poll(() => page.getByTestId("firmware").textContent().then(squash)).toBe("2.23");
+    await expectText(page.getByTestId("connection-status"), /Demo robot\s*·\s*Connected/);
+    await expectText(page.getByTestId("firmware"), "2.23");
     expect(seen.foreignRequests).toEqual([]);
     expect(seen.errors).toEqual([]);
     await context.close();
@@ -42,13 +40,12 @@ describe("demo robot, browsers without Web Serial, offline", () => {
     await page.getByRole("button", { name: "Try the demo robot" }).click();
     await page.getByTestId("device-card").waitFor();
     expect(scripts.some((s) => s.includes("demo-robot"))).toBe(true);
-    await expect
-      .poll(() => page.getByTestId("connection-status").textContent().then(squash))
-      .toMatch(/Demo robot\s*·\s*Connected\s*·\s*HUNO\s*·\s*fw 2\.23\s*·\s*SN 8958899989309/);
-    await expect
-      .poll(() => page.getByTestId("memory-action-text").textContent().then(squash))
-      // Free of total, or (the Robot view being reworded) used of total: either way nothing is used yet.
-      .toMatch(/8,192 of 8,192|\b0 of 8,192 bytes used/);
+    await expectText(
+      page.getByTestId("connection-status"),
+      /Demo robot\s*·\s*Connected\s*·\s*HUNO\s*·\s*fw 2\.23\s*·\s*SN 8958899989309/,
+    );
+    // Free of total, or (the Robot view being reworded) used of total: either way nothing is used yet.
+    await expectText(page.getByTestId("memory-action-text"), /8,192 of 8,192|\b0 of 8,192 bytes used/);
     await expectText(page.getByRole("heading", { level: 1 }), "Demo robot");
     // The page's fake port was never touched: this was the built-in demo.
     expect(await page.evaluate(() => window.__rbcTest?.port.stats.opens)).toBe(0);
@@ -70,9 +67,7 @@ describe("demo robot, browsers without Web Serial, offline", () => {
     await page.getByRole("link", { name: "Log" }).click();
     await log.getByText("Paused:").waitFor();
     expect(await log.locator("tbody tr").count()).toBe(rowsBefore);
-    await expect
-      .poll(() => log.getByTestId("log-count").textContent().then(squash))
-      .toMatch(new RegExp(`^${rowsBefore + refreshRows} entries`));
+    await expectText(log.getByTestId("log-count"), new RegExp(`^${rowsBefore + refreshRows} entries`));
     expect(await log.locator("tbody tr").count()).toBe(rowsBefore);
     await page.getByRole("button", { name: "Resume" }).click();
     await expect.poll(() => log.locator("tbody tr").count()).toBe(rowsBefore + refreshRows);
@@ -109,7 +104,7 @@ describe("demo robot, browsers without Web Serial, offline", () => {
     await page.reload();
     await page.getByRole("button", { name: "Try the demo robot" }).click();
     await page.getByTestId("device-card").waitFor();
-    await expect.poll(() => page.getByTestId("firmware").textContent().then(squash)).toBe("2.23");
+    await expectText(page.getByTestId("firmware"), "2.23");
     // Lazily loaded views come from the cache too.
     await page.getByRole("link", { name: "Zeros" }).click();
     await page.locator("#zero-0").waitFor();

@@ -1,7 +1,7 @@
 import type { Browser, Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { launchChromium } from "../support/chromium.ts";
-import { buildOnce, expectText, squash } from "./harness.ts";
+import { buildOnce, expectText } from "./harness.ts";
 import {
   cspViolations,
   injectedPage,
@@ -70,7 +70,7 @@ describe("the hosted panel under a sub-path", () => {
     await page.reload();
     await page.getByRole("button", { name: "Try the demo robot" }).click();
     await page.getByTestId("device-card").waitFor();
-    await expect.poll(() => page.getByTestId("firmware").textContent().then(squash)).toBe("2.23");
+    await expectText(page.getByTestId("firmware"), "2.23");
     await page.getByRole("link", { name: "Sensors", exact: true }).click();
     await page.getByRole("heading", { level: 1, name: "Sensors" }).waitFor();
     await page.getByRole("link", { name: "Motions", exact: true }).click();
@@ -115,9 +115,7 @@ describe("the hosted panel under a sub-path", () => {
       expect(
         await page.evaluate(() => (window as unknown as { __sameDocument?: boolean }).__sameDocument),
       ).toBe(true);
-      await expect
-        .poll(() => page.getByTestId("connection-status").textContent().then(squash))
-        .toMatch(/Demo robot\s*·\s*Connected/);
+      await expectText(page.getByTestId("connection-status"), /Demo robot\s*·\s*Connected/);
       expect(await page.evaluate(async () => (await navigator.serviceWorker.ready).waiting !== null)).toBe(
         true,
       );

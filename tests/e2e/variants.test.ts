@@ -22,9 +22,7 @@ describe("firmware variants", () => {
     const seen = watchPage(page, app.origin);
     await connectRobot(page, app.url);
 
-    await expect
-      .poll(() => page.getByTestId("serial-number").textContent().then(squash))
-      .toBe("not reported");
+    await expectText(page.getByTestId("serial-number"), "not reported");
     await expectText(page.getByTestId("connection-status"), /Connected\s*·\s*HUNO\s*·\s*fw 2\.23/);
     const status = await page.getByTestId("connection-status").textContent().then(squash);
     expect(status).not.toContain("SN");
@@ -45,7 +43,7 @@ describe("firmware variants", () => {
       options: { variant: { firmware: { major: 9, minor: 99 }, platform: 4 } },
     });
     await connectRobot(page, app.url);
-    await expect.poll(() => page.getByTestId("firmware").textContent().then(squash)).toBe("9.99");
+    await expectText(page.getByTestId("firmware"), "9.99");
     await expectText(
       page.getByTestId("connection-status"),
       /Connected\s*·\s*PF2\s*·\s*fw 9\.99\s*·\s*SN 8958899989309/,
@@ -77,7 +75,7 @@ describe("firmware variants", () => {
     });
     const seen = watchPage(page, app.origin);
     await connectRobot(page, app.url);
-    await expect.poll(() => page.getByTestId("firmware").textContent().then(squash)).toBe("2.23");
+    await expectText(page.getByTestId("firmware"), "2.23");
     await expectText(page.getByTestId("serial-number"), "8958899989309");
     await expect
       .poll(() => page.getByTestId("memory-motion-text").textContent().then(squash))
