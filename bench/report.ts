@@ -32,7 +32,9 @@ export type MetricKey =
   | "multiRobotRatio4"
   | "multiRobotRatio12"
   | "floodLateHeapMB"
-  | "floodLongestStepMs";
+  | "floodLongestStepMs"
+  | "rbmCheckExampleMs"
+  | "rbmCheckHostileMs";
 
 export interface Target {
   op: ">=" | "<=";
@@ -53,6 +55,9 @@ export const TARGETS: Partial<Record<MetricKey, Target>> = {
   logGarbageHeapMB: { op: "<=", value: 5 },
   // Issue #12 (bench/motion-edit.ts).
   motionEditMs: { op: "<=", value: 50 },
+  // bench/rbm-check.ts: the limits tests/unit/fuzz-rbm.test.ts asserted before speed moved to the bench.
+  rbmCheckExampleMs: { op: "<=", value: 500 },
+  rbmCheckHostileMs: { op: "<=", value: 1500 },
 };
 
 interface Row {
@@ -132,6 +137,18 @@ export const ROWS: readonly Row[] = [
   {
     key: "floodLongestStepMs",
     label: "Event flood: longest handling of one event, end to end",
+    unit: "ms",
+    digits: 2,
+  },
+  {
+    key: "rbmCheckExampleMs",
+    label: "Motion file check, slowest example, median",
+    unit: "ms",
+    digits: 2,
+  },
+  {
+    key: "rbmCheckHostileMs",
+    label: "  slowest hostile input (huge counts, 1 MB), median",
     unit: "ms",
     digits: 2,
   },

@@ -32,6 +32,7 @@ import { describeLogMemory, measureLogMemory } from "./log-memory.ts";
 import { describeMotionEdit, measureMotionEdit } from "./motion-edit.ts";
 import { measureMultiRobotUpload } from "./multi-robot-upload.ts";
 import { makeParserStream, measureParser } from "./parser-throughput.ts";
+import { describeRbmCheck, measureRbmCheck } from "./rbm-check.ts";
 import { type MetricKey, type Metrics, TARGETS, table, targetMet } from "./report.ts";
 import { measureRequestOverhead } from "./request-overhead.ts";
 import { describeRobot3d, measureRobot3d } from "./robot3d-fps.ts";
@@ -94,6 +95,8 @@ const metrics: Metrics = {
   multiRobotRatio12: null,
   floodLateHeapMB: null,
   floodLongestStepMs: null,
+  rbmCheckExampleMs: null,
+  rbmCheckHostileMs: null,
 };
 const skipped: Partial<Record<MetricKey, string>> = {};
 const details: Record<string, unknown> = {};
@@ -253,6 +256,17 @@ async function main(): Promise<void> {
     details.motionEditTable = describeMotionEdit(motionEdit);
   } catch (e) {
     skip(["motionEditMs"], errorText(e));
+  }
+
+  progress("motion file check (the examples and hostile inputs of tests/support/rbm-hostile.ts)");
+  try {
+    const rbmCheck = measureRbmCheck(quick ? 2 : 5);
+    metrics.rbmCheckExampleMs = rbmCheck.slowestExampleMs;
+    metrics.rbmCheckHostileMs = rbmCheck.slowestHostileMs;
+    details.rbmCheck = rbmCheck;
+    details.rbmCheckTable = describeRbmCheck(rbmCheck);
+  } catch (e) {
+    skip(["rbmCheckExampleMs", "rbmCheckHostileMs"], errorText(e));
   }
 
   progress("servo scan, ids 0-30, wired link (virtual clock once, then real time)");
@@ -417,6 +431,8 @@ if (json) {
   if (logTable) process.stdout.write(`\n${logTable}\n`);
   const motionEditTable = details.motionEditTable as string | undefined;
   if (motionEditTable) process.stdout.write(`\nMotion editing:\n${motionEditTable}\n`);
+  const rbmCheckTable = details.rbmCheckTable as string | undefined;
+  if (rbmCheckTable) process.stdout.write(`\n${rbmCheckTable}\n`);
   const floodTable = details.eventFloodTable as string | undefined;
   if (floodTable) process.stdout.write(`\n${floodTable}\n`);
   const firmwareLines = details.firmwareUpdateLines as string[] | undefined;

@@ -6,7 +6,7 @@
 import { createRequire } from "node:module";
 import type { BrowserContext, Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { type AppHarness, buildOnce, startHarness } from "./harness.ts";
+import { buildOnce, useApp } from "./harness.ts";
 import { exampleText, rbmFile, showTab } from "./motion-fixtures.ts";
 import "./rbc-test-globals.ts";
 
@@ -24,16 +24,11 @@ interface AxeViolation {
   nodes: AxeNode[];
 }
 
-let app: AppHarness;
+const app = useApp();
 let fakeSerial: string;
 
 beforeAll(async () => {
-  app = await startHarness();
   ({ fakeSerial } = await buildOnce());
-});
-
-afterAll(async () => {
-  await app?.close();
 });
 
 /**

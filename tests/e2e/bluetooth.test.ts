@@ -5,9 +5,9 @@
  * USB adapters (and an older browser still getting the USB chooser); the help for pairing.
  */
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { describe, expect, it } from "vitest";
 import { FACTORY_ZEROS } from "../../src/protocol/zeros.ts";
-import { type AppHarness, cspViolations, FAST, squash, startHarness, watchPage } from "./harness.ts";
+import { cspViolations, expectText, FAST, squash, useApp, watchPage } from "./harness.ts";
 import { exampleText, imageHex, rbmFile, showTab } from "./motion-fixtures.ts";
 import "./rbc-test-globals.ts";
 
@@ -15,15 +15,7 @@ const SPP = "00001101-0000-1000-8000-00805f9b34fb";
 /** What a timeout says anywhere in the panel (RbcTimeoutError and the motion/upload sentences built on it). */
 const TIMEOUT_WORDS = /did not answer|did not report|stopped acknowledging|did not acknowledge|timed? ?out/i;
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 /** The demo robot's stored motions, as hex. */
 const demoMotionsHex = (page: Page) =>
@@ -40,20 +32,22 @@ describe("the robot over Bluetooth", () => {
     await page.goto(app.url, { waitUntil: "domcontentloaded" });
     await page.getByTestId("demo-bluetooth").click();
     await page.getByTestId("device-card").waitFor({ timeout: 15_000 });
-    await expect
-      .poll(() => page.getByTestId("connection-status").textContent().then(squash))
-      .toMatch(/^Demo robot \(Bluetooth\)\s*·\s*Connected\s*·\s*HUNO\s*·\s*fw 2\.23\s*·\s*SN 8958899989309/);
+    await expectText(
+      page.getByTestId("connection-status"),
+      /^Demo robot \(Bluetooth\)\s*·\s*Connected\s*·\s*HUNO\s*·\s*fw 2\.23\s*·\s*SN 8958899989309/,
+    );
 
     // Zeros: read from the robot over the slow link.
     await page.getByRole("link", { name: "Zeros" }).click();
     await page.getByTestId("zeros-card").waitFor();
     await page.locator("#zero-0").waitFor({ timeout: 15_000 });
-    const shown = await page
-      .locator("[id^=zero-]")
-      .evaluateAll((els) =>
-        els.filter((e) => /^zero-\d+$/.test(e.id)).map((e) => Number((e as HTMLInputElement).value)),
-      );
-    expect(shown).toEqual([...FACTORY_ZEROS]);
+    const shown = () =>
+      page
+        .locator("[id^=zero-]")
+        .evaluateAll((els) =>
+          els.filter((e) => /^zero-\d+$/.test(e.id)).map((e) => Number((e as HTMLInputElement).value)),
+        );
+    await expect.poll(shown).toEqual([...FACTORY_ZEROS]);
     expect(await page.evaluate(() => window.__rbcDemoSim?.zeros)).toEqual([...FACTORY_ZEROS]);
 
     // Upload wave.rbm (the demo robot uploads at once) and check the robot holds its exact image.
@@ -65,7 +59,7 @@ describe("the robot over Bluetooth", () => {
     await page.getByTestId("upload-motion").click();
     const uploaded = card.getByText(/^Uploaded wave\.rbm/);
     await uploaded.waitFor({ timeout: 30_000 });
-    expect(await uploaded.textContent().then(squash)).toMatch(/624 bytes in 10 chunks/);
+    await expectText(uploaded, /624 bytes in 10 chunks/);
     expect(await demoMotionsHex(page)).toEqual([imageHex(wave)]);
 
     // Run basic posture, then the uploaded wave (motion 12), each confirmed by the robot.
@@ -94,9 +88,7 @@ describe("the robot over Bluetooth", () => {
     await page.getByRole("link", { name: "Robot" }).click();
     await page.getByTestId("device-card").waitFor();
     expect(await page.locator("body").textContent().then(squash)).not.toMatch(TIMEOUT_WORDS);
-    expect(await page.getByTestId("connection-status").textContent().then(squash)).toMatch(
-      /^Demo robot \(Bluetooth\)/,
-    );
+    await expectText(page.getByTestId("connection-status"), /^Demo robot \(Bluetooth\)/);
     expect(seen.errors).toEqual([]);
     expect(seen.foreignRequests).toEqual([]);
     expect(await cspViolations(page)).toEqual([]);
@@ -108,9 +100,10 @@ describe("the robot over Bluetooth", () => {
     await page.goto(app.url, { waitUntil: "domcontentloaded" });
     await page.getByRole("button", { name: "Connect robot" }).click();
     await page.getByTestId("device-card").waitFor({ timeout: 15_000 });
-    await expect
-      .poll(() => page.getByTestId("connection-status").textContent().then(squash))
-      .toMatch(/^Connected\s*·\s*Bluetooth\s*·\s*HUNO\s*·\s*fw 2\.23/);
+    await expectText(
+      page.getByTestId("connection-status"),
+      /^Connected\s*·\s*Bluetooth\s*·\s*HUNO\s*·\s*fw 2\.23/,
+    );
     const request = await page.evaluate(() => window.__rbcTest?.serial.requests[0]);
     expect(request?.filters?.at(-1)).toEqual({ bluetoothServiceClassId: SPP });
     expect(request?.filters?.slice(0, -1).map((f) => f.usbVendorId)).toEqual([
@@ -122,9 +115,7 @@ describe("the robot over Bluetooth", () => {
     await page.getByRole("button", { name: "Disconnect" }).click();
     await page.getByRole("button", { name: "Connect to Bluetooth serial port" }).click();
     await page.getByTestId("device-card").waitFor({ timeout: 15_000 });
-    await expect
-      .poll(() => page.getByTestId("connection-status").textContent().then(squash))
-      .toMatch(/^Connected\s*·\s*Bluetooth/);
+    await expectText(page.getByTestId("connection-status"), /^Connected\s*·\s*Bluetooth/);
     await context.close();
   });
 
@@ -142,7 +133,7 @@ describe("the robot over Bluetooth", () => {
       { usbVendorId: 0x10c4 },
       { usbVendorId: 0x1a86 },
     ]);
-    expect(await page.getByTestId("connection-status").textContent().then(squash)).toMatch(/^Connected/);
+    await expectText(page.getByTestId("connection-status"), /^Connected/);
     expect(seen.errors).toEqual([]);
     await context.close();
   });
@@ -151,7 +142,7 @@ describe("the robot over Bluetooth", () => {
     const { page, context } = await app.newPage();
     await page.goto(app.url, { waitUntil: "domcontentloaded" });
     await page.getByText("Can't find your robot?").click();
-    const help = await page.getByTestId("bluetooth-help").textContent().then(squash);
+    const help = page.getByTestId("bluetooth-help");
     for (const words of [
       "switch the robot on",
       "pair the module in the computer's Bluetooth settings first",
@@ -159,7 +150,7 @@ describe("the robot over Bluetooth", () => {
       "Bluetooth serial port",
       "Replies are slower over Bluetooth",
     ]) {
-      expect(help).toContain(words);
+      await expectText(help, words, { contains: true });
     }
     await context.close();
   });

@@ -1,7 +1,7 @@
 import { createRequire } from "node:module";
 import type { BrowserContext, Locator, Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { type AppHarness, buildOnce, squash, startHarness } from "./harness.ts";
+import { beforeAll, describe, expect, it } from "vitest";
+import { buildOnce, expectText, squash, useApp } from "./harness.ts";
 import { exampleText, rbmFile } from "./motion-fixtures.ts";
 import "./rbc-test-globals.ts";
 
@@ -15,16 +15,11 @@ import "./rbc-test-globals.ts";
 const require = createRequire(import.meta.url);
 const AXE_PATH = require.resolve("axe-core/axe.min.js");
 
-let app: AppHarness;
+const app = useApp();
 let fakeSerial: string;
 
 beforeAll(async () => {
-  app = await startHarness();
   ({ fakeSerial } = await buildOnce());
-});
-
-afterAll(async () => {
-  await app?.close();
 });
 
 /** A page with the fake serial port at 4× robot time, its CSP bypassed so that axe can be added. */
@@ -87,10 +82,11 @@ describe("the Class view with four demo robots", () => {
     const { page, context } = await classPage("en-US");
     await page.getByRole("heading", { level: 1, name: "Class: several robots at once" }).waitFor();
     await addDemos(page, 4);
-    const serials = await rows(page).locator("dd.mono").allTextContents();
-    expect(serials.map(squash)).toEqual(["DEMO-00000001", "DEMO-00000002", "DEMO-00000003", "DEMO-00000004"]);
+    await expect
+      .poll(async () => (await rows(page).locator("dd.mono").allTextContents()).map(squash))
+      .toEqual(["DEMO-00000001", "DEMO-00000002", "DEMO-00000003", "DEMO-00000004"]);
     // The session's robot is untouched: the top bar still says no robot is connected.
-    expect(squash(await page.getByTestId("connection-status").textContent())).toBe("Not connected");
+    await expectText(page.getByTestId("connection-status"), "Not connected");
 
     // A name, kept by serial number.
     await row(page, 0).getByRole("button", { name: /^Name/ }).click();
@@ -132,18 +128,19 @@ describe("the Class view with four demo robots", () => {
     await expect.poll(leaveAsks, { interval: 5 }).toBe(true);
     const summary = page.getByTestId("class-summary");
     await summary.filter({ hasText: "Pack upload finished" }).waitFor({ timeout: 30_000 });
-    expect(await leaveAsks()).toBe(false);
-    expect(squash(await summary.textContent())).toBe(
-      "Pack upload finished on 4 robots: 3 stored, 0 partly stored, 1 not stored.",
-    );
+    await expect.poll(leaveAsks).toBe(false);
+    await expectText(summary, "Pack upload finished on 4 robots: 3 stored, 0 partly stored, 1 not stored.");
     for (const i of [0, 1, 3]) {
-      expect(squash(await row(page, i).getByTestId("class-result").textContent())).toMatch(
+      await expectText(
+        row(page, i).getByTestId("class-result"),
         /^Stored and verified: all 2 motions are on the robot: 12 \(wave\.rbm\), 13 \(bow\.rbm\)\. The robot reports [\d,]+ of 24,576 bytes of motion memory free\.$/,
       );
     }
-    expect(squash(await row(page, 2).getByTestId("class-phase").textContent())).toContain("Connection lost");
-    const lost = squash(await row(page, 2).getByTestId("class-result").textContent());
-    expect(lost).toMatch(/^Not stored\. .*wave\.rbm: The connection was lost during the upload/);
+    await expectText(row(page, 2).getByTestId("class-phase"), "Connection lost", { contains: true });
+    await expectText(
+      row(page, 2).getByTestId("class-result"),
+      /^Not stored\. .*wave\.rbm: The connection was lost during the upload/,
+    );
     expect((await sims(page)).map((s) => s.motions)).toEqual([2, 2, 0, 2]);
 
     // Run on all: Basic posture first (the RBC ignores other motions until 7 has run), then the pack's motion 12.
@@ -154,6 +151,7 @@ describe("the Class view with four demo robots", () => {
     for (const i of [0, 1, 3]) {
       await row(page, i).getByTestId("class-result").filter({ hasText: "Motion 7 played" }).waitFor();
     }
+    await expectText(skew, /within [\d.]+ ms/);
     const shown = /within ([\d.]+) ms/.exec(squash(await skew.textContent()));
     expect(Number(shown?.[1])).toBeGreaterThanOrEqual(0);
 
@@ -175,9 +173,7 @@ describe("the Class view with four demo robots", () => {
     // Limp all asks once, naming how many robots will fall; Cancel changes nothing.
     await page.getByRole("button", { name: "Limp all…" }).click();
     const question = page.getByRole("alertdialog");
-    expect(squash(await question.textContent())).toContain(
-      "3 robots will fall unless someone holds each one.",
-    );
+    await expectText(question, "3 robots will fall unless someone holds each one.", { contains: true });
     await expect.poll(() => page.evaluate(() => document.activeElement?.id)).toBe("class-cancel-question");
     await page.getByRole("button", { name: "Cancel", exact: true }).click();
     expect((await sims(page)).map((s) => s.passive)).toEqual([0, 0, 0, 0]);
@@ -219,7 +215,8 @@ describe("the Class view in Korean", () => {
     await page.getByRole("button", { name: "로봇 2대에 업로드" }).click();
     await page.getByTestId("class-summary").filter({ hasText: "저장 2대" }).waitFor({ timeout: 30_000 });
     for (const i of [0, 1]) {
-      expect(squash(await row(page, i).getByTestId("class-result").textContent())).toMatch(
+      await expectText(
+        row(page, i).getByTestId("class-result"),
         /^저장하고 확인했어요\. 모션 1개가 모두 로봇에 있어요: 12 \(wave\.rbm\)\. 로봇이 알려 준 모션 메모리: 24,576바이트 중 [\d,]+바이트 남음\.$/,
       );
     }
@@ -260,7 +257,7 @@ describe("the Class view's demo robots keep their memory", () => {
       row(page, 0)
         .getByText(/bytes free/)
         .textContent();
-    expect(squash(await free())).toBe("24,576 of 24,576 bytes free");
+    await expect.poll(async () => squash(await free())).toBe("24,576 of 24,576 bytes free");
     await page.getByTestId("class-rbm-input").setInputFiles([rbmFile("wave.rbm", exampleText("wave.rbm"))]);
     await page.getByText("Checked: the pack takes", { exact: false }).waitFor();
     await page.getByRole("button", { name: "Upload to 1 robot" }).click();
@@ -274,7 +271,7 @@ describe("the Class view's demo robots keep their memory", () => {
       .toBeGreaterThan(0);
     await page.reload({ waitUntil: "domcontentloaded" });
     await addDemos(page, 1);
-    expect(squash(await row(page, 0).locator("dd.mono").first().textContent())).toBe("DEMO-00000001");
+    await expectText(row(page, 0).locator("dd.mono").first(), "DEMO-00000001");
     await expect.poll(async () => squash(await free())).toBe("23,936 of 24,576 bytes free");
     expect((await sims(page))[0]?.motions).toBe(1);
     await context.close();

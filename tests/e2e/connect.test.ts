@@ -1,27 +1,11 @@
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import {
-  type AppHarness,
-  connectRobot,
-  cspViolations,
-  FAST,
-  squash,
-  startHarness,
-  watchPage,
-} from "./harness.ts";
+import { describe, expect, it } from "vitest";
+import { connectRobot, cspViolations, expectText, FAST, squash, useApp, watchPage } from "./harness.ts";
 import "./rbc-test-globals.ts";
 import type { Page } from "playwright-core";
 import { expectPageOk, newLocalePage, SIZES, type Size } from "./i18n-checks.ts";
 import type { RbcTestOptions } from "./rbc-test-globals.ts";
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 describe("connecting a robot", () => {
   it("connects through the chooser and shows the simulator's identity and memory", async () => {
@@ -30,21 +14,15 @@ describe("connecting a robot", () => {
     await connectRobot(page, app.url);
 
     const status = page.getByTestId("connection-status");
-    await expect
-      .poll(() => status.textContent().then(squash))
-      .toMatch(/Connected\s*·\s*HUNO\s*·\s*fw 2\.23\s*·\s*SN 8958899989309/);
-    await expect.poll(() => page.getByTestId("firmware").textContent().then(squash)).toBe("2.23");
-    expect(await page.getByTestId("serial-number").textContent().then(squash)).toBe("8958899989309");
-    await expect
-      .poll(() => page.getByTestId("memory-motion-text").textContent().then(squash))
-      .toMatch(/0 of 24,576 bytes used/);
-    expect(await page.getByTestId("memory-action-text").textContent().then(squash)).toMatch(
-      /0 of 8,192 bytes used/,
-    );
-    expect(await page.locator("#memory-motion").getAttribute("max")).toBe("24576");
-    expect(await page.getByTestId("error-code").textContent().then(squash)).toMatch(/No error/);
+    await expectText(status, /Connected\s*·\s*HUNO\s*·\s*fw 2\.23\s*·\s*SN 8958899989309/);
+    await expectText(page.getByTestId("firmware"), "2.23");
+    await expectText(page.getByTestId("serial-number"), "8958899989309");
+    await expectText(page.getByTestId("memory-motion-text"), /0 of 24,576 bytes used/);
+    await expectText(page.getByTestId("memory-action-text"), /0 of 8,192 bytes used/);
+    await expect.poll(() => page.locator("#memory-motion").getAttribute("max")).toBe("24576");
+    await expectText(page.getByTestId("error-code"), /No error/);
     await expect.poll(() => page.getByRole("button", { name: "Stop", exact: true }).isVisible()).toBe(true);
-    expect(await page.getByRole("button", { name: "Limp…" }).isVisible()).toBe(true);
+    await expect.poll(() => page.getByRole("button", { name: "Limp…" }).isVisible()).toBe(true);
 
     // The chooser was asked for the four USB serial vendors and paired Bluetooth modules (SPP).
     const filters = await page.evaluate(() => window.__rbcTest?.serial.requests[0]?.filters);
@@ -81,7 +59,7 @@ describe("connecting a robot", () => {
       "CH340",
       "FTDI",
     ]) {
-      await expect.poll(() => help.textContent().then(squash)).toContain(hint);
+      await expectText(help, hint, { contains: true });
     }
     // "Show all ports" drops the filters. The first cancel's sentence is still on screen, so wait for the second
     // request itself, not for the sentence.
@@ -125,15 +103,14 @@ describe("connecting a robot", () => {
 
     const lost = page.getByTestId("lost-notice");
     await lost.waitFor();
-    const text = await lost.textContent().then(squash);
-    expect(text).toContain("unplugged");
-    expect(text).toContain("Did not finish: Reading device info");
-    expect(await page.getByTestId("connection-status").textContent().then(squash)).toMatch(/Disconnected/);
+    await expectText(lost, "unplugged", { contains: true });
+    await expectText(lost, "Did not finish: Reading device info", { contains: true });
+    await expectText(page.getByTestId("connection-status"), /Disconnected/);
     // No spinner or progress left, no Stop button, and the connect buttons work again.
-    expect(await page.locator("progress").count()).toBe(0);
-    expect(await page.getByRole("button", { name: "Stop", exact: true }).count()).toBe(0);
-    expect(await page.getByRole("button", { name: "Limp…" }).count()).toBe(0);
-    expect(await page.getByRole("button", { name: "Connect robot" }).isEnabled()).toBe(true);
+    await expect.poll(() => page.locator("progress").count()).toBe(0);
+    await expect.poll(() => page.getByRole("button", { name: "Stop", exact: true }).count()).toBe(0);
+    await expect.poll(() => page.getByRole("button", { name: "Limp…" }).count()).toBe(0);
+    await expect.poll(() => page.getByRole("button", { name: "Connect robot" }).isEnabled()).toBe(true);
 
     // Plugged back in, it connects again.
     await page.evaluate(() => window.__rbcTest?.port.faults.clear());
@@ -172,20 +149,20 @@ describe("connecting a robot", () => {
     const demo = page.getByRole("button", { name: "Try the demo robot" });
     await connect.click();
     await page.getByText("Waiting for you to choose a port in the browser's list…").waitFor();
-    expect(await connect.isDisabled()).toBe(true);
-    expect(await demo.isDisabled()).toBe(true);
+    await expect.poll(() => connect.isDisabled()).toBe(true);
+    await expect.poll(() => demo.isDisabled()).toBe(true);
 
     await page.getByTestId("cancel-choosing").click();
     await expect.poll(() => connect.isEnabled()).toBe(true);
-    expect(await demo.isEnabled()).toBe(true);
-    expect(await page.getByTestId("connect-progress").count()).toBe(0);
+    await expect.poll(() => demo.isEnabled()).toBe(true);
+    await expect.poll(() => page.getByTestId("connect-progress").count()).toBe(0);
     await page.getByText(/Stopped waiting for the port chooser/).waitFor();
 
     // The chooser answers late: the page no longer waits for it, and does not open the port.
     expect(await page.evaluate(() => window.__rbcTest?.serial.answerHeldRequests())).toBe(1);
     await page.getByRole("heading", { name: "Ports used before" }).waitFor();
     expect(await page.evaluate(() => window.__rbcTest?.port.openOptions)).toBeUndefined();
-    expect(await page.getByTestId("connection-status").textContent().then(squash)).toBe("Not connected");
+    await expectText(page.getByTestId("connection-status"), "Not connected");
 
     // Connect works again with a chooser that answers.
     await page.evaluate(() => {
@@ -206,7 +183,8 @@ describe("connecting a robot", () => {
     await page.getByRole("link", { name: "Zeros" }).click();
     await expect.poll(() => page.title()).toBe("Zeros · Demo robot · RBC Panel");
     // The build stamps its version and commit (vite.config.ts), shown at the foot of every view.
-    expect(await page.getByTestId("panel-version").textContent().then(squash)).toMatch(
+    await expectText(
+      page.getByTestId("panel-version"),
       /^RBC Panel · Version \d+\.\d+\.\d+ \([0-9a-f]{7,}\)/,
     );
     await context.close();
@@ -242,42 +220,49 @@ describe("in Korean (ko-KR)", () => {
         const { page, context } = await koreanPage(size, { options: { granted: true } });
         const card = page.getByTestId("connect-card");
         await card.waitFor();
-        expect(await card.getByRole("heading", { level: 1 }).textContent()).toBe("로봇 연결하기");
+        await expectText(card.getByRole("heading", { level: 1 }), "로봇 연결하기");
         await card.getByRole("button", { name: "로봇 연결", exact: true }).waitFor();
         await card.getByRole("button", { name: "데모 로봇 써 보기", exact: true }).waitFor();
         await card.getByRole("button", { name: "가상 블루투스 연결로 데모 로봇 써 보기" }).waitFor();
-        expect(squash(await card.locator(".demo-bluetooth p").textContent())).toBe(
+        await expectText(
+          card.locator(".demo-bluetooth p"),
           "블루투스처럼 응답이 300 ± 150ms 늦게, 몰려서 와요.",
         );
-        expect(await card.getByLabel("모든 시리얼 포트 보기 (다른 어댑터, 내장 포트)").isChecked()).toBe(
-          false,
-        );
-        expect(await status(page)).toEqual(["연결 안 됨"]);
+        await expect
+          .poll(() => card.getByLabel("모든 시리얼 포트 보기 (다른 어댑터, 내장 포트)").isChecked())
+          .toBe(false);
+        await expect.poll(() => status(page)).toEqual(["연결 안 됨"]);
 
         // The port granted on an earlier visit, named in Korean, with its buttons.
         await card.getByRole("heading", { name: "전에 쓴 포트" }).waitFor();
-        expect(await card.locator(".port-label").allTextContents()).toEqual([
-          "FTDI USB 시리얼 어댑터 (0403:6001)",
-        ]);
+        await expect
+          .poll(() => card.locator(".port-label").allTextContents())
+          .toEqual(["FTDI USB 시리얼 어댑터 (0403:6001)"]);
         await card.getByRole("button", { name: "FTDI USB 시리얼 어댑터 (0403:6001)에 연결" }).waitFor();
         await card.getByRole("button", { name: "FTDI USB 시리얼 어댑터 (0403:6001) 지우기" }).waitFor();
 
         // The help, opened.
         await card.getByText("로봇을 찾을 수 없나요?").click();
-        const help = squash(await page.getByTestId("bluetooth-help").textContent());
-        expect(help).toMatch(
+        await expectText(
+          page.getByTestId("bluetooth-help"),
           /^블루투스 모듈: 먼저 로봇을 켜고 컴퓨터의 블루투스 설정에서 모듈을 페어링해 주세요\./,
         );
-        expect(help).toContain("PIN을 물으면 1234 또는 0000인 경우가 많아요.");
-        expect(help).toContain('"블루투스 시리얼 포트"로 나와요');
-        expect(await page.getByTestId("connect-help").locator("code").allTextContents()).toEqual([
-          "dialout",
-          "sudo usermod -aG dialout $USER",
-          "sudo apt remove brltty",
-          "sudo snap connect chromium:raw-usb",
-          "1234",
-          "0000",
-        ]);
+        await expectText(page.getByTestId("bluetooth-help"), "PIN을 물으면 1234 또는 0000인 경우가 많아요.", {
+          contains: true,
+        });
+        await expectText(page.getByTestId("bluetooth-help"), '"블루투스 시리얼 포트"로 나와요', {
+          contains: true,
+        });
+        await expect
+          .poll(() => page.getByTestId("connect-help").locator("code").allTextContents())
+          .toEqual([
+            "dialout",
+            "sudo usermod -aG dialout $USER",
+            "sudo apt remove brltty",
+            "sudo snap connect chromium:raw-usb",
+            "1234",
+            "0000",
+          ]);
         await checkKorean(page, size, "start-card");
         await context.close();
       });
@@ -290,19 +275,23 @@ describe("in Korean (ko-KR)", () => {
         await expect
           .poll(() => status(page), { timeout: 15_000 })
           .toEqual(["데모 로봇 (블루투스)", "연결됨", "HUNO", "펌웨어 2.23", "시리얼 번호 8958899989309"]);
-        expect(await card.getByRole("heading", { level: 1 }).textContent()).toBe("데모 로봇 (블루투스)");
-        expect(squash(await card.locator("dd").first().textContent())).toBe(
+        await expectText(card.getByRole("heading", { level: 1 }), "데모 로봇 (블루투스)");
+        await expectText(
+          card.locator("dd").first(),
           "가상 블루투스로 연결한 데모 로봇 (이 페이지 안의 가상 RBC이며, 실제 하드웨어가 아니에요)",
         );
         await expect.poll(() => page.title()).toBe("로봇 · 데모 로봇 (블루투스) · RBC 패널");
-        expect(squash(await page.locator(".brand").textContent())).toBe("RBC 패널");
+        await expectText(page.locator(".brand"), "RBC 패널");
 
         // Stop with nothing running: the robot keeps its pose.
         const stop = page.getByRole("button", { name: "정지", exact: true });
-        expect(await stop.getAttribute("title")).toBe("로봇이 하던 일을 끝내요. 로봇은 선 채로 있어요 (Esc)");
+        await expect
+          .poll(() => stop.getAttribute("title"))
+          .toBe("로봇이 하던 일을 끝내요. 로봇은 선 채로 있어요 (Esc)");
         await stop.click();
         await banner(page).filter({ hasText: "쉬고 있어서 멈출 것이 없어요." }).waitFor({ timeout: 15_000 });
-        expect(squash(await banner(page).textContent())).toBe(
+        await expectText(
+          banner(page),
           "로봇이 바로 응답했어요. 쉬고 있어서 멈출 것이 없어요. 아무것도 보내지 않았어요. 닫기",
         );
 
@@ -332,14 +321,16 @@ describe("in Korean (ko-KR)", () => {
         await page.getByRole("button", { name: "힘 빼기…" }).click();
         await page.getByRole("alertdialog").getByRole("button", { name: "힘 빼기", exact: true }).click();
         await banner(page).filter({ hasText: "서보 16개 모두" }).waitFor({ timeout: 15_000 });
-        expect(squash(await banner(page).locator("p").first().textContent())).toBe(
+        await expectText(
+          banner(page).locator("p").first(),
           "힘 빼기: 서보 16개 모두 힘이 빠졌다고 확인했어요. 로봇을 잡아 주세요. 이제 혼자 서 있을 수 없어요.",
         );
         await expect.poll(() => status(page).then((parts) => parts.at(-1))).toBe("서보 힘 빠짐");
 
         await page.getByRole("button", { name: "정지", exact: true }).click();
         await banner(page).filter({ hasText: "서보는 힘이 빠진 채로 있어요" }).waitFor({ timeout: 15_000 });
-        expect(squash(await banner(page).locator("p").first().textContent())).toBe(
+        await expectText(
+          banner(page).locator("p").first(),
           "서보 제어를 끝냈어요 (로봇이 일반 모드로 돌아왔어요). 서보는 힘이 빠진 채로 있어요 (힘 빼기).",
         );
         await checkKorean(page, size, "demo-limp-stop");
@@ -354,10 +345,8 @@ describe("in Korean (ko-KR)", () => {
         await expect
           .poll(() => status(page))
           .toEqual(["연결됨", "HUNO", "펌웨어 2.23", "시리얼 번호 8958899989309"]);
-        expect(await card.getByRole("heading", { level: 1 }).textContent()).toBe("로봇");
-        expect(squash(await card.locator("dd").first().textContent())).toBe(
-          "FTDI USB 시리얼 어댑터 (0403:6001)",
-        );
+        await expectText(card.getByRole("heading", { level: 1 }), "로봇");
+        await expectText(card.locator("dd").first(), "FTDI USB 시리얼 어댑터 (0403:6001)");
         await expect.poll(() => page.title()).toBe("로봇 · RBC 패널");
         await card.getByTestId("memory-action-note").filter({ hasText: "8,192" }).waitFor();
         await checkKorean(page, size, "usb-robot");
@@ -366,14 +355,15 @@ describe("in Korean (ko-KR)", () => {
         await page.evaluate(() => window.__rbcTest?.port.unplug());
         const lost = page.getByTestId("lost-notice");
         await lost.waitFor();
-        expect(squash(await lost.locator("p").first().textContent())).toBe("로봇과의 연결이 끊겼어요.");
-        expect(squash(await lost.locator("p").last().textContent())).toBe(
+        await expectText(lost.locator("p").first(), "로봇과의 연결이 끊겼어요.");
+        await expectText(
+          lost.locator("p").last(),
           "케이블과 로봇의 전원 스위치를 확인한 뒤 다시 연결해 주세요.",
         );
-        expect(await lost.locator("summary").textContent()).toBe("기술 정보");
-        expect(await lost.locator("pre").getAttribute("lang")).toBe("en");
-        expect(await lost.locator("pre").textContent()).toContain("unplugged");
-        expect(await status(page)).toEqual(["연결 끊김 — 통신이 끊어짐"]);
+        await expectText(lost.locator("summary"), "기술 정보");
+        await expect.poll(() => lost.locator("pre").getAttribute("lang")).toBe("en");
+        await expectText(lost.locator("pre"), "unplugged", { contains: true });
+        await expect.poll(() => status(page)).toEqual(["연결 끊김 — 통신이 끊어짐"]);
         await lost.locator("summary").click();
         await checkKorean(page, size, "link-lost");
         await context.close();
@@ -383,16 +373,14 @@ describe("in Korean (ko-KR)", () => {
         const { page, context } = await koreanPage(size, { noSerial: true });
         const card = page.getByTestId("unsupported-card");
         await card.waitFor();
-        expect(await card.getByRole("heading", { level: 1 }).textContent()).toBe(
-          "이 브라우저로는 로봇에 연결할 수 없어요",
-        );
-        expect(squash(await card.locator("p").first().textContent())).toBe(
+        await expectText(card.getByRole("heading", { level: 1 }), "이 브라우저로는 로봇에 연결할 수 없어요");
+        await expectText(
+          card.locator("p").first(),
           "패널은 Web Serial을 통해 로봇의 컨트롤러와 통신해요. 사용자가 고른 USB 시리얼 포트를 웹 페이지가 열 수 있게 해 주는 기능으로, 데스크톱용 Chrome, Edge, Opera (버전 89 이상)에서 쓸 수 있어요.",
         );
-        expect(await card.locator("strong").allTextContents()).toEqual([
-          "Web Serial",
-          "Chrome, Edge, Opera (버전 89 이상)",
-        ]);
+        await expect
+          .poll(() => card.locator("strong").allTextContents())
+          .toEqual(["Web Serial", "Chrome, Edge, Opera (버전 89 이상)"]);
         await checkKorean(page, size, "no-web-serial");
 
         await card.getByRole("button", { name: "데모 로봇 써 보기", exact: true }).click();

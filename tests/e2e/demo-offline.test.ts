@@ -1,16 +1,8 @@
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { type AppHarness, cspViolations, squash, startHarness, watchPage } from "./harness.ts";
+import { describe, expect, it } from "vitest";
+import { cspViolations, expectText, useApp, watchPage } from "./harness.ts";
 import "./rbc-test-globals.ts";
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 describe("demo robot, browsers without Web Serial, offline", () => {
   it("without navigator.serial shows which browsers work, and the demo robot still works", async () => {
@@ -19,18 +11,15 @@ describe("demo robot, browsers without Web Serial, offline", () => {
     await page.goto(app.url);
     const card = page.getByTestId("unsupported-card");
     await card.waitFor();
-    const text = await card.textContent().then(squash);
-    expect(text).toMatch(/Chrome, Edge and Opera \(version 89 or later\)/);
-    expect(text).toMatch(/Firefox, Safari/);
+    await expectText(card, /Chrome, Edge and Opera \(version 89 or later\)/);
+    await expectText(card, /Firefox, Safari/);
     expect(await page.getByRole("button", { name: "Connect robot" }).count()).toBe(0);
     expect(await page.evaluate(() => "serial" in navigator)).toBe(false);
 
     await page.getByRole("button", { name: "Try the demo robot" }).click();
     await page.getByTestId("device-card").waitFor();
-    await expect
-      .poll(() => page.getByTestId("connection-status").textContent().then(squash))
-      .toMatch(/Demo robot\s*·\s*Connected/);
-    await expect.poll(() => page.getByTestId("firmware").textContent().then(squash)).toBe("2.23");
+    await expectText(page.getByTestId("connection-status"), /Demo robot\s*·\s*Connected/);
+    await expectText(page.getByTestId("firmware"), "2.23");
     expect(seen.foreignRequests).toEqual([]);
     expect(seen.errors).toEqual([]);
     await context.close();
@@ -51,14 +40,13 @@ describe("demo robot, browsers without Web Serial, offline", () => {
     await page.getByRole("button", { name: "Try the demo robot" }).click();
     await page.getByTestId("device-card").waitFor();
     expect(scripts.some((s) => s.includes("demo-robot"))).toBe(true);
-    await expect
-      .poll(() => page.getByTestId("connection-status").textContent().then(squash))
-      .toMatch(/Demo robot\s*·\s*Connected\s*·\s*HUNO\s*·\s*fw 2\.23\s*·\s*SN 8958899989309/);
-    await expect
-      .poll(() => page.getByTestId("memory-action-text").textContent().then(squash))
-      // Free of total, or (the Robot view being reworded) used of total: either way nothing is used yet.
-      .toMatch(/8,192 of 8,192|\b0 of 8,192 bytes used/);
-    expect(await page.getByRole("heading", { level: 1 }).textContent().then(squash)).toBe("Demo robot");
+    await expectText(
+      page.getByTestId("connection-status"),
+      /Demo robot\s*·\s*Connected\s*·\s*HUNO\s*·\s*fw 2\.23\s*·\s*SN 8958899989309/,
+    );
+    // Free of total, or (the Robot view being reworded) used of total: either way nothing is used yet.
+    await expectText(page.getByTestId("memory-action-text"), /8,192 of 8,192|\b0 of 8,192 bytes used/);
+    await expectText(page.getByRole("heading", { level: 1 }), "Demo robot");
     // The page's fake port was never touched: this was the built-in demo.
     expect(await page.evaluate(() => window.__rbcTest?.port.stats.opens)).toBe(0);
 
@@ -66,7 +54,7 @@ describe("demo robot, browsers without Web Serial, offline", () => {
     const log = page.getByTestId("log-card");
     await log.waitFor();
     await log.getByText("Read firmware version").first().waitFor();
-    expect(await log.textContent().then(squash)).toContain("FF FF AA 55 AA 55 37 BA 12 00 00 00 00 01 01 01");
+    await expectText(log, "FF FF AA 55 AA 55 37 BA 12 00 00 00 00 01 01 01", { contains: true });
     // Pause freezes the view while capture goes on.
     const rowsBefore = await log.locator("tbody tr").count();
     // Refresh reads the error code and both free memories (3 requests, 3 replies); firmware and serial number
@@ -79,9 +67,7 @@ describe("demo robot, browsers without Web Serial, offline", () => {
     await page.getByRole("link", { name: "Log" }).click();
     await log.getByText("Paused:").waitFor();
     expect(await log.locator("tbody tr").count()).toBe(rowsBefore);
-    await expect
-      .poll(() => log.getByTestId("log-count").textContent().then(squash))
-      .toMatch(new RegExp(`^${rowsBefore + refreshRows} entries`));
+    await expectText(log.getByTestId("log-count"), new RegExp(`^${rowsBefore + refreshRows} entries`));
     expect(await log.locator("tbody tr").count()).toBe(rowsBefore);
     await page.getByRole("button", { name: "Resume" }).click();
     await expect.poll(() => log.locator("tbody tr").count()).toBe(rowsBefore + refreshRows);
@@ -118,7 +104,7 @@ describe("demo robot, browsers without Web Serial, offline", () => {
     await page.reload();
     await page.getByRole("button", { name: "Try the demo robot" }).click();
     await page.getByTestId("device-card").waitFor();
-    await expect.poll(() => page.getByTestId("firmware").textContent().then(squash)).toBe("2.23");
+    await expectText(page.getByTestId("firmware"), "2.23");
     // Lazily loaded views come from the cache too.
     await page.getByRole("link", { name: "Zeros" }).click();
     await page.locator("#zero-0").waitFor();

@@ -1,7 +1,7 @@
 import { readFile } from "node:fs/promises";
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { type AppHarness, startHarness, watchPage } from "./harness.ts";
+import { describe, expect, it } from "vitest";
+import { useApp, watchPage } from "./harness.ts";
 import "./rbc-test-globals.ts";
 
 /**
@@ -10,15 +10,7 @@ import "./rbc-test-globals.ts";
  * says in one sentence that the draft was set aside, and exports the stored text as it is on request.
  */
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 /** One servo, zero scenes. */
 const ZERO_SCENES =
@@ -68,9 +60,9 @@ describe("a stored draft with no scenes", () => {
       "The last draft, Broken, could not be opened and was set aside: Its motion cannot be read: The motion has no scenes; a motion needs at least one. It stays in Drafts, where you can export it as it is or delete it.",
     );
     await sentence.waitFor({ timeout: 10_000 });
-    expect(await page.getByTestId("editor-starting").count()).toBe(0);
+    await expect.poll(() => page.getByTestId("editor-starting").count()).toBe(0);
     // The Editor works: the template motion is open, with its one scene.
-    expect(await page.getByTestId("motion-name").inputValue()).toBe("NewMotion");
+    await expect.poll(() => page.getByTestId("motion-name").inputValue()).toBe("NewMotion");
 
     // Set aside, not lost: listed with why, and exported unchanged on request.
     const aside = page.getByTestId("broken-drafts");

@@ -1,19 +1,11 @@
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { type AppHarness, FAST, squash, startHarness } from "./harness.ts";
+import { describe, expect, it } from "vitest";
+import { expectText, FAST, squash, useApp } from "./harness.ts";
 import "./rbc-test-globals.ts";
 
 // Issue 21 item 5: the Editor's questions say what the robot will actually do.
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 async function openEditorOnDemo(page: Page): Promise<void> {
   await page.goto(app.url);
@@ -45,14 +37,13 @@ describe("the Editor's questions match what the robot will do", () => {
     await page.locator("#play-button").click();
     const clamped = page.getByTestId("play-clamped");
     await clamped.waitFor();
-    const text = squash(await clamped.textContent());
-    expect(text).toMatch(/^1 servo is outside its safe range in these scenes/);
-    expect(text).toMatch(/servo 0 \([^)]+\) 200 → 174/);
+    await expectText(clamped, /^1 servo is outside its safe range in these scenes/);
+    await expectText(clamped, /servo 0 \([^)]+\) 200 → 174/);
     // While it asks, the 3D shows what the robot will do: servo 0 at 174, not the file's 200.
     await expect.poll(servo0).toBe("174");
-    expect(await page.getByTestId("editor-robot3d").locator("canvas").getAttribute("aria-label")).toContain(
-      "as the robot will take it",
-    );
+    await expect
+      .poll(() => page.getByTestId("editor-robot3d").locator("canvas").getAttribute("aria-label"))
+      .toContain("as the robot will take it");
     await page.locator("#cancel-play").click();
     await expect.poll(servo0).toBe("200");
     await context.close();
@@ -66,10 +57,12 @@ describe("the Editor's questions match what the robot will do", () => {
     await page.getByTestId("stop-banner").filter({ hasText: "limp" }).waitFor();
     await showTab(page, "teach");
     await page.locator("#start-teach-in").click();
-    const detail = squash(await page.getByTestId("teach-in-detail").textContent());
-    expect(detail).toContain(
+    await expectText(
+      page.getByTestId("teach-in-detail"),
       "Every servo is limp now (Limp was pressed) and stays limp until you press Hold",
+      { contains: true },
     );
+    const detail = squash(await page.getByTestId("teach-in-detail").textContent());
     expect(detail).not.toContain("every servo holds");
     await context.close();
   });

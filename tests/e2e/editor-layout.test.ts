@@ -1,6 +1,6 @@
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { type AppHarness, FAST, squash, startHarness } from "./harness.ts";
+import { describe, expect, it } from "vitest";
+import { expectText, FAST, useApp } from "./harness.ts";
 import { exampleText, rbmFile } from "./motion-fixtures.ts";
 import "./rbc-test-globals.ts";
 
@@ -12,15 +12,7 @@ import "./rbc-test-globals.ts";
  * stays in sight in the tabs whose work it shows.
  */
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 const DESKTOP = { width: 1280, height: 800 };
 const PHONE = { width: 390, height: 844 };
@@ -108,24 +100,28 @@ describe.each([
     });
     for (const tab of ["teach", "play", "pose"] as const) {
       await showTab(page, tab);
-      expect(await robotShown(page), tab).toBe(true);
+      await expect.poll(() => robotShown(page), { message: tab }).toBe(true);
     }
     await showTab(page, "tools");
     await page.locator("#scene-opt-5").click();
     await page.locator("#scene-opt-5[aria-current=true]").waitFor();
-    expect(await page.locator("#editor-tab-tools").getAttribute("aria-selected")).toBe("true");
+    await expect.poll(() => page.locator("#editor-tab-tools").getAttribute("aria-selected")).toBe("true");
     await page.getByTestId("copy-pose").filter({ hasText: "Copy into scene 5" }).waitFor();
     // By keyboard in the scene list too.
     await page.locator("#scene-opt-5").focus();
     await page.keyboard.press("End");
     await page.locator("#scene-opt-283[aria-current=true]").waitFor();
     await page.getByTestId("copy-pose").filter({ hasText: "Copy into scene 283" }).waitFor();
-    expect(await page.locator("#editor-panel-tools").count()).toBe(1);
+    await expect.poll(() => page.locator("#editor-panel-tools").count()).toBe(1);
     // In Teach-in the robot shows the selected scene's pose (no teach-in yet): the end of scene 283.
     await showTab(page, "teach");
-    expect(await robotShown(page)).toBe(true);
-    expect(await page.getByRole("img", { name: /3D view of the end pose of scene 283/ }).count()).toBe(1);
-    expect(await page.locator('[data-testid="editor-robot3d"] canvas[data-kept="yes"]').count()).toBe(1);
+    await expect.poll(() => robotShown(page)).toBe(true);
+    await expect
+      .poll(() => page.getByRole("img", { name: /3D view of the end pose of scene 283/ }).count())
+      .toBe(1);
+    await expect
+      .poll(() => page.locator('[data-testid="editor-robot3d"] canvas[data-kept="yes"]').count())
+      .toBe(1);
     await context.close();
   });
 
@@ -139,18 +135,19 @@ describe.each([
     const option = page.locator("#scene-opt-0");
     await option.filter({ hasText: LONG_NAME }).waitFor();
     // Every character is there (not "Scen…"), and the name lies inside its button.
-    expect(squash(await option.locator(".scene-name").textContent())).toBe(LONG_NAME);
-    const fit = await option.evaluate((button) => {
-      const label = button.querySelector(".scene-name") as HTMLElement;
-      const b = button.getBoundingClientRect();
-      const l = label.getBoundingClientRect();
-      return {
-        inside: l.left >= b.left && l.right <= b.right + 0.5 && l.bottom <= b.bottom + 0.5,
-        clipped: label.scrollWidth > label.clientWidth || button.scrollWidth > button.clientWidth,
-        ellipsis: getComputedStyle(label).textOverflow === "ellipsis",
-      };
-    });
-    expect(fit).toEqual({ inside: true, clipped: false, ellipsis: false });
+    await expectText(option.locator(".scene-name"), LONG_NAME);
+    const fit = () =>
+      option.evaluate((button) => {
+        const label = button.querySelector(".scene-name") as HTMLElement;
+        const b = button.getBoundingClientRect();
+        const l = label.getBoundingClientRect();
+        return {
+          inside: l.left >= b.left && l.right <= b.right + 0.5 && l.bottom <= b.bottom + 0.5,
+          clipped: label.scrollWidth > label.clientWidth || button.scrollWidth > button.clientWidth,
+          ellipsis: getComputedStyle(label).textOverflow === "ellipsis",
+        };
+      });
+    await expect.poll(fit).toEqual({ inside: true, clipped: false, ellipsis: false });
     // The motion named the same way: its file name, the Undo label and the tabs stay in their place too.
     const motion = page.getByTestId("motion-name");
     await motion.fill(LONG_NAME);
@@ -173,10 +170,12 @@ describe("editor tabs", () => {
     const { page, context } = await app.newPage({ options: FAST, viewport: DESKTOP });
     await openLongWalk(page);
     const pose = page.getByRole("tab", { name: "Pose", exact: true });
-    expect(await pose.getAttribute("aria-selected")).toBe("true");
-    expect(await pose.getAttribute("aria-controls")).toBe("editor-panel-pose");
-    expect(await page.getByRole("tabpanel").getAttribute("aria-labelledby")).toBe("editor-tab-pose");
-    expect(await page.getByRole("tab", { name: "Tools" }).getAttribute("tabindex")).toBe("-1");
+    await expect.poll(() => pose.getAttribute("aria-selected")).toBe("true");
+    await expect.poll(() => pose.getAttribute("aria-controls")).toBe("editor-panel-pose");
+    await expect
+      .poll(() => page.getByRole("tabpanel").getAttribute("aria-labelledby"))
+      .toBe("editor-tab-pose");
+    await expect.poll(() => page.getByRole("tab", { name: "Tools" }).getAttribute("tabindex")).toBe("-1");
     // Each key shows the tab and moves the focus to it.
     await pose.focus();
     for (const [key, tab] of [
@@ -196,16 +195,16 @@ describe("editor tabs", () => {
     // long-walk.rbm checks clean: the Check tab has no count. A position outside a joint's safe range (servo 0
     // goes up to 174, docs/protocol.md §5) at the end of scene 0 is also the start of scene 1 (continuity): two
     // warnings, counted on the tab, worded for a screen reader, the same number the Check tab lists.
-    expect(squash(await page.locator("#editor-tab-check").textContent())).toBe("Check");
+    await expectText(page.locator("#editor-tab-check"), "Check");
     const end0 = page.getByTestId("end-0");
     await end0.fill("254");
     await end0.press("Enter");
     const check = page.getByRole("tab", { name: "Check (2 warnings)", exact: true });
     await check.waitFor();
-    expect(squash(await check.locator(".editor-tab-mark").textContent())).toBe("2");
+    await expectText(check.locator(".editor-tab-mark"), "2");
     await check.click();
     await page.locator('[data-testid="editor-warning"][data-code="rbm-unsafe-position"]').waitFor();
-    expect(squash(await page.getByTestId("editor-check").textContent())).toBe("0 errors, 2 warnings.");
+    await expectText(page.getByTestId("editor-check"), "0 errors, 2 warnings.");
     await context.close();
   });
 });

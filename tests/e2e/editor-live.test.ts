@@ -5,19 +5,11 @@
  * by hand; Stop mid-play holds the frame sent and nothing goes limp.
  */
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { type AppHarness, FAST, squash, startHarness } from "./harness.ts";
+import { describe, expect, it } from "vitest";
+import { expectText, FAST, squash, useApp } from "./harness.ts";
 import "./rbc-test-globals.ts";
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 /** docs/protocol.md §4: the standard zero table (the template's) and the firmware's factory table (the demo robot's). */
 const STANDARD = [125, 202, 162, 66, 108, 124, 48, 88, 184, 142, 90, 40, 125, 161, 210, 127];
@@ -141,9 +133,9 @@ describe("editor: teach-in and tethered play on the demo robot", () => {
     // ---- Teach-in: asks once, then servo control with every servo holding.
     await showTab(page, "teach");
     await page.locator("#start-teach-in").click();
-    expect(squash(await page.getByTestId("teach-in-confirm").textContent())).toContain(
-      "Hold the robot: the servos you choose go limp.",
-    );
+    await expectText(page.getByTestId("teach-in-confirm"), "Hold the robot: the servos you choose go limp.", {
+      contains: true,
+    });
     await page.locator("#confirm-teach-in").click();
     await page.getByTestId("teach-in-status").filter({ hasText: "Every servo holds" }).waitFor();
     expect(await page.evaluate(() => window.__rbcDemoSim?.directMode)).toBe(true);
@@ -158,7 +150,7 @@ describe("editor: teach-in and tethered play on the demo robot", () => {
     // A holding servo has no slider: only the limp ones can be posed.
     expect(await page.locator("#teach-hand-0").count()).toBe(0);
     await readInto(page, 0);
-    expect(await notice(page, "teach-in")).toContain("Read servos 0–15 into scene 0");
+    await expect.poll(() => notice(page, "teach-in")).toContain("Read servos 0–15 into scene 0");
     // Stored in the motion's zeros: robot 125 on a servo whose zero is 124 here and 125 in the motion is 126.
     expect(await endValues(page, [10, 12, 0])).toEqual([100, 80, 126]);
     await hold(page);
@@ -189,8 +181,8 @@ describe("editor: teach-in and tethered play on the demo robot", () => {
     await showTab(page, "play");
     await page.getByRole("radio", { name: /Whole motion/ }).check();
     await page.locator("#play-button").click();
-    const question = squash(await page.getByTestId("play-confirm").locator("#play-question").textContent());
-    expect(question).toBe(
+    await expectText(
+      page.getByTestId("play-confirm").locator("#play-question"),
       "The robot will move through scenes 0–2 (1.5 s). Hold it or make sure it can stand.",
     );
     await expect.poll(() => page.evaluate(() => document.activeElement?.id)).toBe("cancel-play");
@@ -202,9 +194,9 @@ describe("editor: teach-in and tethered play on the demo robot", () => {
     await recordServos(page);
     await page.locator("#confirm-play").click();
     await page.getByTestId("play-panel").getByText("the servos hold the last frame").waitFor();
-    expect(await notice(page, "play-panel")).toMatch(
-      /^Played scenes 0–2 \(\d+ frames, \d+\.\d s\); the servos hold the last frame\.$/,
-    );
+    await expect
+      .poll(() => notice(page, "play-panel"))
+      .toMatch(/^Played scenes 0–2 \(\d+ frames, \d+\.\d s\); the servos hold the last frame\.$/);
 
     // The poses the teach-in stored (the motion's zeros: the robot's positions − zeroDelta).
     const robot0 = POSTURE.map((p, id) => ({ 10: 100, 12: 80 })[id] ?? p);
@@ -262,9 +254,9 @@ describe("editor: teach-in and tethered play on the demo robot", () => {
     await page.goto(`${app.url}#/editor`);
     await page.getByTestId("pose-table").waitFor();
     await showTab(page, "teach");
-    expect(squash(await page.getByTestId("teach-in-hint").textContent())).toContain("Connect a robot");
+    await expectText(page.getByTestId("teach-in-hint"), "Connect a robot", { contains: true });
     await showTab(page, "play");
-    expect(squash(await page.getByTestId("play-hint").textContent())).toContain("Connect a robot");
+    await expectText(page.getByTestId("play-hint"), "Connect a robot", { contains: true });
     await context.close();
   });
 });

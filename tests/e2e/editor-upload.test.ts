@@ -11,52 +11,18 @@
  * first progress report, a motion playing) are held by an event in the page, never by waiting a while.
  */
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { type AppHarness, FAST, releaseRobot, squash, startHarness } from "./harness.ts";
+import { describe, expect, it } from "vitest";
+import { expectText, FAST, type PageOptions, releaseRobot, squash, useApp, watchText } from "./harness.ts";
 import { axeProblems, expectPageOk, PHONE, pageProblems, shot } from "./i18n-checks.ts";
 import "./rbc-test-globals.ts";
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 /** docs/protocol.md §2 and §8 example 6: Run motion 12 (0x0C), its checksum the one content byte. */
 const RUN_12 = "FF FF AA 55 AA 55 37 BA 14 00 00 00 00 01 0C 0C";
 
 const card = (page: Page) => page.getByTestId("editor-upload");
 const copyText = async (page: Page) => squash(await page.getByTestId("editor-robot-copy").textContent());
-
-/**
- * Holds the robot's clock (`holdRobot`) the moment an element matching `selector` shows text matching `text`:
- * an event (a mutation observer), so a moment that lasts a few ms of robot time is caught however slow the test
- * is.
- */
-async function holdWhenShown(page: Page, selector: string, text: RegExp): Promise<void> {
-  await page.evaluate(
-    ({ sel, source }) => {
-      const pattern = new RegExp(source);
-      const shown = () => [...document.querySelectorAll(sel)].some((e) => pattern.test(e.textContent ?? ""));
-      const hold = () => window.__rbcTest?.clock.hold();
-      if (shown()) {
-        hold();
-        return;
-      }
-      const observer = new MutationObserver(() => {
-        if (!shown()) return;
-        observer.disconnect();
-        hold();
-      });
-      observer.observe(document.body, { childList: true, subtree: true, characterData: true });
-    },
-    { sel: selector, source: text.source },
-  );
-}
 
 /**
  * Holds the robot's clock the moment the demo robot's servos move in motion `number` (its servo listener: an
@@ -97,8 +63,6 @@ async function openEditorPlay(page: Page, words: { editor: string; addAfter: str
 
 const EN = { editor: "Editor", addAfter: "Add after" };
 
-type PageOptions = Parameters<AppHarness["newPage"]>[0];
-
 /**
  * A new page connected to a robot by the button named `connect` (the demo robot or the fake cable), once its
  * motion memory is read (all 24,576 bytes free), showing the Editor's Play tab with a second scene added.
@@ -127,29 +91,35 @@ describe("the Editor: upload to the robot and run it there", () => {
     const { page, context } = await openOnRobot({ options: FAST }, "Try the demo robot", EN);
 
     // One line near the two buttons says how storing differs from tethered play.
-    expect(squash(await page.getByTestId("editor-robot-difference").textContent())).toBe(
+    await expectText(
+      page.getByTestId("editor-robot-difference"),
       "Play on robot (above) tries the motion from this computer and stores nothing. Upload to robot stores it in the robot's memory, where it runs by its number or from the remote, without the cable.",
     );
     await page.getByRole("button", { name: "Play on robot…" }).waitFor();
-    expect(squash(await page.getByTestId("editor-upload-why").textContent())).toBe(
-      "Uploads to the demo robot's simulated memory.",
-    );
+    await expectText(page.getByTestId("editor-upload-why"), "Uploads to the demo robot's simulated memory.");
     // Nothing stored from here yet: no Run button.
     expect(await page.getByTestId("editor-run").count()).toBe(0);
 
     // Upload: the progress in place, held at the first progress report (bytes, percent, Cancel).
-    await holdWhenShown(page, '[data-testid="editor-upload"] [data-testid="upload-figures"]', /^\s*[1-9]/);
+    const firstReport = await watchText(
+      page,
+      '[data-testid="editor-upload"] [data-testid="upload-figures"]',
+      /^\s*[1-9]/,
+      { hold: true },
+    );
     await page.getByRole("button", { name: "Upload to robot" }).click();
+    await firstReport.moment();
     const progress = card(page).getByTestId("upload-progress");
     await progress.waitFor();
     await card(page).getByTestId("upload-figures").waitFor();
     // 2 scenes × 16 servos: 12 + 6·16 + 2·(6 + 5·16) = 280 bytes (docs/protocol.md §6.3), in chunks of 64.
-    expect(squash(await card(page).getByTestId("upload-figures").textContent())).toMatch(
+    await expectText(
+      card(page).getByTestId("upload-figures"),
       /^(64|128|192|256) of 280 bytes \((22|45|68|91)%\)/,
     );
-    expect(squash(await progress.textContent())).toContain("Uploading NewMotion.rbm");
-    expect(await progress.getByRole("button", { name: "Cancel upload" }).isEnabled()).toBe(true);
-    expect(await page.getByRole("button", { name: "Upload to robot" }).isDisabled()).toBe(true);
+    await expectText(progress, "Uploading NewMotion.rbm", { contains: true });
+    await expect.poll(() => progress.getByRole("button", { name: "Cancel upload" }).isEnabled()).toBe(true);
+    await expect.poll(() => page.getByRole("button", { name: "Upload to robot" }).isDisabled()).toBe(true);
     // Its own upload is not "busy" beside it: the progress and Cancel are right there.
     expect(await page.getByTestId("editor-robot-busy").count()).toBe(0);
     await shot(card(page), "editor-upload-progress");
@@ -158,7 +128,8 @@ describe("the Editor: upload to the robot and run it there", () => {
     // Stored: the Motions view's result, then the number and the remote key.
     const result = card(page).locator(".upload-in-place .notice");
     await result.waitFor();
-    expect(squash(await result.textContent())).toMatch(
+    await expectText(
+      result,
       /^Uploaded NewMotion\.rbm: 280 bytes in 5 chunks .* Stored as motion 12 \(key 1\): Run takes this number\. Free motion memory: 24,256 of 24,576 bytes \(was 24,576; the file takes 320\)\. Error code after the upload: no error\.$/,
     );
     await expect.poll(() => copyText(page)).toBe("The robot holds this motion as motion 12 (remote key 1).");
@@ -168,9 +139,9 @@ describe("the Editor: upload to the robot and run it there", () => {
 
     // After switching on, only Basic posture: the card says so, with its button (and asks once before moving).
     const posture = page.getByTestId("editor-posture");
-    expect(squash(await posture.textContent())).toContain(
-      "After switching on, the robot only accepts Basic posture (7). Run it first.",
-    );
+    await expectText(posture, "After switching on, the robot only accepts Basic posture (7). Run it first.", {
+      contains: true,
+    });
     await posture.getByRole("button", { name: "Run motion 7 (Basic posture)" }).click();
     await page.getByTestId("move-confirm").waitFor();
     // The question takes the focus, so the keyboard answers it.
@@ -190,10 +161,11 @@ describe("the Editor: upload to the robot and run it there", () => {
     await page.getByRole("link", { name: "Log", exact: true }).click();
     const log = page.getByTestId("log-card");
     await log.getByText(RUN_12).first().waitFor();
-    const logText = squash(await log.textContent());
-    expect(logText).toContain(`→ out Run motion ${RUN_12}`);
+    await expectText(log, `→ out Run motion ${RUN_12}`, { contains: true });
     // The robot's reply, after the motion: type 14 from the robot (platform 01, HUNO), number 12.
-    expect(logText).toContain("← in Run motion FF FF AA 55 AA 55 37 BA 14 01 00 00 00 01 0C 0C");
+    await expectText(log, "← in Run motion FF FF AA 55 AA 55 37 BA 14 01 00 00 00 01 0C 0C", {
+      contains: true,
+    });
 
     // An edit after the upload: the robot holds the earlier version; Undo makes the draft the uploaded one again.
     await page.getByRole("link", { name: "Editor", exact: true }).click();
@@ -234,14 +206,15 @@ describe("the Editor: upload to the robot and run it there", () => {
     await page.getByRole("link", { name: EN.editor, exact: true }).click();
     await card(page).waitFor();
     const busy = page.getByTestId("editor-robot-busy");
-    expect(squash(await busy.textContent())).toBe(
+    await expectText(
+      busy,
       "A motion is playing: the robot ignores everything but Basic posture (7) until it ends. Stop",
     );
-    expect(await page.getByRole("button", { name: "Upload to robot" }).isDisabled()).toBe(true);
-    expect(await page.getByTestId("editor-run").isDisabled()).toBe(true);
-    expect(await page.getByRole("button", { name: "Upload to robot" }).getAttribute("aria-describedby")).toBe(
-      "editor-upload-why editor-robot-busy",
-    );
+    await expect.poll(() => page.getByRole("button", { name: "Upload to robot" }).isDisabled()).toBe(true);
+    await expect.poll(() => page.getByTestId("editor-run").isDisabled()).toBe(true);
+    await expect
+      .poll(() => page.getByRole("button", { name: "Upload to robot" }).getAttribute("aria-describedby"))
+      .toBe("editor-upload-why editor-robot-busy");
     expect(await page.evaluate(() => window.__rbcDemoSim?.playingMotion)).toBe(1);
     expect(await axeProblems(page, { within: '[data-testid="editor-upload"]' })).toEqual([]);
     await shot(card(page), "editor-upload-busy");
@@ -249,14 +222,14 @@ describe("the Editor: upload to the robot and run it there", () => {
     await releaseRobot(page);
     await busy.waitFor({ state: "detached" });
     expect(await page.evaluate(() => window.__rbcDemoSim?.playingMotion)).toBeUndefined();
-    expect(await page.getByRole("button", { name: "Upload to robot" }).isEnabled()).toBe(true);
+    await expect.poll(() => page.getByRole("button", { name: "Upload to robot" }).isEnabled()).toBe(true);
 
     // A run started here shows its own progress (with Stop motion, no second Stop); Escape is Stop still.
     await holdWhenPlaying(page, 12);
     await page.getByTestId("editor-run").click();
     await card(page).getByTestId("running-motion").waitFor();
     expect(await page.getByTestId("editor-robot-stop").count()).toBe(0);
-    expect(await page.getByRole("button", { name: "Upload to robot" }).isDisabled()).toBe(true);
+    await expect.poll(() => page.getByRole("button", { name: "Upload to robot" }).isDisabled()).toBe(true);
     expect(await page.evaluate(() => window.__rbcDemoSim?.playingMotion)).toBe(12);
     await page.keyboard.press("Escape");
     await releaseRobot(page);
@@ -269,13 +242,14 @@ describe("the Editor: upload to the robot and run it there", () => {
 
   it("on a real robot (the fake cable) asks first, as the Motions upload does, then stores it", async () => {
     const { page, context } = await openOnRobot({ options: FAST }, "Connect robot", EN);
-    expect(squash(await page.getByTestId("editor-upload-why").textContent())).toBe(
+    await expectText(
+      page.getByTestId("editor-upload-why"),
       "Asks for confirmation first: uploading to a real robot is experimental.",
     );
     await page.getByRole("button", { name: "Upload to robot" }).click();
     const ask = card(page).getByTestId("upload-confirm");
     await ask.waitFor();
-    expect(squash(await ask.textContent())).toContain("NewMotion.rbm");
+    await expectText(ask, "NewMotion.rbm", { contains: true });
     await expect.poll(() => page.evaluate(() => document.activeElement?.id)).toBe("confirm-upload");
     // Nothing sent before the answer.
     expect(await page.evaluate(() => window.__rbcTest?.sim.motions.length)).toBe(0);
@@ -298,8 +272,9 @@ describe("in Korean (ko-KR), at phone width", () => {
       "데모 로봇 써 보기",
       { editor: "편집기", addAfter: "뒤에 추가" },
     );
-    expect(squash(await card(page).getByRole("heading", { level: 2 }).textContent())).toBe("로봇에 저장");
-    expect(squash(await page.getByTestId("editor-robot-difference").textContent())).toBe(
+    await expectText(card(page).getByRole("heading", { level: 2 }), "로봇에 저장");
+    await expectText(
+      page.getByTestId("editor-robot-difference"),
       "위의 ‘로봇에서 재생’은 이 컴퓨터에서 모션을 시험해 볼 뿐 아무것도 저장하지 않아요. ‘로봇에 업로드’는 모션을 로봇 메모리에 저장해서 케이블 없이도 번호나 리모컨으로 실행할 수 있어요.",
     );
     await page.getByRole("button", { name: "로봇에 업로드" }).click();

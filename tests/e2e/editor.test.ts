@@ -1,10 +1,10 @@
 import { readFile } from "node:fs/promises";
 import { createRequire } from "node:module";
 import type { Download, Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { describe, expect, it } from "vitest";
 import { mirrorPosition } from "../../src/motion/index.ts";
 import { HUNO_BASIC_POSTURE, parseRbm, STANDARD_ZEROS } from "../../src/protocol/index.ts";
-import { type AppHarness, cspViolations, FAST, squash, startHarness, watchPage } from "./harness.ts";
+import { cspViolations, expectText, FAST, squash, useApp, watchPage } from "./harness.ts";
 import { rbmFile } from "./motion-fixtures.ts";
 import "./rbc-test-globals.ts";
 import { DESKTOP, expectPageOk, pageLang as lang, PHONE } from "./i18n-checks.ts";
@@ -16,15 +16,7 @@ import { DESKTOP, expectPageOk, pageLang as lang, PHONE } from "./i18n-checks.ts
  * Scene, Tools, Teach-in, Play, Check); editor-layout.test.ts checks the layout itself.
  */
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 const VIEWPORTS = [
   { name: "1280×800", width: 1280, height: 800 },
@@ -65,25 +57,7 @@ async function showPose(page: Page, columns: "end" | "more" = "end"): Promise<vo
 
 /** Waits until the field `testId` shows `value` (the panel redraws on the next animation frame). */
 async function expectValue(page: Page, testId: string, value: string | number): Promise<void> {
-  const want = String(value);
-  await page
-    .waitForFunction(
-      ([id, v]) => (document.querySelector(`[data-testid="${id}"]`) as HTMLInputElement | null)?.value === v,
-      [testId, want] as const,
-      { timeout: 5000 },
-    )
-    .catch(() => undefined);
-  expect(await fieldValue(page, testId)).toBe(want);
-}
-
-/** Waits until the element `testId` reads `text` (white space collapsed). */
-async function expectText(page: Page, testId: string, text: string): Promise<void> {
-  await page
-    .getByTestId(testId)
-    .filter({ hasText: text })
-    .waitFor({ timeout: 5000 })
-    .catch(() => undefined);
-  expect(await page.getByTestId(testId).textContent().then(squash)).toBe(text);
+  await expect.poll(() => fieldValue(page, testId)).toBe(String(value));
 }
 const sceneCount = (page: Page) => page.locator('[data-testid="scene-list"] .scene-option').count();
 
@@ -200,27 +174,29 @@ describe.each(VIEWPORTS)("motion editor at $name", ({ width, height }) => {
     await openEditor(page);
 
     // No drafts yet: the template, one scene in the basic posture.
-    expect(await sceneCount(page)).toBe(1);
+    await expect.poll(() => sceneCount(page)).toBe(1);
     await expectValue(page, "end-10", String(HUNO_BASIC_POSTURE[10]));
-    expect(await page.getByTestId("editor-undo").isDisabled()).toBe(true);
+    await expect.poll(() => page.getByTestId("editor-undo").isDisabled()).toBe(true);
 
     await typeInto(page, "motion-name", "Wave test");
-    await expectText(page, "editor-save-as", "as Wave-test.rbm");
+    await expectText(page.getByTestId("editor-save-as"), "as Wave-test.rbm");
 
     // Scene 0: raise the left shoulder (servo 10, the robot's own left arm) by typing.
     await typeInto(page, "end-10", "100");
-    await expectText(page, "editor-undo", "Undo: set Left shoulder pitch (end of scene 0)");
+    await expectText(page.getByTestId("editor-undo"), "Undo: set Left shoulder pitch (end of scene 0)");
 
     // Scene 1 starts where scene 0 ends (continuity); its end is set with the slider, one undo step per drag.
     await page.getByTestId("scene-add").click();
     await page.locator("#scene-opt-1[aria-current=true]").waitFor();
     await expectValue(page, "start-10", "100");
     await dragSlider(page, "slider-10", 0.85);
-    const dragged = Number(await fieldValue(page, "end-10"));
+    // The slider's own value is the browser's as the mouse left it; the field follows on the next render.
+    const dragged = Number(await page.getByTestId("slider-10").inputValue());
     expect(dragged).toBeGreaterThan(100);
+    await expectValue(page, "end-10", dragged);
     await page.getByTestId("editor-undo").click();
     await expectValue(page, "end-10", "100");
-    await expectText(page, "editor-undo", "Undo: add scene 1");
+    await expectText(page.getByTestId("editor-undo"), "Undo: add scene 1");
     await page.getByTestId("editor-redo").click();
     await expectValue(page, "end-10", String(dragged));
 
@@ -238,12 +214,12 @@ describe.each(VIEWPORTS)("motion editor at $name", ({ width, height }) => {
     await typeInto(page, "end-3", "300");
     const problem = page.getByTestId("field-problem");
     await problem.waitFor();
-    expect(await problem.textContent().then(squash)).toContain("0 to 254");
-    expect(await page.getByTestId("end-3").getAttribute("aria-invalid")).toBe("true");
-    await expectText(page, "editor-undo", "Undo: set Left shoulder pitch (end of scene 1)");
+    await expectText(problem, "0 to 254", { contains: true });
+    await expect.poll(() => page.getByTestId("end-3").getAttribute("aria-invalid")).toBe("true");
+    await expectText(page.getByTestId("editor-undo"), "Undo: set Left shoulder pitch (end of scene 1)");
     await typeInto(page, "end-3", String(HUNO_BASIC_POSTURE[3]));
     await page.getByTestId("field-problem").waitFor({ state: "detached" });
-    expect(await page.getByTestId("end-3").getAttribute("aria-invalid")).toBe("false");
+    await expect.poll(() => page.getByTestId("end-3").getAttribute("aria-invalid")).toBe("false");
 
     // Scene 2: a duplicate of scene 1, mirrored left to right (the right shoulder, 13, takes the left's pose, 10).
     await page.getByTestId("scene-duplicate").click();
@@ -255,7 +231,7 @@ describe.each(VIEWPORTS)("motion editor at $name", ({ width, height }) => {
     const mirrored = mirrorPosition(dragged, STANDARD_ZEROS[10]!, STANDARD_ZEROS[13]!);
     await expectValue(page, "end-13", String(mirrored));
     await expectValue(page, "end-10", String(dragged));
-    expect(await sceneCount(page)).toBe(3);
+    await expect.poll(() => sceneCount(page)).toBe(3);
 
     // Save: Motionbuilder's format, what was made.
     const first = await saveFile(page);
@@ -270,7 +246,7 @@ describe.each(VIEWPORTS)("motion editor at $name", ({ width, height }) => {
     // A corrupt file is refused in words and changes nothing.
     await page.getByTestId("editor-file").setInputFiles(rbmFile("broken.rbm", "1:13:not a motion:"));
     await page.getByText(/broken\.rbm was not opened/).waitFor();
-    expect(await sceneCount(page)).toBe(3);
+    await expect.poll(() => sceneCount(page)).toBe(3);
 
     // Reopen the saved file and save it again: byte for byte the same.
     await page.getByTestId("editor-new").click();
@@ -279,7 +255,7 @@ describe.each(VIEWPORTS)("motion editor at $name", ({ width, height }) => {
     );
     await page.getByTestId("editor-file").setInputFiles(rbmFile("Wave-test.rbm", saved.toString("latin1")));
     await page.getByText(/Opened Wave-test\.rbm: Wave test, 3 scenes/).waitFor();
-    expect(await page.getByTestId("editor-undo").isDisabled()).toBe(true);
+    await expect.poll(() => page.getByTestId("editor-undo").isDisabled()).toBe(true);
     const again = await bytesOf(await saveFile(page));
     expect(again.equals(saved)).toBe(true);
 
@@ -298,7 +274,7 @@ describe.each(VIEWPORTS)("motion editor at $name", ({ width, height }) => {
     await showPose(page, "more");
     await typeInto(page, "start-0", "135");
     await page.getByTestId("jump-0").waitFor();
-    expect(await page.getByTestId("jump-0").textContent().then(squash)).toContain("130");
+    await expectText(page.getByTestId("jump-0"), "130", { contains: true });
     await showTab(page, "check");
     await page.locator('[data-testid="editor-warning"][data-code="rbm-scene-jump"]').waitFor();
     await showTab(page, "scene");
@@ -325,12 +301,12 @@ describe.each(VIEWPORTS)("motion editor at $name", ({ width, height }) => {
     await page.getByTestId("retime-mode").selectOption("duration");
     await page.getByTestId("retime-value").fill("3000");
     await page.getByTestId("retime-apply").click();
-    await expectText(page, "scene-total", "3 scenes · 3.0 s");
+    await expectText(page.getByTestId("scene-total"), "3 scenes · 3.0 s");
     await page.getByTestId("retime-mode").selectOption("factor");
     await page.getByTestId("retime-value").fill("fast");
     await page.getByTestId("retime-apply").click();
     await page.getByTestId("field-problem").filter({ hasText: "A time factor" }).waitFor();
-    await expectText(page, "scene-total", "3 scenes · 3.0 s");
+    await expectText(page.getByTestId("scene-total"), "3 scenes · 3.0 s");
 
     await noSidewaysScroll(page);
     expect(seen.errors).toEqual([]);
@@ -359,7 +335,7 @@ describe.each(VIEWPORTS)("motion editor at $name", ({ width, height }) => {
     const drafts = page.getByTestId("draft");
     await page.waitForFunction(() => document.querySelectorAll('[data-testid="draft"]').length === 2);
     const kept = drafts.filter({ hasText: "Kept" });
-    expect(await kept.textContent().then(squash)).toMatch(/1 scene · saved \d\d:\d\d/);
+    await expectText(kept, /1 scene · saved \d\d:\d\d/);
 
     // Export it: its .rbm file.
     const exporting = page.waitForEvent("download");
@@ -380,7 +356,7 @@ describe.each(VIEWPORTS)("motion editor at $name", ({ width, height }) => {
     await page.getByRole("alertdialog").waitFor();
     await page.locator("#confirm-delete-draft").click();
     await page.getByText("Deleted the draft Kept twice.").waitFor();
-    expect(await drafts.count()).toBe(1);
+    await expect.poll(() => drafts.count()).toBe(1);
 
     // A change made just before the page goes away (inside the autosave's 300 ms) is kept too.
     await typeInto(page, "end-0", "122");
@@ -400,7 +376,7 @@ describe.each(VIEWPORTS)("motion editor at $name", ({ width, height }) => {
     await page.waitForFunction(
       () => Number(document.querySelector('[data-testid="editor-robot3d"]')?.getAttribute("data-frames")) > 0,
     );
-    expect(await view.getAttribute("data-pose")).toBe(HUNO_BASIC_POSTURE.join(" "));
+    await expect.poll(() => view.getAttribute("data-pose")).toBe(HUNO_BASIC_POSTURE.join(" "));
     const before = await canvasPicture(page);
     expect(before.drawn / before.total).toBeGreaterThan(0.01);
 
@@ -415,7 +391,9 @@ describe.each(VIEWPORTS)("motion editor at $name", ({ width, height }) => {
     const after = await canvasPicture(page);
     expect(after.drawn / after.total).toBeGreaterThan(0.01);
     expect(after.digest).not.toBe(before.digest);
-    expect(await page.getByRole("img", { name: /3D view of the end pose of scene 0/ }).count()).toBe(1);
+    await expect
+      .poll(() => page.getByRole("img", { name: /3D view of the end pose of scene 0/ }).count())
+      .toBe(1);
     expect(seen.errors).toEqual([]);
     await context.close();
   });
@@ -433,7 +411,6 @@ describe("in Korean (ko-KR)", () => {
   const VIEWPORTS = [DESKTOP, PHONE] as const;
 
   const size = (viewport: { width: number; height: number }) => `${viewport.width}x${viewport.height}`;
-  const text = async (page: Page, testId: string) => squash(await page.getByTestId(testId).textContent());
 
   type Tab = "pose" | "scene" | "tools" | "teach" | "play" | "check";
 
@@ -481,59 +458,58 @@ describe("in Korean (ko-KR)", () => {
       it(`is in Korean in every tab, fits and passes axe at ${viewport.width}×${viewport.height}`, async () => {
         const { page, context } = await app.newPage({ locale: "ko-KR", viewport, options: FAST });
         await openEditor(page);
-        expect(await lang(page)).toBe("ko");
-        expect(await page.getByRole("heading", { level: 1 }).textContent()).toBe("모션 편집기");
-        expect(
-          await page
-            .getByRole("tab")
-            .allTextContents()
-            .then((t) => t.map(squash)),
-        ).toEqual(["자세", "장면", "도구", "티칭", "재생", "검사"]);
+        await expect.poll(() => lang(page)).toBe("ko");
+        await expectText(page.getByRole("heading", { level: 1 }), "모션 편집기");
+        await expect
+          .poll(() =>
+            page
+              .getByRole("tab")
+              .allTextContents()
+              .then((t) => t.map(squash)),
+          )
+          .toEqual(["자세", "장면", "도구", "티칭", "재생", "검사"]);
         await page.getByRole("tablist", { name: "선택한 장면 작업" }).waitFor();
-        expect(await notice(page, "editor-toolbar")).toBe("완료: 장면 1 추가.");
-        expect(await text(page, "editor-undo")).toBe("실행 취소: 장면 1 추가");
-        expect(await text(page, "scene-total")).toBe("장면 2개 · 1.0초");
+        await expect.poll(() => notice(page, "editor-toolbar")).toBe("완료: 장면 1 추가.");
+        await expectText(page.getByTestId("editor-undo"), "실행 취소: 장면 1 추가");
+        await expectText(page.getByTestId("scene-total"), "장면 2개 · 1.0초");
         await page.getByRole("img", { name: /^장면 1의 끝 자세를 보여 주는 3D 화면/ }).waitFor();
 
         // Pose: the table in Korean, and a value the motion file cannot hold, refused beside its field.
-        expect(await page.getByRole("heading", { level: 2, name: "장면 1: Scene_1" }).count()).toBe(1);
+        await expect
+          .poll(() => page.getByRole("heading", { level: 2, name: "장면 1: Scene_1" }).count())
+          .toBe(1);
         await typeInto(page, "end-3", "300");
         const problem = page.getByTestId("field-problem");
         await problem.waitFor();
-        expect(squash(await problem.textContent())).toBe(
+        await expectText(
+          problem,
           "왼쪽 발목 앞뒤(서보 3)의 끝 위치에는 0에서 254 사이의 정수만 쓸 수 있어요. 입력한 값: 300.",
         );
-        expect(await page.getByLabel("왼쪽 발목 앞뒤 (서보 3), 끝 위치", { exact: true }).inputValue()).toBe(
-          "300",
-        );
+        await expect
+          .poll(() => page.getByLabel("왼쪽 발목 앞뒤 (서보 3), 끝 위치", { exact: true }).inputValue())
+          .toBe("300");
         if (viewport === DESKTOP) {
-          expect(await page.locator('[data-testid="pose-table"] thead th').allTextContents()).toEqual([
-            "ID",
-            "관절",
-            "시작",
-            "끝",
-            "끝 위치 슬라이더",
-            "토크",
-            "출력",
-          ]);
+          await expect
+            .poll(() => page.locator('[data-testid="pose-table"] thead th').allTextContents())
+            .toEqual(["ID", "관절", "시작", "끝", "끝 위치 슬라이더", "토크", "출력"]);
         }
         await expectTidy(page, "pose", viewport);
         await typeInto(page, "end-3", "");
         await problem.filter({ hasText: "써 주세요" }).waitFor();
-        expect(squash(await problem.textContent())).toBe(
-          "왼쪽 발목 앞뒤(서보 3)의 끝 위치에는 0에서 254 사이의 정수를 써 주세요.",
-        );
+        await expectText(problem, "왼쪽 발목 앞뒤(서보 3)의 끝 위치에는 0에서 254 사이의 정수를 써 주세요.");
 
         // Scene: its fields, continuity, and frames closer than the RBC plays them.
         await showTab(page, "scene");
         await page.getByRole("heading", { level: 3, name: "장면 사이 이어짐" }).waitFor();
-        expect(await text(page, "boundary-start")).toBe(
+        await expectText(
+          page.getByTestId("boundary-start"),
           "장면 0의 끝에서 시작해요. 서보 16개 모두 부드럽게 이어져요.",
         );
         const time = Number(await page.getByTestId("scene-time").inputValue());
         await typeInto(page, "scene-frames", String(time));
         await page.locator("#frames-problem").waitFor();
-        expect(squash(await page.locator("#frames-problem").textContent())).toMatch(
+        await expectText(
+          page.locator("#frames-problem"),
           /^프레임 [\d,]+개를 [\d,]+ms에 재생하면 프레임 사이가 1\.0ms예요\. RBC는 20ms 이상이 필요해요\. 프레임을 \d+개 이하로 하거나 시간을 [\d,]+ms 이상으로 해 주세요\.$/,
         );
         await expectTidy(page, "scene", viewport);
@@ -545,7 +521,8 @@ describe("in Korean (ko-KR)", () => {
         await page.getByTestId("retime-value").fill("빠르게");
         await page.getByTestId("retime-apply").click();
         await page.locator("#retime-problem").waitFor();
-        expect(squash(await page.locator("#retime-problem").textContent())).toBe(
+        await expectText(
+          page.locator("#retime-problem"),
           '시간 배수는 0보다 큰 수여야 해요 (2 = 절반 속도, 0.5 = 두 배 속도). 입력한 값: "빠르게".',
         );
         await expectTidy(page, "tools", viewport);
@@ -554,18 +531,21 @@ describe("in Korean (ko-KR)", () => {
         await showTab(page, "teach");
         await page.getByRole("button", { name: "티칭 시작…" }).click();
         const question = page.getByTestId("teach-in-confirm");
-        expect(squash(await question.locator("#teach-in-question").textContent())).toBe(
+        await expectText(
+          question.locator("#teach-in-question"),
           "로봇을 잡아 주세요. 고른 서보의 힘이 빠져요.",
         );
         await question.getByRole("button", { name: "티칭 시작", exact: true }).click();
         await page.getByTestId("teach-in-status").waitFor();
-        expect(await text(page, "teach-in-status")).toBe(
+        await expectText(
+          page.getByTestId("teach-in-status"),
           "모든 서보가 제자리를 유지해요. 팔다리를 고르고 힘 빼기를 눌러 주세요.",
         );
         await page.getByRole("checkbox", { name: "왼쪽 팔 (서보 10–12)" }).check();
         await page.getByRole("button", { name: "왼쪽 팔 힘 빼기" }).click();
         await page.getByTestId("teach-in").getByText("서보 10–12의 힘이 빠졌어요 (확인함).").waitFor();
-        expect(await text(page, "teach-in-status")).toBe(
+        await expectText(
+          page.getByTestId("teach-in-status"),
           "힘 빠짐: 서보 10–12. 나머지 서보는 제자리를 유지해요.",
         );
         await page.getByRole("tab", { name: "티칭 (켜짐)", exact: true }).waitFor();
@@ -580,28 +560,33 @@ describe("in Korean (ko-KR)", () => {
           .waitFor();
         await page.getByRole("button", { name: "티칭 끝내기" }).click();
         await page.getByTestId("teach-in").getByText("티칭을 끝냈어요.").waitFor();
-        expect(await notice(page, "teach-in")).toBe(
-          "서보 10–12을(를) 자세를 잡은 자리에 고정했어요 (토크 켜짐, 확인함). 티칭을 끝냈어요. 로봇이 일반 모드로 돌아왔고, 모든 서보가 제자리를 유지해요.",
-        );
+        await expect
+          .poll(() => notice(page, "teach-in"))
+          .toBe(
+            "서보 10–12을(를) 자세를 잡은 자리에 고정했어요 (토크 켜짐, 확인함). 티칭을 끝냈어요. 로봇이 일반 모드로 돌아왔고, 모든 서보가 제자리를 유지해요.",
+          );
 
         // Play: the choice, the question before the robot moves, and what the robot confirmed.
         await showTab(page, "play");
         await page.getByRole("radio", { name: "선택한 장면 (1)" }).waitFor();
         await page.getByRole("radio", { name: "모션 전체 (장면 2개)" }).waitFor();
-        expect(await text(page, "play-summary")).toMatch(/^장면 1: 프레임 \d+개, [\d.]+초\.$/);
+        await expectText(page.getByTestId("play-summary"), /^장면 1: 프레임 \d+개, [\d.]+초\.$/);
         await page.getByRole("button", { name: "로봇에서 재생…" }).click();
         const ask = page.getByTestId("play-confirm");
         await ask.waitFor();
-        expect(squash(await ask.locator("#play-question").textContent())).toMatch(
+        await expectText(
+          ask.locator("#play-question"),
           /^로봇이 장면 1을\(를\) 따라 움직여요 \([\d.]+초\)\. 로봇을 잡거나 혼자 설 수 있는지 확인해 주세요\.$/,
         );
         await ask.getByRole("button", { name: "취소" }).waitFor();
         await expectTidy(page, "play", viewport);
         await ask.getByRole("button", { name: "장면 1 재생" }).click();
         await page.getByTestId("play-panel").getByText("재생했어요").waitFor({ timeout: 20_000 });
-        expect(await notice(page, "play-panel")).toMatch(
-          /^장면 1을\(를\) 재생했어요 \(프레임 \d+개, [\d.]+초\)\. 서보는 마지막 프레임 자세를 유지해요\.$/,
-        );
+        await expect
+          .poll(() => notice(page, "play-panel"))
+          .toMatch(
+            /^장면 1을\(를\) 재생했어요 \(프레임 \d+개, [\d.]+초\)\. 서보는 마지막 프레임 자세를 유지해요\.$/,
+          );
 
         // Check: a position outside the joint's safe range is a warning, counted on the tab, worded in Korean.
         await showTab(page, "pose");
@@ -609,27 +594,25 @@ describe("in Korean (ko-KR)", () => {
         const check = page.getByRole("tab", { name: /^검사 \(경고 \d+개\)$/ });
         await check.waitFor();
         await check.click();
-        expect(await text(page, "editor-check")).toMatch(/^오류 0개, 경고 \d+개\.$/);
+        await expectText(page.getByTestId("editor-check"), /^오류 0개, 경고 \d+개\.$/);
         const warning = page.locator('[data-testid="editor-warning"][data-code="rbm-unsafe-position"]');
-        expect(squash(await warning.locator(".warning-head").textContent())).toMatch(
-          /^심각 관절의 안전 범위를 벗어난 위치 \(\d+\)$/,
-        );
+        await expectText(warning.locator(".warning-head"), /^심각 관절의 안전 범위를 벗어난 위치 \(\d+\)$/);
         await warning.locator("summary").click();
         await warning.getByRole("button", { name: "장면 1, 서보 3" }).waitFor();
         // The checker's own sentence is Korean too (motions/issue-text.ts), with the value typed.
         expect(await warning.locator('.issue span[lang="en"]').count()).toBe(0);
-        expect(squash(await warning.locator(".issue").first().textContent())).toMatch(/[가-힣].*254/);
+        await expectText(warning.locator(".issue").first(), /[가-힣].*254/);
         await expectTidy(page, "check", viewport);
 
         // Drafts: the list and the question before a draft is deleted.
         const drafts = page.getByTestId("drafts-card");
         await drafts.getByRole("heading", { level: 2, name: "임시 저장본" }).waitFor();
         const draft = drafts.getByTestId("draft");
-        expect(squash(await draft.locator(".draft-open").textContent())).toBe("편집기에서 열려 있음");
-        expect(squash(await draft.locator("p.num").textContent())).toMatch(/^장면 2개 · \d\d:\d\d 저장$/);
+        await expectText(draft.locator(".draft-open"), "편집기에서 열려 있음");
+        await expectText(draft.locator("p.num"), /^장면 2개 · \d\d:\d\d 저장$/);
         await draft.getByRole("button", { name: "NewMotion 지우기" }).click();
         const confirm = drafts.getByRole("alertdialog");
-        expect(squash(await confirm.textContent())).toContain("임시 저장본 NewMotion을(를) 지울까요?");
+        await expectText(confirm, "임시 저장본 NewMotion을(를) 지울까요?", { contains: true });
         await confirm.getByRole("button", { name: "임시 저장본 지우기" }).waitFor();
         await drafts.scrollIntoViewIfNeeded();
         await expectTidy(page, "drafts", viewport);

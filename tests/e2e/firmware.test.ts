@@ -1,9 +1,9 @@
 import { mkdir } from "node:fs/promises";
 import { join } from "node:path";
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { describe, expect, it } from "vitest";
 import { firmwareHex, firmwareHexWithBadChecksum } from "../support/hex.ts";
-import { type AppHarness, ROOT, squash, startHarness, watchPage } from "./harness.ts";
+import { expectText, ROOT, squash, useApp, watchPage } from "./harness.ts";
 import "./rbc-test-globals.ts";
 import {
   connectDemo,
@@ -21,15 +21,7 @@ import {
  * the version the robot reports change; Cancel mid-way says what the robot holds. Robot time runs faster.
  */
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 /** Screenshots for people to look at (not compared): SCREENSHOTS=dir. */
 const SHOTS = process.env.FIRMWARE_SCREENSHOTS;
@@ -61,49 +53,50 @@ describe("Firmware view on the demo robot", () => {
       await page.emulateMedia({ colorScheme: variant.dark ? "dark" : "light" });
       const seen = watchPage(page, app.origin);
       await openFirmwareOnDemo(page);
-      expect(await page.getByTestId("fw-version").textContent().then(squash)).toBe("2.23");
-      expect(await page.getByTestId("fw-notice").textContent().then(squash)).toContain(
+      await expectText(page.getByTestId("fw-version"), "2.23");
+      await expectText(
+        page.getByTestId("fw-notice"),
         "The bootloader itself is never written, so a failed or interrupted update is fixed by running the update again.",
+        { contains: true },
       );
-      expect(await page.getByTestId("flash-start").isDisabled()).toBe(true);
+      await expect.poll(() => page.getByTestId("flash-start").isDisabled()).toBe(true);
 
       await page.getByTestId("fw-demo-file").click();
       await page.getByTestId("fw-summary").waitFor();
-      expect(await page.getByTestId("fw-size").textContent().then(squash)).toBe("16,384 bytes");
-      expect(await page.getByTestId("fw-range").textContent().then(squash)).toBe("0x00000–0x03FFF");
-      expect(await page.getByTestId("fw-pages").textContent().then(squash)).toBe("64 of 256 bytes");
-      expect(await page.getByTestId("fw-lines").textContent().then(squash)).toBe(
-        "1,025 (46,093 bytes to send)",
-      );
+      await expectText(page.getByTestId("fw-size"), "16,384 bytes");
+      await expectText(page.getByTestId("fw-range"), "0x00000–0x03FFF");
+      await expectText(page.getByTestId("fw-pages"), "64 of 256 bytes");
+      await expectText(page.getByTestId("fw-lines"), "1,025 (46,093 bytes to send)");
       await shot(page, `before-${variant.name}`);
 
       await page.getByTestId("flash-start").click();
       const confirm = page.getByTestId("flash-confirm");
       await confirm.waitFor();
-      expect(await confirm.textContent().then(squash)).toContain(
-        "Replace the robot's firmware with demo-2.50.hex?",
-      );
+      await expectText(confirm, "Replace the robot's firmware with demo-2.50.hex?", { contains: true });
       await page.getByRole("button", { name: "Update firmware", exact: true }).click();
 
       // The power-cycle step, then progress in place.
       const progress = page.getByTestId("flash-progress");
       await progress.waitFor();
-      expect(await progress.textContent().then(squash)).toContain("Switch the robot off and on now.");
+      await expectText(progress, "Switch the robot off and on now.", { contains: true });
       const figures = page.getByTestId("flash-figures");
       await figures.filter({ hasText: /bytes\/s/ }).waitFor({ timeout: 20_000 });
-      const text = squash(await figures.textContent());
-      expect(text).toMatch(/^[\d,]+ of 1,025 lines · [\d,]+ of 46,093 bytes \(\d+%\) · [\d,]+ bytes\/s · /);
+      await expectText(
+        figures,
+        /^[\d,]+ of 1,025 lines · [\d,]+ of 46,093 bytes \(\d+%\) · [\d,]+ bytes\/s · /,
+      );
       await shot(page, `during-${variant.name}`);
 
       const result = page.getByTestId("flash-result").getByText(/Firmware updated/);
       await result.waitFor({ timeout: 40_000 });
-      expect(squash(await result.textContent())).toMatch(
+      await expectText(
+        result,
         /^Firmware updated: the robot now reports 2\.50 \(was 2\.23\)\. 1,025 lines in [\d.]+ s\. The robot was restarted/,
       );
-      expect(await page.getByTestId("fw-version").textContent().then(squash)).toBe("2.50");
+      await expectText(page.getByTestId("fw-version"), "2.50");
       // The top bar and the Robot view show what the robot reported too.
       await page.getByRole("link", { name: "Robot" }).click();
-      expect(await page.getByTestId("firmware").textContent().then(squash)).toBe("2.50");
+      await expectText(page.getByTestId("firmware"), "2.50");
       await page.getByRole("link", { name: "Firmware" }).click();
       await page.getByTestId("firmware-view").waitFor();
       // No sideways scrolling on a phone.
@@ -130,7 +123,7 @@ describe("Firmware view on the demo robot", () => {
     });
     const problem = page.getByText(/broken\.hex is not a firmware file/);
     await problem.waitFor();
-    expect(squash(await problem.textContent())).toMatch(/Line 3: the checksum is 00/);
+    await expectText(problem, /Line 3: the checksum is 00/);
     expect(await page.getByTestId("fw-summary").count()).toBe(0);
 
     // A good file of this computer (64 KiB: long enough to cancel).
@@ -140,17 +133,17 @@ describe("Firmware view on the demo robot", () => {
       buffer: Buffer.from(firmwareHex("2.60", 64 * 1024)),
     });
     await page.getByTestId("fw-summary").waitFor();
-    expect(await page.getByTestId("fw-lines").textContent().then(squash)).toBe(
-      "4,097 (184,333 bytes to send)",
-    );
+    await expectText(page.getByTestId("fw-lines"), "4,097 (184,333 bytes to send)");
     await page.getByTestId("flash-start").click();
     await page.getByRole("button", { name: "Update firmware", exact: true }).click();
     await page
       .getByTestId("flash-figures")
       .filter({ hasText: /bytes\/s/ })
       .waitFor({ timeout: 20_000 });
-    expect(await page.getByTestId("flash-progress").textContent().then(squash)).toContain(
+    await expectText(
+      page.getByTestId("flash-progress"),
       "Cancel now and the robot's firmware may be incomplete",
+      { contains: true },
     );
     await page.getByTestId("flash-cancel").click();
     // The notice's sentence (the updater's English sentence is its technical detail, one click away).
@@ -159,11 +152,12 @@ describe("Firmware view on the demo robot", () => {
       .locator("p")
       .filter({ hasText: /The firmware update was cancelled/ });
     await result.waitFor({ timeout: 20_000 });
-    expect(squash(await result.textContent())).toBe(
+    await expectText(
+      result,
       "The firmware update was cancelled. The robot's firmware may now be incomplete, and the robot may not work until an update succeeds. The bootloader is never overwritten: switch the robot off and on and run the update again.",
     );
-    expect(await page.getByTestId("flash-progress").count()).toBe(0);
-    expect(await page.getByTestId("fw-version").textContent().then(squash)).toBe("2.23");
+    await expect.poll(() => page.getByTestId("flash-progress").count()).toBe(0);
+    await expectText(page.getByTestId("fw-version"), "2.23");
   });
 });
 
@@ -177,18 +171,23 @@ describe("a robot waiting in its bootloader (issue 20 item 11)", () => {
     await page.getByRole("button", { name: "Connect robot" }).click();
     const go = page.getByRole("link", { name: "Go to the firmware recovery" });
     await go.waitFor({ timeout: 30_000 });
-    const text = await page.getByTestId("connect-card").textContent().then(squash);
-    expect(text).toMatch(
+    await expectText(
+      page.getByTestId("connect-card"),
       /The robot is waiting in its bootloader: it sent the bootloader's prompt \(\^\) \d+ times and answered no request\./,
     );
-    expect(text).toContain("Run the firmware update again, in recovery mode");
+    await expectText(page.getByTestId("connect-card"), "Run the firmware update again, in recovery mode", {
+      contains: true,
+    });
+    const text = await page.getByTestId("connect-card").textContent().then(squash);
     expect(text).not.toContain("no robot answered");
     await go.click();
     await page.getByTestId("firmware-view").waitFor();
-    expect(
-      await page.getByRole("heading", { name: "Recover: update a robot that does not answer" }).isVisible(),
-    ).toBe(true);
-    expect(await page.getByTestId("recover-start").isVisible()).toBe(true);
+    await expect
+      .poll(() =>
+        page.getByRole("heading", { name: "Recover: update a robot that does not answer" }).isVisible(),
+      )
+      .toBe(true);
+    await expect.poll(() => page.getByTestId("recover-start").isVisible()).toBe(true);
     expect(seen.errors).toEqual([]);
   });
 
@@ -247,17 +246,15 @@ describe("in Korean (ko-KR)", () => {
         const seen = watchPage(page, app.origin);
         await page.goto(app.url, { waitUntil: "domcontentloaded" });
         await openFirmwareOnDemo(page);
-        expect(await lang(page)).toBe("ko");
+        await expect.poll(() => lang(page)).toBe("ko");
         const view = page.getByTestId("firmware-view");
-        expect(await view.getByRole("heading", { level: 1 }).textContent()).toBe("펌웨어");
-        expect(await view.getByRole("heading", { level: 2 }).allTextContents()).toEqual([
-          "펌웨어 파일",
-          "로봇 업데이트",
-        ]);
-        expect(squash(await page.getByTestId("fw-current").textContent())).toBe(
-          "데모 로봇이 알려 준 펌웨어 버전: 2.23",
-        );
-        expect(squash(await page.getByTestId("fw-notice").textContent())).toBe(
+        await expectText(view.getByRole("heading", { level: 1 }), "펌웨어");
+        await expect
+          .poll(() => view.getByRole("heading", { level: 2 }).allTextContents())
+          .toEqual(["펌웨어 파일", "로봇 업데이트"]);
+        await expectText(page.getByTestId("fw-current"), "데모 로봇이 알려 준 펌웨어 버전: 2.23");
+        await expectText(
+          page.getByTestId("fw-notice"),
           "실제 로봇에서는 실험 단계예요. 부트로더 자체는 절대 덮어쓰지 않아요. 그래서 업데이트가 실패하거나 중간에 끊겨도 업데이트를 다시 하면 고쳐져요. " +
             "업데이트가 끝날 때까지 로봇의 전원을 켜 둔 채(충전된 배터리나 어댑터) 로봇을 눕혀 두고, 케이블도 꽂아 두세요.",
         );
@@ -267,26 +264,21 @@ describe("in Korean (ko-KR)", () => {
 
         await page.getByTestId("fw-demo-file").click();
         await page.getByTestId("fw-summary").waitFor();
-        expect(await page.getByTestId("fw-size").textContent().then(squash)).toBe("16,384바이트");
-        expect(await page.getByTestId("fw-pages").textContent().then(squash)).toBe("256바이트 페이지 64개");
-        expect(await page.getByTestId("fw-lines").textContent().then(squash)).toBe(
-          "1,025줄 (보낼 데이터 46,093바이트)",
-        );
+        await expectText(page.getByTestId("fw-size"), "16,384바이트");
+        await expectText(page.getByTestId("fw-pages"), "256바이트 페이지 64개");
+        await expectText(page.getByTestId("fw-lines"), "1,025줄 (보낼 데이터 46,093바이트)");
         // Plain facts first; the address range, pages and lines under "기술 정보" (technical detail).
-        expect(await page.getByTestId("fw-summary").locator("dt").allTextContents()).toEqual([
-          "크기",
-          "파일에 적힌 버전",
-          "주소 범위",
-          "플래시 페이지",
-          "줄 수",
-        ]);
+        await expect
+          .poll(() => page.getByTestId("fw-summary").locator("dt").allTextContents())
+          .toEqual(["크기", "파일에 적힌 버전", "주소 범위", "플래시 페이지", "줄 수"]);
         await page.getByRole("button", { name: "파일 닫기" }).waitFor();
         await expectLaidOut(page, "the file opened", `firmware-ko-file-${name}`);
 
         await page.getByRole("button", { name: "펌웨어 업데이트…" }).click();
         const confirm = page.getByTestId("flash-confirm");
         await confirm.waitFor();
-        expect(squash(await confirm.textContent())).toBe(
+        await expectText(
+          confirm,
           "로봇의 펌웨어를 demo-2.50.hex(으)로 바꿀까요? 데모 로봇은 요청하면 스스로 다시 시작해요. " +
             "다음으로 로봇을 껐다가 켜 달라는 안내가 나오고, 그다음 파일을 한 줄씩 써요. 펌웨어 업데이트 취소",
         );
@@ -295,25 +287,26 @@ describe("in Korean (ko-KR)", () => {
 
         const progress = page.getByTestId("flash-progress");
         await progress.waitFor();
-        expect(squash(await progress.textContent())).toContain("지금 로봇을 껐다가 다시 켜 주세요.");
+        await expectText(progress, "지금 로봇을 껐다가 다시 켜 주세요.", { contains: true });
         const figures = page.getByTestId("flash-figures");
         await figures.filter({ hasText: /초당/ }).waitFor({ timeout: 20_000 });
-        expect(squash(await figures.textContent())).toMatch(
+        await expectText(
+          figures,
           /^1,025줄 중 [\d,]+줄 · 46,093바이트 중 [\d,]+바이트 \(\d+%\) · 초당 [\d,]+바이트 · (약 \d+초 남음|약 \d+분 \d+초 남음)$/,
         );
-        expect(await progress.locator("progress").getAttribute("aria-label")).toBe(
-          "demo-2.50.hex(으)로 펌웨어 업데이트",
-        );
-        expect(squash(await progress.textContent())).toContain("demo-2.50.hex 쓰기");
+        await expect
+          .poll(() => progress.locator("progress").getAttribute("aria-label"))
+          .toBe("demo-2.50.hex(으)로 펌웨어 업데이트");
+        await expectText(progress, "demo-2.50.hex 쓰기", { contains: true });
         await expectLaidOut(page, "the progress", `firmware-ko-progress-${name}`);
 
         const result = page.getByTestId("flash-result").getByText(/펌웨어를 업데이트했어요/);
         await result.waitFor({ timeout: 40_000 });
-        expect(squash(await result.textContent())).toMatch(RESULT);
-        expect(await page.getByTestId("fw-version").textContent().then(squash)).toBe("2.50");
-        expect(await page.getByTestId("flash-result").getByRole("status").getAttribute("aria-label")).toBe(
-          "펌웨어 업데이트 결과",
-        );
+        await expectText(result, RESULT);
+        await expectText(page.getByTestId("fw-version"), "2.50");
+        await expect
+          .poll(() => page.getByTestId("flash-result").getByRole("status").getAttribute("aria-label"))
+          .toBe("펌웨어 업데이트 결과");
         await expectLaidOut(page, "the result", `firmware-ko-result-${name}`);
         expect(seen.errors).toEqual([]);
         await context.close();
@@ -333,14 +326,13 @@ describe("in Korean (ko-KR)", () => {
       });
       const problem = page.locator(".fw-file .notice");
       await problem.waitFor();
-      expect(squash(await problem.locator("p").textContent())).toBe(
+      await expectText(
+        problem.locator("p"),
         "broken.hex은(는) 로봇의 부트로더가 받을 수 있는 펌웨어 파일이 아니에요. 3번째 줄: 레코드의 체크섬이 맞지 않아요.",
       );
-      expect(await problem.locator("summary").textContent()).toBe("기술 정보");
-      expect(squash(await problem.locator("pre").textContent())).toMatch(
-        /^IntelHexError: Line 3: the checksum is 00 but/,
-      );
-      expect(await problem.locator("pre").getAttribute("lang")).toBe("en");
+      await expectText(problem.locator("summary"), "기술 정보");
+      await expectText(problem.locator("pre"), /^IntelHexError: Line 3: the checksum is 00 but/);
+      await expect.poll(() => problem.locator("pre").getAttribute("lang")).toBe("en");
       expect(await page.getByTestId("fw-summary").count()).toBe(0);
 
       await page.getByTestId("fw-file-input").setInputFiles({
@@ -352,20 +344,24 @@ describe("in Korean (ko-KR)", () => {
       await page.getByTestId("flash-start").click();
       await page.getByRole("button", { name: "펌웨어 업데이트", exact: true }).click();
       await page.getByTestId("flash-figures").filter({ hasText: /초당/ }).waitFor({ timeout: 20_000 });
-      expect(squash(await page.getByTestId("flash-progress").textContent())).toContain(
+      await expectText(
+        page.getByTestId("flash-progress"),
         "지금 취소하면 업데이트가 성공할 때까지 로봇의 펌웨어가 불완전할 수 있어요.",
+        { contains: true },
       );
       await page.getByRole("button", { name: "취소", exact: true }).click();
       const result = page.getByTestId("flash-result").locator(".notice");
       await result.getByText(/업데이트를 취소했어요/).waitFor({ timeout: 20_000 });
-      expect(squash(await result.locator("p").textContent())).toBe(
+      await expectText(
+        result.locator("p"),
         "펌웨어 업데이트를 취소했어요. 로봇의 펌웨어가 불완전할 수 있고, 업데이트가 성공할 때까지 로봇이 작동하지 않을 수 있어요. " +
           "부트로더는 절대 덮어쓰지 않아요. 로봇을 껐다가 다시 켜고 업데이트를 다시 해 주세요.",
       );
-      expect(squash(await result.locator("pre").textContent())).toBe(
+      await expectText(
+        result.locator("pre"),
         "FirmwareUpdateError (cancelled): The firmware update was cancelled. The robot's firmware may now be incomplete, and the robot may not work until an update succeeds. The bootloader is never overwritten: switch the robot off and on and run the update again.",
       );
-      expect(await page.getByTestId("fw-version").textContent().then(squash)).toBe("2.23");
+      await expectText(page.getByTestId("fw-version"), "2.23");
       await expectLaidOut(page, "the cancelled update");
       await context.close();
     });
@@ -379,10 +375,10 @@ describe("in Korean (ko-KR)", () => {
         await page.getByTestId("connect-card").waitFor();
         await page.getByRole("link", { name: "펌웨어" }).click();
         await page.getByTestId("firmware-view").waitFor();
-        expect(await lang(page)).toBe("ko");
+        await expect.poll(() => lang(page)).toBe("ko");
         await page.getByRole("heading", { level: 2, name: "복구: 응답하지 않는 로봇 업데이트" }).waitFor();
-        expect(await page.getByTestId("recover-start").textContent().then(squash)).toBe("복구…");
-        expect(await page.getByTestId("recover-start").isDisabled()).toBe(true);
+        await expectText(page.getByTestId("recover-start"), "복구…");
+        await expect.poll(() => page.getByTestId("recover-start").isDisabled()).toBe(true);
         // A real file opens here too; Recover's confirmation asks for the port first.
         await page.getByTestId("fw-file-input").setInputFiles({
           name: "firmware-2.60.hex",
@@ -393,10 +389,8 @@ describe("in Korean (ko-KR)", () => {
         await page.getByTestId("recover-start").click();
         const confirm = page.getByTestId("flash-confirm");
         await confirm.waitFor();
-        expect(squash(await confirm.textContent())).toContain(
-          "응답하지 않는 로봇에 firmware-2.60.hex을(를) 쓸까요?",
-        );
-        expect(squash(await confirm.textContent())).toContain("먼저 브라우저가 로봇의 포트를 물어봐요.");
+        await expectText(confirm, "응답하지 않는 로봇에 firmware-2.60.hex을(를) 쓸까요?", { contains: true });
+        await expectText(confirm, "먼저 브라우저가 로봇의 포트를 물어봐요.", { contains: true });
         await page.getByRole("button", { name: "포트 선택 후 업데이트" }).waitFor();
         await expectLaidOut(page, "Recover", `firmware-ko-recover-${name}`);
         await context.close();
@@ -407,10 +401,11 @@ describe("in Korean (ko-KR)", () => {
       const { page, context } = await newLocalePage(app, "ko-KR", { noSerial: true, hash: "#/firmware" });
       await page.getByTestId("firmware-view").waitFor();
       const note = page.getByText(/Web Serial을 지원하지 않아요/);
-      expect(squash(await note.textContent())).toBe(
+      await expectText(
+        note,
         "이 브라우저는 Web Serial을 지원하지 않아요. 컴퓨터에서 Chrome이나 Edge를 쓰거나 rbc flash --recover 명령을 써 주세요.",
       );
-      expect(await note.locator("code").textContent()).toBe("rbc flash --recover");
+      await expectText(note.locator("code"), "rbc flash --recover");
       expect(await keysShown(page)).toEqual([]);
       await context.close();
     });
@@ -420,7 +415,7 @@ describe("in Korean (ko-KR)", () => {
     }, async () => {
       const { page, context } = await newLocalePage(app, "ko-KR", { options: { timeScale: 4 } });
       await openFirmwareOnDemo(page);
-      expect(await lang(page)).toBe("ko");
+      await expect.poll(() => lang(page)).toBe("ko");
       await expectPageOk(page, "the Firmware view", { lang: "ko" });
       await confirmDemoFile(page);
       await expectPageOk(page, "the confirmation", { lang: "ko" });

@@ -10,8 +10,9 @@ import { createServer } from "node:net";
 import { tmpdir } from "node:os";
 import { join, relative } from "node:path";
 import { fileURLToPath } from "node:url";
-import type { Browser, BrowserContext, Page } from "playwright-core";
+import type { Browser, BrowserContext, Locator, Page } from "playwright-core";
 import { build, preview } from "vite";
+import { afterAll, beforeAll, expect } from "vitest";
 import { launchChromium } from "../support/chromium.ts";
 import type { RbcTestOptions } from "./rbc-test-globals.ts";
 
@@ -277,38 +278,135 @@ export async function releaseRobot(page: Page): Promise<void> {
   await page.evaluate(() => window.__rbcTest?.clock.release());
 }
 
-/**
- * Waits in the page until `selector`'s text contains `text`, and returns the robot's time (ms of its clock)
- * at that moment, not after the test's next steps.
- */
-export async function robotTimeWhenShown(page: Page, selector: string, text: RegExp): Promise<number> {
-  const handle = await page.waitForFunction(
-    ({ selector, source, flags }) => {
-      const pattern = new RegExp(source, flags);
-      const shown = [...document.querySelectorAll(selector)].some((e) => pattern.test(e.textContent ?? ""));
-      return shown ? (window.__rbcTest?.clock.now() ?? Number.NaN) : false;
-    },
-    { selector, source: text.source, flags: text.flags },
-  );
-  return (await handle.jsonValue()) as number;
+declare global {
+  interface Window {
+    /** The robot's time when each of `watchText`'s watches saw its text, by the watch's key. */
+    __rbcShownAt?: Record<string, number>;
+  }
+}
+
+/** Watches started in this test file, each with its own key in the page. */
+let watches = 0;
+
+/** A moment the page watches for (`watchText`). */
+export interface ShownMoment {
+  /** Waits until the text was shown; the robot's time (ms of its clock) at that moment. */
+  moment(): Promise<number>;
 }
 
 /**
- * Waits in the page until `selector`'s text matches `text` and holds the robot's time in that same frame (see
- * `holdRobot`): the test's next steps (posing the robot by hand, a Cancel) happen at the moment it was shown,
- * however slowly they run. Call `releaseRobot` after them.
+ * Starts watching the page for an element matching `selector` whose text matches `text`, and returns once the
+ * watch is in place, so that it can be started before the click that shows the text. The page notes the robot's
+ * time in the same task as the change that shows it (a mutation observer), not after the test's next steps:
+ * a moment that lasts a few ms of robot time is caught however slowly the test runs. With `hold`, the robot's
+ * time also stands still from that moment (`holdRobot`), so the test's next steps (posing the robot by hand, a
+ * Cancel, a Stop) happen at the moment it was shown; call `releaseRobot` after them. Text already shown when
+ * the watch starts counts as shown then.
+ */
+export async function watchText(
+  page: Page,
+  selector: string,
+  text: RegExp,
+  { hold = false }: { hold?: boolean } = {},
+): Promise<ShownMoment> {
+  watches += 1;
+  const key = `w${watches}`;
+  await page.evaluate(
+    ({ key, selector, source, flags, hold }) => {
+      const pattern = new RegExp(source, flags);
+      const shown = () =>
+        [...document.querySelectorAll(selector)].some((e) => pattern.test(e.textContent ?? ""));
+      const note = () => {
+        const clock = window.__rbcTest?.clock;
+        if (hold) clock?.hold();
+        window.__rbcShownAt = { ...window.__rbcShownAt, [key]: clock?.now() ?? Number.NaN };
+      };
+      if (shown()) {
+        note();
+        return;
+      }
+      const observer = new MutationObserver(() => {
+        if (!shown()) return;
+        observer.disconnect();
+        note();
+      });
+      observer.observe(document.documentElement, { childList: true, subtree: true, characterData: true });
+    },
+    { key, selector, source: text.source, flags: text.flags, hold },
+  );
+  return {
+    async moment() {
+      const handle = await page.waitForFunction((key) => {
+        const at = window.__rbcShownAt?.[key];
+        return at === undefined ? false : [at];
+      }, key);
+      const [at] = (await handle.jsonValue()) as [number];
+      return at;
+    },
+  };
+}
+
+/**
+ * Waits until `selector`'s text matches `text` and holds the robot's time from that moment (`watchText` with
+ * `hold`). Call `releaseRobot` after the steps that must happen at that moment.
  */
 export async function holdRobotWhenShown(page: Page, selector: string, text: RegExp): Promise<void> {
-  await page.waitForFunction(
-    ({ selector, source, flags }) => {
-      const pattern = new RegExp(source, flags);
-      const shown = [...document.querySelectorAll(selector)].some((e) => pattern.test(e.textContent ?? ""));
-      if (shown) window.__rbcTest?.clock.hold();
-      return shown;
-    },
-    { selector, source: text.source, flags: text.flags },
-  );
+  await (await watchText(page, selector, text, { hold: true })).moment();
 }
 
 /** The simulated robot's time (ms of its clock). */
 export const robotNow = (page: Page) => page.evaluate(() => window.__rbcTest?.clock.now() ?? Number.NaN);
+
+/** How long one read of a text may wait for its element before the poll reads again (ms). */
+const READ_MS = 2000;
+
+/**
+ * Waits until `locator`'s text, white space collapsed (`squash`), is `expected`, or contains it with
+ * `contains`, or matches it when it is a RegExp. The panel draws what an action changed on its next render,
+ * so a text read once right after a click can still be the old one on a starved machine; this reads it again
+ * until it is right, and fails after the browser project's poll timeout (10 s, vitest.config.ts) with the
+ * last text read.
+ */
+export async function expectText(
+  locator: Locator,
+  expected: string | RegExp,
+  { contains = false }: { contains?: boolean } = {},
+): Promise<void> {
+  const shown = expect.poll(async () => squash(await locator.textContent({ timeout: READ_MS })), {
+    message: `the text of ${locator}`,
+  });
+  if (typeof expected !== "string") await shown.toMatch(expected);
+  else if (contains) await shown.toContain(expected);
+  else await shown.toBe(expected);
+}
+
+/**
+ * The app for the tests of one file: started before them (one browser, the shared build) and closed after them.
+ * Call it once at the top of the file; what it returns may be used inside the tests.
+ */
+export function useApp(): AppHarness {
+  let started: AppHarness | undefined;
+  beforeAll(async () => {
+    started = await startHarness();
+  });
+  afterAll(async () => {
+    await started?.close();
+  });
+  const app = () => {
+    if (!started) throw new Error("the app starts before the tests: use it inside a test or a hook");
+    return started;
+  };
+  return {
+    get url() {
+      return app().url;
+    },
+    get origin() {
+      return app().origin;
+    },
+    get browser() {
+      return app().browser;
+    },
+    newPage: (options) => app().newPage(options),
+    close: () => app().close(),
+  };
+}

@@ -1,21 +1,13 @@
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { describe, expect, it } from "vitest";
 import { FACTORY_ZEROS } from "../../src/protocol/index.ts";
-import { type AppHarness, connectRobot, squash, startHarness } from "./harness.ts";
+import { connectRobot, expectText, squash, useApp } from "./harness.ts";
 import "./rbc-test-globals.ts";
 
 // Issue 21 items 5 and 6: nothing the panel says is more certain than what happened, and results appear where
 // the eyes are, in the language of the moment.
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 async function openZeros(page: Page): Promise<void> {
   await connectRobot(page, app.url);
@@ -66,19 +58,20 @@ describe("zero backups say where they went, and are kept in this browser", () =>
     await page.getByRole("button", { name: "Save backup and write" }).click();
     const name = (await download).suggestedFilename();
     await zerosResult(page).filter({ hasText: "Zeros written and verified" }).waitFor();
-    const text = squash(await zerosResult(page).textContent());
-    expect(text).toBe(
+    await expectText(
+      zerosResult(page),
       `Zeros written and verified (read back 16/16). Backup file offered as a download (${name}): the browser decides where it goes and may rename it. It is kept in this browser (Backups kept in this browser, below).`,
     );
+    const text = squash(await zerosResult(page).textContent());
     expect(text).not.toContain("saved as");
 
     // The list holds the backup: the robot's zeros before the write, its serial number, and Restore.
     const list = page.getByTestId("kept-backups");
     await list.locator("summary").filter({ hasText: "(1)" }).click();
     const row = list.locator("tbody tr");
-    expect(await row.count()).toBe(1);
-    expect(squash(await row.locator("td").nth(1).textContent())).toBe("8958899989309");
-    expect(squash(await row.locator("td").nth(2).textContent())).toBe(FACTORY_ZEROS.join(" "));
+    await expect.poll(() => row.count()).toBe(1);
+    await expectText(row.locator("td").nth(1), "8958899989309");
+    await expectText(row.locator("td").nth(2), FACTORY_ZEROS.join(" "));
 
     // Restore puts the backup into the editor; nothing is written until Write.
     const written = await page.evaluate(() => window.__rbcTest?.port.written.length);
@@ -120,9 +113,9 @@ describe("zero backups say where they went, and are kept in this browser", () =>
     await openZeros(page);
     await page.locator("#zero-3").fill("200");
     await page.getByTestId("write-why").filter({ hasText: "Cannot write" }).waitFor();
-    const summary = squash(await page.getByTestId("change-summary").textContent());
-    expect(summary).not.toContain("matches");
-    expect(summary).toBe("The 15 values that can be written match the robot's zeros.");
+    const summary = page.getByTestId("change-summary");
+    await expectText(summary, "The 15 values that can be written match the robot's zeros.");
+    expect(squash(await summary.textContent())).not.toContain("matches");
     await context.close();
   });
 });
@@ -138,9 +131,12 @@ describe("Stop's result is where the eyes are, in the language of the moment", (
     await banner.filter({ hasText: "it is idle, nothing to stop" }).waitFor();
     // The result is inside the top bar and within the window, however far down the page is.
     expect(await banner.evaluate((el) => el.closest(".top-bar") !== null)).toBe(true);
-    const box = await banner.boundingBox();
-    expect(box).not.toBeNull();
-    expect((box?.y ?? -1) >= 0 && (box?.y ?? 1e9) + (box?.height ?? 0) <= 800).toBe(true);
+    await expect
+      .poll(() => banner.boundingBox())
+      .toSatisfy(
+        (box: { y: number; height: number } | null) =>
+          box !== null && box.y >= 0 && box.y + box.height <= 800,
+      );
     expect(await page.evaluate(() => window.scrollY)).toBeGreaterThan(0);
 
     // Made in English; after the switch it reads in Korean.

@@ -10,8 +10,8 @@ import { mkdir } from "node:fs/promises";
 import { createRequire } from "node:module";
 import { join, resolve } from "node:path";
 import type { BrowserContext, Locator, Page } from "playwright-core";
-import { afterAll, beforeAll, expect } from "vitest";
-import { type AppHarness, ROOT, squash, startHarness } from "./harness.ts";
+import { expect } from "vitest";
+import { type AppHarness, ROOT, squash } from "./harness.ts";
 import type { RbcTestOptions } from "./rbc-test-globals.ts";
 
 /** A browser window's size in CSS pixels. */
@@ -36,37 +36,6 @@ export const text = async (locator: Locator) => squash(await locator.textContent
 
 /** The texts of every element a locator matches, each with its white space collapsed. */
 export const texts = async (locator: Locator) => (await locator.allTextContents()).map(squash);
-
-/**
- * The app for the tests of one file: started before them (one browser, the shared build) and closed after them.
- * Call it once at the top of the file; what it returns may be used inside the tests.
- */
-export function useApp(): AppHarness {
-  let started: AppHarness | undefined;
-  beforeAll(async () => {
-    started = await startHarness();
-  });
-  afterAll(async () => {
-    await started?.close();
-  });
-  const app = () => {
-    if (!started) throw new Error("the app starts before the tests: use it inside a test or a hook");
-    return started;
-  };
-  return {
-    get url() {
-      return app().url;
-    },
-    get origin() {
-      return app().origin;
-    },
-    get browser() {
-      return app().browser;
-    },
-    newPage: (options) => app().newPage(options),
-    close: () => app().close(),
-  };
-}
 
 /**
  * Opens the panel in a browser whose language is `locale` (`navigator.languages`, Accept-Language), at `size`

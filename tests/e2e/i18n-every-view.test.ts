@@ -7,8 +7,9 @@
  */
 import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
-import { newLocalePage, pageLang, pageProblems, SIZES, useApp } from "./i18n-checks.ts";
+import { newLocalePage, pageLang, pageProblems, SIZES } from "./i18n-checks.ts";
 import "./rbc-test-globals.ts";
+import { useApp } from "./harness.ts";
 
 const LANGUAGES = [
   { locale: "en-US", lang: "en", demo: "Try the demo robot" },
@@ -72,7 +73,7 @@ for (const language of LANGUAGES) {
           const report: string[] = [];
           for (const view of VIEWS) {
             await openView(page, view);
-            expect(await pageLang(page), view).toBe(language.lang);
+            await expect.poll(() => pageLang(page), { message: view }).toBe(language.lang);
             // The view speaks the page's language: its heading has Hangul in Korean, none in English.
             const title = await page.evaluate(() => document.querySelector("main h1")?.textContent ?? "");
             expect(/[가-힣]/.test(title), `${view}: "${title}"`).toBe(language.lang === "ko");

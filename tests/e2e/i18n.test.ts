@@ -6,7 +6,7 @@
  */
 import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
-import { squash } from "./harness.ts";
+import { expectText, useApp } from "./harness.ts";
 import {
   axeProblems,
   connectCable,
@@ -15,7 +15,6 @@ import {
   pageLang as lang,
   newLocalePage,
   SIZES,
-  useApp,
 } from "./i18n-checks.ts";
 import "./rbc-test-globals.ts";
 
@@ -28,49 +27,28 @@ describe("the panel in Korean", () => {
   it("follows a Korean browser: lang, navigation, title, footer and the Robot view", async () => {
     const { page, context } = await newLocalePage(app, "ko-KR");
     await page.getByTestId("connect-card").waitFor();
-    expect(await lang(page)).toBe("ko");
-    expect(await navLabels(page)).toEqual([
-      "로봇",
-      "영점",
-      "모션",
-      "편집기",
-      "센서",
-      "서보",
-      "서보 점검",
-      "펌웨어",
-      "로그",
-      "교실",
-    ]);
-    expect(await page.getByRole("navigation", { name: "화면" }).isVisible()).toBe(true);
+    await expect.poll(() => lang(page)).toBe("ko");
+    await expect
+      .poll(() => navLabels(page))
+      .toEqual(["로봇", "영점", "모션", "편집기", "센서", "서보", "서보 점검", "펌웨어", "로그", "교실"]);
+    await expect.poll(() => page.getByRole("navigation", { name: "화면" }).isVisible()).toBe(true);
     await expect.poll(() => page.title()).toBe("로봇 · RBC 패널");
-    expect(squash(await page.getByTestId("panel-version").textContent())).toMatch(
-      /^RBC 패널 · 버전 \d+\.\d+\.\d+/,
-    );
-    expect(await page.getByLabel("언어 / Language").inputValue()).toBe("ko");
+    await expectText(page.getByTestId("panel-version"), /^RBC 패널 · 버전 \d+\.\d+\.\d+/);
+    await expect.poll(() => page.getByLabel("언어 / Language").inputValue()).toBe("ko");
 
     await connectCable(page);
     const card = page.getByTestId("device-card");
-    expect(await card.getByRole("heading", { level: 1 }).textContent()).toBe("로봇");
+    await expectText(card.getByRole("heading", { level: 1 }), "로봇");
     await card.getByRole("button", { name: "다시 읽기" }).waitFor();
     await card.getByRole("button", { name: "연결 끊기" }).waitFor();
-    expect(await card.locator("dt").allTextContents()).toEqual([
-      "연결된 로봇",
-      "펌웨어",
-      "시리얼 번호",
-      "플랫폼",
-      "오류 코드",
-    ]);
-    expect(squash(await page.getByTestId("error-code").textContent())).toBe("오류 없음");
-    expect(squash(await page.getByTestId("memory-motion-text").textContent())).toBe(
-      "24,576바이트 중 0바이트 사용",
-    );
-    expect(squash(await page.getByTestId("memory-action-note").textContent())).toBe(
-      "저장된 것이 없어요 (8,192바이트 남음).",
-    );
-    expect(squash(await card.getByText(/에 로봇에서 읽었어요\.$/).textContent())).toMatch(
-      /^\d\d:\d\d:\d\d에 로봇에서 읽었어요\.$/,
-    );
-    expect(await card.getByRole("heading", { level: 2 }).textContent()).toBe("로봇의 메모리");
+    await expect
+      .poll(() => card.locator("dt").allTextContents())
+      .toEqual(["연결된 로봇", "펌웨어", "시리얼 번호", "플랫폼", "오류 코드"]);
+    await expectText(page.getByTestId("error-code"), "오류 없음");
+    await expectText(page.getByTestId("memory-motion-text"), "24,576바이트 중 0바이트 사용");
+    await expectText(page.getByTestId("memory-action-note"), "저장된 것이 없어요 (8,192바이트 남음).");
+    await expectText(card.getByText(/에 로봇에서 읽었어요\.$/), /^\d\d:\d\d:\d\d에 로봇에서 읽었어요\.$/);
+    await expectText(card.getByRole("heading", { level: 2 }), "로봇의 메모리");
     expect(await keysShown(page)).toEqual([]);
     await context.close();
   });
@@ -81,42 +59,42 @@ describe("the panel in Korean", () => {
 
     await page.getByLabel("언어 / Language").selectOption("en");
     await expect.poll(() => lang(page)).toBe("en");
-    expect(await navLabels(page)).toEqual([
-      "Robot",
-      "Zeros",
-      "Motions",
-      "Editor",
-      "Sensors",
-      "Servos",
-      "Servo check",
-      "Firmware",
-      "Log",
-      "Class",
-    ]);
-    expect(await page.getByTestId("device-card").getByRole("heading", { level: 1 }).textContent()).toBe(
-      "Robot",
-    );
-    expect(squash(await page.getByTestId("memory-motion-text").textContent())).toBe("0 of 24,576 bytes used");
-    expect(squash(await page.getByTestId("error-code").textContent())).toBe("No error");
+    await expect
+      .poll(() => navLabels(page))
+      .toEqual([
+        "Robot",
+        "Zeros",
+        "Motions",
+        "Editor",
+        "Sensors",
+        "Servos",
+        "Servo check",
+        "Firmware",
+        "Log",
+        "Class",
+      ]);
+    await expectText(page.getByTestId("device-card").getByRole("heading", { level: 1 }), "Robot");
+    await expectText(page.getByTestId("memory-motion-text"), "0 of 24,576 bytes used");
+    await expectText(page.getByTestId("error-code"), "No error");
     await expect.poll(() => page.title()).toBe("Robot · RBC Panel");
     expect(await keysShown(page)).toEqual([]);
 
     // The choice is kept: a Korean browser, but English after a reload.
     await page.reload({ waitUntil: "domcontentloaded" });
     await page.getByTestId("connect-card").waitFor();
-    expect(await lang(page)).toBe("en");
-    expect((await navLabels(page))[0]).toBe("Robot");
+    await expect.poll(() => lang(page)).toBe("en");
+    await expect.poll(async () => (await navLabels(page))[0]).toBe("Robot");
 
     // And back to Korean from the focused switch.
     const select = page.getByLabel("Language / 언어");
     await select.focus();
-    expect(await page.evaluate(() => document.activeElement?.id)).toBe("language-switch");
+    await expect.poll(() => page.evaluate(() => document.activeElement?.id)).toBe("language-switch");
     await select.selectOption("ko");
     await expect.poll(() => lang(page)).toBe("ko");
-    expect((await navLabels(page))[0]).toBe("로봇");
+    await expect.poll(async () => (await navLabels(page))[0]).toBe("로봇");
     await page.reload({ waitUntil: "domcontentloaded" });
     await page.getByTestId("connect-card").waitFor();
-    expect(await lang(page)).toBe("ko");
+    await expect.poll(() => lang(page)).toBe("ko");
     expect(await page.evaluate(() => localStorage.getItem("rbc-panel-locale"))).toBe("ko");
     await context.close();
   });
@@ -124,10 +102,10 @@ describe("the panel in Korean", () => {
   it("is reached with Tab from the navigation", async () => {
     const { page, context } = await newLocalePage(app, "en-US");
     await page.getByTestId("connect-card").waitFor();
-    expect(await lang(page)).toBe("en");
+    await expect.poll(() => lang(page)).toBe("en");
     await page.locator(".side-nav a").last().focus();
     await page.keyboard.press("Tab");
-    expect(await page.evaluate(() => document.activeElement?.id)).toBe("language-switch");
+    await expect.poll(() => page.evaluate(() => document.activeElement?.id)).toBe("language-switch");
     await context.close();
   });
 });

@@ -9,32 +9,19 @@
  */
 import { createRequire } from "node:module";
 import type { BrowserContext, Locator, Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import {
-  type AppHarness,
-  buildOnce,
-  cspViolations,
-  openMotions,
-  squash,
-  startHarness,
-  watchPage,
-} from "./harness.ts";
+import { beforeAll, describe, expect, it } from "vitest";
+import { buildOnce, cspViolations, expectText, openMotions, useApp, watchPage } from "./harness.ts";
 import { showTab } from "./motion-fixtures.ts";
 import "./rbc-test-globals.ts";
 
 const require = createRequire(import.meta.url);
 const AXE_PATH = require.resolve("axe-core/axe.min.js");
 
-let app: AppHarness;
+const app = useApp();
 let fakeSerial: string;
 
 beforeAll(async () => {
-  app = await startHarness();
   ({ fakeSerial } = await buildOnce());
-});
-
-afterAll(async () => {
-  await app?.close();
 });
 
 /** docs/protocol.md §5: the HUNO basic posture, where the simulated servos start and where every built-in ends. */
@@ -66,14 +53,14 @@ async function openRunTab(page: Page): Promise<void> {
 /** Shows the robot in 3D in the current view and waits for its first picture. */
 async function show3d(page: Page): Promise<Locator> {
   const toggle = page.getByTestId("live-robot-toggle");
-  expect(await toggle.getAttribute("aria-expanded")).toBe("false");
-  expect(squash(await toggle.textContent())).toBe("Show the robot in 3D");
+  await expect.poll(() => toggle.getAttribute("aria-expanded")).toBe("false");
+  await expectText(toggle, "Show the robot in 3D");
   await toggle.click();
   const view = page.getByTestId("live-robot-view");
   await page.locator(`[data-testid="live-robot-view"][data-state="ready"]`).waitFor();
   await expect.poll(() => attr(view, "data-frames").then(Number)).toBeGreaterThan(0);
-  expect(await toggle.getAttribute("aria-expanded")).toBe("true");
-  expect(squash(await toggle.textContent())).toBe("Hide the robot in 3D");
+  await expect.poll(() => toggle.getAttribute("aria-expanded")).toBe("true");
+  await expectText(toggle, "Hide the robot in 3D");
   return view;
 }
 
@@ -155,11 +142,11 @@ describe("the robot in 3D, on the demo robot", () => {
 
     const view = await show3d(page);
     expect(requests).toHaveLength(1);
-    expect(squash(await page.getByTestId("live-robot-caption").textContent())).toBe("Demo robot, live");
+    await expectText(page.getByTestId("live-robot-caption"), "Demo robot, live");
     const canvas = view.locator("canvas.robot3d-canvas");
-    expect(await canvas.getAttribute("role")).toBe("img");
-    expect(await canvas.getAttribute("aria-label")).toContain("demo robot, live");
-    expect(await attr(view, "data-pose")).toBe(BASIC);
+    await expect.poll(() => canvas.getAttribute("role")).toBe("img");
+    await expect.poll(() => canvas.getAttribute("aria-label")).toContain("demo robot, live");
+    await expect.poll(() => attr(view, "data-pose")).toBe(BASIC);
 
     // Motion 7 first (the robot accepts nothing else after switching on); the servos stay in the posture.
     await runMotion(page, 7, "Basic posture", true);
@@ -182,15 +169,15 @@ describe("the robot in 3D, on the demo robot", () => {
 
     // The choice is kept for the connection: another tab and back, still shown.
     await showTab(page, "Sounds");
-    expect(await page.getByTestId("live-robot").count()).toBe(0);
+    await expect.poll(() => page.getByTestId("live-robot").count()).toBe(0);
     await showTab(page, "Run");
     await page.locator(`[data-testid="live-robot-view"][data-state="ready"]`).waitFor();
-    expect(await page.getByTestId("live-robot-toggle").getAttribute("aria-expanded")).toBe("true");
+    await expect.poll(() => page.getByTestId("live-robot-toggle").getAttribute("aria-expanded")).toBe("true");
 
     // Hidden again on request: the picture and its WebGL context go.
     await page.getByTestId("live-robot-toggle").click();
     await page.getByTestId("live-robot-view").waitFor({ state: "detached" });
-    expect(await card.locator("canvas").count()).toBe(0);
+    await expect.poll(() => card.locator("canvas").count()).toBe(0);
 
     expect(seen.errors).toEqual([]);
     expect(seen.foreignRequests).toEqual([]);
@@ -209,8 +196,8 @@ describe("the robot in 3D, on the demo robot", () => {
     expect(await axeViolations(page)).toEqual([]);
 
     const view = await show3d(page);
-    expect(squash(await page.getByTestId("live-robot-caption").textContent())).toBe("Demo robot, live");
-    expect(await attr(view, "data-pose")).toBe(BASIC);
+    await expectText(page.getByTestId("live-robot-caption"), "Demo robot, live");
+    await expect.poll(() => attr(view, "data-pose")).toBe(BASIC);
     expect(await axeViolations(page)).toEqual([]);
 
     await page.getByRole("button", { name: "I understand: the robot is supported" }).click();
@@ -222,12 +209,14 @@ describe("the robot in 3D, on the demo robot", () => {
     await page.locator("#servo-10").press("Enter");
     const moved = POSTURE.map((p, id) => (id === 10 ? 140 : p)).join(" ");
     await expect.poll(() => attr(view, "data-pose")).toBe(moved);
-    expect(Number(await attr(view, "data-frames"))).toBeGreaterThan(frames);
+    await expect.poll(() => attr(view, "data-frames").then(Number)).toBeGreaterThan(frames);
     expect((await page.evaluate(() => window.__rbcDemoSim?.servoPositions()))?.[10]).toBe(140);
 
     // The Run tab has its own card, still collapsed (each view remembers its own choice).
     await openRunTab(page);
-    expect(await page.getByTestId("live-robot-toggle").getAttribute("aria-expanded")).toBe("false");
+    await expect
+      .poll(() => page.getByTestId("live-robot-toggle").getAttribute("aria-expanded"))
+      .toBe("false");
     await show3d(page);
     expect(await axeViolations(page)).toEqual([]);
     await context.close();
@@ -242,14 +231,16 @@ describe("the robot in 3D, on a robot on a cable", () => {
     const view = await show3d(page);
     const caption = page.getByTestId("live-robot-caption");
     // Nothing read yet: the basic posture, and the panel says that is not where the robot is.
-    expect(squash(await caption.textContent())).toBe("No positions read yet: drawn in the basic posture");
-    expect(squash(await page.getByTestId("live-robot-unread").textContent())).toContain(
+    await expectText(caption, "No positions read yet: drawn in the basic posture");
+    await expectText(
+      page.getByTestId("live-robot-unread"),
       "every joint is drawn at the basic posture, not where the robot is",
+      { contains: true },
     );
-    expect(await attr(view, "data-pose")).toBe(BASIC);
-    expect(squash(await page.getByTestId("live-robot").textContent())).toContain(
-      "during a motion the robot's servos cannot be read",
-    );
+    await expect.poll(() => attr(view, "data-pose")).toBe(BASIC);
+    await expectText(page.getByTestId("live-robot"), "during a motion the robot's servos cannot be read", {
+      contains: true,
+    });
 
     // The Servos view reads all 16 and moves servo 3 to 100: the robot's reply is what is drawn.
     await page.getByRole("link", { name: "Servos" }).click();
@@ -263,11 +254,11 @@ describe("the robot in 3D, on a robot on a cable", () => {
     const servosView = await show3d(page);
     const read = POSTURE.map((p, id) => (id === 3 ? 100 : p)).join(" ");
     await expect.poll(() => attr(servosView, "data-pose")).toBe(read);
-    expect(squash(await caption.textContent())).toMatch(/^Last read positions, \d\d:\d\d:\d\d$/);
-    expect(await page.getByTestId("live-robot-unread").count()).toBe(0);
-    expect(await servosView.locator("canvas").getAttribute("aria-label")).toMatch(
-      /^3D view of the robot at its last read positions, \d\d:\d\d:\d\d; the servo table/,
-    );
+    await expectText(caption, /^Last read positions, \d\d:\d\d:\d\d$/);
+    await expect.poll(() => page.getByTestId("live-robot-unread").count()).toBe(0);
+    await expect
+      .poll(() => servosView.locator("canvas").getAttribute("aria-label"))
+      .toMatch(/^3D view of the robot at its last read positions, \d\d:\d\d:\d\d; the servo table/);
 
     // Motion 7 moves servo 3 back to 88 on the robot, which cannot say so while it plays: the picture keeps
     // the positions read, and says why.
@@ -279,12 +270,12 @@ describe("the robot in 3D, on a robot on a cable", () => {
     await page.locator("#confirm-move").click();
     const during = page.getByTestId("live-robot-motion");
     await during.waitFor();
-    expect(squash(await during.textContent())).toContain("its servos cannot be read");
+    await expectText(during, "its servos cannot be read", { contains: true });
     await page.getByText("Motion 7 (Basic posture) finished.").first().waitFor({ timeout: 15_000 });
     expect((await page.evaluate(() => window.__rbcTest?.sim.servos.map((s) => s.position)))?.[3]).toBe(88);
-    expect(await attr(runView, "data-pose")).toBe(read);
+    await expect.poll(() => attr(runView, "data-pose")).toBe(read);
     await during.waitFor({ state: "detached" });
-    expect(squash(await caption.textContent())).toMatch(/^Last read positions, \d\d:\d\d:\d\d$/);
+    await expectText(caption, /^Last read positions, \d\d:\d\d:\d\d$/);
     await context.close();
   });
 });

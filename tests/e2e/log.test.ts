@@ -1,15 +1,7 @@
 import { readFileSync } from "node:fs";
 import { createRequire } from "node:module";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import {
-  type AppHarness,
-  connectRobot,
-  cspViolations,
-  FAST,
-  squash,
-  startHarness,
-  watchPage,
-} from "./harness.ts";
+import { describe, expect, it } from "vitest";
+import { connectRobot, cspViolations, expectText, FAST, squash, useApp, watchPage } from "./harness.ts";
 import "./rbc-test-globals.ts";
 import type { Page } from "playwright-core";
 import {
@@ -24,15 +16,7 @@ import {
 
 /** The packet log view: coalesced garbage, raw bytes, and a scroll area the keyboard can reach (issue #11 item 11). */
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 const AXE_SOURCE = readFileSync(createRequire(import.meta.url).resolve("axe-core/axe.min.js"), "utf8");
 
@@ -57,19 +41,20 @@ describe("packet log view", () => {
     const log = page.getByTestId("log-card");
     const discards = log.locator("tr.log-discard");
     await discards.first().waitFor();
-    expect(await discards.count()).toBe(1);
-    const row = squash(await discards.first().textContent());
-    expect(row).toContain("(3,016 bytes)");
-    expect(row).toContain("1 frame too long for its type, stray bytes");
-    expect(row).toContain("01 0E 1B 28"); // the first stray bytes as they arrived
-    expect(squash(await log.textContent())).toContain("FF FF AA 55 AA 55 37 BA 12 00 00 00 00 01 01 01");
+    await expect.poll(() => discards.count()).toBe(1);
+    await expectText(discards.first(), "(3,016 bytes)", { contains: true });
+    await expectText(discards.first(), "1 frame too long for its type, stray bytes", { contains: true });
+    await expectText(discards.first(), "01 0E 1B 28", { contains: true }); // the first stray bytes as they arrived
+    await expectText(log, "FF FF AA 55 AA 55 37 BA 12 00 00 00 00 01 01 01", { contains: true });
 
     // The scroll area is a named region in the tab order, and the keyboard scrolls it.
     const region = page.getByRole("region", { name: "Packets, newest first" });
-    expect(await region.getAttribute("tabindex")).toBe("0");
+    await expect.poll(() => region.getAttribute("tabindex")).toBe("0");
     await region.focus();
-    expect(await page.evaluate(() => document.activeElement?.getAttribute("data-testid"))).toBe("log-scroll");
-    expect(await region.evaluate((el) => el.scrollHeight > el.clientHeight)).toBe(true);
+    await expect
+      .poll(() => page.evaluate(() => document.activeElement?.getAttribute("data-testid")))
+      .toBe("log-scroll");
+    await expect.poll(() => region.evaluate((el) => el.scrollHeight > el.clientHeight)).toBe(true);
     await page.keyboard.press("End");
     await expect.poll(() => region.evaluate((el) => el.scrollTop)).toBeGreaterThan(0);
 
@@ -115,14 +100,10 @@ describe("packet log view", () => {
     await page.getByRole("button", { name: "Resume" }).click();
     await expect.poll(rows).toBe(100);
     const all = await entries();
-    expect(squash(await log.getByTestId("log-page").textContent())).toBe(
-      `Rows 1–100 of ${all}, newest first`,
-    );
+    await expectText(log.getByTestId("log-page"), `Rows 1–100 of ${all}, newest first`);
     const newestTime = await log.locator("tbody tr").first().locator(".log-time").textContent();
     await page.getByRole("button", { name: "Older" }).click();
-    await expect
-      .poll(() => log.getByTestId("log-page").textContent().then(squash))
-      .toBe(`Rows 101–${Math.min(200, all)} of ${all}, newest first`);
+    await expectText(log.getByTestId("log-page"), `Rows 101–${Math.min(200, all)} of ${all}, newest first`);
     await page.getByRole("button", { name: "Newer" }).click();
     await expect
       .poll(() => log.locator("tbody tr").first().locator(".log-time").textContent())
@@ -169,14 +150,16 @@ describe("in Korean (ko-KR)", () => {
       await page.getByRole("link", { name: "로그", exact: true }).click();
       const card = page.getByTestId("log-card");
       await card.waitFor();
-      expect(await card.getByRole("heading", { level: 1 }).textContent()).toBe("패킷 로그");
-      expect(squash(await card.locator(".empty").textContent())).toBe(
+      await expectText(card.getByRole("heading", { level: 1 }), "패킷 로그");
+      await expectText(
+        card.locator(".empty"),
         "아직 패킷이 없어요. 로봇(또는 데모 로봇)을 연결하면 주고받는 모든 패킷이 여기에 나와요.",
       );
-      expect(squash(await page.getByTestId("log-count").textContent())).toBe(
+      await expectText(
+        page.getByTestId("log-count"),
         "항목 0개 (최근 항목 5,000개까지, 바이트는 최대 1,024KB까지 보관해요). 연달아 버린 바이트는 한 항목으로 묶어요.",
       );
-      expect(await card.getByRole("button", { name: "지우기" }).isDisabled()).toBe(true);
+      await expect.poll(() => card.getByRole("button", { name: "지우기" }).isDisabled()).toBe(true);
       await context.close();
     });
 
@@ -196,24 +179,23 @@ describe("in Korean (ko-KR)", () => {
         await page.getByRole("link", { name: "로그", exact: true }).click();
         const card = page.getByTestId("log-card");
         await card.locator("tbody tr").first().waitFor();
-        expect(await lang(page)).toBe("ko");
+        await expect.poll(() => lang(page)).toBe("ko");
 
-        expect(await card.getByRole("heading", { level: 1 }).textContent()).toBe("패킷 로그");
+        await expectText(card.getByRole("heading", { level: 1 }), "패킷 로그");
         for (const name of ["일시 정지", "지우기", "복사", "다운로드 (.txt)"]) {
           await card.getByRole("button", { name, exact: true }).waitFor();
         }
-        expect(await card.locator("thead th").allTextContents()).toEqual([
-          "시간",
-          "방향",
-          "종류",
-          "바이트 (16진수)",
-        ]);
+        await expect
+          .poll(() => card.locator("thead th").allTextContents())
+          .toEqual(["시간", "방향", "종류", "바이트 (16진수)"]);
+        await expect.poll(() => entries(page)).toBeGreaterThan(100);
         const total = await entries(page);
-        expect(total).toBeGreaterThan(100);
-        expect(squash(await page.getByTestId("log-count").textContent())).toBe(
+        await expectText(
+          page.getByTestId("log-count"),
           `항목 ${total.toLocaleString("ko")}개 (최근 항목 5,000개까지, 바이트는 최대 1,024KB까지 보관해요). 연달아 버린 바이트는 한 항목으로 묶어요. 한 쪽에 100개씩 보여요. '복사'와 '다운로드'는 전체를 가져가요.`,
         );
-        expect(squash(await page.getByTestId("log-page").textContent())).toBe(
+        await expectText(
+          page.getByTestId("log-page"),
           `${total.toLocaleString("ko")}개 중 1–100번째 (최신순)`,
         );
         const pages = page.getByRole("navigation", { name: "로그 쪽" });
@@ -222,27 +204,32 @@ describe("in Korean (ko-KR)", () => {
         await page.getByRole("region", { name: "패킷 (최신순)" }).waitFor();
 
         // The view's words are Korean; the packets' names come from the device, in English, marked so.
-        const directions = await card.locator("tbody .log-dir").allTextContents();
-        expect(new Set(directions.map(squash))).toEqual(new Set(["→ 보냄", "← 받음"]));
+        const directions = async () =>
+          new Set((await card.locator("tbody .log-dir").allTextContents()).map(squash));
+        await expect.poll(directions).toEqual(new Set(["→ 보냄", "← 받음"]));
         const named = card.locator("tbody tr.log-packet .log-name span[lang='en']").first();
-        expect(await named.textContent()).toMatch(/^[A-Z][A-Za-z ()0-9-]+$/);
+        await expectText(named, /^[A-Z][A-Za-z ()0-9-]+$/);
         await expectPageOk(page, "the Log view", { shot: `log-ko-${size(viewport)}` });
 
         // The run of discarded bytes is on an older page.
         await pages.getByRole("button", { name: "더 이전" }).click();
         const discard = card.locator("tr.log-discard");
         await discard.first().waitFor();
-        const row = squash(await discard.first().textContent());
-        expect(row).toContain("버린 바이트 종류에 비해 너무 긴 프레임 1개, 프레임이 아닌 바이트");
-        expect(row).toContain("(3,016바이트)");
-        expect(row).toContain("01 0E 1B 28");
+        await expectText(
+          discard.first(),
+          "버린 바이트 종류에 비해 너무 긴 프레임 1개, 프레임이 아닌 바이트",
+          { contains: true },
+        );
+        await expectText(discard.first(), "(3,016바이트)", { contains: true });
+        await expectText(discard.first(), "01 0E 1B 28", { contains: true });
 
         // Paused: the button says what it will do, and the line says what happens meanwhile.
         await card.getByRole("button", { name: "일시 정지", exact: true }).click();
         const resume = card.getByRole("button", { name: "계속", exact: true });
         await resume.waitFor();
-        expect(await resume.getAttribute("aria-pressed")).toBe("true");
-        expect(squash(await page.getByTestId("log-count").textContent())).toMatch(
+        await expect.poll(() => resume.getAttribute("aria-pressed")).toBe("true");
+        await expectText(
+          page.getByTestId("log-count"),
           /일시 정지됨: 새 패킷은 계속 기록하지만 화면에는 보여 주지 않아요\.$/,
         );
         await expectPageOk(page, "the Log view, paused", { axe: false });

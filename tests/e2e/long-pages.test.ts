@@ -1,20 +1,12 @@
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { type AppHarness, connectRobot, openMotions, startHarness } from "./harness.ts";
+import { describe, expect, it } from "vitest";
+import { connectRobot, openMotions, useApp } from "./harness.ts";
 import "./rbc-test-globals.ts";
 
 // Issue 21 item 7: long pages. With long-walk.rbm (284 scenes) open, Motions was 10,592 px tall; Zeros put Write
 // 1,355 px down the page. Each task fits one screen at 1280×800.
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 const VIEWPORT = { width: 1280, height: 800 };
 
@@ -38,8 +30,7 @@ describe("long pages fit a screen at 1280×800", () => {
     await page.getByTestId("examples").locator("summary").click();
     await page.locator('[data-example="long-walk.rbm"]').click();
     await page.getByTestId("scene-table-box").waitFor();
-    const rows = await page.locator('[data-testid="scene-table-box"] tbody tr').count();
-    expect(rows).toBe(284);
+    await expect.poll(() => page.locator('[data-testid="scene-table-box"] tbody tr').count()).toBe(284);
 
     const box = await boxOf(page, '[data-testid="scene-table-box"]');
     // 24rem: the header and about twelve rows; the rest scroll inside.
@@ -74,13 +65,13 @@ describe("long pages fit a screen at 1280×800", () => {
     expect(await pageHeight(page)).toBeLessThanOrEqual(VIEWPORT.height + 200);
 
     await page.locator("#zero-15").fill(String(Number(await page.locator("#zero-15").inputValue()) + 1));
+    // Write moves beside the changed value on the panel's next render: polled, then looked at.
+    await expect.poll(() => page.getByTestId("write-zeros").isEnabled()).toBe(true);
     await page.locator("#zero-15").scrollIntoViewIfNeeded();
-    const field = await boxOf(page, "#zero-15");
-    const write = await boxOf(page, '[data-testid="write-zeros"]');
-    expect(await page.getByTestId("write-zeros").isEnabled()).toBe(true);
-    for (const b of [field, write]) {
-      expect(b.top).toBeGreaterThanOrEqual(0);
-      expect(b.bottom).toBeLessThanOrEqual(VIEWPORT.height);
+    for (const selector of ["#zero-15", '[data-testid="write-zeros"]']) {
+      await expect
+        .poll(() => boxOf(page, selector), { message: selector })
+        .toSatisfy((b: { top: number; bottom: number }) => b.top >= 0 && b.bottom <= VIEWPORT.height);
     }
     await context.close();
   });

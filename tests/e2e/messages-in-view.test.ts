@@ -1,21 +1,13 @@
 import type { Locator, Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { type AppHarness, connectRobot, squash, startHarness } from "./harness.ts";
+import { describe, expect, it } from "vitest";
+import { connectRobot, expectText, squash, useApp } from "./harness.ts";
 import { axeProblems } from "./i18n-checks.ts";
 import "./rbc-test-globals.ts";
 
 // Issue 21 items 6 and 7: messages where the eyes are, worded in the language of the moment; the Servos task on
 // one screen at 1280×800.
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 const SIZES = [
   { width: 1280, height: 800 },
@@ -31,14 +23,18 @@ const boxOf = (target: Locator) =>
     return { top: r.top, bottom: r.bottom, left: r.left, right: r.right, height: r.height };
   });
 
-/** Whether `target` is wholly inside the window (and has a size). */
+/** Waits until `target` is wholly inside the window (and has a size). */
 async function expectInWindow(target: Locator, size: Size): Promise<void> {
-  const box = await boxOf(target);
-  expect(box.height).toBeGreaterThan(0);
-  expect(box.top).toBeGreaterThanOrEqual(0);
-  expect(box.bottom).toBeLessThanOrEqual(size.height);
-  expect(box.left).toBeGreaterThanOrEqual(0);
-  expect(box.right).toBeLessThanOrEqual(size.width);
+  await expect
+    .poll(() => boxOf(target))
+    .toSatisfy(
+      (box: Awaited<ReturnType<typeof boxOf>>) =>
+        box.height > 0 &&
+        box.top >= 0 &&
+        box.bottom <= size.height &&
+        box.left >= 0 &&
+        box.right <= size.width,
+    );
 }
 
 const scrollY = (page: Page) => page.evaluate(() => Math.round(window.scrollY));
@@ -48,7 +44,7 @@ const scrollY = (page: Page) => page.evaluate(() => Math.round(window.scrollY));
  * the browser keeps the content in view where it was while the sticky bar above it gets taller.)
  */
 async function expectStillAt(page: Page, bottom: number): Promise<void> {
-  expect(await scrollY(page)).toBeGreaterThanOrEqual(bottom - 1);
+  await expect.poll(() => scrollY(page)).toBeGreaterThanOrEqual(bottom - 1);
 }
 
 async function scrollToBottom(page: Page): Promise<number> {
@@ -74,10 +70,10 @@ describe("Stop's and Limp's results are seen and announced however far down the 
       const result = banner.locator(".banner-notice");
       await result.filter({ hasText: "it is idle, nothing to stop" }).waitFor();
       await expectInWindow(result, size);
-      expect(await banner.getAttribute("aria-live")).toMatch(/^(polite|assertive)$/);
+      await expect.poll(() => banner.getAttribute("aria-live")).toMatch(/^(polite|assertive)$/);
       // Beside Stop, not over it: the result sits below the Stop and Limp buttons.
       const stop = await boxOf(page.getByRole("button", { name: "Stop", exact: true }));
-      expect((await boxOf(result)).top).toBeGreaterThanOrEqual(stop.bottom);
+      await expect.poll(async () => (await boxOf(result)).top).toBeGreaterThanOrEqual(stop.bottom);
       await expectStillAt(page, bottom);
       expect(await axeProblems(page, { within: ".top-bar" })).toEqual([]);
 
@@ -97,7 +93,7 @@ describe("Stop's and Limp's results are seen and announced however far down the 
       await result.filter({ hasText: "all 16 servos confirmed passive" }).waitFor();
       await expectInWindow(result, size);
       await expectStillAt(page, bottom);
-      expect(await banner.getAttribute("aria-live")).toMatch(/^(polite|assertive)$/);
+      await expect.poll(() => banner.getAttribute("aria-live")).toMatch(/^(polite|assertive)$/);
       expect(await axeProblems(page, { within: ".top-bar" })).toEqual([]);
       await context.close();
     });
@@ -118,16 +114,16 @@ describe("messages made before a language switch follow it", () => {
     await page.locator("#servo-12").press("Tab");
     const refusal = page.getByTestId("servo-refused-12");
     await refusal.waitFor();
+    await expectText(refusal, /300/);
+    await expectText(refusal, /1.198/);
     const refusalEn = squash(await refusal.textContent());
-    expect(refusalEn).toMatch(/300/);
-    expect(refusalEn).toMatch(/1.198/);
 
     await switchLanguage(page, "ko");
     await page.getByRole("heading", { level: 1, name: "서보" }).waitFor();
+    await expectText(refusal, /[가-힣]/);
     const refusalKo = squash(await refusal.textContent());
     expect(refusalKo).not.toBe(refusalEn);
-    expect(refusalKo).toMatch(/[가-힣]/);
-    expect(squash(await result.textContent())).toBe(squash(await refusal.textContent()));
+    await expectText(result, refusalKo);
 
     // Stop ends servo control; its words, and their technical detail, follow the next switch.
     await page.getByRole("button", { name: "정지", exact: true }).click();
@@ -136,7 +132,7 @@ describe("messages made before a language switch follow it", () => {
     await switchLanguage(page, "en");
     await banner.filter({ hasText: "Servo control ended" }).waitFor();
     expect(squash(await banner.textContent())).not.toMatch(/[가-힣]/);
-    expect(squash(await refusal.textContent())).toBe(refusalEn);
+    await expectText(refusal, refusalEn);
     await context.close();
   });
 
@@ -154,10 +150,10 @@ describe("messages made before a language switch follow it", () => {
 
     await switchLanguage(page, "ko");
     await restored.filter({ hasText: "임시 저장본을 복원했어요" }).waitFor();
-    expect(squash(await restored.textContent())).toBe(`임시 저장본을 복원했어요: Kept, ${time} 저장.`);
+    await expectText(restored, `임시 저장본을 복원했어요: Kept, ${time} 저장.`);
     await switchLanguage(page, "en");
     await restored.filter({ hasText: "Draft restored" }).waitFor();
-    expect(squash(await restored.textContent())).toBe(`Draft restored: Kept, saved ${time}.`);
+    await expectText(restored, `Draft restored: Kept, saved ${time}.`);
     await context.close();
   });
 });
@@ -174,7 +170,9 @@ describe("Servos: the whole task on one screen at 1280×800", () => {
 
     // The measure: the page is at most one screen and a footer line (it was 1,664 px, then 2,081 px), and every
     // control of the task is inside the window without scrolling the page.
-    expect(await page.evaluate(() => document.documentElement.scrollHeight)).toBeLessThanOrEqual(900);
+    await expect
+      .poll(() => page.evaluate(() => document.documentElement.scrollHeight))
+      .toBeLessThanOrEqual(900);
     expect(await scrollY(page)).toBe(0);
     const box = page.getByTestId("servo-table-box");
     for (const control of [
@@ -187,9 +185,12 @@ describe("Servos: the whole task on one screen at 1280×800", () => {
       await expectInWindow(control, size);
     }
     // The rows scroll inside the box, and its header stays at its top.
-    const inside = await box.evaluate((el) => ({ scroll: el.scrollHeight, client: el.clientHeight }));
-    expect(inside.scroll).toBeGreaterThan(inside.client);
-    expect(inside.client).toBeGreaterThanOrEqual(8 * 30);
+    await expect
+      .poll(() => box.evaluate((el) => ({ scroll: el.scrollHeight, client: el.clientHeight })))
+      .toSatisfy(
+        (inside: { scroll: number; client: number }) =>
+          inside.scroll > inside.client && inside.client >= 8 * 30,
+      );
 
     // The keyboard reaches the last servo: the box scrolls it into view, the page does not move.
     await page.locator("#servo-15").focus();
@@ -204,11 +205,11 @@ describe("Servos: the whole task on one screen at 1280×800", () => {
     // Keyboard order: the last row's torque, then Basic posture's speed and button.
     await page.getByRole("combobox", { name: /Torque of Right elbow/ }).focus();
     await page.keyboard.press("Tab");
-    expect(
-      await page.evaluate(() =>
-        document.activeElement?.closest("[data-testid]")?.getAttribute("data-testid"),
-      ),
-    ).toBe("posture-card");
+    await expect
+      .poll(() =>
+        page.evaluate(() => document.activeElement?.closest("[data-testid]")?.getAttribute("data-testid")),
+      )
+      .toBe("posture-card");
     expect(await axeProblems(page)).toEqual([]);
     await context.close();
   });

@@ -1,8 +1,8 @@
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { describe, expect, it } from "vitest";
 import { parseRbm } from "../../src/protocol/rbm.ts";
 import { validateRbm } from "../../src/protocol/rbm-validate.ts";
-import { type AppHarness, FAST, openMotions, squash, startHarness } from "./harness.ts";
+import { expectText, FAST, openMotions, useApp } from "./harness.ts";
 import {
   exampleText,
   longMotion,
@@ -18,15 +18,7 @@ import "./rbc-test-globals.ts";
 // Issue #11: the Motions view in tabs that fit a screen, progress and results where the action started,
 // labels that never overflow, warnings grouped by kind, memory shown as used.
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 const TABS = ["Files", "Memory", "Run", "Sounds"] as const;
 const PHONE = { width: 390, height: 844 };
@@ -54,6 +46,10 @@ async function placement(page: Page, selector: string) {
     return { top: r.top, bottom: r.bottom, viewport: window.innerHeight };
   }, selector);
 }
+
+/** The placement's element lies wholly inside the viewport. */
+const inView = (p: Awaited<ReturnType<typeof placement>>) =>
+  p !== undefined && p.top >= 0 && p.bottom <= p.viewport;
 
 /** Buttons (and tabs) whose label is wider than the button, as "label (scroll > client)". */
 async function overflowingButtons(page: Page): Promise<string[]> {
@@ -87,14 +83,14 @@ describe("motions view layout", () => {
     // The tab list follows the tabs pattern: one tab in the Tab order, arrows move and select.
     await showTab(page, "Files");
     const files = page.getByRole("tab", { name: "Files" });
-    expect(await files.getAttribute("aria-selected")).toBe("true");
-    expect(await files.getAttribute("aria-controls")).toBe("motions-panel-files");
-    expect(await page.getByRole("tab", { name: "Run" }).getAttribute("tabindex")).toBe("-1");
+    await expect.poll(() => files.getAttribute("aria-selected")).toBe("true");
+    await expect.poll(() => files.getAttribute("aria-controls")).toBe("motions-panel-files");
+    await expect.poll(() => page.getByRole("tab", { name: "Run" }).getAttribute("tabindex")).toBe("-1");
     await files.focus();
     await page.keyboard.press("ArrowRight");
     await page.locator("#motions-panel-uploads").waitFor();
     const memory = page.getByRole("tab", { name: "Memory" });
-    expect(await memory.getAttribute("aria-selected")).toBe("true");
+    await expect.poll(() => memory.getAttribute("aria-selected")).toBe("true");
     await expect.poll(() => page.evaluate(() => document.activeElement?.id)).toBe("motions-tab-uploads");
     await page.keyboard.press("End");
     await page.locator("#motions-panel-sounds").waitFor();
@@ -116,18 +112,17 @@ describe("motions view layout", () => {
     const progress = card.getByTestId("upload-progress");
     await progress.waitFor();
     // In the card, under its button, wholly inside the viewport: bar, figures and Cancel.
-    const where = await placement(page, '[data-testid="motion-file"] [data-testid="upload-progress"]');
-    expect(where).toBeDefined();
-    expect(where!.top).toBeGreaterThanOrEqual(0);
-    expect(where!.bottom).toBeLessThanOrEqual(where!.viewport);
-    expect(await progress.locator("progress").count()).toBe(1);
+    await expect
+      .poll(() => placement(page, '[data-testid="motion-file"] [data-testid="upload-progress"]'))
+      .toSatisfy(inView);
+    await expect.poll(() => progress.locator("progress").count()).toBe(1);
     await progress.getByRole("button", { name: "Cancel upload" }).click();
     const result = card.getByRole("status", { name: "Upload result" }).locator(".notice");
     await result.waitFor({ timeout: 10_000 });
-    expect(await result.textContent().then(squash)).toMatch(/^Upload cancelled|^Uploaded Long\.rbm/);
-    const shown = await placement(page, '[data-testid="motion-file"] .upload-in-place .notice');
-    expect(shown!.top).toBeGreaterThanOrEqual(0);
-    expect(shown!.bottom).toBeLessThanOrEqual(shown!.viewport);
+    await expectText(result, /^Upload cancelled|^Uploaded Long\.rbm/);
+    await expect
+      .poll(() => placement(page, '[data-testid="motion-file"] .upload-in-place .notice'))
+      .toSatisfy(inView);
     await context.close();
   });
 
@@ -164,13 +159,13 @@ describe("motions view layout", () => {
     expect(smallCount).toBe(16);
     await openFile(page, "Small.rbm", small);
     let groups = page.getByTestId("warning-group");
-    expect(await groups.count()).toBe(1);
-    const jump = await groups.first().textContent().then(squash);
-    expect(jump).toMatch(/^Minor Servos jump between scenes \(16\)/);
-    expect(jump).toContain("The largest jump is 2 steps");
-    expect(await groups.first().locator("details").getAttribute("open")).toBeNull();
-    expect(await groups.first().locator("details summary").textContent().then(squash)).toBe("Show all 16");
-    expect(await page.getByTestId("check-summary").textContent().then(squash)).toBe(
+    await expect.poll(() => groups.count()).toBe(1);
+    await expectText(groups.first(), /^Minor Servos jump between scenes \(16\)/);
+    await expectText(groups.first(), "The largest jump is 2 steps", { contains: true });
+    await expect.poll(() => groups.first().locator("details").getAttribute("open")).toBeNull();
+    await expectText(groups.first().locator("details summary"), "Show all 16");
+    await expectText(
+      page.getByTestId("check-summary"),
       "Checked: 0 errors, 16 warnings of 1 kind, none serious.",
     );
 
@@ -181,14 +176,15 @@ describe("motions view layout", () => {
     await openFile(page, "Risky.rbm", risky);
     const card = page.getByTestId("motion-file").filter({ hasText: "Risky.rbm" });
     groups = card.getByTestId("warning-group");
-    expect(await groups.evaluateAll((els) => els.map((e) => e.getAttribute("data-code")))).toEqual([
-      "rbm-unsafe-position",
-      "rbm-scene-jump",
-    ]);
-    expect(await groups.nth(0).textContent().then(squash)).toMatch(
+    await expect
+      .poll(() => groups.evaluateAll((els) => els.map((e) => e.getAttribute("data-code"))))
+      .toEqual(["rbm-unsafe-position", "rbm-scene-jump"]);
+    await expectText(
+      groups.nth(0),
       new RegExp(`^Serious Positions outside a joint's safe range \\(${count("rbm-unsafe-position")}\\)`),
     );
-    expect(await groups.nth(1).textContent().then(squash)).toMatch(
+    await expectText(
+      groups.nth(1),
       new RegExp(`^Check Servos jump between scenes \\(${count("rbm-scene-jump")}\\)`),
     );
     // Details on demand: the single warnings, where they are.
@@ -201,26 +197,26 @@ describe("motions view layout", () => {
     const { page, context } = await app.newPage({ options: FAST });
     await openMotions(page, app.url);
     const meter = page.locator("#mem-motion");
-    expect(await meter.getAttribute("value")).toBe("0");
-    expect(await page.getByTestId("mem-motion-used").textContent().then(squash)).toBe("0 bytes used");
+    await expect.poll(() => meter.getAttribute("value")).toBe("0");
+    await expectText(page.getByTestId("mem-motion-used"), "0 bytes used");
     await openFile(page, "wave.rbm", exampleText("wave.rbm"));
 
     // The toggle names its action and says whether the scenes are expanded.
     const toggle = page.getByTestId("scenes-toggle");
-    expect(await toggle.textContent().then(squash)).toBe("Hide scenes and chart");
-    expect(await toggle.getAttribute("aria-expanded")).toBe("true");
-    expect(await toggle.getAttribute("aria-controls")).toBe("scene-section");
+    await expectText(toggle, "Hide scenes and chart");
+    await expect.poll(() => toggle.getAttribute("aria-expanded")).toBe("true");
+    await expect.poll(() => toggle.getAttribute("aria-controls")).toBe("scene-section");
     await toggle.click();
     await page.getByTestId("scene-section").waitFor({ state: "detached" });
-    expect(await toggle.textContent().then(squash)).toBe("Show scenes and chart");
-    expect(await toggle.getAttribute("aria-expanded")).toBe("false");
+    await expectText(toggle, "Show scenes and chart");
+    await expect.poll(() => toggle.getAttribute("aria-expanded")).toBe("false");
 
     await uploadShown(page, "wave.rbm");
     // wave.rbm takes 640 bytes of the motion area.
     await expect.poll(() => meter.getAttribute("value")).toBe("640");
     await showTab(page, "Memory");
-    expect(await page.locator("#mem-motion").getAttribute("value")).toBe("640");
-    expect(await page.locator("#mem-action").getAttribute("value")).toBe("0");
+    await expect.poll(() => page.locator("#mem-motion").getAttribute("value")).toBe("640");
+    await expect.poll(() => page.locator("#mem-action").getAttribute("value")).toBe("0");
     await context.close();
   });
 });

@@ -1,16 +1,16 @@
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { describe, expect, it } from "vitest";
 import {
-  type AppHarness,
+  expectText,
   FAST,
   holdRobot,
   holdRobotWhenShown,
   openMotions,
   releaseRobot,
   robotNow,
-  robotTimeWhenShown,
   squash,
-  startHarness,
+  useApp,
+  watchText,
 } from "./harness.ts";
 import { showTab } from "./motion-fixtures.ts";
 import "./rbc-test-globals.ts";
@@ -18,15 +18,7 @@ import "./rbc-test-globals.ts";
 // The Motions view's run and sound tests, in a file of their own so that two browser files can share the
 // suite's time (motions.test.ts has the file and upload tests).
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 /** The Motions view's Run or Sounds tab, with the fake robot connected. */
 async function openTab(page: Page, tab: "Run" | "Sounds"): Promise<void> {
@@ -51,25 +43,30 @@ describe("motions view: running motions and sounds", () => {
     const { page, context } = await app.newPage({ options: FAST });
     await openTab(page, "Run");
     const guidance = page.getByTestId("posture-guidance");
-    expect(await guidance.textContent().then(squash)).toContain(
+    await expectText(
+      guidance,
       "After switching on, the robot only accepts Basic posture (7). Run it first.",
+      { contains: true },
     );
-    expect(await page.locator('[data-motion="7"]').getAttribute("class")).toContain("is-recommended");
+    await expect
+      .poll(() => page.locator('[data-motion="7"]').getAttribute("class"))
+      .toContain("is-recommended");
     // No UI for numbers outside the allowed list.
-    const offered = await page
-      .locator("[data-motion]")
-      .evaluateAll((els) => els.map((e) => Number(e.getAttribute("data-motion"))));
-    expect(offered).toEqual([1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11]);
+    const offered = () =>
+      page
+        .locator("[data-motion]")
+        .evaluateAll((els) => els.map((e) => Number(e.getAttribute("data-motion"))));
+    await expect.poll(offered).toEqual([1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11]);
 
     // Motion 4 before 7: asked once, then the robot ignores it and the panel says what to do.
     await page.locator('[data-motion="4"]').click();
     const ask = page.getByTestId("move-confirm");
-    expect(await ask.textContent().then(squash)).toContain("The robot will move. Hold it or give it room.");
+    await expectText(ask, "The robot will move. Hold it or give it room.", { contains: true });
     await page.getByRole("button", { name: "Run motion 4 (Walk forward)" }).click();
     await page.getByTestId("running-motion").filter({ hasText: "Walk forward" }).waitFor();
     const ignored = page.getByText(/The robot ignored motion 4/);
     await ignored.waitFor({ timeout: 8000 });
-    expect(await ignored.textContent().then(squash)).toContain("Run it first.");
+    await expectText(ignored, "Run it first.", { contains: true });
 
     // 7 runs without asking again; afterwards the guidance is gone.
     await page.locator('[data-motion="7"]').click();
@@ -96,16 +93,14 @@ describe("motions view: running motions and sounds", () => {
     expect(await page.evaluate(() => window.__rbcTest?.sim.playingMotion)).toBeUndefined();
     // Stopped well before motion 2's 6.6 s: the 7 took effect at the end of a scene.
     expect((await robotNow(page)) - motion2Started).toBeLessThan(6600);
-    expect(await page.locator('[data-motion="1"]').isEnabled()).toBe(true);
+    await expect.poll(() => page.locator('[data-motion="1"]').isEnabled()).toBe(true);
 
     // The top bar's Stop during a motion ends it with 7 as well: no servo goes limp. The running panel says so.
     await page.locator('[data-motion="1"]').click();
     const running = page.getByTestId("running-motion");
     // Held likewise while the test reads the running panel and presses Stop.
     await holdRobotWhenShown(page, RUNNING, /./);
-    expect(await running.textContent().then(squash)).toContain(
-      "Stop (Esc) ends the motion and keeps the robot standing",
-    );
+    await expectText(running, "Stop (Esc) ends the motion and keeps the robot standing", { contains: true });
     expect(await running.textContent().then(squash)).not.toContain("Stop — limp");
     await page.getByRole("button", { name: "Stop", exact: true }).click();
     await releaseRobot(page);
@@ -130,23 +125,26 @@ describe("motions view: running motions and sounds", () => {
     // however long the click takes on a busy machine.
     await holdRobot(page);
     const started = await robotNow(page);
-    await page.locator('[data-slot-motion="42"]').click();
-    await releaseRobot(page);
-    // The robot's time when the notice appeared (read in the page, not after the test's next steps).
-    const shownAt = await robotTimeWhenShown(
+    // The robot's time when the notice appears, noted in the page (not after the test's next steps).
+    const notice = await watchText(
       page,
       '[data-testid="run-place-slots"]',
       /Motion 42 did not run: the robot holds no motion under that number \(it reports error 3\)/,
     );
+    await page.locator('[data-slot-motion="42"]').click();
+    await releaseRobot(page);
+    const shownAt = await notice.moment();
     // Shown under the slot buttons, in view, and not at the top of the card.
-    expect(await page.getByTestId("run-place-built-in").textContent().then(squash)).toBe("");
-    expect(
-      await page.evaluate(() => {
-        const n = document.querySelector('[data-testid="run-place-slots"] .notice');
-        const r = n?.getBoundingClientRect();
-        return r ? r.top >= 0 && r.bottom <= window.innerHeight : false;
-      }),
-    ).toBe(true);
+    await expectText(page.getByTestId("run-place-built-in"), "");
+    await expect
+      .poll(() =>
+        page.evaluate(() => {
+          const n = document.querySelector('[data-testid="run-place-slots"] .notice');
+          const r = n?.getBoundingClientRect();
+          return r ? r.top >= 0 && r.bottom <= window.innerHeight : false;
+        }),
+      )
+      .toBe(true);
     // Noticed within about a second of the robot's time, not after the 60 s an unknown motion may take.
     expect(shownAt - started).toBeLessThan(5000);
     expect(await page.evaluate(() => window.__rbcTest?.sim.playingMotion)).toBeUndefined();
@@ -162,22 +160,20 @@ describe("motions view: running motions and sounds", () => {
     await playing.waitFor();
     // The robot's time stands still while the test looks at the panel in the middle of the sound.
     await holdRobot(page);
-    expect(await playing.textContent().then(squash)).toContain(
-      "The robot does nothing else until the sound ends",
-    );
+    await expectText(playing, "The robot does nothing else until the sound ends", { contains: true });
     // The same length as on its button (5.7 s), not the robot's reply time (5.9 s with its 200 ms delay).
-    expect(await page.locator('[data-sound="7"]').textContent().then(squash)).toBe("Sound 7 Long 5.7 s");
-    expect(await page.getByTestId("sound-time").textContent().then(squash)).toMatch(/ of 5\.7 s$/);
-    expect(await inViewport(page, "sound-playing")).toBe(true);
-    expect(await page.locator('[data-sound="2"]').isDisabled()).toBe(true);
+    await expectText(page.locator('[data-sound="7"]'), "Sound 7 Long 5.7 s");
+    await expectText(page.getByTestId("sound-time"), / of 5\.7 s$/);
+    await expect.poll(() => inViewport(page, "sound-playing")).toBe(true);
+    await expect.poll(() => page.locator('[data-sound="2"]').isDisabled()).toBe(true);
     await showTab(page, "Run");
-    expect(await page.locator('[data-motion="7"]').isDisabled()).toBe(true);
+    await expect.poll(() => page.locator('[data-motion="7"]').isDisabled()).toBe(true);
     expect(await page.evaluate(() => window.__rbcTest?.sim.state.playingSound)).toBe(7);
     await releaseRobot(page);
     await showTab(page, "Sounds");
     await page.getByText("Sound 7 played (5.7 s).").waitFor({ timeout: 6000 });
     await showTab(page, "Run");
-    expect(await page.locator('[data-motion="7"]').isEnabled()).toBe(true);
+    await expect.poll(() => page.locator('[data-motion="7"]').isEnabled()).toBe(true);
     await context.close();
   });
 
@@ -190,7 +186,8 @@ describe("motions view: running motions and sounds", () => {
     const said = page.getByText("The robot answered at once", { exact: false });
     await said.waitFor({ timeout: 6000 });
     // Sound 4 lasts 365 ms: busy for 0.6 s with the 200 ms before it (docs/protocol.md §3.3).
-    expect(squash(await said.textContent())).toMatch(
+    await expectText(
+      said,
       /^The robot answered at once \(after \d+ ms\): this firmware answers before it plays a sound, so the answer shows only that the request arrived, not that the sound played\. The sound keeps the robot busy for 0\.6 s/,
     );
     expect(await page.getByText("Sound 4 played", { exact: false }).count()).toBe(0);

@@ -1,15 +1,15 @@
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { describe, expect, it } from "vitest";
 import { firmwareHexWithBadChecksum } from "../support/hex.ts";
 import {
-  type AppHarness,
   connectRobot,
+  expectText,
   FAST,
   holdRobot,
   openMotions,
   releaseRobot,
   squash,
-  startHarness,
+  useApp,
 } from "./harness.ts";
 import { axeProblems } from "./i18n-checks.ts";
 import { exampleText, rbmFile } from "./motion-fixtures.ts";
@@ -21,15 +21,7 @@ import "./rbc-test-globals.ts";
 // sentence and Stop beside it; after Stop they are enabled again. The robot runs on the paced virtual clock
 // (FAST); nothing is retried.
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 const switchLanguage = (page: Page, to: "en" | "ko") => page.getByTestId("language-switch").selectOption(to);
 
@@ -89,31 +81,29 @@ describe("Motions and Firmware messages made before a language switch follow it"
     // The switch: each reads in Korean, nothing of it left in English.
     await switchLanguage(page, "ko");
     await page.getByRole("heading", { level: 1, name: "펌웨어" }).waitFor();
-    await problem.filter({ hasText: /broken\.hex/ }).waitFor();
-    const problemKo = squash(await problem.textContent());
-    expect(problemKo).toMatch(/^"?broken\.hex"?.*[가-힣]/);
-    expect(problemKo).not.toMatch(/not a firmware file|checksum/);
+    // The English sentence names broken.hex too: wait for the Korean one.
+    await expectText(problem, /^"?broken\.hex"?.*[가-힣]/);
+    expect(squash(await problem.textContent())).not.toMatch(/not a firmware file|checksum/);
 
     await page.locator('a[href="#/motions"]').first().click();
     await showTab(page, "run");
-    expect(squash(await runResult.textContent())).toBe(
-      "모션 7번(기본 자세)을 마쳤어요. 이제 로봇이 모든 모션을 받아들여요.",
-    );
+    await expectText(runResult, "모션 7번(기본 자세)을 마쳤어요. 이제 로봇이 모든 모션을 받아들여요.");
     await showTab(page, "files");
-    const uploadKo = squash(await uploadResult.textContent());
-    expect(uploadKo).toMatch(/^wave\.rbm을\(를\) 업로드했어요\. 624바이트를 조각 10개로 /);
-    expect(uploadKo).not.toMatch(/Uploaded|Stored as|Free motion memory|Error code/);
+    await expectText(uploadResult, /^wave\.rbm을\(를\) 업로드했어요\. 624바이트를 조각 10개로 /);
+    expect(squash(await uploadResult.textContent())).not.toMatch(
+      /Uploaded|Stored as|Free motion memory|Error code/,
+    );
     expect(await axeProblems(page)).toEqual([]);
 
     // And back: the English words as they were made.
     await switchLanguage(page, "en");
     await showTab(page, "run");
-    expect(squash(await runResult.textContent())).toBe(runEn);
+    await expectText(runResult, runEn);
     await showTab(page, "files");
-    expect(squash(await uploadResult.textContent())).toBe(uploadEn);
+    await expectText(uploadResult, uploadEn);
     await page.getByRole("link", { name: "Firmware" }).click();
     await problem.filter({ hasText: /not a firmware file/ }).waitFor();
-    expect(squash(await problem.textContent())).toBe(problemEn);
+    await expectText(problem, problemEn);
     expect(pageErrors).toEqual([]);
     await context.close();
   });
@@ -129,15 +119,16 @@ describe("Motions' Run buttons and a motion started elsewhere", () => {
     await page.getByRole("link", { name: "Motions" }).click();
     await showTab(page, "run");
     const runButtons = page.getByTestId("run-card").locator("[data-motion]");
-    expect(await runButtons.count()).toBeGreaterThanOrEqual(11);
+    await expect.poll(() => runButtons.count()).toBeGreaterThanOrEqual(11);
     const disabled = () => runButtons.evaluateAll((els) => els.map((e) => (e as HTMLButtonElement).disabled));
-    expect(new Set(await disabled())).toEqual(new Set([true]));
+    await expect.poll(async () => new Set(await disabled())).toEqual(new Set([true]));
     const why = page.getByTestId("busy-why");
-    expect(squash(await why.locator("span").textContent())).toBe(
+    await expectText(
+      why.locator("span"),
       "A motion is playing: the robot ignores everything but Basic posture (7) until it ends.",
     );
     const stop = why.getByRole("button", { name: "Stop" });
-    expect(await stop.isEnabled()).toBe(true);
+    await expect.poll(() => stop.isEnabled()).toBe(true);
     expect(await axeProblems(page, { within: "#motions-panel-run" })).toEqual([]);
 
     await stop.click();
@@ -145,7 +136,7 @@ describe("Motions' Run buttons and a motion started elsewhere", () => {
     await page.getByTestId("stop-banner").filter({ hasText: "It took Stop" }).waitFor();
     await page.getByTestId("busy-banner").waitFor({ state: "detached" });
     await why.waitFor({ state: "detached" });
-    expect(new Set(await disabled())).toEqual(new Set([false]));
+    await expect.poll(async () => new Set(await disabled())).toEqual(new Set([false]));
     await context.close();
   });
 });

@@ -1,17 +1,17 @@
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { describe, expect, it } from "vitest";
 import { memoryFootprint } from "../../src/protocol/catalog.ts";
 import { motionImage } from "../../src/protocol/motion-image.ts";
 import { motionDurationMs, parseRbm } from "../../src/protocol/rbm.ts";
 import { formatSeconds } from "../../src/ui/features/motions/plot-data.ts";
 import {
-  type AppHarness,
   cspViolations,
+  expectText,
   FAST,
   openMotions,
   robotTime,
   squash,
-  startHarness,
+  useApp,
   watchPage,
 } from "./harness.ts";
 import {
@@ -36,19 +36,10 @@ import {
   shot,
   sizeName as size,
   sizeName,
-  text,
   texts,
 } from "./i18n-checks.ts";
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 /** A paced link (115200 baud, 16 ms FTDI latency), so uploads take as long as on the wire. */
 const PACED: RbcTestOptions = { baudPacing: true, latencyMs: 16 };
@@ -86,28 +77,26 @@ describe("motions view", () => {
     await page.getByTestId("rbm-files").setInputFiles(rbmFile("wave.rbm", wave));
     const card = page.getByTestId("motion-file");
     await card.waitFor();
-    const facts = await card.textContent().then(squash);
-    expect(facts).toContain("RbcPanel_Wave");
-    expect(facts).toMatch(/Scenes\s*6 Servos\s*16/);
-    expect(facts).toMatch(/Plays for\s*3\.2 s/);
-    expect(facts).toMatch(/Sent to the robot\s*624 bytes/);
-    expect(facts).toMatch(/Memory it takes\s*640 bytes/);
+    await expectText(card, "RbcPanel_Wave", { contains: true });
+    await expectText(card, /Scenes\s*6 Servos\s*16/);
+    await expectText(card, /Plays for\s*3\.2 s/);
+    await expectText(card, /Sent to the robot\s*624 bytes/);
+    await expectText(card, /Memory it takes\s*640 bytes/);
     // The scene table and the chart (uPlot, loaded on demand).
     await page.getByTestId("scene-section").waitFor();
-    expect(await page.locator(".scene-table tbody tr").count()).toBe(6);
+    await expect.poll(() => page.locator(".scene-table tbody tr").count()).toBe(6);
     await page.locator('[data-testid="motion-chart"][data-chart="drawn"]').waitFor();
     expect(await page.locator('[data-testid="motion-chart"] canvas').count()).toBeGreaterThan(0);
-    expect(await page.locator('[data-testid="motion-chart"] .u-legend').textContent()).toContain("Left knee");
+    await expectText(page.locator('[data-testid="motion-chart"] .u-legend'), "Left knee", { contains: true });
 
     // A real robot (the fake port is hardware): the panel says it is experimental and asks first.
     const before = await bytesFromPc(page);
     await page.getByTestId("upload-motion").click();
     const confirm = page.getByTestId("upload-confirm");
     await confirm.waitFor();
-    const words = await confirm.textContent().then(squash);
-    expect(words).toContain("experimental");
-    expect(words).toContain("not been verified on real RBC firmware");
-    expect(words).toContain("held or lying down");
+    await expectText(confirm, "experimental", { contains: true });
+    await expectText(confirm, "not been verified on real RBC firmware", { contains: true });
+    await expectText(confirm, "held or lying down", { contains: true });
     expect(await bytesFromPc(page)).toBe(before);
 
     await recordFigures(page);
@@ -115,39 +104,37 @@ describe("motions view", () => {
     // The result shows in the file's card, where the upload was started.
     const result = card.getByText(/^Uploaded wave\.rbm/);
     await result.waitFor({ timeout: 15_000 });
-    const text = await result.textContent().then(squash);
-    expect(text).toMatch(/624 bytes in 10 chunks/);
-    expect(text).toMatch(/bytes\/s/);
+    await expectText(result, /624 bytes in 10 chunks/);
+    await expectText(result, /bytes\/s/);
     // One number: the one Run takes, with the remote key that plays it (issue 23 item 2).
-    expect(text).toContain("Stored as motion 12 (key 1): Run takes this number.");
+    await expectText(result, "Stored as motion 12 (key 1): Run takes this number.", { contains: true });
+    const text = await result.textContent().then(squash);
     expect(text).not.toContain("downloaded motion 1");
-    expect(text).toContain("Free motion memory: 23,936 of 24,576 bytes (was 24,576");
-    expect(text).toContain("Error code after the upload: no error");
-    expect(text).toContain("held or lying down");
+    await expectText(result, "Free motion memory: 23,936 of 24,576 bytes (was 24,576", { contains: true });
+    await expectText(result, "Error code after the upload: no error", { contains: true });
+    await expectText(result, "held or lying down", { contains: true });
     const figures = await page.evaluate(() => (window as unknown as { __figures: string[] }).__figures);
     expect(figures.some((f) => f.includes("624 of 624 bytes (100%)"))).toBe(true);
     expect(figures.some((f) => /bytes\/s/.test(f) && /left/.test(f))).toBe(true);
 
     expect(await simMotionsHex(page)).toEqual([imageHex(wave)]);
     // Memory figures refreshed: used and free on the Files tab, the counts on the Memory tab, and the device card.
-    expect(await page.getByTestId("mem-motion-used").textContent().then(squash)).toBe("640 bytes used");
-    expect(await page.getByTestId("mem-motion-text").textContent().then(squash)).toBe(
-      "23,936 of 24,576 bytes free",
-    );
+    await expectText(page.getByTestId("mem-motion-used"), "640 bytes used");
+    await expectText(page.getByTestId("mem-motion-text"), "23,936 of 24,576 bytes free");
     await showTab(page, "Memory");
-    expect(await page.getByTestId("mem-motion-used").textContent().then(squash)).toBe(
-      "640 of 24,576 bytes used",
+    await expectText(page.getByTestId("mem-motion-used"), "640 of 24,576 bytes used");
+    await expectText(page.getByTestId("mem-motion-count"), /^1 of 20 motions/);
+    await expectText(
+      page.locator('[data-testid="shelf-entry"][data-motion="12"]'),
+      /^12 RbcPanel_Wave remote: key 1 · plays 3\.2 s /,
     );
-    expect(await page.getByTestId("mem-motion-count").textContent().then(squash)).toMatch(/^1 of 20 motions/);
-    expect(
-      await page.locator('[data-testid="shelf-entry"][data-motion="12"]').textContent().then(squash),
-    ).toMatch(/^12 RbcPanel_Wave remote: key 1 · plays 3\.2 s /);
     // Run offers it by name and length.
     await showTab(page, "Run");
     const download = page.locator('[data-testid="downloaded-motions"] [data-motion="12"]');
-    expect(await download.textContent().then(squash)).toBe("12 RbcPanel_Wave key 1 3.2 s");
+    await expectText(download, "12 RbcPanel_Wave key 1 3.2 s");
     await page.getByRole("link", { name: "Robot" }).click();
-    expect(await page.getByTestId("memory-motion-text").textContent().then(squash)).toMatch(
+    await expectText(
+      page.getByTestId("memory-motion-text"),
       /640 of 24,576 bytes used|23,936 of 24,576 bytes free/,
     );
 
@@ -175,10 +162,9 @@ describe("motions view", () => {
 
     const result = page.getByText(/^Upload cancelled/);
     await result.waitFor({ timeout: 10_000 });
-    const text = await result.textContent().then(squash);
-    expect(text).toMatch(/Upload cancelled \([\d,]+ of 20,?748 bytes were acknowledged\)/);
-    expect(text).toContain("recorded nothing");
-    expect(await page.getByTestId("upload-progress").count()).toBe(0);
+    await expectText(result, /Upload cancelled \([\d,]+ of 20,?748 bytes were acknowledged\)/);
+    await expectText(result, "recorded nothing", { contains: true });
+    await expect.poll(() => page.getByTestId("upload-progress").count()).toBe(0);
     // Nothing more goes out, and the robot holds no motion.
     const after = await bytesFromPc(page);
     await robotTime(page, 400);
@@ -196,15 +182,16 @@ describe("motions view", () => {
       .setInputFiles(rbmFile("Edited.rbm", withShortFrames(exampleText("wave.rbm"))));
     const card = page.getByTestId("motion-file");
     await card.waitFor();
-    const issues = await page.getByTestId("rbm-issues").textContent().then(squash);
-    expect(issues).toMatch(
+    await expectText(
+      page.getByTestId("rbm-issues"),
       /Error Scene 0 has frames 10 ms apart \(200 ms \/ 20 frames\); the RBC needs at least 20 ms/,
     );
     // The file is still shown, so the person can see which scene is wrong.
-    expect(await page.getByTestId("scene-section").isVisible()).toBe(true);
+    await expect.poll(() => page.getByTestId("scene-section").isVisible()).toBe(true);
     const upload = page.getByTestId("upload-motion");
-    expect(await upload.isDisabled()).toBe(true);
-    expect(await page.getByTestId("upload-why").textContent().then(squash)).toBe(
+    await expect.poll(() => upload.isDisabled()).toBe(true);
+    await expectText(
+      page.getByTestId("upload-why"),
       "Cannot upload: the file has 1 error (listed above). Nothing is sent.",
     );
     await upload.click({ force: true }).catch(() => {});
@@ -226,11 +213,13 @@ describe("motions view", () => {
     await page.dispatchEvent('[data-testid="rbm-drop"]', "drop", { dataTransfer: transfer });
     const card = page.getByTestId("motion-file");
     await card.waitFor();
-    expect(await card.textContent().then(squash)).toContain(
+    await expectText(
+      card,
       "made for the robot with serial number 1234567890123, but the connected robot is 8958899989309",
+      { contains: true },
     );
     // Warnings do not block an upload.
-    expect(await page.getByTestId("upload-motion").isEnabled()).toBe(true);
+    await expect.poll(() => page.getByTestId("upload-motion").isEnabled()).toBe(true);
 
     // The drop zone is a button for the keyboard too: Enter and Space open the (multiple) file picker.
     expect(await page.getByTestId("rbm-files").getAttribute("multiple")).not.toBeNull();
@@ -270,7 +259,7 @@ describe("motions view", () => {
     const open = page.getByRole("button", { name: "Open squat.rbm" });
     await open.waitFor();
     const description = await open.getAttribute("aria-describedby");
-    expect(await page.locator(`#${description}`).textContent().then(squash)).toContain("squats twice");
+    await expectText(page.locator(`#${description}`), "squats twice", { contains: true });
     await open.focus();
     await page.keyboard.press("Enter");
 
@@ -278,17 +267,16 @@ describe("motions view", () => {
     await card.waitFor();
     expect(scripts.some((s) => s.includes("squat"))).toBe(true);
     await page.getByText("Opened the example squat.rbm.").waitFor();
-    const facts = await card.textContent().then(squash);
     const fact = (label: string, value: string | number) =>
-      expect(facts).toContain(`${label}${String(value)}`.replace(/\s+/g, " "));
-    expect(facts).toContain(`${motion.name} squat.rbm`);
-    fact("Scenes", motion.scenes.length);
-    fact("Servos", motion.servos.length);
-    fact("Plays for", formatSeconds(motionDurationMs(motion)));
-    fact("Sent to the robot", `${image.length.toLocaleString("en-US")} bytes`);
-    fact("Memory it takes", `${memoryFootprint(image.length).toLocaleString("en-US")} bytes`);
-    expect(facts).toContain("Checked: no errors, no warnings.");
-    expect(await page.locator(".scene-table tbody tr").count()).toBe(motion.scenes.length);
+      expectText(card, `${label}${String(value)}`.replace(/\s+/g, " "), { contains: true });
+    await expectText(card, `${motion.name} squat.rbm`, { contains: true });
+    await fact("Scenes", motion.scenes.length);
+    await fact("Servos", motion.servos.length);
+    await fact("Plays for", formatSeconds(motionDurationMs(motion)));
+    await fact("Sent to the robot", `${image.length.toLocaleString("en-US")} bytes`);
+    await fact("Memory it takes", `${memoryFootprint(image.length).toLocaleString("en-US")} bytes`);
+    await expectText(card, "Checked: no errors, no warnings.", { contains: true });
+    await expect.poll(() => page.locator(".scene-table tbody tr").count()).toBe(motion.scenes.length);
 
     // Uploaded like any other file: the robot holds exactly its image.
     await card.getByTestId("upload-motion").click();
@@ -326,7 +314,8 @@ describe("motions view", () => {
     await cards.nth(1).getByTestId("upload-motion").click();
     await page.getByText(/^Uploaded bow\.rbm/).waitFor();
     await showTab(page, "Memory");
-    expect(await page.getByTestId("shelf-list").textContent().then(squash)).toMatch(
+    await expectText(
+      page.getByTestId("shelf-list"),
       /^12 RbcPanel_Wave remote: key 1 · plays 3\.2 s .* 13 RbcPanel_Bow remote: key 2 · plays /,
     );
     await showTab(page, "Files");
@@ -334,17 +323,17 @@ describe("motions view", () => {
     await cards.nth(1).getByTestId("upload-motion").click();
     const result = page.getByText(/^Uploaded bow\.rbm/);
     await result.filter({ hasText: "Free motion memory: 24,064 of" }).waitFor();
-    expect(await page.getByTestId("mem-motion-text").textContent().then(squash)).toBe(
-      "24,064 of 24,576 bytes free",
-    );
+    await expectText(page.getByTestId("mem-motion-text"), "24,064 of 24,576 bytes free");
     await showTab(page, "Memory");
+    await expectText(page.getByTestId("shelf-list"), /^12 RbcPanel_Bow remote: key 1 · /);
     const list = await page.getByTestId("shelf-list").textContent().then(squash);
-    expect(list).toMatch(/^12 RbcPanel_Bow remote: key 1 · /);
     expect(list).not.toContain("RbcPanel_Wave");
 
     // An action file goes up byte for byte, with the format called unverified; its result shows beside it.
-    expect(await page.getByTestId("action-card").textContent().then(squash)).toContain(
+    await expectText(
+      page.getByTestId("action-card"),
       "No action file format is known: the file's bytes are sent as they are",
+      { contains: true },
     );
     await page.getByTestId("action-file").setInputFiles({
       name: "wave.act",
@@ -356,9 +345,7 @@ describe("motions view", () => {
       .getByTestId("action-card")
       .getByText(/^Uploaded wave\.act: 100 bytes in 2 chunks/)
       .waitFor();
-    expect(await page.getByTestId("mem-action-text").textContent().then(squash)).toBe(
-      "8,064 of 8,192 bytes free",
-    );
+    await expectText(page.getByTestId("mem-action-text"), "8,064 of 8,192 bytes free");
     await context.close();
   });
 });
@@ -401,13 +388,13 @@ describe("in Korean (ko-KR)", () => {
       it(`shows the Files tab in Korean with an example open, fitting at ${viewport.width}×${viewport.height}`, async () => {
         const { page, context } = await newLocalePage(app, "ko-KR", { size: viewport, options: FAST });
         await openMotions(page);
-        expect(await page.getByRole("heading", { level: 1 }).textContent()).toBe("모션");
-        expect(await texts(page.getByRole("tab"))).toEqual(["파일", "메모리", "실행", "소리"]);
-        expect(await page.getByRole("tablist").getAttribute("aria-label")).toBe("모션");
+        await expectText(page.getByRole("heading", { level: 1 }), "모션");
+        await expect.poll(() => texts(page.getByRole("tab"))).toEqual(["파일", "메모리", "실행", "소리"]);
+        await expect.poll(() => page.getByRole("tablist").getAttribute("aria-label")).toBe("모션");
         const files = page.getByTestId("motion-files");
-        expect(await text(files.getByRole("heading", { level: 2 }))).toBe("모션 파일");
-        expect(await text(files.locator(".drop-title"))).toBe("모션 파일 열기 (.rbm)");
-        expect(await text(page.getByTestId("mem-motion-used"))).toBe("0바이트 사용");
+        await expectText(files.getByRole("heading", { level: 2 }), "모션 파일");
+        await expectText(files.locator(".drop-title"), "모션 파일 열기 (.rbm)");
+        await expectText(page.getByTestId("mem-motion-used"), "0바이트 사용");
         await page.getByLabel("먼저 모션 메모리 초기화", { exact: false }).waitFor();
 
         // An example, opened from the disclosure: its facts, its check, its scenes and chart.
@@ -415,49 +402,32 @@ describe("in Korean (ko-KR)", () => {
         await page.getByRole("button", { name: "wave.rbm 열기" }).click();
         await page.getByText("예제 wave.rbm을(를) 열었어요.").waitFor();
         const card = page.getByTestId("motion-file").filter({ hasText: "wave.rbm" });
-        expect(await texts(card.locator(".file-facts dt"))).toEqual([
-          "장면",
-          "서보",
-          "재생 시간",
-          "로봇에 보낼 크기",
-          "차지할 메모리",
-        ]);
-        expect(await texts(card.locator(".file-facts dd"))).toEqual([
-          "6",
-          "16",
-          "3.2초",
-          "624바이트",
-          "640바이트",
-        ]);
-        expect(await text(card.locator(".check-ok"))).toBe("확인함: 오류 없음, 경고 없음.");
-        expect(await text(card.getByTestId("scenes-toggle"))).toBe("장면과 차트 숨기기");
-        expect(await text(card.getByTestId("preview-toggle"))).toBe("3D 미리 보기");
-        expect(await card.getByRole("button", { name: "wave.rbm 닫기" }).textContent().then(squash)).toBe(
-          "닫기",
-        );
-        expect(await text(card.getByTestId("upload-why"))).toBe(
+        await expect
+          .poll(() => texts(card.locator(".file-facts dt")))
+          .toEqual(["장면", "서보", "재생 시간", "로봇에 보낼 크기", "차지할 메모리"]);
+        await expect
+          .poll(() => texts(card.locator(".file-facts dd")))
+          .toEqual(["6", "16", "3.2초", "624바이트", "640바이트"]);
+        await expectText(card.locator(".check-ok"), "확인함: 오류 없음, 경고 없음.");
+        await expectText(card.getByTestId("scenes-toggle"), "장면과 차트 숨기기");
+        await expectText(card.getByTestId("preview-toggle"), "3D 미리 보기");
+        await expectText(card.getByRole("button", { name: "wave.rbm 닫기" }), "닫기");
+        await expectText(
+          card.getByTestId("upload-why"),
           "먼저 확인을 받아요. 실제 로봇에 업로드하는 기능은 실험 단계예요.",
         );
         const scenes = page.getByTestId("scene-section");
-        expect(await text(scenes.getByRole("heading"))).toBe("RbcPanel_Wave의 장면");
-        expect(await texts(scenes.locator(".scene-table th"))).toEqual([
-          "#",
-          "이름",
-          "프레임",
-          "시작",
-          "길이",
-          "프레임 간격",
-        ]);
-        expect(await texts(scenes.locator(".scene-table tbody tr").nth(1).locator("td"))).toEqual([
-          "1",
-          expect.any(String),
-          "10",
-          "0.8초",
-          "0.4초",
-          "40ms",
-        ]);
+        await expectText(scenes.getByRole("heading"), "RbcPanel_Wave의 장면");
+        await expect
+          .poll(() => texts(scenes.locator(".scene-table th")))
+          .toEqual(["#", "이름", "프레임", "시작", "길이", "프레임 간격"]);
+        await expect
+          .poll(() => texts(scenes.locator(".scene-table tbody tr").nth(1).locator("td")))
+          .toEqual(["1", expect.any(String), "10", "0.8초", "0.4초", "40ms"]);
         await page.locator('[data-testid="motion-chart"][data-chart="drawn"]').waitFor();
-        expect(await text(page.locator('[data-testid="motion-chart"] .u-legend'))).toContain("2 왼쪽 무릎");
+        await expectText(page.locator('[data-testid="motion-chart"] .u-legend'), "2 왼쪽 무릎", {
+          contains: true,
+        });
         await expectGood(page, "files", viewport);
 
         // A file with warnings and one with an error: the panel's words and the checker's sentences in Korean
@@ -470,26 +440,31 @@ describe("in Korean (ko-KR)", () => {
           ]);
         await page.getByText("파일 2개를 열었어요.").waitFor();
         const jumpy = page.getByTestId("motion-file").filter({ hasText: "Jumpy.rbm" });
-        expect(await text(jumpy.getByTestId("check-summary"))).toBe(
+        await expectText(
+          jumpy.getByTestId("check-summary"),
           "확인함: 오류 0개, 경고 16개 (1종류, 심각한 경고 없음).",
         );
         const group = jumpy.getByTestId("warning-group");
-        expect(await text(group.locator(".weight"))).toBe("사소함");
-        expect(await text(group.locator("strong"))).toBe("장면 사이에서 서보가 튐");
-        expect(await text(group.locator(".warning-meaning"))).toContain(
+        await expectText(group.locator(".weight"), "사소함");
+        await expectText(group.locator("strong"), "장면 사이에서 서보가 튐");
+        await expectText(
+          group.locator(".warning-meaning"),
           "가장 크게 튀는 폭은 2단계로, 거의 보이지 않는 작은 떨림이에요.",
+          { contains: true },
         );
         await group.getByText("16개 모두 보기").click();
         const first = group.locator(".issues li").first();
-        expect(await text(first)).toBe(
+        await expectText(
+          first,
           "장면 0에서 서보 0번(왼쪽 엉덩이 좌우)의 끝 위치는 125인데, 장면 1에서는 127에서 시작해서 서보가 튀어요.",
         );
         expect(await first.locator('[lang="en"]').count()).toBe(0);
         const edited = page.getByTestId("motion-file").filter({ hasText: "Edited.rbm" });
-        expect(await text(edited.getByTestId("check-summary"))).toMatch(/^확인함: 오류 1개, 경고 0개\.$/);
-        expect(await text(edited.locator(".issue--error .issue-kind"))).toBe("오류");
-        expect(await text(edited.locator(".issue--error"))).toMatch(/^오류 장면 0의 프레임 간격이 10ms예요 /);
-        expect(await text(edited.getByTestId("upload-why"))).toBe(
+        await expectText(edited.getByTestId("check-summary"), /^확인함: 오류 1개, 경고 0개\.$/);
+        await expectText(edited.locator(".issue--error .issue-kind"), "오류");
+        await expectText(edited.locator(".issue--error"), /^오류 장면 0의 프레임 간격이 10ms예요 /);
+        await expectText(
+          edited.getByTestId("upload-why"),
           "업로드할 수 없어요. 파일에 오류가 1개 있어요 (위 목록). 아무것도 보내지 않아요.",
         );
         await expectGood(page, "files-checked", viewport);
@@ -497,22 +472,24 @@ describe("in Korean (ko-KR)", () => {
         // The upload: its question and its result, in Korean.
         await card.getByTestId("upload-motion").click();
         const confirm = card.getByTestId("upload-confirm");
-        expect(await text(confirm.locator("#upload-confirm-title"))).toBe(
-          "wave.rbm을(를) 로봇에 업로드할까요?",
-        );
+        await expectText(confirm.locator("#upload-confirm-title"), "wave.rbm을(를) 로봇에 업로드할까요?");
         await confirm.getByRole("button", { name: "취소" }).waitFor();
         await confirm.scrollIntoViewIfNeeded();
         await expectGood(page, "upload-confirm", viewport);
         await confirm.getByRole("button", { name: "업로드 (실험 기능)" }).click();
         const result = card.getByText(/^wave\.rbm을\(를\) 업로드했어요\./);
         await result.waitFor({ timeout: 15_000 });
-        const sentence = await text(result);
-        expect(sentence).toMatch(
+        await expectText(
+          result,
           /^wave\.rbm을\(를\) 업로드했어요\. 624바이트를 조각 \d+개로 [\d.]+초 동안 보냈고 \([\d,]+바이트\/초\), 로봇이 모든 조각을 받았다고 확인했어요\./,
         );
-        expect(sentence).toContain("모션 12번(1번 키)으로 저장했어요. 실행할 때 이 번호를 써요.");
-        expect(sentence).toContain("남은 모션 메모리: 24,576바이트 중 23,936바이트 (전에는 24,576바이트");
-        expect(sentence).toContain("업로드 후 오류 코드: 오류 없음.");
+        await expectText(result, "모션 12번(1번 키)으로 저장했어요. 실행할 때 이 번호를 써요.", {
+          contains: true,
+        });
+        await expectText(result, "남은 모션 메모리: 24,576바이트 중 23,936바이트 (전에는 24,576바이트", {
+          contains: true,
+        });
+        await expectText(result, "업로드 후 오류 코드: 오류 없음.", { contains: true });
         await expectGood(page, "uploaded", viewport);
         await context.close();
       });
@@ -528,16 +505,18 @@ describe("in Korean (ko-KR)", () => {
         // Memory: the areas as used, the uploads of this connection, an action file.
         await showTab(page, "uploads");
         const memory = page.getByTestId("memory-card");
-        expect(await text(memory.getByRole("heading"))).toBe("로봇 메모리");
-        expect(await text(page.getByTestId("mem-motion-used"))).toBe("24,576바이트 중 640바이트 사용");
-        expect(await text(page.getByTestId("mem-motion-text"))).toBe("24,576바이트 중 23,936바이트 남음");
-        expect(await text(page.getByTestId("mem-motion-count"))).toBe(
+        await expectText(memory.getByRole("heading"), "로봇 메모리");
+        await expectText(page.getByTestId("mem-motion-used"), "24,576바이트 중 640바이트 사용");
+        await expectText(page.getByTestId("mem-motion-text"), "24,576바이트 중 23,936바이트 남음");
+        await expectText(
+          page.getByTestId("mem-motion-count"),
           "마지막 초기화나 전원을 켠 뒤로 모션 20개 중 1개 저장됨",
         );
-        expect(await text(page.locator('[data-testid="shelf-entry"][data-motion="12"]'))).toBe(
+        await expectText(
+          page.locator('[data-testid="shelf-entry"][data-motion="12"]'),
           "12 RbcPanel_Wave 리모컨: 1번 키 · 재생 시간 3.2초 방금 업로드했고, 로봇의 메모리 계산에서 저장된 게 확인됐어요 지금 실행",
         );
-        expect(await text(page.getByTestId("uploads-card").locator("summary"))).toBe("메모리를 세는 방법");
+        await expectText(page.getByTestId("uploads-card").locator("summary"), "메모리를 세는 방법");
         await page.getByTestId("action-file").setInputFiles({
           name: "wave.act",
           mimeType: "application/octet-stream",
@@ -547,26 +526,30 @@ describe("in Korean (ko-KR)", () => {
         await action.getByText("wave.act, 100바이트").waitFor();
         await action.getByRole("button", { name: "액션 파일 업로드" }).waitFor();
         await action.getByLabel("먼저 액션 메모리 초기화 (다운로드한 액션을 모두 지워요)").waitFor();
-        expect(await text(action.locator("label.file-button"))).toBe("액션 파일 고르기…");
+        await expectText(action.locator("label.file-button"), "액션 파일 고르기…");
         await expectGood(page, "memory", viewport);
 
         // Run: the basic-posture guidance, the built-in and downloaded motions, the other slots, the question
         // before the robot moves, and the result.
         await showTab(page, "run");
         const run = page.getByTestId("run-card");
-        expect(await text(run.getByRole("heading", { level: 2 }))).toBe("모션 실행");
-        expect(await texts(run.getByRole("heading", { level: 3 }))).toEqual(["내장 모션", "다운로드한 모션"]);
-        expect(await text(page.getByTestId("posture-guidance"))).toBe(
+        await expectText(run.getByRole("heading", { level: 2 }), "모션 실행");
+        await expect
+          .poll(() => texts(run.getByRole("heading", { level: 3 })))
+          .toEqual(["내장 모션", "다운로드한 모션"]);
+        await expectText(
+          page.getByTestId("posture-guidance"),
           "로봇을 켠 뒤에는 기본 자세(7)만 받아들여요. 먼저 기본 자세를 실행해 주세요. 그 전까지는 다른 모션을 모두 아무 말 없이 무시해요.",
         );
-        expect(await text(run.locator('[data-motion="7"]'))).toBe("7 기본 자세 1.8초 먼저 실행");
-        expect(await text(run.locator('[data-motion="12"]'))).toBe("12 RbcPanel_Wave 1번 키 3.2초");
+        await expectText(run.locator('[data-motion="7"]'), "7 기본 자세 1.8초 먼저 실행");
+        await expectText(run.locator('[data-motion="12"]'), "12 RbcPanel_Wave 1번 키 3.2초");
         await run.getByText("다른 다운로드 슬롯 (19)").click();
         // The slot button shows its number and key; a screen reader hears "모션 13번 실행" and the key.
         await run.getByRole("button", { name: /^모션 13\s?번 실행 2번 키$/ }).waitFor();
         await run.locator('[data-motion="7"]').click();
         const ask = page.getByTestId("move-confirm");
-        expect(await text(ask)).toBe(
+        await expectText(
+          ask,
           "로봇이 움직여요. 로봇을 잡거나 주변에 공간을 비워 주세요. 패널은 연결할 때마다 한 번만 물어봐요. 정지(Esc)는 모션을 끝내고 로봇을 선 채로 유지해요. 모션 7번(기본 자세) 실행 취소",
         );
         await expectGood(page, "run-confirm", viewport);
@@ -577,7 +560,7 @@ describe("in Korean (ko-KR)", () => {
         // Sounds: the buttons' names, and what a sound did.
         await showTab(page, "sounds");
         const sounds = page.getByTestId("sound-card");
-        expect(await text(sounds.getByRole("heading"))).toBe("소리");
+        await expectText(sounds.getByRole("heading"), "소리");
         await sounds.getByRole("button", { name: "소리 4 아주 짧은 소리 0.4초" }).click();
         await sounds.getByText("소리 4번을 재생했어요 (0.4초).").waitFor();
         await expectGood(page, "sounds", viewport);
@@ -634,38 +617,47 @@ describe("in Korean (ko-KR): the motion file checker", () => {
         const card = (name: string) => page.getByTestId("motion-file").filter({ hasText: name });
 
         // An error the RBC refuses: the sentence names the scene itself, so no place is said before it.
-        expect(await texts(card("Edited.rbm").locator(".issue--error"))).toEqual([
-          "오류 장면 0의 프레임 간격이 10ms예요 (200ms / 프레임 20개). RBC에는 20ms 이상이 필요해요. 프레임 수를 줄여 주세요.",
-        ]);
+        await expect
+          .poll(() => texts(card("Edited.rbm").locator(".issue--error")))
+          .toEqual([
+            "오류 장면 0의 프레임 간격이 10ms예요 (200ms / 프레임 20개). RBC에는 20ms 이상이 필요해요. 프레임 수를 줄여 주세요.",
+          ]);
 
         // A file that cannot be read: the field, by its number and what it holds.
-        expect(await texts(card("Broken.rbm").locator(".issue--error"))).toEqual([
-          '오류 128번 필드(장면 0, 서보 레코드 2번의 시작 위치)는 정수여야 해요 (지금 값: "x1").',
-        ]);
+        await expect
+          .poll(() => texts(card("Broken.rbm").locator(".issue--error")))
+          .toEqual(['오류 128번 필드(장면 0, 서보 레코드 2번의 시작 위치)는 정수여야 해요 (지금 값: "x1").']);
 
         // Warnings, grouped by kind; each single warning in Korean.
         const jumps = card("Jumpy.rbm").getByTestId("warning-group");
         await jumps.getByText("16개 모두 보기").click();
-        expect(await text(jumps.locator(".issues li").first())).toBe(
+        await expectText(
+          jumps.locator(".issues li").first(),
           "장면 0에서 서보 0번(왼쪽 엉덩이 좌우)의 끝 위치는 125인데, 장면 1에서는 127에서 시작해서 서보가 튀어요.",
         );
         const odd = card("Odd.rbm");
         for (const summary of await odd.locator(".warning-details summary").all()) await summary.click();
-        const said = await texts(odd.locator(".warning-details .issues li"));
-        expect(said).toContainEqual(
-          expect.stringMatching(
-            /^장면 0에서 서보 0번\(왼쪽 엉덩이 좌우\)이 안전 범위\(\d+-174\) 밖인 254 위치로 가요\.$/,
-          ),
-        );
-        expect(said).toContainEqual(
-          expect.stringMatching(
-            /^이 모션은 시리얼 번호 1234567890123 로봇용으로 만들었는데, 지금 연결된 로봇은 시리얼 번호 \d{13} 로봇이에요\. Motionbuilder는 이런 파일을 거부해요\. 이 로봇에 맞는 모션인지 확인해 주세요\.$/,
-          ),
-        );
-        expect(said).toContain("10번 필드 값이 5인데, Motionbuilder는 항상 2(으)로 써요.");
-        expect(said).toContainEqual(
-          expect.stringMatching(/^장면 0에서 서보 0번\(왼쪽 엉덩이 좌우\)의 끝 위치는 254인데/),
-        );
+        const said = () => texts(odd.locator(".warning-details .issues li"));
+        await expect
+          .poll(said)
+          .toContainEqual(
+            expect.stringMatching(
+              /^장면 0에서 서보 0번\(왼쪽 엉덩이 좌우\)이 안전 범위\(\d+-174\) 밖인 254 위치로 가요\.$/,
+            ),
+          );
+        await expect
+          .poll(said)
+          .toContainEqual(
+            expect.stringMatching(
+              /^이 모션은 시리얼 번호 1234567890123 로봇용으로 만들었는데, 지금 연결된 로봇은 시리얼 번호 \d{13} 로봇이에요\. Motionbuilder는 이런 파일을 거부해요\. 이 로봇에 맞는 모션인지 확인해 주세요\.$/,
+            ),
+          );
+        await expect.poll(said).toContain("10번 필드 값이 5인데, Motionbuilder는 항상 2(으)로 써요.");
+        await expect
+          .poll(said)
+          .toContainEqual(
+            expect.stringMatching(/^장면 0에서 서보 0번\(왼쪽 엉덩이 좌우\)의 끝 위치는 254인데/),
+          );
 
         // Nothing is left in English: no sentence marked as English, no English sentence unmarked.
         const lists = page.locator('[data-testid="rbm-issues"], [data-testid="rbm-warnings"]');

@@ -14,7 +14,7 @@ import type { Locator, Page } from "playwright-core";
 import { describe, expect, it, vi } from "vitest";
 import { mirrorPosition } from "../../src/motion/index.ts";
 import { STANDARD_ZEROS } from "../../src/protocol/zeros.ts";
-import { squash } from "./harness.ts";
+import { expectText, squash, useApp } from "./harness.ts";
 import {
   axeProblems,
   connectCable,
@@ -26,7 +26,6 @@ import {
   scrollsSideways,
   shot,
   sizeName,
-  useApp,
 } from "./i18n-checks.ts";
 import { exampleText, rbmFile } from "./motion-fixtures.ts";
 import "./rbc-test-globals.ts";
@@ -135,22 +134,24 @@ describe("item 1: left and right are the robot's own (docs/protocol.md §4)", ()
       await go(page, "zeros");
       await page.locator("#zero-0").waitFor();
       for (const [id, name] of Object.entries(expected))
-        expect(await nameOf(page.locator(`[data-testid="zeros-card"] tr[data-servo="${id}"]`))).toBe(name);
-      expect(await page.getByTestId("sides-note").allTextContents()).toEqual([SIDES[lang]]);
+        await expect
+          .poll(() => nameOf(page.locator(`[data-testid="zeros-card"] tr[data-servo="${id}"]`)))
+          .toBe(name);
+      await expect.poll(() => page.getByTestId("sides-note").allTextContents()).toEqual([SIDES[lang]]);
 
       await go(page, "servos");
       await page.getByTestId("servo-card").waitFor();
       for (const [id, name] of Object.entries(expected))
-        expect(await nameOf(page.locator(`.servo-table tr[data-servo="${id}"]`))).toBe(name);
-      expect(await page.getByTestId("sides-note").allTextContents()).toEqual([SIDES[lang]]);
+        await expect.poll(() => nameOf(page.locator(`.servo-table tr[data-servo="${id}"]`))).toBe(name);
+      await expect.poll(() => page.getByTestId("sides-note").allTextContents()).toEqual([SIDES[lang]]);
 
       await openEditor(page);
       const pose = page.getByTestId("pose-table");
       for (const [id, name] of Object.entries(expected))
-        expect(await pose.locator(`tr[data-servo="${id}"]`).textContent().then(squash)).toContain(name);
-      expect(await page.getByTestId("sides-note").allTextContents()).toEqual([SIDES[lang]]);
+        await expectText(pose.locator(`tr[data-servo="${id}"]`), name, { contains: true });
+      await expect.poll(() => page.getByTestId("sides-note").allTextContents()).toEqual([SIDES[lang]]);
       await showTab(page, "teach");
-      expect(await page.getByTestId("sides-note").allTextContents()).toEqual([SIDES[lang]]);
+      await expect.poll(() => page.getByTestId("sides-note").allTextContents()).toEqual([SIDES[lang]]);
       expect(await axeProblems(page)).toEqual([]);
       await context.close();
     });
@@ -167,7 +168,7 @@ describe("item 1: left and right are the robot's own (docs/protocol.md §4)", ()
     const mirrored = mirrorPosition(141, STANDARD_ZEROS[10]!, STANDARD_ZEROS[13]!);
     expect(mirrored).toBe(110);
     await expect.poll(() => page.getByTestId("end-13").inputValue()).toBe("110");
-    expect(await page.getByTestId("end-10").inputValue()).toBe("141");
+    await expect.poll(() => page.getByTestId("end-10").inputValue()).toBe("141");
     await context.close();
   });
 
@@ -371,12 +372,13 @@ describe("item 9: at phone width", () => {
     // The current view's tab is in sight in the row.
     await go(page, "log");
     await page.locator('.side-nav a[aria-current="page"]').waitFor();
-    const inRow = await page.locator('.side-nav a[aria-current="page"]').evaluate((a) => {
-      const row = a.closest("ul")!.getBoundingClientRect();
-      const box = a.getBoundingClientRect();
-      return box.left >= row.left - 1 && box.right <= row.right + 1;
-    });
-    expect(inRow).toBe(true);
+    const inRow = () =>
+      page.locator('.side-nav a[aria-current="page"]').evaluate((a) => {
+        const row = a.closest("ul")!.getBoundingClientRect();
+        const box = a.getBoundingClientRect();
+        return box.left >= row.left - 1 && box.right <= row.right + 1;
+      });
+    await expect.poll(inRow).toBe(true);
 
     // The long walk in the Editor: its name and scene names.
     await go(page, "editor");

@@ -16,7 +16,7 @@ import { join } from "node:path";
 import type { Page } from "playwright-core";
 import { describe, expect, it, vi } from "vitest";
 import { hexLines } from "../support/hex.ts";
-import { FAST, ROOT, squash } from "./harness.ts";
+import { expectText, FAST, ROOT, useApp } from "./harness.ts";
 import {
   axeProblems,
   connectCable,
@@ -26,7 +26,6 @@ import {
   shot,
   text,
   texts,
-  useApp,
 } from "./i18n-checks.ts";
 import "./rbc-test-globals.ts";
 
@@ -77,30 +76,37 @@ describe("Firmware: plain words first, and the demo file flagged before a real r
     await openFirmware(page);
     await openFile(page, await demoFile());
 
-    expect(await text(page.getByTestId("fw-declared"))).toBe("2.50");
-    expect(await text(page.getByTestId("fw-demo-mark"))).toBe(
+    await expectText(page.getByTestId("fw-declared"), "2.50");
+    await expectText(
+      page.getByTestId("fw-demo-mark"),
       "A demo file: not firmware a real robot can run. It carries the mark of this project's demo and test files " +
         "(RBCFW 2.50), which only the demo robot understands. Written to a real robot, it would leave that robot " +
         "without working firmware until real firmware is written again.",
     );
-    expect(await page.getByTestId("fw-demo-mark").getAttribute("class")).toContain("notice--warning");
+    await expect
+      .poll(() => page.getByTestId("fw-demo-mark").getAttribute("class"))
+      .toContain("notice--warning");
     // Plain words in sight; the technical words only inside the closed "Technical detail".
-    expect(await text(page.getByTestId("fw-checked"))).toBe(
+    await expectText(
+      page.getByTestId("fw-checked"),
       "Checked: the file is complete and undamaged, fits the robot's controller, and leaves its bootloader alone, " +
         "so a failed update can always be run again.",
     );
-    expect(await detailOpen(page)).toBe(false);
-    expect(await page.getByTestId("fw-pages").isVisible()).toBe(false);
-    expect(await page.getByText(/record types 00, 01, 02 and 04/).isVisible()).toBe(false);
+    await expect.poll(() => detailOpen(page)).toBe(false);
+    await expect.poll(() => page.getByTestId("fw-pages").isVisible()).toBe(false);
+    await expect.poll(() => page.getByText(/record types 00, 01, 02 and 04/).isVisible()).toBe(false);
     await page.getByTestId("fw-detail").locator("summary").click();
-    expect(await text(page.getByTestId("fw-pages"))).toBe("64 of 256 bytes");
-    expect(await page.getByText(/record types 00, 01, 02 and 04 only.*\(0x1E000\)/).isVisible()).toBe(true);
+    await expectText(page.getByTestId("fw-pages"), "64 of 256 bytes");
+    await expect
+      .poll(() => page.getByText(/record types 00, 01, 02 and 04 only.*\(0x1E000\)/).isVisible())
+      .toBe(true);
 
     // The question: a warning, and Update stays disabled until the tick; nothing reaches the robot meanwhile.
     await page.getByTestId("flash-start").click();
     const confirm = page.getByTestId("fw-demo-confirm");
     await confirm.waitFor();
-    expect(await text(confirm)).toBe(
+    await expectText(
+      confirm,
       "demo-2.50.hex is a demo file, and this is a real robot. The robot cannot run it: after the update it will " +
         "not move or answer until you write real firmware to it (the bootloader stays, so that remains possible). " +
         "I understand: the robot will not work until I write real firmware",
@@ -117,8 +123,8 @@ describe("Firmware: plain words first, and the demo file flagged before a real r
 
     // A file without the mark states no version and asks nothing more.
     await openFile(page, plainFile());
-    expect(await text(page.getByTestId("fw-declared"))).toBe("Not stated");
-    expect(await page.getByTestId("fw-demo-mark").count()).toBe(0);
+    await expectText(page.getByTestId("fw-declared"), "Not stated");
+    await expect.poll(() => page.getByTestId("fw-demo-mark").count()).toBe(0);
     await page.getByTestId("flash-start").click();
     await page.getByTestId("flash-confirm").waitFor();
     expect(await page.getByTestId("fw-demo-confirm").count()).toBe(0);
@@ -131,7 +137,9 @@ describe("Firmware: plain words first, and the demo file flagged before a real r
     await connectDemo(page);
     await openFirmware(page);
     await openFile(page, await demoFile());
-    expect(await text(page.getByTestId("fw-demo-mark"))).toContain("On the demo robot it is fine to try.");
+    await expectText(page.getByTestId("fw-demo-mark"), "On the demo robot it is fine to try.", {
+      contains: true,
+    });
     await page.getByTestId("flash-start").click();
     await page.getByTestId("flash-confirm").waitFor();
     expect(await page.getByTestId("fw-demo-confirm").count()).toBe(0);
@@ -146,17 +154,20 @@ describe("Firmware: plain words first, and the demo file flagged before a real r
     await connectCable(page);
     await openFirmware(page);
     await openFile(page, await demoFile());
-    expect(await text(page.getByTestId("fw-declared"))).toBe("2.50");
-    expect(await text(page.getByTestId("fw-demo-mark"))).toBe(
+    await expectText(page.getByTestId("fw-declared"), "2.50");
+    await expectText(
+      page.getByTestId("fw-demo-mark"),
       "데모 파일이에요. 실제 로봇이 실행할 수 있는 펌웨어가 아니에요. 이 프로젝트의 데모·테스트 파일 표시(RBCFW 2.50)가 " +
         "들어 있어요. 이 표시는 데모 로봇만 알아들어요. 실제 로봇에 쓰면, 진짜 펌웨어를 다시 쓸 때까지 그 로봇에는 " +
         "작동하는 펌웨어가 없어요.",
     );
-    expect(await text(page.getByTestId("fw-detail").locator("summary"))).toBe("기술 정보");
+    await expectText(page.getByTestId("fw-detail").locator("summary"), "기술 정보");
     await page.getByTestId("flash-start").click();
     const confirm = page.getByTestId("fw-demo-confirm");
     await confirm.waitFor();
-    expect(await text(confirm)).toContain("demo-2.50.hex은(는) 데모 파일인데, 이 로봇은 실제 로봇이에요.");
+    await expectText(confirm, "demo-2.50.hex은(는) 데모 파일인데, 이 로봇은 실제 로봇이에요.", {
+      contains: true,
+    });
     const update = page.getByRole("button", { name: "펌웨어 업데이트", exact: true });
     await expect.poll(() => update.isDisabled()).toBe(true);
     await page.getByText("알겠어요: 진짜 펌웨어를 쓸 때까지 로봇이 작동하지 않아요").click();
@@ -164,7 +175,7 @@ describe("Firmware: plain words first, and the demo file flagged before a real r
     await shot(page, "plain-words-firmware-ko-phone");
     await page.getByRole("button", { name: "취소", exact: true }).click();
     await openFile(page, plainFile());
-    expect(await text(page.getByTestId("fw-declared"))).toBe("적혀 있지 않음");
+    await expectText(page.getByTestId("fw-declared"), "적혀 있지 않음");
     await context.close();
   });
 });
@@ -189,18 +200,19 @@ describe("Servos: what it does for the robot first, the protocol's words one cli
       await connectDemo(page);
       await go(page, "servos");
       await page.getByTestId("servo-mode").waitFor();
-      expect(await text(page.locator(".servos-view .view-head p"))).toBe(lead);
-      expect(await page.getByText(posture, { exact: true }).isVisible()).toBe(true);
+      await expectText(page.locator(".servos-view .view-head p"), lead);
+      await expect.poll(() => page.getByText(posture, { exact: true }).isVisible()).toBe(true);
       const detail = page.getByTestId("servo-detail");
       for (const word of jargon) {
         const shown = page.getByText(word, { exact: false });
         // Every place the word appears is inside the closed detail, so none is visible.
-        for (const element of await shown.all()) expect(await element.isVisible(), word).toBe(false);
-        expect(await text(detail)).toContain(word);
+        for (const element of await shown.all())
+          await expect.poll(() => element.isVisible(), { message: word }).toBe(false);
+        await expectText(detail, word, { contains: true });
       }
       await detail.locator("summary").click();
       for (const word of jargon)
-        expect(await detail.getByText(word, { exact: false }).isVisible()).toBe(true);
+        await expect.poll(() => detail.getByText(word, { exact: false }).isVisible()).toBe(true);
       await context.close();
     });
   }
@@ -218,15 +230,15 @@ describe("Sounds have names as well as numbers", () => {
       await page.locator("#motions-tab-sounds").click();
       const button = page.locator('[data-sound="7"]');
       // What is seen, and what a screen reader says (the seen text with "Sound" before it).
-      expect((await texts(button.locator(":scope > :not(.sr-only)"))).join(" ")).toBe(seven);
-      expect(await page.getByRole("button", { name: label, exact: true }).getAttribute("data-sound")).toBe(
-        "7",
-      );
+      await expect
+        .poll(async () => (await texts(button.locator(":scope > :not(.sr-only)"))).join(" "))
+        .toBe(seven);
+      await expect
+        .poll(() => page.getByRole("button", { name: label, exact: true }).getAttribute("data-sound"))
+        .toBe("7");
       expect(await axeProblems(page, { within: "[data-testid=sound-card]" })).toEqual([]);
-      expect(await page.locator("[data-sound]").count()).toBe(25);
-      for (let n = 1; n <= 25; n++) {
-        expect(await text(page.locator(`[data-sound="${n}"] .motion-name`)), `sound ${n}`).toMatch(/\S/);
-      }
+      await expect.poll(() => page.locator("[data-sound]").count()).toBe(25);
+      for (let n = 1; n <= 25; n++) await expectText(page.locator(`[data-sound="${n}"] .motion-name`), /\S/);
       await button.click();
       await page.getByTestId("sound-playing").filter({ hasText: playing }).waitFor();
       await context.close();
@@ -259,7 +271,7 @@ describe("Zeros: the comparison agrees with 'Cannot write'", () => {
         .getByTestId("write-why")
         .filter({ hasText: locale === "en-US" ? "Cannot write" : "쓸 수 없어요" })
         .waitFor();
-      expect(await text(page.getByTestId("change-summary"))).toBe(none);
+      await expectText(page.getByTestId("change-summary"), none);
       const five = Number(await page.locator("#zero-5").inputValue());
       await page.locator("#zero-5").fill(String(five + 1));
       await page.locator("#zero-5").press("Tab");
@@ -295,7 +307,7 @@ describe("Teach-in's question says which servos hold and which stay limp", () =>
       await connectDemo(page);
       await openTeachIn(page);
       await page.locator("#start-teach-in").click();
-      expect(await text(page.getByTestId("teach-in-detail"))).toContain(plain);
+      await expectText(page.getByTestId("teach-in-detail"), plain, { contains: true });
       await page.locator("#confirm-teach-in").click();
       await page.locator('input[data-limb="left-arm"]').waitFor();
       await page.locator('input[data-limb="left-arm"]').setChecked(true);
@@ -306,7 +318,7 @@ describe("Teach-in's question says which servos hold and which stay limp", () =>
       await page.getByTestId("end-teach-in").click();
       await page.locator("#start-teach-in:not([disabled])").waitFor({ timeout: 30_000 });
       await page.locator("#start-teach-in").click();
-      expect(squash(await page.getByTestId("teach-in-detail").textContent())).toBe(some);
+      await expectText(page.getByTestId("teach-in-detail"), some);
       await shot(page, `plain-words-teach-in-${locale}`);
       await context.close();
     });

@@ -9,16 +9,8 @@
 import { readFile } from "node:fs/promises";
 import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
-import { connectRobot, FAST, openMotions, squash } from "./harness.ts";
-import {
-  axeProblems,
-  connectCable,
-  expectPageOk,
-  newLocalePage,
-  SIZES,
-  text,
-  useApp,
-} from "./i18n-checks.ts";
+import { connectRobot, expectText, FAST, openMotions, useApp } from "./harness.ts";
+import { axeProblems, connectCable, expectPageOk, newLocalePage, SIZES } from "./i18n-checks.ts";
 import "./rbc-test-globals.ts";
 
 const app = useApp();
@@ -94,46 +86,51 @@ describe("the Remote card", () => {
     await page.getByTestId("memory-motion-text").filter({ hasText: "24,576" }).waitFor();
     await openSensors(page);
     const card = page.getByTestId("remote-card");
-    expect(await card.getByTestId("remote-key").count()).toBe(33);
-    expect(await text(card.getByTestId("remote-firmware"))).toBe(
+    await expect.poll(() => card.getByTestId("remote-key").count()).toBe(33);
+    await expectText(
+      card.getByTestId("remote-firmware"),
       "This robot reports firmware 2.23: its number keys play the downloaded motions. On the official “user” firmware (which reports 9.99) key 9 instead starts an endless walk that only switching the robot off ends.",
     );
     // Built-in 4, key 1 (the motion memory reads wholly free), key 9's hazard, and the # keys.
-    expect(await text(tile(page, 4))).toBe("code 4 Walk forward");
-    expect(await text(tile(page, 12))).toBe("1 key 1 · code 12 Nothing stored");
-    expect(await text(tile(page, 20))).toBe(
+    await expectText(tile(page, 4), "code 4 Walk forward");
+    await expectText(tile(page, 12), "1 key 1 · code 12 Nothing stored");
+    await expectText(
+      tile(page, 20),
       "9 key 9 · code 20 Nothing stored On the official “user” firmware: an endless walk that only switching the robot off ends",
     );
-    expect(await text(tile(page, 33))).toBe("1 * + 1 · code 33 Nothing stored");
-    expect(await text(tile(page, 0x2b))).toBe(
+    await expectText(tile(page, 33), "1 * + 1 · code 33 Nothing stored");
+    await expectText(
+      tile(page, 0x2b),
       "A # + A · code 43 Hazard: Starts battery charging when a charger is connected",
     );
-    expect(await text(tile(page, 0x31))).toBe(
+    await expectText(
+      tile(page, 0x31),
       "C # + C · code 49 Hazard: Moves every servo to its stored zero (the raw zero pose) at once",
     );
-    expect(await card.getByTestId("remote-listen").textContent()).toContain("Choose IR remote under Events");
+    await expectText(card.getByTestId("remote-listen"), "Choose IR remote under Events", { contains: true });
     expect(await card.locator(".is-lit").count()).toBe(0);
 
     await page.getByRole("radio", { name: "IR remote" }).check();
     await card.getByTestId("remote-listen").filter({ hasText: "the key you press lights up" }).waitFor();
-    expect(await text(card.getByTestId("remote-last"))).toBe("No key pressed yet.");
+    await expectText(card.getByTestId("remote-last"), "No key pressed yet.");
     await pressKey(page, 4);
     await tile(page, 4).and(page.locator(".is-lit")).waitFor();
-    expect(await tile(page, 4).getAttribute("aria-current")).toBe("true");
-    expect(await text(card.getByTestId("remote-last"))).toMatch(
+    await expect.poll(() => tile(page, 4).getAttribute("aria-current")).toBe("true");
+    await expectText(
+      card.getByTestId("remote-last"),
       /^Last key: Walk forward \(code 4\), at \d\d:\d\d:\d\d\.$/,
     );
     await pressKey(page, 13);
     await tile(page, 13).and(page.locator(".is-lit")).waitFor();
-    expect(await card.locator(".is-lit").count()).toBe(1);
-    expect(await tile(page, 4).getAttribute("aria-current")).toBeNull();
-    expect(await text(card.getByTestId("remote-last"))).toMatch(/^Last key: key 2 \(code 13\), at /);
+    await expect.poll(() => card.locator(".is-lit").count()).toBe(1);
+    await expect.poll(() => tile(page, 4).getAttribute("aria-current")).toBeNull();
+    await expectText(card.getByTestId("remote-last"), /^Last key: key 2 \(code 13\), at /);
     expect(await axeProblems(page, { within: '[data-testid="remote-card"]' })).toEqual([]);
 
     // Listening stops: no key is lit any more.
     await page.getByRole("radio", { name: "Nothing" }).check();
     await card.getByTestId("remote-listen").filter({ hasText: "Choose IR remote" }).waitFor();
-    expect(await card.locator(".is-lit").count()).toBe(0);
+    await expect.poll(() => card.locator(".is-lit").count()).toBe(0);
     await context.close();
   });
 
@@ -143,16 +140,17 @@ describe("the Remote card", () => {
     });
     await connectRobot(page, app.url);
     await openSensors(page);
-    expect(await text(page.getByTestId("remote-firmware"))).toContain(
+    await expectText(
+      page.getByTestId("remote-firmware"),
       "This robot reports firmware 9.99, as the official “user” firmware (and a homebrew port of it) does",
+      { contains: true },
     );
-    expect(await text(tile(page, 12))).toBe(
-      "1 key 1 · code 12 Nothing on this firmware (it plays no downloads)",
-    );
-    expect(await text(tile(page, 20))).toBe(
+    await expectText(tile(page, 12), "1 key 1 · code 12 Nothing on this firmware (it plays no downloads)");
+    await expectText(
+      tile(page, 20),
       "9 key 9 · code 20 Hazard: An endless walk: only switching the robot off ends it",
     );
-    expect(await text(tile(page, 21))).toBe("0 key 0 · code 21 A demo motion kept in the firmware");
+    await expectText(tile(page, 21), "0 key 0 · code 21 A demo motion kept in the firmware");
     await context.close();
   });
 });
@@ -166,7 +164,8 @@ describe("Make this motion usable on this robot", () => {
     const file = page.getByTestId("motion-file");
     const offer = file.getByTestId("restamp-offer");
     await offer.waitFor();
-    expect(squash(await offer.locator("p").textContent())).toBe(
+    await expectText(
+      offer.locator("p"),
       "This motion was made for the robot with serial number 1111122222333; this robot is 8958899989309. Motionbuilder refuses such a file. The copy differs from the file only in its serial number (field 2); the motion is the same.",
     );
     await file.getByRole("button", { name: "Make this motion usable on this robot" }).click();
@@ -236,12 +235,12 @@ describe("in Korean (ko-KR)", () => {
       await connectCable(page);
       await openSensors(page, "센서");
       const card = page.getByTestId("remote-card");
-      expect(await text(card.locator("h2"))).toBe("리모컨");
-      expect(await text(tile(page, 12))).toBe("1 1 키 · 코드 12 저장된 모션 없음");
+      await expectText(card.locator("h2"), "리모컨");
+      await expectText(tile(page, 12), "1 1 키 · 코드 12 저장된 모션 없음");
       await page.getByRole("radio", { name: "IR 리모컨" }).check();
       await pressKey(page, 34);
       await tile(page, 34).and(page.locator(".is-lit")).waitFor();
-      expect(await text(card.getByTestId("remote-last"))).toMatch(/^마지막 키: \* \+ 2 \(코드 34\), /);
+      await expectText(card.getByTestId("remote-last"), /^마지막 키: \* \+ 2 \(코드 34\), /);
       await card.scrollIntoViewIfNeeded();
       await expectPageOk(page, `the Sensors view in Korean at ${size.width}`, {
         lang: "ko",

@@ -7,27 +7,12 @@
  */
 import { createRequire } from "node:module";
 import type { Locator, Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import {
-  type AppHarness,
-  buildOnce,
-  cspViolations,
-  openMotions,
-  startHarness,
-  watchPage,
-} from "./harness.ts";
+import { describe, expect, it } from "vitest";
+import { buildOnce, cspViolations, expectText, openMotions, useApp, watchPage } from "./harness.ts";
 import { exampleText, rbmFile } from "./motion-fixtures.ts";
 import "./rbc-test-globals.ts";
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 const BASIC = "125 179 199 88 108 126 72 49 163 141 51 47 49 199 205 205";
 /** wave.rbm at 800 ms, the end of its first scene (RaiseArm): the left arm up (examples/README.md). */
@@ -127,23 +112,23 @@ describe("3D preview of an opened motion file", () => {
     expect(await card.locator("canvas.robot3d-canvas").count()).toBe(0);
 
     const toggle = card.getByTestId("preview-toggle");
-    expect(await toggle.getAttribute("aria-expanded")).toBe("false");
+    await expect.poll(() => toggle.getAttribute("aria-expanded")).toBe("false");
     await toggle.click();
     const preview = card.getByTestId("motion-preview");
     const view = preview.getByTestId("robot3d-view");
     await preview.locator('[data-state="ready"]').waitFor();
     await expect.poll(() => frames(view)).toBeGreaterThan(0);
     expect(sceneRequests).toHaveLength(1);
-    expect(await toggle.getAttribute("aria-expanded")).toBe("true");
+    await expect.poll(() => toggle.getAttribute("aria-expanded")).toBe("true");
 
     const canvas = preview.locator("canvas.robot3d-canvas");
-    expect(await canvas.getAttribute("role")).toBe("img");
-    expect(await canvas.getAttribute("aria-label")).toContain("3D preview of RbcPanel_Wave");
-    expect(await canvas.getAttribute("aria-label")).toContain("scene table");
-    expect(await attr(view, "data-pose")).toBe(BASIC);
-    expect(await attr(preview, "data-time")).toBe("0");
-    expect(await attr(preview, "data-duration")).toBe("3200");
-    expect(await preview.getByTestId("preview-clock").textContent()).toBe("0.0 s / 3.2 s");
+    await expect.poll(() => canvas.getAttribute("role")).toBe("img");
+    await expect.poll(() => canvas.getAttribute("aria-label")).toContain("3D preview of RbcPanel_Wave");
+    await expect.poll(() => canvas.getAttribute("aria-label")).toContain("scene table");
+    await expect.poll(() => attr(view, "data-pose")).toBe(BASIC);
+    await expect.poll(() => attr(preview, "data-time")).toBe("0");
+    await expect.poll(() => attr(preview, "data-duration")).toBe("3200");
+    await expectText(preview.getByTestId("preview-clock"), "0.0 s / 3.2 s");
 
     const first = await picture(preview);
     // Not blank: the robot covers a good part of the picture (about 5-15 %; the grid adds a little).
@@ -162,7 +147,7 @@ describe("3D preview of an opened motion file", () => {
     await preview.getByTestId("preview-time").fill("800");
     await expect.poll(() => attr(view, "data-pose")).toBe(ARM_RAISED);
     await expect.poll(() => frames(view)).toBeGreaterThan(drawn);
-    expect(await preview.getByTestId("preview-clock").textContent()).toBe("0.8 s / 3.2 s");
+    await expectText(preview.getByTestId("preview-clock"), "0.8 s / 3.2 s");
     const raised = await picture(preview);
     expect(raised.dataUrl).not.toBe(first.dataUrl);
     expect(await pixelsChanged(page, first.dataUrl, raised.dataUrl)).toBeGreaterThan(200);
@@ -172,7 +157,7 @@ describe("3D preview of an opened motion file", () => {
     const beforeTurn = await frames(view);
     await page.keyboard.press("ArrowLeft");
     await expect.poll(() => frames(view)).toBeGreaterThan(beforeTurn);
-    expect(await attr(view, "data-pose")).toBe(ARM_RAISED);
+    await expect.poll(() => attr(view, "data-pose")).toBe(ARM_RAISED);
     expect((await picture(preview)).dataUrl).not.toBe(raised.dataUrl);
 
     // The app re-renders the view (scenes and chart shown or hidden): the same canvas and context go on drawing.
@@ -187,7 +172,7 @@ describe("3D preview of an opened motion file", () => {
     await preview.getByTestId("preview-time").fill("1600");
     await expect.poll(() => frames(view)).toBeGreaterThan(kept);
     expect(await canvas.evaluate((c) => (c as HTMLCanvasElement & { __kept?: boolean }).__kept)).toBe(true);
-    expect(await card.locator("canvas.robot3d-canvas").count()).toBe(1);
+    await expect.poll(() => card.locator("canvas.robot3d-canvas").count()).toBe(1);
 
     // Closing the preview frees the context.
     await canvas.evaluate((c) => {
@@ -195,13 +180,15 @@ describe("3D preview of an opened motion file", () => {
     });
     await toggle.click();
     await preview.waitFor({ state: "detached" });
-    expect(
-      await page.evaluate(() =>
-        (window as unknown as { __previewCanvas: HTMLCanvasElement }).__previewCanvas
-          .getContext("webgl2")
-          ?.isContextLost(),
-      ),
-    ).toBe(true);
+    await expect
+      .poll(() =>
+        page.evaluate(() =>
+          (window as unknown as { __previewCanvas: HTMLCanvasElement }).__previewCanvas
+            .getContext("webgl2")
+            ?.isContextLost(),
+        ),
+      )
+      .toBe(true);
 
     expect(seen.errors).toEqual([]);
     expect(seen.foreignRequests).toEqual([]);
@@ -236,30 +223,30 @@ describe("3D preview of an opened motion file", () => {
       poses.add(await attr(view, "data-pose"));
       if (pictures.size < 3) pictures.add((await picture(preview)).dataUrl);
     }
-    expect(await attr(preview, "data-playing")).toBe("false");
-    expect(await attr(preview, "data-time")).toBe("3200");
+    await expect.poll(() => attr(preview, "data-playing")).toBe("false");
+    await expect.poll(() => attr(preview, "data-time")).toBe("3200");
     await page.clock.resume();
     // The last pose is drawn at the next animation frame.
     await expect.poll(() => attr(view, "data-pose")).toBe(BASIC);
     expect(poses.size).toBeGreaterThan(3);
     expect(pictures.size).toBeGreaterThan(1);
     const play = preview.getByTestId("preview-play");
-    expect((await play.textContent())?.trim()).toBe("Play again");
+    await expectText(play, "Play again");
 
     // Play again starts from the beginning; Pause stops where it is.
     await play.click();
     await expect.poll(() => attr(preview, "data-time").then(Number)).toBeGreaterThan(0);
-    expect((await play.textContent())?.trim()).toBe("Pause");
+    await expectText(play, "Pause");
     await play.click();
-    expect(await attr(preview, "data-playing")).toBe("false");
+    await expect.poll(() => attr(preview, "data-playing")).toBe("false");
     const stoppedAt = await attr(preview, "data-time");
     // The pose reached as Pause was pressed may still be drawn at the next animation frame; nothing after it.
     await animationFrames(page, 2);
     const drawn = await frames(view);
     await animationFrames(page, 30);
-    expect(await attr(preview, "data-time")).toBe(stoppedAt);
-    expect(await frames(view)).toBe(drawn);
-    expect((await play.textContent())?.trim()).toBe("Play");
+    await expect.poll(() => attr(preview, "data-time")).toBe(stoppedAt);
+    await expect.poll(() => frames(view)).toBe(drawn);
+    await expectText(play, "Play");
 
     expect(seen.errors).toEqual([]);
   });
@@ -276,31 +263,33 @@ describe("3D preview of an opened motion file", () => {
 
     const drawn = await frames(view);
     await animationFrames(page, 30);
-    expect(await attr(preview, "data-playing")).toBe("false");
-    expect(await attr(preview, "data-time")).toBe("0");
-    expect(await frames(view)).toBe(drawn);
-    expect(await preview.textContent()).toContain("Reduced motion is on");
+    await expect.poll(() => attr(preview, "data-playing")).toBe("false");
+    await expect.poll(() => attr(preview, "data-time")).toBe("0");
+    await expect.poll(() => frames(view)).toBe(drawn);
+    await expectText(preview, "Reduced motion is on", { contains: true });
 
     const next = preview.getByTestId("preview-play");
-    expect((await next.textContent())?.trim()).toBe("Next scene");
+    await expectText(next, "Next scene");
     await next.click();
-    expect(await attr(preview, "data-time")).toBe("800");
-    expect(await attr(preview, "data-playing")).toBe("false");
+    await expect.poll(() => attr(preview, "data-time")).toBe("800");
+    await expect.poll(() => attr(preview, "data-playing")).toBe("false");
     await expect.poll(() => attr(view, "data-pose")).toBe(ARM_RAISED);
     await next.click();
     // Scene 1 (WaveOut) ends at 1.2 s.
-    expect(await attr(preview, "data-time")).toBe("1200");
+    await expect.poll(() => attr(preview, "data-time")).toBe("1200");
     await animationFrames(page, 30);
-    expect(await attr(preview, "data-time")).toBe("1200");
+    await expect.poll(() => attr(preview, "data-time")).toBe("1200");
 
     // The scrub bar's keys: a tenth of a second, and a scene with Page Up.
     const time = preview.getByTestId("preview-time");
     await time.focus();
     await page.keyboard.press("ArrowRight");
-    expect(await attr(preview, "data-time")).toBe("1300");
+    await expect.poll(() => attr(preview, "data-time")).toBe("1300");
     await page.keyboard.press("PageUp");
-    expect(await attr(preview, "data-time")).toBe("1600");
-    expect(await time.getAttribute("aria-valuetext")).toBe("1.6 s / 3.2 s, end of scene 2, WaveIn");
+    await expect.poll(() => attr(preview, "data-time")).toBe("1600");
+    await expect
+      .poll(() => time.getAttribute("aria-valuetext"))
+      .toBe("1.6 s / 3.2 s, end of scene 2, WaveIn");
   });
 
   it("says so in place of the picture when the browser has no WebGL 2, and loads no 3D code", async () => {
@@ -316,13 +305,13 @@ HTMLCanvasElement.prototype.getContext = function (type, ...rest) {
     await card.getByTestId("preview-toggle").click();
     const view = card.getByTestId("robot3d-view");
     await view.locator(".robot3d-status").filter({ hasText: "needs WebGL 2" }).waitFor();
-    expect(await attr(view, "data-state")).toBe("no-webgl");
+    await expect.poll(() => attr(view, "data-state")).toBe("no-webgl");
     expect(await view.locator("canvas").count()).toBe(0);
-    expect(await view.locator(".robot3d-status").textContent()).toContain("scene table");
+    await expectText(view.locator(".robot3d-status"), "scene table", { contains: true });
     // The controls still work: the time moves, nothing is drawn.
     await card.getByTestId("preview-time").fill("800");
-    expect(await attr(card.getByTestId("motion-preview"), "data-time")).toBe("800");
-    expect(await attr(view, "data-frames")).toBe("0");
+    await expect.poll(() => attr(card.getByTestId("motion-preview"), "data-time")).toBe("800");
+    await expect.poll(() => attr(view, "data-frames")).toBe("0");
     expect(sceneRequests).toEqual([]);
     expect(seen.errors).toEqual([]);
   });

@@ -1,25 +1,9 @@
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import {
-  type AppHarness,
-  connectRobot,
-  cspViolations,
-  FAST,
-  robotTime,
-  startHarness,
-  watchPage,
-} from "./harness.ts";
+import { describe, expect, it } from "vitest";
+import { connectRobot, cspViolations, expectText, FAST, robotTime, useApp, watchPage } from "./harness.ts";
 import "./rbc-test-globals.ts";
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 async function openSensors(page: Page): Promise<void> {
   await connectRobot(page, app.url);
@@ -82,7 +66,7 @@ describe("sensors view", () => {
     await page.getByTestId("poll-status").filter({ hasText: "Reading 10 times a second" }).waitFor();
 
     // PF buttons: one subscription at a time.
-    expect(await page.getByText("The robot reports only one of these at a time").count()).toBe(1);
+    await expect.poll(() => page.getByText("The robot reports only one of these at a time").count()).toBe(1);
     await page.getByRole("radio", { name: "PF buttons" }).check();
     await page.getByTestId("listen-status").filter({ hasText: "Listening to PF buttons" }).waitFor();
     await expect.poll(() => simSubscription(page)).toBe(0x18);
@@ -155,10 +139,10 @@ describe("sensors view", () => {
         });
       }, testId);
     await accel.locator("canvas").first().waitFor();
-    const dark = await contrasts("accel-chart");
-    expect(dark).toHaveLength(3);
-    for (const c of dark) expect(c).toBeGreaterThanOrEqual(3);
-    expect(Math.min(...(await contrasts("distance-chart")))).toBeGreaterThanOrEqual(3);
+    // The three lines' colours are set when the chart draws: polled until they are.
+    await expect.poll(() => contrasts("accel-chart")).toHaveLength(3);
+    for (const c of await contrasts("accel-chart")) expect(c).toBeGreaterThanOrEqual(3);
+    await expect.poll(async () => Math.min(...(await contrasts("distance-chart")))).toBeGreaterThanOrEqual(3);
     // The colours follow a change of scheme without leaving the view.
     const darkColours = await accel.getAttribute("data-line-colours");
     await page.emulateMedia({ colorScheme: "light" });
@@ -167,9 +151,9 @@ describe("sensors view", () => {
     await expect.poll(async () => Math.min(...(await contrasts("accel-chart")))).toBeGreaterThanOrEqual(3);
 
     // "last reading at 14:02:11", not "14:02:11.045".
-    const status = await page.getByTestId("poll-status").textContent();
-    expect(status).toMatch(/last reading at \d{1,2}:\d{2}:\d{2}( [AP]M)?\./);
-    expect(status).not.toMatch(/\d{2}:\d{2}:\d{2}\.\d/);
+    const status = page.getByTestId("poll-status");
+    await expectText(status, /last reading at \d{1,2}:\d{2}:\d{2}( [AP]M)?\./);
+    expect(await status.textContent()).not.toMatch(/\d{2}:\d{2}:\d{2}\.\d/);
     await context.close();
   });
 

@@ -1,6 +1,6 @@
 import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
-import { connectRobot, squash } from "./harness.ts";
+import { connectRobot, expectText, squash, useApp } from "./harness.ts";
 import "./rbc-test-globals.ts";
 import {
   axeProblems,
@@ -10,7 +10,6 @@ import {
   PHONE,
   pageProblems,
   text,
-  useApp,
 } from "./i18n-checks.ts";
 
 /**
@@ -98,8 +97,10 @@ describe("Servo check on the demo robot", () => {
   it("finds a replacement servo at id 0, fixes its id with the guided fix, and scans clean; axe clean before and after", async () => {
     const { page, context } = await newLocalePage(app, "en-US", { options: QUARTER });
     await openDoctor(page, "Servo check");
-    expect(await text(page.locator(".doctor-view .view-head p").first())).toContain(
+    await expectText(
+      page.locator(".doctor-view .view-head p").first(),
       "Find servos that do not answer or carry the wrong id",
+      { contains: true },
     );
     expect(await axeProblems(page, { within: ".doctor-view" })).toEqual([]);
 
@@ -114,63 +115,72 @@ describe("Servo check on the demo robot", () => {
       .filter({ hasText: "replacement servo (still id 0), servo 7" })
       .waitFor();
 
-    const summary = await scanNow(page, /Scanned 16 ids/);
-    expect(summary).toBe("Scanned 16 ids: 14 answered, 1 silent, 1 garbled.");
-    expect(await status(page, 0)).toMatch(/^garbled/);
-    expect(await status(page, 7)).toBe("silent");
-    expect(await status(page, 8)).toBe("answered");
-    expect(await findings(page)).toEqual([
-      "Id 0 is answered by two servos and id 7 by none: a replacement servo still has the factory id 0. Unplug servo 0, then give the new servo id 7 with the guided id fix.",
-    ]);
+    await scanNow(page, /Scanned 16 ids/);
+    await expectText(
+      page.getByTestId("doctor-scan-status"),
+      "Scanned 16 ids: 14 answered, 1 silent, 1 garbled.",
+    );
+    await expect.poll(() => status(page, 0)).toMatch(/^garbled/);
+    await expect.poll(() => status(page, 7)).toBe("silent");
+    await expect.poll(() => status(page, 8)).toBe("answered");
+    await expect
+      .poll(() => findings(page))
+      .toEqual([
+        "Id 0 is answered by two servos and id 7 by none: a replacement servo still has the factory id 0. Unplug servo 0, then give the new servo id 7 with the guided id fix.",
+      ]);
     // The figure shows the same: id 0 a garbled mark, id 7 a silent one (the robot's left leg on the viewer's right).
     const mark = (id: number) => page.locator(`[data-testid=servo-figure] g[data-servo="${id}"]`);
-    expect(await mark(0).getAttribute("class")).toContain("mark--garbled");
-    expect(await mark(7).getAttribute("class")).toContain("mark--silent");
+    await expect.poll(() => mark(0).getAttribute("class")).toContain("mark--garbled");
+    await expect.poll(() => mark(7).getAttribute("class")).toContain("mark--silent");
     const x = async (id: number) => Number(await mark(id).locator("text").getAttribute("x"));
-    expect(await x(0)).toBeGreaterThan(await x(5));
+    await expect.poll(() => x(0)).toBeGreaterThan(await x(5));
     expect(await axeProblems(page, { within: ".doctor-view" })).toEqual([]);
 
     // The guided fix, filled in from the scan: id 0 is garbled, so it is refused and asks to unplug the other one.
     await page.getByTestId("doctor-fix-suggested").filter({ hasText: "id 0 → id 7" }).waitFor();
-    expect(await page.locator("#doctor-fix-from").inputValue()).toBe("0");
-    expect(await page.locator("#doctor-fix-to").inputValue()).toBe("7");
+    await expect.poll(() => page.locator("#doctor-fix-from").inputValue()).toBe("0");
+    await expect.poll(() => page.locator("#doctor-fix-to").inputValue()).toBe("7");
     await page.getByTestId("doctor-fix").click();
     const result = page.getByTestId("doctor-fix-result");
     await result.filter({ hasText: "Not changed" }).waitFor();
-    expect(await text(result)).toBe(
+    await expectText(
+      result,
       "Not changed: more than one servo answers at id 0, and all of them would take the new id. Unplug the other servos of that chain, then try again.",
     );
 
     // Unplug servo 0 (as a person would), scan again: id 0 is one servo now, id 7 still silent.
     await page.getByTestId("doctor-demo-unplug").click();
     await scanNow(page, /Scanned 16 ids/);
-    expect(await status(page, 0)).toBe("answered");
-    expect(await status(page, 7)).toBe("silent");
-    expect(await findings(page)).toEqual([
-      "Servo 7 (Right knee) does not answer: check its cable and the one before it in the chain.",
-    ]);
+    await expect.poll(() => status(page, 0)).toBe("answered");
+    await expect.poll(() => status(page, 7)).toBe("silent");
+    await expect
+      .poll(() => findings(page))
+      .toEqual(["Servo 7 (Right knee) does not answer: check its cable and the one before it in the chain."]);
 
     // The fix asks once, then says what it read after.
     await page.getByTestId("doctor-fix").click();
     const question = page.getByRole("alertdialog");
     await question.waitFor();
-    expect(await text(question)).toMatch(
+    await expectText(
+      question,
       /^One servo answers at id 0 \(position \d+\) and none at id 7\. Give it id 7\?/,
     );
     await page.getByTestId("doctor-fix-confirm").click();
     await result.filter({ hasText: "Done" }).waitFor();
-    expect(await text(result)).toMatch(
+    await expectText(
+      result,
       /^Done: the servo that was id 0 is now id 7\. A read at id 7 answered \(position \d+\) and id 0 is silent\.$/,
     );
 
     // Servo 0 plugged back in: a clean scan.
     await page.getByTestId("doctor-demo-plug-back").click();
-    const clean = await scanNow(page, /Scanned 16 ids/);
-    expect(clean).toBe(
+    await scanNow(page, /Scanned 16 ids/);
+    await expectText(
+      page.getByTestId("doctor-scan-status"),
       "Scanned 16 ids: 16 answered, 0 silent, 0 garbled. Every servo 0-15 answered, with no high load at rest.",
     );
-    expect(await page.getByTestId("doctor-findings").count()).toBe(0);
-    expect(await status(page, 7)).toBe("answered");
+    await expect.poll(() => page.getByTestId("doctor-findings").count()).toBe(0);
+    await expect.poll(() => status(page, 7)).toBe("answered");
     expect(await axeProblems(page, { within: ".doctor-view" })).toEqual([]);
     await context.close();
   });
@@ -180,12 +190,15 @@ describe("Servo check on the demo robot", () => {
     await openDoctor(page, "서보 점검");
     await simulateFault(page, "replacement", 3, "교체한 서보 (아직 ID 0), 서보 3번");
     await scanNow(page, /ID 16개를 검사했어요/);
-    expect(await status(page, 0)).toMatch(/^깨진 응답/);
-    expect(await status(page, 3)).toBe("응답 없음");
-    expect(await findings(page)).toEqual([
-      "ID 0에는 서보 두 개가 응답하고 ID 3에는 아무것도 응답하지 않아요. 새로 바꾼 서보가 아직 공장 ID 0을 갖고 있어요. 서보 0번을 뺀 다음, ID 고치기로 새 서보에 ID 3을 주세요.",
-    ]);
-    expect(await text(page.locator(".doctor-view .sides-note"))).toBe(
+    await expect.poll(() => status(page, 0)).toMatch(/^깨진 응답/);
+    await expect.poll(() => status(page, 3)).toBe("응답 없음");
+    await expect
+      .poll(() => findings(page))
+      .toEqual([
+        "ID 0에는 서보 두 개가 응답하고 ID 3에는 아무것도 응답하지 않아요. 새로 바꾼 서보가 아직 공장 ID 0을 갖고 있어요. 서보 0번을 뺀 다음, ID 고치기로 새 서보에 ID 3을 주세요.",
+      ]);
+    await expectText(
+      page.locator(".doctor-view .sides-note"),
       "왼쪽과 오른쪽은 로봇 기준이에요. 로봇이 나를 마주 보고 있으면 로봇의 왼팔은 내 오른쪽에 있어요.",
     );
     await page.getByTestId("doctor-fix").click();
@@ -197,9 +210,11 @@ describe("Servo check on the demo robot", () => {
     await page.getByRole("alertdialog").filter({ hasText: "ID 3을 줄까요?" }).waitFor();
     await page.getByTestId("doctor-fix-confirm").click();
     await result.filter({ hasText: "다 됐어요" }).waitFor();
-    expect(await text(result)).toMatch(/^다 됐어요\. ID 0이던 서보가 이제 ID 3이에요\./);
+    await expectText(result, /^다 됐어요\. ID 0이던 서보가 이제 ID 3이에요\./);
     await page.getByTestId("doctor-demo-plug-back").click();
-    expect(await scanNow(page, /ID 16개를 검사했어요/)).toBe(
+    await scanNow(page, /ID 16개를 검사했어요/);
+    await expectText(
+      page.getByTestId("doctor-scan-status"),
       "ID 16개를 검사했어요. 응답함 16, 응답 없음 0, 깨진 응답 0. 서보 0-15가 모두 응답했고, 쉬는 동안 부하가 높은 서보도 없어요.",
     );
     expect(await keysShown(page)).toEqual([]);
@@ -215,8 +230,8 @@ describe("Servo check on the demo robot", () => {
     const read = await holdAfterReads(page, 4);
     // The progress bar counts the ids read, out of 31.
     const bar = page.getByRole("progressbar");
-    expect(await bar.getAttribute("max")).toBe("31");
-    expect(await bar.evaluate((p) => (p as HTMLProgressElement).value)).toBe(read.length);
+    await expect.poll(() => bar.getAttribute("max")).toBe("31");
+    await expect.poll(() => bar.evaluate((p) => (p as HTMLProgressElement).value)).toBe(read.length);
     await page.getByTestId("doctor-cancel").click();
     await page.evaluate(() => window.__rbcTest?.clock.release());
     const stopped = await text(
@@ -230,7 +245,7 @@ describe("Servo check on the demo robot", () => {
     expect(stopped).toBe(
       `The scan stopped (cancelled). Read: ${after.join(", ")}. Not read: ${unread.join(", ")}. Scanned ${after.length} ids: ${after.length} answered, 0 silent, 0 garbled.`,
     );
-    expect(await status(page, after.length)).toBe("not read");
+    await expect.poll(() => status(page, after.length)).toBe("not read");
     // Direct mode was left at the end: the top bar no longer says servo control.
     await expect.poll(() => text(page.getByTestId("connection-status"))).not.toContain("servo control");
     await context.close();
@@ -263,32 +278,35 @@ describe("Servo check on the demo robot", () => {
     await openDoctor(page, "Servo check");
     await simulateFault(page, "loaded", 4, "loaded servo, servo 4");
     await scanNow(page, /Scanned 16 ids/);
-    const [finding] = await findings(page);
-    expect(finding).toMatch(/^Servo 4 \(Left ankle roll\) carries a high load at rest \(\d+\)/);
+    await expect
+      .poll(async () => (await findings(page))[0])
+      .toMatch(/^Servo 4 \(Left ankle roll\) carries a high load at rest \(\d+\)/);
     const mark = page.locator('[data-testid=servo-figure] g[data-servo="4"]');
-    expect(await mark.getAttribute("class")).toContain("mark--high-load");
+    await expect.poll(() => mark.getAttribute("class")).toContain("mark--high-load");
     await mark.click();
     // The pick is drawn on the panel's next render: polled.
     await expect.poll(() => page.getByTestId("doctor-pick").inputValue()).toBe("4");
     await page.getByTestId("doctor-read").click();
     const info = page.getByTestId("doctor-info");
     await info.waitFor();
-    expect(await text(info)).toMatch(
+    await expectText(
+      info,
       /^Status: answered, position \d+, load 180\. Settings read from servo 4 P and D gains P \d+, D \d+ /,
     );
-    expect(await text(info)).toContain("bounds (lower, upper) 1, 254");
+    await expectText(info, "bounds (lower, upper) 1, 254", { contains: true });
 
     // Nothing moves before the question is answered.
     await page.getByTestId("doctor-wiggle-ask").click();
     const question = page.getByRole("alertdialog");
-    expect(await text(question)).toContain(
-      "Hold the robot or lay it down: servo 4 will move a few counts each way.",
-    );
+    await expectText(question, "Hold the robot or lay it down: servo 4 will move a few counts each way.", {
+      contains: true,
+    });
     const before = await page.evaluate(() => window.__rbcDemoSim?.servos[4]?.position);
     await page.getByTestId("doctor-wiggle-go").click();
     const result = page.getByTestId("doctor-wiggle-result");
     await result.waitFor();
-    expect(await text(result)).toMatch(
+    await expectText(
+      result,
       new RegExp(
         `^Servo 4 \\(Left ankle roll\\) did not follow the wiggle \\(±5 from ${before}, at the lowest torque\\): it made \\d+% of the swing; highest load \\d+\\.$`,
       ),
@@ -306,8 +324,10 @@ describe("Servo check on the demo robot", () => {
     await page.getByTestId("doctor-scan").click();
     const problem = page.getByTestId("doctor-problem");
     await problem.filter({ hasText: "Not started" }).waitFor();
-    expect(await text(problem)).toContain(
+    await expectText(
+      problem,
       "The servo check could not run. Not started: the robot is busy, probably playing a motion started elsewhere",
+      { contains: true },
     );
     expect(await page.evaluate(() => window.__rbcTest?.sim.directMode)).toBe(false);
     await problem.getByRole("button", { name: "Stop" }).click();
@@ -317,7 +337,7 @@ describe("Servo check on the demo robot", () => {
       .poll(() => page.evaluate(() => window.__rbcTest?.sim.playingMotion ?? null), { timeout: 30_000 })
       .toBe(null);
     await scanNow(page, /Scanned 16 ids/);
-    expect(await problem.textContent().then(squash)).toBe("");
+    await expectText(problem, "");
     await context.close();
   });
 
@@ -345,7 +365,8 @@ describe("Servo check on the demo robot", () => {
     await page.evaluate(() => window.__rbcTest?.clock.release());
     const result = page.getByTestId("doctor-wiggle-result");
     await result.waitFor();
-    expect(await text(result)).toBe(
+    await expectText(
+      result,
       "The wiggle stopped (Stop was pressed); nothing more was sent. The servo holds where it got to.",
     );
     expect(await page.evaluate(() => window.__rbcDemoSim?.servos[2]?.passive)).toBe(false);

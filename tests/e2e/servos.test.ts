@@ -1,7 +1,7 @@
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { describe, expect, it } from "vitest";
 import { HUNO_BASIC_POSTURE } from "../../src/protocol/index.ts";
-import { type AppHarness, connectRobot, cspViolations, squash, startHarness } from "./harness.ts";
+import { connectRobot, cspViolations, expectText, useApp } from "./harness.ts";
 import "./rbc-test-globals.ts";
 import {
   connectCable,
@@ -15,15 +15,7 @@ import {
 } from "./i18n-checks.ts";
 import { exampleText, rbmFile } from "./motion-fixtures.ts";
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 const simServos = (page: Page) => page.evaluate(() => window.__rbcTest?.sim.servos ?? []);
 const simDirect = (page: Page) => page.evaluate(() => window.__rbcTest?.sim.directMode);
@@ -46,21 +38,19 @@ describe("servos view", () => {
     const { page, context } = await app.newPage();
     await openServos(page);
     const notice = page.getByTestId("servo-safety");
-    expect(await notice.textContent().then(squash)).toContain("Support the robot");
-    expect(await page.getByTestId("enter-direct").isDisabled()).toBe(true);
-    expect(await page.locator("#servo-3").isDisabled()).toBe(true);
+    await expectText(notice, "Support the robot", { contains: true });
+    await expect.poll(() => page.getByTestId("enter-direct").isDisabled()).toBe(true);
+    await expect.poll(() => page.locator("#servo-3").isDisabled()).toBe(true);
 
     await startControl(page);
-    expect(await notice.count()).toBe(0);
+    await expect.poll(() => notice.count()).toBe(0);
     expect(await simDirect(page)).toBe(true);
-    expect(await page.getByTestId("servo-pos-3").textContent().then(squash)).toBe(
-      String(HUNO_BASIC_POSTURE[3]),
-    );
-    expect(await page.getByTestId("connection-status").textContent().then(squash)).toContain("servo control");
+    await expectText(page.getByTestId("servo-pos-3"), String(HUNO_BASIC_POSTURE[3]));
+    await expectText(page.getByTestId("connection-status"), "servo control", { contains: true });
 
     // The number input is limited to the safe range (servo 3: 40-130) and moves the servo on change.
-    expect(await page.locator("#servo-3").getAttribute("min")).toBe("40");
-    expect(await page.locator("#servo-3").getAttribute("max")).toBe("130");
+    await expect.poll(() => page.locator("#servo-3").getAttribute("min")).toBe("40");
+    await expect.poll(() => page.locator("#servo-3").getAttribute("max")).toBe("130");
     await page.locator("#servo-3").fill("100");
     await page.locator("#servo-3").press("Enter");
     await expect.poll(async () => (await simServos(page))[3]?.position).toBe(100);
@@ -71,10 +61,11 @@ describe("servos view", () => {
     await page.locator("#servo-12").press("Enter");
     const refusal = page.getByTestId("servo-refused-12");
     await refusal.waitFor();
-    expect(await refusal.textContent().then(squash)).toBe(
+    await expectText(
+      refusal,
       "Servo 12: 300 is outside its safe range 1–198. Nothing was sent; the servo stays where it is.",
     );
-    expect(await page.locator("#servo-12").getAttribute("aria-invalid")).toBe("true");
+    await expect.poll(() => page.locator("#servo-12").getAttribute("aria-invalid")).toBe("true");
     await page.locator("#servo-3").fill("250");
     await page.locator("#servo-3").press("Enter");
     await page
@@ -88,7 +79,7 @@ describe("servos view", () => {
     await page.locator("#servo-3").fill("110");
     await page.locator("#servo-3").press("Enter");
     await expect.poll(async () => (await simServos(page))[3]?.position).toBe(110);
-    expect(await page.getByTestId("servo-refused-3").count()).toBe(0);
+    await expect.poll(() => page.getByTestId("servo-refused-3").count()).toBe(0);
 
     // The slider: arrow keys move it; many quick changes do not queue up.
     const slider = page.getByLabel(/Left knee \(servo 2\), target/);
@@ -149,7 +140,7 @@ describe("servos view", () => {
     // Limp left the link in direct mode; the servo controls still need the safety notice first.
     await page.getByRole("link", { name: "Servos" }).click();
     await page.getByTestId("servo-safety").waitFor();
-    expect(await page.getByRole("button", { name: "Read all positions" }).isDisabled()).toBe(true);
+    await expect.poll(() => page.getByRole("button", { name: "Read all positions" }).isDisabled()).toBe(true);
     await context.close();
   });
 
@@ -212,30 +203,28 @@ describe("in Korean (ko-KR)", () => {
         await page.getByRole("heading", { level: 1, name: "센서" }).waitFor();
         const status = page.getByTestId("poll-status");
         await status.filter({ hasText: "마지막으로" }).waitFor();
-        expect(await text(status)).toMatch(
-          /^1초에 5번 읽고 있어요\. 마지막으로 \d\d:\d\d:\d\d에 읽었어요\.$/,
-        );
+        await expectText(status, /^1초에 5번 읽고 있어요\. 마지막으로 \d\d:\d\d:\d\d에 읽었어요\.$/);
         await page.getByTestId("distance-value").filter({ hasText: "10cm" }).waitFor();
-        expect(await text(page.getByTestId("distance-value"))).toBe("10cm");
-        expect(await page.getByRole("heading", { level: 2, name: "거리와 가속도" }).count()).toBe(1);
-        expect(await page.getByRole("button", { name: "일시 정지" }).count()).toBe(1);
-        expect(await page.getByTestId("poll-rate").locator("option").allTextContents()).toEqual([
-          "1초에 2번",
-          "1초에 5번",
-          "1초에 10번",
-        ]);
+        await expectText(page.getByTestId("distance-value"), "10cm");
+        await expect
+          .poll(() => page.getByRole("heading", { level: 2, name: "거리와 가속도" }).count())
+          .toBe(1);
+        await expect.poll(() => page.getByRole("button", { name: "일시 정지" }).count()).toBe(1);
+        await expect
+          .poll(() => page.getByTestId("poll-rate").locator("option").allTextContents())
+          .toEqual(["1초에 2번", "1초에 5번", "1초에 10번"]);
         // The charts are named in Korean, their axes too.
         const distanceChart = page.locator('[data-testid="distance-chart"][data-chart="drawn"]');
         await distanceChart.waitFor();
-        expect(await distanceChart.locator('[role="img"]').getAttribute("aria-label")).toBe(
-          "최근 30초 동안의 거리 (cm)",
-        );
+        await expect
+          .poll(() => distanceChart.locator('[role="img"]').getAttribute("aria-label"))
+          .toBe("최근 30초 동안의 거리 (cm)");
         // The legend names the line (the axes' labels are drawn on the canvas).
-        expect(await distanceChart.locator(".u-legend").textContent()).toContain("거리 (cm)");
+        await expectText(distanceChart.locator(".u-legend"), "거리 (cm)", { contains: true });
         await page.locator('[data-testid="accel-chart"][data-chart="drawn"]').waitFor();
 
         // The events: listening to the PF buttons, a press of the demo robot's PF2.
-        expect(await page.getByText("아직 이벤트가 없어요.").count()).toBe(1);
+        await expect.poll(() => page.getByText("아직 이벤트가 없어요.").count()).toBe(1);
         await page.getByRole("radio", { name: "PF 버튼" }).check();
         await page.getByTestId("listen-status").filter({ hasText: "PF 버튼을 듣고 있어요." }).waitFor();
         await page.getByRole("button", { name: "PF2 누르기" }).click();
@@ -243,19 +232,20 @@ describe("in Korean (ko-KR)", () => {
 
         // The demo robot's world.
         const world = page.getByTestId("demo-world");
-        expect(await text(world.getByRole("heading", { level: 2 }))).toBe("데모 로봇의 주변 환경");
-        expect(await text(world.locator('label[for="demo-distance"]'))).toBe("앞에 있는 물체: 10cm");
-        expect(await world.locator("select option:checked").textContent()).toBe("7 기본 자세");
-        expect(await world.getByRole("button", { name: "IR 키 보내기" }).count()).toBe(1);
+        await expectText(world.getByRole("heading", { level: 2 }), "데모 로봇의 주변 환경");
+        await expectText(world.locator('label[for="demo-distance"]'), "앞에 있는 물체: 10cm");
+        await expectText(world.locator("select option:checked"), "7 기본 자세");
+        await expect.poll(() => world.getByRole("button", { name: "IR 키 보내기" }).count()).toBe(1);
 
         // Sound: the threshold and its level.
         await page.getByRole("radio", { name: "소리 크기" }).check();
         await page.getByTestId("listen-status").filter({ hasText: "소리 크기를 듣고 있어요." }).waitFor();
-        expect(await text(page.getByTestId("sound-level"))).toBe("아직 들린 소리 없음");
+        await expectText(page.getByTestId("sound-level"), "아직 들린 소리 없음");
         // Asked for 10 a second while listening to sound, it reads at most 5, and says why.
         await page.getByTestId("poll-rate").selectOption("10");
         await status.filter({ hasText: "최대 5번" }).waitFor();
-        expect(await text(status)).toMatch(
+        await expectText(
+          status,
           /^1초에 5번 읽고 있어요 \(소리를 듣는 동안에는 로봇이 소리를 알려 줄 수 있도록 최대 5번\)\. 마지막으로 \d\d:\d\d:\d\d에 읽었어요\.$/,
         );
 
@@ -280,8 +270,9 @@ describe("in Korean (ko-KR)", () => {
         await page.getByRole("link", { name: "서보", exact: true }).click();
         await page.getByRole("heading", { level: 1, name: "서보" }).waitFor();
         const safety = page.getByTestId("servo-safety");
-        expect(await text(safety.getByRole("heading", { level: 2 }))).toBe("서보를 움직이기 전에");
-        expect(await text(safety.locator("li").first())).toBe(
+        await expectText(safety.getByRole("heading", { level: 2 }), "서보를 움직이기 전에");
+        await expectText(
+          safety.locator("li").first(),
           "로봇을 받쳐 주세요: 손으로 잡거나 등을 바닥에 대고 눕혀서, 관절이 움직이거나 힘이 빠져도 넘어지지 않게 해 주세요.",
         );
         await checkLayout(page, "servos-safety", viewport);
@@ -289,38 +280,36 @@ describe("in Korean (ko-KR)", () => {
         await page.getByRole("button", { name: "알겠어요: 로봇을 받쳐 두었어요" }).click();
         await page.getByRole("button", { name: "서보 제어 시작" }).click();
         await page.getByText("서보 16개를 모두 읽었어요.").waitFor();
-        expect(await page.locator(".servo-table thead th").allTextContents()).toEqual([
-          "ID",
-          "관절",
-          "위치",
-          "목표",
-          "슬라이더",
-          "토크",
-        ]);
-        expect(await text(page.locator('label[for="servo-12"]'))).toBe("왼쪽 팔꿈치");
-        expect(await page.getByLabel("왼쪽 팔꿈치 (서보 12번), 목표 1~198").count()).toBe(1);
+        await expect
+          .poll(() => page.locator(".servo-table thead th").allTextContents())
+          .toEqual(["ID", "관절", "위치", "목표", "슬라이더", "토크"]);
+        await expectText(page.locator('label[for="servo-12"]'), "왼쪽 팔꿈치");
+        await expect.poll(() => page.getByLabel("왼쪽 팔꿈치 (서보 12번), 목표 1~198").count()).toBe(1);
         // A refused value says why, in Korean; nothing is sent.
         await page.locator("#servo-12").fill("300");
         await page.locator("#servo-12").press("Enter");
-        expect(await text(page.getByTestId("servo-refused-12"))).toBe(
+        await expectText(
+          page.getByTestId("servo-refused-12"),
           "서보 12번: 300은(는) 안전 범위(1–198) 밖이에요. 아무것도 보내지 않았고, 서보는 그대로 있어요.",
         );
 
         // The robot in 3D: the demo robot, live.
         const toggle = page.getByTestId("live-robot-toggle");
-        expect(await text(toggle)).toBe("로봇을 3D로 보기");
+        await expectText(toggle, "로봇을 3D로 보기");
         await toggle.click();
         await page.locator('[data-testid="live-robot-view"][data-state="ready"]').waitFor();
-        expect(await text(toggle)).toBe("3D 로봇 숨기기");
-        expect(await text(page.getByTestId("live-robot-caption"))).toBe("데모 로봇, 실시간");
-        expect(await page.getByTestId("live-robot-view").locator("canvas").getAttribute("aria-label")).toBe(
-          "데모 로봇의 실시간 3D 보기: 가상 서보가 움직이는 대로 따라가요; 서보 표에 읽은 위치가 숫자로 나와 있어요",
-        );
+        await expectText(toggle, "3D 로봇 숨기기");
+        await expectText(page.getByTestId("live-robot-caption"), "데모 로봇, 실시간");
+        await expect
+          .poll(() => page.getByTestId("live-robot-view").locator("canvas").getAttribute("aria-label"))
+          .toBe(
+            "데모 로봇의 실시간 3D 보기: 가상 서보가 움직이는 대로 따라가요; 서보 표에 읽은 위치가 숫자로 나와 있어요",
+          );
 
         // The basic posture, asked in place.
         await page.getByRole("button", { name: "모두 기본 자세로…" }).click();
         await page.getByText("서보 16개가 모두 기본 자세로 움직여요 (속도 4). 로봇을 잡아 주세요.").waitFor();
-        expect(await page.getByRole("button", { name: "모든 서보 움직이기" }).count()).toBe(1);
+        await expect.poll(() => page.getByRole("button", { name: "모든 서보 움직이기" }).count()).toBe(1);
         await checkLayout(page, "servos", viewport);
         await context.close();
       });
@@ -335,24 +324,27 @@ describe("in Korean (ko-KR)", () => {
         await page.getByRole("link", { name: "서보", exact: true }).click();
         await page.getByTestId("live-robot-toggle").click();
         await page.locator('[data-testid="live-robot-view"][data-state="ready"]').waitFor();
-        expect(await text(page.getByTestId("live-robot-caption"))).toBe(
+        await expectText(
+          page.getByTestId("live-robot-caption"),
           "아직 읽은 위치가 없어요: 기본 자세로 그렸어요",
         );
-        expect(await text(page.getByTestId("live-robot-unread"))).toContain(
+        await expectText(
+          page.getByTestId("live-robot-unread"),
           "모든 관절을 로봇의 실제 자세가 아니라 기본 자세로 그렸어요",
+          { contains: true },
         );
-        expect(await text(page.getByTestId("live-robot"))).toContain(
+        await expectText(
+          page.getByTestId("live-robot"),
           "이번 연결에서 이 로봇의 영점을 읽지 않아서, 각도는 표준 영점 표를 기준으로 재요.",
+          { contains: true },
         );
         await page.getByRole("button", { name: "알겠어요: 로봇을 받쳐 두었어요" }).click();
         await page.getByRole("button", { name: "서보 제어 시작" }).click();
         await page.getByText("서보 16개를 모두 읽었어요.").waitFor();
-        expect(await text(page.getByTestId("live-robot-caption"))).toMatch(
-          /^마지막으로 읽은 위치, \d\d:\d\d:\d\d$/,
-        );
-        expect(
-          await page.getByTestId("live-robot-view").locator("canvas").getAttribute("aria-label"),
-        ).toMatch(/^마지막으로 읽은 위치\(\d\d:\d\d:\d\d\)에 있는 로봇의 3D 보기; 서보 표에/);
+        await expectText(page.getByTestId("live-robot-caption"), /^마지막으로 읽은 위치, \d\d:\d\d:\d\d$/);
+        await expect
+          .poll(() => page.getByTestId("live-robot-view").locator("canvas").getAttribute("aria-label"))
+          .toMatch(/^마지막으로 읽은 위치\(\d\d:\d\d:\d\d\)에 있는 로봇의 3D 보기; 서보 표에/);
         await checkLayout(page, "servos-cable", viewport);
         await context.close();
       });
@@ -368,19 +360,20 @@ describe("in Korean (ko-KR)", () => {
         await preview.locator('[data-state="ready"]').waitFor();
         // The page prefers reduced motion: the preview steps from scene to scene.
         const play = preview.getByTestId("preview-play");
-        expect(await text(play)).toBe("다음 장면");
-        expect(await text(preview.getByTestId("preview-clock"))).toBe("0.0초 / 3.2초");
-        expect(await text(preview.locator("label"))).toBe("시간");
-        expect(await text(preview.locator(".robot3d-hint"))).toBe(
+        await expectText(play, "다음 장면");
+        await expectText(preview.getByTestId("preview-clock"), "0.0초 / 3.2초");
+        await expectText(preview.locator("label"), "시간");
+        await expectText(
+          preview.locator(".robot3d-hint"),
           "동작 줄이기가 켜져 있어요. '다음 장면'을 누르면 움직이는 화면 없이 각 장면의 자세를 보여 줘요. " +
             "시간: 화살표 키로 0.1초씩, Page Up과 Page Down으로 한 장면씩 움직여요. 로봇 돌리기: 로봇을 끌거나, 로봇을 선택한 뒤 화살표 키를 눌러 주세요.",
         );
         await play.click();
         await expect.poll(() => preview.getAttribute("data-time")).toBe("800");
-        expect(await text(preview.getByTestId("preview-clock"))).toBe("0.8초 / 3.2초");
-        expect(await preview.getByTestId("preview-time").getAttribute("aria-valuetext")).toBe(
-          "0.8초 / 3.2초, 장면 0 끝, RaiseArm",
-        );
+        await expectText(preview.getByTestId("preview-clock"), "0.8초 / 3.2초");
+        await expect
+          .poll(() => preview.getByTestId("preview-time").getAttribute("aria-valuetext"))
+          .toBe("0.8초 / 3.2초, 장면 0 끝, RaiseArm");
         // To the end: the button goes back to the start.
         await preview.getByTestId("preview-time").evaluate((input: HTMLInputElement) => {
           input.value = input.max;

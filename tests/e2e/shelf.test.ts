@@ -1,8 +1,8 @@
 import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
 import { goldenImage } from "../data/project-data.ts";
-import { FAST, squash } from "./harness.ts";
-import { connectDemo, expectPageOk, newLocalePage, text, useApp } from "./i18n-checks.ts";
+import { expectText, FAST, squash, useApp } from "./harness.ts";
+import { connectDemo, expectPageOk, newLocalePage } from "./i18n-checks.ts";
 import { exampleText, rbmFile, showTab } from "./motion-fixtures.ts";
 import "./rbc-test-globals.ts";
 
@@ -53,8 +53,8 @@ describe("the robot's shelf on the demo robot", () => {
     const card = page.getByTestId("motion-file");
     const result = card.getByText(/^Uploaded wave\.rbm/);
     await result.waitFor();
+    await expectText(result, "Stored as motion 12 (key 1): Run takes this number.", { contains: true });
     const said = squash(await result.textContent());
-    expect(said).toContain("Stored as motion 12 (key 1): Run takes this number.");
     expect(said).not.toMatch(/downloaded motion 1|slot 1/);
     await card.getByTestId("run-now").filter({ hasText: "Run now" }).waitFor();
 
@@ -62,18 +62,20 @@ describe("the robot's shelf on the demo robot", () => {
     await showTab(page, "Memory");
     await page.locator('[data-testid="shelf-intro"][data-kept="12"]').waitFor();
     const entry = page.locator('[data-testid="shelf-entry"][data-motion="12"]');
-    expect(await text(entry)).toBe(
+    await expectText(
+      entry,
       "12 RbcPanel_Wave remote: key 1 · plays 3.2 s uploaded now; the robot's memory accounting showed it stored Run now",
     );
     await expectPageOk(page, "the Memory tab after an upload", { lang: "en" });
 
     // The Run tab: the same number with the key; the other slots are the 19 the panel has no record of.
     await showTab(page, "Run");
-    expect(await text(page.locator('[data-testid="downloaded-motions"] [data-motion="12"]'))).toBe(
+    await expectText(
+      page.locator('[data-testid="downloaded-motions"] [data-motion="12"]'),
       "12 RbcPanel_Wave key 1 3.2 s",
     );
-    expect(await text(page.locator(".other-slots summary"))).toBe("Other download slots (19)");
-    expect(await text(page.locator('[data-slot-motion="33"]'))).toBe("Run motion 33 * then 1");
+    await expectText(page.locator(".other-slots summary"), "Other download slots (19)");
+    await expectText(page.locator('[data-slot-motion="33"]'), "Run motion 33 * then 1");
     // Basic posture first (a new robot ignores the rest until it has run, docs/protocol.md §3.1).
     await page.locator('[data-motion="7"]').click();
     await page.locator("#confirm-move").click();
@@ -87,14 +89,15 @@ describe("the robot's shelf on the demo robot", () => {
     await showTab(page, "Memory");
     await page.locator('[data-testid="shelf-intro"][data-kept="12"]').waitFor();
     await page.getByText(/may still be there/).waitFor();
-    expect(await text(entry)).toMatch(
+    await expectText(
+      entry,
       /^12 RbcPanel_Wave remote: key 1 · plays 3\.2 s uploaded .+; may still be there \(the robot's free memory still has room for it\) Run now$/,
     );
     // Run now: the robot stayed on (its Basic posture had run), and the Run is judged by the recorded 3.2 s.
     await entry.getByTestId("run-now").click();
     await page.locator("#confirm-move").click();
     await page.getByText("Motion 12 (RbcPanel_Wave) finished.").waitFor();
-    expect(await text(page.locator(".other-slots summary"))).toBe("Other download slots (19)");
+    await expectText(page.locator(".other-slots summary"), "Other download slots (19)");
     await expectPageOk(page, "the Run tab after a reload", { lang: "en" });
     // The Remote card names key 1 from the shelf too (not only from this connection's uploads).
     await page.getByRole("link", { name: "Sensors", exact: true }).click();
@@ -114,7 +117,8 @@ describe("the robot's shelf on the demo robot", () => {
       .waitFor();
     const dropped = page.getByTestId("shelf-dropped");
     await dropped.getByText(/^Forgotten: motion 12 \(RbcPanel_Wave\)/).waitFor();
-    expect(await text(dropped)).toBe(
+    await expectText(
+      dropped,
       "Forgotten: motion 12 (RbcPanel_Wave). The robot's free memory (0 of 24,576 bytes in use) has no room for what was recorded: its memory was reset, or another program uploaded to it.",
     );
     // Kept as a message, so a language switch rewords it (issue 21 item 6).
@@ -146,7 +150,8 @@ describe("the robot's shelf on the demo robot", () => {
     await result.filter({ hasText: "모션 12번(1번 키)으로 저장했어요. 실행할 때 이 번호를 써요." }).waitFor();
     await page.locator('.motions-tab[id="motions-tab-uploads"]').click();
     await page.locator('[data-testid="shelf-intro"][data-kept="12"]').waitFor();
-    expect(await text(page.locator('[data-testid="shelf-entry"][data-motion="12"]'))).toBe(
+    await expectText(
+      page.locator('[data-testid="shelf-entry"][data-motion="12"]'),
       "12 RbcPanel_Wave 리모컨: 1번 키 · 재생 시간 3.2초 방금 업로드했고, 로봇의 메모리 계산에서 저장된 게 확인됐어요 지금 실행",
     );
     await page.getByTestId("demo-reset").locator("summary").click();

@@ -12,7 +12,7 @@ import type { Browser, BrowserContext, Page } from "playwright-core";
 import { build } from "vite";
 import { expect } from "vitest";
 import { SINGLE_FILE_MODE, SINGLE_FILE_NAME } from "../../vite.config.ts";
-import { FAST, ROOT, squash } from "./harness.ts";
+import { expectText, FAST, ROOT, squash } from "./harness.ts";
 import type { RbcTestOptions } from "./rbc-test-globals.ts";
 
 /** Builds the one-file panel (`npm run build:single`'s configuration) into a new temporary folder. */
@@ -122,7 +122,7 @@ async function openExampleAndUpload(page: Page, confirm: boolean): Promise<strin
 export async function walkPanel(page: Page): Promise<void> {
   await page.getByRole("button", { name: "Try the demo robot" }).click();
   await page.getByTestId("device-card").waitFor();
-  await expect.poll(() => page.getByTestId("firmware").textContent().then(squash)).toBe("2.23");
+  await expectText(page.getByTestId("firmware"), "2.23");
   await openEachView(page);
   expect(await openExampleAndUpload(page, false)).toMatch(/624 bytes/);
   // The page's fake port was never touched: that was the built-in demo robot.
@@ -132,9 +132,7 @@ export async function walkPanel(page: Page): Promise<void> {
   await page.getByRole("button", { name: "Disconnect" }).click();
   await page.getByRole("button", { name: "Connect robot" }).click();
   await page.getByTestId("device-card").waitFor();
-  await expect
-    .poll(() => page.getByTestId("connection-status").textContent().then(squash))
-    .toMatch(/^(?!Demo robot).*Connected/);
+  await expectText(page.getByTestId("connection-status"), /^(?!Demo robot).*Connected/);
   expect(await page.evaluate(() => window.__rbcTest?.port.stats.opens)).toBe(1);
   await openEachView(page);
   expect(await openExampleAndUpload(page, true)).toMatch(/624 bytes/);

@@ -1,14 +1,6 @@
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import {
-  type AppHarness,
-  connectRobot,
-  FAST,
-  holdRobot,
-  releaseRobot,
-  squash,
-  startHarness,
-} from "./harness.ts";
+import { describe, expect, it } from "vitest";
+import { connectRobot, expectText, FAST, holdRobot, releaseRobot, squash, useApp } from "./harness.ts";
 import { axeProblems } from "./i18n-checks.ts";
 import "./rbc-test-globals.ts";
 
@@ -17,15 +9,7 @@ import "./rbc-test-globals.ts";
 // Stop, when the panel started nothing, asks the robot: busy, it sends 7 and says what the robot answered; idle,
 // it says so and sends nothing. The robot runs on the paced virtual clock (FAST); nothing is retried.
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 /** The fake port's robot: what it plays, whether it has servos passive or is in direct mode. */
 const robot = (page: Page) =>
@@ -52,7 +36,8 @@ describe("a robot busy with a motion started by the remote", () => {
     await busy.waitFor();
     // The robot's time stands still while the test looks (motion 2 plays 6.6 s of it).
     await holdRobot(page);
-    expect(squash(await busy.locator("p").textContent())).toBe(
+    await expectText(
+      busy.locator("p"),
       "The robot is busy playing a motion (started with the remote or another program); it answers when the motion ends.",
     );
     expect(await robot(page)).toMatchObject({ playing: 2 });
@@ -62,16 +47,15 @@ describe("a robot busy with a motion started by the remote", () => {
     await releaseRobot(page);
     const said = banner(page).locator(".notice--ok");
     await said.filter({ hasText: "It took Stop" }).waitFor();
-    expect(squash(await said.locator(".banner-text > p").textContent())).toBe(
+    await expectText(
+      said.locator(".banner-text > p"),
       "The robot was busy with a motion started with the remote or another program. It took Stop: it finishes the current scene and stands in that pose. Which motion it was, the robot does not say.",
     );
     // The 7 and the 07 are the technical detail, one click away.
     const detail = said.getByTestId("notice-more");
-    expect(await detail.isVisible()).toBe(false);
+    await expect.poll(() => detail.isVisible()).toBe(false);
     await said.locator("summary").click();
-    expect(squash(await detail.textContent())).toMatch(
-      /^Stop sent 7; the robot answered 07 after \d\.\d s\.$/,
-    );
+    await expectText(detail, /^Stop sent 7; the robot answered 07 after \d\.\d s\.$/);
     // The 07 came within the end of a scene (at most 1 s here), not at the end of motion 2's 6.6 s; the robot
     // stands, in packet mode.
     const elapsed = Number(/answered 07 after (\d\.\d) s/.exec(squash(await detail.textContent()))?.[1]);
@@ -107,7 +91,8 @@ describe("a robot busy with a motion started by the remote", () => {
     const received = await packetsIn(page);
     await page.getByRole("button", { name: "Stop", exact: true }).click();
     await banner(page).filter({ hasText: "it is idle" }).waitFor();
-    expect(squash(await banner(page).locator("p").first().textContent())).toBe(
+    await expectText(
+      banner(page).locator("p").first(),
       "The robot answered at once: it is idle, nothing to stop. Nothing was sent.",
     );
     // One packet: the probe's distance read, answered at once.
@@ -127,17 +112,21 @@ describe("in Korean", () => {
     const busy = page.getByTestId("busy-banner");
     await busy.waitFor();
     await holdRobot(page);
-    expect(squash(await busy.locator("p").textContent())).toBe(
+    await expectText(
+      busy.locator("p"),
       "로봇이 모션을 재생하느라 바빠요 (리모컨이나 다른 프로그램으로 시작한 모션). 모션이 끝나면 응답해요.",
     );
     await busy.getByRole("button", { name: "정지" }).click();
     await releaseRobot(page);
     await banner(page).filter({ hasText: "로봇이 정지를 받았어요" }).waitFor();
-    expect(squash(await banner(page).locator(".banner-text > p").textContent())).toContain(
+    await expectText(
+      banner(page).locator(".banner-text > p"),
       "어떤 모션이었는지는 로봇이 알려 주지 않아요.",
+      { contains: true },
     );
     // The 7 and the 07, one click away, in Korean too.
-    expect(squash(await banner(page).getByTestId("notice-more").textContent())).toMatch(
+    await expectText(
+      banner(page).getByTestId("notice-more"),
       /^정지가 7을 보냈고, 로봇이 .+ 뒤에 07로 응답했어요\.$/,
     );
     await context.close();

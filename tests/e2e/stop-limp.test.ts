@@ -1,21 +1,13 @@
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { type AppHarness, connectRobot, FAST, openMotions, squash, startHarness } from "./harness.ts";
+import { describe, expect, it } from "vitest";
+import { connectRobot, expectText, FAST, openMotions, squash, useApp } from "./harness.ts";
 import "./rbc-test-globals.ts";
 
 // Stop and Limp are two things (issue #11 item 1): Stop ends what the robot is doing
 // and keeps it standing (a motion ends with 7); Limp makes every servo passive, only after asking. Escape keeps
 // its meaning in a text field, a dialog or an open menu/list, and otherwise (a number field too) means Stop, never Limp.
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 /** The simulated robot as the test sees it: servo torque, direct mode, what it plays. */
 const robot = (page: Page) =>
@@ -63,7 +55,8 @@ describe("Stop keeps the robot standing; Limp asks first", () => {
     await banner
       .filter({ hasText: "The robot answered at once: it is idle, nothing to stop. Nothing was sent." })
       .waitFor();
-    expect(await banner.textContent().then(squash)).toBe(
+    await expectText(
+      banner,
       "The robot answered at once: it is idle, nothing to stop. Nothing was sent. Dismiss",
     );
     expect(await robot(page)).toMatchObject({ passive: NONE_PASSIVE, direct: false });
@@ -90,11 +83,15 @@ describe("Stop keeps the robot standing; Limp asks first", () => {
     await page.keyboard.press("Escape");
     const banner = page.getByTestId("stop-banner");
     await banner.filter({ hasText: "The robot took Stop" }).waitFor({ timeout: 8000 });
-    expect(await banner.locator(".banner-text > p").textContent().then(squash)).toContain(
+    await expectText(
+      banner.locator(".banner-text > p"),
       "The robot took Stop: it finishes the current scene and stands in that pose.",
+      { contains: true },
     );
-    expect(await banner.getByTestId("notice-more").textContent().then(squash)).toContain(
+    await expectText(
+      banner.getByTestId("notice-more"),
       "Stop sent 7 while motion 2, started here, was playing, and the robot answered 07.",
+      { contains: true },
     );
     expect(await robot(page)).toEqual({ passive: NONE_PASSIVE, direct: false, playing: undefined });
     // One packet: the 7 (no direct-mode switch, no passive command to any servo).
@@ -113,7 +110,7 @@ describe("Stop keeps the robot standing; Limp asks first", () => {
       .waitFor({ state: "attached", timeout: 8000 });
     expect(await robot(page)).toEqual({ passive: NONE_PASSIVE, direct: false, playing: undefined });
     // Nothing stays in the way of the next motion.
-    expect(await page.locator('[data-motion="4"]').isEnabled()).toBe(true);
+    await expect.poll(() => page.locator('[data-motion="4"]').isEnabled()).toBe(true);
     await context.close();
   });
 
@@ -124,13 +121,15 @@ describe("Stop keeps the robot standing; Limp asks first", () => {
     const limp = page.getByRole("button", { name: "Limp…" });
     // Not the red primary button, and no keyboard shortcut of its own.
     expect(await limp.getAttribute("class")).not.toContain("btn--danger");
-    expect(await limp.getAttribute("aria-keyshortcuts")).toBeNull();
+    await expect.poll(() => limp.getAttribute("aria-keyshortcuts")).toBeNull();
 
     await limp.click();
     const question = page.getByRole("alertdialog");
     await question.waitFor();
-    expect(await question.textContent().then(squash)).toContain(
+    await expectText(
+      question,
       "Hold the robot: every servo will go passive and it will fall if nobody holds it.",
+      { contains: true },
     );
     // The safe choice has the focus: Enter right away would cancel.
     await expect.poll(() => page.evaluate(() => document.activeElement?.textContent?.trim())).toBe("Cancel");
@@ -143,7 +142,7 @@ describe("Stop keeps the robot standing; Limp asks first", () => {
     await question.waitFor();
     await page.keyboard.press("Escape");
     await expect.poll(() => question.count()).toBe(0);
-    expect(await page.getByTestId("stop-banner").textContent().then(squash)).toBe("");
+    await expectText(page.getByTestId("stop-banner"), "");
     expect(await robot(page)).toMatchObject({ passive: NONE_PASSIVE, direct: false });
 
     await limp.click();
@@ -153,7 +152,7 @@ describe("Stop keeps the robot standing; Limp asks first", () => {
       .filter({ hasText: "Limp: all 16 servos confirmed passive. Hold the robot" })
       .waitFor();
     expect(await robot(page)).toMatchObject({ passive: ALL_PASSIVE, direct: true });
-    expect(await page.getByTestId("connection-status").textContent().then(squash)).toContain("servos limp");
+    await expectText(page.getByTestId("connection-status"), "servos limp", { contains: true });
 
     // Escape afterwards is Stop: it does not undo Limp, and says the servos stay limp.
     await blur(page);

@@ -1,7 +1,7 @@
 import type { Browser, Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { launchChromium } from "../support/chromium.ts";
-import { buildOnce, squash } from "./harness.ts";
+import { buildOnce, expectText } from "./harness.ts";
 import {
   cspViolations,
   injectedPage,
@@ -70,7 +70,7 @@ describe("the hosted panel under a sub-path", () => {
     await page.reload();
     await page.getByRole("button", { name: "Try the demo robot" }).click();
     await page.getByTestId("device-card").waitFor();
-    await expect.poll(() => page.getByTestId("firmware").textContent().then(squash)).toBe("2.23");
+    await expectText(page.getByTestId("firmware"), "2.23");
     await page.getByRole("link", { name: "Sensors", exact: true }).click();
     await page.getByRole("heading", { level: 1, name: "Sensors" }).waitFor();
     await page.getByRole("link", { name: "Motions", exact: true }).click();
@@ -109,17 +109,13 @@ describe("the hosted panel under a sub-path", () => {
       });
       const notice = page.getByTestId("update-prompt");
       await notice.waitFor({ timeout: 30_000 });
-      expect(squash(await notice.textContent())).toMatch(
-        /^A new version of the panel is ready\. Reload Later$/,
-      );
-      expect(await page.getByRole("status").filter({ has: notice }).count()).toBe(1);
+      await expectText(notice, /^A new version of the panel is ready\. Reload Later$/);
+      await expect.poll(() => page.getByRole("status").filter({ has: notice }).count()).toBe(1);
       // Nothing reloaded by itself: the same document, the demo robot still connected, the new worker waiting.
       expect(
         await page.evaluate(() => (window as unknown as { __sameDocument?: boolean }).__sameDocument),
       ).toBe(true);
-      await expect
-        .poll(() => page.getByTestId("connection-status").textContent().then(squash))
-        .toMatch(/Demo robot\s*·\s*Connected/);
+      await expectText(page.getByTestId("connection-status"), /Demo robot\s*·\s*Connected/);
       expect(await page.evaluate(async () => (await navigator.serviceWorker.ready).waiting !== null)).toBe(
         true,
       );
@@ -143,7 +139,7 @@ describe("the hosted panel under a sub-path", () => {
         });
       expect(await leaveAsks()).toBe(true);
       await page.getByText("Sound 7 played (5.7 s).").waitFor({ timeout: 15_000 });
-      expect(await leaveAsks()).toBe(false);
+      await expect.poll(leaveAsks).toBe(false);
       await page.getByRole("link", { name: "Robot", exact: true }).click();
 
       // The owner chooses to reload: the new worker takes over and the page reloads once.

@@ -1,5 +1,5 @@
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { type AppHarness, connectRobot, squash, startHarness, watchPage } from "./harness.ts";
+import { describe, expect, it } from "vitest";
+import { connectRobot, expectText, squash, useApp, watchPage } from "./harness.ts";
 import "./rbc-test-globals.ts";
 
 /**
@@ -12,15 +12,7 @@ import "./rbc-test-globals.ts";
 const EMPTY_MOTION = /^0 of 24,576 bytes used|24,576 of 24,576 bytes free/;
 const EMPTY_ACTION = /^0 of 8,192 bytes used|8,192 of 8,192 bytes free/;
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 describe("firmware variants", () => {
   it("a robot that answers neither 0x0C nor 0x1E connects; its serial number is 'not reported'", async () => {
@@ -30,17 +22,15 @@ describe("firmware variants", () => {
     const seen = watchPage(page, app.origin);
     await connectRobot(page, app.url);
 
-    await expect
-      .poll(() => page.getByTestId("serial-number").textContent().then(squash))
-      .toBe("not reported");
+    await expectText(page.getByTestId("serial-number"), "not reported");
+    await expectText(page.getByTestId("connection-status"), /Connected\s*·\s*HUNO\s*·\s*fw 2\.23/);
     const status = await page.getByTestId("connection-status").textContent().then(squash);
-    expect(status).toMatch(/Connected\s*·\s*HUNO\s*·\s*fw 2\.23/);
     expect(status).not.toContain("SN");
     // The panel is usable: the Robot view's reads after the identity went through.
     await expect
       .poll(() => page.getByTestId("memory-motion-text").textContent().then(squash))
       .toMatch(EMPTY_MOTION);
-    expect(await page.getByTestId("error-code").textContent().then(squash)).toMatch(/No error/);
+    await expectText(page.getByTestId("error-code"), /No error/);
     // The robot really was asked for its serial number and stayed silent.
     const drops = await page.evaluate(() => window.__rbcTest?.sim.stats.drops["unknown-type"]);
     expect(drops).toBeGreaterThanOrEqual(1);
@@ -53,11 +43,12 @@ describe("firmware variants", () => {
       options: { variant: { firmware: { major: 9, minor: 99 }, platform: 4 } },
     });
     await connectRobot(page, app.url);
-    await expect.poll(() => page.getByTestId("firmware").textContent().then(squash)).toBe("9.99");
-    const status = await page.getByTestId("connection-status").textContent().then(squash);
-    expect(status).toMatch(/Connected\s*·\s*PF2\s*·\s*fw 9\.99\s*·\s*SN 8958899989309/);
-    const facts = await page.getByTestId("device-card").textContent().then(squash);
-    expect(facts).toContain("Platform PF2 (user mode)");
+    await expectText(page.getByTestId("firmware"), "9.99");
+    await expectText(
+      page.getByTestId("connection-status"),
+      /Connected\s*·\s*PF2\s*·\s*fw 9\.99\s*·\s*SN 8958899989309/,
+    );
+    await expectText(page.getByTestId("device-card"), "Platform PF2 (user mode)", { contains: true });
     await expect
       .poll(() => page.getByTestId("memory-action-text").textContent().then(squash))
       .toMatch(EMPTY_ACTION);
@@ -69,7 +60,8 @@ describe("firmware variants", () => {
     await connectRobot(page, app.url);
     const warning = page.getByTestId("identity-warnings");
     await warning.waitFor();
-    expect(await warning.textContent().then(squash)).toBe(
+    await expectText(
+      warning,
       "The robot reports platform 9; known platforms are 1-4 (HUNO, DINO, DOGY, PF2).",
     );
     await context.close();
@@ -83,12 +75,12 @@ describe("firmware variants", () => {
     });
     const seen = watchPage(page, app.origin);
     await connectRobot(page, app.url);
-    await expect.poll(() => page.getByTestId("firmware").textContent().then(squash)).toBe("2.23");
-    expect(await page.getByTestId("serial-number").textContent().then(squash)).toBe("8958899989309");
+    await expectText(page.getByTestId("firmware"), "2.23");
+    await expectText(page.getByTestId("serial-number"), "8958899989309");
     await expect
       .poll(() => page.getByTestId("memory-motion-text").textContent().then(squash))
       .toMatch(EMPTY_MOTION);
-    expect(await page.getByTestId("error-code").textContent().then(squash)).toMatch(/No error/);
+    await expectText(page.getByTestId("error-code"), /No error/);
     // The flood is real: the robot goes on sending the version reply, hundreds of times unasked.
     await expect
       .poll(() => page.evaluate(() => window.__rbcTest?.sim.stats.bytesSent ?? 0))
@@ -101,9 +93,9 @@ describe("firmware variants", () => {
       .poll(() => page.evaluate(() => window.__rbcTest?.sim.stats.packetsReceived ?? 0))
       .toBeGreaterThanOrEqual(before + 3);
     await expect.poll(() => page.getByRole("button", { name: "Refresh" }).isEnabled()).toBe(true);
-    expect(await page.getByTestId("memory-motion-text").textContent().then(squash)).toMatch(EMPTY_MOTION);
-    expect(await page.getByTestId("error-code").textContent().then(squash)).toMatch(/No error/);
-    expect(await page.getByTestId("connection-status").textContent().then(squash)).toMatch(/Connected/);
+    await expectText(page.getByTestId("memory-motion-text"), EMPTY_MOTION);
+    await expectText(page.getByTestId("error-code"), /No error/);
+    await expectText(page.getByTestId("connection-status"), /Connected/);
     expect(seen.errors).toEqual([]);
     await context.close();
   });

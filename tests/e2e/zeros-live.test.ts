@@ -12,28 +12,12 @@
  * Robot time is the paced virtual clock (FAST: at most 4× real time); waits are on what the page shows.
  */
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import {
-  type AppHarness,
-  connectRobot,
-  FAST,
-  holdRobotWhenShown,
-  releaseRobot,
-  squash,
-  startHarness,
-} from "./harness.ts";
+import { describe, expect, it } from "vitest";
+import { connectRobot, expectText, FAST, releaseRobot, useApp, watchText } from "./harness.ts";
 import "./rbc-test-globals.ts";
-import { axeProblems, connectDemo, keysShown, newLocalePage, text } from "./i18n-checks.ts";
+import { axeProblems, connectDemo, keysShown, newLocalePage } from "./i18n-checks.ts";
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 /** §4: the firmware's factory zeros (the simulated robot's). */
 const FACTORY = [124, 202, 162, 65, 108, 125, 46, 88, 184, 142, 90, 40, 125, 161, 210, 126];
@@ -73,7 +57,7 @@ async function startTrim(page: Page): Promise<number> {
   await page.getByRole("button", { name: "Trim live…" }).click();
   const question = page.getByTestId("trim-question");
   await question.waitFor();
-  expect(await text(question)).toContain("Keep it standing on a flat surface, or hold it.");
+  await expectText(question, "Keep it standing on a flat surface, or hold it.", { contains: true });
   const before = await writtenCount(page);
   await page.getByRole("button", { name: "Take the zero pose" }).click();
   await page.getByTestId("trim-on").waitFor();
@@ -115,14 +99,16 @@ describe("trim live", () => {
     const mark2 = await writtenCount(page);
     await page.locator("#zero-5").fill("200");
     await lastMove(page, 139);
-    expect(await text(page.getByTestId("trim-last"))).toContain(
+    await expectText(
+      page.getByTestId("trim-last"),
       "Right hip roll (servo 5) went to 139: the nearest value its window allows (109–139).",
+      { contains: true },
     );
     expect(moves(await writtenSince(page, mark2))).toEqual(["FF 45 8B 4E"]);
     const expected = [...FACTORY];
     expected[5] = 139;
     expect(await positions(page)).toEqual(expected);
-    expect(await page.getByTestId("write-zeros").isDisabled()).toBe(true);
+    await expect.poll(() => page.getByTestId("write-zeros").isDisabled()).toBe(true);
     expect(await page.evaluate(() => window.__rbcTest?.sim.zeros)).toEqual(FACTORY);
     await context.close();
   });
@@ -144,7 +130,7 @@ describe("trim live", () => {
     expect(await positions(page)).toEqual(FACTORY);
     expect(await passive(page)).toEqual([]);
     expect(await page.evaluate(() => window.__rbcTest?.sim.directMode)).toBe(false);
-    expect(await page.locator("#zero-12").inputValue()).toBe("125");
+    await expect.poll(() => page.locator("#zero-12").inputValue()).toBe("125");
     expect(await page.evaluate(() => window.__rbcTest?.sim.zeros)).toEqual(FACTORY);
     await context.close();
   });
@@ -159,7 +145,8 @@ describe("trim live", () => {
     await page.keyboard.press("Escape");
     const ended = page.getByText(/^Trim live ended: the robot left servo control/);
     await ended.waitFor();
-    expect(squash(await ended.textContent())).toBe(
+    await expectText(
+      ended,
       "Trim live ended: the robot left servo control (Stop, or another view used the robot). The servos hold the zero pose with these servos moved: servo 0 at 125. Nothing was written: the robot keeps its zeros.",
     );
     expect(await page.evaluate(() => window.__rbcTest?.sim.directMode)).toBe(false);
@@ -196,9 +183,9 @@ describe("trim live", () => {
     await download;
     const result = page.getByText(/Zeros written and verified/);
     await result.waitFor();
-    expect(squash(await result.textContent())).toContain(
-      "Trim live ended with the write: the robot holds the pose it was trimmed to.",
-    );
+    await expectText(result, "Trim live ended with the write: the robot holds the pose it was trimmed to.", {
+      contains: true,
+    });
     const written = [...FACTORY];
     written[3] = 70;
     expect(await page.evaluate(() => window.__rbcTest?.sim.zeros)).toEqual(written);
@@ -210,10 +197,11 @@ describe("trim live", () => {
     await page.getByTestId("compare-kept").first().click();
     const summary = page.getByTestId("compare-summary");
     await summary.waitFor();
-    expect(await text(summary)).toBe("1 of 16 zeros differs from the backup: Left ankle pitch by +5.");
+    await expectText(summary, "1 of 16 zeros differs from the backup: Left ankle pitch by +5.");
     const row = page.getByTestId("compare").locator('tr[data-servo="3"]');
-    expect(squash(await row.textContent())).toBe("3 · Left ankle pitch 70 65 differs by +5");
-    expect(squash(await page.getByTestId("compare").locator('tr[data-servo="4"]').textContent())).toBe(
+    await expectText(row, "3 · Left ankle pitch 70 65 differs by +5");
+    await expectText(
+      page.getByTestId("compare").locator('tr[data-servo="4"]'),
       "4 · Left ankle roll 108 108 same",
     );
     expect(await axeProblems(page, { within: '[data-testid="zeros-card"]' })).toEqual([]);
@@ -246,10 +234,11 @@ describe("trim live", () => {
     await page.evaluate(() => window.__rbcTest?.port.unplug());
     const lost = page.getByTestId("trim-lost");
     await lost.waitFor();
-    const said = await text(lost);
-    expect(said).toMatch(/^The connection ended during trim live \(.+\)\. /);
-    expect(said).toContain(
+    await expectText(lost, /^The connection ended during trim live \(.+\)\. /);
+    await expectText(
+      lost,
       `No zeros were written: the robot keeps ${FACTORY.join(" ")}. While it had power its servos held the zero pose with these servos moved: servo 5 at 127;`,
+      { contains: true },
     );
     // The connect card is there below it.
     await page.getByTestId("connect-card").waitFor();
@@ -268,8 +257,10 @@ describe("trim live", () => {
     await page.getByRole("link", { name: "Zeros" }).click();
     const lost = page.getByTestId("trim-lost");
     await lost.waitFor();
-    expect(await text(lost)).toContain(
+    await expectText(
+      lost,
       "Its servos hold the zero pose with these servos moved: servo 5 at 126: the panel left servo control as it disconnected.",
+      { contains: true },
     );
     expect(await writtenSince(page, mark)).toEqual([DIRECT_OFF]);
     expect(await page.evaluate(() => window.__rbcTest?.sim.directMode)).toBe(false);
@@ -289,11 +280,15 @@ describe("capture zeros on the demo robot", () => {
     await page.getByRole("link", { name: "Zeros" }).click();
     await page.locator("#zero-0").waitFor();
     await page.getByRole("button", { name: "Capture zeros…" }).click();
-    expect(await text(page.getByTestId("capture-question"))).toContain("the robot falls unless you hold it");
-    await page.getByRole("button", { name: "Make it limp and start the countdown" }).click();
+    await expectText(page.getByTestId("capture-question"), "the robot falls unless you hold it", {
+      contains: true,
+    });
     // The robot's time stands still from the frame the countdown shows until the pose is made: the 5 s
-    // (1.25 s of real time at FAST) cannot run out while a loaded machine runs the test's next step.
-    await holdRobotWhenShown(page, COUNTDOWN, /Reading in 5 s\./);
+    // (1.25 s of real time at FAST) cannot run out while a loaded machine runs the test's next step. Watched from
+    // before the click: "5 s" shows for a quarter of a second of real time.
+    const countdown = await watchText(page, COUNTDOWN, /Reading in 5 s\./, { hold: true });
+    await page.getByRole("button", { name: "Make it limp and start the countdown" }).click();
+    await countdown.moment();
     // A hand poses the limp robot in its zero pose (every joint at its stored zero), but the left knee too far
     // (window 147–177) and the left hip roll moved within its window.
     await page.evaluate((zeros) => {
@@ -304,23 +299,24 @@ describe("capture zeros on the demo robot", () => {
     await releaseRobot(page);
     const summary = page.getByTestId("capture-summary");
     await summary.waitFor();
-    expect(await text(summary)).toBe(
+    await expectText(
+      summary,
       "Cannot write: Left knee (servo 2) at 180, window 147–177 outside the window the robot accepts. Pose those joints again and capture again.",
     );
     expect(await page.getByTestId("capture-use").count()).toBe(0);
     const table = page.getByTestId("capture-table");
-    expect(squash(await table.locator('tr[data-servo="0"]').textContent())).toBe(
-      "0 · Left hip roll 124 → 130 within 110–140",
-    );
-    expect(squash(await table.locator('tr[data-servo="2"]').textContent())).toBe(
+    await expectText(table.locator('tr[data-servo="0"]'), "0 · Left hip roll 124 → 130 within 110–140");
+    await expectText(
+      table.locator('tr[data-servo="2"]'),
       "2 · Left knee 162 → 180 outside 147–177: the robot refuses it",
     );
     expect(await axeProblems(page, { within: '[data-testid="zeros-card"]' })).toEqual([]);
 
     // Again, the knee within its window this time: the pose goes into the editor, and Write is the editor's.
     await page.getByRole("button", { name: "Capture again…" }).click();
+    const again = await watchText(page, COUNTDOWN, /Reading in/, { hold: true });
     await page.getByRole("button", { name: "Make it limp and start the countdown" }).click();
-    await holdRobotWhenShown(page, COUNTDOWN, /Reading in/);
+    await again.moment();
     await page.evaluate((zeros) => {
       for (const [id, z] of zeros.entries()) window.__rbcDemoSim?.poseByHand(id, z);
       window.__rbcDemoSim?.poseByHand(2, 170);
@@ -328,15 +324,13 @@ describe("capture zeros on the demo robot", () => {
     }, FACTORY);
     await releaseRobot(page);
     await summary.filter({ hasText: "All 16" }).waitFor();
-    expect(await text(summary)).toBe(
-      "All 16 positions are inside their windows; 2 differ from the stored zeros.",
-    );
+    await expectText(summary, "All 16 positions are inside their windows; 2 differ from the stored zeros.");
     await page.getByTestId("capture-use").click();
     // The editor is drawn on the panel's next render: polled.
     await expect.poll(() => page.locator("#zero-0").inputValue()).toBe("130");
     await expect.poll(() => page.locator("#zero-2").inputValue()).toBe("170");
     await page.getByTestId("change-summary").filter({ hasText: "2 changes not yet written" }).waitFor();
-    expect(await page.getByTestId("write-zeros").isEnabled()).toBe(true);
+    await expect.poll(() => page.getByTestId("write-zeros").isEnabled()).toBe(true);
     await context.close();
   });
 
@@ -346,9 +340,10 @@ describe("capture zeros on the demo robot", () => {
     await connectDemo(page);
     await page.getByRole("link", { name: "Zeros" }).click();
     await page.getByRole("button", { name: "Capture zeros…" }).click();
-    await page.getByRole("button", { name: "Make it limp and start the countdown" }).click();
     // Held from the frame the countdown shows, so the Cancel lands before the reading on a loaded machine.
-    await holdRobotWhenShown(page, COUNTDOWN, /Reading in/);
+    const countdown = await watchText(page, COUNTDOWN, /Reading in/, { hold: true });
+    await page.getByRole("button", { name: "Make it limp and start the countdown" }).click();
+    await countdown.moment();
     await page.getByTestId("capture-countdown").getByRole("button", { name: "Cancel" }).click();
     await releaseRobot(page);
     await page.getByText("Capture cancelled: nothing was read or written.").waitFor();
@@ -365,7 +360,7 @@ describe("Korean", () => {
     await page.locator('nav a[href*="zeros"]').first().click();
     await page.locator("#zero-0").waitFor();
     await page.getByRole("button", { name: "실시간 영점 맞추기…" }).click();
-    expect(await text(page.getByTestId("trim-question"))).toContain("로봇을 영점 자세로 세울까요?");
+    await expectText(page.getByTestId("trim-question"), "로봇을 영점 자세로 세울까요?", { contains: true });
     await page.getByRole("button", { name: "영점 자세 잡기" }).click();
     await page.getByTestId("trim-on").waitFor();
     await page.locator("#zero-5").fill("126");
@@ -373,7 +368,9 @@ describe("Korean", () => {
     await page.getByRole("button", { name: "영점 맞추기 취소" }).click();
     await page.getByText("영점 맞추기를 취소했어요.", { exact: false }).waitFor();
     await page.getByRole("button", { name: "자세로 영점 잡기…" }).click();
-    expect(await text(page.getByTestId("capture-question"))).toContain("로봇을 잡아 주지 않으면 넘어져요");
+    await expectText(page.getByTestId("capture-question"), "로봇을 잡아 주지 않으면 넘어져요", {
+      contains: true,
+    });
     expect(await keysShown(page)).toEqual([]);
     expect(await axeProblems(page, { within: '[data-testid="zeros-card"]' })).toEqual([]);
     await context.close();

@@ -1,9 +1,9 @@
 import { readFile } from "node:fs/promises";
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { describe, expect, it } from "vitest";
 import { FACTORY_ZEROS, STANDARD_ZEROS } from "../../src/protocol/index.ts";
 import { parseZerosBackup } from "../../src/protocol/zeros-backup.ts";
-import { type AppHarness, connectRobot, cspViolations, robotTime, squash, startHarness } from "./harness.ts";
+import { connectRobot, cspViolations, expectText, robotTime, squash, useApp } from "./harness.ts";
 import "./rbc-test-globals.ts";
 import {
   connectCable,
@@ -16,15 +16,7 @@ import {
   sizeName as size,
 } from "./i18n-checks.ts";
 
-let app: AppHarness;
-
-beforeAll(async () => {
-  app = await startHarness();
-});
-
-afterAll(async () => {
-  await app?.close();
-});
+const app = useApp();
 
 /** Takes the Save dialog away (an own property shadows the browser's), so the page offers a download. */
 const withoutSaveDialog = () => {
@@ -48,14 +40,14 @@ describe("zeros editor", () => {
   it("reads the robot's zeros, writes an edit after saving a backup, and verifies it", async () => {
     const { page, context } = await app.newPage();
     await openZeros(page);
-    expect(await page.locator("#zero-3").inputValue()).toBe(String(FACTORY_ZEROS[3]));
+    await expect.poll(() => page.locator("#zero-3").inputValue()).toBe(String(FACTORY_ZEROS[3]));
 
     // Every input is labelled with its joint.
-    expect(await page.getByLabel("Left ankle pitch", { exact: true }).inputValue()).toBe("65");
+    await expect.poll(() => page.getByLabel("Left ankle pitch", { exact: true }).inputValue()).toBe("65");
 
     await page.locator("#zero-3").fill("70");
     await page.getByTestId("change-summary").filter({ hasText: "servo 3 65 → 70" }).waitFor();
-    expect(await page.locator('tr[data-servo="3"] .zero-diff').textContent().then(squash)).toBe("+5");
+    await expectText(page.locator('tr[data-servo="3"] .zero-diff'), "+5");
 
     await page.getByTestId("write-zeros").click();
     const downloadPromise = page.waitForEvent("download");
@@ -66,7 +58,8 @@ describe("zeros editor", () => {
 
     const result = page.getByText(/Zeros written and verified/);
     await result.waitFor();
-    expect(await result.textContent().then(squash)).toBe(
+    await expectText(
+      result,
       `Zeros written and verified (read back 16/16). Backup file offered as a download (${name}): the browser decides where it goes and may rename it. It is kept in this browser (Backups kept in this browser, below).`,
     );
     const expected = [...FACTORY_ZEROS];
@@ -95,14 +88,14 @@ describe("zeros editor", () => {
     await page.locator("#zero-3").fill("200");
     const why = page.getByTestId("write-why");
     await why.filter({ hasText: "outside the accepted range" }).waitFor();
-    expect(await page.getByTestId("write-zeros").isDisabled()).toBe(true);
-    expect(await page.locator("#zero-3").getAttribute("aria-invalid")).toBe("true");
-    expect(await page.locator("#zero-3-hint").textContent().then(squash)).toBe("Must be 51–81");
+    await expect.poll(() => page.getByTestId("write-zeros").isDisabled()).toBe(true);
+    await expect.poll(() => page.locator("#zero-3").getAttribute("aria-invalid")).toBe("true");
+    await expectText(page.locator("#zero-3-hint"), "Must be 51–81");
 
     // The slider cannot go outside the window either.
     const slider = page.getByLabel(/Left ankle pitch \(servo 3\), slider/);
-    expect(await slider.getAttribute("min")).toBe("51");
-    expect(await slider.getAttribute("max")).toBe("81");
+    await expect.poll(() => slider.getAttribute("min")).toBe("51");
+    await expect.poll(() => slider.getAttribute("max")).toBe("81");
 
     // Nothing can go out: a moment of the robot's time shows that nothing did.
     await robotTime(page, 100);
@@ -147,10 +140,10 @@ describe("zeros editor", () => {
       await file.setInputFiles({ name, mimeType: "application/json", buffer: Buffer.from(text) });
       const notice = page.getByText(`"${name}" was not loaded.`);
       await notice.waitFor();
-      expect(await notice.textContent().then(squash)).toMatch(message);
+      await expectText(notice, message);
     }
     // The editor still holds the robot's values.
-    expect(await page.locator("#zero-5").inputValue()).toBe(String(FACTORY_ZEROS[5]));
+    await expect.poll(() => page.locator("#zero-5").inputValue()).toBe(String(FACTORY_ZEROS[5]));
     await context.close();
   });
 
@@ -172,7 +165,7 @@ describe("zeros editor", () => {
       buffer: Buffer.from(JSON.stringify(backup)),
     });
     await page.getByText(/saved from robot 1111111111111, not the connected robot 8958899989309/).waitFor();
-    expect(await page.locator("#zero-0").inputValue()).toBe(String(zeros[0]));
+    await expect.poll(() => page.locator("#zero-0").inputValue()).toBe(String(zeros[0]));
     // Loaded, not written.
     expect(await simZeros(page)).toEqual([...FACTORY_ZEROS]);
 
@@ -198,7 +191,8 @@ describe("zeros editor", () => {
     expect(name).toMatch(/^rbc-zeros-8958899989309-\d{4}-\d{2}-\d{2}\.json$/);
     const saved = page.getByText(/^Backup made/);
     await saved.waitFor();
-    expect(await saved.textContent().then(squash)).toBe(
+    await expectText(
+      saved,
       `Backup made: 16 zeros read from the robot. To put them back later: Restore from backup. Backup file offered as a download (${name}): the browser decides where it goes and may rename it. It is kept in this browser (Backups kept in this browser, below).`,
     );
     const parsed = parseZerosBackup(await readFile(await download.path(), "utf8"));
@@ -214,27 +208,30 @@ describe("zeros editor", () => {
     expect(await simZeros(page)).toEqual(onRobot);
     const sent = await page.evaluate((from) => window.__rbcTest?.port.written.slice(from), written);
     expect(sent?.map((bytes) => bytes[8])).toEqual([0x0b]);
-    expect(await page.locator("#zero-7").inputValue()).toBe("90");
+    await expect.poll(() => page.locator("#zero-7").inputValue()).toBe("90");
     await context.close();
   });
 
   it("names the factory and reference zeros and says which is which", async () => {
     const { page, context } = await app.newPage();
     await openZeros(page);
-    const tables = await page.getByTestId("zero-tables").textContent().then(squash);
-    expect(tables).toContain(
+    await expectText(
+      page.getByTestId("zero-tables"),
       `Factory zeros The values the robot's firmware holds when it is new: ${FACTORY_ZEROS.join(" ")}.`,
+      { contains: true },
     );
-    expect(tables).toContain(
+    await expectText(
+      page.getByTestId("zero-tables"),
       `Reference zeros The table the robot checks every write against: ${STANDARD_ZEROS.join(" ")}. Each zero must stay within ±15 of it`,
+      { contains: true },
     );
     // The button's description is the explanation beside it.
     const button = page.getByRole("button", { name: "Load factory zeros" });
-    expect(await button.getAttribute("aria-describedby")).toBe("factory-zeros-why");
+    await expect.poll(() => button.getAttribute("aria-describedby")).toBe("factory-zeros-why");
     // An unchanged row says so to a screen reader with text, not with a label on a plain span.
     const unchanged = page.locator('tr[data-servo="1"] .zero-diff');
     expect(await unchanged.locator("[aria-label]").count()).toBe(0);
-    expect(await unchanged.locator(".sr-only").textContent()).toBe("unchanged");
+    await expectText(unchanged.locator(".sr-only"), "unchanged");
     await context.close();
   });
 
@@ -293,38 +290,33 @@ describe("in Korean (ko-KR)", () => {
       it(`is in Korean, fits and passes axe at ${viewport.width}×${viewport.height}`, async () => {
         const { page, context } = await newLocalePage(app, "ko-KR", { size: viewport });
         await openZeros(page);
-        expect(await lang(page)).toBe("ko");
+        await expect.poll(() => lang(page)).toBe("ko");
         const card = page.getByTestId("zeros-card");
-        expect(await card.getByRole("heading", { level: 1 }).textContent()).toBe("영점 위치");
+        await expectText(card.getByRole("heading", { level: 1 }), "영점 위치");
         await card.getByRole("button", { name: "로봇에서 읽기" }).waitFor();
         await card.getByRole("button", { name: "영점 백업" }).waitFor();
         await card.getByRole("button", { name: "공장 영점 불러오기" }).waitFor();
-        expect(squash(await card.locator("label.file-button").textContent())).toBe("백업에서 복원…");
-        expect(await card.locator("thead th").allTextContents()).toEqual([
-          "ID",
-          "관절",
-          "영점",
-          "슬라이더",
-          "저장된 값",
-          "변경",
-        ]);
+        await expectText(card.locator("label.file-button"), "백업에서 복원…");
+        await expect
+          .poll(() => card.locator("thead th").allTextContents())
+          .toEqual(["ID", "관절", "영점", "슬라이더", "저장된 값", "변경"]);
         // Servo 3 is the robot's own left ankle pitch ("Left ankle pitch" above).
-        expect(await page.getByLabel("왼쪽 발목 앞뒤", { exact: true }).inputValue()).toBe("65");
+        await expect.poll(() => page.getByLabel("왼쪽 발목 앞뒤", { exact: true }).inputValue()).toBe("65");
         const slider = page.getByLabel("왼쪽 발목 앞뒤 (서보 3) 슬라이더, 51–81");
-        expect(await slider.getAttribute("type")).toBe("range");
-        expect(await intro(page)).toBe(
-          "로봇은 모션을 재생할 때마다 각 서보의 영점을 더해요. '영점 백업'은 로봇의 지금 영점을 이 브라우저에 보관하고 파일로도 저장해요. 나중에 어느 쪽으로든 복원할 수 있어요. 편집 표의 값은 로봇에서 가져왔어요.",
-        );
-        expect(squash(await page.getByTestId("zero-tables").textContent())).toContain(
+        await expect.poll(() => slider.getAttribute("type")).toBe("range");
+        await expect
+          .poll(() => intro(page))
+          .toBe(
+            "로봇은 모션을 재생할 때마다 각 서보의 영점을 더해요. '영점 백업'은 로봇의 지금 영점을 이 브라우저에 보관하고 파일로도 저장해요. 나중에 어느 쪽으로든 복원할 수 있어요. 편집 표의 값은 로봇에서 가져왔어요.",
+          );
+        await expectText(
+          page.getByTestId("zero-tables"),
           `공장 영점 새 로봇의 펌웨어에 들어 있는 값이에요: ${FACTORY_ZEROS.join(" ")}.`,
+          { contains: true },
         );
-        expect(await page.locator('tr[data-servo="1"] .zero-diff .sr-only').textContent()).toBe("변경 없음");
-        expect(squash(await page.getByTestId("change-summary").textContent())).toBe(
-          "편집 표가 로봇에 저장된 영점과 같아요.",
-        );
-        expect(squash(await page.getByTestId("write-why").textContent())).toBe(
-          "아직 쓸 것이 없어요. 먼저 값을 바꿔 주세요.",
-        );
+        await expectText(page.locator('tr[data-servo="1"] .zero-diff .sr-only'), "변경 없음");
+        await expectText(page.getByTestId("change-summary"), "편집 표가 로봇에 저장된 영점과 같아요.");
+        await expectText(page.getByTestId("write-why"), "아직 쓸 것이 없어요. 먼저 값을 바꿔 주세요.");
         await expectPageOk(page, "the Zeros view", { shot: `zeros-ko-${size(viewport)}` });
 
         // An edit, and the question before the write.
@@ -333,9 +325,7 @@ describe("in Korean (ko-KR)", () => {
           .getByTestId("change-summary")
           .filter({ hasText: "아직 쓰지 않은 변경 1개: 서보 3 65 → 70." })
           .waitFor();
-        expect(squash(await page.getByTestId("write-why").textContent())).toBe(
-          "쓰기 전에 로봇의 지금 영점을 백업 파일로 저장해요.",
-        );
+        await expectText(page.getByTestId("write-why"), "쓰기 전에 로봇의 지금 영점을 백업 파일로 저장해요.");
         await page.getByTestId("write-zeros").click();
         const confirm = page.getByRole("group", { name: /바뀐 영점 1개를 로봇에 쓸까요\?/ });
         await confirm.waitFor();
@@ -349,10 +339,8 @@ describe("in Korean (ko-KR)", () => {
         // A value the robot would refuse.
         await page.locator("#zero-3").fill("200");
         await page.getByTestId("write-why").filter({ hasText: "쓸 수 없어요" }).waitFor();
-        expect(squash(await page.getByTestId("write-why").textContent())).toBe(
-          "쓸 수 없어요: 허용 범위를 벗어난 값이 1개 있어요.",
-        );
-        expect(squash(await page.locator("#zero-3-hint").textContent())).toBe("51–81만 가능");
+        await expectText(page.getByTestId("write-why"), "쓸 수 없어요: 허용 범위를 벗어난 값이 1개 있어요.");
+        await expectText(page.locator("#zero-3-hint"), "51–81만 가능");
         await expectPageOk(page, "a refused value", { axe: false });
         await context.close();
       });
@@ -373,10 +361,11 @@ describe("in Korean (ko-KR)", () => {
       expect(name).toMatch(/^rbc-zeros-8958899989309-\d{4}-\d{2}-\d{2}\.json$/);
       const written = page.getByText(/^영점을 쓰고 다시 읽어 확인했어요/);
       await written.waitFor();
-      const writtenText = squash(await written.textContent());
-      expect(writtenText).toMatch(/^영점을 쓰고 다시 읽어 확인했어요\(16\/16\)\. /);
-      expect(writtenText).toContain(
+      await expectText(written, /^영점을 쓰고 다시 읽어 확인했어요\(16\/16\)\. /);
+      await expectText(
+        written,
         `백업 파일을 다운로드로 내보냈어요(${name}). 저장 위치와 이름은 브라우저가 정해요.`,
+        { contains: true },
       );
       expect((await simZeros(page))?.[3]).toBe(70);
 
@@ -389,7 +378,7 @@ describe("in Korean (ko-KR)", () => {
         .getByText(`백업 파일을 다운로드로 내보냈어요(${backup.suggestedFilename()})`, { exact: false })
         .filter({ hasText: "백업했어요" });
       await saved.waitFor();
-      expect(squash(await saved.textContent())).toContain("저장 위치와 이름은 브라우저가 정해요.");
+      await expectText(saved, "저장 위치와 이름은 브라우저가 정해요.", { contains: true });
       const parsed = parseZerosBackup(await readFile(await backup.path(), "utf8"));
       expect(parsed.ok && parsed.backup.zeros[3]).toBe(70);
 
@@ -402,13 +391,14 @@ describe("in Korean (ko-KR)", () => {
       });
       const broken = page.getByText('"broken.json" 파일을 불러오지 않았어요.', { exact: false });
       await broken.waitFor();
-      expect(squash(await broken.textContent())).toBe(
+      await expectText(
+        broken,
         '"broken.json" 파일을 불러오지 않았어요. 영점 백업 파일이 아니에요(JSON 텍스트가 아님). 이 패널이 저장한 파일을 골라 주세요. 이름은 rbc-zeros-<시리얼 번호>-<날짜>.json 같은 모양이에요.',
       );
       const notice = page.locator(".notice", { has: broken });
-      expect(await notice.locator("summary").textContent()).toBe("기술 정보");
-      expect(await notice.locator("pre").getAttribute("lang")).toBe("en");
-      expect(await notice.locator("pre").textContent()).toMatch(/^not-json: This file is not a zero backup/);
+      await expectText(notice.locator("summary"), "기술 정보");
+      await expect.poll(() => notice.locator("pre").getAttribute("lang")).toBe("en");
+      await expectText(notice.locator("pre"), /^not-json: This file is not a zero backup/);
 
       const backupOf = (serialNumber: string, zeros: readonly number[]) =>
         Buffer.from(
@@ -446,11 +436,13 @@ describe("in Korean (ko-KR)", () => {
         /^"other\.json" 파일\(2026년 11월 21일 \d\d:\d\d에 저장\)을 편집 표에 불러왔어요\./,
       );
       await other.waitFor();
-      expect(squash(await other.textContent())).toContain(
+      await expectText(
+        other,
         "이 백업은 연결된 로봇(8958899989309)이 아니라 다른 로봇(1111111111111)에서 저장했어요.",
+        { contains: true },
       );
-      expect(await page.locator("#zero-0").inputValue()).toBe(String(zeros[0]));
-      expect(await intro(page)).toContain("편집 표의 값은 백업 파일 other.json에서 가져왔어요.");
+      await expect.poll(() => page.locator("#zero-0").inputValue()).toBe(String(zeros[0]));
+      await expect.poll(() => intro(page)).toContain("편집 표의 값은 백업 파일 other.json에서 가져왔어요.");
 
       await page.getByRole("button", { name: "공장 영점 불러오기" }).click();
       await page

@@ -10,19 +10,20 @@
  *
  * Verdicts (tests/support/fuzz-targets.ts `checkRbm`): an RbmError with an "rbm-" code, or a motion that
  * validates without errors, serializes back to the very same text and encodes as a motion image (or refuses
- * with an RbmError). Anything else — another exception, an accepted invalid motion — is a violation.
+ * with an RbmError). Anything else — another exception, an accepted invalid motion — is a violation. The hard
+ * limit only tells a hang from an answer; how long the check takes is measured by bench/rbm-check.ts.
  */
 import fc from "fast-check";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { EXAMPLE_NAMES, exampleText } from "../data/project-data.ts";
+import { hostileRbmInputs } from "../support/rbm-hostile.ts";
 import { TimeBox } from "../support/time-box.ts";
 
 /** The seeds: the project's example motions (wave.rbm first). */
 const TEXTS = EXAMPLE_NAMES.map(exampleText);
 
-/** Hard limit per input (a hang), and the soft limit an example-sized input must parse within. */
+/** Hard limit per input: an input still running after it is a hang (a speed is the bench's to measure). */
 const HANG_MS = 3000;
-const SLOW_MS = 500;
 
 const HOSTILE = [
   "",
@@ -147,11 +148,10 @@ describe("parseRbm fuzz (time-boxed)", () => {
     await box.stop();
   });
 
-  const check = async (text: string, slowMs = SLOW_MS) => {
-    const { verdict, ms } = await box.run("checkRbm", text, HANG_MS);
+  const check = async (text: string) => {
+    const { verdict } = await box.run("checkRbm", text, HANG_MS);
     if (verdict.kind === "violation")
       throw new Error(`${verdict.detail} for ${JSON.stringify(text.slice(0, 300))}`);
-    expect(ms).toBeLessThan(slowMs);
     return verdict;
   };
 
@@ -194,24 +194,10 @@ describe("parseRbm fuzz (time-boxed)", () => {
     );
   });
 
-  it("huge declared counts and huge inputs finish quickly", async () => {
-    const wave = TEXTS[0]!.split(":");
-    const huge = (index: number, value: string) => {
-      const f = [...wave];
-      f[index] = value;
-      return f.join(":");
-    };
-    for (const text of [
-      huge(9, "999999999"),
-      huge(11, "999999999"),
-      huge(9, "9".repeat(5000)),
-      huge(1, "99999999"),
-      huge(5, "4294967295"),
-      `${"0:".repeat(500_000)}`,
-      `1:13:${"9".repeat(1_000_000)}:`,
-      TEXTS.join(""),
-    ]) {
-      await check(text, 1500);
+  it("huge declared counts and huge inputs: a typed error, never a hang or another exception", async () => {
+    for (const { name, text } of hostileRbmInputs(TEXTS[0]!, TEXTS)) {
+      // None of them is a motion the robot could hold: each is refused with its code.
+      expect((await check(text)).kind, name).toBe("typed-error");
     }
   });
 
