@@ -1,6 +1,6 @@
 import { readFile } from "node:fs/promises";
-import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
+import { storeDraft } from "./editor-fixtures.ts";
 import { useApp, watchPage } from "./harness.ts";
 import "./rbc-test-globals.ts";
 
@@ -16,29 +16,6 @@ const app = useApp();
 const ZERO_SCENES =
   "1:13:0000000000000:XXXXXXXXXX:XXXXXXXXXXXXXXXXXXXX:6:Broken:0:1:0:2:1:4:00:020:030:000:0:125:";
 const KEY = "d-broken-1";
-
-/** Stores a draft record straight into the panel's IndexedDB (database "rbc-panel-drafts", store "drafts"). */
-async function storeDraft(page: Page, key: string, record: unknown): Promise<void> {
-  await page.evaluate(
-    ({ key, record }) =>
-      new Promise<void>((resolve, reject) => {
-        const open = indexedDB.open("rbc-panel-drafts");
-        open.onupgradeneeded = () => open.result.createObjectStore("drafts");
-        open.onerror = () => reject(open.error);
-        open.onsuccess = () => {
-          const db = open.result;
-          const tx = db.transaction("drafts", "readwrite");
-          tx.objectStore("drafts").put(record, key);
-          tx.oncomplete = () => {
-            db.close();
-            resolve();
-          };
-          tx.onerror = () => reject(tx.error);
-        };
-      }),
-    { key, record },
-  );
-}
 
 describe("a stored draft with no scenes", () => {
   it("the Editor opens after a reload, with the sentence, and exports the draft as it is", async () => {

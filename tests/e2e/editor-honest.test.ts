@@ -1,19 +1,12 @@
 import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
+import { openEditorOnDemo } from "./editor-fixtures.ts";
 import { expectText, FAST, squash, useApp } from "./harness.ts";
 import "./rbc-test-globals.ts";
 
 // Issue 21 item 5: the Editor's questions say what the robot will actually do.
 
 const app = useApp();
-
-async function openEditorOnDemo(page: Page): Promise<void> {
-  await page.goto(app.url);
-  await page.getByRole("button", { name: "Try the demo robot" }).click();
-  await page.getByTestId("device-card").waitFor();
-  await page.getByRole("link", { name: "Editor" }).click();
-  await page.getByTestId("pose-table").waitFor();
-}
 
 async function showTab(page: Page, tab: "pose" | "teach" | "play"): Promise<void> {
   await page.locator(`#editor-tab-${tab}`).click();
@@ -23,7 +16,7 @@ async function showTab(page: Page, tab: "pose" | "teach" | "play"): Promise<void
 describe("the Editor's questions match what the robot will do", () => {
   it("Play on robot names the servos it will hold at the edge of their safe range, with the values", async () => {
     const { page, context } = await app.newPage({ options: FAST });
-    await openEditorOnDemo(page);
+    await openEditorOnDemo(page, app.url);
     // docs/protocol.md §5: servo 0's safe range ends at 174; the motion asks for 200.
     await showTab(page, "pose");
     await page.getByTestId("end-0").fill("200");
@@ -51,7 +44,7 @@ describe("the Editor's questions match what the robot will do", () => {
 
   it("Teach-in after Limp says every servo stays limp, not that every servo holds", async () => {
     const { page, context } = await app.newPage({ options: FAST });
-    await openEditorOnDemo(page);
+    await openEditorOnDemo(page, app.url);
     await page.locator("#limp-button").click();
     await page.locator("#confirm-limp").click();
     await page.getByTestId("stop-banner").filter({ hasText: "limp" }).waitFor();
@@ -69,7 +62,7 @@ describe("the Editor's questions match what the robot will do", () => {
 
   it("Teach-in after Limp and then Stop (which leaves servo control and moves no servo) still says every servo is limp", async () => {
     const { page, context } = await app.newPage({ options: FAST });
-    await openEditorOnDemo(page);
+    await openEditorOnDemo(page, app.url);
     await page.locator("#limp-button").click();
     await page.locator("#confirm-limp").click();
     await page.getByTestId("stop-banner").filter({ hasText: "limp" }).waitFor();

@@ -6,6 +6,7 @@
  */
 import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
+import { openEditorOnDemo } from "./editor-fixtures.ts";
 import { expectText, FAST, squash, useApp } from "./harness.ts";
 import "./rbc-test-globals.ts";
 
@@ -123,11 +124,7 @@ async function endValues(page: Page, ids: number[]): Promise<number[]> {
 describe("editor: teach-in and tethered play on the demo robot", () => {
   it("makes a three-scene motion by hand, plays it through the frames of §10, and Stop holds", async () => {
     const { page, context } = await app.newPage({ options: FAST });
-    await page.goto(app.url);
-    await page.getByRole("button", { name: "Try the demo robot" }).click();
-    await page.getByTestId("device-card").waitFor();
-    await page.getByRole("link", { name: "Editor" }).click();
-    await page.getByTestId("pose-table").waitFor();
+    await openEditorOnDemo(page, app.url);
     expect(await positions(page)).toEqual(POSTURE);
 
     // ---- Teach-in: asks once, then servo control with every servo holding.

@@ -8,6 +8,7 @@
  */
 import type { Locator, Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { openEditorOnDemo, storeDraft } from "./editor-fixtures.ts";
 import { type AppHarness, FAST, squash, startHarness } from "./harness.ts";
 import { rbmFile } from "./motion-fixtures.ts";
 import "./rbc-test-globals.ts";
@@ -39,37 +40,10 @@ async function showTab(page: Page, tab: "pose" | "tools"): Promise<void> {
   await page.locator(`#editor-panel-${tab}`).waitFor();
 }
 
-/** Stores a draft record straight into the panel's IndexedDB (database "rbc-panel-drafts", store "drafts"). */
-async function storeDraft(page: Page, key: string, record: unknown): Promise<void> {
-  await page.evaluate(
-    ({ key, record }) =>
-      new Promise<void>((resolve, reject) => {
-        const open = indexedDB.open("rbc-panel-drafts");
-        open.onupgradeneeded = () => open.result.createObjectStore("drafts");
-        open.onerror = () => reject(open.error);
-        open.onsuccess = () => {
-          const db = open.result;
-          const tx = db.transaction("drafts", "readwrite");
-          tx.objectStore("drafts").put(record, key);
-          tx.oncomplete = () => {
-            db.close();
-            resolve();
-          };
-          tx.onerror = () => reject(tx.error);
-        };
-      }),
-    { key, record },
-  );
-}
-
 describe("the Editor's messages follow a language switch", () => {
   it("a play result, a deleted draft and a file not opened read in Korean after the switch and in English after the switch back", async () => {
     const { page, context } = await app.newPage({ options: FAST });
-    await page.goto(app.url);
-    await page.getByRole("button", { name: "Try the demo robot" }).click();
-    await page.getByTestId("device-card").waitFor();
-    await page.getByRole("link", { name: "Editor" }).click();
-    await page.getByTestId("pose-table").waitFor();
+    await openEditorOnDemo(page, app.url);
 
     // A draft of the motion, named so that its name is a fact of the sentences below.
     await page.getByTestId("motion-name").fill("Said");
