@@ -1,4 +1,4 @@
-import { readdirSync, readFileSync, statSync } from "node:fs";
+import { readFileSync } from "node:fs";
 import { join, relative } from "node:path";
 import { describe, expect, it } from "vitest";
 import { jointName, jointOf } from "../../src/i18n/joint-names/joint-name.ts";
@@ -10,6 +10,7 @@ import { figurePoints } from "../../src/ui/features/doctor/model.ts";
 import { jointLabel } from "../../src/ui/features/motions/plot-data.ts";
 import { jointName as viewsJointName } from "../../src/ui/features/zeros/joints/joint-name.ts";
 import { HUNO_JOINTS } from "../../src/ui/robot3d/huno-model.ts";
+import { tsFiles } from "../support/source-files.ts";
 
 /**
  * One name per joint, in both languages, everywhere: the joint-name catalogue (src/i18n/joint-names/) is the only
@@ -62,15 +63,6 @@ const NAMES: Record<Locale, readonly string[]> = { en: EN, ko: KO };
 
 const SRC = join(import.meta.dirname, "../../src");
 const CATALOGUE = "i18n/joint-names/messages.ts";
-
-function tsFiles(dir: string, out: string[] = []): string[] {
-  for (const name of readdirSync(dir)) {
-    const path = join(dir, name);
-    if (statSync(path).isDirectory()) tsFiles(path, out);
-    else if (path.endsWith(".ts")) out.push(path);
-  }
-  return out;
-}
 
 const SOURCES = tsFiles(SRC).map((path) => ({ path: relative(SRC, path), text: readFileSync(path, "utf8") }));
 

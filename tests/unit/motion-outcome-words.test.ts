@@ -40,16 +40,7 @@ import {
 } from "../../src/motion/index.ts";
 import { COMMANDS, ProtocolError } from "../../src/protocol/index.ts";
 import { SimulatedRbc } from "../../src/sim/index.ts";
-
-function refusal(change: () => unknown): MotionError {
-  try {
-    change();
-  } catch (e) {
-    if (e instanceof MotionError) return e;
-    throw e;
-  }
-  throw new Error("expected a MotionError");
-}
+import { motionRefusal as refusal } from "../support/motion-refusal.ts";
 
 /** The refusal's message and its sentence in each language. */
 function said(e: MotionError) {

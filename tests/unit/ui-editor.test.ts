@@ -56,6 +56,7 @@ import {
   readNotice,
 } from "../../src/ui/features/editor/teach-in-model.ts";
 import { said, wordOf } from "../../src/ui/said.ts";
+import { motionRefusal as refused } from "../support/motion-refusal.ts";
 
 const WAVE = readFileSync(new URL("../../examples/wave.rbm", import.meta.url), "latin1");
 
@@ -518,16 +519,6 @@ describe("the tab list's keys", () => {
 });
 
 describe("the editor in Korean", () => {
-  const refused = (change: () => unknown): MotionError => {
-    try {
-      change();
-    } catch (e) {
-      if (e instanceof MotionError) return e;
-      throw e;
-    }
-    throw new Error("expected a MotionError");
-  };
-
   const words = (e: MotionError) => ({
     en: refusalText(refusalOf(e), "en"),
     ko: refusalText(refusalOf(e), "ko"),
