@@ -1,7 +1,7 @@
 /**
  * Shared set-up of the browser tests: the app built once (cached by a hash of its inputs, so the test files
  * share one build), served by Vite's preview server on 127.0.0.1, the fake `navigator.serial` bundled to an
- * IIFE string, and one Chromium per test file.
+ * IIFE string, and one Chromium per test file, whose browser contexts are kept across its tests (`startHarness`).
  */
 import { createHash } from "node:crypto";
 import { existsSync } from "node:fs";
@@ -10,9 +10,9 @@ import { createServer } from "node:net";
 import { tmpdir } from "node:os";
 import { join, relative } from "node:path";
 import { fileURLToPath } from "node:url";
-import type { Browser, BrowserContext, Locator, Page } from "playwright-core";
+import type { Browser, BrowserContext, Disposable, Locator, Page } from "playwright-core";
 import { build, preview } from "vite";
-import { afterAll, beforeAll, expect } from "vitest";
+import { afterAll, afterEach, beforeAll, expect } from "vitest";
 import { launchChromium } from "../support/chromium.ts";
 import type { RbcTestOptions } from "./rbc-test-globals.ts";
 
@@ -145,11 +145,25 @@ export interface PageOptions {
   locale?: string;
 }
 
+/**
+ * The browser context a test's page lives in, as far as a test may touch it. Contexts are kept for the next
+ * test of the file (see `startHarness`), so `close` hands it back rather than closing it, and a test changes
+ * only what the harness puts back: permissions and the network being offline.
+ */
+export interface TestContext {
+  /** Closes the test's pages and hands the context back for the next test (done after each test anyway). */
+  close(): Promise<void>;
+  grantPermissions: BrowserContext["grantPermissions"];
+  setOffline: BrowserContext["setOffline"];
+}
+
 export interface AppHarness {
   url: string;
   origin: string;
   browser: Browser;
-  newPage(options?: PageOptions): Promise<{ context: BrowserContext; page: Page }>;
+  newPage(options?: PageOptions): Promise<{ context: TestContext; page: Page }>;
+  /** Hands back every context a test still holds (after each test). */
+  releaseAll(): Promise<void>;
   close(): Promise<void>;
 }
 
@@ -161,6 +175,29 @@ document.addEventListener("securitypolicyviolation", (e) => {
 
 const NO_SERIAL = `delete Navigator.prototype.serial; delete navigator.serial;`;
 
+/** A browser context kept across the tests of one file, for pages with the same language and service workers. */
+interface PooledContext {
+  context: BrowserContext;
+  /** What `newPage` options the context was made with: the ones a page cannot change. */
+  key: string;
+  /** The current test's init script (fake serial port, its options), removed when the context is handed back. */
+  script: Disposable | undefined;
+  inUse: boolean;
+}
+
+const DEFAULT_VIEWPORT = { width: 1280, height: 800 };
+
+/**
+ * Starts the preview server and one Chromium for a test file.
+ *
+ * Each test gets a new page, but not a new browser context: a context costs about 3 CPU-seconds to make and
+ * close on a 2-core machine (a page in a kept one, about 0.5), and setting up pages was most of what the browser
+ * tests spent. A context is kept for the next test that asks for the same language and service-worker setting,
+ * and starts it as a new one would: the previous test's pages are closed, its init script removed, its
+ * permissions and offline state put back, and everything the origin stored (IndexedDB, local storage, caches,
+ * cookies, service workers) cleared before the new page loads anything. What a test changes on the page itself
+ * (init scripts, a fake clock, listeners) goes with the page.
+ */
 export async function startHarness(): Promise<AppHarness> {
   const { outDir, fakeSerial } = await buildOnce();
   const port = await freePort();
@@ -173,21 +210,51 @@ export async function startHarness(): Promise<AppHarness> {
   });
   const origin = `http://127.0.0.1:${port}`;
   const browser = await launchChromium();
-  const contexts = new Set<BrowserContext>();
+  const pool = new Set<PooledContext>();
+
+  async function handBack(entry: PooledContext): Promise<void> {
+    if (!entry.inUse) return;
+    try {
+      await entry.script?.dispose();
+      entry.script = undefined;
+      for (const page of entry.context.pages()) await page.close();
+      await entry.context.clearPermissions();
+      await entry.context.setOffline(false);
+      entry.inUse = false;
+    } catch {
+      // A context that cannot be put back (its browser crashed, a test closed it) is not used again.
+      pool.delete(entry);
+      await entry.context.close().catch(() => {});
+    }
+  }
+
+  async function takeContext(key: string, options: PageOptions): Promise<PooledContext> {
+    for (const entry of pool) {
+      if (entry.inUse || entry.key !== key) continue;
+      entry.inUse = true;
+      return entry;
+    }
+    const context = await browser.newContext({
+      viewport: DEFAULT_VIEWPORT,
+      serviceWorkers: options.serviceWorkers ?? "block",
+      acceptDownloads: true,
+      reducedMotion: "reduce",
+      locale: options.locale ?? "en-US",
+    });
+    const entry: PooledContext = { context, key, script: undefined, inUse: true };
+    pool.add(entry);
+    context.on("close", () => pool.delete(entry));
+    return entry;
+  }
+
   return {
     url: `${origin}/`,
     origin,
     browser,
     async newPage(options = {}) {
-      const context = await browser.newContext({
-        viewport: options.viewport ?? { width: 1280, height: 800 },
-        serviceWorkers: options.serviceWorkers ?? "block",
-        acceptDownloads: true,
-        reducedMotion: "reduce",
-        locale: options.locale ?? "en-US",
-      });
-      contexts.add(context);
-      context.on("close", () => contexts.delete(context));
+      const key = JSON.stringify([options.serviceWorkers ?? "block", options.locale ?? "en-US"]);
+      const entry = await takeContext(key, options);
+      const { context } = entry;
       // One init script, so that its parts run in this order (Playwright does not order separate ones).
       const scripts = [CSP_WATCH];
       if (options.noSerial) {
@@ -195,12 +262,27 @@ export async function startHarness(): Promise<AppHarness> {
       } else if (options.fakeSerial ?? true) {
         scripts.push(`window.__rbcTestOptions = ${JSON.stringify(options.options ?? {})};`, fakeSerial);
       }
-      await context.addInitScript({ content: scripts.join("\n;\n") });
+      entry.script = await context.addInitScript({ content: scripts.join("\n;\n") });
       const page = await context.newPage();
-      return { context, page };
+      // The page is still blank: nothing of this origin runs while its storage is cleared.
+      const cdp = await context.newCDPSession(page);
+      await cdp.send("Storage.clearDataForOrigin", { origin, storageTypes: "all" });
+      await cdp.detach();
+      await page.setViewportSize(options.viewport ?? DEFAULT_VIEWPORT);
+      return {
+        page,
+        context: {
+          close: () => handBack(entry),
+          grantPermissions: (permissions, grant) => context.grantPermissions(permissions, grant),
+          setOffline: (offline) => context.setOffline(offline),
+        },
+      };
+    },
+    async releaseAll() {
+      for (const entry of pool) await handBack(entry);
     },
     async close() {
-      for (const context of contexts) await context.close().catch(() => {});
+      for (const { context } of pool) await context.close().catch(() => {});
       await browser.close().catch(() => {});
       await server.close();
     },
@@ -389,6 +471,9 @@ export function useApp(): AppHarness {
   beforeAll(async () => {
     started = await startHarness();
   });
+  afterEach(async () => {
+    await started?.releaseAll();
+  });
   afterAll(async () => {
     await started?.close();
   });
@@ -407,6 +492,7 @@ export function useApp(): AppHarness {
       return app().browser;
     },
     newPage: (options) => app().newPage(options),
+    releaseAll: () => app().releaseAll(),
     close: () => app().close(),
   };
 }

@@ -9,9 +9,9 @@ import { readdirSync, readFileSync, statSync } from "node:fs";
 import { mkdir } from "node:fs/promises";
 import { createRequire } from "node:module";
 import { join, resolve } from "node:path";
-import type { BrowserContext, Locator, Page } from "playwright-core";
+import type { Locator, Page } from "playwright-core";
 import { expect } from "vitest";
-import { type AppHarness, ROOT, squash } from "./harness.ts";
+import { type AppHarness, ROOT, squash, type TestContext } from "./harness.ts";
 import type { RbcTestOptions } from "./rbc-test-globals.ts";
 
 /** A browser window's size in CSS pixels. */
@@ -47,7 +47,7 @@ export async function newLocalePage(
   app: AppHarness,
   locale: string,
   setup: { size?: Size; options?: RbcTestOptions; noSerial?: boolean; hash?: string } = {},
-): Promise<{ context: BrowserContext; page: Page }> {
+): Promise<{ context: TestContext; page: Page }> {
   const { context, page } = await app.newPage({
     locale,
     viewport: { ...(setup.size ?? DESKTOP) },
