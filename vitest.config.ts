@@ -48,7 +48,10 @@ export default defineConfig({
           name: "e2e",
           include: ["tests/e2e/**/*.test.ts"],
           environment: "node",
-          testTimeout: 60_000,
+          // A guard against a hang, not a measure of speed: a browser test's time is mostly CPU, and with two
+          // suites at once on a 2-core machine the longest (owner-round2's walk of every view at two widths in
+          // two languages) took 57 s, twice its time alone.
+          testTimeout: 120_000,
           hookTimeout: 120_000,
           // expect.poll waits for what the page or the demo robot does next. Its default of 1 s is short on a
           // starved 2-core machine (the Servos test once missed it in CI); a poll that succeeds returns at once.

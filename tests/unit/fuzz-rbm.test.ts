@@ -24,6 +24,12 @@ const TEXTS = EXAMPLE_NAMES.map(exampleText);
 
 /** Hard limit per input: an input still running after it is a hang (a speed is the bench's to measure). */
 const HANG_MS = 3000;
+/**
+ * A property's whole run: hundreds of parses, CPU-bound, so its time follows the machine's load (the 600
+ * mutated examples took 4.5 s alone and over 10 s with two suites on a 2-core machine). A hang is caught per
+ * input by HANG_MS; this only bounds the whole.
+ */
+const PROPERTY_MS = 60_000;
 
 const HOSTILE = [
   "",
@@ -159,7 +165,9 @@ describe("parseRbm fuzz (time-boxed)", () => {
     for (const text of TEXTS) expect((await check(text)).kind).toBe("ok");
   });
 
-  it("mutated examples: an RbmError with an rbm- code, or a motion that validates and round-trips", async () => {
+  it("mutated examples: an RbmError with an rbm- code, or a motion that validates and round-trips", {
+    timeout: PROPERTY_MS,
+  }, async () => {
     const seen = new Map<string, number>();
     await fc.assert(
       fc.asyncProperty(
@@ -178,7 +186,7 @@ describe("parseRbm fuzz (time-boxed)", () => {
     expect(seen.get("ok") ?? 0).toBeGreaterThan(0);
   });
 
-  it("arbitrary text, including whole-Unicode and digit-colon soup", async () => {
+  it("arbitrary text, including whole-Unicode and digit-colon soup", { timeout: PROPERTY_MS }, async () => {
     await fc.assert(
       fc.asyncProperty(
         fc.oneof(
@@ -194,7 +202,9 @@ describe("parseRbm fuzz (time-boxed)", () => {
     );
   });
 
-  it("huge declared counts and huge inputs: a typed error, never a hang or another exception", async () => {
+  it("huge declared counts and huge inputs: a typed error, never a hang or another exception", {
+    timeout: PROPERTY_MS,
+  }, async () => {
     for (const { name, text } of hostileRbmInputs(TEXTS[0]!, TEXTS)) {
       // None of them is a motion the robot could hold: each is refused with its code.
       expect((await check(text)).kind, name).toBe("typed-error");
