@@ -1,7 +1,7 @@
-import { errorText } from "../device/error-text.ts";
 import { RbcError } from "../device/errors.ts";
 import type { Locale } from "../i18n/locale.ts";
 import { unexpectedText } from "../i18n/outcomes/device.ts";
+import { errorText } from "../i18n/outcomes/error-text.ts";
 import { translator } from "../i18n/translate.ts";
 import { LinkError } from "../link/transport.ts";
 import { ProtocolError } from "../protocol/errors.ts";

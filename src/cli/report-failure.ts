@@ -3,8 +3,9 @@
  * detail after `--log`), the same failure as JSON on stdout with `--json`, and its exit code. Used by main and
  * by each port of a command given several ports (multi-port.ts).
  */
-import { technicalDetail } from "../device/error-text.ts";
+
 import { RbcUploadError } from "../device/errors.ts";
+import { technicalDetail } from "../device/technical-detail.ts";
 import type { Locale } from "../i18n/locale.ts";
 import { translator } from "../i18n/translate.ts";
 import type { CommandDef } from "./command.ts";

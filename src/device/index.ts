@@ -19,7 +19,6 @@ export { BOOTLOADER_PROMPTS_NEEDED } from "./bootloader-prompt.ts";
 export type { ProbeResult } from "./busy-probe.ts";
 export { DirectMode, SERVO_IDS } from "./direct-mode.ts";
 export { RbcCannotLimpError, RbcNotIdleError, RbcStillPlayingError } from "./direct-mode-errors.ts";
-export { type ErrorTextOptions, errorText, technicalDetail, uploadOutcomeText } from "./error-text.ts";
 export * from "./errors.ts";
 export {
   DEFAULT_FIRMWARE_TIMEOUTS,
@@ -84,6 +83,7 @@ export {
 } from "./shelf.ts";
 export type { SoundReport } from "./sound.ts";
 export type { StopFound } from "./stop.ts";
+export { technicalDetail } from "./technical-detail.ts";
 export {
   frameLabel,
   TetheredPlayError,

@@ -1,5 +1,6 @@
-import { errorText, technicalDetail } from "../device/error-text.ts";
+import { technicalDetail } from "../device/technical-detail.ts";
 import type { Locale } from "../i18n/locale.ts";
+import { errorText } from "../i18n/outcomes/error-text.ts";
 import { type Notice, noticeOf } from "./app-state.ts";
 import { uiMessages } from "./messages.ts";
 import { inEveryLanguage, type Said, said, saidText } from "./said.ts";
@@ -9,7 +10,7 @@ import { domErrorName } from "./serial-ports.ts";
  * Turns failures into notices: what went wrong in the user's terms, with the technical detail apart.
  *
  * The device's errors are English sentences with a stable `code`. In English the notice shows that sentence.
- * In Korean it shows a Korean sentence made from the code (src/device/error-text.ts, shared with the command
+ * In Korean it shows a Korean sentence made from the code (src/i18n/outcomes/error-text.ts, shared with the command
  * line), and the device's English sentence stays in the technical detail, one click away. Pass the panel's
  * language (`ctx.state.locale`); English when not given (features not yet translated).
  */

@@ -23,7 +23,7 @@ type Layer = "protocol" | "link" | "device" | "motion" | "sim" | "shared" | "i18
 
 const MAY_IMPORT: Record<Layer, readonly Layer[]> = {
   shared: [],
-  i18n: ["shared"],
+  i18n: ["protocol", "link", "device", "motion", "shared"],
   protocol: ["shared", "i18n"],
   link: ["shared"],
   motion: ["protocol", "shared", "i18n"],
@@ -274,20 +274,21 @@ describe("the import rule (docs/architecture.md)", () => {
     ]);
   });
 
-  it("lets the outcome catalogue name the types it words, and nothing more", () => {
-    const typeOnly = {
+  it("lets the outcome catalogue stand above the layers whose outcomes it words, and below the front ends", () => {
+    const above = {
       path: "src/i18n/outcomes/words.ts",
       text:
         'import type { RbcErrorCode } from "../../device/index.ts";\n' +
+        'import { RbcError } from "../../device/errors.ts";\n' +
         'import type { MotionErrorFacts } from "../../motion/errors.ts";\n',
     };
-    const value = {
+    const frontEnd = {
       path: "src/i18n/outcomes/other.ts",
-      text: 'import { RbcError } from "../../device/errors.ts";\n',
+      text: 'import { uiMessages } from "../../ui/messages.ts";\n',
     };
-    expect(importViolations([...base, index("motion", "errors"), typeOnly, value])).toEqual([
-      'src/i18n/outcomes/other.ts: "../../device/errors.ts" (i18n/ may not import device/)',
-    ]);
+    expect(
+      importViolations([...base, index("motion", "errors"), index("device", "errors"), above, frontEnd]),
+    ).toEqual(['src/i18n/outcomes/other.ts: "../../ui/messages.ts" (i18n/ may not import ui/)']);
   });
 
   it("refuses a deep import of a file the layer's index.ts keeps private", () => {

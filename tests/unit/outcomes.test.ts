@@ -5,7 +5,6 @@
  */
 import { describe, expect, it } from "vitest";
 import { RbcInBootloaderError } from "../../src/device/bootloader-prompt.ts";
-import { errorText } from "../../src/device/error-text.ts";
 import {
   RbcNotConnectedError,
   RbcTimeoutError,
@@ -24,6 +23,7 @@ import {
   inBootloaderText,
   uploadNoticeText,
 } from "../../src/i18n/outcomes/device.ts";
+import { errorText } from "../../src/i18n/outcomes/error-text.ts";
 import {
   firmwareFailureText,
   firmwareNoticeText,

@@ -1,11 +1,6 @@
 import { describe, expect, it } from "vitest";
-import {
-  errorText,
-  type LogEntry,
-  RbcClient,
-  type RbcEvent,
-  type UploadProgress,
-} from "../../src/device/index.ts";
+import { type LogEntry, RbcClient, type RbcEvent, type UploadProgress } from "../../src/device/index.ts";
+import { errorText } from "../../src/i18n/outcomes/error-text.ts";
 import { type Transport, WebSerialTransport } from "../../src/link/index.ts";
 import { FACTORY_ZEROS, motionImage, parseRbm, STANDARD_ZEROS, toHex } from "../../src/protocol/index.ts";
 import { VirtualClock } from "../../src/shared/clock.ts";

@@ -1,6 +1,6 @@
 import { describe, expect, it } from "vitest";
-import { errorText } from "../../src/device/error-text.ts";
 import { RbcUploadError, type UploadFailureFacts } from "../../src/device/errors.ts";
+import { errorText } from "../../src/i18n/outcomes/error-text.ts";
 import { robotErrorText } from "../../src/i18n/outcomes/robot-error.ts";
 import { uploadFailureText } from "../../src/i18n/outcomes/upload-words.ts";
 

@@ -1,4 +1,18 @@
-import type { Locale } from "../i18n/locale.ts";
+import {
+  RbcBusyError,
+  RbcEmptySlotError,
+  RbcError,
+  RbcInBootloaderError,
+  RbcInvalidArgumentError,
+  RbcNotSupportedError,
+  RbcRunNoReplyError,
+  RbcRunNotPlayedError,
+  RbcTimeoutError,
+  RbcUploadError,
+  ZeroWriteFailedError,
+} from "../../device/errors.ts";
+import { LinkError } from "../../link/transport.ts";
+import type { Locale } from "../locale.ts";
 import {
   codeNeedsDetail,
   codeText,
@@ -12,7 +26,7 @@ import {
   uploadAcknowledgedText,
   uploadOutcomeText,
   zerosBackupKeptText,
-} from "../i18n/outcomes/device.ts";
+} from "./device.ts";
 import {
   busyReadText,
   emptySlotText,
@@ -20,22 +34,8 @@ import {
   runNoReplyText,
   runReportText,
   stopNoReplyText,
-} from "../i18n/outcomes/run-words.ts";
-import { uploadFailureText } from "../i18n/outcomes/upload-words.ts";
-import { LinkError } from "../link/transport.ts";
-import {
-  RbcBusyError,
-  RbcEmptySlotError,
-  RbcError,
-  RbcInBootloaderError,
-  RbcInvalidArgumentError,
-  RbcNotSupportedError,
-  RbcRunNoReplyError,
-  RbcRunNotPlayedError,
-  RbcTimeoutError,
-  RbcUploadError,
-  ZeroWriteFailedError,
-} from "./errors.ts";
+} from "./run-words.ts";
+import { uploadFailureText } from "./upload-words.ts";
 
 /**
  * The device's errors for a person, in their language (the panel's notices, the command line's one line).
@@ -97,14 +97,4 @@ export function errorText(e: unknown, locale: Locale, options: ErrorTextOptions 
   if (e instanceof RbcError || e instanceof LinkError) return e.message;
   if (e instanceof Error && e.message) return e.message;
   return unexpectedText(locale);
-}
-
-/** "RbcTimeoutError (timeout): The robot did not answer …", with its causes: the technical detail, in English. */
-export function technicalDetail(e: unknown): string {
-  if (e instanceof RbcError || e instanceof LinkError) {
-    const cause = e.cause === undefined ? "" : ` — caused by ${technicalDetail(e.cause)}`;
-    return `${e.name} (${e.code}): ${e.message}${cause}`;
-  }
-  if (e instanceof Error) return `${e.name}: ${e.message}`;
-  return String(e);
 }
