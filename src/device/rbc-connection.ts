@@ -22,6 +22,7 @@ import { PacketParser } from "../protocol/packet-parser.ts";
 import { EXIT_DIRECT_MODE } from "../protocol/wck.ts";
 import { type Clock, realClock } from "../shared/clock.ts";
 import { Emitter } from "../shared/emitter.ts";
+import { Waitress } from "../shared/waitress.ts";
 import { BootloaderPromptWatch, RbcInBootloaderError } from "./bootloader-prompt.ts";
 import {
   DEFAULT_TIMEOUTS,
@@ -46,12 +47,11 @@ export type { RbcClientOptions, RbcTimeouts, RequestOptions } from "./connection
 
 import type { ClientMode, ClientState, LogEntry, RbcEvent, SubscriptionKind } from "./types.ts";
 
-interface PacketWaiter {
+/** What answers a request's wait: a reply of its type. */
+interface ReplyMatcher {
   type: number;
   /** Replies of the right type that this returns false for are ignored (e.g. a stopped motion's reply). */
   accept?: (p: Packet) => boolean;
-  resolve: (p: Packet) => void;
-  reject: (e: unknown) => void;
 }
 
 export const SUBSCRIPTIONS = {
@@ -90,7 +90,8 @@ export class RbcConnection {
   readonly events = new Emitter<RbcEvent>();
   readonly parser: PacketParser;
   readonly raw: RawChannel;
-  private waiter: PacketWaiter | undefined;
+  /** The request in flight's wait for its reply (one at a time: `exclusive`). */
+  private readonly replies: Waitress<Packet, ReplyMatcher>;
   private queue: Promise<unknown> = Promise.resolve();
   /** Bumped by Stop and Limp (`cancelQueued`): queued operations from an older epoch are cancelled. */
   epoch = 0;
@@ -153,6 +154,7 @@ export class RbcConnection {
       maxContent: (type) => COMMAND_BY_TYPE.get(type)?.replySize ?? MAX_REPLY_CONTENT,
     });
     this.raw = new RawChannel(this.clock, (bytes, note) => this.writeRaw(bytes, note));
+    this.replies = new Waitress(this.clock, (p, m) => m.type === p.type && (m.accept?.(p) ?? true));
   }
 
   get state(): Readonly<ClientState> {
@@ -389,50 +391,43 @@ export class RbcConnection {
   ) {
     // Only a quick reply measures the link: the others wait for the robot (a motion, a sound) as well.
     const quick = COMMAND_BY_TYPE.get(type)?.timeout === "quick";
-    return new Promise<Packet>((resolve, reject) => {
-      if (signal?.aborted) return reject(new RbcCancelledError());
-      let timer = 0;
-      let sentAt: number | undefined;
-      const onAbort = () =>
-        finish(() => {
-          if (send) this.expectLate(type);
-          reject(new RbcCancelledError(`Stopped waiting for "${name}".`));
-        });
-      const finish = (settle: () => void) => {
-        this.clock.clearTimeout(timer);
-        signal?.removeEventListener("abort", onAbort);
-        if (this.waiter === waiter) this.waiter = undefined;
-        settle();
-      };
-      const waiter: PacketWaiter = {
-        type,
-        accept,
-        resolve: (p) =>
-          finish(() => {
-            // Request written → its own reply complete. The fences guarantee that a reply of this type is
-            // this request's (no late one is outstanding), so the sample is never a retried or late reply's.
-            if (quick && sentAt !== undefined) this.roundTrip.sample(this.clock.now() - sentAt);
-            resolve(p);
-          }),
-        reject: (e) => finish(() => reject(e)),
-      };
-      this.waiter = waiter; // registered before the write
-      signal?.addEventListener("abort", onAbort);
-      timer = this.clock.setTimeout(() => {
-        this.stats.timeouts++;
-        if (quick) this.roundTrip.timedOut();
-        // Bytes came but no whole reply (a partial or garbled frame): the reply came damaged, it is not late.
-        const garbled = sentAt !== undefined && (this.parser.pending > 0 || this.lastDiscardAt >= sentAt);
-        // A partial frame is not this reply's any more; the reply itself may still come later.
-        this.parser.reset();
-        if (send && !(garbled && MAIN_LOOP_REPLY_TYPES.has(type))) this.expectLate(type, sentAt);
-        if (garbled && sentAt !== undefined) this.garbledAt = this.clock.now();
-        waiter.reject(new RbcTimeoutError(name, timeoutMs));
-      }, timeoutMs);
-      if (send) {
-        sentAt = this.clock.now();
-        this.writePacket(encodePacket(type, contents), type).catch((e) => waiter.reject(e));
-      }
+    if (signal?.aborted) return Promise.reject(new RbcCancelledError());
+    let sentAt: number | undefined;
+    const wait = this.replies.wait(
+      { type, accept }, // registered before the write
+      {
+        cancel: {
+          signal,
+          error: () => {
+            if (send) this.expectLate(type);
+            return new RbcCancelledError(`Stopped waiting for "${name}".`);
+          },
+        },
+        deadline: {
+          ms: timeoutMs,
+          error: () => {
+            this.stats.timeouts++;
+            if (quick) this.roundTrip.timedOut();
+            // Bytes came but no whole reply (a partial or garbled frame): the reply came damaged, it is not late.
+            const garbled = sentAt !== undefined && (this.parser.pending > 0 || this.lastDiscardAt >= sentAt);
+            // A partial frame is not this reply's any more; the reply itself may still come later.
+            this.parser.reset();
+            if (send && !(garbled && MAIN_LOOP_REPLY_TYPES.has(type))) this.expectLate(type, sentAt);
+            if (garbled && sentAt !== undefined) this.garbledAt = this.clock.now();
+            return new RbcTimeoutError(name, timeoutMs);
+          },
+        },
+      },
+    );
+    if (send) {
+      sentAt = this.clock.now();
+      this.writePacket(encodePacket(type, contents), type).catch((e) => wait.reject(e));
+    }
+    return wait.promise.then((p) => {
+      // Request written → its own reply complete. The fences guarantee that a reply of this type is this
+      // request's (no late one is outstanding), so the sample is never a retried or late reply's.
+      if (quick && sentAt !== undefined) this.roundTrip.sample(this.clock.now() - sentAt);
+      return p;
     });
   }
 
@@ -568,10 +563,7 @@ export class RbcConnection {
     }
     // A late main-loop reply pays its debt before any waiter sees it (docs/protocol.md §3.6: matched by count).
     if (this.payOwed(packet)) return;
-    if (this.waiter && this.waiter.type === packet.type && (this.waiter.accept?.(packet) ?? true)) {
-      this.waiter.resolve(packet);
-      return;
-    }
+    if (this.replies.resolve(packet)) return;
     // Anything else is a late, unexpected or side-channel reply: logged above, offered to `unsolicited`, and
     // unless that claims it, counted and its type fenced before its next request (a repeat may follow).
     if (this.unsolicited?.(packet) === true) return;
@@ -601,8 +593,7 @@ export class RbcConnection {
   }
 
   failPending(error: RbcError): void {
-    if (this.waiter) this.expectLate(this.waiter.type);
-    this.waiter?.reject(error);
+    for (const { type } of this.replies.reject(error)) this.expectLate(type);
     this.raw.fail(error);
   }
 
@@ -614,19 +605,11 @@ export class RbcConnection {
 
   /** Rejects with RbcTimeoutError if `p` has not settled within `ms` (for writes that expect no reply). */
   withTimeout<T>(p: Promise<T>, ms: number, name: string): Promise<T> {
-    return new Promise<T>((resolve, reject) => {
-      const timer = this.clock.setTimeout(() => reject(new RbcTimeoutError(name, ms)), ms);
-      p.then(
-        (v) => {
-          this.clock.clearTimeout(timer);
-          resolve(v);
-        },
-        (e) => {
-          this.clock.clearTimeout(timer);
-          reject(e);
-        },
-      );
+    const wait = new Waitress<T>(this.clock).wait(undefined, {
+      deadline: { ms, error: () => new RbcTimeoutError(name, ms) },
     });
+    p.then(wait.resolve, wait.reject);
+    return wait.promise;
   }
 
   sleep(ms: number): Promise<void> {
