@@ -21,9 +21,10 @@ import {
 } from "../protocol/bootloader.ts";
 import { COMMANDS } from "../protocol/commands.ts";
 import { type IntelHexImage, parseIntelHex } from "../protocol/intel-hex.ts";
-import { encodePacket } from "../protocol/packet.ts";
+import { encodePacket, type Packet } from "../protocol/packet.ts";
 import { PacketParser } from "../protocol/packet-parser.ts";
 import { type Clock, realClock, sleep, type TimerId } from "../shared/clock.ts";
+import { Waitress } from "../shared/waitress.ts";
 import {
   RbcBadReplyError,
   RbcDisconnectedError,
@@ -227,36 +228,25 @@ export function transportFirmwareIo(
       transport.onStatus((e) => {
         if (e.status === "lost") listener();
       }),
-    readFirmwareVersion: () =>
-      new Promise((resolve, reject) => {
-        const spec = COMMANDS.readFirmwareVersion;
-        const waitMs = options.answerMs ?? 400;
-        const parser = new PacketParser();
-        const done = () => {
-          off();
-          clock.clearTimeout(timer);
-        };
-        const off = transport.onData((bytes) => {
-          for (const packet of parser.push(bytes)) {
-            if (packet.type !== spec.type) continue;
-            done();
-            try {
-              resolve(spec.decode(packet.contents));
-            } catch (e) {
-              reject(new RbcBadReplyError(e instanceof Error ? e.message : String(e), e));
-            }
-            return;
-          }
-        });
-        const timer = clock.setTimeout(() => {
-          done();
-          reject(new RbcTimeoutError(spec.name, waitMs));
-        }, waitMs);
-        write(encodePacket(spec.type, spec.request(undefined))).catch((e: unknown) => {
-          done();
-          reject(e);
-        });
-      }),
+    readFirmwareVersion: async () => {
+      const spec = COMMANDS.readFirmwareVersion;
+      const waitMs = options.answerMs ?? 400;
+      const parser = new PacketParser();
+      const replies = new Waitress<Packet, number>(clock, (p, type) => p.type === type);
+      const reply = replies.wait(spec.type, {
+        deadline: { ms: waitMs, error: () => new RbcTimeoutError(spec.name, waitMs) },
+      });
+      const off = transport.onData((bytes) => {
+        for (const packet of parser.push(bytes)) if (replies.resolve(packet)) return;
+      });
+      write(encodePacket(spec.type, spec.request(undefined))).catch(reply.reject);
+      const packet = await reply.promise.finally(off);
+      try {
+        return spec.decode(packet.contents);
+      } catch (e) {
+        throw new RbcBadReplyError(e instanceof Error ? e.message : String(e), e);
+      }
+    },
   };
 }
 

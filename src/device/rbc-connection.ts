@@ -22,7 +22,7 @@ import { PacketParser } from "../protocol/packet-parser.ts";
 import { EXIT_DIRECT_MODE } from "../protocol/wck.ts";
 import { type Clock, realClock } from "../shared/clock.ts";
 import { Emitter } from "../shared/emitter.ts";
-import { Waitress } from "../shared/waitress.ts";
+import { Waitress, withDeadline } from "../shared/waitress.ts";
 import { BootloaderPromptWatch, RbcInBootloaderError } from "./bootloader-prompt.ts";
 import {
   DEFAULT_TIMEOUTS,
@@ -605,11 +605,7 @@ export class RbcConnection {
 
   /** Rejects with RbcTimeoutError if `p` has not settled within `ms` (for writes that expect no reply). */
   withTimeout<T>(p: Promise<T>, ms: number, name: string): Promise<T> {
-    const wait = new Waitress<T>(this.clock).wait(undefined, {
-      deadline: { ms, error: () => new RbcTimeoutError(name, ms) },
-    });
-    p.then(wait.resolve, wait.reject);
-    return wait.promise;
+    return withDeadline(this.clock, p, { ms, error: () => new RbcTimeoutError(name, ms) });
   }
 
   sleep(ms: number): Promise<void> {

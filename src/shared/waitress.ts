@@ -5,16 +5,20 @@ import type { Clock, TimerId } from "./clock.ts";
  * zigbee-herdsman's `Waitress`: a wait is registered with a matcher (data saying what answers it) before the
  * request is written, and ends exactly once, whichever comes first:
  * - a payload its matcher accepts (`resolve`), or the caller settling it itself (`Wait.resolve`);
- * - its deadline on the injected clock, rejecting with the caller's error;
+ * - its deadline on the injected clock, rejecting with the caller's error (or resolving with the caller's value,
+ *   for a wait that may end empty-handed);
  * - its cancel signal (Stop, Limp), rejecting with the caller's error;
  * - `reject` of the waitress (the link pulled, the connection closed), with the caller's error.
  * Anything after that (a late reply, a second cancel) finds no wait and changes nothing.
  */
 
 /** How a wait ends when nothing answers it. Each error is built when it happens, so it may do bookkeeping. */
-export interface WaitOptions {
-  /** After `ms` on the clock, reject with `error()`. None: only a match or a cancel ends the wait. */
-  deadline?: { ms: number; error: () => unknown };
+export interface WaitOptions<P> {
+  /**
+   * After `ms` on the clock, reject with `error()`, or resolve with `value()`. None: only a match or a cancel
+   * ends the wait.
+   */
+  deadline?: { ms: number; error: () => unknown } | { ms: number; value: () => P };
   /** When `signal` aborts, reject with `error()`, at once if it already has. */
   cancel?: { signal: AbortSignal | undefined; error: () => unknown };
 }
@@ -47,7 +51,7 @@ export class Waitress<P, M = undefined> {
   }
 
   /** Registers a wait (before the request it waits for is written). */
-  wait(matcher: M, options: WaitOptions = {}): Wait<P, M> {
+  wait(matcher: M, options: WaitOptions<P> = {}): Wait<P, M> {
     let settle!: { resolve: (payload: P) => void; reject: (error: unknown) => void };
     const promise = new Promise<P>((resolve, reject) => {
       settle = { resolve, reject };
@@ -82,7 +86,9 @@ export class Waitress<P, M = undefined> {
     cancel?.signal?.addEventListener("abort", onAbort);
     if (deadline) {
       timer = this.clock.setTimeout(() => {
-        if (!over) wait.reject(deadline.error());
+        if (over) return;
+        if ("error" in deadline) wait.reject(deadline.error());
+        else wait.resolve(deadline.value());
       }, deadline.ms);
     }
     return wait;
@@ -101,4 +107,15 @@ export class Waitress<P, M = undefined> {
     for (const w of ended) w.reject(error);
     return ended.map((w) => w.matcher);
   }
+}
+
+/** `promise`'s outcome, or the deadline's if it has not settled `ms` after the call (an answer that is a promise). */
+export function withDeadline<T>(
+  clock: Clock,
+  promise: Promise<T>,
+  deadline: NonNullable<WaitOptions<T>["deadline"]>,
+): Promise<T> {
+  const wait = new Waitress<T>(clock).wait(undefined, { deadline });
+  promise.then(wait.resolve, wait.reject);
+  return wait.promise;
 }

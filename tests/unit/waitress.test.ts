@@ -1,6 +1,6 @@
 import { describe, expect, it } from "vitest";
 import { VirtualClock } from "../../src/shared/clock.ts";
-import { Waitress } from "../../src/shared/waitress.ts";
+import { Waitress, withDeadline } from "../../src/shared/waitress.ts";
 
 /** Issue 31 item 5: the one waiting primitive (src/shared/waitress.ts), on a virtual clock. */
 
@@ -129,5 +129,40 @@ describe("Waitress", () => {
     expect(anything.pending).toHaveLength(1);
     expect(anything.resolve(3)).toBe(true);
     await expect(wait.promise).resolves.toBe(3);
+  });
+});
+
+describe("a deadline that ends the wait empty-handed", () => {
+  it("resolves with the caller's value at the deadline", async () => {
+    const clock = new VirtualClock();
+    const wait = new Waitress<string>(clock).wait(undefined, { deadline: { ms: 50, value: () => "none" } });
+    await clock.advance(50);
+    await expect(wait.promise).resolves.toBe("none");
+  });
+});
+
+describe("withDeadline", () => {
+  it("passes on the promise's outcome when it settles first, and clears the timer", async () => {
+    const clock = new VirtualClock();
+    const error = () => new Error("late");
+    await expect(withDeadline(clock, Promise.resolve(1), { ms: 10, error })).resolves.toBe(1);
+    await expect(withDeadline(clock, Promise.reject(new Error("no")), { ms: 10, error })).rejects.toThrow(
+      "no",
+    );
+    expect(clock.pending).toBe(0);
+  });
+
+  it("ends with the deadline's error when the promise is slower, and ignores its later outcome", async () => {
+    const clock = new VirtualClock();
+    let settle!: (n: number) => void;
+    const slow = new Promise<number>((r) => {
+      settle = r;
+    });
+    const outcome = withDeadline(clock, slow, { ms: 10, error: () => new Error("late") }).catch(
+      (e: unknown) => e,
+    );
+    await clock.advance(10);
+    settle(1);
+    expect(await outcome).toEqual(new Error("late"));
   });
 });
