@@ -22,7 +22,7 @@ export interface IssueWords {
 
 /**
  * What is wrong, in `words.locale`: the outcome catalogue's sentence with the file's facts (the panel's own,
- * `rbmIssueText`), the protocol's English sentence in brackets after it with `--log`. An issue the catalogue
+ * `rbmIssueWords`), the protocol's English sentence in brackets after it with `--log`. An issue the catalogue
  * cannot word (a code it does not know, or one without its facts) says so in general, then the English.
  */
 export function issueText(issue: Pick<RbmIssue, "code" | "message" | "values">, words: IssueWords): string {

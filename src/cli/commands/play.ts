@@ -38,10 +38,7 @@ const OPTIONS = {
   yes: { type: "boolean", short: "y" },
 } as const;
 
-/** Said before a real robot moves (docs/ui.md: moving actions ask once and say what will happen). */
-export const MOVE_WARNING = translator(cliMessages, "en")("cli.play.moveWarning");
-
-/** The move warning in `locale`. */
+/** The move warning in `locale`: said before a real robot moves (docs/ui.md: moving actions ask once). */
 function moveWarning(locale: Locale): string {
   return translator(cliMessages, locale)("cli.play.moveWarning");
 }

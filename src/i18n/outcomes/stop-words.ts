@@ -33,11 +33,6 @@ export function stopFoundText(found: StopFound, locale: Locale): string {
   }
 }
 
-/** Whether the outcome is less than a confirmed end (said as a warning). */
-export function stopFoundUnsure(found: StopFound): boolean {
-  return found.kind === "unconfirmed" || found.kind === "no-answer";
-}
-
 /** "The robot is busy playing a motion (started with the remote or another program); it answers when …" */
 export function busyNowText(locale: Locale): string {
   return t(locale)("outcome.busyNow");

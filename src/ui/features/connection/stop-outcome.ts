@@ -58,10 +58,6 @@ interface Worded {
  * What Stop found when the panel had started nothing (docs/protocol.md §3.6): the outcome catalogue's words
  * (src/i18n/outcomes/stop-messages.ts), which `rbc stop` says too.
  */
-export function foundSaid(found: StopFound): Said[] {
-  return foundWorded(found).said;
-}
-
 function foundWorded(found: StopFound): Worded {
   const seconds = (ms: number) => inEveryLanguage((l) => formatSeconds(ms / 1000, l));
   switch (found.kind) {

@@ -147,10 +147,6 @@ export function removeMotionFile(ctx: AppContext, id: number): void {
   });
 }
 
-export function selectMotionFile(ctx: AppContext, id: number): void {
-  patchMotionFiles(ctx.store, { selected: id });
-}
-
 export function setDragging(ctx: AppContext, dragging: boolean): void {
   if ((ctx.store.get().motionFiles?.dragging ?? false) !== dragging)
     patchMotionFiles(ctx.store, { dragging });

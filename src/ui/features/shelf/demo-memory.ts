@@ -18,18 +18,6 @@ export interface DemoMemoryStorage {
   delete(key: string): Promise<void>;
 }
 
-export function memoryDemoStorage(map: Map<string, unknown> = new Map()): DemoMemoryStorage {
-  return {
-    get: async (key) => map.get(key),
-    set: async (key, memory) => {
-      map.set(key, memory);
-    },
-    delete: async (key) => {
-      map.delete(key);
-    },
-  };
-}
-
 export const DEMO_DATABASE = "rbc-panel-demo";
 export const DEMO_STORE = "robots";
 
