@@ -21,7 +21,7 @@ import {
 } from "../protocol/bootloader.ts";
 import { COMMANDS } from "../protocol/commands.ts";
 import { type IntelHexImage, parseIntelHex } from "../protocol/intel-hex.ts";
-import { encodePacket, type Packet } from "../protocol/packet.ts";
+import { encodePacket } from "../protocol/packet.ts";
 import { PacketParser } from "../protocol/packet-parser.ts";
 import { type Clock, realClock, sleep, type TimerId } from "../shared/clock.ts";
 import { Waitress } from "../shared/waitress.ts";
@@ -228,24 +228,25 @@ export function transportFirmwareIo(
       transport.onStatus((e) => {
         if (e.status === "lost") listener();
       }),
-    readFirmwareVersion: async () => {
+    readFirmwareVersion: () => {
       const spec = COMMANDS.readFirmwareVersion;
       const waitMs = options.answerMs ?? 400;
       const parser = new PacketParser();
-      const replies = new Waitress<Packet, number>(clock, (p, type) => p.type === type);
-      const reply = replies.wait(spec.type, {
+      const reply = new Waitress<ReturnType<typeof spec.decode>>(clock).wait(undefined, {
         deadline: { ms: waitMs, error: () => new RbcTimeoutError(spec.name, waitMs) },
       });
       const off = transport.onData((bytes) => {
-        for (const packet of parser.push(bytes)) if (replies.resolve(packet)) return;
+        const packet = parser.push(bytes).find((p) => p.type === spec.type);
+        if (!packet) return;
+        try {
+          reply.resolve(spec.decode(packet.contents));
+        } catch (e) {
+          reply.reject(new RbcBadReplyError(e instanceof Error ? e.message : String(e), e));
+        }
       });
+      reply.promise.then(off, off);
       write(encodePacket(spec.type, spec.request(undefined))).catch(reply.reject);
-      const packet = await reply.promise.finally(off);
-      try {
-        return spec.decode(packet.contents);
-      } catch (e) {
-        throw new RbcBadReplyError(e instanceof Error ? e.message : String(e), e);
-      }
+      return reply.promise;
     },
   };
 }

@@ -2,7 +2,7 @@ import { BASIC_POSTURE_MOTION } from "../protocol/catalog.ts";
 import { COMMANDS } from "../protocol/commands.ts";
 import { encodePacket } from "../protocol/packet.ts";
 import type { Clock } from "../shared/clock.ts";
-import { withDeadline } from "../shared/waitress.ts";
+import { Waitress } from "../shared/waitress.ts";
 import type { Stop7Sender } from "./activity.ts";
 import type { ClientCore } from "./client-core.ts";
 
@@ -110,6 +110,10 @@ export function awaitPostureAfterEnd(core: ClientCore): void {
 
 /** `p`'s value, or undefined when it rejects or `ms` passes first (undefined `ms`: no limit). */
 function within<T>(clock: Clock, p: Promise<T>, ms: number | undefined): Promise<T | undefined> {
-  const settled = p.catch(() => undefined);
-  return ms === undefined ? settled : withDeadline(clock, settled, { ms, value: () => undefined });
+  const wait = new Waitress<T | undefined>(clock).wait(
+    undefined,
+    ms === undefined ? {} : { deadline: { ms, value: () => undefined } },
+  );
+  p.then(wait.resolve, () => wait.resolve(undefined));
+  return wait.promise;
 }

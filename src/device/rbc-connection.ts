@@ -52,6 +52,8 @@ interface ReplyMatcher {
   type: number;
   /** Replies of the right type that this returns false for are ignored (e.g. a stopped motion's reply). */
   accept?: (p: Packet) => boolean;
+  /** A quick request's write: its reply measures the link's round trip from then. */
+  roundTripFrom?: number;
 }
 
 export const SUBSCRIPTIONS = {
@@ -392,9 +394,10 @@ export class RbcConnection {
     // Only a quick reply measures the link: the others wait for the robot (a motion, a sound) as well.
     const quick = COMMAND_BY_TYPE.get(type)?.timeout === "quick";
     if (signal?.aborted) return Promise.reject(new RbcCancelledError());
-    let sentAt: number | undefined;
+    const sentAt = send ? this.clock.now() : undefined;
+    const roundTripFrom = quick ? sentAt : undefined;
     const wait = this.replies.wait(
-      { type, accept }, // registered before the write
+      { type, accept, roundTripFrom }, // registered before the write
       {
         cancel: {
           signal,
@@ -419,16 +422,8 @@ export class RbcConnection {
         },
       },
     );
-    if (send) {
-      sentAt = this.clock.now();
-      this.writePacket(encodePacket(type, contents), type).catch((e) => wait.reject(e));
-    }
-    return wait.promise.then((p) => {
-      // Request written → its own reply complete. The fences guarantee that a reply of this type is this
-      // request's (no late one is outstanding), so the sample is never a retried or late reply's.
-      if (quick && sentAt !== undefined) this.roundTrip.sample(this.clock.now() - sentAt);
-      return p;
-    });
+    if (send) this.writePacket(encodePacket(type, contents), type).catch((e) => wait.reject(e));
+    return wait.promise;
   }
 
   /**
@@ -563,7 +558,14 @@ export class RbcConnection {
     }
     // A late main-loop reply pays its debt before any waiter sees it (docs/protocol.md §3.6: matched by count).
     if (this.payOwed(packet)) return;
-    if (this.replies.resolve(packet)) return;
+    const answered = this.replies.resolve(packet);
+    if (answered) {
+      // Request written → its own reply complete. The fences guarantee that a reply of this type is this
+      // request's (no late one is outstanding), so the sample is never a retried or late reply's.
+      const from = answered.matcher.roundTripFrom;
+      if (from !== undefined) this.roundTrip.sample(this.clock.now() - from);
+      return;
+    }
     // Anything else is a late, unexpected or side-channel reply: logged above, offered to `unsolicited`, and
     // unless that claims it, counted and its type fenced before its next request (a repeat may follow).
     if (this.unsolicited?.(packet) === true) return;

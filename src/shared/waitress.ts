@@ -94,11 +94,11 @@ export class Waitress<P, M = undefined> {
     return wait;
   }
 
-  /** Ends the oldest wait whose matcher accepts `payload` with it; false when none does. */
-  resolve(payload: P): boolean {
+  /** Ends the oldest wait whose matcher accepts `payload` with it, and returns that wait; undefined when none does. */
+  resolve(payload: P): Wait<P, M> | undefined {
     const wait = this.waits.find((w) => this.accepts(payload, w.matcher));
     wait?.resolve(payload);
-    return wait !== undefined;
+    return wait;
   }
 
   /** Ends every wait (or those `which` picks) with `error`; returns their matchers. */

@@ -20,8 +20,8 @@ describe("Waitress", () => {
   it("resolves a wait with the payload its matcher accepts, and ignores others", async () => {
     const { replies, timeout } = waitress();
     const wait = replies.wait({ type: 1 }, { deadline: timeout("one") });
-    expect(replies.resolve({ type: 2, value: 9 })).toBe(false);
-    expect(replies.resolve({ type: 1, value: 5 })).toBe(true);
+    expect(replies.resolve({ type: 2, value: 9 })).toBeUndefined();
+    expect(replies.resolve({ type: 1, value: 5 })).toBe(wait);
     await expect(wait.promise).resolves.toEqual({ type: 1, value: 5 });
     expect(replies.pending).toEqual([]);
   });
@@ -35,7 +35,7 @@ describe("Waitress", () => {
     await clock.advance(1);
     expect(await outcome).toEqual(new Error("one timed out"));
     // The reply came late: no wait takes it.
-    expect(replies.resolve({ type: 1, value: 5 })).toBe(false);
+    expect(replies.resolve({ type: 1, value: 5 })).toBeUndefined();
     expect(clock.pending).toBe(0);
   });
 
@@ -63,7 +63,7 @@ describe("Waitress", () => {
     stop.abort();
     expect(await outcome).toEqual(new Error("stopped"));
     expect(clock.pending).toBe(0);
-    expect(replies.resolve({ type: 1, value: 1 })).toBe(false);
+    expect(replies.resolve({ type: 1, value: 1 })).toBeUndefined();
   });
 
   it("rejects at once when its signal has already aborted, and is never pending", async () => {
@@ -127,7 +127,7 @@ describe("Waitress", () => {
     const wait = anything.wait(undefined);
     await clock.advance(1_000_000);
     expect(anything.pending).toHaveLength(1);
-    expect(anything.resolve(3)).toBe(true);
+    expect(anything.resolve(3)).toBe(wait);
     await expect(wait.promise).resolves.toBe(3);
   });
 });
