@@ -238,23 +238,6 @@ export function selectScene(s: EditorState, k: number): EditorState {
   return scene === s.scene ? s : { ...s, scene, problems: {} };
 }
 
-/** The tab list's keys (WAI-ARIA tabs, automatic activation): the next, previous, first or last tab. */
-export function editorTabAfterKey(current: EditorTab, key: string): EditorTab | undefined {
-  const i = EDITOR_TABS.findIndex((t) => t.id === current);
-  const n = EDITOR_TABS.length;
-  const to =
-    key === "ArrowRight"
-      ? (i + 1) % n
-      : key === "ArrowLeft"
-        ? (i - 1 + n) % n
-        : key === "Home"
-          ? 0
-          : key === "End"
-            ? n - 1
-            : undefined;
-  return to === undefined ? undefined : EDITOR_TABS[to]?.id;
-}
-
 /** Turns continuity off (or on again) at boundary `b` (between scene b−1 and scene b). */
 export function setDetached(s: EditorState, b: number, detached: boolean): EditorState {
   const has = s.detached.includes(b);

@@ -22,23 +22,6 @@ export function showMotionsTab(ctx: AppContext, tab: MotionsTab, focus = false):
   if (focus) focusSoon(tabId(tab));
 }
 
-/** The tab list's arrow keys (WAI-ARIA tabs pattern, automatic activation): the next, previous, first or last tab. */
-export function tabAfterKey(current: MotionsTab, key: string): MotionsTab | undefined {
-  const i = MOTIONS_TABS.findIndex((t) => t.id === current);
-  const n = MOTIONS_TABS.length;
-  const to =
-    key === "ArrowRight"
-      ? (i + 1) % n
-      : key === "ArrowLeft"
-        ? (i - 1 + n) % n
-        : key === "Home"
-          ? 0
-          : key === "End"
-            ? n - 1
-            : undefined;
-  return to === undefined ? undefined : MOTIONS_TABS[to]?.id;
-}
-
 /** "Show scenes and chart" / "Hide scenes and chart" on a file card: one file's scenes are shown at a time. */
 export function toggleScenes(ctx: AppContext, id: number): void {
   const files = motionFilesOf(ctx.store.get());
