@@ -14,7 +14,7 @@ import {
   redo,
   undo,
 } from "../../../motion/index.ts";
-import type { AppState, Notice } from "../../app-state.ts";
+import type { Notice } from "../../notices.ts";
 import { type Said, said } from "../../said.ts";
 import type { Store } from "../../store.ts";
 import type { BrokenDraft, DraftSummary } from "./drafts.ts";
@@ -98,12 +98,17 @@ export function initialEditor(): EditorState {
   return { scene: 0, problems: {}, detached: [] };
 }
 
-export function editorOf(s: AppState): EditorState {
+/** The part of the app state this feature owns (src/ui/app-state.ts composes the parts). */
+export interface EditorSlice {
+  editor?: EditorState;
+}
+
+export function editorOf(s: EditorSlice): EditorState {
   return s.editor ?? initialEditor();
 }
 
 export function patchEditor(
-  store: Store<AppState>,
+  store: Store<EditorSlice>,
   p: Partial<EditorState> | ((x: EditorState) => Partial<EditorState>),
 ): void {
   store.update((s) => {

@@ -9,13 +9,13 @@ import {
   MOTION_AREA_BYTES,
 } from "../../../../protocol/catalog.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
-import { demoResetOffer } from "../../shelf/demo-reset.ts";
-import { shelfList } from "../../shelf/shelf-list.ts";
+import { demoResetOffer } from "../../shelf/index.ts";
 import { type MotionsTranslator, motionsMessages } from "../messages.ts";
 import { downloadedOffers } from "../run-actions.ts";
 import type { SlotBook } from "../slot-book.ts";
 import { motionsOf } from "../state.ts";
 import { openActionFile, requestUpload, setResetFirst, uploadBlocked } from "../upload-actions.ts";
+import { shelfList } from "./shelf-list.ts";
 import { uploadInPlace } from "./upload-in-place.ts";
 
 /** The Memory tab: what this connection uploaded, how the memory is counted, and action files. */

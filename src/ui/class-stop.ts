@@ -1,5 +1,5 @@
-import type { AppContext } from "../../context.ts";
-import { type Controller, controllerKey } from "../../scope.ts";
+import type { AppContext } from "./context.ts";
+import { type Controller, controllerKey } from "./scope.ts";
 
 /**
  * The top bar's Stop reaches the Class view's robots through this file, which the first page load carries (so

@@ -1,16 +1,15 @@
 import { html, nothing, type TemplateResult } from "lit-html";
-import type { Locale } from "../../../i18n/locale.ts";
-import { translator } from "../../../i18n/translate.ts";
-import { formatSeconds } from "../../../i18n/units.ts";
-import type { Notice } from "../../app-state.ts";
-import type { AppContext } from "../../context.ts";
-import { notice } from "../../shell/notice.ts";
-import type { ViewContext } from "../../shell/view-types.ts";
-import type { OfferedMotion } from "../motions/run-actions.ts";
-import { robotBusyReason } from "../motions/state.ts";
-import { pressRun, showMotionsTab } from "../motions/view-actions.ts";
-import { type ShelfTranslator, shelfMessages } from "./messages.ts";
-import { remoteKeyWords, storedWords } from "./shelf-words.ts";
+import type { Locale } from "../../../../i18n/locale.ts";
+import { translator } from "../../../../i18n/translate.ts";
+import { formatSeconds } from "../../../../i18n/units.ts";
+import type { Notice } from "../../../app-state.ts";
+import type { AppContext } from "../../../context.ts";
+import { notice } from "../../../shell/notice.ts";
+import type { ViewContext } from "../../../shell/view-types.ts";
+import { remoteKeyWords, type ShelfTranslator, shelfMessages, storedWords } from "../../shelf/index.ts";
+import type { OfferedMotion } from "../run-actions.ts";
+import { robotBusyReason } from "../state.ts";
+import { pressRun, showMotionsTab } from "../view-actions.ts";
 
 /**
  * The shelf in the Motions view (issue 23 item 2): each downloaded motion the panel knows, by the one number
@@ -75,10 +74,10 @@ function entry(ctx: ViewContext, t: ShelfTranslator, offer: OfferedMotion): Temp
 export function shelfList(ctx: ViewContext, offers: readonly OfferedMotion[]): TemplateResult {
   const t = translator(shelfMessages, ctx.state.locale);
   // The numbers this browser has on record for the robot (tests wait for a record to be kept).
-  const kept = (ctx.state.motions?.shelf?.slots ?? []).map((s) => s.motionNumber).join(" ");
+  const kept = (ctx.state.shelf?.slots ?? []).map((s) => s.motionNumber).join(" ");
   return html`
     <p class="muted small" data-testid="shelf-intro" data-kept=${kept}>${t("shelf.intro")}</p>
-    ${shelfDropNotice(ctx.state.motions?.shelf?.notice, t.locale)}
+    ${shelfDropNotice(ctx.state.shelf?.notice, t.locale)}
     ${
       offers.length === 0
         ? html`<p class="muted small" data-testid="shelf-none">${t("shelf.none")}</p>`

@@ -1,11 +1,11 @@
-import type { StopActivityResult, StopFound } from "../../../device/index.ts";
-import type { ParamArgs } from "../../../i18n/catalogue.ts";
-import type { Locale } from "../../../i18n/locale.ts";
-import { noReplyCauseText } from "../../../i18n/outcomes/run-words.ts";
-import { stopOutcomeMessages } from "../../../i18n/outcomes/stop-messages.ts";
-import { formatMilliseconds, formatSeconds } from "../../../i18n/units.ts";
-import { type AppState, type Notice, noticeOf } from "../../app-state.ts";
-import { inEveryLanguage, type LocalText, type Said, said, saidText } from "../../said.ts";
+import type { StopActivityResult, StopFound } from "../device/index.ts";
+import type { ParamArgs } from "../i18n/catalogue.ts";
+import type { Locale } from "../i18n/locale.ts";
+import { noReplyCauseText } from "../i18n/outcomes/run-words.ts";
+import { stopOutcomeMessages } from "../i18n/outcomes/stop-messages.ts";
+import { formatMilliseconds, formatSeconds } from "../i18n/units.ts";
+import { type AppState, type Notice, noticeOf } from "./app-state.ts";
+import { inEveryLanguage, type LocalText, type Said, said, saidText } from "./said.ts";
 import { stopMessages } from "./stop-messages.ts";
 
 /**

@@ -1,0 +1,1 @@
+export type { PacketLog } from "./packet-log.ts";

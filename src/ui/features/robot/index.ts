@@ -1,0 +1,1 @@
+export { refreshDeviceInfo } from "./actions.ts";

@@ -1,0 +1,1 @@
+export { type BackupStorage, idbBackupStorage, keptBackups } from "./backup-store.ts";
