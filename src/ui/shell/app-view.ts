@@ -25,7 +25,7 @@ function mainContent(ctx: ViewContext, loader: ViewLoader): TemplateResult {
   const view = loader.get(route);
   if (!view) return html`<p class="muted" aria-busy="true">${t("shell.loading")}</p>`;
   if (view.needsRobot && ctx.state.connection.phase !== "connected") {
-    return connectPlace(ctx);
+    return connectPlace(ctx, t("shell.loading"));
   }
   return view.render(ctx);
 }

@@ -13,6 +13,7 @@ import {
   zeroRange,
 } from "../../../protocol/zeros.ts";
 import { formatDateTime, formatDelta } from "../../format.ts";
+import { shellMessages } from "../../shell/messages.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
 import { connectPlace } from "../connection/index.ts";
@@ -242,7 +243,8 @@ function sourceText(t: ZerosTranslator, source: ZerosSource): string {
 function render(ctx: ViewContext): TemplateResult {
   if (ctx.state.connection.phase !== "connected") {
     // Not a robot view while disconnected: what a lost link left during trim live, then the connect card.
-    return html`${lostTrimPanel(ctx)}${connectPlace(ctx)}`;
+    const loading = translator(shellMessages, ctx.state.locale)("shell.loading");
+    return html`${lostTrimPanel(ctx)}${connectPlace(ctx, loading)}`;
   }
   return renderConnected(ctx);
 }
