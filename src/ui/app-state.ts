@@ -41,8 +41,9 @@ export {
 
 /**
  * Everything the panel shows, in one object (see store.ts). Views render from it; actions, controllers and the
- * session update it. Each feature (src/ui/features/<name>/) owns its part: its type, its initial value and
- * how it is reset. The features whose code loads with their view (motions, sensors, servos) keep their part
+ * session update it. Each feature (src/ui/features/<name>/) owns its part, its slice: its type, its initial value,
+ * its selector and patch, in the feature's state file, which never imports this file back; this file composes
+ * the slices (docs/architecture.md, "Features"). The features whose code loads with their view (motions, sensors, servos) keep their part
  * optional: undefined means "initial", filled in by the feature's own selector (`motionsOf`, `sensorsOf`,
  * `servosOf`), so the first page load never carries their code.
  */

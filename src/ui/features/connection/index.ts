@@ -1,3 +1,9 @@
+/**
+ * The connection feature as the rest of the panel uses it (docs/architecture.md, "Features"): connect and
+ * disconnect, Stop and Limp, the connect card and the top bar. The shell and the session import it, so the first
+ * page load carries it: it re-exports only modules the first load has anyway (the no-Web-Serial card and Stop's
+ * sentences load lazily).
+ */
 export {
   busyChanged,
   disconnect,

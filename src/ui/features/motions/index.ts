@@ -1,3 +1,8 @@
+/**
+ * The Motions feature as the rest of the panel uses it (docs/architecture.md, "Features"): the Editor's
+ * upload and run (with the Motions view's parts it shows), a motion file's checks and issue words (the Class
+ * view's pack), the slot book. Its view loads lazily (shell/registry.ts), never through this file.
+ */
 export { checkEntry, inspectMotionText } from "./files.ts";
 export { groupWarnings, type WarningGroup, weightWord } from "./issue-groups.ts";
 export { issueWords } from "./issue-text.ts";

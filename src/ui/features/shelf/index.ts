@@ -1,3 +1,7 @@
+/**
+ * The robot's shelf as the rest of the panel uses it (docs/architecture.md, "Features"): load, check and record
+ * what this browser uploaded to a robot, its words, and the demo robot's reset. It imports no other feature.
+ */
 export { demoResetOffer } from "./demo-reset.ts";
 export { type ShelfTranslator, shelfMessages } from "./messages.ts";
 export {
