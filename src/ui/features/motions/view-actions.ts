@@ -1,8 +1,10 @@
 import type { AppContext } from "../../context.ts";
 import { focusSoon } from "../../focus.ts";
+import type { ViewContext } from "../../shell/view-types.ts";
+import type { RunNow } from "../shelf/index.ts";
 import type { MotionsKey } from "./messages.ts";
 import { requestRun } from "./run-actions.ts";
-import { type MotionsTab, motionFilesOf, patchMotionFiles, patchMotions } from "./state.ts";
+import { type MotionsTab, motionFilesOf, patchMotionFiles, patchMotions, robotBusyReason } from "./state.ts";
 
 /** What the Motions view's own controls do: choose a tab, show or hide a file's scenes, press a Run button. */
 
@@ -43,4 +45,15 @@ export function toggleLiveRobot(ctx: AppContext): void {
 export function pressRun(ctx: AppContext, number: number): void {
   patchMotions(ctx.store, { runFrom: number });
   requestRun(ctx, number);
+}
+
+/** "Run now" beside a motion on the shelf: to the Run tab, where the run's confirmation, progress and result show. */
+export function runNow(ctx: ViewContext): RunNow {
+  return {
+    busy: robotBusyReason(ctx.state) !== undefined,
+    run: (number) => {
+      showMotionsTab(ctx, "run");
+      pressRun(ctx, number);
+    },
+  };
 }

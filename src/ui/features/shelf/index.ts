@@ -3,7 +3,7 @@
  * what this browser uploaded to a robot, its words, and the demo robot's reset. It imports no other feature.
  */
 export { demoResetOffer } from "./demo-reset.ts";
-export { type ShelfTranslator, shelfMessages } from "./messages.ts";
+export { shelfMessages } from "./messages.ts";
 export {
   checkAgainst,
   loadShelf,
@@ -12,5 +12,6 @@ export {
   type StoredUpload,
   shelfKeyOf,
 } from "./shelf-actions.ts";
+export { type RunNow, runNowButton, shelfDropNotice, shelfList, shelfRecordedNote } from "./shelf-list.ts";
 export { panelShelfKey, type ShelfStorage } from "./shelf-store.ts";
-export { remoteKeyWords, storedSentence, storedWords } from "./shelf-words.ts";
+export { remoteKeyWords, storedSentence } from "./shelf-words.ts";

@@ -10,7 +10,7 @@ import { liveNotice } from "../../../shell/notice.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
 import { connectionMessages, stopActivity } from "../../connection/index.ts";
 import { servosOf } from "../../servos/index.ts";
-import { remoteKeyWords } from "../../shelf/index.ts";
+import { remoteKeyWords, shelfDropNotice, shelfRecordedNote } from "../../shelf/index.ts";
 import { type MotionsTranslator, motionsMessages } from "../messages.ts";
 import { formatSeconds } from "../plot-data.ts";
 import {
@@ -28,7 +28,6 @@ import { DOWNLOAD_MOTION_NUMBERS } from "../slot-book.ts";
 import { motionsOf, type RunningMotion, robotBusyReason } from "../state.ts";
 import { pressRun, toggleLiveRobot } from "../view-actions.ts";
 import { keepInView } from "./keep-in-view.ts";
-import { shelfDropNotice, shelfRecordedNote } from "./shelf-list.ts";
 
 /**
  * Run built-in and downloaded motions; play sounds. A run's confirmation, progress and result show right under
