@@ -7,7 +7,7 @@ import { initialState, runningWords } from "./app-state.ts";
 import { answerBusyQueries, busySentence } from "./busy.ts";
 import type { AppContext } from "./context.ts";
 import type { DemoRobotOptions } from "./demo-robot.ts";
-import { refreshKnownPorts, stopActivity } from "./features/connection/actions.ts";
+import { refreshKnownPorts, stopActivity } from "./features/connection/index.ts";
 import { routeFromHash, ViewLoader } from "./router.ts";
 import { webSerial } from "./serial-ports.ts";
 import { Session } from "./session.ts";

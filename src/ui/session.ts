@@ -12,16 +12,18 @@ import {
 } from "./app-state.ts";
 import type { AppContext } from "./context.ts";
 import type { DemoRobotOptions, KeptDemoRobot } from "./demo-robot.ts";
-import { busyChanged, probeAfterConnect, refreshKnownPorts } from "./features/connection/actions.ts";
 import {
+  busyChanged,
   type ConnectionState,
   connectingTo,
   mirrored,
   NOTHING_RUNNING,
+  probeAfterConnect,
   type RobotLabel,
-} from "./features/connection/state.ts";
-import type { PacketLog } from "./features/log/packet-log.ts";
-import type { ShelfStorage } from "./features/shelf/shelf-store.ts";
+  refreshKnownPorts,
+} from "./features/connection/index.ts";
+import type { PacketLog } from "./features/log/index.ts";
+import type { ShelfStorage } from "./features/shelf/index.ts";
 import { uiMessages } from "./messages.ts";
 import { inEveryLanguage, said } from "./said.ts";
 import { Scope } from "./scope.ts";

@@ -1,13 +1,14 @@
 import { noticeOf } from "../../app-state.ts";
+import { CLASS_SLOT } from "../../class-stop.ts";
 import type { AppContext } from "../../context.ts";
 import { downloadTextFile } from "../../download-file.ts";
 import { focusSoon } from "../../focus.ts";
 import { said } from "../../said.ts";
 import { choosePort, describePort, webSerial } from "../../serial-ports.ts";
 import { escapeTakenElsewhere } from "../../shell/escape.ts";
-import { refreshKnownPorts } from "../connection/actions.ts";
-import { recordOnRobotShelf } from "../shelf/shelf-actions.ts";
-import { idbBackupStorage } from "../zeros/backup-store.ts";
+import { refreshKnownPorts } from "../connection/index.ts";
+import { recordOnRobotShelf } from "../shelf/index.ts";
+import { idbBackupStorage } from "../zeros/index.ts";
 import { ClassRoom } from "./class-room.ts";
 import { testClock } from "./demo-robots.ts";
 import { classMessages } from "./messages.ts";
@@ -22,7 +23,6 @@ import {
   serializePack,
 } from "./pack-file.ts";
 import { type ClassState, chosenRobots, classOf, type PackFile, patchClass, patchRobot } from "./state.ts";
-import { CLASS_SLOT } from "./stop-all.ts";
 
 /** The Class view's actions: robots in and out, names, the pack, and what is done to all robots. */
 

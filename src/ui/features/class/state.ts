@@ -1,4 +1,4 @@
-import type { AppState, Notice } from "../../app-state.ts";
+import type { Notice } from "../../notices.ts";
 import type { Store } from "../../store.ts";
 
 /**
@@ -100,12 +100,17 @@ export function initialClass(): ClassState {
   };
 }
 
-export function classOf(s: AppState): ClassState {
+/** The part of the app state this feature owns (src/ui/app-state.ts composes the parts). */
+export interface ClassSlice {
+  classRoom?: ClassState;
+}
+
+export function classOf(s: ClassSlice): ClassState {
   return s.classRoom ?? initialClass();
 }
 
 export function patchClass(
-  store: Store<AppState>,
+  store: Store<ClassSlice>,
   patch: Partial<ClassState> | ((c: ClassState) => Partial<ClassState>),
 ): void {
   store.update((s) => {
@@ -116,7 +121,7 @@ export function patchClass(
 
 /** Changes one robot's row (nothing when it was removed meanwhile). */
 export function patchRobot(
-  store: Store<AppState>,
+  store: Store<ClassSlice>,
   id: number,
   patch: Partial<ClassRobot> | ((r: ClassRobot) => Partial<ClassRobot>),
 ): void {

@@ -1,6 +1,6 @@
 import type { RunReport } from "../../../device/run-outcome.ts";
 import { COMMANDS } from "../../../protocol/commands.ts";
-import { stopOutcome } from "../connection/stop-outcome.ts";
+import { stopOutcome } from "../../stop-outcome.ts";
 import type { ClassRoom, RobotLink } from "./class-room.ts";
 import { failedNotice, limpResultNotice, runResultNotice } from "./result-words.ts";
 import { patchClass, patchRobot } from "./state.ts";

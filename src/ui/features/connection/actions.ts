@@ -1,10 +1,10 @@
 import { type AppState, noticeOf } from "../../app-state.ts";
+import { stopClassRobots } from "../../class-stop.ts";
 import type { AppContext } from "../../context.ts";
 import { focusSoon } from "../../focus.ts";
 import { said } from "../../said.ts";
 import { forgetPort, grantedPorts, webSerial } from "../../serial-ports.ts";
 import type { Store } from "../../store.ts";
-import { stopClassRobots } from "../class/stop-all.ts";
 import { connectionMessages } from "./messages.ts";
 import type { ConnectionState, RobotLabel } from "./state.ts";
 
@@ -16,7 +16,7 @@ import type { ConnectionState, RobotLabel } from "./state.ts";
  */
 const failureWords = () => import("../../failure-words.ts");
 /** Stop's and Limp's sentences load with the first press (or a robot found busy), not with the first page. */
-const stopWords = () => import("./stop-outcome.ts");
+const stopWords = () => import("../../stop-outcome.ts");
 
 function setConnection(store: Store<AppState>, patch: Partial<ConnectionState>): void {
   store.update((s) => ({ connection: { ...s.connection, ...patch } }));

@@ -1,5 +1,5 @@
 import type { ClientMode, ClientState, LinkKind, SubscriptionKind } from "../../../device/index.ts";
-import type { Notice, RunningLabel } from "../../app-state.ts";
+import type { Notice, RunningLabel } from "../../notices.ts";
 import type { PortInfo } from "../../serial-ports.ts";
 
 /** The connection's part of the app state: which robot, in which phase, and what its client reports. */

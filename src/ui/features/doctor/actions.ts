@@ -2,7 +2,7 @@ import type { ScanResult } from "../../../device/servo-doctor/index.ts";
 import type { AppContext } from "../../context.ts";
 import { type Said, said } from "../../said.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
-import { stopActivity } from "../connection/actions.ts";
+import { stopActivity } from "../connection/index.ts";
 import { doctorMessages } from "./messages.ts";
 import { ALL_SERVO_IDS, checkFixIds, HUNO_SERVO_IDS, suggestedFix } from "./model.ts";
 import { type DoctorFix, type DoctorState, doctorOf, patchDoctor } from "./state.ts";

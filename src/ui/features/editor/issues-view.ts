@@ -4,8 +4,7 @@ import { asRbm, type Motion } from "../../../motion/index.ts";
 import type { RbmIssue, RbmValidation } from "../../../protocol/rbm-validate.ts";
 import { formatCount } from "../../format.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
-import { groupWarnings, type WarningGroup, weightWord } from "../motions/issue-groups.ts";
-import { issueWords } from "../motions/issue-text.ts";
+import { groupWarnings, issueWords, type WarningGroup, weightWord } from "../motions/index.ts";
 import { chooseScene } from "./actions.ts";
 import { type EditorTranslator, editorMessages } from "./messages.ts";
 

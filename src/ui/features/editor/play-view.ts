@@ -1,12 +1,12 @@
 import "../../styles/editor-live.css";
 import { html, nothing, type TemplateResult } from "lit-html";
 import { live } from "lit-html/directives/live.js";
+import { jointName } from "../../../i18n/joint-names/joint-name.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { MotionError } from "../../../motion/index.ts";
 import { errorMessage } from "../../error-text.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
-import { jointName } from "../zeros/joints/joint-name.ts";
 import type { EditorHost } from "./host.ts";
 import { liveOf, type PlayChoice, type PlayRun, type PlayState, sceneNumber } from "./live-state.ts";
 import { type EditorTranslator, editorMessages } from "./messages.ts";

@@ -15,7 +15,7 @@ import { errorSaid } from "../../failure-notice.ts";
 import { focusSoon } from "../../focus.ts";
 import { said } from "../../said.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
-import { servosTaken, stopActivity } from "../connection/actions.ts";
+import { servosTaken, stopActivity } from "../connection/index.ts";
 import type { EditorHost } from "./host.ts";
 import { liveOf, type PlayChoice, type PlayProgress, patchPlay, patchTeachIn } from "./live-state.ts";
 import { editorMessages } from "./messages.ts";

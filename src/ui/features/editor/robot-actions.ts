@@ -10,10 +10,14 @@ import { translator } from "../../../i18n/translate.ts";
 import type { Motion } from "../../../motion/index.ts";
 import type { AppState } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
-import { motionsMessages } from "../motions/messages.ts";
-import { robotBusyReason, type UploadTarget } from "../motions/state.ts";
-import { requestUpload, startUpload } from "../motions/upload-actions.ts";
-import { pressRun } from "../motions/view-actions.ts";
+import {
+  motionsMessages,
+  pressRun,
+  requestUpload,
+  robotBusyReason,
+  startUpload,
+  type UploadTarget,
+} from "../motions/index.ts";
 import { liveOf } from "./live-state.ts";
 import { editorMessages } from "./messages.ts";
 import { editorUploadTarget, isEditorTarget } from "./robot-model.ts";

@@ -7,8 +7,7 @@
 
 import { remoteKeyWords } from "../../../device/shelf.ts";
 import { asRbm, type Motion, saveMotion } from "../../../motion/index.ts";
-import { type BookEntry, motionNumberOf, type SlotBook } from "../motions/slot-book.ts";
-import type { UploadTarget } from "../motions/state.ts";
+import { type BookEntry, motionNumberOf, type SlotBook, type UploadTarget } from "../motions/index.ts";
 import { motionFileName } from "./file-name.ts";
 import type { RobotCopy } from "./live-state.ts";
 import type { EditorTranslator } from "./messages.ts";

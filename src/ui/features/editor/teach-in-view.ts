@@ -1,12 +1,12 @@
 import "../../styles/editor-live.css";
 import { html, nothing, type TemplateResult } from "lit-html";
 import { live } from "lit-html/directives/live.js";
+import { jointName, sidesNote } from "../../../i18n/joint-names/joint-name.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { HUNO_SERVO_IDS } from "../../../protocol/servo-limits.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
-import { servoRange } from "../servos/state.ts";
-import { jointName, sidesNote } from "../zeros/joints/joint-name.ts";
+import { servoRange } from "../servos/index.ts";
 import type { EditorHost } from "./host.ts";
 import { liveOf, sceneNumber, type TeachInState, teachInOn } from "./live-state.ts";
 import { type EditorTranslator, editorMessages } from "./messages.ts";

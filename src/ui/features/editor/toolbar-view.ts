@@ -4,8 +4,7 @@ import { canRedo, canUndo, type Motion, redoLabel, undoLabel } from "../../../mo
 import { wordOf } from "../../said.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
-import { formatSeconds } from "../motions/plot-data.ts";
-import { restampOffer } from "../motions/restamp/restamp-offer.ts";
+import { formatSeconds, restampOffer } from "../motions/index.ts";
 import { redoNext, typeMotionName, undoLast } from "./actions.ts";
 import { newDocument, openDocumentFile, saveDocument, setEditorDragging } from "./document-actions.ts";
 import { motionFileName } from "./file-name.ts";

@@ -16,7 +16,7 @@ import type { AppContext } from "../../context.ts";
 import { errorNotice, errorSaid, technicalDetail } from "../../error-text.ts";
 import { focusSoon } from "../../focus.ts";
 import { inEveryLanguage, type LocalText, said } from "../../said.ts";
-import { remoteKeyWords } from "../shelf/shelf-words.ts";
+import { remoteKeyWords } from "../shelf/index.ts";
 import { type MotionRun, motionsController } from "./controllers.ts";
 import { motionsMessages } from "./messages.ts";
 import { formatSeconds } from "./plot-data.ts";
@@ -61,7 +61,7 @@ export function isBuiltIn(number: number): boolean {
 export function downloadedOffers(s: AppState): OfferedMotion[] {
   const m = motionsOf(s);
   const byNumber = new Map<number, OfferedMotion>();
-  const shelf = m.shelf;
+  const shelf = s.shelf;
   for (const r of shelf?.slots ?? []) {
     byNumber.set(r.motionNumber, {
       number: r.motionNumber,

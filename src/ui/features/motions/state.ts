@@ -1,9 +1,10 @@
+import type { Locale } from "../../../i18n/locale.ts";
 import { translator } from "../../../i18n/translate.ts";
 import type { RbmMotion } from "../../../protocol/rbm.ts";
 import type { RbmIssue } from "../../../protocol/rbm-validate.ts";
-import { type AppState, type Notice, runningWords } from "../../app-state.ts";
+import { type Notice, type RunningLabel, runningWords } from "../../notices.ts";
 import type { Store } from "../../store.ts";
-import type { ShelfState } from "../shelf/state.ts";
+import type { ConnectionState } from "../connection/index.ts";
 import { motionsMessages } from "./messages.ts";
 import { emptyBook, type SlotBook } from "./slot-book.ts";
 import type { ProgressSample } from "./upload-rate.ts";
@@ -110,10 +111,6 @@ export interface MotionsState {
   resultFor?: UploadTarget;
   motionBook: SlotBook;
   actionBook: SlotBook;
-  /** "Reset the demo robot" connected it again as new: what became of it. */
-  demoReset?: Notice;
-  /** The robot's shelf: what this browser recorded uploading to this robot (issue 23 item 2). */
-  shelf?: ShelfState;
   run?: RunningMotion;
   /** A motion waiting for the once-per-connection "the robot will move" confirmation. */
   confirmMove?: number;
@@ -125,16 +122,29 @@ export interface MotionsState {
   robot3dShown?: boolean;
 }
 
-export function motionFilesOf(s: AppState): MotionFilesState {
+/** The part of the app state this feature owns (src/ui/app-state.ts composes the parts). */
+export interface MotionsSlice {
+  motionFiles?: MotionFilesState;
+  motions?: MotionsState;
+}
+
+/** What tells whether the robot can take a run, a sound or an upload now (`robotBusyReason`). */
+export interface RobotBusyFacts extends MotionsSlice {
+  locale: Locale;
+  connection: ConnectionState;
+  running: readonly RunningLabel[];
+}
+
+export function motionFilesOf(s: MotionsSlice): MotionFilesState {
   return s.motionFiles ?? { entries: [], nextId: 1 };
 }
 
-export function patchMotionFiles(store: Store<AppState>, patch: Partial<MotionFilesState>): void {
+export function patchMotionFiles(store: Store<MotionsSlice>, patch: Partial<MotionFilesState>): void {
   store.update((s) => ({ motionFiles: { ...motionFilesOf(s), ...patch } }));
 }
 
 /** The Motions view's state of this connection, created on first use. */
-export function motionsOf(s: AppState): MotionsState {
+export function motionsOf(s: MotionsSlice): MotionsState {
   return (
     s.motions ?? {
       resetMotionFirst: false,
@@ -146,7 +156,7 @@ export function motionsOf(s: AppState): MotionsState {
 }
 
 export function patchMotions(
-  store: Store<AppState>,
+  store: Store<MotionsSlice>,
   patch: Partial<MotionsState> | ((m: MotionsState) => Partial<MotionsState>),
 ): void {
   store.update((s) => {
@@ -160,7 +170,7 @@ export function patchMotions(
  * they can. The RBC drops every request while a sound plays, and every request but 7 while a motion plays
  * (started here or elsewhere: the busy probe's `connection.busy`).
  */
-export function robotBusyReason(s: AppState): string | undefined {
+export function robotBusyReason(s: RobotBusyFacts): string | undefined {
   const t = translator(motionsMessages, s.locale);
   const c = s.connection;
   if (c.phase !== "connected") return t("motions.busy.connect");

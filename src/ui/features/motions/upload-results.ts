@@ -15,8 +15,7 @@ import { type Notice, noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { errorSaid, technicalDetail } from "../../error-text.ts";
 import { inEveryLanguage, type Said, said, saidText } from "../../said.ts";
-import { recordShelf } from "../shelf/shelf-actions.ts";
-import { storedSentence } from "../shelf/shelf-words.ts";
+import { recordShelf, storedSentence } from "../shelf/index.ts";
 import { motionsMessages } from "./messages.ts";
 import { formatSeconds } from "./plot-data.ts";
 import {

@@ -8,7 +8,7 @@ import { failureNotice } from "../../failure-notice.ts";
 import { focusSoon } from "../../focus.ts";
 import { type LocalText, type Said, said } from "../../said.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
-import { servosTaken } from "../connection/actions.ts";
+import { servosTaken } from "../connection/index.ts";
 import { servosMessages } from "./messages.ts";
 import { LatestMoveSender } from "./move-sender.ts";
 import {

@@ -3,7 +3,7 @@ import { formatSeconds } from "../../../../i18n/units.ts";
 import { MOTION_AREA_BYTES } from "../../../../protocol/catalog.ts";
 import { notice } from "../../../shell/notice.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
-import { issueWords } from "../../motions/issue-text.ts";
+import { issueWords } from "../../motions/index.ts";
 import {
   addPackFiles,
   askUpload,

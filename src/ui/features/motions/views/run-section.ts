@@ -8,11 +8,9 @@ import { liveRobotPanel } from "../../../robot3d/live-robot.ts";
 import { nameWithBreaks } from "../../../shell/name-breaks.ts";
 import { liveNotice } from "../../../shell/notice.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
-import { stopActivity } from "../../connection/actions.ts";
-import { connectionMessages } from "../../connection/messages.ts";
-import { servosOf } from "../../servos/state.ts";
-import { shelfDropNotice, shelfRecordedNote } from "../../shelf/shelf-list.ts";
-import { remoteKeyWords } from "../../shelf/shelf-words.ts";
+import { connectionMessages, stopActivity } from "../../connection/index.ts";
+import { servosOf } from "../../servos/index.ts";
+import { remoteKeyWords, shelfDropNotice, shelfRecordedNote } from "../../shelf/index.ts";
 import { type MotionsTranslator, motionsMessages } from "../messages.ts";
 import { formatSeconds } from "../plot-data.ts";
 import {
@@ -263,7 +261,7 @@ export function runSection(ctx: ViewContext): TemplateResult {
       </div>
       ${runInPlace(ctx, t, "built-in")}
       <h3>${t("motions.run.downloadedTitle")}</h3>
-      ${shelfDropNotice(m.shelf?.notice, s.locale)}
+      ${shelfDropNotice(s.shelf?.notice, s.locale)}
       ${
         downloads.length > 0
           ? html`<div class="motion-grid" data-testid="downloaded-motions">

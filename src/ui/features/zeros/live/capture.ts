@@ -6,7 +6,7 @@ import { failureNotice } from "../../../failure-notice.ts";
 import { focusSoon } from "../../../focus.ts";
 import { type Controller, controllerKey } from "../../../scope.ts";
 import type { Store } from "../../../store.ts";
-import { limpAll } from "../../connection/actions.ts";
+import { limpAll } from "../../connection/index.ts";
 import { toDraft } from "../editor.ts";
 import { patchZeros } from "../state.ts";
 import type { CaptureState } from "./live-state.ts";

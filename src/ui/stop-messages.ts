@@ -1,4 +1,4 @@
-import { defineMessages } from "../../../i18n/catalogue.ts";
+import { defineMessages } from "../i18n/catalogue.ts";
 
 /**
  * What Stop and Limp are doing and what they did, as the top bar says it: loaded with the first press of Stop

@@ -1,5 +1,5 @@
-import type { SimLastingMemory } from "../../../sim/sim-memory.ts";
-import type { SimulatedRbc } from "../../../sim/simulated-rbc.ts";
+import type { SimLastingMemory } from "../sim/sim-memory.ts";
+import type { SimulatedRbc } from "../sim/simulated-rbc.ts";
 
 /**
  * The demo robot keeps its memory (issue 23 item 2), as a real RBC keeps its EEPROM and its servos their ids when

@@ -1,10 +1,11 @@
-import type { AppContext } from "../../context.ts";
-import { type Controller, controllerKey } from "../../scope.ts";
+import type { AppContext } from "./context.ts";
+import { type Controller, controllerKey } from "./scope.ts";
 
 /**
  * The top bar's Stop reaches the Class view's robots through this file, which the first page load carries (so
  * it stays a few bytes): the page scope's slot for the class, filled by the Class view when it is first used,
- * and the one function Stop calls. The class robots' ports close with the page.
+ * and the one function Stop calls. The class robots' ports close with the page. Outside both features, so that
+ * neither imports the other (docs/architecture.md, "Features").
  */
 
 /** What the Class view puts in the slot: its robots, each stopped on its own connection. */

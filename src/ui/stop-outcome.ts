@@ -1,18 +1,19 @@
-import type { StopActivityResult, StopFound } from "../../../device/index.ts";
-import type { ParamArgs } from "../../../i18n/catalogue.ts";
-import type { Locale } from "../../../i18n/locale.ts";
-import { noReplyCauseText } from "../../../i18n/outcomes/run-words.ts";
-import { stopOutcomeMessages } from "../../../i18n/outcomes/stop-messages.ts";
-import { formatMilliseconds, formatSeconds } from "../../../i18n/units.ts";
-import { type AppState, type Notice, noticeOf } from "../../app-state.ts";
-import { inEveryLanguage, type LocalText, type Said, said, saidText } from "../../said.ts";
+import type { StopActivityResult, StopFound } from "../device/index.ts";
+import type { ParamArgs } from "../i18n/catalogue.ts";
+import type { Locale } from "../i18n/locale.ts";
+import { noReplyCauseText } from "../i18n/outcomes/run-words.ts";
+import { stopOutcomeMessages } from "../i18n/outcomes/stop-messages.ts";
+import { formatMilliseconds, formatSeconds } from "../i18n/units.ts";
+import { type AppState, type Notice, noticeOf } from "./app-state.ts";
+import { inEveryLanguage, type LocalText, type Said, said, saidText } from "./said.ts";
 import { stopMessages } from "./stop-messages.ts";
 
 /**
  * The sentences of Stop and Limp in the top bar: what Stop is waiting for, what it did (never more certain than
  * the robot confirmed), what Limp did, and a robot found busy. Loaded with the first press of Stop or Limp (or a
  * robot found busy), not with the first page (first load: bench/bundle-size.ts). Kept as messages, so they are
- * worded in the language of the moment.
+ * worded in the language of the moment. The Class view words each of its robots' Stop with them too (so this file
+ * lives outside both features).
  */
 
 const say = <K extends keyof typeof stopMessages & string>(
