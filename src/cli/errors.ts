@@ -2,11 +2,11 @@ import { RbcError } from "../device/errors.ts";
 import type { Locale } from "../i18n/locale.ts";
 import { unexpectedText } from "../i18n/outcomes/device.ts";
 import { errorText } from "../i18n/outcomes/error-text.ts";
+import { type Said, saidBy, wordOf } from "../i18n/said.ts";
 import { translator } from "../i18n/translate.ts";
 import { LinkError } from "../link/transport.ts";
 import { ProtocolError } from "../protocol/errors.ts";
 import { cliMessages } from "./messages.ts";
-import { type Said, sameInEvery } from "./said.ts";
 
 /** Exit codes of `rbc` (documented in `rbc --help`). */
 export const EXIT = {
@@ -23,7 +23,7 @@ export const EXIT = {
 
 /** A message given in one language only (another program's words) is the same in every language. */
 function asSaid(message: string | Said): Said {
-  return typeof message === "string" ? sameInEvery(message) : message;
+  return typeof message === "string" ? saidBy(() => message) : message;
 }
 
 /**
@@ -39,7 +39,7 @@ export class UsageError extends Error {
     readonly command?: string,
   ) {
     const words = asSaid(message);
-    super(words.en);
+    super(wordOf(words, "en"));
     this.said = words;
   }
 }
@@ -56,7 +56,7 @@ export class CliError extends Error {
     readonly details: Record<string, unknown> = {},
   ) {
     const words = asSaid(message);
-    super(words.en);
+    super(wordOf(words, "en"));
     this.said = words;
   }
 }
@@ -88,7 +88,7 @@ export interface ErrorLineOptions {
 
 /** A failure's sentence in `locale`: its own, or for the device's errors a sentence from their code. */
 function sentence(e: unknown, locale: Locale, options: ErrorLineOptions): string {
-  if (e instanceof CliError || e instanceof UsageError) return e.said[locale];
+  if (e instanceof CliError || e instanceof UsageError) return wordOf(e.said, locale);
   if (locale === "en") return e instanceof Error ? e.message : String(e);
   const t = translator(cliMessages, locale);
   return errorText(e, locale, {
@@ -117,5 +117,5 @@ export function errorLine(e: unknown, locale: Locale = "en", options: ErrorLineO
 
 /** The English line of `e` and the line in `locale`, for a failure made of another error's words. */
 export function errorSaid(e: unknown): Said {
-  return { en: errorLine(e, "en"), ko: errorLine(e, "ko") };
+  return saidBy((locale) => errorLine(e, locale));
 }

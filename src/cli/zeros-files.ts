@@ -6,6 +6,7 @@
 import { constants } from "node:fs";
 import { access, readFile, writeFile } from "node:fs/promises";
 import { join } from "node:path";
+import { said, saidText } from "../i18n/said.ts";
 import { translator } from "../i18n/translate.ts";
 import {
   type BackupProblem,
@@ -17,7 +18,6 @@ import {
 } from "../protocol/zeros-backup.ts";
 import { CliError } from "./errors.ts";
 import { cliMessages } from "./messages.ts";
-import { said } from "./said.ts";
 
 export interface BackupSource {
   serialNumber: string;
@@ -123,7 +123,7 @@ export async function readBackupFile(path: string): Promise<ZerosBackup> {
   const parsed = parseZerosBackup(text);
   if (!parsed.ok) {
     const ko = translator(cliMessages, "ko")(BACKUP_PROBLEM_TEXT[parsed.problem], { path });
-    throw new CliError(`backup-${parsed.problem}`, { en: `${path}: ${parsed.message}`, ko });
+    throw new CliError(`backup-${parsed.problem}`, saidText({ en: `${path}: ${parsed.message}`, ko }));
   }
   return parsed.backup;
 }

@@ -1,5 +1,6 @@
 import type { RbcErrorCode } from "../device/errors.ts";
 import type { Locale } from "../i18n/locale.ts";
+import { type Said, wordOf, wordsOf } from "../i18n/said.ts";
 import type { ClassState } from "./features/class/state.ts";
 import type { ConnectionState, KnownPort } from "./features/connection/state.ts";
 import { initialConnection } from "./features/connection/state.ts";
@@ -16,7 +17,6 @@ import type { SensorsState } from "./features/sensors/state.ts";
 import type { ServosState } from "./features/servos/state.ts";
 import type { ZerosState } from "./features/zeros/state.ts";
 import { initialZeros } from "./features/zeros/state.ts";
-import { type Said, wordOf, wordsOf } from "./said.ts";
 
 export type {
   ConnectionPhase,

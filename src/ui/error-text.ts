@@ -1,9 +1,9 @@
 import { technicalDetail } from "../device/technical-detail.ts";
 import type { Locale } from "../i18n/locale.ts";
 import { errorText } from "../i18n/outcomes/error-text.ts";
+import { inEveryLanguage, type Said, said, saidText } from "../i18n/said.ts";
 import { type Notice, noticeOf } from "./app-state.ts";
 import { uiMessages } from "./messages.ts";
-import { inEveryLanguage, type Said, said, saidText } from "./said.ts";
 import { domErrorName } from "./serial-ports.ts";
 
 /**

@@ -1,7 +1,7 @@
 import type { Locale } from "../i18n/locale.ts";
+import type { Said } from "../i18n/said.ts";
 import { type Notice, noticeOf } from "./app-state.ts";
 import { errorSaid, technicalDetail } from "./error-text.ts";
-import type { Said } from "./said.ts";
 
 /**
  * A failure as a notice kept as messages: `lead` (what was being done) and the error's own sentence, made in

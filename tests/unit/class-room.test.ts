@@ -13,7 +13,7 @@ import { checkPack } from "../../src/ui/features/class/pack-check.ts";
 import { packVerdict } from "../../src/ui/features/class/result-words.ts";
 import { classOf, type PackFile } from "../../src/ui/features/class/state.ts";
 import { memoryBackupStorage } from "../../src/ui/features/zeros/backup-store.ts";
-import { wordsOf } from "../../src/ui/said.ts";
+import { wordsOf } from "../../src/i18n/said.ts";
 import { createStore } from "../../src/ui/store.ts";
 
 /**

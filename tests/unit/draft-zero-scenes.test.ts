@@ -15,7 +15,7 @@ import {
   storedRbmText,
 } from "../../src/ui/features/editor/drafts.ts";
 import { issueText } from "../../src/ui/features/motions/issue-text.ts";
-import { wordOf } from "../../src/ui/said.ts";
+import { wordOf } from "../../src/i18n/said.ts";
 
 /**
  * Issue 20 item 9: a motion with zero scenes (docs/protocol.md §7: S = 0 is an error) is refused where it is

@@ -3,7 +3,7 @@ import { RbcCancelledError } from "../../src/device/errors.ts";
 import { noticeOf, noticeText, runningWords } from "../../src/ui/app-state.ts";
 import { motionsMessages } from "../../src/ui/features/motions/messages.ts";
 import { cancelledEarlySaid } from "../../src/ui/features/motions/upload-results.ts";
-import { inEveryLanguage, said, wordOf } from "../../src/ui/said.ts";
+import { inEveryLanguage, said, wordOf } from "../../src/i18n/said.ts";
 
 // Issue 21 item 6 in Motions: an upload cancelled before any byte says "by Stop" from the device error's fact
 // (set by Stop's own cancel), never from its English text; the names of operations under way are worded in the

@@ -55,7 +55,7 @@ import {
   limpNotice,
   readNotice,
 } from "../../src/ui/features/editor/teach-in-model.ts";
-import { said, wordOf } from "../../src/ui/said.ts";
+import { said, wordOf } from "../../src/i18n/said.ts";
 import { motionRefusal as refused } from "../support/motion-refusal.ts";
 
 const WAVE = readFileSync(new URL("../../examples/wave.rbm", import.meta.url), "latin1");

@@ -1,4 +1,5 @@
 import { limpStoppedMotionFirstText, nothingSentText } from "../../i18n/outcomes/device.ts";
+import { said, saidBy } from "../../i18n/said.ts";
 import { translator } from "../../i18n/translate.ts";
 import { noExtraArguments, parseCommand } from "../args.ts";
 import { type CommandDef, localeOf } from "../command.ts";
@@ -6,7 +7,6 @@ import { confirm } from "../confirm.ts";
 import { connectRobot, robotPlace } from "../connect.ts";
 import { CliError, EXIT } from "../errors.ts";
 import { COMMAND_HELP } from "../help/command-help.ts";
-import { said, saidBy } from "../said.ts";
 import { commandMessages } from "./messages.ts";
 
 const OPTIONS = { yes: { type: "boolean", short: "y" } } as const;

@@ -8,6 +8,7 @@ import {
 } from "../../device/index.ts";
 import type { Locale } from "../../i18n/locale.ts";
 import { nothingSentText } from "../../i18n/outcomes/device.ts";
+import { inEveryLanguage, said, saidBy, saidText } from "../../i18n/said.ts";
 import { translator } from "../../i18n/translate.ts";
 import { formatSeconds } from "../../i18n/units.ts";
 import {
@@ -27,7 +28,6 @@ import { CliError, EXIT, errorLine, UsageError } from "../errors.ts";
 import { COMMAND_HELP } from "../help/command-help.ts";
 import { cliMessages } from "../messages.ts";
 import type { Output } from "../output.ts";
-import { said, saidBy, saidEach } from "../said.ts";
 import { issueLines, issuesJson } from "../upload-report.ts";
 import { unreadable } from "../zeros-files.ts";
 import { commandMessages } from "./messages.ts";
@@ -231,9 +231,12 @@ export const playCommand: CommandDef = {
     } catch (e) {
       if (!(e instanceof MotionError)) throw e;
       // The motion core's reason is English; in Korean the sentence says the file cannot be played.
-      const words = saidEach(commandMessages, "cmd.play.refused", (l) => [
-        { file: basename(file), reason: l === "en" ? e.message : t("cmd.play.refusedWhy") },
-      ]);
+      const words = said(commandMessages, "cmd.play.refused", {
+        file: basename(file),
+        reason: inEveryLanguage((l) =>
+          l === "en" ? e.message : translator(commandMessages, l)("cmd.play.refusedWhy"),
+        ),
+      });
       throw new CliError("motion-refused", words);
     }
     const validation = motionIssues(doc);
@@ -257,7 +260,7 @@ export const playCommand: CommandDef = {
     if (real && !values.yes && !env.stdin.isTTY) {
       throw new CliError(
         "confirmation-required",
-        saidEach(commandMessages, "cmd.play.needsYes", (l) => [{ warning: moveWarning(l) }]),
+        said(commandMessages, "cmd.play.needsYes", { warning: inEveryLanguage(moveWarning) }),
       );
     }
 
@@ -284,7 +287,7 @@ export const playCommand: CommandDef = {
     } catch (e) {
       env.setExitNote(undefined);
       if (e instanceof TetheredPlayError) {
-        const words = { en: e.message, ko: `${errorLine(e, "ko")} ${playHoldsText(e, "ko")}` };
+        const words = saidText({ en: e.message, ko: `${errorLine(e, "ko")} ${playHoldsText(e, "ko")}` });
         throw new CliError(e.code, words, EXIT.failed, {
           framesSent: e.framesSent,
           totalFrames: e.totalFrames,

@@ -4,6 +4,7 @@ import { isHazardousMotion, type RunReport } from "../../device/run-outcome.ts";
 import { reconcile, shelfKey } from "../../device/shelf.ts";
 import type { Locale } from "../../i18n/locale.ts";
 import { motionHazardText, runReportText } from "../../i18n/outcomes/run-words.ts";
+import { said, saidBy, saidTogether } from "../../i18n/said.ts";
 import { translator } from "../../i18n/translate.ts";
 import { formatSeconds } from "../../i18n/units.ts";
 import { BASIC_POSTURE_MOTION, downloadSlotOf, isOfferedMotionNumber } from "../../protocol/catalog.ts";
@@ -13,7 +14,6 @@ import { connectRobot, type Robot } from "../connect.ts";
 import { CliError, EXIT, errorSaid, UsageError } from "../errors.ts";
 import { COMMAND_HELP } from "../help/command-help.ts";
 import { motionName } from "../motion-names.ts";
-import { joinSaid, said, saidBy } from "../said.ts";
 import { readShelves, shelfOf, shelfPath } from "../shelf-file.ts";
 import { commandMessages } from "./messages.ts";
 import { stoppedMotionSentence } from "./stop.ts";
@@ -152,7 +152,7 @@ export const runCommand: CommandDef = {
         if (e instanceof RbcError && e.code === "busy") {
           throw new CliError(
             "busy",
-            joinSaid([errorSaid(e), said(commandMessages, "cmd.run.stopHint")]),
+            saidTogether([errorSaid(e), said(commandMessages, "cmd.run.stopHint")]),
             EXIT.failed,
             {
               completed: results,
@@ -166,7 +166,7 @@ export const runCommand: CommandDef = {
                 posture: String(BASIC_POSTURE_MOTION),
                 motion: String(motion),
               });
-          throw new CliError("motion-ignored", joinSaid([errorSaid(e), hint]), EXIT.failed, {
+          throw new CliError("motion-ignored", saidTogether([errorSaid(e), hint]), EXIT.failed, {
             completed: results,
           });
         }

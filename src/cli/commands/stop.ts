@@ -1,6 +1,7 @@
 import type { StopActivityResult } from "../../device/rbc-client.ts";
 import type { Locale } from "../../i18n/locale.ts";
 import { stopFoundText } from "../../i18n/outcomes/stop-words.ts";
+import { said, saidBy, saidTogether } from "../../i18n/said.ts";
 import { translator } from "../../i18n/translate.ts";
 import { BASIC_POSTURE_MOTION } from "../../protocol/catalog.ts";
 import { noExtraArguments, parseCommand } from "../args.ts";
@@ -8,7 +9,6 @@ import { type CommandDef, localeOf } from "../command.ts";
 import { connectRobot, robotPlace } from "../connect.ts";
 import { CliError, EXIT } from "../errors.ts";
 import { COMMAND_HELP } from "../help/command-help.ts";
-import { joinSaid, said, saidBy } from "../said.ts";
 import { commandMessages } from "./messages.ts";
 
 /**
@@ -70,7 +70,7 @@ export const stopCommand: CommandDef = {
       case "unconfirmed":
         throw new CliError(
           "not-confirmed",
-          joinSaid([saidBy(words), said(commandMessages, "cmd.stop.holdHint")]),
+          saidTogether([saidBy(words), said(commandMessages, "cmd.stop.holdHint")]),
           EXIT.failed,
           {
             found: "busy",

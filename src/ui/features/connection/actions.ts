@@ -1,7 +1,7 @@
+import { said } from "../../../i18n/said.ts";
 import { type AppState, noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { focusSoon } from "../../focus.ts";
-import { said } from "../../said.ts";
 import { forgetPort, grantedPorts, webSerial } from "../../serial-ports.ts";
 import type { Store } from "../../store.ts";
 import { stopClassRobots } from "../class/stop-all.ts";

@@ -3,9 +3,9 @@ import type { ParamArgs } from "../../../i18n/catalogue.ts";
 import type { Locale } from "../../../i18n/locale.ts";
 import { noReplyCauseText } from "../../../i18n/outcomes/run-words.ts";
 import { stopOutcomeMessages } from "../../../i18n/outcomes/stop-messages.ts";
+import { inEveryLanguage, type LocalText, type Said, said, saidBy } from "../../../i18n/said.ts";
 import { formatMilliseconds, formatSeconds } from "../../../i18n/units.ts";
 import { type AppState, type Notice, noticeOf } from "../../app-state.ts";
-import { inEveryLanguage, type LocalText, type Said, said, saidText } from "../../said.ts";
 import { stopMessages } from "./stop-messages.ts";
 
 /**
@@ -79,7 +79,7 @@ function foundWorded(found: StopFound): Worded {
       return {
         said: [
           said(stopOutcomeMessages, "outcome.stop.busyUnconfirmed", { wait }),
-          saidText(inEveryLanguage((l) => noReplyCauseText(found.noReply, l))),
+          saidBy((l) => noReplyCauseText(found.noReply, l)),
         ],
         more: [said(stopOutcomeMessages, "outcome.stop.busyUnconfirmed.detail")],
       };

@@ -5,12 +5,12 @@
  */
 import type { KeysWithoutParams } from "../../../i18n/catalogue.ts";
 import type { Locale } from "../../../i18n/locale.ts";
+import { inEveryLanguage, type Said, said, wordOf } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { formatSeconds } from "../../../i18n/units.ts";
 import type { Motion } from "../../../motion/index.ts";
 import { clampPosition, frameIntervalMs } from "../../../motion/index.ts";
 import { type Notice, noticeOf } from "../../app-state.ts";
-import { inEveryLanguage, type Said, said, wordOf } from "../../said.ts";
 import type { PlayChoice, PlayProgress } from "./live-state.ts";
 import { sceneNumber } from "./live-state.ts";
 import { editorMessages } from "./messages.ts";

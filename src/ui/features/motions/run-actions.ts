@@ -3,6 +3,7 @@ import { isHazardousMotion } from "../../../device/run-outcome.ts";
 import type { Locale } from "../../../i18n/locale.ts";
 import { builtInMotionName } from "../../../i18n/motion-names/built-in-motion-name.ts";
 import { soundOutcomeMessages } from "../../../i18n/outcomes/sound-messages.ts";
+import { inEveryLanguage, type LocalText, said } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
 import {
   BASIC_POSTURE_MOTION,
@@ -15,7 +16,6 @@ import { type AppState, type Notice, noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { errorNotice, errorSaid, technicalDetail } from "../../error-text.ts";
 import { focusSoon } from "../../focus.ts";
-import { inEveryLanguage, type LocalText, said } from "../../said.ts";
 import { remoteKeyWords } from "../shelf/shelf-words.ts";
 import { type MotionRun, motionsController } from "./controllers.ts";
 import { motionsMessages } from "./messages.ts";

@@ -1,10 +1,10 @@
 import "../../styles/tools.css";
 import { html, nothing, type TemplateResult } from "lit-html";
 import { live } from "lit-html/directives/live.js";
+import { wordOf } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { formatClockTime } from "../../format.ts";
 import { liveRobotPanel } from "../../robot3d/live-robot.ts";
-import { wordOf } from "../../said.ts";
 import { shellMessages } from "../../shell/messages.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";

@@ -8,6 +8,7 @@ import { ZeroBackupError, ZeroWriteFailedError } from "../../../device/zero-poli
 import type { ParamArgs } from "../../../i18n/catalogue.ts";
 import type { Locale } from "../../../i18n/locale.ts";
 import { deviceOutcomeMessages } from "../../../i18n/outcomes/messages.ts";
+import { inEveryLanguage, type LocalText, type Said, said } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { ZERO_COUNT } from "../../../protocol/zeros.ts";
 import {
@@ -24,7 +25,6 @@ import { errorNotice, technicalDetail } from "../../error-text.ts";
 import { errorSaid, failureNotice } from "../../failure-notice.ts";
 import { focusSoon } from "../../focus.ts";
 import { formatDateTime } from "../../format.ts";
-import { inEveryLanguage, type LocalText, type Said, said } from "../../said.ts";
 import type { Store } from "../../store.ts";
 import { type BackupFileOutcome, saveBackupFile } from "./backup-file.ts";
 import { refusal } from "./backup-refusal.ts";

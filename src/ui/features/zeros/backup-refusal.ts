@@ -1,10 +1,10 @@
 import type { KeysWithoutParams } from "../../../i18n/catalogue.ts";
 import type { Locale } from "../../../i18n/locale.ts";
+import { inEveryLanguage, said } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { ZERO_COUNT, zeroProblems } from "../../../protocol/zeros.ts";
 import type { BackupProblem, ParsedBackup } from "../../../protocol/zeros-backup.ts";
 import { type Notice, noticeOf } from "../../app-state.ts";
-import { inEveryLanguage, said } from "../../said.ts";
 import { zerosMessages } from "./messages.ts";
 
 /**
