@@ -47,8 +47,9 @@ export function inEveryLanguage(make: (locale: Locale) => string): LocalText {
   return out as LocalText;
 }
 
-function isSaid(fact: Fact): fact is Said {
-  return typeof fact === "object" && "key" in fact;
+/** Whether `value` is a message (`said(…)`), e.g. what an error that words itself carries. */
+export function isSaid(value: unknown): value is Said {
+  return typeof value === "object" && value !== null && "catalogue" in value && "key" in value;
 }
 
 function factIn(fact: Fact, locale: Locale): string | number {

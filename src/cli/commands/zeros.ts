@@ -2,6 +2,7 @@ import { resolve } from "node:path";
 import { RbcCancelledError } from "../../device/errors.ts";
 import { type SafeZeroWrite, ZeroBackupError, ZeroWriteFailedError } from "../../device/index.ts";
 import type { ZeroWriteResult } from "../../device/types.ts";
+import { errorSaid } from "../../i18n/error-said.ts";
 import { jointOf } from "../../i18n/joint-names/joint-name.ts";
 import type { Locale } from "../../i18n/locale.ts";
 import { type Said, said, saidBy, saidTogether, wordOf } from "../../i18n/said.ts";
@@ -22,7 +23,7 @@ import { formatFirmware } from "../../shared/format.ts";
 import { type GlobalValues, noExtraArguments, parseCommand } from "../args.ts";
 import { type CommandDef, localeOf, type RunEnv } from "../command.ts";
 import { connectRobot, type Robot, robotPlace } from "../connect.ts";
-import { CliError, EXIT, errorCode, errorSaid, UsageError } from "../errors.ts";
+import { CliError, EXIT, errorCode, SEE_LOG, UsageError } from "../errors.ts";
 import { COMMAND_HELP } from "../help/command-help.ts";
 import { displayWidth } from "../help/render.ts";
 import {
@@ -181,7 +182,7 @@ async function backupAndWrite(
     if (e instanceof ZeroWriteFailedError) {
       throw new CliError(
         errorCode(e.reason),
-        saidTogether([errorSaid(e.reason), checkAdvice(e.backupName)]),
+        saidTogether([errorSaid(e.reason, { detailHint: SEE_LOG }), checkAdvice(e.backupName)]),
         EXIT.failed,
         {
           backupFile: e.backupName,

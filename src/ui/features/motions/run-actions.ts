@@ -1,5 +1,6 @@
 import { RbcError } from "../../../device/errors.ts";
 import { isHazardousMotion } from "../../../device/run-outcome.ts";
+import { errorSaid } from "../../../i18n/error-said.ts";
 import type { Locale } from "../../../i18n/locale.ts";
 import { builtInMotionName } from "../../../i18n/motion-names/built-in-motion-name.ts";
 import { soundOutcomeMessages } from "../../../i18n/outcomes/sound-messages.ts";
@@ -14,7 +15,7 @@ import {
 } from "../../../protocol/catalog.ts";
 import { type AppState, type Notice, noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
-import { errorNotice, errorSaid, technicalDetail } from "../../error-text.ts";
+import { errorNotice, technicalDetail } from "../../error-text.ts";
 import { focusSoon } from "../../focus.ts";
 import { remoteKeyWords } from "../shelf/shelf-words.ts";
 import { type MotionRun, motionsController } from "./controllers.ts";

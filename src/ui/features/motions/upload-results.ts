@@ -5,6 +5,7 @@ import {
   RbcUploadError,
 } from "../../../device/errors.ts";
 import type { UploadResult } from "../../../device/types.ts";
+import { errorSaid } from "../../../i18n/error-said.ts";
 import { uploadNoticeText } from "../../../i18n/outcomes/device.ts";
 import { robotErrorText } from "../../../i18n/outcomes/robot-error.ts";
 import { uploadCancelledEarlyText } from "../../../i18n/outcomes/upload-words.ts";
@@ -13,7 +14,7 @@ import { ACTION_AREA_BYTES, MOTION_AREA_BYTES, NO_ERROR } from "../../../protoco
 import type { RbmMotion } from "../../../protocol/rbm.ts";
 import { type Notice, noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
-import { errorSaid, technicalDetail } from "../../error-text.ts";
+import { technicalDetail } from "../../error-text.ts";
 import { recordShelf } from "../shelf/shelf-actions.ts";
 import { storedSentence } from "../shelf/shelf-words.ts";
 import { motionsMessages } from "./messages.ts";
