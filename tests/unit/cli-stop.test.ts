@@ -75,7 +75,7 @@ describe("rbc stop and rbc limp", () => {
     expect(refused.stderr).not.toMatch(/FF FF AA 55/);
     expect(done.code, done.stderr).toBe(0);
     expect(done.stdout).toBe(
-      "All 16 servos confirmed passive. Hold the robot: it cannot stand on its own.\n",
+      "Limp: all 16 servos confirmed passive. Hold the robot, it cannot stand on its own now.\n",
     );
     const help = globalHelp(COMMAND_LIST, "en");
     expect(help).toMatch(/\n\s+stop\s+end a running motion with 7; the robot keeps standing/);

@@ -296,13 +296,9 @@ export const commandMessages = defineMessages({
     ko: "아직 움직이면 로봇을 잡아 주세요 (`rbc limp`로 모든 서보의 힘을 뺄 수 있어요).",
   },
 
-  "cmd.limp.warning": {
-    en: "Hold the robot: every servo will go passive and it will fall if nobody holds it.",
-    ko: "로봇을 잡아 주세요. 모든 서보의 힘이 빠져서 아무도 잡지 않으면 쓰러져요.",
-  },
   "cmd.limp.needsYes": {
-    en: "Hold the robot: every servo will go passive and it will fall if nobody holds it. Add --yes to make every servo passive (nothing was sent).",
-    ko: "로봇을 잡아 주세요. 모든 서보의 힘이 빠져서 아무도 잡지 않으면 쓰러져요. 모든 서보의 힘을 빼려면 --yes를 붙여 주세요 (아무것도 보내지 않았어요).",
+    en: "{warning} Add --yes to make every servo passive (nothing was sent).",
+    ko: "{warning} 모든 서보의 힘을 빼려면 --yes를 붙여 주세요 (아무것도 보내지 않았어요).",
   },
   "cmd.limp.question": {
     en: "Make every servo of {robot} passive?",
@@ -311,14 +307,6 @@ export const commandMessages = defineMessages({
   "cmd.limp.notConfirmed": {
     en: "Limp not confirmed; nothing was sent.",
     ko: "힘 빼기를 확인하지 않아서 아무것도 보내지 않았어요.",
-  },
-  "cmd.limp.allPassive": {
-    en: "All {confirmed} servos confirmed passive. Hold the robot: it cannot stand on its own.",
-    ko: "서보 {confirmed}개 모두 힘이 빠졌다고 확인했어요. 로봇을 잡아 주세요. 혼자 설 수 없어요.",
-  },
-  "cmd.limp.someSilent": {
-    en: "{confirmed} servos confirmed passive; servo {silent} did not answer. If anything still moves, switch the robot off.",
-    ko: "서보 {confirmed}개가 힘이 빠졌다고 확인했고, 서보 {silent}은(는) 응답하지 않았어요. 아직 움직이는 것이 있으면 로봇을 꺼 주세요.",
   },
 
   "cmd.sound.number": { en: "The sound number", ko: "소리 번호" },

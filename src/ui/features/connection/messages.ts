@@ -110,10 +110,6 @@ export const connectionMessages = defineMessages({
     en: "Make every servo passive: the robot falls unless someone holds it (asks first)",
     ko: "모든 서보의 힘을 빼요. 누가 잡고 있지 않으면 로봇이 넘어져요 (먼저 물어봐요)",
   },
-  "connection.limpQuestion": {
-    en: "Hold the robot: every servo will go passive and it will fall if nobody holds it.",
-    ko: "로봇을 잡아 주세요. 모든 서보의 힘이 빠져서, 아무도 잡고 있지 않으면 로봇이 넘어져요.",
-  },
   "connection.limpExplain": {
     en: "Stop (Esc) ends a motion and keeps the robot standing; Limp is for when the robot must go slack.",
     ko: "정지(Esc)는 모션을 끝내고 로봇을 선 채로 두어요. 힘 빼기는 로봇의 힘을 완전히 빼야 할 때 써요.",

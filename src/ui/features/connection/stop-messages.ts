@@ -103,14 +103,6 @@ export const stopMessages = defineMessages({
     ko: "정지하지 못했어요. 로봇이 아직 움직이면 로봇을 잡고 힘 빼기를 눌러 주세요.",
   },
   "stop.limping": { en: "Limp: making every servo passive…", ko: "힘 빼기: 모든 서보의 힘을 빼는 중…" },
-  "stop.limpDone": {
-    en: "Limp: all {count} servos confirmed passive. Hold the robot, it cannot stand on its own now.",
-    ko: "힘 빼기: 서보 {count}개 모두 힘이 빠졌다고 확인했어요. 로봇을 잡아 주세요. 이제 혼자 서 있을 수 없어요.",
-  },
-  "stop.limpPartial": {
-    en: "Limp: {confirmed} servos confirmed passive, but servo {silent} did not answer. If anything still moves, switch the robot off.",
-    ko: "힘 빼기: 서보 {confirmed}개는 힘이 빠졌다고 확인했지만, 서보 {silent}번이 응답하지 않았어요. 아직 움직이는 것이 있으면 로봇의 전원을 꺼 주세요.",
-  },
   "stop.limpFailed": {
     en: "Limp failed. Hold the robot and switch it off.",
     ko: "힘을 빼지 못했어요. 로봇을 잡고 전원을 꺼 주세요.",

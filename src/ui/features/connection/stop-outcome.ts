@@ -1,6 +1,8 @@
 import type { StopActivityResult, StopFound } from "../../../device/index.ts";
 import type { ParamArgs } from "../../../i18n/catalogue.ts";
 import type { Locale } from "../../../i18n/locale.ts";
+import { limpStoppedMotionFirstText } from "../../../i18n/outcomes/device.ts";
+import { type LimpFacts, limpResultText } from "../../../i18n/outcomes/limp-words.ts";
 import { noReplyCauseText } from "../../../i18n/outcomes/run-words.ts";
 import { stopOutcomeMessages } from "../../../i18n/outcomes/stop-messages.ts";
 import { inEveryLanguage, type LocalText, type Said, said, saidBy } from "../../../i18n/said.ts";
@@ -170,14 +172,14 @@ export function limpingNotice(locale: Locale): Notice {
   return noticeOf("warning", locale, [say("stop.limping")]);
 }
 
-/** What Limp made passive: every servo confirmed, or which did not answer. */
-export function limpNotice(result: { confirmed: number[]; silent: number[] }, locale: Locale): Notice {
-  const { confirmed, silent } = result;
-  return silent.length === 0
-    ? noticeOf("warning", locale, [say("stop.limpDone", { count: confirmed.length })])
-    : noticeOf("danger", locale, [
-        say("stop.limpPartial", { confirmed: confirmed.length, silent: silent.join(", ") }),
-      ]);
+/**
+ * What Limp made passive (every servo confirmed, or which did not answer), after the motion started elsewhere it
+ * ended first, if any: the outcome catalogue's sentences, which `rbc limp` says too.
+ */
+export function limpNotice(result: LimpFacts & { stoppedMotionFirst?: boolean }, locale: Locale): Notice {
+  const first = result.stoppedMotionFirst ? [saidBy(limpStoppedMotionFirstText)] : [];
+  const said = [...first, saidBy((l) => limpResultText(result, l))];
+  return noticeOf(result.silent.length === 0 ? "warning" : "danger", locale, said);
 }
 
 export function limpFailedSaid(): Said {

@@ -1,5 +1,6 @@
 import { html, nothing, type TemplateResult } from "lit-html";
 import type { Locale } from "../../../i18n/locale.ts";
+import { limpWarningText } from "../../../i18n/outcomes/limp-words.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { platformName } from "../../../protocol/platform.ts";
 import { formatFirmware } from "../../../shared/format.ts";
@@ -161,7 +162,7 @@ function limpQuestion(ctx: ViewContext, t: ConnectionTranslator): TemplateResult
       aria-describedby="limp-text"
       @keydown=${onKey}
     >
-      <p id="limp-title"><strong>${t("connection.limpQuestion")}</strong></p>
+      <p id="limp-title"><strong>${limpWarningText(ctx.state.locale)}</strong></p>
       <p id="limp-text" class="small">${t("connection.limpExplain")}</p>
       <div class="actions">
         <button type="button" class="btn" id="cancel-limp" @click=${() => cancelLimp(ctx)}>${t("connection.cancel")}</button>
