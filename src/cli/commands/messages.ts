@@ -266,25 +266,9 @@ export const commandMessages = defineMessages({
   },
   "cmd.run.done": { en: "Done: {motion} in {duration}.", ko: "완료: {motion}, {duration} 걸렸어요." },
 
-  "cmd.stop.stopped": {
-    en: "The robot took Stop: motion {motion} ended at the end of its scene and the robot stands in that pose; `rbc run 7` straightens it. (Sent 7; the robot answered 07.)",
-    ko: "로봇이 정지를 받아들였어요. 모션 {motion}은(는) 장면이 끝날 때 멈췄고 로봇은 그 자세로 서 있어요. `rbc run 7`로 똑바로 세울 수 있어요. (7을 보냈고 로봇이 07로 응답했어요.)",
-  },
-  "cmd.stop.endedThenPosture": {
-    en: "motion {motion} had just ended; the robot took the 7 as Basic posture and confirmed it (07).",
-    ko: "모션 {motion}은(는) 막 끝난 뒤였어요. 로봇이 7을 기본 자세로 받아들이고 확인했어요 (07).",
-  },
-  "cmd.stop.posture": {
-    en: "Basic posture (7) cannot be interrupted: it played to its end and the robot stands straight. (The robot answered 07.)",
-    ko: "기본 자세(7)는 중간에 멈출 수 없어요. 끝까지 실행했고 로봇은 똑바로 서 있어요. (로봇이 07로 응답했어요.)",
-  },
-  "cmd.stop.unconfirmed": {
-    en: "sent 7 to stop motion {motion}, but the robot did not confirm. If it still moves, hold it (`rbc limp` makes every servo passive).",
-    ko: "모션 {motion}을(를) 멈추려고 7을 보냈지만 로봇이 확인하지 않았어요. 아직 움직이면 로봇을 잡아 주세요 (`rbc limp`로 모든 서보의 힘을 뺄 수 있어요).",
-  },
-  "cmd.stop.notPlaying": {
-    en: "motion {motion} was no longer playing; nothing was sent.",
-    ko: "모션 {motion}은(는) 이미 재생 중이 아니었어요. 아무것도 보내지 않았어요.",
+  "cmd.stop.straighten": {
+    en: "`rbc run 7` straightens it.",
+    ko: "`rbc run 7`로 똑바로 세울 수 있어요.",
   },
   "cmd.stop.asking": {
     en: "Asking {robot} whether it is playing something…",

@@ -5,6 +5,11 @@ import { limpStoppedMotionFirstText } from "../../../i18n/outcomes/device.ts";
 import { type LimpFacts, limpResultText } from "../../../i18n/outcomes/limp-words.ts";
 import { noReplyCauseText } from "../../../i18n/outcomes/run-words.ts";
 import { stopOutcomeMessages } from "../../../i18n/outcomes/stop-messages.ts";
+import {
+  type StoppedMotion,
+  stoppedMotionDetailText,
+  stoppedMotionText,
+} from "../../../i18n/outcomes/stop-words.ts";
 import { inEveryLanguage, type LocalText, type Said, said, saidBy } from "../../../i18n/said.ts";
 import { formatMilliseconds, formatSeconds } from "../../../i18n/units.ts";
 import { type AppState, type Notice, noticeOf } from "../../app-state.ts";
@@ -98,28 +103,21 @@ function foundWorded(found: StopFound): Worded {
   }
 }
 
-/** How a motion this panel started ended when Stop sent 7: the plain sentence and the 7/07 detail. */
-function motionWorded(motion: NonNullable<StopActivityResult["motion"]>): Worded {
-  const number = { motion: String(motion.number) };
-  switch (motion.outcome) {
-    case "stopped":
-      return {
-        said: [say("stop.outcome.motionStopped")],
-        more: [say("stop.outcome.motionStopped.detail", number)],
-      };
-    case "ended-then-posture":
-      return {
-        said: [say("stop.outcome.motionEnded")],
-        more: [say("stop.outcome.motionEnded.detail", number)],
-      };
-    case "posture":
-      return { said: [say("stop.outcome.posture")], more: [say("stop.outcome.posture.detail")] };
-    case "unconfirmed":
-      return {
-        said: [say("stop.outcome.motionUnconfirmed")],
-        more: [say("stop.outcome.motionUnconfirmed.detail", number)],
-      };
-  }
+/**
+ * How a motion this panel started ended when Stop sent 7: the outcome catalogue's sentence (which `rbc run` says
+ * on Ctrl-C too), what to do next in the panel's terms, and the 7/07 detail.
+ */
+function motionWorded(motion: StoppedMotion): Worded {
+  const next =
+    motion.outcome === "stopped"
+      ? [say("stop.outcome.straighten")]
+      : motion.outcome === "unconfirmed"
+        ? [say("stop.outcome.holdHint")]
+        : [];
+  return {
+    said: [saidBy((l) => stoppedMotionText(motion, l)), ...next],
+    more: [saidBy((l) => stoppedMotionDetailText(motion, l))],
+  };
 }
 
 /**
