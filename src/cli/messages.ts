@@ -170,8 +170,6 @@ export const cliMessages = defineMessages({
     ko: "모션 파일에 문제가 있어요.",
   },
 
-  "cli.platform.unknown": { en: "unknown ({platform})", ko: "알 수 없음 ({platform})" },
-
   "cli.motion.downloaded": { en: "{motion} (downloaded, {key})", ko: "{motion} (다운로드한 모션, {key})" },
   "cli.motion.recorded": { en: "{motion} ({name}, {key})", ko: "{motion} ({name}, {key})" },
 
@@ -249,7 +247,6 @@ export const cliMessages = defineMessages({
     en: "firmware {firmware}, serial {serial}, platform {platform} ({name})",
     ko: "펌웨어 {firmware}, 시리얼 {serial}, 플랫폼 {platform} ({name})",
   },
-  "cli.variant.serialNotReported": { en: "not reported", ko: "알려 주지 않음" },
   "cli.variant.busyMotion": {
     en: '--busy-motion must be a built-in motion number from 1 to 11, got "{value}".',
     ko: '--busy-motion에는 1부터 11까지의 내장 모션 번호를 써 주세요. 받은 값: "{value}".',

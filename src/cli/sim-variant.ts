@@ -1,5 +1,6 @@
 import { parseArgs } from "node:util";
 import type { Locale } from "../i18n/locale.ts";
+import { robotFactText } from "../i18n/outcomes/robot-facts.ts";
 import { said } from "../i18n/said.ts";
 import { translator } from "../i18n/translate.ts";
 import { platformName } from "../protocol/catalog.ts";
@@ -283,7 +284,7 @@ export function aboutRobot(
   const t = translator(cliMessages, locale);
   return t("cli.variant.about", {
     firmware: formatFirmware(firmware),
-    serial: serialNumber ?? t("cli.variant.serialNotReported"),
+    serial: serialNumber ?? robotFactText("notReported", locale),
     platform: String(platform),
     name: platformName(platform),
   });

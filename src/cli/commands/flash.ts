@@ -19,6 +19,7 @@ import {
   firmwareSummaryText,
   hexProblemText,
 } from "../../i18n/outcomes/firmware/firmware-words.ts";
+import { demoFirmwareParts } from "../../i18n/outcomes/robot-facts.ts";
 import { inEveryLanguage, said, saidBy, saidText } from "../../i18n/said.ts";
 import { formatNumber, translator } from "../../i18n/translate.ts";
 import { declaredVersion } from "../../protocol/firmware-marker.ts";
@@ -200,7 +201,7 @@ export const flashCommand: CommandDef = {
       const version = { version: formatFirmware(before) };
       env.out.line(
         robot.demo
-          ? t("cmd.flash.demoReports", version)
+          ? demoFirmwareParts(version.version, locale).join("")
           : t("cmd.flash.robotReports", { ...version, port: where }),
       );
     }

@@ -28,13 +28,11 @@ export const commandMessages = defineMessages({
   "cmd.info.demoRobot": { en: "The demo robot (simulated)", ko: "데모 로봇 (가상)" },
   "cmd.info.robotOn": { en: "Robot on {port}", ko: "{port}에 연결된 로봇" },
   "cmd.info.firmware": { en: "Firmware", ko: "펌웨어" },
-  "cmd.info.serialNumber": { en: "Serial number", ko: "시리얼 번호" },
   "cmd.info.serialNotReported": {
     en: "not reported (the robot did not answer 0x0C)",
     ko: "알려 주지 않음 (로봇이 0x0C에 응답하지 않았어요)",
   },
   "cmd.info.platform": { en: "Platform", ko: "플랫폼" },
-  "cmd.info.errorCode": { en: "Error code", ko: "오류 코드" },
   "cmd.info.memoryNotReported": {
     en: "not reported (the robot did not answer 0x0F)",
     ko: "알려 주지 않음 (로봇이 0x0F에 응답하지 않았어요)",
@@ -339,10 +337,6 @@ export const commandMessages = defineMessages({
   "cmd.flash.opened": {
     en: "Opened {robot} without asking the robot anything (--recover).",
     ko: "로봇에 아무것도 묻지 않고 {robot}을(를) 열었어요 (--recover).",
-  },
-  "cmd.flash.demoReports": {
-    en: "The demo robot reports firmware {version}.",
-    ko: "데모 로봇의 펌웨어는 {version}이에요.",
   },
   "cmd.flash.robotReports": {
     en: "The robot on {port} reports firmware {version}.",

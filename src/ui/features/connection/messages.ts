@@ -93,7 +93,6 @@ export const connectionMessages = defineMessages({
   },
   "connection.status.connected": { en: "Connected", ko: "연결됨" },
   "connection.status.bluetooth": { en: "Bluetooth", ko: "블루투스" },
-  "connection.status.platformUnknown": { en: "unknown ({platform})", ko: "알 수 없는 플랫폼 ({platform})" },
   "connection.status.firmware": { en: "fw {version}", ko: "펌웨어 {version}" },
   "connection.status.serialNumber": { en: "SN {serial}", ko: "시리얼 번호 {serial}" },
   "connection.status.limp": { en: "servos limp", ko: "서보 힘 빠짐" },

@@ -1,6 +1,7 @@
 import { html, nothing, type TemplateResult } from "lit-html";
 import type { Locale } from "../../../i18n/locale.ts";
 import { limpWarningText } from "../../../i18n/outcomes/limp-words.ts";
+import { unknownPlatformText } from "../../../i18n/outcomes/robot-facts.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { platformName } from "../../../protocol/platform.ts";
 import { formatFirmware } from "../../../shared/format.ts";
@@ -15,9 +16,7 @@ import type { ConnectionState } from "./state.ts";
 
 /** The platform byte as the top bar says it: HUNO, DINO, DOGY, PF2, or "unknown (9)". */
 function platformWord(t: ConnectionTranslator, platform: number): string {
-  return platform >= 1 && platform <= 4
-    ? platformName(platform)
-    : t("connection.status.platformUnknown", { platform: String(platform) });
+  return platform >= 1 && platform <= 4 ? platformName(platform) : unknownPlatformText(platform, t.locale);
 }
 
 /** The words of the connection state, as the top bar (and screen readers) say them. */

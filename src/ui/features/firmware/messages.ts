@@ -150,10 +150,6 @@ export const firmwareMessages = defineMessages({
 
   // Update and Recover
   "firmware.updateTitle": { en: "Update the robot", ko: "로봇 업데이트" },
-  "firmware.currentDemo": {
-    en: "The demo robot reports firmware {version}.",
-    ko: "데모 로봇이 알려 준 펌웨어 버전: {version}",
-  },
   "firmware.current": {
     en: "The robot reports firmware {version}.",
     ko: "로봇이 알려 준 펌웨어 버전: {version}",
