@@ -152,18 +152,9 @@ export const cliMessages = defineMessages({
     en: '{file}: motion "{name}", {servos} servos, {scenes} scenes, plays about {duration}; image {image} bytes (takes {footprint} bytes of motion memory).',
     ko: '{file}: 모션 "{name}", 서보 {servos}개, 장면 {scenes}개, 재생 시간 약 {duration}. 이미지 {image}바이트 (모션 메모리 {footprint}바이트 사용).',
   },
-  "cli.upload.checkedClean": {
-    en: "Checked: no errors, no warnings.",
-    ko: "확인했어요: 오류 없음, 경고 없음.",
-  },
-  "cli.upload.checked": { en: "Checked: {errors}, {warnings}.", ko: "확인했어요: {errors}, {warnings}." },
-  "cli.upload.errors": { en: { one: "{count} error", other: "{count} errors" }, ko: "오류 {count}개" },
-  "cli.upload.warnings": { en: { one: "{count} warning", other: "{count} warnings" }, ko: "경고 {count}개" },
 
   "cli.issue.error": { en: "error", ko: "오류" },
   "cli.issue.warning": { en: "warning", ko: "경고" },
-  "cli.issue.scene": { en: "scene {scene}", ko: "장면 {scene}" },
-  "cli.issue.servo": { en: "servo {servo}", ko: "서보 {servo}" },
 
   "cli.rbm.other": {
     en: "The motion file has a problem.",

@@ -1,5 +1,6 @@
 import { readFileSync } from "node:fs";
 import { afterEach, beforeEach, describe, expect, it, vi } from "vitest";
+import { said, wordOf } from "../../src/i18n/said.ts";
 import { translator } from "../../src/i18n/translate.ts";
 import {
   addScene,
@@ -55,7 +56,6 @@ import {
   limpNotice,
   readNotice,
 } from "../../src/ui/features/editor/teach-in-model.ts";
-import { said, wordOf } from "../../src/i18n/said.ts";
 import { motionRefusal as refused } from "../support/motion-refusal.ts";
 
 const WAVE = readFileSync(new URL("../../examples/wave.rbm", import.meta.url), "latin1");

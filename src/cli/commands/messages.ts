@@ -394,11 +394,9 @@ export const commandMessages = defineMessages({
     ko: "{file}의 장면은 0-{last}이에요. --scenes {value}은(는) 그 범위를 벗어나요.",
   },
   "cmd.play.allScenes": { en: "all {total} scenes", ko: "장면 {total}개 모두" },
-  "cmd.play.oneScene": { en: "scene {scene}", ko: "장면 {scene}" },
   "cmd.play.someScenes": { en: "scenes {from}-{to}", ko: "장면 {from}-{to}" },
   "cmd.play.what": { en: "{scenes} of {file}", ko: "{file}의 {scenes}" },
   "cmd.play.transitionFrame": { en: "transition frame {frame}", ko: "전환 프레임 {frame}" },
-  "cmd.play.sceneFrame": { en: "scene {scene}, frame {frame}", ko: "장면 {scene}, 프레임 {frame}" },
   "cmd.play.time": { en: "{elapsed} of {duration}", ko: "{duration} 중 {elapsed}" },
   "cmd.play.toFirstPose": {
     en: "Moving to the first pose, step {step}, {time}",

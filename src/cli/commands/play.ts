@@ -8,6 +8,7 @@ import {
 } from "../../device/index.ts";
 import type { Locale } from "../../i18n/locale.ts";
 import { nothingSentText } from "../../i18n/outcomes/device.ts";
+import { sceneFrameText, sceneText } from "../../i18n/outcomes/motion/position-words.ts";
 import { inEveryLanguage, said, saidBy, saidText } from "../../i18n/said.ts";
 import { translator } from "../../i18n/translate.ts";
 import { formatSeconds } from "../../i18n/units.ts";
@@ -76,7 +77,7 @@ function scenesText({ from, to }: Range, doc: Motion, locale: Locale): string {
   if (from === 0 && to === doc.scenes.length - 1)
     return t("cmd.play.allScenes", { total: String(doc.scenes.length) });
   return from === to
-    ? t("cmd.play.oneScene", { scene: String(from) })
+    ? sceneText(from, locale)
     : t("cmd.play.someScenes", { from: String(from), to: String(to) });
 }
 
@@ -88,7 +89,7 @@ function frameWords(frame: { scene: number; frame: number }, locale: Locale): st
   const t = translator(commandMessages, locale);
   return frame.scene < 0
     ? t("cmd.play.transitionFrame", { frame: String(frame.frame) })
-    : t("cmd.play.sceneFrame", { scene: String(frame.scene), frame: String(frame.frame) });
+    : sceneFrameText(frame.scene, frame.frame, locale);
 }
 
 /** Reads and checks the file; nothing is opened or sent when it is wrong. */

@@ -52,7 +52,7 @@ export interface Payload {
 /** The error code the robot reported after an upload, as a message. */
 function errorCodeSaid(code: number | undefined): Said {
   if (code === undefined) return said(motionsMessages, "motions.upload.errorNotRead");
-  if (code === NO_ERROR) return said(motionsMessages, "motions.upload.noError");
+  if (code === NO_ERROR) return saidBy((l) => robotErrorText(code, l));
   return said(motionsMessages, "motions.upload.errorCode", {
     text: inEveryLanguage((locale) => robotErrorText(code, locale)),
     code: String(code),
