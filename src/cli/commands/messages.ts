@@ -471,14 +471,7 @@ export const commandMessages = defineMessages({
     en: "Whether the last frame arrived is not known.",
     ko: "마지막 프레임이 도착했는지는 알 수 없어요.",
   },
-  "cmd.play.stoppedAfter": {
-    en: "tethered play stopped after {sent} of {total} frames; the servos hold the last one sent ({frame}), with torque. Nothing was made passive.",
-    ko: "로봇에서 재생이 프레임 {total}개 중 {sent}개를 보낸 뒤 멈췄어요. 서보는 마지막으로 보낸 프레임({frame})을 토크를 유지한 채 지켜요. 힘을 뺀 서보는 없어요.",
-  },
-  "cmd.play.stoppedBefore": {
-    en: "tethered play stopped before the first frame: nothing moved.",
-    ko: "로봇에서 재생이 첫 프레임 전에 멈췄어요. 아무것도 움직이지 않았어요.",
-  },
+  "cmd.play.nothingPassive": { en: "Nothing was made passive.", ko: "힘을 뺀 서보는 없어요." },
   "cmd.play.left": {
     en: "Left servo control; the servos keep holding the last frame.",
     ko: "서보 제어를 끝냈어요. 서보는 마지막 프레임을 계속 지켜요.",

@@ -9,6 +9,7 @@ import {
 import type { Locale } from "../../i18n/locale.ts";
 import { nothingSentText } from "../../i18n/outcomes/device.ts";
 import { sceneFrameText, sceneText } from "../../i18n/outcomes/motion/position-words.ts";
+import { playStoppedText } from "../../i18n/outcomes/stop-words.ts";
 import { inEveryLanguage, said, saidBy, saidText } from "../../i18n/said.ts";
 import { translator } from "../../i18n/translate.ts";
 import { formatSeconds } from "../../i18n/units.ts";
@@ -314,13 +315,7 @@ export const playCommand: CommandDef = {
       maxLateMs: Math.round(result.maxLateMs),
     };
     if (result.outcome === "stopped") {
-      const held = result.lastFrame
-        ? t("cmd.play.stoppedAfter", {
-            sent: String(result.framesSent),
-            total: String(result.totalFrames),
-            frame: frameWords(result.lastFrame, locale),
-          })
-        : t("cmd.play.stoppedBefore");
+      const held = `${playStoppedText(result, locale)} ${t("cmd.play.nothingPassive")}`;
       env.out.note(`rbc: ${t("cmd.interruptedBecause", { what: held })}`);
       env.out.result({ ok: false, ...json, error: { code: "interrupted", message: "Interrupted." } });
       return EXIT.interrupted;

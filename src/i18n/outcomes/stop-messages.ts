@@ -70,6 +70,19 @@ export const stopOutcomeMessages = defineMessages({
     en: "Motion {motion} was no longer playing; nothing was sent.",
     ko: "모션 {motion}은(는) 이미 재생 중이 아니었어요. 아무것도 보내지 않았어요.",
   },
+  // Where Stop (or Ctrl-C) ended tethered play: the panel's Stop, `rbc play`.
+  "outcome.stop.playStoppedScene": {
+    en: "Tethered play stopped after scene {scene}, frame {frame} ({sent} of {total} frames sent); the servos hold that frame.",
+    ko: "로봇에서 재생을 장면 {scene}, 프레임 {frame} 다음에 멈췄어요 (프레임 {total}개 중 {sent}개 보냄). 서보는 그 프레임의 자세를 유지해요.",
+  },
+  "outcome.stop.playStoppedTransition": {
+    en: "Tethered play stopped after transition frame {frame} ({sent} of {total} frames sent); the servos hold that frame.",
+    ko: "로봇에서 재생을 전환 프레임 {frame} 다음에 멈췄어요 (프레임 {total}개 중 {sent}개 보냄). 서보는 그 프레임의 자세를 유지해요.",
+  },
+  "outcome.stop.playNotStarted": {
+    en: "Tethered play stopped before its first frame; nothing moved.",
+    ko: "로봇에서 재생을 첫 프레임 전에 멈췄어요. 아무것도 움직이지 않았어요.",
+  },
   "outcome.busyNow": {
     en: "The robot is busy playing a motion (started with the remote or another program); it answers when the motion ends.",
     ko: "로봇이 모션을 재생하느라 바빠요 (리모컨이나 다른 프로그램으로 시작한 모션). 모션이 끝나면 응답해요.",

@@ -71,6 +71,24 @@ export function motionNotPlayingText(motion: string, locale: Locale): string {
   return t(locale)("outcome.stop.motionNotPlaying", { motion });
 }
 
+/** How far tethered play got before it was stopped (`StopActivityResult.tetheredPlay`, `TetheredPlayResult`). */
+export interface PlayStopFacts {
+  readonly framesSent: number;
+  readonly totalFrames: number;
+  /** The last frame sent: scene -1 is the transition to the first pose. */
+  readonly lastFrame?: { readonly scene: number; readonly frame: number };
+}
+
+/** Where tethered play stopped, how far it got, and that the servos hold that frame. */
+export function playStoppedText(play: PlayStopFacts, locale: Locale): string {
+  const { framesSent: sent, totalFrames: total, lastFrame } = play;
+  if (!lastFrame) return t(locale)("outcome.stop.playNotStarted");
+  const frame = String(lastFrame.frame);
+  return lastFrame.scene < 0
+    ? t(locale)("outcome.stop.playStoppedTransition", { frame, sent, total })
+    : t(locale)("outcome.stop.playStoppedScene", { scene: String(lastFrame.scene), frame, sent, total });
+}
+
 /** Whether the outcome is less than a confirmed end (said as a warning). */
 export function stopFoundUnsure(found: StopFound): boolean {
   return found.kind === "unconfirmed" || found.kind === "no-answer";

@@ -43,18 +43,6 @@ export const stopMessages = defineMessages({
     en: "If it still moves, hold it (Limp makes every servo passive).",
     ko: "아직 움직이면 로봇을 잡아 주세요 (힘 빼기는 모든 서보의 힘을 빼요).",
   },
-  "stop.outcome.playStoppedScene": {
-    en: "Tethered play stopped after scene {scene}, frame {frame} ({sent} of {total} frames sent); the servos hold that frame.",
-    ko: "로봇에서 재생을 장면 {scene}, 프레임 {frame} 다음에 멈췄어요 (프레임 {total}개 중 {sent}개 보냄). 서보는 그 프레임의 자세를 유지해요.",
-  },
-  "stop.outcome.playStoppedTransition": {
-    en: "Tethered play stopped after transition frame {frame} ({sent} of {total} frames sent); the servos hold that frame.",
-    ko: "로봇에서 재생을 전환 프레임 {frame} 다음에 멈췄어요 (프레임 {total}개 중 {sent}개 보냄). 서보는 그 프레임의 자세를 유지해요.",
-  },
-  "stop.outcome.playNotStarted": {
-    en: "Tethered play stopped before its first frame; nothing moved.",
-    ko: "로봇에서 재생을 첫 프레임 전에 멈췄어요. 아무것도 움직이지 않았어요.",
-  },
   "stop.outcome.servoMovesLimp": {
     en: "Servo moves stopped. The servos stay limp (Limp); moving a slider makes that servo hold again.",
     ko: "서보 움직임을 멈췄어요. 서보는 힘이 빠진 채로 있어요 (힘 빼기). 슬라이더를 움직이면 그 서보는 다시 힘을 줘요.",

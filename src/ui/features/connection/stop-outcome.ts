@@ -6,6 +6,7 @@ import { type LimpFacts, limpResultText } from "../../../i18n/outcomes/limp-word
 import { noReplyCauseText } from "../../../i18n/outcomes/run-words.ts";
 import { stopOutcomeMessages } from "../../../i18n/outcomes/stop-messages.ts";
 import {
+  playStoppedText,
   type StoppedMotion,
   stoppedMotionDetailText,
   stoppedMotionText,
@@ -43,16 +44,6 @@ export function stoppingNotice(state: AppState, now: number): Notice {
   else if (c.mode === "download") what = say("stop.stopping.upload");
   else what = say("stop.stopping");
   return noticeOf("info", state.locale, [what]);
-}
-
-/** Where tethered play stopped, and how far it got. */
-function playStopped(play: NonNullable<StopActivityResult["tetheredPlay"]>): Said {
-  const { framesSent: sent, totalFrames: total, lastFrame } = play;
-  if (!lastFrame) return say("stop.outcome.playNotStarted");
-  const frame = String(lastFrame.frame);
-  return lastFrame.scene < 0
-    ? say("stop.outcome.playStoppedTransition", { frame, sent, total })
-    : say("stop.outcome.playStoppedScene", { scene: String(lastFrame.scene), frame, sent, total });
 }
 
 /** Plain sentences, and their technical detail (shown one click away). */
@@ -144,7 +135,8 @@ export function stopOutcome(result: StopActivityResult, limp: boolean, locale: L
     more.push(...worded.more);
     unsure ||= result.motion.outcome === "unconfirmed";
   }
-  if (result.tetheredPlay) parts.push(playStopped(result.tetheredPlay));
+  const play = result.tetheredPlay;
+  if (play) parts.push(saidBy((l) => playStoppedText(play, l)));
   if (result.leftDirectMode) {
     parts.push(limp ? say("stop.outcome.leftServoControlLimp") : say("stop.outcome.leftServoControl"));
   } else if (result.servoMovesDropped && !result.tetheredPlay) {
