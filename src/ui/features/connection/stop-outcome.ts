@@ -2,7 +2,7 @@ import type { StopActivityResult, StopFound } from "../../../device/index.ts";
 import type { ParamArgs } from "../../../i18n/catalogue.ts";
 import type { Locale } from "../../../i18n/locale.ts";
 import { limpStoppedMotionFirstText } from "../../../i18n/outcomes/device.ts";
-import { type LimpFacts, limpResultText } from "../../../i18n/outcomes/limp-words.ts";
+import { type LimpFacts, limpResultText, limpWarningText } from "../../../i18n/outcomes/limp-words.ts";
 import { noReplyCauseText } from "../../../i18n/outcomes/run-words.ts";
 import { stopOutcomeMessages } from "../../../i18n/outcomes/stop-messages.ts";
 import {
@@ -170,6 +170,11 @@ export function limpNotice(result: LimpFacts & { stoppedMotionFirst?: boolean },
   const first = result.stoppedMotionFirst ? [saidBy(limpStoppedMotionFirstText)] : [];
   const said = [...first, saidBy((l) => limpResultText(result, l))];
   return noticeOf(result.silent.length === 0 ? "warning" : "danger", locale, said);
+}
+
+/** "Hold the robot: every servo will go passive …", the question before Limp (`rbc limp` says it too). */
+export function limpWarningSaid(): Said {
+  return saidBy(limpWarningText);
 }
 
 export function limpFailedSaid(): Said {

@@ -1,7 +1,7 @@
 import { html, nothing, type TemplateResult } from "lit-html";
 import type { Locale } from "../../../i18n/locale.ts";
-import { limpWarningText } from "../../../i18n/outcomes/limp-words.ts";
 import { unknownPlatformText } from "../../../i18n/outcomes/robot-facts.ts";
+import { type Said, wordOf } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { platformName } from "../../../protocol/platform.ts";
 import { formatFirmware } from "../../../shared/format.ts";
@@ -91,14 +91,14 @@ export function topBar(ctx: ViewContext): TemplateResult {
                 aria-haspopup="dialog"
                 aria-expanded=${ctx.state.limpAsked ? "true" : "false"}
                 title=${t("connection.limpTitle")}
-                @click=${() => askLimp(ctx)}
+                @click=${() => void askLimp(ctx)}
               >
                 ${t("connection.limpAsk")}
               </button>
             </div>`
           : nothing
       }
-      ${connected && ctx.state.limpAsked ? limpQuestion(ctx, t) : nothing}
+      ${connected && ctx.state.limpAsked ? limpQuestion(ctx, t, ctx.state.limpAsked) : nothing}
       ${stopResult(ctx)}
     </header>
   `;
@@ -146,7 +146,7 @@ function stopResult(ctx: ViewContext): TemplateResult {
  * however far down it was): every servo goes passive and a standing robot falls. Escape or
  * Cancel closes the question (Escape never makes a servo limp); the safe choice is the one focused first.
  */
-function limpQuestion(ctx: ViewContext, t: ConnectionTranslator): TemplateResult {
+function limpQuestion(ctx: ViewContext, t: ConnectionTranslator, warning: Said): TemplateResult {
   const onKey = (e: KeyboardEvent) => {
     if (e.key !== "Escape") return;
     e.preventDefault();
@@ -161,7 +161,7 @@ function limpQuestion(ctx: ViewContext, t: ConnectionTranslator): TemplateResult
       aria-describedby="limp-text"
       @keydown=${onKey}
     >
-      <p id="limp-title"><strong>${limpWarningText(ctx.state.locale)}</strong></p>
+      <p id="limp-title"><strong>${wordOf(warning, ctx.state.locale)}</strong></p>
       <p id="limp-text" class="small">${t("connection.limpExplain")}</p>
       <div class="actions">
         <button type="button" class="btn" id="cancel-limp" @click=${() => cancelLimp(ctx)}>${t("connection.cancel")}</button>
