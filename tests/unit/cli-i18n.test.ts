@@ -357,7 +357,7 @@ describe("the y/N question in Korean", () => {
     await new Promise((r) => setImmediate(r));
     expect(code).toBe(0);
     expect(text.stderr).toContain(
-      "로봇을 잡아 주세요. 모든 서보의 힘이 빠져서 아무도 잡고 있지 않으면 로봇이 넘어져요.\n",
+      "로봇을 잡아 주세요. 모든 서보의 힘이 빠져서, 아무도 잡고 있지 않으면 로봇이 넘어져요.\n",
     );
     expect(text.stderr).toContain("데모 로봇의 모든 서보의 힘을 뺄까요? [y/N] ");
     expect(text.stdout).toBe(

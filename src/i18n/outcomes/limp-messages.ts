@@ -8,7 +8,7 @@ import { defineMessages } from "../catalogue.ts";
 export const limpOutcomeMessages = defineMessages({
   "outcome.limp.warning": {
     en: "Hold the robot: every servo will go passive and it will fall if nobody holds it.",
-    ko: "로봇을 잡아 주세요. 모든 서보의 힘이 빠져서 아무도 잡고 있지 않으면 로봇이 넘어져요.",
+    ko: "로봇을 잡아 주세요. 모든 서보의 힘이 빠져서, 아무도 잡고 있지 않으면 로봇이 넘어져요.",
   },
   "outcome.limp.allPassive": {
     en: "Limp: all {count} servos confirmed passive. Hold the robot, it cannot stand on its own now.",
