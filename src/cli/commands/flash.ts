@@ -15,6 +15,7 @@ import {
   demoFileWords,
   firmwareFailureText,
   firmwareNoticeText as firmwareNotice,
+  firmwareRestartedText,
   firmwareResultText,
   firmwareSummaryText,
   hexProblemText,
@@ -288,7 +289,7 @@ export const flashCommand: CommandDef = {
         lines: n(result.linesPerSecond),
       }),
     );
-    env.out.line(t("cmd.flash.restarted"));
+    env.out.line(`${firmwareRestartedText(locale)} ${t("cmd.flash.runPosture")}`);
     return EXIT.ok;
   },
 };

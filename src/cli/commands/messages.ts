@@ -370,10 +370,7 @@ export const commandMessages = defineMessages({
     en: "Sent {bytes} bytes at {rate} bytes/s ({lines} lines/s).",
     ko: "{bytes}바이트를 보냈어요 (초당 {rate}바이트, 초당 {lines}줄).",
   },
-  "cmd.flash.restarted": {
-    en: "The robot was restarted: run Basic posture (`rbc run 7`) before other motions.",
-    ko: "로봇이 다시 켜졌어요. 다른 모션 전에 기본 자세(`rbc run 7`)를 실행해 주세요.",
-  },
+  "cmd.flash.runPosture": { en: "`rbc run 7` runs it.", ko: "`rbc run 7`로 실행할 수 있어요." },
   "cmd.flash.rate": { en: "{rate} B/s", ko: "{rate}B/s" },
   "cmd.flash.done": { en: "done", ko: "완료" },
   "cmd.flash.left": { en: "{seconds} s left", ko: "{seconds}초 남음" },

@@ -8,7 +8,11 @@ import {
   updateFirmware,
 } from "../../../device/firmware-update.ts";
 import type { Locale } from "../../../i18n/locale.ts";
-import { firmwareFailureText, firmwareResultText } from "../../../i18n/outcomes/firmware/firmware-words.ts";
+import {
+  firmwareFailureText,
+  firmwareRestartedText,
+  firmwareResultText,
+} from "../../../i18n/outcomes/firmware/firmware-words.ts";
 import { type Said, said, saidBy } from "../../../i18n/said.ts";
 import { declaredVersion } from "../../../protocol/firmware-marker.ts";
 import { MAX_HEX_TEXT_CHARS, parseIntelHex } from "../../../protocol/intel-hex.ts";
@@ -224,7 +228,7 @@ export async function startFlash(ctx: AppContext): Promise<void> {
         },
       }),
     );
-    finish(ctx, [resultSaid(result, before), said(firmwareMessages, "firmware.restarted")], result);
+    finish(ctx, [resultSaid(result, before), saidBy(firmwareRestartedText)], result);
   } catch (e) {
     patchFirmware(store, {
       run: undefined,
