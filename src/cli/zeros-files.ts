@@ -6,9 +6,9 @@
 import { constants } from "node:fs";
 import { access, readFile, writeFile } from "node:fs/promises";
 import { join } from "node:path";
-import { translator } from "../i18n/translate.ts";
+import { zerosBackupRefusalText } from "../i18n/outcomes/zero-backup-words.ts";
+import { said, saidBy } from "../i18n/said.ts";
 import {
-  type BackupProblem,
   createZerosBackup,
   parseZerosBackup,
   serializeZerosBackup,
@@ -17,7 +17,6 @@ import {
 } from "../protocol/zeros-backup.ts";
 import { CliError } from "./errors.ts";
 import { cliMessages } from "./messages.ts";
-import { said } from "./said.ts";
 
 export interface BackupSource {
   serialNumber: string;
@@ -102,16 +101,6 @@ export function unreadable(path: string, e: unknown): CliError {
   return new CliError("file-unreadable", said(cliMessages, "cli.file.unreadable", { path, why: String(e) }));
 }
 
-/** In Korean, what is wrong with a backup file, by the problem the protocol found (its English says more). */
-const BACKUP_PROBLEM_TEXT = {
-  "not-json": "cli.zerosFile.notJson",
-  "wrong-format": "cli.zerosFile.wrongFormat",
-  "wrong-version": "cli.zerosFile.wrongVersion",
-  "wrong-count": "cli.zerosFile.wrongCount",
-  "out-of-range": "cli.zerosFile.outOfRange",
-  invalid: "cli.zerosFile.invalid",
-} as const satisfies Readonly<Record<BackupProblem, string>>;
-
 /** Reads and checks a backup file (zod schema and the ±15 rule); a refusal says what is wrong. */
 export async function readBackupFile(path: string): Promise<ZerosBackup> {
   let text: string;
@@ -122,8 +111,11 @@ export async function readBackupFile(path: string): Promise<ZerosBackup> {
   }
   const parsed = parseZerosBackup(text);
   if (!parsed.ok) {
-    const ko = translator(cliMessages, "ko")(BACKUP_PROBLEM_TEXT[parsed.problem], { path });
-    throw new CliError(`backup-${parsed.problem}`, { en: `${path}: ${parsed.message}`, ko });
+    const reason = saidBy((l) => zerosBackupRefusalText(parsed, l));
+    throw new CliError(
+      `backup-${parsed.problem}`,
+      said(cliMessages, "cli.zerosFile.refused", { path, reason }),
+    );
   }
   return parsed.backup;
 }

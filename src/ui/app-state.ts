@@ -1,4 +1,5 @@
 import type { Locale } from "../i18n/locale.ts";
+import type { Said } from "../i18n/said.ts";
 import type { ClassState } from "./features/class/state.ts";
 import type { ConnectionState, KnownPort } from "./features/connection/state.ts";
 import { initialConnection } from "./features/connection/state.ts";
@@ -69,8 +70,11 @@ export interface AppState {
   log: LogViewState;
   /** The outcome of Stop or Limp, shown in the top bar beside Stop (so it is seen however far down the page). */
   stopNotice?: Notice;
-  /** "Limp…" was pressed: the top bar asks "hold the robot" before any servo goes passive. */
-  limpAsked?: boolean;
+  /**
+   * "Limp…" was pressed: the top bar asks "hold the robot" (this warning, the outcome catalogue's, loaded with
+   * Limp's other sentences) before any servo goes passive.
+   */
+  limpAsked?: Said;
   /** Motion files opened in the Motions view (kept across connections: they are files on this computer). */
   motionFiles?: MotionFilesState;
   /** Uploads, runs and sounds of this connection. */

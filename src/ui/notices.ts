@@ -1,6 +1,6 @@
 import type { RbcErrorCode } from "../device/errors.ts";
 import type { Locale } from "../i18n/locale.ts";
-import { type Said, wordOf, wordsOf } from "./said.ts";
+import { type Said, wordOf, wordsOf } from "../i18n/said.ts";
 
 /**
  * The panel's notices (a sentence of what happened, its tone, its detail) and the names of the operations under

@@ -1,4 +1,5 @@
 import type { ClientState, LogEntry, RbcClient } from "../device/index.ts";
+import { inEveryLanguage, said } from "../i18n/said.ts";
 import type { SerialPortLike } from "../link/index.ts";
 import { type Clock, realClock } from "../shared/clock.ts";
 import type { ServoBus } from "../sim/sim-servos.ts";
@@ -25,7 +26,6 @@ import {
 import type { PacketLog } from "./features/log/index.ts";
 import type { ShelfStorage } from "./features/shelf/index.ts";
 import { uiMessages } from "./messages.ts";
-import { inEveryLanguage, said } from "./said.ts";
 import { Scope } from "./scope.ts";
 import { choosePort, describePort, linkKindOf, webSerial } from "./serial-ports.ts";
 import type { Store } from "./store.ts";

@@ -1,11 +1,19 @@
 import type { StopActivityResult, StopFound } from "../device/index.ts";
 import type { ParamArgs } from "../i18n/catalogue.ts";
 import type { Locale } from "../i18n/locale.ts";
+import { limpStoppedMotionFirstText } from "../i18n/outcomes/device.ts";
+import { type LimpFacts, limpResultText, limpWarningText } from "../i18n/outcomes/limp-words.ts";
 import { noReplyCauseText } from "../i18n/outcomes/run-words.ts";
 import { stopOutcomeMessages } from "../i18n/outcomes/stop-messages.ts";
+import {
+  playStoppedText,
+  type StoppedMotion,
+  stoppedMotionDetailText,
+  stoppedMotionText,
+} from "../i18n/outcomes/stop-words.ts";
+import { inEveryLanguage, type LocalText, type Said, said, saidBy } from "../i18n/said.ts";
 import { formatMilliseconds, formatSeconds } from "../i18n/units.ts";
 import { type AppState, type Notice, noticeOf } from "./app-state.ts";
-import { inEveryLanguage, type LocalText, type Said, said, saidText } from "./said.ts";
 import { stopMessages } from "./stop-messages.ts";
 
 /**
@@ -39,16 +47,6 @@ export function stoppingNotice(state: AppState, now: number): Notice {
   return noticeOf("info", state.locale, [what]);
 }
 
-/** Where tethered play stopped, and how far it got. */
-function playStopped(play: NonNullable<StopActivityResult["tetheredPlay"]>): Said {
-  const { framesSent: sent, totalFrames: total, lastFrame } = play;
-  if (!lastFrame) return say("stop.outcome.playNotStarted");
-  const frame = String(lastFrame.frame);
-  return lastFrame.scene < 0
-    ? say("stop.outcome.playStoppedTransition", { frame, sent, total })
-    : say("stop.outcome.playStoppedScene", { scene: String(lastFrame.scene), frame, sent, total });
-}
-
 /** Plain sentences, and their technical detail (shown one click away). */
 interface Worded {
   said: Said[];
@@ -76,7 +74,7 @@ function foundWorded(found: StopFound): Worded {
       return {
         said: [
           said(stopOutcomeMessages, "outcome.stop.busyUnconfirmed", { wait }),
-          saidText(inEveryLanguage((l) => noReplyCauseText(found.noReply, l))),
+          saidBy((l) => noReplyCauseText(found.noReply, l)),
         ],
         more: [said(stopOutcomeMessages, "outcome.stop.busyUnconfirmed.detail")],
       };
@@ -93,28 +91,21 @@ function foundWorded(found: StopFound): Worded {
   }
 }
 
-/** How a motion this panel started ended when Stop sent 7: the plain sentence and the 7/07 detail. */
-function motionWorded(motion: NonNullable<StopActivityResult["motion"]>): Worded {
-  const number = { motion: String(motion.number) };
-  switch (motion.outcome) {
-    case "stopped":
-      return {
-        said: [say("stop.outcome.motionStopped")],
-        more: [say("stop.outcome.motionStopped.detail", number)],
-      };
-    case "ended-then-posture":
-      return {
-        said: [say("stop.outcome.motionEnded")],
-        more: [say("stop.outcome.motionEnded.detail", number)],
-      };
-    case "posture":
-      return { said: [say("stop.outcome.posture")], more: [say("stop.outcome.posture.detail")] };
-    case "unconfirmed":
-      return {
-        said: [say("stop.outcome.motionUnconfirmed")],
-        more: [say("stop.outcome.motionUnconfirmed.detail", number)],
-      };
-  }
+/**
+ * How a motion this panel started ended when Stop sent 7: the outcome catalogue's sentence (which `rbc run` says
+ * on Ctrl-C too), what to do next in the panel's terms, and the 7/07 detail.
+ */
+function motionWorded(motion: StoppedMotion): Worded {
+  const next =
+    motion.outcome === "stopped"
+      ? [say("stop.outcome.straighten")]
+      : motion.outcome === "unconfirmed"
+        ? [say("stop.outcome.holdHint")]
+        : [];
+  return {
+    said: [saidBy((l) => stoppedMotionText(motion, l)), ...next],
+    more: [saidBy((l) => stoppedMotionDetailText(motion, l))],
+  };
 }
 
 /**
@@ -141,7 +132,8 @@ export function stopOutcome(result: StopActivityResult, limp: boolean, locale: L
     more.push(...worded.more);
     unsure ||= result.motion.outcome === "unconfirmed";
   }
-  if (result.tetheredPlay) parts.push(playStopped(result.tetheredPlay));
+  const play = result.tetheredPlay;
+  if (play) parts.push(saidBy((l) => playStoppedText(play, l)));
   if (result.leftDirectMode) {
     parts.push(limp ? say("stop.outcome.leftServoControlLimp") : say("stop.outcome.leftServoControl"));
   } else if (result.servoMovesDropped && !result.tetheredPlay) {
@@ -167,14 +159,19 @@ export function limpingNotice(locale: Locale): Notice {
   return noticeOf("warning", locale, [say("stop.limping")]);
 }
 
-/** What Limp made passive: every servo confirmed, or which did not answer. */
-export function limpNotice(result: { confirmed: number[]; silent: number[] }, locale: Locale): Notice {
-  const { confirmed, silent } = result;
-  return silent.length === 0
-    ? noticeOf("warning", locale, [say("stop.limpDone", { count: confirmed.length })])
-    : noticeOf("danger", locale, [
-        say("stop.limpPartial", { confirmed: confirmed.length, silent: silent.join(", ") }),
-      ]);
+/**
+ * What Limp made passive (every servo confirmed, or which did not answer), after the motion started elsewhere it
+ * ended first, if any: the outcome catalogue's sentences, which `rbc limp` says too.
+ */
+export function limpNotice(result: LimpFacts & { stoppedMotionFirst?: boolean }, locale: Locale): Notice {
+  const first = result.stoppedMotionFirst ? [saidBy(limpStoppedMotionFirstText)] : [];
+  const said = [...first, saidBy((l) => limpResultText(result, l))];
+  return noticeOf(result.silent.length === 0 ? "warning" : "danger", locale, said);
+}
+
+/** "Hold the robot: every servo will go passive …", the question before Limp (`rbc limp` says it too). */
+export function limpWarningSaid(): Said {
+  return saidBy(limpWarningText);
 }
 
 export function limpFailedSaid(): Said {

@@ -1,6 +1,7 @@
 import { readFileSync } from "node:fs";
 import { describe, expect, it } from "vitest";
 import { RbcUploadError } from "../../src/device/errors.ts";
+import { wordsOf } from "../../src/i18n/said.ts";
 import { MOTION_AREA_BYTES, memoryFootprint } from "../../src/protocol/catalog.ts";
 import { motionImage } from "../../src/protocol/motion-image.ts";
 import { readRbm } from "../../src/protocol/rbm.ts";
@@ -13,7 +14,6 @@ import { checkPack } from "../../src/ui/features/class/pack-check.ts";
 import { packVerdict } from "../../src/ui/features/class/result-words.ts";
 import { classOf, type PackFile } from "../../src/ui/features/class/state.ts";
 import { memoryBackupStorage } from "../../src/ui/features/zeros/backup-store.ts";
-import { wordsOf } from "../../src/ui/said.ts";
 import { createStore } from "../../src/ui/store.ts";
 
 /**

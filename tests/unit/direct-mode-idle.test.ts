@@ -175,7 +175,7 @@ describe("rbc limp during a motion (in process, the demo robot)", () => {
     expect(r.code, r.stderr).toBe(0);
     expect(r.stdout).toBe(
       "A motion started elsewhere was playing: it was ended with 7 first (the robot answered 07), then the servos were made limp.\n" +
-        "All 16 servos confirmed passive. Hold the robot: it cannot stand on its own.\n",
+        "Limp: all 16 servos confirmed passive. Hold the robot, it cannot stand on its own now.\n",
     );
     // The trace: 7 out, its 07 back, and only then 0x10 and the passive commands (§5 example for id 12).
     const trace = r.stderr;

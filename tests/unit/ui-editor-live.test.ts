@@ -1,4 +1,5 @@
 import { afterEach, beforeAll, describe, expect, it } from "vitest";
+import { type Said, wordOf } from "../../src/i18n/said.ts";
 import {
   addScene,
   type Motion,
@@ -50,7 +51,6 @@ import {
   TEACH_IN_QUESTION,
 } from "../../src/ui/features/editor/teach-in-model.ts";
 import { PacketLog } from "../../src/ui/features/log/packet-log.ts";
-import { type Said, wordOf } from "../../src/ui/said.ts";
 import { Session } from "../../src/ui/session.ts";
 import { SIMULATED_CLOCK } from "../../src/ui/simulated-clock.ts";
 import { createStore } from "../../src/ui/store.ts";

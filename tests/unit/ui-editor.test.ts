@@ -1,5 +1,6 @@
 import { readFileSync } from "node:fs";
 import { afterEach, beforeEach, describe, expect, it, vi } from "vitest";
+import { said, wordOf } from "../../src/i18n/said.ts";
 import { translator } from "../../src/i18n/translate.ts";
 import {
   addScene,
@@ -54,7 +55,6 @@ import {
   limpNotice,
   readNotice,
 } from "../../src/ui/features/editor/teach-in-model.ts";
-import { said, wordOf } from "../../src/ui/said.ts";
 import { tabAfterKey } from "../../src/ui/tabs-keyboard.ts";
 import { motionRefusal as refused } from "../support/motion-refusal.ts";
 

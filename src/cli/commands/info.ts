@@ -1,4 +1,5 @@
 import { RbcTimeoutError } from "../../device/errors.ts";
+import { robotFactText } from "../../i18n/outcomes/robot-facts.ts";
 import { busyNowText } from "../../i18n/outcomes/stop-words.ts";
 import { translator } from "../../i18n/translate.ts";
 import { ACTION_AREA_BYTES, MOTION_AREA_BYTES, platformName } from "../../protocol/catalog.ts";
@@ -70,12 +71,12 @@ export const infoCommand: CommandDef = {
     const known = !platformName(platform).startsWith("unknown");
     const rows: Array<readonly [string, string]> = [
       [t("cmd.info.firmware"), firmware],
-      [t("cmd.info.serialNumber"), serialNumber ?? t("cmd.info.serialNotReported")],
+      [robotFactText("serialNumber", locale), serialNumber ?? t("cmd.info.serialNotReported")],
       [
         t("cmd.info.platform"),
         known ? `${platformName(platform)} (${platform})` : platformWords(platform, locale),
       ],
-      [t("cmd.info.errorCode"), errorCodeWords(errorCode, locale)],
+      [robotFactText("errorCode", locale), errorCodeWords(errorCode, locale)],
       [
         t("cmd.info.freeMemory"),
         freeMotion === undefined || freeAction === undefined

@@ -8,6 +8,9 @@ import {
 } from "../../device/index.ts";
 import type { Locale } from "../../i18n/locale.ts";
 import { nothingSentText } from "../../i18n/outcomes/device.ts";
+import { sceneFrameText, sceneText } from "../../i18n/outcomes/motion/position-words.ts";
+import { playStoppedText } from "../../i18n/outcomes/stop-words.ts";
+import { inEveryLanguage, said, saidBy, saidText } from "../../i18n/said.ts";
 import { translator } from "../../i18n/translate.ts";
 import { formatSeconds } from "../../i18n/units.ts";
 import {
@@ -27,7 +30,6 @@ import { CliError, EXIT, errorLine, UsageError } from "../errors.ts";
 import { COMMAND_HELP } from "../help/command-help.ts";
 import { cliMessages } from "../messages.ts";
 import type { Output } from "../output.ts";
-import { said, saidBy, saidEach } from "../said.ts";
 import { issueLines, issuesJson } from "../upload-report.ts";
 import { unreadable } from "../zeros-files.ts";
 import { commandMessages } from "./messages.ts";
@@ -73,7 +75,7 @@ function scenesText({ from, to }: Range, doc: Motion, locale: Locale): string {
   if (from === 0 && to === doc.scenes.length - 1)
     return t("cmd.play.allScenes", { total: String(doc.scenes.length) });
   return from === to
-    ? t("cmd.play.oneScene", { scene: String(from) })
+    ? sceneText(from, locale)
     : t("cmd.play.someScenes", { from: String(from), to: String(to) });
 }
 
@@ -85,7 +87,7 @@ function frameWords(frame: { scene: number; frame: number }, locale: Locale): st
   const t = translator(commandMessages, locale);
   return frame.scene < 0
     ? t("cmd.play.transitionFrame", { frame: String(frame.frame) })
-    : t("cmd.play.sceneFrame", { scene: String(frame.scene), frame: String(frame.frame) });
+    : sceneFrameText(frame.scene, frame.frame, locale);
 }
 
 /** Reads and checks the file; nothing is opened or sent when it is wrong. */
@@ -228,9 +230,12 @@ export const playCommand: CommandDef = {
     } catch (e) {
       if (!(e instanceof MotionError)) throw e;
       // The motion core's reason is English; in Korean the sentence says the file cannot be played.
-      const words = saidEach(commandMessages, "cmd.play.refused", (l) => [
-        { file: basename(file), reason: l === "en" ? e.message : t("cmd.play.refusedWhy") },
-      ]);
+      const words = said(commandMessages, "cmd.play.refused", {
+        file: basename(file),
+        reason: inEveryLanguage((l) =>
+          l === "en" ? e.message : translator(commandMessages, l)("cmd.play.refusedWhy"),
+        ),
+      });
       throw new CliError("motion-refused", words);
     }
     const validation = motionIssues(doc);
@@ -254,7 +259,7 @@ export const playCommand: CommandDef = {
     if (real && !values.yes && !env.stdin.isTTY) {
       throw new CliError(
         "confirmation-required",
-        saidEach(commandMessages, "cmd.play.needsYes", (l) => [{ warning: moveWarning(l) }]),
+        said(commandMessages, "cmd.play.needsYes", { warning: inEveryLanguage(moveWarning) }),
       );
     }
 
@@ -281,7 +286,7 @@ export const playCommand: CommandDef = {
     } catch (e) {
       env.setExitNote(undefined);
       if (e instanceof TetheredPlayError) {
-        const words = { en: e.message, ko: `${errorLine(e, "ko")} ${playHoldsText(e, "ko")}` };
+        const words = saidText({ en: e.message, ko: `${errorLine(e, "ko")} ${playHoldsText(e, "ko")}` });
         throw new CliError(e.code, words, EXIT.failed, {
           framesSent: e.framesSent,
           totalFrames: e.totalFrames,
@@ -307,13 +312,7 @@ export const playCommand: CommandDef = {
       maxLateMs: Math.round(result.maxLateMs),
     };
     if (result.outcome === "stopped") {
-      const held = result.lastFrame
-        ? t("cmd.play.stoppedAfter", {
-            sent: String(result.framesSent),
-            total: String(result.totalFrames),
-            frame: frameWords(result.lastFrame, locale),
-          })
-        : t("cmd.play.stoppedBefore");
+      const held = `${playStoppedText(result, locale)} ${t("cmd.play.nothingPassive")}`;
       env.out.note(`rbc: ${t("cmd.interruptedBecause", { what: held })}`);
       env.out.result({ ok: false, ...json, error: { code: "interrupted", message: "Interrupted." } });
       return EXIT.interrupted;

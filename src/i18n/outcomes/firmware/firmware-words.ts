@@ -168,6 +168,11 @@ export function firmwareResultText(
   return r.resends > 0 ? `${updated} ${t("outcome.firmware.resent", { count: r.resends })}` : updated;
 }
 
+/** After an update the robot has restarted: Basic posture before other motions. */
+export function firmwareRestartedText(locale: Locale): string {
+  return translator(messages, locale)("outcome.firmware.afterUpdate");
+}
+
 const HEX = {
   "too-large": "outcome.hex.tooLarge",
   "no-records": "outcome.hex.noRecords",

@@ -1,9 +1,9 @@
+import { said } from "../../../i18n/said.ts";
 import { noticeOf } from "../../app-state.ts";
 import { CLASS_SLOT } from "../../class-stop.ts";
 import type { AppContext } from "../../context.ts";
 import { downloadTextFile } from "../../download-file.ts";
 import { focusSoon } from "../../focus.ts";
-import { said } from "../../said.ts";
 import { choosePort, describePort, webSerial } from "../../serial-ports.ts";
 import { escapeTakenElsewhere } from "../../shell/escape.ts";
 import { refreshKnownPorts } from "../connection/index.ts";

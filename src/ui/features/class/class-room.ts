@@ -1,10 +1,10 @@
 import type { RbcClient } from "../../../device/rbc-client.ts";
+import { said } from "../../../i18n/said.ts";
 import type { SerialPortLike } from "../../../link/web-serial-transport.ts";
 import type { Clock } from "../../../shared/clock.ts";
 import { type AppState, noticeOf } from "../../app-state.ts";
 import { failureNotice } from "../../failure-notice.ts";
 import { createRbcClient } from "../../robot-link.ts";
-import { said } from "../../said.ts";
 import type { Controller } from "../../scope.ts";
 import type { Store } from "../../store.ts";
 import { panelShelfKey, type StoredUpload } from "../shelf/index.ts";

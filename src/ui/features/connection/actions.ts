@@ -1,8 +1,8 @@
+import { said } from "../../../i18n/said.ts";
 import { type AppState, noticeOf } from "../../app-state.ts";
 import { stopClassRobots } from "../../class-stop.ts";
 import type { AppContext } from "../../context.ts";
 import { focusSoon } from "../../focus.ts";
-import { said } from "../../said.ts";
 import { forgetPort, grantedPorts, webSerial } from "../../serial-ports.ts";
 import type { Store } from "../../store.ts";
 import { connectionMessages } from "./messages.ts";
@@ -90,7 +90,7 @@ export async function stopActivity(ctx: AppContext): Promise<void> {
   const stopping = store.get();
   // Whether every servo was limp before: Stop's leave sequence moves no servo (a 7 it sends clears the flag).
   const limp = stopping.connection.limp === true;
-  store.update({ limpAsked: false });
+  store.update({ limpAsked: undefined });
   const done = client.stopActivity().then(
     (result) => ({ result }),
     (error: unknown) => ({ error }),
@@ -110,15 +110,16 @@ export async function stopActivity(ctx: AppContext): Promise<void> {
  * "Limp…": asks first, in place (the robot falls unless someone holds it). The question takes the place of an
  * earlier Stop or Limp result, so the top bar says one thing at a time.
  */
-export function askLimp(ctx: AppContext): void {
+export async function askLimp(ctx: AppContext): Promise<void> {
   if (!ctx.session.current) return;
-  ctx.store.update({ limpAsked: true, stopNotice: undefined });
+  const warning = (await stopWords()).limpWarningSaid();
+  ctx.store.update({ limpAsked: warning, stopNotice: undefined });
   // Cancel first: Enter right after the question appears must not make the robot fall.
   focusSoon("cancel-limp");
 }
 
 export function cancelLimp(ctx: AppContext): void {
-  ctx.store.update({ limpAsked: false });
+  ctx.store.update({ limpAsked: undefined });
   focusSoon("limp-button");
 }
 
@@ -126,7 +127,7 @@ export function cancelLimp(ctx: AppContext): void {
 export async function limpAll(ctx: AppContext): Promise<void> {
   const { store, session } = ctx;
   const client = session.current;
-  store.update({ limpAsked: false });
+  store.update({ limpAsked: undefined });
   if (!client) return;
   const done = client.limp().then(
     (result) => ({ result }),

@@ -1,5 +1,7 @@
 import { html, nothing, type TemplateResult } from "lit-html";
 import type { Locale } from "../../../i18n/locale.ts";
+import { unknownPlatformText } from "../../../i18n/outcomes/robot-facts.ts";
+import { type Said, wordOf } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { platformName } from "../../../protocol/platform.ts";
 import { formatFirmware } from "../../../shared/format.ts";
@@ -14,9 +16,7 @@ import type { ConnectionState } from "./state.ts";
 
 /** The platform byte as the top bar says it: HUNO, DINO, DOGY, PF2, or "unknown (9)". */
 function platformWord(t: ConnectionTranslator, platform: number): string {
-  return platform >= 1 && platform <= 4
-    ? platformName(platform)
-    : t("connection.status.platformUnknown", { platform: String(platform) });
+  return platform >= 1 && platform <= 4 ? platformName(platform) : unknownPlatformText(platform, t.locale);
 }
 
 /** The words of the connection state, as the top bar (and screen readers) say them. */
@@ -91,14 +91,14 @@ export function topBar(ctx: ViewContext): TemplateResult {
                 aria-haspopup="dialog"
                 aria-expanded=${ctx.state.limpAsked ? "true" : "false"}
                 title=${t("connection.limpTitle")}
-                @click=${() => askLimp(ctx)}
+                @click=${() => void askLimp(ctx)}
               >
                 ${t("connection.limpAsk")}
               </button>
             </div>`
           : nothing
       }
-      ${connected && ctx.state.limpAsked ? limpQuestion(ctx, t) : nothing}
+      ${connected && ctx.state.limpAsked ? limpQuestion(ctx, t, ctx.state.limpAsked) : nothing}
       ${stopResult(ctx)}
     </header>
   `;
@@ -146,7 +146,7 @@ function stopResult(ctx: ViewContext): TemplateResult {
  * however far down it was): every servo goes passive and a standing robot falls. Escape or
  * Cancel closes the question (Escape never makes a servo limp); the safe choice is the one focused first.
  */
-function limpQuestion(ctx: ViewContext, t: ConnectionTranslator): TemplateResult {
+function limpQuestion(ctx: ViewContext, t: ConnectionTranslator, warning: Said): TemplateResult {
   const onKey = (e: KeyboardEvent) => {
     if (e.key !== "Escape") return;
     e.preventDefault();
@@ -161,7 +161,7 @@ function limpQuestion(ctx: ViewContext, t: ConnectionTranslator): TemplateResult
       aria-describedby="limp-text"
       @keydown=${onKey}
     >
-      <p id="limp-title"><strong>${t("connection.limpQuestion")}</strong></p>
+      <p id="limp-title"><strong>${wordOf(warning, ctx.state.locale)}</strong></p>
       <p id="limp-text" class="small">${t("connection.limpExplain")}</p>
       <div class="actions">
         <button type="button" class="btn" id="cancel-limp" @click=${() => cancelLimp(ctx)}>${t("connection.cancel")}</button>

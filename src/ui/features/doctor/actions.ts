@@ -1,6 +1,6 @@
 import type { ScanResult } from "../../../device/servo-doctor/index.ts";
+import { type Said, said } from "../../../i18n/said.ts";
 import type { AppContext } from "../../context.ts";
-import { type Said, said } from "../../said.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
 import { stopActivity } from "../connection/index.ts";
 import { doctorMessages } from "./messages.ts";

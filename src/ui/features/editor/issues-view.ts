@@ -1,4 +1,5 @@
 import { html, nothing, type TemplateResult } from "lit-html";
+import { errorCountText, warningCountText } from "../../../i18n/outcomes/rbm/check-summary.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { asRbm, type Motion } from "../../../motion/index.ts";
 import type { RbmIssue, RbmValidation } from "../../../protocol/rbm-validate.ts";
@@ -70,8 +71,8 @@ export function issuesCard(ctx: ViewContext, doc: Motion, check: RbmValidation):
           ? html`<p class="check-ok" data-testid="editor-check">${t("editor.check.clean")}</p>`
           : html`<p class="small" data-testid="editor-check">
               ${t("editor.check.summary", {
-                errors: t("editor.count.errors", { count: errors.length }),
-                warnings: t("editor.count.warnings", { count: warnings.length }),
+                errors: errorCountText(errors.length, t.locale),
+                warnings: warningCountText(warnings.length, t.locale),
               })}
             </p>`
       }

@@ -5,15 +5,15 @@
  */
 import { RbcCancelledError, RbcDisconnectedError, RbcNotConnectedError } from "../../../device/errors.ts";
 import { TetheredPlayError } from "../../../device/tethered-play.ts";
+import { errorSaid } from "../../../i18n/error-said.ts";
 import type { Locale } from "../../../i18n/locale.ts";
+import { said } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { type Motion, MotionError } from "../../../motion/index.ts";
 import { type Notice, noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { technicalDetail } from "../../error-text.ts";
-import { errorSaid } from "../../failure-notice.ts";
 import { focusSoon } from "../../focus.ts";
-import { said } from "../../said.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
 import { servosTaken, stopActivity } from "../connection/index.ts";
 import type { EditorHost } from "./host.ts";

@@ -5,6 +5,8 @@
  * next to the control it came from. What the state says (a refusal, an undo step's name, a notice) is kept as
  * data and worded when drawn, so it follows a language switch.
  */
+
+import { type Said, said } from "../../../i18n/said.ts";
 import {
   commit,
   createHistory,
@@ -15,7 +17,6 @@ import {
   undo,
 } from "../../../motion/index.ts";
 import type { Notice } from "../../notices.ts";
-import { type Said, said } from "../../said.ts";
 import type { Store } from "../../store.ts";
 import type { BrokenDraft, DraftSummary } from "./drafts.ts";
 import { type EditorKey, editorMessages } from "./messages.ts";

@@ -1,4 +1,5 @@
 import { html, nothing, type TemplateResult } from "lit-html";
+import { errorCountText, warningCountText } from "../../../i18n/outcomes/rbm/check-summary.ts";
 import { translator } from "../../../i18n/translate.ts";
 import type { Motion } from "../../../motion/index.ts";
 import type { RbmValidation } from "../../../protocol/rbm-validate.ts";
@@ -47,8 +48,8 @@ function tabMark(
       const warnings = check.warnings.length;
       if (errors + warnings === 0) return nothing;
       const spoken = [
-        errors > 0 ? t("editor.count.errors", { count: errors }) : "",
-        warnings > 0 ? t("editor.count.warnings", { count: warnings }) : "",
+        errors > 0 ? errorCountText(errors, t.locale) : "",
+        warnings > 0 ? warningCountText(warnings, t.locale) : "",
       ]
         .filter((x) => x !== "")
         .join(", ");

@@ -3,12 +3,12 @@
  * reads, torque on); "End teach-in" holds first, then leaves direct mode.
  */
 import { RbcCancelledError, RbcTimeoutError } from "../../../device/errors.ts";
+import { said } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { HUNO_SERVO_IDS } from "../../../protocol/servo-limits.ts";
 import { noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { errorNotice } from "../../error-text.ts";
-import { said } from "../../said.ts";
 import { servosTaken } from "../connection/index.ts";
 import { clampToSafe, DEFAULT_TORQUE } from "../servos/index.ts";
 import { liveOf, patchTeachIn, teachInOn } from "./live-state.ts";

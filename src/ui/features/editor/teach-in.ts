@@ -4,6 +4,8 @@
  * chosen servos is ever made passive; Stop (top bar) cancels what is queued and never makes a servo passive.
  */
 import { RbcCancelledError, RbcTimeoutError } from "../../../device/errors.ts";
+import { errorSaid } from "../../../i18n/error-said.ts";
+import { said } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { MotionError, PLATFORM_PF2, setPose } from "../../../motion/index.ts";
 import { HUNO_SERVO_IDS } from "../../../protocol/servo-limits.ts";
@@ -11,9 +13,7 @@ import type { SimulatedRbc } from "../../../sim/simulated-rbc.ts";
 import { noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { errorNotice, technicalDetail } from "../../error-text.ts";
-import { errorSaid } from "../../failure-notice.ts";
 import { focusSoon } from "../../focus.ts";
-import { said } from "../../said.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
 import type { EditorHost } from "./host.ts";
 import { type Limb, liveOf, patchTeachIn, sceneNumber, teachInOn } from "./live-state.ts";

@@ -1,7 +1,7 @@
 import { html, nothing, type TemplateResult } from "lit-html";
+import { wordOf } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { canRedo, canUndo, type Motion, redoLabel, undoLabel } from "../../../motion/index.ts";
-import { wordOf } from "../../said.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
 import { formatSeconds, restampOffer } from "../motions/index.ts";

@@ -1,8 +1,10 @@
 import { RbcError } from "../../../device/errors.ts";
 import { isHazardousMotion } from "../../../device/run-outcome.ts";
+import { errorSaid } from "../../../i18n/error-said.ts";
 import type { Locale } from "../../../i18n/locale.ts";
 import { builtInMotionName } from "../../../i18n/motion-names/built-in-motion-name.ts";
 import { soundOutcomeMessages } from "../../../i18n/outcomes/sound-messages.ts";
+import { inEveryLanguage, type LocalText, said } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
 import {
   BASIC_POSTURE_MOTION,
@@ -13,9 +15,8 @@ import {
 } from "../../../protocol/catalog.ts";
 import { type AppState, type Notice, noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
-import { errorNotice, errorSaid, technicalDetail } from "../../error-text.ts";
+import { errorNotice, technicalDetail } from "../../error-text.ts";
 import { focusSoon } from "../../focus.ts";
-import { inEveryLanguage, type LocalText, said } from "../../said.ts";
 import { remoteKeyWords } from "../shelf/index.ts";
 import { type MotionRun, motionsController } from "./controllers.ts";
 import { motionsMessages } from "./messages.ts";

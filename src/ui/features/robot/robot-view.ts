@@ -1,5 +1,6 @@
 import { html, nothing, type TemplateResult } from "lit-html";
 import { robotErrorTitle } from "../../../i18n/outcomes/robot-error.ts";
+import { robotFactText, unknownPlatformText } from "../../../i18n/outcomes/robot-facts.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { ACTION_AREA_BYTES, MOTION_AREA_BYTES, NO_ERROR } from "../../../protocol/catalog.ts";
 import { platformWarning } from "../../../protocol/plausibility.ts";
@@ -25,7 +26,7 @@ function platformText(t: RobotTranslator, platform: number): string {
     case 4:
       return t("robot.platformPf2");
     default:
-      return t("robot.platformUnknown", { platform: String(platform) });
+      return unknownPlatformText(platform, t.locale);
   }
 }
 
@@ -100,15 +101,15 @@ function render(ctx: ViewContext): TemplateResult {
           <dd class="num" data-testid="firmware">${c.firmware ? formatFirmware(c.firmware) : "—"}</dd>
         </div>
         <div>
-          <dt>${t("robot.serialNumber")}</dt>
-          <dd class="num" data-testid="serial-number">${c.serialNumber ?? t("robot.notReported")}</dd>
+          <dt>${robotFactText("serialNumber", t.locale)}</dt>
+          <dd class="num" data-testid="serial-number">${c.serialNumber ?? robotFactText("notReported", t.locale)}</dd>
         </div>
         <div>
           <dt>${t("robot.platform")}</dt>
           <dd>${c.platform === undefined ? "—" : platformText(t, c.platform)}</dd>
         </div>
         <div>
-          <dt>${t("robot.errorCode")}</dt>
+          <dt>${robotFactText("errorCode", t.locale)}</dt>
           <dd data-testid="error-code">${errorCodeLine(t, d.errorCode)}</dd>
         </div>
       </dl>

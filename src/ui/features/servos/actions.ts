@@ -1,12 +1,12 @@
 import { RbcError } from "../../../device/errors.ts";
 import type { ParamArgs } from "../../../i18n/catalogue.ts";
 import type { Locale } from "../../../i18n/locale.ts";
+import { type LocalText, type Said, said } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { type Notice, noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { failureNotice } from "../../failure-notice.ts";
 import { focusSoon } from "../../focus.ts";
-import { type LocalText, type Said, said } from "../../said.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
 import { servosTaken } from "../connection/index.ts";
 import { servosMessages } from "./messages.ts";

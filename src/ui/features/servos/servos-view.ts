@@ -1,11 +1,13 @@
+import { builtInMotionName } from "../../../i18n/motion-names/built-in-motion-name.ts";
+import { BASIC_POSTURE_MOTION } from "../../../protocol/catalog.ts";
 import "../../styles/tools.css";
 import { html, nothing, type TemplateResult } from "lit-html";
 import { live } from "lit-html/directives/live.js";
 import { jointName, sidesNote } from "../../../i18n/joint-names/joint-name.ts";
+import { wordOf } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { formatClockTime } from "../../format.ts";
 import { liveRobotPanel } from "../../robot3d/live-robot.ts";
-import { wordOf } from "../../said.ts";
 import { shellMessages } from "../../shell/messages.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
@@ -211,7 +213,7 @@ function controlCard(ctx: ViewContext, t: ServosTranslator): TemplateResult {
 function postureCard(ctx: ViewContext, t: ServosTranslator): TemplateResult {
   return html`
     <section class="card posture-card" aria-labelledby="posture-heading" data-testid="posture-card">
-      <h2 id="posture-heading" class="card-title">${t("servos.posture.title")}</h2>
+      <h2 id="posture-heading" class="card-title">${builtInMotionName(BASIC_POSTURE_MOTION, t.locale)}</h2>
       <p class="muted small">${t("servos.posture.intro", { count: SERVO_IDS.length })}</p>
       ${postureControls(ctx, t, controlsEnabled(ctx))}
     </section>

@@ -1,7 +1,7 @@
 import type { Locale } from "../../../i18n/locale.ts";
+import { type Said, said, wordOf } from "../../../i18n/said.ts";
 import { HUNO_BASIC_POSTURE, HUNO_SERVO_IDS, safeRange } from "../../../protocol/servo-limits.ts";
 import type { Notice } from "../../notices.ts";
-import { type Said, said, wordOf } from "../../said.ts";
 import type { Store } from "../../store.ts";
 import { servosMessages } from "./messages.ts";
 

@@ -1,9 +1,9 @@
 import { imageHash, type RobotShelf } from "../../../device/shelf.ts";
+import { inEveryLanguage, type Said, said } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { MOTION_AREA_BYTES } from "../../../protocol/catalog.ts";
 import { type AppState, type Notice, noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
-import { inEveryLanguage, type Said, said } from "../../said.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
 import { shelfMessages } from "./messages.ts";
 import {

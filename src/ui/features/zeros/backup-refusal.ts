@@ -1,27 +1,16 @@
-import type { KeysWithoutParams } from "../../../i18n/catalogue.ts";
 import type { Locale } from "../../../i18n/locale.ts";
-import { translator } from "../../../i18n/translate.ts";
+import { seeDetailText } from "../../../i18n/outcomes/device.ts";
+import { zerosBackupRefusalText } from "../../../i18n/outcomes/zero-backup-words.ts";
+import { inEveryLanguage, said } from "../../../i18n/said.ts";
 import { ZERO_COUNT, zeroProblems } from "../../../protocol/zeros.ts";
-import type { BackupProblem, ParsedBackup } from "../../../protocol/zeros-backup.ts";
+import type { ParsedBackup } from "../../../protocol/zeros-backup.ts";
 import { type Notice, noticeOf } from "../../app-state.ts";
-import { inEveryLanguage, said } from "../../said.ts";
 import { zerosMessages } from "./messages.ts";
 
 /**
  * A backup file the parser refused, as a notice. The parser (protocol/zeros-backup.ts, shared with the CLI)
  * explains in English; in Korean the panel says it from the parser's code, the English sentence one click away.
  */
-
-/** Why a backup file was refused, in Korean (the parser's English sentence becomes the detail). */
-const BACKUP_PROBLEM_TEXT: Readonly<
-  Record<Exclude<BackupProblem, "out-of-range">, KeysWithoutParams<typeof zerosMessages>>
-> = {
-  "not-json": "zeros.backupNotJson",
-  "wrong-format": "zeros.backupWrongFormat",
-  "wrong-version": "zeros.backupWrongVersion",
-  "wrong-count": "zeros.backupWrongCount",
-  invalid: "zeros.backupDamaged",
-};
 
 /** The servos whose zeros in a backup's text the robot would refuse ("5, 7"), or "" when none is found. */
 function refusedServos(text: string): string {
@@ -40,11 +29,10 @@ function refusedServos(text: string): string {
 
 /** Why the parser refused the file, in `locale`: its own sentence in English, a sentence from its code otherwise. */
 function reasonIn(text: string, parsed: Extract<ParsedBackup, { ok: false }>, locale: Locale): string {
-  if (locale === "en") return parsed.message;
-  const t = translator(zerosMessages, locale);
-  if (parsed.problem !== "out-of-range") return t(BACKUP_PROBLEM_TEXT[parsed.problem]);
-  const servos = refusedServos(text);
-  return servos ? t("zeros.backupOutOfRange", { servos }) : t("zeros.backupDamaged");
+  return zerosBackupRefusalText(parsed, locale, {
+    servos: refusedServos(text),
+    detailHint: seeDetailText(locale),
+  });
 }
 
 /**

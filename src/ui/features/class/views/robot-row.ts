@@ -1,4 +1,5 @@
 import { html, nothing, type TemplateResult } from "lit-html";
+import { robotFactText } from "../../../../i18n/outcomes/robot-facts.ts";
 import { MOTION_AREA_BYTES, NO_ERROR } from "../../../../protocol/catalog.ts";
 import { platformName } from "../../../../protocol/platform.ts";
 import { formatFirmware } from "../../../../shared/format.ts";
@@ -65,7 +66,7 @@ function zerosCell(t: ClassTranslator, r: ClassRobot, backup: ClassBackupChoice 
 
 function freeCell(t: ClassTranslator, r: ClassRobot): TemplateResult | string {
   if (r.freeMotion === undefined) return "—";
-  if (r.freeMotion === null) return t("class.fact.notReported");
+  if (r.freeMotion === null) return robotFactText("notReported", t.locale);
   return html`<span class="num">${t("class.fact.free", { free: r.freeMotion, size: MOTION_AREA_BYTES })}</span>`;
 }
 
@@ -161,8 +162,8 @@ export function robotRow(
     </div>
     <dl class="class-facts">
       <div><dt>${t("class.fact.firmware")}</dt><dd class="num">${firmware}</dd></div>
-      <div><dt>${t("class.fact.serial")}</dt><dd class="num mono">${r.serialNumber ?? (connected ? t("class.fact.notReported") : "—")}</dd></div>
-      <div><dt>${t("class.fact.error")}</dt><dd>${errorCell(t, r)}</dd></div>
+      <div><dt>${robotFactText("serialNumber", t.locale)}</dt><dd class="num mono">${r.serialNumber ?? (connected ? robotFactText("notReported", t.locale) : "—")}</dd></div>
+      <div><dt>${robotFactText("errorCode", t.locale)}</dt><dd>${errorCell(t, r)}</dd></div>
       <div><dt>${t("class.fact.freeMemory")}</dt><dd>${freeCell(t, r)}</dd></div>
       <div><dt>${t("class.fact.zeros")}</dt><dd data-testid="class-zeros">${zerosCell(t, r, backup)}</dd></div>
     </dl>

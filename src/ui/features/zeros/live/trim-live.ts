@@ -1,12 +1,12 @@
 import type { RbcClient, TetheredPlayResult } from "../../../../device/index.ts";
 import type { Locale } from "../../../../i18n/locale.ts";
+import { inEveryLanguage, type Said, wordOf } from "../../../../i18n/said.ts";
 import { ZERO_COUNT } from "../../../../protocol/zeros.ts";
 import { type AppState, type Notice, noticeOf, type RunningLabel } from "../../../app-state.ts";
 import type { AppContext } from "../../../context.ts";
 import { failureNotice } from "../../../failure-notice.ts";
 import { focusSoon } from "../../../focus.ts";
 import { formatDateTime } from "../../../format.ts";
-import { inEveryLanguage, type Said, wordOf } from "../../../said.ts";
 import { type Controller, controllerKey } from "../../../scope.ts";
 import type { Store } from "../../../store.ts";
 import { servosTaken, stopActivity } from "../../connection/index.ts";
