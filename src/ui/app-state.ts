@@ -16,7 +16,7 @@ import type { SensorsState } from "./features/sensors/state.ts";
 import type { ServosState } from "./features/servos/state.ts";
 import type { ZerosState } from "./features/zeros/state.ts";
 import { initialZeros } from "./features/zeros/state.ts";
-import { type Said, wordOf, wordsOf } from "./said.ts";
+import { type LocalText, type Said, wordOf, wordsOf } from "./said.ts";
 
 export type {
   ConnectionPhase,
@@ -85,6 +85,12 @@ export function runningWords(running: readonly RunningLabel[], locale: Locale): 
   return running.map((label) => (typeof label === "string" ? label : wordOf(label, locale)));
 }
 
+/** What Stop did on one robot of the page, named as the page names it (in every language). */
+export interface RobotStop {
+  robot: LocalText;
+  notice: Notice;
+}
+
 export interface AppState {
   /**
    * The language the panel speaks (chosen at start from the saved choice or the browser's languages; the
@@ -106,6 +112,11 @@ export interface AppState {
   log: LogViewState;
   /** The outcome of Stop or Limp, shown in the top bar beside Stop (so it is seen however far down the page). */
   stopNotice?: Notice;
+  /**
+   * Stop's outcome on each of the page's other robots (the Class view's), one line per robot, said in the top
+   * bar after the top-bar robot's `stopNotice` (`stopAll`, src/ui/stop-all.ts).
+   */
+  robotStops?: readonly RobotStop[];
   /** "Limp…" was pressed: the top bar asks "hold the robot" before any servo goes passive. */
   limpAsked?: boolean;
   /** Motion files opened in the Motions view (kept across connections: they are files on this computer). */

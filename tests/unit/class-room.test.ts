@@ -149,8 +149,15 @@ describe("the class of robots", () => {
     const running = room.runOnAll(12);
     await clock.advance(300);
     expect(demos.every((d) => d.sim.playingMotion === 12)).toBe(true);
-    await clock.run(Promise.all([room.stopAll(), running]));
+    const [stops] = await clock.run(Promise.all([room.stopAll(), running]));
     for (const d of demos) expect(d.sim.playingMotion).toBeUndefined();
+    // Each robot's Stop outcome comes back named, for the top bar to say one line per robot.
+    expect(stops.map((s) => [s.robot.en, s.robot.ko, s.notice.said?.[0]?.key])).toEqual([
+      ["Demo robot 1", "데모 로봇 1", "stop.outcome.motionStopped"],
+      ["Demo robot 2", "데모 로봇 2", "stop.outcome.motionStopped"],
+      ["Demo robot 3", "데모 로봇 3", "stop.outcome.motionStopped"],
+      ["Demo robot 4", "데모 로봇 4", "stop.outcome.motionStopped"],
+    ]);
     const words = rows().map((r) => wordsOf(r.result!.said!, "en"));
     for (const w of words) expect(w).toMatch(/Stopped by Stop|stopped at the end of its scene/);
   });

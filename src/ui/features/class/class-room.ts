@@ -1,7 +1,7 @@
 import type { RbcClient } from "../../../device/rbc-client.ts";
 import type { SerialPortLike } from "../../../link/web-serial-transport.ts";
 import type { Clock } from "../../../shared/clock.ts";
-import { type AppState, noticeOf } from "../../app-state.ts";
+import { type AppState, noticeOf, type RobotStop } from "../../app-state.ts";
 import { failureNotice } from "../../failure-notice.ts";
 import { createRbcClient } from "../../robot-link.ts";
 import { said } from "../../said.ts";
@@ -280,8 +280,8 @@ export class ClassRoom implements Controller {
   }
 
   /** Stop for every connected robot (7 to each one playing a motion); never Limp. */
-  async stopAll(): Promise<void> {
-    await stopEach(this, [...this.links.values()]);
+  async stopAll(): Promise<RobotStop[]> {
+    return stopEach(this, [...this.links.values()]);
   }
 
   /** Limp for every connected robot, after the view asked once (they fall unless held). */

@@ -4,7 +4,6 @@ import { focusSoon } from "../../focus.ts";
 import { said } from "../../said.ts";
 import { forgetPort, grantedPorts, webSerial } from "../../serial-ports.ts";
 import type { Store } from "../../store.ts";
-import { stopClassRobots } from "../class/stop-all.ts";
 import { connectionMessages } from "./messages.ts";
 import type { ConnectionState, RobotLabel } from "./state.ts";
 
@@ -77,13 +76,13 @@ export function disconnect(ctx: AppContext): void {
 }
 
 /**
- * Stop (the top bar's red button, and Escape when nothing else takes it): ends what the robot is doing and
- * keeps it standing (`RbcClient.stopActivity`). It never makes a servo passive: that is Limp. Stop is asked of
- * the robot first; its words load beside it (`stop-outcome.ts`, not in the first page load).
+ * Stop for the top-bar robot (the page's Stop, `stopAll` in src/ui/stop-all.ts, runs it beside the class
+ * robots' own): ends what the robot is doing and keeps it standing (`RbcClient.stopActivity`). It never makes a
+ * servo passive: that is Limp. Stop is asked of the robot first; its words load beside it (`stop-outcome.ts`,
+ * not in the first page load). The top bar says the outcome (`stopNotice`).
  */
-export async function stopActivity(ctx: AppContext): Promise<void> {
+export async function stopSessionRobot(ctx: AppContext): Promise<void> {
   const { store, session } = ctx;
-  void stopClassRobots(ctx);
   const client = session.current;
   if (!client) return;
   const now = session.clock.now();
@@ -178,5 +177,5 @@ export function servosTaken(ctx: AppContext): void {
 }
 
 export function dismissStopNotice(ctx: AppContext): void {
-  ctx.store.update({ stopNotice: undefined });
+  ctx.store.update({ stopNotice: undefined, robotStops: undefined });
 }

@@ -3,11 +3,12 @@ import type { Locale } from "../../../i18n/locale.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { platformName } from "../../../protocol/platform.ts";
 import { formatFirmware } from "../../../shared/format.ts";
-import { noticeText } from "../../app-state.ts";
+import { noticeText, type RobotStop, type Tone } from "../../app-state.ts";
 import { uiMessages } from "../../messages.ts";
 import { noticeDetail } from "../../shell/notice.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
-import { askLimp, cancelLimp, dismissStopNotice, limpAll, stopActivity } from "./actions.ts";
+import { anyRobotConnected, stopAll } from "../../stop-all.ts";
+import { askLimp, cancelLimp, dismissStopNotice, limpAll } from "./actions.ts";
 import { type ConnectionTranslator, connectionMessages } from "./messages.ts";
 import { robotName } from "./robot-name.ts";
 import type { ConnectionState } from "./state.ts";
@@ -73,28 +74,18 @@ export function topBar(ctx: ViewContext): TemplateResult {
         )}
       </div>
       ${
-        connected
+        anyRobotConnected(ctx.state)
           ? html`<div class="safety-buttons">
               <button
                 type="button"
                 class="btn btn--danger stop"
                 aria-keyshortcuts="Escape"
                 title=${t("connection.stopTitle")}
-                @click=${() => void stopActivity(ctx)}
+                @click=${() => void stopAll(ctx)}
               >
                 <span aria-hidden="true">■</span> ${t("connection.stop")} <kbd aria-hidden="true">Esc</kbd>
               </button>
-              <button
-                type="button"
-                id="limp-button"
-                class="btn limp"
-                aria-haspopup="dialog"
-                aria-expanded=${ctx.state.limpAsked ? "true" : "false"}
-                title=${t("connection.limpTitle")}
-                @click=${() => askLimp(ctx)}
-              >
-                ${t("connection.limpAsk")}
-              </button>
+              ${connected ? limpButton(ctx, t) : nothing}
             </div>`
           : nothing
       }
@@ -102,6 +93,21 @@ export function topBar(ctx: ViewContext): TemplateResult {
       ${stopResult(ctx)}
     </header>
   `;
+}
+
+/** Limp is the top-bar robot's (the Class view asks "Limp all…" for its own robots). */
+function limpButton(ctx: ViewContext, t: ConnectionTranslator): TemplateResult {
+  return html`<button
+    type="button"
+    id="limp-button"
+    class="btn limp"
+    aria-haspopup="dialog"
+    aria-expanded=${ctx.state.limpAsked ? "true" : "false"}
+    title=${t("connection.limpTitle")}
+    @click=${() => askLimp(ctx)}
+  >
+    ${t("connection.limpAsk")}
+  </button>`;
 }
 
 /**
@@ -112,6 +118,7 @@ export function topBar(ctx: ViewContext): TemplateResult {
  */
 function stopResult(ctx: ViewContext): TemplateResult {
   const n = ctx.state.stopNotice;
+  const stops = ctx.state.robotStops ?? [];
   const { locale } = ctx.state;
   const c = ctx.state.connection;
   // A robot found busy with a motion started elsewhere (docs/protocol.md §3.6): said with a Stop right there.
@@ -121,7 +128,7 @@ function stopResult(ctx: ViewContext): TemplateResult {
     busy
       ? html`<div class="notice notice--${busy.tone} banner-notice" data-testid="busy-banner">
           <p class="banner-text">${noticeText(busy, locale)}</p>
-          <button type="button" class="btn btn--danger" @click=${() => void stopActivity(ctx)}>
+          <button type="button" class="btn btn--danger" @click=${() => void stopAll(ctx)}>
             ${translator(connectionMessages, locale)("connection.stop")}
           </button>
         </div>`
@@ -130,15 +137,45 @@ function stopResult(ctx: ViewContext): TemplateResult {
     n
       ? html`<div class="notice notice--${n.tone} banner-notice">
           <div class="banner-text">
-            <p>${noticeText(n, locale)}</p>
+            <p>${stops.length > 0 && c.robot ? robotLead(robotName(c.robot, locale), locale) : nothing}${noticeText(n, locale)}</p>
             ${noticeDetail(n, locale)}
           </div>
-          <button type="button" class="btn btn--quiet" @click=${() => dismissStopNotice(ctx)}>
-            ${translator(connectionMessages, locale)("connection.dismiss")}
-          </button>
+          ${dismiss(ctx)}
         </div>`
       : nothing
-  }</div>`;
+  }${stops.length > 0 ? robotStopLines(ctx, stops) : nothing}</div>`;
+}
+
+function dismiss(ctx: ViewContext): TemplateResult {
+  return html`<button type="button" class="btn btn--quiet" @click=${() => dismissStopNotice(ctx)}>
+    ${translator(connectionMessages, ctx.state.locale)("connection.dismiss")}
+  </button>`;
+}
+
+/** "Demo robot 2:", before what Stop did on that robot. */
+function robotLead(name: string, locale: Locale): TemplateResult {
+  return html`<strong>${translator(connectionMessages, locale)("connection.stopRobot", { robot: name })}</strong> `;
+}
+
+const TONE_WEIGHT: Record<Tone, number> = { verified: 0, ok: 1, info: 2, warning: 3, danger: 4 };
+
+/** Stop's outcome on each robot of the Class view, one line each, in the tone of the most serious one. */
+function robotStopLines(ctx: ViewContext, stops: readonly RobotStop[]): TemplateResult {
+  const { locale } = ctx.state;
+  const tone = stops
+    .map((s) => s.notice.tone)
+    .reduce((worst, t) => (TONE_WEIGHT[t] > TONE_WEIGHT[worst] ? t : worst));
+  return html`<div class="notice notice--${tone} banner-notice" data-testid="robot-stops">
+    <div class="banner-text">
+      ${stops.map(
+        (
+          s,
+        ) => html`<p data-testid="robot-stop">${robotLead(s.robot[locale], locale)}${noticeText(s.notice, locale)}</p>
+          ${noticeDetail(s.notice, locale)}`,
+      )}
+    </div>
+    ${ctx.state.stopNotice ? nothing : dismiss(ctx)}
+  </div>`;
 }
 
 /**

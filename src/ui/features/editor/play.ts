@@ -15,7 +15,8 @@ import { errorSaid } from "../../failure-notice.ts";
 import { focusSoon } from "../../focus.ts";
 import { said } from "../../said.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
-import { servosTaken, stopActivity } from "../connection/actions.ts";
+import { stopAll } from "../../stop-all.ts";
+import { servosTaken } from "../connection/actions.ts";
 import type { EditorHost } from "./host.ts";
 import { liveOf, type PlayChoice, type PlayProgress, patchPlay, patchTeachIn } from "./live-state.ts";
 import { editorMessages } from "./messages.ts";
@@ -193,5 +194,5 @@ export async function confirmPlay(ctx: AppContext, host: EditorHost): Promise<vo
 /** The panel's Stop: the same as the top bar's (the robot holds the last frame; nothing goes limp). */
 export function stopPlay(ctx: AppContext): void {
   patchPlay(ctx.store, (x) => (x.running ? { running: { ...x.running, stopping: true } } : {}));
-  void stopActivity(ctx);
+  void stopAll(ctx);
 }

@@ -5,7 +5,7 @@ import type { Motion } from "../../../motion/index.ts";
 import { BASIC_POSTURE_MOTION } from "../../../protocol/catalog.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
-import { stopActivity } from "../connection/actions.ts";
+import { stopAll } from "../../stop-all.ts";
 import { connectionMessages } from "../connection/messages.ts";
 import { type MotionsTranslator, motionsMessages } from "../motions/messages.ts";
 import { motionsOf } from "../motions/state.ts";
@@ -54,7 +54,7 @@ function busyLine(ctx: ViewContext, reason: string, showStop: boolean): Template
     <span>${reason}</span>
     ${
       showStop
-        ? html`<button type="button" class="btn btn--danger" data-testid="editor-robot-stop" aria-keyshortcuts="Escape" @click=${() => void stopActivity(ctx)}>
+        ? html`<button type="button" class="btn btn--danger" data-testid="editor-robot-stop" aria-keyshortcuts="Escape" @click=${() => void stopAll(ctx)}>
             ${stop}
           </button>`
         : nothing

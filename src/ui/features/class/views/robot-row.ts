@@ -14,17 +14,11 @@ import {
   startNaming,
 } from "../actions.ts";
 import type { ClassTranslator } from "../messages.ts";
+import { robotTitle } from "../names.ts";
 import type { ClassBackupChoice, ClassRobot, ClassState } from "../state.ts";
 import { compareZeros } from "../zeros-check.ts";
 
 /** One robot of the class: a row on a wide screen, a card on a phone (class.css). */
-
-/** The name the teacher gave it, else "Demo robot 2" or its port. */
-export function robotTitle(t: ClassTranslator, c: ClassState, r: ClassRobot): string {
-  const given = r.serialNumber ? c.names[r.serialNumber] : undefined;
-  if (given) return given;
-  return r.demoNumber !== undefined ? t("class.demoName", { number: r.demoNumber }) : r.portLabel;
-}
 
 function phaseWords(t: ClassTranslator, r: ClassRobot): string {
   switch (r.phase) {

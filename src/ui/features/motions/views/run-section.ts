@@ -8,7 +8,7 @@ import { liveRobotPanel } from "../../../robot3d/live-robot.ts";
 import { nameWithBreaks } from "../../../shell/name-breaks.ts";
 import { liveNotice } from "../../../shell/notice.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
-import { stopActivity } from "../../connection/actions.ts";
+import { stopAll } from "../../../stop-all.ts";
 import { connectionMessages } from "../../connection/messages.ts";
 import { servosOf } from "../../servos/state.ts";
 import { shelfDropNotice, shelfRecordedNote } from "../../shelf/shelf-list.ts";
@@ -224,7 +224,7 @@ function busyWhy(ctx: ViewContext, reason: string): TemplateResult {
     <span>${reason}</span>
     ${
       elsewhere
-        ? html`<button type="button" class="btn btn--danger" data-testid="motions-busy-stop" aria-keyshortcuts="Escape" @click=${() => void stopActivity(ctx)}>
+        ? html`<button type="button" class="btn btn--danger" data-testid="motions-busy-stop" aria-keyshortcuts="Escape" @click=${() => void stopAll(ctx)}>
             ${stop}
           </button>`
         : nothing

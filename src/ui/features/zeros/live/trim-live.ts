@@ -8,8 +8,9 @@ import { focusSoon } from "../../../focus.ts";
 import { formatDateTime } from "../../../format.ts";
 import { inEveryLanguage, type Said, wordOf } from "../../../said.ts";
 import { type Controller, controllerKey } from "../../../scope.ts";
+import { stopAll } from "../../../stop-all.ts";
 import type { Store } from "../../../store.ts";
-import { servosTaken, stopActivity } from "../../connection/actions.ts";
+import { servosTaken } from "../../connection/actions.ts";
 import { LatestMoveSender } from "../../servos/move-sender.ts";
 import { checkDraft, toDraft } from "../editor.ts";
 import { patchZeros } from "../state.ts";
@@ -360,7 +361,7 @@ export function trimWriteEnded(ctx: AppContext): Said {
 
 /** Stop, offered beside a refusal (the robot is busy): the top bar's Stop. */
 export function stopFromTrim(ctx: AppContext): void {
-  void stopActivity(ctx);
+  void stopAll(ctx);
 }
 
 /** The sentence a lost link left for the page, worded for the next connection's view. */
