@@ -4,6 +4,7 @@ import { focusSoon } from "../../focus.ts";
 import { said } from "../../said.ts";
 import { forgetPort, grantedPorts, webSerial } from "../../serial-ports.ts";
 import type { Store } from "../../store.ts";
+import { busyElsewhere, isLimp } from "./activity.ts";
 import { connectionMessages } from "./messages.ts";
 import type { ConnectionState, RobotLabel } from "./state.ts";
 
@@ -87,8 +88,8 @@ export async function stopSessionRobot(ctx: AppContext): Promise<void> {
   if (!client) return;
   const now = session.clock.now();
   const stopping = store.get();
-  // Whether every servo was limp before: Stop's leave sequence moves no servo (a 7 it sends clears the flag).
-  const limp = stopping.connection.limp === true;
+  // Whether every servo was limp before: Stop's leave sequence moves no servo (a 7 it sends ends that).
+  const limp = isLimp(stopping.connection);
   store.update({ limpAsked: false });
   const done = client.stopActivity().then(
     (result) => ({ result }),
@@ -142,7 +143,6 @@ export async function limpAll(ctx: AppContext): Promise<void> {
   if (session.current === client) {
     // The robot is limp and someone is holding it: the next movement asks again.
     store.update((s) => ({ stopNotice: notice, acks: { ...s.acks, movement: false } }));
-    if (client.mode === "direct") setConnection(store, { limp: true });
   }
 }
 
@@ -158,7 +158,7 @@ export async function busyChanged(ctx: AppContext, busy: boolean): Promise<void>
   }
   const client = session.current;
   const words = await stopWords();
-  if (session.current === client && store.get().connection.busy) {
+  if (session.current === client && busyElsewhere(store.get().connection)) {
     setConnection(store, { busyNotice: words.busyNotice(store.get().locale) });
   }
 }
@@ -169,11 +169,6 @@ export async function busyChanged(ctx: AppContext, busy: boolean): Promise<void>
  */
 export function probeAfterConnect(ctx: AppContext): void {
   void ctx.session.current?.probeBusy().catch(() => {});
-}
-
-/** A servo was moved or the user took servo control: the servos are no longer all limp. */
-export function servosTaken(ctx: AppContext): void {
-  if (ctx.store.get().connection.limp) setConnection(ctx.store, { limp: false });
 }
 
 export function dismissStopNotice(ctx: AppContext): void {

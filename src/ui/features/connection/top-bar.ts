@@ -9,6 +9,7 @@ import { noticeDetail } from "../../shell/notice.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
 import { anyRobotConnected, stopAll } from "../../stop-all.ts";
 import { askLimp, cancelLimp, dismissStopNotice, limpAll } from "./actions.ts";
+import { busyElsewhere, isLimp } from "./activity.ts";
 import { type ConnectionTranslator, connectionMessages } from "./messages.ts";
 import { robotName } from "./robot-name.ts";
 import type { ConnectionState } from "./state.ts";
@@ -44,7 +45,7 @@ export function connectionSummary(c: ConnectionState, locale: Locale = "en"): st
       if (c.firmware) parts.push(t("connection.status.firmware", { version: formatFirmware(c.firmware) }));
       if (c.serialNumber) parts.push(t("connection.status.serialNumber", { serial: c.serialNumber }));
       if (c.mode === "direct") {
-        parts.push(c.limp ? t("connection.status.limp") : t("connection.status.servoControl"));
+        parts.push(isLimp(c) ? t("connection.status.limp") : t("connection.status.servoControl"));
       }
       return parts;
     }
@@ -122,7 +123,7 @@ function stopResult(ctx: ViewContext): TemplateResult {
   const { locale } = ctx.state;
   const c = ctx.state.connection;
   // A robot found busy with a motion started elsewhere (docs/protocol.md §3.6): said with a Stop right there.
-  const busy = c.phase === "connected" && c.busy ? c.busyNotice : undefined;
+  const busy = c.phase === "connected" && busyElsewhere(c) ? c.busyNotice : undefined;
   // No whitespace around the content: the empty region matches :empty and takes no room in the bar.
   return html`<div class="stop-banner" role="status" aria-live="assertive" data-testid="stop-banner">${
     busy

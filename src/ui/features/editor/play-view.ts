@@ -6,6 +6,7 @@ import { MotionError } from "../../../motion/index.ts";
 import { errorMessage } from "../../error-text.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
+import { playingMotion } from "../connection/activity.ts";
 import { jointName } from "../zeros/joints/joint-name.ts";
 import type { EditorHost } from "./host.ts";
 import { liveOf, type PlayChoice, type PlayRun, type PlayState, sceneNumber } from "./live-state.ts";
@@ -193,7 +194,7 @@ export function playPanel(ctx: ViewContext, host: EditorHost): TemplateResult {
   const teachBusy = live_.teach.busy !== undefined;
   const running = p.running !== undefined;
   const off = !connected || running || p.confirming !== undefined;
-  const busy = ctx.state.running.length > 0 || teachBusy || ctx.state.connection.playing !== undefined;
+  const busy = ctx.state.running.length > 0 || teachBusy || playingMotion(ctx.state.connection) !== undefined;
   const count = host.doc.scenes.length;
   return html`
     <section class="card live-panel" aria-labelledby="play-title" data-testid="play-panel">

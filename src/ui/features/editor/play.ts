@@ -16,7 +16,6 @@ import { focusSoon } from "../../focus.ts";
 import { said } from "../../said.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
 import { stopAll } from "../../stop-all.ts";
-import { servosTaken } from "../connection/actions.ts";
 import type { EditorHost } from "./host.ts";
 import { liveOf, type PlayChoice, type PlayProgress, patchPlay, patchTeachIn } from "./live-state.ts";
 import { editorMessages } from "./messages.ts";
@@ -184,8 +183,8 @@ export async function confirmPlay(ctx: AppContext, host: EditorHost): Promise<vo
   } finally {
     if (control.abort === abort) control.abort = undefined;
     if (last && session.current === client) {
-      // Every servo took a synchronised move: none is limp any more (teach-in's limp servos hold too).
-      servosTaken(ctx);
+      // Every servo took a synchronised move (the device's activity no longer says limp): teach-in's limp
+      // servos hold too.
       patchTeachIn(store, { passive: [] });
     }
   }

@@ -8,6 +8,7 @@ import { wordOf } from "../../said.ts";
 import { shellMessages } from "../../shell/messages.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
+import { isLimp, playingMotion } from "../connection/activity.ts";
 import { jointName, sidesNote } from "../zeros/joints/joint-name.ts";
 import {
   acknowledgeSafety,
@@ -194,7 +195,7 @@ function controlCard(ctx: ViewContext, t: ServosTranslator): TemplateResult {
         </div>
       </div>
       <p class="muted small" data-testid="servo-mode">
-        ${direct ? (c.limp ? t("servos.mode.limp") : t("servos.mode.on")) : t("servos.mode.off")}
+        ${direct ? (isLimp(c) ? t("servos.mode.limp") : t("servos.mode.on")) : t("servos.mode.off")}
         ${s.readAt ? t("servos.positionsReadAt", { time: formatClockTime(s.readAt) }) : ""}
       </p>
       ${liveNotice(s.notice, t("servos.resultLabel"), ctx.state.locale)}
@@ -265,7 +266,7 @@ function liveRobot(ctx: ViewContext, t: ServosTranslator): TemplateResult {
     demo: ctx.session.demoSim,
     known: { positions: s.positions, at: s.positionsAt },
     robotZeros: ctx.state.zeros.stored,
-    motionPlaying: ctx.state.connection.playing !== undefined,
+    motionPlaying: playingMotion(ctx.state.connection) !== undefined,
     textVersion: t("servos.textVersion"),
     locale: ctx.state.locale,
   });

@@ -9,6 +9,7 @@ import { nameWithBreaks } from "../../../shell/name-breaks.ts";
 import { liveNotice } from "../../../shell/notice.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
 import { stopAll } from "../../../stop-all.ts";
+import { isPlaying, playingMotion, playingSound } from "../../connection/activity.ts";
 import { connectionMessages } from "../../connection/messages.ts";
 import { servosOf } from "../../servos/state.ts";
 import { shelfDropNotice, shelfRecordedNote } from "../../shelf/shelf-list.ts";
@@ -207,7 +208,7 @@ function liveRobot(ctx: ViewContext, t: MotionsTranslator): TemplateResult {
     demo: ctx.session.demoSim,
     known: { positions: servos.positions, at: servos.positionsAt },
     robotZeros: s.zeros.stored,
-    motionPlaying: s.connection.playing !== undefined || motionsOf(s).run !== undefined,
+    motionPlaying: playingMotion(s.connection) !== undefined || motionsOf(s).run !== undefined,
     textVersion: t("motions.run.textVersion"),
   });
 }
@@ -217,8 +218,7 @@ function liveRobot(ctx: ViewContext, t: MotionsTranslator): TemplateResult {
  * the client saw it start), as in the Editor: Stop is the one request the robot takes then.
  */
 function busyWhy(ctx: ViewContext, reason: string): TemplateResult {
-  const c = ctx.state.connection;
-  const elsewhere = c.busy !== undefined || c.playing !== undefined;
+  const elsewhere = isPlaying(ctx.state.connection);
   const stop = translator(connectionMessages, ctx.state.locale)("connection.stop");
   return html`<p class="muted small robot-busy" data-testid="busy-why">
     <span>${reason}</span>
@@ -282,7 +282,7 @@ export function soundSection(ctx: ViewContext): TemplateResult {
   const c = s.connection;
   const m = motionsOf(s);
   const busyReason = robotBusyReason(s);
-  const sounding = c.sounding;
+  const sounding = playingSound(c);
   // The sound's own length, as on its button: the client's expectedMs also counts the RBC's 200 ms reply delay.
   const length = sounding ? (soundLengthMs(sounding.sound) ?? sounding.expectedMs) : 0;
   const elapsed = sounding ? Math.min(ctx.session.clock.now() - sounding.startedAt, length) : 0;

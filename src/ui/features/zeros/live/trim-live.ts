@@ -10,7 +10,7 @@ import { inEveryLanguage, type Said, wordOf } from "../../../said.ts";
 import { type Controller, controllerKey } from "../../../scope.ts";
 import { stopAll } from "../../../stop-all.ts";
 import type { Store } from "../../../store.ts";
-import { servosTaken } from "../../connection/actions.ts";
+import { isLimp } from "../../connection/activity.ts";
 import { LatestMoveSender } from "../../servos/move-sender.ts";
 import { checkDraft, toDraft } from "../editor.ts";
 import { patchZeros } from "../state.ts";
@@ -94,7 +94,6 @@ class TrimLive implements Controller {
     }
     try {
       const status = await client.servos.move(id, position, TRIM_TORQUE);
-      servosTaken(this.ctx);
       store.update((s) => {
         const live = s.zeros.live;
         if (!live) return {};
@@ -140,7 +139,7 @@ class TrimLive implements Controller {
     if (live?.phase !== "on") return;
     const c = s.connection;
     if (c.phase !== "connected") return; // `dispose` (the connection's scope ends first) keeps what it left.
-    if (c.limp) {
+    if (isLimp(c)) {
       this.end();
       patchZeros(this.ctx.store, {
         live: undefined,
@@ -273,7 +272,6 @@ export async function startTrimLive(ctx: AppContext): Promise<void> {
     });
     return;
   }
-  servosTaken(ctx);
   const pose = zeroPose(stored);
   patchZeros(store, {
     live: { phase: "on", positions: [...pose], moved: [] },
