@@ -192,6 +192,5 @@ export async function confirmPlay(ctx: AppContext, host: EditorHost): Promise<vo
 
 /** The panel's Stop: the same as the top bar's (the robot holds the last frame; nothing goes limp). */
 export function stopPlay(ctx: AppContext): void {
-  patchPlay(ctx.store, (x) => (x.running ? { running: { ...x.running, stopping: true } } : {}));
   void stopAll(ctx);
 }

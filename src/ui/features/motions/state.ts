@@ -93,8 +93,6 @@ export interface RunningMotion {
   expectedMs?: number;
   /** Robot-clock ms (the session's clock) when it was sent. */
   startedAt: number;
-  /** "Stop motion" was pressed: 7 was sent and the robot finishes the current scene. */
-  stopping?: boolean;
 }
 
 export interface MotionsState {

@@ -9,7 +9,7 @@ import { nameWithBreaks } from "../../../shell/name-breaks.ts";
 import { liveNotice } from "../../../shell/notice.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
 import { stopAll } from "../../../stop-all.ts";
-import { isPlaying, playingMotion, playingSound } from "../../connection/activity.ts";
+import { isPlaying, isStopping, playingMotion, playingSound } from "../../connection/activity.ts";
 import { connectionMessages } from "../../connection/messages.ts";
 import { servosOf } from "../../servos/state.ts";
 import { shelfDropNotice, shelfRecordedNote } from "../../shelf/shelf-list.ts";
@@ -80,11 +80,13 @@ export function runningPanel(ctx: ViewContext, t: MotionsTranslator, run: Runnin
   const known = run.expectedMs !== undefined;
   const expected = run.expectedMs ?? 0;
   const named = { number: run.number, name: run.name };
+  // "Stop motion" sent 7 (the robot finishes the current scene), or the page's Stop is under way.
+  const stopping = isStopping(ctx.state.connection);
   const label = t("motions.run.progressLabel", { number: run.number });
   return html`
     <div class="progress-block running" data-testid="running-motion">
       <p>
-        <strong class="long-text">${run.stopping ? t("motions.run.stopping", named) : t("motions.run.running", named)}</strong>
+        <strong class="long-text">${stopping ? t("motions.run.stopping", named) : t("motions.run.running", named)}</strong>
         <span class="num muted">
           ${
             known
@@ -105,7 +107,7 @@ export function runningPanel(ctx: ViewContext, t: MotionsTranslator, run: Runnin
         run.number === BASIC_POSTURE_MOTION
           ? html`<p class="muted small">${t("motions.run.limpSentence")}</p>`
           : html`<div class="actions">
-              <button type="button" class="btn" data-testid="stop-motion" ?disabled=${run.stopping} @click=${() => void stopMotion(ctx)}>
+              <button type="button" class="btn" data-testid="stop-motion" ?disabled=${stopping} @click=${() => void stopMotion(ctx)}>
                 ${t("motions.run.stop")}
               </button>
             </div>
@@ -150,7 +152,7 @@ function runInPlace(ctx: ViewContext, t: MotionsTranslator, group: Group): Templ
     : m.confirmMove !== undefined
       ? `confirm-${m.confirmMove}`
       : m.run
-        ? `run-${m.run.number}-${m.run.startedAt}${m.run.stopping ? "-stopping" : ""}`
+        ? `run-${m.run.number}-${m.run.startedAt}${isStopping(s.connection) ? "-stopping" : ""}`
         : m.runNotice
           ? `notice-${m.runNotice.text}`
           : undefined;
