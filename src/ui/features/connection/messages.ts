@@ -101,7 +101,6 @@ export const connectionMessages = defineMessages({
 
   "connection.stop": { en: "Stop", ko: "정지" },
   "connection.dismiss": { en: "Dismiss", ko: "닫기" },
-  "connection.stopRobot": { en: "{robot}:", ko: "{robot}:" },
   "connection.stopTitle": {
     en: "End what the robot is doing; it keeps standing (Escape)",
     ko: "로봇이 하던 일을 끝내요. 로봇은 선 채로 있어요 (Esc)",

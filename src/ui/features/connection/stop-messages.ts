@@ -9,6 +9,7 @@ import { defineMessages } from "../../../i18n/catalogue.ts";
  * (docs/protocol.md §3.1, §3.6).
  */
 export const stopMessages = defineMessages({
+  "stop.robot": { en: "{robot}:", ko: "{robot}:" },
   "stop.stopping": { en: "Stopping…", ko: "정지하는 중…" },
   "stop.stopping.sound": {
     en: "Stopping: a sound is playing and the robot takes nothing until it ends; the sound ends in about {time}.",

@@ -3,12 +3,12 @@ import type { Locale } from "../../../i18n/locale.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { platformName } from "../../../protocol/platform.ts";
 import { formatFirmware } from "../../../shared/format.ts";
-import { noticeText, type RobotStop, type Tone } from "../../app-state.ts";
+import { lazyPart } from "../../lazy-part.ts";
 import { uiMessages } from "../../messages.ts";
-import { noticeDetail } from "../../shell/notice.ts";
+import { redraw } from "../../shell/actions.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
 import { anyRobotConnected, stopAll } from "../../stop-all.ts";
-import { askLimp, cancelLimp, dismissStopNotice, limpAll } from "./actions.ts";
+import { askLimp, cancelLimp, limpAll } from "./actions.ts";
 import { busyElsewhere, isLimp } from "./activity.ts";
 import { type ConnectionTranslator, connectionMessages } from "./messages.ts";
 import { robotName } from "./robot-name.ts";
@@ -114,70 +114,22 @@ function limpButton(ctx: ViewContext, t: ConnectionTranslator): TemplateResult {
 /**
  * What Stop or Limp did, inside the top bar, which stays at the top of the window: it is seen however far down
  * the page someone was when they pressed Stop (or Escape). The region is always there (empty while there is
- * nothing to say), so screen readers announce the result; it is worded when drawn, in the language of the
- * moment.
+ * nothing to say), so screen readers announce the result. What it says is drawn by `stop-banner.ts`, loaded with
+ * the first thing to say (a Stop, a Limp, a robot found busy), not with the first page.
  */
 function stopResult(ctx: ViewContext): TemplateResult {
-  const n = ctx.state.stopNotice;
-  const stops = ctx.state.robotStops ?? [];
-  const { locale } = ctx.state;
-  const c = ctx.state.connection;
-  // A robot found busy with a motion started elsewhere (docs/protocol.md §3.6): said with a Stop right there.
-  const busy = c.phase === "connected" && busyElsewhere(c) ? c.busyNotice : undefined;
+  const s = ctx.state;
+  const c = s.connection;
+  const busy = c.phase === "connected" && busyElsewhere(c) !== undefined && c.busyNotice !== undefined;
+  const part =
+    busy || s.stopNotice || (s.robotStops?.length ?? 0) > 0 ? banner.get(() => redraw(ctx.store)) : undefined;
   // No whitespace around the content: the empty region matches :empty and takes no room in the bar.
   return html`<div class="stop-banner" role="status" aria-live="assertive" data-testid="stop-banner">${
-    busy
-      ? html`<div class="notice notice--${busy.tone} banner-notice" data-testid="busy-banner">
-          <p class="banner-text">${noticeText(busy, locale)}</p>
-          <button type="button" class="btn btn--danger" @click=${() => void stopAll(ctx)}>
-            ${translator(connectionMessages, locale)("connection.stop")}
-          </button>
-        </div>`
-      : nothing
-  }${
-    n
-      ? html`<div class="notice notice--${n.tone} banner-notice">
-          <div class="banner-text">
-            <p>${stops.length > 0 && c.robot ? robotLead(robotName(c.robot, locale), locale) : nothing}${noticeText(n, locale)}</p>
-            ${noticeDetail(n, locale)}
-          </div>
-          ${dismiss(ctx)}
-        </div>`
-      : nothing
-  }${stops.length > 0 ? robotStopLines(ctx, stops) : nothing}</div>`;
+    part ? part.stopBanner(ctx) : nothing
+  }</div>`;
 }
 
-function dismiss(ctx: ViewContext): TemplateResult {
-  return html`<button type="button" class="btn btn--quiet" @click=${() => dismissStopNotice(ctx)}>
-    ${translator(connectionMessages, ctx.state.locale)("connection.dismiss")}
-  </button>`;
-}
-
-/** "Demo robot 2:", before what Stop did on that robot. */
-function robotLead(name: string, locale: Locale): TemplateResult {
-  return html`<strong>${translator(connectionMessages, locale)("connection.stopRobot", { robot: name })}</strong> `;
-}
-
-const TONE_WEIGHT: Record<Tone, number> = { verified: 0, ok: 1, info: 2, warning: 3, danger: 4 };
-
-/** Stop's outcome on each robot of the Class view, one line each, in the tone of the most serious one. */
-function robotStopLines(ctx: ViewContext, stops: readonly RobotStop[]): TemplateResult {
-  const { locale } = ctx.state;
-  const tone = stops
-    .map((s) => s.notice.tone)
-    .reduce((worst, t) => (TONE_WEIGHT[t] > TONE_WEIGHT[worst] ? t : worst));
-  return html`<div class="notice notice--${tone} banner-notice" data-testid="robot-stops">
-    <div class="banner-text">
-      ${stops.map(
-        (
-          s,
-        ) => html`<p data-testid="robot-stop">${robotLead(s.robot[locale], locale)}${noticeText(s.notice, locale)}</p>
-          ${noticeDetail(s.notice, locale)}`,
-      )}
-    </div>
-    ${ctx.state.stopNotice ? nothing : dismiss(ctx)}
-  </div>`;
-}
+const banner = lazyPart(() => import("./stop-banner.ts"));
 
 /**
  * Limp asks first, in place in the top bar (which stays at the top of the window, so the page keeps its place
