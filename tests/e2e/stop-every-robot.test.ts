@@ -6,7 +6,8 @@ import "./rbc-test-globals.ts";
 /**
  * One Stop for every robot of the page (issue 31 item 2): with only Class view robots connected (no robot in the
  * top bar), the top bar still offers Stop; the Stop button and Escape (from a button) stop each class robot, and
- * the top bar says each robot's outcome on a line of its own. Stop never makes a servo passive.
+ * the top bar says each robot's outcome on a line of its own; with a robot in the top bar as well, its outcome is
+ * named too. Stop never makes a servo passive.
  */
 
 const app = useApp();
@@ -37,11 +38,12 @@ async function runOnBoth(page: Page, n: number): Promise<void> {
   await expect.poll(async () => (await sims(page)).map((s) => s.playing)).toEqual([n, n]);
 }
 
-/** The top bar's line for each robot, once both have their outcome. */
-async function stopLines(page: Page): Promise<string[]> {
+/** Waits until the top bar's lines, one per class robot, say `expected` (a line still shown from before does not). */
+async function expectStopLines(page: Page, expected: string[]): Promise<void> {
   const lines = page.getByTestId("robot-stop");
-  await expect.poll(() => lines.count(), { timeout: 20_000 }).toBe(2);
-  return (await lines.allTextContents()).map(squash);
+  await expect
+    .poll(async () => (await lines.allTextContents()).map(squash), { timeout: 20_000 })
+    .toEqual(expected);
 }
 
 const STOPPED =
@@ -74,7 +76,7 @@ describe("Stop reaches every robot of the page, also with no robot in the top ba
         .waitFor({ timeout: 20_000 });
     await runOnBoth(page, 2);
     await stop.click();
-    expect(await stopLines(page)).toEqual([`Demo robot 1: ${STOPPED}`, `Demo robot 2: ${STOPPED}`]);
+    await expectStopLines(page, [`Demo robot 1: ${STOPPED}`, `Demo robot 2: ${STOPPED}`]);
     await expect.poll(async () => (await sims(page)).map((s) => s.playing)).toEqual([undefined, undefined]);
     expect((await sims(page)).map((s) => s.passive)).toEqual([0, 0]);
 
@@ -84,9 +86,18 @@ describe("Stop reaches every robot of the page, also with no robot in the top ba
     await runOnBoth(page, 2);
     await row(page, 0).getByRole("button", { name: /^Name/ }).focus();
     await page.keyboard.press("Escape");
-    expect(await stopLines(page)).toEqual([`Demo robot 1: ${STOPPED}`, `Demo robot 2: ${STOPPED}`]);
+    await expectStopLines(page, [`Demo robot 1: ${STOPPED}`, `Demo robot 2: ${STOPPED}`]);
     await expect.poll(async () => (await sims(page)).map((s) => s.playing)).toEqual([undefined, undefined]);
     expect((await sims(page)).map((s) => s.passive)).toEqual([0, 0]);
+
+    // With a robot in the top bar too, Stop reaches all three, and the top bar names each one's outcome.
+    await page.getByRole("link", { name: "Robot", exact: true }).click();
+    await page.getByRole("button", { name: "Try the demo robot" }).click();
+    await page.getByTestId("device-card").waitFor();
+    await stop.click();
+    const idle = "The robot answered at once: it is idle, nothing to stop. Nothing was sent.";
+    await expectStopLines(page, [`Demo robot 1: ${idle}`, `Demo robot 2: ${idle}`]);
+    await expectText(page.getByTestId("stop-banner").locator("p").first(), `Demo robot: ${idle}`);
     await context.close();
   });
 });
