@@ -7,6 +7,7 @@ import { initialState, runningWords } from "./app-state.ts";
 import { answerBusyQueries, busySentence } from "./busy.ts";
 import type { AppContext } from "./context.ts";
 import type { DemoRobotOptions } from "./demo-robot.ts";
+import { robotTask } from "./features/class/state.ts";
 import { refreshKnownPorts } from "./features/connection/actions.ts";
 import { routeFromHash, ViewLoader } from "./router.ts";
 import { webSerial } from "./serial-ports.ts";
@@ -119,7 +120,7 @@ function startApp(root: HTMLElement, locale: Locale): void {
   window.addEventListener("beforeunload", (e) => {
     const state = store.get();
     // The Class view's robots run their own work (an upload, a Run) beside the top bar's robot.
-    const classBusy = state.classRoom?.robots.some((r) => r.task !== undefined) ?? false;
+    const classBusy = state.classRoom?.robots.some((r) => robotTask(r) !== undefined) ?? false;
     if (state.running.length > 0 || classBusy) e.preventDefault();
   });
 

@@ -18,7 +18,7 @@ import { tidyName } from "./names.ts";
 import { checkPack, type PackCheck } from "./pack-check.ts";
 import { uploadPackTo } from "./pack-upload.ts";
 import { uploadSummary } from "./result-words.ts";
-import { type ClassRobot, classOf, type PackFile, patchClass, patchRobot } from "./state.ts";
+import { type ClassRobot, classOf, type PackFile, patchClass, patchRobot, robotTask } from "./state.ts";
 import { limpEach, runOnEach, stopEach } from "./together.ts";
 
 /**
@@ -73,7 +73,7 @@ export class ClassRoom implements Controller {
   /** The rows' links that group actions go to: selected, connected and not busy with something else. */
   chosenLinks(): RobotLink[] {
     return classOf(this.store.get())
-      .robots.filter((r) => r.selected && r.phase === "connected" && r.task === undefined)
+      .robots.filter((r) => r.selected && r.phase === "connected" && robotTask(r) === undefined)
       .flatMap((r) => {
         const link = this.links.get(r.id);
         return link ? [link] : [];
@@ -155,6 +155,7 @@ export class ClassRoom implements Controller {
       client.stateChanges.on((s) => {
         if (s.mode === "disconnected" && s.reason && this.links.get(id) === link) this.lost(link, s.reason);
       }),
+      client.activityChanges.on((activity) => patchRobot(this.store, id, { activity })),
     );
     try {
       const identity = await client.identify(await client.connect());
@@ -164,6 +165,7 @@ export class ClassRoom implements Controller {
         serialNumber: identity.serialNumber,
         firmware: identity.firmware,
         platform: identity.platform,
+        activity: client.activity,
       });
       await this.readFacts(id);
     } catch (e) {
@@ -204,6 +206,7 @@ export class ClassRoom implements Controller {
     this.forget(link);
     patchRobot(this.store, link.id, (r) => ({
       phase: "lost",
+      activity: undefined,
       selected: r.selected,
       problem: noticeOf("danger", this.store.get().locale, [said(classMessages, "class.lost")], reason),
     }));

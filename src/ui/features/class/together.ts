@@ -119,12 +119,11 @@ export async function limpEach(room: ClassRoom, links: readonly RobotLink[]): Pr
   await Promise.all(
     links.map(async (link) => {
       link.abort?.abort();
-      patchRobot(store, link.id, { task: "limp" });
       try {
         const result = await link.client.limp();
-        patchRobot(store, link.id, { task: undefined, result: limpResultNotice(result, store.get().locale) });
+        patchRobot(store, link.id, { result: limpResultNotice(result, store.get().locale) });
       } catch (e) {
-        patchRobot(store, link.id, { task: undefined, result: failedNotice("limp", e, store.get().locale) });
+        patchRobot(store, link.id, { result: failedNotice("limp", e, store.get().locale) });
       }
     }),
   );

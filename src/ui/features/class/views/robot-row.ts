@@ -15,7 +15,7 @@ import {
 } from "../actions.ts";
 import type { ClassTranslator } from "../messages.ts";
 import { robotTitle } from "../names.ts";
-import type { ClassBackupChoice, ClassRobot, ClassState } from "../state.ts";
+import { type ClassBackupChoice, type ClassRobot, type ClassState, robotTask } from "../state.ts";
 import { compareZeros } from "../zeros-check.ts";
 
 /** One robot of the class: a row on a wide screen, a card on a phone (class.css). */
@@ -34,7 +34,7 @@ function phaseWords(t: ClassTranslator, r: ClassRobot): string {
 }
 
 function taskWords(t: ClassTranslator, r: ClassRobot): string | undefined {
-  switch (r.task) {
+  switch (robotTask(r)) {
     case "run":
       return t("class.task.run");
     case "limp":
@@ -171,7 +171,7 @@ export function robotRow(
             </button>`
           : nothing
       }
-      <button type="button" class="btn btn--small btn--quiet" ?disabled=${!connected || r.task !== undefined} @click=${() => refreshRobot(ctx, r.id)}>
+      <button type="button" class="btn btn--small btn--quiet" ?disabled=${!connected || robotTask(r) !== undefined} @click=${() => refreshRobot(ctx, r.id)}>
         ${t("class.readAgain")}<span class="sr-only"> — ${title}</span>
       </button>
       <button type="button" class="btn btn--small btn--quiet" @click=${() => removeRobot(ctx, r.id)}>

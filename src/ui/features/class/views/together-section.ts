@@ -18,7 +18,7 @@ import {
   uploadNow,
 } from "../actions.ts";
 import type { ClassTranslator } from "../messages.ts";
-import { type ClassState, chosenRobots } from "../state.ts";
+import { type ClassState, chosenRobots, robotTask } from "../state.ts";
 
 /**
  * Together: "Run on all" (the same motion number to every selected robot in the same tick, the skew shown),
@@ -85,7 +85,7 @@ function question(ctx: ViewContext, t: ClassTranslator, c: ClassState): Template
 export function togetherSection(ctx: ViewContext, t: ClassTranslator, c: ClassState): TemplateResult {
   const { locale } = ctx.state;
   const chosen = chosenRobots(c);
-  const busy = chosen.some((r) => r.task !== undefined);
+  const busy = chosen.some((r) => robotTask(r) !== undefined);
   const connected = c.robots.some((r) => r.phase === "connected");
   const choices = motionChoices(ctx, c);
   const last = c.lastRun;
