@@ -7,7 +7,7 @@ import { initialState, runningWords } from "./app-state.ts";
 import { answerBusyQueries, busySentence } from "./busy.ts";
 import type { AppContext } from "./context.ts";
 import type { DemoRobotOptions } from "./demo-robot.ts";
-import { robotTask } from "./features/class/state.ts";
+import { robotTask } from "./features/class/robot-task.ts";
 import { refreshKnownPorts } from "./features/connection/actions.ts";
 import { routeFromHash, ViewLoader } from "./router.ts";
 import { webSerial } from "./serial-ports.ts";

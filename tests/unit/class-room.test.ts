@@ -11,7 +11,8 @@ import type { ClassDemoRobot } from "../../src/ui/features/class/demo-robots.ts"
 import { memoryNameStorage } from "../../src/ui/features/class/names.ts";
 import { checkPack } from "../../src/ui/features/class/pack-check.ts";
 import { packVerdict } from "../../src/ui/features/class/result-words.ts";
-import { classOf, type PackFile, robotTask } from "../../src/ui/features/class/state.ts";
+import { robotTask } from "../../src/ui/features/class/robot-task.ts";
+import { classOf, type PackFile } from "../../src/ui/features/class/state.ts";
 import { memoryBackupStorage } from "../../src/ui/features/zeros/backup-store.ts";
 import { wordsOf } from "../../src/ui/said.ts";
 import { createStore } from "../../src/ui/store.ts";

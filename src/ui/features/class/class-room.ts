@@ -18,7 +18,8 @@ import { tidyName } from "./names.ts";
 import { checkPack, type PackCheck } from "./pack-check.ts";
 import { uploadPackTo } from "./pack-upload.ts";
 import { uploadSummary } from "./result-words.ts";
-import { type ClassRobot, classOf, type PackFile, patchClass, patchRobot, robotTask } from "./state.ts";
+import { robotTask } from "./robot-task.ts";
+import { type ClassRobot, classOf, type PackFile, patchClass, patchRobot } from "./state.ts";
 import { limpEach, runOnEach, stopEach } from "./together.ts";
 
 /**

@@ -130,11 +130,6 @@ export function patchRobot(
   }));
 }
 
-/** What the robot's row says it is busy with: the view's own task, else a Limp under way (its activity). */
-export function robotTask(r: ClassRobot): ClassRobotTask | "limp" | undefined {
-  return r.task ?? (r.activity?.halt?.kind === "limp" ? "limp" : undefined);
-}
-
 /** The robots a group action goes to: selected and connected. */
 export function chosenRobots(c: ClassState): ClassRobot[] {
   return c.robots.filter((r) => r.selected && r.phase === "connected");

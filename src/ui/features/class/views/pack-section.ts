@@ -16,7 +16,8 @@ import {
 } from "../actions.ts";
 import type { ClassTranslator } from "../messages.ts";
 import type { CheckedPackFile, PackCheck } from "../pack-check.ts";
-import { type ClassState, chosenRobots, robotTask } from "../state.ts";
+import { robotTask } from "../robot-task.ts";
+import { type ClassState, chosenRobots } from "../state.ts";
 
 /** One motion pack to all: the .rbm files, checked once, and the upload to every selected robot. */
 

@@ -15,7 +15,8 @@ import {
 } from "../actions.ts";
 import type { ClassTranslator } from "../messages.ts";
 import { robotTitle } from "../names.ts";
-import { type ClassBackupChoice, type ClassRobot, type ClassState, robotTask } from "../state.ts";
+import { robotTask } from "../robot-task.ts";
+import type { ClassBackupChoice, ClassRobot, ClassState } from "../state.ts";
 import { compareZeros } from "../zeros-check.ts";
 
 /** One robot of the class: a row on a wide screen, a card on a phone (class.css). */

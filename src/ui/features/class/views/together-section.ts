@@ -18,7 +18,8 @@ import {
   uploadNow,
 } from "../actions.ts";
 import type { ClassTranslator } from "../messages.ts";
-import { type ClassState, chosenRobots, robotTask } from "../state.ts";
+import { robotTask } from "../robot-task.ts";
+import { type ClassState, chosenRobots } from "../state.ts";
 
 /**
  * Together: "Run on all" (the same motion number to every selected robot in the same tick, the skew shown),
