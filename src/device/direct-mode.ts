@@ -32,10 +32,13 @@ export class DirectMode {
   // Private fields (not TypeScript `private`): the host is the client's conversation, which must stay out of reach.
   readonly #host: DirectModeHost;
   readonly #raw: RawChannel;
+  /** Told when a move or a synchronised move is sent (a servo is driven: it is no longer limp). */
+  readonly #driven: (() => void) | undefined;
 
-  constructor(host: DirectModeHost, raw: RawChannel) {
+  constructor(host: DirectModeHost, raw: RawChannel, driven?: () => void) {
     this.#host = host;
     this.#raw = raw;
+    this.#driven = driven;
   }
 
   /** The safe range of servo `id` (docs/protocol.md §5 for 0-15; other ids get the full 0-254). */
@@ -48,7 +51,13 @@ export class DirectMode {
     if (!Number.isInteger(position) || position < min || position > max) {
       return Promise.reject(new RbcInvalidArgumentError(servoRangeText(id, { min, max }, position, "en")));
     }
-    return this.ask(id, () => wckMove(id, position, torque), `move servo ${id} to ${position}`);
+    return this.ask(
+      id,
+      () => wckMove(id, position, torque),
+      `move servo ${id} to ${position}`,
+      undefined,
+      true,
+    );
   }
 
   read(id: number): Promise<ServoStatus> {
@@ -103,6 +112,7 @@ export class DirectMode {
     });
     return this.#host.exclusive(async () => {
       this.requireDirect();
+      this.#driven?.();
       await this.#raw.exchange(wckSyncMove(positions, speed), {
         need: 0,
         timeoutMs: 0,
@@ -139,7 +149,13 @@ export class DirectMode {
     return { confirmed, silent };
   }
 
-  private ask(id: number, build: () => Uint8Array, note: string, epoch?: number): Promise<ServoStatus> {
+  private ask(
+    id: number,
+    build: () => Uint8Array,
+    note: string,
+    epoch?: number,
+    drives = false,
+  ): Promise<ServoStatus> {
     let packet: Uint8Array;
     try {
       packet = build();
@@ -150,6 +166,7 @@ export class DirectMode {
     }
     return this.#host.exclusive(async () => {
       this.requireDirect();
+      if (drives) this.#driven?.();
       const reply = await this.#raw.exchange(packet, {
         need: 2,
         timeoutMs: this.#host.timeouts.quickMs,

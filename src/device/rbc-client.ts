@@ -80,7 +80,8 @@ export class RbcClient {
   constructor(transport: Transport, options: RbcClientOptions = {}) {
     const c = new RbcConnection(transport, options);
     this.#c = c;
-    this.servos = new DirectMode(c, c.raw);
+    // A servo driven in direct mode is no longer limp (the activity machine's `limp`).
+    this.servos = new DirectMode(c, c.raw, () => this.#core.activity.servosDriven());
     this.servoBus = new ServoBus(c, c.raw);
     this.#core = createClientCore(c, this.servos);
   }
@@ -467,5 +468,10 @@ export class RbcClient {
    */
   get activity(): ActivitySnapshot {
     return this.#core.activity.snapshot;
+  }
+
+  /** Every change of `activity`, as its new snapshot (the panel keeps the latest in its store). */
+  get activityChanges(): Emitter<ActivitySnapshot> {
+    return this.#core.activityChanges;
   }
 }

@@ -1,5 +1,5 @@
 import type { Locale } from "../i18n/locale.ts";
-import type { Said } from "../i18n/said.ts";
+import type { LocalText, Said } from "../i18n/said.ts";
 import type { ClassState } from "./features/class/state.ts";
 import type { ConnectionState, KnownPort } from "./features/connection/state.ts";
 import { initialConnection } from "./features/connection/state.ts";
@@ -49,6 +49,12 @@ export {
  * `servosOf`), so the first page load never carries their code.
  */
 
+/** What Stop did on one robot of the page, named as the page names it (in every language). */
+export interface RobotStop {
+  robot: LocalText;
+  notice: Notice;
+}
+
 export interface AppState {
   /**
    * The language the panel speaks (chosen at start from the saved choice or the browser's languages; the
@@ -70,6 +76,11 @@ export interface AppState {
   log: LogViewState;
   /** The outcome of Stop or Limp, shown in the top bar beside Stop (so it is seen however far down the page). */
   stopNotice?: Notice;
+  /**
+   * Stop's outcome on each of the page's other robots (the Class view's), one line per robot, said in the top
+   * bar after the top-bar robot's `stopNotice` (`stopAll`, src/ui/stop-all.ts).
+   */
+  robotStops?: readonly RobotStop[];
   /**
    * "Limp…" was pressed: the top bar asks "hold the robot" (this warning, the outcome catalogue's, loaded with
    * Limp's other sentences) before any servo goes passive.

@@ -10,6 +10,7 @@ import { defineMessages } from "../i18n/catalogue.ts";
  */
 export const stopMessages = defineMessages({
   "stop.stopping": { en: "Stopping…", ko: "정지하는 중…" },
+  "stop.robot": { en: "{robot}:", ko: "{robot}:" },
   "stop.stopping.sound": {
     en: "Stopping: a sound is playing and the robot takes nothing until it ends; the sound ends in about {time}.",
     ko: "정지하는 중: 소리가 나는 동안 로봇은 아무것도 받지 않아요. 약 {time} 뒤에 소리가 끝나요.",

@@ -14,6 +14,7 @@ import {
 import { inEveryLanguage, type LocalText, type Said, said, saidBy } from "../i18n/said.ts";
 import { formatMilliseconds, formatSeconds } from "../i18n/units.ts";
 import { type AppState, type Notice, noticeOf } from "./app-state.ts";
+import { playingMotion, playingSound } from "./features/connection/index.ts";
 import { stopMessages } from "./stop-messages.ts";
 
 /**
@@ -34,14 +35,16 @@ function secondsLeft(ms: number): LocalText {
   return inEveryLanguage((locale) => formatSeconds(Math.max(1, Math.ceil(ms / 1000)), locale, 0));
 }
 
-/** What Stop is waiting for, said before it is done (the robot's state mirrored in the store). */
+/** What Stop is waiting for, said before it is done (the device's activity, as the store keeps it). */
 export function stoppingNotice(state: AppState, now: number): Notice {
   const c = state.connection;
+  const sound = playingSound(c);
+  const motion = playingMotion(c);
   let what: Said;
-  if (c.sounding) {
-    const left = c.sounding.startedAt + c.sounding.expectedMs - now;
+  if (sound) {
+    const left = sound.startedAt + sound.expectedMs - now;
     what = say("stop.stopping.sound", { time: secondsLeft(left) });
-  } else if (c.playing) what = say("stop.stopping.motion", { motion: String(c.playing.motion) });
+  } else if (motion) what = say("stop.stopping.motion", { motion: String(motion.motion) });
   else if (c.mode === "download") what = say("stop.stopping.upload");
   else what = say("stop.stopping");
   return noticeOf("info", state.locale, [what]);

@@ -12,6 +12,7 @@ import type { ClassDemoRobot } from "../../src/ui/features/class/demo-robots.ts"
 import { memoryNameStorage } from "../../src/ui/features/class/names.ts";
 import { checkPack } from "../../src/ui/features/class/pack-check.ts";
 import { packVerdict } from "../../src/ui/features/class/result-words.ts";
+import { robotTask } from "../../src/ui/features/class/robot-task.ts";
 import { classOf, type PackFile } from "../../src/ui/features/class/state.ts";
 import { memoryBackupStorage } from "../../src/ui/features/zeros/backup-store.ts";
 import { createStore } from "../../src/ui/store.ts";
@@ -149,10 +150,32 @@ describe("the class of robots", () => {
     const running = room.runOnAll(12);
     await clock.advance(300);
     expect(demos.every((d) => d.sim.playingMotion === 12)).toBe(true);
-    await clock.run(Promise.all([room.stopAll(), running]));
+    const [stops] = await clock.run(Promise.all([room.stopAll(), running]));
     for (const d of demos) expect(d.sim.playingMotion).toBeUndefined();
+    // Each robot's Stop outcome comes back named, for the top bar to say one line per robot.
+    expect(stops.map((s) => [s.robot.en, s.robot.ko, s.notice.said?.[0]?.key])).toEqual([
+      ["Demo robot 1", "데모 로봇 1", "stop.outcome.motionStopped"],
+      ["Demo robot 2", "데모 로봇 2", "stop.outcome.motionStopped"],
+      ["Demo robot 3", "데모 로봇 3", "stop.outcome.motionStopped"],
+      ["Demo robot 4", "데모 로봇 4", "stop.outcome.motionStopped"],
+    ]);
     const words = rows().map((r) => wordsOf(r.result!.said!, "en"));
     for (const w of words) expect(w).toMatch(/Stopped by Stop|stopped at the end of its scene/);
+  });
+
+  it("keeps each robot's activity as its device tells it: a motion, then Limp under way (the row's task), then limp", async () => {
+    const { clock, room, rows } = await fourRobots();
+    expect(rows().map((r) => r.activity?.doing.kind)).toEqual(["idle", "idle", "idle", "idle"]);
+    const running = room.runOnAll(7);
+    await clock.advance(300);
+    expect(rows().map((r) => r.activity?.doing)).toMatchObject(Array(4).fill({ kind: "motion", motion: 7 }));
+    await clock.run(running);
+    const limping = room.limpAll();
+    expect(rows().map((r) => [robotTask(r), r.task])).toEqual(Array(4).fill(["limp", undefined]));
+    await clock.run(limping);
+    expect(rows().map((r) => [robotTask(r), r.activity?.halt, r.activity?.limp])).toEqual(
+      Array(4).fill([undefined, undefined, true]),
+    );
   });
 
   it("writes every Run in the same tick even when one robot answers its checks later (the starting gate)", async () => {

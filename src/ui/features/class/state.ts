@@ -1,3 +1,4 @@
+import type { ActivitySnapshot } from "../../../device/index.ts";
 import type { Notice } from "../../notices.ts";
 import type { Store } from "../../store.ts";
 
@@ -10,8 +11,8 @@ import type { Store } from "../../store.ts";
 /** Where one class robot's connection is. `lost`: the link went away (a pulled cable); `failed`: it never connected. */
 export type ClassRobotPhase = "connecting" | "connected" | "lost" | "failed";
 
-/** What a class robot is doing for the view right now (its buttons wait meanwhile). */
-export type ClassRobotTask = "upload" | "run" | "limp" | "reading";
+/** What the view is doing with a class robot right now (its buttons wait meanwhile). */
+export type ClassRobotTask = "upload" | "run" | "reading";
 
 /** The pack's upload to one robot, as it goes. */
 export interface ClassUploadProgress {
@@ -35,6 +36,8 @@ export interface ClassRobot {
   phase: ClassRobotPhase;
   selected: boolean;
   task?: ClassRobotTask;
+  /** What the robot is doing, as its client's activity machine tells it (`RbcClient.activityChanges`). */
+  activity?: ActivitySnapshot;
   serialNumber?: string;
   firmware?: { major: number; minor: number };
   platform?: number;

@@ -5,6 +5,7 @@ import type { AppContext } from "../../context.ts";
 import { focusSoon } from "../../focus.ts";
 import { forgetPort, grantedPorts, webSerial } from "../../serial-ports.ts";
 import type { Store } from "../../store.ts";
+import { busyElsewhere, isLimp } from "./activity.ts";
 import { connectionMessages } from "./messages.ts";
 import type { ConnectionState, RobotLabel } from "./state.ts";
 
@@ -77,19 +78,19 @@ export function disconnect(ctx: AppContext): void {
 }
 
 /**
- * Stop (the top bar's red button, and Escape when nothing else takes it): ends what the robot is doing and
- * keeps it standing (`RbcClient.stopActivity`). It never makes a servo passive: that is Limp. Stop is asked of
- * the robot first; its words load beside it (`stop-outcome.ts`, not in the first page load).
+ * Stop for the top-bar robot (the page's Stop, `stopAll` in src/ui/stop-all.ts, runs it beside the class
+ * robots' own): ends what the robot is doing and keeps it standing (`RbcClient.stopActivity`). It never makes a
+ * servo passive: that is Limp. Stop is asked of the robot first; its words load beside it (`stop-outcome.ts`,
+ * not in the first page load). The top bar says the outcome (`stopNotice`).
  */
-export async function stopActivity(ctx: AppContext): Promise<void> {
+export async function stopSessionRobot(ctx: AppContext): Promise<void> {
   const { store, session } = ctx;
-  void stopClassRobots(ctx);
   const client = session.current;
   if (!client) return;
   const now = session.clock.now();
   const stopping = store.get();
-  // Whether every servo was limp before: Stop's leave sequence moves no servo (a 7 it sends clears the flag).
-  const limp = stopping.connection.limp === true;
+  // Whether every servo was limp before: Stop's leave sequence moves no servo (a 7 it sends ends that).
+  const limp = isLimp(stopping.connection);
   store.update({ limpAsked: undefined });
   const done = client.stopActivity().then(
     (result) => ({ result }),
@@ -144,7 +145,6 @@ export async function limpAll(ctx: AppContext): Promise<void> {
   if (session.current === client) {
     // The robot is limp and someone is holding it: the next movement asks again.
     store.update((s) => ({ stopNotice: notice, acks: { ...s.acks, movement: false } }));
-    if (client.mode === "direct") setConnection(store, { limp: true });
   }
 }
 
@@ -160,7 +160,7 @@ export async function busyChanged(ctx: AppContext, busy: boolean): Promise<void>
   }
   const client = session.current;
   const words = await stopWords();
-  if (session.current === client && store.get().connection.busy) {
+  if (session.current === client && busyElsewhere(store.get().connection)) {
     setConnection(store, { busyNotice: words.busyNotice(store.get().locale) });
   }
 }
@@ -173,11 +173,6 @@ export function probeAfterConnect(ctx: AppContext): void {
   void ctx.session.current?.probeBusy().catch(() => {});
 }
 
-/** A servo was moved or the user took servo control: the servos are no longer all limp. */
-export function servosTaken(ctx: AppContext): void {
-  if (ctx.store.get().connection.limp) setConnection(ctx.store, { limp: false });
-}
-
 export function dismissStopNotice(ctx: AppContext): void {
-  ctx.store.update({ stopNotice: undefined });
+  ctx.store.update({ stopNotice: undefined, robotStops: undefined });
 }

@@ -10,9 +10,9 @@ export {
   limpAll,
   probeAfterConnect,
   refreshKnownPorts,
-  servosTaken,
-  stopActivity,
+  stopSessionRobot,
 } from "./actions.ts";
+export { busyElsewhere, isLimp, isPlaying, isStopping, playingMotion, playingSound } from "./activity.ts";
 export { connectPlace } from "./connect-place.ts";
 export { connectionMessages } from "./messages.ts";
 export { robotName } from "./robot-name.ts";

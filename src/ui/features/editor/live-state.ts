@@ -59,8 +59,6 @@ export interface PlayRun {
   from: number;
   to: number;
   progress?: PlayProgress;
-  /** Stop was pressed; tethered play ends at the next frame. */
-  stopping?: boolean;
 }
 
 export interface PlayState {

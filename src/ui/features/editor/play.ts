@@ -15,7 +15,7 @@ import type { AppContext } from "../../context.ts";
 import { technicalDetail } from "../../error-text.ts";
 import { focusSoon } from "../../focus.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
-import { servosTaken, stopActivity } from "../connection/index.ts";
+import { stopAll } from "../../stop-all.ts";
 import type { EditorHost } from "./host.ts";
 import { liveOf, type PlayChoice, type PlayProgress, patchPlay, patchTeachIn } from "./live-state.ts";
 import { editorMessages } from "./messages.ts";
@@ -183,8 +183,8 @@ export async function confirmPlay(ctx: AppContext, host: EditorHost): Promise<vo
   } finally {
     if (control.abort === abort) control.abort = undefined;
     if (last && session.current === client) {
-      // Every servo took a synchronised move: none is limp any more (teach-in's limp servos hold too).
-      servosTaken(ctx);
+      // Every servo took a synchronised move (the device's activity no longer says limp): teach-in's limp
+      // servos hold too.
       patchTeachIn(store, { passive: [] });
     }
   }
@@ -192,6 +192,5 @@ export async function confirmPlay(ctx: AppContext, host: EditorHost): Promise<vo
 
 /** The panel's Stop: the same as the top bar's (the robot holds the last frame; nothing goes limp). */
 export function stopPlay(ctx: AppContext): void {
-  patchPlay(ctx.store, (x) => (x.running ? { running: { ...x.running, stopping: true } } : {}));
-  void stopActivity(ctx);
+  void stopAll(ctx);
 }

@@ -10,6 +10,7 @@ import { translator } from "../../../i18n/translate.ts";
 import type { Motion } from "../../../motion/index.ts";
 import type { AppState } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
+import { busyElsewhere, isPlaying } from "../connection/index.ts";
 import {
   motionsMessages,
   pressRun,
@@ -55,7 +56,7 @@ export function runOnRobot(ctx: AppContext, number: number): void {
 export function robotRefusal(s: AppState): string | undefined {
   const busy = robotBusyReason(s);
   if (busy) return busy;
-  if (s.connection.busy) return translator(motionsMessages, s.locale)("motions.busy.motion");
+  if (busyElsewhere(s.connection)) return translator(motionsMessages, s.locale)("motions.busy.motion");
   if (s.connection.mode === "direct") return translator(editorMessages, s.locale)("editor.robot.direct");
   return undefined;
 }
@@ -63,8 +64,5 @@ export function robotRefusal(s: AppState): string | undefined {
 /** A motion is playing (started here, in the Motions view, or found busy): Stop belongs beside the refusal. */
 export function motionPlaying(s: AppState): boolean {
   const c = s.connection;
-  return (
-    c.phase === "connected" &&
-    (c.playing !== undefined || c.busy !== undefined || s.motions?.run !== undefined)
-  );
+  return c.phase === "connected" && (isPlaying(c) || s.motions?.run !== undefined);
 }

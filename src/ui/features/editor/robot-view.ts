@@ -5,7 +5,8 @@ import type { Motion } from "../../../motion/index.ts";
 import { BASIC_POSTURE_MOTION } from "../../../protocol/catalog.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
-import { connectionMessages, stopActivity } from "../connection/index.ts";
+import { stopAll } from "../../stop-all.ts";
+import { connectionMessages } from "../connection/index.ts";
 import {
   confirmMove,
   type MotionsTranslator,
@@ -57,7 +58,7 @@ function busyLine(ctx: ViewContext, reason: string, showStop: boolean): Template
     <span>${reason}</span>
     ${
       showStop
-        ? html`<button type="button" class="btn btn--danger" data-testid="editor-robot-stop" aria-keyshortcuts="Escape" @click=${() => void stopActivity(ctx)}>
+        ? html`<button type="button" class="btn btn--danger" data-testid="editor-robot-stop" aria-keyshortcuts="Escape" @click=${() => void stopAll(ctx)}>
             ${stop}
           </button>`
         : nothing

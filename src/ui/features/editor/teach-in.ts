@@ -15,6 +15,7 @@ import type { AppContext } from "../../context.ts";
 import { errorNotice, technicalDetail } from "../../error-text.ts";
 import { focusSoon } from "../../focus.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
+import { isLimp } from "../connection/index.ts";
 import type { EditorHost } from "./host.ts";
 import { type Limb, liveOf, patchTeachIn, sceneNumber, teachInOn } from "./live-state.ts";
 import { type EditorTranslator, editorMessages } from "./messages.ts";
@@ -88,7 +89,7 @@ export async function startTeachIn(ctx: AppContext): Promise<void> {
   let robotZeros = liveOf(state).teach.robotZeros ?? state.zeros.stored;
   // The zeros are read in packet mode. Leaving servo control to read them changes nothing on the servos, but
   // after Limp the panel would no longer know that every servo is limp: then the positions are stored as read.
-  const readZeros = robotZeros === undefined && !(client.mode === "direct" && state.connection.limp === true);
+  const readZeros = robotZeros === undefined && !(client.mode === "direct" && isLimp(state.connection));
   try {
     await session.run(
       said(editorMessages, "editor.teach.run.start"),
@@ -117,7 +118,7 @@ export async function startTeachIn(ctx: AppContext): Promise<void> {
     });
     return;
   }
-  const limp = store.get().connection.limp === true;
+  const limp = isLimp(store.get().connection);
   patchTeachIn(store, {
     phase: "on",
     robotZeros,

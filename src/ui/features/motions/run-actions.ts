@@ -228,7 +228,6 @@ export async function stopMotion(ctx: AppContext): Promise<void> {
   run.stopRequested = true;
   const then = store.get();
   const { locale } = then;
-  patchMotions(store, { run: { ...shown, stopping: true } });
   try {
     await session.run(said(motionsMessages, "motions.run.stopTask"), (client) => client.stopMotion());
     patchMotions(store, {

@@ -4,7 +4,7 @@ import type { RbmMotion } from "../../../protocol/rbm.ts";
 import type { RbmIssue } from "../../../protocol/rbm-validate.ts";
 import { type Notice, type RunningLabel, runningWords } from "../../notices.ts";
 import type { Store } from "../../store.ts";
-import type { ConnectionState } from "../connection/index.ts";
+import { type ConnectionState, isPlaying, playingSound } from "../connection/index.ts";
 import { motionsMessages } from "./messages.ts";
 import { emptyBook, type SlotBook } from "./slot-book.ts";
 import type { ProgressSample } from "./upload-rate.ts";
@@ -93,8 +93,6 @@ export interface RunningMotion {
   expectedMs?: number;
   /** Robot-clock ms (the session's clock) when it was sent. */
   startedAt: number;
-  /** "Stop motion" was pressed: 7 was sent and the robot finishes the current scene. */
-  stopping?: boolean;
 }
 
 export interface MotionsState {
@@ -168,18 +166,19 @@ export function patchMotions(
 /**
  * Why robot actions (run, sound, upload) cannot start now, in words (the panel's language), or undefined when
  * they can. The RBC drops every request while a sound plays, and every request but 7 while a motion plays
- * (started here or elsewhere: the busy probe's `connection.busy`).
+ * (started here or elsewhere: the busy probe's, `busyElsewhere`).
  */
 export function robotBusyReason(s: RobotBusyFacts): string | undefined {
   const t = translator(motionsMessages, s.locale);
   const c = s.connection;
   if (c.phase !== "connected") return t("motions.busy.connect");
   const m = s.motions;
-  if (c.sounding) return t("motions.busy.sound", { sound: c.sounding.sound });
+  const sound = playingSound(c);
+  if (sound) return t("motions.busy.sound", { sound: sound.sound });
   if (m?.upload) return t("motions.busy.upload");
   // A motion started elsewhere (the remote, the PF buttons) that the busy probe found playing counts too
   // (docs/protocol.md §3.6: until it ends the robot drops every request but 7).
-  if (c.playing || m?.run || c.busy) return t("motions.busy.motion");
+  if (isPlaying(c) || m?.run) return t("motions.busy.motion");
   if (s.running.length > 0)
     return t("motions.busy.other", { tasks: runningWords(s.running, s.locale).join(", ") });
   return undefined;

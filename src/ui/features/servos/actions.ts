@@ -8,7 +8,6 @@ import type { AppContext } from "../../context.ts";
 import { failureNotice } from "../../failure-notice.ts";
 import { focusSoon } from "../../focus.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
-import { servosTaken } from "../connection/index.ts";
 import { servosMessages } from "./messages.ts";
 import { LatestMoveSender } from "./move-sender.ts";
 import {
@@ -69,7 +68,6 @@ export class ServoMoves implements Controller {
       }
       try {
         const status = await client.servos.move(id, position, torque);
-        servosTaken(ctx);
         patchServos(ctx.store, (x) => ({
           positions: setAt(x.positions, id, status.position),
           positionsAt: Date.now(),
@@ -239,7 +237,6 @@ export async function basicPosture(ctx: AppContext): Promise<void> {
         packetMode: false,
       },
     );
-    servosTaken(ctx);
     patchServos(store, {
       busy: undefined,
       targets: basicPostureTargets(),

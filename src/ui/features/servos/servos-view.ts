@@ -11,6 +11,7 @@ import { liveRobotPanel } from "../../robot3d/live-robot.ts";
 import { shellMessages } from "../../shell/messages.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
+import { isLimp, playingMotion } from "../connection/index.ts";
 import {
   acknowledgeSafety,
   applyTypedTarget,
@@ -196,7 +197,7 @@ function controlCard(ctx: ViewContext, t: ServosTranslator): TemplateResult {
         </div>
       </div>
       <p class="muted small" data-testid="servo-mode">
-        ${direct ? (c.limp ? t("servos.mode.limp") : t("servos.mode.on")) : t("servos.mode.off")}
+        ${direct ? (isLimp(c) ? t("servos.mode.limp") : t("servos.mode.on")) : t("servos.mode.off")}
         ${s.readAt ? t("servos.positionsReadAt", { time: formatClockTime(s.readAt) }) : ""}
       </p>
       ${liveNotice(s.notice, t("servos.resultLabel"), ctx.state.locale)}
@@ -267,7 +268,7 @@ function liveRobot(ctx: ViewContext, t: ServosTranslator): TemplateResult {
     demo: ctx.session.demoSim,
     known: { positions: s.positions, at: s.positionsAt },
     robotZeros: ctx.state.zeros.stored,
-    motionPlaying: ctx.state.connection.playing !== undefined,
+    motionPlaying: playingMotion(ctx.state.connection) !== undefined,
     textVersion: t("servos.textVersion"),
     locale: ctx.state.locale,
   });

@@ -15,17 +15,12 @@ import {
   startNaming,
 } from "../actions.ts";
 import type { ClassTranslator } from "../messages.ts";
+import { robotTitle } from "../names.ts";
+import { robotTask } from "../robot-task.ts";
 import type { ClassBackupChoice, ClassRobot, ClassState } from "../state.ts";
 import { compareZeros } from "../zeros-check.ts";
 
 /** One robot of the class: a row on a wide screen, a card on a phone (class.css). */
-
-/** The name the teacher gave it, else "Demo robot 2" or its port. */
-export function robotTitle(t: ClassTranslator, c: ClassState, r: ClassRobot): string {
-  const given = r.serialNumber ? c.names[r.serialNumber] : undefined;
-  if (given) return given;
-  return r.demoNumber !== undefined ? t("class.demoName", { number: r.demoNumber }) : r.portLabel;
-}
 
 function phaseWords(t: ClassTranslator, r: ClassRobot): string {
   switch (r.phase) {
@@ -41,7 +36,7 @@ function phaseWords(t: ClassTranslator, r: ClassRobot): string {
 }
 
 function taskWords(t: ClassTranslator, r: ClassRobot): string | undefined {
-  switch (r.task) {
+  switch (robotTask(r)) {
     case "run":
       return t("class.task.run");
     case "limp":
@@ -178,7 +173,7 @@ export function robotRow(
             </button>`
           : nothing
       }
-      <button type="button" class="btn btn--small btn--quiet" ?disabled=${!connected || r.task !== undefined} @click=${() => refreshRobot(ctx, r.id)}>
+      <button type="button" class="btn btn--small btn--quiet" ?disabled=${!connected || robotTask(r) !== undefined} @click=${() => refreshRobot(ctx, r.id)}>
         ${t("class.readAgain")}<span class="sr-only"> — ${title}</span>
       </button>
       <button type="button" class="btn btn--small btn--quiet" @click=${() => removeRobot(ctx, r.id)}>
