@@ -1,7 +1,7 @@
 import { readFileSync } from "node:fs";
 import { describe, expect, it } from "vitest";
 import { RbcUploadError } from "../../src/device/errors.ts";
-import { wordsOf } from "../../src/i18n/said.ts";
+import { wordOf, wordsOf } from "../../src/i18n/said.ts";
 import { MOTION_AREA_BYTES, memoryFootprint } from "../../src/protocol/catalog.ts";
 import { motionImage } from "../../src/protocol/motion-image.ts";
 import { readRbm } from "../../src/protocol/rbm.ts";
@@ -153,11 +153,12 @@ describe("the class of robots", () => {
     const [stops] = await clock.run(Promise.all([room.stopAll(), running]));
     for (const d of demos) expect(d.sim.playingMotion).toBeUndefined();
     // Each robot's Stop outcome comes back named, for the top bar to say one line per robot.
-    expect(stops.map((s) => [s.robot.en, s.robot.ko, s.notice.said?.[0]?.key])).toEqual([
-      ["Demo robot 1", "데모 로봇 1", "stop.outcome.motionStopped"],
-      ["Demo robot 2", "데모 로봇 2", "stop.outcome.motionStopped"],
-      ["Demo robot 3", "데모 로봇 3", "stop.outcome.motionStopped"],
-      ["Demo robot 4", "데모 로봇 4", "stop.outcome.motionStopped"],
+    const tookStop = "The robot took Stop: it finishes the current scene and stands in that pose.";
+    expect(stops.map((s) => [s.robot.en, s.robot.ko, wordOf(s.notice.said![0]!, "en")])).toEqual([
+      ["Demo robot 1", "데모 로봇 1", tookStop],
+      ["Demo robot 2", "데모 로봇 2", tookStop],
+      ["Demo robot 3", "데모 로봇 3", tookStop],
+      ["Demo robot 4", "데모 로봇 4", tookStop],
     ]);
     const words = rows().map((r) => wordsOf(r.result!.said!, "en"));
     for (const w of words) expect(w).toMatch(/Stopped by Stop|stopped at the end of its scene/);
