@@ -5,7 +5,6 @@ import type { AppContext } from "../../context.ts";
 import { downloadTextFile } from "../../download-file.ts";
 import { focusSoon } from "../../focus.ts";
 import { choosePort, describePort, webSerial } from "../../serial-ports.ts";
-import { escapeTakenElsewhere } from "../../shell/escape.ts";
 import { stopAll as stopEveryRobot } from "../../stop-all.ts";
 import { refreshKnownPorts } from "../connection/index.ts";
 import { recordOnRobotShelf } from "../shelf/index.ts";

@@ -1,6 +1,5 @@
 import { said } from "../../../i18n/said.ts";
 import { type AppState, noticeOf } from "../../app-state.ts";
-import { stopClassRobots } from "../../class-stop.ts";
 import type { AppContext } from "../../context.ts";
 import { focusSoon } from "../../focus.ts";
 import { forgetPort, grantedPorts, webSerial } from "../../serial-ports.ts";
