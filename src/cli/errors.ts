@@ -89,7 +89,7 @@ export interface ErrorLineOptions {
 /** A failure's sentence in `locale`: its own, or for the device's errors a sentence from their code. */
 function sentence(e: unknown, locale: Locale, options: ErrorLineOptions): string {
   if (e instanceof CliError || e instanceof UsageError) return e.said[locale];
-  if (locale === "en") return e instanceof Error ? e.message : String(e);
+  if (locale === "en" && !(e instanceof Error)) return String(e);
   const t = translator(cliMessages, locale);
   return errorText(e, locale, {
     detailHint: options.detailShown ? t("cli.error.detailBelow") : t("cli.error.detailWithLog"),

@@ -1,4 +1,3 @@
-import { directModeNeededText, servoRangeText } from "../i18n/outcomes/device.ts";
 import { HUNO_BASIC_POSTURE, HUNO_SERVO_IDS, safeRange } from "../protocol/servo-limits.ts";
 import {
   WCK_MAX_POSITION,
@@ -46,7 +45,9 @@ export class DirectMode {
   move(id: number, position: number, torque: number): Promise<ServoStatus> {
     const { min, max } = DirectMode.safeRange(id);
     if (!Number.isInteger(position) || position < min || position > max) {
-      return Promise.reject(new RbcInvalidArgumentError(servoRangeText(id, { min, max }, position, "en")));
+      return Promise.reject(
+        new RbcInvalidArgumentError(undefined, { kind: "servo-range", id, min, max, position }),
+      );
     }
     return this.ask(id, () => wckMove(id, position, torque), `move servo ${id} to ${position}`);
   }
@@ -165,7 +166,7 @@ export class DirectMode {
 
   private requireDirect(): void {
     if (this.#host.mode !== "direct") {
-      throw new RbcError("wrong-mode", directModeNeededText("en"));
+      throw new RbcError("wrong-mode", undefined, { situation: { kind: "direct-mode-needed" } });
     }
   }
 }

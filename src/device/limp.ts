@@ -1,4 +1,3 @@
-import { cancelledByLimpText } from "../i18n/outcomes/device.ts";
 import { BASIC_POSTURE_MOTION } from "../protocol/catalog.ts";
 import { COMMANDS } from "../protocol/commands.ts";
 import { EXIT_DIRECT_MODE } from "../protocol/wck.ts";
@@ -49,7 +48,7 @@ export async function runLimp(core: ClientCore): Promise<LimpResult> {
     throw new RbcCannotLimpError(SCENE_END_MS + c.timeouts.marginMs);
   }
   const sound = activity.sound;
-  c.failPending(new RbcCancelledError(cancelledByLimpText("en"), "limp"));
+  c.failPending(new RbcCancelledError(undefined, "limp", { kind: "cancelled-by", by: "limp" }));
   return c.exclusive(async () => {
     if (c.mode === "direct") {
       activity.handDirect("limp");

@@ -1,4 +1,3 @@
-import { type UploadNotice, uploadNoticeText } from "../i18n/outcomes/device.ts";
 import { downloadedMotionNumber } from "../protocol/catalog.ts";
 import type { MemoryArea } from "../protocol/commands.ts";
 import { motionImage } from "../protocol/motion-image.ts";
@@ -6,17 +5,6 @@ import type { RbmMotion } from "../protocol/rbm.ts";
 import { validateRbm } from "../protocol/rbm-validate.ts";
 import { RbcInvalidArgumentError } from "./errors.ts";
 import type { UploadOptions, UploadResult } from "./types.ts";
-
-/**
- * What an upload says, in one place for the panel and the CLI (docs/protocol.md §6.3 [decision] Safety): on a real
- * robot the experimental sentence comes before the first byte, with a confirmation, and the hold advice after.
- * English here; `uploadNoticeText` (src/i18n/outcomes) says them in either language.
- */
-export const UPLOAD_NOTICES: Readonly<Record<UploadNotice, string>> = {
-  experimental: uploadNoticeText("experimental", "en"),
-  holdAdvice: uploadNoticeText("holdAdvice", "en"),
-  action: uploadNoticeText("action", "en"),
-};
 
 export type UploadPhase = "resetting" | "checking" | "sending" | "verifying";
 

@@ -1,4 +1,3 @@
-import { directModeNeededText } from "../i18n/outcomes/device.ts";
 // Over 400 lines: one set of rules for the raw link (download acknowledgements and the servo bus share the wire-
 // time and late-reply guards), kept together so that they cannot drift apart.
 import type { Clock } from "../shared/clock.ts";
@@ -295,7 +294,11 @@ export class RawChannel {
   private async readyBus(signal: AbortSignal | undefined): Promise<ServoBusGuard> {
     const bus = this.bus;
     if (!bus || bus.fault) {
-      throw bus?.fault ?? this.busFault ?? new RbcError("wrong-mode", directModeNeededText("en"));
+      throw (
+        bus?.fault ??
+        this.busFault ??
+        new RbcError("wrong-mode", undefined, { situation: { kind: "direct-mode-needed" } })
+      );
     }
     if (signal?.aborted) throw new RbcCancelledError();
     if (bus.unsettled) {

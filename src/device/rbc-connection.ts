@@ -4,7 +4,6 @@
  * operations on top of it live in their own files (motion-run.ts, stop.ts, limp.ts, …), its options in
  * connection-options.ts.
  */
-import { cancelledByText, codeText } from "../i18n/outcomes/device.ts";
 import { LinkError, type Transport, type TransportStatusEvent } from "../link/transport.ts";
 import { concatBytes } from "../protocol/bytes.ts";
 import { ABANDON_DOWNLOAD } from "../protocol/catalog.ts";
@@ -62,6 +61,9 @@ export const SUBSCRIPTIONS = {
 
 /** Quick requests the RBC answers from its main loop, so only once a playing motion ends (§3.6). */
 export const MAIN_LOOP_REPLY_TYPES: ReadonlySet<number> = new Set([COMMANDS.readDistance.type]);
+
+/** `ClientState.reason` of a link lost without a word from the link (technical; the error is worded by code). */
+const LINK_LOST = "link lost (no reason given)";
 
 const SUBSCRIPTION_BY_TYPE = new Map<number, SubscriptionKind>(
   Object.entries(SUBSCRIPTIONS).map(([kind, spec]) => [spec.type, kind as SubscriptionKind]),
@@ -230,7 +232,7 @@ export class RbcConnection {
       await this.close();
       if (inBootloader) throw new RbcInBootloaderError(inBootloader, e);
       if (e instanceof RbcTimeoutError) {
-        throw new RbcError("no-robot", codeText("no-robot", "en"), { cause: e });
+        throw new RbcError("no-robot", undefined, { cause: e });
       }
       if (e instanceof LinkError) throw RbcPortError.fromLink(e);
       throw e;
@@ -286,7 +288,7 @@ export class RbcConnection {
   /** The error for a turn of `epoch` that Stop or Limp overtook: names the first of them after it. */
   cancelledSince(epoch: number): RbcCancelledError {
     const by = this.epochBy.get(epoch + 1) ?? "stop";
-    return new RbcCancelledError(cancelledByText(by, "en"), by);
+    return new RbcCancelledError(undefined, by, { kind: "cancelled-by", by });
   }
 
   /** Which of Stop or Limp began the first epoch after `epoch` (for a sentence of the operation it overtook). */
@@ -396,7 +398,7 @@ export class RbcConnection {
       const onAbort = () =>
         finish(() => {
           if (send) this.expectLate(type);
-          reject(new RbcCancelledError(`Stopped waiting for "${name}".`));
+          reject(new RbcCancelledError(undefined, undefined, { kind: "stopped-waiting", command: name }));
         });
       const finish = (settle: () => void) => {
         this.clock.clearTimeout(timer);
@@ -502,9 +504,7 @@ export class RbcConnection {
     if (this.mode === "disconnected") {
       const lost = this._state.reason;
       if (!lost) throw new RbcNotConnectedError();
-      throw new RbcDisconnectedError(
-        lost === codeText("disconnected", "en") ? lost : `${lost} Connect again.`,
-      );
+      throw new RbcDisconnectedError(lost === LINK_LOST ? undefined : `${lost} Connect again.`);
     }
     if (this.mode === "direct") {
       throw new RbcError("wrong-mode", `"${what}" needs the normal mode: leave direct servo control first.`);
@@ -583,9 +583,9 @@ export class RbcConnection {
 
   private onTransportStatus(event: TransportStatusEvent): void {
     if (event.status !== "lost") return;
-    // The link says what happened; without its words, the outcome catalogue's sentence for a lost link.
-    const reason = event.reason ?? codeText("disconnected", "en");
-    const message = event.reason === undefined ? reason : `${reason} Check the cable, then connect again.`;
+    // The link says what happened; without its words, the error is worded by its code (a lost link).
+    const reason = event.reason ?? LINK_LOST;
+    const message = event.reason === undefined ? undefined : `${reason} Check the cable, then connect again.`;
     this.failPending(new RbcDisconnectedError(message, event.error));
     this.subscription = undefined;
     this.setState({

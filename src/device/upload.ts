@@ -1,4 +1,3 @@
-import { uploadCancelledEarlyText } from "../i18n/outcomes/upload-words.ts";
 import { xorBytes } from "../protocol/bytes.ts";
 import {
   ABANDON_DOWNLOAD,
@@ -75,7 +74,7 @@ export async function uploadFile(
       `A ${area} file must be 1-${areaBytes} bytes; this one is ${total}. Nothing was sent.`,
     );
   }
-  if (signal?.aborted) throw new RbcCancelledError(uploadCancelledEarlyText(false, "en"));
+  if (signal?.aborted) throw new RbcCancelledError(undefined, undefined, { kind: "upload-cancelled-early" });
   const started = io.now();
   const footprint = memoryFootprint(total);
   const readFree = () => client.request(COMMANDS.readAvailableMemory, area);

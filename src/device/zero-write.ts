@@ -1,5 +1,5 @@
 import { COMMANDS } from "../protocol/commands.ts";
-import { zeroProblems, zerosNotWrittenText } from "../protocol/zeros.ts";
+import { zeroProblems } from "../protocol/zeros.ts";
 import {
   RbcBadReplyError,
   RbcError,
@@ -32,7 +32,7 @@ export async function writeZeros(c: RbcConnection, zeros: readonly number[]): Pr
   const written = copyZeroTable(zeros);
   const problems = zeroProblems(written);
   if (problems.length > 0) {
-    throw new RbcInvalidArgumentError(zerosNotWrittenText(problems, "en"));
+    throw new RbcInvalidArgumentError(undefined, { kind: "zeros-not-written", problems });
   }
   return c.exclusive(async () => {
     let echo: number[];

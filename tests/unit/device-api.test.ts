@@ -1,11 +1,6 @@
 import { describe, expect, it } from "vitest";
-import {
-  RbcClient,
-  RbcPortError,
-  RbcUploadError,
-  UPLOAD_NOTICES,
-  ZeroWriteFailedError,
-} from "../../src/device/index.ts";
+import { RbcClient, RbcPortError, RbcUploadError, ZeroWriteFailedError } from "../../src/device/index.ts";
+import { errorText, UPLOAD_NOTICES } from "../../src/i18n/index.ts";
 import { LinkError, type Transport, WebSerialTransport } from "../../src/link/index.ts";
 import {
   COMMANDS,
@@ -315,7 +310,10 @@ describe("writeZerosWithBackup: the one zero-write policy", () => {
         })
         .catch((e) => e),
     );
-    expect(error.message).toMatch(/Nothing was written: the backup .* could not be saved \(disk full\)/);
+    expect(error.code).toBe("backup-failed");
+    expect(errorText(error, "en")).toMatch(
+      /Nothing was written: the backup .* could not be saved \(disk full\)/,
+    );
     expect(sim.zeros).toEqual(before);
   });
 

@@ -17,10 +17,10 @@ import {
   firmwareFileSummary,
   firmwareResultSentence,
 } from "../../src/device/firmware-update.ts";
-import { UPLOAD_NOTICES } from "../../src/device/motion-upload.ts";
 import {
   inBootloaderRecoverText,
   inBootloaderText,
+  UPLOAD_NOTICES,
   uploadNoticeText,
 } from "../../src/i18n/outcomes/device.ts";
 import { errorText } from "../../src/i18n/outcomes/error-text.ts";
@@ -138,12 +138,12 @@ describe("a robot waiting in its bootloader (issue 20 item 11)", () => {
   it("is said from its facts in both languages, with the recovery to run", () => {
     const e = new RbcInBootloaderError({ prompts: 3, overMs: 600 });
     expect(e.code).toBe("in-bootloader");
-    expect(e.message).toBe(
+    expect(e.facts).toEqual({ prompts: 3, overMs: 600 });
+    expect(errorText(e, "en")).toBe(
       "The robot is waiting in its bootloader: it sent the bootloader's prompt (^) 3 times and answered no request. " +
         "Its firmware is probably missing or incomplete (an interrupted firmware update, say). " +
         "Run the firmware update again, in recovery mode, to give it a firmware; the bootloader is never overwritten.",
     );
-    expect(errorText(e, "en")).toBe(e.message);
     expect(errorText(e, "ko")).toBe(
       "로봇이 부트로더에서 기다리고 있어요. 부트로더 신호(^)를 3번 보냈고 어떤 요청에도 응답하지 않았어요. " +
         "펌웨어가 없거나 불완전할 수 있어요(예: 펌웨어 업데이트가 중간에 끊긴 경우). " +
@@ -218,25 +218,30 @@ describe("a firmware update's other words", () => {
 });
 
 describe("the device's errors", () => {
-  it("take their fixed English from the catalogue and are said from the same facts in Korean", () => {
-    expect(new RbcNotConnectedError().message).toBe(
+  it("are said from their code and facts by the catalogue, in English and in Korean", () => {
+    expect(new RbcNotConnectedError().code).toBe("not-connected");
+    expect(errorText(new RbcNotConnectedError(), "en")).toBe(
       "No robot is connected. Connect the robot (or the demo robot) first.",
     );
     const timeout = new RbcTimeoutError("Read zeros", 1000);
-    expect(timeout.message).toBe(
+    expect([timeout.command, timeout.waitedMs]).toEqual(["Read zeros", 1000]);
+    expect(timeout.message).toBe("no reply to Read zeros within 1000 ms");
+    expect(errorText(timeout, "en")).toBe(
       'The robot did not answer "Read zeros" within 1,000 ms. Check that it is switched on and the cable is plugged in; the RBC also stays silent when it refuses a request.',
     );
     const failed = new ZeroWriteFailedError(timeout, "zeros-backup-A1.json");
     expect(failed.code).toBe("timeout");
-    expect(failed.message).toBe(
-      `${timeout.message} The zeros the robot held before are saved in zeros-backup-A1.json.`,
+    expect(failed.backupName).toBe("zeros-backup-A1.json");
+    expect(errorText(failed, "en")).toBe(
+      `${errorText(timeout, "en")} The zeros the robot held before are saved in zeros-backup-A1.json.`,
     );
     expect(errorText(failed, "ko")).toBe(
       '로봇이 1,000ms 안에 "Read zeros"에 응답하지 않았어요. 로봇이 켜져 있는지, 케이블이 꽂혀 있는지 확인해 주세요. RBC는 요청을 거부할 때도 응답하지 않아요. ' +
         "로봇에 있던 이전 영점은 zeros-backup-A1.json에 저장해 두었어요.",
     );
     const backup = new ZeroBackupError(new Error("disk full"));
-    expect(backup.message).toBe(
+    expect(backup.code).toBe("backup-failed");
+    expect(errorText(backup, "en")).toBe(
       "Nothing was written: the backup of the current zeros could not be saved (disk full).",
     );
     expect(errorText(backup, "ko")).toBe("현재 영점의 백업을 저장하지 못해서 아무것도 쓰지 않았어요.");

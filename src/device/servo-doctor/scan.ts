@@ -1,4 +1,3 @@
-import { servoIdRangeText } from "../../i18n/outcomes/device.ts";
 import { HUNO_SERVO_COUNT } from "../../protocol/servo-limits.ts";
 import { WCK_MAX_ID } from "../../protocol/wck.ts";
 import { RbcCancelledError, RbcError, RbcInvalidArgumentError } from "../errors.ts";
@@ -27,7 +26,7 @@ export function checkServoIds(ids: readonly number[]): number[] {
   const seen = new Set<number>();
   for (const id of ids) {
     if (!Number.isInteger(id) || id < 0 || id > WCK_MAX_ID) {
-      throw new RbcInvalidArgumentError(servoIdRangeText(id, WCK_MAX_ID, "en"));
+      throw new RbcInvalidArgumentError(undefined, { kind: "servo-id-range", id, max: WCK_MAX_ID });
     }
     if (seen.has(id)) throw new RbcInvalidArgumentError(`Servo id ${id} is listed twice; nothing was sent.`);
     seen.add(id);

@@ -1,4 +1,3 @@
-import { servoRangeText } from "../../i18n/outcomes/device.ts";
 import { safeRange } from "../../protocol/servo-limits.ts";
 import {
   WCK_MAX_POSITION,
@@ -119,11 +118,9 @@ export class ServoBus {
     const range = safeRange(id);
     if (!range || !Number.isInteger(position) || position < range.min || position > range.max) {
       return Promise.reject(
-        new RbcInvalidArgumentError(
-          range
-            ? servoRangeText(id, range, position, "en")
-            : `Servo ${id} has no published safe range; nothing was sent.`,
-        ),
+        range
+          ? new RbcInvalidArgumentError(undefined, { kind: "servo-range", id, ...range, position })
+          : new RbcInvalidArgumentError(`Servo ${id} has no published safe range; nothing was sent.`),
       );
     }
     return this.#send(() => wckMove(id, position, torque), `move servo ${id} to ${position}`, signal, epoch);
