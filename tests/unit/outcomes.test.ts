@@ -11,12 +11,7 @@ import {
   ZeroBackupError,
   ZeroWriteFailedError,
 } from "../../src/device/errors.ts";
-import {
-  FIRMWARE_NOTICES,
-  FirmwareUpdateError,
-  firmwareFileSummary,
-  firmwareResultSentence,
-} from "../../src/device/firmware-update.ts";
+import { FirmwareUpdateError } from "../../src/device/firmware-update.ts";
 import {
   inBootloaderRecoverText,
   inBootloaderText,
@@ -25,8 +20,11 @@ import {
 } from "../../src/i18n/outcomes/device.ts";
 import { errorText } from "../../src/i18n/outcomes/error-text.ts";
 import {
+  FIRMWARE_NOTICES,
   firmwareFailureText,
+  firmwareFileSummary,
   firmwareNoticeText,
+  firmwareResultSentence,
   firmwareResultText,
   firmwareSummaryText,
 } from "../../src/i18n/outcomes/firmware/firmware-words.ts";
@@ -41,7 +39,7 @@ describe("a failed firmware update", () => {
     });
     expect(e.code).toBe("timeout");
     expect(e.waitedMs).toBe(60_000);
-    expect(e.message).toBe(
+    expect(errorText(e, "en")).toBe(
       "The robot's bootloader did not announce itself within 60 s after the robot was to be switched off and on. " +
         "Nothing was written: the robot still holds its previous firmware. " +
         "Switch the robot off, then on again while the update waits for it, and run the update again; keep the cable plugged in.",
@@ -51,7 +49,7 @@ describe("a failed firmware update", () => {
         "아무것도 쓰지 않았어요. 로봇에는 이전 펌웨어가 그대로 있어요. " +
         "업데이트가 기다리는 동안 로봇을 껐다가 다시 켜고, 업데이트를 다시 해 주세요. 케이블은 꽂아 두세요.",
     );
-    expect(errorText(e, "en")).toBe(e.message);
+    expect(errorText(e, "ko")).toBe(firmwareFailureText(e, "ko"));
   });
 
   it("names the file's line and the time waited, and a half-written flash", () => {
@@ -82,13 +80,14 @@ describe("a failed firmware update", () => {
       line: 3,
       tries: 4,
     });
-    expect(device.message).toBe(fromDialogue.message);
+    expect(errorText(device, "en")).toBe(fromDialogue.message);
     expect(device.code).toBe("upload-failed");
   });
 
   it("after @ with a silent robot: the new firmware is written, the advice is a trusted file", () => {
     const e = new FirmwareUpdateError({ failure: "no-answer", holds: "new-firmware", waitedMs: 900 });
-    expect(e.message).toBe(
+    expect(e).toMatchObject({ failure: "no-answer", holds: "new-firmware", waitedMs: 900 });
+    expect(errorText(e, "en")).toBe(
       "The robot does not answer after the update within 900 ms. " +
         "The bootloader reported the new firmware written without errors. " +
         "Switch the robot off and on; if it still does not answer, run the update again with a firmware file you trust (the bootloader is never overwritten).",
@@ -125,7 +124,7 @@ describe("the firmware update's holes (issue 20 item 8)", () => {
       waitedMs: 10_000,
     });
     expect(deadline.code).toBe("timeout");
-    expect(deadline.message).toMatch(
+    expect(errorText(deadline, "en")).toMatch(
       /^The bootloader did not finish a line \(line 12 of the file\) within 10 s after its last byte; it only paused and resumed the sending\. /,
     );
     expect(firmwareFailureText(deadline, "ko")).toMatch(

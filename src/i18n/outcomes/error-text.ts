@@ -13,6 +13,7 @@ import {
   ZeroBackupError,
   ZeroWriteFailedError,
 } from "../../device/errors.ts";
+import { FirmwareUpdateError } from "../../device/firmware-update.ts";
 import { LinkError } from "../../link/transport.ts";
 import { zerosNotWrittenText } from "../../protocol/zeros.ts";
 import type { Locale } from "../locale.ts";
@@ -40,6 +41,7 @@ import {
   zerosCancelledBeforeWriteText,
   zerosNotReadText,
 } from "./device.ts";
+import { firmwareFailureText } from "./firmware/firmware-words.ts";
 import {
   busyReadText,
   emptySlotText,
@@ -121,6 +123,7 @@ function fromFacts(e: unknown, locale: Locale, hint: string): string {
     const reason = e.cause instanceof Error ? e.cause.message : String(e.cause);
     return zerosBackupFailedText(locale === "en" ? reason : undefined, locale);
   }
+  if (e instanceof FirmwareUpdateError) return firmwareFailureText(e, locale);
   if (e instanceof RbcTimeoutError) return timeoutText(e.command, e.waitedMs, locale);
   if (e instanceof RbcInBootloaderError) {
     return `${inBootloaderText(e.facts.prompts, locale)} ${inBootloaderRecoverText(locale)}`;
