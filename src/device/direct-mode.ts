@@ -97,9 +97,7 @@ export class DirectMode {
     positions.forEach((p, id) => {
       const { min, max } = DirectMode.safeRange(id);
       if (p < min || p > max) {
-        throw new RbcInvalidArgumentError(
-          `Servo ${id} may only move within ${min}-${max}; nothing was sent.`,
-        );
+        throw new RbcInvalidArgumentError(undefined, { kind: "servo-move-range", id, min, max });
       }
     });
     return this.#host.exclusive(async () => {
@@ -158,7 +156,11 @@ export class DirectMode {
       });
       // Servo replies carry no checksum; a position above 254 can only be noise on the line.
       if (reply[1]! > WCK_MAX_POSITION) {
-        throw new RbcBadReplyError(`Servo ${id} answered an impossible position (${reply[1]}); try again.`);
+        throw new RbcBadReplyError(undefined, undefined, {
+          kind: "servo-impossible-position",
+          id,
+          position: reply[1]!,
+        });
       }
       return { id, load: reply[0]!, position: reply[1]! };
     }, epoch);

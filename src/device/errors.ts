@@ -1,5 +1,7 @@
-import type { ZeroProblem } from "../protocol/zeros.ts";
 import type { RunNoReply, RunReport } from "./run-outcome.ts";
+import type { RbcSituation } from "./situation.ts";
+
+export type { RbcSituation } from "./situation.ts";
 
 /**
  * Failures of RBC operations, as typed errors with a stable `code` and the facts a person needs (fields, and
@@ -33,34 +35,6 @@ export type RbcErrorCode =
   | "not-played"
   | "servo-silent"
   | "not-supported";
-
-/**
- * What an error is about beyond its code, as facts the outcome catalogue words. `code`: the code says it all.
- */
-export type RbcSituation =
-  | { kind: "code" }
-  /** A request queued behind Stop or Limp, cancelled by it before it started. */
-  | { kind: "cancelled-by"; by: "stop" | "limp" }
-  /** Stop ended an upload that waited for the robot's acknowledgement. */
-  | { kind: "upload-cancelled-by-stop" }
-  /** An upload cancelled before its first byte. */
-  | { kind: "upload-cancelled-early" }
-  /** A Run that Stop or Limp overtook during its checks: nothing was sent for it. */
-  | { kind: "motion-not-started"; motion: number; by: "stop" | "limp" }
-  /** The wait for the reply to `command` was given up (an abort signal). */
-  | { kind: "stopped-waiting"; command: string }
-  /** Cancelled after the backup `backupName` was saved and before the write: no zero was written. */
-  | { kind: "zeros-cancelled-before-write"; backupName: string }
-  /** The robot's current zeros could not be read for the backup (the `cause` says why): nothing was written. */
-  | { kind: "zeros-not-read" }
-  /** Zeros outside their range (docs/protocol.md §7): nothing was written. */
-  | { kind: "zeros-not-written"; problems: readonly ZeroProblem[] }
-  /** A servo command outside direct mode. */
-  | { kind: "direct-mode-needed" }
-  /** A move outside servo `id`'s safe range (docs/protocol.md §5); it was not sent. */
-  | { kind: "servo-range"; id: number; min: number; max: number; position: number }
-  /** A servo id outside 0-`max`; nothing was sent. */
-  | { kind: "servo-id-range"; id: number; max: number };
 
 /** "cancelled: motion-not-started motion=12 by=stop": the technical line of an error worded from its facts. */
 function technicalLine(code: RbcErrorCode, situation: RbcSituation): string {
@@ -137,17 +111,18 @@ export class RbcPortError extends RbcError {
 export class RbcRejectedError extends RbcError {
   override name = "RbcRejectedError";
   constructor(
-    message: string,
+    message: string | undefined,
     readonly deviceErrorCode?: number,
+    situation?: RbcSituation,
   ) {
-    super("rejected", message);
+    super("rejected", message, { situation });
   }
 }
 
 export class RbcBadReplyError extends RbcError {
   override name = "RbcBadReplyError";
-  constructor(message: string, cause?: unknown) {
-    super("bad-reply", message, { cause });
+  constructor(message: string | undefined, cause?: unknown, situation?: RbcSituation) {
+    super("bad-reply", message, { cause, situation });
   }
 }
 

@@ -78,10 +78,7 @@ export async function runLimp(core: ClientCore): Promise<LimpResult> {
     await c.writeRaw(EXIT_DIRECT_MODE, "leave direct mode (blind)").catch(() => {});
     activity.exitDirect();
     c.setMode("packet");
-    throw new RbcError(
-      "timeout",
-      "Limp: the robot did not switch to servo control, so its servos could not be made limp. Switch the robot off.",
-    );
+    throw new RbcError("timeout", undefined, { situation: { kind: "limp-no-servo-control" } });
   }, epoch);
 }
 

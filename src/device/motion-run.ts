@@ -121,9 +121,7 @@ export async function runMotionReport(
   });
   if (ended.report.echoed === BASIC_POSTURE_MOTION && motion !== BASIC_POSTURE_MOTION) {
     if (ended.by === "stop") {
-      throw new RbcCancelledError(
-        `Stopped by Stop: motion ${motion} ended at the end of its scene and the robot holds that pose (the robot answered 07).`,
-      );
+      throw new RbcCancelledError(undefined, undefined, { kind: "motion-stopped", motion });
     }
     if (ended.by === "limp")
       throw new RbcCancelledError(undefined, undefined, { kind: "cancelled-by", by: "limp" });

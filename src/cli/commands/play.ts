@@ -188,21 +188,6 @@ export function finishedSentence(result: TetheredPlayResult, what: string, local
     : t("cmd.play.playedWithin", { ...read, deviation: String(back.maxDeviation) });
 }
 
-/** What a failed tethered play left the servos holding, in `locale`. */
-function playHoldsText(e: TetheredPlayError, locale: Locale): string {
-  const t = translator(commandMessages, locale);
-  switch (e.holds) {
-    case "nothing-sent":
-      return t("cmd.play.holds.nothingSent");
-    case "last-frame":
-      return e.lastFrame
-        ? t("cmd.play.holds.lastFrame", { frame: frameWords(e.lastFrame, locale) })
-        : t("cmd.play.holds.lastFrameUnnamed");
-    default:
-      return t("cmd.play.holds.unknown");
-  }
-}
-
 export const playCommand: CommandDef = {
   name: "play",
   usage: "rbc play FILE.rbm [--scenes A-B] [--yes] (--port PATH | --demo)",
@@ -284,7 +269,8 @@ export const playCommand: CommandDef = {
     } catch (e) {
       env.setExitNote(undefined);
       if (e instanceof TetheredPlayError) {
-        const words = { en: e.message, ko: `${errorLine(e, "ko")} ${playHoldsText(e, "ko")}` };
+        // The catalogue's sentence says what the servos hold (nothing sent, the last frame, unknown).
+        const words = { en: errorLine(e, "en"), ko: errorLine(e, "ko") };
         throw new CliError(e.code, words, EXIT.failed, {
           framesSent: e.framesSent,
           totalFrames: e.totalFrames,

@@ -27,7 +27,7 @@ export interface ServoBusHost {
 export class ServoDoctorStoppedError extends RbcCancelledError {
   override name = "ServoDoctorStoppedError";
   constructor() {
-    super("Stopped by Stop (or Limp): nothing more was sent to the servos.");
+    super(undefined, undefined, { kind: "doctor-stopped" });
   }
 }
 
@@ -120,7 +120,7 @@ export class ServoBus {
       return Promise.reject(
         range
           ? new RbcInvalidArgumentError(undefined, { kind: "servo-range", id, ...range, position })
-          : new RbcInvalidArgumentError(`Servo ${id} has no published safe range; nothing was sent.`),
+          : new RbcInvalidArgumentError(undefined, { kind: "no-safe-range", id }),
       );
     }
     return this.#send(() => wckMove(id, position, torque), `move servo ${id} to ${position}`, signal, epoch);
@@ -151,7 +151,7 @@ export class ServoBus {
     return this.#host
       .exclusive(() => {
         if (this.#host.mode !== "direct") {
-          throw new RbcError("wrong-mode", "The servo doctor needs direct mode, and the robot is not in it.");
+          throw new RbcError("wrong-mode", undefined, { situation: { kind: "doctor-needs-direct-mode" } });
         }
         return writeAndListen(this.#raw, this.#host.clock, packet, this.timing(packet.length), note, signal);
       }, epoch)

@@ -7,39 +7,29 @@ import {
   RbcNotSupportedError,
   RbcRunNoReplyError,
   RbcRunNotPlayedError,
-  type RbcSituation,
   RbcTimeoutError,
   RbcUploadError,
+  RbcVerifyError,
   ZeroBackupError,
   ZeroWriteFailedError,
 } from "../../device/errors.ts";
 import { FirmwareUpdateError } from "../../device/firmware-update.ts";
 import { LinkError } from "../../link/transport.ts";
-import { zerosNotWrittenText } from "../../protocol/zeros.ts";
 import type { Locale } from "../locale.ts";
 import {
-  cancelledByText,
   codeNeedsDetail,
   codeText,
-  directModeNeededText,
   inBootloaderRecoverText,
   inBootloaderText,
   linkCodeText,
-  motionNotStartedText,
   nothingSentText,
   seeDetailText,
-  servoIdRangeText,
-  servoRangeText,
-  stoppedWaitingText,
   timeoutText,
   unexpectedText,
   uploadAcknowledgedText,
-  uploadCancelledByStopText,
   uploadOutcomeText,
   zerosBackupFailedText,
   zerosBackupKeptText,
-  zerosCancelledBeforeWriteText,
-  zerosNotReadText,
 } from "./device.ts";
 import { firmwareFailureText } from "./firmware/firmware-words.ts";
 import {
@@ -50,7 +40,8 @@ import {
   runReportText,
   stopNoReplyText,
 } from "./run-words.ts";
-import { uploadCancelledEarlyText, uploadFailureText } from "./upload-words.ts";
+import { situationText, zerosVerifyText } from "./situation-text.ts";
+import { uploadFailureText } from "./upload-words.ts";
 
 /**
  * The device's errors for a person, in their language (the panel's notices, the command line's one line), from
@@ -70,41 +61,11 @@ export interface ErrorTextOptions {
   detailHint?: string;
 }
 
-/** What the facts of `s` say, when they say more than the code. */
-function situationText(s: RbcSituation, e: RbcError, locale: Locale, hint: string): string | undefined {
-  switch (s.kind) {
-    case "code":
-      return undefined;
-    case "cancelled-by":
-      return cancelledByText(s.by, locale);
-    case "upload-cancelled-by-stop":
-      return uploadCancelledByStopText(locale);
-    case "upload-cancelled-early":
-      return uploadCancelledEarlyText(false, locale);
-    case "motion-not-started":
-      return motionNotStartedText(s.motion, s.by, locale);
-    case "stopped-waiting":
-      return stoppedWaitingText(s.command, locale);
-    case "zeros-cancelled-before-write":
-      return zerosCancelledBeforeWriteText(s.backupName, locale);
-    case "zeros-not-read":
-      return `${zerosNotReadText(locale)} ${fromFacts(e.cause, locale, hint)}`;
-    case "zeros-not-written":
-      return zerosNotWrittenText(s.problems, locale);
-    case "direct-mode-needed":
-      return directModeNeededText(locale);
-    case "servo-range":
-      return servoRangeText(s.id, s, s.position, locale);
-    case "servo-id-range":
-      return servoIdRangeText(s.id, s.max, locale);
-  }
-}
-
 /** What a reader of `locale` is told about `e`, from its code and facts. */
 function fromFacts(e: unknown, locale: Locale, hint: string): string {
   const withHint = (text: string) => `${text} ${hint}`;
   const said = (e: RbcError) => {
-    const worded = e.situation && situationText(e.situation, e, locale, hint);
+    const worded = e.situation && situationText(e.situation, locale, () => fromFacts(e.cause, locale, hint));
     if (worded !== undefined) return worded;
     if (e.situation === undefined && locale === "en") return e.message;
     return codeNeedsDetail(e.code) ? withHint(codeText(e.code, locale)) : codeText(e.code, locale);
@@ -124,6 +85,7 @@ function fromFacts(e: unknown, locale: Locale, hint: string): string {
     return zerosBackupFailedText(locale === "en" ? reason : undefined, locale);
   }
   if (e instanceof FirmwareUpdateError) return firmwareFailureText(e, locale);
+  if (e instanceof RbcVerifyError) return zerosVerifyText(e.expected, e.readBack, locale);
   if (e instanceof RbcTimeoutError) return timeoutText(e.command, e.waitedMs, locale);
   if (e instanceof RbcInBootloaderError) {
     return `${inBootloaderText(e.facts.prompts, locale)} ${inBootloaderRecoverText(locale)}`;

@@ -1,0 +1,117 @@
+import { defineMessages } from "../catalogue.ts";
+
+/**
+ * The device errors' situations beyond their code (`RbcError.situation`, src/device/situation.ts): servo
+ * control and the servo check, Limp and Stop, the zero write and tethered play. Worded by `situation-text.ts`;
+ * part of the one outcome catalogue (docs/i18n.md "Outcomes").
+ */
+export const situationMessages = defineMessages({
+  "outcome.servo.noSafeRange": {
+    en: "Servo {id} has no published safe range; nothing was sent.",
+    ko: "서보 {id}번은 공개된 안전 범위가 없어요. 아무것도 보내지 않았어요.",
+  },
+  "outcome.servo.noSafeRangeWiggle": {
+    en: "Servo {id} has no published safe range (only 0-15 have one); nothing was sent.",
+    ko: "서보 {id}번은 공개된 안전 범위가 없어요 (0-15번에만 있어요). 아무것도 보내지 않았어요.",
+  },
+  "outcome.servo.moveRange": {
+    en: "Servo {id} may only move within {min}-{max}; nothing was sent.",
+    ko: "서보 {id}번은 {min}-{max} 안에서만 움직일 수 있어요. 아무것도 보내지 않았어요.",
+  },
+  "outcome.servo.impossiblePosition": {
+    en: "Servo {id} answered an impossible position ({position}); try again.",
+    ko: "서보 {id}번이 있을 수 없는 위치({position})를 알려 왔어요. 다시 해 보세요.",
+  },
+  "outcome.doctor.needsDirectMode": {
+    en: "The servo doctor needs direct mode, and the robot is not in it.",
+    ko: "서보 점검에는 직접 모드가 필요한데, 로봇이 직접 모드가 아니에요.",
+  },
+  "outcome.doctor.stopped": {
+    en: "Stopped by Stop (or Limp): nothing more was sent to the servos.",
+    ko: "정지(또는 힘 빼기) 때문에 멈췄어요. 서보에 더 보내지 않았어요.",
+  },
+  "outcome.setId.presentRange": {
+    en: "The present id must be 0-{max}, got {id}; nothing was sent.",
+    ko: "현재 ID는 0-{max}이어야 해요. 받은 값: {id}. 아무것도 보내지 않았어요.",
+  },
+  "outcome.setId.newRange": {
+    en: "The new id must be 0-{max}, got {id}; nothing was sent.",
+    ko: "새 ID는 0-{max}이어야 해요. 받은 값: {id}. 아무것도 보내지 않았어요.",
+  },
+  "outcome.setId.same": {
+    en: "The new id must differ from {id}; nothing was sent.",
+    ko: "새 ID는 {id}와(과) 달라야 해요. 아무것도 보내지 않았어요.",
+  },
+  "outcome.scan.noIds": {
+    en: "No servo ids to read; nothing was sent.",
+    ko: "읽을 서보 ID가 없어요. 아무것도 보내지 않았어요.",
+  },
+  "outcome.scan.idTwice": {
+    en: "Servo id {id} is listed twice; nothing was sent.",
+    ko: "서보 ID {id}이(가) 두 번 들어 있어요. 아무것도 보내지 않았어요.",
+  },
+  "outcome.wiggle.counts": {
+    en: "A wiggle moves 1-20 counts, got {counts}; nothing was sent.",
+    ko: "흔들기는 1-20만큼 움직여요. 받은 값: {counts}. 아무것도 보내지 않았어요.",
+  },
+  "outcome.limp.noServoControl": {
+    en: "Limp: the robot did not switch to servo control, so its servos could not be made limp. Switch the robot off.",
+    ko: "힘 빼기: 로봇이 서보 제어로 바뀌지 않아서 서보의 힘을 뺄 수 없었어요. 로봇의 전원을 꺼 주세요.",
+  },
+  "outcome.stop.motionStopped": {
+    en: "Stopped by Stop: motion {motion} ended at the end of its scene and the robot holds that pose (the robot answered 07).",
+    ko: "정지로 멈췄어요. 모션 {motion}번은 장면이 끝나는 곳에서 끝났고, 로봇은 그 자세를 유지하고 있어요 (로봇이 07로 응답했어요).",
+  },
+  "outcome.zeros.writeUnknown": {
+    en: "The robot did not confirm the zero write and did not answer a read either; its stored zeros are unknown. Check the connection, then read them again before anything else.",
+    ko: "로봇이 영점 쓰기를 확인해 주지 않았고 읽기에도 응답하지 않았어요. 저장된 영점을 알 수 없어요. 연결을 확인한 뒤, 다른 일을 하기 전에 영점을 다시 읽어 주세요.",
+  },
+  "outcome.zeros.writeRefused": {
+    en: "The robot did not confirm the zero write, and reading them back shows the new values were not stored (the robot refuses a table it considers out of range).",
+    ko: "로봇이 영점 쓰기를 확인해 주지 않았고, 다시 읽어 보니 새 값이 저장되지 않았어요 (로봇은 범위를 벗어났다고 보는 표를 거부해요).",
+  },
+  "outcome.zeros.echoDiffers": {
+    en: "The robot echoed different zeros ({echo}); read them back to check.",
+    ko: "로봇이 다른 영점({echo})을 돌려보냈어요. 다시 읽어서 확인해 주세요.",
+  },
+  "outcome.zeros.verifyFailed": {
+    en: "Zeros were sent, but the robot reads back {readBack} instead of {expected}.",
+    ko: "영점을 보냈지만, 로봇에서 다시 읽은 값이 {expected}이(가) 아니라 {readBack}이에요.",
+  },
+  "outcome.play.platform": {
+    en: "The platform must be a whole number 0-255, got {platform}. Nothing was sent to the robot.",
+    ko: "플랫폼은 0-255 사이의 정수여야 해요. 받은 값: {platform}. 로봇에 아무것도 보내지 않았어요.",
+  },
+  "outcome.play.refused": {
+    en: "{reason} Nothing was sent to the robot.",
+    ko: "{reason} 로봇에 아무것도 보내지 않았어요.",
+  },
+  "outcome.play.servoSilent": {
+    en: "Servo {ids} did not answer in servo control, so its position is not known (the synchronised move drives every servo from 0 to {maxId}). Nothing was moved. Check the servo cables and that the robot is switched on.",
+    ko: "서보 {ids}번이 서보 제어에서 응답하지 않아서 위치를 알 수 없어요 (동기 이동은 0번부터 {maxId}번까지 모든 서보를 움직여요). 아무것도 움직이지 않았어요. 서보 케이블을 확인하고 로봇이 켜져 있는지 확인해 주세요.",
+  },
+  "outcome.play.servosSilent": {
+    en: "Servos {ids} did not answer in servo control, so their position is not known (the synchronised move drives every servo from 0 to {maxId}). Nothing was moved. Check the servo cables and that the robot is switched on.",
+    ko: "서보 {ids}번이 서보 제어에서 응답하지 않아서 위치를 알 수 없어요 (동기 이동은 0번부터 {maxId}번까지 모든 서보를 움직여요). 아무것도 움직이지 않았어요. 서보 케이블을 확인하고 로봇이 켜져 있는지 확인해 주세요.",
+  },
+  "outcome.play.unconfirmed": {
+    en: "All {frames} frames were sent (the last: {frame}), but no servo answered afterwards, so whether the robot played them is not known. If it is powered, its servos hold the last frame they got. Check the robot and its cable.",
+    ko: "프레임 {frames}개를 모두 보냈지만 (마지막: {frame}) 그 뒤로 어떤 서보도 응답하지 않아서, 로봇이 재생했는지 알 수 없어요. 전원이 켜져 있다면 서보는 마지막으로 받은 프레임을 유지하고 있어요. 로봇과 케이블을 확인해 주세요.",
+  },
+  "outcome.play.lost": {
+    en: "{what} during tethered play, {where}. The robot's state is unknown: its servos may hold the last frame they got, or be limp if it lost power. Check the robot and the cable, then connect again.",
+    ko: "로봇에서 재생하는 중 {where} {what} 로봇의 상태를 알 수 없어요. 서보가 마지막으로 받은 프레임을 유지하고 있거나, 전원이 끊겼다면 힘이 빠져 있을 수 있어요. 로봇과 케이블을 확인한 뒤 다시 연결해 주세요.",
+  },
+  "outcome.play.lost.connection": { en: "The connection was lost", ko: "연결이 끊겼어요." },
+  "outcome.play.lost.timeout": {
+    en: "A frame could not be written within its time",
+    ko: "프레임을 제시간에 보내지 못했어요.",
+  },
+  "outcome.play.lost.beforeFirst": { en: "before the first frame", ko: "첫 프레임을 보내기 전에" },
+  "outcome.play.lost.after": {
+    en: "after {sent} of {total} frames (the last: {frame})",
+    ko: "프레임 {total}개 중 {sent}개를 보낸 뒤 (마지막: {frame})",
+  },
+  "outcome.play.sceneFrame": { en: "scene {scene}, frame {frame}", ko: "장면 {scene}, 프레임 {frame}" },
+  "outcome.play.transitionFrame": { en: "transition frame {frame}", ko: "전환 프레임 {frame}" },
+});
