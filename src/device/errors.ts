@@ -78,9 +78,12 @@ export class RbcTimeoutError extends RbcError {
 
 export class RbcDisconnectedError extends RbcError {
   override name = "RbcDisconnectedError";
-  /** @param message What the link reported, when it said (English, from the link). */
-  constructor(message?: string, cause?: unknown) {
-    super("disconnected", message, { cause });
+  /**
+   * @param message A technical line, or undefined: the `situation` (or the code) says it.
+   * @param situation What is known: the link's own report, a `close()`.
+   */
+  constructor(message?: string, cause?: unknown, situation?: RbcSituation) {
+    super("disconnected", message, { cause, situation });
   }
 }
 

@@ -51,7 +51,7 @@ export async function runMotionReport(
 ): Promise<RunReport> {
   const { c, activity, runs } = core;
   if (!Number.isInteger(motion) || motion < 0 || motion > 63) {
-    throw new RbcInvalidArgumentError(`Motion number must be 0-63, got ${motion}. Nothing was sent.`);
+    throw new RbcInvalidArgumentError(undefined, { kind: "motion-number-range", motion });
   }
   const knownMs = options.expectedMs ?? builtInDurationMs(motion) ?? runs.durations.get(motion);
   const expectedMs = knownMs ?? c.timeouts.unknownMotionMs;

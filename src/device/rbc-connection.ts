@@ -192,7 +192,9 @@ export class RbcConnection {
    * port that opens but where nothing answers as `RbcError("no-robot")`, so callers handle one error family.
    */
   async connect<T>(handshake: () => Promise<T>): Promise<T> {
-    if (this.mode !== "disconnected") throw new RbcError("wrong-mode", "Already connected.");
+    if (this.mode !== "disconnected") {
+      throw new RbcError("wrong-mode", undefined, { situation: { kind: "already-connected" } });
+    }
     this.setState({
       mode: "connecting",
       reason: undefined,
@@ -251,7 +253,7 @@ export class RbcConnection {
       this.emitLog({ direction: "out", kind: "raw", name, bytes: farewell });
       await this.withTimeout(this.transport.write(farewell), this.timeouts.quickMs, "close").catch(() => {});
     }
-    this.failPending(new RbcDisconnectedError("The connection was closed."));
+    this.failPending(new RbcDisconnectedError(undefined, undefined, { kind: "connection-closed" }));
     for (const u of this.unlisten) u();
     this.unlisten = [];
     await this.transport.close();
@@ -504,10 +506,16 @@ export class RbcConnection {
     if (this.mode === "disconnected") {
       const lost = this._state.reason;
       if (!lost) throw new RbcNotConnectedError();
-      throw new RbcDisconnectedError(lost === LINK_LOST ? undefined : `${lost} Connect again.`);
+      throw new RbcDisconnectedError(
+        undefined,
+        undefined,
+        lost === LINK_LOST ? undefined : { kind: "link-lost", reported: lost, then: "connect-again" },
+      );
     }
     if (this.mode === "direct") {
-      throw new RbcError("wrong-mode", `"${what}" needs the normal mode: leave direct servo control first.`);
+      throw new RbcError("wrong-mode", undefined, {
+        situation: { kind: "needs-normal-mode", command: what },
+      });
     }
   }
 
@@ -585,8 +593,11 @@ export class RbcConnection {
     if (event.status !== "lost") return;
     // The link says what happened; without its words, the error is worded by its code (a lost link).
     const reason = event.reason ?? LINK_LOST;
-    const message = event.reason === undefined ? undefined : `${reason} Check the cable, then connect again.`;
-    this.failPending(new RbcDisconnectedError(message, event.error));
+    const situation =
+      event.reason === undefined
+        ? undefined
+        : ({ kind: "link-lost", reported: reason, then: "check-cable" } as const);
+    this.failPending(new RbcDisconnectedError(undefined, event.error, situation));
     this.subscription = undefined;
     this.setState({
       mode: "disconnected",

@@ -33,6 +33,19 @@ export type RbcSituation =
   | { kind: "servo-range"; id: number; min: number; max: number; position: number }
   /** A servo id outside 0-`max`; nothing was sent. */
   | { kind: "servo-id-range"; id: number; max: number }
+  /** A motion number outside 0-63 (Run Motion); nothing was sent. */
+  | { kind: "motion-number-range"; motion: number }
+  /** A sound number outside 1-25; nothing was sent. */
+  | { kind: "sound-number-range"; sound: number }
+  /** A file larger than the area's free memory: nothing was sent. */
+  | { kind: "not-enough-memory"; area: "motion" | "action"; total: number; free: number }
+  | { kind: "already-connected" }
+  /** `close()` was called while the request waited. */
+  | { kind: "connection-closed" }
+  /** The link reported the loss in its own (English) words; `then`: what the person does next. */
+  | { kind: "link-lost"; reported: string; then: "check-cable" | "connect-again" }
+  /** A packet request (`command`) while the client is in direct servo control. */
+  | { kind: "needs-normal-mode"; command: string }
   /** A servo with no published safe range (`wiggle`: a wiggle test, which names the ids that have one). */
   | { kind: "no-safe-range"; id: number; wiggle?: boolean }
   /** A direct-mode move outside servo `id`'s range (`DirectMode.move`, position not named). */

@@ -85,9 +85,12 @@ export async function uploadFile(
   // [decision] A file fits when its bytes do (the rounding only moves the next file's start), as the simulator
   // decides too (docs/protocol.md §6.1).
   if (total > freeBefore) {
-    throw new RbcRejectedError(
-      `Not enough ${area} memory: the file has ${total} bytes, ${freeBefore} are free. Reset the ${area} memory (this forgets every downloaded ${area}) and try again. Nothing was sent.`,
-    );
+    throw new RbcRejectedError(undefined, undefined, {
+      kind: "not-enough-memory",
+      area,
+      total,
+      free: freeBefore,
+    });
   }
 
   // Read for each part: the quick timeout follows the link's measured round trip.

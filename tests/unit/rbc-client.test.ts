@@ -137,7 +137,8 @@ describe("RbcClient against the simulated RBC", () => {
     await run(client.writeAction(big.subarray(0, 5000)));
     const error = await run(client.writeAction(big.subarray(0, 4000)).catch((e) => e));
     expect(error).toMatchObject({ code: "rejected" });
-    expect(String(error.message)).toMatch(/has 4000 bytes, 3136 are free/);
+    expect(error.situation).toEqual({ kind: "not-enough-memory", area: "action", total: 4000, free: 3136 });
+    expect(errorText(error, "en")).toMatch(/has 4000 bytes, 3136 are free/);
     expect(sim.actions).toHaveLength(1);
     // Client and simulator agree on the edge: a file exactly as large as the free memory fits.
     const exact = await run(client.writeAction(big.subarray(0, 3136)));

@@ -1,3 +1,4 @@
+import { ActivityRefusedError } from "../../device/activity.ts";
 import {
   RbcBusyError,
   RbcEmptySlotError,
@@ -40,7 +41,7 @@ import {
   runReportText,
   stopNoReplyText,
 } from "./run-words.ts";
-import { situationText, zerosVerifyText } from "./situation-text.ts";
+import { activityRefusedText, situationText, zerosVerifyText } from "./situation-text.ts";
 import { uploadFailureText } from "./upload-words.ts";
 
 /**
@@ -85,6 +86,7 @@ function fromFacts(e: unknown, locale: Locale, hint: string): string {
     return zerosBackupFailedText(locale === "en" ? reason : undefined, locale);
   }
   if (e instanceof FirmwareUpdateError) return firmwareFailureText(e, locale);
+  if (e instanceof ActivityRefusedError) return activityRefusedText(e.from, locale);
   if (e instanceof RbcVerifyError) return zerosVerifyText(e.expected, e.readBack, locale);
   if (e instanceof RbcTimeoutError) return timeoutText(e.command, e.waitedMs, locale);
   if (e instanceof RbcInBootloaderError) {

@@ -6,6 +6,47 @@ import { defineMessages } from "../catalogue.ts";
  * part of the one outcome catalogue (docs/i18n.md "Outcomes").
  */
 export const situationMessages = defineMessages({
+  "outcome.motionNumberRange": {
+    en: "Motion number must be 0-63, got {motion}. Nothing was sent.",
+    ko: "모션 번호는 0-63이어야 해요. 받은 값: {motion}. 아무것도 보내지 않았어요.",
+  },
+  "outcome.soundNumberRange": {
+    en: "Sound number must be 1-25, got {sound}. Nothing was sent.",
+    ko: "소리 번호는 1-25여야 해요. 받은 값: {sound}. 아무것도 보내지 않았어요.",
+  },
+  "outcome.notEnoughMemory": {
+    en: "Not enough {area} memory: the file has {total} bytes, {free} are free. Reset the {area} memory (this forgets every downloaded {area}) and try again. Nothing was sent.",
+    ko: "{area} 메모리가 부족해요. 파일은 {total}바이트인데 남은 공간은 {free}바이트예요. {area} 메모리를 초기화한 뒤 (내려받은 {area}을(를) 모두 잊어요) 다시 해 주세요. 아무것도 보내지 않았어요.",
+  },
+  "outcome.alreadyConnected": { en: "Already connected.", ko: "이미 연결되어 있어요." },
+  "outcome.connectionClosed": { en: "The connection was closed.", ko: "연결을 닫았어요." },
+  "outcome.linkLost.checkCable": {
+    en: "{reported} Check the cable, then connect again.",
+    ko: "로봇과의 연결이 끊겼어요 ({reported}). 케이블을 확인한 뒤 다시 연결해 주세요.",
+  },
+  "outcome.linkLost.connectAgain": {
+    en: "{reported} Connect again.",
+    ko: "로봇과의 연결이 끊겼어요 ({reported}). 다시 연결해 주세요.",
+  },
+  "outcome.needsNormalMode": {
+    en: '"{command}" needs the normal mode: leave direct servo control first.',
+    ko: '"{command}"에는 일반 모드가 필요해요. 먼저 직접 서보 제어를 끝내 주세요.',
+  },
+  "outcome.activity.refused": {
+    en: "Not started: the robot is {now}. Nothing was sent.",
+    ko: "시작하지 않았어요. 로봇이 지금 {now}. 아무것도 보내지 않았어요.",
+  },
+  "outcome.activity.idle": { en: "idle", ko: "쉬고 있어요" },
+  "outcome.activity.motion": { en: "playing a motion", ko: "모션을 재생하고 있어요" },
+  "outcome.activity.busy": {
+    en: "playing a motion started elsewhere",
+    ko: "다른 곳에서 시작한 모션을 재생하고 있어요",
+  },
+  "outcome.activity.sound": { en: "playing a sound", ko: "소리를 내고 있어요" },
+  "outcome.activity.upload": { en: "receiving an upload", ko: "업로드를 받고 있어요" },
+  "outcome.activity.direct": { en: "in direct servo control", ko: "직접 서보 제어 중이에요" },
+  "outcome.activity.stop": { en: "ending an activity (Stop)", ko: "하던 일을 끝내고 있어요 (정지)" },
+  "outcome.activity.limp": { en: "going limp", ko: "힘을 빼고 있어요" },
   "outcome.servo.noSafeRange": {
     en: "Servo {id} has no published safe range; nothing was sent.",
     ko: "서보 {id}번은 공개된 안전 범위가 없어요. 아무것도 보내지 않았어요.",

@@ -1,3 +1,4 @@
+import type { ActivityRefusedError } from "../../device/activity.ts";
 import type { FrameIndex, RbcSituation } from "../../device/situation.ts";
 import { zerosNotWrittenText } from "../../protocol/zeros.ts";
 import type { Locale } from "../locale.ts";
@@ -14,11 +15,17 @@ import {
   zerosNotReadText,
 } from "./device.ts";
 import { situationMessages as messages } from "./situation-messages.ts";
-import { uploadCancelledEarlyText } from "./upload-words.ts";
+import { areaText, uploadCancelledEarlyText } from "./upload-words.ts";
 
 /** A device error's situation (`RbcError.situation`, src/device/situation.ts) in words, in either language. */
 
 const t = (locale: Locale) => translator(messages, locale);
+
+/** "Not started: the robot is playing a motion. Nothing was sent." (`ActivityRefusedError`, by what it was doing). */
+export function activityRefusedText(from: ActivityRefusedError["from"], locale: Locale): string {
+  const say = t(locale);
+  return say("outcome.activity.refused", { now: say(`outcome.activity.${from}`) });
+}
 
 /** "scene 2, frame 5" / "장면 2, 프레임 5"; a transition frame for scene -1. */
 export function playFrameText(frame: FrameIndex, locale: Locale): string {
@@ -79,6 +86,26 @@ export function situationText(s: RbcSituation, locale: Locale, causeText: () => 
       return servoRangeText(s.id, s, s.position, locale);
     case "servo-id-range":
       return servoIdRangeText(s.id, s.max, locale);
+    case "motion-number-range":
+      return say("outcome.motionNumberRange", { motion: String(s.motion) });
+    case "sound-number-range":
+      return say("outcome.soundNumberRange", { sound: String(s.sound) });
+    case "not-enough-memory":
+      return say("outcome.notEnoughMemory", {
+        area: areaText(s.area, locale),
+        total: String(s.total),
+        free: String(s.free),
+      });
+    case "already-connected":
+      return say("outcome.alreadyConnected");
+    case "connection-closed":
+      return say("outcome.connectionClosed");
+    case "link-lost":
+      return say(s.then === "check-cable" ? "outcome.linkLost.checkCable" : "outcome.linkLost.connectAgain", {
+        reported: s.reported,
+      });
+    case "needs-normal-mode":
+      return say("outcome.needsNormalMode", { command: s.command });
     case "no-safe-range":
       return say(s.wiggle ? "outcome.servo.noSafeRangeWiggle" : "outcome.servo.noSafeRange", {
         id: String(s.id),
