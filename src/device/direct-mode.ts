@@ -143,9 +143,7 @@ export class DirectMode {
     try {
       packet = build();
     } catch (e) {
-      return Promise.reject(
-        new RbcInvalidArgumentError(`${e instanceof Error ? e.message : e} Nothing was sent.`),
-      );
+      return Promise.reject(new RbcInvalidArgumentError(undefined, { kind: "not-encoded" }, e));
     }
     return this.#host.exclusive(async () => {
       this.requireDirect();

@@ -149,8 +149,8 @@ export class RbcCancelledError extends RbcError {
 export class RbcInvalidArgumentError extends RbcError {
   override name = "RbcInvalidArgumentError";
   /** @param message The device's own English sentence, or undefined with the `situation` to word. */
-  constructor(message: string | undefined, situation?: RbcSituation) {
-    super("invalid-argument", message, { situation });
+  constructor(message: string | undefined, situation?: RbcSituation, cause?: unknown) {
+    super("invalid-argument", message, { situation, cause });
   }
 }
 

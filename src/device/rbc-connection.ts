@@ -329,7 +329,9 @@ export class RbcConnection {
     try {
       contents = spec.request(args);
     } catch (e) {
-      throw e instanceof ProtocolError ? new RbcInvalidArgumentError(`${e.message} Nothing was sent.`) : e;
+      throw e instanceof ProtocolError
+        ? new RbcInvalidArgumentError(undefined, { kind: "not-encoded" }, e)
+        : e;
     }
     const timeoutFor = () => options.timeoutMs ?? this.timeoutFor(spec, args, options.expectedMs);
     timeoutFor(); // a row without a reply is refused before anything is sent

@@ -33,6 +33,10 @@ export type RbcSituation =
   | { kind: "servo-range"; id: number; min: number; max: number; position: number }
   /** A servo id outside 0-`max`; nothing was sent. */
   | { kind: "servo-id-range"; id: number; max: number }
+  /** The request could not be encoded (the `cause`, a protocol or servo-bus refusal, says why): nothing was sent. */
+  | { kind: "not-encoded" }
+  /** A file of a size the area cannot hold (1-`max` bytes): nothing was sent. */
+  | { kind: "file-size"; area: "motion" | "action"; max: number; total: number }
   /** A motion number outside 0-63 (Run Motion); nothing was sent. */
   | { kind: "motion-number-range"; motion: number }
   /** A sound number outside 1-25; nothing was sent. */

@@ -70,9 +70,7 @@ export async function uploadFile(
   const total = payload.length;
   const areaBytes = area === "motion" ? MOTION_AREA_BYTES : ACTION_AREA_BYTES;
   if (total < 1 || total > areaBytes) {
-    throw new RbcInvalidArgumentError(
-      `A ${area} file must be 1-${areaBytes} bytes; this one is ${total}. Nothing was sent.`,
-    );
+    throw new RbcInvalidArgumentError(undefined, { kind: "file-size", area, max: areaBytes, total });
   }
   if (signal?.aborted) throw new RbcCancelledError(undefined, undefined, { kind: "upload-cancelled-early" });
   const started = io.now();

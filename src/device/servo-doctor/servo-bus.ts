@@ -141,9 +141,7 @@ export class ServoBus {
     try {
       packet = build();
     } catch (e) {
-      return Promise.reject(
-        new RbcInvalidArgumentError(`${e instanceof Error ? e.message : String(e)} Nothing was sent.`),
-      );
+      return Promise.reject(new RbcInvalidArgumentError(undefined, { kind: "not-encoded" }, e));
     }
     if (epoch !== undefined && epoch !== this.#host.epoch) {
       return Promise.reject(new ServoDoctorStoppedError());

@@ -66,7 +66,9 @@ export interface ErrorTextOptions {
 function fromFacts(e: unknown, locale: Locale, hint: string): string {
   const withHint = (text: string) => `${text} ${hint}`;
   const said = (e: RbcError) => {
-    const worded = e.situation && situationText(e.situation, locale, () => fromFacts(e.cause, locale, hint));
+    const worded =
+      e.situation &&
+      situationText(e.situation, locale, () => errorText(e.cause, locale, { detailHint: hint }));
     if (worded !== undefined) return worded;
     if (e.situation === undefined && locale === "en") return e.message;
     return codeNeedsDetail(e.code) ? withHint(codeText(e.code, locale)) : codeText(e.code, locale);

@@ -6,6 +6,10 @@ import { defineMessages } from "../catalogue.ts";
  * part of the one outcome catalogue (docs/i18n.md "Outcomes").
  */
 export const situationMessages = defineMessages({
+  "outcome.fileSize": {
+    en: "A {area} file must be 1-{max} bytes; this one is {total}. Nothing was sent.",
+    ko: "{area} 파일은 1-{max}바이트여야 해요. 이 파일은 {total}바이트예요. 아무것도 보내지 않았어요.",
+  },
   "outcome.motionNumberRange": {
     en: "Motion number must be 0-63, got {motion}. Nothing was sent.",
     ko: "모션 번호는 0-63이어야 해요. 받은 값: {motion}. 아무것도 보내지 않았어요.",

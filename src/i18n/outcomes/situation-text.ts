@@ -7,6 +7,7 @@ import {
   cancelledByText,
   directModeNeededText,
   motionNotStartedText,
+  nothingSentText,
   servoIdRangeText,
   servoRangeText,
   stoppedWaitingText,
@@ -86,6 +87,14 @@ export function situationText(s: RbcSituation, locale: Locale, causeText: () => 
       return servoRangeText(s.id, s, s.position, locale);
     case "servo-id-range":
       return servoIdRangeText(s.id, s.max, locale);
+    case "not-encoded":
+      return `${causeText()} ${nothingSentText(locale)}`;
+    case "file-size":
+      return say("outcome.fileSize", {
+        area: areaText(s.area, locale),
+        max: String(s.max),
+        total: String(s.total),
+      });
     case "motion-number-range":
       return say("outcome.motionNumberRange", { motion: String(s.motion) });
     case "sound-number-range":
