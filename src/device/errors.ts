@@ -1,7 +1,7 @@
 import type { RunNoReply, RunReport } from "./run-outcome.ts";
 import type { RbcSituation } from "./situation.ts";
 
-export type { RbcSituation } from "./situation.ts";
+export type { FrameIndex, RbcSituation } from "./situation.ts";
 
 /**
  * Failures of RBC operations, as typed errors with a stable `code` and the facts a person needs (fields, and

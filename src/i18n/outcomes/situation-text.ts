@@ -1,5 +1,5 @@
 import type { ActivityRefusedError } from "../../device/activity.ts";
-import type { FrameIndex, RbcSituation } from "../../device/situation.ts";
+import type { FrameIndex, RbcSituation } from "../../device/errors.ts";
 import { zerosNotWrittenText } from "../../protocol/zeros.ts";
 import type { Locale } from "../locale.ts";
 import { translator } from "../translate.ts";
