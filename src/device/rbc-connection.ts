@@ -511,7 +511,7 @@ export class RbcConnection {
       throw new RbcDisconnectedError(
         undefined,
         undefined,
-        lost === LINK_LOST ? undefined : { kind: "link-lost", reported: lost, then: "connect-again" },
+        lost === LINK_LOST ? undefined : { kind: "link-lost", reported: lost, advice: "connect-again" },
       );
     }
     if (this.mode === "direct") {
@@ -598,7 +598,7 @@ export class RbcConnection {
     const situation =
       event.reason === undefined
         ? undefined
-        : ({ kind: "link-lost", reported: reason, then: "check-cable" } as const);
+        : ({ kind: "link-lost", reported: reason, advice: "check-cable" } as const);
     this.failPending(new RbcDisconnectedError(undefined, event.error, situation));
     this.subscription = undefined;
     this.setState({

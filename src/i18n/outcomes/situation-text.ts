@@ -110,9 +110,12 @@ export function situationText(s: RbcSituation, locale: Locale, causeText: () => 
     case "connection-closed":
       return say("outcome.connectionClosed");
     case "link-lost":
-      return say(s.then === "check-cable" ? "outcome.linkLost.checkCable" : "outcome.linkLost.connectAgain", {
-        reported: s.reported,
-      });
+      return say(
+        s.advice === "check-cable" ? "outcome.linkLost.checkCable" : "outcome.linkLost.connectAgain",
+        {
+          reported: s.reported,
+        },
+      );
     case "needs-normal-mode":
       return say("outcome.needsNormalMode", { command: s.command });
     case "no-safe-range":
