@@ -431,8 +431,6 @@ export const commandMessages = defineMessages({
   "cmd.play.oneScene": { en: "scene {scene}", ko: "장면 {scene}" },
   "cmd.play.someScenes": { en: "scenes {from}-{to}", ko: "장면 {from}-{to}" },
   "cmd.play.what": { en: "{scenes} of {file}", ko: "{file}의 {scenes}" },
-  "cmd.play.transitionFrame": { en: "transition frame {frame}", ko: "전환 프레임 {frame}" },
-  "cmd.play.sceneFrame": { en: "scene {scene}, frame {frame}", ko: "장면 {scene}, 프레임 {frame}" },
   "cmd.play.time": { en: "{elapsed} of {duration}", ko: "{duration} 중 {elapsed}" },
   "cmd.play.toFirstPose": {
     en: "Moving to the first pose, step {step}, {time}",

@@ -1,13 +1,9 @@
 import { readFile } from "node:fs/promises";
 import { basename, resolve } from "node:path";
-import {
-  frameLabel,
-  TetheredPlayError,
-  type TetheredPlayProgress,
-  type TetheredPlayResult,
-} from "../../device/index.ts";
+import { TetheredPlayError, type TetheredPlayProgress, type TetheredPlayResult } from "../../device/index.ts";
 import type { Locale } from "../../i18n/locale.ts";
 import { nothingSentText } from "../../i18n/outcomes/device.ts";
+import { playFrameText } from "../../i18n/outcomes/situation-text.ts";
 import { translator } from "../../i18n/translate.ts";
 import { formatSeconds } from "../../i18n/units.ts";
 import {
@@ -81,15 +77,6 @@ function scenesText({ from, to }: Range, doc: Motion, locale: Locale): string {
 }
 
 const seconds = (ms: number, locale: Locale) => formatSeconds(ms / 1000, locale);
-
-/** A frame of tethered play in words (`frameLabel` in English): "scene 2, frame 4" / "장면 2, 프레임 4". */
-function frameWords(frame: { scene: number; frame: number }, locale: Locale): string {
-  if (locale === "en") return frameLabel(frame);
-  const t = translator(commandMessages, locale);
-  return frame.scene < 0
-    ? t("cmd.play.transitionFrame", { frame: String(frame.frame) })
-    : t("cmd.play.sceneFrame", { scene: String(frame.scene), frame: String(frame.frame) });
-}
 
 /** Reads and checks the file; nothing is opened or sent when it is wrong. */
 async function readMotion(env: RunEnv, file: string): Promise<Motion> {
@@ -300,7 +287,7 @@ export const playCommand: CommandDef = {
         ? t("cmd.play.stoppedAfter", {
             sent: String(result.framesSent),
             total: String(result.totalFrames),
-            frame: frameWords(result.lastFrame, locale),
+            frame: playFrameText(result.lastFrame, locale),
           })
         : t("cmd.play.stoppedBefore");
       env.out.note(`rbc: ${t("cmd.interruptedBecause", { what: held })}`);
