@@ -42,10 +42,12 @@ export interface UploadHost {
 export function motionPayload(motion: RbmMotion): Uint8Array {
   const { errors } = validateRbm(motion);
   if (errors.length > 0) {
-    const first = errors[0]!;
-    throw new RbcInvalidArgumentError(
-      `The motion "${motion.name}" has ${errors.length} error${errors.length === 1 ? "" : "s"} the robot would refuse (first: ${first.message}). Nothing was sent.`,
-    );
+    throw new RbcInvalidArgumentError(undefined, {
+      kind: "motion-invalid",
+      name: motion.name,
+      count: errors.length,
+      first: errors[0]!,
+    });
   }
   return motionImage(motion);
 }

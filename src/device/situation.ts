@@ -1,3 +1,4 @@
+import type { RbmIssue } from "../protocol/rbm-validate.ts";
 import type { ZeroProblem } from "../protocol/zeros.ts";
 
 /** A frame of tethered play: a scene's frame, or (scene -1) a frame of the transition to the first pose. */
@@ -35,6 +36,8 @@ export type RbcSituation =
   | { kind: "servo-id-range"; id: number; max: number }
   /** The request could not be encoded (the `cause`, a protocol or servo-bus refusal, says why): nothing was sent. */
   | { kind: "not-encoded" }
+  /** A motion file with `count` errors under the RBC's rules (`first` of them): nothing was sent. */
+  | { kind: "motion-invalid"; name: string; count: number; first: RbmIssue }
   /** A file of a size the area cannot hold (1-`max` bytes): nothing was sent. */
   | { kind: "file-size"; area: "motion" | "action"; max: number; total: number }
   /** A motion number outside 0-63 (Run Motion); nothing was sent. */

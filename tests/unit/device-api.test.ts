@@ -204,7 +204,13 @@ describe("uploadMotion: image, reset, free memory, download, verification", () =
         .catch((e) => e),
     );
     expect(error).toMatchObject({ code: "invalid-argument" });
-    expect(error.message).toMatch(/Nothing was sent/);
+    expect(error.situation).toMatchObject({ kind: "motion-invalid", name: "TestBow", count: 1 });
+    expect(errorText(error, "en")).toMatch(
+      /^The motion "TestBow" has 1 error the robot would refuse \(first: .+\)\. Nothing was sent\.$/,
+    );
+    expect(errorText(error, "ko")).toMatch(
+      /^모션 "TestBow"에 로봇이 거부할 오류가 1개 있어요 .+아무것도 보내지 않았어요\.$/,
+    );
     expect(sim.stats.bytesReceived).toBe(sentBefore);
     expect(sim.motions).toHaveLength(0);
   });

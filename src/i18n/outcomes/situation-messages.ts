@@ -6,6 +6,14 @@ import { defineMessages } from "../catalogue.ts";
  * part of the one outcome catalogue (docs/i18n.md "Outcomes").
  */
 export const situationMessages = defineMessages({
+  "outcome.motionInvalid": {
+    en: {
+      one: 'The motion "{name}" has {count} error the robot would refuse (first: {first}). Nothing was sent.',
+      other:
+        'The motion "{name}" has {count} errors the robot would refuse (first: {first}). Nothing was sent.',
+    },
+    ko: '모션 "{name}"에 로봇이 거부할 오류가 {count}개 있어요 (첫 번째: {first}). 아무것도 보내지 않았어요.',
+  },
   "outcome.fileSize": {
     en: "A {area} file must be 1-{max} bytes; this one is {total}. Nothing was sent.",
     ko: "{area} 파일은 1-{max}바이트여야 해요. 이 파일은 {total}바이트예요. 아무것도 보내지 않았어요.",

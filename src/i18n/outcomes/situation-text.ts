@@ -15,6 +15,7 @@ import {
   zerosCancelledBeforeWriteText,
   zerosNotReadText,
 } from "./device.ts";
+import { rbmIssueText } from "./rbm/rbm-issue-text.ts";
 import { situationMessages as messages } from "./situation-messages.ts";
 import { areaText, uploadCancelledEarlyText } from "./upload-words.ts";
 
@@ -89,6 +90,12 @@ export function situationText(s: RbcSituation, locale: Locale, causeText: () => 
       return servoIdRangeText(s.id, s.max, locale);
     case "not-encoded":
       return `${causeText()} ${nothingSentText(locale)}`;
+    case "motion-invalid":
+      return say("outcome.motionInvalid", {
+        name: s.name,
+        count: s.count,
+        first: rbmIssueText(s.first, locale),
+      });
     case "file-size":
       return say("outcome.fileSize", {
         area: areaText(s.area, locale),
