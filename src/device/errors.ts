@@ -46,8 +46,9 @@ function technicalLine(code: RbcErrorCode, situation: RbcSituation): string {
 export class RbcError extends Error {
   override name = "RbcError";
   /**
-   * What the error is about, as facts the outcome catalogue words; undefined when `message` is the device's
-   * own English sentence, which an English reader is shown as it is.
+   * What the error is about, as facts the outcome catalogue words. Undefined when its class carries the facts
+   * (`RbcTimeoutError`, `RbcUploadError`, … which `errorText` knows), or when `message` is words of its own
+   * (the link's report of a port): an English reader is then shown `message` as it is.
    */
   readonly situation: RbcSituation | undefined;
   /**
