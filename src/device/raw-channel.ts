@@ -33,12 +33,8 @@ export class RbcUnexpectedAckError extends RbcError {
     /** The part the conversation was at ("chunk 4 (64 bytes)"), or after. */
     readonly where: string,
   ) {
-    super(
-      "bad-reply",
-      kind === "early"
-        ? `An unexpected acknowledgement arrived during ${where}, sooner than that part could have reached the robot.`
-        : `An unexpected acknowledgement arrived ${where}, when none was due.`,
-    );
+    // A technical line: the upload that meets it says it for a person (`RbcUploadError`, stop extra-ack/early-ack).
+    super("bad-reply", `unexpected acknowledgement (${kind}) ${where}`);
   }
 }
 
