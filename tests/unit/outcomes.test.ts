@@ -1,13 +1,15 @@
 /**
  * The outcome catalogue (src/i18n/outcomes, issue #19 item 1): every device outcome is worded once, in English
- * and Korean, from its code and facts. The device's errors take their English `message` from it, and the CLI
- * and the panel show the same words. Literal sentences, so a change to a word shows here.
+ * and Korean, from its code and facts. The device's errors carry those (their `message` is a technical line),
+ * and `errorText`, the CLI and the panel show the catalogue's words. Literal sentences, so a change to a word shows here.
  */
 import { describe, expect, it } from "vitest";
 import { RbcInBootloaderError } from "../../src/device/bootloader-prompt.ts";
 import {
+  RbcDisconnectedError,
   RbcNotConnectedError,
   RbcTimeoutError,
+  RbcVerifyError,
   ZeroBackupError,
   ZeroWriteFailedError,
 } from "../../src/device/errors.ts";
@@ -244,6 +246,24 @@ describe("the device's errors", () => {
       "Nothing was written: the backup of the current zeros could not be saved (disk full).",
     );
     expect(errorText(backup, "ko")).toBe("현재 영점의 백업을 저장하지 못해서 아무것도 쓰지 않았어요.");
+  });
+
+  it("word a situation from its facts: a lost link's own report stays English, and in the technical detail", () => {
+    const lost = new RbcDisconnectedError(undefined, undefined, {
+      kind: "link-lost",
+      reported: "The serial device was unplugged.",
+      advice: "check-cable",
+    });
+    expect(lost.message).toBe(
+      "disconnected: link-lost reported=The serial device was unplugged. advice=check-cable",
+    );
+    expect(errorText(lost, "en")).toBe(
+      "The serial device was unplugged. Check the cable, then connect again.",
+    );
+    expect(errorText(lost, "ko")).toBe("로봇과의 연결이 끊겼어요. 케이블을 확인한 뒤 다시 연결해 주세요.");
+    const verify = new RbcVerifyError("zeros read back 1,2 instead of 1,3", [1, 3], [1, 2]);
+    expect(errorText(verify, "en")).toBe("Zeros were sent, but the robot reads back 1,2 instead of 1,3.");
+    expect(errorText(verify, "ko")).toBe("영점을 보냈지만, 로봇에서 다시 읽으니 1,3 대신 1,2 값이 나와요.");
   });
 
   it("are recognised by their class, not by their name", () => {

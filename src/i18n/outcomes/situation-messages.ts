@@ -28,18 +28,16 @@ export const situationMessages = defineMessages({
   },
   "outcome.notEnoughMemory": {
     en: "Not enough {area} memory: the file has {total} bytes, {free} are free. Reset the {area} memory (this forgets every downloaded {area}) and try again. Nothing was sent.",
-    ko: "{area} 메모리가 부족해요. 파일은 {total}바이트인데 남은 공간은 {free}바이트예요. {area} 메모리를 초기화한 뒤 (내려받은 {area}을(를) 모두 잊어요) 다시 해 주세요. 아무것도 보내지 않았어요.",
+    ko: "{area} 메모리가 부족해요. 파일은 {total}바이트인데 남은 공간은 {free}바이트예요. {area} 메모리를 초기화하고 다시 해 주세요 (초기화하면 내려받은 {area}을(를) 모두 잊어요). 아무것도 보내지 않았어요.",
   },
   "outcome.alreadyConnected": { en: "Already connected.", ko: "이미 연결되어 있어요." },
   "outcome.connectionClosed": { en: "The connection was closed.", ko: "연결을 닫았어요." },
+  "outcome.linkLost": { en: "The link to the robot was lost.", ko: "로봇과의 연결이 끊겼어요." },
   "outcome.linkLost.checkCable": {
-    en: "{reported} Check the cable, then connect again.",
-    ko: "로봇과의 연결이 끊겼어요 ({reported}). 케이블을 확인한 뒤 다시 연결해 주세요.",
+    en: "Check the cable, then connect again.",
+    ko: "케이블을 확인한 뒤 다시 연결해 주세요.",
   },
-  "outcome.linkLost.connectAgain": {
-    en: "{reported} Connect again.",
-    ko: "로봇과의 연결이 끊겼어요 ({reported}). 다시 연결해 주세요.",
-  },
+  "outcome.linkLost.connectAgain": { en: "Connect again.", ko: "다시 연결해 주세요." },
   "outcome.needsNormalMode": {
     en: '"{command}" needs the normal mode: leave direct servo control first.',
     ko: '"{command}"에는 일반 모드가 필요해요. 먼저 직접 서보 제어를 끝내 주세요.',
@@ -81,7 +79,7 @@ export const situationMessages = defineMessages({
   },
   "outcome.doctor.stopped": {
     en: "Stopped by Stop (or Limp): nothing more was sent to the servos.",
-    ko: "정지(또는 힘 빼기) 때문에 멈췄어요. 서보에 더 보내지 않았어요.",
+    ko: "정지(또는 힘 빼기) 때문에 멈췄어요. 서보에 더는 아무것도 보내지 않았어요.",
   },
   "outcome.setId.presentRange": {
     en: "The present id must be 0-{max}, got {id}; nothing was sent.",
@@ -105,7 +103,7 @@ export const situationMessages = defineMessages({
   },
   "outcome.wiggle.counts": {
     en: "A wiggle moves 1-20 counts, got {counts}; nothing was sent.",
-    ko: "흔들기는 1-20만큼 움직여요. 받은 값: {counts}. 아무것도 보내지 않았어요.",
+    ko: "흔들기 폭은 1-20이어야 해요. 받은 값: {counts}. 아무것도 보내지 않았어요.",
   },
   "outcome.limp.noServoControl": {
     en: "Limp: the robot did not switch to servo control, so its servos could not be made limp. Switch the robot off.",
@@ -129,7 +127,7 @@ export const situationMessages = defineMessages({
   },
   "outcome.zeros.verifyFailed": {
     en: "Zeros were sent, but the robot reads back {readBack} instead of {expected}.",
-    ko: "영점을 보냈지만, 로봇에서 다시 읽은 값이 {expected}이(가) 아니라 {readBack}이에요.",
+    ko: "영점을 보냈지만, 로봇에서 다시 읽으니 {expected} 대신 {readBack} 값이 나와요.",
   },
   "outcome.play.platform": {
     en: "The platform must be a whole number 0-255, got {platform}. Nothing was sent to the robot.",
@@ -141,11 +139,11 @@ export const situationMessages = defineMessages({
   },
   "outcome.play.servoSilent": {
     en: "Servo {ids} did not answer in servo control, so its position is not known (the synchronised move drives every servo from 0 to {maxId}). Nothing was moved. Check the servo cables and that the robot is switched on.",
-    ko: "서보 {ids}번이 서보 제어에서 응답하지 않아서 위치를 알 수 없어요 (동기 이동은 0번부터 {maxId}번까지 모든 서보를 움직여요). 아무것도 움직이지 않았어요. 서보 케이블을 확인하고 로봇이 켜져 있는지 확인해 주세요.",
+    ko: "서보 {ids}번이 서보 제어에서 응답하지 않아서 위치를 알 수 없어요 (동기 이동은 0번부터 {maxId}번까지 모든 서보를 움직여요). 아무것도 움직이지 않았어요. 서보 케이블을 살펴보고, 로봇이 켜져 있는지 확인해 주세요.",
   },
   "outcome.play.servosSilent": {
     en: "Servos {ids} did not answer in servo control, so their position is not known (the synchronised move drives every servo from 0 to {maxId}). Nothing was moved. Check the servo cables and that the robot is switched on.",
-    ko: "서보 {ids}번이 서보 제어에서 응답하지 않아서 위치를 알 수 없어요 (동기 이동은 0번부터 {maxId}번까지 모든 서보를 움직여요). 아무것도 움직이지 않았어요. 서보 케이블을 확인하고 로봇이 켜져 있는지 확인해 주세요.",
+    ko: "서보 {ids}번이 서보 제어에서 응답하지 않아서 위치를 알 수 없어요 (동기 이동은 0번부터 {maxId}번까지 모든 서보를 움직여요). 아무것도 움직이지 않았어요. 서보 케이블을 살펴보고, 로봇이 켜져 있는지 확인해 주세요.",
   },
   "outcome.play.unconfirmed": {
     en: "All {frames} frames were sent (the last: {frame}), but no servo answered afterwards, so whether the robot played them is not known. If it is powered, its servos hold the last frame they got. Check the robot and its cable.",

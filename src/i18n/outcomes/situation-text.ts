@@ -116,13 +116,15 @@ export function situationText(s: RbcSituation, locale: Locale, causeText: () => 
       return say("outcome.alreadyConnected");
     case "connection-closed":
       return say("outcome.connectionClosed");
-    case "link-lost":
-      return say(
+    case "link-lost": {
+      // The link reports in English (src/link): an English reader reads its report; another reads the
+      // catalogue's, and the report stays in the technical detail.
+      const lead = locale === "en" ? s.reported : say("outcome.linkLost");
+      const advice = say(
         s.advice === "check-cable" ? "outcome.linkLost.checkCable" : "outcome.linkLost.connectAgain",
-        {
-          reported: s.reported,
-        },
       );
+      return `${lead} ${advice}`;
+    }
     case "needs-normal-mode":
       return say("outcome.needsNormalMode", { command: s.command });
     case "no-safe-range":
