@@ -101,11 +101,6 @@ export function directModeNeededText(locale: Locale): string {
   return t(locale)("outcome.direct.needed");
 }
 
-/** What Limp does to the requests it cancels. */
-export function cancelledByLimpText(locale: Locale): string {
-  return t(locale)("outcome.limp.cancelledBy");
-}
-
 /** What Stop or Limp does to the requests queued behind it (they had not started). */
 export function cancelledByText(by: "stop" | "limp", locale: Locale): string {
   return t(locale)(by === "stop" ? "outcome.stop.cancelledBy" : "outcome.limp.cancelledBy");
