@@ -51,25 +51,17 @@ export type {
   UploadActivity,
 } from "./activity-types.ts";
 
-const DOING_WORDS: Record<Doing["kind"], string> = {
-  idle: "idle",
-  motion: "playing a motion",
-  busy: "playing a motion started elsewhere",
-  sound: "playing a sound",
-  upload: "receiving an upload",
-  direct: "in direct servo control",
-};
-
-/** A transition the machine refuses in its current state; nothing was changed and nothing was sent. */
+/**
+ * A transition the machine refuses in its current state (`from`); nothing was changed and nothing was sent. The
+ * outcome catalogue words it ("Not started: the robot is playing a motion. Nothing was sent.").
+ */
 export class ActivityRefusedError extends RbcError {
   override name = "ActivityRefusedError";
   constructor(
     readonly transition: ActivityTransition,
     readonly from: Doing["kind"] | Halt["kind"],
   ) {
-    const now =
-      from === "stop" ? "ending an activity (Stop)" : from === "limp" ? "going limp" : DOING_WORDS[from];
-    super("wrong-mode", `Not started: the robot is ${now}. Nothing was sent.`);
+    super("wrong-mode", `activity refused: ${transition} while ${from}`, { situation: { kind: "code" } });
   }
 }
 

@@ -1,4 +1,3 @@
-import { directModeNeededText, servoRangeText } from "../i18n/outcomes/device.ts";
 import { HUNO_BASIC_POSTURE, HUNO_SERVO_IDS, safeRange } from "../protocol/servo-limits.ts";
 import {
   WCK_MAX_POSITION,
@@ -49,7 +48,9 @@ export class DirectMode {
   move(id: number, position: number, torque: number): Promise<ServoStatus> {
     const { min, max } = DirectMode.safeRange(id);
     if (!Number.isInteger(position) || position < min || position > max) {
-      return Promise.reject(new RbcInvalidArgumentError(servoRangeText(id, { min, max }, position, "en")));
+      return Promise.reject(
+        new RbcInvalidArgumentError(undefined, { kind: "servo-range", id, min, max, position }),
+      );
     }
     return this.ask(
       id,
@@ -105,9 +106,7 @@ export class DirectMode {
     positions.forEach((p, id) => {
       const { min, max } = DirectMode.safeRange(id);
       if (p < min || p > max) {
-        throw new RbcInvalidArgumentError(
-          `Servo ${id} may only move within ${min}-${max}; nothing was sent.`,
-        );
+        throw new RbcInvalidArgumentError(undefined, { kind: "servo-move-range", id, min, max });
       }
     });
     return this.#host.exclusive(async () => {
@@ -160,9 +159,7 @@ export class DirectMode {
     try {
       packet = build();
     } catch (e) {
-      return Promise.reject(
-        new RbcInvalidArgumentError(`${e instanceof Error ? e.message : e} Nothing was sent.`),
-      );
+      return Promise.reject(new RbcInvalidArgumentError(undefined, { kind: "not-encoded" }, e));
     }
     return this.#host.exclusive(async () => {
       this.requireDirect();
@@ -174,7 +171,11 @@ export class DirectMode {
       });
       // Servo replies carry no checksum; a position above 254 can only be noise on the line.
       if (reply[1]! > WCK_MAX_POSITION) {
-        throw new RbcBadReplyError(`Servo ${id} answered an impossible position (${reply[1]}); try again.`);
+        throw new RbcBadReplyError(undefined, undefined, {
+          kind: "servo-impossible-position",
+          id,
+          position: reply[1]!,
+        });
       }
       return { id, load: reply[0]!, position: reply[1]! };
     }, epoch);
@@ -182,7 +183,7 @@ export class DirectMode {
 
   private requireDirect(): void {
     if (this.#host.mode !== "direct") {
-      throw new RbcError("wrong-mode", directModeNeededText("en"));
+      throw new RbcError("wrong-mode", undefined, { situation: { kind: "direct-mode-needed" } });
     }
   }
 }

@@ -1,4 +1,3 @@
-import { directModeNeededText } from "../i18n/outcomes/device.ts";
 // Over 400 lines: one set of rules for the raw link (download acknowledgements and the servo bus share the wire-
 // time and late-reply guards), kept together so that they cannot drift apart.
 import type { Clock } from "../shared/clock.ts";
@@ -37,12 +36,8 @@ export class RbcUnexpectedAckError extends RbcError {
     /** The part the conversation was at ("chunk 4 (64 bytes)"), or after. */
     readonly where: string,
   ) {
-    super(
-      "bad-reply",
-      kind === "early"
-        ? `An unexpected acknowledgement arrived during ${where}, sooner than that part could have reached the robot.`
-        : `An unexpected acknowledgement arrived ${where}, when none was due.`,
-    );
+    // A technical line: the upload that meets it says it for a person (`RbcUploadError`, stop extra-ack/early-ack).
+    super("bad-reply", `unexpected acknowledgement (${kind}) ${where}`);
   }
 }
 
@@ -290,7 +285,11 @@ export class RawChannel {
   private async readyBus(signal: AbortSignal | undefined): Promise<ServoBusGuard> {
     const bus = this.bus;
     if (!bus || bus.fault) {
-      throw bus?.fault ?? this.busFault ?? new RbcError("wrong-mode", directModeNeededText("en"));
+      throw (
+        bus?.fault ??
+        this.busFault ??
+        new RbcError("wrong-mode", undefined, { situation: { kind: "direct-mode-needed" } })
+      );
     }
     if (signal?.aborted) throw new RbcCancelledError();
     if (bus.unsettled) {

@@ -4,7 +4,6 @@
  * operations on top of it live in their own files (motion-run.ts, stop.ts, limp.ts, …), its options in
  * connection-options.ts.
  */
-import { cancelledByText, codeText } from "../i18n/outcomes/device.ts";
 import { LinkError, type Transport, type TransportStatusEvent } from "../link/transport.ts";
 import { concatBytes } from "../protocol/bytes.ts";
 import { ABANDON_DOWNLOAD } from "../protocol/catalog.ts";
@@ -64,6 +63,9 @@ export const SUBSCRIPTIONS = {
 
 /** Quick requests the RBC answers from its main loop, so only once a playing motion ends (§3.6). */
 export const MAIN_LOOP_REPLY_TYPES: ReadonlySet<number> = new Set([COMMANDS.readDistance.type]);
+
+/** `ClientState.reason` of a link lost without a word from the link (technical; the error is worded by code). */
+const LINK_LOST = "link lost (no reason given)";
 
 const SUBSCRIPTION_BY_TYPE = new Map<number, SubscriptionKind>(
   Object.entries(SUBSCRIPTIONS).map(([kind, spec]) => [spec.type, kind as SubscriptionKind]),
@@ -194,7 +196,9 @@ export class RbcConnection {
    * port that opens but where nothing answers as `RbcError("no-robot")`, so callers handle one error family.
    */
   async connect<T>(handshake: () => Promise<T>): Promise<T> {
-    if (this.mode !== "disconnected") throw new RbcError("wrong-mode", "Already connected.");
+    if (this.mode !== "disconnected") {
+      throw new RbcError("wrong-mode", undefined, { situation: { kind: "already-connected" } });
+    }
     this.setState({
       mode: "connecting",
       reason: undefined,
@@ -234,7 +238,7 @@ export class RbcConnection {
       await this.close();
       if (inBootloader) throw new RbcInBootloaderError(inBootloader, e);
       if (e instanceof RbcTimeoutError) {
-        throw new RbcError("no-robot", codeText("no-robot", "en"), { cause: e });
+        throw new RbcError("no-robot", undefined, { cause: e });
       }
       if (e instanceof LinkError) throw RbcPortError.fromLink(e);
       throw e;
@@ -253,7 +257,7 @@ export class RbcConnection {
       this.emitLog({ direction: "out", kind: "raw", name, bytes: farewell });
       await this.withTimeout(this.transport.write(farewell), this.timeouts.quickMs, "close").catch(() => {});
     }
-    this.failPending(new RbcDisconnectedError("The connection was closed."));
+    this.failPending(new RbcDisconnectedError(undefined, undefined, { kind: "connection-closed" }));
     for (const u of this.unlisten) u();
     this.unlisten = [];
     await this.transport.close();
@@ -290,7 +294,7 @@ export class RbcConnection {
   /** The error for a turn of `epoch` that Stop or Limp overtook: names the first of them after it. */
   cancelledSince(epoch: number): RbcCancelledError {
     const by = this.epochBy.get(epoch + 1) ?? "stop";
-    return new RbcCancelledError(cancelledByText(by, "en"), by);
+    return new RbcCancelledError(undefined, by, { kind: "cancelled-by", by });
   }
 
   /** Which of Stop or Limp began the first epoch after `epoch` (for a sentence of the operation it overtook). */
@@ -329,7 +333,9 @@ export class RbcConnection {
     try {
       contents = spec.request(args);
     } catch (e) {
-      throw e instanceof ProtocolError ? new RbcInvalidArgumentError(`${e.message} Nothing was sent.`) : e;
+      throw e instanceof ProtocolError
+        ? new RbcInvalidArgumentError(undefined, { kind: "not-encoded" }, e)
+        : e;
     }
     const timeoutFor = () => options.timeoutMs ?? this.timeoutFor(spec, args, options.expectedMs);
     timeoutFor(); // a row without a reply is refused before anything is sent
@@ -403,7 +409,7 @@ export class RbcConnection {
           signal,
           error: () => {
             if (send) this.expectLate(type);
-            return new RbcCancelledError(`Stopped waiting for "${name}".`);
+            return new RbcCancelledError(undefined, undefined, { kind: "stopped-waiting", command: name });
           },
         },
         deadline: {
@@ -493,11 +499,15 @@ export class RbcConnection {
       const lost = this._state.reason;
       if (!lost) throw new RbcNotConnectedError();
       throw new RbcDisconnectedError(
-        lost === codeText("disconnected", "en") ? lost : `${lost} Connect again.`,
+        undefined,
+        undefined,
+        lost === LINK_LOST ? undefined : { kind: "link-lost", reported: lost, advice: "connect-again" },
       );
     }
     if (this.mode === "direct") {
-      throw new RbcError("wrong-mode", `"${what}" needs the normal mode: leave direct servo control first.`);
+      throw new RbcError("wrong-mode", undefined, {
+        situation: { kind: "needs-normal-mode", command: what },
+      });
     }
   }
 
@@ -577,10 +587,13 @@ export class RbcConnection {
 
   private onTransportStatus(event: TransportStatusEvent): void {
     if (event.status !== "lost") return;
-    // The link says what happened; without its words, the outcome catalogue's sentence for a lost link.
-    const reason = event.reason ?? codeText("disconnected", "en");
-    const message = event.reason === undefined ? reason : `${reason} Check the cable, then connect again.`;
-    this.failPending(new RbcDisconnectedError(message, event.error));
+    // The link says what happened; without its words, the error is worded by its code (a lost link).
+    const reason = event.reason ?? LINK_LOST;
+    const situation =
+      event.reason === undefined
+        ? undefined
+        : ({ kind: "link-lost", reported: reason, advice: "check-cable" } as const);
+    this.failPending(new RbcDisconnectedError(undefined, event.error, situation));
     this.subscription = undefined;
     this.setState({
       mode: "disconnected",

@@ -4,7 +4,10 @@ export type ClientMode = "disconnected" | "connecting" | "packet" | "download" |
 
 export interface ClientState {
   mode: ClientMode;
-  /** Why the client is disconnected, for a person (set after a loss). */
+  /**
+   * Set after a loss: what the link reported (its own English), or a technical line when it said nothing. The
+   * failed requests' errors carry it (`RbcDisconnectedError`, situation `link-lost`) for the catalogue to word.
+   */
   reason?: string;
   /** The robot's mode from the platform byte of its last reply (1 HUNO, 2 DINO, 3 DOGY, 4 PF2). */
   platform?: number;

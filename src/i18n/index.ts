@@ -16,8 +16,10 @@ export { defineMessages } from "./catalogue.ts";
 export { isLocale, LOCALE_NAMES, LOCALES, type Locale, pickLocale } from "./locale.ts";
 // The words of the device's outcomes, which stand above the device layer (they left src/device/index.ts, whose
 // layer no longer imports src/i18n): a device error in a person's language, and the catalogue of its entries.
+export { UPLOAD_NOTICES, type UploadNotice, uploadNoticeText } from "./outcomes/device.ts";
 export { type ErrorTextOptions, errorText, uploadOutcomeText } from "./outcomes/error-text.ts";
 export { deviceOutcomeMessages, deviceOutcomeMessages as deviceErrorMessages } from "./outcomes/messages.ts";
+export { remoteKeyWords } from "./outcomes/remote-key.ts";
 export { formatDecimal, formatNumber, placeholdersOf, type Translator, translator } from "./translate.ts";
 export {
   formatBytes,

@@ -7,6 +7,7 @@ import {
 } from "../../src/device/activity.ts";
 import type { LimpResult } from "../../src/device/limp.ts";
 import type { StopActivityResult } from "../../src/device/stop.ts";
+import { errorText } from "../../src/i18n/index.ts";
 import { VirtualClock } from "../../src/shared/clock.ts";
 
 const STOP_RESULT: StopActivityResult = { uploadCancelled: false, servoMovesDropped: false };
@@ -89,7 +90,10 @@ describe("the activity machine: every transition of what the robot is doing, all
         }
         expect(error).toBeInstanceOf(ActivityRefusedError);
         expect(error).toMatchObject({ code: "wrong-mode", transition: t.name, from: kind });
-        expect((error as Error).message).toMatch(/Nothing was sent\.$/);
+        expect(errorText(error, "en")).toMatch(/^Not started: the robot is .+\. Nothing was sent\.$/);
+        expect(errorText(error, "ko")).toMatch(
+          /^시작하지 않았어요\. 로봇이 지금 .+\. 아무것도 보내지 않았어요\.$/,
+        );
         expect(m.activity.snapshot).toEqual(before);
         expect(m.activity.doing).toBe(before.doing);
         expect(m.seen.length).toBe(changes);

@@ -28,7 +28,7 @@ const MAY_IMPORT: Record<Layer, readonly Layer[]> = {
   link: ["shared"],
   motion: ["protocol", "shared", "i18n"],
   sim: ["protocol", "motion", "shared"],
-  device: ["protocol", "link", "motion", "shared", "i18n"],
+  device: ["protocol", "link", "motion", "shared"],
   ui: ["device", "protocol", "motion", "link", "sim", "shared", "i18n"],
   cli: ["device", "protocol", "motion", "link", "sim", "shared", "i18n"],
 };
@@ -244,7 +244,7 @@ describe("the import rule (docs/architecture.md)", () => {
         "../../../protocol/index.ts",
         "../../store.ts",
       ),
-      fake("src/device/upload.ts", "../protocol/packet.ts", "../link/transport.ts", "../i18n/translate.ts"),
+      fake("src/device/upload.ts", "../protocol/packet.ts", "../link/transport.ts"),
       fake("src/cli/connect.ts", "../link/node-serial-transport.ts", "../../package.json"),
       fake("src/protocol/packet.ts", "../shared/format.ts", "./bytes.ts"),
       fake("src/motion/errors.ts", "../i18n/outcomes/motion/motion-words.ts", "../protocol/packet.ts"),
@@ -257,6 +257,7 @@ describe("the import rule (docs/architecture.md)", () => {
       ...base,
       fake("src/protocol/packet.ts", "../device/index.ts"),
       fake("src/device/upload.ts", "../ui/store.ts"),
+      fake("src/device/stop.ts", "../i18n/translate.ts"),
       fake("src/sim/simulated-rbc.ts", "../link/index.ts"),
       fake("src/link/transport.ts", "../i18n/translate.ts"),
       fake("src/motion/document.ts", "../device/index.ts"),
@@ -266,6 +267,7 @@ describe("the import rule (docs/architecture.md)", () => {
     expect(importViolations(files)).toEqual([
       'src/protocol/packet.ts: "../device/index.ts" (protocol/ may not import device/)',
       'src/device/upload.ts: "../ui/store.ts" (device/ may not import ui/)',
+      'src/device/stop.ts: "../i18n/translate.ts" (device/ may not import i18n/)',
       'src/sim/simulated-rbc.ts: "../link/index.ts" (sim/ may not import link/)',
       'src/link/transport.ts: "../i18n/translate.ts" (link/ may not import i18n/)',
       'src/motion/document.ts: "../device/index.ts" (motion/ may not import device/)',

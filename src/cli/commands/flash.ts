@@ -255,10 +255,13 @@ export const flashCommand: CommandDef = {
         if (e.failure === "cancelled") {
           const what = firmwareFailureText(e, locale);
           env.out.note(`rbc: ${t("cmd.flash.interrupted", { what })}`);
-          env.out.result({ ok: false, error: { code: "interrupted", message: e.message, ...details } });
+          env.out.result({
+            ok: false,
+            error: { code: "interrupted", message: firmwareFailureText(e, "en"), ...details },
+          });
           return EXIT.interrupted;
         }
-        const words = saidText({ en: e.message, ko: firmwareFailureText(e, "ko") });
+        const words = saidText({ en: firmwareFailureText(e, "en"), ko: firmwareFailureText(e, "ko") });
         throw new CliError(e.failure, words, EXIT.failed, details);
       }
       throw e;

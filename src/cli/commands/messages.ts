@@ -393,7 +393,6 @@ export const commandMessages = defineMessages({
   "cmd.play.allScenes": { en: "all {total} scenes", ko: "장면 {total}개 모두" },
   "cmd.play.someScenes": { en: "scenes {from}-{to}", ko: "장면 {from}-{to}" },
   "cmd.play.what": { en: "{scenes} of {file}", ko: "{file}의 {scenes}" },
-  "cmd.play.transitionFrame": { en: "transition frame {frame}", ko: "전환 프레임 {frame}" },
   "cmd.play.time": { en: "{elapsed} of {duration}", ko: "{duration} 중 {elapsed}" },
   "cmd.play.toFirstPose": {
     en: "Moving to the first pose, step {step}, {time}",
@@ -451,22 +450,6 @@ export const commandMessages = defineMessages({
   "cmd.play.exitNote": {
     en: "tethered play was interrupted: the servos hold the last frame they got, with torque. The robot stays in servo control until the next rbc command or the panel connects (`rbc limp` makes every servo passive).",
     ko: "로봇에서 재생이 중단됐어요. 서보는 마지막으로 받은 프레임을 토크를 유지한 채 지켜요. 다음 rbc 명령이나 패널이 연결될 때까지 로봇은 서보 제어 상태예요 (`rbc limp`로 모든 서보의 힘을 뺄 수 있어요).",
-  },
-  "cmd.play.holds.nothingSent": {
-    en: "No frame was sent: the servos are as they were.",
-    ko: "프레임을 보내지 않았어요. 서보는 그대로예요.",
-  },
-  "cmd.play.holds.lastFrame": {
-    en: "The servos hold the last frame sent ({frame}).",
-    ko: "서보는 마지막으로 보낸 프레임({frame})을 지켜요.",
-  },
-  "cmd.play.holds.lastFrameUnnamed": {
-    en: "The servos hold the last frame sent.",
-    ko: "서보는 마지막으로 보낸 프레임을 지켜요.",
-  },
-  "cmd.play.holds.unknown": {
-    en: "Whether the last frame arrived is not known.",
-    ko: "마지막 프레임이 도착했는지는 알 수 없어요.",
   },
   "cmd.play.nothingPassive": { en: "Nothing was made passive.", ko: "힘을 뺀 서보는 없어요." },
   "cmd.play.left": {

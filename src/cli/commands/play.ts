@@ -1,14 +1,9 @@
 import { readFile } from "node:fs/promises";
 import { basename, resolve } from "node:path";
-import {
-  frameLabel,
-  TetheredPlayError,
-  type TetheredPlayProgress,
-  type TetheredPlayResult,
-} from "../../device/index.ts";
+import { TetheredPlayError, type TetheredPlayProgress, type TetheredPlayResult } from "../../device/index.ts";
 import type { Locale } from "../../i18n/locale.ts";
 import { nothingSentText } from "../../i18n/outcomes/device.ts";
-import { sceneFrameText, sceneText } from "../../i18n/outcomes/motion/position-words.ts";
+import { sceneText } from "../../i18n/outcomes/motion/position-words.ts";
 import { playStoppedText } from "../../i18n/outcomes/stop-words.ts";
 import { inEveryLanguage, said, saidBy, saidText } from "../../i18n/said.ts";
 import { translator } from "../../i18n/translate.ts";
@@ -80,15 +75,6 @@ function scenesText({ from, to }: Range, doc: Motion, locale: Locale): string {
 }
 
 const seconds = (ms: number, locale: Locale) => formatSeconds(ms / 1000, locale);
-
-/** A frame of tethered play in words (`frameLabel` in English): "scene 2, frame 4" / "장면 2, 프레임 4". */
-function frameWords(frame: { scene: number; frame: number }, locale: Locale): string {
-  if (locale === "en") return frameLabel(frame);
-  const t = translator(commandMessages, locale);
-  return frame.scene < 0
-    ? t("cmd.play.transitionFrame", { frame: String(frame.frame) })
-    : sceneFrameText(frame.scene, frame.frame, locale);
-}
 
 /** Reads and checks the file; nothing is opened or sent when it is wrong. */
 async function readMotion(env: RunEnv, file: string): Promise<Motion> {
@@ -187,21 +173,6 @@ export function finishedSentence(result: TetheredPlayResult, what: string, local
     : t("cmd.play.playedWithin", { ...read, deviation: String(back.maxDeviation) });
 }
 
-/** What a failed tethered play left the servos holding, in `locale`. */
-function playHoldsText(e: TetheredPlayError, locale: Locale): string {
-  const t = translator(commandMessages, locale);
-  switch (e.holds) {
-    case "nothing-sent":
-      return t("cmd.play.holds.nothingSent");
-    case "last-frame":
-      return e.lastFrame
-        ? t("cmd.play.holds.lastFrame", { frame: frameWords(e.lastFrame, locale) })
-        : t("cmd.play.holds.lastFrameUnnamed");
-    default:
-      return t("cmd.play.holds.unknown");
-  }
-}
-
 export const playCommand: CommandDef = {
   name: "play",
   usage: "rbc play FILE.rbm [--scenes A-B] [--yes] (--port PATH | --demo)",
@@ -286,7 +257,8 @@ export const playCommand: CommandDef = {
     } catch (e) {
       env.setExitNote(undefined);
       if (e instanceof TetheredPlayError) {
-        const words = saidText({ en: e.message, ko: `${errorLine(e, "ko")} ${playHoldsText(e, "ko")}` });
+        // The catalogue's sentence says what the servos hold (nothing sent, the last frame, unknown).
+        const words = saidText({ en: errorLine(e, "en"), ko: errorLine(e, "ko") });
         throw new CliError(e.code, words, EXIT.failed, {
           framesSent: e.framesSent,
           totalFrames: e.totalFrames,

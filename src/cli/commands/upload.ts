@@ -2,9 +2,10 @@ import { readFile } from "node:fs/promises";
 import { basename, resolve } from "node:path";
 import { RbcUploadError } from "../../device/errors.ts";
 import type { FileUploadResult } from "../../device/index.ts";
-import { remoteKeyWords } from "../../device/shelf.ts";
 import type { Locale } from "../../i18n/locale.ts";
 import { nothingSentText, uploadNoticeText, uploadOutcomeText } from "../../i18n/outcomes/device.ts";
+import { errorText } from "../../i18n/outcomes/error-text.ts";
+import { remoteKeyWords } from "../../i18n/outcomes/remote-key.ts";
 import { uploadAfterText } from "../../i18n/outcomes/upload-words.ts";
 import { inEveryLanguage, type Said, said, saidBy } from "../../i18n/said.ts";
 import { translator } from "../../i18n/translate.ts";
@@ -233,7 +234,7 @@ export const uploadCommand: CommandDef = {
           ok: false,
           error: {
             code: "interrupted",
-            message: e.message,
+            message: errorText(e, "en"),
             acknowledged: e.acknowledged,
             total: e.total,
             outcome: e.outcome,

@@ -286,3 +286,8 @@ export function rbmIssueWords(issue: RbmIssueFacts, locale: Locale): RbmIssueWor
   const text = rbmIssueSentence(issue, locale);
   return text === undefined ? { text: issue.message, lang: "en" } : { text, lang: locale };
 }
+
+/** A motion file's problem in `locale` (`rbmIssueWords`'s text). */
+export function rbmIssueText(issue: RbmIssueFacts, locale: Locale): string {
+  return rbmIssueWords(issue, locale).text;
+}

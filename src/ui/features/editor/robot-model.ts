@@ -5,7 +5,7 @@
  * checks, confirmation, progress and result are the Motions view's (motions/upload-actions.ts).
  */
 
-import { remoteKeyWords } from "../../../device/shelf.ts";
+import { remoteKeyWords } from "../../../i18n/outcomes/remote-key.ts";
 import { asRbm, type Motion, saveMotion } from "../../../motion/index.ts";
 import { type BookEntry, motionNumberOf, type SlotBook, type UploadTarget } from "../motions/index.ts";
 import { motionFileName } from "./file-name.ts";
