@@ -41,3 +41,18 @@ export function isLimp(c: ConnectionState): boolean {
 export function isStopping(c: ConnectionState): boolean {
   return c.activity?.halt?.kind === "stop" || playingMotion(c)?.stop7 !== undefined;
 }
+
+/**
+ * The upload or firmware update under way on this robot was cancelled by its own Cancel and is ending (the
+ * device's machine is `cancelling` from the press to the end, through every step of it). Takes any robot's
+ * snapshot: the top-bar robot's (`isCancelling`) or a Class view robot's.
+ */
+export function cancellingNow(activity: ActivitySnapshot | undefined): boolean {
+  const d = activity?.doing;
+  return (d?.kind === "upload" || d?.kind === "firmware") && d.cancelling !== undefined;
+}
+
+/** The top-bar robot's upload or firmware update is ending after its Cancel. */
+export function isCancelling(c: ConnectionState): boolean {
+  return cancellingNow(c.activity);
+}
