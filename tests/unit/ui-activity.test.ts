@@ -4,6 +4,8 @@ import { initialState } from "../../src/ui/app-state.ts";
 import { initialClass } from "../../src/ui/features/class/state.ts";
 import {
   busyElsewhere,
+  cancellingNow,
+  isCancelling,
   isLimp,
   isPlaying,
   isStopping,
@@ -65,6 +67,29 @@ describe("the selectors of the device's activity", () => {
     expect(busyElsewhere(busy)).toEqual({ kind: "busy", since: 7, evidence: "probe" });
     expect(isPlaying(busy)).toBe(true);
     expect(isLimp(connected({ ...idle, limp: true }))).toBe(true);
+  });
+
+  it("an upload or a firmware update is cancelling only once the machine says so; nothing else is", () => {
+    const abort = new AbortController();
+    const upload: ActivitySnapshot = { ...idle, doing: { kind: "upload", since: 5, abort } };
+    expect(isCancelling(connected(upload))).toBe(false);
+    const cancelled = {
+      ...upload,
+      doing: { kind: "upload", since: 5, abort, cancelling: { since: 60 } },
+    } as const;
+    expect(isCancelling(connected(cancelled))).toBe(true);
+    expect(cancellingNow(cancelled)).toBe(true);
+    const firmware: ActivitySnapshot = { ...idle, doing: { kind: "firmware", since: 5 } };
+    expect(cancellingNow(firmware)).toBe(false);
+    expect(
+      cancellingNow({ ...firmware, doing: { kind: "firmware", since: 5, cancelling: { since: 9 } } }),
+    ).toBe(true);
+    expect([cancellingNow(undefined), cancellingNow(idle), cancellingNow(motion)]).toEqual([
+      false,
+      false,
+      false,
+    ]);
+    expect(isCancelling(base.connection)).toBe(false);
   });
 });
 
