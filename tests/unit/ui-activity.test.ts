@@ -9,6 +9,7 @@ import {
   isLimp,
   isPlaying,
   isStopping,
+  isUploading,
   playingMotion,
   playingSound,
 } from "../../src/ui/features/connection/activity.ts";
@@ -72,7 +73,8 @@ describe("the selectors of the device's activity", () => {
   it("an upload or a firmware update is cancelling only once the machine says so; nothing else is", () => {
     const abort = new AbortController();
     const upload: ActivitySnapshot = { ...idle, doing: { kind: "upload", since: 5, abort } };
-    expect(isCancelling(connected(upload))).toBe(false);
+    expect([isUploading(connected(upload)), isCancelling(connected(upload))]).toEqual([true, false]);
+    expect(isUploading(connected(idle))).toBe(false);
     const cancelled = {
       ...upload,
       doing: { kind: "upload", since: 5, abort, cancelling: { since: 60 } },

@@ -27,6 +27,11 @@ export function busyElsewhere(c: ConnectionState): BusyActivity | undefined {
   return d?.kind === "busy" ? d : undefined;
 }
 
+/** An upload is under way, from its first read to its end (not only its download). */
+export function isUploading(c: ConnectionState): boolean {
+  return doing(c)?.kind === "upload";
+}
+
 /** A motion plays, this panel's or one started elsewhere. */
 export function isPlaying(c: ConnectionState): boolean {
   return playingMotion(c) !== undefined || busyElsewhere(c) !== undefined;

@@ -19,6 +19,7 @@ export {
   isLimp,
   isPlaying,
   isStopping,
+  isUploading,
   playingMotion,
   playingSound,
 } from "./activity.ts";
