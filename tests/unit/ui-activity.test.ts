@@ -14,7 +14,9 @@ import {
   playingSound,
 } from "../../src/ui/features/connection/activity.ts";
 import type { ConnectionState } from "../../src/ui/features/connection/state.ts";
+import { noticeText } from "../../src/ui/notices.ts";
 import { anyRobotConnected } from "../../src/ui/stop-all.ts";
+import { stoppingNotice } from "../../src/ui/stop-outcome.ts";
 
 /** The panel reads what the robot does from the device's activity snapshot, through small selectors. */
 
@@ -75,6 +77,9 @@ describe("the selectors of the device's activity", () => {
     const upload: ActivitySnapshot = { ...idle, doing: { kind: "upload", since: 5, abort } };
     expect([isUploading(connected(upload)), isCancelling(connected(upload))]).toEqual([true, false]);
     expect(isUploading(connected(idle))).toBe(false);
+    // Stop pressed during any step of it, the free-memory read or the reset too, says it cancels the upload.
+    const notice = stoppingNotice({ ...base, connection: connected(upload) }, 50);
+    expect(noticeText(notice, "en")).toBe("Stopping: cancelling the upload…");
     const cancelled = {
       ...upload,
       doing: { kind: "upload", since: 5, abort, cancelling: { since: 60 } },
