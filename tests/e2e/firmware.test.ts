@@ -359,7 +359,9 @@ describe("in Korean (ko-KR)", () => {
       );
       await expectText(
         result.locator("pre"),
-        "FirmwareUpdateError (cancelled): The firmware update was cancelled. The robot's firmware may now be incomplete, and the robot may not work until an update succeeds. The bootloader is never overwritten: switch the robot off and on and run the update again.",
+        // The technical detail is the device's own technical line (its code and facts); the sentence above is the
+        // outcome catalogue's (docs/architecture.md: the words of outcomes stand above the device).
+        "FirmwareUpdateError (cancelled): firmware update cancelled; robot holds incomplete-firmware",
       );
       await expectText(page.getByTestId("fw-version"), "2.23");
       await expectLaidOut(page, "the cancelled update");

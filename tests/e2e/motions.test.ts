@@ -483,7 +483,7 @@ describe("in Korean (ko-KR)", () => {
         await result.waitFor({ timeout: 15_000 });
         await expectText(
           result,
-          /^wave\.rbm을\(를\) 업로드했어요\. 624바이트를 조각 \d+개로 [\d.]+초 동안 보냈고 \([\d,]+바이트\/초\), 로봇이 모든 조각을 받았다고 확인했어요\./,
+          /^wave\.rbm을\(를\) 업로드했어요\. 624바이트를 조각 \d+개로 [\d.]+초 동안 보냈고 \(초당 [\d,]+바이트\), 로봇이 모든 조각을 받았다고 확인했어요\./,
         );
         await expectText(result, "모션 12번(1번 키)으로 저장했어요. 실행할 때 이 번호를 써요.", {
           contains: true,
