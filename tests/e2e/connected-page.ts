@@ -76,3 +76,13 @@ export function sharedConnectedPage(app: AppHarness, setup: ConnectedSetup = {})
     return opened.page;
   };
 }
+
+/**
+ * The Motions view once it has read the robot's memory, on a page opened with the start option `CABLE`
+ * (`openMotions` in harness.ts clicks its way there instead).
+ */
+export async function loadMotions(page: Page, url: string): Promise<void> {
+  await loadConnected(page, url, "motions");
+  await page.getByTestId("memory-card").waitFor();
+  await page.getByTestId("mem-motion-text").filter({ hasText: "24,576 of 24,576" }).waitFor();
+}

@@ -4,16 +4,8 @@ import { memoryFootprint } from "../../src/protocol/catalog.ts";
 import { motionImage } from "../../src/protocol/motion-image.ts";
 import { motionDurationMs, parseRbm } from "../../src/protocol/rbm.ts";
 import { formatSeconds } from "../../src/ui/features/motions/plot-data.ts";
-import {
-  cspViolations,
-  expectText,
-  FAST,
-  openMotions,
-  robotTime,
-  squash,
-  useApp,
-  watchPage,
-} from "./harness.ts";
+import { CABLE, loadMotions } from "./connected-page.ts";
+import { cspViolations, expectText, FAST, robotTime, squash, useApp, watchPage } from "./harness.ts";
 import {
   exampleText,
   imageHex,
@@ -70,9 +62,9 @@ async function recordFigures(page: Page): Promise<void> {
 describe("motions view", () => {
   it("checks wave.rbm, uploads it after the experimental notice, and the robot holds the exact image", async () => {
     // The paced link 3 times faster: the progress of its 10 chunks still shows (figures, rate, time left).
-    const { page, context } = await app.newPage({ options: { ...PACED, timeScale: 3 } });
+    const { page, context } = await app.newPage({ start: CABLE, options: { ...PACED, timeScale: 3 } });
     const seen = watchPage(page, app.origin);
-    await openMotions(page, app.url);
+    await loadMotions(page, app.url);
     const wave = exampleText("wave.rbm");
     await page.getByTestId("rbm-files").setInputFiles(rbmFile("wave.rbm", wave));
     const card = page.getByTestId("motion-file");
@@ -149,8 +141,8 @@ describe("motions view", () => {
   it("cancels an upload: sending stops, the robot records nothing, and the panel says how much was acknowledged", async () => {
     // The paced link in real time: the 20 KB upload takes seconds, and every acknowledgement keeps its full
     // timeout (500 ms) on a busy machine (at 4 times the speed, a CI machine once missed one by a few ms).
-    const { page, context } = await app.newPage({ options: PACED });
-    await openMotions(page, app.url);
+    const { page, context } = await app.newPage({ start: CABLE, options: PACED });
+    await loadMotions(page, app.url);
     const long = longMotion(exampleText("wave.rbm"), 40);
     await page.getByTestId("rbm-files").setInputFiles(rbmFile("Long.rbm", long));
     await page.getByTestId("upload-motion").click();
@@ -176,8 +168,8 @@ describe("motions view", () => {
   });
 
   it("never sends a byte of a file with errors and says why in words", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
-    await openMotions(page, app.url);
+    const { page, context } = await app.newPage({ start: CABLE, options: FAST });
+    await loadMotions(page, app.url);
     const before = await bytesFromPc(page);
     await page
       .getByTestId("rbm-files")
@@ -204,8 +196,8 @@ describe("motions view", () => {
   });
 
   it("opens files by drop and by keyboard, and warns about a motion made for another robot", async () => {
-    const { page, context } = await app.newPage();
-    await openMotions(page, app.url);
+    const { page, context } = await app.newPage({ start: CABLE });
+    await loadMotions(page, app.url);
     const text = withSerial(exampleText("bow.rbm"), "1234567890123");
     const transfer = await page.evaluateHandle((t) => {
       const dt = new DataTransfer();
@@ -241,13 +233,13 @@ describe("motions view", () => {
   });
 
   it("opens one of the project's example motions from the keyboard, exactly like a picked file", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
+    const { page, context } = await app.newPage({ start: CABLE, options: FAST });
     const seen = watchPage(page, app.origin);
     const scripts: string[] = [];
     page.on("request", (r) => {
       if (r.resourceType() === "script") scripts.push(new URL(r.url()).pathname);
     });
-    await openMotions(page, app.url);
+    await loadMotions(page, app.url);
     const text = exampleText("squat.rbm");
     const motion = parseRbm(text);
     const image = motionImage(motion);
