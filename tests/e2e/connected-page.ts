@@ -28,7 +28,7 @@ export interface ConnectedSetup {
 }
 
 /** Waits until a robot is connected: the top bar's Limp button is there on every view then, and only then. */
-export async function connected(page: Page): Promise<void> {
+async function connected(page: Page): Promise<void> {
   await page.locator("#limp-button").waitFor();
 }
 

@@ -14,10 +14,10 @@ import type { Locator, Page } from "playwright-core";
 import { describe, expect, it, vi } from "vitest";
 import { mirrorPosition } from "../../src/motion/index.ts";
 import { STANDARD_ZEROS } from "../../src/protocol/zeros.ts";
+import { openConnected } from "./connected-page.ts";
 import { expectText, squash, useApp } from "./harness.ts";
 import {
   axeProblems,
-  connectCable,
   connectDemo,
   DESKTOP,
   newLocalePage,
@@ -124,8 +124,7 @@ describe("item 1: left and right are the robot's own (docs/protocol.md §4)", ()
     ["ko", "ko-KR"],
   ] as const) {
     it(`names the servos from the robot's point of view in Zeros, Servos and the Editor, once per view (${lang})`, async () => {
-      const { page, context } = await newLocalePage(app, locale);
-      await connectCable(page);
+      const { page, context } = await openConnected(app, { robot: "cable", locale });
       const expected =
         lang === "en"
           ? { 0: "Left hip roll", 5: "Right hip roll", 10: "Left shoulder pitch", 15: "Right elbow" }
@@ -237,8 +236,7 @@ describe("item 2: the 3D robot drawn true, at a working size", () => {
   }
 
   it("shows the Editor's and the Servos' robot beside the sliders at 1280×800, at least 300×400", async () => {
-    const { page, context } = await newLocalePage(app, "en-US");
-    await connectDemo(page);
+    const { page, context } = await openConnected(app, { view: "editor" });
     await openEditor(page);
     const robot = await page.getByTestId("editor-robot3d").locator("canvas").boundingBox();
     const table = await page.getByTestId("pose-table").boundingBox();
@@ -268,8 +266,7 @@ describe("item 2: the 3D robot drawn true, at a working size", () => {
 
 describe("item 3: Escape is Stop everywhere but a text field, a dialog or an open menu/list", () => {
   it("stops from a servo slider, a number field, a button and an open <details>; not from a text field", async () => {
-    const { page, context } = await newLocalePage(app, "en-US");
-    await connectCable(page);
+    const { page, context } = await openConnected(app, { robot: "cable" });
     // Whether the panel took each Escape as Stop (it calls preventDefault before the event reaches window).
     await page.evaluate(() => {
       const w = window as unknown as { escapes: boolean[] };
@@ -365,8 +362,7 @@ const atWordEnd = (pair: string) => /^(_\|\p{L}|\p{Ll}\|\p{Lu}|[^\p{L}\p{N}_]\|.
 
 describe("item 9: at phone width", () => {
   it("shows the menu in one row and breaks names only between words", async () => {
-    const { page, context } = await newLocalePage(app, "en-US", { size: PHONE });
-    await connectDemo(page);
+    const { page, context } = await openConnected(app, { size: PHONE });
     const tops = await page
       .locator(".side-nav li")
       .evaluateAll((items) => items.map((li) => Math.round(li.getBoundingClientRect().top)));
