@@ -77,10 +77,7 @@ export function sharedConnectedPage(app: AppHarness, setup: ConnectedSetup = {})
   };
 }
 
-/**
- * The Motions view once it has read the robot's memory, on a page opened with the start option `CABLE`
- * (`openMotions` in harness.ts clicks its way there instead).
- */
+/** The Motions view once it has read the robot's memory, on a page opened with the start option `CABLE`. */
 export async function loadMotions(page: Page, url: string): Promise<void> {
   await loadConnected(page, url, "motions");
   await page.getByTestId("memory-card").waitFor();

@@ -359,15 +359,6 @@ export function squash(text: string | null): string {
   return (text ?? "").replace(/\s+/g, " ").trim();
 }
 
-/** Connects the fake robot and opens the Motions view once the memory figures have been read. */
-export async function openMotions(page: Page, url: string): Promise<void> {
-  await connectRobot(page, url);
-  await page.getByTestId("memory-motion-text").filter({ hasText: "24,576" }).waitFor();
-  await page.getByRole("link", { name: "Motions" }).click();
-  await page.getByTestId("memory-card").waitFor();
-  await page.getByTestId("mem-motion-text").filter({ hasText: "24,576 of 24,576" }).waitFor();
-}
-
 /**
  * Stops the simulated robot's time (the fake port's robot and the demo robot) until `releaseRobot`: the panel
  * still renders and answers, but no reply, motion frame or timeout happens, so a test can look at a motion or

@@ -4,8 +4,17 @@ import { memoryFootprint } from "../../src/protocol/catalog.ts";
 import { motionImage } from "../../src/protocol/motion-image.ts";
 import { motionDurationMs, parseRbm } from "../../src/protocol/rbm.ts";
 import { formatSeconds } from "../../src/ui/features/motions/plot-data.ts";
-import { CABLE, loadMotions } from "./connected-page.ts";
-import { cspViolations, expectText, FAST, robotTime, squash, useApp, watchPage } from "./harness.ts";
+import { CABLE, loadMotions, openConnected } from "./connected-page.ts";
+import {
+  cspViolations,
+  expectText,
+  FAST,
+  robotTime,
+  squash,
+  type TestContext,
+  useApp,
+  watchPage,
+} from "./harness.ts";
 import {
   exampleText,
   imageHex,
@@ -19,17 +28,7 @@ import {
 } from "./motion-fixtures.ts";
 import type { RbcTestOptions } from "./rbc-test-globals.ts";
 import "./rbc-test-globals.ts";
-import {
-  connectCable,
-  expectPageOk,
-  newLocalePage,
-  SIZES,
-  type Size,
-  shot,
-  sizeName as size,
-  sizeName,
-  texts,
-} from "./i18n-checks.ts";
+import { expectPageOk, SIZES, type Size, shot, sizeName as size, sizeName, texts } from "./i18n-checks.ts";
 
 const app = useApp();
 
@@ -354,14 +353,21 @@ describe("motions view", () => {
 describe("in Korean (ko-KR)", () => {
   const TABS = { files: "파일", uploads: "메모리", run: "실행", sounds: "소리" } as const;
 
-  /** Connects the fake robot from the connect card and opens the Motions view once its memory has been read. */
-  async function openMotions(page: Page): Promise<void> {
-    await connectCable(page);
-    await page.getByRole("link", { name: "모션", exact: true }).click();
+  /** Opens the Motions view in Korean with the fake robot connected at start, once its memory has been read. */
+  async function openMotions(size: Size): Promise<{ page: Page; context: TestContext }> {
+    const opened = await openConnected(app, {
+      robot: "cable",
+      view: "motions",
+      locale: "ko-KR",
+      size,
+      options: FAST,
+    });
+    const { page } = opened;
     await page
       .getByTestId("mem-motion-text")
       .filter({ hasText: "24,576바이트 중 24,576바이트 남음" })
       .waitFor();
+    return opened;
   }
 
   /** Chooses a tab by its Korean name and waits until its panel is shown. */
@@ -380,8 +386,7 @@ describe("in Korean (ko-KR)", () => {
   describe("the Motions view in Korean", () => {
     for (const viewport of SIZES) {
       it(`shows the Files tab in Korean with an example open, fitting at ${viewport.width}×${viewport.height}`, async () => {
-        const { page, context } = await newLocalePage(app, "ko-KR", { size: viewport, options: FAST });
-        await openMotions(page);
+        const { page, context } = await openMotions(viewport);
         await expectText(page.getByRole("heading", { level: 1 }), "모션");
         await expect.poll(() => texts(page.getByRole("tab"))).toEqual(["파일", "메모리", "실행", "소리"]);
         await expect.poll(() => page.getByRole("tablist").getAttribute("aria-label")).toBe("모션");
@@ -489,8 +494,7 @@ describe("in Korean (ko-KR)", () => {
       });
 
       it(`shows Memory, Run and Sounds in Korean, fitting at ${viewport.width}×${viewport.height}`, async () => {
-        const { page, context } = await newLocalePage(app, "ko-KR", { size: viewport, options: FAST });
-        await openMotions(page);
+        const { page, context } = await openMotions(viewport);
         await page.getByTestId("rbm-files").setInputFiles(rbmFile("wave.rbm", exampleText("wave.rbm")));
         await page.getByTestId("upload-motion").click();
         await page.getByRole("button", { name: "업로드 (실험 기능)" }).click();
@@ -591,18 +595,23 @@ describe("in Korean (ko-KR): the motion file checker", () => {
     rbmFile("Odd.rbm", edit(withSerial(withUnsafePosition(WAVE), "1234567890123"), [10, "5"])),
   ];
 
-  /** Connects the fake robot from the connect card and opens the Motions view once its memory has been read. */
-  async function openMotions(page: Page): Promise<void> {
-    await connectCable(page);
-    await page.getByRole("link", { name: "모션", exact: true }).click();
-    await page.getByTestId("motion-files").waitFor();
+  /** Opens the Motions view in Korean with the fake robot connected at start. */
+  async function openMotions(size: Size): Promise<{ page: Page; context: TestContext }> {
+    const opened = await openConnected(app, {
+      robot: "cable",
+      view: "motions",
+      locale: "ko-KR",
+      size,
+      options: FAST,
+    });
+    await opened.page.getByTestId("motion-files").waitFor();
+    return opened;
   }
 
   describe("the motion file checker's sentences in Korean", () => {
     for (const viewport of SIZES) {
       it(`says every problem of the opened files in Korean, fitting at ${viewport.width}×${viewport.height}`, async () => {
-        const { page, context } = await newLocalePage(app, "ko-KR", { size: viewport, options: FAST });
-        await openMotions(page);
+        const { page, context } = await openMotions(viewport);
         await page.getByTestId("rbm-files").setInputFiles(FILES);
         await page
           .getByText(/^파일 4개를 열었어요\./)
