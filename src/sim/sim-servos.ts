@@ -65,6 +65,8 @@ export interface ServoState {
 /** What one decoded servo-bus command did. */
 export interface BusResult {
   reply?: Uint8Array;
+  /** The reply comes this long after the command (the "late" fault), not at once. */
+  lateMs?: number;
   exitDirectMode?: boolean;
 }
 
@@ -279,12 +281,13 @@ export class ServoBus {
 
   /** Every servo at `busId` acts on the command; their replies: none, one clean pair, or collided bytes. */
   private answer(busId: number, act: (servo: ServoState, stored: StoredGains) => ParameterReply): BusResult {
-    const replies = this.at(busId)
-      .map((servo) => act(servo.state, servo.stored))
-      .filter((r) => r !== undefined);
+    const servos = this.at(busId);
+    const replies = servos.map((servo) => act(servo.state, servo.stored)).filter((r) => r !== undefined);
     if (replies.length === 0) return {};
-    if (replies.length === 1) return { reply: Uint8Array.from(replies[0]!.map((b) => b & 0xff)) };
-    return { reply: collide(replies) };
+    const lateMs = Math.max(0, ...servos.map((s) => this.faults.late[s.state.id] ?? 0));
+    const late = lateMs > 0 ? { lateMs } : {};
+    if (replies.length === 1) return { reply: Uint8Array.from(replies[0]!.map((b) => b & 0xff)), ...late };
+    return { reply: collide(replies), ...late };
   }
 
   /** The parameter table of docs/protocol.md §5 (`sim-servo-parameters.ts`); the 10-bit read names its servo in d3. */

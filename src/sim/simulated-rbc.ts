@@ -305,6 +305,7 @@ export class SimulatedRbc {
           duplicate: [...f.duplicate],
           replacement: [...f.replacement],
           loaded: [...f.loaded],
+          late: { ...f.late },
         },
         busIds: ids.joints,
         extraBusIds: ids.extras,
@@ -496,7 +497,11 @@ export class SimulatedRbc {
       const results = this.servoBus.push(b);
       for (const result of results) {
         // Silent servos (unplugged, no battery) never answer on the bus.
-        if (result.reply && !this.variant.servosSilent) this.send(result.reply);
+        const reply = result.reply;
+        if (reply && !this.variant.servosSilent) {
+          if (result.lateMs) this.timers.after(result.lateMs, () => this.send(reply));
+          else this.send(reply);
+        }
         if (result.exitDirectMode) {
           this.direct = false;
           this.receiver.packetMode();

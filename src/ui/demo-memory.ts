@@ -45,12 +45,14 @@ export function memoryDigest(m: SimLastingMemory): string {
     h ^= (n >>> 8) & 0xff;
     h = Math.imul(h, 0x01000193);
   };
+  const f = m.servos.faults;
   const numbers = [
     ...m.zeros,
     m.basicPostureDone ? 1 : 0,
     ...m.servos.busIds,
     ...m.servos.extraBusIds,
-    ...Object.values(m.servos.faults).flatMap((ids) => [ids.length, ...ids]),
+    ...[f.missing, f.duplicate, f.replacement, f.loaded].flatMap((ids) => [ids.length, ...ids]),
+    ...Object.entries(f.late).flatMap(([joint, ms]) => [Number(joint), ms]),
   ];
   for (const n of numbers) mix(n);
   for (const area of [m.motion, m.action]) {
