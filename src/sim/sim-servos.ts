@@ -266,6 +266,10 @@ export class ServoBus {
           servo.load = 0;
           return [0, servo.position];
         });
+      case "wheel":
+        // The reply is rotations, ? (docs/protocol.md §5): a simulated servo does not turn, so 0 rotations and
+        // its position.
+        return this.answer(command.id, (servo) => [0, servo.position]);
       case "move10":
         // The 10-bit move goes to id 0's address; the servo is in d3.
         return this.answer(command.id, (servo) => {

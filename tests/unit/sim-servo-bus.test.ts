@@ -202,3 +202,19 @@ describe("faults", () => {
     );
   });
 });
+
+describe("the wheel mode (docs/protocol.md §5)", () => {
+  it("servo 5 clockwise at speed 6, FF C5 46 03 ((C5 ^ 46) & 7F = 03): answered rotations 0, position 126", () => {
+    const { ask } = bus();
+    expect(ask("FF C5 46 03")).toEqual(["00 7E"]);
+    // Counter-clockwise at speed 15: FF C5 3F 7A ((C5 ^ 3F) & 7F = 7A).
+    expect(ask("FF C5 3F 7A")).toEqual(["00 7E"]);
+  });
+
+  it("a servo nobody has at the id does not answer, and passive (FF C5 10 55) is still passive", () => {
+    const { ask } = bus({ servoFaults: { missing: [5] } });
+    expect(ask("FF C5 46 03")).toEqual([]);
+    const healthy = bus();
+    expect(healthy.ask("FF C5 10 55")).toEqual(["00 7E"]);
+  });
+});
