@@ -172,13 +172,23 @@ export class ServoBus {
     for (const servo of this.at(id)) drive(servo.state, position);
   }
 
-  /** A frame of a playing motion (docs/protocol.md §10), sent by bus id: each servo moves with its torque and holds. */
-  applyFrame(ids: readonly number[], positions: readonly number[], torques: readonly number[]): void {
+  /**
+   * A frame of a playing motion (docs/protocol.md §10), sent by bus id as one position move per servo: each servo
+   * moves with its torque and holds. Returns the servos' replies to those moves (load, position; collided where
+   * two share an id), in order: the servo bus carries them whether or not anyone listens.
+   */
+  applyFrame(ids: readonly number[], positions: readonly number[], torques: readonly number[]): Uint8Array[] {
+    const replies: Uint8Array[] = [];
     ids.forEach((id, i) => {
       const position = positions[i];
       if (position === undefined) return;
-      for (const { state } of this.at(id)) drive(state, position, torques[i] ?? state.torque);
+      const { reply } = this.answer(id, (state) => {
+        drive(state, position, torques[i] ?? state.torque);
+        return [state.load, state.position];
+      });
+      if (reply) replies.push(reply);
     });
+    return replies;
   }
 
   /**

@@ -100,8 +100,11 @@ export class SimulatedRbc {
       platform: () => this.platform,
       servoPositions: () => this.servoPositions(),
       applyFrame: (ids, frame) => {
-        this.servoBus.applyFrame(ids, frame.positions, frame.torques);
+        const replies = this.servoBus.applyFrame(ids, frame.positions, frame.torques);
         this.servoWatch.changed();
+        // In direct mode the RBC relays the servo bus to the PC, its own motion's traffic too (docs/protocol.md
+        // §3.6: the PC receives replies to frames it never sent).
+        if (this.direct && !this.variant.servosSilent) for (const reply of replies) this.send(reply);
       },
       motionEnded: (n, positions) => this.motionEnded(n, positions),
     });
