@@ -124,6 +124,17 @@ describe("one servo's reply, late or copied, is that servo's", () => {
   }
 });
 
+describe("a 0-30 scan with servo 15 late", () => {
+  it("servo 15 (60 ms late) answers its own 205; ids 16-30 are all silent, none takes its pair", async () => {
+    const rig = await makeRig({ port: PORT, sim: { servoFaults: { late: { 15: 60 } } } });
+    const ids = Array.from({ length: 31 }, (_, i) => i);
+    const result = await rig.run(scanServos(rig.client, { ids }));
+    expect(result.servos[15]).toEqual({ id: 15, status: "answered", load: 0, position: 205 });
+    expect(result.servos.slice(16)).toEqual(ids.slice(16).map((id) => ({ id, status: "silent" })));
+    expect(result.findings).toEqual([]);
+  });
+});
+
 describe("a scan that stops names why", () => {
   const result: ScanResult = {
     servos: [{ id: 0, status: "answered", load: 0, position: 125 }],

@@ -43,8 +43,9 @@ export const ADAPTER_LATENCY_MS = 16;
 /**
  * [decision] The wired quick time for a servo's reply (docs/protocol.md §5 "Servo doctor"): a wCK servo answers
  * within about a millisecond, so the request's and the reply's wire time, the adapter's latency twice (out and
- * back) and a margin of 16 ms. Far below the 400 ms of an RBC packet's quick time, so a scan of 31 ids with
- * half of them silent takes about 1.5 s, not 6 s. A slower link adds what it adds (`ServoBusHost.link`).
+ * back) and a margin of 16 ms. Far below the 400 ms of an RBC packet's quick time, so an answered id takes
+ * tens of milliseconds; a silent one is read twice and fenced after each read (about 0.3 s on a USB adapter), so
+ * a scan of ids 0-30 on a HUNO takes under 5 s. A slower link adds what it adds (`ServoBusHost.link`).
  */
 export const SERVO_REPLY_WINDOW_MS = 48;
 
