@@ -283,6 +283,14 @@ export const cliMessages = defineMessages({
     en: "servo {ids} replaced by one still at id 0",
     ko: "서보 {ids}번을 ID 0 그대로인 새 서보로 교체함",
   },
+  "cli.variant.servoLate": {
+    en: '--servo-late takes a servo id from 0 to 15 and a delay of 0 to 5000 ms, as 7:60, got "{value}".',
+    ko: '--servo-late에는 0부터 15까지의 서보 ID와 0부터 5000ms까지의 지연을 7:60처럼 써 주세요. 받은 값: "{value}".',
+  },
+  "cli.variant.servoLate.words": {
+    en: "servo {id} answers {ms} ms late",
+    ko: "서보 {id}번이 {ms}ms 늦게 응답함",
+  },
   "cli.variant.servoLoaded": {
     en: "servo {ids} under high load (follows a move only part of the way)",
     ko: "서보 {ids}번에 큰 부하 (움직임을 일부만 따라감)",

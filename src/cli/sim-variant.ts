@@ -40,6 +40,7 @@ export const VARIANT_OPTIONS = {
   "servo-duplicate": { type: "string", multiple: true },
   "servo-replacement": { type: "string", multiple: true },
   "servo-loaded": { type: "string", multiple: true },
+  "servo-late": { type: "string", multiple: true },
   "in-bootloader": { type: "boolean" },
 } as const;
 
@@ -97,6 +98,7 @@ interface VariantValues {
   "servo-duplicate"?: string[];
   "servo-replacement"?: string[];
   "servo-loaded"?: string[];
+  "servo-late"?: string[];
   "in-bootloader"?: boolean;
 }
 
@@ -150,14 +152,30 @@ function parseServoId(text: string, option: string, lowest: number, command: str
   return n;
 }
 
+/** `--servo-late N:MS`: servo N (0-15) answers MS ms (0-5000) after each command. */
+function parseLate(text: string, command: string): [number, number] {
+  const m = /^(\d{1,2}):(\d{1,4})$/.exec(text.trim());
+  const id = m ? Number(m[1]) : Number.NaN;
+  const ms = m ? Number(m[2]) : Number.NaN;
+  if (!m || id > 15 || ms > 5000) {
+    throw new UsageError(said(cliMessages, "cli.variant.servoLate", { value: text }), command);
+  }
+  return [id, ms];
+}
+
 /** The servo faults the switches ask for, or undefined when none is given. */
 function servoFaultsFromValues(values: VariantValues, command: string): ServoFaults | undefined {
-  const faults: { -readonly [K in keyof ServoFaults]: number[] } = {};
+  const faults: { -readonly [K in Exclude<keyof ServoFaults, "late">]?: number[] } & Pick<
+    ServoFaults,
+    "late"
+  > = {};
   for (const { option, field, lowest } of SERVO_FAULT_SWITCHES) {
     const texts = values[option];
     if (texts === undefined || texts.length === 0) continue;
     faults[field] = [...new Set(texts.map((text) => parseServoId(text, option, lowest, command)))];
   }
+  const late = values["servo-late"];
+  if (late && late.length > 0) faults.late = Object.fromEntries(late.map((text) => parseLate(text, command)));
   const both = faults.replacement?.find((id) => faults.missing?.includes(id));
   if (both !== undefined) {
     throw new UsageError(
@@ -271,6 +289,9 @@ export function describeVariant(variant: SimVariant, locale: Locale = "en"): str
   if (replacement) words.push(t("cli.variant.servoReplacement", { ids: replacement }));
   const loaded = ids(faults?.loaded);
   if (loaded) words.push(t("cli.variant.servoLoaded", { ids: loaded }));
+  for (const [id, ms] of Object.entries(faults?.late ?? {})) {
+    words.push(t("cli.variant.servoLate.words", { id, ms: String(ms) }));
+  }
   return words;
 }
 

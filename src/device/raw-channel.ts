@@ -244,15 +244,21 @@ export class RawChannel {
    * A servo command that listens instead of counting (the servo doctor, docs/protocol.md §5): writes `bytes`,
    * hands every byte the bus sends back to `onByte` with no count and no timing rule (the listener records
    * arrival times itself), and ends when the listener closes `close` because the line has gone quiet. Such an
-   * exchange leaves the bus settled: the listener waited for quiet. At `capMs` (a line that never goes quiet)
-   * it resolves `"cap"` and the bus is unsettled, as after a timeout, so the next command is fenced first. The
-   * other servo-bus rules hold: bytes between commands are nobody's answer (`RbcStillPlayingError`).
+   * exchange leaves the bus settled only when `expect` bytes or more came: an unanswered (or half-answered)
+   * read does not, as its reply may still be on its way (docs/protocol.md §5 "Servo doctor"), so the next
+   * command is fenced first. At `capMs` (a line that never goes quiet) it resolves `"cap"` and the bus is
+   * unsettled too. The other servo-bus rules hold: bytes between commands are nobody's answer
+   * (`RbcStillPlayingError`).
    */
   async servoListen(
     bytes: Uint8Array,
     options: {
       note: string;
       capMs: number;
+      /** How many bytes make a whole answer: with fewer, the bus is left unsettled. */
+      expect: number;
+      /** Called just before `bytes` are written (after any fence): the listener's clock starts there. */
+      onWrite: () => void;
       close: AbortSignal;
       onByte: (byte: number) => void;
       signal?: AbortSignal;
@@ -263,13 +269,20 @@ export class RawChannel {
     const { note, capMs, close, signal } = options;
     // Aborted while the bus was fenced: nothing is written, and the bus stays as settled as it was.
     if (signal?.aborted) throw new RbcCancelledError();
-    const matcher = { need: Number.POSITIVE_INFINITY, listen: options.onByte };
+    let heard = 0;
+    const listen = (b: number) => {
+      heard++;
+      options.onByte(b);
+    };
+    const matcher = { need: Number.POSITIVE_INFINITY, listen };
+    options.onWrite();
     const wait = this.open(bytes, note, matcher, { ms: capMs, error: () => LISTEN_CAP }, signal);
     const onClose = () => wait.resolve(Uint8Array.of());
     close.addEventListener("abort", onClose);
     if (close.aborted) onClose();
     try {
       await wait.promise;
+      if (heard < options.expect) bus.unsettled = true;
       return "closed";
     } catch (e) {
       // A cap or a cancel leaves the bus unsettled: the next command is fenced first.

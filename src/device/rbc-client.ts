@@ -16,7 +16,7 @@ import { type ProbeResult, probeBusy, readMainLoop } from "./busy-probe.ts";
 import { type ClientCore, createClientCore } from "./client-core.ts";
 import { stoppableUpload } from "./client-uploads.ts";
 import { DirectMode } from "./direct-mode.ts";
-import { enterDirect, exitDirect } from "./direct-switch.ts";
+import { enterDirect, exitDirect, requireIdleRobot } from "./direct-switch.ts";
 import { RbcBadReplyError, RbcNotSupportedError, RbcTimeoutError } from "./errors.ts";
 import {
   connectionFirmwareIo,
@@ -408,6 +408,15 @@ export class RbcClient {
    */
   enterDirectMode(use: DirectUse = "servo-control"): Promise<void> {
     return this.#c.exclusive(() => enterDirect(this.#core, use));
+  }
+
+  /**
+   * What `enterDirectMode(use)` checks before it sends 0x10, and nothing more: refused while an operation is under
+   * way (`ActivityRefusedError`, nothing sent) or while the robot is busy (the busy probe, `RbcNotIdleError`).
+   * The servo scan uses it to watch the line before it enters direct mode (servo-doctor/scan.ts).
+   */
+  checkIdleForDirect(use: DirectUse = "servo-control"): Promise<void> {
+    return this.#c.exclusive(() => requireIdleRobot(this.#core, use));
   }
 
   /** Leaves direct mode with the 6-byte exit sequence (no reply). */

@@ -221,6 +221,8 @@ export type WckCommand =
   | { kind: "move"; id: number; torque: number; position: number }
   | { kind: "read"; id: number }
   | { kind: "passive"; id: number }
+  /** The 360° wheel mode `FF (C0|id) (dir<<4 | speed) cs`: dir 3 counter-clockwise, 4 clockwise, speed 0-15 (§5). */
+  | { kind: "wheel"; id: number; direction: "ccw" | "cw"; speed: number }
   | { kind: "brake" }
   | { kind: "sync"; speed: number; positions: number[] }
   | { kind: "exit-direct" }
@@ -286,6 +288,10 @@ export class WckDecoder {
     if (mode === 5) return { kind: "read", id };
     if (mode === 6 && b[2] === 0x10) return { kind: "passive", id };
     if (mode === 6 && id === WCK_BROADCAST_ID && b[2] === 0x20) return { kind: "brake" };
+    const dir = b[2]! >> 4;
+    if (mode === 6 && id !== WCK_BROADCAST_ID && (dir === 3 || dir === 4)) {
+      return { kind: "wheel", id, direction: dir === 3 ? "ccw" : "cw", speed: b[2]! & 0x0f };
+    }
     if (mode === 7 && id === 0 && b[2] === 0xfb && b[3] === 0x01 && b[4] === 0x00)
       return { kind: "exit-direct" };
     if (mode === 7 && b[2] === D2_MOVE_10BIT) {

@@ -14,6 +14,11 @@ export interface ServoFaults {
   replacement?: readonly number[];
   /** These servos carry a high load at rest and follow a move only part of the way. */
   loaded?: readonly number[];
+  /**
+   * These servos (joint → ms) answer this long after a command, not at once: a servo on a noisy or overloaded
+   * chain, or a host that stalls (docs/protocol.md §5 "Servo doctor": a late pair is never the next id's answer).
+   */
+  late?: Readonly<Record<number, number>>;
 }
 
 /** The load a loaded servo reports while it holds (a free one reports 0). */
@@ -38,11 +43,18 @@ export function checkServoFaults(faults: ServoFaults | undefined): Required<Serv
   if (both !== undefined) {
     throw new RangeError(`Servo ${both} cannot be both missing and a replacement at id 0.`);
   }
+  const late = faults?.late ?? {};
+  checkIds(Object.keys(late).map(Number), "late");
+  for (const [joint, ms] of Object.entries(late)) {
+    if (!Number.isFinite(ms) || ms < 0)
+      throw new RangeError(`Servo ${joint} must answer 0 ms or more late, got ${ms}.`);
+  }
   return {
     missing,
     duplicate: checkIds(faults?.duplicate, "duplicate"),
     replacement,
     loaded: checkIds(faults?.loaded, "loaded"),
+    late,
   };
 }
 

@@ -65,6 +65,8 @@ export interface ServoState {
 /** What one decoded servo-bus command did. */
 export interface BusResult {
   reply?: Uint8Array;
+  /** The reply comes this long after the command (the "late" fault), not at once. */
+  lateMs?: number;
   exitDirectMode?: boolean;
 }
 
@@ -170,13 +172,23 @@ export class ServoBus {
     for (const servo of this.at(id)) drive(servo.state, position);
   }
 
-  /** A frame of a playing motion (docs/protocol.md §10), sent by bus id: each servo moves with its torque and holds. */
-  applyFrame(ids: readonly number[], positions: readonly number[], torques: readonly number[]): void {
+  /**
+   * A frame of a playing motion (docs/protocol.md §10), sent by bus id as one position move per servo: each servo
+   * moves with its torque and holds. Returns the servos' replies to those moves (load, position; collided where
+   * two share an id), in order: the servo bus carries them whether or not anyone listens.
+   */
+  applyFrame(ids: readonly number[], positions: readonly number[], torques: readonly number[]): Uint8Array[] {
+    const replies: Uint8Array[] = [];
     ids.forEach((id, i) => {
       const position = positions[i];
       if (position === undefined) return;
-      for (const { state } of this.at(id)) drive(state, position, torques[i] ?? state.torque);
+      const { reply } = this.answer(id, (state) => {
+        drive(state, position, torques[i] ?? state.torque);
+        return [state.load, state.position];
+      });
+      if (reply) replies.push(reply);
     });
+    return replies;
   }
 
   /**
@@ -264,6 +276,10 @@ export class ServoBus {
           servo.load = 0;
           return [0, servo.position];
         });
+      case "wheel":
+        // The reply is rotations, ? (docs/protocol.md §5): a simulated servo does not turn, so 0 rotations and
+        // its position.
+        return this.answer(command.id, (servo) => [0, servo.position]);
       case "move10":
         // The 10-bit move goes to id 0's address; the servo is in d3.
         return this.answer(command.id, (servo) => {
@@ -279,12 +295,13 @@ export class ServoBus {
 
   /** Every servo at `busId` acts on the command; their replies: none, one clean pair, or collided bytes. */
   private answer(busId: number, act: (servo: ServoState, stored: StoredGains) => ParameterReply): BusResult {
-    const replies = this.at(busId)
-      .map((servo) => act(servo.state, servo.stored))
-      .filter((r) => r !== undefined);
+    const servos = this.at(busId);
+    const replies = servos.map((servo) => act(servo.state, servo.stored)).filter((r) => r !== undefined);
     if (replies.length === 0) return {};
-    if (replies.length === 1) return { reply: Uint8Array.from(replies[0]!.map((b) => b & 0xff)) };
-    return { reply: collide(replies) };
+    const lateMs = Math.max(0, ...servos.map((s) => this.faults.late[s.state.id] ?? 0));
+    const late = lateMs > 0 ? { lateMs } : {};
+    if (replies.length === 1) return { reply: Uint8Array.from(replies[0]!.map((b) => b & 0xff)), ...late };
+    return { reply: collide(replies), ...late };
   }
 
   /** The parameter table of docs/protocol.md §5 (`sim-servo-parameters.ts`); the 10-bit read names its servo in d3. */

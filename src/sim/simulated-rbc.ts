@@ -100,8 +100,11 @@ export class SimulatedRbc {
       platform: () => this.platform,
       servoPositions: () => this.servoPositions(),
       applyFrame: (ids, frame) => {
-        this.servoBus.applyFrame(ids, frame.positions, frame.torques);
+        const replies = this.servoBus.applyFrame(ids, frame.positions, frame.torques);
         this.servoWatch.changed();
+        // In direct mode the RBC relays the servo bus to the PC, its own motion's traffic too (docs/protocol.md
+        // §3.6: the PC receives replies to frames it never sent).
+        if (this.direct && !this.variant.servosSilent) for (const reply of replies) this.send(reply);
       },
       motionEnded: (n, positions) => this.motionEnded(n, positions),
     });
@@ -305,6 +308,7 @@ export class SimulatedRbc {
           duplicate: [...f.duplicate],
           replacement: [...f.replacement],
           loaded: [...f.loaded],
+          late: { ...f.late },
         },
         busIds: ids.joints,
         extraBusIds: ids.extras,
@@ -496,7 +500,11 @@ export class SimulatedRbc {
       const results = this.servoBus.push(b);
       for (const result of results) {
         // Silent servos (unplugged, no battery) never answer on the bus.
-        if (result.reply && !this.variant.servosSilent) this.send(result.reply);
+        const reply = result.reply;
+        if (reply && !this.variant.servosSilent) {
+          if (result.lateMs) this.timers.after(result.lateMs, () => this.send(reply));
+          else this.send(reply);
+        }
         if (result.exitDirectMode) {
           this.direct = false;
           this.receiver.packetMode();

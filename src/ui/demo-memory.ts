@@ -45,12 +45,15 @@ export function memoryDigest(m: SimLastingMemory): string {
     h ^= (n >>> 8) & 0xff;
     h = Math.imul(h, 0x01000193);
   };
+  const f = m.servos.faults;
   const numbers = [
     ...m.zeros,
     m.basicPostureDone ? 1 : 0,
     ...m.servos.busIds,
     ...m.servos.extraBusIds,
-    ...Object.values(m.servos.faults).flatMap((ids) => [ids.length, ...ids]),
+    ...[f.missing, f.duplicate, f.replacement, f.loaded].flatMap((ids) => [ids.length, ...ids]),
+    // A record kept before late servos existed has none.
+    ...Object.entries(f.late ?? {}).flatMap(([joint, ms]) => [Number(joint), ms]),
   ];
   for (const n of numbers) mix(n);
   for (const area of [m.motion, m.action]) {
@@ -84,8 +87,14 @@ export class DemoMemoryKeeper {
     private readonly storage: DemoMemoryStorage,
     private readonly key: string,
     private readonly saved: () => void = () => {},
+    /**
+     * The memory the storage (or the previous robot) holds now, when the robot was restored from it: saving
+     * starts from there, so a robot made with other servos (a fault chosen for the session) is saved at its
+     * first answer, not only at a later change. Without it, from the robot's own memory as it starts.
+     */
+    kept?: SimLastingMemory,
   ) {
-    this.digest = memoryDigest(sim.lastingMemory());
+    this.digest = memoryDigest(kept ?? sim.lastingMemory());
     this.unsubscribe = sim.onTransmit(() => this.schedule());
     globalThis.addEventListener?.("pagehide", this.onPageHide);
   }

@@ -103,9 +103,11 @@ export async function openDemoRobot(options: OpenDemoOptions = {}): Promise<Kept
   }
   const servoBus = demoOptions.servoBus ?? servosOf(memory);
   const demo = createDemoRobot({ ...demoOptions, ...(servoBus ? { servoBus } : {}) });
+  let kept: SimLastingMemory | undefined;
   if (memory !== undefined) {
     try {
       demo.sim.restoreLastingMemory(memory);
+      kept = memory as SimLastingMemory;
     } catch {
       // Not this robot's memory (another version of the panel, a damaged record): it starts as new.
     }
@@ -115,7 +117,7 @@ export async function openDemoRobot(options: OpenDemoOptions = {}): Promise<Kept
     if (page.__rbcTestOptions !== undefined) page.__rbcDemoSaves = (page.__rbcDemoSaves ?? 0) + 1;
   };
   const keeper = storage
-    ? new DemoMemoryKeeper(demo.sim, storage, demoMemoryKey(demo.sim.serialNumber), saved)
+    ? new DemoMemoryKeeper(demo.sim, storage, demoMemoryKey(demo.sim.serialNumber), saved, kept)
     : undefined;
   return { ...demo, keeper };
 }

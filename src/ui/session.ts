@@ -12,6 +12,7 @@ import {
   runningWords,
 } from "./app-state.ts";
 import type { AppContext } from "./context.ts";
+import type { DemoMemoryStorage } from "./demo-memory.ts";
 import type { DemoRobotOptions, KeptDemoRobot } from "./demo-robot.ts";
 import {
   busyChanged,
@@ -48,7 +49,10 @@ export const DEMO_BLUETOOTH_ROBOT: RobotLabel = {
 
 export interface SessionOptions {
   /** How the demo robot is made (browser tests run it faster). */
-  demo?: DemoRobotOptions;
+  demo?: DemoRobotOptions & {
+    /** Where the demo robot's memory is kept (unit tests: a Map); default IndexedDB. */
+    storage?: DemoMemoryStorage;
+  };
   /** Where the robot's shelf is kept (unit tests: a Map, `memoryShelfStorage`); default IndexedDB. */
   shelfStorage?: () => Promise<ShelfStorage>;
 }

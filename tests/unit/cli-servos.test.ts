@@ -19,6 +19,20 @@ describe("rbc servos scan", () => {
     expect(json.findings).toEqual([]);
   });
 
+  it("--repeat-replies (the homebrew build): the scan says the firmware repeats its reply and reads no servo, exit 1", async () => {
+    const r = await runInProcess(["servos", "scan", "--demo", "--json"], variant("--repeat-replies"));
+    expect(r.code).toBe(1);
+    const json = JSON.parse(r.stdout);
+    expect(json.servos).toEqual([]);
+    expect(json.findings).toEqual([]);
+    expect(json.stopped).toMatchObject({ code: "firmware-sends-packets", type: 0x16 });
+    expect(json.stopped.message).toContain("keeps sending packets nobody asked for (type 0x16)");
+    expect(json.stopped.message).not.toContain("two servos");
+    const human = await runInProcess(["servos", "scan", "--demo"], variant("--repeat-replies"));
+    expect(human.stdout).toContain("The scan stopped: The robot's firmware keeps sending packets");
+    expect(human.stdout).not.toContain("answered by two servos");
+  });
+
   it("--servo-missing 7: silent, the finding worded with the robot's own right, exit 1", async () => {
     const r = await runInProcess(["servos", "scan", "--demo", "--json"], variant("--servo-missing 7"));
     expect(r.code).toBe(1);

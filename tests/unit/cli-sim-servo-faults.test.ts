@@ -73,6 +73,38 @@ describe("RBC_DEMO_VARIANT takes the servo-fault switches", () => {
     }
   });
 
+  it("--servo-late N:MS: servo N answers MS ms late (docs/protocol.md §9), in words in both languages", () => {
+    const variant = demoVariant({ [DEMO_VARIANT_VAR]: "--servo-late 7:60 --servo-late 3:110" });
+    expect(variant).toEqual({ servoFaults: { late: { 7: 60, 3: 110 } } });
+    expect(describeVariant(variant, "en")).toEqual([
+      "servo 3 answers 110 ms late",
+      "servo 7 answers 60 ms late",
+    ]);
+    expect(describeVariant(variant, "ko")).toEqual([
+      "서보 3번이 110ms 늦게 응답함",
+      "서보 7번이 60ms 늦게 응답함",
+    ]);
+    for (const bad of ["16:60", "7", "7:x", "7:6000"]) {
+      expect(() => demoVariant({ [DEMO_VARIANT_VAR]: `--servo-late=${bad}` })).toThrow(
+        `--servo-late takes a servo id from 0 to 15 and a delay of 0 to 5000 ms, as 7:60, got "${bad}".`,
+      );
+    }
+  });
+
+  it("the demo robot made from --servo-late 7:60: read 7 is answered 60 ms after it is received, not at once", async () => {
+    const clock = new VirtualClock();
+    const sim = createDemoRbc({ clock, ...demoVariant({ [DEMO_VARIANT_VAR]: "--servo-late 7:60" }) });
+    const out: string[] = [];
+    sim.onTransmit((b) => out.push(toHex(b)));
+    sim.receive(fromHex(ENTER_DIRECT));
+    sim.receive(fromHex("FF A7 00 27"));
+    expect(out).toEqual([ENTER_DIRECT_REPLY]);
+    await clock.advance(59);
+    expect(out).toEqual([ENTER_DIRECT_REPLY]);
+    await clock.advance(1);
+    expect(out).toEqual([ENTER_DIRECT_REPLY, "00 31"]);
+  });
+
   it("one servo both missing and replaced is refused", () => {
     expect(() => demoVariant({ [DEMO_VARIANT_VAR]: "--servo-missing 5 --servo-replacement 5" })).toThrow(
       /Servo 5 cannot be both missing/,

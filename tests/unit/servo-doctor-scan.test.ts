@@ -71,7 +71,7 @@ describe("scanServos on each simulated fault", () => {
 });
 
 describe("a late or garbled reply is never attributed to the next id", () => {
-  it("a pair arriving 60 ms after id 7's read (id 7 missing) lands in id 8's window: id 8 is read again and answers its own 163", async () => {
+  it("a pair arriving 60 ms after id 7's first read (id 7 missing) is fenced off: id 7 silent after its second read, id 8 read once with its own 163", async () => {
     const { client, run, port, clock } = await makeRig({
       port: PORT,
       sim: { servoFaults: { missing: [7] } },
@@ -80,8 +80,11 @@ describe("a late or garbled reply is never attributed to the next id", () => {
     client.log.on((e) => {
       if (e.direction !== "out") return;
       written.push(toHex(e.bytes));
-      // Read id 7 is FF A7 00 27: a stray pair (load 0, position 49) follows 60 ms later.
-      if (toHex(e.bytes) === "FF A7 00 27") port.injectToPc([0x00, 0x31], 60);
+      // The first read of id 7 is FF A7 00 27: a stray pair (load 0, position 49) follows 60 ms later, after
+      // its window; the fence that follows an unanswered read takes it (docs/protocol.md §5).
+      if (toHex(e.bytes) === "FF A7 00 27" && written.filter((w) => w === "FF A7 00 27").length === 1) {
+        port.injectToPc([0x00, 0x31], 60);
+      }
     });
     const result = await run(scanServos(client, { ids: [6, 7, 8, 9] }));
     expect(result.servos).toEqual([
@@ -90,8 +93,9 @@ describe("a late or garbled reply is never attributed to the next id", () => {
       { id: 8, status: "answered", load: 0, position: 163 },
       { id: 9, status: "answered", load: 0, position: 141 },
     ]);
-    // Id 8 (FF A8 00 28) was read twice.
-    expect(written.filter((w) => w === "FF A8 00 28")).toHaveLength(2);
+    // Id 7 was read twice (the second time with the longer window), id 8 (FF A8 00 28) once.
+    expect(written.filter((w) => w === "FF A7 00 27")).toHaveLength(2);
+    expect(written.filter((w) => w === "FF A8 00 28")).toHaveLength(1);
     expect(result.findings).toEqual([{ code: "servo-missing", ids: [7] }]);
     expect(clock.now()).toBeGreaterThan(0);
   });

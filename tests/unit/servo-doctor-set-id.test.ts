@@ -46,11 +46,13 @@ describe("setServoId", () => {
         from: { id: 0, status: "silent" },
       },
     });
-    // In order: read 0, read 30, the id set, read 30, read 0 (FF A0 00 20, FF BE 00 3E).
+    // In order: read 0, read 30, the id set, read 30, read 0 (FF A0 00 20, FF BE 00 3E). The unanswered read
+    // of 30 leaves the bus unsettled (docs/protocol.md §5): the id set is fenced first (leave, 0x12, enter).
     const servoBytes = out.filter((hex) => hex.startsWith("FF ") && !hex.startsWith("FF FF"));
     expect(servoBytes).toEqual([
       "FF A0 00 20",
       "FF BE 00 3E",
+      "FF E0 FB 01 00 1A",
       "FF E0 0C 1E 1E 6C",
       "FF BE 00 3E",
       "FF A0 00 20",

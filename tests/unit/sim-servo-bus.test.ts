@@ -202,3 +202,52 @@ describe("faults", () => {
     );
   });
 });
+
+describe("the wheel mode (docs/protocol.md §5)", () => {
+  it("servo 5 clockwise at speed 6, FF C5 46 03 ((C5 ^ 46) & 7F = 03): answered rotations 0, position 126", () => {
+    const { ask } = bus();
+    expect(ask("FF C5 46 03")).toEqual(["00 7E"]);
+    // Counter-clockwise at speed 15: FF C5 3F 7A ((C5 ^ 3F) & 7F = 7A).
+    expect(ask("FF C5 3F 7A")).toEqual(["00 7E"]);
+  });
+
+  it("a servo nobody has at the id does not answer, and passive (FF C5 10 55) is still passive", () => {
+    const { ask } = bus({ servoFaults: { missing: [5] } });
+    expect(ask("FF C5 46 03")).toEqual([]);
+    const healthy = bus();
+    expect(healthy.ask("FF C5 10 55")).toEqual(["00 7E"]);
+  });
+});
+
+describe("direct mode during a motion started elsewhere (docs/protocol.md §3.6)", () => {
+  it("the RBC relays the motion's servo traffic: each frame's position moves are answered (load, position), unasked", async () => {
+    const { clock, sim, send, ask } = bus();
+    ask(LEAVE_DIRECT);
+    // Servo 0 stands at 100: basic posture moves it to 125 (the motion plays frames).
+    sim.servos[0]!.position = 100;
+    const out: string[] = [];
+    sim.onTransmit((bytes) => out.push(toHex(bytes)));
+    send(RUN_MOTION_7);
+    await clock.advance(5);
+    expect(sim.playingMotion).toBe(7);
+    send(ENTER_DIRECT);
+    expect(sim.directMode).toBe(true);
+    out.length = 0;
+    await clock.advance(200);
+    // Nothing was sent to the servo bus by the PC, yet pairs arrive: one per servo per frame (16 servos).
+    expect(out.length).toBeGreaterThanOrEqual(16);
+    expect(out.every((hex) => /^[0-9A-F]{2} [0-9A-F]{2}$/.test(hex))).toBe(true);
+    // Servo 7 holds 49 throughout (basic posture keeps it there): `00 31` is among them.
+    expect(out).toContain("00 31");
+  });
+
+  it("out of direct mode the same motion sends nothing but its packets", async () => {
+    const { clock, sim, send, ask } = bus();
+    ask(LEAVE_DIRECT);
+    const out: string[] = [];
+    sim.onTransmit((bytes) => out.push(toHex(bytes)));
+    send(RUN_MOTION_7);
+    await clock.advance(200);
+    expect(out.every((hex) => hex.startsWith("FF FF AA 55 AA 55 37 BA "))).toBe(true);
+  });
+});

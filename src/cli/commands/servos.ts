@@ -55,7 +55,18 @@ export function scanJson(result: ScanResult, locale: Locale) {
   return {
     servos: result.servos,
     findings: result.findings.map((f) => ({ ...f, message: findingText(f, locale) })),
-    ...(result.stopped ? { stopped: result.stopped } : {}),
+    ...(result.stopped ? { stopped: stoppedJson(result, locale) } : {}),
+  };
+}
+
+/** Why the scan stopped, as JSON: its code and facts, the error's code (not the object), and the sentence. */
+function stoppedJson(result: ScanResult, locale: Locale) {
+  const { error, ...facts } = result.stopped ?? { code: "failed", unread: [] };
+  const code = (error as { code?: unknown } | undefined)?.code;
+  return {
+    ...facts,
+    ...(typeof code === "string" ? { error: code } : {}),
+    message: scanStoppedText(result, locale),
   };
 }
 

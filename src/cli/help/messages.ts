@@ -394,6 +394,10 @@ export const helpMessages = defineMessages({
     en: "Servo N (0-15) carries a high load at rest and follows a move only part of the way.",
     ko: "서보 N번(0-15)이 가만히 있어도 부하가 크고, 움직임을 일부만 따라가요.",
   },
+  "cliHelp.sim.servoLate": {
+    en: "Servo N (0-15) answers MS ms after each command instead of at once, e.g. 7:60. May be given more than once.",
+    ko: "서보 N번(0-15)이 명령마다 바로 응답하지 않고 MS밀리초 뒤에 응답해요. 예: 7:60. 여러 번 쓸 수 있어요.",
+  },
   "cliHelp.sim.quiet": { en: "Do not print the packet trace.", ko: "패킷 로그를 출력하지 않아요." },
   "cliHelp.sim.port": { en: "The serial device to serve.", ko: "가상 로봇을 띄울 시리얼 장치." },
 });

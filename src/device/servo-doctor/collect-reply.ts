@@ -45,7 +45,8 @@ export async function writeAndListen(
   signal?: AbortSignal,
 ): Promise<Heard> {
   if (signal?.aborted) throw new RbcCancelledError();
-  const sentAt = clock.now();
+  // The write may wait for a fence first: the times count from the write itself.
+  let sentAt = clock.now();
   const heard: Heard = { bytes: [], early: [], noisy: false, listenedMs: 0 };
   let lastAt = Number.NEGATIVE_INFINITY;
   const closer = new AbortController();
@@ -67,11 +68,15 @@ export async function writeAndListen(
   };
   const onOuterAbort = () => clock.clearTimeout(timer);
   signal?.addEventListener("abort", onOuterAbort);
-  schedule();
   try {
     const ended = await raw.servoListen(packet, {
       note,
       capMs: timing.capMs,
+      expect: timing.expect,
+      onWrite: () => {
+        sentAt = clock.now();
+        schedule();
+      },
       close: closer.signal,
       signal,
       onByte: (b) => {

@@ -1,11 +1,14 @@
 import { HUNO_SERVO_COUNT } from "../../protocol/servo-limits.ts";
 import { WCK_MAX_ID } from "../../protocol/wck.ts";
+import { sleep } from "../../shared/clock.ts";
 import { RbcCancelledError, RbcError, RbcInvalidArgumentError } from "../errors.ts";
 import type { RbcClient } from "../rbc-client.ts";
-import type { Heard } from "./collect-reply.ts";
 import { scanFindings } from "./findings.ts";
-import { cleanStatus, ServoDoctorStoppedError } from "./servo-bus.ts";
+import { FirmwarePacketsSeen, readId } from "./read-id.ts";
+import { SERVO_REPLY_WINDOW_MS, ServoDoctorStoppedError } from "./servo-bus.ts";
 import type { ScanResult, ServoReading, StopCode } from "./types.ts";
+
+export { readingOf } from "./read-id.ts";
 
 export interface ScanOptions {
   /** Ids to read, each 0-30, no repeats (default 0-15, a HUNO's). */
@@ -34,19 +37,11 @@ export function checkServoIds(ids: readonly number[]): number[] {
   return [...ids];
 }
 
-/** One id's reading from what the bus sent back after its mode-5 read. */
-export function readingOf(id: number, heard: Heard): ServoReading {
-  const status = cleanStatus(heard);
-  if (status) return { id, status: "answered", ...status };
-  const bytes = [...heard.early, ...heard.bytes];
-  if (bytes.length === 0 && !heard.noisy) return { id, status: "silent" };
-  return { id, status: "garbled", bytes };
-}
-
 /** Why an operation stopped, from the error that stopped it. */
 export function stopCodeOf(e: unknown, client: RbcClient): StopCode {
   if (client.mode === "disconnected") return "disconnected";
   if (e instanceof ServoDoctorStoppedError) return "stop-pressed";
+  if (e instanceof FirmwarePacketsSeen) return "firmware-sends-packets";
   if (e instanceof RbcCancelledError) return "cancelled";
   if (e instanceof RbcError && e.code === "disconnected") return "disconnected";
   if (e instanceof RbcError && e.code === "wrong-mode") return "left-direct-mode";
@@ -54,37 +49,72 @@ export function stopCodeOf(e: unknown, client: RbcClient): StopCode {
 }
 
 /**
- * Reads every id in `ids` once with a mode-5 read, one at a time (docs/protocol.md §5 "Servo doctor"). Direct
- * mode is entered through the client's guarded entry (only when idle: it throws `ActivityRefusedError`
- * otherwise, nothing sent) and left at the end, also after a cancel or an error. A scan that stops early
- * (cancel, Stop, a cable pull) resolves with the readings it has and `stopped` (why, and the ids not read).
+ * Reads every id in `ids`, one at a time, with mode-5 reads (docs/protocol.md §5 "Servo doctor"; `readId`: a
+ * garbled id is read again, a silent one again with a longer window, and every unanswered read is fenced before
+ * the next). First the busy probe, and a watch of the line: a firmware that sends RBC packets nobody asked for
+ * (a build that repeats its 0x16 reply) stops the scan before direct mode, as such packets would be taken for
+ * servo replies. Direct mode is entered through the client's guarded entry (only when idle: it throws
+ * `ActivityRefusedError` otherwise, nothing sent) and left at the end, also after a cancel or an error. A scan
+ * that stops early resolves with the readings it has and `stopped` (why, its facts, and the ids not read).
  */
 export async function scanServos(client: RbcClient, options: ScanOptions = {}): Promise<ScanResult> {
   const ids = checkServoIds(options.ids ?? HUNO_SCAN_IDS);
   const expected = ids.filter((id) => id < HUNO_SERVO_COUNT);
   if (options.signal?.aborted) throw new RbcCancelledError();
+  const unasked = await unaskedPacketType(client, options.signal);
+  if (unasked !== undefined) {
+    const stopped = { code: "firmware-sends-packets" as const, unread: ids, type: unasked ?? undefined };
+    return { servos: [], findings: [], ids, expected, stopped };
+  }
   await client.enterDirectMode("servo-control");
   const bus = client.servoBus.session();
   const servos: ServoReading[] = [];
   let stopped: ScanResult["stopped"];
   try {
     for (const id of ids) {
-      let reading = readingOf(id, await bus.readStatus(id, options.signal));
-      // Bytes that are not one pair can be two servos at this id, or a late reply to the id before: read
-      // again on a quiet line, and let the second reading decide (two servos garble it again).
-      if (reading.status === "garbled") {
-        reading = readingOf(id, await bus.readStatus(id, options.signal));
-      }
+      const reading = await readId(bus, id, options.signal);
       servos.push(reading);
       options.onProgress?.({ done: servos.length, total: ids.length, reading });
     }
   } catch (e) {
     stopped = { code: stopCodeOf(e, client), unread: ids.slice(servos.length) };
+    if (e instanceof FirmwarePacketsSeen && e.type !== undefined) stopped.type = e.type;
+    if (stopped.code === "failed") stopped.error = e;
   } finally {
     await leaveDirect(client);
   }
   const findings = scanFindings(servos, expected);
   return stopped ? { servos, findings, ids, expected, stopped } : { servos, findings, ids, expected };
+}
+
+/**
+ * The direct-mode entry's own checks (refused while an operation is under way, nothing sent; the busy probe,
+ * 0x16, docs/protocol.md §3.6), then a quick time's watch of the line: the type of an RBC packet nobody asked for
+ * that came meanwhile (null when its type is not known), or undefined for a quiet line.
+ */
+async function unaskedPacketType(
+  client: RbcClient,
+  signal?: AbortSignal,
+): Promise<number | null | undefined> {
+  const before = client.stats.unansweredReplies;
+  const types: number[] = [];
+  const off = client.log.on((e) => {
+    if (e.direction === "in" && e.kind === "packet" && e.type !== undefined) types.push(e.type);
+  });
+  try {
+    await client.checkIdleForDirect("servo-control");
+    types.length = 0;
+    await sleep(
+      client.clock,
+      SERVO_REPLY_WINDOW_MS + client.link.extraMs,
+      signal,
+      () => new RbcCancelledError(),
+    );
+  } finally {
+    off();
+  }
+  if (client.stats.unansweredReplies === before) return undefined;
+  return types[0] ?? null;
 }
 
 /** Leaves direct mode if the client is still in it; a link already gone has nothing to leave. */

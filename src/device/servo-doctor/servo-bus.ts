@@ -43,10 +43,21 @@ export const ADAPTER_LATENCY_MS = 16;
 /**
  * [decision] The wired quick time for a servo's reply (docs/protocol.md §5 "Servo doctor"): a wCK servo answers
  * within about a millisecond, so the request's and the reply's wire time, the adapter's latency twice (out and
- * back) and a margin of 16 ms. Far below the 400 ms of an RBC packet's quick time, so a scan of 31 ids with
- * half of them silent takes about 1.5 s, not 6 s. A slower link adds what it adds (`ServoBusHost.link`).
+ * back) and a margin of 16 ms. Far below the 400 ms of an RBC packet's quick time, so an answered id takes
+ * tens of milliseconds; a silent one is read twice and fenced after each read (about 0.3 s on a USB adapter), so
+ * a scan of ids 0-30 on a HUNO takes under 5 s. A slower link adds what it adds (`ServoBusHost.link`).
  */
 export const SERVO_REPLY_WINDOW_MS = 48;
+
+/**
+ * [decision] The window of the second read of an id the first read found silent (docs/protocol.md §5 "Servo
+ * doctor"): three times the quick time, so a servo whose reply a stalled host took past the first window, or one
+ * that answers late, is heard before it is called silent. The bus was fenced between the two reads.
+ */
+export const SERVO_RECHECK_WINDOW_MS = 3 * SERVO_REPLY_WINDOW_MS;
+
+/** How patiently a read listens: the quick window, or the longer one of a second read (`SERVO_RECHECK_WINDOW_MS`). */
+export type ListenPace = "quick" | "patient";
 
 /** After the last byte the line must stay quiet this long: a second servo's bytes come within a byte or two. */
 export const SERVO_QUIET_MS = ADAPTER_LATENCY_MS + 2;
@@ -87,20 +98,21 @@ export class ServoBus {
   }
 
   /** Listening times for a command of `requestBytes` bytes on this link. */
-  timing(requestBytes: number): ListenTiming {
+  timing(requestBytes: number, pace: ListenPace = "quick"): ListenTiming {
     const extra = this.#host.link.extraMs;
     return {
       expect: 2,
       notBeforeMs: wireMs(requestBytes),
-      windowMs: SERVO_REPLY_WINDOW_MS + extra,
+      windowMs: (pace === "patient" ? SERVO_RECHECK_WINDOW_MS : SERVO_REPLY_WINDOW_MS) + extra,
       quietMs: SERVO_QUIET_MS,
       capMs: SERVO_LISTEN_CAP_MS + extra,
     };
   }
 
   /** Mode-5 status read `FF (A0|id) 00 cs`: an answer is load, position. */
-  readStatus(id: number, signal?: AbortSignal, epoch?: number): Promise<Heard> {
-    return this.#send(() => wckReadStatus(id), `read servo ${id}`, signal, epoch);
+  readStatus(id: number, signal?: AbortSignal, epoch?: number, pace: ListenPace = "quick"): Promise<Heard> {
+    const note = pace === "patient" ? `read servo ${id} again, longer` : `read servo ${id}`;
+    return this.#send(() => wckReadStatus(id), note, signal, epoch, pace);
   }
 
   /** A parameter read `FF (E0|id) d2 00 00 cs` (docs/protocol.md §5: reads only). */
@@ -136,6 +148,7 @@ export class ServoBus {
     note: string,
     signal: AbortSignal | undefined,
     epoch: number | undefined,
+    pace: ListenPace = "quick",
   ): Promise<Heard> {
     let packet: Uint8Array;
     try {
@@ -151,7 +164,14 @@ export class ServoBus {
         if (this.#host.mode !== "direct") {
           throw new RbcError("wrong-mode", undefined, { situation: { kind: "doctor-needs-direct-mode" } });
         }
-        return writeAndListen(this.#raw, this.#host.clock, packet, this.timing(packet.length), note, signal);
+        return writeAndListen(
+          this.#raw,
+          this.#host.clock,
+          packet,
+          this.timing(packet.length, pace),
+          note,
+          signal,
+        );
       }, epoch)
       .catch((e: unknown) => {
         throw epoch !== undefined && epoch !== this.#host.epoch ? new ServoDoctorStoppedError() : e;
@@ -168,8 +188,8 @@ export class ServoBusSession {
     private readonly epoch: number,
   ) {}
 
-  readStatus(id: number, signal?: AbortSignal): Promise<Heard> {
-    return this.bus.readStatus(id, signal, this.epoch);
+  readStatus(id: number, signal?: AbortSignal, pace: ListenPace = "quick"): Promise<Heard> {
+    return this.bus.readStatus(id, signal, this.epoch, pace);
   }
 
   readParameter(id: number, parameter: WckParameter, signal?: AbortSignal): Promise<Heard> {

@@ -28,7 +28,15 @@ export interface Finding {
 }
 
 /** Why a doctor operation stopped before its end. */
-export type StopCode = "cancelled" | "stop-pressed" | "disconnected" | "left-direct-mode" | "failed";
+export type StopCode =
+  | "cancelled"
+  | "stop-pressed"
+  | "disconnected"
+  | "left-direct-mode"
+  /** The firmware sends RBC packets nobody asked for (a build that repeats its 0x16 reply): no servo read is sure. */
+  | "firmware-sends-packets"
+  /** Any other error: `error` says which. */
+  | "failed";
 
 export interface ScanResult {
   /** One reading per id read, in the order read. */
@@ -39,5 +47,12 @@ export interface ScanResult {
   /** Ids a HUNO is expected to answer at, among those asked for (0-15). */
   expected: number[];
   /** Set when the scan stopped early: why, and the ids not read (`servos` holds those read). */
-  stopped?: { code: StopCode; unread: number[] };
+  stopped?: {
+    code: StopCode;
+    unread: number[];
+    /** The type of the packets the firmware sent unasked, when known (`firmware-sends-packets`). */
+    type?: number;
+    /** The error that stopped it (`failed`): worded by the outcome catalogue. */
+    error?: unknown;
+  };
 }

@@ -56,6 +56,22 @@ export const servoOutcomeMessages = defineMessages({
     ko: "로봇이 서보 조종 모드를 벗어났어요",
   },
   "outcome.servo.stopped.failed": { en: "an error", ko: "오류" },
+  "outcome.servo.stopped.firmwarePackets": {
+    en: "the firmware sends packets nobody asked for",
+    ko: "펌웨어가 요청하지 않은 패킷을 보내요",
+  },
+  "outcome.servo.stoppedBecause": {
+    en: "The scan stopped: {because} Read: {read}. Not read: {unread}.",
+    ko: "검사를 멈췄어요. {because} 읽은 ID: {read}. 읽지 못한 ID: {unread}.",
+  },
+  "outcome.servo.firmwarePackets": {
+    en: "the robot's firmware keeps sending packets nobody asked for (type {type}), as a build that repeats its reply endlessly does. Servo replies cannot be told from them, so the servos were not read.",
+    ko: "로봇의 펌웨어가 요청하지 않은 패킷(종류 {type})을 계속 보내고 있어요. 응답을 끝없이 되풀이하는 빌드가 그래요. 서보의 응답과 구별할 수 없어서 서보를 읽지 않았어요.",
+  },
+  "outcome.servo.firmwarePacketsUntyped": {
+    en: "the robot's firmware sends packets nobody asked for, as a build that repeats its reply endlessly does. Servo replies cannot be told from them, so the servos were not read.",
+    ko: "로봇의 펌웨어가 요청하지 않은 패킷을 보내고 있어요. 응답을 끝없이 되풀이하는 빌드가 그래요. 서보의 응답과 구별할 수 없어서 서보를 읽지 않았어요.",
+  },
   "outcome.servo.none": { en: "none", ko: "없음" },
 
   "outcome.servo.setId.done": {

@@ -10,6 +10,7 @@ import type { WckParameter, WckParameterValue } from "../../../protocol/wck.ts";
 import { jointOf } from "../../joint-names/joint-name.ts";
 import type { Locale } from "../../locale.ts";
 import { translator } from "../../translate.ts";
+import { errorText } from "../error-text.ts";
 import { servoOutcomeMessages as messages } from "./messages.ts";
 
 /**
@@ -115,6 +116,7 @@ const STOP_KEY = {
   "stop-pressed": "outcome.servo.stopped.stopPressed",
   disconnected: "outcome.servo.stopped.disconnected",
   "left-direct-mode": "outcome.servo.stopped.leftDirectMode",
+  "firmware-sends-packets": "outcome.servo.stopped.firmwarePackets",
   failed: "outcome.servo.stopped.failed",
 } as const satisfies Record<StopCode, string>;
 
@@ -123,16 +125,39 @@ export function stopText(code: StopCode, locale: Locale): string {
   return t(locale)(STOP_KEY[code]);
 }
 
-/** A scan that stopped early: why, the ids read and those not read. */
+/**
+ * A scan that stopped early: why (the packets the firmware sent, or the error that stopped it, in a sentence of
+ * its own), the ids read and those not read.
+ */
 export function scanStoppedText(result: ScanResult, locale: Locale): string | undefined {
-  if (!result.stopped) return undefined;
-  const none = t(locale)("outcome.servo.none");
+  const stopped = result.stopped;
+  if (!stopped) return undefined;
+  const tr = t(locale);
+  const none = tr("outcome.servo.none");
   const list = (ids: number[]) => (ids.length === 0 ? none : ids.join(", "));
-  return t(locale)("outcome.servo.stopped", {
-    why: stopText(result.stopped.code, locale),
-    read: list(result.servos.map((s) => s.id)),
-    unread: list(result.stopped.unread),
-  });
+  const ids = { read: list(result.servos.map((s) => s.id)), unread: list(stopped.unread) };
+  const because = becauseText(stopped, locale);
+  if (because) return tr("outcome.servo.stoppedBecause", { because: capitalised(because), ...ids });
+  return tr("outcome.servo.stopped", { why: stopText(stopped.code, locale), ...ids });
+}
+
+/** The sentence that says why a scan stopped, when a phrase cannot: the firmware's packets, or the error. */
+function becauseText(stopped: NonNullable<ScanResult["stopped"]>, locale: Locale): string | undefined {
+  if (stopped.code === "firmware-sends-packets") {
+    return stopped.type === undefined
+      ? t(locale)("outcome.servo.firmwarePacketsUntyped")
+      : t(locale)("outcome.servo.firmwarePackets", { type: hexByte(stopped.type) });
+  }
+  if (stopped.code === "failed" && stopped.error !== undefined) return errorText(stopped.error, locale);
+  return undefined;
+}
+
+function hexByte(b: number): string {
+  return `0x${b.toString(16).toUpperCase().padStart(2, "0")}`;
+}
+
+function capitalised(text: string): string {
+  return text.charAt(0).toUpperCase() + text.slice(1);
 }
 
 /** The guided id fix's outcome, worded from what was read. */

@@ -32,7 +32,18 @@ export function demoBusOf(ctx: AppContext): ServoBus | undefined {
 /** The demo robot's fault as chosen here, and the servos unplugged here. */
 export function demoFaultOf(ctx: AppContext): { fault: DemoFault; unplugged: readonly number[] } {
   const choice = ctx.session.pageScope.peek(DEMO_FAULT);
-  return { fault: choice?.fault ?? { kind: "none", id: 0 }, unplugged: choice?.unplugged ?? [] };
+  if (choice) return { fault: choice.fault, unplugged: choice.unplugged };
+  // Nothing chosen in this page: the demo robot's servos may carry a fault kept from before a reload.
+  return { fault: faultOfServos(demoBusOf(ctx)?.faults), unplugged: [] };
+}
+
+/** The fault a set of the simulator's faults stands for, as the view offers them (one kind, one servo). */
+function faultOfServos(faults: ServoFaults | undefined): DemoFault {
+  for (const kind of ["replacement", "missing", "duplicate", "loaded"] as const) {
+    const id = faults?.[kind]?.[0];
+    if (id !== undefined) return { kind, id };
+  }
+  return { kind: "none", id: 0 };
 }
 
 /** The simulator's faults for a choice (a replacement of servo 0 is no fault: servo 0 is at id 0). */
