@@ -54,12 +54,13 @@ export {
   type RoundTripLimits,
 } from "./round-trip.ts";
 export {
+  type BusySeen,
   builtInDurationMs,
   HAZARDOUS_MOTIONS,
   isHazardousMotion,
   judgeRun,
   type NoReplyCause,
-  RUN_DURATION_TOLERANCE,
+  RUN_AT_ONCE_MS,
   type RunBefore,
   type RunNoReply,
   type RunReport,
