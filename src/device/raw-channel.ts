@@ -256,6 +256,8 @@ export class RawChannel {
       close: AbortSignal;
       onByte: (byte: number) => void;
       signal?: AbortSignal;
+      /** Told just before the bytes are handed to the link (not when the command ends unsent). */
+      onWrite?: () => void;
     },
   ): Promise<"closed" | "cap"> {
     const bus = await this.readyBus(options.signal);
@@ -264,6 +266,7 @@ export class RawChannel {
     // Aborted while the bus was fenced: nothing is written, and the bus stays as settled as it was.
     if (signal?.aborted) throw new RbcCancelledError();
     const matcher = { need: Number.POSITIVE_INFINITY, listen: options.onByte };
+    options.onWrite?.();
     const wait = this.open(bytes, note, matcher, { ms: capMs, error: () => LISTEN_CAP }, signal);
     const onClose = () => wait.resolve(Uint8Array.of());
     close.addEventListener("abort", onClose);

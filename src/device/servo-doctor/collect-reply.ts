@@ -43,6 +43,7 @@ export async function writeAndListen(
   timing: ListenTiming,
   note: string,
   signal?: AbortSignal,
+  onWrite?: () => void,
 ): Promise<Heard> {
   if (signal?.aborted) throw new RbcCancelledError();
   const sentAt = clock.now();
@@ -74,6 +75,7 @@ export async function writeAndListen(
       capMs: timing.capMs,
       close: closer.signal,
       signal,
+      onWrite,
       onByte: (b) => {
         const now = clock.now();
         if (now - sentAt < timing.notBeforeMs) heard.early.push(b);

@@ -127,8 +127,15 @@ export class ServoBus {
   }
 
   /** The id set `FF (E0|from) 0C to to cs`: only the guided fix (servo-doctor/set-id.ts) calls it. */
-  setId(from: number, to: number, signal?: AbortSignal, epoch?: number): Promise<Heard> {
-    return this.#send(() => wckSetId(from, to), `servo ${from} becomes id ${to}`, signal, epoch);
+  /** `onWrite`: told when the command's bytes are handed to the link (never when it ends unsent). */
+  setId(
+    from: number,
+    to: number,
+    signal?: AbortSignal,
+    epoch?: number,
+    onWrite?: () => void,
+  ): Promise<Heard> {
+    return this.#send(() => wckSetId(from, to), `servo ${from} becomes id ${to}`, signal, epoch, onWrite);
   }
 
   #send(
@@ -136,6 +143,7 @@ export class ServoBus {
     note: string,
     signal: AbortSignal | undefined,
     epoch: number | undefined,
+    onWrite?: () => void,
   ): Promise<Heard> {
     let packet: Uint8Array;
     try {
@@ -151,7 +159,15 @@ export class ServoBus {
         if (this.#host.mode !== "direct") {
           throw new RbcError("wrong-mode", undefined, { situation: { kind: "doctor-needs-direct-mode" } });
         }
-        return writeAndListen(this.#raw, this.#host.clock, packet, this.timing(packet.length), note, signal);
+        return writeAndListen(
+          this.#raw,
+          this.#host.clock,
+          packet,
+          this.timing(packet.length),
+          note,
+          signal,
+          onWrite,
+        );
       }, epoch)
       .catch((e: unknown) => {
         throw epoch !== undefined && epoch !== this.#host.epoch ? new ServoDoctorStoppedError() : e;
@@ -180,8 +196,8 @@ export class ServoBusSession {
     return this.bus.move(id, position, torque, signal, this.epoch);
   }
 
-  setId(from: number, to: number, signal?: AbortSignal): Promise<Heard> {
-    return this.bus.setId(from, to, signal, this.epoch);
+  setId(from: number, to: number, signal?: AbortSignal, onWrite?: () => void): Promise<Heard> {
+    return this.bus.setId(from, to, signal, this.epoch, onWrite);
   }
 }
 
