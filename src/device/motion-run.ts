@@ -101,18 +101,25 @@ export async function runMotionReport(
         : undefined;
     const sentAt = c.clock.now();
     let answered = false;
-    // Is the robot busy with it? Asked once a reply would no longer have come at once, beside the Run's wait.
+    // Is the robot busy with it? Asked once a reply would no longer have come at once, beside the Run's wait;
+    // not when something else was playing before it (the busy main loop would prove nothing about this Run).
     let check: Promise<BusySeen> | undefined;
-    const checkTimer = c.clock.setTimeout(() => {
-      check = checkBusyDuringRun(
-        core,
-        () => answered,
-        () => {
-          if (activity.isCurrent(started)) activity.motionConfirmed();
-        },
-        c.timeoutFor(COMMANDS.runMotion, motion, waitMs),
-      );
-    }, BUSY_CHECK_AFTER_MS);
+    const checkTimer =
+      started.after === "idle"
+        ? c.clock.setTimeout(() => {
+            check = checkBusyDuringRun(
+              core,
+              () => answered,
+              () => {
+                if (activity.isCurrent(started)) activity.motionConfirmed();
+              },
+              c.timeoutFor(COMMANDS.runMotion, motion, waitMs),
+            );
+          }, BUSY_CHECK_AFTER_MS)
+        : undefined;
+    const stopCheck = () => {
+      if (checkTimer !== undefined) c.clock.clearTimeout(checkTimer);
+    };
     try {
       const n = await c.request(COMMANDS.runMotion, motion, {
         expectedMs: waitMs,
@@ -126,7 +133,7 @@ export async function runMotionReport(
         },
       });
       const elapsedMs = Math.round(c.clock.now() - sentAt);
-      c.clock.clearTimeout(checkTimer);
+      stopCheck();
       const busySeen: BusySeen = check ? await check : "not-asked";
       const report = judgeRun({ motion, echoed: n, knownMs, elapsedMs, before: started.after, busySeen });
       if (motion === BASIC_POSTURE_MOTION && report.verdict === "played") {
@@ -137,7 +144,7 @@ export async function runMotionReport(
       if (replied.postureFollows) awaitPostureAfterEnd(core);
       return { report, by: replied.ended.stop7?.by };
     } catch (e) {
-      c.clock.clearTimeout(checkTimer);
+      stopCheck();
       await check;
       if (activity.isCurrent(started)) activity.motionFailed();
       if (watch?.emptySlot && slot !== undefined) {
