@@ -78,7 +78,7 @@ export async function readMainLoop<R>(core: ClientCore, spec: CommandSpec<undefi
 /**
  * [decision] How long after the 0x12's reply the 0x16's may still come from an idle robot: the 0x16 was sent first,
  * both replies travel the same link in order, and an idle main loop answers within a pass (about 3.5 ms,
- * docs/protocol.md §3.6). Later than this, the main loop is busy.
+ * docs/protocol.md §3.6). Later than this (plus a slow link's extra time), the main loop is busy.
  */
 export const MAIN_LOOP_GRACE_MS = 50;
 
@@ -128,7 +128,8 @@ export async function checkBusyDuringRun(
   const version = c.request(COMMANDS.readFirmwareVersion, undefined, { retries: 0 }).then(
     async () => {
       versionAnswered = true;
-      await c.sleep(MAIN_LOOP_GRACE_MS);
+      // A slow link (Bluetooth) may deliver two replies sent together further apart: its extra time is added.
+      await c.sleep(MAIN_LOOP_GRACE_MS + c.roundTrip.extraMs);
       if (!distanceSettled) decide("busy");
     },
     () => {},
