@@ -254,6 +254,14 @@ export const cliMessages = defineMessages({
     en: 'the official "user" build\'s keys (12-19, 33-42 empty; 20 endless; 21 a demo)',
     ko: '공식 "user" 빌드의 키 (12-19, 33-42 비어 있음, 20 끝없음, 21 데모)',
   },
+  "cli.variant.quickRepeatPosture": {
+    en: "7 while already in basic posture replies after 0.9 s (a one-frame pose)",
+    ko: "이미 기본 자세일 때 7은 0.9초 뒤에 응답 (한 프레임 자세)",
+  },
+  "cli.variant.noZeroWrite": {
+    en: "no answer to 0x0E (write zeros)",
+    ko: "0x0E(영점 쓰기)에 응답 안 함",
+  },
   "cli.variant.noMemoryRead": {
     en: "no answer to 0x0F (free memory)",
     ko: "0x0F(남은 메모리)에 응답 안 함",

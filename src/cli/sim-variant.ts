@@ -35,6 +35,8 @@ export const VARIANT_OPTIONS = {
   "no-memory-read": { type: "boolean" },
   "servos-silent": { type: "boolean" },
   "sound-reply-at-once": { type: "boolean" },
+  "quick-repeat-posture": { type: "boolean" },
+  "no-zero-write": { type: "boolean" },
   // Servo-bus faults (docs/protocol.md §5): each takes a servo id 0-15 and may be given more than once.
   "servo-missing": { type: "string", multiple: true },
   "servo-duplicate": { type: "string", multiple: true },
@@ -68,6 +70,8 @@ export type SimVariant = Pick<
   | "answersMemoryRead"
   | "servosSilent"
   | "soundReplyAtOnce"
+  | "quickRepeatPosture"
+  | "answersZeroWrite"
   | "servoFaults"
 > & {
   /** The robot waits in its bootloader (docs/protocol.md §11): `^` again and again, no packet answered. */
@@ -94,6 +98,8 @@ interface VariantValues {
   "no-memory-read"?: boolean;
   "servos-silent"?: boolean;
   "sound-reply-at-once"?: boolean;
+  "quick-repeat-posture"?: boolean;
+  "no-zero-write"?: boolean;
   "servo-missing"?: string[];
   "servo-duplicate"?: string[];
   "servo-replacement"?: string[];
@@ -210,6 +216,8 @@ export function variantFromValues(values: VariantValues, command: string, paced 
   if (values["no-memory-read"]) variant.answersMemoryRead = false;
   if (values["servos-silent"]) variant.servosSilent = true;
   if (values["sound-reply-at-once"]) variant.soundReplyAtOnce = true;
+  if (values["quick-repeat-posture"]) variant.quickRepeatPosture = true;
+  if (values["no-zero-write"]) variant.answersZeroWrite = false;
   const servoFaults = servoFaultsFromValues(values, command);
   if (servoFaults) variant.servoFaults = servoFaults;
   // --repeat-distance names the homebrew port's own bug: the 0x16 reply, the default of --repeat-replies.
@@ -278,6 +286,8 @@ export function describeVariant(variant: SimVariant, locale: Locale = "en"): str
   if (variant.answersMemoryRead === false) words.push(t("cli.variant.noMemoryRead"));
   if (variant.servosSilent) words.push(t("cli.variant.servosSilent"));
   if (variant.soundReplyAtOnce) words.push(t("cli.variant.soundReplyAtOnce"));
+  if (variant.quickRepeatPosture) words.push(t("cli.variant.quickRepeatPosture"));
+  if (variant.answersZeroWrite === false) words.push(t("cli.variant.noZeroWrite"));
   const faults = variant.servoFaults;
   const ids = (list: readonly number[] | undefined) =>
     list && list.length > 0 ? list.join(", ") : undefined;

@@ -22,6 +22,11 @@ export interface MotionActivity {
   expectedMs: number;
   /** What the client knew was going on when it sent the Run: `busy` means something else was playing. */
   after: "idle" | "busy";
+  /**
+   * The busy check asked while the Run was under way saw the robot busy (docs/protocol.md §3.1 [decision, turn
+   * 4]): the motion is playing. Until then the Run was sent and is being checked.
+   */
+  confirmed?: true;
   /** The 7 sent to end it, once (a second 7 would start Basic posture). */
   stop7?: { by: Stop7Sender; sentAt: number };
   /**
@@ -107,6 +112,7 @@ export interface ActivitySnapshot {
 export type ActivityTransition =
   | "startMotion"
   | "sendStop7"
+  | "motionConfirmed"
   | "motionReplied"
   | "motionFailed"
   | "noticeBusy"

@@ -180,6 +180,15 @@ export class Activity {
     return true;
   }
 
+  /** The busy check saw the robot busy after the Run (docs/protocol.md §3.1): the motion is playing. */
+  motionConfirmed(): void {
+    const doing = this.#doing;
+    if (doing.kind !== "motion") this.#refuse("motionConfirmed");
+    if (doing.confirmed) return;
+    this.#doing = { ...doing, confirmed: true };
+    this.#changed();
+  }
+
   /**
    * The robot echoed `n` for the playing motion. When 7 had been sent and the motion's own number came back,
    * the motion ended on its own just before the 7 arrived, and the robot took the 7 as Run Motion 7: Basic

@@ -1,6 +1,7 @@
 import { COMMANDS, type CommandSpec } from "../protocol/commands.ts";
 import type { ClientCore } from "./client-core.ts";
 import { RbcBadReplyError, RbcBusyError, RbcTimeoutError } from "./errors.ts";
+import type { BusySeen } from "./run-outcome.ts";
 
 /**
  * Busy, not gone (docs/protocol.md §3.6 [decision]): the RBC answers 0x11/0x12 from its receive interrupt, at
@@ -72,4 +73,67 @@ export async function readMainLoop<R>(core: ClientCore, spec: CommandSpec<undefi
       }
     }
   }
+}
+
+/**
+ * [decision] How long after the 0x12's reply the 0x16's may still come from an idle robot: the 0x16 was sent first,
+ * both replies travel the same link in order, and an idle main loop answers within a pass (about 3.5 ms,
+ * docs/protocol.md §3.6). Later than this (plus a slow link's extra time), the main loop is busy.
+ */
+export const MAIN_LOOP_GRACE_MS = 50;
+
+/**
+ * The busy check asked while a Run is under way (docs/protocol.md §3.1 [decision, turn 4], §3.6): 0x16 (answered by
+ * the main loop) then 0x12 (answered from the receive interrupt). `busy` when 0x12 is answered and 0x16 is not,
+ * `MAIN_LOOP_GRACE_MS` after it, or before the Run's reply (`runAnswered`: the main loop
+ * answered the 0x16 only after it had sent the motion's end); `idle` when the main loop answered 0x16 first;
+ * `no-answer` when neither told anything. `onBusy` hears "busy" as soon as it is known; the promise settles once
+ * the 0x16 has (its late reply is matched by count, `RbcConnection`). Must run inside `exclusive`, beside the
+ * Run's own wait.
+ */
+export async function checkBusyDuringRun(
+  core: ClientCore,
+  runAnswered: () => boolean,
+  onBusy: () => void,
+  runWaitMs: number,
+): Promise<BusySeen> {
+  const { c } = core;
+  let seen: BusySeen | undefined;
+  const decide = (what: BusySeen) => {
+    if (seen !== undefined) return;
+    seen = what;
+    if (what === "busy") onBusy();
+  };
+  let versionAnswered = false;
+  let distanceSettled = false;
+  let afterRun = false;
+  const distance = c
+    .request(COMMANDS.readDistance, undefined, {
+      retries: 0,
+      // A busy main loop answers when the motion ends: waited for as long as the Run is, so that it is not owed.
+      timeoutMs: runWaitMs,
+      measure: false,
+      accept: () => {
+        afterRun = runAnswered();
+        return true;
+      },
+    })
+    .then(
+      () => decide(!afterRun ? "idle" : versionAnswered ? "busy" : "no-answer"),
+      (e: unknown) => decide(versionAnswered && e instanceof RbcTimeoutError ? "busy" : "no-answer"),
+    )
+    .finally(() => {
+      distanceSettled = true;
+    });
+  const version = c.request(COMMANDS.readFirmwareVersion, undefined, { retries: 0 }).then(
+    async () => {
+      versionAnswered = true;
+      // A slow link (Bluetooth) may deliver two replies sent together further apart: its extra time is added.
+      await c.sleep(MAIN_LOOP_GRACE_MS + c.roundTrip.extraMs);
+      if (!distanceSettled) decide("busy");
+    },
+    () => {},
+  );
+  await Promise.all([distance, version]);
+  return seen ?? "no-answer";
 }

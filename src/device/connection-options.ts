@@ -65,6 +65,11 @@ export interface RequestOptions {
   /** Extra tries after a timeout or a garbled reply (default: the client's retries for idempotent rows, else 0). */
   retries?: number;
   signal?: AbortSignal;
+  /**
+   * false: the reply's time says nothing about the link (a main-loop read asked while a motion plays is answered
+   * when the motion ends), so it is not taken as a round-trip sample. Default true.
+   */
+  measure?: boolean;
   /** Replies of the right type that this returns false for are ignored (e.g. a stopped motion's reply). */
   accept?: (p: Packet) => boolean;
 }

@@ -55,11 +55,13 @@ export {
   type RoundTripLimits,
 } from "./round-trip.ts";
 export {
+  type BusySeen,
   builtInDurationMs,
   HAZARDOUS_MOTIONS,
   isHazardousMotion,
   judgeRun,
   type NoReplyCause,
+  RUN_AT_ONCE_MS,
   RUN_DURATION_TOLERANCE,
   type RunBefore,
   type RunNoReply,

@@ -1,7 +1,7 @@
 import { BASIC_POSTURE_MOTION, downloadSlotOf } from "../protocol/catalog.ts";
 import { COMMANDS } from "../protocol/commands.ts";
 import { encodePacket } from "../protocol/packet.ts";
-import { probeBusy } from "./busy-probe.ts";
+import { checkBusyDuringRun, probeBusy } from "./busy-probe.ts";
 import type { ClientCore } from "./client-core.ts";
 import {
   RbcCancelledError,
@@ -13,12 +13,24 @@ import {
   RbcTimeoutError,
 } from "./errors.ts";
 import { awaitPostureAfterEnd, endPlayingMotion, postureDurationMs } from "./motion-end.ts";
-import { builtInDurationMs, judgeRun, type RunNoReply, type RunReport } from "./run-outcome.ts";
+import {
+  type BusySeen,
+  builtInDurationMs,
+  judgeRun,
+  RUN_AT_ONCE_MS,
+  type RunNoReply,
+  type RunReport,
+} from "./run-outcome.ts";
 
 /** How long after Run Motion the client checks whether the robot ignored it (see `watchForEmptySlot`). */
 const IGNORED_MOTION_PROBE_MS = 1000;
 /** Error 3 after Run Motion of a download slot: nothing was downloaded there (docs/protocol.md §3.1). */
 const EMPTY_SLOT_ERROR = 3;
+/**
+ * When the busy check of a Run is asked (docs/protocol.md §3.1 [decision, turn 4]): once a reply would no longer
+ * have come "at once" (`RUN_AT_ONCE_MS`).
+ */
+const BUSY_CHECK_AFTER_MS = RUN_AT_ONCE_MS;
 /** Error 11: a servo did not answer (docs/protocol.md §3.2). */
 const SERVO_SILENT_ERROR = 11;
 
@@ -35,11 +47,12 @@ export interface RunMotionOptions {
 }
 
 /**
- * `RbcClient.runMotionReport`: runs motion 0-63 and resolves with what its reply proves (docs/protocol.md §3.1
- * [decision]; `run-outcome.ts`): "played" only when nothing was playing before it (the busy probe of §3.6 was
- * clean and nothing this client started was playing) and the reply came no sooner than the duration allows.
- * Ended by Stop or Limp, it rejects with `RbcCancelledError`. With no reply in its time it reads the error
- * code, probes the main loop and rejects with `RbcRunNoReplyError` saying what they showed.
+ * `RbcClient.runMotionReport`: runs motion 0-63 and resolves with what was seen (docs/protocol.md §3.1 [decision,
+ * turn 4]; `run-outcome.ts`): "played" only when nothing was playing before it (the busy probe of §3.6 was clean
+ * and nothing this client started was playing), the busy check asked while it was under way saw the robot busy
+ * (the activity's motion is then `confirmed`), and the reply came. Ended by Stop or Limp, it rejects with
+ * `RbcCancelledError`. With no reply in its time it reads the error code, probes the main loop and rejects with
+ * `RbcRunNoReplyError` saying what they showed.
  *
  * The RBC does not say that it ignored a motion (docs/protocol.md §3.6): an empty download slot sets error 3,
  * which a read of the error code a second after the start notices (when the code was not 3 already).
@@ -87,17 +100,42 @@ export async function runMotionReport(
         ? watchForEmptySlot(core)
         : undefined;
     const sentAt = c.clock.now();
+    let answered = false;
+    // Is the robot busy with it? Asked once a reply would no longer have come at once, beside the Run's wait;
+    // not when something else was playing before it (the busy main loop would prove nothing about this Run).
+    let check: Promise<BusySeen> | undefined;
+    const checkTimer =
+      started.after === "idle"
+        ? c.clock.setTimeout(() => {
+            check = checkBusyDuringRun(
+              core,
+              () => answered,
+              () => {
+                if (activity.isCurrent(started)) activity.motionConfirmed();
+              },
+              c.timeoutFor(COMMANDS.runMotion, motion, waitMs),
+            );
+          }, BUSY_CHECK_AFTER_MS)
+        : undefined;
+    const stopCheck = () => {
+      if (checkTimer !== undefined) c.clock.clearTimeout(checkTimer);
+    };
     try {
       const n = await c.request(COMMANDS.runMotion, motion, {
         expectedMs: waitMs,
         signal: options.signal,
         // Once 7 was sent to end it, the robot's `07` is this Run's answer (the motion's own never comes).
-        accept: (p) =>
-          p.contents[0] === motion ||
-          (activity.motion?.stop7 !== undefined && p.contents[0] === BASIC_POSTURE_MOTION),
+        accept: (p) => {
+          answered =
+            p.contents[0] === motion ||
+            (activity.motion?.stop7 !== undefined && p.contents[0] === BASIC_POSTURE_MOTION);
+          return answered;
+        },
       });
       const elapsedMs = Math.round(c.clock.now() - sentAt);
-      const report = judgeRun({ motion, echoed: n, knownMs, elapsedMs, before: started.after });
+      stopCheck();
+      const busySeen: BusySeen = check ? await check : "not-asked";
+      const report = judgeRun({ motion, echoed: n, knownMs, elapsedMs, before: started.after, busySeen });
       if (motion === BASIC_POSTURE_MOTION && report.verdict === "played") {
         c.setState({ basicPostureConfirmed: true });
       }
@@ -106,6 +144,8 @@ export async function runMotionReport(
       if (replied.postureFollows) awaitPostureAfterEnd(core);
       return { report, by: replied.ended.stop7?.by };
     } catch (e) {
+      stopCheck();
+      await check;
       if (activity.isCurrent(started)) activity.motionFailed();
       if (watch?.emptySlot && slot !== undefined) {
         throw new RbcEmptySlotError(motion);

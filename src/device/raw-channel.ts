@@ -257,7 +257,10 @@ export class RawChannel {
       capMs: number;
       /** How many bytes make a whole answer: with fewer, the bus is left unsettled. */
       expect: number;
-      /** Called just before `bytes` are written (after any fence): the listener's clock starts there. */
+      /**
+       * Called just before `bytes` are handed to the link (after any fence; never when the command ends unsent):
+       * the listener's clock starts there.
+       */
       onWrite: () => void;
       close: AbortSignal;
       onByte: (byte: number) => void;

@@ -254,11 +254,11 @@ export class RbcClient {
   }
 
   /**
-   * Runs a motion like `runMotion` and resolves with what its reply proves, as data (`RunReport`,
-   * docs/protocol.md §3.1 [decision]): `played` only when nothing was playing before it and the reply came no
-   * sooner than its duration allows (built-in: minus 30 %; a download: `expectedMs`, or the duration recorded
-   * when this client uploaded it); otherwise `too-soon`, `after-busy`, `stopped-busy` (7 during a motion
-   * started elsewhere, as Stop does) or `unknown-duration`. No reply in time: `RbcRunNoReplyError`.
+   * Runs a motion like `runMotion` and resolves with what was seen, as data (`RunReport`, docs/protocol.md §3.1
+   * [decision, turn 4]): `played` only when nothing was playing before it and the robot was seen busy after it
+   * before its reply; `ignored` when the reply came at once and the robot was never busy; `after-busy`,
+   * `stopped-busy` (7 during a motion started elsewhere, as Stop does) or `not-known`. The duration is a fact in
+   * the report, never a proof. No reply in time: `RbcRunNoReplyError`.
    */
   runMotionReport(motion: number, options: RunMotionOptions = {}): Promise<RunReport> {
     return runMotionReport(this.#core, motion, options);

@@ -395,13 +395,14 @@ export class RbcConnection {
       signal,
       accept,
       send = true,
-    }: { signal?: AbortSignal; accept?: (p: Packet) => boolean; send?: boolean },
+      measure = true,
+    }: { signal?: AbortSignal; accept?: (p: Packet) => boolean; send?: boolean; measure?: boolean },
   ) {
     // Only a quick reply measures the link: the others wait for the robot (a motion, a sound) as well.
     const quick = COMMAND_BY_TYPE.get(type)?.timeout === "quick";
     if (signal?.aborted) return Promise.reject(new RbcCancelledError());
     const sentAt = send ? this.clock.now() : undefined;
-    const roundTripFrom = quick ? sentAt : undefined;
+    const roundTripFrom = quick && measure ? sentAt : undefined;
     const wait = this.replies.wait(
       { type, accept, roundTripFrom }, // registered before the write
       {

@@ -77,8 +77,12 @@ export type RbcSituation =
   | { kind: "motion-stopped"; motion: number }
   /** No echo of the zero write, and no answer to a read either: the stored zeros are unknown. */
   | { kind: "zeros-write-unknown" }
-  /** No echo of the zero write, and the read back shows the new values were not stored. */
-  | { kind: "zeros-write-refused" }
+  /**
+   * The zero write had no echo (`answer: "none"`) or a reply the protocol does not define (`"undefined-reply"`),
+   * and the read back shows the new values were not stored. Why is not known (issue 32 item 4: no cause is
+   * guessed).
+   */
+  | { kind: "zeros-write-refused"; answer: "none" | "undefined-reply" }
   /** The zero write's echo differs from what was sent. */
   | { kind: "zeros-echo-differs"; echo: readonly number[] }
   /** Tethered play: a platform that is not a whole number 0-255. */

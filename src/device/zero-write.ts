@@ -39,14 +39,16 @@ export async function writeZeros(c: RbcConnection, zeros: readonly number[]): Pr
     try {
       echo = await c.request(COMMANDS.writeZeros, written);
     } catch (e) {
-      if (!(e instanceof RbcTimeoutError)) throw e;
-      // No echo (lost, garbled or late): the table read back tells whether the write happened.
+      if (!(e instanceof RbcTimeoutError) && !(e instanceof RbcBadReplyError)) throw e;
+      // No echo (lost, garbled or late), or a reply the protocol does not define: the table read back tells
+      // whether the write happened. What was seen is said, never a guessed cause (a firmware may lack 0x0E).
       const stored = await c.request(COMMANDS.readZeros, undefined).catch(() => undefined);
       if (stored?.every((v, i) => v === written[i])) return { written, readBack: stored };
       if (!stored) {
         throw new RbcError("timeout", undefined, { situation: { kind: "zeros-write-unknown" } });
       }
-      throw new RbcRejectedError(undefined, undefined, { kind: "zeros-write-refused" });
+      const answer = e instanceof RbcTimeoutError ? "none" : "undefined-reply";
+      throw new RbcRejectedError(undefined, undefined, { kind: "zeros-write-refused", answer });
     }
     if (echo.some((v, i) => v !== written[i])) {
       throw new RbcBadReplyError(undefined, undefined, { kind: "zeros-echo-differs", echo });

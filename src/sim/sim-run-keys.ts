@@ -1,4 +1,5 @@
 import { BUILT_IN_MOTIONS, NO_ERROR } from "../protocol/catalog.ts";
+import { HUNO_BASIC_POSTURE, HUNO_SERVO_IDS } from "../protocol/servo-limits.ts";
 import { builtInPlayback } from "./sim-builtin-motions.ts";
 import type { SimPlayer } from "./sim-player.ts";
 import type { DropReason } from "./sim-receiver.ts";
@@ -17,6 +18,11 @@ const WALK_FORWARD = 4;
 export const ERROR_SERVO_SILENT = 11;
 /** [decision] With the servos silent, a Run holds error 11 this long, then replies (§3.1: "about 5 s"). */
 export const SERVOS_SILENT_RUN_MS = 4500;
+/**
+ * 7 while the servos already stand in basic posture, with `quickRepeatPosture`: the official firmware (emulated)
+ * played a one-frame pose and replied after 915 ms of 7's 1.8 s (docs/protocol.md §3.1 [decision, turn 4]).
+ */
+export const REPEAT_POSTURE_MS = 915;
 /** The "user" firmware's key 9: an endless obstacle-avoidance walk, no reply, 7 does not stop it (§3.1). */
 export const USER_ENDLESS_WALK = 20;
 /** The "user" firmware's key 0: a demo motion kept in flash (§3.1). */
@@ -43,6 +49,8 @@ export interface RunKeysOptions {
   userFirmware: boolean;
   /** The servos do not answer: a Run holds error 11 for SERVOS_SILENT_RUN_MS, then replies and clears it. */
   servosSilent: boolean;
+  /** 7 while already in basic posture: a one-frame pose, replied after REPEAT_POSTURE_MS. */
+  quickRepeatPosture: boolean;
 }
 
 /** Reply contents to send at once, why the request is dropped, or undefined (no reply now). */
@@ -67,6 +75,9 @@ export class SimRunKeys {
       if (user !== "not-a-user-key") return user;
     }
     if (this.options.servosSilent && this.playable(n)) return this.silentRun(n);
+    if (n === BASIC_POSTURE && this.options.quickRepeatPosture && this.inBasicPosture()) {
+      return this.repeatPosture();
+    }
     const why = player.startMotion(n);
     if (why) return why;
     this.owed = n;
@@ -129,6 +140,22 @@ export class SimRunKeys {
       return undefined;
     }
     return "not-a-user-key";
+  }
+
+  private inBasicPosture(): boolean {
+    const positions = this.host.servoPositions();
+    return HUNO_SERVO_IDS.every((id) => positions[id] === HUNO_BASIC_POSTURE[id]);
+  }
+
+  /** 7 again in basic posture: nothing moves; the main loop is busy for the one-frame pose, then replies. */
+  private repeatPosture(): RunOutcome {
+    this.host.setError(NO_ERROR);
+    this.owed = BASIC_POSTURE;
+    this.host.player.playMotion(BASIC_POSTURE, REPEAT_POSTURE_MS, () => {
+      this.host.postureRan();
+      this.host.mainLoopFree(this.takeOwed());
+    });
+    return undefined;
   }
 
   /** [decision] Only the built-in motions are modelled with silent servos; download slots play as usual. */

@@ -52,6 +52,14 @@ export interface SimulatedRbcOptions {
   answersMemoryRead?: boolean;
   /** The servos do not answer: a Run holds error 11 for about 4.5 s, then replies and clears it to FF. */
   servosSilent?: boolean;
+  /**
+   * Motion 7 while the servos already stand in basic posture plays a one-frame pose and replies after
+   * `REPEAT_POSTURE_MS` (915 ms), as the official firmware did in the emulator (docs/protocol.md §3.1 [decision,
+   * turn 4]): the reply comes far sooner than 7's 1.8 s, and the motion did play.
+   */
+  quickRepeatPosture?: boolean;
+  /** false: 0x0E (write zeros) goes unanswered and writes nothing, as on a firmware without it. */
+  answersZeroWrite?: boolean;
   /** The Run Sound (0x15) reply comes at once, before the sound plays (it still plays, receiving nothing). */
   soundReplyAtOnce?: boolean;
   /**
@@ -140,6 +148,8 @@ export function resolveOptions(options: SimulatedRbcOptions) {
     answersMemoryRead: options.answersMemoryRead ?? true,
     servosSilent: options.servosSilent ?? false,
     soundReplyAtOnce: options.soundReplyAtOnce ?? false,
+    quickRepeatPosture: options.quickRepeatPosture ?? false,
+    answersZeroWrite: options.answersZeroWrite ?? true,
     busyMotion: checkedBusyMotion(options.busyMotion),
     servoFaults: checkServoFaults(options.servoFaults),
     servoBus: checkedServoBus(options),

@@ -70,6 +70,7 @@ export class SimulatedRbc {
     | "answersMemoryRead"
     | "servosSilent"
     | "soundReplyAtOnce"
+    | "answersZeroWrite"
     | "busyMotion"
   >;
   private readonly keys: SimRunKeys;
@@ -126,7 +127,11 @@ export class SimulatedRbc {
         postureRan: () => (this.postureDone = true),
         mainLoopFree: (key) => this.mainLoopFree(key),
       },
-      { userFirmware: o.userFirmware, servosSilent: o.servosSilent },
+      {
+        userFirmware: o.userFirmware,
+        servosSilent: o.servosSilent,
+        quickRepeatPosture: o.quickRepeatPosture,
+      },
     );
     this.receiver = new SimReceiver(this.handler);
     this.downloader = new SimDownloader(
@@ -428,6 +433,7 @@ export class SimulatedRbc {
         if (!this.variant.answersSerialNumber) return "unknown-type";
         return one(arg, () => new TextEncoder().encode(this.serialNumber));
       case C.writeZeros.type:
+        if (!this.variant.answersZeroWrite) return "unknown-type";
         return this.writeZeros(contents);
       case C.readAvailableMemory.type: {
         const area =

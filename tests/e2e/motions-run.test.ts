@@ -155,6 +155,61 @@ describe("motions view: running motions and sounds", () => {
     await context.close();
   });
 
+  it("says a Run was sent and is being checked (no 'Running', no bar) until the robot is seen busy, and an ignored Run as soon as its reply comes", async () => {
+    // Issue 33 item 5: the base showed "Running motion 12 … 3.2 s of 3.2 s" for a Run the robot had ignored.
+    // The official "user" firmware: 12 holds nothing and its reply comes at once (docs/protocol.md §3.1).
+    const { page, context } = await app.newPage({ options: { ...FAST, variant: { userFirmware: true } } });
+    await openTab(page, "Run");
+    const running = page.getByTestId("running-motion");
+    // Held at the first frame the run shows: the busy check (asked 250 ms into the Run) has not answered yet.
+    const checking = await watchText(page, RUNNING, /sent: checking that the robot plays it/, { hold: true });
+    await page.locator('[data-motion="7"]').click();
+    await page.locator("#confirm-move").click();
+    await checking.moment();
+    await expectText(running, "Motion 7 — Basic posture sent: checking that the robot plays it", {
+      contains: true,
+    });
+    expect(await running.locator("progress").count()).toBe(0);
+    expect(squash(await running.textContent())).not.toContain("Running");
+    // Seen busy (0x12 answered at once, 0x16 not): now "Running", with its time and bar.
+    const busy = await watchText(page, RUNNING, /Running motion 7/, { hold: true });
+    await releaseRobot(page);
+    await busy.moment();
+    expect(await running.locator("progress").count()).toBe(1);
+    await releaseRobot(page);
+    await page.getByText("Motion 7 (Basic posture) finished. The robot now accepts every motion.").waitFor({
+      timeout: 6000,
+    });
+
+    // Motion 12 on this firmware: ignored, said when its reply comes, and never shown as running.
+    await page.evaluate(() => {
+      const w = window as unknown as { __sawRunning12?: boolean };
+      w.__sawRunning12 = false;
+      new MutationObserver(() => {
+        const el = document.querySelector('[data-testid="running-motion"]');
+        if (el && (/Running motion 12/.test(el.textContent ?? "") || el.querySelector("progress"))) {
+          w.__sawRunning12 = true;
+        }
+      }).observe(document.body, { subtree: true, childList: true, characterData: true });
+    });
+    await page.getByText(/Other download slots/).click();
+    await holdRobot(page);
+    const started = await robotNow(page);
+    const ignored = await watchText(
+      page,
+      '[data-testid="run-place-slots"]',
+      /The robot ignored motion 12: its reply came at once \(after 0\.0 s\) and it was never busy\./,
+    );
+    await page.locator('[data-slot-motion="12"]').click();
+    await releaseRobot(page);
+    // Said as soon as the reply came (within a few tens of ms of the robot's time), not after a wait.
+    expect((await ignored.moment()) - started).toBeLessThan(250);
+    expect(
+      await page.evaluate(() => (window as unknown as { __sawRunning12?: boolean }).__sawRunning12),
+    ).toBe(false);
+    await context.close();
+  });
+
   it("plays a sound, shows its own length while it plays, and keeps other robot actions disabled", async () => {
     const { page, context } = await app.newPage({ start: CABLE, options: FAST });
     await openTab(page, "Sounds");

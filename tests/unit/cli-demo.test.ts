@@ -412,11 +412,12 @@ describe.concurrent("rbc --demo", () => {
         motion: 7,
         name: "7 (Basic posture)",
         elapsedMs: expect.any(Number),
-        // What the reply proves (docs/protocol.md §3.1): nothing played before it, and it came in its time.
+        // What was seen (docs/protocol.md §3.1): nothing played before it, it was busy after it, then the reply.
         verdict: "played",
         expectedMs: 1800,
         replyAfterMs: expect.any(Number),
         before: "idle",
+        busySeen: "busy",
       },
     ]);
     // Robot time: the basic posture takes about 1.8 s.

@@ -31,24 +31,14 @@ describe.concurrent("rbc and a robot that may be busy", () => {
     expect(r.stdout).not.toContain("Done:");
   });
 
-  it("item 1: user firmware, rbc run 7 12: 12 replied at once, what played is not known", {
-    timeout: T,
-  }, async () => {
-    const r = await rbc(["run", "7", "12", "--demo"], "--user-firmware");
-    expect(r.code, r.stderr).toBe(0);
-    expect(r.stdout).toContain("Done: 7 (Basic posture) in 1.8 s.");
-    expect(r.stdout).toContain(
-      "Replied: 12 (downloaded, key 1). The robot replied after 0.0 s. How long motion 12 takes is not known, so what played is not known.",
-    );
-    expect(r.stdout).not.toContain("Done: 12");
-  });
-
+  // Issue 32 item 1 replaced "rbc run 7 12 on the user firmware: not known, exit 0" (the reply at once is now
+  // "ignored", exit 1): tests/unit/run-proof.test.ts covers it.
   it("item 1: the JSON result carries the verdict and its facts", { timeout: T }, async () => {
     const r = await rbc(["run", "7", "--demo", "--json"]);
     expect(r.code, r.stderr).toBe(0);
     expect(JSON.parse(r.stdout)).toMatchObject({
       ok: true,
-      completed: [{ motion: 7, verdict: "played", expectedMs: 1800, before: "idle" }],
+      completed: [{ motion: 7, verdict: "played", expectedMs: 1800, before: "idle", busySeen: "busy" }],
     });
   });
 

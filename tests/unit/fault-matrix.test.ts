@@ -230,8 +230,9 @@ const OPS: Op[] = [
   {
     name: "runMotion(7)",
     run: ({ client }) => client.runMotion(7),
-    // Reply 1 answers the busy probe's distance read (docs/protocol.md §3.6); reply 2 is the Run's.
-    reply: 2,
+    // Reply 1 answers the busy probe's distance read (docs/protocol.md §3.6); reply 2 the busy check's firmware
+    // version read 250 ms into the Run (§3.1); reply 3 is the Run's.
+    reply: 3,
     byte: 14,
     cutAfter: 5,
     lateMs: 1800 + 2000 + 50,

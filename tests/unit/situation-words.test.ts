@@ -52,7 +52,7 @@ const SAMPLES: Readonly<Record<Exclude<RbcSituation["kind"], "code">, RbcSituati
   "limp-no-servo-control": { kind: "limp-no-servo-control" },
   "motion-stopped": { kind: "motion-stopped", motion: 12 },
   "zeros-write-unknown": { kind: "zeros-write-unknown" },
-  "zeros-write-refused": { kind: "zeros-write-refused" },
+  "zeros-write-refused": { kind: "zeros-write-refused", answer: "none" },
   "zeros-echo-differs": { kind: "zeros-echo-differs", echo: [1, 2, 3] },
   "play-platform": { kind: "play-platform", platform: 300 },
   "play-refused": { kind: "play-refused" },

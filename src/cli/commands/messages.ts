@@ -256,7 +256,7 @@ export const commandMessages = defineMessages({
     ko: "{hazard} 아무것도 보내지 않았어요. 그래도 실행하려면: rbc run {motion} --yes.",
   },
   "cmd.run.hazardNote": { en: "Warning: {hazard}", ko: "경고: {hazard}" },
-  "cmd.run.unknownDuration": { en: "Replied: {motion}. {what}", ko: "응답함: {motion}. {what}" },
+  "cmd.run.notKnown": { en: "Replied: {motion}. {what}", ko: "응답함: {motion}. {what}" },
   "cmd.run.stoppedBusy": { en: "Stopped: {what}", ko: "멈춤: {what}" },
   "cmd.run.stopHint": {
     en: "To end it: rbc stop.",

@@ -185,10 +185,12 @@ export const runCommand: CommandDef = {
         expectedMs: report.expectedMs ?? null,
         replyAfterMs: report.elapsedMs,
         before: report.before,
+        busySeen: report.busySeen,
       };
       const what = (l: Locale) => runReportText(report, l) ?? "";
-      if (report.verdict === "too-soon" || report.verdict === "after-busy") {
-        // The reply came, but it does not prove that the motion played (docs/protocol.md §3.1).
+      // Exit 1 only for a Run known not to have played (docs/protocol.md §3.1 [decision, turn 4]); "not known"
+      // is said as such and exits 0: the robot may well have played it.
+      if (report.verdict === "ignored" || report.verdict === "after-busy") {
         throw new CliError("not-played", saidBy(what), EXIT.failed, {
           completed: results,
           motion,
@@ -197,8 +199,8 @@ export const runCommand: CommandDef = {
       }
       results.push({ motion, name, elapsedMs, ...facts });
       if (report.verdict === "stopped-busy") env.out.line(t("cmd.run.stoppedBusy", { what: what(locale) }));
-      else if (report.verdict === "unknown-duration") {
-        env.out.line(t("cmd.run.unknownDuration", { motion: shown, what: what(locale) }));
+      else if (report.verdict === "not-known") {
+        env.out.line(t("cmd.run.notKnown", { motion: shown, what: what(locale) }));
       } else {
         env.out.line(t("cmd.run.done", { motion: shown, duration: formatSeconds(elapsedMs / 1000, locale) }));
       }

@@ -155,6 +155,8 @@ export const simCommand: CommandDef = {
               answersMemoryRead: variant.answersMemoryRead !== false,
               servosSilent: variant.servosSilent === true,
               soundReplyAtOnce: variant.soundReplyAtOnce === true,
+              quickRepeatPosture: variant.quickRepeatPosture === true,
+              answersZeroWrite: variant.answersZeroWrite !== false,
               servoFaults: variant.servoFaults ?? null,
             },
           });

@@ -159,6 +159,8 @@ export const COMMAND_HELP = {
       ["--no-memory-read", t("cliHelp.sim.noMemoryRead")],
       ["--servos-silent", t("cliHelp.sim.servosSilent")],
       ["--sound-reply-at-once", t("cliHelp.sim.soundReplyAtOnce")],
+      ["--quick-repeat-posture", t("cliHelp.sim.quickRepeatPosture")],
+      ["--no-zero-write", t("cliHelp.sim.noZeroWrite")],
       ["--servo-missing N", t("cliHelp.sim.servoMissing")],
       ["--servo-duplicate N", t("cliHelp.sim.servoDuplicate")],
       ["--servo-replacement N", t("cliHelp.sim.servoReplacement")],

@@ -378,6 +378,14 @@ export const helpMessages = defineMessages({
     en: "Answer Run Sound (0x15) at once, before the sound plays.",
     ko: "소리 재생(0x15)에 소리가 나기 전에 바로 응답해요.",
   },
+  "cliHelp.sim.quickRepeatPosture": {
+    en: "Motion 7 while already in basic posture plays a one-frame pose and replies after 0.9 s, as the official firmware does.",
+    ko: "이미 기본 자세일 때 모션 7은 공식 펌웨어처럼 한 프레임 자세만 재생하고 0.9초 뒤에 응답해요.",
+  },
+  "cliHelp.sim.noZeroWrite": {
+    en: "Do not answer 0x0E (Write zeros), and write nothing, like a firmware without it.",
+    ko: "0x0E(영점 쓰기)가 없는 펌웨어처럼 응답하지 않고 아무것도 쓰지 않아요.",
+  },
   "cliHelp.sim.servoMissing": {
     en: "No servo at id N (0-15) on the servo bus: nothing answers there. May be given more than once.",
     ko: "서보 버스의 ID N(0-15)에 서보가 없어요: 거기서는 아무도 응답하지 않아요. 여러 번 쓸 수 있어요.",

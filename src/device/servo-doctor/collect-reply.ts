@@ -43,6 +43,7 @@ export async function writeAndListen(
   timing: ListenTiming,
   note: string,
   signal?: AbortSignal,
+  onWrite?: () => void,
 ): Promise<Heard> {
   if (signal?.aborted) throw new RbcCancelledError();
   // The write may wait for a fence first: the times count from the write itself.
@@ -76,6 +77,7 @@ export async function writeAndListen(
       onWrite: () => {
         sentAt = clock.now();
         schedule();
+        onWrite?.();
       },
       close: closer.signal,
       signal,

@@ -139,8 +139,22 @@ export class ServoBus {
   }
 
   /** The id set `FF (E0|from) 0C to to cs`: only the guided fix (servo-doctor/set-id.ts) calls it. */
-  setId(from: number, to: number, signal?: AbortSignal, epoch?: number): Promise<Heard> {
-    return this.#send(() => wckSetId(from, to), `servo ${from} becomes id ${to}`, signal, epoch);
+  /** `onWrite`: told when the command's bytes are handed to the link (never when it ends unsent). */
+  setId(
+    from: number,
+    to: number,
+    signal?: AbortSignal,
+    epoch?: number,
+    onWrite?: () => void,
+  ): Promise<Heard> {
+    return this.#send(
+      () => wckSetId(from, to),
+      `servo ${from} becomes id ${to}`,
+      signal,
+      epoch,
+      "quick",
+      onWrite,
+    );
   }
 
   #send(
@@ -149,6 +163,7 @@ export class ServoBus {
     signal: AbortSignal | undefined,
     epoch: number | undefined,
     pace: ListenPace = "quick",
+    onWrite?: () => void,
   ): Promise<Heard> {
     let packet: Uint8Array;
     try {
@@ -171,6 +186,7 @@ export class ServoBus {
           this.timing(packet.length, pace),
           note,
           signal,
+          onWrite,
         );
       }, epoch)
       .catch((e: unknown) => {
@@ -200,8 +216,8 @@ export class ServoBusSession {
     return this.bus.move(id, position, torque, signal, this.epoch);
   }
 
-  setId(from: number, to: number, signal?: AbortSignal): Promise<Heard> {
-    return this.bus.setId(from, to, signal, this.epoch);
+  setId(from: number, to: number, signal?: AbortSignal, onWrite?: () => void): Promise<Heard> {
+    return this.bus.setId(from, to, signal, this.epoch, onWrite);
   }
 }
 

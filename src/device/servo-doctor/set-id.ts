@@ -35,7 +35,10 @@ export type SetIdResult =
       to: number;
       after: { from: ServoReading; to: ServoReading };
     }
-  /** Stopped before the reads after the id set were done (whether the set was sent: `sent`). */
+  /**
+   * Stopped before the reads after the id set were done. `sent`: the id set's bytes were handed to the link
+   * (false: nothing but reads reached the bus).
+   */
   | { outcome: "stopped"; code: StopCode; from: number; to: number; sent: boolean };
 
 export interface SetIdOptions {
@@ -88,9 +91,11 @@ export async function setServoId(
     if (options.confirm && !(await options.confirm({ from, to, position: atFrom.position }))) {
       return { outcome: "refused", reason: "not-confirmed", from, to, before: [atFrom, atTo] };
     }
-    sent = true;
-    // The reply (to, to) is not the proof: the reads below are.
-    await bus.setId(from, to, options.signal);
+    // The reply (to, to) is not the proof: the reads below are. `sent` only once its bytes went to the link: Stop
+    // during the question (or while the bus was fenced) ends it unsent (issue 32 item 5).
+    await bus.setId(from, to, options.signal, () => {
+      sent = true;
+    });
     const after = { to: await read(to), from: await read(from) };
     if (after.to.status === "answered" && after.from.status === "silent") {
       return { outcome: "done", from, to, after };

@@ -18,9 +18,17 @@ export const runOutcomeMessages = defineMessages({
     en: "The robot did not confirm that the motion played.",
     ko: "로봇이 모션을 재생했다고 확인하지 않았어요.",
   },
-  "outcome.run.tooSoon": {
-    en: "The reply came after {elapsed}, far sooner than motion {motion}'s {expected}: it did not play, or ended at once.",
-    ko: "응답이 {elapsed} 뒤에 왔어요. 모션 {motion}의 길이 {expected}보다 훨씬 빨라요. 재생되지 않았거나 바로 끝났어요.",
+  "outcome.run.ignored": {
+    en: "The robot ignored motion {motion}: its reply came at once (after {elapsed}) and it was never busy.",
+    ko: "로봇이 모션 {motion}을(를) 무시했어요. 응답이 바로({elapsed} 뒤) 왔고 로봇은 한 번도 바쁘지 않았어요.",
+  },
+  "outcome.run.notKnownNotBusy": {
+    en: "Whether motion {motion} played is not known: the reply came after {elapsed}, and the robot was not seen busy.",
+    ko: "모션 {motion}이(가) 재생되었는지는 알 수 없어요. 응답이 {elapsed} 뒤에 왔고, 로봇이 바쁜 모습은 보이지 않았어요.",
+  },
+  "outcome.run.notKnownNoAnswer": {
+    en: "Whether motion {motion} played is not known: the reply came after {elapsed}, and the robot did not answer when asked whether it was busy.",
+    ko: "모션 {motion}이(가) 재생되었는지는 알 수 없어요. 응답이 {elapsed} 뒤에 왔고, 바쁜지 물었을 때 로봇이 응답하지 않았어요.",
   },
   "outcome.run.afterBusy": {
     en: "Motion {motion} was not played: the robot was already playing a motion started elsewhere, and the reply after {elapsed} was that motion's end (the robot answers it with the last number it received).",
@@ -29,10 +37,6 @@ export const runOutcomeMessages = defineMessages({
   "outcome.run.stoppedBusy": {
     en: "The motion that was playing ended at the end of its scene (the robot said so after {elapsed}); the robot holds that pose. Basic posture was not played.",
     ko: "재생 중이던 모션이 현재 장면이 끝날 때 멈췄어요 ({elapsed} 뒤에 로봇이 알려 줬어요). 로봇은 그 자세를 유지해요. 기본 자세는 재생되지 않았어요.",
-  },
-  "outcome.run.unknownDuration": {
-    en: "The robot replied after {elapsed}. How long motion {motion} takes is not known, so what played is not known.",
-    ko: "로봇이 {elapsed} 뒤에 응답했어요. 모션 {motion}의 길이를 몰라서 무엇이 재생되었는지 알 수 없어요.",
   },
   "outcome.run.emptySlot": {
     en: "Motion {motion} did not run: the robot holds no motion under that number (it reports error 3). Upload a motion first.",

@@ -14,25 +14,23 @@ export function emptySlotText(motion: number, locale: Locale): string {
   return t(locale)("outcome.run.emptySlot", { motion: String(motion) });
 }
 
-/** The sentence for a Run that was not confirmed as played; undefined for `played`. */
+/** The sentence for a Run not seen to play (docs/protocol.md §3.1 [decision, turn 4]); undefined for `played`. */
 export function runReportText(report: RunReport, locale: Locale): string | undefined {
   const elapsed = seconds(report.elapsedMs, locale);
   const motion = String(report.motion);
   switch (report.verdict) {
     case "played":
       return undefined;
-    case "too-soon":
-      return t(locale)("outcome.run.tooSoon", {
-        elapsed,
-        motion,
-        expected: seconds(report.expectedMs ?? 0, locale),
-      });
+    case "ignored":
+      return t(locale)("outcome.run.ignored", { elapsed, motion });
     case "after-busy":
       return t(locale)("outcome.run.afterBusy", { motion, elapsed });
     case "stopped-busy":
       return t(locale)("outcome.run.stoppedBusy", { elapsed });
-    case "unknown-duration":
-      return t(locale)("outcome.run.unknownDuration", { motion, elapsed });
+    case "not-known":
+      return report.busySeen === "no-answer"
+        ? t(locale)("outcome.run.notKnownNoAnswer", { motion, elapsed })
+        : t(locale)("outcome.run.notKnownNotBusy", { motion, elapsed });
   }
 }
 

@@ -119,8 +119,12 @@ export const situationMessages = defineMessages({
     ko: "로봇이 영점 쓰기를 확인해 주지 않았고 읽기에도 응답하지 않았어요. 저장된 영점을 알 수 없어요. 연결을 확인한 뒤, 다른 일을 하기 전에 영점을 다시 읽어 주세요.",
   },
   "outcome.zeros.writeRefused": {
-    en: "The robot did not confirm the zero write, and reading them back shows the new values were not stored (the robot refuses a table it considers out of range).",
-    ko: "로봇이 영점 쓰기를 확인해 주지 않았고, 다시 읽어 보니 새 값이 저장되지 않았어요 (로봇은 범위를 벗어났다고 보는 표를 거부해요).",
+    en: "The robot did not answer the zero write (0x0E), and reading the zeros back shows the new values were not stored.",
+    ko: "로봇이 영점 쓰기(0x0E)에 응답하지 않았고, 영점을 다시 읽어 보니 새 값이 저장되지 않았어요.",
+  },
+  "outcome.zeros.writeOddReply": {
+    en: "The robot answered the zero write (0x0E) with a reply the protocol does not define, and reading the zeros back shows the new values were not stored.",
+    ko: "로봇이 영점 쓰기(0x0E)에 프로토콜에 정의되지 않은 응답을 보냈고, 영점을 다시 읽어 보니 새 값이 저장되지 않았어요.",
   },
   "outcome.zeros.echoDiffers": {
     en: "The robot echoed different zeros ({echo}); read them back to check.",

@@ -159,7 +159,7 @@ export function situationText(s: RbcSituation, locale: Locale, causeText: () => 
     case "zeros-write-unknown":
       return say("outcome.zeros.writeUnknown");
     case "zeros-write-refused":
-      return say("outcome.zeros.writeRefused");
+      return say(s.answer === "none" ? "outcome.zeros.writeRefused" : "outcome.zeros.writeOddReply");
     case "zeros-echo-differs":
       return say("outcome.zeros.echoDiffers", { echo: s.echo.join(",") });
     case "play-platform":

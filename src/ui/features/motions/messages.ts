@@ -446,6 +446,10 @@ export const motionsMessages = defineMessages({
   },
   "motions.run.runFirst": { en: "Run first", ko: "먼저 실행" },
   "motions.run.running": { en: "Running motion {number} — {name}", ko: "모션 {number}번 실행 중 — {name}" },
+  "motions.run.checking": {
+    en: "Motion {number} — {name} sent: checking that the robot plays it",
+    ko: "모션 {number}번 — {name} 보냄: 로봇이 재생하는지 확인하는 중",
+  },
   "motions.run.stopping": {
     en: "Stopping motion {number} — {name}",
     ko: "모션 {number}번 멈추는 중 — {name}",

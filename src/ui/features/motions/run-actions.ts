@@ -3,8 +3,9 @@ import { isHazardousMotion } from "../../../device/run-outcome.ts";
 import { errorSaid } from "../../../i18n/error-said.ts";
 import type { Locale } from "../../../i18n/locale.ts";
 import { builtInMotionName } from "../../../i18n/motion-names/built-in-motion-name.ts";
+import { runReportText } from "../../../i18n/outcomes/run-words.ts";
 import { soundOutcomeMessages } from "../../../i18n/outcomes/sound-messages.ts";
-import { inEveryLanguage, type LocalText, said } from "../../../i18n/said.ts";
+import { inEveryLanguage, type LocalText, said, saidBy } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
 import {
   BASIC_POSTURE_MOTION,
@@ -162,16 +163,22 @@ export async function runMotionNow(ctx: AppContext, number: number): Promise<voi
   });
   controller.ticker.ensure();
   try {
-    await session.run(said(motionsMessages, "motions.run.task", { number }), (client) =>
-      client.runMotion(number, { expectedMs: offer.expectedMs }),
+    const report = await session.run(said(motionsMessages, "motions.run.task", { number }), (client) =>
+      client.runMotionReport(number, { expectedMs: offer.expectedMs }),
     );
     // After "Stop motion", stopMotion says how it ended.
     if (!run.stopRequested) {
+      const { locale } = store.get();
       patchMotions(store, {
-        runNotice: noticeOf("ok", store.get().locale, [
-          said(motionsMessages, "motions.run.finished", facts),
-          ...(firstPosture ? [said(motionsMessages, "motions.run.nowAcceptsAll")] : []),
-        ]),
+        // Played only when the robot was seen busy with it (docs/protocol.md §3.1 [decision, turn 4]); otherwise
+        // what was seen, in the words rbc run uses.
+        runNotice:
+          report.verdict === "played"
+            ? noticeOf("ok", locale, [
+                said(motionsMessages, "motions.run.finished", facts),
+                ...(firstPosture ? [said(motionsMessages, "motions.run.nowAcceptsAll")] : []),
+              ])
+            : noticeOf("warning", locale, [saidBy((l) => runReportText(report, l) ?? "")]),
       });
     }
   } catch (e) {

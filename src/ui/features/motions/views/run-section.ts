@@ -78,6 +78,11 @@ function motionButton(
   `;
 }
 
+/**
+ * The run under way. "Running", with its time and progress bar, only once the robot was seen busy with it
+ * (docs/protocol.md §3.1 [decision, turn 4]: the activity's motion is `confirmed`); until then the Run was sent and
+ * is being checked, with no bar. Stop is offered either way.
+ */
 export function runningPanel(ctx: ViewContext, t: MotionsTranslator, run: RunningMotion): TemplateResult {
   const { locale } = t;
   const elapsed = ctx.session.clock.now() - run.startedAt;
@@ -86,26 +91,38 @@ export function runningPanel(ctx: ViewContext, t: MotionsTranslator, run: Runnin
   const named = { number: run.number, name: run.name };
   // "Stop motion" sent 7 (the robot finishes the current scene), or the page's Stop is under way.
   const stopping = isStopping(ctx.state.connection);
+  const confirmed = playingMotion(ctx.state.connection)?.confirmed === true;
   const label = t("motions.run.progressLabel", { number: run.number });
+  const title = stopping
+    ? t("motions.run.stopping", named)
+    : confirmed
+      ? t("motions.run.running", named)
+      : t("motions.run.checking", named);
   return html`
-    <div class="progress-block running" data-testid="running-motion">
+    <div class="progress-block running" data-testid="running-motion" data-confirmed=${confirmed ? "yes" : "no"}>
       <p>
-        <strong class="long-text">${stopping ? t("motions.run.stopping", named) : t("motions.run.running", named)}</strong>
-        <span class="num muted">
-          ${
-            known
-              ? t("motions.run.elapsed", {
-                  elapsed: formatSeconds(Math.min(elapsed, expected), locale),
-                  total: formatSeconds(expected, locale),
-                })
-              : t("motions.run.lengthUnknown")
-          }
-        </span>
+        <strong class="long-text">${title}</strong>
+        ${
+          confirmed
+            ? html`<span class="num muted">
+                ${
+                  known
+                    ? t("motions.run.elapsed", {
+                        elapsed: formatSeconds(Math.min(elapsed, expected), locale),
+                        total: formatSeconds(expected, locale),
+                      })
+                    : t("motions.run.lengthUnknown")
+                }
+              </span>`
+            : nothing
+        }
       </p>
       ${
-        known
-          ? html`<progress max=${expected} value=${Math.min(elapsed, expected)} aria-label=${label}></progress>`
-          : html`<progress aria-label=${label}></progress>`
+        !confirmed
+          ? nothing
+          : known
+            ? html`<progress max=${expected} value=${Math.min(elapsed, expected)} aria-label=${label}></progress>`
+            : html`<progress aria-label=${label}></progress>`
       }
       ${
         run.number === BASIC_POSTURE_MOTION
