@@ -6,6 +6,7 @@
 import { constants } from "node:fs";
 import { access, readFile, writeFile } from "node:fs/promises";
 import { join } from "node:path";
+import { backupRefusalText } from "../i18n/outcomes/zero-words.ts";
 import { translator } from "../i18n/translate.ts";
 import {
   type BackupProblem,
@@ -123,7 +124,7 @@ export async function readBackupFile(path: string): Promise<ZerosBackup> {
   const parsed = parseZerosBackup(text);
   if (!parsed.ok) {
     const ko = translator(cliMessages, "ko")(BACKUP_PROBLEM_TEXT[parsed.problem], { path });
-    throw new CliError(`backup-${parsed.problem}`, { en: `${path}: ${parsed.message}`, ko });
+    throw new CliError(`backup-${parsed.problem}`, { en: `${path}: ${backupRefusalText(parsed, "en")}`, ko });
   }
   return parsed.backup;
 }

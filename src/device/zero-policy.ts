@@ -1,5 +1,6 @@
 import { zerosCancelledBeforeWriteText, zerosNotReadText } from "../i18n/outcomes/device.ts";
-import { zeroProblems, zerosNotWrittenText } from "../protocol/zeros.ts";
+import { zerosNotWrittenText } from "../i18n/outcomes/zero-words.ts";
+import { zeroProblems } from "../protocol/zeros.ts";
 import { createZerosBackup, type ZerosBackup, zerosBackupFileName } from "../protocol/zeros-backup.ts";
 import {
   RbcCancelledError,

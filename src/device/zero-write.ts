@@ -1,5 +1,6 @@
+import { zerosNotWrittenText } from "../i18n/outcomes/zero-words.ts";
 import { COMMANDS } from "../protocol/commands.ts";
-import { zeroProblems, zerosNotWrittenText } from "../protocol/zeros.ts";
+import { zeroProblems } from "../protocol/zeros.ts";
 import {
   RbcBadReplyError,
   RbcError,

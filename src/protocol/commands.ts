@@ -1,7 +1,7 @@
 import { readI16LE, readU32BE } from "./bytes.ts";
 import { BUILT_IN_MOTIONS, SOUND_REPLY_DELAY_MS, soundLengthMs } from "./catalog.ts";
 import { ProtocolError } from "./errors.ts";
-import { ZERO_COUNT, zeroProblemText } from "./zeros.ts";
+import { ZERO_COUNT, ZeroTableError, zeroProblems } from "./zeros.ts";
 
 /**
  * One row per RBC command of docs/protocol.md §3, and the single source of what the rest of the project knows about
@@ -123,9 +123,7 @@ export const COMMANDS = {
     requestSize: ZERO_COUNT,
     replySize: ZERO_COUNT,
     request: (zeros) => {
-      if (zeros.length !== ZERO_COUNT) {
-        throw new ProtocolError("bad-argument", zeroProblemText({ id: -1, value: zeros.length }, "en"));
-      }
+      if (zeros.length !== ZERO_COUNT) throw new ZeroTableError("bad-argument", zeroProblems(zeros));
       return Uint8Array.from(zeros);
     },
     decode(c) {

@@ -1,4 +1,4 @@
-import { FACTORY_ZEROS, ZERO_COUNT, zeroProblemText } from "../protocol/zeros.ts";
+import { FACTORY_ZEROS, ZERO_COUNT, zeroProblems } from "../protocol/zeros.ts";
 import { type Clock, realClock } from "../shared/clock.ts";
 import type { DownloadProgress } from "./sim-downloader.ts";
 import type { StoredFile } from "./sim-downloads.ts";
@@ -117,8 +117,7 @@ export function resolveOptions(options: SimulatedRbcOptions) {
   }
   const zeros = [...(options.zeros ?? FACTORY_ZEROS)];
   if (zeros.length !== ZERO_COUNT) {
-    // The protocol's sentence (the outcome catalogue's), not a copy of it.
-    throw new RangeError(zeroProblemText({ id: -1, value: zeros.length }, "en"));
+    throw new RangeError(zeroProblems(zeros)[0]?.message);
   }
   return {
     clock: options.clock ?? realClock,

@@ -4,6 +4,7 @@ import { type SafeZeroWrite, ZeroBackupError, ZeroWriteFailedError } from "../..
 import type { ZeroWriteResult } from "../../device/types.ts";
 import { jointOf } from "../../i18n/joint-names/joint-name.ts";
 import type { Locale } from "../../i18n/locale.ts";
+import { serialMismatchWarning, zerosNotWrittenText } from "../../i18n/outcomes/zero-words.ts";
 import { translator } from "../../i18n/translate.ts";
 import { formatDateTime } from "../../i18n/units.ts";
 import {
@@ -14,9 +15,7 @@ import {
   ZERO_TOLERANCE,
   zeroProblems,
   zeroRange,
-  zerosNotWrittenText,
 } from "../../protocol/zeros.ts";
-import { serialMismatchWarning } from "../../protocol/zeros-backup.ts";
 import { formatFirmware } from "../../shared/format.ts";
 import { type GlobalValues, noExtraArguments, parseCommand } from "../args.ts";
 import { type CommandDef, localeOf, type RunEnv } from "../command.ts";

@@ -27,6 +27,7 @@ import {
   uploadOutcomeText,
   zerosBackupKeptText,
 } from "./device.ts";
+import { lowerErrorText } from "./lower-error-text.ts";
 import {
   busyReadText,
   emptySlotText,
@@ -93,6 +94,8 @@ function fromFacts(e: unknown, locale: Locale, hint: string): string {
  * catalogue's sentence from its code and facts.
  */
 export function errorText(e: unknown, locale: Locale, options: ErrorTextOptions = {}): string {
+  const lower = lowerErrorText(e, locale);
+  if (lower !== undefined) return lower;
   if (locale !== "en") return fromFacts(e, locale, options.detailHint ?? seeDetailText(locale));
   if (e instanceof RbcError || e instanceof LinkError) return e.message;
   if (e instanceof Error && e.message) return e.message;

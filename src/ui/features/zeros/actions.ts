@@ -8,12 +8,12 @@ import { ZeroBackupError, ZeroWriteFailedError } from "../../../device/zero-poli
 import type { ParamArgs } from "../../../i18n/catalogue.ts";
 import type { Locale } from "../../../i18n/locale.ts";
 import { deviceOutcomeMessages } from "../../../i18n/outcomes/messages.ts";
+import { serialMismatchWarning } from "../../../i18n/outcomes/zero-words.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { ZERO_COUNT } from "../../../protocol/zeros.ts";
 import {
   createZerosBackup,
   parseZerosBackup,
-  serialMismatchWarning,
   type ZerosBackup,
   zerosBackupFileName,
 } from "../../../protocol/zeros-backup.ts";

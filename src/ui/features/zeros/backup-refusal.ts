@@ -1,5 +1,6 @@
 import type { KeysWithoutParams } from "../../../i18n/catalogue.ts";
 import type { Locale } from "../../../i18n/locale.ts";
+import { backupRefusalText } from "../../../i18n/outcomes/zero-words.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { ZERO_COUNT, zeroProblems } from "../../../protocol/zeros.ts";
 import type { BackupProblem, ParsedBackup } from "../../../protocol/zeros-backup.ts";
@@ -40,7 +41,7 @@ function refusedServos(text: string): string {
 
 /** Why the parser refused the file, in `locale`: its own sentence in English, a sentence from its code otherwise. */
 function reasonIn(text: string, parsed: Extract<ParsedBackup, { ok: false }>, locale: Locale): string {
-  if (locale === "en") return parsed.message;
+  if (locale === "en") return backupRefusalText(parsed, locale);
   const t = translator(zerosMessages, locale);
   if (parsed.problem !== "out-of-range") return t(BACKUP_PROBLEM_TEXT[parsed.problem]);
   const servos = refusedServos(text);

@@ -1,0 +1,13 @@
+import { ZeroTableError } from "../../protocol/zeros.ts";
+import type { Locale } from "../locale.ts";
+import { zerosNotWrittenText } from "./zero-words.ts";
+
+/**
+ * The errors of the layers below the device (src/protocol, src/motion) for a person, in their language, from
+ * their code and facts: `errorText` asks here first. The errors' own `message` is a technical line for logs.
+ * Undefined for an error this does not word.
+ */
+export function lowerErrorText(e: unknown, locale: Locale): string | undefined {
+  if (e instanceof ZeroTableError) return zerosNotWrittenText(e.problems, locale);
+  return undefined;
+}
