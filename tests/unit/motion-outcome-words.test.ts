@@ -7,7 +7,9 @@
  * catalogues the same way.
  */
 import { describe, expect, it } from "vitest";
+import { errorText } from "../../src/i18n/outcomes/error-text.ts";
 import { motionRefusalText, motionSubjectText } from "../../src/i18n/outcomes/motion/motion-words.ts";
+import { zeroProblemText } from "../../src/i18n/outcomes/zero-words.ts";
 import {
   addScene,
   apply,
@@ -38,7 +40,7 @@ import {
   undo,
   undoLabel,
 } from "../../src/motion/index.ts";
-import { COMMANDS, ProtocolError } from "../../src/protocol/index.ts";
+import { COMMANDS, ZeroTableError } from "../../src/protocol/index.ts";
 import { SimulatedRbc } from "../../src/sim/index.ts";
 import { motionRefusal as refusal } from "../support/motion-refusal.ts";
 
@@ -282,13 +284,26 @@ describe("the motion layer's refusals, worded by the outcome catalogue", () => {
 });
 
 describe("sentences the protocol and the simulator share", () => {
-  it("a zero table of 15 values: the same catalogue sentence from the command table and the simulated robot", () => {
+  it("a zero table of 15 values: the same facts from the command table and the simulated robot, worded by the catalogue", () => {
     const fifteen = Array(15).fill(125);
-    expect(() => COMMANDS.writeZeros.request(fifteen)).toThrow(
-      new ProtocolError("bad-argument", "A zero table has 16 values, not 15."),
+    let e: unknown;
+    try {
+      COMMANDS.writeZeros.request(fifteen);
+    } catch (caught) {
+      e = caught;
+    }
+    expect(e).toBeInstanceOf(ZeroTableError);
+    expect(e).toMatchObject({ code: "bad-argument", problems: [{ id: -1, value: 15 }] });
+    expect(zeroProblemText({ id: -1, value: 15 }, "en")).toBe("A zero table has 16 values, not 15.");
+    expect(errorText(e, "en")).toBe(
+      "Not written: A zero table has 16 values, not 15. Nothing was sent to the robot.",
     );
+    expect(errorText(e, "ko")).toBe(
+      "쓰지 않았어요: 영점 표에는 값이 16개 있어야 해요. 받은 값은 15개예요. 로봇에 아무것도 보내지 않았어요.",
+    );
+    // The simulated robot's option check is for programs: the protocol's technical line.
     expect(() => new SimulatedRbc({ zeros: fifteen })).toThrow(
-      new RangeError("A zero table has 16 values, not 15."),
+      new RangeError("zeros: 16 values expected, got 15"),
     );
   });
 
