@@ -2,6 +2,7 @@ import { RbcError } from "../device/errors.ts";
 import type { Locale } from "../i18n/locale.ts";
 import { unexpectedText } from "../i18n/outcomes/device.ts";
 import { errorText } from "../i18n/outcomes/error-text.ts";
+import { lowerErrorText } from "../i18n/outcomes/lower-error-text.ts";
 import { translator } from "../i18n/translate.ts";
 import { LinkError } from "../link/transport.ts";
 import { ProtocolError } from "../protocol/errors.ts";
@@ -89,7 +90,7 @@ export interface ErrorLineOptions {
 /** A failure's sentence in `locale`: its own, or for the device's errors a sentence from their code. */
 function sentence(e: unknown, locale: Locale, options: ErrorLineOptions): string {
   if (e instanceof CliError || e instanceof UsageError) return e.said[locale];
-  if (locale === "en") return e instanceof Error ? e.message : String(e);
+  if (locale === "en") return lowerErrorText(e, locale) ?? (e instanceof Error ? e.message : String(e));
   const t = translator(cliMessages, locale);
   return errorText(e, locale, {
     detailHint: options.detailShown ? t("cli.error.detailBelow") : t("cli.error.detailWithLog"),

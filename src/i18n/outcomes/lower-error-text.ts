@@ -1,5 +1,7 @@
+import { RbmError } from "../../protocol/rbm.ts";
 import { ZeroTableError } from "../../protocol/zeros.ts";
 import type { Locale } from "../locale.ts";
+import { rbmErrorText } from "./rbm/rbm-issue-text.ts";
 import { zerosNotWrittenText } from "./zero-words.ts";
 
 /**
@@ -8,6 +10,7 @@ import { zerosNotWrittenText } from "./zero-words.ts";
  * Undefined for an error this does not word.
  */
 export function lowerErrorText(e: unknown, locale: Locale): string | undefined {
+  if (e instanceof RbmError) return rbmErrorText(e.issues, locale);
   if (e instanceof ZeroTableError) return zerosNotWrittenText(e.problems, locale);
   return undefined;
 }

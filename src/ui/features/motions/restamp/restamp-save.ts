@@ -2,7 +2,6 @@ import type { Locale } from "../../../../i18n/locale.ts";
 import { restampChangeText, restampRefusalText } from "../../../../i18n/outcomes/restamp/restamp-words.ts";
 import { translator } from "../../../../i18n/translate.ts";
 import { RestampError, restampedFileName, restampRbm, restampRbmBytes } from "../../../../motion/restamp.ts";
-import { RbmError } from "../../../../protocol/rbm.ts";
 import { type Notice, noticeOf } from "../../../app-state.ts";
 import { errorMessage, technicalDetail } from "../../../error-text.ts";
 import { inEveryLanguage, type LocalText, type Said, said, saidText } from "../../../said.ts";
@@ -29,11 +28,7 @@ export async function saveRestampedCopy(
     change = saidText(inEveryLanguage((l) => restampChangeText(result, l)));
   } catch (e) {
     const why = inEveryLanguage((l) =>
-      e instanceof RestampError
-        ? restampRefusalText(e, l)
-        : e instanceof RbmError && l === "en"
-          ? e.message
-          : errorMessage(e, l),
+      e instanceof RestampError ? restampRefusalText(e, l) : errorMessage(e, l),
     );
     return failed(locale, why, e);
   }
