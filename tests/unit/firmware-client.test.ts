@@ -1,5 +1,6 @@
 import { describe, expect, it } from "vitest";
 import { FirmwareUpdateError, RbcClient } from "../../src/device/index.ts";
+import { errorText } from "../../src/i18n/outcomes/error-text.ts";
 import { WebSerialTransport } from "../../src/link/index.ts";
 import { IntelHexError } from "../../src/protocol/intel-hex.ts";
 import { VirtualClock } from "../../src/shared/clock.ts";
@@ -70,7 +71,7 @@ describe("RbcClient.updateFirmware", () => {
     );
     expect(error).toBeInstanceOf(IntelHexError);
     expect(error).toMatchObject({ code: "checksum", line: 4 });
-    expect((error as Error).message).toMatch(/^Line 4: /);
+    expect(errorText(error, "en")).toMatch(/^Line 4: the checksum is /);
     expect(r.port.stats.bytesFromPc).toBe(sent);
     expect(r.asked()).toBe(0);
     expect(r.client.state.basicPostureConfirmed).toBe(true);

@@ -71,7 +71,7 @@ describe("a failed firmware update", () => {
   it("is the same sentence whether the protocol's dialogue or the device says it", () => {
     const fromDialogue = bootloaderError("checksum", "incomplete-firmware", { line: 3 });
     expect(fromDialogue.tries).toBe(4);
-    expect(fromDialogue.message).toBe(
+    expect(errorText(fromDialogue, "en")).toBe(
       "The bootloader reported a checksum error on a line (line 3 of the file) 4 times in a row; the link is garbling data. " +
         "The robot's firmware may now be incomplete, and the robot may not work until an update succeeds. " +
         "The bootloader is never overwritten: switch the robot off and on and run the update again.",
@@ -82,7 +82,7 @@ describe("a failed firmware update", () => {
       line: 3,
       tries: 4,
     });
-    expect(device.message).toBe(fromDialogue.message);
+    expect(device.message).toBe(errorText(fromDialogue, "en"));
     expect(device.code).toBe("upload-failed");
   });
 
@@ -99,7 +99,7 @@ describe("a failed firmware update", () => {
 describe("the firmware update's holes (issue 20 item 8)", () => {
   it("a status sooner than its line's wire time, one with no line waiting, a line past its deadline", () => {
     const early = bootloaderError("early-status", "incomplete-firmware", { line: 7 });
-    expect(early.message).toBe(
+    expect(errorText(early, "en")).toBe(
       "A status character arrived for a line (line 7 of the file) sooner than the line could have reached the robot at 115200 baud, so it cannot be that line's answer; the update stopped rather than run ahead of the bootloader. " +
         "The robot's firmware may now be incomplete, and the robot may not work until an update succeeds. " +
         "The bootloader is never overwritten: switch the robot off and on and run the update again.",
@@ -125,7 +125,7 @@ describe("the firmware update's holes (issue 20 item 8)", () => {
       waitedMs: 10_000,
     });
     expect(deadline.code).toBe("timeout");
-    expect(deadline.message).toMatch(
+    expect(errorText(deadline, "en")).toMatch(
       /^The bootloader did not finish a line \(line 12 of the file\) within 10 s after its last byte; it only paused and resumed the sending\. /,
     );
     expect(firmwareFailureText(deadline, "ko")).toMatch(

@@ -1,6 +1,9 @@
+import { BootloaderError } from "../../protocol/bootloader.ts";
+import { IntelHexError } from "../../protocol/intel-hex.ts";
 import { RbmError } from "../../protocol/rbm.ts";
 import { ZeroTableError } from "../../protocol/zeros.ts";
 import type { Locale } from "../locale.ts";
+import { firmwareFailureText, hexProblemText } from "./firmware/firmware-words.ts";
 import { rbmErrorText } from "./rbm/rbm-issue-text.ts";
 import { zerosNotWrittenText } from "./zero-words.ts";
 
@@ -11,6 +14,11 @@ import { zerosNotWrittenText } from "./zero-words.ts";
  */
 export function lowerErrorText(e: unknown, locale: Locale): string | undefined {
   if (e instanceof RbmError) return rbmErrorText(e.issues, locale);
+  if (e instanceof IntelHexError) return hexProblemText(e, locale);
+  if (e instanceof BootloaderError) {
+    const { code: failure, holds, line, waitedMs, tries } = e;
+    return firmwareFailureText({ failure, holds, line, waitedMs, tries }, locale);
+  }
   if (e instanceof ZeroTableError) return zerosNotWrittenText(e.problems, locale);
   return undefined;
 }
