@@ -3,11 +3,12 @@
  * module of its own: motion-run.ts, stop.ts, limp.ts, sound.ts, busy-probe.ts, servo-doctor/…) with the doc
  * comment callers read; splitting it would split the API's one page of documentation, not its logic.
  */
+
+import { platformWarning } from "../i18n/outcomes/plausibility.ts";
 import type { Transport } from "../link/transport.ts";
 import type { Motion } from "../motion/index.ts";
 import { COMMANDS, type MemoryArea } from "../protocol/commands.ts";
 import { type IntelHexImage, parseIntelHex } from "../protocol/intel-hex.ts";
-import { platformWarning } from "../protocol/plausibility.ts";
 import { motionDurationMs, type RbmMotion } from "../protocol/rbm.ts";
 import type { Clock } from "../shared/clock.ts";
 import type { Emitter } from "../shared/emitter.ts";

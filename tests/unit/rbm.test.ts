@@ -1,9 +1,9 @@
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
+import { HUNO_JOINT_NAMES } from "../../src/i18n/joint-names/huno-joint-names.ts";
 import { errorText } from "../../src/i18n/outcomes/error-text.ts";
 import { rbmIssueText } from "../../src/i18n/outcomes/rbm/rbm-issue-text.ts";
 import { ProtocolError } from "../../src/protocol/errors.ts";
-import { HUNO_JOINT_NAMES } from "../../src/protocol/huno-joint-names.ts";
 import {
   motionDurationMs,
   parseRbm,

@@ -1,7 +1,8 @@
 import { describe, expect, it } from "vitest";
 import { sensorReading } from "../../src/cli/commands/sensors.ts";
 import { demoVariant, variantFromValues } from "../../src/cli/sim-variant.ts";
-import { distanceWarning, fromHex, platformWarning, toHex } from "../../src/protocol/index.ts";
+import { distanceWarning, platformWarning } from "../../src/i18n/index.ts";
+import { fromHex, toHex } from "../../src/protocol/index.ts";
 import { VirtualClock } from "../../src/shared/clock.ts";
 import { createDemoRbc, SimulatedRbc } from "../../src/sim/index.ts";
 import { makeRig } from "../support/rig.ts";
@@ -66,7 +67,7 @@ describe("a firmware that repeats a reply endlessly (the homebrew port's 0x16)",
   });
 });
 
-describe("implausible values are shown with a warning (src/protocol/plausibility.ts)", () => {
+describe("implausible values are shown with a warning (src/protocol/plausibility.ts decides, src/i18n words)", () => {
   it("a distance outside 10-50 cm, and only then", () => {
     for (const cm of [10, 11, 30, 50]) expect(distanceWarning(cm)).toBeUndefined();
     for (const cm of [0, 9, 51, 255]) {

@@ -1,8 +1,8 @@
 import { RbcTimeoutError } from "../../device/errors.ts";
+import { platformWarning } from "../../i18n/outcomes/plausibility.ts";
 import { busyNowText } from "../../i18n/outcomes/stop-words.ts";
 import { translator } from "../../i18n/translate.ts";
 import { ACTION_AREA_BYTES, MOTION_AREA_BYTES, platformName } from "../../protocol/catalog.ts";
-import { platformWarning } from "../../protocol/plausibility.ts";
 import { formatFirmware } from "../../shared/format.ts";
 import { noExtraArguments, parseCommand } from "../args.ts";
 import { type CommandDef, localeOf } from "../command.ts";

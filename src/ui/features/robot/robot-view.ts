@@ -1,8 +1,8 @@
 import { html, nothing, type TemplateResult } from "lit-html";
+import { platformWarning } from "../../../i18n/outcomes/plausibility.ts";
 import { robotErrorTitle } from "../../../i18n/outcomes/robot-error.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { ACTION_AREA_BYTES, MOTION_AREA_BYTES, NO_ERROR } from "../../../protocol/catalog.ts";
-import { platformWarning } from "../../../protocol/plausibility.ts";
 import { formatFirmware } from "../../../shared/format.ts";
 import { formatTime } from "../../format.ts";
 import { shellMessages } from "../../shell/messages.ts";
