@@ -13,6 +13,7 @@
  * - Frame times are an absolute schedule on the client's clock (no drift); a frame the link is late for is
  *   sent at once and the lateness reported (`maxLateMs`).
  */
+import { motionRefusalText } from "../i18n/outcomes/motion/motion-words.ts";
 import type { Motion } from "../motion/index.ts";
 import { clampPosition, MotionError, PLATFORM_PF2, playFrames } from "../motion/index.ts";
 import { COMMANDS } from "../protocol/commands.ts";
@@ -70,7 +71,7 @@ export function checkTetheredPlay(doc: Motion, options: TetheredPlayOptions): vo
       platform: platform ?? PLATFORM_PF2,
     });
   } catch (e) {
-    if (e instanceof MotionError) throw refused(e.message, e);
+    if (e instanceof MotionError) throw refused(motionRefusalText(e, "en"), e);
     throw e;
   }
 }
@@ -224,7 +225,7 @@ export async function runTetheredPlay(
     return done;
   } catch (e) {
     if (signal.aborted && e instanceof RbcCancelledError) return result("stopped");
-    if (e instanceof MotionError) throw refused(e.message, e);
+    if (e instanceof MotionError) throw refused(motionRefusalText(e, "en"), e);
     if (e instanceof RbcDisconnectedError) throw linkLost(control, e);
     throw e;
   } finally {

@@ -8,6 +8,7 @@ import {
 } from "../../device/index.ts";
 import type { Locale } from "../../i18n/locale.ts";
 import { nothingSentText } from "../../i18n/outcomes/device.ts";
+import { motionRefusalText } from "../../i18n/outcomes/motion/motion-words.ts";
 import { translator } from "../../i18n/translate.ts";
 import { formatSeconds } from "../../i18n/units.ts";
 import {
@@ -230,9 +231,9 @@ export const playCommand: CommandDef = {
       plan = playFrames(doc, { range, robotZeros: STANDARD_ZEROS, platform: PLATFORM_PF2 });
     } catch (e) {
       if (!(e instanceof MotionError)) throw e;
-      // The motion core's reason is English; in Korean the sentence says the file cannot be played.
+      // The motion core's reason, from the outcome catalogue; in Korean the sentence says the file cannot be played.
       const words = saidEach(commandMessages, "cmd.play.refused", (l) => [
-        { file: basename(file), reason: l === "en" ? e.message : t("cmd.play.refusedWhy") },
+        { file: basename(file), reason: l === "en" ? motionRefusalText(e, l) : t("cmd.play.refusedWhy") },
       ]);
       throw new CliError("motion-refused", words);
     }

@@ -1,10 +1,14 @@
+import { MotionError } from "../../motion/errors.ts";
+import { RestampError } from "../../motion/restamp.ts";
 import { BootloaderError } from "../../protocol/bootloader.ts";
 import { IntelHexError } from "../../protocol/intel-hex.ts";
 import { RbmError } from "../../protocol/rbm.ts";
 import { ZeroTableError } from "../../protocol/zeros.ts";
 import type { Locale } from "../locale.ts";
 import { firmwareFailureText, hexProblemText } from "./firmware/firmware-words.ts";
+import { motionRefusalText } from "./motion/motion-words.ts";
 import { rbmErrorText } from "./rbm/rbm-issue-text.ts";
+import { restampRefusalText } from "./restamp/restamp-words.ts";
 import { zerosNotWrittenText } from "./zero-words.ts";
 
 /**
@@ -13,6 +17,8 @@ import { zerosNotWrittenText } from "./zero-words.ts";
  * Undefined for an error this does not word.
  */
 export function lowerErrorText(e: unknown, locale: Locale): string | undefined {
+  if (e instanceof MotionError) return motionRefusalText(e, locale);
+  if (e instanceof RestampError) return restampRefusalText(e, locale);
   if (e instanceof RbmError) return rbmErrorText(e.issues, locale);
   if (e instanceof IntelHexError) return hexProblemText(e, locale);
   if (e instanceof BootloaderError) {

@@ -133,7 +133,7 @@ export const rbmIssueMessages = defineMessages({
   },
   "outcome.rbm.noScenes": {
     en: "The motion has no scenes; a motion needs at least one.",
-    ko: "모션에 장면이 없어요. 모션에는 장면이 한 개 이상 있어야 해요.",
+    ko: "모션에 장면이 없어요. 모션에는 장면이 1개 이상 있어야 해요.",
   },
   "outcome.rbm.servoId.range": {
     en: "Servo record {record} has id {id}; servo ids go from 0 to {max}.",
