@@ -24,9 +24,9 @@ type Layer = "protocol" | "link" | "device" | "motion" | "sim" | "shared" | "i18
 const MAY_IMPORT: Record<Layer, readonly Layer[]> = {
   shared: [],
   i18n: ["protocol", "link", "device", "motion", "shared"],
-  protocol: ["shared", "i18n"],
+  protocol: ["shared"],
   link: ["shared"],
-  motion: ["protocol", "shared", "i18n"],
+  motion: ["protocol", "shared"],
   sim: ["protocol", "motion", "shared"],
   device: ["protocol", "link", "motion", "shared", "i18n"],
   ui: ["device", "protocol", "motion", "link", "sim", "shared", "i18n"],
@@ -191,6 +191,22 @@ describe("the import rule (docs/architecture.md)", () => {
     expect(importViolations(repository)).toEqual([]);
   });
 
+  it("keeps the layers below the device free of src/i18n, type imports included: they give codes and facts", () => {
+    const lower = repository.filter((f) => /^src\/(protocol|link|motion|sim)\//.test(f.path));
+    expect(lower.length).toBeGreaterThan(50);
+    const fromI18n = lower.flatMap((f) =>
+      importsOf(f.text)
+        .filter((spec) => normalize(join(dirname(f.path), spec)).startsWith("src/i18n/"))
+        .map((spec) => `${f.path}: "${spec}"`),
+    );
+    expect(fromI18n).toEqual([]);
+    // The layer table says the same (a type import is checked against it too).
+    for (const layer of ["protocol", "link", "motion", "sim"] as const) {
+      expect(MAY_IMPORT[layer]).not.toContain("i18n");
+      expect(MAY_IMPORT_TYPES[layer] ?? []).not.toContain("i18n");
+    }
+  });
+
   it("reads every form of import, and nothing that only looks like one", () => {
     const text = [
       'import { a, type B } from "./a.ts";',
@@ -247,7 +263,7 @@ describe("the import rule (docs/architecture.md)", () => {
       fake("src/device/upload.ts", "../protocol/packet.ts", "../link/transport.ts", "../i18n/translate.ts"),
       fake("src/cli/connect.ts", "../link/node-serial-transport.ts", "../../package.json"),
       fake("src/protocol/packet.ts", "../shared/format.ts", "./bytes.ts"),
-      fake("src/motion/errors.ts", "../i18n/outcomes/motion/motion-words.ts", "../protocol/packet.ts"),
+      fake("src/motion/errors.ts", "../protocol/packet.ts"),
     ];
     expect(importViolations(files)).toEqual([]);
   });
@@ -259,6 +275,8 @@ describe("the import rule (docs/architecture.md)", () => {
       fake("src/device/upload.ts", "../ui/store.ts"),
       fake("src/sim/simulated-rbc.ts", "../link/index.ts"),
       fake("src/link/transport.ts", "../i18n/translate.ts"),
+      fake("src/motion/errors.ts", "../i18n/outcomes/motion/motion-words.ts"),
+      fake("src/protocol/rbm.ts", "../i18n/translate.ts"),
       fake("src/motion/document.ts", "../device/index.ts"),
       fake("src/ui/app.ts", "../cli/main.ts"),
       fake("src/shared/clock.ts", "../protocol/index.ts"),
@@ -268,6 +286,8 @@ describe("the import rule (docs/architecture.md)", () => {
       'src/device/upload.ts: "../ui/store.ts" (device/ may not import ui/)',
       'src/sim/simulated-rbc.ts: "../link/index.ts" (sim/ may not import link/)',
       'src/link/transport.ts: "../i18n/translate.ts" (link/ may not import i18n/)',
+      'src/motion/errors.ts: "../i18n/outcomes/motion/motion-words.ts" (motion/ may not import i18n/)',
+      'src/protocol/rbm.ts: "../i18n/translate.ts" (protocol/ may not import i18n/)',
       'src/motion/document.ts: "../device/index.ts" (motion/ may not import device/)',
       'src/ui/app.ts: "../cli/main.ts" (ui/ may not import cli/)',
       'src/shared/clock.ts: "../protocol/index.ts" (shared/ may not import protocol/)',
