@@ -1,6 +1,6 @@
 import { readI16LE, readU32BE } from "./bytes.ts";
 import { BUILT_IN_MOTIONS, SOUND_REPLY_DELAY_MS, soundLengthMs } from "./catalog.ts";
-import { ProtocolError } from "./errors.ts";
+import { outOfRange, ProtocolError } from "./errors.ts";
 import { ZERO_COUNT, ZeroTableError, zeroProblems } from "./zeros.ts";
 
 /**
@@ -57,7 +57,7 @@ function expectLength(name: string, contents: Uint8Array, length: number): void 
 
 function byteArg(name: string, value: number, min: number, max: number): Uint8Array {
   if (!Number.isInteger(value) || value < min || value > max) {
-    throw new ProtocolError("bad-argument", `${name} must be ${min}-${max}, got ${value}.`);
+    throw outOfRange("bad-argument", name, value, min, max);
   }
   return Uint8Array.of(value);
 }

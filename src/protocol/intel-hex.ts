@@ -1,4 +1,4 @@
-import { ProtocolError } from "./errors.ts";
+import { ProtocolError, type ProtocolFacts } from "./errors.ts";
 
 /** The outcome catalogue's English, where a problem has no more facts to give than the catalogue's words. */
 
@@ -58,7 +58,7 @@ export type IntelHexErrorCode =
  * ("start-segment", "start-linear"), and for a bad-record its `kind` ("end" or "extended"). Hex values are
  * written as the file writes them ("1A", "0x1E000").
  */
-export type IntelHexFacts = Readonly<Record<string, number | string>>;
+export type IntelHexFacts = ProtocolFacts;
 
 /** A HEX file the bootloader must not be given; `line` is the 1-based line of the file, when one is to blame. */
 export class IntelHexError extends ProtocolError {
@@ -67,9 +67,9 @@ export class IntelHexError extends ProtocolError {
     override readonly code: IntelHexErrorCode,
     readonly line: number | undefined,
     message: string,
-    readonly facts: IntelHexFacts = {},
+    facts: IntelHexFacts = {},
   ) {
-    super(code, message);
+    super(code, message, facts);
   }
 }
 
