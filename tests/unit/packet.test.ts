@@ -43,7 +43,12 @@ describe("encodePacket (docs/protocol.md §8 requests)", () => {
   });
   it("refuses out-of-range types, platforms and oversize contents", () => {
     expect(() => encodePacket(256, Uint8Array.of(1))).toThrow(/type/);
-    expect(() => encodePacket(1, Uint8Array.of(1), -1)).toThrow(/Platform/);
+    expect(() => encodePacket(1, Uint8Array.of(1), -1)).toThrow(
+      expect.objectContaining({
+        code: "bad-platform",
+        facts: { field: "platform", value: -1, min: 0, max: 255 },
+      }),
+    );
     expect(() => encodePacket(1, new Uint8Array(4097))).toThrow(/4096/);
   });
 });

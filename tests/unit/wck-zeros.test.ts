@@ -33,7 +33,9 @@ describe("wCK servo packets (docs/protocol.md §5 examples)", () => {
   it("refuses ids, positions and torques out of range", () => {
     expect(() => wckMove(31, 100, 0)).toThrow(/id/);
     expect(() => wckMove(0, 255, 0)).toThrow(/position/);
-    expect(() => wckMove(0, 100, 5)).toThrow(/Torque/);
+    expect(() => wckMove(0, 100, 5)).toThrow(
+      expect.objectContaining({ code: "wck-torque", facts: { field: "torque", value: 5, min: 0, max: 4 } }),
+    );
     expect(() => wckSyncMove([], 0)).toThrow();
   });
 });
