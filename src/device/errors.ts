@@ -6,6 +6,7 @@ import {
   zerosBackupFailedText,
   zerosBackupKeptText,
 } from "../i18n/outcomes/device.ts";
+import { linkReasonText } from "../i18n/outcomes/link-words.ts";
 import {
   busyReadText,
   emptySlotText,
@@ -15,6 +16,7 @@ import {
   stopNoReplyText,
 } from "../i18n/outcomes/run-words.ts";
 import { uploadFailureText } from "../i18n/outcomes/upload-words.ts";
+import type { LinkFacts } from "../link/transport.ts";
 import type { RunNoReply, RunReport } from "./run-outcome.ts";
 
 /**
@@ -96,8 +98,10 @@ export class RbcPortError extends RbcError {
     super(code, message, { cause });
   }
 
-  static fromLink(e: { code: string; message: string }): RbcPortError {
-    return new RbcPortError(e.code === "port-busy" ? "port-busy" : "port-unavailable", e.message, e);
+  static fromLink(e: { code: string; message: string; facts?: LinkFacts }): RbcPortError {
+    // The link's reason in the outcome catalogue's words; an error made without one keeps its message.
+    const said = e.facts === undefined ? undefined : linkReasonText(e.facts, "en");
+    return new RbcPortError(e.code === "port-busy" ? "port-busy" : "port-unavailable", said ?? e.message, e);
   }
 }
 

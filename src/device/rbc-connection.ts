@@ -5,6 +5,7 @@
  * connection-options.ts.
  */
 import { cancelledByText, codeText } from "../i18n/outcomes/device.ts";
+import { linkReasonText } from "../i18n/outcomes/link-words.ts";
 import { LinkError, type Transport, type TransportStatusEvent } from "../link/transport.ts";
 import { concatBytes } from "../protocol/bytes.ts";
 import { ABANDON_DOWNLOAD } from "../protocol/catalog.ts";
@@ -583,9 +584,11 @@ export class RbcConnection {
 
   private onTransportStatus(event: TransportStatusEvent): void {
     if (event.status !== "lost") return;
-    // The link says what happened; without its words, the outcome catalogue's sentence for a lost link.
-    const reason = event.reason ?? codeText("disconnected", "en");
-    const message = event.reason === undefined ? reason : `${reason} Check the cable, then connect again.`;
+    // The link says what happened (its cause, in the outcome catalogue's words); without it, the catalogue's
+    // sentence for a lost link.
+    const said = event.cause === undefined ? undefined : linkReasonText(event.cause, "en");
+    const reason = said ?? codeText("disconnected", "en");
+    const message = said === undefined ? reason : `${said} Check the cable, then connect again.`;
     this.failPending(new RbcDisconnectedError(message, event.error));
     this.subscription = undefined;
     this.setState({

@@ -1,6 +1,6 @@
 import { writeU32BE, xorBytes } from "./bytes.ts";
 import { COMMANDS } from "./commands.ts";
-import { outOfRange, ProtocolError } from "./errors.ts";
+import { outOfRange } from "./errors.ts";
 
 /** The 8-byte header that starts every RBC packet in both directions (docs/protocol.md §2). */
 export const HEADER = Uint8Array.of(0xff, 0xff, 0xaa, 0x55, 0xaa, 0x55, 0x37, 0xba);

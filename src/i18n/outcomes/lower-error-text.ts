@@ -1,3 +1,4 @@
+import { LinkError } from "../../link/transport.ts";
 import { MotionError } from "../../motion/errors.ts";
 import { RestampError } from "../../motion/restamp.ts";
 import { BootloaderError } from "../../protocol/bootloader.ts";
@@ -6,17 +7,19 @@ import { RbmError } from "../../protocol/rbm.ts";
 import { ZeroTableError } from "../../protocol/zeros.ts";
 import type { Locale } from "../locale.ts";
 import { firmwareFailureText, hexProblemText } from "./firmware/firmware-words.ts";
+import { linkReasonText } from "./link-words.ts";
 import { motionRefusalText } from "./motion/motion-words.ts";
 import { rbmErrorText } from "./rbm/rbm-issue-text.ts";
 import { restampRefusalText } from "./restamp/restamp-words.ts";
 import { zerosNotWrittenText } from "./zero-words.ts";
 
 /**
- * The errors of the layers below the device (src/protocol, src/motion) for a person, in their language, from
+ * The errors of the layers below the device (src/protocol, src/link, src/motion) for a person, in their language, from
  * their code and facts: `errorText` asks here first. The errors' own `message` is a technical line for logs.
  * Undefined for an error this does not word.
  */
 export function lowerErrorText(e: unknown, locale: Locale): string | undefined {
+  if (e instanceof LinkError) return linkReasonText(e.facts, locale);
   if (e instanceof MotionError) return motionRefusalText(e, locale);
   if (e instanceof RestampError) return restampRefusalText(e, locale);
   if (e instanceof RbmError) return rbmErrorText(e.issues, locale);
