@@ -9,8 +9,9 @@ import { inEveryLanguage, said } from "../../said.ts";
 import { zerosMessages } from "./messages.ts";
 
 /**
- * A backup file the parser refused, as a notice. The parser (protocol/zeros-backup.ts, shared with the CLI)
- * explains in English; in Korean the panel says it from the parser's code, the English sentence one click away.
+ * A backup file the parser refused, as a notice. The parser (protocol/zeros-backup.ts, shared with the CLI) gives
+ * its problem and facts; English is the outcome catalogue's sentence (`backupRefusalText`), and in Korean the
+ * panel says it from the problem, the English sentence one click away.
  */
 
 /** Why a backup file was refused, in Korean (the parser's English sentence becomes the detail). */
@@ -50,7 +51,7 @@ function reasonIn(text: string, parsed: Extract<ParsedBackup, { ok: false }>, lo
 
 /**
  * "… was not loaded." with the reason, kept as a message (worded when drawn, so it follows a language switch).
- * The detail carries the parser's code and English sentence.
+ * The detail carries the parser's code and the English sentence.
  */
 export function refusal(
   file: File,
@@ -63,6 +64,6 @@ export function refusal(
     "danger",
     locale,
     [said(zerosMessages, "zeros.fileRefused", { file: file.name, reason })],
-    `${parsed.problem}: ${parsed.message}`,
+    `${parsed.problem}: ${backupRefusalText(parsed, "en")}`,
   );
 }
