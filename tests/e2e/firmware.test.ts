@@ -332,10 +332,7 @@ describe("in Korean (ko-KR)", () => {
       );
       await expectText(problem.locator("summary"), "기술 정보");
       // The technical detail: the parser's code and facts.
-      await expectText(
-        problem.locator("pre"),
-        "IntelHexError: hex line 3: checksum (got 00, expected 58)",
-      );
+      await expectText(problem.locator("pre"), "IntelHexError: hex line 3: checksum (got 00, expected 58)");
       await expect.poll(() => problem.locator("pre").getAttribute("lang")).toBe("en");
       expect(await page.getByTestId("fw-summary").count()).toBe(0);
 
