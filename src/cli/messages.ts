@@ -197,30 +197,6 @@ export const cliMessages = defineMessages({
     en: "Could not write {path} ({why}).",
     ko: "{path}을(를) 쓰지 못했어요 ({why}).",
   },
-  "cli.zerosFile.notJson": {
-    en: "{path}: This file is not a zero backup: it is not JSON text.",
-    ko: "{path}: 영점 백업 파일이 아니에요 (JSON 텍스트가 아님). rbc-zeros-<serial>-<date>.json 같은 이름으로 저장된 파일을 골라 주세요.",
-  },
-  "cli.zerosFile.wrongFormat": {
-    en: "{path}: This file is JSON but not an RBC zero backup.",
-    ko: "{path}: JSON 파일이지만 RBC 영점 백업이 아니에요. rbc-zeros-<serial>-<date>.json 같은 이름으로 저장된 파일을 골라 주세요.",
-  },
-  "cli.zerosFile.wrongVersion": {
-    en: "{path}: This backup is of a version rbc does not read.",
-    ko: "{path}: rbc가 읽을 수 없는 버전의 백업이에요.",
-  },
-  "cli.zerosFile.wrongCount": {
-    en: "{path}: This backup does not hold exactly 16 values, one per servo 0-15.",
-    ko: "{path}: 이 백업에는 서보 0-15마다 하나씩, 정확히 16개의 값이 있어야 해요.",
-  },
-  "cli.zerosFile.outOfRange": {
-    en: "{path}: The robot would refuse this backup's zeros.",
-    ko: "{path}: 로봇이 이 백업의 영점을 거부할 거예요. 기준 영점의 ±15를 벗어난 값이 있어요.",
-  },
-  "cli.zerosFile.invalid": {
-    en: "{path}: This backup file is damaged.",
-    ko: "{path}: 백업 파일이 손상됐어요.",
-  },
 
   "cli.pty.timeout": {
     en: "socat did not create a PTY pair within {ms} ms: {output}",

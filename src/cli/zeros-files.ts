@@ -6,10 +6,9 @@
 import { constants } from "node:fs";
 import { access, readFile, writeFile } from "node:fs/promises";
 import { join } from "node:path";
+import type { Locale } from "../i18n/locale.ts";
 import { backupRefusalText } from "../i18n/outcomes/zero-words.ts";
-import { translator } from "../i18n/translate.ts";
 import {
-  type BackupProblem,
   createZerosBackup,
   parseZerosBackup,
   serializeZerosBackup,
@@ -103,16 +102,6 @@ export function unreadable(path: string, e: unknown): CliError {
   return new CliError("file-unreadable", said(cliMessages, "cli.file.unreadable", { path, why: String(e) }));
 }
 
-/** In Korean, what is wrong with a backup file, by the problem the protocol found (its English says more). */
-const BACKUP_PROBLEM_TEXT = {
-  "not-json": "cli.zerosFile.notJson",
-  "wrong-format": "cli.zerosFile.wrongFormat",
-  "wrong-version": "cli.zerosFile.wrongVersion",
-  "wrong-count": "cli.zerosFile.wrongCount",
-  "out-of-range": "cli.zerosFile.outOfRange",
-  invalid: "cli.zerosFile.invalid",
-} as const satisfies Readonly<Record<BackupProblem, string>>;
-
 /** Reads and checks a backup file (zod schema and the ±15 rule); a refusal says what is wrong. */
 export async function readBackupFile(path: string): Promise<ZerosBackup> {
   let text: string;
@@ -123,8 +112,8 @@ export async function readBackupFile(path: string): Promise<ZerosBackup> {
   }
   const parsed = parseZerosBackup(text);
   if (!parsed.ok) {
-    const ko = translator(cliMessages, "ko")(BACKUP_PROBLEM_TEXT[parsed.problem], { path });
-    throw new CliError(`backup-${parsed.problem}`, { en: `${path}: ${backupRefusalText(parsed, "en")}`, ko });
+    const words = (l: Locale) => `${path}: ${backupRefusalText(parsed, l)}`;
+    throw new CliError(`backup-${parsed.problem}`, { en: words("en"), ko: words("ko") });
   }
   return parsed.backup;
 }

@@ -47,7 +47,7 @@ export const zeroOutcomeMessages = defineMessages({
   },
   "outcome.zeros.backup.wrongVersion": {
     en: "This backup is version {version}; this panel reads version {readable}.",
-    ko: "이 백업은 버전 {version}이에요. 이 패널은 버전 {readable}만 읽을 수 있어요.",
+    ko: "이 백업은 버전 {version} 형식이에요. 이 패널은 버전 {readable} 형식만 읽을 수 있어요.",
   },
   "outcome.zeros.backup.wrongCount": {
     en: "This backup holds {values} values; a zero table has exactly 16, one per servo 0-15.",

@@ -238,7 +238,7 @@ export async function restoreFromFile(ctx: AppContext, file: File): Promise<void
   }
   const parsed = parseZerosBackup(text);
   if (!parsed.ok) {
-    patchZeros(store, { fileNotice: refusal(file, text, parsed, t.locale) });
+    patchZeros(store, { fileNotice: refusal(file, parsed, t.locale) });
     return;
   }
   const { backup } = parsed;

@@ -209,30 +209,6 @@ export const zerosMessages = defineMessages({
   },
   // Why a backup file is refused. In English the panel shows the parser's own sentence (it names the value);
   // these English texts are its gist. In Korean these sentences, with the parser's sentence as the detail.
-  "zeros.backupNotJson": {
-    en: "This file is not a zero backup: it is not JSON text. Choose a file saved by this panel, named like rbc-zeros-<serial>-<date>.json.",
-    ko: "영점 백업 파일이 아니에요(JSON 텍스트가 아님). 이 패널이 저장한 파일을 골라 주세요. 이름은 rbc-zeros-<시리얼 번호>-<날짜>.json 같은 모양이에요.",
-  },
-  "zeros.backupWrongFormat": {
-    en: "This file is JSON but not an RBC zero backup. Choose a file saved by this panel, named like rbc-zeros-<serial>-<date>.json.",
-    ko: "JSON 파일이지만 RBC 영점 백업이 아니에요. 이 패널이 저장한 파일을 골라 주세요. 이름은 rbc-zeros-<시리얼 번호>-<날짜>.json 같은 모양이에요.",
-  },
-  "zeros.backupWrongVersion": {
-    en: "This backup is of a version this panel does not read.",
-    ko: "이 패널이 읽을 수 없는 버전의 백업이에요. 자세한 내용은 기술 정보에 있어요.",
-  },
-  "zeros.backupWrongCount": {
-    en: "This backup does not hold exactly 16 values, one per servo 0-15.",
-    ko: "영점 표에는 서보 0-15마다 하나씩 정확히 16개의 값이 있어야 하는데, 이 백업은 그렇지 않아요.",
-  },
-  "zeros.backupOutOfRange": {
-    en: "The robot would refuse this backup's zeros (servo {servos}).",
-    ko: "로봇이 이 백업의 영점을 거부할 거예요. 서보 {servos}의 값이 정수가 아니거나 허용 범위를 벗어나요.",
-  },
-  "zeros.backupDamaged": {
-    en: "This backup file is damaged.",
-    ko: "이 백업 파일은 손상됐어요. 자세한 내용은 기술 정보에 있어요.",
-  },
   "zeros.loaded": {
     en: 'Loaded "{file}" (saved {saved}) into the editor. Nothing is written until you press Write.',
     ko: "\"{file}\" 파일({saved}에 저장)을 편집 표에 불러왔어요. '로봇에 쓰기'를 누르기 전에는 아무것도 쓰지 않아요.",
