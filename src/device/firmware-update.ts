@@ -8,6 +8,7 @@ import {
   firmwareResultText,
   firmwareSummaryText,
 } from "../i18n/outcomes/firmware/firmware-words.ts";
+import { lowerErrorText } from "../i18n/outcomes/lower-error-text.ts";
 import type { Transport } from "../link/transport.ts";
 import {
   BootloaderDialogue,
@@ -243,7 +244,12 @@ export function transportFirmwareIo(
             try {
               resolve(spec.decode(packet.contents));
             } catch (e) {
-              reject(new RbcBadReplyError(e instanceof Error ? e.message : String(e), e));
+              reject(
+                new RbcBadReplyError(
+                  lowerErrorText(e, "en") ?? (e instanceof Error ? e.message : String(e)),
+                  e,
+                ),
+              );
             }
             return;
           }

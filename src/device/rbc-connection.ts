@@ -6,6 +6,7 @@
  */
 import { cancelledByText, codeText } from "../i18n/outcomes/device.ts";
 import { linkReasonText } from "../i18n/outcomes/link-words.ts";
+import { lowerErrorText } from "../i18n/outcomes/lower-error-text.ts";
 import { LinkError, type Transport, type TransportStatusEvent } from "../link/transport.ts";
 import { concatBytes } from "../protocol/bytes.ts";
 import { ABANDON_DOWNLOAD } from "../protocol/catalog.ts";
@@ -340,7 +341,10 @@ export class RbcConnection {
         try {
           return spec.decode(packet.contents);
         } catch (e) {
-          throw new RbcBadReplyError(e instanceof Error ? e.message : String(e), e);
+          throw new RbcBadReplyError(
+            lowerErrorText(e, "en") ?? (e instanceof Error ? e.message : String(e)),
+            e,
+          );
         }
       } catch (e) {
         const retryable = e instanceof RbcTimeoutError || e instanceof RbcBadReplyError;

@@ -1,6 +1,6 @@
 import { readI16LE, readU32BE } from "./bytes.ts";
 import { BUILT_IN_MOTIONS, SOUND_REPLY_DELAY_MS, soundLengthMs } from "./catalog.ts";
-import { outOfRange, ProtocolError } from "./errors.ts";
+import { outOfRange, ProtocolError, type ProtocolFacts } from "./errors.ts";
 import { ZERO_COUNT, ZeroTableError, zeroProblems } from "./zeros.ts";
 
 /**
@@ -40,10 +40,14 @@ export interface CommandSpec<Args, Reply> {
 
 export type MemoryArea = "motion" | "action";
 
+/**
+ * A reply whose contents do not fit its command: `facts` name the command, and either the length `expected` and
+ * the length it had (`got`), or the `problem` ("not-printable"). The outcome catalogue words it (`errorText`).
+ */
 export class BadReplyError extends ProtocolError {
   override name = "BadReplyError";
-  constructor(command: string, detail: string) {
-    super("bad-reply", `The robot's reply to "${command}" was not understood: ${detail}`);
+  constructor(command: string, detail: string, facts: ProtocolFacts = {}) {
+    super("bad-reply", `bad-reply: ${command}: ${detail}`, { command, ...facts });
   }
 }
 
@@ -51,7 +55,10 @@ const ONE = Uint8Array.of(1);
 
 function expectLength(name: string, contents: Uint8Array, length: number): void {
   if (contents.length !== length) {
-    throw new BadReplyError(name, `expected ${length} bytes, got ${contents.length}.`);
+    throw new BadReplyError(name, `${contents.length} bytes, expected ${length}`, {
+      expected: length,
+      got: contents.length,
+    });
   }
 }
 
@@ -110,7 +117,7 @@ export const COMMANDS = {
       expectLength(this.name, c, 13);
       for (const b of c) {
         if (b < 0x20 || b > 0x7e)
-          throw new BadReplyError(this.name, "the serial number is not printable text.");
+          throw new BadReplyError(this.name, "not printable", { problem: "not-printable" });
       }
       return String.fromCharCode(...c);
     },

@@ -2,6 +2,7 @@ import { LinkError } from "../../link/transport.ts";
 import { MotionError } from "../../motion/errors.ts";
 import { RestampError } from "../../motion/restamp.ts";
 import { BootloaderError } from "../../protocol/bootloader.ts";
+import { BadReplyError } from "../../protocol/commands.ts";
 import { IntelHexError } from "../../protocol/intel-hex.ts";
 import { RbmError } from "../../protocol/rbm.ts";
 import { ZeroTableError } from "../../protocol/zeros.ts";
@@ -9,6 +10,7 @@ import type { Locale } from "../locale.ts";
 import { firmwareFailureText, hexProblemText } from "./firmware/firmware-words.ts";
 import { linkReasonText } from "./link-words.ts";
 import { motionRefusalText } from "./motion/motion-words.ts";
+import { badReplyText } from "./protocol-words.ts";
 import { rbmErrorText } from "./rbm/rbm-issue-text.ts";
 import { restampRefusalText } from "./restamp/restamp-words.ts";
 import { zerosNotWrittenText } from "./zero-words.ts";
@@ -28,6 +30,7 @@ export function lowerErrorText(e: unknown, locale: Locale): string | undefined {
     const { code: failure, holds, line, waitedMs, tries } = e;
     return firmwareFailureText({ failure, holds, line, waitedMs, tries }, locale);
   }
+  if (e instanceof BadReplyError) return badReplyText(e, locale);
   if (e instanceof ZeroTableError) return zerosNotWrittenText(e.problems, locale);
   return undefined;
 }
