@@ -16,9 +16,9 @@ import { restampRefusalText } from "./restamp/restamp-words.ts";
 import { zerosNotWrittenText } from "./zero-words.ts";
 
 /**
- * The errors of the layers below the device (src/protocol, src/link, src/motion) for a person, in their language, from
- * their code and facts: `errorText` asks here first. The errors' own `message` is a technical line for logs.
- * Undefined for an error this does not word.
+ * The errors of the layers below the device (src/protocol, src/link, src/motion) for a person, in their
+ * language, from their code and facts: `errorText` asks here first. The errors' own `message` is a technical
+ * line for logs. Undefined for an error this does not word (a link error made without its facts, say).
  */
 export function lowerErrorText(e: unknown, locale: Locale): string | undefined {
   if (e instanceof LinkError) return linkReasonText(e.facts, locale);

@@ -4,8 +4,9 @@ import type { Translator } from "../../translate.ts";
 /**
  * The motion file checker's sentences (protocol/rbm.ts, rbm-validate.ts, motion-image.ts), one per issue code
  * and kind, filled from the issue's `values` (`rbmIssueSentence`), in every language, in the panel and in `rbc`
- * alike (the issue's own `message` is a technical line for logs). A servo is "서보 2번(왼쪽 무릎)": its head word is 번, so "{servo}의" and
- * "{servo}이" read right.
+ * alike (the issue's own `message` is a technical line for logs). A servo is "서보 2번(왼쪽 무릎)": its head
+ * word is 번, so "{servo}의" and "{servo}이" read right. English capitalises a sentence that begins with its
+ * subject (`initial`); the fields of the motion itself are named with "the" ("the motion index").
  */
 export const rbmIssueMessages = defineMessages({
   // Who a value belongs to, and the fields by name.

@@ -30,7 +30,10 @@ function got(t: IssueTranslator, r: IssueValues): string {
   }
 }
 
-/** Where in a motion built in code a value is, from its path: "scenes.2.servos.3.end" → "scene 2, servo record 3, end". */
+/**
+ * Where in a motion built in code a value is, from its path: "scenes.2.servos.3.end" → "scene 2, servo record 3,
+ * end".
+ */
 function place(t: IssueTranslator, r: IssueValues): string {
   const keys = r.text("path").split(".");
   const parts: string[] = [];

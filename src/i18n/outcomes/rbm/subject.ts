@@ -125,7 +125,7 @@ export function subject(t: IssueTranslator, r: IssueValues): string {
   return field;
 }
 
-/** A sentence that begins with its subject ("the P gain of servo 3 …"), with a capital letter where there are any. */
+/** A sentence that begins with its subject ("the P gain of servo 3 …"), with a capital letter where it has one. */
 export function initial(text: string): string {
   return text.charAt(0).toUpperCase() + text.slice(1);
 }
