@@ -231,9 +231,9 @@ export const playCommand: CommandDef = {
       plan = playFrames(doc, { range, robotZeros: STANDARD_ZEROS, platform: PLATFORM_PF2 });
     } catch (e) {
       if (!(e instanceof MotionError)) throw e;
-      // The motion core's reason, from the outcome catalogue; in Korean the sentence says the file cannot be played.
+      // The motion core's reason, from the outcome catalogue, in every language.
       const words = saidEach(commandMessages, "cmd.play.refused", (l) => [
-        { file: basename(file), reason: l === "en" ? motionRefusalText(e, l) : t("cmd.play.refusedWhy") },
+        { file: basename(file), reason: motionRefusalText(e, l) },
       ]);
       throw new CliError("motion-refused", words);
     }
