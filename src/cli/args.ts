@@ -1,8 +1,8 @@
 import { type ParseArgsConfig, parseArgs } from "node:util";
+import { type Said, said, saidText } from "../i18n/said.ts";
 import { translator } from "../i18n/translate.ts";
 import { UsageError } from "./errors.ts";
 import { cliMessages } from "./messages.ts";
-import { type Said, said, saidEach } from "./said.ts";
 
 /** Options every subcommand takes (described in help.ts). */
 export const GLOBAL_OPTIONS = {
@@ -84,17 +84,17 @@ export function parseFailure(e: unknown): Said {
   const ko = translator(cliMessages, "ko");
   switch (code) {
     case "ERR_PARSE_ARGS_UNKNOWN_OPTION":
-      return { en, ko: ko("cli.usage.unknownOption", { option: quoted }) };
+      return saidText({ en, ko: ko("cli.usage.unknownOption", { option: quoted }) });
     case "ERR_PARSE_ARGS_UNEXPECTED_POSITIONAL":
-      return { en, ko: ko("cli.usage.unexpected", { argument: quoted }) };
+      return saidText({ en, ko: ko("cli.usage.unexpected", { argument: quoted }) });
     case "ERR_PARSE_ARGS_INVALID_OPTION_VALUE": {
       const option = /--[\w-]+/.exec(quoted)?.[0] ?? quoted;
       return /missing/.test(en)
-        ? { en, ko: ko("cli.usage.optionNeedsValue", { option }) }
-        : { en, ko: ko("cli.usage.optionNoValue", { option }) };
+        ? saidText({ en, ko: ko("cli.usage.optionNeedsValue", { option }) })
+        : saidText({ en, ko: ko("cli.usage.optionNoValue", { option }) });
     }
     default:
-      return { en, ko: ko("cli.usage.badCommandLine", { reason: en }) };
+      return saidText({ en, ko: ko("cli.usage.badCommandLine", { reason: en }) });
   }
 }
 
@@ -127,18 +127,12 @@ export function intArgument(
   max: number,
 ) {
   if (value === undefined) {
-    throw new UsageError(
-      saidEach(cliMessages, "cli.usage.missing", (l) => [{ what: what[l] }]),
-      command,
-    );
+    throw new UsageError(said(cliMessages, "cli.usage.missing", { what }), command);
   }
   const n = Number(value);
   if (!/^\d+$/.test(value.trim()) || n < min || n > max) {
     const range = { min: String(min), max: String(max), value };
-    throw new UsageError(
-      saidEach(cliMessages, "cli.usage.intArgument", (l) => [{ what: what[l], ...range }]),
-      command,
-    );
+    throw new UsageError(said(cliMessages, "cli.usage.intArgument", { what, ...range }), command);
   }
   return n;
 }

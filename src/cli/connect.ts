@@ -5,6 +5,7 @@ import type { LinkKind } from "../device/round-trip.ts";
 import type { DeviceIdentity } from "../device/types.ts";
 import type { Locale } from "../i18n/locale.ts";
 import { inBootloaderText } from "../i18n/outcomes/device.ts";
+import { said, saidBy, saidTogether } from "../i18n/said.ts";
 import { translator } from "../i18n/translate.ts";
 import { LinkError, type Transport } from "../link/transport.ts";
 import { WebSerialTransport } from "../link/web-serial-transport.ts";
@@ -19,7 +20,6 @@ import { CliError, UsageError } from "./errors.ts";
 import { cliMessages } from "./messages.ts";
 import { formatLogEntry, logEntryJson } from "./packet-trace.ts";
 import { portOpenSaid } from "./port-errors.ts";
-import { joinSaid, said, saidBy } from "./said.ts";
 import { demoVariant, rbcOptionsOf, type SimVariant } from "./sim-variant.ts";
 
 /** A connected robot: the real one on a serial port, or the demo robot. */
@@ -243,7 +243,7 @@ export async function connectRobot(
       const robot = target.demo ? "--demo" : `--port ${target.port}`;
       throw new CliError(
         e.code,
-        joinSaid([
+        saidTogether([
           saidBy((l) => inBootloaderText(e.facts.prompts, l)),
           said(cliMessages, "cli.connect.recoverWith", { robot }),
         ]),

@@ -1,13 +1,12 @@
 import { RbcError } from "../device/errors.ts";
+import { errorSaid } from "../i18n/error-said.ts";
 import type { Locale } from "../i18n/locale.ts";
 import { unexpectedText } from "../i18n/outcomes/device.ts";
-import { errorText } from "../i18n/outcomes/error-text.ts";
-import { lowerErrorText } from "../i18n/outcomes/lower-error-text.ts";
+import { type Said, said, saidBy, wordOf } from "../i18n/said.ts";
 import { translator } from "../i18n/translate.ts";
 import { LinkError } from "../link/transport.ts";
 import { ProtocolError } from "../protocol/errors.ts";
 import { cliMessages } from "./messages.ts";
-import { type Said, sameInEvery } from "./said.ts";
 
 /** Exit codes of `rbc` (documented in `rbc --help`). */
 export const EXIT = {
@@ -24,7 +23,7 @@ export const EXIT = {
 
 /** A message given in one language only (another program's words) is the same in every language. */
 function asSaid(message: string | Said): Said {
-  return typeof message === "string" ? sameInEvery(message) : message;
+  return typeof message === "string" ? saidBy(() => message) : message;
 }
 
 /**
@@ -40,7 +39,7 @@ export class UsageError extends Error {
     readonly command?: string,
   ) {
     const words = asSaid(message);
-    super(words.en);
+    super(wordOf(words, "en"));
     this.said = words;
   }
 }
@@ -57,7 +56,7 @@ export class CliError extends Error {
     readonly details: Record<string, unknown> = {},
   ) {
     const words = asSaid(message);
-    super(words.en);
+    super(wordOf(words, "en"));
     this.said = words;
   }
 }
@@ -87,13 +86,13 @@ export interface ErrorLineOptions {
   detailShown?: boolean;
 }
 
-/** A failure's sentence in `locale`: its own, or for the device's errors a sentence from their code. */
-function sentence(e: unknown, locale: Locale, options: ErrorLineOptions): string {
-  if (e instanceof CliError || e instanceof UsageError) return e.said[locale];
-  if (locale === "en") return lowerErrorText(e, locale) ?? (e instanceof Error ? e.message : String(e));
-  const t = translator(cliMessages, locale);
-  return errorText(e, locale, {
-    detailHint: options.detailShown ? t("cli.error.detailBelow") : t("cli.error.detailWithLog"),
+/** Where a Korean sentence that does not say enough points for the technical detail: `--log`. */
+export const SEE_LOG = said(cliMessages, "cli.error.detailWithLog");
+
+/** `e` as a message (errorSaid), pointing to `--log` (or below, where `--log` printed the detail). */
+function cliSaid(e: unknown, options: ErrorLineOptions): Said {
+  return errorSaid(e, {
+    detailHint: options.detailShown ? said(cliMessages, "cli.error.detailBelow") : SEE_LOG,
   });
 }
 
@@ -102,7 +101,7 @@ function sentence(e: unknown, locale: Locale, options: ErrorLineOptions): string
  * to do; in Korean the device's errors are said from their code (the English stays for `--log` and `--json`).
  */
 export function errorLine(e: unknown, locale: Locale = "en", options: ErrorLineOptions = {}): string {
-  const text = sentence(e, locale, options)
+  const text = wordOf(cliSaid(e, options), locale)
     .replace(/\s*\n\s*/g, " ")
     .trim();
   const t = translator(cliMessages, locale);
@@ -114,9 +113,4 @@ export function errorLine(e: unknown, locale: Locale = "en", options: ErrorLineO
       : `${text} ${t("cli.error.busy")}`;
   }
   return text;
-}
-
-/** The English line of `e` and the line in `locale`, for a failure made of another error's words. */
-export function errorSaid(e: unknown): Said {
-  return { en: errorLine(e, "en"), ko: errorLine(e, "ko") };
 }

@@ -5,6 +5,7 @@
  * A closed stdout (`rbc … | head -1`) stops the command the same way, without a word.
  */
 import pkg from "../../package.json" with { type: "json" };
+import { said } from "../i18n/said.ts";
 import { translator } from "../i18n/translate.ts";
 import { splitCommand, wantsHelp } from "./args.ts";
 import { Cleanups } from "./cleanups.ts";
@@ -17,7 +18,6 @@ import { cliMessages } from "./messages.ts";
 import { checkSeveralPorts, portsGiven, runOnPorts } from "./multi-port.ts";
 import { Output } from "./output.ts";
 import { reportFailure, type Telling } from "./report-failure.ts";
-import { said } from "./said.ts";
 
 /** After Ctrl-C, how long a command may take to stop cleanly before rbc closes the port and exits anyway. */
 const INTERRUPT_GRACE_MS = 5000;

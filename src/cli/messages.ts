@@ -152,25 +152,14 @@ export const cliMessages = defineMessages({
     en: '{file}: motion "{name}", {servos} servos, {scenes} scenes, plays about {duration}; image {image} bytes (takes {footprint} bytes of motion memory).',
     ko: '{file}: 모션 "{name}", 서보 {servos}개, 장면 {scenes}개, 재생 시간 약 {duration}. 이미지 {image}바이트 (모션 메모리 {footprint}바이트 사용).',
   },
-  "cli.upload.checkedClean": {
-    en: "Checked: no errors, no warnings.",
-    ko: "확인했어요: 오류 없음, 경고 없음.",
-  },
-  "cli.upload.checked": { en: "Checked: {errors}, {warnings}.", ko: "확인했어요: {errors}, {warnings}." },
-  "cli.upload.errors": { en: { one: "{count} error", other: "{count} errors" }, ko: "오류 {count}개" },
-  "cli.upload.warnings": { en: { one: "{count} warning", other: "{count} warnings" }, ko: "경고 {count}개" },
 
   "cli.issue.error": { en: "error", ko: "오류" },
   "cli.issue.warning": { en: "warning", ko: "경고" },
-  "cli.issue.scene": { en: "scene {scene}", ko: "장면 {scene}" },
-  "cli.issue.servo": { en: "servo {servo}", ko: "서보 {servo}" },
 
   "cli.rbm.other": {
     en: "The motion file has a problem.",
     ko: "모션 파일에 문제가 있어요.",
   },
-
-  "cli.platform.unknown": { en: "unknown ({platform})", ko: "알 수 없음 ({platform})" },
 
   "cli.motion.downloaded": { en: "{motion} (downloaded, {key})", ko: "{motion} (다운로드한 모션, {key})" },
   "cli.motion.recorded": { en: "{motion} ({name}, {key})", ko: "{motion} ({name}, {key})" },
@@ -197,6 +186,7 @@ export const cliMessages = defineMessages({
     en: "Could not write {path} ({why}).",
     ko: "{path}을(를) 쓰지 못했어요 ({why}).",
   },
+  "cli.zerosFile.refused": { en: "{path}: {reason}", ko: "{path}: {reason}" },
 
   "cli.pty.timeout": {
     en: "socat did not create a PTY pair within {ms} ms: {output}",
@@ -248,7 +238,6 @@ export const cliMessages = defineMessages({
     en: "firmware {firmware}, serial {serial}, platform {platform} ({name})",
     ko: "펌웨어 {firmware}, 시리얼 {serial}, 플랫폼 {platform} ({name})",
   },
-  "cli.variant.serialNotReported": { en: "not reported", ko: "알려 주지 않음" },
   "cli.variant.busyMotion": {
     en: '--busy-motion must be a built-in motion number from 1 to 11, got "{value}".',
     ko: '--busy-motion에는 1부터 11까지의 내장 모션 번호를 써 주세요. 받은 값: "{value}".',

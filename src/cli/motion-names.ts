@@ -1,6 +1,6 @@
-import { remoteKeyWords } from "../device/shelf.ts";
 import type { Locale } from "../i18n/locale.ts";
 import { builtInMotionName } from "../i18n/motion-names/built-in-motion-name.ts";
+import { remoteKeyWords } from "../i18n/outcomes/remote-key.ts";
 import { translator } from "../i18n/translate.ts";
 import { BUILT_IN_MOTIONS } from "../protocol/catalog.ts";
 import { cliMessages } from "./messages.ts";

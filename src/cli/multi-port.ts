@@ -9,13 +9,13 @@
  * asks first takes `--yes` for all of them, or refuses as it does without a terminal, sending nothing.
  */
 import { PassThrough, Writable } from "node:stream";
+import { said } from "../i18n/said.ts";
 import { translator } from "../i18n/translate.ts";
 import type { CommandDef, RunEnv } from "./command.ts";
 import { CliError, EXIT, errorLine, UsageError } from "./errors.ts";
 import { cliMessages } from "./messages.ts";
 import { Output } from "./output.ts";
 import { reportFailure, type Telling } from "./report-failure.ts";
-import { said } from "./said.ts";
 
 /** The commands that take several ports (`zeros` only as `zeros read`). */
 export const MULTI_PORT_COMMANDS: readonly string[] = ["info", "zeros read", "upload", "run", "stop"];

@@ -1,6 +1,5 @@
-import { translator } from "../i18n/translate.ts";
+import { type Said, said, wordOf } from "../i18n/said.ts";
 import { cliMessages } from "./messages.ts";
-import type { Said } from "./said.ts";
 
 /** The words for a serial port that cannot be opened, shared by the commands that open one and `rbc sim`. */
 
@@ -27,12 +26,10 @@ export function portOpenSaid(path: string, e: unknown, code = "open-failed"): Sa
     .replace(/[.\s]+$/, "");
   const reason = why ? ` (${why.charAt(0).toLowerCase()}${why.slice(1)})` : "";
   const key = code === "port-busy" ? "cli.port.busy" : "cli.port.cannotOpen";
-  const en = translator(cliMessages, "en");
-  const ko = translator(cliMessages, "ko");
-  return { en: en(key, { path, reason }), ko: ko(key, { path, reason }) };
+  return said(cliMessages, key, { path, reason });
 }
 
 /** The English sentence of `portOpenSaid`. */
 export function portOpenMessage(path: string, e: unknown, code = "open-failed"): string {
-  return portOpenSaid(path, e, code).en;
+  return wordOf(portOpenSaid(path, e, code), "en");
 }

@@ -1,7 +1,7 @@
 import { type ChildProcess, spawn } from "node:child_process";
+import { said } from "../i18n/said.ts";
 import { CliError } from "./errors.ts";
 import { cliMessages } from "./messages.ts";
-import { said } from "./said.ts";
 
 /** A pair of connected pseudo terminals made by socat: what is written to one end is read at the other. */
 export interface PtyPair {

@@ -1,8 +1,7 @@
 import type { Locale } from "../i18n/locale.ts";
 import { robotErrorText } from "../i18n/outcomes/robot-error.ts";
-import { translator } from "../i18n/translate.ts";
+import { unknownPlatformText } from "../i18n/outcomes/robot-facts.ts";
 import { NO_ERROR, platformName } from "../protocol/catalog.ts";
-import { cliMessages } from "./messages.ts";
 
 /** What the robot reports about itself, in words of a language (the protocol's catalogue has the English). */
 
@@ -16,5 +15,5 @@ export function errorCodeWords(code: number, locale: Locale = "en"): string {
 export function platformWords(platform: number, locale: Locale = "en"): string {
   const name = platformName(platform);
   if (locale === "en" || !name.startsWith("unknown")) return name;
-  return translator(cliMessages, locale)("cli.platform.unknown", { platform: String(platform) });
+  return unknownPlatformText(platform, locale);
 }

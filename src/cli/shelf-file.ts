@@ -11,10 +11,10 @@ import { mkdir, readFile, rename, writeFile } from "node:fs/promises";
 import { homedir } from "node:os";
 import { dirname, join } from "node:path";
 import type { RobotShelf } from "../device/shelf.ts";
+import { said } from "../i18n/said.ts";
 import { z } from "../protocol/zod.ts";
 import { CliError } from "./errors.ts";
 import { cliMessages } from "./messages.ts";
-import { said } from "./said.ts";
 
 const SlotSchema = z.object({
   slot: z.number().int().min(1).max(20),

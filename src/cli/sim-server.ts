@@ -1,6 +1,7 @@
 import { createInterface } from "node:readline";
 import { SerialPort } from "serialport";
 import type { Locale } from "../i18n/locale.ts";
+import { said } from "../i18n/said.ts";
 import { translator } from "../i18n/translate.ts";
 import { rbcSerialPortOptions } from "../link/node-serial-transport.ts";
 import { toHex } from "../protocol/bytes.ts";
@@ -10,7 +11,6 @@ import { CliError } from "./errors.ts";
 import { cliMessages } from "./messages.ts";
 import type { Output } from "./output.ts";
 import { portOpenSaid } from "./port-errors.ts";
-import { said } from "./said.ts";
 import { SimLink, type SimLinkOptions } from "./sim-link.ts";
 import { formatSimTraceLine, SimTrace, type SimTraceLine } from "./sim-trace.ts";
 import { rbcOptionsOf, type SimVariant } from "./sim-variant.ts";

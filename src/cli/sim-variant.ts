@@ -1,5 +1,7 @@
 import { parseArgs } from "node:util";
 import type { Locale } from "../i18n/locale.ts";
+import { robotFactText } from "../i18n/outcomes/robot-facts.ts";
+import { said } from "../i18n/said.ts";
 import { translator } from "../i18n/translate.ts";
 import { platformName } from "../protocol/catalog.ts";
 import { commandName } from "../protocol/commands.ts";
@@ -9,7 +11,6 @@ import type { SimulatedRbcOptions } from "../sim/sim-types.ts";
 import { parseFailure } from "./args.ts";
 import { UsageError } from "./errors.ts";
 import { cliMessages } from "./messages.ts";
-import { said, saidEach } from "./said.ts";
 
 /**
  * Firmware variants of the simulated RBC (docs/protocol.md §3.5), as command-line switches: `rbc sim` takes them as
@@ -222,9 +223,7 @@ export function demoVariant(env: NodeJS.ProcessEnv, command?: string): SimVarian
   } catch (e) {
     const why = parseFailure(e);
     throw new UsageError(
-      saidEach(cliMessages, "cli.variant.demoVariant", (l) => [
-        { variable: DEMO_VARIANT_VAR, reason: why[l] },
-      ]),
+      said(cliMessages, "cli.variant.demoVariant", { variable: DEMO_VARIANT_VAR, reason: why }),
       command,
     );
   }
@@ -233,9 +232,7 @@ export function demoVariant(env: NodeJS.ProcessEnv, command?: string): SimVarian
   } catch (e) {
     if (e instanceof UsageError) {
       throw new UsageError(
-        saidEach(cliMessages, "cli.variant.inVariable", (l) => [
-          { variable: DEMO_VARIANT_VAR, reason: e.said[l] },
-        ]),
+        said(cliMessages, "cli.variant.inVariable", { variable: DEMO_VARIANT_VAR, reason: e.said }),
         command,
       );
     }
@@ -287,7 +284,7 @@ export function aboutRobot(
   const t = translator(cliMessages, locale);
   return t("cli.variant.about", {
     firmware: formatFirmware(firmware),
-    serial: serialNumber ?? t("cli.variant.serialNotReported"),
+    serial: serialNumber ?? robotFactText("notReported", locale),
     platform: String(platform),
     name: platformName(platform),
   });

@@ -1,4 +1,6 @@
 import type { Locale } from "../i18n/locale.ts";
+import { sceneText, servoText } from "../i18n/outcomes/motion/position-words.ts";
+import { checkSummaryText } from "../i18n/outcomes/rbm/check-summary.ts";
 import { rbmIssueText, rbmIssueWords } from "../i18n/outcomes/rbm/rbm-issue-text.ts";
 import { translator } from "../i18n/translate.ts";
 import { formatSeconds } from "../i18n/units.ts";
@@ -22,7 +24,7 @@ export interface IssueWords {
 
 /**
  * What is wrong, in `words.locale`: the outcome catalogue's sentence with the file's facts (the panel's own,
- * `rbmIssueText`), the protocol's English sentence in brackets after it with `--log`. An issue the catalogue
+ * `rbmIssueWords`), the protocol's English sentence in brackets after it with `--log`. An issue the catalogue
  * cannot word (a code it does not know, or one without its facts) says so in general, then the English.
  */
 export function issueText(issue: Pick<RbmIssue, "code" | "message" | "values">, words: IssueWords): string {
@@ -35,10 +37,9 @@ export function issueText(issue: Pick<RbmIssue, "code" | "message" | "values">, 
 }
 
 function where(issue: RbmIssue, locale: Locale): string {
-  const t = translator(cliMessages, locale);
   const parts = [
-    issue.scene === undefined ? undefined : t("cli.issue.scene", { scene: String(issue.scene) }),
-    issue.servo === undefined ? undefined : t("cli.issue.servo", { servo: String(issue.servo) }),
+    issue.scene === undefined ? undefined : sceneText(issue.scene, locale),
+    issue.servo === undefined ? undefined : servoText(issue.servo, locale),
   ].filter((p) => p !== undefined);
   return parts.length > 0 ? `(${parts.join(", ")}) ` : "";
 }
@@ -54,14 +55,9 @@ export function issueLines(
 }
 
 export function validationSummary(validation: RbmValidation, locale: Locale = "en"): string {
-  const t = translator(cliMessages, locale);
   const errors = validation.errors.length;
   const warnings = validation.warnings.length;
-  if (errors === 0 && warnings === 0) return t("cli.upload.checkedClean");
-  return t("cli.upload.checked", {
-    errors: t("cli.upload.errors", { count: errors }),
-    warnings: t("cli.upload.warnings", { count: warnings }),
-  });
+  return checkSummaryText(errors, warnings, locale);
 }
 
 export function motionSummary(

@@ -6,8 +6,8 @@
 import { constants } from "node:fs";
 import { access, readFile, writeFile } from "node:fs/promises";
 import { join } from "node:path";
-import type { Locale } from "../i18n/locale.ts";
 import { backupRefusalText } from "../i18n/outcomes/zero-words.ts";
+import { said, saidBy } from "../i18n/said.ts";
 import {
   createZerosBackup,
   parseZerosBackup,
@@ -17,7 +17,6 @@ import {
 } from "../protocol/zeros-backup.ts";
 import { CliError } from "./errors.ts";
 import { cliMessages } from "./messages.ts";
-import { said } from "./said.ts";
 
 export interface BackupSource {
   serialNumber: string;
@@ -112,8 +111,11 @@ export async function readBackupFile(path: string): Promise<ZerosBackup> {
   }
   const parsed = parseZerosBackup(text);
   if (!parsed.ok) {
-    const words = (l: Locale) => `${path}: ${backupRefusalText(parsed, l)}`;
-    throw new CliError(`backup-${parsed.problem}`, { en: words("en"), ko: words("ko") });
+    const reason = saidBy((l) => backupRefusalText(parsed, l));
+    throw new CliError(
+      `backup-${parsed.problem}`,
+      said(cliMessages, "cli.zerosFile.refused", { path, reason }),
+    );
   }
   return parsed.backup;
 }

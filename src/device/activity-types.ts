@@ -79,6 +79,11 @@ export type Halt =
 export interface ActivitySnapshot {
   doing: Doing;
   halt: Halt | undefined;
+  /**
+   * Every servo was made passive (a Limp that resolved) and none has been driven since (a motion, a servo move,
+   * tethered play). Leaving direct mode and Stop move no servo and keep it.
+   */
+  limp: boolean;
 }
 
 export type ActivityTransition =

@@ -26,6 +26,9 @@ import type { StopActivityResult } from "./stop.ts";
  *   a motion started elsewhere (`busy`: noticed, not started here); a sound; an upload; direct mode and what
  *   uses it (servo control, teach-in, tethered play, Limp).
  * - `halt`: nothing, Stop under way, or Limp under way. Stop and Limp run beside the operation they end.
+ * - `limp`: every servo was made passive (a Limp that resolved) and none has been driven since: a motion (this
+ *   client's, or one noticed playing elsewhere), a servo move or tethered play drives them again. Leaving direct
+ *   mode and Stop move no servo (docs/protocol.md §5), so they leave it as it is.
  *
  * Every change is a named transition with a guard: an operation asks the machine before it starts, and a
  * transition the machine refuses throws `ActivityRefusedError` and changes nothing. The machine sends nothing
@@ -48,25 +51,17 @@ export type {
   UploadActivity,
 } from "./activity-types.ts";
 
-const DOING_WORDS: Record<Doing["kind"], string> = {
-  idle: "idle",
-  motion: "playing a motion",
-  busy: "playing a motion started elsewhere",
-  sound: "playing a sound",
-  upload: "receiving an upload",
-  direct: "in direct servo control",
-};
-
-/** A transition the machine refuses in its current state; nothing was changed and nothing was sent. */
+/**
+ * A transition the machine refuses in its current state (`from`); nothing was changed and nothing was sent. The
+ * outcome catalogue words it ("Not started: the robot is playing a motion. Nothing was sent.").
+ */
 export class ActivityRefusedError extends RbcError {
   override name = "ActivityRefusedError";
   constructor(
     readonly transition: ActivityTransition,
     readonly from: Doing["kind"] | Halt["kind"],
   ) {
-    const now =
-      from === "stop" ? "ending an activity (Stop)" : from === "limp" ? "going limp" : DOING_WORDS[from];
-    super("wrong-mode", `Not started: the robot is ${now}. Nothing was sent.`);
+    super("wrong-mode", `activity refused: ${transition} while ${from}`, { situation: { kind: "code" } });
   }
 }
 
@@ -89,6 +84,7 @@ export class Activity {
   readonly #onChange: ((snapshot: ActivitySnapshot) => void) | undefined;
   #doing: Doing;
   #halt: Halt | undefined;
+  #limp = false;
   /** Resolves the `ended` promise of the current motion or sound. */
   #settle: ((value: number | undefined) => void) | undefined;
 
@@ -107,7 +103,12 @@ export class Activity {
   }
 
   get snapshot(): ActivitySnapshot {
-    return { doing: this.#doing, halt: this.#halt };
+    return { doing: this.#doing, halt: this.#halt, limp: this.#limp };
+  }
+
+  /** Every servo was made passive by Limp and none has been driven since. */
+  get limp(): boolean {
+    return this.#limp;
   }
 
   /** The motion this client started, if one is playing. */
@@ -153,6 +154,7 @@ export class Activity {
       after: from,
       ended: ended.promise,
     };
+    this.#limp = false;
     this.#enter(started, ended.resolve);
     return started;
   }
@@ -218,6 +220,7 @@ export class Activity {
   /** A motion started elsewhere was noticed (issue 20's busy probe). Only from idle. */
   noticeBusy(evidence: BusyActivity["evidence"] = "probe"): void {
     if (this.#doing.kind !== "idle") this.#refuse("noticeBusy");
+    this.#limp = false;
     this.#enter({ kind: "busy", since: this.#clock.now(), evidence });
   }
 
@@ -271,6 +274,7 @@ export class Activity {
   /** Direct mode is about to be entered for `use`: only from idle (docs/protocol.md §3.6). */
   enterDirect(use: DirectUse): void {
     if (this.#doing.kind !== "idle") this.#refuse("enterDirect");
+    if (use === "tethered-play") this.#limp = false;
     this.#enter({ kind: "direct", use, since: this.#clock.now() });
   }
 
@@ -279,7 +283,15 @@ export class Activity {
     const doing = this.#doing;
     if (doing.kind !== "direct") this.#refuse("handDirect");
     if (doing.use === use) return;
+    if (use === "tethered-play") this.#limp = false;
     this.#doing = { ...doing, use };
+    this.#changed();
+  }
+
+  /** A servo was driven (a move or a synchronised move): the servos are no longer all limp. */
+  servosDriven(): void {
+    if (!this.#limp) return;
+    this.#limp = false;
     this.#changed();
   }
 
@@ -310,7 +322,12 @@ export class Activity {
   beginLimp(run: () => Promise<LimpResult>): Promise<LimpResult> {
     const halt = this.#halt;
     if (halt?.kind === "limp") return halt.done;
-    const done: Promise<LimpResult> = run().finally(() => this.#haltEnded(done));
+    const done: Promise<LimpResult> = run()
+      .then((result) => {
+        this.#limp = true;
+        return result;
+      })
+      .finally(() => this.#haltEnded(done));
     this.#setHalt({ kind: "limp", since: this.#clock.now(), done });
     return done;
   }
@@ -318,7 +335,10 @@ export class Activity {
   /** The link is gone: whatever was under way is over; a motion or sound's end is unknown. */
   disconnected(): void {
     const settle = this.#settle;
-    if (this.#doing.kind !== "idle") this.#enter({ kind: "idle", since: this.#clock.now() });
+    if (this.#doing.kind !== "idle" || this.#limp) {
+      this.#limp = false;
+      this.#enter({ kind: "idle", since: this.#clock.now() });
+    }
     settle?.(undefined);
   }
 

@@ -1,6 +1,7 @@
 import { BOOTLOADER_ACTIVE } from "../protocol/bootloader.ts";
 import { PacketParser } from "../protocol/packet-parser.ts";
 import type { Clock } from "../shared/clock.ts";
+import { Waitress } from "../shared/waitress.ts";
 import type { BootloaderPromptFacts } from "./errors.ts";
 
 /** The error and its facts live with the device's other errors (errors.ts): saying it loads no bootloader code. */
@@ -25,9 +26,12 @@ export class BootloaderPromptWatch {
   private first = 0;
   private last = 0;
   private packets = 0;
-  private wake: (() => void) | undefined;
+  /** `confirm`'s wait for the next prompt. */
+  private readonly next: Waitress<void>;
 
-  constructor(private readonly clock: Clock) {}
+  constructor(private readonly clock: Clock) {
+    this.next = new Waitress(clock);
+  }
 
   /** Every chunk received during the connect. */
   receive(bytes: Uint8Array): void {
@@ -39,7 +43,7 @@ export class BootloaderPromptWatch {
       this.prompts++;
     }
     this.packets += this.parser.push(bytes).length;
-    if (this.prompts >= BOOTLOADER_PROMPTS_NEEDED) this.wake?.();
+    if (this.prompts >= BOOTLOADER_PROMPTS_NEEDED) this.next.resolve();
   }
 
   /** The facts, when the bytes so far show a robot waiting in its bootloader. */
@@ -54,14 +58,7 @@ export class BootloaderPromptWatch {
    */
   async confirm(confirmMs = BOOTLOADER_PROMPT_CONFIRM_MS): Promise<BootloaderPromptFacts | undefined> {
     if (this.packets === 0 && this.prompts > 0 && this.prompts < BOOTLOADER_PROMPTS_NEEDED) {
-      await new Promise<void>((resolve) => {
-        const timer = this.clock.setTimeout(resolve, confirmMs);
-        this.wake = () => {
-          this.clock.clearTimeout(timer);
-          resolve();
-        };
-      });
-      this.wake = undefined;
+      await this.next.wait(undefined, { deadline: { ms: confirmMs, value: () => undefined } }).promise;
     }
     return this.found;
   }

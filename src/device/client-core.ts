@@ -1,4 +1,5 @@
-import { Activity } from "./activity.ts";
+import { Emitter } from "../shared/emitter.ts";
+import { Activity, type ActivitySnapshot } from "./activity.ts";
 import type { DirectMode } from "./direct-mode.ts";
 import type { RbcConnection } from "./rbc-connection.ts";
 import type { TetheredPlayControl } from "./tethered-play.ts";
@@ -11,6 +12,8 @@ import type { TetheredPlayControl } from "./tethered-play.ts";
 export interface ClientCore {
   readonly c: RbcConnection;
   readonly activity: Activity;
+  /** Every change of the activity machine, as its snapshot (`RbcClient.activityChanges`). */
+  readonly activityChanges: Emitter<ActivitySnapshot>;
   readonly servos: DirectMode;
   /** Tethered plays under way or queued, for Stop and Limp to end. */
   readonly plays: Set<TetheredPlayControl>;
@@ -26,11 +29,14 @@ export interface RunMemory {
 }
 
 /**
- * The core of a new client: the activity machine starts idle; the client state mirrors its motion and sound
- * (`playing`, `sounding`, which the panel shows); a lost or closed link ends whatever was under way.
+ * The core of a new client: the activity machine starts idle; every change of it is told (`activityChanges`),
+ * and the client state mirrors its motion, sound and motion started elsewhere (`playing`, `sounding`, `busy`);
+ * a lost or closed link ends whatever was under way.
  */
 export function createClientCore(c: RbcConnection, servos: DirectMode): ClientCore {
-  const activity = new Activity(c.clock, ({ doing }) =>
+  const activityChanges = new Emitter<ActivitySnapshot>();
+  const activity = new Activity(c.clock, (snapshot) => {
+    const { doing } = snapshot;
     c.setState({
       playing:
         doing.kind === "motion"
@@ -41,8 +47,9 @@ export function createClientCore(c: RbcConnection, servos: DirectMode): ClientCo
           ? { sound: doing.sound, startedAt: doing.startedAt, expectedMs: doing.expectedMs }
           : undefined,
       busy: doing.kind === "busy" ? { since: doing.since } : undefined,
-    }),
-  );
+    });
+    activityChanges.emit(snapshot);
+  });
   const runs: RunMemory = { sent7: false, durations: new Map() };
   c.stateChanges.on((state) => {
     if (state.mode === "disconnected") {
@@ -56,5 +63,5 @@ export function createClientCore(c: RbcConnection, servos: DirectMode): ClientCo
   c.mainLoopAnswered = () => {
     if (activity.doing.kind === "busy") activity.busyEnded();
   };
-  return { c, activity, servos, plays: new Set(), runs };
+  return { c, activity, activityChanges, servos, plays: new Set(), runs };
 }

@@ -1,10 +1,9 @@
-import { codeText } from "../i18n/outcomes/device.ts";
 import type { DirectUse } from "./activity-types.ts";
 import { RbcError } from "./errors.ts";
 
 /**
  * Why direct mode was refused or left because the robot is playing something (docs/protocol.md §3.6
- * [decision]). The sentences are the outcome catalogue's (src/i18n/outcomes), by code.
+ * [decision]). The outcome catalogue (src/i18n/outcomes) words them by code.
  */
 
 /**
@@ -19,7 +18,9 @@ export class RbcNotIdleError extends RbcError {
     /** How long the 0x16 of the probe went unanswered. */
     readonly waitedMs: number,
   ) {
-    super("not-idle", codeText("not-idle", "en"));
+    super("not-idle", `not idle: 0x16 unanswered for ${waitedMs} ms (${use})`, {
+      situation: { kind: "code" },
+    });
   }
 }
 
@@ -36,7 +37,9 @@ export class RbcStillPlayingError extends RbcError {
     /** The command in flight or last sent ("servo 12 limp"), for the technical detail. */
     readonly during: string,
   ) {
-    super("still-playing", codeText("still-playing", "en"));
+    super("still-playing", `still playing: ${kind} servo bus bytes during ${during}`, {
+      situation: { kind: "code" },
+    });
   }
 }
 
@@ -50,6 +53,6 @@ export class RbcCannotLimpError extends RbcError {
     /** How long the 7's reply was waited for. */
     readonly waitedMs: number,
   ) {
-    super("cannot-limp", codeText("cannot-limp", "en"));
+    super("cannot-limp", `cannot limp: no reply to 7 within ${waitedMs} ms`, { situation: { kind: "code" } });
   }
 }

@@ -1,4 +1,3 @@
-import { directModeNeededText, servoRangeText } from "../i18n/outcomes/device.ts";
 import { HUNO_BASIC_POSTURE, HUNO_SERVO_IDS, safeRange } from "../protocol/servo-limits.ts";
 import {
   WCK_MAX_POSITION,
@@ -32,10 +31,13 @@ export class DirectMode {
   // Private fields (not TypeScript `private`): the host is the client's conversation, which must stay out of reach.
   readonly #host: DirectModeHost;
   readonly #raw: RawChannel;
+  /** Told when a move or a synchronised move is sent (a servo is driven: it is no longer limp). */
+  readonly #driven: (() => void) | undefined;
 
-  constructor(host: DirectModeHost, raw: RawChannel) {
+  constructor(host: DirectModeHost, raw: RawChannel, driven?: () => void) {
     this.#host = host;
     this.#raw = raw;
+    this.#driven = driven;
   }
 
   /** The safe range of servo `id` (docs/protocol.md §5 for 0-15; other ids get the full 0-254). */
@@ -46,9 +48,17 @@ export class DirectMode {
   move(id: number, position: number, torque: number): Promise<ServoStatus> {
     const { min, max } = DirectMode.safeRange(id);
     if (!Number.isInteger(position) || position < min || position > max) {
-      return Promise.reject(new RbcInvalidArgumentError(servoRangeText(id, { min, max }, position, "en")));
+      return Promise.reject(
+        new RbcInvalidArgumentError(undefined, { kind: "servo-range", id, min, max, position }),
+      );
     }
-    return this.ask(id, () => wckMove(id, position, torque), `move servo ${id} to ${position}`);
+    return this.ask(
+      id,
+      () => wckMove(id, position, torque),
+      `move servo ${id} to ${position}`,
+      undefined,
+      true,
+    );
   }
 
   read(id: number): Promise<ServoStatus> {
@@ -96,13 +106,12 @@ export class DirectMode {
     positions.forEach((p, id) => {
       const { min, max } = DirectMode.safeRange(id);
       if (p < min || p > max) {
-        throw new RbcInvalidArgumentError(
-          `Servo ${id} may only move within ${min}-${max}; nothing was sent.`,
-        );
+        throw new RbcInvalidArgumentError(undefined, { kind: "servo-move-range", id, min, max });
       }
     });
     return this.#host.exclusive(async () => {
       this.requireDirect();
+      this.#driven?.();
       await this.#raw.exchange(wckSyncMove(positions, speed), {
         need: 0,
         timeoutMs: 0,
@@ -139,17 +148,22 @@ export class DirectMode {
     return { confirmed, silent };
   }
 
-  private ask(id: number, build: () => Uint8Array, note: string, epoch?: number): Promise<ServoStatus> {
+  private ask(
+    id: number,
+    build: () => Uint8Array,
+    note: string,
+    epoch?: number,
+    drives = false,
+  ): Promise<ServoStatus> {
     let packet: Uint8Array;
     try {
       packet = build();
     } catch (e) {
-      return Promise.reject(
-        new RbcInvalidArgumentError(`${e instanceof Error ? e.message : e} Nothing was sent.`),
-      );
+      return Promise.reject(new RbcInvalidArgumentError(undefined, { kind: "not-encoded" }, e));
     }
     return this.#host.exclusive(async () => {
       this.requireDirect();
+      if (drives) this.#driven?.();
       const reply = await this.#raw.exchange(packet, {
         need: 2,
         timeoutMs: this.#host.timeouts.quickMs,
@@ -157,7 +171,11 @@ export class DirectMode {
       });
       // Servo replies carry no checksum; a position above 254 can only be noise on the line.
       if (reply[1]! > WCK_MAX_POSITION) {
-        throw new RbcBadReplyError(`Servo ${id} answered an impossible position (${reply[1]}); try again.`);
+        throw new RbcBadReplyError(undefined, undefined, {
+          kind: "servo-impossible-position",
+          id,
+          position: reply[1]!,
+        });
       }
       return { id, load: reply[0]!, position: reply[1]! };
     }, epoch);
@@ -165,7 +183,7 @@ export class DirectMode {
 
   private requireDirect(): void {
     if (this.#host.mode !== "direct") {
-      throw new RbcError("wrong-mode", directModeNeededText("en"));
+      throw new RbcError("wrong-mode", undefined, { situation: { kind: "direct-mode-needed" } });
     }
   }
 }

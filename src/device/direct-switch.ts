@@ -1,4 +1,3 @@
-import { codeText } from "../i18n/outcomes/device.ts";
 import { COMMANDS } from "../protocol/commands.ts";
 import { EXIT_DIRECT_MODE } from "../protocol/wck.ts";
 import type { DirectUse } from "./activity.ts";
@@ -115,7 +114,7 @@ async function fenceServoBus(core: ClientCore): Promise<void> {
     c.parser.reset();
     if (activity.direct) activity.exitDirect();
     // Not the servo's timeout (callers take that for a silent servo): the robot itself did not answer.
-    throw e instanceof RbcTimeoutError ? new RbcError("timeout", codeText("timeout", "en"), { cause: e }) : e;
+    throw e instanceof RbcTimeoutError ? new RbcError("timeout", undefined, { cause: e }) : e;
   }
   c.setState({ mode: "direct" });
 }

@@ -1,28 +1,13 @@
-import {
-  codeText,
-  inBootloaderRecoverText,
-  inBootloaderText,
-  timeoutText,
-  zerosBackupFailedText,
-  zerosBackupKeptText,
-} from "../i18n/outcomes/device.ts";
-import { linkReasonText } from "../i18n/outcomes/link-words.ts";
-import {
-  busyReadText,
-  emptySlotText,
-  noMemoryReadText,
-  runNoReplyText,
-  runReportText,
-  stopNoReplyText,
-} from "../i18n/outcomes/run-words.ts";
-import { uploadFailureText } from "../i18n/outcomes/upload-words.ts";
-import type { LinkFacts } from "../link/transport.ts";
 import type { RunNoReply, RunReport } from "./run-outcome.ts";
+import type { RbcSituation } from "./situation.ts";
+
+export type { FrameIndex, RbcSituation } from "./situation.ts";
 
 /**
- * Failures of RBC operations, as typed errors with a stable `code`, the facts a person needs (fields), and a
- * message that says what happened and what to do next. Fixed sentences come from the outcome catalogue
- * (src/i18n/outcomes), which says the same outcome in Korean from the same code and facts.
+ * Failures of RBC operations, as typed errors with a stable `code` and the facts a person needs (fields, and
+ * `situation`). Their `message` is a short technical English line for logs and stack traces; the outcome
+ * catalogue (src/i18n/outcomes/error-text.ts: `errorText`) words each error for a person, in English and Korean,
+ * from its code and facts.
  */
 
 export type RbcErrorCode =
@@ -51,14 +36,33 @@ export type RbcErrorCode =
   | "servo-silent"
   | "not-supported";
 
+/** "cancelled: motion-not-started motion=12 by=stop": the technical line of an error worded from its facts. */
+function technicalLine(code: RbcErrorCode, situation: RbcSituation): string {
+  const { kind, ...facts } = situation;
+  const said = Object.entries(facts).map(([k, v]) => `${k}=${typeof v === "object" ? JSON.stringify(v) : v}`);
+  return kind === "code" ? code : [`${code}: ${kind}`, ...said].join(" ");
+}
+
 export class RbcError extends Error {
   override name = "RbcError";
+  /**
+   * What the error is about, as facts the outcome catalogue words. Undefined when its class carries the facts
+   * (`RbcTimeoutError`, `RbcUploadError`, … which `errorText` knows), or when `message` is words of its own
+   * (the link's report of a port): an English reader is then shown `message` as it is.
+   */
+  readonly situation: RbcSituation | undefined;
+  /**
+   * @param message The device's own English sentence; without it the error is worded from its code and
+   *   `options.situation`, and `message` is a technical line built from them.
+   */
   constructor(
     readonly code: RbcErrorCode,
-    message: string,
-    options?: { cause?: unknown },
+    message?: string,
+    options?: { cause?: unknown; situation?: RbcSituation },
   ) {
-    super(message, options);
+    const situation = options?.situation ?? (message === undefined ? { kind: "code" as const } : undefined);
+    super(message ?? technicalLine(code, situation ?? { kind: "code" }), { cause: options?.cause });
+    this.situation = situation;
   }
 }
 
@@ -69,21 +73,25 @@ export class RbcTimeoutError extends RbcError {
     readonly command: string,
     readonly waitedMs: number,
   ) {
-    super("timeout", timeoutText(command, waitedMs, "en"));
+    super("timeout", `no reply to ${command} within ${waitedMs} ms`);
   }
 }
 
 export class RbcDisconnectedError extends RbcError {
   override name = "RbcDisconnectedError";
-  constructor(message = codeText("disconnected", "en"), cause?: unknown) {
-    super("disconnected", message, { cause });
+  /**
+   * @param message A technical line, or undefined: the `situation` (or the code) says it.
+   * @param situation What is known: the link's own report, a `close()`.
+   */
+  constructor(message?: string, cause?: unknown, situation?: RbcSituation) {
+    super("disconnected", message, { cause, situation });
   }
 }
 
 export class RbcNotConnectedError extends RbcError {
   override name = "RbcNotConnectedError";
   constructor() {
-    super("not-connected", codeText("not-connected", "en"));
+    super("not-connected");
   }
 }
 
@@ -98,10 +106,8 @@ export class RbcPortError extends RbcError {
     super(code, message, { cause });
   }
 
-  static fromLink(e: { code: string; message: string; facts?: LinkFacts }): RbcPortError {
-    // The link's reason in the outcome catalogue's words; an error made without one keeps its message.
-    const said = e.facts === undefined ? undefined : linkReasonText(e.facts, "en");
-    return new RbcPortError(e.code === "port-busy" ? "port-busy" : "port-unavailable", said ?? e.message, e);
+  static fromLink(e: { code: string; message: string }): RbcPortError {
+    return new RbcPortError(e.code === "port-busy" ? "port-busy" : "port-unavailable", e.message, e);
   }
 }
 
@@ -109,17 +115,18 @@ export class RbcPortError extends RbcError {
 export class RbcRejectedError extends RbcError {
   override name = "RbcRejectedError";
   constructor(
-    message: string,
+    message: string | undefined,
     readonly deviceErrorCode?: number,
+    situation?: RbcSituation,
   ) {
-    super("rejected", message);
+    super("rejected", message, { situation });
   }
 }
 
 export class RbcBadReplyError extends RbcError {
   override name = "RbcBadReplyError";
-  constructor(message: string, cause?: unknown) {
-    super("bad-reply", message, { cause });
+  constructor(message: string | undefined, cause?: unknown, situation?: RbcSituation) {
+    super("bad-reply", message, { cause, situation });
   }
 }
 
@@ -129,19 +136,22 @@ export class RbcCancelledError extends RbcError {
    * @param by What cancelled it, when that is known for certain (Stop's or Limp's own cancel of a waiting
    *   download, or of a turn queued before it: `RbcConnection.cancelQueued`); undefined otherwise (an abort
    *   signal).
+   * @param situation What was cancelled, for the outcome catalogue (instead of a `message`).
    */
   constructor(
-    message = codeText("cancelled", "en"),
+    message?: string,
     readonly by?: "stop" | "limp",
+    situation?: RbcSituation,
   ) {
-    super("cancelled", message);
+    super("cancelled", message, { situation });
   }
 }
 
 export class RbcInvalidArgumentError extends RbcError {
   override name = "RbcInvalidArgumentError";
-  constructor(message: string) {
-    super("invalid-argument", message);
+  /** @param message The device's own English sentence, or undefined with the `situation` to word. */
+  constructor(message: string | undefined, situation?: RbcSituation, cause?: unknown) {
+    super("invalid-argument", message, { situation, cause });
   }
 }
 
@@ -159,7 +169,7 @@ export class RbcInBootloaderError extends RbcError {
     readonly facts: BootloaderPromptFacts,
     cause?: unknown,
   ) {
-    super("in-bootloader", `${inBootloaderText(facts.prompts, "en")} ${inBootloaderRecoverText("en")}`, {
+    super("in-bootloader", `in bootloader: ${facts.prompts} prompts over ${facts.overMs} ms, no packet`, {
       cause,
     });
   }
@@ -234,7 +244,7 @@ export class RbcUploadError extends RbcError {
     super(code, message, { cause });
   }
 
-  /** The error for `facts`, its message in the outcome catalogue's English. */
+  /** The error for `facts`, worded by the outcome catalogue; its message is a technical line. */
   static of(
     code: "upload-failed" | "cancelled" | "disconnected",
     facts: UploadFailureFacts,
@@ -242,7 +252,7 @@ export class RbcUploadError extends RbcError {
   ): RbcUploadError {
     return new RbcUploadError(
       code,
-      uploadFailureText(facts, "en"),
+      `${facts.area} upload ${facts.stop}: ${facts.acknowledged} of ${facts.total} bytes acknowledged, ${facts.outcome}`,
       facts.acknowledged,
       facts.total,
       facts.outcome,
@@ -262,7 +272,7 @@ export class ZeroBackupError extends RbcError {
   constructor(cause: unknown) {
     super(
       "backup-failed",
-      zerosBackupFailedText(cause instanceof Error ? cause.message : String(cause), "en"),
+      `zeros backup not saved: ${cause instanceof Error ? cause.message : String(cause)}`,
       {
         cause,
       },
@@ -280,7 +290,7 @@ export class ZeroWriteFailedError extends RbcError {
     readonly reason: RbcError,
     readonly backupName: string,
   ) {
-    super(reason.code, `${reason.message} ${zerosBackupKeptText(backupName, "en")}`, { cause: reason });
+    super(reason.code, `${reason.message} (previous zeros saved in ${backupName})`, { cause: reason });
   }
 }
 
@@ -295,7 +305,7 @@ export class RbcBusyError extends RbcError {
     readonly command: string,
     readonly waitedMs: number,
   ) {
-    super("busy", busyReadText(command, waitedMs, "en"));
+    super("busy", `busy: no reply to ${command} within ${waitedMs} ms, the firmware version was answered`);
   }
 }
 
@@ -306,7 +316,7 @@ export class RbcBusyError extends RbcError {
 export class RbcEmptySlotError extends RbcRejectedError {
   override name = "RbcEmptySlotError";
   constructor(readonly motion: number) {
-    super(emptySlotText(motion, "en"), 3);
+    super(`run motion ${motion}: nothing stored under it (error 3)`, 3);
   }
 }
 
@@ -314,7 +324,7 @@ export class RbcEmptySlotError extends RbcRejectedError {
 export class RbcRunNotPlayedError extends RbcError {
   override name = "RbcRunNotPlayedError";
   constructor(readonly report: RunReport) {
-    super("not-played", runReportText(report, "en") ?? "");
+    super("not-played", `run motion ${report.motion}: ${report.verdict} after ${report.elapsedMs} ms`);
   }
 }
 
@@ -338,7 +348,8 @@ export class RbcRunNoReplyError extends RbcError {
           : facts.cause === "power-up"
             ? "motion-ignored"
             : "timeout";
-    super(code, stop ? stopNoReplyText(facts, "en") : runNoReplyText(facts, "en"), { cause });
+    const what = stop ? "stop (7)" : `run motion ${facts.motion}`;
+    super(code, `${what}: no reply within ${facts.waitedMs} ms (${facts.cause})`, { cause });
   }
 }
 
@@ -346,6 +357,6 @@ export class RbcRunNoReplyError extends RbcError {
 export class RbcNotSupportedError extends RbcError {
   override name = "RbcNotSupportedError";
   constructor(readonly command: string) {
-    super("not-supported", noMemoryReadText("en"));
+    super("not-supported", `${command} not answered by this firmware; nothing was sent`);
   }
 }

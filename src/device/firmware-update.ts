@@ -1,14 +1,5 @@
 // Over 400 lines: one conversation with the bootloader (its timers, the per-line deadline, flow control,
 // cancellation and what the flash holds after each failure), which reads best in one place.
-import {
-  type FirmwareFailureFacts,
-  type FirmwareNotice,
-  firmwareFailureText,
-  firmwareNoticeText,
-  firmwareResultText,
-  firmwareSummaryText,
-} from "../i18n/outcomes/firmware/firmware-words.ts";
-import { lowerErrorText } from "../i18n/outcomes/lower-error-text.ts";
 import type { Transport } from "../link/transport.ts";
 import {
   BootloaderDialogue,
@@ -25,6 +16,7 @@ import { type IntelHexImage, parseIntelHex } from "../protocol/intel-hex.ts";
 import { encodePacket } from "../protocol/packet.ts";
 import { PacketParser } from "../protocol/packet-parser.ts";
 import { type Clock, realClock, sleep, type TimerId } from "../shared/clock.ts";
+import { Waitress } from "../shared/waitress.ts";
 import {
   RbcBadReplyError,
   RbcDisconnectedError,
@@ -121,10 +113,22 @@ export interface FirmwareUpdateResult {
   linesPerSecond: number;
 }
 
+/** What a failed or cancelled update knows: what went wrong, what the flash holds, and where and how long. */
+export interface FirmwareUpdateFacts {
+  readonly failure: BootloaderFailure;
+  readonly holds: RobotHolds;
+  /** The file's line (1-based) the failure is about, when there is one. */
+  readonly line?: number | undefined;
+  /** How long the update waited for the answer that did not come, when it waited. */
+  readonly waitedMs?: number | undefined;
+  /** How many times a line was sent before a checksum failure gave up (MAX_LINE_RESENDS + 1). */
+  readonly tries?: number | undefined;
+}
+
 /**
  * A failed or cancelled update: `failure` says what went wrong, `holds` what the robot's flash holds now, with
- * the facts (`line`, `waitedMs`, `tries`). Its message is the outcome catalogue's English
- * (src/i18n/outcomes: `firmwareFailureText`), which `rbc flash` and the panel show in either language.
+ * the facts (`line`, `waitedMs`, `tries`). The outcome catalogue words it (src/i18n/outcomes:
+ * `firmwareFailureText`) for `rbc flash` and the panel; its message is a technical line.
  */
 export class FirmwareUpdateError extends RbcError {
   override name = "FirmwareUpdateError";
@@ -136,8 +140,16 @@ export class FirmwareUpdateError extends RbcError {
   readonly waitedMs: number | undefined;
   /** How many times the line was sent before a checksum failure gave up. */
   readonly tries: number | undefined;
-  constructor(facts: FirmwareFailureFacts, cause?: unknown) {
-    super(errorCodeOf(facts.failure), firmwareFailureText(facts, "en"), { cause });
+  constructor(facts: FirmwareUpdateFacts, cause?: unknown) {
+    const where = facts.line === undefined ? "" : ` at line ${facts.line}`;
+    const waited = facts.waitedMs === undefined ? "" : ` after ${facts.waitedMs} ms`;
+    super(
+      errorCodeOf(facts.failure),
+      `firmware update ${facts.failure}${where}${waited}; robot holds ${facts.holds}`,
+      {
+        cause,
+      },
+    );
     this.failure = facts.failure;
     this.holds = facts.holds;
     this.line = facts.line;
@@ -228,41 +240,26 @@ export function transportFirmwareIo(
       transport.onStatus((e) => {
         if (e.status === "lost") listener();
       }),
-    readFirmwareVersion: () =>
-      new Promise((resolve, reject) => {
-        const spec = COMMANDS.readFirmwareVersion;
-        const waitMs = options.answerMs ?? 400;
-        const parser = new PacketParser();
-        const done = () => {
-          off();
-          clock.clearTimeout(timer);
-        };
-        const off = transport.onData((bytes) => {
-          for (const packet of parser.push(bytes)) {
-            if (packet.type !== spec.type) continue;
-            done();
-            try {
-              resolve(spec.decode(packet.contents));
-            } catch (e) {
-              reject(
-                new RbcBadReplyError(
-                  lowerErrorText(e, "en") ?? (e instanceof Error ? e.message : String(e)),
-                  e,
-                ),
-              );
-            }
-            return;
-          }
-        });
-        const timer = clock.setTimeout(() => {
-          done();
-          reject(new RbcTimeoutError(spec.name, waitMs));
-        }, waitMs);
-        write(encodePacket(spec.type, spec.request(undefined))).catch((e: unknown) => {
-          done();
-          reject(e);
-        });
-      }),
+    readFirmwareVersion: () => {
+      const spec = COMMANDS.readFirmwareVersion;
+      const waitMs = options.answerMs ?? 400;
+      const parser = new PacketParser();
+      const reply = new Waitress<ReturnType<typeof spec.decode>>(clock).wait(undefined, {
+        deadline: { ms: waitMs, error: () => new RbcTimeoutError(spec.name, waitMs) },
+      });
+      const off = transport.onData((bytes) => {
+        const packet = parser.push(bytes).find((p) => p.type === spec.type);
+        if (!packet) return;
+        try {
+          reply.resolve(spec.decode(packet.contents));
+        } catch (e) {
+          reply.reject(new RbcBadReplyError(e instanceof Error ? e.message : String(e), e));
+        }
+      });
+      reply.promise.then(off, off);
+      write(encodePacket(spec.type, spec.request(undefined))).catch(reply.reject);
+      return reply.promise;
+    },
   };
 }
 
@@ -448,32 +445,4 @@ function runDialogue(
     options.onAskPowerCycle?.();
     after([]);
   });
-}
-
-/**
- * What the panel and `rbc flash` say before a firmware update (docs/protocol.md §11 [decision]), in English (the
- * outcome catalogue's words; `firmwareNoticeText` gives them in either language).
- */
-export const FIRMWARE_NOTICES: Readonly<Record<FirmwareNotice, string>> = {
-  experimental: firmwareNoticeText("experimental", "en"),
-  recovery: firmwareNoticeText("recovery", "en"),
-  keepPowered: firmwareNoticeText("keepPowered", "en"),
-  askPowerCycle: firmwareNoticeText("askPowerCycle", "en"),
-  demoRestarts: firmwareNoticeText("demoRestarts", "en"),
-};
-
-/** "16,384 bytes at 0x00000-0x03FFF: 64 flash pages, 1,025 lines (46,137 bytes to send)". */
-export function firmwareFileSummary(summary: IntelHexImage["summary"]): string {
-  return firmwareSummaryText(summary, "en");
-}
-
-/**
- * The result in a sentence: "Firmware updated: the robot now reports 2.50 (was 2.23). 4,097 lines in 83 s."
- * `before` is the version the robot reported before the update, when it answered then.
- */
-export function firmwareResultSentence(
-  result: FirmwareUpdateResult,
-  before: { major: number; minor: number } | undefined,
-): string {
-  return firmwareResultText(result, before, "en");
 }

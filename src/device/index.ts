@@ -1,5 +1,3 @@
-/** The outcome catalogue's entries for the device's errors (src/i18n/outcomes), under their earlier name. */
-export { deviceOutcomeMessages as deviceErrorMessages } from "../i18n/outcomes/messages.ts";
 export {
   ActivityRefusedError,
   type ActivitySnapshot,
@@ -38,7 +36,6 @@ export {
   type FileUploadOptions,
   type FileUploadResult,
   motionPayload,
-  UPLOAD_NOTICES,
   type UploadPhase,
 } from "./motion-upload.ts";
 export { RbcUnexpectedAckError } from "./raw-channel.ts";
@@ -75,7 +72,6 @@ export {
   type RobotShelf,
   reconcile,
   recordUpload,
-  remoteKeyWords,
   type ShelfDrop,
   type ShelfSlot,
   shelfDurationMs,

@@ -1,4 +1,3 @@
-import { cancelledByLimpText } from "../i18n/outcomes/device.ts";
 import { BASIC_POSTURE_MOTION } from "../protocol/catalog.ts";
 import { COMMANDS } from "../protocol/commands.ts";
 import { EXIT_DIRECT_MODE } from "../protocol/wck.ts";
@@ -49,7 +48,7 @@ export async function runLimp(core: ClientCore): Promise<LimpResult> {
     throw new RbcCannotLimpError(SCENE_END_MS + c.timeouts.marginMs);
   }
   const sound = activity.sound;
-  c.failPending(new RbcCancelledError(cancelledByLimpText("en"), "limp"));
+  c.failPending(new RbcCancelledError(undefined, "limp", { kind: "cancelled-by", by: "limp" }));
   return c.exclusive(async () => {
     if (c.mode === "direct") {
       activity.handDirect("limp");
@@ -79,10 +78,7 @@ export async function runLimp(core: ClientCore): Promise<LimpResult> {
     await c.writeRaw(EXIT_DIRECT_MODE, "leave direct mode (blind)").catch(() => {});
     activity.exitDirect();
     c.setMode("packet");
-    throw new RbcError(
-      "timeout",
-      "Limp: the robot did not switch to servo control, so its servos could not be made limp. Switch the robot off.",
-    );
+    throw new RbcError("timeout", undefined, { situation: { kind: "limp-no-servo-control" } });
   }, epoch);
 }
 

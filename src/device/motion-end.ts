@@ -2,6 +2,7 @@ import { BASIC_POSTURE_MOTION } from "../protocol/catalog.ts";
 import { COMMANDS } from "../protocol/commands.ts";
 import { encodePacket } from "../protocol/packet.ts";
 import type { Clock } from "../shared/clock.ts";
+import { Waitress } from "../shared/waitress.ts";
 import type { Stop7Sender } from "./activity.ts";
 import type { ClientCore } from "./client-core.ts";
 
@@ -109,12 +110,10 @@ export function awaitPostureAfterEnd(core: ClientCore): void {
 
 /** `p`'s value, or undefined when it rejects or `ms` passes first (undefined `ms`: no limit). */
 function within<T>(clock: Clock, p: Promise<T>, ms: number | undefined): Promise<T | undefined> {
-  return new Promise<T | undefined>((resolve) => {
-    const timer = ms === undefined ? undefined : clock.setTimeout(() => resolve(undefined), ms);
-    const done = (value: T | undefined) => {
-      if (timer !== undefined) clock.clearTimeout(timer);
-      resolve(value);
-    };
-    p.then(done, () => done(undefined));
-  });
+  const wait = new Waitress<T | undefined>(clock).wait(
+    undefined,
+    ms === undefined ? {} : { deadline: { ms, value: () => undefined } },
+  );
+  p.then(wait.resolve, () => wait.resolve(undefined));
+  return wait.promise;
 }

@@ -1,4 +1,3 @@
-import { cancelledByLimpText, codeText, motionNotStartedText } from "../i18n/outcomes/device.ts";
 import { BASIC_POSTURE_MOTION, downloadSlotOf } from "../protocol/catalog.ts";
 import { COMMANDS } from "../protocol/commands.ts";
 import { encodePacket } from "../protocol/packet.ts";
@@ -52,7 +51,7 @@ export async function runMotionReport(
 ): Promise<RunReport> {
   const { c, activity, runs } = core;
   if (!Number.isInteger(motion) || motion < 0 || motion > 63) {
-    throw new RbcInvalidArgumentError(`Motion number must be 0-63, got ${motion}. Nothing was sent.`);
+    throw new RbcInvalidArgumentError(undefined, { kind: "motion-number-range", motion });
   }
   const knownMs = options.expectedMs ?? builtInDurationMs(motion) ?? runs.durations.get(motion);
   const expectedMs = knownMs ?? c.timeouts.unknownMotionMs;
@@ -74,7 +73,7 @@ export async function runMotionReport(
     // Stop (or Limp) came during those reads (or the wait for the others): the motion is not started.
     if (epoch !== c.epoch) {
       const by = c.cancelledBy(epoch);
-      throw new RbcCancelledError(motionNotStartedText(motion, by, "en"), by);
+      throw new RbcCancelledError(undefined, by, { kind: "motion-not-started", motion, by });
     }
     c.requirePacketMode(COMMANDS.runMotion.name);
     const sent7Before = runs.sent7;
@@ -122,11 +121,10 @@ export async function runMotionReport(
   });
   if (ended.report.echoed === BASIC_POSTURE_MOTION && motion !== BASIC_POSTURE_MOTION) {
     if (ended.by === "stop") {
-      throw new RbcCancelledError(
-        `Stopped by Stop: motion ${motion} ended at the end of its scene and the robot holds that pose (the robot answered 07).`,
-      );
+      throw new RbcCancelledError(undefined, undefined, { kind: "motion-stopped", motion });
     }
-    if (ended.by === "limp") throw new RbcCancelledError(cancelledByLimpText("en"));
+    if (ended.by === "limp")
+      throw new RbcCancelledError(undefined, undefined, { kind: "cancelled-by", by: "limp" });
   }
   return ended.report;
 }
@@ -230,7 +228,7 @@ function watchForEmptySlot(core: ClientCore): { emptySlot: boolean; dispose(): v
     answered = true;
     if (p.contents[0] === EMPTY_SLOT_ERROR) {
       watch.emptySlot = true;
-      c.failPending(new RbcError("motion-ignored", codeText("motion-ignored", "en")));
+      c.failPending(new RbcError("motion-ignored"));
     }
     return true;
   };

@@ -1,4 +1,3 @@
-import { type UploadNotice, uploadNoticeText } from "../i18n/outcomes/device.ts";
 import { downloadedMotionNumber } from "../protocol/catalog.ts";
 import type { MemoryArea } from "../protocol/commands.ts";
 import { motionImage } from "../protocol/motion-image.ts";
@@ -6,17 +5,6 @@ import type { RbmMotion } from "../protocol/rbm.ts";
 import { validateRbm } from "../protocol/rbm-validate.ts";
 import { RbcInvalidArgumentError } from "./errors.ts";
 import type { UploadOptions, UploadResult } from "./types.ts";
-
-/**
- * What an upload says, in one place for the panel and the CLI (docs/protocol.md §6.3 [decision] Safety): on a real
- * robot the experimental sentence comes before the first byte, with a confirmation, and the hold advice after.
- * English here; `uploadNoticeText` (src/i18n/outcomes) says them in either language.
- */
-export const UPLOAD_NOTICES: Readonly<Record<UploadNotice, string>> = {
-  experimental: uploadNoticeText("experimental", "en"),
-  holdAdvice: uploadNoticeText("holdAdvice", "en"),
-  action: uploadNoticeText("action", "en"),
-};
 
 export type UploadPhase = "resetting" | "checking" | "sending" | "verifying";
 
@@ -54,10 +42,12 @@ export interface UploadHost {
 export function motionPayload(motion: RbmMotion): Uint8Array {
   const { errors } = validateRbm(motion);
   if (errors.length > 0) {
-    const first = errors[0]!;
-    throw new RbcInvalidArgumentError(
-      `The motion "${motion.name}" has ${errors.length} error${errors.length === 1 ? "" : "s"} the robot would refuse (first: ${first.message}). Nothing was sent.`,
-    );
+    throw new RbcInvalidArgumentError(undefined, {
+      kind: "motion-invalid",
+      name: motion.name,
+      count: errors.length,
+      first: errors[0]!,
+    });
   }
   return motionImage(motion);
 }

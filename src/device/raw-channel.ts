@@ -1,7 +1,7 @@
-import { directModeNeededText } from "../i18n/outcomes/device.ts";
 // Over 400 lines: one set of rules for the raw link (download acknowledgements and the servo bus share the wire-
 // time and late-reply guards), kept together so that they cannot drift apart.
 import type { Clock } from "../shared/clock.ts";
+import { type Wait, Waitress } from "../shared/waitress.ts";
 import { RbcStillPlayingError } from "./direct-mode-errors.ts";
 import { RbcCancelledError, RbcError, RbcTimeoutError } from "./errors.ts";
 
@@ -10,16 +10,18 @@ export const WIRE_BYTE_MS = 10_000 / 115_200;
 /** Slack for the clock's grain (`performance.now()` is coarsened to 0.1 ms in some browsers). */
 const CLOCK_SLACK_MS = 0.1;
 
-interface RawWaiter {
+/** What an exchange waits for. The channel counts the bytes itself (`receive`) and then ends the wait. */
+interface RawMatcher {
   need: number;
-  accept: ((byte: number) => boolean) | undefined;
+  accept?: (byte: number) => boolean;
   /** Acknowledgement exchanges only: a matching byte before this clock time is early, not the answer. */
   notBefore?: number;
   /** A listening servo command (`servoListen`): every byte goes here, none is counted. */
   listen?: (byte: number) => void;
-  resolve: (bytes: Uint8Array) => void;
-  reject: (e: unknown) => void;
 }
+
+/** How `servoListen`'s wait ends at its cap (a line that never went quiet): not an error, an outcome. */
+const LISTEN_CAP = Symbol("cap");
 
 /**
  * An acknowledgement byte that the conversation did not call for: a second one for the same part, one with no
@@ -34,12 +36,8 @@ export class RbcUnexpectedAckError extends RbcError {
     /** The part the conversation was at ("chunk 4 (64 bytes)"), or after. */
     readonly where: string,
   ) {
-    super(
-      "bad-reply",
-      kind === "early"
-        ? `An unexpected acknowledgement arrived during ${where}, sooner than that part could have reached the robot.`
-        : `An unexpected acknowledgement arrived ${where}, when none was due.`,
-    );
+    // A technical line: the upload that meets it says it for a person (`RbcUploadError`, stop extra-ack/early-ack).
+    super("bad-reply", `unexpected acknowledgement (${kind}) ${where}`);
   }
 }
 
@@ -91,7 +89,8 @@ interface AckGuard {
  */
 export class RawChannel {
   private buffer: number[] = [];
-  private waiter: RawWaiter | undefined;
+  /** The exchange's wait, one at a time. */
+  private readonly waits: Waitress<Uint8Array, RawMatcher>;
   private guard: AckGuard | undefined;
   private bus: ServoBusGuard | undefined;
   /** The fault that ended the last servo-bus session, kept until direct mode is entered again. */
@@ -100,7 +99,14 @@ export class RawChannel {
   constructor(
     private readonly clock: Clock,
     private readonly write: (bytes: Uint8Array, note: string) => Promise<void>,
-  ) {}
+  ) {
+    this.waits = new Waitress(clock);
+  }
+
+  /** The exchange waiting for its reply, if any. */
+  private get waiter(): Wait<Uint8Array, RawMatcher> | undefined {
+    return this.waits.pending[0];
+  }
 
   receive(bytes: Uint8Array): void {
     if (this.guard) {
@@ -111,15 +117,14 @@ export class RawChannel {
       this.receiveServo(this.bus, bytes);
       return;
     }
-    if (!this.waiter) return;
+    const waiter = this.waiter;
+    if (!waiter) return;
+    const { accept, need } = waiter.matcher;
     for (const b of bytes) {
-      if (this.waiter.accept && !this.waiter.accept(b)) continue;
+      if (accept && !accept(b)) continue;
       this.buffer.push(b);
     }
-    if (this.buffer.length >= this.waiter.need) {
-      const reply = Uint8Array.from(this.buffer.splice(0, this.waiter.need));
-      this.waiter.resolve(reply);
-    }
+    if (this.buffer.length >= need) waiter.resolve(Uint8Array.from(this.buffer.splice(0, need)));
   }
 
   /**
@@ -256,46 +261,35 @@ export class RawChannel {
     const bus = await this.readyBus(options.signal);
     bus.last = options.note;
     const { note, capMs, close, signal } = options;
-    return new Promise<"closed" | "cap">((resolve, reject) => {
-      if (signal?.aborted) return reject(new RbcCancelledError());
-      this.buffer = [];
-      let timer = 0;
-      const end = (outcome: "closed" | "cap" | Error) => {
-        this.clock.clearTimeout(timer);
-        signal?.removeEventListener("abort", onAbort);
-        close.removeEventListener("abort", onClose);
-        if (this.waiter === waiter) this.waiter = undefined;
-        if (outcome instanceof Error) {
-          if (outcome instanceof RbcCancelledError) bus.unsettled = true;
-          reject(outcome);
-          return;
-        }
-        if (outcome === "cap") bus.unsettled = true;
-        resolve(outcome);
-      };
-      const onAbort = () => end(new RbcCancelledError());
-      const onClose = () => end("closed");
-      const waiter: RawWaiter = {
-        need: Number.POSITIVE_INFINITY,
-        accept: undefined,
-        listen: options.onByte,
-        resolve: () => end("closed"),
-        reject: (e) => end(e instanceof Error ? e : new RbcError("bad-reply", String(e))),
-      };
-      this.waiter = waiter;
-      signal?.addEventListener("abort", onAbort);
-      close.addEventListener("abort", onClose);
-      timer = this.clock.setTimeout(() => end("cap"), capMs);
-      this.write(bytes, note).catch((e) => waiter.reject(e));
-      if (close.aborted) onClose();
-    });
+    // Aborted while the bus was fenced: nothing is written, and the bus stays as settled as it was.
+    if (signal?.aborted) throw new RbcCancelledError();
+    const matcher = { need: Number.POSITIVE_INFINITY, listen: options.onByte };
+    const wait = this.open(bytes, note, matcher, { ms: capMs, error: () => LISTEN_CAP }, signal);
+    const onClose = () => wait.resolve(Uint8Array.of());
+    close.addEventListener("abort", onClose);
+    if (close.aborted) onClose();
+    try {
+      await wait.promise;
+      return "closed";
+    } catch (e) {
+      // A cap or a cancel leaves the bus unsettled: the next command is fenced first.
+      if (e === LISTEN_CAP || e instanceof RbcCancelledError) bus.unsettled = true;
+      if (e === LISTEN_CAP) return "cap";
+      throw e;
+    } finally {
+      close.removeEventListener("abort", onClose);
+    }
   }
 
   /** The servo bus, fenced first if a reply may still be on its way; throws when there is none to use. */
   private async readyBus(signal: AbortSignal | undefined): Promise<ServoBusGuard> {
     const bus = this.bus;
     if (!bus || bus.fault) {
-      throw bus?.fault ?? this.busFault ?? new RbcError("wrong-mode", directModeNeededText("en"));
+      throw (
+        bus?.fault ??
+        this.busFault ??
+        new RbcError("wrong-mode", undefined, { situation: { kind: "direct-mode-needed" } })
+      );
     }
     if (signal?.aborted) throw new RbcCancelledError();
     if (bus.unsettled) {
@@ -345,39 +339,33 @@ export class RawChannel {
   ): Promise<Uint8Array> {
     const { need, timeoutMs, note, signal } = options;
     if (need === 0) return this.write(bytes, note).then(() => new Uint8Array(0));
-    return new Promise<Uint8Array>((resolve, reject) => {
-      if (signal?.aborted) return reject(new RbcCancelledError());
-      this.buffer = [];
-      let timer = 0;
-      const onAbort = () => waiter.reject(new RbcCancelledError());
-      const finish = () => {
-        this.clock.clearTimeout(timer);
-        signal?.removeEventListener("abort", onAbort);
-        if (this.waiter === waiter) this.waiter = undefined;
-      };
-      const waiter: RawWaiter = {
-        need,
-        accept: options.accept,
-        notBefore: options.notBefore,
-        resolve: (b) => {
-          finish();
-          resolve(b);
-        },
-        reject: (e) => {
-          finish();
-          reject(e);
-        },
-      };
-      this.waiter = waiter;
-      signal?.addEventListener("abort", onAbort);
-      timer = this.clock.setTimeout(() => waiter.reject(new RbcTimeoutError(note, timeoutMs)), timeoutMs);
-      this.write(bytes, note).catch((e) => waiter.reject(e));
-    });
+    const matcher = { need, accept: options.accept, notBefore: options.notBefore };
+    const timeout = () => new RbcTimeoutError(note, timeoutMs);
+    return this.open(bytes, note, matcher, { ms: timeoutMs, error: timeout }, signal).promise;
+  }
+
+  /**
+   * Registers an exchange's wait (before the write), then writes `bytes`: a failed write ends the wait. A
+   * `signal` already aborted rejects the wait and writes nothing.
+   */
+  private open(
+    bytes: Uint8Array,
+    note: string,
+    matcher: RawMatcher,
+    deadline: { ms: number; error: () => unknown },
+    signal: AbortSignal | undefined,
+  ): Wait<Uint8Array, RawMatcher> {
+    const cancel = { signal, error: () => new RbcCancelledError() };
+    const wait = this.waits.wait(matcher, { cancel, deadline });
+    if (signal?.aborted) return wait; // rejected at once, nothing written
+    this.buffer = [];
+    this.write(bytes, note).catch((e) => wait.reject(e));
+    return wait;
   }
 
   /** Rejects the waiting exchange, if any. */
   fail(error: RbcError): void {
-    this.waiter?.reject(error);
+    this.waits.reject(error);
     this.buffer = [];
   }
 
@@ -389,20 +377,21 @@ export class RawChannel {
       else this.unasked(bus, "unasked");
       return;
     }
-    if (waiter.listen) {
-      for (const b of bytes) waiter.listen(b);
+    const { listen, notBefore, need } = waiter.matcher;
+    if (listen) {
+      for (const b of bytes) listen(b);
       return;
     }
-    if (waiter.notBefore !== undefined && this.clock.now() < waiter.notBefore) {
+    if (notBefore !== undefined && this.clock.now() < notBefore) {
       this.unasked(bus, "early");
       return;
     }
     this.buffer.push(...bytes);
-    if (this.buffer.length > waiter.need) {
+    if (this.buffer.length > need) {
       this.unasked(bus, "unasked");
       return;
     }
-    if (this.buffer.length === waiter.need) waiter.resolve(Uint8Array.from(this.buffer.splice(0)));
+    if (this.buffer.length === need) waiter.resolve(Uint8Array.from(this.buffer.splice(0)));
   }
 
   /** Bytes nobody asked for on the servo bus: direct mode ends and the exchange fails (see `guardServoBus`). */
@@ -421,7 +410,8 @@ export class RawChannel {
     for (const b of bytes) {
       if (b !== guard.byte) continue;
       const waiter = this.waiter;
-      if (waiter && (waiter.notBefore === undefined || now >= waiter.notBefore)) {
+      const notBefore = waiter?.matcher.notBefore;
+      if (waiter && (notBefore === undefined || now >= notBefore)) {
         waiter.resolve(Uint8Array.of(b));
         continue;
       }

@@ -4,11 +4,11 @@
  * comment callers read; splitting it would split the API's one page of documentation, not its logic.
  */
 
-import { platformWarning } from "../i18n/outcomes/plausibility.ts";
 import type { Transport } from "../link/transport.ts";
 import type { Motion } from "../motion/index.ts";
 import { COMMANDS, type MemoryArea } from "../protocol/commands.ts";
 import { type IntelHexImage, parseIntelHex } from "../protocol/intel-hex.ts";
+import { isKnownPlatform } from "../protocol/plausibility.ts";
 import { motionDurationMs, type RbmMotion } from "../protocol/rbm.ts";
 import type { Clock } from "../shared/clock.ts";
 import type { Emitter } from "../shared/emitter.ts";
@@ -81,7 +81,8 @@ export class RbcClient {
   constructor(transport: Transport, options: RbcClientOptions = {}) {
     const c = new RbcConnection(transport, options);
     this.#c = c;
-    this.servos = new DirectMode(c, c.raw);
+    // A servo driven in direct mode is no longer limp (the activity machine's `limp`).
+    this.servos = new DirectMode(c, c.raw, () => this.#core.activity.servosDriven());
     this.servoBus = new ServoBus(c, c.raw);
     this.#core = createClientCore(c, this.servos);
   }
@@ -181,8 +182,8 @@ export class RbcClient {
         throw e;
       });
     const platform = this.#c.state.platform ?? 0;
-    const unknownPlatform = platformWarning(platform);
-    const warnings: string[] = unknownPlatform === undefined ? [] : [unknownPlatform];
+    // A technical line; the outcome catalogue words it from the platform (`platformWarning` in src/i18n).
+    const warnings = isKnownPlatform(platform) ? [] : [`platform ${platform} is not one of 1-4`];
     return { firmware, platform, serialNumber, warnings };
   }
 
@@ -468,5 +469,10 @@ export class RbcClient {
    */
   get activity(): ActivitySnapshot {
     return this.#core.activity.snapshot;
+  }
+
+  /** Every change of `activity`, as its new snapshot (the panel keeps the latest in its store). */
+  get activityChanges(): Emitter<ActivitySnapshot> {
+    return this.#core.activityChanges;
   }
 }

@@ -4,10 +4,7 @@
  * operations on top of it live in their own files (motion-run.ts, stop.ts, limp.ts, …), its options in
  * connection-options.ts.
  */
-import { cancelledByText, codeText } from "../i18n/outcomes/device.ts";
-import { linkReasonText } from "../i18n/outcomes/link-words.ts";
-import { lowerErrorText } from "../i18n/outcomes/lower-error-text.ts";
-import { LinkError, type Transport, type TransportStatusEvent } from "../link/transport.ts";
+import { LinkError, type LinkFacts, type Transport, type TransportStatusEvent } from "../link/transport.ts";
 import { concatBytes } from "../protocol/bytes.ts";
 import { ABANDON_DOWNLOAD } from "../protocol/catalog.ts";
 import {
@@ -24,6 +21,7 @@ import { PacketParser } from "../protocol/packet-parser.ts";
 import { EXIT_DIRECT_MODE } from "../protocol/wck.ts";
 import { type Clock, realClock } from "../shared/clock.ts";
 import { Emitter } from "../shared/emitter.ts";
+import { Waitress, withDeadline } from "../shared/waitress.ts";
 import { BootloaderPromptWatch, RbcInBootloaderError } from "./bootloader-prompt.ts";
 import {
   DEFAULT_TIMEOUTS,
@@ -48,12 +46,13 @@ export type { RbcClientOptions, RbcTimeouts, RequestOptions } from "./connection
 
 import type { ClientMode, ClientState, LogEntry, RbcEvent, SubscriptionKind } from "./types.ts";
 
-interface PacketWaiter {
+/** What answers a request's wait: a reply of its type. */
+interface ReplyMatcher {
   type: number;
   /** Replies of the right type that this returns false for are ignored (e.g. a stopped motion's reply). */
   accept?: (p: Packet) => boolean;
-  resolve: (p: Packet) => void;
-  reject: (e: unknown) => void;
+  /** A quick request's write: its reply measures the link's round trip from then. */
+  roundTripFrom?: number;
 }
 
 export const SUBSCRIPTIONS = {
@@ -64,6 +63,9 @@ export const SUBSCRIPTIONS = {
 
 /** Quick requests the RBC answers from its main loop, so only once a playing motion ends (§3.6). */
 export const MAIN_LOOP_REPLY_TYPES: ReadonlySet<number> = new Set([COMMANDS.readDistance.type]);
+
+/** `ClientState.reason` of a link lost without a word from the link (technical; the error is worded by code). */
+const LINK_LOST = "link lost (no reason given)";
 
 const SUBSCRIPTION_BY_TYPE = new Map<number, SubscriptionKind>(
   Object.entries(SUBSCRIPTIONS).map(([kind, spec]) => [spec.type, kind as SubscriptionKind]),
@@ -92,7 +94,8 @@ export class RbcConnection {
   readonly events = new Emitter<RbcEvent>();
   readonly parser: PacketParser;
   readonly raw: RawChannel;
-  private waiter: PacketWaiter | undefined;
+  /** The request in flight's wait for its reply (one at a time: `exclusive`). */
+  private readonly replies: Waitress<Packet, ReplyMatcher>;
   private queue: Promise<unknown> = Promise.resolve();
   /** Bumped by Stop and Limp (`cancelQueued`): queued operations from an older epoch are cancelled. */
   epoch = 0;
@@ -107,6 +110,8 @@ export class RbcConnection {
    */
   unsolicited: ((packet: Packet) => boolean | undefined) | undefined;
   private unlisten: Array<() => void> = [];
+  /** Why the link was lost last, as the link's facts (the catalogue words them), while disconnected. */
+  private lostCause: LinkFacts | undefined;
   /**
    * Types of quick requests whose reply may still arrive (the request timed out or was cancelled, or a reply
    * of that type came unasked). The next request of such a type is fenced first (see `fence`), so that a late
@@ -155,6 +160,7 @@ export class RbcConnection {
       maxContent: (type) => COMMAND_BY_TYPE.get(type)?.replySize ?? MAX_REPLY_CONTENT,
     });
     this.raw = new RawChannel(this.clock, (bytes, note) => this.writeRaw(bytes, note));
+    this.replies = new Waitress(this.clock, (p, m) => m.type === p.type && (m.accept?.(p) ?? true));
   }
 
   get state(): Readonly<ClientState> {
@@ -192,7 +198,9 @@ export class RbcConnection {
    * port that opens but where nothing answers as `RbcError("no-robot")`, so callers handle one error family.
    */
   async connect<T>(handshake: () => Promise<T>): Promise<T> {
-    if (this.mode !== "disconnected") throw new RbcError("wrong-mode", "Already connected.");
+    if (this.mode !== "disconnected") {
+      throw new RbcError("wrong-mode", undefined, { situation: { kind: "already-connected" } });
+    }
     this.setState({
       mode: "connecting",
       reason: undefined,
@@ -232,7 +240,7 @@ export class RbcConnection {
       await this.close();
       if (inBootloader) throw new RbcInBootloaderError(inBootloader, e);
       if (e instanceof RbcTimeoutError) {
-        throw new RbcError("no-robot", codeText("no-robot", "en"), { cause: e });
+        throw new RbcError("no-robot", undefined, { cause: e });
       }
       if (e instanceof LinkError) throw RbcPortError.fromLink(e);
       throw e;
@@ -251,7 +259,7 @@ export class RbcConnection {
       this.emitLog({ direction: "out", kind: "raw", name, bytes: farewell });
       await this.withTimeout(this.transport.write(farewell), this.timeouts.quickMs, "close").catch(() => {});
     }
-    this.failPending(new RbcDisconnectedError("The connection was closed."));
+    this.failPending(new RbcDisconnectedError(undefined, undefined, { kind: "connection-closed" }));
     for (const u of this.unlisten) u();
     this.unlisten = [];
     await this.transport.close();
@@ -288,7 +296,7 @@ export class RbcConnection {
   /** The error for a turn of `epoch` that Stop or Limp overtook: names the first of them after it. */
   cancelledSince(epoch: number): RbcCancelledError {
     const by = this.epochBy.get(epoch + 1) ?? "stop";
-    return new RbcCancelledError(cancelledByText(by, "en"), by);
+    return new RbcCancelledError(undefined, by, { kind: "cancelled-by", by });
   }
 
   /** Which of Stop or Limp began the first epoch after `epoch` (for a sentence of the operation it overtook). */
@@ -327,7 +335,9 @@ export class RbcConnection {
     try {
       contents = spec.request(args);
     } catch (e) {
-      throw e instanceof ProtocolError ? new RbcInvalidArgumentError(`${e.message} Nothing was sent.`) : e;
+      throw e instanceof ProtocolError
+        ? new RbcInvalidArgumentError(undefined, { kind: "not-encoded" }, e)
+        : e;
     }
     const timeoutFor = () => options.timeoutMs ?? this.timeoutFor(spec, args, options.expectedMs);
     timeoutFor(); // a row without a reply is refused before anything is sent
@@ -341,10 +351,7 @@ export class RbcConnection {
         try {
           return spec.decode(packet.contents);
         } catch (e) {
-          throw new RbcBadReplyError(
-            lowerErrorText(e, "en") ?? (e instanceof Error ? e.message : String(e)),
-            e,
-          );
+          throw new RbcBadReplyError(e instanceof Error ? e.message : String(e), e);
         }
       } catch (e) {
         const retryable = e instanceof RbcTimeoutError || e instanceof RbcBadReplyError;
@@ -394,51 +401,37 @@ export class RbcConnection {
   ) {
     // Only a quick reply measures the link: the others wait for the robot (a motion, a sound) as well.
     const quick = COMMAND_BY_TYPE.get(type)?.timeout === "quick";
-    return new Promise<Packet>((resolve, reject) => {
-      if (signal?.aborted) return reject(new RbcCancelledError());
-      let timer = 0;
-      let sentAt: number | undefined;
-      const onAbort = () =>
-        finish(() => {
-          if (send) this.expectLate(type);
-          reject(new RbcCancelledError(`Stopped waiting for "${name}".`));
-        });
-      const finish = (settle: () => void) => {
-        this.clock.clearTimeout(timer);
-        signal?.removeEventListener("abort", onAbort);
-        if (this.waiter === waiter) this.waiter = undefined;
-        settle();
-      };
-      const waiter: PacketWaiter = {
-        type,
-        accept,
-        resolve: (p) =>
-          finish(() => {
-            // Request written → its own reply complete. The fences guarantee that a reply of this type is
-            // this request's (no late one is outstanding), so the sample is never a retried or late reply's.
-            if (quick && sentAt !== undefined) this.roundTrip.sample(this.clock.now() - sentAt);
-            resolve(p);
-          }),
-        reject: (e) => finish(() => reject(e)),
-      };
-      this.waiter = waiter; // registered before the write
-      signal?.addEventListener("abort", onAbort);
-      timer = this.clock.setTimeout(() => {
-        this.stats.timeouts++;
-        if (quick) this.roundTrip.timedOut();
-        // Bytes came but no whole reply (a partial or garbled frame): the reply came damaged, it is not late.
-        const garbled = sentAt !== undefined && (this.parser.pending > 0 || this.lastDiscardAt >= sentAt);
-        // A partial frame is not this reply's any more; the reply itself may still come later.
-        this.parser.reset();
-        if (send && !(garbled && MAIN_LOOP_REPLY_TYPES.has(type))) this.expectLate(type, sentAt);
-        if (garbled && sentAt !== undefined) this.garbledAt = this.clock.now();
-        waiter.reject(new RbcTimeoutError(name, timeoutMs));
-      }, timeoutMs);
-      if (send) {
-        sentAt = this.clock.now();
-        this.writePacket(encodePacket(type, contents), type).catch((e) => waiter.reject(e));
-      }
-    });
+    if (signal?.aborted) return Promise.reject(new RbcCancelledError());
+    const sentAt = send ? this.clock.now() : undefined;
+    const roundTripFrom = quick ? sentAt : undefined;
+    const wait = this.replies.wait(
+      { type, accept, roundTripFrom }, // registered before the write
+      {
+        cancel: {
+          signal,
+          error: () => {
+            if (send) this.expectLate(type);
+            return new RbcCancelledError(undefined, undefined, { kind: "stopped-waiting", command: name });
+          },
+        },
+        deadline: {
+          ms: timeoutMs,
+          error: () => {
+            this.stats.timeouts++;
+            if (quick) this.roundTrip.timedOut();
+            // Bytes came but no whole reply (a partial or garbled frame): the reply came damaged, it is not late.
+            const garbled = sentAt !== undefined && (this.parser.pending > 0 || this.lastDiscardAt >= sentAt);
+            // A partial frame is not this reply's any more; the reply itself may still come later.
+            this.parser.reset();
+            if (send && !(garbled && MAIN_LOOP_REPLY_TYPES.has(type))) this.expectLate(type, sentAt);
+            if (garbled && sentAt !== undefined) this.garbledAt = this.clock.now();
+            return new RbcTimeoutError(name, timeoutMs);
+          },
+        },
+      },
+    );
+    if (send) this.writePacket(encodePacket(type, contents), type).catch((e) => wait.reject(e));
+    return wait.promise;
   }
 
   /**
@@ -508,11 +501,17 @@ export class RbcConnection {
       const lost = this._state.reason;
       if (!lost) throw new RbcNotConnectedError();
       throw new RbcDisconnectedError(
-        lost === codeText("disconnected", "en") ? lost : `${lost} Connect again.`,
+        undefined,
+        undefined,
+        lost === LINK_LOST
+          ? undefined
+          : { kind: "link-lost", reported: lost, cause: this.lostCause, advice: "connect-again" },
       );
     }
     if (this.mode === "direct") {
-      throw new RbcError("wrong-mode", `"${what}" needs the normal mode: leave direct servo control first.`);
+      throw new RbcError("wrong-mode", undefined, {
+        situation: { kind: "needs-normal-mode", command: what },
+      });
     }
   }
 
@@ -573,8 +572,12 @@ export class RbcConnection {
     }
     // A late main-loop reply pays its debt before any waiter sees it (docs/protocol.md §3.6: matched by count).
     if (this.payOwed(packet)) return;
-    if (this.waiter && this.waiter.type === packet.type && (this.waiter.accept?.(packet) ?? true)) {
-      this.waiter.resolve(packet);
+    const answered = this.replies.resolve(packet);
+    if (answered) {
+      // Request written → its own reply complete. The fences guarantee that a reply of this type is this
+      // request's (no late one is outstanding), so the sample is never a retried or late reply's.
+      const from = answered.matcher.roundTripFrom;
+      if (from !== undefined) this.roundTrip.sample(this.clock.now() - from);
       return;
     }
     // Anything else is a late, unexpected or side-channel reply: logged above, offered to `unsolicited`, and
@@ -588,12 +591,15 @@ export class RbcConnection {
 
   private onTransportStatus(event: TransportStatusEvent): void {
     if (event.status !== "lost") return;
-    // The link says what happened (its cause, in the outcome catalogue's words); without it, the catalogue's
-    // sentence for a lost link.
-    const said = event.cause === undefined ? undefined : linkReasonText(event.cause, "en");
-    const reason = said ?? codeText("disconnected", "en");
-    const message = said === undefined ? reason : `${said} Check the cable, then connect again.`;
-    this.failPending(new RbcDisconnectedError(message, event.error));
+    // The link says what happened (a technical line, and its facts for the catalogue); without it, the error is
+    // worded by its code (a lost link).
+    const reason = event.reason ?? LINK_LOST;
+    this.lostCause = event.cause;
+    const situation =
+      event.reason === undefined
+        ? undefined
+        : ({ kind: "link-lost", reported: reason, cause: event.cause, advice: "check-cable" } as const);
+    this.failPending(new RbcDisconnectedError(undefined, event.error, situation));
     this.subscription = undefined;
     this.setState({
       mode: "disconnected",
@@ -608,8 +614,7 @@ export class RbcConnection {
   }
 
   failPending(error: RbcError): void {
-    if (this.waiter) this.expectLate(this.waiter.type);
-    this.waiter?.reject(error);
+    for (const { type } of this.replies.reject(error)) this.expectLate(type);
     this.raw.fail(error);
   }
 
@@ -621,19 +626,7 @@ export class RbcConnection {
 
   /** Rejects with RbcTimeoutError if `p` has not settled within `ms` (for writes that expect no reply). */
   withTimeout<T>(p: Promise<T>, ms: number, name: string): Promise<T> {
-    return new Promise<T>((resolve, reject) => {
-      const timer = this.clock.setTimeout(() => reject(new RbcTimeoutError(name, ms)), ms);
-      p.then(
-        (v) => {
-          this.clock.clearTimeout(timer);
-          resolve(v);
-        },
-        (e) => {
-          this.clock.clearTimeout(timer);
-          reject(e);
-        },
-      );
-    });
+    return withDeadline(this.clock, p, { ms, error: () => new RbcTimeoutError(name, ms) });
   }
 
   sleep(ms: number): Promise<void> {

@@ -1,6 +1,4 @@
-import type { Locale } from "../i18n/locale.ts";
-import { remoteKeyText } from "../i18n/outcomes/remote-key.ts";
-import { downloadedMotionNumber, MAX_MOTIONS, MOTION_AREA_BYTES, remoteKeyOf } from "../protocol/catalog.ts";
+import { downloadedMotionNumber, MAX_MOTIONS, MOTION_AREA_BYTES } from "../protocol/catalog.ts";
 
 /**
  * The robot's shelf (issue 23 item 2): what this program uploaded into which download slot of which robot, so
@@ -98,13 +96,4 @@ export function shelfDurationMs(shelf: RobotShelf | undefined, motionNumber: num
 export async function imageHash(bytes: Uint8Array): Promise<string> {
   const digest = await crypto.subtle.digest("SHA-256", bytes as Uint8Array<ArrayBuffer>);
   return [...new Uint8Array(digest)].map((b) => b.toString(16).padStart(2, "0")).join("");
-}
-
-/**
- * The remote key that plays motion `motionNumber`, in words: "key 1", "* then 0" (docs/protocol.md §3.1), or ""
- * for a number no remote key plays. The shelf shows each motion by the number Run takes with this beside it.
- */
-export function remoteKeyWords(motionNumber: number, locale: Locale): string {
-  const key = remoteKeyOf(motionNumber);
-  return key ? remoteKeyText(key, locale) : "";
 }

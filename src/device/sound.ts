@@ -34,9 +34,7 @@ export function playSound(
   const { c, activity } = core;
   const expectedMs = Number.isInteger(sound) ? COMMANDS.runSound.expectedMs?.(sound) : undefined;
   if (expectedMs === undefined) {
-    return Promise.reject(
-      new RbcInvalidArgumentError(`Sound number must be 1-25, got ${sound}. Nothing was sent.`),
-    );
+    return Promise.reject(new RbcInvalidArgumentError(undefined, { kind: "sound-number-range", sound }));
   }
   return c.exclusive(async () => {
     c.requirePacketMode(COMMANDS.runSound.name);

@@ -1,4 +1,3 @@
-import { uploadCancelledByStopText } from "../i18n/outcomes/device.ts";
 import { BASIC_POSTURE_MOTION } from "../protocol/catalog.ts";
 import { COMMANDS } from "../protocol/commands.ts";
 import { probeBusy } from "./busy-probe.ts";
@@ -90,7 +89,7 @@ export async function runStop(core: ClientCore): Promise<StopActivityResult> {
   }
   // A download waits for the robot's acknowledgement of a chunk: end that wait now, as its Cancel would.
   if (upload && mode === "download")
-    c.failPending(new RbcCancelledError(uploadCancelledByStopText("en"), "stop"));
+    c.failPending(new RbcCancelledError(undefined, "stop", { kind: "upload-cancelled-by-stop" }));
   if (doing.kind === "sound") {
     const endsInMs = Math.max(0, doing.startedAt + doing.expectedMs - c.clock.now());
     result.sound = { number: doing.sound, endsInMs, confirmed: await doing.ended };

@@ -3,7 +3,7 @@
  * docs/tethered-play.md).
  */
 import type { PlayFrame, SceneRange } from "../motion/index.ts";
-import { RbcError } from "./errors.ts";
+import { RbcError, type RbcSituation } from "./errors.ts";
 
 export interface TetheredPlayOptions {
   /** The scenes to play (inclusive positions); the whole motion by default. */
@@ -71,14 +71,16 @@ export class TetheredPlayError extends RbcError {
   override name = "TetheredPlayError";
   constructor(
     code: "invalid-argument" | "timeout" | "disconnected",
-    message: string,
+    /** The technical line, or undefined: the `situation` says it. */
+    message: string | undefined,
     readonly framesSent: number,
     readonly totalFrames: number,
     readonly lastFrame: { scene: number; frame: number } | undefined,
     readonly holds: TetheredPlayHolds,
     cause?: unknown,
+    situation?: RbcSituation,
   ) {
-    super(code, message, { cause });
+    super(code, message, { cause, situation });
   }
 }
 

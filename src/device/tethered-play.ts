@@ -13,7 +13,6 @@
  * - Frame times are an absolute schedule on the client's clock (no drift); a frame the link is late for is
  *   sent at once and the lateness reported (`maxLateMs`).
  */
-import { motionRefusalText } from "../i18n/outcomes/motion/motion-words.ts";
 import type { Motion } from "../motion/index.ts";
 import { clampPosition, MotionError, PLATFORM_PF2, playFrames } from "../motion/index.ts";
 import { COMMANDS } from "../protocol/commands.ts";
@@ -27,6 +26,7 @@ import {
   RbcTimeoutError,
 } from "./errors.ts";
 import type { RbcConnection } from "./rbc-connection.ts";
+import type { RbcSituation } from "./situation.ts";
 import {
   byId,
   frameLabel,
@@ -62,7 +62,7 @@ export interface TetheredPlayHost {
 export function checkTetheredPlay(doc: Motion, options: TetheredPlayOptions): void {
   const platform = options.platform;
   if (platform !== undefined && !(Number.isInteger(platform) && platform >= 0 && platform <= 255)) {
-    throw refused(`The platform must be a whole number 0-255, got ${platform}.`);
+    throw refused({ kind: "play-platform", platform });
   }
   try {
     playFrames(doc, {
@@ -71,20 +71,21 @@ export function checkTetheredPlay(doc: Motion, options: TetheredPlayOptions): vo
       platform: platform ?? PLATFORM_PF2,
     });
   } catch (e) {
-    if (e instanceof MotionError) throw refused(motionRefusalText(e, "en"), e);
+    if (e instanceof MotionError) throw refused({ kind: "play-refused" }, e);
     throw e;
   }
 }
 
-function refused(message: string, cause?: unknown): TetheredPlayError {
+function refused(situation: RbcSituation, cause?: unknown): TetheredPlayError {
   return new TetheredPlayError(
     "invalid-argument",
-    `${message.replace(/\s+$/, "")} Nothing was sent to the robot.`,
+    undefined,
     0,
     0,
     undefined,
     "nothing-sent",
     cause,
+    situation,
   );
 }
 
@@ -138,14 +139,11 @@ export async function runTetheredPlay(
     if (signal.aborted) return result("stopped");
     if (read.silent.length > 0) {
       if (entered) await host.exitDirect().catch(() => {});
-      throw new TetheredPlayError(
-        "timeout",
-        `${servoList(read.silent)} did not answer in servo control, so ${read.silent.length === 1 ? "its" : "their"} position is not known (the synchronised move drives every servo from 0 to ${maxId}). Nothing was moved. Check the servo cables and that the robot is switched on.`,
-        0,
-        0,
-        undefined,
-        "nothing-sent",
-      );
+      throw new TetheredPlayError("timeout", undefined, 0, 0, undefined, "nothing-sent", undefined, {
+        kind: "play-servos-silent",
+        silent: read.silent,
+        maxId,
+      });
     }
     const plan = playFrames(doc, {
       range: options.range,
@@ -207,11 +205,13 @@ export async function runTetheredPlay(
     if (back.silent.length === busIds.length) {
       throw new TetheredPlayError(
         "timeout",
-        `All ${control.framesSent} frames were sent (the last: ${frameLabel(control.lastFrame!)}), but no servo answered afterwards, so whether the robot played them is not known. If it is powered, its servos hold the last frame they got. Check the robot and its cable.`,
+        undefined,
         control.framesSent,
         control.totalFrames,
         control.lastFrame,
         "last-frame",
+        undefined,
+        { kind: "play-unconfirmed", framesSent: control.framesSent, lastFrame: control.lastFrame! },
       );
     }
     const deviations = busIds
@@ -225,7 +225,7 @@ export async function runTetheredPlay(
     return done;
   } catch (e) {
     if (signal.aborted && e instanceof RbcCancelledError) return result("stopped");
-    if (e instanceof MotionError) throw refused(motionRefusalText(e, "en"), e);
+    if (e instanceof MotionError) throw refused({ kind: "play-refused" }, e);
     if (e instanceof RbcDisconnectedError) throw linkLost(control, e);
     throw e;
   } finally {
@@ -249,20 +249,17 @@ export function stoppedBeforeStart(doc: Motion): TetheredPlayResult {
 
 /** A lost link or a write that never completed, mid-play. */
 function linkLost(control: TetheredPlayControl, cause: unknown): TetheredPlayError {
-  const where =
-    control.lastFrame === undefined
-      ? "before the first frame"
-      : `after ${control.framesSent} of ${control.totalFrames} frames (the last: ${frameLabel(control.lastFrame)})`;
   const timedOut = cause instanceof RbcTimeoutError;
-  const what = timedOut ? "A frame could not be written within its time" : "The connection was lost";
+  const { framesSent, totalFrames, lastFrame } = control;
   return new TetheredPlayError(
     timedOut ? "timeout" : "disconnected",
-    `${what} during tethered play, ${where}. The robot's state is unknown: its servos may hold the last frame they got, or be limp if it lost power. Check the robot and the cable, then connect again.`,
-    control.framesSent,
-    control.totalFrames,
-    control.lastFrame,
+    undefined,
+    framesSent,
+    totalFrames,
+    lastFrame,
     "unknown",
     cause,
+    { kind: "play-link-lost", timedOut, framesSent, totalFrames, lastFrame },
   );
 }
 
@@ -316,8 +313,4 @@ async function readPose(
     silent = ids.filter((id) => pose[id] === undefined);
   }
   return { pose, silent };
-}
-
-function servoList(ids: readonly number[]): string {
-  return ids.length === 1 ? `Servo ${ids[0]}` : `Servos ${ids.slice(0, -1).join(", ")} and ${ids.at(-1)}`;
 }

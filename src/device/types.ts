@@ -4,7 +4,10 @@ export type ClientMode = "disconnected" | "connecting" | "packet" | "download" |
 
 export interface ClientState {
   mode: ClientMode;
-  /** Why the client is disconnected, for a person (set after a loss). */
+  /**
+   * Set after a loss: what the link reported (its own English), or a technical line when it said nothing. The
+   * failed requests' errors carry it (`RbcDisconnectedError`, situation `link-lost`) for the catalogue to word.
+   */
   reason?: string;
   /** The robot's mode from the platform byte of its last reply (1 HUNO, 2 DINO, 3 DOGY, 4 PF2). */
   platform?: number;
@@ -96,6 +99,9 @@ export interface DeviceIdentity {
 export interface RobotIdentity extends DeviceIdentity {
   /** Undefined when the robot does not answer 0x0C (some firmware builds never do): "not reported". */
   serialNumber: string | undefined;
-  /** Values that are reported as they are but look implausible (a platform outside 1-4). */
+  /**
+   * Values that are reported as they are but look implausible (a platform outside 1-4), as technical lines; the
+   * outcome catalogue words them from the facts (`platformWarning` in src/i18n).
+   */
   warnings: string[];
 }

@@ -1,4 +1,3 @@
-import { uploadCancelledEarlyText } from "../i18n/outcomes/upload-words.ts";
 import { xorBytes } from "../protocol/bytes.ts";
 import {
   ABANDON_DOWNLOAD,
@@ -71,11 +70,9 @@ export async function uploadFile(
   const total = payload.length;
   const areaBytes = area === "motion" ? MOTION_AREA_BYTES : ACTION_AREA_BYTES;
   if (total < 1 || total > areaBytes) {
-    throw new RbcInvalidArgumentError(
-      `A ${area} file must be 1-${areaBytes} bytes; this one is ${total}. Nothing was sent.`,
-    );
+    throw new RbcInvalidArgumentError(undefined, { kind: "file-size", area, max: areaBytes, total });
   }
-  if (signal?.aborted) throw new RbcCancelledError(uploadCancelledEarlyText(false, "en"));
+  if (signal?.aborted) throw new RbcCancelledError(undefined, undefined, { kind: "upload-cancelled-early" });
   const started = io.now();
   const footprint = memoryFootprint(total);
   const readFree = () => client.request(COMMANDS.readAvailableMemory, area);
@@ -86,9 +83,12 @@ export async function uploadFile(
   // [decision] A file fits when its bytes do (the rounding only moves the next file's start), as the simulator
   // decides too (docs/protocol.md §6.1).
   if (total > freeBefore) {
-    throw new RbcRejectedError(
-      `Not enough ${area} memory: the file has ${total} bytes, ${freeBefore} are free. Reset the ${area} memory (this forgets every downloaded ${area}) and try again. Nothing was sent.`,
-    );
+    throw new RbcRejectedError(undefined, undefined, {
+      kind: "not-enough-memory",
+      area,
+      total,
+      free: freeBefore,
+    });
   }
 
   // Read for each part: the quick timeout follows the link's measured round trip.

@@ -1,5 +1,3 @@
-import { zerosCancelledBeforeWriteText, zerosNotReadText } from "../i18n/outcomes/device.ts";
-import { zerosNotWrittenText } from "../i18n/outcomes/zero-words.ts";
 import { zeroProblems } from "../protocol/zeros.ts";
 import { createZerosBackup, type ZerosBackup, zerosBackupFileName } from "../protocol/zeros-backup.ts";
 import {
@@ -57,14 +55,14 @@ export async function writeZerosWithBackup(
 ): Promise<SafeZeroWrite> {
   const problems = zeroProblems(target);
   if (problems.length > 0) {
-    throw new RbcInvalidArgumentError(zerosNotWrittenText(problems, "en"));
+    throw new RbcInvalidArgumentError(undefined, { kind: "zeros-not-written", problems });
   }
   let current: number[];
   try {
     current = await client.readZeros();
   } catch (e) {
     if (!(e instanceof RbcError)) throw e;
-    throw new RbcError(e.code, `${zerosNotReadText("en")} ${e.message}`, { cause: e });
+    throw new RbcError(e.code, undefined, { cause: e, situation: { kind: "zeros-not-read" } });
   }
   if (target.length === current.length && current.every((v, i) => v === target[i])) {
     return { changed: false, current };
@@ -84,7 +82,7 @@ export async function writeZerosWithBackup(
     throw new ZeroBackupError(e);
   }
   if (options.signal?.aborted) {
-    throw new RbcCancelledError(zerosCancelledBeforeWriteText(backupName, "en"));
+    throw new RbcCancelledError(undefined, undefined, { kind: "zeros-cancelled-before-write", backupName });
   }
   options.onWrite?.();
   try {

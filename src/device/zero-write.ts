@@ -1,4 +1,3 @@
-import { zerosNotWrittenText } from "../i18n/outcomes/zero-words.ts";
 import { COMMANDS } from "../protocol/commands.ts";
 import { zeroProblems } from "../protocol/zeros.ts";
 import {
@@ -33,7 +32,7 @@ export async function writeZeros(c: RbcConnection, zeros: readonly number[]): Pr
   const written = copyZeroTable(zeros);
   const problems = zeroProblems(written);
   if (problems.length > 0) {
-    throw new RbcInvalidArgumentError(zerosNotWrittenText(problems, "en"));
+    throw new RbcInvalidArgumentError(undefined, { kind: "zeros-not-written", problems });
   }
   return c.exclusive(async () => {
     let echo: number[];
@@ -45,24 +44,17 @@ export async function writeZeros(c: RbcConnection, zeros: readonly number[]): Pr
       const stored = await c.request(COMMANDS.readZeros, undefined).catch(() => undefined);
       if (stored?.every((v, i) => v === written[i])) return { written, readBack: stored };
       if (!stored) {
-        throw new RbcError(
-          "timeout",
-          "The robot did not confirm the zero write and did not answer a read either; its stored zeros are unknown. Check the connection, then read them again before anything else.",
-        );
+        throw new RbcError("timeout", undefined, { situation: { kind: "zeros-write-unknown" } });
       }
-      throw new RbcRejectedError(
-        "The robot did not confirm the zero write, and reading them back shows the new values were not stored (the robot refuses a table it considers out of range).",
-      );
+      throw new RbcRejectedError(undefined, undefined, { kind: "zeros-write-refused" });
     }
     if (echo.some((v, i) => v !== written[i])) {
-      throw new RbcBadReplyError(
-        `The robot echoed different zeros (${echo.join(",")}); read them back to check.`,
-      );
+      throw new RbcBadReplyError(undefined, undefined, { kind: "zeros-echo-differs", echo });
     }
     const readBack = await c.request(COMMANDS.readZeros, undefined);
     if (readBack.some((v, i) => v !== written[i])) {
       throw new RbcVerifyError(
-        `Zeros were sent, but the robot reads back ${readBack.join(",")} instead of ${written.join(",")}.`,
+        `zeros read back ${readBack.join(",")} instead of ${written.join(",")}`,
         written,
         readBack,
       );

@@ -1,5 +1,5 @@
-import type { RbcErrorCode } from "../device/errors.ts";
 import type { Locale } from "../i18n/locale.ts";
+import type { LocalText, Said } from "../i18n/said.ts";
 import type { ClassState } from "./features/class/state.ts";
 import type { ConnectionState, KnownPort } from "./features/connection/state.ts";
 import { initialConnection } from "./features/connection/state.ts";
@@ -14,9 +14,10 @@ import type { DeviceInfoState } from "./features/robot/state.ts";
 import { initialDeviceInfo } from "./features/robot/state.ts";
 import type { SensorsState } from "./features/sensors/state.ts";
 import type { ServosState } from "./features/servos/state.ts";
+import type { ShelfState } from "./features/shelf/state.ts";
 import type { ZerosState } from "./features/zeros/state.ts";
 import { initialZeros } from "./features/zeros/state.ts";
-import { type Said, wordOf, wordsOf } from "./said.ts";
+import type { Notice, RunningLabel } from "./notices.ts";
 
 export type {
   ConnectionPhase,
@@ -28,61 +29,30 @@ export type {
 export type { LogViewState } from "./features/log/state.ts";
 export type { DeviceInfoState } from "./features/robot/state.ts";
 export type { ZerosState } from "./features/zeros/state.ts";
+// Where the features have always found them.
+export {
+  type Notice,
+  noticeMore,
+  noticeOf,
+  noticeText,
+  type RunningLabel,
+  runningWords,
+  type Tone,
+} from "./notices.ts";
 
 /**
  * Everything the panel shows, in one object (see store.ts). Views render from it; actions, controllers and the
- * session update it. Each feature (src/ui/features/<name>/) owns its part: its type, its initial value and
- * how it is reset. The features whose code loads with their view (motions, sensors, servos) keep their part
+ * session update it. Each feature (src/ui/features/<name>/) owns its part, its slice: its type, its initial value,
+ * its selector and patch, in the feature's state file, which never imports this file back; this file composes
+ * the slices (docs/architecture.md, "Features"). The features whose code loads with their view (motions, sensors, servos) keep their part
  * optional: undefined means "initial", filled in by the feature's own selector (`motionsOf`, `sensorsOf`,
  * `servosOf`), so the first page load never carries their code.
  */
 
-export type Tone = "info" | "ok" | "verified" | "warning" | "danger";
-
-/**
- * A plain sentence of what happened, with the technical detail one click away. A notice made with `noticeOf`
- * also keeps what it says (`said`: outcome codes and their facts): views word it in the language of the
- * moment (`noticeText`); `text` is its wording in the language it was made in.
- */
-export interface Notice {
-  tone: Tone;
-  text: string;
-  detail?: string;
-  /** The device outcome's code, when the notice says one (a failed connect's `in-bootloader` offers Recover). */
-  code?: RbcErrorCode;
-  said?: readonly Said[];
-  /**
-   * The technical detail as messages (the 7 sent, the 07 answered), worded when drawn like `said` and shown one
-   * click away, before `detail` (which stays in English: a device error's own sentence).
-   */
-  more?: readonly Said[];
-}
-
-/** A notice kept as messages (worded again after a language switch); `text` is their wording in `locale`. */
-export function noticeOf(tone: Tone, locale: Locale, sentences: readonly Said[], detail?: string): Notice {
-  return { tone, text: wordsOf(sentences, locale), said: sentences, ...(detail ? { detail } : {}) };
-}
-
-/** What a notice says in `locale`: worded from its messages when it has them, else as it was made. */
-export function noticeText(n: Notice, locale: Locale): string {
-  return n.said ? wordsOf(n.said, locale) : n.text;
-}
-
-/** The technical detail of a notice kept as messages (`more`), in `locale`; undefined when it has none. */
-export function noticeMore(n: Notice, locale: Locale): string | undefined {
-  return n.more && n.more.length > 0 ? wordsOf(n.more, locale) : undefined;
-}
-
-/**
- * The name of an operation under way ("Reading zeros"), kept as a message so the top bar and the busy
- * sentences word it in the language of the moment. A plain string is a name already worded (features not yet
- * converted).
- */
-export type RunningLabel = string | Said;
-
-/** The names of the operations under way, in `locale`. */
-export function runningWords(running: readonly RunningLabel[], locale: Locale): string[] {
-  return running.map((label) => (typeof label === "string" ? label : wordOf(label, locale)));
+/** What Stop did on one robot of the page, named as the page names it (in every language). */
+export interface RobotStop {
+  robot: LocalText;
+  notice: Notice;
 }
 
 export interface AppState {
@@ -106,12 +76,24 @@ export interface AppState {
   log: LogViewState;
   /** The outcome of Stop or Limp, shown in the top bar beside Stop (so it is seen however far down the page). */
   stopNotice?: Notice;
-  /** "Limp…" was pressed: the top bar asks "hold the robot" before any servo goes passive. */
-  limpAsked?: boolean;
+  /**
+   * Stop's outcome on each of the page's other robots (the Class view's), one line per robot, said in the top
+   * bar after the top-bar robot's `stopNotice` (`stopAll`, src/ui/stop-all.ts).
+   */
+  robotStops?: readonly RobotStop[];
+  /**
+   * "Limp…" was pressed: the top bar asks "hold the robot" (this warning, the outcome catalogue's, loaded with
+   * Limp's other sentences) before any servo goes passive.
+   */
+  limpAsked?: Said;
   /** Motion files opened in the Motions view (kept across connections: they are files on this computer). */
   motionFiles?: MotionFilesState;
   /** Uploads, runs and sounds of this connection. */
   motions?: MotionsState;
+  /** The robot's shelf: what this browser recorded uploading to this robot (issue 23 item 2). */
+  shelf?: ShelfState;
+  /** "Reset the demo robot" connected it again as new: what became of it. */
+  demoReset?: Notice;
   /** The Sensors view of this connection. */
   sensors?: SensorsState;
   /** The Servos view of this connection. */
@@ -155,7 +137,7 @@ export function initialState(env: {
 
 /**
  * The state of every feature that belongs to one connection, as a new connection starts it: the device card,
- * the zeros editor, Stop's outcome and Limp's question, the running operations, uploads, runs, sensors, servos
+ * the zeros editor, Stop's outcome and Limp's question, the running operations, uploads, runs, the shelf, sensors, servos
  * and the safety acknowledgements. Motion files and the packet log are kept (they are on this computer).
  */
 export function freshConnectionState(): Partial<AppState> {
@@ -166,6 +148,8 @@ export function freshConnectionState(): Partial<AppState> {
     limpAsked: undefined,
     running: [],
     motions: undefined,
+    shelf: undefined,
+    demoReset: undefined,
     sensors: undefined,
     servos: undefined,
     doctor: undefined,

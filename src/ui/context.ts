@@ -1,5 +1,5 @@
 import type { AppState } from "./app-state.ts";
-import type { PacketLog } from "./features/log/packet-log.ts";
+import type { PacketLog } from "./features/log/index.ts";
 import type { Session } from "./session.ts";
 import type { Store } from "./store.ts";
 

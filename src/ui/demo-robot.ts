@@ -11,12 +11,7 @@ import {
   type SimulatedRbc,
   servoBusFromMemory,
 } from "../sim/index.ts";
-import {
-  DemoMemoryKeeper,
-  type DemoMemoryStorage,
-  demoMemoryKey,
-  idbDemoStorage,
-} from "./features/shelf/demo-memory.ts";
+import { DemoMemoryKeeper, type DemoMemoryStorage, demoMemoryKey, idbDemoStorage } from "./demo-memory.ts";
 
 export interface DemoRobot {
   port: MockSerialPort<BootloaderRbc>;
@@ -92,7 +87,7 @@ export interface OpenDemoOptions extends DemoRobotOptions {
 }
 
 /**
- * The session's demo robot, which keeps its memory (issue 23 item 2; `features/shelf/demo-memory.ts`): zeros,
+ * The session's demo robot, which keeps its memory (issue 23 item 2; `demo-memory.ts`): zeros,
  * downloaded motions, memory counts and servo ids come from the previous connection's robot in this page, else
  * from this browser's storage (a page reload), else it is new. A stored memory that is not a demo robot's is
  * ignored (the robot starts as new and the record is replaced). The memory is saved as it changes.

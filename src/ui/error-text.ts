@@ -1,9 +1,10 @@
 import { technicalDetail } from "../device/technical-detail.ts";
+import { errorSaid } from "../i18n/error-said.ts";
 import type { Locale } from "../i18n/locale.ts";
 import { errorText } from "../i18n/outcomes/error-text.ts";
+import { type Said, said } from "../i18n/said.ts";
 import { type Notice, noticeOf } from "./app-state.ts";
 import { uiMessages } from "./messages.ts";
-import { inEveryLanguage, type Said, said, saidText } from "./said.ts";
 import { domErrorName } from "./serial-ports.ts";
 
 /**
@@ -31,11 +32,6 @@ export function errorMessage(e: unknown, locale: Locale = "en"): string {
 export function errorNotice(lead: string | Said, e: unknown, locale: Locale = "en"): Notice {
   if (typeof lead !== "string") return noticeOf("danger", locale, [lead, errorSaid(e)], technicalDetail(e));
   return { tone: "danger", text: `${lead} ${errorMessage(e, locale)}`, detail: technicalDetail(e) };
-}
-
-/** The error's sentence (RbcError and LinkError say what to do), as a message in every language. */
-export function errorSaid(e: unknown): Said {
-  return saidText(inEveryLanguage((locale) => errorMessage(e, locale)));
 }
 
 /** Why requestPort() failed, and whether to open the "Can't find your robot?" help. */

@@ -35,8 +35,3 @@ export function formatClockTime(epochMs: number): string {
   const two = (n: number) => String(n).padStart(2, "0");
   return `${two(d.getHours())}:${two(d.getMinutes())}:${two(d.getSeconds())}.${String(d.getMilliseconds()).padStart(3, "0")}`;
 }
-
-/** "0x17" style for a byte. */
-export function formatByteHex(n: number): string {
-  return `0x${n.toString(16).toUpperCase().padStart(2, "0")}`;
-}

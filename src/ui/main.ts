@@ -7,7 +7,8 @@ import { initialState, runningWords } from "./app-state.ts";
 import { answerBusyQueries, busySentence } from "./busy.ts";
 import type { AppContext } from "./context.ts";
 import type { DemoRobotOptions } from "./demo-robot.ts";
-import { refreshKnownPorts, stopActivity } from "./features/connection/actions.ts";
+import { robotTask } from "./features/class/index.ts";
+import { refreshKnownPorts } from "./features/connection/index.ts";
 import { routeFromHash, ViewLoader } from "./router.ts";
 import { webSerial } from "./serial-ports.ts";
 import { Session } from "./session.ts";
@@ -17,6 +18,7 @@ import { escapeTakenElsewhere } from "./shell/escape.ts";
 import { pageStartLocale } from "./shell/locale-choice.ts";
 import { DEFAULT_VIEW, VIEWS } from "./shell/registry.ts";
 import type { AppView, ViewContext } from "./shell/view-types.ts";
+import { anyRobotConnected, stopAll } from "./stop-all.ts";
 import { createStore, frameScheduler } from "./store.ts";
 
 /**
@@ -99,13 +101,14 @@ function startApp(root: HTMLElement, locale: Locale): void {
     if (route) showRoute(store, route);
   });
 
-  // Escape = Stop (ends what runs, the robot keeps standing) while a robot is connected, unless a field, a
-  // dialog, a menu or an open popup takes it. Never Limp.
+  // Escape = Stop for every robot of the page (each ends what runs and keeps standing) while one is connected,
+  // the top-bar robot or a Class view robot, unless a field, a dialog, a menu or an open popup takes it. Never
+  // Limp.
   document.addEventListener("keydown", (e) => {
     if (e.key !== "Escape" || e.repeat || e.defaultPrevented) return;
-    if (store.get().connection.phase !== "connected" || escapeTakenElsewhere(e.target, document)) return;
+    if (!anyRobotConnected(store.get()) || escapeTakenElsewhere(e.target, document)) return;
     e.preventDefault();
-    void stopActivity(app);
+    void stopAll(app);
   });
 
   // A reload (the update prompt's, or the browser's) or a closed tab would cut short what runs on the robot: an
@@ -117,7 +120,7 @@ function startApp(root: HTMLElement, locale: Locale): void {
   window.addEventListener("beforeunload", (e) => {
     const state = store.get();
     // The Class view's robots run their own work (an upload, a Run) beside the top bar's robot.
-    const classBusy = state.classRoom?.robots.some((r) => r.task !== undefined) ?? false;
+    const classBusy = state.classRoom?.robots.some((r) => robotTask(r) !== undefined) ?? false;
     if (state.running.length > 0 || classBusy) e.preventDefault();
   });
 

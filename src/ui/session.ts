@@ -1,4 +1,5 @@
-import type { ClientState, LogEntry, RbcClient } from "../device/index.ts";
+import type { ActivitySnapshot, ClientState, LogEntry, RbcClient } from "../device/index.ts";
+import { inEveryLanguage, said } from "../i18n/said.ts";
 import type { SerialPortLike } from "../link/index.ts";
 import { type Clock, realClock } from "../shared/clock.ts";
 import type { ServoBus } from "../sim/sim-servos.ts";
@@ -12,18 +13,20 @@ import {
 } from "./app-state.ts";
 import type { AppContext } from "./context.ts";
 import type { DemoRobotOptions, KeptDemoRobot } from "./demo-robot.ts";
-import { busyChanged, probeAfterConnect, refreshKnownPorts } from "./features/connection/actions.ts";
 import {
+  busyChanged,
+  busyElsewhere,
   type ConnectionState,
   connectingTo,
   mirrored,
   NOTHING_RUNNING,
+  probeAfterConnect,
   type RobotLabel,
-} from "./features/connection/state.ts";
-import type { PacketLog } from "./features/log/packet-log.ts";
-import type { ShelfStorage } from "./features/shelf/shelf-store.ts";
+  refreshKnownPorts,
+} from "./features/connection/index.ts";
+import type { PacketLog } from "./features/log/index.ts";
+import type { ShelfStorage } from "./features/shelf/index.ts";
 import { uiMessages } from "./messages.ts";
-import { inEveryLanguage, said } from "./said.ts";
 import { Scope } from "./scope.ts";
 import { choosePort, describePort, linkKindOf, webSerial } from "./serial-ports.ts";
 import type { Store } from "./store.ts";
@@ -99,7 +102,7 @@ export class Session {
 
   /**
    * The robot's time: real time, or the clock of the simulated robot of this connection. Durations the robot
-   * reports (`playing`, `sounding`) and progress shown against them are in this time.
+   * reports (the motion and sound of `connection.activity`) and progress shown against them are in this time.
    */
   get clock(): Clock {
     return this.client?.clock ?? realClock;
@@ -238,6 +241,7 @@ export class Session {
     const packetLog = this.context.packetLog;
     this.detachClient = [
       client.stateChanges.on((s) => this.onClientState(client, s)),
+      client.activityChanges.on((a) => this.onActivity(client, a)),
       client.log.on((entry) => {
         // The bootloader's flow control and status bytes are the update's normal dialogue, not stray bytes.
         packetLog.push(this.updatingFirmware() ? duringFirmwareUpdate(entry) : entry);
@@ -260,6 +264,7 @@ export class Session {
         identityWarnings: identity.warnings,
         mode: client.mode,
         ...mirrored(client.state),
+        activity: client.activity,
       });
       void refreshKnownPorts(this.store);
       // Busy, not gone (docs/protocol.md §3.6): a motion started with the remote may be playing.
@@ -344,24 +349,24 @@ export class Session {
         current.mode !== state.mode ||
         (state.platform !== undefined && current.platform !== state.platform) ||
         current.basicPostureConfirmed !== next.basicPostureConfirmed ||
-        current.playing !== next.playing ||
-        current.sounding !== next.sounding ||
-        current.busy?.since !== next.busy?.since ||
         current.subscription !== next.subscription
       ) {
-        if ((current.busy === undefined) !== (next.busy === undefined)) {
-          void busyChanged(this.context, next.busy !== undefined);
-        }
-        this.setConnection({
-          mode: state.mode,
-          platform: state.platform ?? current.platform,
-          ...next,
-          // Limp servos stay limp when the client leaves direct mode (docs/protocol.md §5: the leave sequence
-          // moves no servo); a motion (this panel's, Stop's 7 or one started elsewhere) drives them again.
-          limp: next.playing !== undefined || next.busy !== undefined ? false : current.limp,
-        });
+        this.setConnection({ mode: state.mode, platform: state.platform ?? current.platform, ...next });
       }
     }
+  }
+
+  /**
+   * The device's activity machine changed: the store keeps its snapshot as the one copy of what the robot is
+   * doing (views read it through features/connection/activity.ts). A motion started elsewhere, found or ended,
+   * is said beside the top bar's Stop (`busyChanged`).
+   */
+  private onActivity(client: RbcClient, activity: ActivitySnapshot): void {
+    if (client !== this.client || this.store.get().connection.phase !== "connected") return;
+    const wasBusy = busyElsewhere(this.store.get().connection) !== undefined;
+    this.setConnection({ activity });
+    const busy = activity.doing.kind === "busy";
+    if (busy !== wasBusy) void busyChanged(this.context, busy);
   }
 
   private onLost(reason: string): void {

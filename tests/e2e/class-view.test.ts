@@ -236,7 +236,8 @@ describe("the Class view in Korean", () => {
     for (const i of [0, 1]) {
       await row(page, i)
         .getByTestId("class-result")
-        .filter({ hasText: "취소했어요." })
+        // The catalogue says the Stop in Korean as in English ("Stopped by Stop: motion 12 ended …").
+        .filter({ hasText: "정지로 멈췄어요. 모션 12번은 장면이 끝나는 곳에서 끝났고" })
         .waitFor({ timeout: 20_000 });
     }
     const after = await sims(page);

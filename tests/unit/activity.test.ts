@@ -7,6 +7,7 @@ import {
 } from "../../src/device/activity.ts";
 import type { LimpResult } from "../../src/device/limp.ts";
 import type { StopActivityResult } from "../../src/device/stop.ts";
+import { errorText } from "../../src/i18n/index.ts";
 import { VirtualClock } from "../../src/shared/clock.ts";
 
 const STOP_RESULT: StopActivityResult = { uploadCancelled: false, servoMovesDropped: false };
@@ -89,7 +90,10 @@ describe("the activity machine: every transition of what the robot is doing, all
         }
         expect(error).toBeInstanceOf(ActivityRefusedError);
         expect(error).toMatchObject({ code: "wrong-mode", transition: t.name, from: kind });
-        expect((error as Error).message).toMatch(/Nothing was sent\.$/);
+        expect(errorText(error, "en")).toMatch(/^Not started: the robot is .+\. Nothing was sent\.$/);
+        expect(errorText(error, "ko")).toMatch(
+          /^시작하지 않았어요\. 로봇이 지금 .+\. 아무것도 보내지 않았어요\.$/,
+        );
         expect(m.activity.snapshot).toEqual(before);
         expect(m.activity.doing).toBe(before.doing);
         expect(m.seen.length).toBe(changes);
@@ -323,5 +327,92 @@ describe("the activity machine: Stop and Limp under way", () => {
     activity.beginStop(() => new Promise<StopActivityResult>(() => {}));
     expect(activity.snapshot.doing.kind).toBe("motion");
     expect(activity.snapshot.halt?.kind).toBe("stop");
+  });
+});
+
+describe("the activity machine: every servo limp, until one is driven", () => {
+  /** A machine whose Limp has resolved: every servo passive. */
+  async function limped(): Promise<Machine> {
+    const m = machine();
+    m.activity.enterDirect("limp");
+    await m.activity.beginLimp(async () => LIMP_RESULT);
+    return m;
+  }
+
+  it("starts not limp; a Limp that resolves makes it limp, told with the snapshot that ends the Limp", async () => {
+    const { activity, seen } = machine();
+    expect(activity.snapshot).toEqual({ doing: { kind: "idle", since: 0 }, halt: undefined, limp: false });
+    activity.enterDirect("limp");
+    const done = activity.beginLimp(async () => LIMP_RESULT);
+    expect(activity.limp).toBe(false);
+    expect(await done).toBe(LIMP_RESULT);
+    expect(activity.limp).toBe(true);
+    expect(seen.at(-1)).toEqual({
+      doing: { kind: "direct", use: "limp", since: 0 },
+      halt: undefined,
+      limp: true,
+    });
+  });
+
+  it("a Limp that fails leaves the servos as they were: not limp", async () => {
+    const { activity } = machine();
+    await expect(activity.beginLimp(() => Promise.reject(new Error("lost")))).rejects.toThrow("lost");
+    expect(activity.limp).toBe(false);
+  });
+
+  it("leaving direct mode, servo control and Stop move no servo: still limp", async () => {
+    const { activity } = await limped();
+    activity.exitDirect();
+    expect(activity.limp).toBe(true);
+    activity.enterDirect("servo-control");
+    activity.handDirect("teach-in");
+    expect(activity.limp).toBe(true);
+    await activity.beginStop(async () => STOP_RESULT);
+    expect(activity.snapshot.limp).toBe(true);
+  });
+
+  const DRIVES: Array<{ name: string; drive: (m: Machine) => unknown }> = [
+    { name: "a servo driven (servosDriven)", drive: ({ activity }) => activity.servosDriven() },
+    {
+      name: "tethered play taking direct mode (handDirect)",
+      drive: ({ activity }) => activity.handDirect("tethered-play"),
+    },
+    {
+      name: "tethered play entering direct mode (enterDirect)",
+      drive: ({ activity }) => {
+        activity.exitDirect();
+        activity.enterDirect("tethered-play");
+      },
+    },
+    {
+      name: "a motion of this client (startMotion)",
+      drive: ({ activity }) => {
+        activity.exitDirect();
+        activity.startMotion(7, 1800);
+      },
+    },
+    {
+      name: "a motion noticed playing elsewhere (noticeBusy)",
+      drive: ({ activity }) => {
+        activity.exitDirect();
+        activity.noticeBusy("probe");
+      },
+    },
+    { name: "a lost link (disconnected)", drive: ({ activity }) => activity.disconnected() },
+  ];
+
+  for (const { name, drive } of DRIVES) {
+    it(`${name} ends it, told with the snapshot`, async () => {
+      const m = await limped();
+      drive(m);
+      expect(m.activity.limp).toBe(false);
+      expect(m.seen.at(-1)?.limp).toBe(false);
+    });
+  }
+
+  it("servosDriven when not limp changes nothing and tells nothing", () => {
+    const { activity, seen } = machine();
+    activity.servosDriven();
+    expect(seen).toEqual([]);
   });
 });

@@ -18,6 +18,7 @@ import {
   RbcUploadError,
   RoundTripEstimator,
 } from "../../src/device/index.ts";
+import { errorText } from "../../src/i18n/index.ts";
 import { fromHex, STANDARD_ZEROS, toHex } from "../../src/protocol/index.ts";
 import { parseRbm } from "../../src/protocol/rbm.ts";
 import { VirtualClock } from "../../src/shared/clock.ts";
@@ -347,7 +348,7 @@ describe("the whole flow over a Bluetooth link (300 ± 150 ms, 20 ms bursts)", (
     expect((e as RbcUploadError).outcome).toBe("nothing-recorded");
     expect((e as RbcUploadError).cause).toBeInstanceOf(RbcUnexpectedAckError);
     expect((e as RbcUploadError).facts?.stop).toBe("early-ack");
-    expect((e as Error).message).toMatch(/sooner than its part could have reached the robot/);
+    expect(errorText(e, "en")).toMatch(/sooner than its part could have reached the robot/);
     expect(rig.sim.motions).toHaveLength(0);
     // And a clean upload over the same link is confirmed by the robot's memory.
     rig.port.faults.clear();

@@ -5,6 +5,7 @@ import { CliError } from "../../src/cli/errors.ts";
 import { RbcInBootloaderError } from "../../src/device/bootloader-prompt.ts";
 import { transportFirmwareIo, updateFirmware } from "../../src/device/firmware-update.ts";
 import { RbcClient } from "../../src/device/rbc-client.ts";
+import { errorText } from "../../src/i18n/index.ts";
 import { WebSerialTransport } from "../../src/link/index.ts";
 import { VirtualClock } from "../../src/shared/clock.ts";
 import { MockSerialPort, SimulatedRbc } from "../../src/sim/index.ts";
@@ -42,7 +43,7 @@ describe("connecting to a robot waiting in its bootloader", () => {
     expect(error.code).toBe("in-bootloader");
     expect(error.facts.prompts).toBeGreaterThanOrEqual(2);
     expect(error.facts.overMs).toBeGreaterThanOrEqual(300); // one prompt every 300 ms (the sim's window)
-    expect(error.message).toMatch(
+    expect(errorText(error, "en")).toMatch(
       /waiting in its bootloader.*Run the firmware update again, in recovery mode/,
     );
   });

@@ -1,5 +1,6 @@
 import { describe, expect, it } from "vitest";
 import { RbcCancelledError } from "../../src/device/index.ts";
+import { errorText } from "../../src/i18n/index.ts";
 import { makeRig } from "../support/rig.ts";
 
 /**
@@ -23,7 +24,8 @@ describe("a queued request cancelled by Stop or Limp says which", () => {
       expect(e).toBeInstanceOf(RbcCancelledError);
       const cancelled = e as RbcCancelledError;
       expect(cancelled.by).toBe(by);
-      expect(cancelled.message).toBe(
+      expect(cancelled.situation).toEqual({ kind: "cancelled-by", by });
+      expect(errorText(cancelled, "en")).toBe(
         by === "stop"
           ? "Cancelled by Stop: it had not started yet."
           : "Cancelled by Limp: every servo is being made limp.",

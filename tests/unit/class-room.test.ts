@@ -1,6 +1,7 @@
 import { readFileSync } from "node:fs";
 import { describe, expect, it } from "vitest";
 import { RbcUploadError } from "../../src/device/errors.ts";
+import { wordOf, wordsOf } from "../../src/i18n/said.ts";
 import { MOTION_AREA_BYTES, memoryFootprint } from "../../src/protocol/catalog.ts";
 import { motionImage } from "../../src/protocol/motion-image.ts";
 import { readRbm } from "../../src/protocol/rbm.ts";
@@ -11,9 +12,9 @@ import type { ClassDemoRobot } from "../../src/ui/features/class/demo-robots.ts"
 import { memoryNameStorage } from "../../src/ui/features/class/names.ts";
 import { checkPack } from "../../src/ui/features/class/pack-check.ts";
 import { packVerdict } from "../../src/ui/features/class/result-words.ts";
+import { robotTask } from "../../src/ui/features/class/robot-task.ts";
 import { classOf, type PackFile } from "../../src/ui/features/class/state.ts";
 import { memoryBackupStorage } from "../../src/ui/features/zeros/backup-store.ts";
-import { wordsOf } from "../../src/ui/said.ts";
 import { createStore } from "../../src/ui/store.ts";
 
 /**
@@ -149,10 +150,33 @@ describe("the class of robots", () => {
     const running = room.runOnAll(12);
     await clock.advance(300);
     expect(demos.every((d) => d.sim.playingMotion === 12)).toBe(true);
-    await clock.run(Promise.all([room.stopAll(), running]));
+    const [stops] = await clock.run(Promise.all([room.stopAll(), running]));
     for (const d of demos) expect(d.sim.playingMotion).toBeUndefined();
+    // Each robot's Stop outcome comes back named, for the top bar to say one line per robot.
+    const tookStop = "The robot took Stop: it finishes the current scene and stands in that pose.";
+    expect(stops.map((s) => [s.robot.en, s.robot.ko, wordOf(s.notice.said![0]!, "en")])).toEqual([
+      ["Demo robot 1", "데모 로봇 1", tookStop],
+      ["Demo robot 2", "데모 로봇 2", tookStop],
+      ["Demo robot 3", "데모 로봇 3", tookStop],
+      ["Demo robot 4", "데모 로봇 4", tookStop],
+    ]);
     const words = rows().map((r) => wordsOf(r.result!.said!, "en"));
     for (const w of words) expect(w).toMatch(/Stopped by Stop|stopped at the end of its scene/);
+  });
+
+  it("keeps each robot's activity as its device tells it: a motion, then Limp under way (the row's task), then limp", async () => {
+    const { clock, room, rows } = await fourRobots();
+    expect(rows().map((r) => r.activity?.doing.kind)).toEqual(["idle", "idle", "idle", "idle"]);
+    const running = room.runOnAll(7);
+    await clock.advance(300);
+    expect(rows().map((r) => r.activity?.doing)).toMatchObject(Array(4).fill({ kind: "motion", motion: 7 }));
+    await clock.run(running);
+    const limping = room.limpAll();
+    expect(rows().map((r) => [robotTask(r), r.task])).toEqual(Array(4).fill(["limp", undefined]));
+    await clock.run(limping);
+    expect(rows().map((r) => [robotTask(r), r.activity?.halt, r.activity?.limp])).toEqual(
+      Array(4).fill([undefined, undefined, true]),
+    );
   });
 
   it("writes every Run in the same tick even when one robot answers its checks later (the starting gate)", async () => {

@@ -246,7 +246,7 @@ describe.concurrent("rbc in Korean", () => {
     expect(two.code).toBe(1);
     expect(two.stdout.split("\n")).toEqual(
       expect.arrayContaining([
-        "  오류: (서보 3) 서보 3번(왼쪽 발목 앞뒤)의 영점 위치 값이 300인데, 위치는 0부터 254까지예요.",
+        "  오류: (서보 3번) 서보 3번(왼쪽 발목 앞뒤)의 영점 위치 값이 300인데, 위치는 0부터 254까지예요.",
         `  오류: (장면 0) ${interval}.`,
       ]),
     );
@@ -283,7 +283,7 @@ describe.concurrent("rbc in Korean", () => {
       "rbc: 로봇이 3.6초 안에 모션 4이(가) 끝났다고 알리지 않았어요. 그래서 아마 무시했을 거예요. RBC는 켜진 뒤 기본 자세(7)를 한 번 실행하기 전까지 모든 모션을 무시해요. 먼저 모션 7을 실행해 주세요. 데모 로봇은 rbc 명령마다 새로 켜져요. 7을 먼저 넣어 주세요. 예: rbc run 7 4 --demo.\n",
     );
     expect(upload.code, upload.stderr).toBe(0);
-    expect(upload.stdout).toContain("확인했어요: 오류 없음, 경고 없음.\n");
+    expect(upload.stdout).toContain("확인함: 오류 없음, 경고 없음.\n");
     expect(upload.stdout).toContain("남은 모션 메모리: 23,936바이트 (전에는 24,576바이트).\n");
     expect(upload.stdout).toContain("저장된 번호: 모션 12 (리모컨: 1번 키). 재생하려면: `rbc run 12`.\n");
     expect(upload.stderr).toMatch(/\[#{20}\] 624\/624바이트 100% +[\d,]+B\/s {2}완료\n/);
@@ -357,11 +357,11 @@ describe("the y/N question in Korean", () => {
     await new Promise((r) => setImmediate(r));
     expect(code).toBe(0);
     expect(text.stderr).toContain(
-      "로봇을 잡아 주세요. 모든 서보의 힘이 빠져서 아무도 잡지 않으면 쓰러져요.\n",
+      "로봇을 잡아 주세요. 모든 서보의 힘이 빠져서, 아무도 잡고 있지 않으면 로봇이 넘어져요.\n",
     );
     expect(text.stderr).toContain("데모 로봇의 모든 서보의 힘을 뺄까요? [y/N] ");
     expect(text.stdout).toBe(
-      "서보 16개 모두 힘이 빠졌다고 확인했어요. 로봇을 잡아 주세요. 혼자 설 수 없어요.\n",
+      "힘 빼기: 서보 16개 모두 힘이 빠졌다고 확인했어요. 로봇을 잡아 주세요. 이제 혼자 서 있을 수 없어요.\n",
     );
   });
 });

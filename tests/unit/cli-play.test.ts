@@ -153,10 +153,10 @@ describe.concurrent("rbc play on the demo robot", () => {
     const r = await play.done;
     expect(r.code, r.stderr).toBe(130);
     const m = r.stderr.match(
-      /rbc: interrupted: tethered play stopped after (\d+) of (\d+) frames; the servos hold the last one sent \(scene (\d), frame (\d+)\), with torque\. Nothing was made passive\./,
+      /rbc: interrupted: Tethered play stopped after scene (\d), frame (\d+) \((\d+) of (\d+) frames sent\); the servos hold that frame\. Nothing was made passive\./,
     );
     expect(m, r.stderr).not.toBeNull();
-    const [sent, total] = [Number(m![1]), Number(m![2])];
+    const [sent, total] = [Number(m![3]), Number(m![4])];
     expect(sent).toBeGreaterThan(20); // scene 0 has 20 frames
     expect(sent).toBeLessThan(total);
     expect(frameLines(r.stderr)).toHaveLength(sent);

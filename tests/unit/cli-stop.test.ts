@@ -75,7 +75,7 @@ describe("rbc stop and rbc limp", () => {
     expect(refused.stderr).not.toMatch(/FF FF AA 55/);
     expect(done.code, done.stderr).toBe(0);
     expect(done.stdout).toBe(
-      "All 16 servos confirmed passive. Hold the robot: it cannot stand on its own.\n",
+      "Limp: all 16 servos confirmed passive. Hold the robot, it cannot stand on its own now.\n",
     );
     const help = globalHelp(COMMAND_LIST, "en");
     expect(help).toMatch(/\n\s+stop\s+end a running motion with 7; the robot keeps standing/);
@@ -91,7 +91,7 @@ describe("Ctrl-C in rbc run", () => {
     expect(result.stdout).toMatch(/Running 2 /);
     expect(result.code, result.stderr).toBe(130);
     expect(result.stderr).toContain(
-      "rbc: interrupted: The robot took Stop: motion 2 (Get up B (from back)) ended at the end of its scene and the robot stands in that pose; `rbc run 7` straightens it. (Sent 7; the robot answered 07.)",
+      "rbc: interrupted: The robot took Stop: it finishes the current scene and stands in that pose. `rbc run 7` straightens it. Stop sent 7 while motion 2, started here, was playing, and the robot answered 07. That reply says that what the robot was playing ended at the end of a scene; it does not say which motion that was.",
     );
     expect(result.stdout).not.toContain("Done: 2");
     expect(result.stderr).not.toMatch(/Direct control mode on|limp/i);

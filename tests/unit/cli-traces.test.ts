@@ -14,7 +14,7 @@ describe("rbc limp --log", () => {
   }, async () => {
     const r = await runInProcess(limpCommand, ["--demo", "--yes", "--log"], { RBC_DEMO_TIME_SCALE: "50" });
     expect(r.code, r.stderr).toBe(0);
-    expect(r.stdout).toContain("All 16 servos confirmed passive.");
+    expect(r.stdout).toContain("Limp: all 16 servos confirmed passive.");
     const lines = r.stderr.trimEnd().split("\n");
     // The last packet of the session: the wCK exit of docs/protocol.md §5, after servo 15's answer.
     expect(lines.at(-1)).toMatch(/^\s*[\d.]+ {2}PC→RBC {2}leave direct mode\s+FF E0 FB 01 00 1A$/);

@@ -1,11 +1,6 @@
 import { describe, expect, it } from "vitest";
-import {
-  RbcClient,
-  RbcPortError,
-  RbcUploadError,
-  UPLOAD_NOTICES,
-  ZeroWriteFailedError,
-} from "../../src/device/index.ts";
+import { RbcClient, RbcPortError, RbcUploadError, ZeroWriteFailedError } from "../../src/device/index.ts";
+import { errorText, UPLOAD_NOTICES } from "../../src/i18n/index.ts";
 import { LinkError, type Transport, WebSerialTransport } from "../../src/link/index.ts";
 import {
   COMMANDS,
@@ -209,7 +204,13 @@ describe("uploadMotion: image, reset, free memory, download, verification", () =
         .catch((e) => e),
     );
     expect(error).toMatchObject({ code: "invalid-argument" });
-    expect(error.message).toMatch(/Nothing was sent/);
+    expect(error.situation).toMatchObject({ kind: "motion-invalid", name: "TestBow", count: 1 });
+    expect(errorText(error, "en")).toMatch(
+      /^The motion "TestBow" has 1 error the robot would refuse \(first: .+\)\. Nothing was sent\.$/,
+    );
+    expect(errorText(error, "ko")).toMatch(
+      /^모션 "TestBow"에 로봇이 거부할 오류가 1개 있어요 .+아무것도 보내지 않았어요\.$/,
+    );
     expect(sim.stats.bytesReceived).toBe(sentBefore);
     expect(sim.motions).toHaveLength(0);
   });
@@ -315,7 +316,10 @@ describe("writeZerosWithBackup: the one zero-write policy", () => {
         })
         .catch((e) => e),
     );
-    expect(error.message).toMatch(/Nothing was written: the backup .* could not be saved \(disk full\)/);
+    expect(error.code).toBe("backup-failed");
+    expect(errorText(error, "en")).toMatch(
+      /Nothing was written: the backup .* could not be saved \(disk full\)/,
+    );
     expect(sim.zeros).toEqual(before);
   });
 

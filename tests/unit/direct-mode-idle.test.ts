@@ -5,6 +5,7 @@ import {
   RbcNotIdleError,
   RbcStillPlayingError,
 } from "../../src/device/index.ts";
+import { errorText } from "../../src/i18n/index.ts";
 import { newMotion } from "../../src/motion/index.ts";
 import { encodePacket, toHex } from "../../src/protocol/index.ts";
 import { runInProcess } from "../cli/in-process.ts";
@@ -52,7 +53,7 @@ describe("direct mode only when the robot is idle (busy probe, docs/protocol.md 
     }
     const tethered = await rig.fail(rig.client.playTethered(newMotion()));
     expect(tethered).toBeInstanceOf(RbcNotIdleError);
-    expect((tethered as Error).message).toBe(
+    expect(errorText(tethered, "en")).toBe(
       "Not started: the robot is busy, probably playing a motion started elsewhere (it answers, but its sensor reply waits for the motion to end). Servo control needs the robot idle: press Stop (the motion ends at the end of its scene) or wait until it ends. Nothing was sent to the servos.",
     );
     const out = log.out();
@@ -108,7 +109,8 @@ describe("direct mode only when the robot is idle (busy probe, docs/protocol.md 
       const log = record(rig);
       const e = await rig.fail(rig.client.limp());
       expect(e, startedBy).toBeInstanceOf(RbcCannotLimpError);
-      expect((e as Error).message).toBe(
+      expect(e).toMatchObject({ code: "cannot-limp" });
+      expect(errorText(e, "en")).toBe(
         "The robot cannot be made limp while it plays: it did not stop when asked (no answer to the 7 that ends a motion), so no servo was made limp. Hold the robot and switch it off.",
       );
       const out = log.out();
@@ -145,7 +147,8 @@ describe("direct mode only when the robot is idle (busy probe, docs/protocol.md 
     for (let k = 0; k < 200; k++) rig.port.injectToPc([0x00, 0x40 + (k % 64)], k);
     const e = await rig.fail(rig.client.limp());
     expect(e).toBeInstanceOf(RbcStillPlayingError);
-    expect((e as Error).message).toBe(
+    expect(e).toMatchObject({ code: "still-playing" });
+    expect(errorText(e, "en")).toBe(
       "The robot is still playing something: bytes came from the servo bus that no servo command asked for. Direct mode was left and nothing more was sent; what those servos did is not known. Press Stop or wait until the motion ends, then try again.",
     );
     const out = log.out();
@@ -175,7 +178,7 @@ describe("rbc limp during a motion (in process, the demo robot)", () => {
     expect(r.code, r.stderr).toBe(0);
     expect(r.stdout).toBe(
       "A motion started elsewhere was playing: it was ended with 7 first (the robot answered 07), then the servos were made limp.\n" +
-        "All 16 servos confirmed passive. Hold the robot: it cannot stand on its own.\n",
+        "Limp: all 16 servos confirmed passive. Hold the robot, it cannot stand on its own now.\n",
     );
     // The trace: 7 out, its 07 back, and only then 0x10 and the passive commands (§5 example for id 12).
     const trace = r.stderr;

@@ -1,4 +1,5 @@
 import { describe, expect, it } from "vitest";
+import { wordOf } from "../../src/i18n/said.ts";
 import { parseRbm, RbmError, readRbm, validateRbm } from "../../src/protocol/rbm.ts";
 import { Autosaver, UnopenableDraftError } from "../../src/ui/features/editor/autosave.ts";
 import { findLatestDraft } from "../../src/ui/features/editor/draft-actions.ts";
@@ -15,7 +16,6 @@ import {
   storedRbmText,
 } from "../../src/ui/features/editor/drafts.ts";
 import { issueText } from "../../src/ui/features/motions/issue-text.ts";
-import { wordOf } from "../../src/ui/said.ts";
 
 /**
  * Issue 20 item 9: a motion with zero scenes (docs/protocol.md §7: S = 0 is an error) is refused where it is

@@ -7,6 +7,7 @@
 import { readdirSync, readFileSync } from "node:fs";
 import { describe, expect, it } from "vitest";
 import { buildExamples, exampleTexts, LONG_WALK_SCENES } from "../../scripts/make-examples.ts";
+import { errorText } from "../../src/i18n/index.ts";
 import { motionImage } from "../../src/protocol/motion-image.ts";
 import {
   motionDurationMs,
@@ -150,7 +151,7 @@ describe("long-walk.rbm fills the motion area", () => {
     };
     const refused = await run(client.writeMotion(motionImage(more)).catch((e: unknown) => e));
     expect(refused).toMatchObject({ code: "invalid-argument" });
-    expect(String((refused as Error).message)).toMatch(/1-24576 bytes; this one is 24618\. Nothing was sent/);
+    expect(errorText(refused, "en")).toMatch(/1-24576 bytes; this one is 24618\. Nothing was sent/);
     expect(sim.motions).toHaveLength(0);
     const result = await run(client.writeMotion(motionImage(m)));
     expect(result).toMatchObject({ total: 24_532, chunks: 384, freeBefore: 24_576, freeAfter: 0 });

@@ -1,6 +1,6 @@
 import { describe, expect, it } from "vitest";
 import { FirmwareUpdateError, RbcClient } from "../../src/device/index.ts";
-import { errorText } from "../../src/i18n/outcomes/error-text.ts";
+import { errorText } from "../../src/i18n/index.ts";
 import { WebSerialTransport } from "../../src/link/index.ts";
 import { IntelHexError } from "../../src/protocol/intel-hex.ts";
 import { VirtualClock } from "../../src/shared/clock.ts";
@@ -87,7 +87,7 @@ describe("RbcClient.updateFirmware", () => {
     );
     expect(error).toBeInstanceOf(FirmwareUpdateError);
     expect(error).toMatchObject({ failure: "no-bootloader", holds: "previous-firmware" });
-    expect((error as Error).message).toContain("Nothing was written");
+    expect(errorText(error, "en")).toContain("Nothing was written");
     // The connection is still usable and the robot still runs its old firmware.
     expect(await r.clock.run(r.client.readFirmwareVersion())).toEqual({ major: 2, minor: 23 });
   });
@@ -105,7 +105,7 @@ describe("RbcClient.updateFirmware", () => {
       }),
     );
     expect(error).toMatchObject({ failure: "cancelled", holds: "incomplete-firmware" });
-    expect((error as Error).message).toContain("may now be incomplete");
+    expect(errorText(error, "en")).toContain("may now be incomplete");
     const result = await r.clock.run(
       r.client.updateFirmware(firmwareHex("2.51", 4096), { onAskPowerCycle: r.onAskPowerCycle }),
     );

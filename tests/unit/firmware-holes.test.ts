@@ -1,5 +1,6 @@
 import { describe, expect, it } from "vitest";
 import { FirmwareUpdateError } from "../../src/device/firmware-update.ts";
+import { errorText } from "../../src/i18n/index.ts";
 import { firmwareBytes, firmwareHex, hexLines, makeBootloaderRig } from "../support/hex.ts";
 
 /**
@@ -52,7 +53,7 @@ describe("status characters are checked against the wire time of their line", ()
       line: 21,
       code: "bad-reply",
     });
-    expect((error as Error).message).toMatch(
+    expect(errorText(error, "en")).toMatch(
       /sooner than the line could have reached the robot at 115200 baud.*may now be incomplete.*run the update again/,
     );
   });
@@ -81,7 +82,7 @@ describe("a bootloader that only toggles XOFF/XON", () => {
       line: 30,
       code: "timeout",
     });
-    expect((error as Error).message).toMatch(
+    expect(errorText(error, "en")).toMatch(
       /did not finish a line \(line 30 of the file\) within 10 s after its last byte/,
     );
     expect(line30At).toBeDefined();

@@ -1,5 +1,6 @@
 import { describe, expect, it } from "vitest";
 import { FirmwareUpdateError, type FirmwareUpdateProgress } from "../../src/device/firmware-update.ts";
+import { errorText } from "../../src/i18n/index.ts";
 import type { BootloaderFailure, RobotHolds } from "../../src/protocol/bootloader.ts";
 import { IntelHexError } from "../../src/protocol/intel-hex.ts";
 import type { BootloaderFaults } from "../../src/sim/sim-bootloader.ts";
@@ -271,7 +272,7 @@ describe("firmware update fault matrix: every fault at every stage, then a secon
       const e = error as FirmwareUpdateError;
       expect({ failure: e.failure, holds: e.holds }).toEqual({ failure: c.failure, holds: c.holds });
       if (c.line !== undefined) expect(e.line).toBe(c.line);
-      expect(e.message).toMatch(TODO[c.holds]);
+      expect(errorText(e, "en")).toMatch(TODO[c.holds]);
       if (c.holds === "previous-firmware" && c.failure !== "disconnected") {
         // Nothing written: after a power cycle the old firmware answers as before.
         rig.boot.faults = {};

@@ -28,18 +28,9 @@ const MAY_IMPORT: Record<Layer, readonly Layer[]> = {
   link: ["shared"],
   motion: ["protocol", "shared"],
   sim: ["protocol", "motion", "shared"],
-  device: ["protocol", "link", "motion", "shared", "i18n"],
+  device: ["protocol", "link", "motion", "shared"],
   ui: ["device", "protocol", "motion", "link", "sim", "shared", "i18n"],
   cli: ["device", "protocol", "motion", "link", "sim", "shared", "i18n"],
-};
-
-/**
- * Type-only imports (`import type`) allowed beyond MAY_IMPORT: the outcome catalogue (src/i18n/outcomes) words
- * the codes and facts that protocol/, link/, device/ and motion/ define, so it names their types; it never runs
- * their code.
- */
-const MAY_IMPORT_TYPES: Partial<Record<Layer, readonly Layer[]>> = {
-  i18n: ["protocol", "link", "device", "motion"],
 };
 
 /** The layers whose index.ts is the public API (docs/architecture.md); shared/ and i18n/ are leaves used file by file. */
@@ -92,17 +83,7 @@ const IMPORT_PATTERNS: readonly RegExp[] = [
 ];
 
 function importsOf(text: string): string[] {
-  return importsWithKind(text).map((i) => i.spec);
-}
-
-/** Each import's specifier, and whether it is type-only (`import type … from`, erased at build time). */
-function importsWithKind(text: string): { spec: string; typeOnly: boolean }[] {
-  return IMPORT_PATTERNS.flatMap((pattern) =>
-    [...text.matchAll(pattern)].map((m) => ({
-      spec: m[1] ?? "",
-      typeOnly: /^\s*(?:import|export)\s+type\s/.test(m[0]),
-    })),
-  );
+  return IMPORT_PATTERNS.flatMap((pattern) => [...text.matchAll(pattern)].map((m) => m[1] ?? ""));
 }
 
 function layerOf(path: string): Layer | undefined {
@@ -136,7 +117,7 @@ function importViolations(files: readonly SourceFile[]): string[] {
       say("", "a source file outside the layers of docs/architecture.md");
       continue;
     }
-    for (const { spec, typeOnly } of importsWithKind(file.text)) {
+    for (const spec of importsOf(file.text)) {
       if (!spec.startsWith(".")) {
         const rule = PACKAGES.find(({ test }) => test.test(spec));
         if (rule && !rule.allowed(file.path)) say(spec, `package not allowed in ${from}/`);
@@ -150,8 +131,7 @@ function importViolations(files: readonly SourceFile[]): string[] {
       }
       const to = layerOf(target);
       if (to === from) continue;
-      const typesAllowed = typeOnly && to !== undefined && (MAY_IMPORT_TYPES[from] ?? []).includes(to);
-      if (!to || !(MAY_IMPORT[from].includes(to) || typesAllowed)) {
+      if (!to || !MAY_IMPORT[from].includes(to)) {
         say(spec, `${from}/ may not import ${to ?? "that folder"}/`);
         continue;
       }
@@ -191,9 +171,9 @@ describe("the import rule (docs/architecture.md)", () => {
     expect(importViolations(repository)).toEqual([]);
   });
 
-  it("keeps the layers below the device free of src/i18n, type imports included: they give codes and facts", () => {
-    const lower = repository.filter((f) => /^src\/(protocol|link|motion|sim)\//.test(f.path));
-    expect(lower.length).toBeGreaterThan(50);
+  it("keeps the layers below the front ends free of src/i18n, type imports included: they give codes and facts", () => {
+    const lower = repository.filter((f) => /^src\/(protocol|link|device|motion|sim)\//.test(f.path));
+    expect(lower.length).toBeGreaterThan(100);
     const fromI18n = lower.flatMap((f) =>
       importsOf(f.text)
         .filter((spec) => normalize(join(dirname(f.path), spec)).startsWith("src/i18n/"))
@@ -201,10 +181,23 @@ describe("the import rule (docs/architecture.md)", () => {
     );
     expect(fromI18n).toEqual([]);
     // The layer table says the same (a type import is checked against it too).
-    for (const layer of ["protocol", "link", "motion", "sim"] as const) {
+    for (const layer of ["protocol", "link", "device", "motion", "sim"] as const) {
       expect(MAY_IMPORT[layer]).not.toContain("i18n");
-      expect(MAY_IMPORT_TYPES[layer] ?? []).not.toContain("i18n");
     }
+  });
+
+  it("has no import circle between src/i18n and another folder, type imports included", () => {
+    // Only the front ends (src/ui, src/cli) import src/i18n, and src/i18n imports neither of them.
+    const outside = repository.filter((f) => !/^src\/(i18n|ui|cli)\//.test(f.path));
+    const intoI18n = outside.flatMap((f) =>
+      importsOf(f.text)
+        .filter((spec) => normalize(join(dirname(f.path), spec)).startsWith("src/i18n/"))
+        .map((spec) => `${f.path}: "${spec}"`),
+    );
+    expect(intoI18n).toEqual([]);
+    const importers = (Object.keys(MAY_IMPORT) as Layer[]).filter((l) => MAY_IMPORT[l].includes("i18n"));
+    expect(importers).toEqual(["ui", "cli"]);
+    for (const layer of importers) expect(MAY_IMPORT.i18n).not.toContain(layer);
   });
 
   it("reads every form of import, and nothing that only looks like one", () => {
@@ -260,7 +253,7 @@ describe("the import rule (docs/architecture.md)", () => {
         "../../../protocol/index.ts",
         "../../store.ts",
       ),
-      fake("src/device/upload.ts", "../protocol/packet.ts", "../link/transport.ts", "../i18n/translate.ts"),
+      fake("src/device/upload.ts", "../protocol/packet.ts", "../link/transport.ts"),
       fake("src/cli/connect.ts", "../link/node-serial-transport.ts", "../../package.json"),
       fake("src/protocol/packet.ts", "../shared/format.ts", "./bytes.ts"),
       fake("src/motion/errors.ts", "../protocol/packet.ts"),
@@ -273,6 +266,7 @@ describe("the import rule (docs/architecture.md)", () => {
       ...base,
       fake("src/protocol/packet.ts", "../device/index.ts"),
       fake("src/device/upload.ts", "../ui/store.ts"),
+      fake("src/device/stop.ts", "../i18n/translate.ts"),
       fake("src/sim/simulated-rbc.ts", "../link/index.ts"),
       fake("src/link/transport.ts", "../i18n/translate.ts"),
       fake("src/motion/errors.ts", "../i18n/outcomes/motion/motion-words.ts"),
@@ -284,6 +278,7 @@ describe("the import rule (docs/architecture.md)", () => {
     expect(importViolations(files)).toEqual([
       'src/protocol/packet.ts: "../device/index.ts" (protocol/ may not import device/)',
       'src/device/upload.ts: "../ui/store.ts" (device/ may not import ui/)',
+      'src/device/stop.ts: "../i18n/translate.ts" (device/ may not import i18n/)',
       'src/sim/simulated-rbc.ts: "../link/index.ts" (sim/ may not import link/)',
       'src/link/transport.ts: "../i18n/translate.ts" (link/ may not import i18n/)',
       'src/motion/errors.ts: "../i18n/outcomes/motion/motion-words.ts" (motion/ may not import i18n/)',
@@ -338,5 +333,172 @@ describe("the import rule (docs/architecture.md)", () => {
       'src/ui/app.ts: "../../tests/unit/helpers.ts" (leaves src/)',
       'src/tools/x.ts: "" (a source file outside the layers of docs/architecture.md)',
     ]);
+  });
+});
+
+/**
+ * The features of the panel (docs/architecture.md, "Features"): each folder of src/ui/features/ is one feature.
+ *
+ * 1. From outside feature X (another feature, the shell, the session, any file of src/ui/), an import of a file of
+ *    X names X/index.ts, the feature's public face. The exceptions are named, with their reason, in
+ *    `FEATURE_EXCEPTIONS`.
+ * 2. No cycle between features: the graph of "a file of A imports a file of B" has none, so no two features import
+ *    each other; what both need lives in a module of src/ui/ outside the features, or in the store.
+ */
+const FEATURE_EXCEPTIONS: readonly {
+  readonly allows: (from: string, target: string, dynamic: boolean) => boolean;
+  readonly why: string;
+}[] = [
+  {
+    allows: (_from, _target, dynamic) => dynamic,
+    why:
+      "a lazily loaded module (a view of the registry, the packet log) is named by its own file in import(): " +
+      "through an index, everything the index re-exports would load with it, or come into its importer's chunk",
+  },
+  {
+    allows: (from, target) =>
+      from === "src/ui/app-state.ts" && /^src\/ui\/features\/[^/]+\/([a-z-]+-)?state\.ts$/.test(target),
+    why:
+      "the store's composition: app-state.ts gathers each feature's slice (type, initial value) from its state " +
+      "file (state.ts, and live-state.ts for the Editor's second slice), a leaf module, without bringing the " +
+      "feature's actions and views into the first load",
+  },
+];
+
+const featureOf = (path: string): string | undefined => /^src\/ui\/features\/([^/]+)\//.exec(path)?.[1];
+
+/** Static imports (`import type` and `typeof import()` too) and dynamic `import()`s, resolved to repository paths. */
+function resolvedImports(file: SourceFile): { spec: string; target: string; dynamic: boolean }[] {
+  const statics = IMPORT_PATTERNS.slice(0, 2).flatMap((pattern) =>
+    [...file.text.matchAll(pattern)].map((m) => ({ spec: m[1] ?? "", dynamic: false })),
+  );
+  const calls = [...file.text.matchAll(/(\btypeof\s+)?\bimport\(\s*["']([^"']+)["']\s*\)/g)].map((m) => ({
+    spec: m[2] ?? "",
+    dynamic: m[1] === undefined,
+  }));
+  return [...statics, ...calls]
+    .filter(({ spec }) => spec.startsWith("."))
+    .map((i) => ({ ...i, target: normalize(join(dirname(file.path), i.spec)) }));
+}
+
+/** Which features each feature imports (static or dynamic), by name, sorted. */
+function featureGraph(files: readonly SourceFile[]): Map<string, string[]> {
+  const graph = new Map<string, Set<string>>();
+  for (const file of files) {
+    const from = featureOf(file.path);
+    if (!from) continue;
+    const uses = graph.get(from) ?? new Set<string>();
+    graph.set(from, uses);
+    for (const { target } of resolvedImports(file)) {
+      const to = featureOf(target);
+      if (to && to !== from) uses.add(to);
+    }
+  }
+  return new Map([...graph].sort(([a], [b]) => a.localeCompare(b)).map(([f, uses]) => [f, [...uses].sort()]));
+}
+
+/** Each cycle of the graph once, as "a → b → a" (starting from its first feature in alphabetical order). */
+function featureCycles(graph: ReadonlyMap<string, readonly string[]>): string[] {
+  const found = new Set<string>();
+  const walk = (path: readonly string[]) => {
+    for (const next of graph.get(path[path.length - 1] ?? "") ?? []) {
+      if (next === path[0]) found.add([...path, next].join(" → "));
+      else if (next > (path[0] ?? "") && !path.includes(next)) walk([...path, next]);
+    }
+  };
+  for (const feature of graph.keys()) walk([feature]);
+  return [...found];
+}
+
+/** Every import that breaks the features' rules, as `path: "specifier" (reason)`, then each cycle. */
+function featureViolations(files: readonly SourceFile[]): string[] {
+  const violations: string[] = [];
+  for (const file of files) {
+    for (const { spec, target, dynamic } of resolvedImports(file)) {
+      const to = featureOf(target);
+      if (!to || to === featureOf(file.path) || target === `src/ui/features/${to}/index.ts`) continue;
+      if (FEATURE_EXCEPTIONS.some((e) => e.allows(file.path, target, dynamic))) continue;
+      violations.push(`${file.path}: "${spec}" (outside ${to}/, import src/ui/features/${to}/index.ts)`);
+    }
+  }
+  return [
+    ...violations,
+    ...featureCycles(featureGraph(files)).map((c) => `features import each other: ${c}`),
+  ];
+}
+
+/** The table of docs/architecture.md ("Features"): each feature and the features it uses. */
+function featureTable(graph: ReadonlyMap<string, readonly string[]>): string {
+  const rows = [...graph].map(
+    ([f, uses]) => `| \`${f}\` | ${uses.length === 0 ? "—" : uses.map((u) => `\`${u}\``).join(", ")} |`,
+  );
+  return ["| feature | uses |", "|---|---|", ...rows].join("\n");
+}
+
+describe("features", () => {
+  const ui = repository.filter((f) => f.path.startsWith("src/ui/"));
+
+  it("are used from outside only through their index.ts, and never import each other, in every file of src/ui/", () => {
+    expect(featureGraph(ui).size).toBeGreaterThan(10);
+    expect(featureViolations(ui)).toEqual([]);
+  });
+
+  it("are drawn in docs/architecture.md as the code has them", () => {
+    const docs = readFileSync(join(ROOT, "docs/architecture.md"), "utf8");
+    expect(docs).toContain(featureTable(featureGraph(ui)));
+  });
+
+  const fake = (path: string, ...imports: string[]): SourceFile => ({
+    path,
+    text: imports.map((spec, i) => `import { x${i} } from "${spec}";`).join("\n"),
+  });
+
+  it("accepts the index, a feature's own files, lazily loaded views and the store's composition", () => {
+    const files = [
+      fake("src/ui/features/a/view.ts", "./state.ts", "../b/index.ts", "../../said.ts"),
+      fake("src/ui/features/b/index.ts", "./actions.ts"),
+      fake("src/ui/app-state.ts", "./features/a/state.ts", "./features/b/live-state.ts"),
+      { path: "src/ui/shell/registry.ts", text: 'const load = () => import("../features/a/a-view.ts");' },
+    ];
+    expect(featureViolations(files)).toEqual([]);
+  });
+
+  it("refuses an import of a feature's file from outside it, static or type-only", () => {
+    const files = [
+      fake("src/ui/features/a/view.ts", "../b/actions.ts"),
+      { path: "src/ui/session.ts", text: 'import type { Log } from "./features/b/log.ts";' },
+      { path: "src/ui/context.ts", text: 'type Log = typeof import("./features/b/log.ts");' },
+      fake("src/ui/app-state.ts", "./features/a/actions.ts"),
+      fake("src/ui/features/b/nested/deep.ts", "../../c/index.ts"),
+    ];
+    expect(featureViolations(files)).toEqual([
+      'src/ui/features/a/view.ts: "../b/actions.ts" (outside b/, import src/ui/features/b/index.ts)',
+      'src/ui/session.ts: "./features/b/log.ts" (outside b/, import src/ui/features/b/index.ts)',
+      'src/ui/context.ts: "./features/b/log.ts" (outside b/, import src/ui/features/b/index.ts)',
+      'src/ui/app-state.ts: "./features/a/actions.ts" (outside a/, import src/ui/features/a/index.ts)',
+    ]);
+  });
+
+  it("refuses features that import each other, directly or round a longer circle, even through an index", () => {
+    const files = [
+      fake("src/ui/features/a/x.ts", "../b/index.ts"),
+      fake("src/ui/features/b/y.ts", "../a/index.ts", "../c/index.ts"),
+      fake("src/ui/features/c/z.ts", "../d/index.ts"),
+      { path: "src/ui/features/d/w.ts", text: 'const later = () => import("../b/lazy-view.ts");' },
+    ];
+    expect(featureViolations(files)).toEqual([
+      "features import each other: a → b → a",
+      "features import each other: b → c → d → b",
+    ]);
+    expect(featureTable(featureGraph(files))).toBe(
+      [
+        "| feature | uses |",
+        "|---|---|",
+        "| `a` | `b` |",
+        "| `b` | `a`, `c` |",
+        "| `c` | `d` |",
+        "| `d` | `b` |",
+      ].join("\n"),
+    );
   });
 });

@@ -8,7 +8,6 @@ import { servoText } from "../../src/i18n/outcomes/servos/servo-words.ts";
 import { HUNO_MIRROR_PAIRS } from "../../src/motion/mirror.ts";
 import { figurePoints } from "../../src/ui/features/doctor/model.ts";
 import { jointLabel } from "../../src/ui/features/motions/plot-data.ts";
-import { jointName as viewsJointName } from "../../src/ui/features/zeros/joints/joint-name.ts";
 import { HUNO_JOINTS } from "../../src/ui/robot3d/huno-model.ts";
 import { tsFiles } from "../support/source-files.ts";
 
@@ -101,7 +100,6 @@ describe("the joints' names", () => {
 
   it("are what every consumer says for servo n: views, charts, the servo check, rbc, the protocol's English", () => {
     expect(HUNO_JOINT_NAMES).toEqual(EN);
-    expect(viewsJointName).toBe(jointName);
     for (const id of IDS) {
       expect(servoLabel(id)).toBe(`servo ${id} (${EN[id]})`);
       for (const locale of ["en", "ko"] as const) {

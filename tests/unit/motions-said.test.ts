@@ -1,9 +1,9 @@
 import { describe, expect, it } from "vitest";
 import { RbcCancelledError } from "../../src/device/errors.ts";
+import { inEveryLanguage, said, wordOf } from "../../src/i18n/said.ts";
 import { noticeOf, noticeText, runningWords } from "../../src/ui/app-state.ts";
 import { motionsMessages } from "../../src/ui/features/motions/messages.ts";
 import { cancelledEarlySaid } from "../../src/ui/features/motions/upload-results.ts";
-import { inEveryLanguage, said, wordOf } from "../../src/ui/said.ts";
 
 // Issue 21 item 6 in Motions: an upload cancelled before any byte says "by Stop" from the device error's fact
 // (set by Stop's own cancel), never from its English text; the names of operations under way are worded in the
@@ -42,7 +42,7 @@ describe("a text in every language", () => {
     const text = inEveryLanguage((l) => (l === "ko" && loaded ? "한국어" : "English"));
     const n = noticeOf("ok", "en", [
       said(motionsMessages, "motions.upload.errorAfter", {
-        words: said(motionsMessages, "motions.upload.noError"),
+        words: said(motionsMessages, "motions.upload.refused"),
       }),
     ]);
     expect(text.ko).toBe("English");

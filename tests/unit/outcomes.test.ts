@@ -1,32 +1,32 @@
 /**
  * The outcome catalogue (src/i18n/outcomes, issue #19 item 1): every device outcome is worded once, in English
- * and Korean, from its code and facts. The device's errors take their English `message` from it, and the CLI
- * and the panel show the same words. Literal sentences, so a change to a word shows here.
+ * and Korean, from its code and facts. The device's errors carry those (their `message` is a technical line),
+ * and `errorText`, the CLI and the panel show the catalogue's words. Literal sentences, so a change to a word shows here.
  */
 import { describe, expect, it } from "vitest";
 import { RbcInBootloaderError } from "../../src/device/bootloader-prompt.ts";
 import {
+  RbcDisconnectedError,
   RbcNotConnectedError,
   RbcTimeoutError,
+  RbcVerifyError,
   ZeroBackupError,
   ZeroWriteFailedError,
 } from "../../src/device/errors.ts";
-import {
-  FIRMWARE_NOTICES,
-  FirmwareUpdateError,
-  firmwareFileSummary,
-  firmwareResultSentence,
-} from "../../src/device/firmware-update.ts";
-import { UPLOAD_NOTICES } from "../../src/device/motion-upload.ts";
+import { FirmwareUpdateError } from "../../src/device/firmware-update.ts";
 import {
   inBootloaderRecoverText,
   inBootloaderText,
+  UPLOAD_NOTICES,
   uploadNoticeText,
 } from "../../src/i18n/outcomes/device.ts";
 import { errorText } from "../../src/i18n/outcomes/error-text.ts";
 import {
+  FIRMWARE_NOTICES,
   firmwareFailureText,
+  firmwareFileSummary,
   firmwareNoticeText,
+  firmwareResultSentence,
   firmwareResultText,
   firmwareSummaryText,
 } from "../../src/i18n/outcomes/firmware/firmware-words.ts";
@@ -41,7 +41,7 @@ describe("a failed firmware update", () => {
     });
     expect(e.code).toBe("timeout");
     expect(e.waitedMs).toBe(60_000);
-    expect(e.message).toBe(
+    expect(errorText(e, "en")).toBe(
       "The robot's bootloader did not announce itself within 60 s after the robot was to be switched off and on. " +
         "Nothing was written: the robot still holds its previous firmware. " +
         "Switch the robot off, then on again while the update waits for it, and run the update again; keep the cable plugged in.",
@@ -51,7 +51,7 @@ describe("a failed firmware update", () => {
         "아무것도 쓰지 않았어요. 로봇에는 이전 펌웨어가 그대로 있어요. " +
         "업데이트가 기다리는 동안 로봇을 껐다가 다시 켜고, 업데이트를 다시 해 주세요. 케이블은 꽂아 두세요.",
     );
-    expect(errorText(e, "en")).toBe(e.message);
+    expect(errorText(e, "ko")).toBe(firmwareFailureText(e, "ko"));
   });
 
   it("names the file's line and the time waited, and a half-written flash", () => {
@@ -82,13 +82,14 @@ describe("a failed firmware update", () => {
       line: 3,
       tries: 4,
     });
-    expect(device.message).toBe(errorText(fromDialogue, "en"));
+    expect(errorText(device, "en")).toBe(errorText(fromDialogue, "en"));
     expect(device.code).toBe("upload-failed");
   });
 
   it("after @ with a silent robot: the new firmware is written, the advice is a trusted file", () => {
     const e = new FirmwareUpdateError({ failure: "no-answer", holds: "new-firmware", waitedMs: 900 });
-    expect(e.message).toBe(
+    expect(e).toMatchObject({ failure: "no-answer", holds: "new-firmware", waitedMs: 900 });
+    expect(errorText(e, "en")).toBe(
       "The robot does not answer after the update within 900 ms. " +
         "The bootloader reported the new firmware written without errors. " +
         "Switch the robot off and on; if it still does not answer, run the update again with a firmware file you trust (the bootloader is never overwritten).",
@@ -138,12 +139,12 @@ describe("a robot waiting in its bootloader (issue 20 item 11)", () => {
   it("is said from its facts in both languages, with the recovery to run", () => {
     const e = new RbcInBootloaderError({ prompts: 3, overMs: 600 });
     expect(e.code).toBe("in-bootloader");
-    expect(e.message).toBe(
+    expect(e.facts).toEqual({ prompts: 3, overMs: 600 });
+    expect(errorText(e, "en")).toBe(
       "The robot is waiting in its bootloader: it sent the bootloader's prompt (^) 3 times and answered no request. " +
         "Its firmware is probably missing or incomplete (an interrupted firmware update, say). " +
         "Run the firmware update again, in recovery mode, to give it a firmware; the bootloader is never overwritten.",
     );
-    expect(errorText(e, "en")).toBe(e.message);
     expect(errorText(e, "ko")).toBe(
       "로봇이 부트로더에서 기다리고 있어요. 부트로더 신호(^)를 3번 보냈고 어떤 요청에도 응답하지 않았어요. " +
         "펌웨어가 없거나 불완전할 수 있어요(예: 펌웨어 업데이트가 중간에 끊긴 경우). " +
@@ -218,28 +219,51 @@ describe("a firmware update's other words", () => {
 });
 
 describe("the device's errors", () => {
-  it("take their fixed English from the catalogue and are said from the same facts in Korean", () => {
-    expect(new RbcNotConnectedError().message).toBe(
+  it("are said from their code and facts by the catalogue, in English and in Korean", () => {
+    expect(new RbcNotConnectedError().code).toBe("not-connected");
+    expect(errorText(new RbcNotConnectedError(), "en")).toBe(
       "No robot is connected. Connect the robot (or the demo robot) first.",
     );
     const timeout = new RbcTimeoutError("Read zeros", 1000);
-    expect(timeout.message).toBe(
+    expect([timeout.command, timeout.waitedMs]).toEqual(["Read zeros", 1000]);
+    expect(timeout.message).toBe("no reply to Read zeros within 1000 ms");
+    expect(errorText(timeout, "en")).toBe(
       'The robot did not answer "Read zeros" within 1,000 ms. Check that it is switched on and the cable is plugged in; the RBC also stays silent when it refuses a request.',
     );
     const failed = new ZeroWriteFailedError(timeout, "zeros-backup-A1.json");
     expect(failed.code).toBe("timeout");
-    expect(failed.message).toBe(
-      `${timeout.message} The zeros the robot held before are saved in zeros-backup-A1.json.`,
+    expect(failed.backupName).toBe("zeros-backup-A1.json");
+    expect(errorText(failed, "en")).toBe(
+      `${errorText(timeout, "en")} The zeros the robot held before are saved in zeros-backup-A1.json.`,
     );
     expect(errorText(failed, "ko")).toBe(
       '로봇이 1,000ms 안에 "Read zeros"에 응답하지 않았어요. 로봇이 켜져 있는지, 케이블이 꽂혀 있는지 확인해 주세요. RBC는 요청을 거부할 때도 응답하지 않아요. ' +
         "로봇에 있던 이전 영점은 zeros-backup-A1.json에 저장해 두었어요.",
     );
     const backup = new ZeroBackupError(new Error("disk full"));
-    expect(backup.message).toBe(
+    expect(backup.code).toBe("backup-failed");
+    expect(errorText(backup, "en")).toBe(
       "Nothing was written: the backup of the current zeros could not be saved (disk full).",
     );
     expect(errorText(backup, "ko")).toBe("현재 영점의 백업을 저장하지 못해서 아무것도 쓰지 않았어요.");
+  });
+
+  it("word a situation from its facts: a lost link's own report stays English, and in the technical detail", () => {
+    const lost = new RbcDisconnectedError(undefined, undefined, {
+      kind: "link-lost",
+      reported: "The serial device was unplugged.",
+      advice: "check-cable",
+    });
+    expect(lost.message).toBe(
+      "disconnected: link-lost reported=The serial device was unplugged. advice=check-cable",
+    );
+    expect(errorText(lost, "en")).toBe(
+      "The serial device was unplugged. Check the cable, then connect again.",
+    );
+    expect(errorText(lost, "ko")).toBe("로봇과의 연결이 끊겼어요. 케이블을 확인한 뒤 다시 연결해 주세요.");
+    const verify = new RbcVerifyError("zeros read back 1,2 instead of 1,3", [1, 3], [1, 2]);
+    expect(errorText(verify, "en")).toBe("Zeros were sent, but the robot reads back 1,2 instead of 1,3.");
+    expect(errorText(verify, "ko")).toBe("영점을 보냈지만, 로봇에서 다시 읽으니 1,3 대신 1,2 값이 나와요.");
   });
 
   it("are recognised by their class, not by their name", () => {

@@ -52,6 +52,28 @@ describe("RbcClient over the activity machine", () => {
     expect(sim.servos.slice(0, 16).every((s) => s.passive)).toBe(true);
     expect(client.activity.doing).toMatchObject({ kind: "direct", use: "limp" });
     expect(client.activity.halt).toBeUndefined();
+    expect(client.activity.limp).toBe(true);
+  });
+
+  it("tells every change of its activity; limp until a servo is driven, kept when it leaves direct mode", async () => {
+    const { client, run } = await makeRig({ sim: { basicPostureDone: true } });
+    const seen: Array<{ doing: string; halt?: string; limp: boolean }> = [];
+    client.activityChanges.on((a) => seen.push({ doing: a.doing.kind, halt: a.halt?.kind, limp: a.limp }));
+    await run(client.limp());
+    expect(client.activity.limp).toBe(true);
+    await run(client.exitDirectMode());
+    expect(client.activity).toMatchObject({ doing: { kind: "idle" }, limp: true });
+    await run(client.enterDirectMode());
+    await run(client.servos.move(3, 120, 2));
+    expect(client.activity.limp).toBe(false);
+    expect(seen).toEqual([
+      { doing: "idle", halt: "limp", limp: false },
+      { doing: "direct", halt: "limp", limp: false },
+      { doing: "direct", halt: undefined, limp: true },
+      { doing: "idle", halt: undefined, limp: true },
+      { doing: "direct", halt: undefined, limp: true },
+      { doing: "direct", halt: undefined, limp: false },
+    ]);
   });
 
   it("it ended just before the 7: Stop says so, after Basic posture (which the 7 started) confirmed", async () => {

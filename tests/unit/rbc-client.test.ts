@@ -87,7 +87,7 @@ describe("RbcClient against the simulated RBC", () => {
     const { client, run } = await makeRig();
     const error = await run(client.runMotion(4).catch((e) => e));
     expect(error).toMatchObject({ code: "motion-ignored" });
-    expect(String(error.message)).toMatch(/Basic posture \(7\)/);
+    expect(errorText(error, "en")).toMatch(/Basic posture \(7\)/);
   });
 
   it("refuses motion numbers outside 0-63 and sounds outside 1-25 before sending", async () => {
@@ -137,7 +137,8 @@ describe("RbcClient against the simulated RBC", () => {
     await run(client.writeAction(big.subarray(0, 5000)));
     const error = await run(client.writeAction(big.subarray(0, 4000)).catch((e) => e));
     expect(error).toMatchObject({ code: "rejected" });
-    expect(String(error.message)).toMatch(/has 4000 bytes, 3136 are free/);
+    expect(error.situation).toEqual({ kind: "not-enough-memory", area: "action", total: 4000, free: 3136 });
+    expect(errorText(error, "en")).toMatch(/has 4000 bytes, 3136 are free/);
     expect(sim.actions).toHaveLength(1);
     // Client and simulator agree on the edge: a file exactly as large as the free memory fits.
     const exact = await run(client.writeAction(big.subarray(0, 3136)));
@@ -165,8 +166,9 @@ describe("RbcClient against the simulated RBC", () => {
       total: 624,
       outcome: "nothing-recorded",
     });
-    expect(String(error.message)).toMatch(/192 of 624 bytes/);
-    expect(String(error.message)).toMatch(/recorded nothing/);
+    expect(error.facts).toMatchObject({ stop: "cancelled", acknowledged: 192, total: 624 });
+    expect(errorText(error, "en")).toMatch(/192 of 624 bytes/);
+    expect(errorText(error, "en")).toMatch(/recorded nothing/);
     expect(sim.motions).toHaveLength(0);
     // Usable afterwards: the next upload succeeds.
     expect((await run(client.writeMotion(image))).freeAfter).toBe(23936);
@@ -445,7 +447,7 @@ describe("a motion the robot ignores, told from one that plays (docs/protocol.md
     const error = await run(client.runMotion(12).catch((e) => e));
     expect(error).toMatchObject({ code: "rejected", deviceErrorCode: 3, motion: 12 });
     // One number per motion: the one Run took, never the download slot's own count.
-    expect(error.message).toBe(
+    expect(errorText(error, "en")).toBe(
       "Motion 12 did not run: the robot holds no motion under that number (it reports error 3). Upload a motion first.",
     );
     expect(errorText(error, "ko")).toBe(
@@ -461,7 +463,8 @@ describe("a motion the robot ignores, told from one that plays (docs/protocol.md
     const t0 = clock.now();
     const error = await run(client.runMotion(4).catch((e) => e));
     expect(error).toMatchObject({ code: "motion-ignored" });
-    expect(String(error.message)).toMatch(/probably ignored it.*Run motion 7 first/);
+    expect(error.facts).toMatchObject({ motion: 4, cause: "power-up" });
+    expect(errorText(error, "en")).toMatch(/probably ignored it.*Run motion 7 first/);
     expect(clock.now() - t0).toBeGreaterThanOrEqual(1625 + 2000);
   });
 
@@ -478,6 +481,7 @@ describe("a motion the robot ignores, told from one that plays (docs/protocol.md
     await run(client.runMotion(12).catch(() => undefined)); // sets error 3
     const error = await run(client.runMotion(13, { expectedMs: 1000 }).catch((e) => e));
     expect(error).toMatchObject({ code: "timeout" });
-    expect(String(error.message)).toMatch(/whether it played is not known/);
+    expect(error.facts).toMatchObject({ motion: 13 });
+    expect(errorText(error, "en")).toMatch(/whether it played is not known/);
   });
 });

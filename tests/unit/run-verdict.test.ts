@@ -6,6 +6,7 @@ import {
   RbcRunNoReplyError,
   RbcRunNotPlayedError,
 } from "../../src/device/index.ts";
+import { errorText } from "../../src/i18n/index.ts";
 import { toHex } from "../../src/protocol/index.ts";
 import { EX } from "../fixtures/protocol-examples.ts";
 import { makeRig } from "../support/rig.ts";
@@ -71,7 +72,7 @@ describe("item 1: a Run answered for another motion is not reported as played", 
     expect(e).toBeInstanceOf(RbcRunNotPlayedError);
     expect((e as RbcRunNotPlayedError).code).toBe("not-played");
     expect((e as RbcRunNotPlayedError).report).toMatchObject({ verdict: "after-busy", before: "busy" });
-    expect((e as Error).message).toContain("Motion 4 was not played");
+    expect(errorText(e, "en")).toContain("Motion 4 was not played");
   });
 
   it("run 7 during motion 10 started elsewhere: 'stopped-busy' (worded as Stop), not 'Basic posture done'", async () => {
@@ -85,7 +86,7 @@ describe("item 1: a Run answered for another motion is not reported as played", 
     const { client, run, fail } = await makeRig({ sim: { userFirmware: true, basicPostureDone: true } });
     const e = (await fail(client.runMotion(12, { expectedMs: 3500 }))) as RbcRunNotPlayedError;
     expect(e.report).toMatchObject({ verdict: "too-soon", expectedMs: 3500 });
-    expect(e.message).toBe(
+    expect(errorText(e, "en")).toBe(
       "The reply came after 0.0 s, far sooner than motion 12's 3.5 s: it did not play, or ended at once.",
     );
     const unknown = await run(client.runMotionReport(12));
@@ -99,7 +100,7 @@ describe("item 2: busy, not gone; main-loop replies matched by count", () => {
     const e = await fail(client.readDistance());
     expect(e).toBeInstanceOf(RbcBusyError);
     expect((e as RbcBusyError).code).toBe("busy");
-    expect((e as Error).message).toContain("The robot is busy, probably playing a motion");
+    expect(errorText(e, "en")).toContain("The robot is busy, probably playing a motion");
     expect(client.activity.doing.kind).toBe("busy");
   });
 
@@ -136,8 +137,8 @@ describe("item 5: a Run with no reply says what is known, never the power-up rul
     const e = (await fail(client.runMotion(20))) as RbcRunNoReplyError;
     expect(e).toBeInstanceOf(RbcRunNoReplyError);
     expect(e.facts).toMatchObject({ cause: "busy", busy: true, errorCode: 0xff });
-    expect(e.message).toContain("hold the robot and switch it off");
-    expect(e.message).not.toContain("Basic posture (7)");
+    expect(errorText(e, "en")).toContain("hold the robot and switch it off");
+    expect(errorText(e, "en")).not.toContain("Basic posture (7)");
   });
 
   it("after power-up with no 7 sent: the power-up rule (the robot is idle and silent)", async () => {
@@ -154,7 +155,7 @@ describe("item 6: a silent Run reads 0x11 and says what it shows", () => {
     const e = (await fail(client.runMotion(7))) as RbcRunNoReplyError;
     expect(e.code).toBe("servo-silent");
     expect(e.facts).toMatchObject({ errorCode: 11, cause: "servo-silent" });
-    expect(e.message).toContain("a servo does not answer: check the servo cables and the battery");
+    expect(errorText(e, "en")).toContain("a servo does not answer: check the servo cables and the battery");
   });
 });
 

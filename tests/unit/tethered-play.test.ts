@@ -12,6 +12,7 @@ import {
   type TetheredPlayProgress,
   type TetheredPlayResult,
 } from "../../src/device/index.ts";
+import { errorText } from "../../src/i18n/index.ts";
 import { type Transport, WebSerialTransport } from "../../src/link/index.ts";
 import { type Motion, newMotion, openMotion } from "../../src/motion/index.ts";
 import { FACTORY_ZEROS, parseRbm, toHex } from "../../src/protocol/index.ts";
@@ -289,7 +290,8 @@ describe("the schedule", () => {
       lastFrame: { scene: 0, frame: 2 },
       holds: "unknown",
     });
-    expect(error.message).toMatch(
+    expect(error.situation).toMatchObject({ kind: "play-link-lost", timedOut: true, framesSent: 2 });
+    expect(errorText(error, "en")).toMatch(
       /^A frame could not be written within its time during tethered play, after 2 of 5/,
     );
   });
@@ -389,7 +391,8 @@ describe("Stop, Limp and failures", () => {
       code: "invalid-argument",
       holds: "nothing-sent",
     });
-    expect(error.message).toMatch(/16 ms apart .*error 6.* Nothing was sent to the robot\.$/);
+    expect(error.situation).toEqual({ kind: "play-refused" });
+    expect(errorText(error, "en")).toMatch(/16 ms apart .*error 6.* Nothing was sent to the robot\.$/);
     expect(rig.port.stats.bytesFromPc).toBe(before);
     expect(rig.client.mode).toBe("packet");
     const badRange = await rig.fail(rig.client.playTethered(pair(), { range: { from: 1, to: 0 } }));
@@ -418,8 +421,9 @@ describe("Stop, Limp and failures", () => {
       lastFrame: { scene: 0, frame: 2 },
       holds: "unknown",
     });
-    expect(error.message).toContain("after 2 of 5 frames (the last: scene 0, frame 2)");
-    expect(error.message).toContain("state is unknown");
+    expect(errorText(error, "en")).toContain("after 2 of 5 frames (the last: scene 0, frame 2)");
+    expect(errorText(error, "en")).toContain("state is unknown");
+    expect(errorText(error, "ko")).toContain("프레임 5개 중 2개를 보낸 뒤 (마지막: 장면 0, 프레임 2)");
     expect(rig.client.mode).toBe("disconnected");
   });
 
@@ -432,7 +436,7 @@ describe("Stop, Limp and failures", () => {
     const error = (await rig.fail(playing)) as TetheredPlayError;
     off();
     expect(error).toMatchObject({ code: "timeout", framesSent: 5, holds: "last-frame" });
-    expect(error.message).toMatch(
+    expect(errorText(error, "en")).toMatch(
       /All 5 frames were sent \(the last: scene 1, frame 3\), but no servo answered/,
     );
   });
@@ -446,7 +450,9 @@ describe("Stop, Limp and failures", () => {
       rig.client.playTethered(pair(), { robotZeros: FACTORY_ZEROS, platform: 1 }),
     )) as TetheredPlayError;
     expect(error).toMatchObject({ code: "timeout", framesSent: 0, holds: "nothing-sent" });
-    expect(error.message).toMatch(/^Servos 0, 1 and 2 did not answer/);
+    expect(error.situation).toEqual({ kind: "play-servos-silent", silent: [0, 1, 2], maxId: 2 });
+    expect(errorText(error, "en")).toMatch(/^Servos 0, 1 and 2 did not answer/);
+    expect(errorText(error, "ko")).toMatch(/^서보 0, 1, 2번이 서보 제어에서 응답하지 않아서/);
     expect(frameWrites(log)).toHaveLength(0);
   });
 });

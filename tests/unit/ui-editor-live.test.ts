@@ -1,5 +1,6 @@
 import { afterEach, beforeAll, describe, expect, it } from "vitest";
 import { errorText } from "../../src/i18n/outcomes/error-text.ts";
+import { type Said, wordOf } from "../../src/i18n/said.ts";
 import {
   addScene,
   type Motion,
@@ -51,7 +52,6 @@ import {
   TEACH_IN_QUESTION,
 } from "../../src/ui/features/editor/teach-in-model.ts";
 import { PacketLog } from "../../src/ui/features/log/packet-log.ts";
-import { type Said, wordOf } from "../../src/ui/said.ts";
 import { Session } from "../../src/ui/session.ts";
 import { SIMULATED_CLOCK } from "../../src/ui/simulated-clock.ts";
 import { createStore } from "../../src/ui/store.ts";

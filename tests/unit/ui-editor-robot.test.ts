@@ -115,7 +115,13 @@ describe("why the Editor's robot buttons refuse", () => {
     expect(robotRefusal(base)).toBe("Connect a robot first.");
     expect(robotRefusal({ ...base, connection: connected })).toBeUndefined();
     expect(motionPlaying({ ...base, connection: connected })).toBe(false);
-    const busy = { ...base, connection: { ...connected, busy: { since: 0 } } };
+    // The device's activity, as the store keeps it: a motion started elsewhere, found by the busy probe.
+    const activity = {
+      doing: { kind: "busy" as const, since: 0, evidence: "probe" as const },
+      halt: undefined,
+      limp: false,
+    };
+    const busy = { ...base, connection: { ...connected, activity } };
     expect(robotRefusal(busy)).toBe(
       "A motion is playing: the robot ignores everything but Basic posture (7) until it ends.",
     );

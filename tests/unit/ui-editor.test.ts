@@ -1,5 +1,6 @@
 import { readFileSync } from "node:fs";
 import { afterEach, beforeEach, describe, expect, it, vi } from "vitest";
+import { said, wordOf } from "../../src/i18n/said.ts";
 import { translator } from "../../src/i18n/translate.ts";
 import {
   addScene,
@@ -40,7 +41,6 @@ import {
   applyEdit,
   EDITOR_TABS,
   type EditorState,
-  editorTabAfterKey,
   initialEditor,
   isDetached,
   redoEdit,
@@ -55,7 +55,7 @@ import {
   limpNotice,
   readNotice,
 } from "../../src/ui/features/editor/teach-in-model.ts";
-import { said, wordOf } from "../../src/ui/said.ts";
+import { tabAfterKey } from "../../src/ui/tabs-keyboard.ts";
 import { motionRefusal as refused } from "../support/motion-refusal.ts";
 
 const WAVE = readFileSync(new URL("../../examples/wave.rbm", import.meta.url), "latin1");
@@ -497,23 +497,23 @@ describe("the tab list's keys", () => {
   });
 
   it("moves to the next and previous tab with the arrows, wrapping at either end", () => {
-    expect(editorTabAfterKey("pose", "ArrowRight")).toBe("scene");
-    expect(editorTabAfterKey("teach", "ArrowRight")).toBe("play");
-    expect(editorTabAfterKey("check", "ArrowRight")).toBe("pose");
-    expect(editorTabAfterKey("scene", "ArrowLeft")).toBe("pose");
-    expect(editorTabAfterKey("pose", "ArrowLeft")).toBe("check");
+    expect(tabAfterKey(EDITOR_TABS, "pose", "ArrowRight")).toBe("scene");
+    expect(tabAfterKey(EDITOR_TABS, "teach", "ArrowRight")).toBe("play");
+    expect(tabAfterKey(EDITOR_TABS, "check", "ArrowRight")).toBe("pose");
+    expect(tabAfterKey(EDITOR_TABS, "scene", "ArrowLeft")).toBe("pose");
+    expect(tabAfterKey(EDITOR_TABS, "pose", "ArrowLeft")).toBe("check");
   });
 
   it("goes to the first tab with Home and the last with End", () => {
-    expect(editorTabAfterKey("play", "Home")).toBe("pose");
-    expect(editorTabAfterKey("pose", "Home")).toBe("pose");
-    expect(editorTabAfterKey("scene", "End")).toBe("check");
-    expect(editorTabAfterKey("check", "End")).toBe("check");
+    expect(tabAfterKey(EDITOR_TABS, "play", "Home")).toBe("pose");
+    expect(tabAfterKey(EDITOR_TABS, "pose", "Home")).toBe("pose");
+    expect(tabAfterKey(EDITOR_TABS, "scene", "End")).toBe("check");
+    expect(tabAfterKey(EDITOR_TABS, "check", "End")).toBe("check");
   });
 
   it("leaves every other key alone (the page keeps it: Tab, Enter, up and down, letters)", () => {
     for (const key of ["ArrowUp", "ArrowDown", "Enter", " ", "Tab", "Escape", "a", "PageDown"]) {
-      expect(editorTabAfterKey("tools", key)).toBeUndefined();
+      expect(tabAfterKey(EDITOR_TABS, "tools", key)).toBeUndefined();
     }
   });
 });

@@ -3,8 +3,9 @@ import { describe, expect, it } from "vitest";
 import { parseRbm } from "../../src/protocol/rbm.ts";
 import { type RbmIssue, validateRbm } from "../../src/protocol/rbm-validate.ts";
 import { groupWarnings, largestJump } from "../../src/ui/features/motions/issue-groups.ts";
-import { MOTIONS_TABS, tabAfterKey } from "../../src/ui/features/motions/view-actions.ts";
+import { MOTIONS_TABS } from "../../src/ui/features/motions/view-actions.ts";
 import { sameTarget } from "../../src/ui/features/motions/views/upload-in-place.ts";
+import { tabAfterKey } from "../../src/ui/tabs-keyboard.ts";
 
 const WAVE = readFileSync(new URL("../../examples/wave.rbm", import.meta.url), "latin1");
 
@@ -80,12 +81,12 @@ describe("warnings grouped by kind (issue #11)", () => {
 describe("the Motions view's tabs and in-place results", () => {
   it("moves between tabs with the arrow keys, Home and End, wrapping around", () => {
     expect(MOTIONS_TABS.map((t) => t.id)).toEqual(["files", "uploads", "run", "sounds"]);
-    expect(tabAfterKey("files", "ArrowRight")).toBe("uploads");
-    expect(tabAfterKey("files", "ArrowLeft")).toBe("sounds");
-    expect(tabAfterKey("sounds", "ArrowRight")).toBe("files");
-    expect(tabAfterKey("run", "Home")).toBe("files");
-    expect(tabAfterKey("files", "End")).toBe("sounds");
-    expect(tabAfterKey("files", "Enter")).toBeUndefined();
+    expect(tabAfterKey(MOTIONS_TABS, "files", "ArrowRight")).toBe("uploads");
+    expect(tabAfterKey(MOTIONS_TABS, "files", "ArrowLeft")).toBe("sounds");
+    expect(tabAfterKey(MOTIONS_TABS, "sounds", "ArrowRight")).toBe("files");
+    expect(tabAfterKey(MOTIONS_TABS, "run", "Home")).toBe("files");
+    expect(tabAfterKey(MOTIONS_TABS, "files", "End")).toBe("sounds");
+    expect(tabAfterKey(MOTIONS_TABS, "files", "Enter")).toBeUndefined();
   });
 
   it("shows an upload's result only at the card or the action files where it started", () => {

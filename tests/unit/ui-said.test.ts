@@ -1,7 +1,7 @@
 import { describe, expect, it } from "vitest";
+import { inEveryLanguage, said, saidText, wordOf } from "../../src/i18n/said.ts";
 import { noticeOf, noticeText } from "../../src/ui/app-state.ts";
-import { stopMessages } from "../../src/ui/features/connection/stop-messages.ts";
-import { inEveryLanguage, said, saidText, wordOf } from "../../src/ui/said.ts";
+import { stopMessages } from "../../src/ui/stop-messages.ts";
 
 // Issue 21 item 6: a message is kept as its code and facts and worded when drawn, so one made before a
 // language switch follows it.

@@ -4,9 +4,8 @@ import { initialState } from "../../src/ui/app-state.ts";
 import type { AppContext } from "../../src/ui/context.ts";
 import { PacketLog } from "../../src/ui/features/log/packet-log.ts";
 import { offerFor } from "../../src/ui/features/motions/run-actions.ts";
-import { motionsOf } from "../../src/ui/features/motions/state.ts";
+import { watchShelf } from "../../src/ui/features/motions/shelf-watch.ts";
 import { refreshDeviceInfo } from "../../src/ui/features/robot/actions.ts";
-import { loadShelf } from "../../src/ui/features/shelf/shelf-actions.ts";
 import { memoryShelfStorage } from "../../src/ui/features/shelf/shelf-store.ts";
 import { Session } from "../../src/ui/session.ts";
 import { createStore } from "../../src/ui/store.ts";
@@ -44,8 +43,8 @@ describe("the shelf on a connection", () => {
     expect(await run(session.connectDemo())).toBe(true);
     const ctx: AppContext = { store, session };
 
-    await run(loadShelf(ctx));
-    expect(motionsOf(store.get()).shelf).toMatchObject({ key: SERIAL_KEY, checked: false });
+    await run(watchShelf(ctx));
+    expect(store.get().shelf).toMatchObject({ key: SERIAL_KEY, checked: false });
     expect(offerFor(store.get(), 12)).toMatchObject({
       number: 12,
       name: "RbcPanel_Wave",
@@ -55,8 +54,8 @@ describe("the shelf on a connection", () => {
 
     // The Robot view (or Motions) reads the free memory: all 24,576 bytes free on this new demo robot.
     await run(refreshDeviceInfo(ctx));
-    await vi.waitFor(() => expect(motionsOf(store.get()).shelf?.checked).toBe(true));
-    const shelf = motionsOf(store.get()).shelf;
+    await vi.waitFor(() => expect(store.get().shelf?.checked).toBe(true));
+    const shelf = store.get().shelf;
     expect(shelf?.slots).toEqual([]);
     expect(shelf?.notice?.text).toBe(
       "Forgotten: motion 12 (RbcPanel_Wave). The robot's free memory (0 of 24,576 bytes in use) has no room for what was recorded: its memory was reset, or another program uploaded to it.",

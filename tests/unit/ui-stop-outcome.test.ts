@@ -1,8 +1,8 @@
 import { describe, expect, it } from "vitest";
 import { noticeMore, noticeText } from "../../src/ui/app-state.ts";
-import { stopOutcome } from "../../src/ui/features/connection/stop-outcome.ts";
+import { stopOutcome } from "../../src/ui/stop-outcome.ts";
 
-/** The top bar's sentence after Stop says only what the robot confirmed (src/ui/features/connection/stop-outcome.ts). */
+/** The top bar's sentence after Stop says only what the robot confirmed (src/ui/stop-outcome.ts). */
 describe("Stop's outcome sentence", () => {
   const base = { uploadCancelled: false, servoMovesDropped: true };
 

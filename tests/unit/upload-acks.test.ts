@@ -17,6 +17,7 @@ import {
   RbcUploadError,
   type UploadOutcome,
 } from "../../src/device/index.ts";
+import { errorText } from "../../src/i18n/index.ts";
 import { memoryFootprint } from "../../src/protocol/catalog.ts";
 import type { PortFaults } from "../../src/sim/index.ts";
 import { goldenImage } from "../data/project-data.ts";
@@ -138,8 +139,12 @@ async function cell(kind: Kind, k: number): Promise<void> {
   expect(result, String(error)).toBe(kind.expect(k));
   if (error instanceof RbcUploadError) {
     expect(error.total).toBe(IMAGE.length);
-    expect(error.message).toContain(`${error.acknowledged} of ${IMAGE.length} bytes were acknowledged`);
-    expect(error.message).toMatch(/recorded nothing: its free motion memory is unchanged \(24,576 bytes\)/);
+    expect(errorText(error, "en")).toContain(
+      `${error.acknowledged} of ${IMAGE.length} bytes were acknowledged`,
+    );
+    expect(errorText(error, "en")).toMatch(
+      /recorded nothing: its free motion memory is unchanged \(24,576 bytes\)/,
+    );
   }
 
   const counted = rig.client.stats.unansweredReplies - unansweredBefore;
@@ -148,13 +153,13 @@ async function cell(kind: Kind, k: number): Promise<void> {
     if (error instanceof RbcUploadError) {
       expect(error.code).toBe("upload-failed");
       expect(error.facts?.stop).toMatch(/^(extra|early)-ack$/);
-      expect(error.message).toMatch(
+      expect(errorText(error, "en")).toMatch(
         /An acknowledgement came (when none was due|sooner than its part could have reached the robot)/,
       );
       expect(error.cause).toBeInstanceOf(RbcUnexpectedAckError);
     }
   } else if (error instanceof RbcError) {
-    expect(error.message).not.toMatch(/An acknowledgement came/);
+    expect(errorText(error, "en")).not.toMatch(/An acknowledgement came/);
   }
 
   // Still usable: the mode is back, a read works, the next upload succeeds and the robot shows it.
@@ -211,7 +216,7 @@ describe("unexpected acknowledgements on a link without wire time", () => {
       expect(e).toBeInstanceOf(RbcUploadError);
       expect((e as RbcUploadError).outcome).toBe("nothing-recorded");
       expect((e as RbcUploadError).facts?.stop).toBe("extra-ack");
-      expect((e as Error).message).toMatch(
+      expect(errorText(e, "en")).toMatch(
         /^An acknowledgement came when none was due, so the upload stopped there/,
       );
       expect(stored).toBe(false);

@@ -55,9 +55,9 @@ describe("an upload's failure in words", () => {
     );
   });
 
-  it("the device's error carries the facts; its message is the English sentence, and Korean has the same numbers", () => {
+  it("the device's error carries the facts, said in English and in Korean with the same numbers", () => {
     const e = RbcUploadError.of("upload-failed", STOPPED);
-    expect(e.message).toBe(uploadFailureText(STOPPED, "en"));
+    expect(errorText(e, "en")).toBe(uploadFailureText(STOPPED, "en"));
     expect(e.facts).toEqual(STOPPED);
     expect(errorText(e, "ko")).toBe(uploadFailureText(STOPPED, "ko"));
     expect(errorText(e, "ko")).toContain("24,576바이트");

@@ -15,10 +15,13 @@ import {
   demoFileWords,
   firmwareFailureText,
   firmwareNoticeText as firmwareNotice,
+  firmwareRestartedText,
   firmwareResultText,
   firmwareSummaryText,
   hexProblemText,
 } from "../../i18n/outcomes/firmware/firmware-words.ts";
+import { demoFirmwareParts } from "../../i18n/outcomes/robot-facts.ts";
+import { inEveryLanguage, said, saidBy, saidText } from "../../i18n/said.ts";
 import { formatNumber, translator } from "../../i18n/translate.ts";
 import { declaredVersion } from "../../protocol/firmware-marker.ts";
 import { IntelHexError, type IntelHexImage, parseIntelHex } from "../../protocol/intel-hex.ts";
@@ -30,7 +33,6 @@ import { connectRobot, openRobotPort, robotPlace } from "../connect.ts";
 import { CliError, EXIT, UsageError } from "../errors.ts";
 import { COMMAND_HELP } from "../help/command-help.ts";
 import type { Output } from "../output.ts";
-import { said, saidBy, saidEach } from "../said.ts";
 import { unreadable } from "../zeros-files.ts";
 import { commandMessages } from "./messages.ts";
 
@@ -55,9 +57,10 @@ async function readHex(file: string, cwd: string): Promise<IntelHexImage> {
     return parseIntelHex(text);
   } catch (e) {
     if (!(e instanceof IntelHexError)) throw e;
-    const words = saidEach(commandMessages, "cmd.flash.notFirmware", (l) => [
-      { file: basename(file), reason: hexProblemText(e, l) },
-    ]);
+    const words = said(commandMessages, "cmd.flash.notFirmware", {
+      file: basename(file),
+      reason: inEveryLanguage((l) => hexProblemText(e, l)),
+    });
     throw new CliError("hex-invalid", words, EXIT.failed, { file, reason: e.code, line: e.line ?? null });
   }
 }
@@ -155,9 +158,11 @@ export const flashCommand: CommandDef = {
       // A demo file on a real robot would leave it without working firmware (docs/firmware-update.md).
       throw new CliError(
         "demo-file",
-        saidEach(commandMessages, "cmd.flash.demoFileRefused", (l) => {
-          const { title, text } = demoFileWords(declared, l);
-          return [{ title, text, cannotRun: demoFileCannotRunText(l), file }];
+        said(commandMessages, "cmd.flash.demoFileRefused", {
+          title: inEveryLanguage((l) => demoFileWords(declared, l).title),
+          text: inEveryLanguage((l) => demoFileWords(declared, l).text),
+          cannotRun: inEveryLanguage(demoFileCannotRunText),
+          file,
         }),
         EXIT.failed,
         { declaredVersion: formatFirmware(declared) },
@@ -166,9 +171,9 @@ export const flashCommand: CommandDef = {
     if (real && !values.yes && !env.stdin.isTTY) {
       throw new CliError(
         "confirmation-required",
-        saidEach(commandMessages, "cmd.flash.needsYes", (l) => [
-          { notice: firmwareNotice("experimental", l) },
-        ]),
+        said(commandMessages, "cmd.flash.needsYes", {
+          notice: inEveryLanguage((l) => firmwareNotice("experimental", l)),
+        }),
       );
     }
     if (env.signal.aborted) throw nothingSent();
@@ -197,7 +202,7 @@ export const flashCommand: CommandDef = {
       const version = { version: formatFirmware(before) };
       env.out.line(
         robot.demo
-          ? t("cmd.flash.demoReports", version)
+          ? demoFirmwareParts(version.version, locale).join("")
           : t("cmd.flash.robotReports", { ...version, port: where }),
       );
     }
@@ -250,10 +255,13 @@ export const flashCommand: CommandDef = {
         if (e.failure === "cancelled") {
           const what = firmwareFailureText(e, locale);
           env.out.note(`rbc: ${t("cmd.flash.interrupted", { what })}`);
-          env.out.result({ ok: false, error: { code: "interrupted", message: e.message, ...details } });
+          env.out.result({
+            ok: false,
+            error: { code: "interrupted", message: firmwareFailureText(e, "en"), ...details },
+          });
           return EXIT.interrupted;
         }
-        const words = { en: e.message, ko: firmwareFailureText(e, "ko") };
+        const words = saidText({ en: firmwareFailureText(e, "en"), ko: firmwareFailureText(e, "ko") });
         throw new CliError(e.failure, words, EXIT.failed, details);
       }
       throw e;
@@ -284,7 +292,7 @@ export const flashCommand: CommandDef = {
         lines: n(result.linesPerSecond),
       }),
     );
-    env.out.line(t("cmd.flash.restarted"));
+    env.out.line(`${firmwareRestartedText(locale)} ${t("cmd.flash.runPosture")}`);
     return EXIT.ok;
   },
 };

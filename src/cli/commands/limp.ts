@@ -1,4 +1,6 @@
 import { limpStoppedMotionFirstText, nothingSentText } from "../../i18n/outcomes/device.ts";
+import { limpResultText, limpWarningText } from "../../i18n/outcomes/limp-words.ts";
+import { said, saidBy } from "../../i18n/said.ts";
 import { translator } from "../../i18n/translate.ts";
 import { noExtraArguments, parseCommand } from "../args.ts";
 import { type CommandDef, localeOf } from "../command.ts";
@@ -6,7 +8,6 @@ import { confirm } from "../confirm.ts";
 import { connectRobot, robotPlace } from "../connect.ts";
 import { CliError, EXIT } from "../errors.ts";
 import { COMMAND_HELP } from "../help/command-help.ts";
-import { said, saidBy } from "../said.ts";
 import { commandMessages } from "./messages.ts";
 
 const OPTIONS = { yes: { type: "boolean", short: "y" } } as const;
@@ -23,11 +24,14 @@ export const limpCommand: CommandDef = {
     const locale = localeOf(env);
     const t = translator(commandMessages, locale);
     if (!values.yes && !env.stdin.isTTY) {
-      throw new CliError("confirmation-required", said(commandMessages, "cmd.limp.needsYes"));
+      throw new CliError(
+        "confirmation-required",
+        said(commandMessages, "cmd.limp.needsYes", { warning: saidBy(limpWarningText) }),
+      );
     }
     const robot = await connectRobot("limp", values, env);
     if (!values.yes) {
-      env.out.note(t("cmd.limp.warning"));
+      env.out.note(limpWarningText(locale));
       const answer = await confirm(env, t("cmd.limp.question", { robot: robotPlace(robot, locale) }));
       if (answer === "interrupted") {
         throw new CliError("interrupted", saidBy(nothingSentText), EXIT.interrupted);
@@ -37,13 +41,7 @@ export const limpCommand: CommandDef = {
     }
     const { confirmed, silent, stoppedMotionFirst } = await robot.client.limp();
     if (stoppedMotionFirst) env.out.line(limpStoppedMotionFirstText(locale));
-    if (silent.length === 0) {
-      env.out.line(t("cmd.limp.allPassive", { confirmed: String(confirmed.length) }));
-    } else {
-      env.out.line(
-        t("cmd.limp.someSilent", { confirmed: String(confirmed.length), silent: silent.join(", ") }),
-      );
-    }
+    env.out.line(limpResultText({ confirmed, silent }, locale));
     env.out.result({
       ok: silent.length === 0,
       confirmed,

@@ -1,7 +1,7 @@
+import { said } from "../../i18n/said.ts";
 import type { CommandDef } from "../command.ts";
 import { UsageError } from "../errors.ts";
 import { COMMAND_HELP } from "../help/command-help.ts";
-import { said } from "../said.ts";
 import { commandMessages } from "./messages.ts";
 
 export const logCommand: CommandDef = {

@@ -28,13 +28,11 @@ export const commandMessages = defineMessages({
   "cmd.info.demoRobot": { en: "The demo robot (simulated)", ko: "데모 로봇 (가상)" },
   "cmd.info.robotOn": { en: "Robot on {port}", ko: "{port}에 연결된 로봇" },
   "cmd.info.firmware": { en: "Firmware", ko: "펌웨어" },
-  "cmd.info.serialNumber": { en: "Serial number", ko: "시리얼 번호" },
   "cmd.info.serialNotReported": {
     en: "not reported (the robot did not answer 0x0C)",
     ko: "알려 주지 않음 (로봇이 0x0C에 응답하지 않았어요)",
   },
   "cmd.info.platform": { en: "Platform", ko: "플랫폼" },
-  "cmd.info.errorCode": { en: "Error code", ko: "오류 코드" },
   "cmd.info.memoryNotReported": {
     en: "not reported (the robot did not answer 0x0F)",
     ko: "알려 주지 않음 (로봇이 0x0F에 응답하지 않았어요)",
@@ -266,25 +264,9 @@ export const commandMessages = defineMessages({
   },
   "cmd.run.done": { en: "Done: {motion} in {duration}.", ko: "완료: {motion}, {duration} 걸렸어요." },
 
-  "cmd.stop.stopped": {
-    en: "The robot took Stop: motion {motion} ended at the end of its scene and the robot stands in that pose; `rbc run 7` straightens it. (Sent 7; the robot answered 07.)",
-    ko: "로봇이 정지를 받아들였어요. 모션 {motion}은(는) 장면이 끝날 때 멈췄고 로봇은 그 자세로 서 있어요. `rbc run 7`로 똑바로 세울 수 있어요. (7을 보냈고 로봇이 07로 응답했어요.)",
-  },
-  "cmd.stop.endedThenPosture": {
-    en: "motion {motion} had just ended; the robot took the 7 as Basic posture and confirmed it (07).",
-    ko: "모션 {motion}은(는) 막 끝난 뒤였어요. 로봇이 7을 기본 자세로 받아들이고 확인했어요 (07).",
-  },
-  "cmd.stop.posture": {
-    en: "Basic posture (7) cannot be interrupted: it played to its end and the robot stands straight. (The robot answered 07.)",
-    ko: "기본 자세(7)는 중간에 멈출 수 없어요. 끝까지 실행했고 로봇은 똑바로 서 있어요. (로봇이 07로 응답했어요.)",
-  },
-  "cmd.stop.unconfirmed": {
-    en: "sent 7 to stop motion {motion}, but the robot did not confirm. If it still moves, hold it (`rbc limp` makes every servo passive).",
-    ko: "모션 {motion}을(를) 멈추려고 7을 보냈지만 로봇이 확인하지 않았어요. 아직 움직이면 로봇을 잡아 주세요 (`rbc limp`로 모든 서보의 힘을 뺄 수 있어요).",
-  },
-  "cmd.stop.notPlaying": {
-    en: "motion {motion} was no longer playing; nothing was sent.",
-    ko: "모션 {motion}은(는) 이미 재생 중이 아니었어요. 아무것도 보내지 않았어요.",
+  "cmd.stop.straighten": {
+    en: "`rbc run 7` straightens it.",
+    ko: "`rbc run 7`로 똑바로 세울 수 있어요.",
   },
   "cmd.stop.asking": {
     en: "Asking {robot} whether it is playing something…",
@@ -296,13 +278,9 @@ export const commandMessages = defineMessages({
     ko: "아직 움직이면 로봇을 잡아 주세요 (`rbc limp`로 모든 서보의 힘을 뺄 수 있어요).",
   },
 
-  "cmd.limp.warning": {
-    en: "Hold the robot: every servo will go passive and it will fall if nobody holds it.",
-    ko: "로봇을 잡아 주세요. 모든 서보의 힘이 빠져서 아무도 잡지 않으면 쓰러져요.",
-  },
   "cmd.limp.needsYes": {
-    en: "Hold the robot: every servo will go passive and it will fall if nobody holds it. Add --yes to make every servo passive (nothing was sent).",
-    ko: "로봇을 잡아 주세요. 모든 서보의 힘이 빠져서 아무도 잡지 않으면 쓰러져요. 모든 서보의 힘을 빼려면 --yes를 붙여 주세요 (아무것도 보내지 않았어요).",
+    en: "{warning} Add --yes to make every servo passive (nothing was sent).",
+    ko: "{warning} 모든 서보의 힘을 빼려면 --yes를 붙여 주세요 (아무것도 보내지 않았어요).",
   },
   "cmd.limp.question": {
     en: "Make every servo of {robot} passive?",
@@ -311,14 +289,6 @@ export const commandMessages = defineMessages({
   "cmd.limp.notConfirmed": {
     en: "Limp not confirmed; nothing was sent.",
     ko: "힘 빼기를 확인하지 않아서 아무것도 보내지 않았어요.",
-  },
-  "cmd.limp.allPassive": {
-    en: "All {confirmed} servos confirmed passive. Hold the robot: it cannot stand on its own.",
-    ko: "서보 {confirmed}개 모두 힘이 빠졌다고 확인했어요. 로봇을 잡아 주세요. 혼자 설 수 없어요.",
-  },
-  "cmd.limp.someSilent": {
-    en: "{confirmed} servos confirmed passive; servo {silent} did not answer. If anything still moves, switch the robot off.",
-    ko: "서보 {confirmed}개가 힘이 빠졌다고 확인했고, 서보 {silent}은(는) 응답하지 않았어요. 아직 움직이는 것이 있으면 로봇을 꺼 주세요.",
   },
 
   "cmd.sound.number": { en: "The sound number", ko: "소리 번호" },
@@ -368,10 +338,6 @@ export const commandMessages = defineMessages({
     en: "Opened {robot} without asking the robot anything (--recover).",
     ko: "로봇에 아무것도 묻지 않고 {robot}을(를) 열었어요 (--recover).",
   },
-  "cmd.flash.demoReports": {
-    en: "The demo robot reports firmware {version}.",
-    ko: "데모 로봇의 펌웨어는 {version}이에요.",
-  },
   "cmd.flash.robotReports": {
     en: "The robot on {port} reports firmware {version}.",
     ko: "{port}에 연결된 로봇의 펌웨어는 {version}이에요.",
@@ -404,10 +370,7 @@ export const commandMessages = defineMessages({
     en: "Sent {bytes} bytes at {rate} bytes/s ({lines} lines/s).",
     ko: "{bytes}바이트를 보냈어요 (초당 {rate}바이트, 초당 {lines}줄).",
   },
-  "cmd.flash.restarted": {
-    en: "The robot was restarted: run Basic posture (`rbc run 7`) before other motions.",
-    ko: "로봇이 다시 켜졌어요. 다른 모션 전에 기본 자세(`rbc run 7`)를 실행해 주세요.",
-  },
+  "cmd.flash.runPosture": { en: "`rbc run 7` runs it.", ko: "`rbc run 7`로 실행할 수 있어요." },
   "cmd.flash.rate": { en: "{rate} B/s", ko: "{rate}B/s" },
   "cmd.flash.done": { en: "done", ko: "완료" },
   "cmd.flash.left": { en: "{seconds} s left", ko: "{seconds}초 남음" },
@@ -428,11 +391,8 @@ export const commandMessages = defineMessages({
     ko: "{file}의 장면은 0-{last}이에요. --scenes {value}은(는) 그 범위를 벗어나요.",
   },
   "cmd.play.allScenes": { en: "all {total} scenes", ko: "장면 {total}개 모두" },
-  "cmd.play.oneScene": { en: "scene {scene}", ko: "장면 {scene}" },
   "cmd.play.someScenes": { en: "scenes {from}-{to}", ko: "장면 {from}-{to}" },
   "cmd.play.what": { en: "{scenes} of {file}", ko: "{file}의 {scenes}" },
-  "cmd.play.transitionFrame": { en: "transition frame {frame}", ko: "전환 프레임 {frame}" },
-  "cmd.play.sceneFrame": { en: "scene {scene}, frame {frame}", ko: "장면 {scene}, 프레임 {frame}" },
   "cmd.play.time": { en: "{elapsed} of {duration}", ko: "{duration} 중 {elapsed}" },
   "cmd.play.toFirstPose": {
     en: "Moving to the first pose, step {step}, {time}",
@@ -487,30 +447,7 @@ export const commandMessages = defineMessages({
     en: "tethered play was interrupted: the servos hold the last frame they got, with torque. The robot stays in servo control until the next rbc command or the panel connects (`rbc limp` makes every servo passive).",
     ko: "로봇에서 재생이 중단됐어요. 서보는 마지막으로 받은 프레임을 토크를 유지한 채 지켜요. 다음 rbc 명령이나 패널이 연결될 때까지 로봇은 서보 제어 상태예요 (`rbc limp`로 모든 서보의 힘을 뺄 수 있어요).",
   },
-  "cmd.play.holds.nothingSent": {
-    en: "No frame was sent: the servos are as they were.",
-    ko: "프레임을 보내지 않았어요. 서보는 그대로예요.",
-  },
-  "cmd.play.holds.lastFrame": {
-    en: "The servos hold the last frame sent ({frame}).",
-    ko: "서보는 마지막으로 보낸 프레임({frame})을 지켜요.",
-  },
-  "cmd.play.holds.lastFrameUnnamed": {
-    en: "The servos hold the last frame sent.",
-    ko: "서보는 마지막으로 보낸 프레임을 지켜요.",
-  },
-  "cmd.play.holds.unknown": {
-    en: "Whether the last frame arrived is not known.",
-    ko: "마지막 프레임이 도착했는지는 알 수 없어요.",
-  },
-  "cmd.play.stoppedAfter": {
-    en: "tethered play stopped after {sent} of {total} frames; the servos hold the last one sent ({frame}), with torque. Nothing was made passive.",
-    ko: "로봇에서 재생이 프레임 {total}개 중 {sent}개를 보낸 뒤 멈췄어요. 서보는 마지막으로 보낸 프레임({frame})을 토크를 유지한 채 지켜요. 힘을 뺀 서보는 없어요.",
-  },
-  "cmd.play.stoppedBefore": {
-    en: "tethered play stopped before the first frame: nothing moved.",
-    ko: "로봇에서 재생이 첫 프레임 전에 멈췄어요. 아무것도 움직이지 않았어요.",
-  },
+  "cmd.play.nothingPassive": { en: "Nothing was made passive.", ko: "힘을 뺀 서보는 없어요." },
   "cmd.play.left": {
     en: "Left servo control; the servos keep holding the last frame.",
     ko: "서보 제어를 끝냈어요. 서보는 마지막 프레임을 계속 지켜요.",

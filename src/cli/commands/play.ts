@@ -1,14 +1,12 @@
 import { readFile } from "node:fs/promises";
 import { basename, resolve } from "node:path";
-import {
-  frameLabel,
-  TetheredPlayError,
-  type TetheredPlayProgress,
-  type TetheredPlayResult,
-} from "../../device/index.ts";
+import { TetheredPlayError, type TetheredPlayProgress, type TetheredPlayResult } from "../../device/index.ts";
 import type { Locale } from "../../i18n/locale.ts";
 import { nothingSentText } from "../../i18n/outcomes/device.ts";
 import { motionRefusalText } from "../../i18n/outcomes/motion/motion-words.ts";
+import { sceneText } from "../../i18n/outcomes/motion/position-words.ts";
+import { playStoppedText } from "../../i18n/outcomes/stop-words.ts";
+import { inEveryLanguage, said, saidBy, saidText } from "../../i18n/said.ts";
 import { translator } from "../../i18n/translate.ts";
 import { formatSeconds } from "../../i18n/units.ts";
 import {
@@ -28,7 +26,6 @@ import { CliError, EXIT, errorLine, UsageError } from "../errors.ts";
 import { COMMAND_HELP } from "../help/command-help.ts";
 import { cliMessages } from "../messages.ts";
 import type { Output } from "../output.ts";
-import { said, saidBy, saidEach } from "../said.ts";
 import { issueLines, issuesJson } from "../upload-report.ts";
 import { unreadable } from "../zeros-files.ts";
 import { commandMessages } from "./messages.ts";
@@ -39,10 +36,7 @@ const OPTIONS = {
   yes: { type: "boolean", short: "y" },
 } as const;
 
-/** Said before a real robot moves (docs/ui.md: moving actions ask once and say what will happen). */
-export const MOVE_WARNING = translator(cliMessages, "en")("cli.play.moveWarning");
-
-/** The move warning in `locale`. */
+/** The move warning in `locale`: said before a real robot moves (docs/ui.md: moving actions ask once). */
 function moveWarning(locale: Locale): string {
   return translator(cliMessages, locale)("cli.play.moveWarning");
 }
@@ -77,20 +71,11 @@ function scenesText({ from, to }: Range, doc: Motion, locale: Locale): string {
   if (from === 0 && to === doc.scenes.length - 1)
     return t("cmd.play.allScenes", { total: String(doc.scenes.length) });
   return from === to
-    ? t("cmd.play.oneScene", { scene: String(from) })
+    ? sceneText(from, locale)
     : t("cmd.play.someScenes", { from: String(from), to: String(to) });
 }
 
 const seconds = (ms: number, locale: Locale) => formatSeconds(ms / 1000, locale);
-
-/** A frame of tethered play in words (`frameLabel` in English): "scene 2, frame 4" / "장면 2, 프레임 4". */
-function frameWords(frame: { scene: number; frame: number }, locale: Locale): string {
-  if (locale === "en") return frameLabel(frame);
-  const t = translator(commandMessages, locale);
-  return frame.scene < 0
-    ? t("cmd.play.transitionFrame", { frame: String(frame.frame) })
-    : t("cmd.play.sceneFrame", { scene: String(frame.scene), frame: String(frame.frame) });
-}
 
 /** Reads and checks the file; nothing is opened or sent when it is wrong. */
 async function readMotion(env: RunEnv, file: string): Promise<Motion> {
@@ -189,21 +174,6 @@ export function finishedSentence(result: TetheredPlayResult, what: string, local
     : t("cmd.play.playedWithin", { ...read, deviation: String(back.maxDeviation) });
 }
 
-/** What a failed tethered play left the servos holding, in `locale`. */
-function playHoldsText(e: TetheredPlayError, locale: Locale): string {
-  const t = translator(commandMessages, locale);
-  switch (e.holds) {
-    case "nothing-sent":
-      return t("cmd.play.holds.nothingSent");
-    case "last-frame":
-      return e.lastFrame
-        ? t("cmd.play.holds.lastFrame", { frame: frameWords(e.lastFrame, locale) })
-        : t("cmd.play.holds.lastFrameUnnamed");
-    default:
-      return t("cmd.play.holds.unknown");
-  }
-}
-
 export const playCommand: CommandDef = {
   name: "play",
   usage: "rbc play FILE.rbm [--scenes A-B] [--yes] (--port PATH | --demo)",
@@ -232,9 +202,10 @@ export const playCommand: CommandDef = {
     } catch (e) {
       if (!(e instanceof MotionError)) throw e;
       // The motion core's reason, from the outcome catalogue, in every language.
-      const words = saidEach(commandMessages, "cmd.play.refused", (l) => [
-        { file: basename(file), reason: motionRefusalText(e, l) },
-      ]);
+      const words = said(commandMessages, "cmd.play.refused", {
+        file: basename(file),
+        reason: inEveryLanguage((l) => motionRefusalText(e, l)),
+      });
       throw new CliError("motion-refused", words);
     }
     const validation = motionIssues(doc);
@@ -258,7 +229,7 @@ export const playCommand: CommandDef = {
     if (real && !values.yes && !env.stdin.isTTY) {
       throw new CliError(
         "confirmation-required",
-        saidEach(commandMessages, "cmd.play.needsYes", (l) => [{ warning: moveWarning(l) }]),
+        said(commandMessages, "cmd.play.needsYes", { warning: inEveryLanguage(moveWarning) }),
       );
     }
 
@@ -285,7 +256,8 @@ export const playCommand: CommandDef = {
     } catch (e) {
       env.setExitNote(undefined);
       if (e instanceof TetheredPlayError) {
-        const words = { en: e.message, ko: `${errorLine(e, "ko")} ${playHoldsText(e, "ko")}` };
+        // The catalogue's sentence says what the servos hold (nothing sent, the last frame, unknown).
+        const words = saidText({ en: errorLine(e, "en"), ko: errorLine(e, "ko") });
         throw new CliError(e.code, words, EXIT.failed, {
           framesSent: e.framesSent,
           totalFrames: e.totalFrames,
@@ -311,13 +283,7 @@ export const playCommand: CommandDef = {
       maxLateMs: Math.round(result.maxLateMs),
     };
     if (result.outcome === "stopped") {
-      const held = result.lastFrame
-        ? t("cmd.play.stoppedAfter", {
-            sent: String(result.framesSent),
-            total: String(result.totalFrames),
-            frame: frameWords(result.lastFrame, locale),
-          })
-        : t("cmd.play.stoppedBefore");
+      const held = `${playStoppedText(result, locale)} ${t("cmd.play.nothingPassive")}`;
       env.out.note(`rbc: ${t("cmd.interruptedBecause", { what: held })}`);
       env.out.result({ ok: false, ...json, error: { code: "interrupted", message: "Interrupted." } });
       return EXIT.interrupted;

@@ -2,18 +2,19 @@ import { RbcError } from "../../device/errors.ts";
 import type { StopActivityResult } from "../../device/rbc-client.ts";
 import { isHazardousMotion, type RunReport } from "../../device/run-outcome.ts";
 import { reconcile, shelfKey } from "../../device/shelf.ts";
+import { errorSaid } from "../../i18n/error-said.ts";
 import type { Locale } from "../../i18n/locale.ts";
 import { motionHazardText, runReportText } from "../../i18n/outcomes/run-words.ts";
+import { said, saidBy, saidTogether } from "../../i18n/said.ts";
 import { translator } from "../../i18n/translate.ts";
 import { formatSeconds } from "../../i18n/units.ts";
 import { BASIC_POSTURE_MOTION, downloadSlotOf, isOfferedMotionNumber } from "../../protocol/catalog.ts";
 import { parseCommand } from "../args.ts";
 import { type CommandDef, localeOf, type RunEnv } from "../command.ts";
 import { connectRobot, type Robot } from "../connect.ts";
-import { CliError, EXIT, errorSaid, UsageError } from "../errors.ts";
+import { CliError, EXIT, SEE_LOG, UsageError } from "../errors.ts";
 import { COMMAND_HELP } from "../help/command-help.ts";
 import { motionName } from "../motion-names.ts";
-import { joinSaid, said, saidBy } from "../said.ts";
 import { readShelves, shelfOf, shelfPath } from "../shelf-file.ts";
 import { commandMessages } from "./messages.ts";
 import { stoppedMotionSentence } from "./stop.ts";
@@ -152,7 +153,7 @@ export const runCommand: CommandDef = {
         if (e instanceof RbcError && e.code === "busy") {
           throw new CliError(
             "busy",
-            joinSaid([errorSaid(e), said(commandMessages, "cmd.run.stopHint")]),
+            saidTogether([errorSaid(e, { detailHint: SEE_LOG }), said(commandMessages, "cmd.run.stopHint")]),
             EXIT.failed,
             {
               completed: results,
@@ -166,9 +167,14 @@ export const runCommand: CommandDef = {
                 posture: String(BASIC_POSTURE_MOTION),
                 motion: String(motion),
               });
-          throw new CliError("motion-ignored", joinSaid([errorSaid(e), hint]), EXIT.failed, {
-            completed: results,
-          });
+          throw new CliError(
+            "motion-ignored",
+            saidTogether([errorSaid(e, { detailHint: SEE_LOG }), hint]),
+            EXIT.failed,
+            {
+              completed: results,
+            },
+          );
         }
         throw e;
       }

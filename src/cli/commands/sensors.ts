@@ -1,14 +1,15 @@
 import { RbcError } from "../../device/errors.ts";
+import { errorSaid } from "../../i18n/error-said.ts";
 import type { Locale } from "../../i18n/locale.ts";
 import { distanceWarning } from "../../i18n/outcomes/plausibility.ts";
+import { said, saidTogether } from "../../i18n/said.ts";
 import { translator } from "../../i18n/translate.ts";
 import type { Clock } from "../../shared/clock.ts";
 import { intOption, noExtraArguments, parseCommand } from "../args.ts";
 import { type CommandDef, localeOf } from "../command.ts";
 import { connectRobot } from "../connect.ts";
-import { CliError, EXIT, errorSaid } from "../errors.ts";
+import { CliError, EXIT, SEE_LOG } from "../errors.ts";
 import { COMMAND_HELP } from "../help/command-help.ts";
-import { joinSaid, said } from "../said.ts";
 import { commandMessages } from "./messages.ts";
 
 const OPTIONS = {
@@ -80,7 +81,10 @@ export const sensorsCommand: CommandDef = {
       const distanceCm = await robot.client.readDistance().catch((e: unknown) => {
         // Busy, not gone (docs/protocol.md §3.6): say so, and how to end what plays.
         if (e instanceof RbcError && e.code === "busy") {
-          throw new CliError("busy", joinSaid([errorSaid(e), said(commandMessages, "cmd.run.stopHint")]));
+          throw new CliError(
+            "busy",
+            saidTogether([errorSaid(e, { detailHint: SEE_LOG }), said(commandMessages, "cmd.run.stopHint")]),
+          );
         }
         throw e;
       });

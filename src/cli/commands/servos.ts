@@ -22,6 +22,7 @@ import {
   setIdText,
   wiggleText,
 } from "../../i18n/outcomes/servos/servo-words.ts";
+import { said } from "../../i18n/said.ts";
 import { translator } from "../../i18n/translate.ts";
 import { type GlobalValues, intArgument, noExtraArguments, parseCommand } from "../args.ts";
 import { type CommandDef, localeOf, type RunEnv } from "../command.ts";
@@ -29,7 +30,6 @@ import { confirm } from "../confirm.ts";
 import { connectRobot, robotPlace } from "../connect.ts";
 import { CliError, EXIT, UsageError } from "../errors.ts";
 import { COMMAND_HELP } from "../help/command-help.ts";
-import { said } from "../said.ts";
 import { servosMessages } from "./servos-messages.ts";
 import { alignColumns } from "./zeros.ts";
 

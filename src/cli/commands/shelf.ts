@@ -1,5 +1,6 @@
-import { type RobotShelf, reconcile, remoteKeyWords, type ShelfSlot, shelfKey } from "../../device/shelf.ts";
+import { type RobotShelf, reconcile, type ShelfSlot, shelfKey } from "../../device/shelf.ts";
 import type { Locale } from "../../i18n/locale.ts";
+import { remoteKeyWords } from "../../i18n/outcomes/remote-key.ts";
 import { translator } from "../../i18n/translate.ts";
 import { formatSeconds } from "../../i18n/units.ts";
 import { remoteKeyOf } from "../../protocol/catalog.ts";

@@ -1,3 +1,4 @@
+import { said } from "../../i18n/said.ts";
 import { translator } from "../../i18n/translate.ts";
 import { intOption, noExtraArguments, parseCommand } from "../args.ts";
 import { type CommandDef, localeOf } from "../command.ts";
@@ -5,7 +6,6 @@ import { EXIT, UsageError } from "../errors.ts";
 import { COMMAND_HELP } from "../help/command-help.ts";
 import { Output } from "../output.ts";
 import { createPtyPair } from "../pty.ts";
-import { said } from "../said.ts";
 import { FAULT_KINDS, isFaultKind } from "../sim-faults.ts";
 import { aboutRobot, describeVariant, VARIANT_OPTIONS, variantFromValues } from "../sim-variant.ts";
 import { commandMessages } from "./messages.ts";

@@ -1,6 +1,7 @@
 import { RbcCancelledError } from "../../device/errors.ts";
 import type { SoundReport } from "../../device/sound.ts";
 import { soundOutcomeMessages } from "../../i18n/outcomes/sound-messages.ts";
+import { said } from "../../i18n/said.ts";
 import { soundName } from "../../i18n/sound-names/sound-name.ts";
 import { translator } from "../../i18n/translate.ts";
 import { formatSeconds } from "../../i18n/units.ts";
@@ -10,7 +11,6 @@ import { type CommandDef, localeOf } from "../command.ts";
 import { connectRobot } from "../connect.ts";
 import { EXIT } from "../errors.ts";
 import { COMMAND_HELP } from "../help/command-help.ts";
-import { said } from "../said.ts";
 import { commandMessages } from "./messages.ts";
 
 export const soundCommand: CommandDef = {

@@ -1,6 +1,12 @@
 import type { StopActivityResult } from "../../device/rbc-client.ts";
 import type { Locale } from "../../i18n/locale.ts";
-import { stopFoundText } from "../../i18n/outcomes/stop-words.ts";
+import {
+  motionNotPlayingText,
+  stopFoundText,
+  stoppedMotionDetailText,
+  stoppedMotionText,
+} from "../../i18n/outcomes/stop-words.ts";
+import { said, saidBy, saidTogether } from "../../i18n/said.ts";
 import { translator } from "../../i18n/translate.ts";
 import { BASIC_POSTURE_MOTION } from "../../protocol/catalog.ts";
 import { noExtraArguments, parseCommand } from "../args.ts";
@@ -8,31 +14,27 @@ import { type CommandDef, localeOf } from "../command.ts";
 import { connectRobot, robotPlace } from "../connect.ts";
 import { CliError, EXIT } from "../errors.ts";
 import { COMMAND_HELP } from "../help/command-help.ts";
-import { joinSaid, said, saidBy } from "../said.ts";
 import { commandMessages } from "./messages.ts";
 
 /**
- * What Stop did to a motion, in one sentence, never more certain than the robot's reply (used by `rbc run` on
- * Ctrl-C). `name` is the motion's name in `locale`.
+ * What Stop did to a motion, never more certain than the robot's reply, with what to do next and the 7/07
+ * detail (used by `rbc run` on Ctrl-C). `name` is the motion's name in `locale`.
  */
 export function stoppedMotionSentence(
   result: StopActivityResult | undefined,
   name: string,
   locale: Locale = "en",
 ): string {
+  const motion = result?.motion;
+  if (!motion) return motionNotPlayingText(name, locale);
   const t = translator(commandMessages, locale);
-  switch (result?.motion?.outcome) {
-    case "stopped":
-      return t("cmd.stop.stopped", { motion: name });
-    case "ended-then-posture":
-      return t("cmd.stop.endedThenPosture", { motion: name });
-    case "posture":
-      return t("cmd.stop.posture");
-    case "unconfirmed":
-      return t("cmd.stop.unconfirmed", { motion: name });
-    default:
-      return t("cmd.stop.notPlaying", { motion: name });
-  }
+  const next =
+    motion.outcome === "stopped"
+      ? [t("cmd.stop.straighten")]
+      : motion.outcome === "unconfirmed"
+        ? [t("cmd.stop.holdHint")]
+        : [];
+  return [stoppedMotionText(motion, locale), ...next, stoppedMotionDetailText(motion, locale)].join(" ");
 }
 
 export const stopCommand: CommandDef = {
@@ -70,7 +72,7 @@ export const stopCommand: CommandDef = {
       case "unconfirmed":
         throw new CliError(
           "not-confirmed",
-          joinSaid([saidBy(words), said(commandMessages, "cmd.stop.holdHint")]),
+          saidTogether([saidBy(words), said(commandMessages, "cmd.stop.holdHint")]),
           EXIT.failed,
           {
             found: "busy",

@@ -2,10 +2,12 @@ import { readFile } from "node:fs/promises";
 import { basename, resolve } from "node:path";
 import { RbcUploadError } from "../../device/errors.ts";
 import type { FileUploadResult } from "../../device/index.ts";
-import { remoteKeyWords } from "../../device/shelf.ts";
 import type { Locale } from "../../i18n/locale.ts";
 import { nothingSentText, uploadNoticeText, uploadOutcomeText } from "../../i18n/outcomes/device.ts";
+import { errorText } from "../../i18n/outcomes/error-text.ts";
+import { remoteKeyWords } from "../../i18n/outcomes/remote-key.ts";
 import { uploadAfterText } from "../../i18n/outcomes/upload-words.ts";
+import { inEveryLanguage, type Said, said, saidBy } from "../../i18n/said.ts";
 import { translator } from "../../i18n/translate.ts";
 import { formatSeconds } from "../../i18n/units.ts";
 import { downloadedMotionNumber, MOTION_AREA_BYTES } from "../../protocol/catalog.ts";
@@ -26,7 +28,6 @@ import { CliError, EXIT, UsageError } from "../errors.ts";
 import { COMMAND_HELP } from "../help/command-help.ts";
 import { ProgressBar } from "../progress.ts";
 import { errorCodeWords } from "../robot-words.ts";
-import { type Said, said, saidBy, saidEach } from "../said.ts";
 import { recordOnShelf } from "../shelf-record.ts";
 import {
   type IssueWords,
@@ -78,9 +79,10 @@ export function rbmInvalid(
       issueText(first, { locale: l })
         .replace(/\s*\n\s*/g, " ")
         .replace(/[.\s]+$/, "");
-    const words = saidEach(commandMessages, "cmd.upload.fileRefused", (l) => [
-      { file: name, reason: reason(l) },
-    ]);
+    const words = said(commandMessages, "cmd.upload.fileRefused", {
+      file: name,
+      reason: inEveryLanguage(reason),
+    });
     return new CliError("rbm-invalid", words, EXIT.failed, details);
   }
   const t = translator(commandMessages, localeOf(env));
@@ -156,7 +158,9 @@ export const uploadCommand: CommandDef = {
     if (real && !values.yes && !env.stdin.isTTY) {
       throw new CliError(
         "confirmation-required",
-        saidEach(commandMessages, "cmd.upload.needsYes", (l) => [{ notice: notice("experimental", l) }]),
+        said(commandMessages, "cmd.upload.needsYes", {
+          notice: inEveryLanguage((l) => notice("experimental", l)),
+        }),
       );
     }
 
@@ -230,7 +234,7 @@ export const uploadCommand: CommandDef = {
           ok: false,
           error: {
             code: "interrupted",
-            message: e.message,
+            message: errorText(e, "en"),
             acknowledged: e.acknowledged,
             total: e.total,
             outcome: e.outcome,

@@ -2,9 +2,11 @@ import { resolve } from "node:path";
 import { RbcCancelledError } from "../../device/errors.ts";
 import { type SafeZeroWrite, ZeroBackupError, ZeroWriteFailedError } from "../../device/index.ts";
 import type { ZeroWriteResult } from "../../device/types.ts";
+import { errorSaid } from "../../i18n/error-said.ts";
 import { jointOf } from "../../i18n/joint-names/joint-name.ts";
 import type { Locale } from "../../i18n/locale.ts";
 import { serialMismatchWarning, zerosNotWrittenText } from "../../i18n/outcomes/zero-words.ts";
+import { type Said, said, saidBy, saidTogether, wordOf } from "../../i18n/said.ts";
 import { translator } from "../../i18n/translate.ts";
 import { formatDateTime } from "../../i18n/units.ts";
 import {
@@ -20,10 +22,9 @@ import { formatFirmware } from "../../shared/format.ts";
 import { type GlobalValues, noExtraArguments, parseCommand } from "../args.ts";
 import { type CommandDef, localeOf, type RunEnv } from "../command.ts";
 import { connectRobot, type Robot, robotPlace } from "../connect.ts";
-import { CliError, EXIT, errorCode, errorSaid, UsageError } from "../errors.ts";
+import { CliError, EXIT, errorCode, SEE_LOG, UsageError } from "../errors.ts";
 import { COMMAND_HELP } from "../help/command-help.ts";
 import { displayWidth } from "../help/render.ts";
-import { joinSaid, type Said, said, saidBy } from "../said.ts";
 import {
   readBackupFile,
   refuseExisting,
@@ -171,7 +172,7 @@ async function backupAndWrite(
         env.signal.addEventListener("abort", onAbort, { once: true });
         // If rbc has to exit before the write has finished (a second Ctrl-C), the robot's zeros are unknown.
         if (backupFile)
-          env.setExitNote(t("cmd.zeros.mayBeWritten", { advice: checkAdvice(backupFile)[locale] }));
+          env.setExitNote(t("cmd.zeros.mayBeWritten", { advice: wordOf(checkAdvice(backupFile), locale) }));
       },
     });
   } catch (e) {
@@ -180,7 +181,7 @@ async function backupAndWrite(
     if (e instanceof ZeroWriteFailedError) {
       throw new CliError(
         errorCode(e.reason),
-        joinSaid([errorSaid(e.reason), checkAdvice(e.backupName)]),
+        saidTogether([errorSaid(e.reason, { detailHint: SEE_LOG }), checkAdvice(e.backupName)]),
         EXIT.failed,
         {
           backupFile: e.backupName,

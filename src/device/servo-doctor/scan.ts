@@ -1,4 +1,3 @@
-import { servoIdRangeText } from "../../i18n/outcomes/device.ts";
 import { HUNO_SERVO_COUNT } from "../../protocol/servo-limits.ts";
 import { WCK_MAX_ID } from "../../protocol/wck.ts";
 import { RbcCancelledError, RbcError, RbcInvalidArgumentError } from "../errors.ts";
@@ -23,13 +22,13 @@ export const ALL_SERVO_IDS: readonly number[] = Array.from({ length: WCK_MAX_ID 
 
 /** Checks a list of ids: integers 0-30, no repeats, at least one. Throws a typed error, nothing sent. */
 export function checkServoIds(ids: readonly number[]): number[] {
-  if (ids.length === 0) throw new RbcInvalidArgumentError("No servo ids to read; nothing was sent.");
+  if (ids.length === 0) throw new RbcInvalidArgumentError(undefined, { kind: "scan-no-ids" });
   const seen = new Set<number>();
   for (const id of ids) {
     if (!Number.isInteger(id) || id < 0 || id > WCK_MAX_ID) {
-      throw new RbcInvalidArgumentError(servoIdRangeText(id, WCK_MAX_ID, "en"));
+      throw new RbcInvalidArgumentError(undefined, { kind: "servo-id-range", id, max: WCK_MAX_ID });
     }
-    if (seen.has(id)) throw new RbcInvalidArgumentError(`Servo id ${id} is listed twice; nothing was sent.`);
+    if (seen.has(id)) throw new RbcInvalidArgumentError(undefined, { kind: "scan-id-twice", id });
     seen.add(id);
   }
   return [...ids];

@@ -1,4 +1,3 @@
-import { servoRangeText } from "../../i18n/outcomes/device.ts";
 import { safeRange } from "../../protocol/servo-limits.ts";
 import {
   WCK_MAX_POSITION,
@@ -28,7 +27,7 @@ export interface ServoBusHost {
 export class ServoDoctorStoppedError extends RbcCancelledError {
   override name = "ServoDoctorStoppedError";
   constructor() {
-    super("Stopped by Stop (or Limp): nothing more was sent to the servos.");
+    super(undefined, undefined, { kind: "doctor-stopped" });
   }
 }
 
@@ -119,11 +118,9 @@ export class ServoBus {
     const range = safeRange(id);
     if (!range || !Number.isInteger(position) || position < range.min || position > range.max) {
       return Promise.reject(
-        new RbcInvalidArgumentError(
-          range
-            ? servoRangeText(id, range, position, "en")
-            : `Servo ${id} has no published safe range; nothing was sent.`,
-        ),
+        range
+          ? new RbcInvalidArgumentError(undefined, { kind: "servo-range", id, ...range, position })
+          : new RbcInvalidArgumentError(undefined, { kind: "no-safe-range", id }),
       );
     }
     return this.#send(() => wckMove(id, position, torque), `move servo ${id} to ${position}`, signal, epoch);
@@ -144,9 +141,7 @@ export class ServoBus {
     try {
       packet = build();
     } catch (e) {
-      return Promise.reject(
-        new RbcInvalidArgumentError(`${e instanceof Error ? e.message : String(e)} Nothing was sent.`),
-      );
+      return Promise.reject(new RbcInvalidArgumentError(undefined, { kind: "not-encoded" }, e));
     }
     if (epoch !== undefined && epoch !== this.#host.epoch) {
       return Promise.reject(new ServoDoctorStoppedError());
@@ -154,7 +149,7 @@ export class ServoBus {
     return this.#host
       .exclusive(() => {
         if (this.#host.mode !== "direct") {
-          throw new RbcError("wrong-mode", "The servo doctor needs direct mode, and the robot is not in it.");
+          throw new RbcError("wrong-mode", undefined, { situation: { kind: "doctor-needs-direct-mode" } });
         }
         return writeAndListen(this.#raw, this.#host.clock, packet, this.timing(packet.length), note, signal);
       }, epoch)

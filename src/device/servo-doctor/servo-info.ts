@@ -1,4 +1,3 @@
-import { servoIdRangeText } from "../../i18n/outcomes/device.ts";
 import { ProtocolError } from "../../protocol/errors.ts";
 import {
   decodeWckParameter,
@@ -55,7 +54,7 @@ export async function servoInfo(
   options: { signal?: AbortSignal } = {},
 ): Promise<ServoInfo> {
   if (!Number.isInteger(id) || id < 0 || id > WCK_MAX_ID) {
-    throw new RbcInvalidArgumentError(servoIdRangeText(id, WCK_MAX_ID, "en"));
+    throw new RbcInvalidArgumentError(undefined, { kind: "servo-id-range", id, max: WCK_MAX_ID });
   }
   if (options.signal?.aborted) throw new RbcCancelledError();
   await client.enterDirectMode("servo-control");

@@ -44,9 +44,9 @@ export interface SetIdOptions {
   signal?: AbortSignal;
 }
 
-function checkId(id: number, what: string): void {
+function checkId(id: number, which: "present" | "new"): void {
   if (!Number.isInteger(id) || id < 0 || id > WCK_MAX_ID) {
-    throw new RbcInvalidArgumentError(`The ${what} id must be 0-${WCK_MAX_ID}, got ${id}; nothing was sent.`);
+    throw new RbcInvalidArgumentError(undefined, { kind: "set-id-range", which, id, max: WCK_MAX_ID });
   }
 }
 
@@ -65,7 +65,7 @@ export async function setServoId(
   checkId(from, "present");
   checkId(to, "new");
   if (from === to) {
-    throw new RbcInvalidArgumentError(`The new id must differ from ${from}; nothing was sent.`);
+    throw new RbcInvalidArgumentError(undefined, { kind: "set-id-same", id: from });
   }
   if (options.signal?.aborted) throw new RbcCancelledError();
   const read = async (id: number): Promise<ServoReading> => {

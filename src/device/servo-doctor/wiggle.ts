@@ -61,13 +61,11 @@ export async function wiggleServo(
 ): Promise<WiggleResult> {
   const range = safeRange(id);
   if (!range) {
-    throw new RbcInvalidArgumentError(
-      `Servo ${id} has no published safe range (only 0-15 have one); nothing was sent.`,
-    );
+    throw new RbcInvalidArgumentError(undefined, { kind: "no-safe-range", id, wiggle: true });
   }
   const counts = options.counts ?? WIGGLE_COUNTS;
   if (!Number.isInteger(counts) || counts < 1 || counts > 20) {
-    throw new RbcInvalidArgumentError(`A wiggle moves 1-20 counts, got ${counts}; nothing was sent.`);
+    throw new RbcInvalidArgumentError(undefined, { kind: "wiggle-counts", counts });
   }
   if (options.signal?.aborted) throw new RbcCancelledError();
   const { signal } = options;

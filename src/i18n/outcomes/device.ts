@@ -8,9 +8,8 @@ import { deviceOutcomeMessages as messages } from "./messages.ts";
 import { runOutcomeMessages } from "./run-messages.ts";
 
 /**
- * The device's outcomes in words, from their codes and facts, in either language. The device's error classes
- * (src/device/errors.ts, zero-policy.ts) take their English `message` from these functions; `errorText`
- * (src/device/error-text.ts) says an error in the person's language with the same functions.
+ * The device's outcomes in words, from their codes and facts, in either language: `errorText` (error-text.ts)
+ * says a device error (src/device/errors.ts) in the person's language with these functions.
  */
 
 type Key = KeysWithoutParams<typeof messages>;
@@ -102,14 +101,14 @@ export function directModeNeededText(locale: Locale): string {
   return t(locale)("outcome.direct.needed");
 }
 
-/** What Limp does to the requests it cancels. */
-export function cancelledByLimpText(locale: Locale): string {
-  return t(locale)("outcome.limp.cancelledBy");
-}
-
 /** What Stop or Limp does to the requests queued behind it (they had not started). */
 export function cancelledByText(by: "stop" | "limp", locale: Locale): string {
   return t(locale)(by === "stop" ? "outcome.stop.cancelledBy" : "outcome.limp.cancelledBy");
+}
+
+/** The wait for the reply to `command` was given up (`RbcCancelledError`, situation "stopped-waiting"). */
+export function stoppedWaitingText(command: string, locale: Locale): string {
+  return t(locale)("outcome.stoppedWaiting", { command });
 }
 
 /** Stop's end of an upload waiting for the robot's acknowledgement. */
@@ -220,3 +219,14 @@ const UPLOAD_NOTICE = {
 export function uploadNoticeText(which: UploadNotice, locale: Locale): string {
   return t(locale)(UPLOAD_NOTICE[which]);
 }
+
+/**
+ * What an upload says, in one place for the panel and the CLI (docs/protocol.md §6.3 [decision] Safety): on a real
+ * robot the experimental sentence comes before the first byte, with a confirmation, and the hold advice after.
+ * In English; `uploadNoticeText` says them in either language.
+ */
+export const UPLOAD_NOTICES: Readonly<Record<UploadNotice, string>> = {
+  experimental: uploadNoticeText("experimental", "en"),
+  holdAdvice: uploadNoticeText("holdAdvice", "en"),
+  action: uploadNoticeText("action", "en"),
+};

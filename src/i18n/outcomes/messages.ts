@@ -2,8 +2,8 @@ import { defineMessages } from "../catalogue.ts";
 
 /**
  * The one catalogue of what the robot did: every outcome of a device operation (an error's code and facts, a
- * firmware update's result), worded once in English and Korean. The device layer's errors take their English
- * `message` from here; `rbc` and the panel show the same entries in the person's language and add only their
+ * firmware update's result), worded once in English and Korean. The device layer's errors carry codes and facts
+ * only; `rbc` and the panel show these entries in the person's language and add only their
  * own framing (a flag to pass, a button to press). The functions beside this file (`device.ts`; a firmware
  * update's in `firmware/`) choose the entry from an outcome's code and fill in its facts. docs/i18n.md
  * "Outcomes" says how to add one.
@@ -106,6 +106,10 @@ export const deviceOutcomeMessages = defineMessages({
   "outcome.stop.cancelledBy": {
     en: "Cancelled by Stop: it had not started yet.",
     ko: "정지 때문에 취소했어요. 아직 시작하지 않았던 일이에요.",
+  },
+  "outcome.stoppedWaiting": {
+    en: 'Stopped waiting for "{command}".',
+    ko: '"{command}"의 응답을 더 기다리지 않았어요.',
   },
   "outcome.stop.uploadCancelled": {
     en: "Upload cancelled by Stop.",

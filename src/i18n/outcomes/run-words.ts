@@ -73,11 +73,6 @@ export function busyReadText(command: string, waitedMs: number, locale: Locale):
   return t(locale)("outcome.busyRead", { command, wait: formatMilliseconds(waitedMs, locale) });
 }
 
-/** "The robot is busy, probably playing a motion: Stop ends it at the end of its scene." */
-export function busyText(locale: Locale): string {
-  return t(locale)("outcome.busy");
-}
-
 /** The warning that motion 20 or 21 carries; undefined for other numbers. */
 export function motionHazardText(motion: number, locale: Locale): string | undefined {
   if (motion === 20) return t(locale)("outcome.run.hazard20");
@@ -88,12 +83,4 @@ export function motionHazardText(motion: number, locale: Locale): string | undef
 /** Firmware that does not answer 0x0F: an upload is refused before any byte. */
 export function noMemoryReadText(locale: Locale): string {
   return t(locale)("outcome.noMemoryRead");
-}
-
-export function notPlayedText(locale: Locale): string {
-  return t(locale)("outcome.notPlayed");
-}
-
-export function notSupportedText(locale: Locale): string {
-  return t(locale)("outcome.notSupported");
 }

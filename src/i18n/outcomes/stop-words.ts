@@ -1,4 +1,4 @@
-import type { StopFound } from "../../device/stop.ts";
+import type { StopActivityResult, StopFound } from "../../device/stop.ts";
 import type { Locale } from "../locale.ts";
 import { translator } from "../translate.ts";
 import { formatMilliseconds, formatSeconds } from "../units.ts";
@@ -33,9 +33,60 @@ export function stopFoundText(found: StopFound, locale: Locale): string {
   }
 }
 
-/** Whether the outcome is less than a confirmed end (said as a warning). */
-export function stopFoundUnsure(found: StopFound): boolean {
-  return found.kind === "unconfirmed" || found.kind === "no-answer";
+/** A motion this program started, as Stop ended it (`StopActivityResult.motion`). */
+export type StoppedMotion = NonNullable<StopActivityResult["motion"]>;
+
+const MOTION_KEYS = {
+  stopped: "outcome.stop.motionStopped",
+  "ended-then-posture": "outcome.stop.motionEnded",
+  posture: "outcome.stop.posture",
+  unconfirmed: "outcome.stop.motionUnconfirmed",
+} as const satisfies Record<StoppedMotion["outcome"], keyof typeof messages>;
+
+/**
+ * What Stop did to a motion this program started, never more certain than the robot's reply. The front end adds
+ * what to do next: straighten the robot after `stopped`, hold it after `unconfirmed`.
+ */
+export function stoppedMotionText(motion: StoppedMotion, locale: Locale): string {
+  return t(locale)(MOTION_KEYS[motion.outcome]);
+}
+
+/** Its technical detail: the 7 sent and the 07 answered. */
+export function stoppedMotionDetailText(motion: StoppedMotion, locale: Locale): string {
+  const number = { motion: String(motion.number) };
+  switch (motion.outcome) {
+    case "stopped":
+      return t(locale)("outcome.stop.motionStopped.detail", number);
+    case "ended-then-posture":
+      return t(locale)("outcome.stop.motionEnded.detail", number);
+    case "posture":
+      return t(locale)("outcome.stop.posture.detail");
+    case "unconfirmed":
+      return t(locale)("outcome.stop.motionUnconfirmed.detail", number);
+  }
+}
+
+/** Stop came when the motion (`motion`: its number or name) had already ended: nothing was sent. */
+export function motionNotPlayingText(motion: string, locale: Locale): string {
+  return t(locale)("outcome.stop.motionNotPlaying", { motion });
+}
+
+/** How far tethered play got before it was stopped (`StopActivityResult.tetheredPlay`, `TetheredPlayResult`). */
+export interface PlayStopFacts {
+  readonly framesSent: number;
+  readonly totalFrames: number;
+  /** The last frame sent: scene -1 is the transition to the first pose. */
+  readonly lastFrame?: { readonly scene: number; readonly frame: number };
+}
+
+/** Where tethered play stopped, how far it got, and that the servos hold that frame. */
+export function playStoppedText(play: PlayStopFacts, locale: Locale): string {
+  const { framesSent: sent, totalFrames: total, lastFrame } = play;
+  if (!lastFrame) return t(locale)("outcome.stop.playNotStarted");
+  const frame = String(lastFrame.frame);
+  return lastFrame.scene < 0
+    ? t(locale)("outcome.stop.playStoppedTransition", { frame, sent, total })
+    : t(locale)("outcome.stop.playStoppedScene", { scene: String(lastFrame.scene), frame, sent, total });
 }
 
 /** "The robot is busy playing a motion (started with the remote or another program); it answers when …" */

@@ -76,6 +76,11 @@ function stateText(f: UploadFailureFacts, area: string, locale: Locale): string 
   });
 }
 
+/** "motion" / "모션", "action" / "액션". */
+export function areaText(area: "motion" | "action", locale: Locale): string {
+  return translator(messages, locale)(area === "motion" ? "outcome.area.motion" : "outcome.area.action");
+}
+
 /** "Upload cancelled before any byte was sent." (by Stop, when it was Stop). */
 export function uploadCancelledEarlyText(byStop: boolean, locale: Locale): string {
   const t = translator(messages, locale);

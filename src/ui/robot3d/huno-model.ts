@@ -30,9 +30,6 @@ import type { Vec3 } from "./mat4.ts";
  */
 export const DEGREES_PER_COUNT = 269 / 254;
 
-/** Number of joints in the model (servo ids 0-15). */
-export const HUNO_JOINT_COUNT = 16;
-
 /** Link lengths and offsets, mm: a documented approximation of a HUNO about 40 cm tall (docs/robot-3d.md). */
 export const HUNO_DIMENSIONS = {
   /** Hip roll axes, either side of the body's centre line. */

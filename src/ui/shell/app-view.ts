@@ -1,26 +1,13 @@
 import { html, type TemplateResult } from "lit-html";
 import { translator } from "../../i18n/translate.ts";
-import { connectCard } from "../features/connection/connect-card.ts";
-import { robotName } from "../features/connection/robot-name.ts";
-import { topBar } from "../features/connection/top-bar.ts";
-import { lazyPart } from "../lazy-part.ts";
+import { connectPlace, robotName, topBar } from "../features/connection/index.ts";
 import { uiMessages } from "../messages.ts";
 import type { ViewLoader } from "../router.ts";
 import { versionFooter } from "../version.ts";
-import { redraw } from "./actions.ts";
 import { shellMessages } from "./messages.ts";
 import { VIEWS } from "./registry.ts";
 import { sideNav } from "./side-nav.ts";
 import type { ViewContext } from "./view-types.ts";
-
-/** The card of a browser without Web Serial: loaded only by such a browser (not in the others' first load). */
-const unsupported = lazyPart(() => import("../features/connection/unsupported-card.ts"));
-
-function connectPlace(ctx: ViewContext, loading: string): TemplateResult {
-  if (ctx.state.serialSupported) return connectCard(ctx);
-  const part = unsupported.get(() => redraw(ctx.store));
-  return part ? part.unsupportedCard(ctx) : html`<p class="muted" aria-busy="true">${loading}</p>`;
-}
 
 function mainContent(ctx: ViewContext, loader: ViewLoader): TemplateResult {
   const { route } = ctx.state;

@@ -27,10 +27,6 @@ export const shellMessages = defineMessages({
   },
   "shell.tryAgain": { en: "Try again", ko: "다시 시도" },
   "shell.technicalDetail": { en: "Technical detail", ko: "기술 정보" },
-  "shell.bytesFree": {
-    en: "{free} of {size} bytes free",
-    ko: "{size}바이트 중 {free}바이트 남음",
-  },
 });
 
 /** A view's name in the side navigation and the page title. */

@@ -5,6 +5,7 @@ import {
   restampChangeText,
   restampRefusalText,
 } from "../../../i18n/outcomes/restamp/restamp-words.ts";
+import { inEveryLanguage, said, saidBy } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
 import {
   RBM_ZERO_SERIAL,
@@ -18,7 +19,6 @@ import { type CommandDef, localeOf, type RunEnv } from "../../command.ts";
 import { connectRobot, robotPlace } from "../../connect.ts";
 import { CliError, EXIT, UsageError } from "../../errors.ts";
 import { COMMAND_HELP } from "../../help/command-help.ts";
-import { said, saidBy, saidEach } from "../../said.ts";
 import { issueText } from "../../upload-report.ts";
 import { unreadable } from "../../zeros-files.ts";
 import { rbmCommandMessages } from "./messages.ts";
@@ -94,9 +94,10 @@ async function restamp(env: RunEnv, values: Values, args: string[]): Promise<num
       const reason = (l: typeof locale) => issueText(first, { locale: l }).replace(/[.\s]+$/, "");
       throw new CliError(
         e.code,
-        saidEach(rbmCommandMessages, "cmd.rbm.notMotion", (l) => [
-          { file: basename(file), reason: reason(l) },
-        ]),
+        said(rbmCommandMessages, "cmd.rbm.notMotion", {
+          file: basename(file),
+          reason: inEveryLanguage(reason),
+        }),
         EXIT.failed,
         { file },
       );
@@ -104,7 +105,9 @@ async function restamp(env: RunEnv, values: Values, args: string[]): Promise<num
     if (e instanceof RestampError) {
       throw new CliError(
         e.code,
-        saidEach(rbmCommandMessages, "cmd.rbm.refused", (l) => [{ reason: restampRefusalText(e, l) }]),
+        said(rbmCommandMessages, "cmd.rbm.refused", {
+          reason: inEveryLanguage((l) => restampRefusalText(e, l)),
+        }),
         EXIT.failed,
         { file, ...e.facts },
       );

@@ -169,6 +169,11 @@ export function firmwareResultText(
   return r.resends > 0 ? `${updated} ${t("outcome.firmware.resent", { count: r.resends })}` : updated;
 }
 
+/** After an update the robot has restarted: Basic posture before other motions. */
+export function firmwareRestartedText(locale: Locale): string {
+  return translator(messages, locale)("outcome.firmware.afterUpdate");
+}
+
 /** A fact of a refused HEX file as text (`IntelHexFacts`), or "?" when the file did not give it. */
 function fact(facts: IntelHexFacts, key: string): string {
   const value = facts[key];
@@ -259,4 +264,32 @@ export function demoFileWords(version: { major: number; minor: number }, locale:
 /** What a real robot would do after a demo file is written to it (asked just before it is). */
 export function demoFileCannotRunText(locale: Locale): string {
   return translator(messages, locale)("outcome.firmware.demoFile.cannotRun");
+}
+
+/**
+ * What the panel and `rbc flash` say before a firmware update (docs/protocol.md §11 [decision]), in English
+ * (`firmwareNoticeText` gives them in either language).
+ */
+export const FIRMWARE_NOTICES: Readonly<Record<FirmwareNotice, string>> = {
+  experimental: firmwareNoticeText("experimental", "en"),
+  recovery: firmwareNoticeText("recovery", "en"),
+  keepPowered: firmwareNoticeText("keepPowered", "en"),
+  askPowerCycle: firmwareNoticeText("askPowerCycle", "en"),
+  demoRestarts: firmwareNoticeText("demoRestarts", "en"),
+};
+
+/** "16,384 bytes at 0x00000-0x03FFF: 64 flash pages, 1,025 lines (46,137 bytes to send)". */
+export function firmwareFileSummary(summary: FirmwareFileFacts): string {
+  return firmwareSummaryText(summary, "en");
+}
+
+/**
+ * The result in a sentence: "Firmware updated: the robot now reports 2.50 (was 2.23). 4,097 lines in 83 s."
+ * `before` is the version the robot reported before the update, when it answered then.
+ */
+export function firmwareResultSentence(
+  result: FirmwareResultFacts,
+  before: { major: number; minor: number } | undefined,
+): string {
+  return firmwareResultText(result, before, "en");
 }

@@ -217,4 +217,8 @@ export const firmwareOutcomeMessages = defineMessages({
     en: "the file ends without an end-of-file record (:00000001FF); it may have been cut short.",
     ko: "파일 끝 레코드(:00000001FF)가 없어요. 파일이 중간에 잘렸을 수 있어요.",
   },
+  "outcome.firmware.afterUpdate": {
+    en: "The robot was restarted: run Basic posture before other motions.",
+    ko: "로봇이 다시 시작했어요. 다른 모션을 실행하기 전에 기본 자세를 실행해 주세요.",
+  },
 });

@@ -1,13 +1,14 @@
+import { said } from "../../../i18n/said.ts";
 import { noticeOf } from "../../app-state.ts";
+import { CLASS_SLOT } from "../../class-stop.ts";
 import type { AppContext } from "../../context.ts";
 import { downloadTextFile } from "../../download-file.ts";
 import { focusSoon } from "../../focus.ts";
-import { said } from "../../said.ts";
 import { choosePort, describePort, webSerial } from "../../serial-ports.ts";
-import { escapeTakenElsewhere } from "../../shell/escape.ts";
-import { refreshKnownPorts } from "../connection/actions.ts";
-import { recordOnRobotShelf } from "../shelf/shelf-actions.ts";
-import { idbBackupStorage } from "../zeros/backup-store.ts";
+import { stopAll as stopEveryRobot } from "../../stop-all.ts";
+import { refreshKnownPorts } from "../connection/index.ts";
+import { recordOnRobotShelf } from "../shelf/index.ts";
+import { idbBackupStorage } from "../zeros/index.ts";
 import { ClassRoom } from "./class-room.ts";
 import { testClock } from "./demo-robots.ts";
 import { classMessages } from "./messages.ts";
@@ -22,7 +23,6 @@ import {
   serializePack,
 } from "./pack-file.ts";
 import { type ClassState, chosenRobots, classOf, type PackFile, patchClass, patchRobot } from "./state.ts";
-import { CLASS_SLOT } from "./stop-all.ts";
 
 /** The Class view's actions: robots in and out, names, the pack, and what is done to all robots. */
 
@@ -39,24 +39,7 @@ export function classRoom(ctx: AppContext): ClassRoom {
   });
   slot.room = room;
   void room.loadKept();
-  listenForEscape(ctx, room);
   return room;
-}
-
-/**
- * Escape is Stop (never Limp) for the class robots too, for the page's life, in any view, unless a field, a
- * dialog or an open list takes it. With a robot in the top bar the page's own Escape does it (its Stop stops
- * the class robots as well), so this one stays out of the way then.
- */
-function listenForEscape(ctx: AppContext, room: ClassRoom): void {
-  if (typeof document === "undefined") return;
-  document.addEventListener("keydown", (e) => {
-    if (e.key !== "Escape" || e.repeat || e.defaultPrevented) return;
-    if (ctx.store.get().connection.phase === "connected" || room.connectedCount() === 0) return;
-    if (escapeTakenElsewhere(e.target, document)) return;
-    e.preventDefault();
-    void room.stopAll();
-  });
 }
 
 /** The pack as checked once (kept while the pack is the same list). */
@@ -275,9 +258,10 @@ export async function runNow(ctx: AppContext): Promise<void> {
   await classRoom(ctx).runOnAll(runNumber);
 }
 
+/** "Stop all": the page's Stop, for every robot of the page (the top-bar robot too); never Limp. */
 export function stopAll(ctx: AppContext): void {
   patchClass(ctx.store, { asking: undefined });
-  void classRoom(ctx).stopAll();
+  void stopEveryRobot(ctx);
 }
 
 /** "Limp all…": asks once, naming how many robots will fall; Cancel is focused first. */

@@ -1,16 +1,14 @@
 import type { RbcClient } from "../../../device/rbc-client.ts";
+import { said } from "../../../i18n/said.ts";
 import type { SerialPortLike } from "../../../link/web-serial-transport.ts";
 import type { Clock } from "../../../shared/clock.ts";
-import { type AppState, noticeOf } from "../../app-state.ts";
+import { type AppState, noticeOf, type RobotStop } from "../../app-state.ts";
 import { failureNotice } from "../../failure-notice.ts";
 import { createRbcClient } from "../../robot-link.ts";
-import { said } from "../../said.ts";
 import type { Controller } from "../../scope.ts";
 import type { Store } from "../../store.ts";
-import type { StoredUpload } from "../shelf/shelf-actions.ts";
-import { panelShelfKey } from "../shelf/shelf-store.ts";
-import type { BackupStorage } from "../zeros/backup-store.ts";
-import { keptBackups } from "../zeros/backup-store.ts";
+import { panelShelfKey, type StoredUpload } from "../shelf/index.ts";
+import { type BackupStorage, keptBackups } from "../zeros/index.ts";
 import { type ClassDemoRobot, createClassDemo } from "./demo-robots.ts";
 import { classMessages } from "./messages.ts";
 import type { NameStorage } from "./names.ts";
@@ -18,6 +16,7 @@ import { tidyName } from "./names.ts";
 import { checkPack, type PackCheck } from "./pack-check.ts";
 import { uploadPackTo } from "./pack-upload.ts";
 import { uploadSummary } from "./result-words.ts";
+import { robotTask } from "./robot-task.ts";
 import { type ClassRobot, classOf, type PackFile, patchClass, patchRobot } from "./state.ts";
 import { limpEach, runOnEach, stopEach } from "./together.ts";
 
@@ -73,7 +72,7 @@ export class ClassRoom implements Controller {
   /** The rows' links that group actions go to: selected, connected and not busy with something else. */
   chosenLinks(): RobotLink[] {
     return classOf(this.store.get())
-      .robots.filter((r) => r.selected && r.phase === "connected" && r.task === undefined)
+      .robots.filter((r) => r.selected && r.phase === "connected" && robotTask(r) === undefined)
       .flatMap((r) => {
         const link = this.links.get(r.id);
         return link ? [link] : [];
@@ -155,6 +154,7 @@ export class ClassRoom implements Controller {
       client.stateChanges.on((s) => {
         if (s.mode === "disconnected" && s.reason && this.links.get(id) === link) this.lost(link, s.reason);
       }),
+      client.activityChanges.on((activity) => patchRobot(this.store, id, { activity })),
     );
     try {
       const identity = await client.identify(await client.connect());
@@ -164,6 +164,7 @@ export class ClassRoom implements Controller {
         serialNumber: identity.serialNumber,
         firmware: identity.firmware,
         platform: identity.platform,
+        activity: client.activity,
       });
       await this.readFacts(id);
     } catch (e) {
@@ -204,6 +205,7 @@ export class ClassRoom implements Controller {
     this.forget(link);
     patchRobot(this.store, link.id, (r) => ({
       phase: "lost",
+      activity: undefined,
       selected: r.selected,
       problem: noticeOf("danger", this.store.get().locale, [said(classMessages, "class.lost")], reason),
     }));
@@ -280,8 +282,8 @@ export class ClassRoom implements Controller {
   }
 
   /** Stop for every connected robot (7 to each one playing a motion); never Limp. */
-  async stopAll(): Promise<void> {
-    await stopEach(this, [...this.links.values()]);
+  async stopAll(): Promise<RobotStop[]> {
+    return stopEach(this, [...this.links.values()]);
   }
 
   /** Limp for every connected robot, after the view asked once (they fall unless held). */

@@ -6,6 +6,11 @@
  * idb-keyval loads with the Class view.
  */
 
+import { inEveryLanguage, type LocalText } from "../../../i18n/said.ts";
+import { translator } from "../../../i18n/translate.ts";
+import { type ClassTranslator, classMessages } from "./messages.ts";
+import type { ClassRobot, ClassState } from "./state.ts";
+
 export interface NameStorage {
   entries(): Promise<[serial: string, name: string][]>;
   set(serial: string, name: string): Promise<void>;
@@ -46,4 +51,17 @@ export async function idbNameStorage(): Promise<NameStorage> {
 /** A name as typed, tidied: spaces trimmed and runs of white space made one, cut to MAX_NAME_LENGTH. */
 export function tidyName(typed: string): string {
   return typed.replace(/\s+/g, " ").trim().slice(0, MAX_NAME_LENGTH);
+}
+
+/** The name the teacher gave it, else "Demo robot 2" or its port. */
+export function robotTitle(t: ClassTranslator, c: ClassState, r: ClassRobot): string {
+  const given = r.serialNumber ? c.names[r.serialNumber] : undefined;
+  if (given) return given;
+  return r.demoNumber !== undefined ? t("class.demoName", { number: r.demoNumber }) : r.portLabel;
+}
+
+/** Robot `id`'s name in every language (the top bar names it with its Stop result). */
+export function robotNamed(c: ClassState, id: number): LocalText {
+  const r = c.robots.find((robot) => robot.id === id);
+  return inEveryLanguage((l) => (r ? robotTitle(translator(classMessages, l), c, r) : `#${id}`));
 }

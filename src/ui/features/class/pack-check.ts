@@ -1,7 +1,7 @@
 import { downloadedMotionNumber, MOTION_AREA_BYTES, memoryFootprint } from "../../../protocol/catalog.ts";
 import { motionDurationMs, type RbmMotion } from "../../../protocol/rbm.ts";
 import type { RbmIssue } from "../../../protocol/rbm-validate.ts";
-import { checkEntry, inspectMotionText } from "../motions/files.ts";
+import { checkEntry, inspectMotionText } from "../motions/index.ts";
 import { PACK_MAX_FILES } from "./pack-file.ts";
 import type { PackFile } from "./state.ts";
 

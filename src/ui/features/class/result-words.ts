@@ -1,14 +1,14 @@
 import { RbcCancelledError, RbcError, RbcUploadError } from "../../../device/errors.ts";
 import type { LimpResult } from "../../../device/rbc-client.ts";
 import type { RunReport } from "../../../device/run-outcome.ts";
+import { errorSaid } from "../../../i18n/error-said.ts";
 import type { Locale } from "../../../i18n/locale.ts";
 import { runReportText } from "../../../i18n/outcomes/run-words.ts";
+import { inEveryLanguage, type Said, said, saidBy } from "../../../i18n/said.ts";
 import { formatSeconds } from "../../../i18n/units.ts";
 import { MOTION_AREA_BYTES, NO_ERROR } from "../../../protocol/catalog.ts";
 import { type Notice, noticeOf, type Tone } from "../../app-state.ts";
 import { technicalDetail } from "../../error-text.ts";
-import { errorSaid } from "../../failure-notice.ts";
-import { inEveryLanguage, type Said, said, saidText } from "../../said.ts";
 import { classMessages } from "./messages.ts";
 
 /**
@@ -119,7 +119,7 @@ export function runResultNotice(outcome: PromiseSettledResult<RunReport>, locale
       }),
     ]);
   }
-  return noticeOf("warning", locale, [saidText(inEveryLanguage((l) => runReportText(report, l) ?? ""))]);
+  return noticeOf("warning", locale, [saidBy((l) => runReportText(report, l) ?? "")]);
 }
 
 /** One robot's Limp: every servo passive, or which did not confirm. */

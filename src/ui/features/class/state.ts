@@ -1,4 +1,5 @@
-import type { AppState, Notice } from "../../app-state.ts";
+import type { ActivitySnapshot } from "../../../device/index.ts";
+import type { Notice } from "../../notices.ts";
 import type { Store } from "../../store.ts";
 
 /**
@@ -10,8 +11,8 @@ import type { Store } from "../../store.ts";
 /** Where one class robot's connection is. `lost`: the link went away (a pulled cable); `failed`: it never connected. */
 export type ClassRobotPhase = "connecting" | "connected" | "lost" | "failed";
 
-/** What a class robot is doing for the view right now (its buttons wait meanwhile). */
-export type ClassRobotTask = "upload" | "run" | "limp" | "reading";
+/** What the view is doing with a class robot right now (its buttons wait meanwhile). */
+export type ClassRobotTask = "upload" | "run" | "reading";
 
 /** The pack's upload to one robot, as it goes. */
 export interface ClassUploadProgress {
@@ -35,6 +36,8 @@ export interface ClassRobot {
   phase: ClassRobotPhase;
   selected: boolean;
   task?: ClassRobotTask;
+  /** What the robot is doing, as its client's activity machine tells it (`RbcClient.activityChanges`). */
+  activity?: ActivitySnapshot;
   serialNumber?: string;
   firmware?: { major: number; minor: number };
   platform?: number;
@@ -100,12 +103,17 @@ export function initialClass(): ClassState {
   };
 }
 
-export function classOf(s: AppState): ClassState {
+/** The part of the app state this feature owns (src/ui/app-state.ts composes the parts). */
+export interface ClassSlice {
+  classRoom?: ClassState;
+}
+
+export function classOf(s: ClassSlice): ClassState {
   return s.classRoom ?? initialClass();
 }
 
 export function patchClass(
-  store: Store<AppState>,
+  store: Store<ClassSlice>,
   patch: Partial<ClassState> | ((c: ClassState) => Partial<ClassState>),
 ): void {
   store.update((s) => {
@@ -116,7 +124,7 @@ export function patchClass(
 
 /** Changes one robot's row (nothing when it was removed meanwhile). */
 export function patchRobot(
-  store: Store<AppState>,
+  store: Store<ClassSlice>,
   id: number,
   patch: Partial<ClassRobot> | ((r: ClassRobot) => Partial<ClassRobot>),
 ): void {

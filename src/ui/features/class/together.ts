@@ -1,9 +1,11 @@
 import type { RunReport } from "../../../device/run-outcome.ts";
 import { COMMANDS } from "../../../protocol/commands.ts";
-import { stopOutcome } from "../connection/stop-outcome.ts";
+import type { Notice, RobotStop } from "../../app-state.ts";
+import { stopOutcome } from "../../stop-outcome.ts";
 import type { ClassRoom, RobotLink } from "./class-room.ts";
+import { robotNamed } from "./names.ts";
 import { failedNotice, limpResultNotice, runResultNotice } from "./result-words.ts";
-import { patchClass, patchRobot } from "./state.ts";
+import { classOf, patchClass, patchRobot } from "./state.ts";
 
 /**
  * What the class does together: Run on all, Stop all, Limp all. Each robot is driven on its own connection and
@@ -90,18 +92,23 @@ export async function runOnEach(
   patchClass(store, { lastRun: { number, robots: times.length, skewMs } });
 }
 
-/** Stop on every robot (7 to each one playing a motion, an upload cancelled); each says what it confirmed. */
-export async function stopEach(room: ClassRoom, links: readonly RobotLink[]): Promise<void> {
+/**
+ * Stop on every robot (7 to each one playing a motion, an upload cancelled); each says what it confirmed, in
+ * its row and in what this returns (the top bar says it too: `stopAll`, src/ui/stop-all.ts).
+ */
+export async function stopEach(room: ClassRoom, links: readonly RobotLink[]): Promise<RobotStop[]> {
   const { store } = room;
-  await Promise.all(
+  return Promise.all(
     links.map(async (link) => {
       link.abort?.abort();
+      let result: Notice;
       try {
-        const result = await link.client.stopActivity();
-        patchRobot(store, link.id, { result: stopOutcome(result, false, store.get().locale) });
+        result = stopOutcome(await link.client.stopActivity(), false, store.get().locale);
       } catch (e) {
-        patchRobot(store, link.id, { result: failedNotice("stop", e, store.get().locale) });
+        result = failedNotice("stop", e, store.get().locale);
       }
+      patchRobot(store, link.id, { result });
+      return { robot: robotNamed(classOf(store.get()), link.id), notice: result };
     }),
   );
 }
@@ -112,12 +119,11 @@ export async function limpEach(room: ClassRoom, links: readonly RobotLink[]): Pr
   await Promise.all(
     links.map(async (link) => {
       link.abort?.abort();
-      patchRobot(store, link.id, { task: "limp" });
       try {
         const result = await link.client.limp();
-        patchRobot(store, link.id, { task: undefined, result: limpResultNotice(result, store.get().locale) });
+        patchRobot(store, link.id, { result: limpResultNotice(result, store.get().locale) });
       } catch (e) {
-        patchRobot(store, link.id, { task: undefined, result: failedNotice("limp", e, store.get().locale) });
+        patchRobot(store, link.id, { result: failedNotice("limp", e, store.get().locale) });
       }
     }),
   );

@@ -1,10 +1,10 @@
+import { said } from "../../../i18n/said.ts";
 import { type AppState, noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { focusSoon } from "../../focus.ts";
-import { said } from "../../said.ts";
 import { forgetPort, grantedPorts, webSerial } from "../../serial-ports.ts";
 import type { Store } from "../../store.ts";
-import { stopClassRobots } from "../class/stop-all.ts";
+import { busyElsewhere, isLimp } from "./activity.ts";
 import { connectionMessages } from "./messages.ts";
 import type { ConnectionState, RobotLabel } from "./state.ts";
 
@@ -16,7 +16,7 @@ import type { ConnectionState, RobotLabel } from "./state.ts";
  */
 const failureWords = () => import("../../failure-words.ts");
 /** Stop's and Limp's sentences load with the first press (or a robot found busy), not with the first page. */
-const stopWords = () => import("./stop-outcome.ts");
+const stopWords = () => import("../../stop-outcome.ts");
 
 function setConnection(store: Store<AppState>, patch: Partial<ConnectionState>): void {
   store.update((s) => ({ connection: { ...s.connection, ...patch } }));
@@ -77,20 +77,20 @@ export function disconnect(ctx: AppContext): void {
 }
 
 /**
- * Stop (the top bar's red button, and Escape when nothing else takes it): ends what the robot is doing and
- * keeps it standing (`RbcClient.stopActivity`). It never makes a servo passive: that is Limp. Stop is asked of
- * the robot first; its words load beside it (`stop-outcome.ts`, not in the first page load).
+ * Stop for the top-bar robot (the page's Stop, `stopAll` in src/ui/stop-all.ts, runs it beside the class
+ * robots' own): ends what the robot is doing and keeps it standing (`RbcClient.stopActivity`). It never makes a
+ * servo passive: that is Limp. Stop is asked of the robot first; its words load beside it (`stop-outcome.ts`,
+ * not in the first page load). The top bar says the outcome (`stopNotice`).
  */
-export async function stopActivity(ctx: AppContext): Promise<void> {
+export async function stopSessionRobot(ctx: AppContext): Promise<void> {
   const { store, session } = ctx;
-  void stopClassRobots(ctx);
   const client = session.current;
   if (!client) return;
   const now = session.clock.now();
   const stopping = store.get();
-  // Whether every servo was limp before: Stop's leave sequence moves no servo (a 7 it sends clears the flag).
-  const limp = stopping.connection.limp === true;
-  store.update({ limpAsked: false });
+  // Whether every servo was limp before: Stop's leave sequence moves no servo (a 7 it sends ends that).
+  const limp = isLimp(stopping.connection);
+  store.update({ limpAsked: undefined });
   const done = client.stopActivity().then(
     (result) => ({ result }),
     (error: unknown) => ({ error }),
@@ -110,15 +110,16 @@ export async function stopActivity(ctx: AppContext): Promise<void> {
  * "Limp…": asks first, in place (the robot falls unless someone holds it). The question takes the place of an
  * earlier Stop or Limp result, so the top bar says one thing at a time.
  */
-export function askLimp(ctx: AppContext): void {
+export async function askLimp(ctx: AppContext): Promise<void> {
   if (!ctx.session.current) return;
-  ctx.store.update({ limpAsked: true, stopNotice: undefined });
+  const warning = (await stopWords()).limpWarningSaid();
+  ctx.store.update({ limpAsked: warning, stopNotice: undefined });
   // Cancel first: Enter right after the question appears must not make the robot fall.
   focusSoon("cancel-limp");
 }
 
 export function cancelLimp(ctx: AppContext): void {
-  ctx.store.update({ limpAsked: false });
+  ctx.store.update({ limpAsked: undefined });
   focusSoon("limp-button");
 }
 
@@ -126,7 +127,7 @@ export function cancelLimp(ctx: AppContext): void {
 export async function limpAll(ctx: AppContext): Promise<void> {
   const { store, session } = ctx;
   const client = session.current;
-  store.update({ limpAsked: false });
+  store.update({ limpAsked: undefined });
   if (!client) return;
   const done = client.limp().then(
     (result) => ({ result }),
@@ -143,7 +144,6 @@ export async function limpAll(ctx: AppContext): Promise<void> {
   if (session.current === client) {
     // The robot is limp and someone is holding it: the next movement asks again.
     store.update((s) => ({ stopNotice: notice, acks: { ...s.acks, movement: false } }));
-    if (client.mode === "direct") setConnection(store, { limp: true });
   }
 }
 
@@ -159,7 +159,7 @@ export async function busyChanged(ctx: AppContext, busy: boolean): Promise<void>
   }
   const client = session.current;
   const words = await stopWords();
-  if (session.current === client && store.get().connection.busy) {
+  if (session.current === client && busyElsewhere(store.get().connection)) {
     setConnection(store, { busyNotice: words.busyNotice(store.get().locale) });
   }
 }
@@ -172,11 +172,6 @@ export function probeAfterConnect(ctx: AppContext): void {
   void ctx.session.current?.probeBusy().catch(() => {});
 }
 
-/** A servo was moved or the user took servo control: the servos are no longer all limp. */
-export function servosTaken(ctx: AppContext): void {
-  if (ctx.store.get().connection.limp) setConnection(ctx.store, { limp: false });
-}
-
 export function dismissStopNotice(ctx: AppContext): void {
-  ctx.store.update({ stopNotice: undefined });
+  ctx.store.update({ stopNotice: undefined, robotStops: undefined });
 }

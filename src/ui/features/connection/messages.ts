@@ -93,7 +93,6 @@ export const connectionMessages = defineMessages({
   },
   "connection.status.connected": { en: "Connected", ko: "연결됨" },
   "connection.status.bluetooth": { en: "Bluetooth", ko: "블루투스" },
-  "connection.status.platformUnknown": { en: "unknown ({platform})", ko: "알 수 없는 플랫폼 ({platform})" },
   "connection.status.firmware": { en: "fw {version}", ko: "펌웨어 {version}" },
   "connection.status.serialNumber": { en: "SN {serial}", ko: "시리얼 번호 {serial}" },
   "connection.status.limp": { en: "servos limp", ko: "서보 힘 빠짐" },
@@ -109,10 +108,6 @@ export const connectionMessages = defineMessages({
   "connection.limpTitle": {
     en: "Make every servo passive: the robot falls unless someone holds it (asks first)",
     ko: "모든 서보의 힘을 빼요. 누가 잡고 있지 않으면 로봇이 넘어져요 (먼저 물어봐요)",
-  },
-  "connection.limpQuestion": {
-    en: "Hold the robot: every servo will go passive and it will fall if nobody holds it.",
-    ko: "로봇을 잡아 주세요. 모든 서보의 힘이 빠져서, 아무도 잡고 있지 않으면 로봇이 넘어져요.",
   },
   "connection.limpExplain": {
     en: "Stop (Esc) ends a motion and keeps the robot standing; Limp is for when the robot must go slack.",

@@ -1,5 +1,11 @@
-import type { ClientMode, ClientState, LinkKind, SubscriptionKind } from "../../../device/index.ts";
-import type { Notice, RunningLabel } from "../../app-state.ts";
+import type {
+  ActivitySnapshot,
+  ClientMode,
+  ClientState,
+  LinkKind,
+  SubscriptionKind,
+} from "../../../device/index.ts";
+import type { Notice, RunningLabel } from "../../notices.ts";
 import type { PortInfo } from "../../serial-ports.ts";
 
 /** The connection's part of the app state: which robot, in which phase, and what its client reports. */
@@ -27,22 +33,18 @@ export interface ConnectionState {
   /** The client's mode once connected ("packet" normally, "direct" after Limp or for servo control). */
   mode?: ClientMode;
   /**
-   * True after Limp made every servo passive, until the panel moves a servo or a motion plays (the panel's, or
-   * one the busy probe found). Leaving direct mode moves no servo, so it keeps the flag.
+   * What the robot is doing, as the device's activity machine tells it (`RbcClient.activityChanges`): a motion
+   * or sound the client waits on, a motion started elsewhere (the busy probe, docs/protocol.md §3.6), an upload,
+   * direct mode, Stop or Limp under way, and whether every servo is limp. The one copy: views read it through
+   * the selectors of `activity.ts`.
    */
-  limp?: boolean;
+  activity?: ActivitySnapshot;
   /** Mirrored from the client: motion 7 has answered in this connection (the 7-first rule is satisfied). */
   basicPostureConfirmed?: boolean;
-  /** Mirrored from the client: the motion it is waiting on (ms of the client's clock). */
-  playing?: ClientState["playing"];
-  /** Mirrored from the client: the sound it is waiting on. */
-  sounding?: ClientState["sounding"];
   /**
-   * Mirrored from the client: the busy probe found a motion started elsewhere playing (docs/protocol.md §3.6),
-   * until the robot's main loop answers again.
+   * What the top bar says beside Stop while a motion started elsewhere plays (`busyElsewhere`; made when the
+   * words have loaded: `busyChanged`).
    */
-  busy?: ClientState["busy"];
-  /** What the top bar says beside Stop while `busy` (made when the words have loaded: `busyChanged`). */
   busyNotice?: Notice;
   /** Mirrored from the client: the event subscription it keeps armed. */
   subscription?: SubscriptionKind;
@@ -75,23 +77,17 @@ export function connectingTo(robot: RobotLabel): ConnectionState {
   return { ...initialConnection(), phase: "connecting", robot };
 }
 
-/** The client state the views show (the 7-first rule, what is playing, the subscription). */
+/** The client state the views show (the 7-first rule, the subscription); what it does is `activity`. */
 export function mirrored(state: ClientState): Partial<ConnectionState> {
   return {
     basicPostureConfirmed: state.basicPostureConfirmed,
-    playing: state.playing,
-    sounding: state.sounding,
-    busy: state.busy,
     subscription: state.subscription,
   };
 }
 
 /** What no longer runs once the link is gone. */
 export const NOTHING_RUNNING: Partial<ConnectionState> = {
-  limp: undefined,
-  playing: undefined,
-  sounding: undefined,
-  busy: undefined,
+  activity: undefined,
   busyNotice: undefined,
   subscription: undefined,
 };

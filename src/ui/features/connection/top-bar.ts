@@ -1,22 +1,24 @@
 import { html, nothing, type TemplateResult } from "lit-html";
 import type { Locale } from "../../../i18n/locale.ts";
+import { unknownPlatformText } from "../../../i18n/outcomes/robot-facts.ts";
+import { type Said, wordOf } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { platformName } from "../../../protocol/platform.ts";
 import { formatFirmware } from "../../../shared/format.ts";
-import { noticeText } from "../../app-state.ts";
+import { lazyPart } from "../../lazy-part.ts";
 import { uiMessages } from "../../messages.ts";
-import { noticeDetail } from "../../shell/notice.ts";
+import { redraw } from "../../shell/actions.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
-import { askLimp, cancelLimp, dismissStopNotice, limpAll, stopActivity } from "./actions.ts";
+import { anyRobotConnected, stopAll } from "../../stop-all.ts";
+import { askLimp, cancelLimp, limpAll } from "./actions.ts";
+import { busyElsewhere, isLimp } from "./activity.ts";
 import { type ConnectionTranslator, connectionMessages } from "./messages.ts";
 import { robotName } from "./robot-name.ts";
 import type { ConnectionState } from "./state.ts";
 
 /** The platform byte as the top bar says it: HUNO, DINO, DOGY, PF2, or "unknown (9)". */
 function platformWord(t: ConnectionTranslator, platform: number): string {
-  return platform >= 1 && platform <= 4
-    ? platformName(platform)
-    : t("connection.status.platformUnknown", { platform: String(platform) });
+  return platform >= 1 && platform <= 4 ? platformName(platform) : unknownPlatformText(platform, t.locale);
 }
 
 /** The words of the connection state, as the top bar (and screen readers) say them. */
@@ -43,7 +45,7 @@ export function connectionSummary(c: ConnectionState, locale: Locale = "en"): st
       if (c.firmware) parts.push(t("connection.status.firmware", { version: formatFirmware(c.firmware) }));
       if (c.serialNumber) parts.push(t("connection.status.serialNumber", { serial: c.serialNumber }));
       if (c.mode === "direct") {
-        parts.push(c.limp ? t("connection.status.limp") : t("connection.status.servoControl"));
+        parts.push(isLimp(c) ? t("connection.status.limp") : t("connection.status.servoControl"));
       }
       return parts;
     }
@@ -73,80 +75,68 @@ export function topBar(ctx: ViewContext): TemplateResult {
         )}
       </div>
       ${
-        connected
+        anyRobotConnected(ctx.state)
           ? html`<div class="safety-buttons">
               <button
                 type="button"
                 class="btn btn--danger stop"
                 aria-keyshortcuts="Escape"
                 title=${t("connection.stopTitle")}
-                @click=${() => void stopActivity(ctx)}
+                @click=${() => void stopAll(ctx)}
               >
                 <span aria-hidden="true">■</span> ${t("connection.stop")} <kbd aria-hidden="true">Esc</kbd>
               </button>
-              <button
-                type="button"
-                id="limp-button"
-                class="btn limp"
-                aria-haspopup="dialog"
-                aria-expanded=${ctx.state.limpAsked ? "true" : "false"}
-                title=${t("connection.limpTitle")}
-                @click=${() => askLimp(ctx)}
-              >
-                ${t("connection.limpAsk")}
-              </button>
+              ${connected ? limpButton(ctx, t) : nothing}
             </div>`
           : nothing
       }
-      ${connected && ctx.state.limpAsked ? limpQuestion(ctx, t) : nothing}
+      ${connected && ctx.state.limpAsked ? limpQuestion(ctx, t, ctx.state.limpAsked) : nothing}
       ${stopResult(ctx)}
     </header>
   `;
 }
 
+/** Limp is the top-bar robot's (the Class view asks "Limp all…" for its own robots). */
+function limpButton(ctx: ViewContext, t: ConnectionTranslator): TemplateResult {
+  return html`<button
+    type="button"
+    id="limp-button"
+    class="btn limp"
+    aria-haspopup="dialog"
+    aria-expanded=${ctx.state.limpAsked ? "true" : "false"}
+    title=${t("connection.limpTitle")}
+    @click=${() => void askLimp(ctx)}
+  >
+    ${t("connection.limpAsk")}
+  </button>`;
+}
+
 /**
  * What Stop or Limp did, inside the top bar, which stays at the top of the window: it is seen however far down
  * the page someone was when they pressed Stop (or Escape). The region is always there (empty while there is
- * nothing to say), so screen readers announce the result; it is worded when drawn, in the language of the
- * moment.
+ * nothing to say), so screen readers announce the result. What it says is drawn by `stop-banner.ts`, loaded with
+ * the first thing to say (a Stop, a Limp, a robot found busy), not with the first page.
  */
 function stopResult(ctx: ViewContext): TemplateResult {
-  const n = ctx.state.stopNotice;
-  const { locale } = ctx.state;
-  const c = ctx.state.connection;
-  // A robot found busy with a motion started elsewhere (docs/protocol.md §3.6): said with a Stop right there.
-  const busy = c.phase === "connected" && c.busy ? c.busyNotice : undefined;
+  const s = ctx.state;
+  const c = s.connection;
+  const busy = c.phase === "connected" && busyElsewhere(c) !== undefined && c.busyNotice !== undefined;
+  const part =
+    busy || s.stopNotice || (s.robotStops?.length ?? 0) > 0 ? banner.get(() => redraw(ctx.store)) : undefined;
   // No whitespace around the content: the empty region matches :empty and takes no room in the bar.
   return html`<div class="stop-banner" role="status" aria-live="assertive" data-testid="stop-banner">${
-    busy
-      ? html`<div class="notice notice--${busy.tone} banner-notice" data-testid="busy-banner">
-          <p class="banner-text">${noticeText(busy, locale)}</p>
-          <button type="button" class="btn btn--danger" @click=${() => void stopActivity(ctx)}>
-            ${translator(connectionMessages, locale)("connection.stop")}
-          </button>
-        </div>`
-      : nothing
-  }${
-    n
-      ? html`<div class="notice notice--${n.tone} banner-notice">
-          <div class="banner-text">
-            <p>${noticeText(n, locale)}</p>
-            ${noticeDetail(n, locale)}
-          </div>
-          <button type="button" class="btn btn--quiet" @click=${() => dismissStopNotice(ctx)}>
-            ${translator(connectionMessages, locale)("connection.dismiss")}
-          </button>
-        </div>`
-      : nothing
+    part ? part.stopBanner(ctx) : nothing
   }</div>`;
 }
+
+const banner = lazyPart(() => import("./stop-banner.ts"));
 
 /**
  * Limp asks first, in place in the top bar (which stays at the top of the window, so the page keeps its place
  * however far down it was): every servo goes passive and a standing robot falls. Escape or
  * Cancel closes the question (Escape never makes a servo limp); the safe choice is the one focused first.
  */
-function limpQuestion(ctx: ViewContext, t: ConnectionTranslator): TemplateResult {
+function limpQuestion(ctx: ViewContext, t: ConnectionTranslator, warning: Said): TemplateResult {
   const onKey = (e: KeyboardEvent) => {
     if (e.key !== "Escape") return;
     e.preventDefault();
@@ -161,7 +151,7 @@ function limpQuestion(ctx: ViewContext, t: ConnectionTranslator): TemplateResult
       aria-describedby="limp-text"
       @keydown=${onKey}
     >
-      <p id="limp-title"><strong>${t("connection.limpQuestion")}</strong></p>
+      <p id="limp-title"><strong>${wordOf(warning, ctx.state.locale)}</strong></p>
       <p id="limp-text" class="small">${t("connection.limpExplain")}</p>
       <div class="actions">
         <button type="button" class="btn" id="cancel-limp" @click=${() => cancelLimp(ctx)}>${t("connection.cancel")}</button>

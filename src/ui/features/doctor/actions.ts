@@ -1,8 +1,8 @@
 import type { ScanResult } from "../../../device/servo-doctor/index.ts";
+import { type Said, said } from "../../../i18n/said.ts";
 import type { AppContext } from "../../context.ts";
-import { type Said, said } from "../../said.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
-import { stopActivity } from "../connection/actions.ts";
+import { stopAll } from "../../stop-all.ts";
 import { doctorMessages } from "./messages.ts";
 import { ALL_SERVO_IDS, checkFixIds, HUNO_SERVO_IDS, suggestedFix } from "./model.ts";
 import { type DoctorFix, type DoctorState, doctorOf, patchDoctor } from "./state.ts";
@@ -154,7 +154,7 @@ export function cancel(ctx: AppContext): void {
 
 /** Stop, offered beside a refusal: the top bar's Stop. */
 export function stopRobot(ctx: AppContext): void {
-  void stopActivity(ctx);
+  void stopAll(ctx);
 }
 
 /** Picks a servo for a closer look (from the table or the figure). */

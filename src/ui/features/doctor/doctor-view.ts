@@ -1,10 +1,10 @@
 import "../../styles/tools.css";
 import "./doctor.css";
 import { html, nothing, type TemplateResult } from "lit-html";
+import { sidesNote } from "../../../i18n/joint-names/joint-name.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { notice } from "../../shell/notice.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
-import { sidesNote } from "../zeros/joints/joint-name.ts";
 import { stopRobot } from "./actions.ts";
 import { demoCard } from "./demo-view.ts";
 import { fixCard } from "./fix-view.ts";

@@ -5,7 +5,7 @@ import type {
   SetIdResult,
   WiggleResult,
 } from "../../../device/servo-doctor/index.ts";
-import type { AppState, Notice } from "../../app-state.ts";
+import type { Notice } from "../../notices.ts";
 import type { Store } from "../../store.ts";
 
 /**
@@ -58,12 +58,17 @@ export function initialDoctor(): DoctorState {
   return { allIds: false, fix: { from: "", to: "" } };
 }
 
-export function doctorOf(s: AppState): DoctorState {
+/** The part of the app state this feature owns (src/ui/app-state.ts composes the parts). */
+export interface DoctorSlice {
+  doctor?: DoctorState;
+}
+
+export function doctorOf(s: DoctorSlice): DoctorState {
   return s.doctor ?? initialDoctor();
 }
 
 export function patchDoctor(
-  store: Store<AppState>,
+  store: Store<DoctorSlice>,
   p: Partial<DoctorState> | ((x: DoctorState) => Partial<DoctorState>),
 ): void {
   store.update((s) => {

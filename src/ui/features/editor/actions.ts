@@ -1,4 +1,6 @@
+import { jointName } from "../../../i18n/joint-names/joint-name.ts";
 import { motionSubjectText } from "../../../i18n/outcomes/motion/motion-words.ts";
+import { inEveryLanguage, type LocalText, type Said, said } from "../../../i18n/said.ts";
 import {
   addScene,
   deleteScene,
@@ -17,8 +19,6 @@ import {
 } from "../../../motion/index.ts";
 import type { AppContext } from "../../context.ts";
 import { focusSoon } from "../../focus.ts";
-import { inEveryLanguage, type LocalText, type Said, said } from "../../said.ts";
-import { jointName } from "../zeros/joints/joint-name.ts";
 import { editorController } from "./controller.ts";
 import { scheduleAutosave } from "./draft-actions.ts";
 import { editorNotice } from "./editor-notice.ts";

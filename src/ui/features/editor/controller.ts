@@ -1,7 +1,7 @@
+import { said } from "../../../i18n/said.ts";
 import { type Motion, motionIssues } from "../../../motion/index.ts";
 import type { RbmValidation } from "../../../protocol/rbm-validate.ts";
 import type { AppContext } from "../../context.ts";
-import { said } from "../../said.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
 import { Autosaver } from "./autosave.ts";
 import {

@@ -1,11 +1,11 @@
+import { errorSaid } from "../../../i18n/error-said.ts";
 import { lowerErrorText } from "../../../i18n/outcomes/lower-error-text.ts";
+import { inEveryLanguage, type LocalText, type Said, said, wordOf } from "../../../i18n/said.ts";
 import { MotionError, newMotion, openMotion, saveMotion } from "../../../motion/index.ts";
 import type { Notice } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { downloadTextFile } from "../../download-file.ts";
 import { technicalDetail } from "../../error-text.ts";
-import { errorSaid } from "../../failure-notice.ts";
-import { inEveryLanguage, type LocalText, type Said, said, wordOf } from "../../said.ts";
 import { redoNext, undoLast } from "./actions.ts";
 import { editorController } from "./controller.ts";
 import { flushAutosave, robotZeros, scheduleAutosave, startEditor } from "./draft-actions.ts";

@@ -1,10 +1,10 @@
+import { errorSaid } from "../../../i18n/error-said.ts";
 import { lowerErrorText } from "../../../i18n/outcomes/lower-error-text.ts";
+import { inEveryLanguage, type Said, said, wordOf } from "../../../i18n/said.ts";
 import { type Motion, newMotion, openMotion, saveMotion } from "../../../motion/index.ts";
 import { noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { technicalDetail } from "../../error-text.ts";
-import { errorSaid } from "../../failure-notice.ts";
-import { inEveryLanguage, type Said, said, wordOf } from "../../said.ts";
 import { editorController } from "./controller.ts";
 import { DRAFT_OPEN_TIMEOUT_MS, DraftTimeoutError, withDeadline } from "./draft-deadline.ts";
 import {

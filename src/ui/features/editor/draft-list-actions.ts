@@ -1,9 +1,9 @@
+import { errorSaid } from "../../../i18n/error-said.ts";
+import { said } from "../../../i18n/said.ts";
 import { type Motion, MotionError, saveMotion, setMotionName } from "../../../motion/index.ts";
 import type { AppContext } from "../../context.ts";
 import { downloadTextFile } from "../../download-file.ts";
-import { errorSaid } from "../../failure-notice.ts";
 import { focusSoon } from "../../focus.ts";
-import { said } from "../../said.ts";
 import { editorController } from "./controller.ts";
 import { flushAutosave, readDraftDocument, scheduleAutosave } from "./draft-actions.ts";
 import { draftRecord, storedName, storedRbmText, summarize } from "./drafts.ts";

@@ -1,6 +1,6 @@
+import { inEveryLanguage, type Said, said, wordOf } from "../../../i18n/said.ts";
 import { RBM_MAX_TEXT_LENGTH } from "../../../protocol/rbm.ts";
 import { z } from "../../../protocol/zod.ts";
-import { inEveryLanguage, type Said, said, wordOf } from "../../said.ts";
 import { editorMessages } from "./messages.ts";
 
 /**

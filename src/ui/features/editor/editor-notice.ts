@@ -1,7 +1,7 @@
+import type { Said } from "../../../i18n/said.ts";
 import { type Notice, noticeOf, type Tone } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { technicalDetail } from "../../error-text.ts";
-import type { Said } from "../../said.ts";
 
 /**
  * The Editor's notices are kept as messages (a catalogue key and its facts, `said(editorMessages, …)`), worded

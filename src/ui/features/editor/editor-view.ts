@@ -9,7 +9,7 @@ import { translator } from "../../../i18n/translate.ts";
 import { clampPosition, type Motion } from "../../../motion/index.ts";
 import { type Robot3dOptions, robot3d } from "../../robot3d/robot-view.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
-import { showMemory } from "../motions/memory.ts";
+import { showMemory } from "../motions/index.ts";
 import { editorController } from "./controller.ts";
 import { openEditor } from "./document-actions.ts";
 import { draftsCard } from "./drafts-view.ts";

@@ -1,5 +1,5 @@
+import type { Said } from "../../../i18n/said.ts";
 import type { Motion } from "../../../motion/index.ts";
-import type { Said } from "../../said.ts";
 
 /**
  * What the teach-in and tethered-play panels need from the editor: the document, the selected scene, and a way

@@ -1,11 +1,11 @@
 import { html, nothing, type TemplateResult } from "lit-html";
+import { errorCountText, warningCountText } from "../../../i18n/outcomes/rbm/check-summary.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { asRbm, type Motion } from "../../../motion/index.ts";
 import type { RbmIssue, RbmValidation } from "../../../protocol/rbm-validate.ts";
 import { formatCount } from "../../format.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
-import { groupWarnings, type WarningGroup, weightWord } from "../motions/issue-groups.ts";
-import { issueWords } from "../motions/issue-text.ts";
+import { groupWarnings, issueWords, type WarningGroup, weightWord } from "../motions/index.ts";
 import { chooseScene } from "./actions.ts";
 import { type EditorTranslator, editorMessages } from "./messages.ts";
 
@@ -71,8 +71,8 @@ export function issuesCard(ctx: ViewContext, doc: Motion, check: RbmValidation):
           ? html`<p class="check-ok" data-testid="editor-check">${t("editor.check.clean")}</p>`
           : html`<p class="small" data-testid="editor-check">
               ${t("editor.check.summary", {
-                errors: t("editor.count.errors", { count: errors.length }),
-                warnings: t("editor.count.warnings", { count: warnings.length }),
+                errors: errorCountText(errors.length, t.locale),
+                warnings: warningCountText(warnings.length, t.locale),
               })}
             </p>`
       }

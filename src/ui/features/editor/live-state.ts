@@ -5,9 +5,10 @@
  * document last uploaded from the Editor (docs/protocol.md §6).
  */
 import type { Motion } from "../../../motion/index.ts";
-import type { AppState, Notice } from "../../app-state.ts";
+import type { Notice } from "../../notices.ts";
 import type { Store } from "../../store.ts";
-import type { BookEntry } from "../motions/slot-book.ts";
+import type { ConnectionState } from "../connection/index.ts";
+import type { BookEntry } from "../motions/index.ts";
 
 /** The HUNO's limbs, by which teach-in chooses the servos to make passive. */
 export type Limb = "right-leg" | "left-leg" | "right-arm" | "left-arm";
@@ -58,8 +59,6 @@ export interface PlayRun {
   from: number;
   to: number;
   progress?: PlayProgress;
-  /** Stop was pressed; tethered play ends at the next frame. */
-  stopping?: boolean;
 }
 
 export interface PlayState {
@@ -115,12 +114,22 @@ export function initialEditorLive(): EditorLiveState {
   return { teach: initialTeachIn(), play: initialPlay() };
 }
 
-export function liveOf(state: AppState): EditorLiveState {
+/** The part of the app state this feature owns (src/ui/app-state.ts composes the parts). */
+export interface EditorLiveSlice {
+  editorLive?: EditorLiveState;
+}
+
+/** The live part and the connection it lives on: what tells whether teach-in is on. */
+export interface EditorLiveOnConnection extends EditorLiveSlice {
+  connection: ConnectionState;
+}
+
+export function liveOf(state: EditorLiveSlice): EditorLiveState {
   return state.editorLive ?? initialEditorLive();
 }
 
 export function patchTeachIn(
-  store: Store<AppState>,
+  store: Store<EditorLiveSlice>,
   p: Partial<TeachInState> | ((x: TeachInState) => Partial<TeachInState>),
 ): void {
   store.update((s) => {
@@ -132,7 +141,7 @@ export function patchTeachIn(
 }
 
 export function patchPlay(
-  store: Store<AppState>,
+  store: Store<EditorLiveSlice>,
   p: Partial<PlayState> | ((x: PlayState) => Partial<PlayState>),
 ): void {
   store.update((s) => {
@@ -145,7 +154,7 @@ export function patchPlay(
  * Teach-in is on while its phase says so and the robot is still in direct mode (leaving servo control in the
  * Servos view, running a motion or a lost link end it with the mode).
  */
-export function teachInOn(state: AppState): boolean {
+export function teachInOn(state: EditorLiveOnConnection): boolean {
   const phase = liveOf(state).teach.phase;
   return (
     state.connection.phase === "connected" &&
@@ -168,7 +177,7 @@ export function sceneNumber(scene: number): number {
  * read from hardware); undefined to show the scene. 16 positions by servo id, as the robot holds them (the
  * robot's own zeros, not converted to the motion's).
  */
-export function livePoseOf(state: AppState): readonly (number | undefined)[] | undefined {
+export function livePoseOf(state: EditorLiveOnConnection): readonly (number | undefined)[] | undefined {
   if (state.connection.phase !== "connected") return undefined;
   const live = state.editorLive;
   if (!live) return undefined;

@@ -49,11 +49,6 @@ export const editorMessages = defineMessages({
   "editor.tab.check": { en: "Check", ko: "검사" },
   "editor.tab.on": { en: "on", ko: "켜짐" },
   "editor.tab.playing": { en: "playing", ko: "재생 중" },
-  "editor.count.errors": { en: { one: "{count} error", other: "{count} errors" }, ko: "오류 {count}개" },
-  "editor.count.warnings": {
-    en: { one: "{count} warning", other: "{count} warnings" },
-    ko: "경고 {count}개",
-  },
 
   // ---- Toolbar -----------------------------------------------------------------------------------------
   "editor.toolbar.label": { en: "Motion file", ko: "모션 파일" },
@@ -783,7 +778,7 @@ export const editorMessages = defineMessages({
   },
   "editor.play.playing": { en: "Playing {scenes}", ko: "{scenes} 재생 중" },
   "editor.play.stopping": { en: "Stopping {scenes}", ko: "{scenes} 멈추는 중" },
-  "editor.play.elapsed": { en: "{elapsed} of {total}", ko: "{elapsed} / {total}" },
+  "editor.play.elapsed": { en: "{elapsed} of {total}", ko: "{total} 중 {elapsed}" },
   "editor.play.progressLabel": { en: "Tethered play", ko: "로봇에서 재생" },
   "editor.play.stop": { en: "Stop", ko: "정지" },
   "editor.play.run": { en: "Tethered play", ko: "로봇에서 재생" },
@@ -795,7 +790,6 @@ export const editorMessages = defineMessages({
     en: "Scenes {from}–{to}: {frames} frames, {time}.",
     ko: "장면 {from}–{to}: 프레임 {frames}개, {time}.",
   },
-  "editor.play.sceneOne": { en: "scene {scene}", ko: "장면 {scene}" },
   "editor.play.sceneMany": { en: "scenes {from}–{to}", ko: "장면 {from}–{to}" },
   "editor.play.question": {
     en: "The robot will move through {scenes} ({time}). Hold it or make sure it can stand.",
@@ -833,7 +827,6 @@ export const editorMessages = defineMessages({
     en: "the move to the first pose (step {step})",
     ko: "첫 자세로 가는 동작({step}단계)",
   },
-  "editor.play.whereScene": { en: "scene {scene}, frame {frame}", ko: "장면 {scene}, 프레임 {frame}" },
   "editor.play.played": {
     en: "Played {scenes} ({frames} frames, {time}); the servos hold the last frame.",
     ko: "{scenes}을(를) 재생했어요 (프레임 {frames}개, {time}). 서보는 마지막 프레임 자세를 유지해요.",

@@ -5,12 +5,13 @@
  */
 import type { KeysWithoutParams } from "../../../i18n/catalogue.ts";
 import type { Locale } from "../../../i18n/locale.ts";
+import { sceneFrameText, sceneText } from "../../../i18n/outcomes/motion/position-words.ts";
+import { inEveryLanguage, type Said, said, wordOf } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { formatSeconds } from "../../../i18n/units.ts";
 import type { Motion } from "../../../motion/index.ts";
 import { clampPosition, frameIntervalMs } from "../../../motion/index.ts";
 import { type Notice, noticeOf } from "../../app-state.ts";
-import { inEveryLanguage, type Said, said, wordOf } from "../../said.ts";
 import type { PlayChoice, PlayProgress } from "./live-state.ts";
 import { sceneNumber } from "./live-state.ts";
 import { editorMessages } from "./messages.ts";
@@ -54,7 +55,7 @@ export function playSpan(doc: Motion, from: number, to: number): { frames: numbe
 export function scenesText(from: number, to: number, locale: Locale = "en"): string {
   const t = translator(editorMessages, locale);
   return from === to
-    ? t("editor.play.sceneOne", { scene: String(sceneNumber(from)) })
+    ? sceneText(sceneNumber(from), locale)
     : t("editor.play.sceneMany", { from: String(sceneNumber(from)), to: String(sceneNumber(to)) });
 }
 
@@ -161,7 +162,7 @@ export function whereText(frame: { scene: number; frame: number }, locale: Local
   const t = translator(editorMessages, locale);
   return frame.scene < 0
     ? t("editor.play.whereFirstPose", { step: String(frame.frame) })
-    : t("editor.play.whereScene", { scene: String(sceneNumber(frame.scene)), frame: String(frame.frame) });
+    : sceneFrameText(sceneNumber(frame.scene), frame.frame, locale);
 }
 
 /** The one sentence of what the robot did, no more certain than it confirmed (kept as messages: see said.ts). */

@@ -1,12 +1,13 @@
 import "../../styles/editor-live.css";
 import { html, nothing, type TemplateResult } from "lit-html";
 import { live } from "lit-html/directives/live.js";
+import { jointName } from "../../../i18n/joint-names/joint-name.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { MotionError } from "../../../motion/index.ts";
 import { errorMessage } from "../../error-text.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
-import { jointName } from "../zeros/joints/joint-name.ts";
+import { isStopping, playingMotion } from "../connection/index.ts";
 import type { EditorHost } from "./host.ts";
 import { liveOf, type PlayChoice, type PlayRun, type PlayState, sceneNumber } from "./live-state.ts";
 import { type EditorTranslator, editorMessages } from "./messages.ts";
@@ -132,10 +133,12 @@ function progressBlock(
   const p = run.progress;
   const framesOf = (k: number): number => host.doc.scenes[k]?.frames ?? 0;
   const scenes = { scenes: scenesText(run.from, run.to, t.locale) };
+  // Stop is under way: tethered play ends after the frame on the wire.
+  const stopping = isStopping(ctx.state.connection);
   return html`
     <div class="progress-block" data-testid="play-progress">
       <p>
-        <strong>${run.stopping ? t("editor.play.stopping", scenes) : t("editor.play.playing", scenes)}</strong>
+        <strong>${stopping ? t("editor.play.stopping", scenes) : t("editor.play.playing", scenes)}</strong>
         <span class="num muted" data-testid="play-where">${progressText(p, run.from, run.to, framesOf, t.locale)}</span>
         ${
           p
@@ -154,7 +157,7 @@ function progressBlock(
           : html`<progress aria-label=${t("editor.play.progressLabel")}></progress>`
       }
       <div class="actions">
-        <button type="button" class="btn btn--danger" data-testid="play-stop" ?disabled=${run.stopping === true} @click=${() => stopPlay(ctx)}>
+        <button type="button" class="btn btn--danger" data-testid="play-stop" ?disabled=${stopping} @click=${() => stopPlay(ctx)}>
           ${t("editor.play.stop")}
         </button>
       </div>
@@ -193,7 +196,7 @@ export function playPanel(ctx: ViewContext, host: EditorHost): TemplateResult {
   const teachBusy = live_.teach.busy !== undefined;
   const running = p.running !== undefined;
   const off = !connected || running || p.confirming !== undefined;
-  const busy = ctx.state.running.length > 0 || teachBusy || ctx.state.connection.playing !== undefined;
+  const busy = ctx.state.running.length > 0 || teachBusy || playingMotion(ctx.state.connection) !== undefined;
   const count = host.doc.scenes.length;
   return html`
     <section class="card live-panel" aria-labelledby="play-title" data-testid="play-panel">

@@ -5,17 +5,17 @@
  */
 import { RbcCancelledError, RbcDisconnectedError, RbcNotConnectedError } from "../../../device/errors.ts";
 import { TetheredPlayError } from "../../../device/tethered-play.ts";
+import { errorSaid } from "../../../i18n/error-said.ts";
 import type { Locale } from "../../../i18n/locale.ts";
+import { said } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { type Motion, MotionError } from "../../../motion/index.ts";
 import { type Notice, noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { technicalDetail } from "../../error-text.ts";
-import { errorSaid } from "../../failure-notice.ts";
 import { focusSoon } from "../../focus.ts";
-import { said } from "../../said.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
-import { servosTaken, stopActivity } from "../connection/actions.ts";
+import { stopAll } from "../../stop-all.ts";
 import type { EditorHost } from "./host.ts";
 import { liveOf, type PlayChoice, type PlayProgress, patchPlay, patchTeachIn } from "./live-state.ts";
 import { editorMessages } from "./messages.ts";
@@ -183,8 +183,8 @@ export async function confirmPlay(ctx: AppContext, host: EditorHost): Promise<vo
   } finally {
     if (control.abort === abort) control.abort = undefined;
     if (last && session.current === client) {
-      // Every servo took a synchronised move: none is limp any more (teach-in's limp servos hold too).
-      servosTaken(ctx);
+      // Every servo took a synchronised move (the device's activity no longer says limp): teach-in's limp
+      // servos hold too.
       patchTeachIn(store, { passive: [] });
     }
   }
@@ -192,6 +192,5 @@ export async function confirmPlay(ctx: AppContext, host: EditorHost): Promise<vo
 
 /** The panel's Stop: the same as the top bar's (the robot holds the last frame; nothing goes limp). */
 export function stopPlay(ctx: AppContext): void {
-  patchPlay(ctx.store, (x) => (x.running ? { running: { ...x.running, stopping: true } } : {}));
-  void stopActivity(ctx);
+  void stopAll(ctx);
 }

@@ -1,3 +1,4 @@
+import { type Said, said } from "../../../i18n/said.ts";
 import {
   copyPose,
   joinScene,
@@ -8,7 +9,6 @@ import {
   setDuration,
 } from "../../../motion/index.ts";
 import type { AppContext } from "../../context.ts";
-import { type Said, said } from "../../said.ts";
 import { edit, selectedScene, whole } from "./actions.ts";
 import { editorNotice } from "./editor-notice.ts";
 import { type EditorKey, editorMessages } from "./messages.ts";

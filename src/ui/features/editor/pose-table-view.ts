@@ -1,10 +1,10 @@
 import { html, nothing, type TemplateResult } from "lit-html";
 import { live } from "lit-html/directives/live.js";
+import { jointName, sidesNote } from "../../../i18n/joint-names/joint-name.ts";
 import { translator } from "../../../i18n/translate.ts";
 import type { Motion, MotionScene, SceneRecord } from "../../../motion/index.ts";
 import { safeRange } from "../../../protocol/servo-limits.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
-import { jointName, sidesNote } from "../zeros/joints/joint-name.ts";
 import {
   choosePort,
   choosePoseColumns,

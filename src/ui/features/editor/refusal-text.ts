@@ -1,7 +1,7 @@
 import type { Locale } from "../../../i18n/locale.ts";
 import { type MotionRefusal, motionRefusalText } from "../../../i18n/outcomes/motion/motion-words.ts";
+import { inEveryLanguage, type LocalText, type Said, wordOf } from "../../../i18n/said.ts";
 import { MotionError, type MotionErrorCode } from "../../../motion/index.ts";
-import { inEveryLanguage, type LocalText, type Said, wordOf } from "../../said.ts";
 
 /**
  * A refused edit, kept as what it says and worded when drawn, so a refusal shown before a language switch

@@ -1,6 +1,6 @@
 import { saveMotion } from "../../../motion/index.ts";
 import type { AppContext } from "../../context.ts";
-import { saveRestampedCopy } from "../motions/restamp/restamp-save.ts";
+import { saveRestampedCopy } from "../motions/index.ts";
 import { saveFailedNotice } from "./document-actions.ts";
 import { motionFileName } from "./file-name.ts";
 import { docOf, editorOf, patchEditor } from "./state.ts";

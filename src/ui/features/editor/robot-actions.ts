@@ -10,10 +10,15 @@ import { translator } from "../../../i18n/translate.ts";
 import type { Motion } from "../../../motion/index.ts";
 import type { AppState } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
-import { motionsMessages } from "../motions/messages.ts";
-import { robotBusyReason, type UploadTarget } from "../motions/state.ts";
-import { requestUpload, startUpload } from "../motions/upload-actions.ts";
-import { pressRun } from "../motions/view-actions.ts";
+import { busyElsewhere, isPlaying } from "../connection/index.ts";
+import {
+  motionsMessages,
+  pressRun,
+  requestUpload,
+  robotBusyReason,
+  startUpload,
+  type UploadTarget,
+} from "../motions/index.ts";
 import { liveOf } from "./live-state.ts";
 import { editorMessages } from "./messages.ts";
 import { editorUploadTarget, isEditorTarget } from "./robot-model.ts";
@@ -51,7 +56,7 @@ export function runOnRobot(ctx: AppContext, number: number): void {
 export function robotRefusal(s: AppState): string | undefined {
   const busy = robotBusyReason(s);
   if (busy) return busy;
-  if (s.connection.busy) return translator(motionsMessages, s.locale)("motions.busy.motion");
+  if (busyElsewhere(s.connection)) return translator(motionsMessages, s.locale)("motions.busy.motion");
   if (s.connection.mode === "direct") return translator(editorMessages, s.locale)("editor.robot.direct");
   return undefined;
 }
@@ -59,8 +64,5 @@ export function robotRefusal(s: AppState): string | undefined {
 /** A motion is playing (started here, in the Motions view, or found busy): Stop belongs beside the refusal. */
 export function motionPlaying(s: AppState): boolean {
   const c = s.connection;
-  return (
-    c.phase === "connected" &&
-    (c.playing !== undefined || c.busy !== undefined || s.motions?.run !== undefined)
-  );
+  return c.phase === "connected" && (isPlaying(c) || s.motions?.run !== undefined);
 }

@@ -5,10 +5,9 @@
  * checks, confirmation, progress and result are the Motions view's (motions/upload-actions.ts).
  */
 
-import { remoteKeyWords } from "../../../device/shelf.ts";
+import { remoteKeyWords } from "../../../i18n/outcomes/remote-key.ts";
 import { asRbm, type Motion, saveMotion } from "../../../motion/index.ts";
-import { type BookEntry, motionNumberOf, type SlotBook } from "../motions/slot-book.ts";
-import type { UploadTarget } from "../motions/state.ts";
+import { type BookEntry, motionNumberOf, type SlotBook, type UploadTarget } from "../motions/index.ts";
 import { motionFileName } from "./file-name.ts";
 import type { RobotCopy } from "./live-state.ts";
 import type { EditorTranslator } from "./messages.ts";

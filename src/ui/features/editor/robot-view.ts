@@ -5,14 +5,18 @@ import type { Motion } from "../../../motion/index.ts";
 import { BASIC_POSTURE_MOTION } from "../../../protocol/catalog.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
-import { stopActivity } from "../connection/actions.ts";
-import { connectionMessages } from "../connection/messages.ts";
-import { type MotionsTranslator, motionsMessages } from "../motions/messages.ts";
-import { motionsOf } from "../motions/state.ts";
-import { uploadPayload } from "../motions/upload-actions.ts";
-import { motionMemoryStrip } from "../motions/views/memory-card.ts";
-import { confirmMove, runningPanel } from "../motions/views/run-section.ts";
-import { uploadInPlace } from "../motions/views/upload-in-place.ts";
+import { stopAll } from "../../stop-all.ts";
+import { connectionMessages } from "../connection/index.ts";
+import {
+  confirmMove,
+  type MotionsTranslator,
+  motionMemoryStrip,
+  motionsMessages,
+  motionsOf,
+  runningPanel,
+  uploadInPlace,
+  uploadPayload,
+} from "../motions/index.ts";
 import { editorController } from "./controller.ts";
 import { liveOf } from "./live-state.ts";
 import { type EditorTranslator, editorMessages } from "./messages.ts";
@@ -54,7 +58,7 @@ function busyLine(ctx: ViewContext, reason: string, showStop: boolean): Template
     <span>${reason}</span>
     ${
       showStop
-        ? html`<button type="button" class="btn btn--danger" data-testid="editor-robot-stop" aria-keyshortcuts="Escape" @click=${() => void stopActivity(ctx)}>
+        ? html`<button type="button" class="btn btn--danger" data-testid="editor-robot-stop" aria-keyshortcuts="Escape" @click=${() => void stopAll(ctx)}>
             ${stop}
           </button>`
         : nothing

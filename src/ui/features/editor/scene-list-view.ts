@@ -6,7 +6,7 @@ import type { Motion, MotionScene } from "../../../motion/index.ts";
 import { formatCount } from "../../format.ts";
 import { nameWithBreaks } from "../../shell/name-breaks.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
-import { formatSeconds } from "../motions/plot-data.ts";
+import { formatSeconds } from "../motions/index.ts";
 import { addSceneAfter, chooseScene, deleteSelected, duplicateSelected, moveSelected } from "./actions.ts";
 import { type EditorTranslator, editorMessages } from "./messages.ts";
 import type { EditorState } from "./state.ts";

@@ -5,6 +5,8 @@
  * next to the control it came from. What the state says (a refusal, an undo step's name, a notice) is kept as
  * data and worded when drawn, so it follows a language switch.
  */
+
+import { type Said, said } from "../../../i18n/said.ts";
 import {
   commit,
   createHistory,
@@ -14,8 +16,7 @@ import {
   redo,
   undo,
 } from "../../../motion/index.ts";
-import type { AppState, Notice } from "../../app-state.ts";
-import { type Said, said } from "../../said.ts";
+import type { Notice } from "../../notices.ts";
 import type { Store } from "../../store.ts";
 import type { BrokenDraft, DraftSummary } from "./drafts.ts";
 import { type EditorKey, editorMessages } from "./messages.ts";
@@ -98,12 +99,17 @@ export function initialEditor(): EditorState {
   return { scene: 0, problems: {}, detached: [] };
 }
 
-export function editorOf(s: AppState): EditorState {
+/** The part of the app state this feature owns (src/ui/app-state.ts composes the parts). */
+export interface EditorSlice {
+  editor?: EditorState;
+}
+
+export function editorOf(s: EditorSlice): EditorState {
   return s.editor ?? initialEditor();
 }
 
 export function patchEditor(
-  store: Store<AppState>,
+  store: Store<EditorSlice>,
   p: Partial<EditorState> | ((x: EditorState) => Partial<EditorState>),
 ): void {
   store.update((s) => {
@@ -236,23 +242,6 @@ export function selectScene(s: EditorState, k: number): EditorState {
   if (!doc) return s;
   const scene = clampScene(doc, k);
   return scene === s.scene ? s : { ...s, scene, problems: {} };
-}
-
-/** The tab list's keys (WAI-ARIA tabs, automatic activation): the next, previous, first or last tab. */
-export function editorTabAfterKey(current: EditorTab, key: string): EditorTab | undefined {
-  const i = EDITOR_TABS.findIndex((t) => t.id === current);
-  const n = EDITOR_TABS.length;
-  const to =
-    key === "ArrowRight"
-      ? (i + 1) % n
-      : key === "ArrowLeft"
-        ? (i - 1 + n) % n
-        : key === "Home"
-          ? 0
-          : key === "End"
-            ? n - 1
-            : undefined;
-  return to === undefined ? undefined : EDITOR_TABS[to]?.id;
 }
 
 /** Turns continuity off (or on again) at boundary `b` (between scene b−1 and scene b). */

@@ -1,9 +1,11 @@
 import { html, nothing, type TemplateResult } from "lit-html";
+import { errorCountText, warningCountText } from "../../../i18n/outcomes/rbm/check-summary.ts";
 import { translator } from "../../../i18n/translate.ts";
 import type { Motion } from "../../../motion/index.ts";
 import type { RbmValidation } from "../../../protocol/rbm-validate.ts";
 import { formatCount } from "../../format.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
+import { tabKeydown } from "../../tabs-keyboard.ts";
 import { editorHost, editorPanelId, editorTabId, showEditorTab } from "./actions.ts";
 import { issuesCard } from "./issues-view.ts";
 import { liveOf, teachInOn } from "./live-state.ts";
@@ -12,7 +14,7 @@ import { playPanel } from "./play-view.ts";
 import { poseCard } from "./pose-table-view.ts";
 import { robotCard } from "./robot-view.ts";
 import { sceneCard } from "./scene-view.ts";
-import { EDITOR_TABS, type EditorState, type EditorTab, editorTabAfterKey } from "./state.ts";
+import { EDITOR_TABS, type EditorState, type EditorTab } from "./state.ts";
 import { teachInPanel } from "./teach-in-view.ts";
 import { toolsCard } from "./tools-view.ts";
 
@@ -46,8 +48,8 @@ function tabMark(
       const warnings = check.warnings.length;
       if (errors + warnings === 0) return nothing;
       const spoken = [
-        errors > 0 ? t("editor.count.errors", { count: errors }) : "",
-        warnings > 0 ? t("editor.count.warnings", { count: warnings }) : "",
+        errors > 0 ? errorCountText(errors, t.locale) : "",
+        warnings > 0 ? warningCountText(warnings, t.locale) : "",
       ]
         .filter((x) => x !== "")
         .join(", ");
@@ -72,12 +74,7 @@ function tabList(ctx: ViewContext, current: EditorTab, check: RbmValidation): Te
           aria-controls=${t.id === current ? editorPanelId(t.id) : nothing}
           tabindex=${t.id === current ? "0" : "-1"}
           @click=${() => showEditorTab(ctx, t.id)}
-          @keydown=${(e: KeyboardEvent) => {
-            const next = editorTabAfterKey(t.id, e.key);
-            if (next === undefined) return;
-            e.preventDefault();
-            showEditorTab(ctx, next, true);
-          }}
+          @keydown=${tabKeydown(EDITOR_TABS, t.id, (next) => showEditorTab(ctx, next, true))}
         >
           ${words(t.key)}${tabMark(ctx, words, t.id, check)}
         </button>`,

@@ -3,14 +3,14 @@
  * reads, torque on); "End teach-in" holds first, then leaves direct mode.
  */
 import { RbcCancelledError, RbcTimeoutError } from "../../../device/errors.ts";
+import { said } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { HUNO_SERVO_IDS } from "../../../protocol/servo-limits.ts";
 import { noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { errorNotice } from "../../error-text.ts";
-import { said } from "../../said.ts";
-import { servosTaken } from "../connection/actions.ts";
-import { clampToSafe, DEFAULT_TORQUE } from "../servos/state.ts";
+import { isLimp } from "../connection/index.ts";
+import { clampToSafe, DEFAULT_TORQUE } from "../servos/index.ts";
 import { liveOf, patchTeachIn, teachInOn } from "./live-state.ts";
 import { editorMessages } from "./messages.ts";
 import { TEACH_IN_WATCH } from "./teach-in.ts";
@@ -23,7 +23,7 @@ import { type HeldServo, holdNotice } from "./teach-in-model.ts";
 async function holdLimp(ctx: AppContext): Promise<{ held: HeldServo[]; silent: number[]; stopped: boolean }> {
   const { store, session } = ctx;
   const state = store.get();
-  const ids = state.connection.limp ? [...HUNO_SERVO_IDS] : [...liveOf(state).teach.passive];
+  const ids = isLimp(state.connection) ? [...HUNO_SERVO_IDS] : [...liveOf(state).teach.passive];
   const held: HeldServo[] = [];
   const silent: number[] = [];
   let stopped = false;
@@ -49,7 +49,6 @@ async function holdLimp(ctx: AppContext): Promise<{ held: HeldServo[]; silent: n
     if (!(e instanceof RbcCancelledError)) throw e;
     stopped = true;
   } finally {
-    if (held.length > 0) servosTaken(ctx);
     const heldIds = new Set(held.map((h) => h.id));
     patchTeachIn(store, (t) => ({ passive: t.passive.filter((id) => !heldIds.has(id)) }));
   }

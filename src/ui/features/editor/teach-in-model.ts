@@ -5,12 +5,12 @@
  */
 import type { KeysWithoutParams } from "../../../i18n/catalogue.ts";
 import type { Locale } from "../../../i18n/locale.ts";
+import { inEveryLanguage, type LocalText, type Said, said } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
 import type { Motion } from "../../../motion/index.ts";
 import { PLATFORM_PF2 } from "../../../motion/index.ts";
 import { HUNO_SERVO_IDS } from "../../../protocol/servo-limits.ts";
 import { type Notice, noticeOf } from "../../app-state.ts";
-import { inEveryLanguage, type LocalText, type Said, said } from "../../said.ts";
 import type { Limb } from "./live-state.ts";
 import { sceneNumber } from "./live-state.ts";
 import { type EditorKey, type EditorTranslator, editorMessages } from "./messages.ts";

@@ -1,12 +1,13 @@
 import "../../styles/editor-live.css";
 import { html, nothing, type TemplateResult } from "lit-html";
 import { live } from "lit-html/directives/live.js";
+import { jointName, sidesNote } from "../../../i18n/joint-names/joint-name.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { HUNO_SERVO_IDS } from "../../../protocol/servo-limits.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
-import { servoRange } from "../servos/state.ts";
-import { jointName, sidesNote } from "../zeros/joints/joint-name.ts";
+import { isLimp } from "../connection/index.ts";
+import { servoRange } from "../servos/index.ts";
 import type { EditorHost } from "./host.ts";
 import { liveOf, sceneNumber, type TeachInState, teachInOn } from "./live-state.ts";
 import { type EditorTranslator, editorMessages } from "./messages.ts";
@@ -43,7 +44,7 @@ export function escapeTo(cancel: () => void): (e: KeyboardEvent) => void {
  * no servo hold: servos made limp earlier stay limp (all of them after Limp; those this teach-in knows of).
  */
 function questionDetail(ctx: ViewContext, w: EditorTranslator, t: TeachInState): string {
-  if (ctx.state.connection.limp) {
+  if (isLimp(ctx.state.connection)) {
     return w(
       ctx.state.connection.mode === "direct"
         ? "editor.teach.questionDetailLimp"
@@ -197,7 +198,7 @@ function onBlock(
 ): TemplateResult {
   const chosen = chosenIds(t.limbs);
   const demo = ctx.session.demoSim !== undefined;
-  const limp = ctx.state.connection.limp === true;
+  const limp = isLimp(ctx.state.connection);
   const anyLimp = limp || t.passive.length > 0;
   return html`
     <p class="muted small" data-testid="teach-in-status">

@@ -4,6 +4,8 @@
  * chosen servos is ever made passive; Stop (top bar) cancels what is queued and never makes a servo passive.
  */
 import { RbcCancelledError, RbcTimeoutError } from "../../../device/errors.ts";
+import { errorSaid } from "../../../i18n/error-said.ts";
+import { said } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { MotionError, PLATFORM_PF2, setPose } from "../../../motion/index.ts";
 import { HUNO_SERVO_IDS } from "../../../protocol/servo-limits.ts";
@@ -11,10 +13,9 @@ import type { SimulatedRbc } from "../../../sim/simulated-rbc.ts";
 import { noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { errorNotice, technicalDetail } from "../../error-text.ts";
-import { errorSaid } from "../../failure-notice.ts";
 import { focusSoon } from "../../focus.ts";
-import { said } from "../../said.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
+import { isLimp } from "../connection/index.ts";
 import type { EditorHost } from "./host.ts";
 import { type Limb, liveOf, patchTeachIn, sceneNumber, teachInOn } from "./live-state.ts";
 import { type EditorTranslator, editorMessages } from "./messages.ts";
@@ -88,7 +89,7 @@ export async function startTeachIn(ctx: AppContext): Promise<void> {
   let robotZeros = liveOf(state).teach.robotZeros ?? state.zeros.stored;
   // The zeros are read in packet mode. Leaving servo control to read them changes nothing on the servos, but
   // after Limp the panel would no longer know that every servo is limp: then the positions are stored as read.
-  const readZeros = robotZeros === undefined && !(client.mode === "direct" && state.connection.limp === true);
+  const readZeros = robotZeros === undefined && !(client.mode === "direct" && isLimp(state.connection));
   try {
     await session.run(
       said(editorMessages, "editor.teach.run.start"),
@@ -117,7 +118,7 @@ export async function startTeachIn(ctx: AppContext): Promise<void> {
     });
     return;
   }
-  const limp = store.get().connection.limp === true;
+  const limp = isLimp(store.get().connection);
   patchTeachIn(store, {
     phase: "on",
     robotZeros,

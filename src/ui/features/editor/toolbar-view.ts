@@ -1,11 +1,10 @@
 import { html, nothing, type TemplateResult } from "lit-html";
+import { wordOf } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { canRedo, canUndo, type Motion, redoLabel, undoLabel } from "../../../motion/index.ts";
-import { wordOf } from "../../said.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
-import { formatSeconds } from "../motions/plot-data.ts";
-import { restampOffer } from "../motions/restamp/restamp-offer.ts";
+import { formatSeconds, restampOffer } from "../motions/index.ts";
 import { redoNext, typeMotionName, undoLast } from "./actions.ts";
 import { newDocument, openDocumentFile, saveDocument, setEditorDragging } from "./document-actions.ts";
 import { motionFileName } from "./file-name.ts";

@@ -8,14 +8,18 @@ import {
   updateFirmware,
 } from "../../../device/firmware-update.ts";
 import type { Locale } from "../../../i18n/locale.ts";
-import { firmwareFailureText, firmwareResultText } from "../../../i18n/outcomes/firmware/firmware-words.ts";
+import {
+  firmwareFailureText,
+  firmwareRestartedText,
+  firmwareResultText,
+} from "../../../i18n/outcomes/firmware/firmware-words.ts";
+import { type Said, said, saidBy } from "../../../i18n/said.ts";
 import { declaredVersion } from "../../../protocol/firmware-marker.ts";
 import { MAX_HEX_TEXT_CHARS, parseIntelHex } from "../../../protocol/intel-hex.ts";
 import { type Notice, noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { errorNotice, technicalDetail } from "../../error-text.ts";
 import { focusSoon } from "../../focus.ts";
-import { inEveryLanguage, type Said, said, saidText } from "../../said.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
 import { choosePort, webSerial } from "../../serial-ports.ts";
 import { hexProblem, tooLargeProblem } from "./file-problem.ts";
@@ -224,7 +228,7 @@ export async function startFlash(ctx: AppContext): Promise<void> {
         },
       }),
     );
-    finish(ctx, [resultSaid(result, before), said(firmwareMessages, "firmware.restarted")], result);
+    finish(ctx, [resultSaid(result, before), saidBy(firmwareRestartedText)], result);
   } catch (e) {
     patchFirmware(store, {
       run: undefined,
@@ -241,7 +245,7 @@ export async function startFlash(ctx: AppContext): Promise<void> {
 
 /** What the update did (the outcome catalogue's words), as a message worded when drawn. */
 function resultSaid(result: FirmwareUpdateResult, before: Parameters<typeof firmwareResultText>[1]): Said {
-  return saidText(inEveryLanguage((l) => firmwareResultText(result, before, l)));
+  return saidBy((l) => firmwareResultText(result, before, l));
 }
 
 /** The update succeeded: `sentences` say so (worded when drawn, so a language switch rewords them). */
@@ -333,7 +337,7 @@ function failureNotice(e: unknown, locale: Locale): Notice {
   if (!(e instanceof FirmwareUpdateError))
     return errorNotice(said(firmwareMessages, "firmware.failed"), e, locale);
   const tone = e.holds === "previous-firmware" ? "warning" : "danger";
-  const what = saidText(inEveryLanguage((l) => firmwareFailureText(e, l)));
+  const what = saidBy((l) => firmwareFailureText(e, l));
   const sentences = e.failure === "cancelled" ? [what] : [said(firmwareMessages, "firmware.failed"), what];
   return noticeOf(tone, locale, sentences, technicalDetail(e));
 }

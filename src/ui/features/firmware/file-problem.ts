@@ -1,10 +1,10 @@
 import type { Locale } from "../../../i18n/locale.ts";
 import { hexProblemText } from "../../../i18n/outcomes/firmware/firmware-words.ts";
+import { inEveryLanguage, said } from "../../../i18n/said.ts";
 import { IntelHexError } from "../../../protocol/intel-hex.ts";
 import { type Notice, noticeOf } from "../../app-state.ts";
 import { technicalDetail } from "../../error-text.ts";
 import { formatKilobytes } from "../../format.ts";
-import { inEveryLanguage, said } from "../../said.ts";
 import { firmwareMessages } from "./messages.ts";
 
 /**

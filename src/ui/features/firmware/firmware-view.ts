@@ -1,3 +1,4 @@
+import { demoFirmwareParts } from "../../../i18n/outcomes/robot-facts.ts";
 import "../../styles/tools.css";
 import "../../styles/firmware.css";
 import { html, nothing, type TemplateResult } from "lit-html";
@@ -248,7 +249,7 @@ function updateSection(ctx: ViewContext, t: FirmwareTranslator): TemplateResult 
     <section class="card fw-update" aria-labelledby="fw-update-title">
       <h2 id="fw-update-title" class="card-title">${t("firmware.updateTitle")}</h2>
       <p data-testid="fw-current">
-        ${isDemo(s) ? t.parts("firmware.currentDemo", { version }) : t.parts("firmware.current", { version })}
+        ${isDemo(s) ? demoFirmwareParts(version, t.locale) : t.parts("firmware.current", { version })}
       </p>
       ${noticeBlock(t)}
       ${runOrStart(ctx, t, false)}

@@ -150,10 +150,6 @@ export const firmwareMessages = defineMessages({
 
   // Update and Recover
   "firmware.updateTitle": { en: "Update the robot", ko: "로봇 업데이트" },
-  "firmware.currentDemo": {
-    en: "The demo robot reports firmware {version}.",
-    ko: "데모 로봇이 알려 준 펌웨어 버전: {version}",
-  },
   "firmware.current": {
     en: "The robot reports firmware {version}.",
     ko: "로봇이 알려 준 펌웨어 버전: {version}",
@@ -188,10 +184,6 @@ export const firmwareMessages = defineMessages({
   "firmware.noPortChosen": {
     en: "No port was chosen; nothing was sent.",
     ko: "포트를 고르지 않아서 아무것도 보내지 않았어요.",
-  },
-  "firmware.restarted": {
-    en: "The robot was restarted: run Basic posture before other motions.",
-    ko: "로봇이 다시 시작했어요. 다른 모션을 실행하기 전에 기본 자세를 실행해 주세요.",
   },
   "firmware.connectNow": { en: "Connect the robot as usual now.", ko: "이제 평소처럼 로봇을 연결해 주세요." },
   "firmware.failed": { en: "Firmware update failed.", ko: "펌웨어 업데이트에 실패했어요." },

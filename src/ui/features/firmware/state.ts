@@ -1,6 +1,6 @@
 import type { FirmwareUpdateProgress } from "../../../device/firmware-update.ts";
 import type { IntelHexImage } from "../../../protocol/intel-hex.ts";
-import type { AppState, Notice } from "../../app-state.ts";
+import type { Notice } from "../../notices.ts";
 import type { Store } from "../../store.ts";
 
 /**
@@ -68,10 +68,15 @@ export function initialFirmware(): FirmwareState {
   return {};
 }
 
-export function firmwareOf(state: AppState): FirmwareState {
+/** The part of the app state this feature owns (src/ui/app-state.ts composes the parts). */
+export interface FirmwareSlice {
+  firmware?: FirmwareState;
+}
+
+export function firmwareOf(state: FirmwareSlice): FirmwareState {
   return state.firmware ?? initialFirmware();
 }
 
-export function patchFirmware(store: Store<AppState>, patch: Partial<FirmwareState>): void {
+export function patchFirmware(store: Store<FirmwareSlice>, patch: Partial<FirmwareState>): void {
   store.update((s) => ({ firmware: { ...firmwareOf(s), ...patch } }));
 }

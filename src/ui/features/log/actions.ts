@@ -1,9 +1,9 @@
+import { said } from "../../../i18n/said.ts";
 import { formatLocalDate } from "../../../shared/format.ts";
 import { type Notice, noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { downloadTextFile } from "../../download-file.ts";
 import { errorNotice } from "../../error-text.ts";
-import { said } from "../../said.ts";
 import { logMessages } from "./messages.ts";
 import { LOG_CAPACITY, logAsText, PacketLog } from "./packet-log.ts";
 import type { LogViewState } from "./state.ts";

@@ -1,4 +1,4 @@
-import type { Notice } from "../../app-state.ts";
+import type { Notice } from "../../notices.ts";
 
 /** The Log view's part of the app state (the log itself is the PacketLog ring). Kept across connections. */
 export interface LogViewState {

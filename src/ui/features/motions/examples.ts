@@ -1,7 +1,7 @@
+import { said } from "../../../i18n/said.ts";
 import { noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { errorNotice } from "../../error-text.ts";
-import { said } from "../../said.ts";
 import { addMotionTexts } from "./files.ts";
 import { type MotionsKey, motionsMessages } from "./messages.ts";
 import { patchMotionFiles } from "./state.ts";

@@ -1,4 +1,5 @@
 import type { Locale } from "../../../i18n/locale.ts";
+import { said } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { memoryFootprint } from "../../../protocol/catalog.ts";
 import { motionImage } from "../../../protocol/motion-image.ts";
@@ -6,7 +7,6 @@ import { motionDurationMs, RbmError, readRbm } from "../../../protocol/rbm.ts";
 import { type RbmValidation, validateRbm } from "../../../protocol/rbm-validate.ts";
 import { type AppState, noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
-import { said } from "../../said.ts";
 import type { Store } from "../../store.ts";
 import { FILE_CHECKS } from "./controllers.ts";
 import { motionsMessages } from "./messages.ts";
@@ -145,10 +145,6 @@ export function removeMotionFile(ctx: AppContext, id: number): void {
     selected: files.selected === id ? entries[0]?.id : files.selected,
     notice: undefined,
   });
-}
-
-export function selectMotionFile(ctx: AppContext, id: number): void {
-  patchMotionFiles(ctx.store, { selected: id });
 }
 
 export function setDragging(ctx: AppContext, dragging: boolean): void {

@@ -40,13 +40,6 @@ export function weightWord(weight: Weight, locale: Locale): string {
   return translator(motionsMessages, locale)(WEIGHT_KEYS[weight]);
 }
 
-/** The weights in English, for views not yet translated (use `weightWord` with the panel's language). */
-export const WEIGHT_WORDS: Readonly<Record<Weight, string>> = {
-  serious: weightWord("serious", "en"),
-  check: weightWord("check", "en"),
-  minor: weightWord("minor", "en"),
-};
-
 /** The largest jump (position steps) among scene-jump warnings, from the motion itself; undefined if unknown. */
 export function largestJump(motion: RbmMotion | undefined, issues: readonly RbmIssue[]): number | undefined {
   if (!motion) return undefined;

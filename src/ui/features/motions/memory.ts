@@ -1,7 +1,7 @@
 import { ACTION_AREA_BYTES, MOTION_AREA_BYTES } from "../../../protocol/catalog.ts";
 import type { AppContext } from "../../context.ts";
-import { refreshDeviceInfo } from "../robot/actions.ts";
-import { loadShelf } from "../shelf/shelf-actions.ts";
+import { refreshDeviceInfo } from "../robot/index.ts";
+import { watchShelf } from "./shelf-watch.ts";
 import { observeFreeMemory } from "./slot-book.ts";
 import { type MotionsState, motionsOf, patchMotions } from "./state.ts";
 
@@ -29,7 +29,7 @@ export function syncBooksWithMemory(ctx: AppContext): void {
  */
 export async function showMemory(ctx: AppContext): Promise<void> {
   const { store } = ctx;
-  void loadShelf(ctx);
+  void watchShelf(ctx);
   if (store.get().device.loading) {
     // The device card is reading the memory right now: use its figures when they arrive.
     const stop = store.subscribe((s) => {

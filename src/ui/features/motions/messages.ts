@@ -55,17 +55,7 @@ export const motionsMessages = defineMessages({
   "motions.files.atServo": { en: "servo {servo}: {message}", ko: "서보 {servo}: {message}" },
   "motions.files.showWhere": { en: "Show where", ko: "위치 보기" },
   "motions.files.showAll": { en: "Show all {issues}", ko: "{issues}개 모두 보기" },
-  "motions.files.checkedClean": {
-    en: "Checked: no errors, no warnings.",
-    ko: "확인함: 오류 없음, 경고 없음.",
-  },
-  "motions.files.errorCount": { en: { one: "{count} error", other: "{count} errors" }, ko: "오류 {count}개" },
-  "motions.files.warningCount": {
-    en: { one: "{count} warning", other: "{count} warnings" },
-    ko: "경고 {count}개",
-  },
   "motions.files.kindCount": { en: { one: "{count} kind", other: "{count} kinds" }, ko: "{count}종류" },
-  "motions.files.checked": { en: "Checked: {errors}, {warnings}.", ko: "확인함: {errors}, {warnings}." },
   "motions.files.checkedSerious": {
     en: "Checked: {errors}, {warnings} of {kinds}, {serious} serious.",
     ko: "확인함: {errors}, {warnings} ({kinds}, 심각 {serious}개).",
@@ -256,7 +246,7 @@ export const motionsMessages = defineMessages({
     ko: "번호 알 수 없음 (로봇에 다른 다운로드가 있었음)",
   },
   "motions.upload.rateUnknown": { en: "— bytes/s", ko: "— 바이트/초" },
-  "motions.upload.rate": { en: "{rate} bytes/s", ko: "{rate}바이트/초" },
+  "motions.upload.rate": { en: "{rate} bytes/s", ko: "초당 {rate}바이트" },
   "motions.upload.estimating": { en: "time left: estimating…", ko: "남은 시간: 계산 중…" },
   "motions.upload.underSecond": { en: "less than 1 s left", ko: "1초도 안 남음" },
   "motions.upload.aboutSeconds": { en: "about {seconds} s left", ko: "약 {seconds}초 남음" },
@@ -370,7 +360,6 @@ export const motionsMessages = defineMessages({
     en: "not read (the robot did not answer)",
     ko: "읽지 못함 (로봇이 응답하지 않음)",
   },
-  "motions.upload.noError": { en: "no error", ko: "오류 없음" },
   "motions.upload.errorCode": { en: "{text} (code {code})", ko: "{text} (코드 {code})" },
   "motions.upload.resetForgotMotion": {
     en: "The motion memory had been reset first, so the robot's earlier downloaded motions are forgotten.",

@@ -5,10 +5,11 @@ import { html, nothing, type TemplateResult } from "lit-html";
 import { translator } from "../../../i18n/translate.ts";
 import { hrefFor } from "../../router.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
+import { tabKeydown } from "../../tabs-keyboard.ts";
 import { showMemory } from "./memory.ts";
 import { type MotionsTranslator, motionsMessages } from "./messages.ts";
 import { type MotionsTab, motionFilesOf } from "./state.ts";
-import { MOTIONS_TABS, panelId, showMotionsTab, tabAfterKey, tabId } from "./view-actions.ts";
+import { MOTIONS_TABS, panelId, showMotionsTab, tabId } from "./view-actions.ts";
 import { fileSection } from "./views/files-section.ts";
 import { memoryCard } from "./views/memory-card.ts";
 import { runSection, soundSection } from "./views/run-section.ts";
@@ -33,12 +34,7 @@ function tabList(ctx: ViewContext, tr: MotionsTranslator, current: MotionsTab): 
           aria-controls=${t.id === current ? panelId(t.id) : nothing}
           tabindex=${t.id === current ? "0" : "-1"}
           @click=${() => showMotionsTab(ctx, t.id)}
-          @keydown=${(e: KeyboardEvent) => {
-            const next = tabAfterKey(t.id, e.key);
-            if (next === undefined) return;
-            e.preventDefault();
-            showMotionsTab(ctx, next, true);
-          }}
+          @keydown=${tabKeydown(MOTIONS_TABS, t.id, (next) => showMotionsTab(ctx, next, true))}
         >
           ${tr(t.label)}
         </button>`,

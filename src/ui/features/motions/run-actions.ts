@@ -1,8 +1,10 @@
 import { RbcError } from "../../../device/errors.ts";
 import { isHazardousMotion } from "../../../device/run-outcome.ts";
+import { errorSaid } from "../../../i18n/error-said.ts";
 import type { Locale } from "../../../i18n/locale.ts";
 import { builtInMotionName } from "../../../i18n/motion-names/built-in-motion-name.ts";
 import { soundOutcomeMessages } from "../../../i18n/outcomes/sound-messages.ts";
+import { inEveryLanguage, type LocalText, said } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
 import {
   BASIC_POSTURE_MOTION,
@@ -13,10 +15,9 @@ import {
 } from "../../../protocol/catalog.ts";
 import { type AppState, type Notice, noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
-import { errorNotice, errorSaid, technicalDetail } from "../../error-text.ts";
+import { errorNotice, technicalDetail } from "../../error-text.ts";
 import { focusSoon } from "../../focus.ts";
-import { inEveryLanguage, type LocalText, said } from "../../said.ts";
-import { remoteKeyWords } from "../shelf/shelf-words.ts";
+import { remoteKeyWords } from "../shelf/index.ts";
 import { type MotionRun, motionsController } from "./controllers.ts";
 import { motionsMessages } from "./messages.ts";
 import { formatSeconds } from "./plot-data.ts";
@@ -61,7 +62,7 @@ export function isBuiltIn(number: number): boolean {
 export function downloadedOffers(s: AppState): OfferedMotion[] {
   const m = motionsOf(s);
   const byNumber = new Map<number, OfferedMotion>();
-  const shelf = m.shelf;
+  const shelf = s.shelf;
   for (const r of shelf?.slots ?? []) {
     byNumber.set(r.motionNumber, {
       number: r.motionNumber,
@@ -227,7 +228,6 @@ export async function stopMotion(ctx: AppContext): Promise<void> {
   run.stopRequested = true;
   const then = store.get();
   const { locale } = then;
-  patchMotions(store, { run: { ...shown, stopping: true } });
   try {
     await session.run(said(motionsMessages, "motions.run.stopTask"), (client) => client.stopMotion());
     patchMotions(store, {

@@ -1,9 +1,10 @@
+import type { Locale } from "../../../i18n/locale.ts";
 import { translator } from "../../../i18n/translate.ts";
 import type { RbmMotion } from "../../../protocol/rbm.ts";
 import type { RbmIssue } from "../../../protocol/rbm-validate.ts";
-import { type AppState, type Notice, runningWords } from "../../app-state.ts";
+import { type Notice, type RunningLabel, runningWords } from "../../notices.ts";
 import type { Store } from "../../store.ts";
-import type { ShelfState } from "../shelf/state.ts";
+import { type ConnectionState, isPlaying, playingSound } from "../connection/index.ts";
 import { motionsMessages } from "./messages.ts";
 import { emptyBook, type SlotBook } from "./slot-book.ts";
 import type { ProgressSample } from "./upload-rate.ts";
@@ -92,8 +93,6 @@ export interface RunningMotion {
   expectedMs?: number;
   /** Robot-clock ms (the session's clock) when it was sent. */
   startedAt: number;
-  /** "Stop motion" was pressed: 7 was sent and the robot finishes the current scene. */
-  stopping?: boolean;
 }
 
 export interface MotionsState {
@@ -110,10 +109,6 @@ export interface MotionsState {
   resultFor?: UploadTarget;
   motionBook: SlotBook;
   actionBook: SlotBook;
-  /** "Reset the demo robot" connected it again as new: what became of it. */
-  demoReset?: Notice;
-  /** The robot's shelf: what this browser recorded uploading to this robot (issue 23 item 2). */
-  shelf?: ShelfState;
   run?: RunningMotion;
   /** A motion waiting for the once-per-connection "the robot will move" confirmation. */
   confirmMove?: number;
@@ -125,16 +120,29 @@ export interface MotionsState {
   robot3dShown?: boolean;
 }
 
-export function motionFilesOf(s: AppState): MotionFilesState {
+/** The part of the app state this feature owns (src/ui/app-state.ts composes the parts). */
+export interface MotionsSlice {
+  motionFiles?: MotionFilesState;
+  motions?: MotionsState;
+}
+
+/** What tells whether the robot can take a run, a sound or an upload now (`robotBusyReason`). */
+export interface RobotBusyFacts extends MotionsSlice {
+  locale: Locale;
+  connection: ConnectionState;
+  running: readonly RunningLabel[];
+}
+
+export function motionFilesOf(s: MotionsSlice): MotionFilesState {
   return s.motionFiles ?? { entries: [], nextId: 1 };
 }
 
-export function patchMotionFiles(store: Store<AppState>, patch: Partial<MotionFilesState>): void {
+export function patchMotionFiles(store: Store<MotionsSlice>, patch: Partial<MotionFilesState>): void {
   store.update((s) => ({ motionFiles: { ...motionFilesOf(s), ...patch } }));
 }
 
 /** The Motions view's state of this connection, created on first use. */
-export function motionsOf(s: AppState): MotionsState {
+export function motionsOf(s: MotionsSlice): MotionsState {
   return (
     s.motions ?? {
       resetMotionFirst: false,
@@ -146,7 +154,7 @@ export function motionsOf(s: AppState): MotionsState {
 }
 
 export function patchMotions(
-  store: Store<AppState>,
+  store: Store<MotionsSlice>,
   patch: Partial<MotionsState> | ((m: MotionsState) => Partial<MotionsState>),
 ): void {
   store.update((s) => {
@@ -158,18 +166,19 @@ export function patchMotions(
 /**
  * Why robot actions (run, sound, upload) cannot start now, in words (the panel's language), or undefined when
  * they can. The RBC drops every request while a sound plays, and every request but 7 while a motion plays
- * (started here or elsewhere: the busy probe's `connection.busy`).
+ * (started here or elsewhere: the busy probe's, `busyElsewhere`).
  */
-export function robotBusyReason(s: AppState): string | undefined {
+export function robotBusyReason(s: RobotBusyFacts): string | undefined {
   const t = translator(motionsMessages, s.locale);
   const c = s.connection;
   if (c.phase !== "connected") return t("motions.busy.connect");
   const m = s.motions;
-  if (c.sounding) return t("motions.busy.sound", { sound: c.sounding.sound });
+  const sound = playingSound(c);
+  if (sound) return t("motions.busy.sound", { sound: sound.sound });
   if (m?.upload) return t("motions.busy.upload");
   // A motion started elsewhere (the remote, the PF buttons) that the busy probe found playing counts too
   // (docs/protocol.md §3.6: until it ends the robot drops every request but 7).
-  if (c.playing || m?.run || c.busy) return t("motions.busy.motion");
+  if (isPlaying(c) || m?.run) return t("motions.busy.motion");
   if (s.running.length > 0)
     return t("motions.busy.other", { tasks: runningWords(s.running, s.locale).join(", ") });
   return undefined;

@@ -1,6 +1,7 @@
 import type { AppState } from "../../app-state.ts";
 import type { Controller } from "../../scope.ts";
 import type { Store } from "../../store.ts";
+import { playingMotion, playingSound } from "../connection/index.ts";
 
 /** While something time-based runs (a motion, a sound), redraw 5 times a second. */
 
@@ -9,8 +10,8 @@ const PERIOD_MS = 200;
 export function timedWorkRunning(s: AppState): boolean {
   return (
     s.connection.phase === "connected" &&
-    (s.connection.playing !== undefined ||
-      s.connection.sounding !== undefined ||
+    (playingMotion(s.connection) !== undefined ||
+      playingSound(s.connection) !== undefined ||
       s.motions?.run !== undefined)
   );
 }

@@ -5,18 +5,17 @@ import {
   RbcUploadError,
 } from "../../../device/errors.ts";
 import type { UploadResult } from "../../../device/types.ts";
-import type { Locale } from "../../../i18n/locale.ts";
+import { errorSaid } from "../../../i18n/error-said.ts";
 import { uploadNoticeText } from "../../../i18n/outcomes/device.ts";
 import { robotErrorText } from "../../../i18n/outcomes/robot-error.ts";
 import { uploadCancelledEarlyText } from "../../../i18n/outcomes/upload-words.ts";
+import { inEveryLanguage, type Said, said, saidBy } from "../../../i18n/said.ts";
 import { ACTION_AREA_BYTES, MOTION_AREA_BYTES, NO_ERROR } from "../../../protocol/catalog.ts";
 import type { RbmMotion } from "../../../protocol/rbm.ts";
 import { type Notice, noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
-import { errorSaid, technicalDetail } from "../../error-text.ts";
-import { inEveryLanguage, type Said, said, saidText } from "../../said.ts";
-import { recordShelf } from "../shelf/shelf-actions.ts";
-import { storedSentence } from "../shelf/shelf-words.ts";
+import { technicalDetail } from "../../error-text.ts";
+import { recordShelf, storedSentence } from "../shelf/index.ts";
 import { motionsMessages } from "./messages.ts";
 import { formatSeconds } from "./plot-data.ts";
 import {
@@ -52,15 +51,12 @@ export interface Payload {
 /** The error code the robot reported after an upload, as a message. */
 function errorCodeSaid(code: number | undefined): Said {
   if (code === undefined) return said(motionsMessages, "motions.upload.errorNotRead");
-  if (code === NO_ERROR) return said(motionsMessages, "motions.upload.noError");
+  if (code === NO_ERROR) return saidBy((l) => robotErrorText(code, l));
   return said(motionsMessages, "motions.upload.errorCode", {
     text: inEveryLanguage((locale) => robotErrorText(code, locale)),
     code: String(code),
   });
 }
-
-/** A sentence worded elsewhere in each language (by a function of the locale), as a message. */
-const wordedBy = (make: (locale: Locale) => string): Said => saidText(inEveryLanguage(make));
 
 /**
  * A completed upload: its slot (known when the robot's memory was empty or reset before it, docs/protocol.md
@@ -108,7 +104,7 @@ export async function uploadSucceeded(
         ? [said(motionsMessages, "motions.upload.isAction", { slot: entry.slot })]
         : []
       : number !== undefined
-        ? [wordedBy((l) => storedSentence(number, l))]
+        ? [saidBy((l) => storedSentence(number, l))]
         : [said(motionsMessages, "motions.upload.numberUnknown")];
   const free =
     result.freeAfter === undefined
@@ -134,7 +130,7 @@ export async function uploadSucceeded(
     free,
     said(motionsMessages, "motions.upload.errorAfter", { words: errorCodeSaid(result.errorCode) }),
   ];
-  if (real && area === "motion") sentences.push(wordedBy((l) => uploadNoticeText("holdAdvice", l)));
+  if (real && area === "motion") sentences.push(saidBy((l) => uploadNoticeText("holdAdvice", l)));
   const notice: Notice = noticeOf(result.errorCode === NO_ERROR ? "ok" : "warning", locale, sentences);
   store.update((s) => ({
     device: {
@@ -174,7 +170,7 @@ export async function uploadSucceeded(
  */
 export function cancelledEarlySaid(e: RbcCancelledError): Said {
   const byStop = e.by === "stop";
-  return wordedBy((l) => uploadCancelledEarlyText(byStop, l));
+  return saidBy((l) => uploadCancelledEarlyText(byStop, l));
 }
 
 export async function uploadFailed(

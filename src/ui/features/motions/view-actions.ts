@@ -1,8 +1,10 @@
 import type { AppContext } from "../../context.ts";
 import { focusSoon } from "../../focus.ts";
+import type { ViewContext } from "../../shell/view-types.ts";
+import type { RunNow } from "../shelf/index.ts";
 import type { MotionsKey } from "./messages.ts";
 import { requestRun } from "./run-actions.ts";
-import { type MotionsTab, motionFilesOf, patchMotionFiles, patchMotions } from "./state.ts";
+import { type MotionsTab, motionFilesOf, patchMotionFiles, patchMotions, robotBusyReason } from "./state.ts";
 
 /** What the Motions view's own controls do: choose a tab, show or hide a file's scenes, press a Run button. */
 
@@ -20,23 +22,6 @@ export const panelId = (tab: MotionsTab) => `motions-panel-${tab}`;
 export function showMotionsTab(ctx: AppContext, tab: MotionsTab, focus = false): void {
   if (motionFilesOf(ctx.store.get()).tab !== tab) patchMotionFiles(ctx.store, { tab });
   if (focus) focusSoon(tabId(tab));
-}
-
-/** The tab list's arrow keys (WAI-ARIA tabs pattern, automatic activation): the next, previous, first or last tab. */
-export function tabAfterKey(current: MotionsTab, key: string): MotionsTab | undefined {
-  const i = MOTIONS_TABS.findIndex((t) => t.id === current);
-  const n = MOTIONS_TABS.length;
-  const to =
-    key === "ArrowRight"
-      ? (i + 1) % n
-      : key === "ArrowLeft"
-        ? (i - 1 + n) % n
-        : key === "Home"
-          ? 0
-          : key === "End"
-            ? n - 1
-            : undefined;
-  return to === undefined ? undefined : MOTIONS_TABS[to]?.id;
 }
 
 /** "Show scenes and chart" / "Hide scenes and chart" on a file card: one file's scenes are shown at a time. */
@@ -60,4 +45,15 @@ export function toggleLiveRobot(ctx: AppContext): void {
 export function pressRun(ctx: AppContext, number: number): void {
   patchMotions(ctx.store, { runFrom: number });
   requestRun(ctx, number);
+}
+
+/** "Run now" beside a motion on the shelf: to the Run tab, where the run's confirmation, progress and result show. */
+export function runNow(ctx: ViewContext): RunNow {
+  return {
+    busy: robotBusyReason(ctx.state) !== undefined,
+    run: (number) => {
+      showMotionsTab(ctx, "run");
+      pressRun(ctx, number);
+    },
+  };
 }

@@ -1,6 +1,6 @@
+import { said } from "../../../i18n/said.ts";
 import type { AppContext } from "../../context.ts";
 import { errorNotice } from "../../error-text.ts";
-import { said } from "../../said.ts";
 import { robotMessages } from "./messages.ts";
 
 /** Reads what the device card shows: identity, error code and free memory of both areas. */

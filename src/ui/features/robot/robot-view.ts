@@ -1,16 +1,16 @@
 import { html, nothing, type TemplateResult } from "lit-html";
 import { platformWarning } from "../../../i18n/outcomes/plausibility.ts";
 import { robotErrorTitle } from "../../../i18n/outcomes/robot-error.ts";
+import { robotFactText, unknownPlatformText } from "../../../i18n/outcomes/robot-facts.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { ACTION_AREA_BYTES, MOTION_AREA_BYTES, NO_ERROR } from "../../../protocol/catalog.ts";
+import { isKnownPlatform } from "../../../protocol/plausibility.ts";
 import { formatFirmware } from "../../../shared/format.ts";
 import { formatTime } from "../../format.ts";
 import { shellMessages } from "../../shell/messages.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
-import { disconnect } from "../connection/actions.ts";
-import { robotName } from "../connection/robot-name.ts";
-import type { RobotLabel } from "../connection/state.ts";
+import { disconnect, type RobotLabel, robotName } from "../connection/index.ts";
 import { refreshDeviceInfo } from "./actions.ts";
 import { memoryUsedRow } from "./memory-used.ts";
 import { type RobotTranslator, robotMessages } from "./messages.ts";
@@ -27,7 +27,7 @@ function platformText(t: RobotTranslator, platform: number): string {
     case 4:
       return t("robot.platformPf2");
     default:
-      return t("robot.platformUnknown", { platform: String(platform) });
+      return unknownPlatformText(platform, t.locale);
   }
 }
 
@@ -41,18 +41,13 @@ function errorCodeLine(t: RobotTranslator, code: number | undefined): TemplateRe
 }
 
 /**
- * What the robot reported about itself that looks wrong. In English, the device's sentences. In Korean, the
- * same facts in Korean (the platform is the one the device checks), with the device's sentences one click away.
+ * What the robot reported about itself that looks wrong: the facts in the catalogue's words (the platform is the
+ * one the device checks), with the device's technical lines one click away.
  */
 function identityWarnings(ctx: ViewContext, t: RobotTranslator): TemplateResult | typeof nothing {
   const { identityWarnings: warnings, platform } = ctx.state.connection;
   if (!warnings?.length) return nothing;
-  if (t.locale === "en") {
-    return html`<div class="notice notice--warning" data-testid="identity-warnings">
-      ${warnings.map((w) => html`<p>${w}</p>`)}
-    </div>`;
-  }
-  const unknownPlatform = platform !== undefined && (platform < 1 || platform > 4);
+  const unknownPlatform = platform !== undefined && !isKnownPlatform(platform);
   return html`<div class="notice notice--warning" data-testid="identity-warnings">
     <p>
       ${unknownPlatform ? platformWarning(platform, t.locale) : t("robot.identityWarning")}
@@ -102,15 +97,15 @@ function render(ctx: ViewContext): TemplateResult {
           <dd class="num" data-testid="firmware">${c.firmware ? formatFirmware(c.firmware) : "—"}</dd>
         </div>
         <div>
-          <dt>${t("robot.serialNumber")}</dt>
-          <dd class="num" data-testid="serial-number">${c.serialNumber ?? t("robot.notReported")}</dd>
+          <dt>${robotFactText("serialNumber", t.locale)}</dt>
+          <dd class="num" data-testid="serial-number">${c.serialNumber ?? robotFactText("notReported", t.locale)}</dd>
         </div>
         <div>
           <dt>${t("robot.platform")}</dt>
           <dd>${c.platform === undefined ? "—" : platformText(t, c.platform)}</dd>
         </div>
         <div>
-          <dt>${t("robot.errorCode")}</dt>
+          <dt>${robotFactText("errorCode", t.locale)}</dt>
           <dd data-testid="error-code">${errorCodeLine(t, d.errorCode)}</dd>
         </div>
       </dl>

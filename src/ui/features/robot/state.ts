@@ -1,4 +1,4 @@
-import type { Notice } from "../../app-state.ts";
+import type { Notice } from "../../notices.ts";
 
 /** The Robot view's part of the app state: the device card's figures. Reset with every connection. */
 export interface DeviceInfoState {

@@ -1,5 +1,6 @@
 import type { Locale } from "../../../i18n/locale.ts";
 import { translator } from "../../../i18n/translate.ts";
+import { formatSeconds } from "../../../i18n/units.ts";
 import { prefersReducedMotion } from "../../charts/chart-loader.ts";
 import { ChartSlot } from "../../charts/chart-slot.ts";
 import type { ChartSeries } from "../../charts/uplot-charts.ts";
@@ -16,7 +17,7 @@ import { sensorWatch } from "./watch.ts";
 
 /** "now", "-10 s" / "지금", "-10초": x on the axis. */
 function secondsFormat(t: SensorsTranslator): (v: number) => string {
-  return (v) => (v === 0 ? t("sensors.chart.now") : t("sensors.chart.seconds", { seconds: v }));
+  return (v) => (v === 0 ? t("sensors.chart.now") : formatSeconds(v, t.locale, Number.isInteger(v) ? 0 : 1));
 }
 
 /**

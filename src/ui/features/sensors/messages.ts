@@ -48,7 +48,6 @@ export const sensorsMessages = defineMessages({
 
   // The charts (charts.ts)
   "sensors.chart.now": { en: "now", ko: "지금" },
-  "sensors.chart.seconds": { en: "{seconds} s", ko: "{seconds}초" },
   "sensors.chart.secondsAgo": { en: "Seconds ago", ko: "초 전" },
   "sensors.chart.distanceTitle": {
     en: "Distance in cm over the last 30 seconds",

@@ -1,5 +1,5 @@
 import type { SubscriptionKind } from "../../../device/types.ts";
-import type { AppState, Notice } from "../../app-state.ts";
+import type { Notice } from "../../notices.ts";
 import type { Store } from "../../store.ts";
 
 /**
@@ -62,12 +62,17 @@ export function initialSensors(): SensorsState {
   };
 }
 
-export function sensorsOf(s: AppState): SensorsState {
+/** The part of the app state this feature owns (src/ui/app-state.ts composes the parts). */
+export interface SensorsSlice {
+  sensors?: SensorsState;
+}
+
+export function sensorsOf(s: SensorsSlice): SensorsState {
   return s.sensors ?? initialSensors();
 }
 
 export function patchSensors(
-  store: Store<AppState>,
+  store: Store<SensorsSlice>,
   p: Partial<SensorsState> | ((x: SensorsState) => Partial<SensorsState>),
 ): void {
   store.update((s) => {

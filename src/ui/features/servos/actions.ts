@@ -1,14 +1,13 @@
 import { RbcError } from "../../../device/errors.ts";
 import type { ParamArgs } from "../../../i18n/catalogue.ts";
 import type { Locale } from "../../../i18n/locale.ts";
+import { type LocalText, type Said, said } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { type Notice, noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { failureNotice } from "../../failure-notice.ts";
 import { focusSoon } from "../../focus.ts";
-import { type LocalText, type Said, said } from "../../said.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
-import { servosTaken } from "../connection/actions.ts";
 import { servosMessages } from "./messages.ts";
 import { LatestMoveSender } from "./move-sender.ts";
 import {
@@ -69,7 +68,6 @@ export class ServoMoves implements Controller {
       }
       try {
         const status = await client.servos.move(id, position, torque);
-        servosTaken(ctx);
         patchServos(ctx.store, (x) => ({
           positions: setAt(x.positions, id, status.position),
           positionsAt: Date.now(),
@@ -239,7 +237,6 @@ export async function basicPosture(ctx: AppContext): Promise<void> {
         packetMode: false,
       },
     );
-    servosTaken(ctx);
     patchServos(store, {
       busy: undefined,
       targets: basicPostureTargets(),

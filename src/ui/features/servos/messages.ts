@@ -88,7 +88,6 @@ export const servosMessages = defineMessages({
   "servos.table.torque": { en: "Torque", ko: "토크" },
 
   // The basic posture
-  "servos.posture.title": { en: "Basic posture", ko: "기본 자세" },
   "servos.posture.intro": {
     en: "Moves all {count} joints at once into the HUNO's basic posture, standing straight.",
     ko: "관절 {count}개를 한꺼번에 움직여 HUNO의 기본 자세(똑바로 선 자세)로 만들어요.",

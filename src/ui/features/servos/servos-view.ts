@@ -1,14 +1,17 @@
+import { builtInMotionName } from "../../../i18n/motion-names/built-in-motion-name.ts";
+import { BASIC_POSTURE_MOTION } from "../../../protocol/catalog.ts";
 import "../../styles/tools.css";
 import { html, nothing, type TemplateResult } from "lit-html";
 import { live } from "lit-html/directives/live.js";
+import { jointName, sidesNote } from "../../../i18n/joint-names/joint-name.ts";
+import { wordOf } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { formatClockTime } from "../../format.ts";
 import { liveRobotPanel } from "../../robot3d/live-robot.ts";
-import { wordOf } from "../../said.ts";
 import { shellMessages } from "../../shell/messages.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
-import { jointName, sidesNote } from "../zeros/joints/joint-name.ts";
+import { isLimp, playingMotion } from "../connection/index.ts";
 import {
   acknowledgeSafety,
   applyTypedTarget,
@@ -194,7 +197,7 @@ function controlCard(ctx: ViewContext, t: ServosTranslator): TemplateResult {
         </div>
       </div>
       <p class="muted small" data-testid="servo-mode">
-        ${direct ? (c.limp ? t("servos.mode.limp") : t("servos.mode.on")) : t("servos.mode.off")}
+        ${direct ? (isLimp(c) ? t("servos.mode.limp") : t("servos.mode.on")) : t("servos.mode.off")}
         ${s.readAt ? t("servos.positionsReadAt", { time: formatClockTime(s.readAt) }) : ""}
       </p>
       ${liveNotice(s.notice, t("servos.resultLabel"), ctx.state.locale)}
@@ -211,7 +214,7 @@ function controlCard(ctx: ViewContext, t: ServosTranslator): TemplateResult {
 function postureCard(ctx: ViewContext, t: ServosTranslator): TemplateResult {
   return html`
     <section class="card posture-card" aria-labelledby="posture-heading" data-testid="posture-card">
-      <h2 id="posture-heading" class="card-title">${t("servos.posture.title")}</h2>
+      <h2 id="posture-heading" class="card-title">${builtInMotionName(BASIC_POSTURE_MOTION, t.locale)}</h2>
       <p class="muted small">${t("servos.posture.intro", { count: SERVO_IDS.length })}</p>
       ${postureControls(ctx, t, controlsEnabled(ctx))}
     </section>
@@ -265,7 +268,7 @@ function liveRobot(ctx: ViewContext, t: ServosTranslator): TemplateResult {
     demo: ctx.session.demoSim,
     known: { positions: s.positions, at: s.positionsAt },
     robotZeros: ctx.state.zeros.stored,
-    motionPlaying: ctx.state.connection.playing !== undefined,
+    motionPlaying: playingMotion(ctx.state.connection) !== undefined,
     textVersion: t("servos.textVersion"),
     locale: ctx.state.locale,
   });

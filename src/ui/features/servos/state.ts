@@ -1,7 +1,7 @@
 import type { Locale } from "../../../i18n/locale.ts";
+import { type Said, said, wordOf } from "../../../i18n/said.ts";
 import { HUNO_BASIC_POSTURE, HUNO_SERVO_IDS, safeRange } from "../../../protocol/servo-limits.ts";
-import type { AppState, Notice } from "../../app-state.ts";
-import { type Said, said, wordOf } from "../../said.ts";
+import type { Notice } from "../../notices.ts";
 import type { Store } from "../../store.ts";
 import { servosMessages } from "./messages.ts";
 
@@ -96,12 +96,17 @@ export function initialServos(): ServosState {
   };
 }
 
-export function servosOf(s: AppState): ServosState {
+/** The part of the app state this feature owns (src/ui/app-state.ts composes the parts). */
+export interface ServosSlice {
+  servos?: ServosState;
+}
+
+export function servosOf(s: ServosSlice): ServosState {
   return s.servos ?? initialServos();
 }
 
 export function patchServos(
-  store: Store<AppState>,
+  store: Store<ServosSlice>,
   p: Partial<ServosState> | ((x: ServosState) => Partial<ServosState>),
 ): void {
   store.update((s) => {

@@ -1,7 +1,7 @@
 import { translator } from "../../../i18n/translate.ts";
 import type { AppContext } from "../../context.ts";
-import { patchMotions } from "../motions/state.ts";
 import { shelfMessages } from "./messages.ts";
+import { patchShelf } from "./state.ts";
 
 /**
  * "Reset the demo robot" (issue 23 item 2), offered in Motions while the demo robot is connected: after one
@@ -27,7 +27,7 @@ export async function resetDemoRobot(ctx: AppContext): Promise<void> {
     forgotten = e instanceof Error ? e.message : String(e);
   }
   if (!(await session.connectDemo({ bluetooth }))) return;
-  patchMotions(store, {
+  patchShelf(store, {
     demoReset:
       forgotten === undefined
         ? { tone: "ok", text: t("shelf.demoReset") }

@@ -2,7 +2,6 @@ import { html, nothing, type TemplateResult } from "lit-html";
 import { translator } from "../../../i18n/translate.ts";
 import { notice } from "../../shell/notice.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
-import { motionsOf } from "../motions/state.ts";
 import { resetDemoRobot } from "./demo-reset-actions.ts";
 import { shelfMessages } from "./messages.ts";
 
@@ -11,7 +10,7 @@ export function demoResetOffer(ctx: ViewContext): TemplateResult | typeof nothin
   const s = ctx.state;
   if (s.connection.robot?.kind !== "demo") return nothing;
   const t = translator(shelfMessages, s.locale);
-  const done = motionsOf(s).demoReset;
+  const done = s.demoReset;
   return html`
     <details class="memory-help demo-reset" data-testid="demo-reset">
       <summary>${t("shelf.demoResetTitle")}</summary>

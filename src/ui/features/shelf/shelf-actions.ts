@@ -1,11 +1,10 @@
 import { imageHash, type RobotShelf } from "../../../device/shelf.ts";
+import { inEveryLanguage, type Said, said } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { MOTION_AREA_BYTES } from "../../../protocol/catalog.ts";
 import { type AppState, type Notice, noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
-import { inEveryLanguage, type Said, said } from "../../said.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
-import { motionsOf, patchMotions } from "../motions/state.ts";
 import { shelfMessages } from "./messages.ts";
 import {
   checkShelf,
@@ -20,7 +19,9 @@ import type { ShelfState } from "./state.ts";
 /**
  * The panel's side of the robot's shelf (issue 23 item 2): load the connected robot's records, check them
  * against every reading of its free motion memory (dropping, and saying so, what that memory shows was lost),
- * and record each upload into a known slot. The records live in `motions.shelf` for the connection.
+ * and record each upload into a known slot. The records live in the store's `shelf` for the connection. The Motions
+ * view watches the free-memory readings (motions/shelf-watch.ts) and forgets its own uploads into the slots a check
+ * finds lost.
  */
 
 /** The page's storage and the queue that keeps its reads and writes in order. */
@@ -50,28 +51,6 @@ const SHELF_KEEPER = controllerKey(
   (ctx: AppContext) => new ShelfKeeper(ctx.session.options.shelfStorage ?? idbShelfStorage),
 );
 
-/** Checks the shelf whenever the robot's free motion memory is read on this connection. */
-class ShelfWatch implements Controller {
-  private seen: number | undefined;
-  private readonly stop: () => void;
-
-  constructor(ctx: AppContext) {
-    this.seen = ctx.store.get().device.readAt;
-    this.stop = ctx.store.subscribe((s) => {
-      const { readAt, freeMotion } = s.device;
-      if (readAt === this.seen || freeMotion === undefined) return;
-      this.seen = readAt;
-      void checkAgainst(ctx, freeMotion);
-    });
-  }
-
-  dispose(): void {
-    this.stop();
-  }
-}
-
-const SHELF_WATCH = controllerKey("robot shelf watch", (ctx: AppContext) => new ShelfWatch(ctx));
-
 /** The connected robot's shelf key, or undefined while no robot is connected. */
 export function shelfKeyOf(s: AppState): string | undefined {
   const c = s.connection;
@@ -89,11 +68,11 @@ function keeper(ctx: AppContext): ShelfKeeper {
 
 function showShelf(ctx: AppContext, key: string, shelf: RobotShelf, patch: Partial<ShelfState> = {}): void {
   if (shelfKeyOf(ctx.store.get()) !== key) return;
-  patchMotions(ctx.store, (m) => ({
+  ctx.store.update((s) => ({
     shelf: {
       key,
-      checked: m.shelf?.key === key ? m.shelf.checked : false,
-      ...(m.shelf?.key === key && m.shelf.notice ? { notice: m.shelf.notice } : {}),
+      checked: s.shelf?.key === key ? s.shelf.checked : false,
+      ...(s.shelf?.key === key && s.shelf.notice ? { notice: s.shelf.notice } : {}),
       ...patch,
       slots: shelf.slots,
     },
@@ -101,28 +80,27 @@ function showShelf(ctx: AppContext, key: string, shelf: RobotShelf, patch: Parti
 }
 
 /**
- * The Motions view is shown: load this robot's records (once per connection) and check them against the free
- * memory already read, if any; later readings are watched.
+ * Loads the connected robot's records (once per connection) and checks them against the free memory already
+ * read, if any. Gives the slots that check found lost (none when nothing was checked).
  */
-export async function loadShelf(ctx: AppContext): Promise<void> {
+export async function loadShelf(ctx: AppContext): Promise<readonly number[]> {
   const key = shelfKeyOf(ctx.store.get());
-  if (key === undefined) return;
-  ctx.session.connectionScope.get(SHELF_WATCH);
-  if (motionsOf(ctx.store.get()).shelf?.key === key) return;
+  if (key === undefined || ctx.store.get().shelf?.key === key) return [];
   try {
     const shelf = await keeper(ctx).run((storage) => readShelf(storage, key));
     showShelf(ctx, key, shelf);
     const free = ctx.store.get().device.freeMotion;
-    if (free !== undefined) await checkAgainst(ctx, free);
+    return free === undefined ? [] : await checkAgainst(ctx, free);
   } catch {
     // No storage (a private window may refuse IndexedDB): the panel knows this connection's uploads only.
+    return [];
   }
 }
 
-/** Drops the records the free motion memory `free` shows were lost, and says which. */
-export async function checkAgainst(ctx: AppContext, free: number): Promise<void> {
+/** Drops the records the free motion memory `free` shows were lost, says which, and gives their slots. */
+export async function checkAgainst(ctx: AppContext, free: number): Promise<readonly number[]> {
   const key = shelfKeyOf(ctx.store.get());
-  if (key === undefined) return;
+  if (key === undefined) return [];
   try {
     const check = await keeper(ctx).run((storage) => checkShelf(storage, key, free));
     const dropped = check.dropped;
@@ -142,18 +120,10 @@ export async function checkAgainst(ctx: AppContext, free: number): Promise<void>
             }),
           ]);
     showShelf(ctx, key, check.shelf, { checked: true, ...(notice ? { notice } : {}) });
-    if (check.dropped.length > 0) {
-      // Uploads of this connection into those slots are gone as well: the panel no longer offers them by name.
-      const lost = new Set(check.dropped.map((s) => s.slot));
-      patchMotions(ctx.store, (m) => ({
-        motionBook: {
-          ...m.motionBook,
-          entries: m.motionBook.entries.filter((e) => e.slot === undefined || !lost.has(e.slot)),
-        },
-      }));
-    }
+    return check.dropped.map((s) => s.slot);
   } catch {
     // As in loadShelf: without storage nothing is recorded, so nothing can be wrong.
+    return [];
   }
 }
 

@@ -1,5 +1,5 @@
-import { remoteKeyWords } from "../../../device/shelf.ts";
 import type { Locale } from "../../../i18n/locale.ts";
+import { remoteKeyWords } from "../../../i18n/outcomes/remote-key.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { formatDateTime } from "../../../i18n/units.ts";
 import { shelfMessages } from "./messages.ts";

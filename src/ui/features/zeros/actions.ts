@@ -6,9 +6,11 @@ import {
 } from "../../../device/errors.ts";
 import { ZeroBackupError, ZeroWriteFailedError } from "../../../device/zero-policy.ts";
 import type { ParamArgs } from "../../../i18n/catalogue.ts";
+import { errorSaid } from "../../../i18n/error-said.ts";
 import type { Locale } from "../../../i18n/locale.ts";
 import { deviceOutcomeMessages } from "../../../i18n/outcomes/messages.ts";
 import { serialMismatchWarning } from "../../../i18n/outcomes/zero-words.ts";
+import { inEveryLanguage, type LocalText, type Said, said } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { ZERO_COUNT } from "../../../protocol/zeros.ts";
 import {
@@ -21,10 +23,9 @@ import { formatFirmware } from "../../../shared/format.ts";
 import { type AppState, type Notice, noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { errorNotice, technicalDetail } from "../../error-text.ts";
-import { errorSaid, failureNotice } from "../../failure-notice.ts";
+import { failureNotice } from "../../failure-notice.ts";
 import { focusSoon } from "../../focus.ts";
 import { formatDateTime } from "../../format.ts";
-import { inEveryLanguage, type LocalText, type Said, said } from "../../said.ts";
 import type { Store } from "../../store.ts";
 import { type BackupFileOutcome, saveBackupFile } from "./backup-file.ts";
 import { refusal } from "./backup-refusal.ts";

@@ -1,8 +1,8 @@
 import type { Locale } from "../../../i18n/locale.ts";
 import { backupRefusalText } from "../../../i18n/outcomes/zero-words.ts";
+import { inEveryLanguage, said } from "../../../i18n/said.ts";
 import type { ParsedBackup } from "../../../protocol/zeros-backup.ts";
 import { type Notice, noticeOf } from "../../app-state.ts";
-import { inEveryLanguage, said } from "../../said.ts";
 import { zerosMessages } from "./messages.ts";
 
 /**

@@ -1,11 +1,8 @@
+import { jointName } from "../../../i18n/joint-names/joint-name.ts";
 import type { Locale } from "../../../i18n/locale.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { diffZeros, FACTORY_ZEROS, ZERO_COUNT, type ZeroChange, zeroRange } from "../../../protocol/zeros.ts";
-import { jointName } from "./joints/joint-name.ts";
 import { zerosMessages } from "./messages.ts";
-
-// Where the Servos view and the Editor have always found it (import it from joints/joint-name.ts to load less).
-export { jointName };
 
 /** The zeros editor's rules, as pure functions of its text fields. */
 

@@ -207,8 +207,6 @@ export const zerosMessages = defineMessages({
     en: '"{file}" was not loaded. {reason}',
     ko: '"{file}" 파일을 불러오지 않았어요. {reason}',
   },
-  // Why a backup file is refused. In English the panel shows the parser's own sentence (it names the value);
-  // these English texts are its gist. In Korean these sentences, with the parser's sentence as the detail.
   "zeros.loaded": {
     en: 'Loaded "{file}" (saved {saved}) into the editor. Nothing is written until you press Write.',
     ko: "\"{file}\" 파일({saved}에 저장)을 편집 표에 불러왔어요. '로봇에 쓰기'를 누르기 전에는 아무것도 쓰지 않아요.",

@@ -1,4 +1,4 @@
-import type { AppState, Notice } from "../../app-state.ts";
+import type { Notice } from "../../notices.ts";
 import type { Store } from "../../store.ts";
 import type { KeptBackup } from "./backup-store.ts";
 import type { CaptureState, TrimLiveState } from "./live/live-state.ts";
@@ -42,7 +42,12 @@ export function initialZeros(): ZerosState {
   return { draft: [], confirming: false };
 }
 
+/** The part of the app state this feature owns (src/ui/app-state.ts composes the parts). */
+export interface ZerosSlice {
+  zeros: ZerosState;
+}
+
 /** Merges a patch into the Zeros view's state (one store update). */
-export function patchZeros(store: Store<AppState>, patch: Partial<ZerosState>): void {
+export function patchZeros(store: Store<ZerosSlice>, patch: Partial<ZerosState>): void {
   store.update((s) => ({ zeros: { ...s.zeros, ...patch } }));
 }

@@ -2,6 +2,7 @@
 import "../../styles/features.css";
 import { html, nothing, type TemplateResult } from "lit-html";
 import { live } from "lit-html/directives/live.js";
+import { jointName, sidesNote } from "../../../i18n/joint-names/joint-name.ts";
 import { translator } from "../../../i18n/translate.ts";
 import {
   FACTORY_ZEROS,
@@ -12,10 +13,10 @@ import {
   zeroRange,
 } from "../../../protocol/zeros.ts";
 import { formatDateTime, formatDelta } from "../../format.ts";
+import { shellMessages } from "../../shell/messages.ts";
 import { liveNotice } from "../../shell/notice.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
-import { connectCard } from "../connection/connect-card.ts";
-import { unsupportedCard } from "../connection/unsupported-card.ts";
+import { connectPlace } from "../connection/index.ts";
 import {
   askToWrite,
   backUpZeros,
@@ -27,8 +28,7 @@ import {
   useFactoryZeros,
   writeZerosToRobot,
 } from "./actions.ts";
-import { checkDraft, type DraftCheck, draftTable, jointName, pendingChanges } from "./editor.ts";
-import { sidesNote } from "./joints/joint-name.ts";
+import { checkDraft, type DraftCheck, draftTable, pendingChanges } from "./editor.ts";
 import { keptList } from "./kept-list-view.ts";
 import { captureResultPanel, livePanel, liveStart, lostTrimPanel, trimOnBox } from "./live/live-view.ts";
 import { type ZerosTranslator, zerosMessages } from "./messages.ts";
@@ -243,8 +243,8 @@ function sourceText(t: ZerosTranslator, source: ZerosSource): string {
 function render(ctx: ViewContext): TemplateResult {
   if (ctx.state.connection.phase !== "connected") {
     // Not a robot view while disconnected: what a lost link left during trim live, then the connect card.
-    const card = ctx.state.serialSupported ? connectCard(ctx) : unsupportedCard(ctx);
-    return html`${lostTrimPanel(ctx)}${card}`;
+    const loading = translator(shellMessages, ctx.state.locale)("shell.loading");
+    return html`${lostTrimPanel(ctx)}${connectPlace(ctx, loading)}`;
   }
   return renderConnected(ctx);
 }

@@ -3,7 +3,7 @@ import { formatSeconds } from "../../../../i18n/units.ts";
 import { MOTION_AREA_BYTES } from "../../../../protocol/catalog.ts";
 import { notice } from "../../../shell/notice.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
-import { issueWords } from "../../motions/issue-text.ts";
+import { issueWords } from "../../motions/index.ts";
 import {
   addPackFiles,
   askUpload,
@@ -16,6 +16,7 @@ import {
 } from "../actions.ts";
 import type { ClassTranslator } from "../messages.ts";
 import type { CheckedPackFile, PackCheck } from "../pack-check.ts";
+import { robotTask } from "../robot-task.ts";
 import { type ClassState, chosenRobots } from "../state.ts";
 
 /** One motion pack to all: the .rbm files, checked once, and the upload to every selected robot. */
@@ -81,7 +82,7 @@ function packTotals(t: ClassTranslator, check: PackCheck): TemplateResult {
 export function packSection(ctx: ViewContext, t: ClassTranslator, c: ClassState): TemplateResult {
   const check = packCheck(ctx, c);
   const chosen = chosenRobots(c);
-  const busy = chosen.some((r) => r.task !== undefined);
+  const busy = chosen.some((r) => robotTask(r) !== undefined);
   const uploads = c.robots.flatMap((r) => (r.upload ? [r.upload] : []));
   const uploading = uploads.length > 0;
   return html`<section class="card" aria-labelledby="class-pack-title">

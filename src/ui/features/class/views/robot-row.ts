@@ -1,4 +1,5 @@
 import { html, nothing, type TemplateResult } from "lit-html";
+import { robotFactText } from "../../../../i18n/outcomes/robot-facts.ts";
 import { MOTION_AREA_BYTES, NO_ERROR } from "../../../../protocol/catalog.ts";
 import { platformName } from "../../../../protocol/platform.ts";
 import { formatFirmware } from "../../../../shared/format.ts";
@@ -14,17 +15,12 @@ import {
   startNaming,
 } from "../actions.ts";
 import type { ClassTranslator } from "../messages.ts";
+import { robotTitle } from "../names.ts";
+import { robotTask } from "../robot-task.ts";
 import type { ClassBackupChoice, ClassRobot, ClassState } from "../state.ts";
 import { compareZeros } from "../zeros-check.ts";
 
 /** One robot of the class: a row on a wide screen, a card on a phone (class.css). */
-
-/** The name the teacher gave it, else "Demo robot 2" or its port. */
-export function robotTitle(t: ClassTranslator, c: ClassState, r: ClassRobot): string {
-  const given = r.serialNumber ? c.names[r.serialNumber] : undefined;
-  if (given) return given;
-  return r.demoNumber !== undefined ? t("class.demoName", { number: r.demoNumber }) : r.portLabel;
-}
 
 function phaseWords(t: ClassTranslator, r: ClassRobot): string {
   switch (r.phase) {
@@ -40,7 +36,7 @@ function phaseWords(t: ClassTranslator, r: ClassRobot): string {
 }
 
 function taskWords(t: ClassTranslator, r: ClassRobot): string | undefined {
-  switch (r.task) {
+  switch (robotTask(r)) {
     case "run":
       return t("class.task.run");
     case "limp":
@@ -65,7 +61,7 @@ function zerosCell(t: ClassTranslator, r: ClassRobot, backup: ClassBackupChoice 
 
 function freeCell(t: ClassTranslator, r: ClassRobot): TemplateResult | string {
   if (r.freeMotion === undefined) return "—";
-  if (r.freeMotion === null) return t("class.fact.notReported");
+  if (r.freeMotion === null) return robotFactText("notReported", t.locale);
   return html`<span class="num">${t("class.fact.free", { free: r.freeMotion, size: MOTION_AREA_BYTES })}</span>`;
 }
 
@@ -161,8 +157,8 @@ export function robotRow(
     </div>
     <dl class="class-facts">
       <div><dt>${t("class.fact.firmware")}</dt><dd class="num">${firmware}</dd></div>
-      <div><dt>${t("class.fact.serial")}</dt><dd class="num mono">${r.serialNumber ?? (connected ? t("class.fact.notReported") : "—")}</dd></div>
-      <div><dt>${t("class.fact.error")}</dt><dd>${errorCell(t, r)}</dd></div>
+      <div><dt>${robotFactText("serialNumber", t.locale)}</dt><dd class="num mono">${r.serialNumber ?? (connected ? robotFactText("notReported", t.locale) : "—")}</dd></div>
+      <div><dt>${robotFactText("errorCode", t.locale)}</dt><dd>${errorCell(t, r)}</dd></div>
       <div><dt>${t("class.fact.freeMemory")}</dt><dd>${freeCell(t, r)}</dd></div>
       <div><dt>${t("class.fact.zeros")}</dt><dd data-testid="class-zeros">${zerosCell(t, r, backup)}</dd></div>
     </dl>
@@ -177,7 +173,7 @@ export function robotRow(
             </button>`
           : nothing
       }
-      <button type="button" class="btn btn--small btn--quiet" ?disabled=${!connected || r.task !== undefined} @click=${() => refreshRobot(ctx, r.id)}>
+      <button type="button" class="btn btn--small btn--quiet" ?disabled=${!connected || robotTask(r) !== undefined} @click=${() => refreshRobot(ctx, r.id)}>
         ${t("class.readAgain")}<span class="sr-only"> — ${title}</span>
       </button>
       <button type="button" class="btn btn--small btn--quiet" @click=${() => removeRobot(ctx, r.id)}>

@@ -18,6 +18,7 @@ import {
   uploadNow,
 } from "../actions.ts";
 import type { ClassTranslator } from "../messages.ts";
+import { robotTask } from "../robot-task.ts";
 import { type ClassState, chosenRobots } from "../state.ts";
 
 /**
@@ -85,7 +86,7 @@ function question(ctx: ViewContext, t: ClassTranslator, c: ClassState): Template
 export function togetherSection(ctx: ViewContext, t: ClassTranslator, c: ClassState): TemplateResult {
   const { locale } = ctx.state;
   const chosen = chosenRobots(c);
-  const busy = chosen.some((r) => r.task !== undefined);
+  const busy = chosen.some((r) => robotTask(r) !== undefined);
   const connected = c.robots.some((r) => r.phase === "connected");
   const choices = motionChoices(ctx, c);
   const last = c.lastRun;

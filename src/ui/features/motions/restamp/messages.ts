@@ -1,5 +1,4 @@
 import { defineMessages } from "../../../../i18n/catalogue.ts";
-import type { Translator } from "../../../../i18n/translate.ts";
 
 /**
  * "Make this motion usable on this robot" (issue 23 item 4), in Motions and the Editor: the offer and where the
@@ -35,5 +34,3 @@ export const restampMessages = defineMessages({
   },
   "motions.restamp.result": { en: "Copy for this robot", ko: "이 로봇용 복사본" },
 });
-
-export type RestampTranslator = Translator<typeof restampMessages>;

@@ -1,10 +1,10 @@
 import type { Locale } from "../../../../i18n/locale.ts";
 import { restampChangeText, restampRefusalText } from "../../../../i18n/outcomes/restamp/restamp-words.ts";
+import { inEveryLanguage, type LocalText, type Said, said, saidBy } from "../../../../i18n/said.ts";
 import { translator } from "../../../../i18n/translate.ts";
 import { RestampError, restampedFileName, restampRbm, restampRbmBytes } from "../../../../motion/restamp.ts";
 import { type Notice, noticeOf } from "../../../app-state.ts";
 import { errorMessage, technicalDetail } from "../../../error-text.ts";
-import { inEveryLanguage, type LocalText, type Said, said, saidText } from "../../../said.ts";
 import { saveFile } from "../../../save-file.ts";
 import { restampMessages } from "./messages.ts";
 
@@ -25,7 +25,7 @@ export async function saveRestampedCopy(
   try {
     const result = typeof source === "string" ? restampRbm(source, serial) : restampRbmBytes(source, serial);
     output = result.output;
-    change = saidText(inEveryLanguage((l) => restampChangeText(result, l)));
+    change = saidBy((l) => restampChangeText(result, l));
   } catch (e) {
     const why = inEveryLanguage((l) =>
       e instanceof RestampError ? restampRefusalText(e, l) : errorMessage(e, l),

@@ -1,4 +1,9 @@
 import { html, nothing, type TemplateResult } from "lit-html";
+import {
+  checkSummaryText,
+  errorCountText,
+  warningCountText,
+} from "../../../../i18n/outcomes/rbm/check-summary.ts";
 import type { RbmIssue } from "../../../../protocol/rbm-validate.ts";
 import { formatCount } from "../../../format.ts";
 import { groupWarnings, type WarningGroup, weightWord } from "../issue-groups.ts";
@@ -62,10 +67,10 @@ function checkSummary(
   groups: readonly WarningGroup[],
 ): string {
   const counts = {
-    errors: t("motions.files.errorCount", { count: errors }),
-    warnings: t("motions.files.warningCount", { count: warnings }),
+    errors: errorCountText(errors, t.locale),
+    warnings: warningCountText(warnings, t.locale),
   };
-  if (warnings === 0) return t("motions.files.checked", counts);
+  if (warnings === 0) return checkSummaryText(errors, warnings, t.locale);
   const kinds = t("motions.files.kindCount", { count: groups.length });
   const serious = groups.filter((g) => g.weight === "serious").reduce((n, g) => n + g.issues.length, 0);
   return serious > 0
@@ -82,7 +87,7 @@ export function fileIssues(
   const groups = groupWarnings(warnings, entry.motion, t.locale);
   const summary =
     errors.length === 0 && warnings.length === 0
-      ? html`<p class="check-ok">${t("motions.files.checkedClean")}</p>`
+      ? html`<p class="check-ok">${checkSummaryText(0, 0, t.locale)}</p>`
       : html`<p class="small" data-testid="check-summary">
           ${checkSummary(t, errors.length, warnings.length, groups)}
         </p>`;

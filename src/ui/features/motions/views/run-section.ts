@@ -8,11 +8,16 @@ import { liveRobotPanel } from "../../../robot3d/live-robot.ts";
 import { nameWithBreaks } from "../../../shell/name-breaks.ts";
 import { liveNotice } from "../../../shell/notice.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
-import { stopActivity } from "../../connection/actions.ts";
-import { connectionMessages } from "../../connection/messages.ts";
-import { servosOf } from "../../servos/state.ts";
-import { shelfDropNotice, shelfRecordedNote } from "../../shelf/shelf-list.ts";
-import { remoteKeyWords } from "../../shelf/shelf-words.ts";
+import { stopAll } from "../../../stop-all.ts";
+import {
+  connectionMessages,
+  isPlaying,
+  isStopping,
+  playingMotion,
+  playingSound,
+} from "../../connection/index.ts";
+import { servosOf } from "../../servos/index.ts";
+import { remoteKeyWords, shelfDropNotice, shelfRecordedNote } from "../../shelf/index.ts";
 import { type MotionsTranslator, motionsMessages } from "../messages.ts";
 import { formatSeconds } from "../plot-data.ts";
 import {
@@ -79,11 +84,13 @@ export function runningPanel(ctx: ViewContext, t: MotionsTranslator, run: Runnin
   const known = run.expectedMs !== undefined;
   const expected = run.expectedMs ?? 0;
   const named = { number: run.number, name: run.name };
+  // "Stop motion" sent 7 (the robot finishes the current scene), or the page's Stop is under way.
+  const stopping = isStopping(ctx.state.connection);
   const label = t("motions.run.progressLabel", { number: run.number });
   return html`
     <div class="progress-block running" data-testid="running-motion">
       <p>
-        <strong class="long-text">${run.stopping ? t("motions.run.stopping", named) : t("motions.run.running", named)}</strong>
+        <strong class="long-text">${stopping ? t("motions.run.stopping", named) : t("motions.run.running", named)}</strong>
         <span class="num muted">
           ${
             known
@@ -104,7 +111,7 @@ export function runningPanel(ctx: ViewContext, t: MotionsTranslator, run: Runnin
         run.number === BASIC_POSTURE_MOTION
           ? html`<p class="muted small">${t("motions.run.limpSentence")}</p>`
           : html`<div class="actions">
-              <button type="button" class="btn" data-testid="stop-motion" ?disabled=${run.stopping} @click=${() => void stopMotion(ctx)}>
+              <button type="button" class="btn" data-testid="stop-motion" ?disabled=${stopping} @click=${() => void stopMotion(ctx)}>
                 ${t("motions.run.stop")}
               </button>
             </div>
@@ -149,7 +156,7 @@ function runInPlace(ctx: ViewContext, t: MotionsTranslator, group: Group): Templ
     : m.confirmMove !== undefined
       ? `confirm-${m.confirmMove}`
       : m.run
-        ? `run-${m.run.number}-${m.run.startedAt}${m.run.stopping ? "-stopping" : ""}`
+        ? `run-${m.run.number}-${m.run.startedAt}${isStopping(s.connection) ? "-stopping" : ""}`
         : m.runNotice
           ? `notice-${m.runNotice.text}`
           : undefined;
@@ -207,7 +214,7 @@ function liveRobot(ctx: ViewContext, t: MotionsTranslator): TemplateResult {
     demo: ctx.session.demoSim,
     known: { positions: servos.positions, at: servos.positionsAt },
     robotZeros: s.zeros.stored,
-    motionPlaying: s.connection.playing !== undefined || motionsOf(s).run !== undefined,
+    motionPlaying: playingMotion(s.connection) !== undefined || motionsOf(s).run !== undefined,
     textVersion: t("motions.run.textVersion"),
   });
 }
@@ -217,14 +224,13 @@ function liveRobot(ctx: ViewContext, t: MotionsTranslator): TemplateResult {
  * the client saw it start), as in the Editor: Stop is the one request the robot takes then.
  */
 function busyWhy(ctx: ViewContext, reason: string): TemplateResult {
-  const c = ctx.state.connection;
-  const elsewhere = c.busy !== undefined || c.playing !== undefined;
+  const elsewhere = isPlaying(ctx.state.connection);
   const stop = translator(connectionMessages, ctx.state.locale)("connection.stop");
   return html`<p class="muted small robot-busy" data-testid="busy-why">
     <span>${reason}</span>
     ${
       elsewhere
-        ? html`<button type="button" class="btn btn--danger" data-testid="motions-busy-stop" aria-keyshortcuts="Escape" @click=${() => void stopActivity(ctx)}>
+        ? html`<button type="button" class="btn btn--danger" data-testid="motions-busy-stop" aria-keyshortcuts="Escape" @click=${() => void stopAll(ctx)}>
             ${stop}
           </button>`
         : nothing
@@ -263,7 +269,7 @@ export function runSection(ctx: ViewContext): TemplateResult {
       </div>
       ${runInPlace(ctx, t, "built-in")}
       <h3>${t("motions.run.downloadedTitle")}</h3>
-      ${shelfDropNotice(m.shelf?.notice, s.locale)}
+      ${shelfDropNotice(s.shelf?.notice, s.locale)}
       ${
         downloads.length > 0
           ? html`<div class="motion-grid" data-testid="downloaded-motions">
@@ -282,7 +288,7 @@ export function soundSection(ctx: ViewContext): TemplateResult {
   const c = s.connection;
   const m = motionsOf(s);
   const busyReason = robotBusyReason(s);
-  const sounding = c.sounding;
+  const sounding = playingSound(c);
   // The sound's own length, as on its button: the client's expectedMs also counts the RBC's 200 ms reply delay.
   const length = sounding ? (soundLengthMs(sounding.sound) ?? sounding.expectedMs) : 0;
   const elapsed = sounding ? Math.min(ctx.session.clock.now() - sounding.startedAt, length) : 0;

@@ -4,13 +4,13 @@ import { translator } from "../../../../i18n/translate.ts";
 import type { AppState } from "../../../app-state.ts";
 import { liveNotice } from "../../../shell/notice.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
-import { shelfMessages } from "../../shelf/messages.ts";
-import { runNowButton } from "../../shelf/shelf-list.ts";
+import { runNowButton, shelfMessages } from "../../shelf/index.ts";
 import { type MotionsTranslator, motionsMessages } from "../messages.ts";
 import { offerFor } from "../run-actions.ts";
 import { motionsOf, type UploadRun, type UploadTarget } from "../state.ts";
 import { cancelConfirm, cancelUpload, startUpload } from "../upload-actions.ts";
 import { formatRate, formatTimeLeft, uploadFigures } from "../upload-rate.ts";
+import { runNow } from "../view-actions.ts";
 import { keepInView } from "./keep-in-view.ts";
 
 /**
@@ -147,10 +147,11 @@ export function uploadInPlace(
       ${liveNotice(result, t("motions.upload.resultLabel"), s.locale)}
       ${
         result && target.area === "motion" && m.uploadStored !== undefined
-          ? html`<div class="actions">${runNowButton(ctx, translator(shelfMessages, s.locale), {
-              number: m.uploadStored,
-              name: offerFor(s, m.uploadStored)?.name ?? "",
-            })}</div>`
+          ? html`<div class="actions">${runNowButton(
+              translator(shelfMessages, s.locale),
+              { number: m.uploadStored, name: offerFor(s, m.uploadStored)?.name ?? "" },
+              runNow(ctx),
+            )}</div>`
           : nothing
       }
     </div>

@@ -9,13 +9,13 @@ import {
   MOTION_AREA_BYTES,
 } from "../../../../protocol/catalog.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
-import { demoResetOffer } from "../../shelf/demo-reset.ts";
-import { shelfList } from "../../shelf/shelf-list.ts";
+import { demoResetOffer, shelfList } from "../../shelf/index.ts";
 import { type MotionsTranslator, motionsMessages } from "../messages.ts";
 import { downloadedOffers } from "../run-actions.ts";
 import type { SlotBook } from "../slot-book.ts";
 import { motionsOf } from "../state.ts";
 import { openActionFile, requestUpload, setResetFirst, uploadBlocked } from "../upload-actions.ts";
+import { runNow } from "../view-actions.ts";
 import { uploadInPlace } from "./upload-in-place.ts";
 
 /** The Memory tab: what this connection uploaded, how the memory is counted, and action files. */
@@ -56,7 +56,7 @@ function uploadsCard(ctx: ViewContext, t: MotionsTranslator): TemplateResult {
   return html`
     <section class="card" aria-labelledby="uploads-title" data-testid="uploads-card">
       <h2 id="uploads-title" class="card-title">${t("motions.upload.listTitle")}</h2>
-      ${shelfList(ctx, downloadedOffers(ctx.state))} ${unnumbered(t, m.motionBook)}
+      ${shelfList(ctx, downloadedOffers(ctx.state), runNow(ctx))} ${unnumbered(t, m.motionBook)}
       <details class="memory-help">
         <summary>${t("motions.upload.howCounted")}</summary>
         <p class="small">

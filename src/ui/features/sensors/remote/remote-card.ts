@@ -33,7 +33,7 @@ function robotFacts(ctx: ViewContext): RobotFacts {
   const names = new Map<number, string>();
   for (const e of book?.entries ?? []) if (e.slot !== undefined) names.set(e.slot, e.name);
   // What this browser recorded uploading to this robot earlier (the shelf, kept while its memory allows it).
-  for (const s of ctx.state.motions?.shelf?.slots ?? []) if (!names.has(s.slot)) names.set(s.slot, s.name);
+  for (const s of ctx.state.shelf?.slots ?? []) if (!names.has(s.slot)) names.set(s.slot, s.name);
   return {
     ...(ctx.state.connection.firmware ? { firmware: ctx.state.connection.firmware } : {}),
     ...(ctx.state.device.freeMotion === undefined ? {} : { freeMotion: ctx.state.device.freeMotion }),

@@ -6,7 +6,7 @@ import { failureNotice } from "../../../failure-notice.ts";
 import { focusSoon } from "../../../focus.ts";
 import { type Controller, controllerKey } from "../../../scope.ts";
 import type { Store } from "../../../store.ts";
-import { limpAll } from "../../connection/actions.ts";
+import { isLimp, limpAll } from "../../connection/index.ts";
 import { toDraft } from "../editor.ts";
 import { patchZeros } from "../state.ts";
 import type { CaptureState } from "./live-state.ts";
@@ -93,7 +93,7 @@ export async function startCapture(ctx: AppContext): Promise<void> {
   await limpAll(ctx);
   const s = store.get();
   if (!s.zeros.capture) return;
-  if (s.connection.phase !== "connected" || s.connection.mode !== "direct" || !s.connection.limp) {
+  if (s.connection.phase !== "connected" || s.connection.mode !== "direct" || !isLimp(s.connection)) {
     patchCapture(store, { phase: "checked", notice: noticeOf("danger", s.locale, [say("capture.notLimp")]) });
     return;
   }

@@ -1,10 +1,10 @@
 import { html, nothing, type TemplateResult } from "lit-html";
+import { jointName } from "../../../../i18n/joint-names/joint-name.ts";
 import { serialMismatchWarning } from "../../../../i18n/outcomes/zero-words.ts";
 import { translator } from "../../../../i18n/translate.ts";
 import { formatDateTime, formatDelta } from "../../../format.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
 import type { KeptBackup } from "../backup-store.ts";
-import { jointName } from "../joints/joint-name.ts";
 import { compareWith } from "./compare-actions.ts";
 import { zerosLiveMessages } from "./messages.ts";
 import { compareZeros } from "./trim-model.ts";

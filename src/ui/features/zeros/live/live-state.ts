@@ -1,4 +1,4 @@
-import type { Notice } from "../../../app-state.ts";
+import type { Notice } from "../../../notices.ts";
 import type { CaptureCheck } from "./trim-model.ts";
 
 /**

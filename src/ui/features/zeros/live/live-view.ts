@@ -1,8 +1,8 @@
 import { html, nothing, svg, type TemplateResult } from "lit-html";
+import { jointName } from "../../../../i18n/joint-names/joint-name.ts";
 import { translator } from "../../../../i18n/translate.ts";
 import { liveNotice, notice } from "../../../shell/notice.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
-import { jointName } from "../joints/joint-name.ts";
 import { askCapture, CAPTURE_SECONDS, cancelCapture, startCapture, useCapture } from "./capture.ts";
 import { zerosLiveMessages } from "./messages.ts";
 import {

@@ -1,5 +1,5 @@
 import type { ParamArgs } from "../../../../i18n/catalogue.ts";
-import { type LocalText, type Said, said } from "../../../said.ts";
+import { type LocalText, type Said, said } from "../../../../i18n/said.ts";
 import { zerosLiveMessages } from "./messages.ts";
 
 /** Trim live's and Capture zeros' outcomes as data: a key of their catalogue and its facts, worded at render. */

@@ -1,16 +1,17 @@
 import type { RbcClient, TetheredPlayResult } from "../../../../device/index.ts";
 import type { Locale } from "../../../../i18n/locale.ts";
+import { inEveryLanguage, type Said, wordOf } from "../../../../i18n/said.ts";
 import { ZERO_COUNT } from "../../../../protocol/zeros.ts";
 import { type AppState, type Notice, noticeOf, type RunningLabel } from "../../../app-state.ts";
 import type { AppContext } from "../../../context.ts";
 import { failureNotice } from "../../../failure-notice.ts";
 import { focusSoon } from "../../../focus.ts";
 import { formatDateTime } from "../../../format.ts";
-import { inEveryLanguage, type Said, wordOf } from "../../../said.ts";
 import { type Controller, controllerKey } from "../../../scope.ts";
+import { stopAll } from "../../../stop-all.ts";
 import type { Store } from "../../../store.ts";
-import { servosTaken, stopActivity } from "../../connection/actions.ts";
-import { LatestMoveSender } from "../../servos/move-sender.ts";
+import { isLimp } from "../../connection/index.ts";
+import { LatestMoveSender } from "../../servos/index.ts";
 import { checkDraft, toDraft } from "../editor.ts";
 import { patchZeros } from "../state.ts";
 import type { TrimLiveState } from "./live-state.ts";
@@ -93,7 +94,6 @@ class TrimLive implements Controller {
     }
     try {
       const status = await client.servos.move(id, position, TRIM_TORQUE);
-      servosTaken(this.ctx);
       store.update((s) => {
         const live = s.zeros.live;
         if (!live) return {};
@@ -139,7 +139,7 @@ class TrimLive implements Controller {
     if (live?.phase !== "on") return;
     const c = s.connection;
     if (c.phase !== "connected") return; // `dispose` (the connection's scope ends first) keeps what it left.
-    if (c.limp) {
+    if (isLimp(c)) {
       this.end();
       patchZeros(this.ctx.store, {
         live: undefined,
@@ -272,7 +272,6 @@ export async function startTrimLive(ctx: AppContext): Promise<void> {
     });
     return;
   }
-  servosTaken(ctx);
   const pose = zeroPose(stored);
   patchZeros(store, {
     live: { phase: "on", positions: [...pose], moved: [] },
@@ -360,7 +359,7 @@ export function trimWriteEnded(ctx: AppContext): Said {
 
 /** Stop, offered beside a refusal (the robot is busy): the top bar's Stop. */
 export function stopFromTrim(ctx: AppContext): void {
-  void stopActivity(ctx);
+  void stopAll(ctx);
 }
 
 /** The sentence a lost link left for the page, worded for the next connection's view. */

@@ -1,18 +1,28 @@
-import type { StopActivityResult, StopFound } from "../../../device/index.ts";
-import type { ParamArgs } from "../../../i18n/catalogue.ts";
-import type { Locale } from "../../../i18n/locale.ts";
-import { noReplyCauseText } from "../../../i18n/outcomes/run-words.ts";
-import { stopOutcomeMessages } from "../../../i18n/outcomes/stop-messages.ts";
-import { formatMilliseconds, formatSeconds } from "../../../i18n/units.ts";
-import { type AppState, type Notice, noticeOf } from "../../app-state.ts";
-import { inEveryLanguage, type LocalText, type Said, said, saidText } from "../../said.ts";
+import type { StopActivityResult, StopFound } from "../device/index.ts";
+import type { ParamArgs } from "../i18n/catalogue.ts";
+import type { Locale } from "../i18n/locale.ts";
+import { limpStoppedMotionFirstText } from "../i18n/outcomes/device.ts";
+import { type LimpFacts, limpResultText, limpWarningText } from "../i18n/outcomes/limp-words.ts";
+import { noReplyCauseText } from "../i18n/outcomes/run-words.ts";
+import { stopOutcomeMessages } from "../i18n/outcomes/stop-messages.ts";
+import {
+  playStoppedText,
+  type StoppedMotion,
+  stoppedMotionDetailText,
+  stoppedMotionText,
+} from "../i18n/outcomes/stop-words.ts";
+import { inEveryLanguage, type LocalText, type Said, said, saidBy } from "../i18n/said.ts";
+import { formatMilliseconds, formatSeconds } from "../i18n/units.ts";
+import { type AppState, type Notice, noticeOf } from "./app-state.ts";
+import { playingMotion, playingSound } from "./features/connection/index.ts";
 import { stopMessages } from "./stop-messages.ts";
 
 /**
  * The sentences of Stop and Limp in the top bar: what Stop is waiting for, what it did (never more certain than
  * the robot confirmed), what Limp did, and a robot found busy. Loaded with the first press of Stop or Limp (or a
  * robot found busy), not with the first page (first load: bench/bundle-size.ts). Kept as messages, so they are
- * worded in the language of the moment.
+ * worded in the language of the moment. The Class view words each of its robots' Stop with them too (so this file
+ * lives outside both features).
  */
 
 const say = <K extends keyof typeof stopMessages & string>(
@@ -25,27 +35,19 @@ function secondsLeft(ms: number): LocalText {
   return inEveryLanguage((locale) => formatSeconds(Math.max(1, Math.ceil(ms / 1000)), locale, 0));
 }
 
-/** What Stop is waiting for, said before it is done (the robot's state mirrored in the store). */
+/** What Stop is waiting for, said before it is done (the device's activity, as the store keeps it). */
 export function stoppingNotice(state: AppState, now: number): Notice {
   const c = state.connection;
+  const sound = playingSound(c);
+  const motion = playingMotion(c);
   let what: Said;
-  if (c.sounding) {
-    const left = c.sounding.startedAt + c.sounding.expectedMs - now;
+  if (sound) {
+    const left = sound.startedAt + sound.expectedMs - now;
     what = say("stop.stopping.sound", { time: secondsLeft(left) });
-  } else if (c.playing) what = say("stop.stopping.motion", { motion: String(c.playing.motion) });
+  } else if (motion) what = say("stop.stopping.motion", { motion: String(motion.motion) });
   else if (c.mode === "download") what = say("stop.stopping.upload");
   else what = say("stop.stopping");
   return noticeOf("info", state.locale, [what]);
-}
-
-/** Where tethered play stopped, and how far it got. */
-function playStopped(play: NonNullable<StopActivityResult["tetheredPlay"]>): Said {
-  const { framesSent: sent, totalFrames: total, lastFrame } = play;
-  if (!lastFrame) return say("stop.outcome.playNotStarted");
-  const frame = String(lastFrame.frame);
-  return lastFrame.scene < 0
-    ? say("stop.outcome.playStoppedTransition", { frame, sent, total })
-    : say("stop.outcome.playStoppedScene", { scene: String(lastFrame.scene), frame, sent, total });
 }
 
 /** Plain sentences, and their technical detail (shown one click away). */
@@ -58,10 +60,6 @@ interface Worded {
  * What Stop found when the panel had started nothing (docs/protocol.md §3.6): the outcome catalogue's words
  * (src/i18n/outcomes/stop-messages.ts), which `rbc stop` says too.
  */
-export function foundSaid(found: StopFound): Said[] {
-  return foundWorded(found).said;
-}
-
 function foundWorded(found: StopFound): Worded {
   const seconds = (ms: number) => inEveryLanguage((l) => formatSeconds(ms / 1000, l));
   switch (found.kind) {
@@ -79,7 +77,7 @@ function foundWorded(found: StopFound): Worded {
       return {
         said: [
           said(stopOutcomeMessages, "outcome.stop.busyUnconfirmed", { wait }),
-          saidText(inEveryLanguage((l) => noReplyCauseText(found.noReply, l))),
+          saidBy((l) => noReplyCauseText(found.noReply, l)),
         ],
         more: [said(stopOutcomeMessages, "outcome.stop.busyUnconfirmed.detail")],
       };
@@ -96,28 +94,21 @@ function foundWorded(found: StopFound): Worded {
   }
 }
 
-/** How a motion this panel started ended when Stop sent 7: the plain sentence and the 7/07 detail. */
-function motionWorded(motion: NonNullable<StopActivityResult["motion"]>): Worded {
-  const number = { motion: String(motion.number) };
-  switch (motion.outcome) {
-    case "stopped":
-      return {
-        said: [say("stop.outcome.motionStopped")],
-        more: [say("stop.outcome.motionStopped.detail", number)],
-      };
-    case "ended-then-posture":
-      return {
-        said: [say("stop.outcome.motionEnded")],
-        more: [say("stop.outcome.motionEnded.detail", number)],
-      };
-    case "posture":
-      return { said: [say("stop.outcome.posture")], more: [say("stop.outcome.posture.detail")] };
-    case "unconfirmed":
-      return {
-        said: [say("stop.outcome.motionUnconfirmed")],
-        more: [say("stop.outcome.motionUnconfirmed.detail", number)],
-      };
-  }
+/**
+ * How a motion this panel started ended when Stop sent 7: the outcome catalogue's sentence (which `rbc run` says
+ * on Ctrl-C too), what to do next in the panel's terms, and the 7/07 detail.
+ */
+function motionWorded(motion: StoppedMotion): Worded {
+  const next =
+    motion.outcome === "stopped"
+      ? [say("stop.outcome.straighten")]
+      : motion.outcome === "unconfirmed"
+        ? [say("stop.outcome.holdHint")]
+        : [];
+  return {
+    said: [saidBy((l) => stoppedMotionText(motion, l)), ...next],
+    more: [saidBy((l) => stoppedMotionDetailText(motion, l))],
+  };
 }
 
 /**
@@ -144,7 +135,8 @@ export function stopOutcome(result: StopActivityResult, limp: boolean, locale: L
     more.push(...worded.more);
     unsure ||= result.motion.outcome === "unconfirmed";
   }
-  if (result.tetheredPlay) parts.push(playStopped(result.tetheredPlay));
+  const play = result.tetheredPlay;
+  if (play) parts.push(saidBy((l) => playStoppedText(play, l)));
   if (result.leftDirectMode) {
     parts.push(limp ? say("stop.outcome.leftServoControlLimp") : say("stop.outcome.leftServoControl"));
   } else if (result.servoMovesDropped && !result.tetheredPlay) {
@@ -170,14 +162,19 @@ export function limpingNotice(locale: Locale): Notice {
   return noticeOf("warning", locale, [say("stop.limping")]);
 }
 
-/** What Limp made passive: every servo confirmed, or which did not answer. */
-export function limpNotice(result: { confirmed: number[]; silent: number[] }, locale: Locale): Notice {
-  const { confirmed, silent } = result;
-  return silent.length === 0
-    ? noticeOf("warning", locale, [say("stop.limpDone", { count: confirmed.length })])
-    : noticeOf("danger", locale, [
-        say("stop.limpPartial", { confirmed: confirmed.length, silent: silent.join(", ") }),
-      ]);
+/**
+ * What Limp made passive (every servo confirmed, or which did not answer), after the motion started elsewhere it
+ * ended first, if any: the outcome catalogue's sentences, which `rbc limp` says too.
+ */
+export function limpNotice(result: LimpFacts & { stoppedMotionFirst?: boolean }, locale: Locale): Notice {
+  const first = result.stoppedMotionFirst ? [saidBy(limpStoppedMotionFirstText)] : [];
+  const said = [...first, saidBy((l) => limpResultText(result, l))];
+  return noticeOf(result.silent.length === 0 ? "warning" : "danger", locale, said);
+}
+
+/** "Hold the robot: every servo will go passive …", the question before Limp (`rbc limp` says it too). */
+export function limpWarningSaid(): Said {
+  return saidBy(limpWarningText);
 }
 
 export function limpFailedSaid(): Said {

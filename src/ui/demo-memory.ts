@@ -1,5 +1,5 @@
-import type { SimLastingMemory } from "../../../sim/sim-memory.ts";
-import type { SimulatedRbc } from "../../../sim/simulated-rbc.ts";
+import type { SimLastingMemory } from "../sim/sim-memory.ts";
+import type { SimulatedRbc } from "../sim/simulated-rbc.ts";
 
 /**
  * The demo robot keeps its memory (issue 23 item 2), as a real RBC keeps its EEPROM and its servos their ids when
@@ -16,18 +16,6 @@ export interface DemoMemoryStorage {
   get(key: string): Promise<unknown>;
   set(key: string, memory: SimLastingMemory): Promise<void>;
   delete(key: string): Promise<void>;
-}
-
-export function memoryDemoStorage(map: Map<string, unknown> = new Map()): DemoMemoryStorage {
-  return {
-    get: async (key) => map.get(key),
-    set: async (key, memory) => {
-      map.set(key, memory);
-    },
-    delete: async (key) => {
-      map.delete(key);
-    },
-  };
 }
 
 export const DEMO_DATABASE = "rbc-panel-demo";

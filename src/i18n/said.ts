@@ -1,6 +1,6 @@
-import { type Catalogue, defineMessages, type ParamArgs } from "../i18n/catalogue.ts";
-import { LOCALES, type Locale } from "../i18n/locale.ts";
-import { translator } from "../i18n/translate.ts";
+import { type Catalogue, defineMessages, type ParamArgs } from "./catalogue.ts";
+import { LOCALES, type Locale } from "./locale.ts";
+import { translator } from "./translate.ts";
 
 /**
  * A message kept as what it says, not as a sentence: the catalogue it is in, its key (the stable code of the
@@ -47,8 +47,9 @@ export function inEveryLanguage(make: (locale: Locale) => string): LocalText {
   return out as LocalText;
 }
 
-function isSaid(fact: Fact): fact is Said {
-  return typeof fact === "object" && "key" in fact;
+/** Whether `value` is a message (`said(…)`), e.g. what an error that words itself carries. */
+export function isSaid(value: unknown): value is Said {
+  return typeof value === "object" && value !== null && "catalogue" in value && "key" in value;
 }
 
 function factIn(fact: Fact, locale: Locale): string | number {
@@ -75,4 +76,14 @@ const saidMessages = defineMessages({ "said.text": { en: "{text}", ko: "{text}" 
 /** A sentence made in every language elsewhere (a device error's own words), as a message. */
 export function saidText(text: LocalText): Said {
   return said(saidMessages, "said.text", { text });
+}
+
+/** A sentence the outcome catalogue words from its facts (a words function of src/i18n/outcomes), as a message. */
+export function saidBy(words: (locale: Locale) => string): Said {
+  return saidText(inEveryLanguage(words));
+}
+
+/** Several messages as one (a failure and what to do about it), worded together in each language. */
+export function saidTogether(sentences: readonly Said[]): Said {
+  return saidBy((locale) => wordsOf(sentences, locale));
 }
