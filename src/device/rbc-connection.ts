@@ -4,7 +4,7 @@
  * operations on top of it live in their own files (motion-run.ts, stop.ts, limp.ts, …), its options in
  * connection-options.ts.
  */
-import { LinkError, type LinkFacts, type Transport, type TransportStatusEvent } from "../link/transport.ts";
+import { LinkError, type Transport, type TransportStatusEvent } from "../link/transport.ts";
 import { concatBytes } from "../protocol/bytes.ts";
 import { ABANDON_DOWNLOAD } from "../protocol/catalog.ts";
 import {
@@ -110,8 +110,6 @@ export class RbcConnection {
    */
   unsolicited: ((packet: Packet) => boolean | undefined) | undefined;
   private unlisten: Array<() => void> = [];
-  /** Why the link was lost last, as the link's facts (the catalogue words them), while disconnected. */
-  private lostCause: LinkFacts | undefined;
   /**
    * Types of quick requests whose reply may still arrive (the request timed out or was cancelled, or a reply
    * of that type came unasked). The next request of such a type is fenced first (see `fence`), so that a late
@@ -204,6 +202,7 @@ export class RbcConnection {
     this.setState({
       mode: "connecting",
       reason: undefined,
+      lostCause: undefined,
       basicPostureConfirmed: false,
       subscription: undefined,
     });
@@ -505,7 +504,7 @@ export class RbcConnection {
         undefined,
         lost === LINK_LOST
           ? undefined
-          : { kind: "link-lost", reported: lost, cause: this.lostCause, advice: "connect-again" },
+          : { kind: "link-lost", reported: lost, cause: this._state.lostCause, advice: "connect-again" },
       );
     }
     if (this.mode === "direct") {
@@ -594,7 +593,6 @@ export class RbcConnection {
     // The link says what happened (a technical line, and its facts for the catalogue); without it, the error is
     // worded by its code (a lost link).
     const reason = event.reason ?? LINK_LOST;
-    this.lostCause = event.cause;
     const situation =
       event.reason === undefined
         ? undefined
@@ -604,6 +602,7 @@ export class RbcConnection {
     this.setState({
       mode: "disconnected",
       reason,
+      lostCause: event.cause,
       playing: undefined,
       sounding: undefined,
       subscription: undefined,
