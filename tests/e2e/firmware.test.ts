@@ -313,7 +313,7 @@ describe("in Korean (ko-KR)", () => {
       });
     }
 
-    it("says in Korean why a file is refused and what a cancelled update leaves, with the device's English in the detail", {
+    it("says in Korean why a file is refused and what a cancelled update leaves, with the device's technical line in the detail", {
       timeout: 60_000,
     }, async () => {
       const { page, context } = await newLocalePage(app, "ko-KR", { options: { timeScale: 2 } });
@@ -360,7 +360,7 @@ describe("in Korean (ko-KR)", () => {
       );
       await expectText(
         result.locator("pre"),
-        "FirmwareUpdateError (cancelled): The firmware update was cancelled. The robot's firmware may now be incomplete, and the robot may not work until an update succeeds. The bootloader is never overwritten: switch the robot off and on and run the update again.",
+        "FirmwareUpdateError (cancelled): firmware update cancelled; robot holds incomplete-firmware",
       );
       await expectText(page.getByTestId("fw-version"), "2.23");
       await expectLaidOut(page, "the cancelled update");
