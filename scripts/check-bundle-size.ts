@@ -12,9 +12,12 @@
  * What counts and how it is measured: bench/bundle-size.ts (scripts and modulepreloads of index.html plus their
  * static imports and the language's word chunks they load, and the style sheets it links plus their @imports;
  * each file gzipped at level 9, 1 KB = 1,000 bytes). Exit 0 within budget, 1 over it or on error.
+ *
+ * It also fails if a file of the build (its scripts and pages, source maps aside) holds the browser tests' start
+ * option (src/ui/test-start.ts, a robot connected at start): only the tests' build may contain it.
  */
-import { existsSync } from "node:fs";
-import { join } from "node:path";
+import { existsSync, readdirSync, readFileSync } from "node:fs";
+import { join, relative } from "node:path";
 import {
   BUNDLE_LOCALES,
   describeContributors,
@@ -27,6 +30,16 @@ import {
   viteBuild,
   viteBuildSingle,
 } from "../bench/bundle-size.ts";
+import { TEST_START_NAME } from "../src/ui/test-start.ts";
+
+/** The files under `dir` (source maps aside: they quote the source, comments and all) that name the start option. */
+function withTestStart(dir: string): string[] {
+  return readdirSync(dir, { recursive: true, withFileTypes: true })
+    .filter((entry) => entry.isFile() && !entry.name.endsWith(".map"))
+    .map((entry) => join(entry.parentPath, entry.name))
+    .filter((file) => readFileSync(file, "latin1").includes(TEST_START_NAME))
+    .map((file) => relative(dir, file));
+}
 
 const args = process.argv.slice(2);
 const distIndex = args.indexOf("--dist");
@@ -38,6 +51,14 @@ try {
     await viteBuild(outDir);
     process.stderr.write(`check-bundle-size: building the one-file panel into ${outDir}\n`);
     await viteBuildSingle(outDir);
+  }
+  const testOnly = withTestStart(outDir);
+  if (testOnly.length > 0) {
+    process.stderr.write(
+      `check-bundle-size: FAILED. The browser tests' start option (${TEST_START_NAME}) is in the production ` +
+        `build: ${testOnly.join(", ")}. Only the tests' build (mode "e2e") may contain src/ui/test-start.ts.\n`,
+    );
+    process.exit(1);
   }
   const single = existsSync(join(outDir, SINGLE_FILE_NAME))
     ? `One-file panel: ${describeSingleFile(measureSingleFile(outDir))}`

@@ -55,6 +55,23 @@ export interface UploadActivity {
   since: number;
   /** Aborts the upload as its own Cancel does (Stop uses it). */
   abort: AbortController;
+  /**
+   * Its Cancel was pressed (clock ms): no further read, reset or chunk is sent, and the upload ends after the
+   * chunk in flight. Set for the whole upload, the reads and the reset before the download too.
+   */
+  cancelling?: { since: number };
+}
+
+/**
+ * A firmware update through the bootloader (docs/protocol.md §11): the robot is being switched off and on, takes
+ * the file, restarts. Stop does not end it (a half-written firmware leaves a robot that does nothing); its own
+ * Cancel does.
+ */
+export interface FirmwareActivity {
+  kind: "firmware";
+  since: number;
+  /** Its Cancel was pressed (clock ms): the update ends at once, or after the version read in flight. */
+  cancelling?: { since: number };
 }
 
 export interface DirectActivity {
@@ -69,6 +86,7 @@ export type Doing =
   | BusyActivity
   | SoundActivity
   | UploadActivity
+  | FirmwareActivity
   | DirectActivity;
 
 /** Stop or Limp under way; `done` is the promise a second press joins. */
@@ -97,6 +115,10 @@ export type ActivityTransition =
   | "soundEnded"
   | "startUpload"
   | "uploadEnded"
+  | "cancelUpload"
+  | "startFirmware"
+  | "cancelFirmware"
+  | "firmwareEnded"
   | "enterDirect"
   | "handDirect"
   | "exitDirect"

@@ -8,6 +8,7 @@ import type {
   DirectActivity,
   DirectUse,
   Doing,
+  FirmwareActivity,
   Halt,
   MotionActivity,
   SoundActivity,
@@ -23,8 +24,9 @@ import type { StopActivityResult } from "./stop.ts";
  * "device/"). Two regions:
  *
  * - `doing`: idle; a motion this client started (its number, when it was sent, whether 7 was sent to end it);
- *   a motion started elsewhere (`busy`: noticed, not started here); a sound; an upload; direct mode and what
- *   uses it (servo control, teach-in, tethered play, Limp).
+ *   a motion started elsewhere (`busy`: noticed, not started here); a sound; an upload or a firmware update
+ *   (each with its Cancel, once pressed: `cancelling`); direct mode and what uses it (servo control, teach-in,
+ *   tethered play, Limp).
  * - `halt`: nothing, Stop under way, or Limp under way. Stop and Limp run beside the operation they end.
  * - `limp`: every servo was made passive (a Limp that resolved) and none has been driven since: a motion (this
  *   client's, or one noticed playing elsewhere), a servo move or tethered play drives them again. Leaving direct
@@ -43,6 +45,7 @@ export type {
   DirectActivity,
   DirectUse,
   Doing,
+  FirmwareActivity,
   Halt,
   IdleActivity,
   MotionActivity,
@@ -122,6 +125,10 @@ export class Activity {
 
   get upload(): Readonly<UploadActivity> | undefined {
     return this.#doing.kind === "upload" ? this.#doing : undefined;
+  }
+
+  get firmware(): Readonly<FirmwareActivity> | undefined {
+    return this.#doing.kind === "firmware" ? this.#doing : undefined;
   }
 
   get direct(): Readonly<DirectActivity> | undefined {
@@ -266,6 +273,44 @@ export class Activity {
   uploadEnded(abort: AbortController): void {
     const doing = this.#doing;
     if (doing.kind !== "upload" || doing.abort !== abort) return;
+    this.#enter({ kind: "idle", since: this.#clock.now() });
+  }
+
+  /**
+   * The upload of `abort` was cancelled by its own Cancel: it sends nothing more and ends after the chunk in
+   * flight. Once; another state is left as it is (an upload cancelled before its first turn, or already over).
+   */
+  cancelUpload(abort: AbortController): void {
+    const doing = this.#doing;
+    if (doing.kind !== "upload" || doing.abort !== abort || doing.cancelling) return;
+    this.#doing = { ...doing, cancelling: { since: this.#clock.now() } };
+    this.#changed();
+  }
+
+  // ---- Firmware update ------------------------------------------------------------------------------------
+
+  /**
+   * A firmware update begins: from idle, or over a motion started elsewhere (switching the robot off and on ends
+   * it). Whatever the servos held is gone with the restart.
+   */
+  startFirmware(): void {
+    const from = this.#doing.kind;
+    if (from !== "idle" && from !== "busy") this.#refuse("startFirmware");
+    this.#limp = false;
+    this.#enter({ kind: "firmware", since: this.#clock.now() });
+  }
+
+  /** The update's Cancel was pressed. Once; another state is left as it is (the update is over). */
+  cancelFirmware(): void {
+    const doing = this.#doing;
+    if (doing.kind !== "firmware" || doing.cancelling) return;
+    this.#doing = { ...doing, cancelling: { since: this.#clock.now() } };
+    this.#changed();
+  }
+
+  /** The update ended, however it ended: the robot restarted (or kept its firmware). Another state is left as is. */
+  firmwareEnded(): void {
+    if (this.#doing.kind !== "firmware") return;
     this.#enter({ kind: "idle", since: this.#clock.now() });
   }
 

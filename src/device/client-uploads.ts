@@ -8,26 +8,34 @@ import { uploadFile } from "./upload.ts";
 /**
  * Runs an upload (`uploadMotion`, `uploadAction`, `writeMotion`, `writeAction`) as the activity machine's
  * `upload`: its first turn on the link starts it (only from idle), Stop and Limp abort it through its
- * controller (as its own Cancel does), and it ends however the upload ends.
+ * controller (as its own Cancel does), and it ends however the upload ends. Its own Cancel (`signal`) makes it
+ * `cancelling` in the machine at once, whichever step it is at, and every later turn (a read, the reset, the
+ * download) is refused before anything is sent.
  */
 export async function stoppableUpload<T>(
   core: ClientCore,
+  signal: AbortSignal | undefined,
   upload: (host: UploadHost) => Promise<T>,
 ): Promise<T> {
   const abort = new AbortController();
+  const cancel = () => core.activity.cancelUpload(abort);
+  signal?.addEventListener("abort", cancel, { once: true });
   try {
-    return await upload(uploadHost(core, abort));
+    return await upload(uploadHost(core, abort, signal));
   } finally {
+    signal?.removeEventListener("abort", cancel);
     core.activity.uploadEnded(abort);
   }
 }
 
-/** The upload's turns on the link; each one after Stop or Limp aborted it is refused. */
-function uploadHost(core: ClientCore, abort: AbortController): UploadHost {
+/** The upload's turns on the link; each one after Stop, Limp or its own Cancel is refused. */
+function uploadHost(core: ClientCore, abort: AbortController, signal: AbortSignal | undefined): UploadHost {
   const { c, activity } = core;
   const turn = <T>(fn: () => Promise<T>, last = false): Promise<T> =>
     c.exclusive(async () => {
       if (abort.signal.aborted) throw new RbcCancelledError();
+      if (signal?.aborted)
+        throw new RbcCancelledError(undefined, undefined, { kind: "upload-cancelled-early" });
       activity.startUpload(abort);
       try {
         return await fn();
@@ -46,7 +54,7 @@ function uploadHost(core: ClientCore, abort: AbortController): UploadHost {
             { client: c, raw: c.raw, now: () => c.clock.now(), sleep: (ms: number) => c.sleep(ms) },
             area,
             bytes,
-            { ...options, signal: eitherSignal(options.signal, abort.signal) },
+            { ...options, signal: eitherSignal(signal, abort.signal) },
           ),
         true,
       ),

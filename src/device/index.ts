@@ -6,6 +6,7 @@ export {
   type DirectActivity,
   type DirectUse,
   type Doing,
+  type FirmwareActivity,
   type Halt,
   type IdleActivity,
   type MotionActivity,

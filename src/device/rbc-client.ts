@@ -304,7 +304,7 @@ export class RbcClient {
    */
   async uploadMotion(motion: RbmMotion, options: FileUploadOptions = {}): Promise<FileUploadResult> {
     const payload = motionPayload(motion);
-    const result = await stoppableUpload(this.#core, (host) =>
+    const result = await stoppableUpload(this.#core, options.signal, (host) =>
       uploadFileTo(host, "motion", payload, options),
     );
     // Recorded, so that a later Run of it is judged against its duration (docs/protocol.md §3.1).
@@ -316,7 +316,9 @@ export class RbcClient {
 
   /** Uploads an action file's bytes as they are (type 0x02), like `uploadMotion` (the format is unverified). */
   uploadAction(bytes: Uint8Array, options: FileUploadOptions = {}): Promise<FileUploadResult> {
-    return stoppableUpload(this.#core, (host) => uploadFileTo(host, "action", bytes.slice(), options));
+    return stoppableUpload(this.#core, options.signal, (host) =>
+      uploadFileTo(host, "action", bytes.slice(), options),
+    );
   }
 
   /**
@@ -334,12 +336,19 @@ export class RbcClient {
   ): Promise<FirmwareUpdateResult> {
     // Checked before the queue: a bad file rejects at once and changes nothing.
     const image = typeof hex === "string" ? parseIntelHex(hex) : hex;
+    const { activity } = this.#core;
+    const cancel = () => activity.cancelFirmware();
     return this.#c.exclusive(
       async () => {
         const io = connectionFirmwareIo(this.#c);
+        // Known to the activity machine from the first byte to the restart; its Cancel makes it `cancelling`.
+        activity.startFirmware();
+        options.signal?.addEventListener("abort", cancel, { once: true });
         try {
           return await updateFirmware(io, image, options);
         } finally {
+          options.signal?.removeEventListener("abort", cancel);
+          activity.firmwareEnded();
           this.#c.parser.reset();
           this.#c.subscription = undefined;
           // A restarted RBC ignores every motion until 7 has run again (docs/protocol.md §3.1).
@@ -367,12 +376,12 @@ export class RbcClient {
 
   /** Uploads a motion image (type 0x01) chunk by chunk (docs/protocol.md §6.2); `uploadMotion` builds the image. */
   writeMotion(bytes: Uint8Array, options: UploadOptions = {}): Promise<UploadResult> {
-    return stoppableUpload(this.#core, (host) => host.upload("motion", bytes, options));
+    return stoppableUpload(this.#core, options.signal, (host) => host.upload("motion", bytes, options));
   }
 
   /** Uploads an action file's bytes as they are (type 0x02); the action format is unverified. */
   writeAction(bytes: Uint8Array, options: UploadOptions = {}): Promise<UploadResult> {
-    return stoppableUpload(this.#core, (host) => host.upload("action", bytes, options));
+    return stoppableUpload(this.#core, options.signal, (host) => host.upload("action", bytes, options));
   }
 
   // ---- Events ------------------------------------------------------------------------------------------

@@ -134,6 +134,9 @@ function startApp(root: HTMLElement, locale: Locale): void {
   }
 
   renderNow();
+  // The browser tests' start option (a robot connected at start, src/ui/test-start.ts) is only in their build
+  // (mode "e2e"): in any other, this condition is false when the code is built, and the module is left out.
+  if (import.meta.env.MODE === "e2e") void import("./test-start.ts").then((m) => m.applyTestStart(app));
 }
 
 const root = document.getElementById("app");

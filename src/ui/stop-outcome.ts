@@ -14,7 +14,7 @@ import {
 import { inEveryLanguage, type LocalText, type Said, said, saidBy } from "../i18n/said.ts";
 import { formatMilliseconds, formatSeconds } from "../i18n/units.ts";
 import { type AppState, type Notice, noticeOf } from "./app-state.ts";
-import { playingMotion, playingSound } from "./features/connection/index.ts";
+import { isUploading, playingMotion, playingSound } from "./features/connection/index.ts";
 import { stopMessages } from "./stop-messages.ts";
 
 /**
@@ -45,7 +45,7 @@ export function stoppingNotice(state: AppState, now: number): Notice {
     const left = sound.startedAt + sound.expectedMs - now;
     what = say("stop.stopping.sound", { time: secondsLeft(left) });
   } else if (motion) what = say("stop.stopping.motion", { motion: String(motion.motion) });
-  else if (c.mode === "download") what = say("stop.stopping.upload");
+  else if (isUploading(c)) what = say("stop.stopping.upload");
   else what = say("stop.stopping");
   return noticeOf("info", state.locale, [what]);
 }

@@ -1,16 +1,17 @@
 import type { Page } from "playwright-core";
+import { loadConnected } from "./connected-page.ts";
 
 /**
  * What several Editor browser tests do the same way: open the Editor with the demo robot connected, and store a
  * draft record straight into the panel's IndexedDB (as an older panel, or a broken write, left it).
  */
 
-/** Loads the panel at `url`, connects the demo robot and opens the Editor on its pose table. */
+/**
+ * Loads the panel at `url` in the Editor with the demo robot connected (a page opened with the start option
+ * `DEMO`), and waits for its pose table.
+ */
 export async function openEditorOnDemo(page: Page, url: string): Promise<void> {
-  await page.goto(url);
-  await page.getByRole("button", { name: "Try the demo robot" }).click();
-  await page.getByTestId("device-card").waitFor();
-  await page.getByRole("link", { name: "Editor" }).click();
+  await loadConnected(page, url, "editor");
   await page.getByTestId("pose-table").waitFor();
 }
 

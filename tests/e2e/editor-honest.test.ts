@@ -1,5 +1,6 @@
 import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
+import { DEMO } from "./connected-page.ts";
 import { openEditorOnDemo } from "./editor-fixtures.ts";
 import { expectText, FAST, squash, useApp } from "./harness.ts";
 import "./rbc-test-globals.ts";
@@ -15,7 +16,7 @@ async function showTab(page: Page, tab: "pose" | "teach" | "play"): Promise<void
 
 describe("the Editor's questions match what the robot will do", () => {
   it("Play on robot names the servos it will hold at the edge of their safe range, with the values", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
+    const { page, context } = await app.newPage({ start: DEMO, options: FAST });
     await openEditorOnDemo(page, app.url);
     // docs/protocol.md §5: servo 0's safe range ends at 174; the motion asks for 200.
     await showTab(page, "pose");
@@ -43,7 +44,7 @@ describe("the Editor's questions match what the robot will do", () => {
   });
 
   it("Teach-in after Limp says every servo stays limp, not that every servo holds", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
+    const { page, context } = await app.newPage({ start: DEMO, options: FAST });
     await openEditorOnDemo(page, app.url);
     await page.locator("#limp-button").click();
     await page.locator("#confirm-limp").click();
@@ -61,7 +62,7 @@ describe("the Editor's questions match what the robot will do", () => {
   });
 
   it("Teach-in after Limp and then Stop (which leaves servo control and moves no servo) still says every servo is limp", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
+    const { page, context } = await app.newPage({ start: DEMO, options: FAST });
     await openEditorOnDemo(page, app.url);
     await page.locator("#limp-button").click();
     await page.locator("#confirm-limp").click();

@@ -6,6 +6,7 @@
  */
 import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
+import { DEMO } from "./connected-page.ts";
 import { openEditorOnDemo } from "./editor-fixtures.ts";
 import { expectText, FAST, squash, useApp } from "./harness.ts";
 import "./rbc-test-globals.ts";
@@ -123,7 +124,7 @@ async function endValues(page: Page, ids: number[]): Promise<number[]> {
 
 describe("editor: teach-in and tethered play on the demo robot", () => {
   it("makes a three-scene motion by hand, plays it through the frames of §10, and Stop holds", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
+    const { page, context } = await app.newPage({ start: DEMO, options: FAST });
     await openEditorOnDemo(page, app.url);
     expect(await positions(page)).toEqual(POSTURE);
 

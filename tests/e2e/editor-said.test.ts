@@ -8,6 +8,7 @@
  */
 import type { Locator, Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { DEMO } from "./connected-page.ts";
 import { openEditorOnDemo, storeDraft } from "./editor-fixtures.ts";
 import { type AppHarness, FAST, squash, startHarness } from "./harness.ts";
 import { rbmFile } from "./motion-fixtures.ts";
@@ -42,7 +43,7 @@ async function showTab(page: Page, tab: "pose" | "tools"): Promise<void> {
 
 describe("the Editor's messages follow a language switch", () => {
   it("a play result, a deleted draft and a file not opened read in Korean after the switch and in English after the switch back", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
+    const { page, context } = await app.newPage({ start: DEMO, options: FAST });
     await openEditorOnDemo(page, app.url);
 
     // A draft of the motion, named so that its name is a fact of the sentences below.

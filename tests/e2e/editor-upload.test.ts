@@ -12,6 +12,8 @@
  */
 import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
+import type { TestStart } from "../../src/ui/test-start.ts";
+import { CABLE, DEMO, loadConnected } from "./connected-page.ts";
 import { expectText, FAST, type PageOptions, releaseRobot, squash, useApp, watchText } from "./harness.ts";
 import { axeProblems, expectPageOk, PHONE, pageProblems, shot } from "./i18n-checks.ts";
 import "./rbc-test-globals.ts";
@@ -64,14 +66,13 @@ async function openEditorPlay(page: Page, words: { editor: string; addAfter: str
 const EN = { editor: "Editor", addAfter: "Add after" };
 
 /**
- * A new page connected to a robot by the button named `connect` (the demo robot or the fake cable), once its
- * motion memory is read (all 24,576 bytes free), showing the Editor's Play tab with a second scene added.
+ * A new page with a robot connected at start (`start`: the demo robot or the fake cable), once the Robot view has
+ * read its motion memory (all 24,576 bytes free), showing the Editor's Play tab with a second scene added.
  */
-async function openOnRobot(options: PageOptions, connect: string, words: typeof EN) {
-  const opened = await app.newPage(options);
+async function openOnRobot(options: PageOptions, start: TestStart, words: typeof EN) {
+  const opened = await app.newPage({ ...options, start });
   const { page } = opened;
-  await page.goto(app.url, { waitUntil: "domcontentloaded" });
-  await page.getByRole("button", { name: connect, exact: true }).click();
+  await loadConnected(page, app.url);
   await page.getByTestId("device-card").waitFor();
   await page.getByTestId("memory-motion-text").filter({ hasText: "24,576" }).waitFor();
   await openEditorPlay(page, words);
@@ -88,7 +89,7 @@ async function editServo0End(page: Page, value: string): Promise<void> {
 
 describe("the Editor: upload to the robot and run it there", () => {
   it("uploads the draft with progress in place, runs it as motion 12 (remote key 1), and says when the robot holds an earlier version", async () => {
-    const { page, context } = await openOnRobot({ options: FAST }, "Try the demo robot", EN);
+    const { page, context } = await openOnRobot({ options: FAST }, DEMO, EN);
 
     // One line near the two buttons says how storing differs from tethered play.
     await expectText(
@@ -188,7 +189,7 @@ describe("the Editor: upload to the robot and run it there", () => {
   });
 
   it("refuses while a motion plays, with the busy sentence and a Stop beside it; Escape stops a run started here", async () => {
-    const { page, context } = await openOnRobot({ options: FAST }, "Try the demo robot", EN);
+    const { page, context } = await openOnRobot({ options: FAST }, DEMO, EN);
     // Scene 1 moves servo 0, so that motion 12 moves a servo (and can be caught playing).
     await editServo0End(page, "100");
     await page.getByRole("button", { name: "Upload to robot" }).click();
@@ -241,7 +242,7 @@ describe("the Editor: upload to the robot and run it there", () => {
   });
 
   it("on a real robot (the fake cable) asks first, as the Motions upload does, then stores it", async () => {
-    const { page, context } = await openOnRobot({ options: FAST }, "Connect robot", EN);
+    const { page, context } = await openOnRobot({ options: FAST }, CABLE, EN);
     await expectText(
       page.getByTestId("editor-upload-why"),
       "Asks for confirmation first: uploading to a real robot is experimental.",
@@ -267,11 +268,10 @@ async function openEditorTab(page: Page, tab: "pose" | "play"): Promise<void> {
 
 describe("in Korean (ko-KR), at phone width", () => {
   it("says it all in Korean, fits and passes axe", async () => {
-    const { page, context } = await openOnRobot(
-      { locale: "ko-KR", viewport: PHONE, options: FAST },
-      "데모 로봇 써 보기",
-      { editor: "편집기", addAfter: "뒤에 추가" },
-    );
+    const { page, context } = await openOnRobot({ locale: "ko-KR", viewport: PHONE, options: FAST }, DEMO, {
+      editor: "편집기",
+      addAfter: "뒤에 추가",
+    });
     await expectText(card(page).getByRole("heading", { level: 2 }), "로봇에 저장");
     await expectText(
       page.getByTestId("editor-robot-difference"),

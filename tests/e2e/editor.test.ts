@@ -4,6 +4,7 @@ import type { Download, Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
 import { mirrorPosition } from "../../src/motion/index.ts";
 import { HUNO_BASIC_POSTURE, parseRbm, STANDARD_ZEROS } from "../../src/protocol/index.ts";
+import { DEMO, loadConnected } from "./connected-page.ts";
 import { cspViolations, expectText, FAST, squash, useApp, watchPage } from "./harness.ts";
 import { rbmFile } from "./motion-fixtures.ts";
 import "./rbc-test-globals.ts";
@@ -431,12 +432,12 @@ describe("in Korean (ko-KR)", () => {
     return squash(await page.getByTestId(where).locator(".live .notice p").first().textContent());
   }
 
-  /** Connects the demo robot from the Korean start card and opens the Editor with a second scene added. */
+  /**
+   * Opens the Editor with the demo robot connected (a page opened with the start option `DEMO`; the Korean demo
+   * button is connect.test.ts's) and a second scene added.
+   */
   async function openEditor(page: Page): Promise<void> {
-    await page.goto(app.url, { waitUntil: "domcontentloaded" });
-    await page.getByRole("button", { name: "데모 로봇 써 보기", exact: true }).click();
-    await page.getByTestId("device-card").waitFor();
-    await page.getByRole("link", { name: "편집기", exact: true }).click();
+    await loadConnected(page, app.url, "editor");
     await page.getByTestId("editor").waitFor();
     await page.getByRole("button", { name: "뒤에 추가" }).click();
     await page.locator("#scene-opt-1[aria-current=true]").waitFor();
@@ -456,7 +457,12 @@ describe("in Korean (ko-KR)", () => {
   describe("the Editor in Korean", () => {
     for (const viewport of VIEWPORTS) {
       it(`is in Korean in every tab, fits and passes axe at ${viewport.width}×${viewport.height}`, async () => {
-        const { page, context } = await app.newPage({ locale: "ko-KR", viewport, options: FAST });
+        const { page, context } = await app.newPage({
+          locale: "ko-KR",
+          start: DEMO,
+          viewport,
+          options: FAST,
+        });
         await openEditor(page);
         await expect.poll(() => lang(page)).toBe("ko");
         await expectText(page.getByRole("heading", { level: 1 }), "모션 편집기");

@@ -3,17 +3,10 @@ import { join } from "node:path";
 import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
 import { firmwareHex, firmwareHexWithBadChecksum } from "../support/hex.ts";
+import { DEMO, loadConnected } from "./connected-page.ts";
 import { expectText, ROOT, squash, useApp, watchPage } from "./harness.ts";
 import "./rbc-test-globals.ts";
-import {
-  connectDemo,
-  DESKTOP,
-  expectPageOk,
-  keysShown,
-  pageLang as lang,
-  newLocalePage,
-  PHONE,
-} from "./i18n-checks.ts";
+import { DESKTOP, expectPageOk, keysShown, pageLang as lang, newLocalePage, PHONE } from "./i18n-checks.ts";
 
 /**
  * The Firmware view on the demo robot (its bootloader in front of the simulated RBC; the panel switches it off
@@ -33,11 +26,9 @@ async function shot(page: Page, name: string): Promise<void> {
   await page.screenshot({ path: join(dir, `${name}.png`), fullPage: true });
 }
 
+/** The Firmware view with the demo robot connected (a page opened with the start option `DEMO`). */
 async function openFirmwareOnDemo(page: Page): Promise<void> {
-  await page.goto(app.url, { waitUntil: "domcontentloaded" });
-  await page.getByRole("button", { name: "Try the demo robot" }).click();
-  await page.getByTestId("device-card").waitFor();
-  await page.getByRole("link", { name: "Firmware" }).click();
+  await loadConnected(page, app.url, "firmware");
   await page.getByTestId("firmware-view").waitFor();
 }
 
@@ -49,7 +40,11 @@ describe("Firmware view on the demo robot", () => {
     it(`flashes the demo file and the version shown changes to 2.50 (${variant.name})`, {
       timeout: 60_000,
     }, async () => {
-      const { page } = await app.newPage({ viewport: variant.viewport, options: { timeScale: 4 } });
+      const { page } = await app.newPage({
+        start: DEMO,
+        viewport: variant.viewport,
+        options: { timeScale: 4 },
+      });
       await page.emulateMedia({ colorScheme: variant.dark ? "dark" : "light" });
       const seen = watchPage(page, app.origin);
       await openFirmwareOnDemo(page);
@@ -112,7 +107,7 @@ describe("Firmware view on the demo robot", () => {
   it("Cancel mid-way says the firmware may be incomplete; a bad file names its line", {
     timeout: 60_000,
   }, async () => {
-    const { page } = await app.newPage({ options: { timeScale: 2 } });
+    const { page } = await app.newPage({ start: DEMO, options: { timeScale: 2 } });
     await openFirmwareOnDemo(page);
 
     // A bad file first: refused with the line to blame, nothing opened.
@@ -216,10 +211,9 @@ describe("in Korean (ko-KR)", () => {
   const expectLaidOut = (page: Page, where: string, shotName?: string) =>
     expectPageOk(page, where, { axe: false, shot: shotName });
 
-  /** The demo robot (the connect card's second button, whatever its language), then the Firmware view. */
+  /** The Firmware view with the demo robot connected, in a browser in Korean (the start option `DEMO`). */
   async function openFirmwareOnDemo(page: Page): Promise<void> {
-    await connectDemo(page);
-    await page.getByRole("link", { name: "펌웨어" }).click();
+    await loadConnected(page, app.url, "firmware");
     await page.getByTestId("firmware-view").waitFor();
   }
 
@@ -242,9 +236,13 @@ describe("in Korean (ko-KR)", () => {
       it(`shows the file, the confirmation, progress and the result in Korean (${name})`, {
         timeout: 60_000,
       }, async () => {
-        const { page, context } = await app.newPage({ locale: "ko-KR", viewport, options: { timeScale: 4 } });
+        const { page, context } = await app.newPage({
+          locale: "ko-KR",
+          start: DEMO,
+          viewport,
+          options: { timeScale: 4 },
+        });
         const seen = watchPage(page, app.origin);
-        await page.goto(app.url, { waitUntil: "domcontentloaded" });
         await openFirmwareOnDemo(page);
         await expect.poll(() => lang(page)).toBe("ko");
         const view = page.getByTestId("firmware-view");
@@ -316,7 +314,11 @@ describe("in Korean (ko-KR)", () => {
     it("says in Korean why a file is refused and what a cancelled update leaves, with the device's technical line in the detail", {
       timeout: 60_000,
     }, async () => {
-      const { page, context } = await newLocalePage(app, "ko-KR", { options: { timeScale: 2 } });
+      const { page, context } = await app.newPage({
+        locale: "ko-KR",
+        start: DEMO,
+        options: { timeScale: 2 },
+      });
       await openFirmwareOnDemo(page);
 
       await page.getByTestId("fw-file-input").setInputFiles({
@@ -360,6 +362,8 @@ describe("in Korean (ko-KR)", () => {
       );
       await expectText(
         result.locator("pre"),
+        // The technical detail is the device's own technical line (its code and facts); the sentence above is the
+        // outcome catalogue's (docs/architecture.md: the words of outcomes stand above the device).
         "FirmwareUpdateError (cancelled): firmware update cancelled; robot holds incomplete-firmware",
       );
       await expectText(page.getByTestId("fw-version"), "2.23");
@@ -414,7 +418,11 @@ describe("in Korean (ko-KR)", () => {
     it("axe finds no violation: the file, the confirmation, the progress and the result", {
       timeout: 60_000,
     }, async () => {
-      const { page, context } = await newLocalePage(app, "ko-KR", { options: { timeScale: 4 } });
+      const { page, context } = await app.newPage({
+        locale: "ko-KR",
+        start: DEMO,
+        options: { timeScale: 4 },
+      });
       await openFirmwareOnDemo(page);
       await expect.poll(() => lang(page)).toBe("ko");
       await expectPageOk(page, "the Firmware view", { lang: "ko" });

@@ -13,6 +13,7 @@ import { fileURLToPath } from "node:url";
 import type { Browser, BrowserContext, Disposable, Locator, Page } from "playwright-core";
 import { build, preview } from "vite";
 import { afterAll, afterEach, beforeAll, expect } from "vitest";
+import { TEST_START_NAME, type TestStart } from "../../src/ui/test-start.ts";
 import { launchChromium } from "../support/chromium.ts";
 import type { RbcTestOptions } from "./rbc-test-globals.ts";
 
@@ -49,8 +50,15 @@ async function listFiles(path: string): Promise<string[]> {
   return out;
 }
 
+/**
+ * The mode of the tests' build: like `npm run build`, plus the tests' start option (src/ui/test-start.ts), which
+ * only a build in this mode contains.
+ */
+const TEST_BUILD_MODE = "e2e";
+
 async function inputsHash(): Promise<string> {
   const hash = createHash("sha256");
+  hash.update(`mode ${TEST_BUILD_MODE}\n`);
   const files = (await Promise.all(INPUTS.map((p) => listFiles(join(ROOT, p))))).flat().sort();
   for (const file of files) {
     hash.update(relative(ROOT, file));
@@ -103,6 +111,7 @@ export async function buildOnce(): Promise<{ outDir: string; fakeSerial: string 
     await build({
       root: ROOT,
       configFile: join(ROOT, "vite.config.ts"),
+      mode: TEST_BUILD_MODE,
       logLevel: "warn",
       build: { outDir: join(work, "app"), emptyOutDir: true },
     });
@@ -143,6 +152,13 @@ export interface PageOptions {
   serviceWorkers?: "allow" | "block";
   /** The browser's language (navigator.language, Accept-Language), e.g. "ko-KR"; English by default. */
   locale?: string;
+  /** The tests' start option: the panel connects this robot as it starts (src/ui/test-start.ts). */
+  start?: TestStart;
+  /**
+   * The page stays open after the test that opened it, for the next tests of a describe that look at the same
+   * page in order (`sharedConnectedPage`), until its context is closed.
+   */
+  kept?: boolean;
 }
 
 /**
@@ -162,7 +178,7 @@ export interface AppHarness {
   origin: string;
   browser: Browser;
   newPage(options?: PageOptions): Promise<{ context: TestContext; page: Page }>;
-  /** Hands back every context a test still holds (after each test). */
+  /** Hands back every context a test still holds (after each test), but for kept pages (`PageOptions.kept`). */
   releaseAll(): Promise<void>;
   close(): Promise<void>;
 }
@@ -183,6 +199,8 @@ interface PooledContext {
   /** The current test's init script (fake serial port, its options), removed when the context is handed back. */
   script: Disposable | undefined;
   inUse: boolean;
+  /** Not handed back after each test (`PageOptions.kept`), only by its `close`. */
+  kept: boolean;
 }
 
 const DEFAULT_VIEWPORT = { width: 1280, height: 800 };
@@ -222,6 +240,7 @@ export async function startHarness(): Promise<AppHarness> {
       await entry.context.clearPermissions();
       await entry.context.setOffline(false);
       entry.inUse = false;
+      entry.kept = false;
     } catch {
       // A context that cannot be put back (its browser crashed, a test closed it) is not used again.
       pool.delete(entry);
@@ -242,7 +261,7 @@ export async function startHarness(): Promise<AppHarness> {
       reducedMotion: "reduce",
       locale: options.locale ?? "en-US",
     });
-    const entry: PooledContext = { context, key, script: undefined, inUse: true };
+    const entry: PooledContext = { context, key, script: undefined, inUse: true, kept: false };
     pool.add(entry);
     context.on("close", () => pool.delete(entry));
     return entry;
@@ -256,6 +275,7 @@ export async function startHarness(): Promise<AppHarness> {
       const key = JSON.stringify([options.serviceWorkers ?? "block", options.locale ?? "en-US"]);
       const entry = await takeContext(key, options);
       const { context } = entry;
+      entry.kept = options.kept ?? false;
       // One init script, so that its parts run in this order (Playwright does not order separate ones).
       const scripts = [CSP_WATCH];
       if (options.noSerial) {
@@ -263,6 +283,7 @@ export async function startHarness(): Promise<AppHarness> {
       } else if (options.fakeSerial ?? true) {
         scripts.push(`window.__rbcTestOptions = ${JSON.stringify(options.options ?? {})};`, fakeSerial);
       }
+      if (options.start) scripts.push(`window.${TEST_START_NAME} = ${JSON.stringify(options.start)};`);
       entry.script = await context.addInitScript({ content: scripts.join("\n;\n") });
       const page = await context.newPage();
       // The page is still blank: nothing of this origin runs while its storage is cleared.
@@ -280,7 +301,7 @@ export async function startHarness(): Promise<AppHarness> {
       };
     },
     async releaseAll() {
-      for (const entry of pool) await handBack(entry);
+      for (const entry of pool) if (!entry.kept) await handBack(entry);
     },
     async close() {
       for (const { context } of pool) await context.close().catch(() => {});
@@ -336,15 +357,6 @@ export async function robotTime(page: Page, ms: number): Promise<void> {
 /** An element's text with runs of white space collapsed (templates indent their text). */
 export function squash(text: string | null): string {
   return (text ?? "").replace(/\s+/g, " ").trim();
-}
-
-/** Connects the fake robot and opens the Motions view once the memory figures have been read. */
-export async function openMotions(page: Page, url: string): Promise<void> {
-  await connectRobot(page, url);
-  await page.getByTestId("memory-motion-text").filter({ hasText: "24,576" }).waitFor();
-  await page.getByRole("link", { name: "Motions" }).click();
-  await page.getByTestId("memory-card").waitFor();
-  await page.getByTestId("mem-motion-text").filter({ hasText: "24,576 of 24,576" }).waitFor();
 }
 
 /**

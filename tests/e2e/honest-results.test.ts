@@ -1,7 +1,8 @@
 import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
 import { FACTORY_ZEROS } from "../../src/protocol/index.ts";
-import { connectRobot, expectText, squash, useApp } from "./harness.ts";
+import { CABLE, loadConnected } from "./connected-page.ts";
+import { expectText, squash, useApp } from "./harness.ts";
 import "./rbc-test-globals.ts";
 
 // Issue 21 items 5 and 6: nothing the panel says is more certain than what happened, and results appear where
@@ -9,9 +10,9 @@ import "./rbc-test-globals.ts";
 
 const app = useApp();
 
+/** The Zeros view with the robot on the cable connected (a page opened with the start option `CABLE`). */
 async function openZeros(page: Page): Promise<void> {
-  await connectRobot(page, app.url);
-  await page.getByRole("link", { name: "Zeros" }).click();
+  await loadConnected(page, app.url, "zeros");
   await page.locator("#zero-0").waitFor();
 }
 
@@ -47,7 +48,7 @@ const zerosResult = (page: Page) => page.getByTestId("zeros-write").locator(".no
 
 describe("zero backups say where they went, and are kept in this browser", () => {
   it("without a Save dialog: 'offered as a download', never 'saved as', and the backup is listed with Restore", async () => {
-    const { page, context } = await app.newPage();
+    const { page, context } = await app.newPage({ start: CABLE });
     await withoutSavePicker(page);
     await openZeros(page);
     await page.getByTestId("kept-backups").locator("summary").filter({ hasText: "(0)" }).waitFor();
@@ -83,7 +84,7 @@ describe("zero backups say where they went, and are kept in this browser", () =>
   });
 
   it("with a Save dialog: reports the name actually written; closing the dialog writes nothing", async () => {
-    const { page, context } = await app.newPage();
+    const { page, context } = await app.newPage({ start: CABLE });
     await withSavePicker(page, "my-zeros.json");
     await openZeros(page);
     await page.getByTestId("backup-zeros").click();
@@ -93,7 +94,7 @@ describe("zero backups say where they went, and are kept in this browser", () =>
     expect(JSON.parse(saved[0] ?? "{}").zeros).toEqual([...FACTORY_ZEROS]);
     await context.close();
 
-    const second = await app.newPage();
+    const second = await app.newPage({ start: CABLE });
     await withSavePicker(second.page, "cancel");
     await openZeros(second.page);
     const before = await second.page.evaluate(() => window.__rbcTest?.sim.zeros);
@@ -108,7 +109,7 @@ describe("zero backups say where they went, and are kept in this browser", () =>
   });
 
   it("never says 'the editor matches the robot' next to a value that cannot be written", async () => {
-    const { page, context } = await app.newPage();
+    const { page, context } = await app.newPage({ start: CABLE });
     await withoutSavePicker(page);
     await openZeros(page);
     await page.locator("#zero-3").fill("200");
@@ -122,7 +123,7 @@ describe("zero backups say where they went, and are kept in this browser", () =>
 
 describe("Stop's result is where the eyes are, in the language of the moment", () => {
   it("shows Stop's result inside the top bar while the page is scrolled down, and rewords it after a language switch", async () => {
-    const { page, context } = await app.newPage();
+    const { page, context } = await app.newPage({ start: CABLE });
     await withoutSavePicker(page);
     await openZeros(page);
     await page.evaluate(() => window.scrollTo(0, document.documentElement.scrollHeight));

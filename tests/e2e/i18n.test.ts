@@ -10,6 +10,7 @@ import { expectText, useApp } from "./harness.ts";
 import {
   axeProblems,
   connectCable,
+  DESKTOP,
   expectPageOk,
   keysShown,
   pageLang as lang,
@@ -111,24 +112,26 @@ describe("the panel in Korean", () => {
 });
 
 describe("layout and accessibility in both languages", () => {
+  // One page per language: the start card, then the Robot view, each at both sizes (setViewportSize) and with axe
+  // (once six tests, a page each: "no label overflows and nothing scrolls sideways, <locale> at 1280×800" and
+  // "… at 390×844", and "axe finds no violation on the start card and the Robot view, <locale>").
   for (const locale of ["ko-KR", "en-US"]) {
-    for (const size of SIZES) {
-      it(`no label overflows and nothing scrolls sideways, ${locale} at ${size.width}×${size.height}`, async () => {
-        const { page, context } = await newLocalePage(app, locale, { size });
-        await page.getByTestId("connect-card").waitFor();
-        const check = { lang: locale.slice(0, 2), axe: false };
-        await expectPageOk(page, "the start card", check);
-        await connectCable(page);
-        await expectPageOk(page, "the Robot view", check);
-        await context.close();
-      });
-    }
-
-    it(`axe finds no violation on the start card and the Robot view, ${locale}`, async () => {
+    it(`no label overflows, nothing scrolls sideways at ${SIZES.map((s) => `${s.width}×${s.height}`).join(" and ")}, and axe finds no violation, on the start card and the Robot view, ${locale}`, async () => {
       const { page, context } = await newLocalePage(app, locale);
+      const check = { lang: locale.slice(0, 2), axe: false };
       await page.getByTestId("connect-card").waitFor();
+      for (const size of SIZES) {
+        await page.setViewportSize({ ...size });
+        await expectPageOk(page, `the start card at ${size.width}×${size.height}`, check);
+      }
+      await page.setViewportSize({ ...DESKTOP });
       expect(await axeProblems(page), "the start card").toEqual([]);
       await connectCable(page);
+      for (const size of SIZES) {
+        await page.setViewportSize({ ...size });
+        await expectPageOk(page, `the Robot view at ${size.width}×${size.height}`, check);
+      }
+      await page.setViewportSize({ ...DESKTOP });
       expect(await axeProblems(page), "the Robot view").toEqual([]);
       await context.close();
     });

@@ -10,7 +10,8 @@
 import { createRequire } from "node:module";
 import type { BrowserContext, Locator, Page } from "playwright-core";
 import { beforeAll, describe, expect, it } from "vitest";
-import { buildOnce, cspViolations, expectText, openMotions, useApp, watchPage } from "./harness.ts";
+import { CABLE, loadMotions } from "./connected-page.ts";
+import { buildOnce, cspViolations, expectText, useApp, watchPage } from "./harness.ts";
 import { showTab } from "./motion-fixtures.ts";
 import "./rbc-test-globals.ts";
 
@@ -225,8 +226,8 @@ describe("the robot in 3D, on the demo robot", () => {
 
 describe("the robot in 3D, on a robot on a cable", () => {
   it("shows only the positions the robot reported, with their time, and does not follow a motion", async () => {
-    const { page, context } = await app.newPage();
-    await openMotions(page, app.url);
+    const { page, context } = await app.newPage({ start: CABLE });
+    await loadMotions(page, app.url);
     await showTab(page, "Run");
     const view = await show3d(page);
     const caption = page.getByTestId("live-robot-caption");

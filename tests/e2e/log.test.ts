@@ -1,7 +1,8 @@
 import { readFileSync } from "node:fs";
 import { createRequire } from "node:module";
 import { describe, expect, it } from "vitest";
-import { connectRobot, cspViolations, expectText, FAST, squash, useApp, watchPage } from "./harness.ts";
+import { CABLE, loadConnected } from "./connected-page.ts";
+import { cspViolations, expectText, FAST, squash, useApp, watchPage } from "./harness.ts";
 import "./rbc-test-globals.ts";
 import type { Page } from "playwright-core";
 import {
@@ -23,9 +24,13 @@ const AXE_SOURCE = readFileSync(createRequire(import.meta.url).resolve("axe-core
 describe("packet log view", () => {
   it("shows a run of garbage as one row with its byte count, and its scroll area is focusable and named", async () => {
     // A short window, so that the log's rows overflow its scroll area.
-    const { page, context } = await app.newPage({ options: FAST, viewport: { width: 1280, height: 600 } });
+    const { page, context } = await app.newPage({
+      start: CABLE,
+      options: FAST,
+      viewport: { width: 1280, height: 600 },
+    });
     const seen = watchPage(page, app.origin);
-    await connectRobot(page, app.url);
+    await loadConnected(page, app.url);
     await page.getByTestId("memory-motion-text").filter({ hasText: "24,576" }).waitFor();
     // 3,000 stray bytes and a frame too long for its type arrive before the next reply.
     await page.evaluate(() => {
@@ -75,8 +80,8 @@ describe("packet log view", () => {
   });
 
   it("pauses without losing capture, pages back through older rows, and copies the whole log", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
-    await connectRobot(page, app.url);
+    const { page, context } = await app.newPage({ start: CABLE, options: FAST });
+    await loadConnected(page, app.url);
     await page.getByTestId("memory-motion-text").filter({ hasText: "24,576" }).waitFor();
     await page.getByRole("link", { name: "Log" }).click();
     const log = page.getByTestId("log-card");

@@ -1,6 +1,7 @@
 import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
-import { connectRobot, openMotions, useApp } from "./harness.ts";
+import { CABLE, loadMotions } from "./connected-page.ts";
+import { connectRobot, useApp } from "./harness.ts";
 import "./rbc-test-globals.ts";
 
 // Issue 21 item 7: long pages. With long-walk.rbm (284 scenes) open, Motions was 10,592 px tall; Zeros put Write
@@ -25,8 +26,8 @@ async function boxOf(page: Page, selector: string) {
 
 describe("long pages fit a screen at 1280×800", () => {
   it("Motions with long-walk.rbm: the 284 scenes scroll in a box about twelve rows tall, Upload is on the first screen", async () => {
-    const { page, context } = await app.newPage({ viewport: VIEWPORT });
-    await openMotions(page, app.url);
+    const { page, context } = await app.newPage({ start: CABLE, viewport: VIEWPORT });
+    await loadMotions(page, app.url);
     await page.getByTestId("examples").locator("summary").click();
     await page.locator('[data-example="long-walk.rbm"]').click();
     await page.getByTestId("scene-table-box").waitFor();

@@ -1,6 +1,7 @@
 import type { Locator, Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
-import { connectRobot, expectText, squash, useApp } from "./harness.ts";
+import { CABLE, loadConnected } from "./connected-page.ts";
+import { expectText, squash, useApp } from "./harness.ts";
 import { axeProblems } from "./i18n-checks.ts";
 import "./rbc-test-globals.ts";
 
@@ -57,9 +58,8 @@ const switchLanguage = (page: Page, to: "en" | "ko") => page.getByLabel(/Languag
 describe("Stop's and Limp's results are seen and announced however far down the page is", () => {
   for (const size of SIZES) {
     it(`at ${size.width}×${size.height}: Stop, then Limp through its question, at the foot of the Sensors view`, async () => {
-      const { page, context } = await app.newPage({ viewport: size });
-      await connectRobot(page, app.url);
-      await page.getByRole("link", { name: "Sensors" }).click();
+      const { page, context } = await app.newPage({ start: CABLE, viewport: size });
+      await loadConnected(page, app.url, "sensors");
       await page.getByRole("heading", { level: 1, name: "Sensors" }).waitFor();
       const bottom = await scrollToBottom(page);
       // A long view: the window is well down the page.
@@ -102,9 +102,8 @@ describe("Stop's and Limp's results are seen and announced however far down the 
 
 describe("messages made before a language switch follow it", () => {
   it("a Servos result, a refusal under a field and Stop's result: Korean after the switch, English after the switch back", async () => {
-    const { page, context } = await app.newPage();
-    await connectRobot(page, app.url);
-    await page.getByRole("link", { name: "Servos" }).click();
+    const { page, context } = await app.newPage({ start: CABLE });
+    await loadConnected(page, app.url, "servos");
     await page.getByRole("button", { name: "I understand: the robot is supported" }).click();
     await page.getByTestId("enter-direct").click();
     const result = page.getByTestId("servo-card").locator(".live .notice p");
@@ -161,9 +160,8 @@ describe("messages made before a language switch follow it", () => {
 describe("Servos: the whole task on one screen at 1280×800", () => {
   it("the sixteen servos scroll in a box under a header that stays; Start, Read all, every row, Speed and Basic posture are on the first screen", async () => {
     const size = SIZES[0];
-    const { page, context } = await app.newPage({ viewport: size });
-    await connectRobot(page, app.url);
-    await page.getByRole("link", { name: "Servos" }).click();
+    const { page, context } = await app.newPage({ start: CABLE, viewport: size });
+    await loadConnected(page, app.url, "servos");
     await page.getByRole("button", { name: "I understand: the robot is supported" }).click();
     await page.getByTestId("enter-direct").click();
     await page.getByText("Read all 16 servos.").waitFor();

@@ -2,7 +2,8 @@ import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
 import { parseRbm } from "../../src/protocol/rbm.ts";
 import { validateRbm } from "../../src/protocol/rbm-validate.ts";
-import { expectText, FAST, openMotions, useApp } from "./harness.ts";
+import { CABLE, loadMotions } from "./connected-page.ts";
+import { expectText, FAST, useApp } from "./harness.ts";
 import {
   exampleText,
   longMotion,
@@ -64,8 +65,8 @@ async function overflowingButtons(page: Page): Promise<string[]> {
 
 describe("motions view layout", () => {
   it("splits the view into tabs that each fit about one screen at 1280×800 with wave.rbm open", async () => {
-    const { page, context } = await app.newPage({ options: FAST, viewport: DESKTOP });
-    await openMotions(page, app.url);
+    const { page, context } = await app.newPage({ start: CABLE, options: FAST, viewport: DESKTOP });
+    await loadMotions(page, app.url);
     await openFile(page, "wave.rbm", exampleText("wave.rbm"));
     await page.locator('[data-testid="motion-chart"][data-chart="drawn"]').waitFor();
     const heights: Record<string, number> = {};
@@ -102,8 +103,8 @@ describe("motions view layout", () => {
   it("shows an upload's progress, Cancel and result in the file card, in view, where Upload was pressed", async () => {
     // The paced link in real time: a long motion's upload lasts long enough to look at its progress.
     const paced: RbcTestOptions = { baudPacing: true, latencyMs: 16 };
-    const { page, context } = await app.newPage({ options: paced, viewport: DESKTOP });
-    await openMotions(page, app.url);
+    const { page, context } = await app.newPage({ start: CABLE, options: paced, viewport: DESKTOP });
+    await loadMotions(page, app.url);
     await openFile(page, "Long.rbm", longMotion(exampleText("wave.rbm"), 40));
     const card = page.getByTestId("motion-file");
     await card.getByTestId("upload-motion").click();
@@ -129,8 +130,8 @@ describe("motions view layout", () => {
   it("never lets a label overflow its button, at 390 and 1280 px, with a long motion name uploaded", async () => {
     const long = withName(exampleText("wave.rbm"), "HunoDemo_WalkJump_WithAVeryLongNameIndeed");
     for (const viewport of [PHONE, DESKTOP]) {
-      const { page, context } = await app.newPage({ options: FAST, viewport });
-      await openMotions(page, app.url);
+      const { page, context } = await app.newPage({ start: CABLE, options: FAST, viewport });
+      await loadMotions(page, app.url);
       await openFile(page, "HunoDemo_WalkJump_WithAVeryLongNameIndeed.rbm", long);
       await page.getByTestId("reset-first").check();
       await uploadShown(page, "HunoDemo_WalkJump_WithAVeryLongNameIndeed.rbm");
@@ -151,8 +152,8 @@ describe("motions view layout", () => {
   });
 
   it("groups warnings by kind with a count and a weight, the single warnings on demand", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
-    await openMotions(page, app.url);
+    const { page, context } = await app.newPage({ start: CABLE, options: FAST });
+    await loadMotions(page, app.url);
     // Small jumps only: one minor kind, not 16 alarming lines.
     const small = withJumps(exampleText("wave.rbm"), 2);
     const smallCount = validateRbm(parseRbm(small)).warnings.length;
@@ -194,8 +195,8 @@ describe("motions view layout", () => {
   });
 
   it("shows memory as used (an empty bar when nothing is stored) and the scenes toggle by its action", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
-    await openMotions(page, app.url);
+    const { page, context } = await app.newPage({ start: CABLE, options: FAST });
+    await loadMotions(page, app.url);
     const meter = page.locator("#mem-motion");
     await expect.poll(() => meter.getAttribute("value")).toBe("0");
     await expectText(page.getByTestId("mem-motion-used"), "0 bytes used");

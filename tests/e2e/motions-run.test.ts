@@ -1,11 +1,11 @@
 import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
+import { CABLE, loadMotions } from "./connected-page.ts";
 import {
   expectText,
   FAST,
   holdRobot,
   holdRobotWhenShown,
-  openMotions,
   releaseRobot,
   robotNow,
   squash,
@@ -22,7 +22,7 @@ const app = useApp();
 
 /** The Motions view's Run or Sounds tab, with the fake robot connected. */
 async function openTab(page: Page, tab: "Run" | "Sounds"): Promise<void> {
-  await openMotions(page, app.url);
+  await loadMotions(page, app.url);
   await showTab(page, tab);
 }
 
@@ -40,7 +40,7 @@ const RUNNING = '[data-testid="running-motion"]';
 
 describe("motions view: running motions and sounds", () => {
   it("guides to basic posture first, asks once before moving, and both Stop motion and Stop end a motion with 7, the robot standing", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
+    const { page, context } = await app.newPage({ start: CABLE, options: FAST });
     await openTab(page, "Run");
     const guidance = page.getByTestId("posture-guidance");
     await expectText(
@@ -113,7 +113,11 @@ describe("motions view: running motions and sounds", () => {
 
   it("says at once, beside the slot button pressed, that the robot holds no motion under that number (error 3)", async () => {
     // A phone: the slot buttons are far below the top of the Run card there.
-    const { page, context } = await app.newPage({ options: FAST, viewport: { width: 390, height: 844 } });
+    const { page, context } = await app.newPage({
+      start: CABLE,
+      options: FAST,
+      viewport: { width: 390, height: 844 },
+    });
     await openTab(page, "Run");
     await page.locator('[data-motion="7"]').click();
     await page.locator("#confirm-move").click();
@@ -152,7 +156,7 @@ describe("motions view: running motions and sounds", () => {
   });
 
   it("plays a sound, shows its own length while it plays, and keeps other robot actions disabled", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
+    const { page, context } = await app.newPage({ start: CABLE, options: FAST });
     await openTab(page, "Sounds");
     // Sound 7 (5.7 s of the robot's time) leaves time to look at the panel while it plays.
     await page.locator('[data-sound="7"]').click();
@@ -179,6 +183,7 @@ describe("motions view: running motions and sounds", () => {
 
   it("a firmware that answers a sound at once: says the answer proves only that the request arrived", async () => {
     const { page, context } = await app.newPage({
+      start: CABLE,
       options: { ...FAST, variant: { soundReplyAtOnce: true } },
     });
     await openTab(page, "Sounds");

@@ -1,16 +1,8 @@
 import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
 import { firmwareHexWithBadChecksum } from "../support/hex.ts";
-import {
-  connectRobot,
-  expectText,
-  FAST,
-  holdRobot,
-  openMotions,
-  releaseRobot,
-  squash,
-  useApp,
-} from "./harness.ts";
+import { CABLE, loadMotions } from "./connected-page.ts";
+import { connectRobot, expectText, FAST, holdRobot, releaseRobot, squash, useApp } from "./harness.ts";
 import { axeProblems } from "./i18n-checks.ts";
 import { exampleText, rbmFile } from "./motion-fixtures.ts";
 import "./rbc-test-globals.ts";
@@ -35,10 +27,10 @@ describe("Motions and Firmware messages made before a language switch follow it"
   it("a Run result, an upload result and a firmware file problem: Korean after the switch, English after the switch back", {
     timeout: 180_000,
   }, async () => {
-    const { page, context } = await app.newPage({ options: FAST });
+    const { page, context } = await app.newPage({ start: CABLE, options: FAST });
     const pageErrors: string[] = [];
     page.on("pageerror", (e) => pageErrors.push(String(e)));
-    await openMotions(page, app.url);
+    await loadMotions(page, app.url);
 
     // A Run result: Basic posture, asked once, then run to its end.
     await showTab(page, "run");

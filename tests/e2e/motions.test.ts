@@ -4,13 +4,14 @@ import { memoryFootprint } from "../../src/protocol/catalog.ts";
 import { motionImage } from "../../src/protocol/motion-image.ts";
 import { motionDurationMs, parseRbm } from "../../src/protocol/rbm.ts";
 import { formatSeconds } from "../../src/ui/features/motions/plot-data.ts";
+import { CABLE, loadMotions, openConnected } from "./connected-page.ts";
 import {
   cspViolations,
   expectText,
   FAST,
-  openMotions,
   robotTime,
   squash,
+  type TestContext,
   useApp,
   watchPage,
 } from "./harness.ts";
@@ -27,17 +28,7 @@ import {
 } from "./motion-fixtures.ts";
 import type { RbcTestOptions } from "./rbc-test-globals.ts";
 import "./rbc-test-globals.ts";
-import {
-  connectCable,
-  expectPageOk,
-  newLocalePage,
-  SIZES,
-  type Size,
-  shot,
-  sizeName as size,
-  sizeName,
-  texts,
-} from "./i18n-checks.ts";
+import { expectPageOk, SIZES, type Size, shot, sizeName as size, sizeName, texts } from "./i18n-checks.ts";
 
 const app = useApp();
 
@@ -70,9 +61,9 @@ async function recordFigures(page: Page): Promise<void> {
 describe("motions view", () => {
   it("checks wave.rbm, uploads it after the experimental notice, and the robot holds the exact image", async () => {
     // The paced link 3 times faster: the progress of its 10 chunks still shows (figures, rate, time left).
-    const { page, context } = await app.newPage({ options: { ...PACED, timeScale: 3 } });
+    const { page, context } = await app.newPage({ start: CABLE, options: { ...PACED, timeScale: 3 } });
     const seen = watchPage(page, app.origin);
-    await openMotions(page, app.url);
+    await loadMotions(page, app.url);
     const wave = exampleText("wave.rbm");
     await page.getByTestId("rbm-files").setInputFiles(rbmFile("wave.rbm", wave));
     const card = page.getByTestId("motion-file");
@@ -149,8 +140,8 @@ describe("motions view", () => {
   it("cancels an upload: sending stops, the robot records nothing, and the panel says how much was acknowledged", async () => {
     // The paced link in real time: the 20 KB upload takes seconds, and every acknowledgement keeps its full
     // timeout (500 ms) on a busy machine (at 4 times the speed, a CI machine once missed one by a few ms).
-    const { page, context } = await app.newPage({ options: PACED });
-    await openMotions(page, app.url);
+    const { page, context } = await app.newPage({ start: CABLE, options: PACED });
+    await loadMotions(page, app.url);
     const long = longMotion(exampleText("wave.rbm"), 40);
     await page.getByTestId("rbm-files").setInputFiles(rbmFile("Long.rbm", long));
     await page.getByTestId("upload-motion").click();
@@ -176,8 +167,8 @@ describe("motions view", () => {
   });
 
   it("never sends a byte of a file with errors and says why in words", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
-    await openMotions(page, app.url);
+    const { page, context } = await app.newPage({ start: CABLE, options: FAST });
+    await loadMotions(page, app.url);
     const before = await bytesFromPc(page);
     await page
       .getByTestId("rbm-files")
@@ -204,8 +195,8 @@ describe("motions view", () => {
   });
 
   it("opens files by drop and by keyboard, and warns about a motion made for another robot", async () => {
-    const { page, context } = await app.newPage();
-    await openMotions(page, app.url);
+    const { page, context } = await app.newPage({ start: CABLE });
+    await loadMotions(page, app.url);
     const text = withSerial(exampleText("bow.rbm"), "1234567890123");
     const transfer = await page.evaluateHandle((t) => {
       const dt = new DataTransfer();
@@ -241,13 +232,13 @@ describe("motions view", () => {
   });
 
   it("opens one of the project's example motions from the keyboard, exactly like a picked file", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
+    const { page, context } = await app.newPage({ start: CABLE, options: FAST });
     const seen = watchPage(page, app.origin);
     const scripts: string[] = [];
     page.on("request", (r) => {
       if (r.resourceType() === "script") scripts.push(new URL(r.url()).pathname);
     });
-    await openMotions(page, app.url);
+    await loadMotions(page, app.url);
     const text = exampleText("squat.rbm");
     const motion = parseRbm(text);
     const image = motionImage(motion);
@@ -362,14 +353,21 @@ describe("motions view", () => {
 describe("in Korean (ko-KR)", () => {
   const TABS = { files: "파일", uploads: "메모리", run: "실행", sounds: "소리" } as const;
 
-  /** Connects the fake robot from the connect card and opens the Motions view once its memory has been read. */
-  async function openMotions(page: Page): Promise<void> {
-    await connectCable(page);
-    await page.getByRole("link", { name: "모션", exact: true }).click();
+  /** Opens the Motions view in Korean with the fake robot connected at start, once its memory has been read. */
+  async function openMotions(size: Size): Promise<{ page: Page; context: TestContext }> {
+    const opened = await openConnected(app, {
+      robot: "cable",
+      view: "motions",
+      locale: "ko-KR",
+      size,
+      options: FAST,
+    });
+    const { page } = opened;
     await page
       .getByTestId("mem-motion-text")
       .filter({ hasText: "24,576바이트 중 24,576바이트 남음" })
       .waitFor();
+    return opened;
   }
 
   /** Chooses a tab by its Korean name and waits until its panel is shown. */
@@ -388,8 +386,7 @@ describe("in Korean (ko-KR)", () => {
   describe("the Motions view in Korean", () => {
     for (const viewport of SIZES) {
       it(`shows the Files tab in Korean with an example open, fitting at ${viewport.width}×${viewport.height}`, async () => {
-        const { page, context } = await newLocalePage(app, "ko-KR", { size: viewport, options: FAST });
-        await openMotions(page);
+        const { page, context } = await openMotions(viewport);
         await expectText(page.getByRole("heading", { level: 1 }), "모션");
         await expect.poll(() => texts(page.getByRole("tab"))).toEqual(["파일", "메모리", "실행", "소리"]);
         await expect.poll(() => page.getByRole("tablist").getAttribute("aria-label")).toBe("모션");
@@ -483,7 +480,7 @@ describe("in Korean (ko-KR)", () => {
         await result.waitFor({ timeout: 15_000 });
         await expectText(
           result,
-          /^wave\.rbm을\(를\) 업로드했어요\. 624바이트를 조각 \d+개로 [\d.]+초 동안 보냈고 \([\d,]+바이트\/초\), 로봇이 모든 조각을 받았다고 확인했어요\./,
+          /^wave\.rbm을\(를\) 업로드했어요\. 624바이트를 조각 \d+개로 [\d.]+초 동안 보냈고 \(초당 [\d,]+바이트\), 로봇이 모든 조각을 받았다고 확인했어요\./,
         );
         await expectText(result, "모션 12번(1번 키)으로 저장했어요. 실행할 때 이 번호를 써요.", {
           contains: true,
@@ -497,8 +494,7 @@ describe("in Korean (ko-KR)", () => {
       });
 
       it(`shows Memory, Run and Sounds in Korean, fitting at ${viewport.width}×${viewport.height}`, async () => {
-        const { page, context } = await newLocalePage(app, "ko-KR", { size: viewport, options: FAST });
-        await openMotions(page);
+        const { page, context } = await openMotions(viewport);
         await page.getByTestId("rbm-files").setInputFiles(rbmFile("wave.rbm", exampleText("wave.rbm")));
         await page.getByTestId("upload-motion").click();
         await page.getByRole("button", { name: "업로드 (실험 기능)" }).click();
@@ -599,18 +595,23 @@ describe("in Korean (ko-KR): the motion file checker", () => {
     rbmFile("Odd.rbm", edit(withSerial(withUnsafePosition(WAVE), "1234567890123"), [10, "5"])),
   ];
 
-  /** Connects the fake robot from the connect card and opens the Motions view once its memory has been read. */
-  async function openMotions(page: Page): Promise<void> {
-    await connectCable(page);
-    await page.getByRole("link", { name: "모션", exact: true }).click();
-    await page.getByTestId("motion-files").waitFor();
+  /** Opens the Motions view in Korean with the fake robot connected at start. */
+  async function openMotions(size: Size): Promise<{ page: Page; context: TestContext }> {
+    const opened = await openConnected(app, {
+      robot: "cable",
+      view: "motions",
+      locale: "ko-KR",
+      size,
+      options: FAST,
+    });
+    await opened.page.getByTestId("motion-files").waitFor();
+    return opened;
   }
 
   describe("the motion file checker's sentences in Korean", () => {
     for (const viewport of SIZES) {
       it(`says every problem of the opened files in Korean, fitting at ${viewport.width}×${viewport.height}`, async () => {
-        const { page, context } = await newLocalePage(app, "ko-KR", { size: viewport, options: FAST });
-        await openMotions(page);
+        const { page, context } = await openMotions(viewport);
         await page.getByTestId("rbm-files").setInputFiles(FILES);
         await page
           .getByText(/^파일 4개를 열었어요\./)

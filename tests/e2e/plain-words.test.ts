@@ -16,17 +16,9 @@ import { join } from "node:path";
 import type { Page } from "playwright-core";
 import { describe, expect, it, vi } from "vitest";
 import { hexLines } from "../support/hex.ts";
+import { openConnected } from "./connected-page.ts";
 import { expectText, FAST, ROOT, useApp } from "./harness.ts";
-import {
-  axeProblems,
-  connectCable,
-  connectDemo,
-  newLocalePage,
-  PHONE,
-  shot,
-  text,
-  texts,
-} from "./i18n-checks.ts";
+import { axeProblems, DESKTOP, PHONE, type Size, shot, text, texts } from "./i18n-checks.ts";
 import "./rbc-test-globals.ts";
 
 const app = useApp();
@@ -50,15 +42,11 @@ function plainFile(): { name: string; mimeType: string; buffer: Buffer } {
   };
 }
 
-async function go(page: Page, view: string): Promise<void> {
-  await page.evaluate((v) => {
-    location.hash = `#/${v}`;
-  }, view);
-}
-
-async function openFirmware(page: Page): Promise<void> {
-  await go(page, "firmware");
-  await page.getByTestId("firmware-view").waitFor();
+/** Opens the panel on the Firmware view with `robot` connected. */
+async function openFirmware(robot: "demo" | "cable", locale = "en-US", size: Size = DESKTOP) {
+  const opened = await openConnected(app, { robot, view: "firmware", locale, size, options: FAST });
+  await opened.page.getByTestId("firmware-view").waitFor();
+  return opened;
 }
 
 async function openFile(page: Page, file: { name: string; mimeType: string; buffer: Buffer }): Promise<void> {
@@ -71,9 +59,7 @@ const detailOpen = (page: Page) =>
 
 describe("Firmware: plain words first, and the demo file flagged before a real robot gets it", () => {
   it("English: a robot on a cable; the demo file states 2.50, is flagged, and Update waits for the tick", async () => {
-    const { page, context } = await newLocalePage(app, "en-US", { options: FAST });
-    await connectCable(page);
-    await openFirmware(page);
+    const { page, context } = await openFirmware("cable");
     await openFile(page, await demoFile());
 
     await expectText(page.getByTestId("fw-declared"), "2.50");
@@ -133,9 +119,7 @@ describe("Firmware: plain words first, and the demo file flagged before a real r
   });
 
   it("English: on the demo robot the same file from disk is fine to try, without the extra tick", async () => {
-    const { page, context } = await newLocalePage(app, "en-US", { options: FAST });
-    await connectDemo(page);
-    await openFirmware(page);
+    const { page, context } = await openFirmware("demo");
     await openFile(page, await demoFile());
     await expectText(page.getByTestId("fw-demo-mark"), "On the demo robot it is fine to try.", {
       contains: true,
@@ -150,9 +134,7 @@ describe("Firmware: plain words first, and the demo file flagged before a real r
   });
 
   it("Korean: the version stated or not, the flag, the tick, and the technical detail's label", async () => {
-    const { page, context } = await newLocalePage(app, "ko-KR", { options: FAST, size: PHONE });
-    await connectCable(page);
-    await openFirmware(page);
+    const { page, context } = await openFirmware("cable", "ko-KR", PHONE);
     await openFile(page, await demoFile());
     await expectText(page.getByTestId("fw-declared"), "2.50");
     await expectText(
@@ -196,9 +178,7 @@ describe("Servos: what it does for the robot first, the protocol's words one cli
     ],
   ] as const) {
     it(`${locale}: no "direct mode" or "synchronised move" in sight until Technical detail is opened`, async () => {
-      const { page, context } = await newLocalePage(app, locale, { options: FAST });
-      await connectDemo(page);
-      await go(page, "servos");
+      const { page, context } = await openConnected(app, { view: "servos", locale, options: FAST });
       await page.getByTestId("servo-mode").waitFor();
       await expectText(page.locator(".servos-view .view-head p"), lead);
       await expect.poll(() => page.getByText(posture, { exact: true }).isVisible()).toBe(true);
@@ -224,9 +204,7 @@ describe("Sounds have names as well as numbers", () => {
       ["en-US", "7 Long 5.7 s", "Sound 7 Long 5.7 s", "Sound 7 (Long) is playing"],
       ["ko-KR", "7 긴 소리 5.7초", "소리 7 긴 소리 5.7초", "소리 7번(긴 소리) 재생 중"],
     ] as const) {
-      const { page, context } = await newLocalePage(app, locale, { options: FAST });
-      await connectDemo(page);
-      await go(page, "motions");
+      const { page, context } = await openConnected(app, { view: "motions", locale, options: FAST });
       await page.locator("#motions-tab-sounds").click();
       const button = page.locator('[data-sound="7"]');
       // What is seen, and what a screen reader says (the seen text with "Sound" before it).
@@ -260,9 +238,7 @@ describe("Zeros: the comparison agrees with 'Cannot write'", () => {
     ],
   ] as const) {
     it(`${locale}: speaks only of the values that can be written`, async () => {
-      const { page, context } = await newLocalePage(app, locale, { options: FAST });
-      await connectDemo(page);
-      await go(page, "zeros");
+      const { page, context } = await openConnected(app, { view: "zeros", locale, options: FAST });
       await page.locator("#zero-3").waitFor();
       await page.getByTestId("change-summary").waitFor();
       await page.locator("#zero-3").fill("200");
@@ -284,7 +260,6 @@ describe("Zeros: the comparison agrees with 'Cannot write'", () => {
 
 describe("Teach-in's question says which servos hold and which stay limp", () => {
   async function openTeachIn(page: Page): Promise<void> {
-    await go(page, "editor");
     await page.getByTestId("pose-table").waitFor();
     await page.locator("#editor-tab-teach").click();
     await page.locator("#editor-panel-teach").waitFor();
@@ -303,8 +278,7 @@ describe("Teach-in's question says which servos hold and which stay limp", () =>
     ],
   ] as const) {
     it(`${locale}: a servo that did not answer Hold is named as staying limp the next time`, async () => {
-      const { page, context } = await newLocalePage(app, locale, { options: FAST });
-      await connectDemo(page);
+      const { page, context } = await openConnected(app, { view: "editor", locale, options: FAST });
       await openTeachIn(page);
       await page.locator("#start-teach-in").click();
       await expectText(page.getByTestId("teach-in-detail"), plain, { contains: true });

@@ -9,7 +9,8 @@
 import { readFile } from "node:fs/promises";
 import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
-import { connectRobot, expectText, FAST, openMotions, useApp } from "./harness.ts";
+import { CABLE, loadMotions } from "./connected-page.ts";
+import { connectRobot, expectText, FAST, useApp } from "./harness.ts";
 import { axeProblems, connectCable, expectPageOk, newLocalePage, SIZES } from "./i18n-checks.ts";
 import "./rbc-test-globals.ts";
 
@@ -157,9 +158,9 @@ describe("the Remote card", () => {
 
 describe("Make this motion usable on this robot", () => {
   it("Motions: a copy with this robot's serial through the Save dialog, and with zeros as a download, byte for byte", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
+    const { page, context } = await app.newPage({ start: CABLE, options: FAST });
     await withSavePicker(page);
-    await openMotions(page, app.url);
+    await loadMotions(page, app.url);
     await page.getByTestId("rbm-files").setInputFiles(rbm("dance.rbm", DANCE));
     const file = page.getByTestId("motion-file");
     const offer = file.getByTestId("restamp-offer");
@@ -194,8 +195,8 @@ describe("Make this motion usable on this robot", () => {
   });
 
   it("Motions: a file with zeros or this robot's serial gets no offer", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
-    await openMotions(page, app.url);
+    const { page, context } = await app.newPage({ start: CABLE, options: FAST });
+    await loadMotions(page, app.url);
     await page
       .getByTestId("rbm-files")
       .setInputFiles([rbm("zeros.rbm", DANCE_ZEROS), rbm("mine.rbm", DANCE_FOR_THIS_ROBOT)]);

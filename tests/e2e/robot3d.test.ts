@@ -8,7 +8,9 @@
 import { createRequire } from "node:module";
 import type { Locator, Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
-import { buildOnce, cspViolations, expectText, openMotions, useApp, watchPage } from "./harness.ts";
+import { TEST_START_NAME } from "../../src/ui/test-start.ts";
+import { CABLE, loadMotions } from "./connected-page.ts";
+import { buildOnce, cspViolations, expectText, useApp, watchPage } from "./harness.ts";
 import { exampleText, rbmFile } from "./motion-fixtures.ts";
 import "./rbc-test-globals.ts";
 
@@ -88,13 +90,16 @@ async function animationFrames(page: Page, n: number): Promise<void> {
 const attr = (locator: Locator, name: string) => locator.getAttribute(name).then((v) => v ?? "");
 const frames = (view: Locator) => attr(view, "data-frames").then(Number);
 
-/** Opens wave.rbm on the Motions view and returns its card; records requests for the 3D module. */
+/**
+ * Opens wave.rbm on the Motions view (a page opened with the start option `CABLE`) and returns its card; records
+ * requests for the 3D module.
+ */
 async function openWave(page: Page): Promise<{ card: Locator; sceneRequests: string[] }> {
   const sceneRequests: string[] = [];
   page.on("request", (r) => {
     if (/robot-scene-[\w-]+\.js$/.test(r.url())) sceneRequests.push(r.url());
   });
-  await openMotions(page, app.url);
+  await loadMotions(page, app.url);
   await page.getByTestId("rbm-files").setInputFiles(rbmFile("wave.rbm", exampleText("wave.rbm")));
   const card = page.getByTestId("motion-file");
   await card.waitFor();
@@ -104,7 +109,7 @@ async function openWave(page: Page): Promise<{ card: Locator; sceneRequests: str
 describe("3D preview of an opened motion file", () => {
   it("loads on demand, draws the robot, draws it anew for another time, and frees its context when closed", async () => {
     // The harness's pages prefer reduced motion: the preview does not start by itself.
-    const { page } = await app.newPage();
+    const { page } = await app.newPage({ start: CABLE });
     const seen = watchPage(page, app.origin);
     const { card, sceneRequests } = await openWave(page);
     await animationFrames(page, 5);
@@ -196,7 +201,7 @@ describe("3D preview of an opened motion file", () => {
   });
 
   it("plays on the motion's timing when motion is welcome, and pauses where it is", async () => {
-    const { page } = await app.newPage();
+    const { page } = await app.newPage({ start: CABLE });
     await page.emulateMedia({ reducedMotion: "no-preference" });
     const seen = watchPage(page, app.origin);
     // The preview plays on the page's own clock (performance.now, animation frames), not the robot's: a fake
@@ -252,7 +257,7 @@ describe("3D preview of an opened motion file", () => {
   });
 
   it("with reduced motion never animates by itself; Play shows the next scene's pose at once", async () => {
-    const { page } = await app.newPage();
+    const { page } = await app.newPage({ start: CABLE });
     await page.emulateMedia({ reducedMotion: "reduce" });
     const { card } = await openWave(page);
     await card.getByTestId("preview-toggle").click();
@@ -293,7 +298,7 @@ describe("3D preview of an opened motion file", () => {
   });
 
   it("says so in place of the picture when the browser has no WebGL 2, and loads no 3D code", async () => {
-    const { page } = await app.newPage();
+    const { page } = await app.newPage({ start: CABLE });
     const seen = watchPage(page, app.origin);
     await page.addInitScript({
       content: `const getContext = HTMLCanvasElement.prototype.getContext;
@@ -328,7 +333,9 @@ HTMLCanvasElement.prototype.getContext = function (type, ...rest) {
         colorScheme,
         bypassCSP: true,
       });
-      await context.addInitScript({ content: `window.__rbcTestOptions = {};\n;\n${fakeSerial}` });
+      await context.addInitScript({
+        content: `window.__rbcTestOptions = {};\n;\n${fakeSerial}\n;\nwindow.${TEST_START_NAME} = ${JSON.stringify(CABLE)};`,
+      });
       const page = await context.newPage();
       const { card } = await openWave(page);
       await card.getByTestId("preview-toggle").click();

@@ -1,5 +1,6 @@
 import { describe, expect, it } from "vitest";
-import { connectRobot, robotTime, useApp, watchPage } from "./harness.ts";
+import { CABLE, loadConnected } from "./connected-page.ts";
+import { robotTime, useApp, watchPage } from "./harness.ts";
 import "./rbc-test-globals.ts";
 
 /**
@@ -20,10 +21,12 @@ const FLOOD_MS = 2_000;
 
 describe("a flood of sound events at the firmware's pace", () => {
   it("the Sensors view shows the level and stays responsive; leaving it ends the flood", async () => {
-    const { page, context } = await app.newPage({ options: { variant: { firmwareEventPace: true } } });
+    const { page, context } = await app.newPage({
+      start: CABLE,
+      options: { variant: { firmwareEventPace: true } },
+    });
     const seen = watchPage(page, app.origin);
-    await connectRobot(page, app.url);
-    await page.getByRole("link", { name: "Sensors" }).click();
+    await loadConnected(page, app.url, "sensors");
     await page.getByTestId("poll-card").waitFor();
     await page.evaluate(() => {
       const w = window as unknown as { __longest: number };

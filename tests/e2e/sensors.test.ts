@@ -1,14 +1,14 @@
 import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
-import { connectRobot, cspViolations, expectText, FAST, robotTime, useApp, watchPage } from "./harness.ts";
+import { CABLE, DEMO, loadConnected } from "./connected-page.ts";
+import { cspViolations, expectText, FAST, robotTime, useApp, watchPage } from "./harness.ts";
 import "./rbc-test-globals.ts";
 
 const app = useApp();
 
+/** Opens the Sensors view with the robot on the cable connected (a page opened with the start option `CABLE`). */
 async function openSensors(page: Page): Promise<void> {
-  await connectRobot(page, app.url);
-  await page.getByTestId("memory-motion-text").filter({ hasText: "24,576" }).waitFor();
-  await page.getByRole("link", { name: "Sensors" }).click();
+  await loadConnected(page, app.url, "sensors");
   await page.getByTestId("poll-card").waitFor();
 }
 
@@ -43,7 +43,7 @@ async function expectQuiet(page: Page): Promise<void> {
 
 describe("sensors view", () => {
   it("polls distance and accelerometer into live charts, lists button and remote events, and stops when left", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
+    const { page, context } = await app.newPage({ options: FAST, start: CABLE });
     const seen = watchPage(page, app.origin);
     await openSensors(page);
     const distance = page.getByTestId("distance-value");
@@ -102,7 +102,7 @@ describe("sensors view", () => {
   });
 
   it("draws the distance axis from 0 to 60 cm, lines with 3:1 contrast in dark and light mode, times to the second", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
+    const { page, context } = await app.newPage({ options: FAST, start: CABLE });
     await page.emulateMedia({ colorScheme: "dark" });
     await openSensors(page);
     await page.getByTestId("distance-value").filter({ hasText: "10 cm" }).waitFor();
@@ -158,7 +158,7 @@ describe("sensors view", () => {
   });
 
   it("stops polling while the tab is hidden and after Limp (not after Stop), and resumes", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
+    const { page, context } = await app.newPage({ options: FAST, start: CABLE });
     await openSensors(page);
     await page.getByTestId("distance-value").filter({ hasText: "10 cm" }).waitFor();
     await page.evaluate(() => {
@@ -194,11 +194,8 @@ describe("sensors view", () => {
   });
 
   it("on the demo robot, its buttons and remote can be pressed from the panel", async () => {
-    const { page, context } = await app.newPage();
-    await page.goto(app.url);
-    await page.getByRole("button", { name: "Try the demo robot" }).click();
-    await page.getByTestId("device-card").waitFor();
-    await page.getByRole("link", { name: "Sensors" }).click();
+    const { page, context } = await app.newPage({ start: DEMO });
+    await loadConnected(page, app.url, "sensors");
     await page.getByTestId("demo-world").waitFor();
     // The demo accelerometer is alive (noise around an upright robot).
     await page

@@ -1,6 +1,7 @@
 import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
-import { connectRobot, expectText, squash, useApp } from "./harness.ts";
+import { openConnected } from "./connected-page.ts";
+import { connectRobot, expectText, squash, type TestContext, useApp } from "./harness.ts";
 import "./rbc-test-globals.ts";
 import {
   axeProblems,
@@ -9,6 +10,7 @@ import {
   newLocalePage,
   PHONE,
   pageProblems,
+  type Size,
   text,
 } from "./i18n-checks.ts";
 
@@ -28,10 +30,11 @@ const app = useApp();
  */
 const QUARTER = { timeScale: 0.25 };
 
-async function openDoctor(page: Page, link: string): Promise<void> {
-  await connectDemo(page);
-  await page.getByRole("link", { name: link, exact: true }).click();
-  await page.getByTestId("doctor-scan-card").waitFor();
+/** Opens the Servo check with the demo robot connected (on the QUARTER clock), in a browser in `locale`. */
+async function openDoctor(locale: string, size?: Size): Promise<{ page: Page; context: TestContext }> {
+  const opened = await openConnected(app, { view: "doctor", locale, size, options: QUARTER });
+  await opened.page.getByTestId("doctor-scan-card").waitFor();
+  return opened;
 }
 
 /**
@@ -95,8 +98,7 @@ async function holdAfterReads(page: Page, count: number): Promise<number[]> {
 
 describe("Servo check on the demo robot", () => {
   it("finds a replacement servo at id 0, fixes its id with the guided fix, and scans clean; axe clean before and after", async () => {
-    const { page, context } = await newLocalePage(app, "en-US", { options: QUARTER });
-    await openDoctor(page, "Servo check");
+    const { page, context } = await openDoctor("en-US");
     await expectText(
       page.locator(".doctor-view .view-head p").first(),
       "Find servos that do not answer or carry the wrong id",
@@ -186,8 +188,7 @@ describe("Servo check on the demo robot", () => {
   });
 
   it("speaks Korean through the same walk", async () => {
-    const { page, context } = await newLocalePage(app, "ko-KR", { options: QUARTER });
-    await openDoctor(page, "서보 점검");
+    const { page, context } = await openDoctor("ko-KR");
     await simulateFault(page, "replacement", 3, "교체한 서보 (아직 ID 0), 서보 3번");
     await scanNow(page, /ID 16개를 검사했어요/);
     await expect.poll(() => status(page, 0)).toMatch(/^깨진 응답/);
@@ -223,8 +224,7 @@ describe("Servo check on the demo robot", () => {
   });
 
   it("Cancel mid-scan says which ids were read and which were not", async () => {
-    const { page, context } = await newLocalePage(app, "en-US", { options: QUARTER });
-    await openDoctor(page, "Servo check");
+    const { page, context } = await openDoctor("en-US");
     await page.getByText("All 31 ids (0-30)").click();
     await page.getByTestId("doctor-scan").click();
     const read = await holdAfterReads(page, 4);
@@ -252,8 +252,7 @@ describe("Servo check on the demo robot", () => {
   });
 
   it("the top bar's Stop during a scan ends it, and the view says so", async () => {
-    const { page, context } = await newLocalePage(app, "en-US", { options: QUARTER });
-    await openDoctor(page, "Servo check");
+    const { page, context } = await openDoctor("en-US");
     await page.getByText("All 31 ids (0-30)").click();
     await page.getByTestId("doctor-scan").click();
     const read = await holdAfterReads(page, 3);
@@ -274,8 +273,7 @@ describe("Servo check on the demo robot", () => {
   });
 
   it("picks a servo on the figure, reads its settings, and wiggles it after one question: a loaded servo does not follow", async () => {
-    const { page, context } = await newLocalePage(app, "en-US", { options: QUARTER });
-    await openDoctor(page, "Servo check");
+    const { page, context } = await openDoctor("en-US");
     await simulateFault(page, "loaded", 4, "loaded servo, servo 4");
     await scanNow(page, /Scanned 16 ids/);
     await expect
@@ -342,8 +340,7 @@ describe("Servo check on the demo robot", () => {
   });
 
   it("the top bar's Stop during a wiggle ends it, and the servo keeps holding", async () => {
-    const { page, context } = await newLocalePage(app, "en-US", { options: QUARTER });
-    await openDoctor(page, "Servo check");
+    const { page, context } = await openDoctor("en-US");
     await page.getByTestId("doctor-pick").selectOption("2");
     await page.getByTestId("doctor-wiggle-ask").click();
     // Caught in the middle: the robot's clock is held the moment servo 2 first moves (an event in the
@@ -400,13 +397,12 @@ describe("Servo check on the demo robot", () => {
     await context.close();
   });
 
-  for (const [locale, lang, link, now] of [
-    ["en-US", "en", "Servo check", "replacement servo (still id 0), servo 12"],
-    ["ko-KR", "ko", "서보 점검", "교체한 서보 (아직 ID 0), 서보 12번"],
+  for (const [locale, lang, now] of [
+    ["en-US", "en", "replacement servo (still id 0), servo 12"],
+    ["ko-KR", "ko", "교체한 서보 (아직 ID 0), 서보 12번"],
   ] as const) {
     it(`fits a phone in ${locale} after a scan and a refused fix: no key, no label overflow, no sideways scroll, axe clean`, async () => {
-      const { page, context } = await newLocalePage(app, locale, { size: PHONE, options: QUARTER });
-      await openDoctor(page, link);
+      const { page, context } = await openDoctor(locale, PHONE);
       await simulateFault(page, "replacement", 12, now);
       await page.getByTestId("doctor-scan").click();
       await page.getByTestId("doctor-findings").waitFor();

@@ -3,16 +3,8 @@ import { describe, expect, it } from "vitest";
 import { HUNO_BASIC_POSTURE } from "../../src/protocol/index.ts";
 import { connectRobot, cspViolations, expectText, useApp } from "./harness.ts";
 import "./rbc-test-globals.ts";
-import {
-  connectCable,
-  connectDemo,
-  expectPageOk,
-  newLocalePage,
-  SIZES,
-  type Size,
-  shot,
-  text,
-} from "./i18n-checks.ts";
+import { CABLE, loadConnected, openConnected } from "./connected-page.ts";
+import { expectPageOk, SIZES, type Size, shot, text } from "./i18n-checks.ts";
 import { exampleText, rbmFile } from "./motion-fixtures.ts";
 
 const app = useApp();
@@ -20,10 +12,9 @@ const app = useApp();
 const simServos = (page: Page) => page.evaluate(() => window.__rbcTest?.sim.servos ?? []);
 const simDirect = (page: Page) => page.evaluate(() => window.__rbcTest?.sim.directMode);
 
+/** Opens the Servos view with the robot on the cable connected (a page opened with the start option `CABLE`). */
 async function openServos(page: Page): Promise<void> {
-  await connectRobot(page, app.url);
-  await page.getByTestId("memory-motion-text").filter({ hasText: "24,576" }).waitFor();
-  await page.getByRole("link", { name: "Servos" }).click();
+  await loadConnected(page, app.url, "servos");
   await page.getByTestId("servo-card").waitFor();
 }
 
@@ -35,7 +26,7 @@ async function startControl(page: Page): Promise<void> {
 
 describe("servos view", () => {
   it("asks for the safety notice first, moves one servo in direct mode, Stop keeps the servos holding, Limp makes all limp", async () => {
-    const { page, context } = await app.newPage();
+    const { page, context } = await app.newPage({ start: CABLE });
     await openServos(page);
     const notice = page.getByTestId("servo-safety");
     await expectText(notice, "Support the robot", { contains: true });
@@ -145,7 +136,7 @@ describe("servos view", () => {
   });
 
   it("moves all servos to the basic posture after confirming, and leaves direct mode on request and on disconnect", async () => {
-    const { page, context } = await app.newPage();
+    const { page, context } = await app.newPage({ start: CABLE });
     await openServos(page);
     await startControl(page);
     await page.locator("#servo-0").fill("140");
@@ -186,7 +177,8 @@ describe("servos view", () => {
  */
 describe("in Korean (ko-KR)", () => {
   /** The panel in a browser that prefers Korean, at `size`. */
-  const newKoreanPage = (size: Size) => newLocalePage(app, "ko-KR", { size });
+  const openKorean = (size: Size, robot: "demo" | "cable", view: string) =>
+    openConnected(app, { robot, view, locale: "ko-KR", size });
 
   /** The checks every view gets (the page's lang, keys, labels, sideways scrolling, axe), and its screenshot. */
   const checkLayout = (page: Page, name: string, size: Size) =>
@@ -197,9 +189,7 @@ describe("in Korean (ko-KR)", () => {
 
     describe(`in Korean at ${size}`, () => {
       it("the Sensors view: readings, events and the demo robot's world", async () => {
-        const { page, context } = await newKoreanPage(viewport);
-        await connectDemo(page);
-        await page.getByRole("link", { name: "센서", exact: true }).click();
+        const { page, context } = await openKorean(viewport, "demo", "sensors");
         await page.getByRole("heading", { level: 1, name: "센서" }).waitFor();
         const status = page.getByTestId("poll-status");
         await status.filter({ hasText: "마지막으로" }).waitFor();
@@ -265,9 +255,7 @@ describe("in Korean (ko-KR)", () => {
       });
 
       it("the Servos view, with the demo robot in 3D", async () => {
-        const { page, context } = await newKoreanPage(viewport);
-        await connectDemo(page);
-        await page.getByRole("link", { name: "서보", exact: true }).click();
+        const { page, context } = await openKorean(viewport, "demo", "servos");
         await page.getByRole("heading", { level: 1, name: "서보" }).waitFor();
         const safety = page.getByTestId("servo-safety");
         await expectText(safety.getByRole("heading", { level: 2 }), "서보를 움직이기 전에");
@@ -319,9 +307,7 @@ describe("in Korean (ko-KR)", () => {
   describe("in Korean, the 3D robot of a robot on a cable and the motion preview", () => {
     for (const viewport of SIZES) {
       it(`says what it draws of a robot on a cable, ${viewport.width}×${viewport.height}`, async () => {
-        const { page, context } = await newKoreanPage(viewport);
-        await connectCable(page);
-        await page.getByRole("link", { name: "서보", exact: true }).click();
+        const { page, context } = await openKorean(viewport, "cable", "servos");
         await page.getByTestId("live-robot-toggle").click();
         await page.locator('[data-testid="live-robot-view"][data-state="ready"]').waitFor();
         await expectText(
@@ -350,9 +336,7 @@ describe("in Korean (ko-KR)", () => {
       });
 
       it(`plays a motion preview with Korean controls, ${viewport.width}×${viewport.height}`, async () => {
-        const { page, context } = await newKoreanPage(viewport);
-        await connectCable(page);
-        await page.getByRole("link", { name: "모션", exact: true }).click();
+        const { page, context } = await openKorean(viewport, "cable", "motions");
         await page.getByTestId("rbm-files").setInputFiles(rbmFile("wave.rbm", exampleText("wave.rbm")));
         const card = page.getByTestId("motion-file");
         await card.getByTestId("preview-toggle").click();

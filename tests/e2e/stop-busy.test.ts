@@ -1,6 +1,7 @@
 import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
-import { connectRobot, expectText, FAST, holdRobot, releaseRobot, squash, useApp } from "./harness.ts";
+import { CABLE, loadConnected } from "./connected-page.ts";
+import { expectText, FAST, holdRobot, releaseRobot, squash, useApp } from "./harness.ts";
 import { axeProblems } from "./i18n-checks.ts";
 import "./rbc-test-globals.ts";
 
@@ -30,8 +31,11 @@ const banner = (page: Page) => page.getByTestId("stop-banner");
 
 describe("a robot busy with a motion started by the remote", () => {
   it("on connect the top bar says the robot is busy (not gone) with a Stop right there; that Stop sends 7 and says what the robot answered", async () => {
-    const { page, context } = await app.newPage({ options: { ...FAST, variant: { busyMotion: 2 } } });
-    await connectRobot(page, app.url);
+    const { page, context } = await app.newPage({
+      start: CABLE,
+      options: { ...FAST, variant: { busyMotion: 2 } },
+    });
+    await loadConnected(page, app.url);
     const busy = page.getByTestId("busy-banner");
     await busy.waitFor();
     // The robot's time stands still while the test looks (motion 2 plays 6.6 s of it).
@@ -67,8 +71,8 @@ describe("a robot busy with a motion started by the remote", () => {
   });
 
   it("a motion started from the remote after connecting: the top bar's Stop asks the robot, sends 7 once and reports the 07", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
-    await connectRobot(page, app.url);
+    const { page, context } = await app.newPage({ start: CABLE, options: FAST });
+    await loadConnected(page, app.url);
     // The test hook: the simulated robot's remote starts Walk backward (10, 2.45 s), not the panel.
     const received = await packetsIn(page);
     // Held, so that the 2.45 s walk is still playing when Stop reaches the robot however slowly the test runs.
@@ -85,8 +89,8 @@ describe("a robot busy with a motion started by the remote", () => {
   });
 
   it("an idle robot: Stop says what the robot answered and sends nothing else", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
-    await connectRobot(page, app.url);
+    const { page, context } = await app.newPage({ start: CABLE, options: FAST });
+    await loadConnected(page, app.url);
     await expect.poll(() => robot(page).then((r) => r.playing)).toBeUndefined();
     const received = await packetsIn(page);
     await page.getByRole("button", { name: "Stop", exact: true }).click();

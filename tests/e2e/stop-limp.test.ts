@@ -1,6 +1,7 @@
 import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
-import { connectRobot, expectText, FAST, openMotions, squash, useApp } from "./harness.ts";
+import { CABLE, loadMotions } from "./connected-page.ts";
+import { connectRobot, expectText, FAST, squash, useApp } from "./harness.ts";
 import "./rbc-test-globals.ts";
 
 // Stop and Limp are two things (issue #11 item 1): Stop ends what the robot is doing
@@ -65,8 +66,8 @@ describe("Stop keeps the robot standing; Limp asks first", () => {
   });
 
   it("Escape with nothing focused, and the Stop button, end a motion with 7: the servos hold, the mode stays packet", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
-    await openMotions(page, app.url);
+    const { page, context } = await app.newPage({ start: CABLE, options: FAST });
+    await loadMotions(page, app.url);
     // The Run tab, where the Motions view has tabs (it loads lazily: wait for it first).
     await page.locator('[role="tablist"][aria-label="Motions"], [data-motion="7"]').first().waitFor();
     const runTab = page.getByRole("tab", { name: "Run" });

@@ -13,9 +13,10 @@
  */
 import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
-import { connectRobot, expectText, FAST, releaseRobot, useApp, watchText } from "./harness.ts";
+import { CABLE, loadConnected, openConnected } from "./connected-page.ts";
+import { expectText, FAST, releaseRobot, useApp, watchText } from "./harness.ts";
 import "./rbc-test-globals.ts";
-import { axeProblems, connectDemo, keysShown, newLocalePage } from "./i18n-checks.ts";
+import { axeProblems, keysShown, newLocalePage } from "./i18n-checks.ts";
 
 const app = useApp();
 
@@ -44,11 +45,20 @@ const passive = (page: Page) =>
 /** wCK single-servo moves (`FF (t<<5|id) pos cs`, 4 bytes) among written chunks. */
 const moves = (chunks: string[]) => chunks.filter((c) => /^FF [0-9A-F]{2} [0-9A-F]{2} [0-9A-F]{2}$/.test(c));
 
-async function openZeros(page: Page): Promise<void> {
+/**
+ * The Zeros view with the robot on the cable connected (a page opened with the start option `CABLE`). With
+ * `robotViewFirst`, the panel starts on the Robot view, which reads its figures when first shown (a read leaves
+ * direct mode, so it would end trim live if the Robot view were first shown during it).
+ */
+async function openZeros(page: Page, { robotViewFirst = false } = {}): Promise<void> {
   await page.addInitScript(() => Reflect.deleteProperty(window, "showSaveFilePicker"));
-  await connectRobot(page, app.url);
-  await page.evaluate(() => Reflect.deleteProperty(window, "showSaveFilePicker"));
-  await page.getByRole("link", { name: "Zeros" }).click();
+  if (robotViewFirst) {
+    await loadConnected(page, app.url);
+    await page.getByTestId("device-card").waitFor();
+    await page.getByRole("link", { name: "Zeros" }).click();
+  } else {
+    await loadConnected(page, app.url, "zeros");
+  }
   await page.locator("#zero-0").waitFor();
 }
 
@@ -73,7 +83,7 @@ async function lastMove(page: Page, position: number): Promise<void> {
 
 describe("trim live", () => {
   it("takes the zero pose gently, then moves exactly the servo changed (§5 bytes), clamped to its window", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
+    const { page, context } = await app.newPage({ start: CABLE, options: FAST });
     await openZeros(page);
     const before = await startTrim(page);
     const pose = await writtenSince(page, before);
@@ -114,7 +124,7 @@ describe("trim live", () => {
   });
 
   it("Cancel returns the servos to the stored zeros and leaves direct mode with every servo holding", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
+    const { page, context } = await app.newPage({ start: CABLE, options: FAST });
     await openZeros(page);
     await startTrim(page);
     await page.locator("#zero-12").fill("131");
@@ -136,7 +146,7 @@ describe("trim live", () => {
   });
 
   it("Escape (Stop) ends trim live with the servos holding; nothing is written", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
+    const { page, context } = await app.newPage({ start: CABLE, options: FAST });
     await openZeros(page);
     await startTrim(page);
     await page.locator("#zero-0").focus();
@@ -164,7 +174,7 @@ describe("trim live", () => {
   });
 
   it("Write stores the trimmed table with the backup and read-back, and the backup compares with the robot", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
+    const { page, context } = await app.newPage({ start: CABLE, options: FAST });
     await openZeros(page);
     await startTrim(page);
     await page.locator("#zero-3").fill("70");
@@ -209,7 +219,8 @@ describe("trim live", () => {
   });
 
   it("is refused while the robot plays a motion started elsewhere, with Stop beside the sentence", async () => {
-    const { page, context } = await newLocalePage(app, "en-US", {
+    const { page, context } = await app.newPage({
+      start: CABLE,
       options: { timeScale: 0.25, variant: { busyMotion: 2 } },
     });
     await openZeros(page);
@@ -226,7 +237,7 @@ describe("trim live", () => {
   });
 
   it("a pulled cable says which zeros the robot keeps and what its servos held", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
+    const { page, context } = await app.newPage({ start: CABLE, options: FAST });
     await openZeros(page);
     await startTrim(page);
     await page.locator("#zero-5").fill("127");
@@ -246,8 +257,9 @@ describe("trim live", () => {
   });
 
   it("Disconnect during trim live leaves servo control first and says so on the Zeros view", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
-    await openZeros(page);
+    const { page, context } = await app.newPage({ start: CABLE, options: FAST });
+    // The Robot view is shown again below, to Disconnect: it has read its figures already.
+    await openZeros(page, { robotViewFirst: true });
     await startTrim(page);
     await page.locator("#zero-5").fill("126");
     await lastMove(page, 126);
@@ -274,10 +286,7 @@ const COUNTDOWN = '[data-testid="capture-countdown"]';
 
 describe("capture zeros on the demo robot", () => {
   it("limps, counts down, reads the pose made by hand, checks each joint's window, and fills the editor", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
-    await page.goto(app.url, { waitUntil: "domcontentloaded" });
-    await connectDemo(page);
-    await page.getByRole("link", { name: "Zeros" }).click();
+    const { page, context } = await openConnected(app, { view: "zeros", options: FAST });
     await page.locator("#zero-0").waitFor();
     await page.getByRole("button", { name: "Capture zeros…" }).click();
     await expectText(page.getByTestId("capture-question"), "the robot falls unless you hold it", {
@@ -335,10 +344,7 @@ describe("capture zeros on the demo robot", () => {
   });
 
   it("Cancel during the countdown reads nothing", async () => {
-    const { page, context } = await app.newPage({ options: FAST });
-    await page.goto(app.url, { waitUntil: "domcontentloaded" });
-    await connectDemo(page);
-    await page.getByRole("link", { name: "Zeros" }).click();
+    const { page, context } = await openConnected(app, { view: "zeros", options: FAST });
     await page.getByRole("button", { name: "Capture zeros…" }).click();
     // Held from the frame the countdown shows, so the Cancel lands before the reading on a loaded machine.
     const countdown = await watchText(page, COUNTDOWN, /Reading in/, { hold: true });

@@ -3,15 +3,15 @@ import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
 import { FACTORY_ZEROS, STANDARD_ZEROS } from "../../src/protocol/index.ts";
 import { parseZerosBackup } from "../../src/protocol/zeros-backup.ts";
-import { connectRobot, cspViolations, expectText, robotTime, squash, useApp } from "./harness.ts";
+import { CABLE, loadConnected, openConnected } from "./connected-page.ts";
+import { cspViolations, expectText, robotTime, squash, type TestContext, useApp } from "./harness.ts";
 import "./rbc-test-globals.ts";
 import {
-  connectCable,
   expectPageOk,
   keysShown,
   pageLang as lang,
-  newLocalePage,
   SIZES,
+  type Size,
   shot,
   sizeName as size,
 } from "./i18n-checks.ts";
@@ -23,23 +23,22 @@ const withoutSaveDialog = () => {
   Object.defineProperty(window, "showSaveFilePicker", { value: undefined, configurable: true });
 };
 
-async function openZeros(page: Page): Promise<void> {
+/** Opens the Zeros view with the robot on the cable connected, in a page without the Save dialog. */
+async function openZeros(): Promise<{ page: Page; context: TestContext }> {
+  const { page, context } = await app.newPage({ start: CABLE });
   // This file tests the download path: a browser without the Save dialog (honest-results.test.ts has both).
   await page.addInitScript(withoutSaveDialog);
-  await connectRobot(page, app.url);
-  // A page opened before this script was added (the Korean tests open theirs first) loses the dialog here.
-  await page.evaluate(withoutSaveDialog);
-  await page.getByRole("link", { name: "Zeros" }).click();
+  await loadConnected(page, app.url, "zeros");
   await page.getByTestId("zeros-card").waitFor();
   await page.locator("#zero-0").waitFor();
+  return { page, context };
 }
 
 const simZeros = (page: Page) => page.evaluate(() => window.__rbcTest?.sim.zeros);
 
 describe("zeros editor", () => {
   it("reads the robot's zeros, writes an edit after saving a backup, and verifies it", async () => {
-    const { page, context } = await app.newPage();
-    await openZeros(page);
+    const { page, context } = await openZeros();
     await expect.poll(() => page.locator("#zero-3").inputValue()).toBe(String(FACTORY_ZEROS[3]));
 
     // Every input is labelled with its joint.
@@ -80,8 +79,7 @@ describe("zeros editor", () => {
   });
 
   it("refuses an out-of-range value: Write is disabled and says why, nothing is sent", async () => {
-    const { page, context } = await app.newPage();
-    await openZeros(page);
+    const { page, context } = await openZeros();
     const before = await simZeros(page);
     const written = await page.evaluate(() => window.__rbcTest?.port.written.length);
 
@@ -105,8 +103,7 @@ describe("zeros editor", () => {
   });
 
   it("refuses a corrupt or wrong backup file with a clear message", async () => {
-    const { page, context } = await app.newPage();
-    await openZeros(page);
+    const { page, context } = await openZeros();
     const file = page.getByTestId("zeros-file");
     const cases: Array<[string, string, RegExp]> = [
       ["broken.json", "{ not json", /not JSON/],
@@ -148,8 +145,7 @@ describe("zeros editor", () => {
   });
 
   it("restores a backup into the editor, warning when it comes from another robot; the factory zeros fill it", async () => {
-    const { page, context } = await app.newPage();
-    await openZeros(page);
+    const { page, context } = await openZeros();
     const zeros = FACTORY_ZEROS.map((v, i) => (i === 0 ? v + 3 : v));
     const backup = {
       format: "rbc-zeros",
@@ -177,8 +173,7 @@ describe("zeros editor", () => {
   });
 
   it("backs up the robot's zeros on their own, in the write path's format and name, writing nothing", async () => {
-    const { page, context } = await app.newPage();
-    await openZeros(page);
+    const { page, context } = await openZeros();
     // The editor has an unsaved edit: the backup holds what the robot holds, not the editor.
     const onRobot = [...FACTORY_ZEROS];
     await page.locator("#zero-7").fill("90");
@@ -213,8 +208,7 @@ describe("zeros editor", () => {
   });
 
   it("names the factory and reference zeros and says which is which", async () => {
-    const { page, context } = await app.newPage();
-    await openZeros(page);
+    const { page, context } = await openZeros();
     await expectText(
       page.getByTestId("zero-tables"),
       `Factory zeros The values the robot's firmware holds when it is new: ${FACTORY_ZEROS.join(" ")}.`,
@@ -236,8 +230,7 @@ describe("zeros editor", () => {
   });
 
   it("works with the keyboard alone", async () => {
-    const { page, context } = await app.newPage();
-    await openZeros(page);
+    const { page, context } = await openZeros();
     await page.locator("#zero-1").focus();
     await page.keyboard.press("ArrowUp");
     await page.keyboard.press("ArrowUp");
@@ -277,19 +270,23 @@ describe("in Korean (ko-KR)", () => {
     Object.defineProperty(window, "showSaveFilePicker", { value: undefined, configurable: true });
   };
 
-  async function openZeros(page: Page): Promise<void> {
-    await connectCable(page);
-    await page.getByRole("link", { name: "영점", exact: true }).click();
+  async function openZeros(size?: Size): Promise<{ page: Page; context: TestContext }> {
+    const { page, context } = await openConnected(app, {
+      robot: "cable",
+      view: "zeros",
+      locale: "ko-KR",
+      size,
+    });
     await page.getByTestId("zeros-card").waitFor();
     await page.locator("#zero-15").waitFor();
     await page.locator("button:not([disabled])", { hasText: "공장 영점 불러오기" }).waitFor();
+    return { page, context };
   }
 
   describe("the Zeros view in Korean", () => {
     for (const viewport of SIZES) {
       it(`is in Korean, fits and passes axe at ${viewport.width}×${viewport.height}`, async () => {
-        const { page, context } = await newLocalePage(app, "ko-KR", { size: viewport });
-        await openZeros(page);
+        const { page, context } = await openZeros(viewport);
         await expect.poll(() => lang(page)).toBe("ko");
         const card = page.getByTestId("zeros-card");
         await expectText(card.getByRole("heading", { level: 1 }), "영점 위치");
@@ -347,8 +344,7 @@ describe("in Korean (ko-KR)", () => {
     }
 
     it("says in Korean what a write, a backup and a backup file did", async () => {
-      const { page, context } = await newLocalePage(app, "ko-KR");
-      await openZeros(page);
+      const { page, context } = await openZeros();
 
       // The write: a backup first, then the verified table.
       await page.locator("#zero-3").fill("70");

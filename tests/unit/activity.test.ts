@@ -33,6 +33,7 @@ const ARRANGE: Record<Doing["kind"], (m: Machine) => void> = {
     activity.startSound(8, 5916);
   },
   upload: ({ activity }) => activity.startUpload(new AbortController()),
+  firmware: ({ activity }) => activity.startFirmware(),
   direct: ({ activity }) => activity.enterDirect("servo-control"),
 };
 
@@ -56,6 +57,7 @@ const TRANSITIONS: Array<{
     from: ["idle"],
     apply: ({ activity }) => activity.startUpload(new AbortController()),
   },
+  { name: "startFirmware", from: ["idle", "busy"], apply: ({ activity }) => activity.startFirmware() },
   { name: "enterDirect", from: ["idle"], apply: ({ activity }) => activity.enterDirect("teach-in") },
   { name: "handDirect", from: ["direct"], apply: ({ activity }) => activity.handDirect("tethered-play") },
   { name: "exitDirect", from: ["direct"], apply: ({ activity }) => activity.exitDirect() },
@@ -228,6 +230,62 @@ describe("the activity machine: what each transition leads to", () => {
     // Ended twice (cancelled by Stop, then its own clean-up): the second is harmless.
     activity.uploadEnded(mine);
     expect(activity.doing.kind).toBe("idle");
+  });
+
+  it("an upload's Cancel: cancelling from that moment (once, stamped), kept by its later turns, gone with its end", async () => {
+    const { clock, activity, seen } = machine();
+    const mine = new AbortController();
+    activity.cancelUpload(mine); // not begun yet: nothing to mark
+    expect(activity.doing).toEqual({ kind: "idle", since: 0 });
+    await clock.advance(10);
+    activity.startUpload(mine);
+    await clock.advance(30);
+    activity.cancelUpload(new AbortController()); // another upload's Cancel
+    expect(activity.upload?.cancelling).toBeUndefined();
+    activity.cancelUpload(mine);
+    expect(activity.doing).toEqual({ kind: "upload", since: 10, abort: mine, cancelling: { since: 40 } });
+    const changes = seen.length;
+    await clock.advance(5);
+    activity.cancelUpload(mine); // pressed again: the first press stands
+    activity.startUpload(mine); // its next turn
+    expect(activity.doing).toEqual({ kind: "upload", since: 10, abort: mine, cancelling: { since: 40 } });
+    expect(seen.length).toBe(changes);
+    activity.uploadEnded(mine);
+    expect(activity.doing).toEqual({ kind: "idle", since: 45 });
+    activity.cancelUpload(mine); // after its end: nothing
+    expect(activity.doing).toEqual({ kind: "idle", since: 45 });
+  });
+
+  it("a firmware update: started from idle or over a motion started elsewhere, cancelled once, ended to idle", async () => {
+    const { clock, activity, seen } = machine();
+    await clock.advance(20);
+    activity.noticeBusy("probe");
+    activity.startFirmware();
+    expect(activity.doing).toEqual({ kind: "firmware", since: 20 });
+    expect(activity.firmware).toEqual({ kind: "firmware", since: 20 });
+    await clock.advance(1500);
+    activity.cancelFirmware();
+    expect(activity.doing).toEqual({ kind: "firmware", since: 20, cancelling: { since: 1520 } });
+    const changes = seen.length;
+    await clock.advance(100);
+    activity.cancelFirmware();
+    expect(activity.doing).toEqual({ kind: "firmware", since: 20, cancelling: { since: 1520 } });
+    expect(seen.length).toBe(changes);
+    activity.firmwareEnded();
+    expect(activity.doing).toEqual({ kind: "idle", since: 1620 });
+    // After its end (or with nothing under way) neither changes anything.
+    activity.cancelFirmware();
+    activity.firmwareEnded();
+    expect(activity.doing).toEqual({ kind: "idle", since: 1620 });
+    expect(seen.length).toBe(changes + 1);
+  });
+
+  it("a firmware update makes the robot restart: the servos are no longer known to be limp", async () => {
+    const { activity } = machine();
+    await activity.beginLimp(async () => LIMP_RESULT);
+    expect(activity.limp).toBe(true);
+    activity.startFirmware();
+    expect(activity.snapshot).toMatchObject({ doing: { kind: "firmware" }, limp: false });
   });
 
   it("direct mode: entered from idle for a use, handed over, left", () => {

@@ -111,4 +111,35 @@ describe("RbcClient.updateFirmware", () => {
     );
     expect(result.firmware).toEqual({ major: 2, minor: 51 });
   });
+
+  it("is the activity machine's `firmware` from its first byte; its Cancel makes it `cancelling`; idle after", async () => {
+    const r = await rig();
+    const seen: string[] = [];
+    r.client.activityChanges.on(({ doing }) => {
+      const cancelling = "cancelling" in doing && doing.cancelling ? " cancelling" : "";
+      seen.push(`${doing.kind}${cancelling}`);
+    });
+    const abort = new AbortController();
+    let cancelledAt = -1;
+    const error = await r.fail(
+      r.client.updateFirmware(firmwareHex("2.50", 4096), {
+        signal: abort.signal,
+        onAskPowerCycle: r.onAskPowerCycle,
+        onProgress: (p) => {
+          if (p.linesDone < 10 || abort.signal.aborted) return;
+          expect(r.client.activity.doing).toMatchObject({ kind: "firmware" });
+          cancelledAt = r.clock.now();
+          abort.abort();
+          expect(r.client.activity.doing).toMatchObject({
+            kind: "firmware",
+            cancelling: { since: cancelledAt },
+          });
+        },
+      }),
+    );
+    expect(error).toMatchObject({ failure: "cancelled" });
+    expect(cancelledAt).toBeGreaterThan(0);
+    expect(seen).toEqual(["firmware", "firmware cancelling", "idle"]);
+    expect(r.client.activity.doing.kind).toBe("idle");
+  });
 });

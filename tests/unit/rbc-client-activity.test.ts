@@ -123,4 +123,32 @@ describe("RbcClient over the activity machine", () => {
     await run(after);
     expect(client.activity.doing).toMatchObject({ kind: "direct", use: "servo-control" });
   });
+
+  it("an upload's Cancel after its free-memory read: cancelling at once, the reset and the download never sent", async () => {
+    const { client, run, clock } = await makeRig();
+    const log: LogEntry[] = [];
+    client.log.on((e) => log.push(e));
+    const abort = new AbortController();
+    let at = -1;
+    const upload = client
+      .uploadMotion(parseRbm(exampleText("wave.rbm")), {
+        resetFirst: true,
+        signal: abort.signal,
+        // Told between the free-memory read (0x0F) and the reset (0x1F): Cancel is pressed there.
+        onPhase: (phase) => {
+          if (phase !== "resetting") return;
+          at = clock.now();
+          abort.abort();
+          expect(client.activity.doing).toMatchObject({ kind: "upload", cancelling: { since: at } });
+        },
+      })
+      .catch((e: unknown) => e);
+    const error = await run(upload);
+    expect(at).toBeGreaterThanOrEqual(0);
+    expect(error).toMatchObject({ code: "cancelled", situation: { kind: "upload-cancelled-early" } });
+    const types = sent(log).map((hex) => hex.split(" ")[8]);
+    expect(types).toEqual(["0F"]); // the free-memory read only: no reset (0x1F), no download
+    expect(log.some((e) => e.direction === "out" && e.kind !== "packet")).toBe(false); // no download byte
+    expect(client.activity.doing.kind).toBe("idle");
+  });
 });

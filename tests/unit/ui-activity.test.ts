@@ -4,14 +4,19 @@ import { initialState } from "../../src/ui/app-state.ts";
 import { initialClass } from "../../src/ui/features/class/state.ts";
 import {
   busyElsewhere,
+  cancellingNow,
+  isCancelling,
   isLimp,
   isPlaying,
   isStopping,
+  isUploading,
   playingMotion,
   playingSound,
 } from "../../src/ui/features/connection/activity.ts";
 import type { ConnectionState } from "../../src/ui/features/connection/state.ts";
+import { noticeText } from "../../src/ui/notices.ts";
 import { anyRobotConnected } from "../../src/ui/stop-all.ts";
+import { stoppingNotice } from "../../src/ui/stop-outcome.ts";
 
 /** The panel reads what the robot does from the device's activity snapshot, through small selectors. */
 
@@ -65,6 +70,33 @@ describe("the selectors of the device's activity", () => {
     expect(busyElsewhere(busy)).toEqual({ kind: "busy", since: 7, evidence: "probe" });
     expect(isPlaying(busy)).toBe(true);
     expect(isLimp(connected({ ...idle, limp: true }))).toBe(true);
+  });
+
+  it("an upload or a firmware update is cancelling only once the machine says so; nothing else is", () => {
+    const abort = new AbortController();
+    const upload: ActivitySnapshot = { ...idle, doing: { kind: "upload", since: 5, abort } };
+    expect([isUploading(connected(upload)), isCancelling(connected(upload))]).toEqual([true, false]);
+    expect(isUploading(connected(idle))).toBe(false);
+    // Stop pressed during any step of it, the free-memory read or the reset too, says it cancels the upload.
+    const notice = stoppingNotice({ ...base, connection: connected(upload) }, 50);
+    expect(noticeText(notice, "en")).toBe("Stopping: cancelling the upload…");
+    const cancelled = {
+      ...upload,
+      doing: { kind: "upload", since: 5, abort, cancelling: { since: 60 } },
+    } as const;
+    expect(isCancelling(connected(cancelled))).toBe(true);
+    expect(cancellingNow(cancelled)).toBe(true);
+    const firmware: ActivitySnapshot = { ...idle, doing: { kind: "firmware", since: 5 } };
+    expect(cancellingNow(firmware)).toBe(false);
+    expect(
+      cancellingNow({ ...firmware, doing: { kind: "firmware", since: 5, cancelling: { since: 9 } } }),
+    ).toBe(true);
+    expect([cancellingNow(undefined), cancellingNow(idle), cancellingNow(motion)]).toEqual([
+      false,
+      false,
+      false,
+    ]);
+    expect(isCancelling(base.connection)).toBe(false);
   });
 });
 

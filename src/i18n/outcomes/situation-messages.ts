@@ -54,6 +54,7 @@ export const situationMessages = defineMessages({
   },
   "outcome.activity.sound": { en: "playing a sound", ko: "소리를 내고 있어요" },
   "outcome.activity.upload": { en: "receiving an upload", ko: "업로드를 받고 있어요" },
+  "outcome.activity.firmware": { en: "taking a firmware update", ko: "펌웨어를 업데이트하고 있어요" },
   "outcome.activity.direct": { en: "in direct servo control", ko: "직접 서보 제어 중이에요" },
   "outcome.activity.stop": { en: "ending an activity (Stop)", ko: "하던 일을 끝내고 있어요 (정지)" },
   "outcome.activity.limp": { en: "going limp", ko: "힘을 빼고 있어요" },

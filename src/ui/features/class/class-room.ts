@@ -268,8 +268,8 @@ export class ClassRoom implements Controller {
   cancel(id: number): void {
     const link = this.links.get(id);
     if (!link?.abort) return;
+    // The robot's activity machine marks its upload `cancelling` (the row reads it there) until it ends.
     link.abort.abort();
-    patchRobot(this.store, id, (r) => (r.upload ? { upload: { ...r.upload, cancelling: true } } : {}));
   }
 
   cancelAll(): void {

@@ -31,16 +31,9 @@ export async function uploadPackTo(room: ClassRoom, link: RobotLink, check: Pack
       const { motion } = f;
       if (!motion) break;
       const total = f.imageBytes;
-      patchRobot(store, id, (r) => ({
-        upload: {
-          file: i,
-          files: files.length,
-          fileName: f.file.fileName,
-          acknowledged: 0,
-          total,
-          cancelling: r.upload?.cancelling ?? false,
-        },
-      }));
+      patchRobot(store, id, {
+        upload: { file: i, files: files.length, fileName: f.file.fileName, acknowledged: 0, total },
+      });
       try {
         const result = await client.uploadMotion(motion, {
           resetFirst: i === 0,
@@ -71,6 +64,8 @@ export async function uploadPackTo(room: ClassRoom, link: RobotLink, check: Pack
     failure = { fileName: files[0]?.file.fileName ?? "", error: e };
   } finally {
     if (link.abort === abort) link.abort = undefined;
+    // The upload is over (its Cancel with it): what follows is the row's result.
+    patchRobot(store, id, { upload: undefined });
   }
   const last = stored.at(-1)?.result;
   let freeMotion = last?.freeAfter;
@@ -88,7 +83,6 @@ export async function uploadPackTo(room: ClassRoom, link: RobotLink, check: Pack
   };
   patchRobot(store, id, (r) => ({
     task: r.task === "upload" ? undefined : r.task,
-    upload: undefined,
     ...(freeMotion === undefined ? {} : { freeMotion }),
     ...(last?.errorCode === undefined ? {} : { errorCode: last.errorCode }),
     result: uploadResultNotice(outcome, store.get().locale),

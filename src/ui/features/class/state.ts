@@ -11,7 +11,12 @@ import type { Store } from "../../store.ts";
 /** Where one class robot's connection is. `lost`: the link went away (a pulled cable); `failed`: it never connected. */
 export type ClassRobotPhase = "connecting" | "connected" | "lost" | "failed";
 
-/** What the view is doing with a class robot right now (its buttons wait meanwhile). */
+/**
+ * What the view is doing with a class robot right now (its buttons wait meanwhile). The view's own multi-step
+ * work, not a device fact: a pack upload spans several device uploads and the shelf records between them, a
+ * Run includes the view's reads, "reading" the whole refresh. What the robot itself is doing (an upload and
+ * its Cancel, a Limp) is its activity machine's (`activity`), read there.
+ */
 export type ClassRobotTask = "upload" | "run" | "reading";
 
 /** The pack's upload to one robot, as it goes. */
@@ -22,7 +27,6 @@ export interface ClassUploadProgress {
   fileName: string;
   acknowledged: number;
   total: number;
-  cancelling: boolean;
 }
 
 /** One robot of the class, as the view shows it. Facts the robot did not report stay undefined ("—"). */

@@ -27,6 +27,11 @@ export function busyElsewhere(c: ConnectionState): BusyActivity | undefined {
   return d?.kind === "busy" ? d : undefined;
 }
 
+/** An upload is under way, from its first read to its end (not only its download). */
+export function isUploading(c: ConnectionState): boolean {
+  return doing(c)?.kind === "upload";
+}
+
 /** A motion plays, this panel's or one started elsewhere. */
 export function isPlaying(c: ConnectionState): boolean {
   return playingMotion(c) !== undefined || busyElsewhere(c) !== undefined;
@@ -40,4 +45,19 @@ export function isLimp(c: ConnectionState): boolean {
 /** Stop is under way, or the 7 that ends the panel's motion was sent (it ends at the end of its scene). */
 export function isStopping(c: ConnectionState): boolean {
   return c.activity?.halt?.kind === "stop" || playingMotion(c)?.stop7 !== undefined;
+}
+
+/**
+ * The upload or firmware update under way on this robot was cancelled by its own Cancel and is ending (the
+ * device's machine is `cancelling` from the press to the end, through every step of it). Takes any robot's
+ * snapshot: the top-bar robot's (`isCancelling`) or a Class view robot's.
+ */
+export function cancellingNow(activity: ActivitySnapshot | undefined): boolean {
+  const d = activity?.doing;
+  return (d?.kind === "upload" || d?.kind === "firmware") && d.cancelling !== undefined;
+}
+
+/** The top-bar robot's upload or firmware update is ending after its Cancel. */
+export function isCancelling(c: ConnectionState): boolean {
+  return cancellingNow(c.activity);
 }

@@ -12,7 +12,17 @@ export {
   refreshKnownPorts,
   stopSessionRobot,
 } from "./actions.ts";
-export { busyElsewhere, isLimp, isPlaying, isStopping, playingMotion, playingSound } from "./activity.ts";
+export {
+  busyElsewhere,
+  cancellingNow,
+  isCancelling,
+  isLimp,
+  isPlaying,
+  isStopping,
+  isUploading,
+  playingMotion,
+  playingSound,
+} from "./activity.ts";
 export { connectPlace } from "./connect-place.ts";
 export { connectionMessages } from "./messages.ts";
 export { robotName } from "./robot-name.ts";

@@ -158,7 +158,8 @@ export function cancelConfirm(ctx: AppContext): void {
 export function cancelFlash(ctx: AppContext): void {
   const run = firmwareOf(ctx.store.get()).run;
   if (!run || run.step === "confirming") return;
-  patchFirmware(ctx.store, { run: { ...run, cancelling: true } });
+  // The connected robot's machine marks its update `cancelling`; Recover has no machine (see FirmwareRun).
+  if (run.recovery) patchFirmware(ctx.store, { run: { ...run, recoveryCancelling: true } });
   const c = ctx.session.connectionScope.peek(FIRMWARE);
   c?.abort?.abort();
   // Recovery runs outside any connection: its controller is the page's.

@@ -3,6 +3,7 @@ import { DEFAULT_FIRMWARE_TIMEOUTS, type FirmwareUpdateProgress } from "../../..
 import { firmwareNoticeText } from "../../../i18n/outcomes/firmware/firmware-words.ts";
 import { formatSeconds } from "../../format.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
+import { isCancelling } from "../connection/index.ts";
 import { cancelFlash } from "./actions.ts";
 import type { FirmwareTranslator } from "./messages.ts";
 import type { FirmwareRun } from "./state.ts";
@@ -48,6 +49,9 @@ export function progressBlock(
   demo: boolean,
 ): TemplateResult {
   const p = run.progress;
+  // The connected robot's update is the device's machine's `firmware`, `cancelling` once Cancel was pressed;
+  // Recover runs on a bare port, where no client's machine exists, and keeps its Cancel on the run.
+  const cancelling = run.recovery ? run.recoveryCancelling === true : isCancelling(ctx.state.connection);
   const waiting = run.step === "power-cycle";
   const wait = formatSeconds(DEFAULT_FIRMWARE_TIMEOUTS.powerCycleMs / 1000, t.locale, 0);
   return html`
@@ -83,10 +87,10 @@ export function progressBlock(
           class="btn"
           id="flash-cancel"
           data-testid="flash-cancel"
-          ?disabled=${run.cancelling}
+          ?disabled=${cancelling}
           @click=${() => cancelFlash(ctx)}
         >
-          ${run.cancelling ? t("firmware.cancelling") : t("firmware.cancel")}
+          ${cancelling ? t("firmware.cancelling") : t("firmware.cancel")}
         </button>
         <span class="muted fw-cancel-hint">
           ${waiting ? t("firmware.cancelNothingWritten") : t("firmware.cancelIncomplete")}

@@ -36,13 +36,18 @@ export type FirmwareStep =
   | "starting";
 
 export interface FirmwareRun {
+  /** Where the update is, as its progress reports tell it (the panel's own steps, drawn from the device's). */
   step: FirmwareStep;
   fileName: string;
   /** The version the robot reported before the update. */
   before?: { major: number; minor: number };
   progress?: FirmwareUpdateProgress;
-  /** Cancel was pressed; the update is ending. */
-  cancelling?: boolean;
+  /**
+   * Recover only: Cancel was pressed and the update is ending. Recover runs on a bare port, outside any client,
+   * so no device activity machine knows it; the connected robot's update is read from its machine instead
+   * (`isCancelling`, features/connection).
+   */
+  recoveryCancelling?: boolean;
   /** The update runs on a bare port (Recover), not on the connected robot. */
   recovery?: boolean;
   /**

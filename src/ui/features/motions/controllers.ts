@@ -11,7 +11,10 @@ import { Ticker } from "./ticker.ts";
 
 export interface MotionRun {
   number: number;
-  /** "Stop motion" was pressed for this run. */
+  /**
+   * "Stop motion" was pressed for this run: which of the two actions says how it ended (the Stop's). The panel's
+   * own bookkeeping between its actions, never drawn: views ask the device's machine (`isStopping`).
+   */
   stopRequested: boolean;
 }
 

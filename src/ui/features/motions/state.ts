@@ -78,11 +78,13 @@ export interface UploadRun {
   total: number;
   /** Progress reports with their arrival time (robot-clock ms, the session's clock). */
   samples: ProgressSample[];
-  /** What the panel is doing: before the first byte (resetting, checking free memory), then sending. */
+  /**
+   * Where the upload is, as the device's `onPhase` and progress reports tell it (before the first byte:
+   * resetting, checking free memory; then sending). Its Cancel is the device's machine's (`isCancelling`).
+   */
   phase: "resetting" | "checking" | "sending";
   /** Robot-clock ms (the session's clock) of the first progress report (the first byte is about to go out). */
   sendingSince?: number;
-  cancelling?: boolean;
 }
 
 /** A motion the panel is waiting on. */

@@ -119,9 +119,9 @@ export function cancelConfirm(ctx: AppContext): void {
   patchMotions(ctx.store, { confirming: undefined });
 }
 
+/** Cancel: the device's machine marks the upload `cancelling` (the view reads it there) until it ends. */
 export function cancelUpload(ctx: AppContext): void {
   motionsController(ctx).upload?.abort();
-  patchMotions(ctx.store, (m) => (m.upload ? { upload: { ...m.upload, cancelling: true } } : {}));
 }
 
 /**

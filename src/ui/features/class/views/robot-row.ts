@@ -5,6 +5,7 @@ import { platformName } from "../../../../protocol/platform.ts";
 import { formatFirmware } from "../../../../shared/format.ts";
 import { notice } from "../../../shell/notice.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
+import { cancellingNow } from "../../connection/index.ts";
 import {
   cancelNaming,
   cancelRobot,
@@ -102,11 +103,13 @@ function nameEditor(ctx: ViewContext, t: ClassTranslator, r: ClassRobot, title: 
 function progressBlock(ctx: ViewContext, t: ClassTranslator, r: ClassRobot): TemplateResult | typeof nothing {
   const up = r.upload;
   if (!up) return nothing;
+  // The robot's own activity machine says when its upload is ending after Cancel.
+  const cancelling = cancellingNow(r.activity);
   return html`<div class="class-progress" data-testid="class-progress">
     <p class="small">
       ${t("class.upload.file", { file: up.fileName, index: up.file + 1, files: up.files })}
       <span class="num">${
-        up.cancelling
+        cancelling
           ? t("class.upload.cancelling")
           : t("class.upload.bytes", { acknowledged: up.acknowledged, total: up.total })
       }</span>
@@ -116,7 +119,7 @@ function progressBlock(ctx: ViewContext, t: ClassTranslator, r: ClassRobot): Tem
       .value=${up.acknowledged}
       aria-label=${t("class.upload.progressLabel", { file: up.fileName })}
     ></progress>
-    <button type="button" class="btn btn--small" ?disabled=${up.cancelling} @click=${() => cancelRobot(ctx, r.id)}>
+    <button type="button" class="btn btn--small" ?disabled=${cancelling} @click=${() => cancelRobot(ctx, r.id)}>
       ${t("class.upload.cancel")}
     </button>
   </div>`;

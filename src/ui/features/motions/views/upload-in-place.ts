@@ -4,6 +4,7 @@ import { translator } from "../../../../i18n/translate.ts";
 import type { AppState } from "../../../app-state.ts";
 import { liveNotice } from "../../../shell/notice.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
+import { isCancelling } from "../../connection/index.ts";
 import { runNowButton, shelfMessages } from "../../shelf/index.ts";
 import { type MotionsTranslator, motionsMessages } from "../messages.ts";
 import { offerFor } from "../run-actions.ts";
@@ -43,6 +44,8 @@ function progress(ctx: ViewContext, t: MotionsTranslator, up: UploadRun): Templa
   const { locale } = t;
   const f = uploadFigures(up.samples, up.total);
   const sending = up.samples.length > 0;
+  // The device's machine says when the upload is ending after Cancel (its reads and reset included).
+  const cancelling = isCancelling(ctx.state.connection);
   const figures = t("motions.upload.figures", {
     acknowledged: f.acknowledged,
     total: f.total,
@@ -55,7 +58,7 @@ function progress(ctx: ViewContext, t: MotionsTranslator, up: UploadRun): Templa
       <p>
         <strong>${t("motions.upload.uploading", { file: up.fileName })}</strong>
         ${
-          up.cancelling
+          cancelling
             ? t("motions.upload.cancelling")
             : sending
               ? html`<span class="num" data-testid="upload-figures">${figures}</span>`
@@ -69,7 +72,7 @@ function progress(ctx: ViewContext, t: MotionsTranslator, up: UploadRun): Templa
         aria-valuetext=${`${f.percent}%`}
       ></progress>
       <div class="actions">
-        <button type="button" class="btn" ?disabled=${up.cancelling} @click=${() => cancelUpload(ctx)}>
+        <button type="button" class="btn" ?disabled=${cancelling} @click=${() => cancelUpload(ctx)}>
           ${t("motions.upload.cancel")}
         </button>
       </div>
