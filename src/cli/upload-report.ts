@@ -1,7 +1,7 @@
 import type { Locale } from "../i18n/locale.ts";
 import { sceneText, servoText } from "../i18n/outcomes/motion/position-words.ts";
 import { checkSummaryText } from "../i18n/outcomes/rbm/check-summary.ts";
-import { rbmIssueWords } from "../i18n/outcomes/rbm/rbm-issue-text.ts";
+import { rbmIssueText, rbmIssueWords } from "../i18n/outcomes/rbm/rbm-issue-text.ts";
 import { translator } from "../i18n/translate.ts";
 import { formatSeconds } from "../i18n/units.ts";
 import { memoryFootprint } from "../protocol/catalog.ts";
@@ -77,6 +77,8 @@ export function motionSummary(
   });
 }
 
+/** The issues for `--json`: each with its code and facts, and as `message` the catalogue's English sentence. */
 export function issuesJson(validation: RbmValidation) {
-  return { errors: validation.errors, warnings: validation.warnings };
+  const said = (issues: readonly RbmIssue[]) => issues.map((i) => ({ ...i, message: rbmIssueText(i, "en") }));
+  return { errors: said(validation.errors), warnings: said(validation.warnings) };
 }

@@ -6,7 +6,7 @@
 import { constants } from "node:fs";
 import { access, readFile, writeFile } from "node:fs/promises";
 import { join } from "node:path";
-import { zerosBackupRefusalText } from "../i18n/outcomes/zero-backup-words.ts";
+import { backupRefusalText } from "../i18n/outcomes/zero-words.ts";
 import { said, saidBy } from "../i18n/said.ts";
 import {
   createZerosBackup,
@@ -111,7 +111,7 @@ export async function readBackupFile(path: string): Promise<ZerosBackup> {
   }
   const parsed = parseZerosBackup(text);
   if (!parsed.ok) {
-    const reason = saidBy((l) => zerosBackupRefusalText(parsed, l));
+    const reason = saidBy((l) => backupRefusalText(parsed, l));
     throw new CliError(
       `backup-${parsed.problem}`,
       said(cliMessages, "cli.zerosFile.refused", { path, reason }),

@@ -3,11 +3,12 @@
  * module of its own: motion-run.ts, stop.ts, limp.ts, sound.ts, busy-probe.ts, servo-doctor/…) with the doc
  * comment callers read; splitting it would split the API's one page of documentation, not its logic.
  */
+
 import type { Transport } from "../link/transport.ts";
 import type { Motion } from "../motion/index.ts";
 import { COMMANDS, type MemoryArea } from "../protocol/commands.ts";
 import { type IntelHexImage, parseIntelHex } from "../protocol/intel-hex.ts";
-import { platformWarning } from "../protocol/plausibility.ts";
+import { isKnownPlatform } from "../protocol/plausibility.ts";
 import { motionDurationMs, type RbmMotion } from "../protocol/rbm.ts";
 import type { Clock } from "../shared/clock.ts";
 import type { Emitter } from "../shared/emitter.ts";
@@ -181,8 +182,8 @@ export class RbcClient {
         throw e;
       });
     const platform = this.#c.state.platform ?? 0;
-    const unknownPlatform = platformWarning(platform);
-    const warnings: string[] = unknownPlatform === undefined ? [] : [unknownPlatform];
+    // A technical line; the outcome catalogue words it from the platform (`platformWarning` in src/i18n).
+    const warnings = isKnownPlatform(platform) ? [] : [`platform ${platform} is not one of 1-4`];
     return { firmware, platform, serialNumber, warnings };
   }
 

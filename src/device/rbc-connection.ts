@@ -202,6 +202,7 @@ export class RbcConnection {
     this.setState({
       mode: "connecting",
       reason: undefined,
+      lostCause: undefined,
       basicPostureConfirmed: false,
       subscription: undefined,
     });
@@ -502,7 +503,9 @@ export class RbcConnection {
       throw new RbcDisconnectedError(
         undefined,
         undefined,
-        lost === LINK_LOST ? undefined : { kind: "link-lost", reported: lost, advice: "connect-again" },
+        lost === LINK_LOST
+          ? undefined
+          : { kind: "link-lost", reported: lost, cause: this._state.lostCause, advice: "connect-again" },
       );
     }
     if (this.mode === "direct") {
@@ -588,17 +591,19 @@ export class RbcConnection {
 
   private onTransportStatus(event: TransportStatusEvent): void {
     if (event.status !== "lost") return;
-    // The link says what happened; without its words, the error is worded by its code (a lost link).
+    // The link says what happened (a technical line, and its facts for the catalogue); without it, the error is
+    // worded by its code (a lost link).
     const reason = event.reason ?? LINK_LOST;
     const situation =
       event.reason === undefined
         ? undefined
-        : ({ kind: "link-lost", reported: reason, advice: "check-cable" } as const);
+        : ({ kind: "link-lost", reported: reason, cause: event.cause, advice: "check-cable" } as const);
     this.failPending(new RbcDisconnectedError(undefined, event.error, situation));
     this.subscription = undefined;
     this.setState({
       mode: "disconnected",
       reason,
+      lostCause: event.cause,
       playing: undefined,
       sounding: undefined,
       subscription: undefined,

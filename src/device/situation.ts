@@ -1,3 +1,4 @@
+import type { LinkFacts } from "../link/transport.ts";
 import type { RbmIssue } from "../protocol/rbm-validate.ts";
 import type { ZeroProblem } from "../protocol/zeros.ts";
 
@@ -49,8 +50,11 @@ export type RbcSituation =
   | { kind: "already-connected" }
   /** `close()` was called while the request waited. */
   | { kind: "connection-closed" }
-  /** The link reported the loss in its own (English) words; `advice`: what the person does next. */
-  | { kind: "link-lost"; reported: string; advice: "check-cable" | "connect-again" }
+  /**
+   * The link reported the loss: `reported` its technical line, `cause` its facts (which the catalogue words);
+   * `advice`: what the person does next.
+   */
+  | { kind: "link-lost"; reported: string; cause?: LinkFacts; advice: "check-cable" | "connect-again" }
   /** A packet request (`command`) while the client is in direct servo control. */
   | { kind: "needs-normal-mode"; command: string }
   /** A servo with no published safe range (`wiggle`: a wiggle test, which names the ids that have one). */

@@ -1,3 +1,4 @@
+import type { LinkFacts } from "../link/transport.ts";
 import type { MemoryArea } from "../protocol/commands.ts";
 
 export type ClientMode = "disconnected" | "connecting" | "packet" | "download" | "direct";
@@ -5,10 +6,12 @@ export type ClientMode = "disconnected" | "connecting" | "packet" | "download" |
 export interface ClientState {
   mode: ClientMode;
   /**
-   * Set after a loss: what the link reported (its own English), or a technical line when it said nothing. The
-   * failed requests' errors carry it (`RbcDisconnectedError`, situation `link-lost`) for the catalogue to word.
+   * Set after a loss: what the link reported (a technical line), or one of the client's when it said nothing.
+   * The failed requests' errors carry it (`RbcDisconnectedError`, situation `link-lost`).
    */
   reason?: string;
+  /** Set after a loss when the link gave them: why, as the link's facts, which the outcome catalogue words. */
+  lostCause?: LinkFacts;
   /** The robot's mode from the platform byte of its last reply (1 HUNO, 2 DINO, 3 DOGY, 4 PF2). */
   platform?: number;
   /** A motion the client is waiting on, with when it started (clock ms) and how long it should take. */
@@ -99,6 +102,9 @@ export interface DeviceIdentity {
 export interface RobotIdentity extends DeviceIdentity {
   /** Undefined when the robot does not answer 0x0C (some firmware builds never do): "not reported". */
   serialNumber: string | undefined;
-  /** Values that are reported as they are but look implausible (a platform outside 1-4). */
+  /**
+   * Values that are reported as they are but look implausible (a platform outside 1-4), as technical lines; the
+   * outcome catalogue words them from the facts (`platformWarning` in src/i18n).
+   */
   warnings: string[];
 }

@@ -3,7 +3,7 @@
  * (`src/cli/`, started by `bin/rbc.mjs`); the web app never imports it (`src/link/index.ts` does not export it).
  */
 import { SerialPort } from "serialport";
-import { LinkError, type Transport, TransportBase } from "./transport.ts";
+import { type LinkFacts, linkError, linkLine, type Transport, TransportBase } from "./transport.ts";
 
 export interface NodeSerialTransportOptions {
   baudRate?: number;
@@ -60,7 +60,7 @@ export class NodeSerialTransport extends TransportBase implements Transport {
   /** Opens at 115200 8N1, no flow control, with an exclusive lock (a second program gets "port-busy"). */
   open(): Promise<void> {
     if (this._status === "open" || this._status === "opening") {
-      return Promise.reject(new LinkError("open-failed", "The port is already open."));
+      return Promise.reject(linkError("open-failed", { reason: "already-open" }));
     }
     this.setStatus({ status: "opening" });
     const port = new SerialPort(rbcSerialPortOptions(this.path, this.options.baudRate));
@@ -68,17 +68,20 @@ export class NodeSerialTransport extends TransportBase implements Transport {
       port.open((err) => {
         if (err) {
           const busy = /lock|busy|access denied|permission/i.test(err.message);
-          const reason = busy
-            ? `${this.path} is busy or not permitted (${err.message}). Close other programs using it; on Linux add yourself to the dialout group.`
-            : `${this.path} could not be opened: ${err.message}`;
-          this.setStatus({ status: "closed", reason, error: err });
-          reject(new LinkError(busy ? "port-busy" : "open-failed", reason, { cause: err }));
+          const code = busy ? "port-busy" : "open-failed";
+          const cause: LinkFacts = {
+            reason: busy ? "busy-or-denied" : "open-error",
+            path: this.path,
+            detail: err.message,
+          };
+          this.setStatus({ status: "closed", reason: linkLine(code, cause), cause, error: err });
+          reject(linkError(code, cause, err));
           return;
         }
         if (this._status !== "opening") {
           // close() was called while opening: release the port again.
           port.close(() => {});
-          reject(new LinkError("open-failed", `Opening ${this.path} was cancelled.`));
+          reject(linkError("open-failed", { reason: "open-cancelled", path: this.path }));
           return;
         }
         this.port = port;
@@ -91,17 +94,15 @@ export class NodeSerialTransport extends TransportBase implements Transport {
         port.on("close", (closeErr: CloseError) => {
           if (this.port !== port || this._status !== "open") return;
           this.port = undefined;
-          this.setStatus({
-            status: "lost",
-            reason: closeErr?.disconnected
-              ? "The serial device was unplugged."
-              : "The serial port was closed unexpectedly.",
-            error: closeErr,
-          });
+          const cause: LinkFacts = {
+            reason: closeErr?.disconnected ? "device-unplugged" : "closed-unexpectedly",
+          };
+          this.setStatus({ status: "lost", reason: linkLine("disconnected", cause), cause, error: closeErr });
         });
         port.on("error", (e: Error) => {
           if (this.port === port && this._status === "open") {
-            this.setStatus({ status: "lost", reason: e.message, error: e });
+            const cause: LinkFacts = { reason: "port-error", detail: e.message };
+            this.setStatus({ status: "lost", reason: linkLine("disconnected", cause), cause, error: e });
           }
         });
         this.setStatus({ status: "open" });
@@ -119,14 +120,16 @@ export class NodeSerialTransport extends TransportBase implements Transport {
     const port = this.port;
     if (this._status !== "open" || !port) {
       return Promise.reject(
-        new LinkError(this._status === "lost" ? "disconnected" : "not-open", "The serial port is not open."),
+        this._status === "lost"
+          ? linkError("disconnected", { reason: "lost" })
+          : linkError("not-open", { reason: "not-open" }),
       );
     }
     return new Promise((resolve, reject) => {
       port.write(Buffer.from(bytes), (err) =>
         err
           ? reject(
-              new LinkError("write-failed", `Writing to ${this.path} failed: ${err.message}`, { cause: err }),
+              linkError("write-failed", { reason: "write-error", path: this.path, detail: err.message }, err),
             )
           : resolve(),
       );

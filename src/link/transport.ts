@@ -5,10 +5,52 @@
 
 export type TransportStatus = "closed" | "opening" | "open" | "closing" | "lost";
 
+/**
+ * Why a link failed or was lost, as a code the outcome catalogue words (`linkReasonText` in src/i18n):
+ * opening an open port; a Web Serial port open elsewhere (perhaps another tab), or not opened for another reason
+ * (in use, or the adapter still starting), or opened without a writable stream; a Node port busy or not
+ * permitted, failing to open, or closed while opening; writing to a port that is not open, or to a lost link;
+ * a failed write; and the losses: the USB cable unplugged (Web Serial's disconnect event), the read loop
+ * failing, the serial device unplugged or the port closed unexpectedly (Node), or a port error (`detail`).
+ */
+export type LinkReason =
+  | "already-open"
+  | "in-another-tab"
+  | "in-use-or-starting"
+  | "no-writable"
+  | "busy-or-denied"
+  | "open-error"
+  | "open-cancelled"
+  | "not-open"
+  | "lost"
+  | "write-failed"
+  | "write-error"
+  | "usb-unplugged"
+  | "connection-lost"
+  | "device-unplugged"
+  | "closed-unexpectedly"
+  | "port-error";
+
+/** What a link failure was: its reason, and the port's `path` and the system's `detail` where they are known. */
+export interface LinkFacts {
+  readonly reason?: LinkReason;
+  readonly path?: string;
+  readonly detail?: string;
+}
+
+/** The technical line of a link failure: `link: port-busy (busy-or-denied, /dev/ttyUSB0: Resource busy)`. */
+export function linkLine(code: string, facts: LinkFacts): string {
+  const where = facts.path === undefined ? "" : `, ${facts.path}`;
+  const detail = facts.detail === undefined ? "" : `: ${facts.detail}`;
+  return `link: ${code} (${facts.reason ?? "unknown"}${where}${detail})`;
+}
+
 export interface TransportStatusEvent {
   status: TransportStatus;
-  /** Why the link was lost or failed to open, for a person. */
+  /** Why the link was lost or failed to open: a technical line (`linkLine`) for logs. */
   reason?: string;
+  /** Why, as facts (`cause.reason` a `LinkReason`), which the outcome catalogue words for a person. */
+  cause?: LinkFacts;
   error?: unknown;
 }
 
@@ -40,13 +82,21 @@ export type LinkErrorCode = "open-failed" | "port-busy" | "not-open" | "disconne
 
 export class LinkError extends Error {
   override name = "LinkError";
+  /** Why, as facts the outcome catalogue words (`errorText`); empty for an error made without them. */
+  readonly facts: LinkFacts;
   constructor(
     readonly code: LinkErrorCode,
     message: string,
-    options?: { cause?: unknown },
+    options?: { cause?: unknown; facts?: LinkFacts },
   ) {
     super(message, options);
+    this.facts = options?.facts ?? {};
   }
+}
+
+/** A LinkError with its facts and technical line. */
+export function linkError(code: LinkErrorCode, facts: LinkFacts, cause?: unknown): LinkError {
+  return new LinkError(code, linkLine(code, facts), cause === undefined ? { facts } : { cause, facts });
 }
 
 /**

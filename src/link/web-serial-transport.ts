@@ -1,5 +1,12 @@
 import { type Clock, realClock } from "../shared/clock.ts";
-import { LinkError, RBC_SERIAL_OPTIONS, type Transport, TransportBase } from "./transport.ts";
+import {
+  type LinkFacts,
+  linkError,
+  linkLine,
+  RBC_SERIAL_OPTIONS,
+  type Transport,
+  TransportBase,
+} from "./transport.ts";
 
 /** The parts of a Web Serial `SerialPort` the transport uses (the real one, or `MockSerialPort`). */
 export type SerialPortLike = Pick<SerialPort, "open" | "close" | "readable" | "writable" | "getInfo"> &
@@ -34,7 +41,7 @@ export class WebSerialTransport extends TransportBase implements Transport {
   private readonly clock: Clock;
   private readonly openAttempts: number;
   private readonly openRetryDelayMs: number;
-  private readonly onDisconnect = () => this.lost("The USB cable was unplugged or the adapter was removed.");
+  private readonly onDisconnect = () => this.lost({ reason: "usb-unplugged" });
 
   constructor(
     readonly port: SerialPortLike,
@@ -48,7 +55,7 @@ export class WebSerialTransport extends TransportBase implements Transport {
 
   async open(): Promise<void> {
     if (this._status === "open" || this._status === "opening") {
-      throw new LinkError("open-failed", "The port is already open.");
+      throw linkError("open-failed", { reason: "already-open" });
     }
     this.setStatus({ status: "opening" });
     let lastError: unknown;
@@ -66,17 +73,16 @@ export class WebSerialTransport extends TransportBase implements Transport {
     }
     if (lastError !== undefined) {
       const busy = errorName(lastError) === "InvalidStateError";
-      const reason = busy
-        ? "The port is already open, perhaps in another tab of this browser. Close it there and try again."
-        : "The port could not be opened. Another program (Motionbuilder, a serial monitor, another browser) may be using it, or the adapter is still starting: wait a moment and try again.";
-      this.setStatus({ status: "closed", reason, error: lastError });
-      throw new LinkError(busy ? "port-busy" : "open-failed", reason, { cause: lastError });
+      const code = busy ? "port-busy" : "open-failed";
+      const cause: LinkFacts = { reason: busy ? "in-another-tab" : "in-use-or-starting" };
+      this.setStatus({ status: "closed", reason: linkLine(code, cause), cause, error: lastError });
+      throw linkError(code, cause, lastError);
     }
     this.port.addEventListener("disconnect", this.onDisconnect);
     const writable = this.port.writable;
     if (!writable) {
       await this.close();
-      throw new LinkError("open-failed", "The port opened without a writable stream.");
+      throw linkError("open-failed", { reason: "no-writable" });
     }
     this.writer = writable.getWriter();
     this.setStatus({ status: "open" });
@@ -85,17 +91,15 @@ export class WebSerialTransport extends TransportBase implements Transport {
 
   async write(bytes: Uint8Array): Promise<void> {
     if (this._status !== "open" || !this.writer) {
-      throw new LinkError(
-        this._status === "lost" ? "disconnected" : "not-open",
-        this._status === "lost" ? "The robot is disconnected." : "The port is not open.",
-      );
+      const lost = this._status === "lost";
+      throw linkError(lost ? "disconnected" : "not-open", { reason: lost ? "lost" : "not-open" });
     }
     try {
       await this.writer.write(bytes);
     } catch (e) {
-      const reason = "Writing to the port failed; the adapter may have been unplugged.";
-      this.lost(reason, e);
-      throw new LinkError("disconnected", reason, { cause: e });
+      const cause: LinkFacts = { reason: "write-failed" };
+      this.lost(cause, e);
+      throw linkError("disconnected", cause, e);
     }
   }
 
@@ -137,7 +141,7 @@ export class WebSerialTransport extends TransportBase implements Transport {
           try {
             reader.releaseLock();
           } catch {}
-          if (this._status === "open") this.lost("The connection to the robot was lost.", e);
+          if (this._status === "open") this.lost({ reason: "connection-lost" }, e);
           return;
         }
       } finally {
@@ -170,9 +174,9 @@ export class WebSerialTransport extends TransportBase implements Transport {
     }
   }
 
-  private lost(reason: string, error?: unknown): void {
+  private lost(cause: LinkFacts, error?: unknown): void {
     if (this._status !== "open") return;
-    this.setStatus({ status: "lost", reason, error });
+    this.setStatus({ status: "lost", reason: linkLine("disconnected", cause), cause, error });
     // Free the port so that a later connect can open it again; status stays "lost" until close().
     this.cleanup = this.shutDown();
   }

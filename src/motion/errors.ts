@@ -1,11 +1,9 @@
-import { motionRefusalText } from "../i18n/outcomes/motion/motion-words.ts";
-
 /**
  * The one error family of the motion layer. An edit that would break a rule of docs/protocol.md §7 that the RBC
  * enforces (an error of `validateRbm`) is refused with a `MotionError` and the document is left as it was; the
  * `code` is stable (for programs and tests), the `facts` say what was refused (the rule, the values, the field),
- * and the message is the outcome catalogue's English sentence for them (src/i18n/outcomes/motion/), the one the
- * Editor says in the panel's language.
+ * and the message is a technical line for logs. The words a person reads are the outcome catalogue's, from the
+ * code and facts (`motionRefusalText` in src/i18n), in the panel and in `rbc` alike.
  */
 export class MotionError extends Error {
   override name = "MotionError";
@@ -19,9 +17,12 @@ export class MotionError extends Error {
   }
 }
 
-/** A refusal with its English sentence from the outcome catalogue (`motionRefusalText(…, "en")`). */
+/** A refusal with its technical line: `motion-value (rule whole, value 7, min 0, max 4, …)`. */
 export function motionError(code: MotionErrorCode, facts: MotionErrorFacts): MotionError {
-  return new MotionError(code, motionRefusalText({ code, facts }, "en"), facts);
+  const found = Object.entries(facts)
+    .map(([key, value]) => `${key} ${typeof value === "object" ? JSON.stringify(value) : value}`)
+    .join(", ");
+  return new MotionError(code, found === "" ? code : `${code} (${found})`, facts);
 }
 
 /**

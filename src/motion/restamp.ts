@@ -8,7 +8,6 @@
  * (its structure is checked with `readRbm`; the RBC's rules are not applied: a restamp makes no file worse). A
  * serial that is not 13 digits is refused with a `RestampError`. Either way nothing is written.
  */
-import { restampRefusalText } from "../i18n/outcomes/restamp/restamp-words.ts";
 import { readRbm } from "../protocol/rbm.ts";
 
 /** The serial number of a motion made for no particular robot (Motionbuilder accepts it on any robot). */
@@ -32,8 +31,8 @@ export interface RestampErrorFacts {
 }
 
 /**
- * A refused restamp: a stable code, the facts behind it and the outcome catalogue's English sentence for them
- * (src/i18n/outcomes/restamp/). Nothing was changed.
+ * A refused restamp: a stable code, the facts behind it (worded by `restampRefusalText` in src/i18n) and a
+ * technical message. Nothing was changed.
  */
 export class RestampError extends Error {
   override name = "RestampError";
@@ -46,9 +45,12 @@ export class RestampError extends Error {
   }
 }
 
-/** A refused restamp with its English sentence from the outcome catalogue. */
+/** A refused restamp with its technical line: `restamp-bad-serial (value "12345")`. */
 function refused(code: RestampErrorCode, facts: RestampErrorFacts): RestampError {
-  return new RestampError(code, restampRefusalText({ code, facts }, "en"), facts);
+  const found = Object.entries(facts)
+    .map(([key, value]) => `${key} ${JSON.stringify(value)}`)
+    .join(", ");
+  return new RestampError(code, `${code} (${found})`, facts);
 }
 
 /** What a restamp did: the new text, and the serial number before and after (the only thing that changed). */

@@ -1,5 +1,4 @@
 // Over 400 lines: one state machine (docs/protocol.md §11); its states and transitions read best together.
-import { firmwareFailureText } from "../i18n/outcomes/firmware/firmware-words.ts";
 import { ProtocolError } from "./errors.ts";
 
 /**
@@ -96,14 +95,22 @@ export class BootloaderError extends ProtocolError {
     readonly line?: number,
     detail: { waitedMs?: number; tries?: number } = {},
   ) {
-    const facts = { failure: code, holds, line, waitedMs: detail.waitedMs, tries: detail.tries };
-    super(code, firmwareFailureText(facts, "en"));
+    const facts = [
+      `robot holds ${holds}`,
+      line === undefined ? "" : `line ${line}`,
+      detail.waitedMs === undefined ? "" : `waited ${detail.waitedMs} ms`,
+      detail.tries === undefined ? "" : `${detail.tries} tries`,
+    ].filter((f) => f !== "");
+    super(code, `bootloader: ${code} (${facts.join(", ")})`);
     this.waitedMs = detail.waitedMs;
     this.tries = detail.tries;
   }
 }
 
-/** Builds the error for a failure (its message says what happened, what the robot holds, what to do). */
+/**
+ * Builds the error for a failure: its facts (what happened, what the robot holds, the line, the wait), which
+ * `firmwareFailureText` (src/i18n) words; its message is a technical line.
+ */
 export function bootloaderError(
   code: BootloaderFailure,
   holds: RobotHolds,

@@ -1,18 +1,11 @@
 /** Facts about the RBC the panel shows to people: names, codes and durations (docs/protocol.md §2.2, §3). */
 
-import { robotErrorText } from "../i18n/outcomes/robot-error.ts";
-
 // The platform names live in a file of their own: the panel's top bar needs them on its first page, without
 // the rest of this catalogue (first load: issue 19).
 export { type Platform, platformName } from "./platform.ts";
 
 /** Error codes of 0x11 (docs/protocol.md §3.2). */
 export const NO_ERROR = 0xff;
-
-/** Error code `code` in English words, from the outcome catalogue ("checksum error (…)", "unknown error code 12"). */
-export function errorCodeText(code: number): string {
-  return robotErrorText(code, "en");
-}
 
 /** Sound lengths in ms for sounds 1..25 (docs/protocol.md §3.3); index 0 is sound 1. */
 export const SOUND_LENGTHS_MS: readonly number[] = [

@@ -1,7 +1,7 @@
 import { readI16LE, readU32BE } from "./bytes.ts";
 import { BUILT_IN_MOTIONS, SOUND_REPLY_DELAY_MS, soundLengthMs } from "./catalog.ts";
-import { ProtocolError } from "./errors.ts";
-import { ZERO_COUNT, zeroProblemText } from "./zeros.ts";
+import { outOfRange, ProtocolError, type ProtocolFacts } from "./errors.ts";
+import { ZERO_COUNT, ZeroTableError, zeroProblems } from "./zeros.ts";
 
 /**
  * One row per RBC command of docs/protocol.md §3, and the single source of what the rest of the project knows about
@@ -40,10 +40,14 @@ export interface CommandSpec<Args, Reply> {
 
 export type MemoryArea = "motion" | "action";
 
+/**
+ * A reply whose contents do not fit its command: `facts` name the command, and either the length `expected` and
+ * the length it had (`got`), or the `problem` ("not-printable"). The outcome catalogue words it (`errorText`).
+ */
 export class BadReplyError extends ProtocolError {
   override name = "BadReplyError";
-  constructor(command: string, detail: string) {
-    super("bad-reply", `The robot's reply to "${command}" was not understood: ${detail}`);
+  constructor(command: string, detail: string, facts: ProtocolFacts = {}) {
+    super("bad-reply", `bad-reply: ${command}: ${detail}`, { command, ...facts });
   }
 }
 
@@ -51,13 +55,16 @@ const ONE = Uint8Array.of(1);
 
 function expectLength(name: string, contents: Uint8Array, length: number): void {
   if (contents.length !== length) {
-    throw new BadReplyError(name, `expected ${length} bytes, got ${contents.length}.`);
+    throw new BadReplyError(name, `${contents.length} bytes, expected ${length}`, {
+      expected: length,
+      got: contents.length,
+    });
   }
 }
 
 function byteArg(name: string, value: number, min: number, max: number): Uint8Array {
   if (!Number.isInteger(value) || value < min || value > max) {
-    throw new ProtocolError("bad-argument", `${name} must be ${min}-${max}, got ${value}.`);
+    throw outOfRange("bad-argument", name, value, min, max);
   }
   return Uint8Array.of(value);
 }
@@ -110,7 +117,7 @@ export const COMMANDS = {
       expectLength(this.name, c, 13);
       for (const b of c) {
         if (b < 0x20 || b > 0x7e)
-          throw new BadReplyError(this.name, "the serial number is not printable text.");
+          throw new BadReplyError(this.name, "not printable", { problem: "not-printable" });
       }
       return String.fromCharCode(...c);
     },
@@ -123,9 +130,7 @@ export const COMMANDS = {
     requestSize: ZERO_COUNT,
     replySize: ZERO_COUNT,
     request: (zeros) => {
-      if (zeros.length !== ZERO_COUNT) {
-        throw new ProtocolError("bad-argument", zeroProblemText({ id: -1, value: zeros.length }, "en"));
-      }
+      if (zeros.length !== ZERO_COUNT) throw new ZeroTableError("bad-argument", zeroProblems(zeros));
       return Uint8Array.from(zeros);
     },
     decode(c) {

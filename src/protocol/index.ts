@@ -4,7 +4,6 @@ export * from "./catalog.ts";
 export * from "./commands.ts";
 export * from "./errors.ts";
 export * from "./firmware-marker.ts";
-export * from "./huno-joint-names.ts";
 export * from "./intel-hex.ts";
 export * from "./motion-image.ts";
 export * from "./packet.ts";

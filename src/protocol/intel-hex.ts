@@ -1,9 +1,6 @@
-import { firmwareOutcomeMessages } from "../i18n/outcomes/firmware/messages.ts";
-import { translator } from "../i18n/translate.ts";
-import { ProtocolError } from "./errors.ts";
+import { ProtocolError, type ProtocolFacts } from "./errors.ts";
 
 /** The outcome catalogue's English, where a problem has no more facts to give than the catalogue's words. */
-const english = translator(firmwareOutcomeMessages, "en");
 
 /**
  * Intel HEX files for the RBC's bootloader (docs/protocol.md §11): read, validate and summarise a firmware file
@@ -53,6 +50,16 @@ export type IntelHexErrorCode =
   | "after-end"
   | "no-end";
 
+/**
+ * What a refused HEX file was found to hold, for the words of its refusal (`hexProblemText` in src/i18n): the
+ * file's `characters` and the `max` (too-large), the `endLine` of the end record (after-end), the bytes the record
+ * `declared` and `holds` (length-mismatch), the checksum it has (`got`) and the one it needs (`expected`), the
+ * addresses it writes (`from`-`to`, or `address` written twice), its `type` and, for types 03 and 05, its `name`
+ * ("start-segment", "start-linear"), and for a bad-record its `kind` ("end" or "extended"). Hex values are
+ * written as the file writes them ("1A", "0x1E000").
+ */
+export type IntelHexFacts = ProtocolFacts;
+
 /** A HEX file the bootloader must not be given; `line` is the 1-based line of the file, when one is to blame. */
 export class IntelHexError extends ProtocolError {
   override name = "IntelHexError";
@@ -60,9 +67,23 @@ export class IntelHexError extends ProtocolError {
     override readonly code: IntelHexErrorCode,
     readonly line: number | undefined,
     message: string,
+    facts: IntelHexFacts = {},
   ) {
-    super(code, message);
+    super(code, message, facts);
   }
+}
+
+/** The error of a refused file, with a technical line: `hex line 12: checksum (got 1A, expected 2B)`. */
+function hexError(
+  code: IntelHexErrorCode,
+  line: number | undefined,
+  facts: IntelHexFacts = {},
+): IntelHexError {
+  const found = Object.entries(facts)
+    .map(([key, value]) => `${key} ${value}`)
+    .join(", ");
+  const message = `hex${line === undefined ? "" : ` line ${line}`}: ${code}${found ? ` (${found})` : ""}`;
+  return new IntelHexError(code, line, message, facts);
 }
 
 export interface IntelHexRecord {
@@ -104,10 +125,7 @@ export interface IntelHexImage {
   summary: IntelHexSummary;
 }
 
-const RECORD_NAMES: Record<number, string> = {
-  3: "start segment address",
-  5: "start linear address",
-};
+const RECORD_NAMES: Record<number, string> = { 3: "start-segment", 5: "start-linear" };
 
 const hex2 = (n: number) => n.toString(16).toUpperCase().padStart(2, "0");
 const hexAddress = (n: number) => `0x${n.toString(16).toUpperCase().padStart(5, "0")}`;
@@ -118,11 +136,7 @@ const hexAddress = (n: number) => `0x${n.toString(16).toUpperCase().padStart(5, 
  */
 export function parseIntelHex(text: string): IntelHexImage {
   if (text.length > MAX_HEX_TEXT_CHARS) {
-    throw new IntelHexError(
-      "too-large",
-      undefined,
-      `The file is ${text.length.toLocaleString("en")} characters long; a firmware for the RBC's 120 KiB of application flash is under ${MAX_HEX_TEXT_CHARS.toLocaleString("en")}. It is not an RBC firmware file.`,
-    );
+    throw hexError("too-large", undefined, { characters: text.length, max: MAX_HEX_TEXT_CHARS });
   }
   const lines = text.replace(/^\uFEFF/, "").split(/\r\n|\n|\r/);
   const written = new Uint8Array(ATMEGA128.flashBytes);
@@ -139,59 +153,36 @@ export function parseIntelHex(text: string): IntelHexImage {
     const trimmed = raw.trim();
     if (trimmed === "") return;
     lastNonBlank = line;
-    const fail = (code: IntelHexErrorCode, what: string): never => {
-      throw new IntelHexError(code, line, `Line ${line}: ${what}`);
+    const fail = (code: IntelHexErrorCode, facts: IntelHexFacts = {}): never => {
+      throw hexError(code, line, facts);
     };
-    if (endLine !== undefined) {
-      fail("after-end", `there is more after the end-of-file record on line ${endLine}.`);
-    }
-    if (!trimmed.startsWith(":")) fail("no-colon", "a record starts with ':'.");
+    if (endLine !== undefined) fail("after-end", { endLine });
+    if (!trimmed.startsWith(":")) fail("no-colon");
     const digits = trimmed.slice(1);
-    if (!/^[0-9A-Fa-f]*$/.test(digits) || digits.length % 2 !== 0 || digits.length < 10) {
-      fail("not-hex", "a record is ':' followed by pairs of hex digits (at least 5 bytes).");
-    }
+    if (!/^[0-9A-Fa-f]*$/.test(digits) || digits.length % 2 !== 0 || digits.length < 10) fail("not-hex");
     const b = new Uint8Array(digits.length / 2);
     for (let i = 0; i < b.length; i++) b[i] = Number.parseInt(digits.slice(2 * i, 2 * i + 2), 16);
     const count = b[0]!;
-    if (b.length !== count + 5) {
-      fail("length-mismatch", `the record says ${count} data bytes but holds ${b.length - 5}.`);
-    }
+    if (b.length !== count + 5) fail("length-mismatch", { declared: count, holds: b.length - 5 });
     let sum = 0;
     for (let i = 0; i < b.length - 1; i++) sum += b[i]!;
     const expected = (0x100 - (sum & 0xff)) & 0xff;
     const got = b[b.length - 1]!;
-    if (got !== expected) {
-      fail(
-        "checksum",
-        `the checksum is ${hex2(got)} but the record's bytes add up to need ${hex2(expected)}.`,
-      );
-    }
+    if (got !== expected) fail("checksum", { got: hex2(got), expected: hex2(expected) });
     const field = (b[1]! << 8) | b[2]!;
     const type = b[3]!;
     const data = b.slice(4, 4 + count);
     let address = field;
     switch (type) {
       case HEX_RECORD.data: {
-        if (field + count > 0x10000) {
-          fail("crosses-64k", english("outcome.hex.crosses64k"));
-        }
+        if (field + count > 0x10000) fail("crosses-64k");
         address = base + field;
         const end = address + count; // exclusive
-        if (address >= ATMEGA128.flashBytes || end > ATMEGA128.flashBytes) {
-          fail(
-            "outside-flash",
-            `the record writes ${hexAddress(address)}-${hexAddress(end - 1)}, outside the ATmega128's 128 KiB of flash (0x00000-0x1FFFF).`,
-          );
-        }
-        if (end > ATMEGA128.bootSectionStart) {
-          fail(
-            "boot-section",
-            `the record writes ${hexAddress(address)}-${hexAddress(end - 1)}, inside the boot section (from 0x1E000) where the bootloader lives. A firmware for the RBC must end below 0x1E000.`,
-          );
-        }
+        const range = { from: hexAddress(address), to: hexAddress(end - 1) };
+        if (address >= ATMEGA128.flashBytes || end > ATMEGA128.flashBytes) fail("outside-flash", range);
+        if (end > ATMEGA128.bootSectionStart) fail("boot-section", range);
         for (let a = address; a < end; a++) {
-          if (written[a])
-            fail("overlap", `the record writes ${hexAddress(a)} again; an earlier line wrote it.`);
+          if (written[a]) fail("overlap", { address: hexAddress(a) });
           written[a] = 1;
         }
         if (count > 0) {
@@ -202,43 +193,29 @@ export function parseIntelHex(text: string): IntelHexImage {
         break;
       }
       case HEX_RECORD.endOfFile:
-        if (count !== 0) fail("bad-record", "an end-of-file record carries no data (:00000001FF).");
+        if (count !== 0) fail("bad-record", { kind: "end" });
         endLine = line;
         break;
       case HEX_RECORD.extendedSegment:
       case HEX_RECORD.extendedLinear: {
-        if (count !== 2 || field !== 0) {
-          fail(
-            "bad-record",
-            `an extended address record (type ${hex2(type)}) has 2 data bytes and address 0000.`,
-          );
-        }
+        if (count !== 2 || field !== 0) fail("bad-record", { kind: "extended", type: hex2(type) });
         const value = (data[0]! << 8) | data[1]!;
         base = type === HEX_RECORD.extendedSegment ? value << 4 : value * 0x10000;
         break;
       }
       default: {
         const name = RECORD_NAMES[type];
-        fail(
-          "record-type",
-          `record type ${hex2(type)}${name ? ` (${name})` : ""} is not accepted: the RBC bootloader takes only types 00, 01, 02 and 04.`,
-        );
+        fail("record-type", name ? { type: hex2(type), name } : { type: hex2(type) });
       }
     }
     records.push({ line, type, address, data, text: `:${digits.toUpperCase()}` });
   });
 
   if (endLine === undefined) {
-    throw new IntelHexError(
-      "no-end",
-      lastNonBlank || undefined,
-      lastNonBlank
-        ? `Line ${lastNonBlank}: the file ends without an end-of-file record (:00000001FF); it may have been cut short.`
-        : "The file is empty.",
-    );
+    throw hexError("no-end", lastNonBlank || undefined);
   }
   if (bytes === 0) {
-    throw new IntelHexError("no-records", undefined, english("outcome.hex.noRecords"));
+    throw hexError("no-records", undefined);
   }
   let pages = 0;
   for (let p = 0; p < ATMEGA128.flashBytes; p += ATMEGA128.pageBytes) {

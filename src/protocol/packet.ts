@@ -1,6 +1,6 @@
 import { writeU32BE, xorBytes } from "./bytes.ts";
 import { COMMANDS } from "./commands.ts";
-import { ProtocolError } from "./errors.ts";
+import { outOfRange } from "./errors.ts";
 
 /** The 8-byte header that starts every RBC packet in both directions (docs/protocol.md §2). */
 export const HEADER = Uint8Array.of(0xff, 0xff, 0xaa, 0x55, 0xaa, 0x55, 0x37, 0xba);
@@ -32,16 +32,13 @@ export function packetChecksum(contents: Uint8Array): number {
  */
 export function encodePacket(type: number, contents: Uint8Array, platform = 0): Uint8Array {
   if (!Number.isInteger(type) || type < 0 || type > 0xff) {
-    throw new ProtocolError("bad-type", `Packet type must be a byte, got ${type}.`);
+    throw outOfRange("bad-type", "type", type, 0, 0xff);
   }
   if (!Number.isInteger(platform) || platform < 0 || platform > 0xff) {
-    throw new ProtocolError("bad-platform", `Platform must be a byte, got ${platform}.`);
+    throw outOfRange("bad-platform", "platform", platform, 0, 0xff);
   }
   if (contents.length > MAX_CONTENT_LENGTH) {
-    throw new ProtocolError(
-      "too-long",
-      `Packet contents of ${contents.length} bytes exceed ${MAX_CONTENT_LENGTH}.`,
-    );
+    throw outOfRange("too-long", "contents", contents.length, 0, MAX_CONTENT_LENGTH);
   }
   const out = new Uint8Array(PREFIX_LENGTH + contents.length + 1);
   out.set(HEADER, 0);

@@ -1,15 +1,10 @@
 /**
  * The shape of a motion (docs/protocol.md §7) for `validateRbm`: a zod schema of `RbmMotion`'s types, and each
- * place where a motion built in code does not have that shape put into words and values.
+ * place where a motion built in code does not have that shape as an issue's code and facts.
  */
 
-import { rbmIssueMessages } from "../i18n/outcomes/rbm/messages.ts";
-import { translator } from "../i18n/translate.ts";
-import type { RbmIssue, RbmIssueValues } from "./rbm-validate.ts";
+import { type RbmIssue, type RbmIssueValues, rbmIssue } from "./rbm-issue.ts";
 import { z } from "./zod.ts";
-
-/** A file problem's English sentence, from the outcome catalogue (src/i18n/outcomes/rbm/), as Korean is. */
-const en = translator(rbmIssueMessages, "en");
 
 const whole = z.number().int().min(0);
 const text = z.string();
@@ -56,59 +51,29 @@ function valueAt(root: unknown, path: readonly PropertyKey[]): unknown {
   return v;
 }
 
-/** What a value is, in words and as issue values: "it is a list" / `{ got: "list" }`. */
-function describe(value: unknown): [string, RbmIssueValues] {
-  if (value === undefined) return [en("outcome.rbm.got.missing"), { got: "missing" }];
+/** What a value is, as issue values: `{ got: "list" }`, `{ got: "value", value: "12.5" }`. */
+function describe(value: unknown): RbmIssueValues {
+  if (value === undefined) return { got: "missing" };
   if (typeof value === "string") {
-    const shown = JSON.stringify(value.length > 30 ? `${value.slice(0, 30)}…` : value);
-    return [en("outcome.rbm.got.value", { value: shown }), { got: "value", value: shown }];
+    return { got: "value", value: JSON.stringify(value.length > 30 ? `${value.slice(0, 30)}…` : value) };
   }
-  if (Array.isArray(value)) return [en("outcome.rbm.got.list"), { got: "list" }];
-  if (typeof value === "object" && value !== null) return [en("outcome.rbm.got.object"), { got: "object" }];
-  return [en("outcome.rbm.got.value", { value: String(value) }), { got: "value", value: String(value) }];
+  if (Array.isArray(value)) return { got: "list" };
+  if (typeof value === "object" && value !== null) return { got: "object" };
+  return { got: "value", value: String(value) };
 }
 
 const TEXT_KEYS: readonly PropertyKey[] = ["serialNumber", "text1", "text2", "name", "trailing"];
 
-/** Puts a zod issue into words: "scene 3, servo record 2, end must be a whole number of 0 or more (it is -1)." */
+/** A zod issue as an issue's code and facts: the path ("scenes.3.servos.2.end") and what the value is. */
 export function shapeIssue(root: unknown, path: readonly PropertyKey[]): RbmIssue {
-  if (path.length === 0) {
-    return {
-      code: "rbm-shape",
-      message: en("outcome.rbm.shape.motion"),
-      values: { kind: "motion" },
-    };
-  }
-  const issue: RbmIssue = { code: "rbm-shape", message: "" };
-  const parts: string[] = [];
-  for (let i = 0; i < path.length; i++) {
-    const [key, next] = [path[i], path[i + 1]];
-    if ((key === "scenes" || key === "servos") && typeof next === "number") {
-      parts.push(key === "scenes" ? `scene ${next}` : `servo record ${next}`);
-      if (key === "scenes") issue.scene = next;
-      i++;
-    } else {
-      parts.push(String(key));
-    }
-  }
-  const where = parts.join(", ");
-  const [got, gotValues] = describe(valueAt(root, path));
+  if (path.length === 0) return rbmIssue("rbm-shape", { kind: "motion" });
+  const sceneAt = path.findIndex((key, i) => key === "scenes" && typeof path[i + 1] === "number");
+  const where = sceneAt < 0 ? {} : { scene: path[sceneAt + 1] as number };
   const last = path[path.length - 1];
-  const at = { path: path.map(String).join("."), ...gotValues };
-  // The catalogue's sentences, with the protocol's own English for the place (`where`) and the value (`got`).
-  if (last === "servos" || last === "scenes") {
-    issue.message = en("outcome.rbm.shape.list", { path: where, got });
-    issue.values = { kind: "list", ...at };
-  } else if (TEXT_KEYS.includes(last ?? "")) {
-    issue.message = en("outcome.rbm.shape.text", { path: where, got });
-    issue.values = { kind: "text", ...at };
-  } else if (last === "raw" || last === "fields") {
-    issue.message = en("outcome.rbm.shape.form", { path: where });
-    issue.values = { kind: "form", path: at.path };
-  } else {
-    issue.code = "rbm-not-a-number";
-    issue.message = en("outcome.rbm.shape.number", { path: where, got });
-    issue.values = { kind: "shape", ...at };
-  }
-  return issue;
+  const at = { path: path.map(String).join("."), ...describe(valueAt(root, path)) };
+  if (last === "servos" || last === "scenes") return rbmIssue("rbm-shape", { kind: "list", ...at }, where);
+  if (TEXT_KEYS.includes(last ?? "")) return rbmIssue("rbm-shape", { kind: "text", ...at }, where);
+  if (last === "raw" || last === "fields")
+    return rbmIssue("rbm-shape", { kind: "form", path: at.path }, where);
+  return rbmIssue("rbm-not-a-number", { kind: "shape", ...at }, where);
 }

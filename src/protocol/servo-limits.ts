@@ -1,8 +1,6 @@
-import { jointOf } from "../i18n/joint-names/joint-name.ts";
-
 /**
  * Per-joint data of the HUNO's 16 servos, ids 0-15 (docs/protocol.md §5). Index = servo id. The joints' names are
- * the catalogue's (src/i18n/joint-names/); `HUNO_JOINT_NAMES` is in huno-joint-names.ts.
+ * the catalogue's (src/i18n/joint-names/, `jointName`, `HUNO_JOINT_NAMES`).
  */
 
 /** Number of servos on a stock HUNO (ids 0-15). */
@@ -29,13 +27,4 @@ export function safeRange(id: number): { min: number; max: number } | undefined 
   const min = SAFE_LOWER[id];
   const max = SAFE_UPPER[id];
   return min === undefined || max === undefined ? undefined : { min, max };
-}
-
-/**
- * "servo 3 (Left ankle pitch)" for HUNO ids, "servo 20" otherwise: English, for the protocol's messages. The joint
- * is the joint-name catalogue's (src/i18n/joint-names/, docs/protocol.md §4), looked up when called.
- */
-export function servoLabel(id: number): string {
-  const name = jointOf(id, "en");
-  return name === undefined ? `servo ${id}` : `servo ${id} (${name})`;
 }

@@ -1,4 +1,4 @@
-import { ProtocolError } from "./errors.ts";
+import { outOfRange, ProtocolError } from "./errors.ts";
 
 /**
  * wCK servo packets, spoken over the link once the RBC is in direct control mode (docs/protocol.md §5).
@@ -28,19 +28,19 @@ function wckChecksum(bytes: ArrayLike<number>, from: number, to: number): number
 
 function checkId(id: number): void {
   if (!Number.isInteger(id) || id < 0 || id > WCK_MAX_ID) {
-    throw new ProtocolError("wck-id", `Servo id must be 0-${WCK_MAX_ID}, got ${id}.`);
+    throw outOfRange("wck-id", "id", id, 0, WCK_MAX_ID);
   }
 }
 
 function checkPosition(position: number): void {
   if (!Number.isInteger(position) || position < 0 || position > WCK_MAX_POSITION) {
-    throw new ProtocolError("wck-position", `Servo position must be 0-${WCK_MAX_POSITION}, got ${position}.`);
+    throw outOfRange("wck-position", "position", position, 0, WCK_MAX_POSITION);
   }
 }
 
-function checkTorque(torque: number, what = "Torque"): void {
+function checkTorque(torque: number, field = "torque"): void {
   if (!Number.isInteger(torque) || torque < 0 || torque > WCK_MAX_TORQUE) {
-    throw new ProtocolError("wck-torque", `${what} must be 0-${WCK_MAX_TORQUE}, got ${torque}.`);
+    throw outOfRange("wck-torque", field, torque, 0, WCK_MAX_TORQUE);
   }
 }
 
@@ -79,12 +79,9 @@ export function wckBrakeAll(): Uint8Array {
  * positions.
  */
 export function wckSyncMove(positions: readonly number[], speed: number): Uint8Array {
-  checkTorque(speed, "Speed");
+  checkTorque(speed, "speed");
   if (positions.length < 1 || positions.length > WCK_MAX_ID + 1) {
-    throw new ProtocolError(
-      "wck-count",
-      `A synchronised move takes 1-31 positions, got ${positions.length}.`,
-    );
+    throw outOfRange("wck-count", "positions", positions.length, 1, WCK_MAX_ID + 1);
   }
   positions.forEach(checkPosition);
   const out = [WCK_START, (speed << 5) | WCK_BROADCAST_ID, positions.length, ...positions];
@@ -122,7 +119,9 @@ export const WCK_SET_ID = 0x0c;
 export function wckReadParameter(id: number, parameter: WckParameter): Uint8Array {
   checkId(id);
   if (!Object.hasOwn(WCK_PARAMETER_READS, parameter)) {
-    throw new ProtocolError("wck-parameter", `Unknown servo parameter "${String(parameter)}".`);
+    throw new ProtocolError("wck-parameter", `wck-parameter: unknown "${String(parameter)}"`, {
+      parameter: String(parameter),
+    });
   }
   return withChecksum([WCK_START, 0xe0 | id, WCK_PARAMETER_READS[parameter], 0, 0]);
 }
@@ -136,7 +135,7 @@ export function wckSetId(from: number, to: number): Uint8Array {
   checkId(from);
   checkId(to);
   if (from === to) {
-    throw new ProtocolError("wck-same-id", `The new id must differ from the old one, got ${from} twice.`);
+    throw new ProtocolError("wck-same-id", `wck-same-id: id ${from} twice`, { id: from });
   }
   return withChecksum([WCK_START, 0xe0 | from, WCK_SET_ID, to, to]);
 }
@@ -150,7 +149,7 @@ export interface WckStatus {
 
 function checkReply(reply: ArrayLike<number>): void {
   if (reply.length !== 2) {
-    throw new ProtocolError("wck-reply-length", `A servo reply is 2 bytes, got ${reply.length}.`);
+    throw outOfRange("wck-reply-length", "bytes", reply.length, 2, 2);
   }
 }
 
@@ -159,10 +158,7 @@ export function decodeWckStatus(reply: ArrayLike<number>): WckStatus {
   checkReply(reply);
   const position = reply[1]!;
   if (position > WCK_MAX_POSITION) {
-    throw new ProtocolError(
-      "wck-reply",
-      `A servo position is 0-${WCK_MAX_POSITION}, the reply says ${position}.`,
-    );
+    throw outOfRange("wck-reply", "position", position, 0, WCK_MAX_POSITION);
   }
   return { load: reply[0]!, position };
 }
@@ -179,10 +175,11 @@ export type WckParameterValue =
 /** The same value twice (overload, I gain, I/O, a new id): a reply whose two bytes differ is not trusted. */
 function doubled(reply: ArrayLike<number>, what: string): number {
   if (reply[0] !== reply[1]) {
-    throw new ProtocolError(
-      "wck-reply",
-      `The ${what} reply carries its value twice, got ${reply[0]} and ${reply[1]}.`,
-    );
+    throw new ProtocolError("wck-reply", `wck-reply: ${what} ${reply[0]} and ${reply[1]} differ`, {
+      field: what,
+      first: Number(reply[0]),
+      second: Number(reply[1]),
+    });
   }
   return reply[0]!;
 }
@@ -211,8 +208,7 @@ export function decodeWckParameter(parameter: WckParameter, reply: ArrayLike<num
 export function decodeWckSetId(reply: ArrayLike<number>): number {
   checkReply(reply);
   const id = doubled(reply, "id set");
-  if (id > WCK_MAX_ID)
-    throw new ProtocolError("wck-reply", `A servo id is 0-${WCK_MAX_ID}, the reply says ${id}.`);
+  if (id > WCK_MAX_ID) throw outOfRange("wck-reply", "id", id, 0, WCK_MAX_ID);
   return id;
 }
 

@@ -1,13 +1,11 @@
-import type { Locale } from "../i18n/locale.ts";
-import { zeroOutcomeMessages } from "../i18n/outcomes/zero-messages.ts";
-import { translator } from "../i18n/translate.ts";
 import { formatLocalDate } from "../shared/format.ts";
-import { ZERO_COUNT, zeroProblems } from "./zeros.ts";
+import { ZERO_COUNT, type ZeroProblem, zeroProblems } from "./zeros.ts";
 import { z } from "./zod.ts";
 
 /**
  * Zero backup files: `{ format: "rbc-zeros", version: 1, serialNumber, firmware, savedAt, zeros: number[16] }`.
- * Pure functions: build, serialise, name and parse (with a zod schema and messages a person can act on).
+ * Pure functions: build, serialise, name and parse (with a zod schema; a refusal carries its problem and facts,
+ * which the outcome catalogue words: `backupRefusalText` in src/i18n).
  */
 
 export const ZEROS_BACKUP_FORMAT = "rbc-zeros";
@@ -32,9 +30,23 @@ export type BackupProblem =
   | "out-of-range"
   | "invalid";
 
+/**
+ * What a refused backup was found to hold: its `format` (wrong-format, when it names one), `version`
+ * (wrong-version), `count` (wrong-count; undefined when it holds no list), the zero `problems` (out-of-range),
+ * and the `path` and zod `issue` of a damaged one (invalid).
+ */
+export interface BackupRefusalFacts {
+  format?: string;
+  version?: string;
+  count?: number;
+  problems?: readonly ZeroProblem[];
+  path?: string;
+  issue?: string;
+}
+
 export type ParsedBackup =
   | { ok: true; backup: ZerosBackup }
-  | { ok: false; problem: BackupProblem; message: string };
+  | { ok: false; problem: BackupProblem; message: string; facts: BackupRefusalFacts };
 
 export function createZerosBackup(args: {
   serialNumber: string;
@@ -62,66 +74,48 @@ export function zerosBackupFileName(serialNumber: string, date: Date): string {
   return `rbc-zeros-${serial}-${formatLocalDate(date)}.json`;
 }
 
-const HINT = "Choose a file saved by this panel, named like rbc-zeros-<serial>-<date>.json.";
-
-function refuse(problem: BackupProblem, message: string): ParsedBackup {
-  return { ok: false, problem, message };
+function refuse(problem: BackupProblem, facts: BackupRefusalFacts = {}): ParsedBackup {
+  const found = Object.entries(facts)
+    .map(([key, value]) => `${key} ${Array.isArray(value) ? value.map((p) => p.message).join("; ") : value}`)
+    .join(", ");
+  return { ok: false, problem, message: `zeros backup: ${problem}${found ? ` (${found})` : ""}`, facts };
 }
 
 function isRecord(value: unknown): value is Record<string, unknown> {
   return typeof value === "object" && value !== null && !Array.isArray(value);
 }
 
-/** Reads a backup file's text. Never throws: a refusal says what is wrong in the user's terms. */
+/** Reads a backup file's text. Never throws: a refusal says what is wrong, as a problem and its facts. */
 export function parseZerosBackup(text: string): ParsedBackup {
   let data: unknown;
   try {
     data = JSON.parse(text);
   } catch {
-    return refuse("not-json", `This file is not a zero backup: it is not JSON text. ${HINT}`);
+    return refuse("not-json");
   }
   if (!isRecord(data) || data.format !== ZEROS_BACKUP_FORMAT) {
-    const found =
-      isRecord(data) && typeof data.format === "string" ? ` (its format is "${data.format}")` : "";
-    return refuse("wrong-format", `This file is JSON but not an RBC zero backup${found}. ${HINT}`);
-  }
-  if (data.version !== ZEROS_BACKUP_VERSION) {
     return refuse(
-      "wrong-version",
-      `This backup is version ${String(data.version)}; this panel reads version ${ZEROS_BACKUP_VERSION}.`,
+      "wrong-format",
+      isRecord(data) && typeof data.format === "string" ? { format: data.format } : {},
     );
   }
+  if (data.version !== ZEROS_BACKUP_VERSION)
+    return refuse("wrong-version", { version: String(data.version) });
   if (!Array.isArray(data.zeros) || data.zeros.length !== ZERO_COUNT) {
-    const count = Array.isArray(data.zeros) ? `${data.zeros.length} values` : "no list of values";
-    return refuse(
-      "wrong-count",
-      `This backup holds ${count}; a zero table has exactly ${ZERO_COUNT}, one per servo 0-15.`,
-    );
+    return refuse("wrong-count", Array.isArray(data.zeros) ? { count: data.zeros.length } : {});
   }
   const problems = zeroProblems(data.zeros);
-  if (problems.length > 0) {
-    return refuse(
-      "out-of-range",
-      `The robot would refuse this backup's zeros: ${problems.map((p) => p.message).join(" ")}`,
-    );
-  }
+  if (problems.length > 0) return refuse("out-of-range", { problems });
   const parsed = zerosBackupSchema.safeParse(data);
   if (!parsed.success) {
     const first = parsed.error.issues[0];
-    const where = first && first.path.length > 0 ? ` (${first.path.join(".")})` : "";
-    return refuse("invalid", `This backup file is damaged${where}: ${first?.message ?? "unreadable"}.`);
+    const path = first && first.path.length > 0 ? { path: first.path.join(".") } : {};
+    return refuse("invalid", { ...path, issue: first?.message ?? "unreadable" });
   }
   return { ok: true, backup: parsed.data };
 }
 
-/** A warning when the backup was saved from another robot (in `locale`, English by default), or undefined. */
-export function serialMismatchWarning(
-  backup: ZerosBackup,
-  connectedSerial: string | undefined,
-  locale: Locale = "en",
-): string | undefined {
-  if (!connectedSerial || backup.serialNumber === connectedSerial) return undefined;
-  const t = translator(zeroOutcomeMessages, locale);
-  const saved = backup.serialNumber || t("outcome.zeros.unknownRobot");
-  return t("outcome.zeros.otherRobot", { saved, connected: connectedSerial });
+/** Whether the backup was saved from another robot than the connected one (`serialMismatchWarning` words it). */
+export function backupFromOtherRobot(backup: ZerosBackup, connectedSerial: string | undefined): boolean {
+  return connectedSerial !== undefined && connectedSerial !== "" && backup.serialNumber !== connectedSerial;
 }

@@ -94,7 +94,7 @@ export class MockSerialPort<S extends SimEndpoint = SimulatedRbc> extends EventT
     this.jitterMs = options.jitterMs ?? 0;
     this.burstMs = options.burstMs ?? 0;
     if (!(this.latencyMs >= 0 && this.jitterMs >= 0 && this.burstMs >= 0)) {
-      throw new RangeError("latencyMs, jitterMs and burstMs must be 0 or more.");
+      throw new RangeError("sim: latencyMs, jitterMs or burstMs below 0");
     }
     this.random = seededRandom(options.seed ?? 1);
     this.info = { ...(options.info ?? { usbVendorId: 0x0403, usbProductId: 0x6001 }) };
@@ -329,7 +329,7 @@ export class MockSerialPort<S extends SimEndpoint = SimulatedRbc> extends EventT
    * noise): no fault applies to them, and replies already on their way are not held back.
    */
   injectToPc(bytes: ArrayLike<number>, afterMs = 0): void {
-    if (!(afterMs >= 0)) throw new RangeError(`afterMs must be 0 or more, got ${afterMs}.`);
+    if (!(afterMs >= 0)) throw new RangeError(`sim: afterMs ${afterMs} below 0`);
     this.deliverAt(this.clock.now() + afterMs, Uint8Array.from(bytes));
   }
 

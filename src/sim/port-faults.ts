@@ -33,7 +33,7 @@ export interface FaultedReply {
 }
 
 function count(replies: number): number {
-  if (!(replies >= 1)) throw new RangeError(`A fault applies to at least 1 reply, got ${replies}.`);
+  if (!(replies >= 1)) throw new RangeError(`sim: fault for ${replies} replies, below 1`);
   return replies;
 }
 
@@ -62,7 +62,7 @@ export class PortFaults {
 
   /** Split replies into chunks of `chunkSize` bytes (default: every reply until cleared). */
   splitReplies(chunkSize: number, replies = Number.POSITIVE_INFINITY): this {
-    if (!(chunkSize >= 1)) throw new RangeError(`Chunk size must be at least 1, got ${chunkSize}.`);
+    if (!(chunkSize >= 1)) throw new RangeError(`sim: chunk size ${chunkSize} below 1`);
     this.list.push({ kind: "split", chunkSize: Math.floor(chunkSize), remaining: count(replies) });
     return this;
   }
@@ -90,7 +90,7 @@ export class PortFaults {
    * `40` during a download this is a stray acknowledgement at a chosen chunk boundary.
    */
   strayAfterReply(bytes: ArrayLike<number>, afterMs = 0, replies = 1): this {
-    if (!(afterMs >= 0)) throw new RangeError(`A stray's delay must be 0 or more, got ${afterMs}.`);
+    if (!(afterMs >= 0)) throw new RangeError(`sim: stray delay ${afterMs} below 0`);
     this.list.push({ kind: "stray", bytes: Uint8Array.from(bytes), afterMs, remaining: count(replies) });
     return this;
   }
@@ -101,8 +101,8 @@ export class PortFaults {
    * unsolicited repeats of it.
    */
   duplicateReplies(afterMs = 0, replies = 1, copies = 1): this {
-    if (!(afterMs >= 0)) throw new RangeError(`A duplicate's delay must be 0 or more, got ${afterMs}.`);
-    if (!(copies >= 1)) throw new RangeError(`A duplicate needs at least 1 copy, got ${copies}.`);
+    if (!(afterMs >= 0)) throw new RangeError(`sim: duplicate delay ${afterMs} below 0`);
+    if (!(copies >= 1)) throw new RangeError(`sim: duplicate copies ${copies} below 1`);
     this.list.push({ kind: "duplicate", afterMs, copies: Math.floor(copies), remaining: count(replies) });
     return this;
   }

@@ -58,7 +58,7 @@ const isObject = (v: unknown): v is Record<string, unknown> => typeof v === "obj
 const isInt = (v: unknown): v is number => Number.isInteger(v);
 
 function fail(what: string): never {
-  throw new RangeError(`Not a simulated robot's memory: ${what}. Nothing was restored.`);
+  throw new RangeError(`sim memory: not a simulated robot's memory (${what}); nothing restored`);
 }
 
 function checkFile(value: unknown, slot: number, area: MemoryArea): StoredFile {

@@ -29,7 +29,7 @@ export const LOADED_SERVO_FOLLOW = 0.4;
 function checkIds(ids: readonly number[] | undefined, what: string, lowest = 0): readonly number[] {
   for (const id of ids ?? []) {
     if (!Number.isInteger(id) || id < lowest || id >= HUNO_SERVO_COUNT) {
-      throw new RangeError(`A ${what} servo must be ${lowest}-${HUNO_SERVO_COUNT - 1}, got ${id}.`);
+      throw new RangeError(`sim: ${what} servo ${id} not in ${lowest}-${HUNO_SERVO_COUNT - 1}`);
     }
   }
   return ids ?? [];
@@ -41,7 +41,7 @@ export function checkServoFaults(faults: ServoFaults | undefined): Required<Serv
   const replacement = checkIds(faults?.replacement, "replacement", 1);
   const both = replacement.find((id) => missing.includes(id));
   if (both !== undefined) {
-    throw new RangeError(`Servo ${both} cannot be both missing and a replacement at id 0.`);
+    throw new RangeError(`sim: servo ${both} both missing and a replacement at id 0`);
   }
   const late = faults?.late ?? {};
   checkIds(Object.keys(late).map(Number), "late");

@@ -1,4 +1,4 @@
-import { FACTORY_ZEROS, ZERO_COUNT, zeroProblemText } from "../protocol/zeros.ts";
+import { FACTORY_ZEROS, ZERO_COUNT, zeroProblems } from "../protocol/zeros.ts";
 import { type Clock, realClock } from "../shared/clock.ts";
 import type { DownloadProgress } from "./sim-downloader.ts";
 import type { StoredFile } from "./sim-downloads.ts";
@@ -121,12 +121,11 @@ export const DEFAULT_SERIAL_NUMBER = "8958899989309";
 export function resolveOptions(options: SimulatedRbcOptions) {
   const serialNumber = options.serialNumber ?? DEFAULT_SERIAL_NUMBER;
   if (!/^[\x20-\x7e]{13}$/.test(serialNumber)) {
-    throw new RangeError(`The serial number must be 13 printable ASCII characters, got "${serialNumber}".`);
+    throw new RangeError(`sim: serial number "${serialNumber}" is not 13 printable ASCII characters`);
   }
   const zeros = [...(options.zeros ?? FACTORY_ZEROS)];
   if (zeros.length !== ZERO_COUNT) {
-    // The protocol's sentence (the outcome catalogue's), not a copy of it.
-    throw new RangeError(zeroProblemText({ id: -1, value: zeros.length }, "en"));
+    throw new RangeError(zeroProblems(zeros)[0]?.message);
   }
   return {
     clock: options.clock ?? realClock,
@@ -158,14 +157,14 @@ export function resolveOptions(options: SimulatedRbcOptions) {
 
 function checkedServoBus(options: SimulatedRbcOptions): ServoBus | undefined {
   if (options.servoBus && options.servoFaults) {
-    throw new RangeError("Give the servo faults to the ServoBus, not with a ServoBus to the SimulatedRbc.");
+    throw new RangeError("sim: servoFaults and servoBus both given (give the faults to the ServoBus)");
   }
   return options.servoBus;
 }
 
 function checkedBusyMotion(n: number | undefined): number | undefined {
   if (n !== undefined && !(Number.isInteger(n) && n >= 1 && n <= 11)) {
-    throw new RangeError(`The busy motion must be a built-in motion, 1 to 11, got ${n}.`);
+    throw new RangeError(`sim: busy motion ${n} is not a built-in motion (1-11)`);
   }
   return n;
 }

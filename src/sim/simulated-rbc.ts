@@ -332,7 +332,7 @@ export class SimulatedRbc {
     const memory = checkLastingMemory(value, { motion, action });
     if (memory.serialNumber !== this.serialNumber) {
       throw new RangeError(
-        `This memory belongs to robot ${memory.serialNumber}, not ${this.serialNumber}. Nothing was restored.`,
+        `sim memory: belongs to robot ${memory.serialNumber}, not ${this.serialNumber}; nothing restored`,
       );
     }
     this.zeroTable = [...memory.zeros];

@@ -1,6 +1,6 @@
 import type { ActivitySnapshot, ClientState, LogEntry, RbcClient } from "../device/index.ts";
 import { inEveryLanguage, said } from "../i18n/said.ts";
-import type { SerialPortLike } from "../link/index.ts";
+import type { LinkFacts, SerialPortLike } from "../link/index.ts";
 import { type Clock, realClock } from "../shared/clock.ts";
 import type { ServoBus } from "../sim/sim-servos.ts";
 import type { SimulatedRbc } from "../sim/simulated-rbc.ts";
@@ -342,7 +342,7 @@ export class Session {
     const phase = this.store.get().connection.phase;
     if (state.mode === "disconnected") {
       // A reason means the link was lost; without one, close() was called and the caller says what happened.
-      if (state.reason) this.onLost(state.reason);
+      if (state.reason) this.onLost(state.reason, state.lostCause);
       return;
     }
     if (phase === "connecting" && state.mode === "packet") this.setConnection({ phase: "handshaking" });
@@ -373,7 +373,7 @@ export class Session {
     if (busy !== wasBusy) void busyChanged(this.context, busy);
   }
 
-  private onLost(reason: string): void {
+  private onLost(reason: string, cause: LinkFacts | undefined): void {
     const state = this.store.get();
     const interrupted = [...state.running];
     this.forgetClient();
@@ -381,6 +381,7 @@ export class Session {
       phase: "disconnected",
       mode: undefined,
       lostReason: reason,
+      lostCause: cause,
       interrupted,
       ...NOTHING_RUNNING,
     });

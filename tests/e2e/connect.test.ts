@@ -351,11 +351,14 @@ describe("in Korean (ko-KR)", () => {
         await card.getByTestId("memory-action-note").filter({ hasText: "8,192" }).waitFor();
         await checkKorean(page, size, "usb-robot");
 
-        // The cable is pulled: the link's own (English) reason is the technical detail.
+        // The cable is pulled: the link's reason in Korean (from its facts), its technical line the detail.
         await page.evaluate(() => window.__rbcTest?.port.unplug());
         const lost = page.getByTestId("lost-notice");
         await lost.waitFor();
-        await expectText(lost.locator("p").first(), "로봇과의 연결이 끊겼어요.");
+        await expectText(
+          lost.locator("p").first(),
+          "로봇과의 연결이 끊겼어요. USB 케이블이 뽑혔거나 어댑터가 빠졌어요.",
+        );
         await expectText(
           lost.locator("p").last(),
           "케이블과 로봇의 전원 스위치를 확인한 뒤 다시 연결해 주세요.",

@@ -311,7 +311,7 @@ describe("in Korean (ko-KR)", () => {
       });
     }
 
-    it("says in Korean why a file is refused and what a cancelled update leaves, with the device's English in the detail", {
+    it("says in Korean why a file is refused and what a cancelled update leaves, with the device's technical line in the detail", {
       timeout: 60_000,
     }, async () => {
       const { page, context } = await app.newPage({
@@ -330,10 +330,11 @@ describe("in Korean (ko-KR)", () => {
       await problem.waitFor();
       await expectText(
         problem.locator("p"),
-        "broken.hex은(는) 로봇의 부트로더가 받을 수 있는 펌웨어 파일이 아니에요. 3번째 줄: 레코드의 체크섬이 맞지 않아요.",
+        "broken.hex은(는) 로봇의 부트로더가 받을 수 있는 펌웨어 파일이 아니에요. 3번째 줄: 체크섬이 00인데, 레코드의 바이트를 더하면 58이어야 해요.",
       );
       await expectText(problem.locator("summary"), "기술 정보");
-      await expectText(problem.locator("pre"), /^IntelHexError: Line 3: the checksum is 00 but/);
+      // The technical detail: the parser's code and facts.
+      await expectText(problem.locator("pre"), "IntelHexError: hex line 3: checksum (got 00, expected 58)");
       await expect.poll(() => problem.locator("pre").getAttribute("lang")).toBe("en");
       expect(await page.getByTestId("fw-summary").count()).toBe(0);
 

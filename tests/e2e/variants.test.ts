@@ -61,9 +61,11 @@ describe("firmware variants", () => {
     const warning = page.getByTestId("identity-warnings");
     await warning.waitFor();
     await expectText(
-      warning,
+      warning.locator("p"),
       "The robot reports platform 9; known platforms are 1-4 (HUNO, DINO, DOGY, PF2).",
     );
+    // The device's technical line, one click away.
+    await expectText(warning.locator("pre"), "platform 9 is not one of 1-4");
     await context.close();
   });
 

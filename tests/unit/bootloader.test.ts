@@ -1,4 +1,5 @@
 import { describe, expect, it } from "vitest";
+import { errorText } from "../../src/i18n/outcomes/error-text.ts";
 import { BootloaderDialogue, BootloaderError } from "../../src/protocol/bootloader.ts";
 import { fromHex, toHex } from "../../src/protocol/bytes.ts";
 import { parseIntelHex } from "../../src/protocol/intel-hex.ts";
@@ -98,8 +99,8 @@ describe("bootloader dialogue transcripts", () => {
     ]);
     expect(d.error).toBeInstanceOf(BootloaderError);
     expect(d.error).toMatchObject({ code: "page-error", holds: "incomplete-firmware", line: 2 });
-    expect(d.error!.message).toMatch(/could not write a flash page \(line 2 of the file\)/);
-    expect(d.error!.message).toMatch(
+    expect(errorText(d.error, "en")).toMatch(/could not write a flash page \(line 2 of the file\)/);
+    expect(errorText(d.error, "en")).toMatch(
       /bootloader is never overwritten: switch the robot off and on and run the update again/,
     );
     expect(play(d, ["7E", "11"])).toEqual([
@@ -171,8 +172,10 @@ describe("bootloader dialogue timeouts and aborts", () => {
     const d = dialogue();
     expect(play(d, [{ timeout: true }])).toEqual([["timeout", ""]]);
     expect(d.error).toMatchObject({ code: "no-bootloader", holds: "previous-firmware" });
-    expect(d.error!.message).toMatch(/Nothing was written: the robot still holds its previous firmware/);
-    expect(d.error!.message).toMatch(/Switch the robot off, then on again while the update waits/);
+    expect(errorText(d.error, "en")).toMatch(
+      /Nothing was written: the robot still holds its previous firmware/,
+    );
+    expect(errorText(d.error, "en")).toMatch(/Switch the robot off, then on again while the update waits/);
   });
 
   it("no '?': waits for another '^', answering at most 3, then fails with nothing written", () => {
@@ -186,7 +189,7 @@ describe("bootloader dialogue timeouts and aborts", () => {
     const quiet = dialogue();
     play(quiet, ["5E", "3F", "7E", { timeout: true }]);
     expect(quiet.error).toMatchObject({ code: "no-status", line: 2, holds: "incomplete-firmware" });
-    expect(quiet.error!.message).toMatch(/did not answer a line \(line 2 of the file\) within 1 s/);
+    expect(errorText(quiet.error, "en")).toMatch(/did not answer a line \(line 2 of the file\) within 1 s/);
 
     const stalled = dialogue();
     const turns = play(stalled, ["5E", "3F", "7E 13", { timeout: true }]);
@@ -216,7 +219,9 @@ describe("bootloader dialogue timeouts and aborts", () => {
     play(late, ["5E", "3F"]);
     const e = late.abort("disconnected");
     expect(e).toMatchObject({ code: "disconnected", holds: "incomplete-firmware" });
-    expect(e.message).toMatch(/may now be incomplete.*never overwritten: switch the robot off and on/);
+    expect(errorText(e, "en")).toMatch(
+      /may now be incomplete.*never overwritten: switch the robot off and on/,
+    );
     expect(late.receive(fromHex("7E"))).toEqual([]);
   });
 });
@@ -253,7 +258,9 @@ describe("status characters against the wire and the line's overall deadline (§
     expect(at(2.4, "7E")).toEqual([L2]);
     expect(at(4.22, "7E")).toEqual([]); // 1.82 ms after line 2 went out
     expect(d.error).toMatchObject({ code: "early-status", line: 2, holds: "incomplete-firmware" });
-    expect(d.error?.message).toMatch(/sooner than the line could have reached the robot at 115200 baud/);
+    expect(errorText(d.error, "en")).toMatch(
+      /sooner than the line could have reached the robot at 115200 baud/,
+    );
   });
 
   it("a '~' after its line's wire time is its answer", () => {
@@ -295,7 +302,7 @@ describe("status characters against the wire and the line's overall deadline (§
     expect(d.done).toBe(false);
     timeoutAt(deadline);
     expect(d.error).toMatchObject({ code: "line-deadline", line: 1 });
-    expect(d.error?.message).toMatch(
+    expect(errorText(d.error, "en")).toMatch(
       /did not finish a line \(line 1 of the file\) within 10 s after its last byte/,
     );
   });

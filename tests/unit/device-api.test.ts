@@ -108,7 +108,8 @@ describe("RbcClient's public surface", () => {
     delete sparse[3];
     const error = await run(client.writeZeros(sparse).catch((e) => e));
     expect(error).toMatchObject({ code: "invalid-argument" });
-    expect(error.message).toMatch(/Servo 3: an empty value is not a whole number/);
+    expect(error.situation).toMatchObject({ kind: "zeros-not-written", problems: [{ id: 3 }] });
+    expect(errorText(error, "en")).toMatch(/Servo 3: an empty value is not a whole number/);
     expect(sim.zeros).toEqual(before);
     expect(sim.stats.bytesReceived).toBe(sentBefore);
   });

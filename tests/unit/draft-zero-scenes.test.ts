@@ -38,7 +38,7 @@ describe("an .rbm file with S = 0 (docs/protocol.md §7)", () => {
     expect(errors).toEqual([
       {
         code: "rbm-no-scenes",
-        message: "The motion has no scenes; a motion needs at least one.",
+        message: "rbm-no-scenes (scenes 0, min 1)",
         values: { scenes: 0, min: 1 },
       },
     ]);

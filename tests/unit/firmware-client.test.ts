@@ -71,7 +71,7 @@ describe("RbcClient.updateFirmware", () => {
     );
     expect(error).toBeInstanceOf(IntelHexError);
     expect(error).toMatchObject({ code: "checksum", line: 4 });
-    expect((error as Error).message).toMatch(/^Line 4: /);
+    expect(errorText(error, "en")).toMatch(/^Line 4: the checksum is /);
     expect(r.port.stats.bytesFromPc).toBe(sent);
     expect(r.asked()).toBe(0);
     expect(r.client.state.basicPostureConfirmed).toBe(true);

@@ -6,10 +6,10 @@
  */
 import { readFileSync } from "node:fs";
 import { describe, expect, it } from "vitest";
+import { distanceWarning } from "../../src/i18n/outcomes/plausibility.ts";
 import { translator } from "../../src/i18n/translate.ts";
 import { openMotion } from "../../src/motion/index.ts";
 import { BUILT_IN_MOTIONS } from "../../src/protocol/catalog.ts";
-import { distanceWarning } from "../../src/protocol/plausibility.ts";
 import { HUNO_BASIC_POSTURE } from "../../src/protocol/servo-limits.ts";
 import { distanceWarningText } from "../../src/ui/features/sensors/distance-warning.ts";
 import { builtInMotionName, describeEvent } from "../../src/ui/features/sensors/events.ts";

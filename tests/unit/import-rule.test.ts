@@ -24,22 +24,13 @@ type Layer = "protocol" | "link" | "device" | "motion" | "sim" | "shared" | "i18
 const MAY_IMPORT: Record<Layer, readonly Layer[]> = {
   shared: [],
   i18n: ["protocol", "link", "device", "motion", "shared"],
-  protocol: ["shared", "i18n"],
+  protocol: ["shared"],
   link: ["shared"],
-  motion: ["protocol", "shared", "i18n"],
+  motion: ["protocol", "shared"],
   sim: ["protocol", "motion", "shared"],
   device: ["protocol", "link", "motion", "shared"],
   ui: ["device", "protocol", "motion", "link", "sim", "shared", "i18n"],
   cli: ["device", "protocol", "motion", "link", "sim", "shared", "i18n"],
-};
-
-/**
- * Type-only imports (`import type`) allowed beyond MAY_IMPORT: the outcome catalogue (src/i18n/outcomes) words
- * the codes and facts that protocol/, link/, device/ and motion/ define, so it names their types; it never runs
- * their code.
- */
-const MAY_IMPORT_TYPES: Partial<Record<Layer, readonly Layer[]>> = {
-  i18n: ["protocol", "link", "device", "motion"],
 };
 
 /** The layers whose index.ts is the public API (docs/architecture.md); shared/ and i18n/ are leaves used file by file. */
@@ -92,17 +83,7 @@ const IMPORT_PATTERNS: readonly RegExp[] = [
 ];
 
 function importsOf(text: string): string[] {
-  return importsWithKind(text).map((i) => i.spec);
-}
-
-/** Each import's specifier, and whether it is type-only (`import type … from`, erased at build time). */
-function importsWithKind(text: string): { spec: string; typeOnly: boolean }[] {
-  return IMPORT_PATTERNS.flatMap((pattern) =>
-    [...text.matchAll(pattern)].map((m) => ({
-      spec: m[1] ?? "",
-      typeOnly: /^\s*(?:import|export)\s+type\s/.test(m[0]),
-    })),
-  );
+  return IMPORT_PATTERNS.flatMap((pattern) => [...text.matchAll(pattern)].map((m) => m[1] ?? ""));
 }
 
 function layerOf(path: string): Layer | undefined {
@@ -136,7 +117,7 @@ function importViolations(files: readonly SourceFile[]): string[] {
       say("", "a source file outside the layers of docs/architecture.md");
       continue;
     }
-    for (const { spec, typeOnly } of importsWithKind(file.text)) {
+    for (const spec of importsOf(file.text)) {
       if (!spec.startsWith(".")) {
         const rule = PACKAGES.find(({ test }) => test.test(spec));
         if (rule && !rule.allowed(file.path)) say(spec, `package not allowed in ${from}/`);
@@ -150,8 +131,7 @@ function importViolations(files: readonly SourceFile[]): string[] {
       }
       const to = layerOf(target);
       if (to === from) continue;
-      const typesAllowed = typeOnly && to !== undefined && (MAY_IMPORT_TYPES[from] ?? []).includes(to);
-      if (!to || !(MAY_IMPORT[from].includes(to) || typesAllowed)) {
+      if (!to || !MAY_IMPORT[from].includes(to)) {
         say(spec, `${from}/ may not import ${to ?? "that folder"}/`);
         continue;
       }
@@ -189,6 +169,35 @@ describe("the import rule (docs/architecture.md)", () => {
   it("holds for every file in src/", () => {
     expect(repository.length).toBeGreaterThan(100);
     expect(importViolations(repository)).toEqual([]);
+  });
+
+  it("keeps the layers below the front ends free of src/i18n, type imports included: they give codes and facts", () => {
+    const lower = repository.filter((f) => /^src\/(protocol|link|device|motion|sim)\//.test(f.path));
+    expect(lower.length).toBeGreaterThan(100);
+    const fromI18n = lower.flatMap((f) =>
+      importsOf(f.text)
+        .filter((spec) => normalize(join(dirname(f.path), spec)).startsWith("src/i18n/"))
+        .map((spec) => `${f.path}: "${spec}"`),
+    );
+    expect(fromI18n).toEqual([]);
+    // The layer table says the same (a type import is checked against it too).
+    for (const layer of ["protocol", "link", "device", "motion", "sim"] as const) {
+      expect(MAY_IMPORT[layer]).not.toContain("i18n");
+    }
+  });
+
+  it("has no import circle between src/i18n and another folder, type imports included", () => {
+    // Only the front ends (src/ui, src/cli) import src/i18n, and src/i18n imports neither of them.
+    const outside = repository.filter((f) => !/^src\/(i18n|ui|cli)\//.test(f.path));
+    const intoI18n = outside.flatMap((f) =>
+      importsOf(f.text)
+        .filter((spec) => normalize(join(dirname(f.path), spec)).startsWith("src/i18n/"))
+        .map((spec) => `${f.path}: "${spec}"`),
+    );
+    expect(intoI18n).toEqual([]);
+    const importers = (Object.keys(MAY_IMPORT) as Layer[]).filter((l) => MAY_IMPORT[l].includes("i18n"));
+    expect(importers).toEqual(["ui", "cli"]);
+    for (const layer of importers) expect(MAY_IMPORT.i18n).not.toContain(layer);
   });
 
   it("reads every form of import, and nothing that only looks like one", () => {
@@ -247,7 +256,7 @@ describe("the import rule (docs/architecture.md)", () => {
       fake("src/device/upload.ts", "../protocol/packet.ts", "../link/transport.ts"),
       fake("src/cli/connect.ts", "../link/node-serial-transport.ts", "../../package.json"),
       fake("src/protocol/packet.ts", "../shared/format.ts", "./bytes.ts"),
-      fake("src/motion/errors.ts", "../i18n/outcomes/motion/motion-words.ts", "../protocol/packet.ts"),
+      fake("src/motion/errors.ts", "../protocol/packet.ts"),
     ];
     expect(importViolations(files)).toEqual([]);
   });
@@ -260,6 +269,8 @@ describe("the import rule (docs/architecture.md)", () => {
       fake("src/device/stop.ts", "../i18n/translate.ts"),
       fake("src/sim/simulated-rbc.ts", "../link/index.ts"),
       fake("src/link/transport.ts", "../i18n/translate.ts"),
+      fake("src/motion/errors.ts", "../i18n/outcomes/motion/motion-words.ts"),
+      fake("src/protocol/rbm.ts", "../i18n/translate.ts"),
       fake("src/motion/document.ts", "../device/index.ts"),
       fake("src/ui/app.ts", "../cli/main.ts"),
       fake("src/shared/clock.ts", "../protocol/index.ts"),
@@ -270,6 +281,8 @@ describe("the import rule (docs/architecture.md)", () => {
       'src/device/stop.ts: "../i18n/translate.ts" (device/ may not import i18n/)',
       'src/sim/simulated-rbc.ts: "../link/index.ts" (sim/ may not import link/)',
       'src/link/transport.ts: "../i18n/translate.ts" (link/ may not import i18n/)',
+      'src/motion/errors.ts: "../i18n/outcomes/motion/motion-words.ts" (motion/ may not import i18n/)',
+      'src/protocol/rbm.ts: "../i18n/translate.ts" (protocol/ may not import i18n/)',
       'src/motion/document.ts: "../device/index.ts" (motion/ may not import device/)',
       'src/ui/app.ts: "../cli/main.ts" (ui/ may not import cli/)',
       'src/shared/clock.ts: "../protocol/index.ts" (shared/ may not import protocol/)',

@@ -1,4 +1,5 @@
 import { describe, expect, it } from "vitest";
+import { errorText } from "../../src/i18n/outcomes/error-text.ts";
 import {
   encodeIntelHex,
   IntelHexError,
@@ -147,8 +148,9 @@ describe("parseIntelHex", () => {
       const e = problem(lines.join("\r\n"));
       expect(e.code).toBe(code);
       expect(e.line).toBe(line);
-      expect(e.message).toMatch(message);
-      if (line !== undefined) expect(e.message.startsWith(`Line ${line}: `)).toBe(true);
+      expect(errorText(e, "en")).toMatch(message);
+      if (line !== undefined) expect(errorText(e, "en").startsWith(`Line ${line}: `)).toBe(true);
+      expect(e.message).toMatch(line === undefined ? `hex: ${code}` : `hex line ${line}: ${code}`);
     });
   }
 

@@ -1,4 +1,7 @@
 import { describe, expect, it } from "vitest";
+import { errorText } from "../../src/i18n/outcomes/error-text.ts";
+import { linkReasonText } from "../../src/i18n/outcomes/link-words.ts";
+import { LinkError, WebSerialTransport } from "../../src/link/index.ts";
 import { fromHex, toHex } from "../../src/protocol/index.ts";
 import { VirtualClock } from "../../src/shared/clock.ts";
 import {
@@ -388,5 +391,46 @@ describe("FakeSerial", () => {
     port.unplug();
     port.replug();
     expect(seen).toEqual(["disconnect", "onconnect"]);
+  });
+});
+
+describe("the Web Serial transport's failures: a code and facts, worded by the outcome catalogue", () => {
+  it("opening an open port, and writing to a closed one", async () => {
+    const { port } = rig();
+    const link = new WebSerialTransport(port);
+    await link.open();
+    const again = await link.open().catch((e: unknown) => e);
+    expect(again).toBeInstanceOf(LinkError);
+    expect(again).toMatchObject({ code: "open-failed", facts: { reason: "already-open" } });
+    expect((again as LinkError).message).toBe("link: open-failed (already-open)");
+    expect(errorText(again, "en")).toBe("The port is already open.");
+    expect(errorText(again, "ko")).toBe("포트가 이미 열려 있어요.");
+    await link.close();
+    const closed = await link.write(Uint8Array.of(1)).catch((e: unknown) => e);
+    expect(closed).toMatchObject({ code: "not-open", facts: { reason: "not-open" } });
+    expect(errorText(closed, "en")).toBe("The port is not open.");
+  });
+
+  it("a lost link says why as a cause the device words", async () => {
+    const { port, clock } = rig();
+    const link = new WebSerialTransport(port);
+    const events: unknown[] = [];
+    link.onStatus((e) => events.push(e));
+    await link.open();
+    port.unplug();
+    await clock.advance(0);
+    const lost = events.find((e) => (e as { status: string }).status === "lost");
+    expect(lost).toMatchObject({
+      cause: { reason: "usb-unplugged" },
+      reason: "link: disconnected (usb-unplugged)",
+    });
+    expect(linkReasonText({ reason: "usb-unplugged" }, "en")).toBe(
+      "The USB cable was unplugged or the adapter was removed.",
+    );
+    expect(
+      linkReasonText({ reason: "busy-or-denied", path: "/dev/ttyUSB0", detail: "Resource busy" }, "ko"),
+    ).toBe(
+      "/dev/ttyUSB0을(를) 다른 프로그램이 쓰고 있거나 사용 권한이 없어요 (Resource busy). 그 포트를 쓰는 다른 프로그램을 닫아 주세요. Linux에서는 사용자를 dialout 그룹에 추가해 주세요.",
+    );
   });
 });

@@ -6,6 +6,7 @@
  */
 import { readdirSync, readFileSync } from "node:fs";
 import { describe, expect, it } from "vitest";
+import { motionRefusalText } from "../../src/i18n/outcomes/motion/motion-words.ts";
 import {
   addScene,
   apply,
@@ -73,7 +74,8 @@ function refused(fn: () => unknown, code: string): MotionError {
   } catch (e) {
     expect(e).toBeInstanceOf(MotionError);
     expect((e as MotionError).code).toBe(code);
-    expect((e as MotionError).message.length).toBeGreaterThan(10);
+    expect((e as MotionError).message.startsWith(code)).toBe(true);
+    expect(motionRefusalText(e as MotionError, "en").length).toBeGreaterThan(10);
     return e as MotionError;
   }
   throw new Error(`expected a MotionError ${code}`);
@@ -155,7 +157,7 @@ describe("editing fields", () => {
     const doc = frozenWave(); // scene 1: 10 frames, 400 ms
     expect(setTiming(doc, 1, { frames: 20 }).scenes[1]).toMatchObject({ frames: 20, timeMs: 400 });
     const e = refused(() => setTiming(doc, 1, { frames: 21 }), "motion-frame-interval"); // 19.0 ms
-    expect(e.message).toContain("at most 20 frames");
+    expect(motionRefusalText(e, "en")).toContain("at most 20 frames");
     refused(() => setTiming(doc, 1, { timeMs: 199 }), "motion-frame-interval");
     refused(() => setTiming(doc, 1, { timeMs: 45_501 }), "motion-frame-interval"); // 4,550.1 ms
     expect(setTiming(doc, 1, { timeMs: 45_500 }).scenes[1]!.timeMs).toBe(45_500);
@@ -329,7 +331,7 @@ describe("poses: set, copy, mirror", () => {
   it("refuses a mirror that would leave 0-254, or a motion that is not for a HUNO", () => {
     const doc = setPosition(newMotion(), 0, 12, 254); // servo 15: 127 − (254 − 125) = −2
     const e = refused(() => mirrorPose(doc, 0), "motion-mirror");
-    expect(e.message).toContain("servo 15 would go to -2");
+    expect(motionRefusalText(e, "en")).toContain("servo 15 would go to -2");
     refused(() => mirrorPose({ ...newMotion(), platform: 2 }, 0), "motion-mirror");
   });
 });

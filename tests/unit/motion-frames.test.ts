@@ -4,6 +4,7 @@
  * safe ranges of §5 (servo 0: 1-174, servo 2: 124-254), with round = C's round() (halves away from zero).
  */
 import { describe, expect, it } from "vitest";
+import { motionRefusalText } from "../../src/i18n/outcomes/motion/motion-words.ts";
 import { type Motion, MotionError, openMotion, playFrames } from "../../src/motion/index.ts";
 
 const STANDARD_ZEROS = [125, 202, 162, 66, 108, 124, 48, 88, 184, 142, 90, 40, 125, 161, 210, 127];
@@ -116,7 +117,7 @@ describe("scene frames", () => {
     // 5 frames in 99 ms: 19 ms apart. A document the editor would refuse, built by hand.
     const bad: Motion = { ...doc, scenes: [doc.scenes[0]!, { ...doc.scenes[1]!, frames: 5, timeMs: 99 }] };
     const e = refused(() => playFrames(bad, { robotZeros: ROBOT_ZEROS, platform: 1 }));
-    expect(e.message).toContain("19 ms");
+    expect(motionRefusalText(e, "en")).toContain("19 ms");
     // Scene 0 alone still plays.
     expect(playFrames(bad, { robotZeros: ROBOT_ZEROS, platform: 1, range: { to: 0 } }).frames).toHaveLength(
       4,

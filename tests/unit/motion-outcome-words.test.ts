@@ -1,13 +1,15 @@
 /**
  * Issue 19 item 1 for the motion layer: a refused edit, retime, mirror or tethered play is a `MotionError` with a
- * stable code and its facts, and its English message is the outcome catalogue's sentence
+ * stable code and its facts (its own message is a technical line), and its English and Korean are the outcome catalogue's sentences
  * (src/i18n/outcomes/motion/), the same entry the Editor says in Korean. Each case below makes the refusal with
  * the real operation and compares both languages with the sentences written out here, never with the code's own
  * output fed back to it. The zero table's count (protocol, simulator) and a refused restamp come from their
  * catalogues the same way.
  */
 import { describe, expect, it } from "vitest";
+import { errorText } from "../../src/i18n/outcomes/error-text.ts";
 import { motionRefusalText, motionSubjectText } from "../../src/i18n/outcomes/motion/motion-words.ts";
+import { zeroProblemText } from "../../src/i18n/outcomes/zero-words.ts";
 import {
   addScene,
   apply,
@@ -38,22 +40,22 @@ import {
   undo,
   undoLabel,
 } from "../../src/motion/index.ts";
-import { COMMANDS, ProtocolError } from "../../src/protocol/index.ts";
+import { COMMANDS, ZeroTableError } from "../../src/protocol/index.ts";
 import { SimulatedRbc } from "../../src/sim/index.ts";
 import { motionRefusal as refusal } from "../support/motion-refusal.ts";
 
-/** The refusal's message and its sentence in each language. */
+/** The refusal's sentence in each language: the catalogue's, and the one a person reads of the error. */
 function said(e: MotionError) {
-  return { message: e.message, en: motionRefusalText(e, "en"), ko: motionRefusalText(e, "ko") };
+  return { en: motionRefusalText(e, "en"), ko: motionRefusalText(e, "ko"), errorText: errorText(e, "en") };
 }
 
-const both = (en: string, ko: string) => ({ message: en, en, ko });
+const both = (en: string, ko: string) => ({ en, ko, errorText: en });
 
 const one = newMotion();
 const platform2: Motion = { ...one, platform: 2 };
 
 describe("the motion layer's refusals, worded by the outcome catalogue", () => {
-  it.each<[string, () => unknown, string, { message: string; en: string; ko: string }]>([
+  it.each<[string, () => unknown, string, { en: string; ko: string; errorText: string }]>([
     [
       "a torque outside 0-4",
       () => setTorque(one, 0, 12, 7),
@@ -250,6 +252,8 @@ describe("the motion layer's refusals, worded by the outcome catalogue", () => {
     const e = refusal(change);
     expect(e.code).toBe(code);
     expect(said(e)).toEqual(expected);
+    // The error's own message is a technical line: its code and facts.
+    expect(e.message.startsWith(code)).toBe(true);
   });
 
   it("names what was being set as data, and says it from there in each language", () => {
@@ -270,7 +274,9 @@ describe("the motion layer's refusals, worded by the outcome catalogue", () => {
 
   it("keeps a program's own name for what was set (a string, as before), said as it is", () => {
     const e = refusal(() => checkTiming(0, 500, "Scene 7"));
-    expect(e.message).toBe("Scene 7: the number of frames must be a whole number from 1 to 65,535, not 0.");
+    expect(motionRefusalText(e, "en")).toBe(
+      "Scene 7: the number of frames must be a whole number from 1 to 65,535, not 0.",
+    );
     expect(refusal(() => checkTiming(10, 100, 2)).facts).toMatchObject({ rule: "interval-short", scene: 2 });
   });
 
@@ -282,13 +288,26 @@ describe("the motion layer's refusals, worded by the outcome catalogue", () => {
 });
 
 describe("sentences the protocol and the simulator share", () => {
-  it("a zero table of 15 values: the same catalogue sentence from the command table and the simulated robot", () => {
+  it("a zero table of 15 values: the same facts from the command table and the simulated robot, worded by the catalogue", () => {
     const fifteen = Array(15).fill(125);
-    expect(() => COMMANDS.writeZeros.request(fifteen)).toThrow(
-      new ProtocolError("bad-argument", "A zero table has 16 values, not 15."),
+    let e: unknown;
+    try {
+      COMMANDS.writeZeros.request(fifteen);
+    } catch (caught) {
+      e = caught;
+    }
+    expect(e).toBeInstanceOf(ZeroTableError);
+    expect(e).toMatchObject({ code: "bad-argument", problems: [{ id: -1, value: 15 }] });
+    expect(zeroProblemText({ id: -1, value: 15 }, "en")).toBe("A zero table has 16 values, not 15.");
+    expect(errorText(e, "en")).toBe(
+      "Not written: A zero table has 16 values, not 15. Nothing was sent to the robot.",
     );
+    expect(errorText(e, "ko")).toBe(
+      "쓰지 않았어요: 영점 표에는 값이 16개 있어야 해요. 받은 값은 15개예요. 로봇에 아무것도 보내지 않았어요.",
+    );
+    // The simulated robot's option check is for programs: the protocol's technical line.
     expect(() => new SimulatedRbc({ zeros: fifteen })).toThrow(
-      new RangeError("A zero table has 16 values, not 15."),
+      new RangeError("zeros: 16 values expected, got 15"),
     );
   });
 
@@ -303,7 +322,8 @@ describe("sentences the protocol and the simulator share", () => {
     expect(e).toBeInstanceOf(RestampError);
     expect((e as RestampError).code).toBe("restamp-bad-serial");
     expect((e as RestampError).facts).toEqual({ value: "12345" });
-    expect((e as RestampError).message).toBe(
+    expect((e as RestampError).message).toBe('restamp-bad-serial (value "12345")');
+    expect(errorText(e, "en")).toBe(
       'The serial number "12345" cannot be written into a motion file: it must be 13 digits (0-9).',
     );
   });

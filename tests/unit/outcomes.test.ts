@@ -8,6 +8,7 @@ import { RbcInBootloaderError } from "../../src/device/bootloader-prompt.ts";
 import {
   RbcDisconnectedError,
   RbcNotConnectedError,
+  RbcPortError,
   RbcTimeoutError,
   RbcVerifyError,
   ZeroBackupError,
@@ -30,6 +31,7 @@ import {
   firmwareResultText,
   firmwareSummaryText,
 } from "../../src/i18n/outcomes/firmware/firmware-words.ts";
+import { LinkError } from "../../src/link/transport.ts";
 import { bootloaderError } from "../../src/protocol/bootloader.ts";
 
 describe("a failed firmware update", () => {
@@ -71,7 +73,7 @@ describe("a failed firmware update", () => {
   it("is the same sentence whether the protocol's dialogue or the device says it", () => {
     const fromDialogue = bootloaderError("checksum", "incomplete-firmware", { line: 3 });
     expect(fromDialogue.tries).toBe(4);
-    expect(fromDialogue.message).toBe(
+    expect(errorText(fromDialogue, "en")).toBe(
       "The bootloader reported a checksum error on a line (line 3 of the file) 4 times in a row; the link is garbling data. " +
         "The robot's firmware may now be incomplete, and the robot may not work until an update succeeds. " +
         "The bootloader is never overwritten: switch the robot off and on and run the update again.",
@@ -82,7 +84,7 @@ describe("a failed firmware update", () => {
       line: 3,
       tries: 4,
     });
-    expect(errorText(device, "en")).toBe(fromDialogue.message);
+    expect(errorText(device, "en")).toBe(errorText(fromDialogue, "en"));
     expect(device.code).toBe("upload-failed");
   });
 
@@ -100,7 +102,7 @@ describe("a failed firmware update", () => {
 describe("the firmware update's holes (issue 20 item 8)", () => {
   it("a status sooner than its line's wire time, one with no line waiting, a line past its deadline", () => {
     const early = bootloaderError("early-status", "incomplete-firmware", { line: 7 });
-    expect(early.message).toBe(
+    expect(errorText(early, "en")).toBe(
       "A status character arrived for a line (line 7 of the file) sooner than the line could have reached the robot at 115200 baud, so it cannot be that line's answer; the update stopped rather than run ahead of the bootloader. " +
         "The robot's firmware may now be incomplete, and the robot may not work until an update succeeds. " +
         "The bootloader is never overwritten: switch the robot off and on and run the update again.",
@@ -261,6 +263,26 @@ describe("the device's errors", () => {
       "The serial device was unplugged. Check the cable, then connect again.",
     );
     expect(errorText(lost, "ko")).toBe("로봇과의 연결이 끊겼어요. 케이블을 확인한 뒤 다시 연결해 주세요.");
+    // With the link's facts (as the connection gives them), the catalogue words the link's reason.
+    const unplugged = new RbcDisconnectedError(undefined, undefined, {
+      kind: "link-lost",
+      reported: "link: lost (device-unplugged, /dev/ttyUSB0)",
+      cause: { reason: "device-unplugged", path: "/dev/ttyUSB0" },
+      advice: "connect-again",
+    });
+    expect(errorText(unplugged, "en")).toBe("The serial device was unplugged. Connect again.");
+    expect(errorText(unplugged, "ko")).toBe("시리얼 장치가 뽑혔어요. 다시 연결해 주세요.");
+    // A port the link could not open: the device's error keeps the link's error as its cause, worded from it.
+    const busy = RbcPortError.fromLink(
+      new LinkError("port-busy", "link: port-busy (busy-or-denied, /dev/ttyUSB0: Resource busy)", {
+        facts: { reason: "busy-or-denied", path: "/dev/ttyUSB0", detail: "Resource busy" },
+      }),
+    );
+    expect(busy.code).toBe("port-busy");
+    expect(errorText(busy, "en")).toBe(
+      "/dev/ttyUSB0 is busy or not permitted (Resource busy). Close other programs using it; on Linux add yourself to the dialout group.",
+    );
+    expect(errorText(busy, "ko")).toMatch(/^\/dev\/ttyUSB0을\(를\) 다른 프로그램이 쓰고 있거나/);
     const verify = new RbcVerifyError("zeros read back 1,2 instead of 1,3", [1, 3], [1, 2]);
     expect(errorText(verify, "en")).toBe("Zeros were sent, but the robot reads back 1,2 instead of 1,3.");
     expect(errorText(verify, "ko")).toBe("영점을 보냈지만, 로봇에서 다시 읽으니 1,3 대신 1,2 값이 나와요.");

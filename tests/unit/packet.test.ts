@@ -1,4 +1,5 @@
 import { describe, expect, it } from "vitest";
+import { errorText } from "../../src/i18n/outcomes/error-text.ts";
 import {
   COMMANDS,
   commandName,
@@ -43,7 +44,12 @@ describe("encodePacket (docs/protocol.md §8 requests)", () => {
   });
   it("refuses out-of-range types, platforms and oversize contents", () => {
     expect(() => encodePacket(256, Uint8Array.of(1))).toThrow(/type/);
-    expect(() => encodePacket(1, Uint8Array.of(1), -1)).toThrow(/Platform/);
+    expect(() => encodePacket(1, Uint8Array.of(1), -1)).toThrow(
+      expect.objectContaining({
+        code: "bad-platform",
+        facts: { field: "platform", value: -1, min: 0, max: 255 },
+      }),
+    );
     expect(() => encodePacket(1, new Uint8Array(4097))).toThrow(/4096/);
   });
 });
@@ -103,7 +109,29 @@ describe("reply decoders (docs/protocol.md §8 replies)", () => {
     expect(() => COMMANDS.readFirmwareVersion.decode(Uint8Array.of(2))).toThrow(
       expect.objectContaining({ code: "bad-reply" }),
     );
-    expect(() => COMMANDS.readZeros.decode(new Uint8Array(15))).toThrow(/16 bytes/);
-    expect(() => COMMANDS.readSerialNumber.decode(new Uint8Array(13))).toThrow(/printable/);
+    const caught = (f: () => unknown) => {
+      try {
+        f();
+      } catch (e) {
+        return e;
+      }
+      throw new Error("no error");
+    };
+    const short = caught(() => COMMANDS.readZeros.decode(new Uint8Array(15)));
+    expect(short).toMatchObject({
+      code: "bad-reply",
+      facts: { command: "Read zero positions", expected: 16, got: 15 },
+    });
+    expect(errorText(short, "en")).toBe(
+      'The robot\'s reply to "Read zero positions" was not understood: expected 16 bytes, got 15.',
+    );
+    const garbled = caught(() => COMMANDS.readSerialNumber.decode(new Uint8Array(13)));
+    expect(garbled).toMatchObject({ facts: { problem: "not-printable" } });
+    expect(errorText(garbled, "en")).toBe(
+      'The robot\'s reply to "Read serial number" was not understood: the serial number is not printable text.',
+    );
+    expect(errorText(garbled, "ko")).toBe(
+      '로봇이 "Read serial number" 요청에 보낸 응답을 이해하지 못했어요. 시리얼 번호가 읽을 수 있는 문자가 아니에요.',
+    );
   });
 });

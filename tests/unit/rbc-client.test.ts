@@ -65,7 +65,9 @@ describe("RbcClient against the simulated RBC", () => {
     zeros[0] = 141; // standard 125 + 16
     const error = await run(client.writeZeros(zeros).catch((e) => e));
     expect(error).toMatchObject({ code: "invalid-argument" });
-    expect(String(error.message)).toMatch(/Servo 0: 141 is outside 110-140/);
+    // Facts on the error (its message a technical line); the catalogue's sentence from them.
+    expect(error.situation).toMatchObject({ kind: "zeros-not-written", problems: [{ id: 0, value: 141 }] });
+    expect(errorText(error, "en")).toMatch(/Servo 0: 141 is outside 110-140/);
     expect(port.stats.bytesFromPc).toBe(before);
     expect(sim.zeros).toEqual([...FACTORY_ZEROS]);
   });

@@ -1,5 +1,6 @@
 import { readFileSync } from "node:fs";
 import { describe, expect, it } from "vitest";
+import { errorText } from "../../src/i18n/outcomes/error-text.ts";
 import { parseRbm, RbmError, readRbm } from "../../src/protocol/index.ts";
 import { RBM_MAX_TEXT_LENGTH } from "../../src/protocol/rbm.ts";
 import { MockSerialPort, SimulatedRbc } from "../../src/sim/index.ts";
@@ -52,7 +53,7 @@ describe("the .rbm reader's own limits (bounded time and memory on any input)", 
       }
       expect(error).toBeInstanceOf(RbmError);
       expect((error as RbmError).code).toBe("rbm-not-motion");
-      expect((error as RbmError).message).toMatch(/^This is not a Motionbuilder motion file \(\.rbm\)/);
+      expect(errorText(error, "en")).toMatch(/^This is not a Motionbuilder motion file \(\.rbm\)/);
     }
   });
 });

@@ -1,7 +1,9 @@
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
+import { HUNO_JOINT_NAMES } from "../../src/i18n/joint-names/huno-joint-names.ts";
+import { errorText } from "../../src/i18n/outcomes/error-text.ts";
+import { rbmIssueText } from "../../src/i18n/outcomes/rbm/rbm-issue-text.ts";
 import { ProtocolError } from "../../src/protocol/errors.ts";
-import { HUNO_JOINT_NAMES } from "../../src/protocol/huno-joint-names.ts";
 import {
   motionDurationMs,
   parseRbm,
@@ -237,7 +239,8 @@ describe("parseRbm errors", () => {
     expect(e).toBeInstanceOf(ProtocolError);
     expect(e.name).toBe("RbmError");
     expect(e.code).toBe(code);
-    expect(e.message).toMatch(message);
+    expect(errorText(e, "en")).toMatch(message);
+    expect(e.message).toMatch(new RegExp(`^${code}\\b`));
     expect(e.issues.length).toBeGreaterThan(0);
   });
 
@@ -245,7 +248,8 @@ describe("parseRbm errors", () => {
     const e = parseError(edit(WAVE, [recordField(1, 0, 4), "5"], [recordField(1, 1, 5), "9"]));
     expect(codes([...e.issues])).toEqual(["rbm-torque", "rbm-port"]);
     expect(e.issues[1]).toMatchObject({ scene: 1, servo: 1 });
-    expect(e.message).toMatch(/1 more problem/);
+    expect(errorText(e, "en")).toMatch(/\(1 more problem found\)$/);
+    expect(e.message).toMatch(/\(\+1 more\)$/);
   });
 });
 
@@ -268,24 +272,26 @@ describe("validateRbm", () => {
         code: "rbm-scene-jump",
         scene: 1,
         servo: 10,
-        message:
-          "Scene 1 starts servo 10 (Left shoulder pitch) at 60, but scene 0 ended it at 160; the servo will jump.",
+        message: "rbm-scene-jump (scene 1, servo 10, start 60, previous 0, end 160)",
         values: { scene: 1, servo: 10, start: 60, previous: 0, end: 160 },
       },
     ]);
+    expect(rbmIssueText(w[0]!, "en")).toBe(
+      "Scene 1 starts servo 10 (Left shoulder pitch) at 60, but scene 0 ended it at 160; the servo will jump.",
+    );
   });
 
   it("warns about positions outside the safe ranges", () => {
     const w = warningsOf(edit(WAVE, [recordField(0, 2, 3), "100"]));
     expect(w[0]).toMatchObject({ code: "rbm-unsafe-position", scene: 0, servo: 2 });
-    expect(w[0]!.message).toMatch(/Left knee\) goes to 100, outside its safe range 124-254/);
+    expect(rbmIssueText(w[0]!, "en")).toMatch(/Left knee\) goes to 100, outside its safe range 124-254/);
     expect(codes(w)).toContain("rbm-scene-jump"); // scene 1 starts at 199 again
   });
 
   it("warns about header fields 0, 8, 10, 12 that are not 1, 1, 2, 4", () => {
     const w = warningsOf(edit(WAVE, [0, "2"], [8, "3"], [10, "5"], [12, "7"]));
     expect(codes(w)).toEqual(Array(4).fill("rbm-header-constant"));
-    expect(w.map((x) => x.message).join(" ")).toMatch(/Field 0.*Field 8.*Field 10.*Field 12/);
+    expect(w.map((x) => rbmIssueText(x, "en")).join(" ")).toMatch(/Field 0.*Field 8.*Field 10.*Field 12/);
   });
 
   it("warns about scenes beyond Motionbuilder's limits", () => {
@@ -342,20 +348,23 @@ describe("validateRbm", () => {
     (m.scenes[2]!.servos[3] as { end: unknown }).end = 12.5;
     (m as { text1: unknown }).text1 = 5;
     const { errors } = validateRbm(m);
-    expect(errors).toContainEqual({
+    const notANumber = {
       code: "rbm-not-a-number",
       scene: 2,
-      message: "scene 2, servo record 3, end must be a whole number of 0 or more (it is 12.5).",
+      message: "rbm-not-a-number (kind shape, path scenes.2.servos.3.end, got value, value 12.5)",
       values: { kind: "shape", path: "scenes.2.servos.3.end", got: "value", value: "12.5" },
-    });
-    expect(errors).toContainEqual(
-      expect.objectContaining({ code: "rbm-shape", message: expect.stringMatching(/text1 must be text/) }),
+    };
+    expect(errors).toContainEqual(notANumber);
+    expect(rbmIssueText(notANumber, "en")).toBe(
+      "scene 2, servo record 3, end must be a whole number of 0 or more (it is 12.5).",
     );
+    const text1 = errors.find((e) => e.code === "rbm-shape");
+    expect(text1 && rbmIssueText(text1, "en")).toMatch(/text1 must be text/);
     expect(codes(validateRbm(null as unknown as RbmMotion).errors)).toEqual(["rbm-shape"]);
     const n = parseWave();
     (n.scenes[0] as { timeMs: unknown }).timeMs = "500";
     (n as { format: unknown }).format = 1n;
-    expect(validateRbm(n).errors.map((e) => e.message)).toEqual([
+    expect(validateRbm(n).errors.map((e) => rbmIssueText(e, "en"))).toEqual([
       "format must be a whole number of 0 or more (it is 1).",
       'scene 0, timeMs must be a whole number of 0 or more (it is "500").',
     ]);

@@ -84,9 +84,12 @@ describe("restampRbm: refusals change nothing", () => {
     })();
     expect(error).toBeInstanceOf(RestampError);
     expect(error).toMatchObject({ code: "restamp-bad-serial", facts: { value: serial } });
-    // The outcome catalogue's English is the error's own sentence; Korean says the same from the facts.
+    // The outcome catalogue says it from the facts, in English as in Korean; the error's message is technical.
     const refusal = error as RestampError;
-    expect(restampRefusalText(refusal, "en")).toBe(refusal.message);
+    expect(restampRefusalText(refusal, "en")).toBe(
+      `The serial number ${JSON.stringify(serial)} cannot be written into a motion file: it must be 13 digits (0-9).`,
+    );
+    expect(refusal.message).toBe(`restamp-bad-serial (value ${JSON.stringify(serial)})`);
     expect(restampRefusalText(refusal, "ko")).toBe(
       `시리얼 번호 "${serial}"은(는) 모션 파일에 쓸 수 없어요. 숫자(0-9) 13자리여야 해요.`,
     );
@@ -100,7 +103,9 @@ describe("restampRbm: refusals change nothing", () => {
     try {
       restampRbm(short, RBM_ZERO_SERIAL);
     } catch (e) {
-      expect(restampRefusalText(e as RestampError, "en")).toBe((e as RestampError).message);
+      expect(restampRefusalText(e as RestampError, "en")).toBe(
+        "This file's serial number field has 4 characters, not 13, so it cannot be rewritten without changing other bytes of the file.",
+      );
     }
   });
 

@@ -2,6 +2,7 @@ import { readFileSync } from "node:fs";
 import { describe, expect, it } from "vitest";
 import { parseRbm, serializeRbm } from "../../src/protocol/rbm.ts";
 import { checkEntry, entryFacts, inspectMotionText } from "../../src/ui/features/motions/files.ts";
+import { issueText } from "../../src/ui/features/motions/issue-text.ts";
 import { formatSeconds, motionPlotData, sceneRows } from "../../src/ui/features/motions/plot-data.ts";
 import {
   afterFailedUpload,
@@ -155,11 +156,13 @@ describe("motion files", () => {
       "rbm-frame-interval-short",
       "rbm-torque",
     ]);
-    // Said in words (the exact sentence is the protocol layer's).
-    expect(inspectMotionText("x.rbm", "not a motion").errors[0]?.message).toMatch(
-      /not a Motionbuilder motion file|should end with ":"/,
-    );
-    expect(inspectMotionText("empty.rbm", "").errors[0]?.message).toBe("The motion file is empty.");
+    // Said in words (the exact sentence is the outcome catalogue's).
+    const said = (name: string, text: string) => {
+      const issue = inspectMotionText(name, text).errors[0];
+      return issue && issueText(issue, "en");
+    };
+    expect(said("x.rbm", "not a motion")).toMatch(/not a Motionbuilder motion file|should end with ":"/);
+    expect(said("empty.rbm", "")).toBe("The motion file is empty.");
   });
 
   it("plots every servo from its start to its end position over each scene", () => {

@@ -1,7 +1,8 @@
 import { describe, expect, it } from "vitest";
 import { sensorReading } from "../../src/cli/commands/sensors.ts";
 import { demoVariant, variantFromValues } from "../../src/cli/sim-variant.ts";
-import { distanceWarning, fromHex, platformWarning, toHex } from "../../src/protocol/index.ts";
+import { distanceWarning, platformWarning } from "../../src/i18n/index.ts";
+import { fromHex, toHex } from "../../src/protocol/index.ts";
 import { VirtualClock } from "../../src/shared/clock.ts";
 import { createDemoRbc, SimulatedRbc } from "../../src/sim/index.ts";
 import { makeRig } from "../support/rig.ts";
@@ -45,7 +46,7 @@ describe("version 9.99 and platform 4 are shown as the robot reports them", () =
     const { client, run } = await makeRig({ sim: { platform: 9 } });
     const identity = await run(client.identify());
     expect(identity.platform).toBe(9);
-    expect(identity.warnings[0]).toMatch(/platform 9; known platforms are 1-4/);
+    expect(identity.warnings).toEqual(["platform 9 is not one of 1-4"]);
   });
 });
 
@@ -66,7 +67,7 @@ describe("a firmware that repeats a reply endlessly (the homebrew port's 0x16)",
   });
 });
 
-describe("implausible values are shown with a warning (src/protocol/plausibility.ts)", () => {
+describe("implausible values are shown with a warning (src/protocol/plausibility.ts decides, src/i18n words)", () => {
   it("a distance outside 10-50 cm, and only then", () => {
     for (const cm of [10, 11, 30, 50]) expect(distanceWarning(cm)).toBeUndefined();
     for (const cm of [0, 9, 51, 255]) {
@@ -76,14 +77,14 @@ describe("implausible values are shown with a warning (src/protocol/plausibility
     }
   });
 
-  it("a platform outside 1-4, in the words identify() uses", async () => {
+  it("a platform outside 1-4: identify() warns with a technical line, the catalogue words it", async () => {
     for (const p of [1, 2, 3, 4]) expect(platformWarning(p)).toBeUndefined();
     const { client, run } = await makeRig({ sim: { platform: 0 } });
     const { warnings } = await run(client.identify());
     expect(platformWarning(0)).toBe(
       "The robot reports platform 0; known platforms are 1-4 (HUNO, DINO, DOGY, PF2).",
     );
-    expect(warnings).toEqual([platformWarning(0)]);
+    expect(warnings).toEqual(["platform 0 is not one of 1-4"]);
   });
 
   it("rbc sensors shows an implausible distance as read, marked, with the warning in --json", () => {

@@ -1,4 +1,5 @@
 import { describe, expect, it } from "vitest";
+import { errorText } from "../../src/i18n/outcomes/error-text.ts";
 import {
   assertAcceptedZeros,
   diffZeros,
@@ -32,7 +33,9 @@ describe("wCK servo packets (docs/protocol.md §5 examples)", () => {
   it("refuses ids, positions and torques out of range", () => {
     expect(() => wckMove(31, 100, 0)).toThrow(/id/);
     expect(() => wckMove(0, 255, 0)).toThrow(/position/);
-    expect(() => wckMove(0, 100, 5)).toThrow(/Torque/);
+    expect(() => wckMove(0, 100, 5)).toThrow(
+      expect.objectContaining({ code: "wck-torque", facts: { field: "torque", value: 5, min: 0, max: 4 } }),
+    );
     expect(() => wckSyncMove([], 0)).toThrow();
   });
 });
@@ -85,8 +88,19 @@ describe("zero table (docs/protocol.md §4)", () => {
     expect(isAcceptedZeroTable([...STANDARD_ZEROS, 1])).toBe(false);
     expect(isAcceptedZeroTable([125.5, ...STANDARD_ZEROS.slice(1)])).toBe(false);
     expect(() => assertAcceptedZeros([0, ...STANDARD_ZEROS.slice(1)])).toThrow(
-      expect.objectContaining({ code: "zero-out-of-range" }),
+      expect.objectContaining({
+        code: "zero-out-of-range",
+        problems: [expect.objectContaining({ id: 0, value: 0 })],
+      }),
     );
+    try {
+      assertAcceptedZeros([0, ...STANDARD_ZEROS.slice(1)]);
+    } catch (e) {
+      expect(errorText(e, "en")).toBe(
+        "Not written: Servo 0: 0 is outside 110-140 (standard 125 ± 15); the RBC would refuse the whole table. Nothing was sent to the robot.",
+      );
+      expect(errorText(e, "ko")).toMatch(/^쓰지 않았어요: 서보 0: 0은\(는\) 110-140 범위를 벗어나요/);
+    }
   });
   it("diffs two tables", () => {
     expect(diffZeros(FACTORY_ZEROS, STANDARD_ZEROS)).toEqual([

@@ -1,9 +1,9 @@
 import { RbcTimeoutError } from "../../device/errors.ts";
+import { platformWarning } from "../../i18n/outcomes/plausibility.ts";
 import { robotFactText } from "../../i18n/outcomes/robot-facts.ts";
 import { busyNowText } from "../../i18n/outcomes/stop-words.ts";
 import { translator } from "../../i18n/translate.ts";
 import { ACTION_AREA_BYTES, MOTION_AREA_BYTES, platformName } from "../../protocol/catalog.ts";
-import { platformWarning } from "../../protocol/plausibility.ts";
 import { formatFirmware } from "../../shared/format.ts";
 import { noExtraArguments, parseCommand } from "../args.ts";
 import { type CommandDef, localeOf } from "../command.ts";
@@ -34,7 +34,7 @@ export const infoCommand: CommandDef = {
     const robot = await connectRobot("info", values, env);
     const { client } = robot;
     // 0x0C is optional: some firmware builds never answer it (docs/protocol.md §3.5).
-    const { serialNumber, warnings } = await client.identify();
+    const { serialNumber } = await client.identify();
     const errorCode = await client.readErrorCode();
     // 0x0F is not answered by every firmware either (docs/protocol.md §3.5): "not reported".
     const freeMotion = await client.readFreeMemory("motion");
@@ -60,7 +60,8 @@ export const infoCommand: CommandDef = {
       errorCode,
       error: errorCodeWords(errorCode),
       freeMemory: freeMotion === undefined ? null : { motion: freeMotion, action: freeAction ?? null },
-      warnings,
+      // The identity's warnings (an unknown platform) in the catalogue's English, the sentences scripts read.
+      warnings: [platformWarning(platform)].filter((w) => w !== undefined),
       busy: busy ?? null,
       // Replies no request asked for (late, or repeated by a firmware that repeats them), discarded so far.
       unaskedReplies: client.stats.unansweredReplies,
@@ -91,12 +92,8 @@ export const infoCommand: CommandDef = {
     ];
     for (const line of labelledRows(rows)) env.out.line(line);
     if (busy) env.out.line(`${busyNowText(locale)} ${t("cmd.run.stopHint")}`);
-    // The client's warnings are English sentences; the one it gives (an unknown platform) is said here too.
-    const said = (warning: string) =>
-      locale !== "en" && warning === platformWarning(platform)
-        ? (platformWarning(platform, locale) ?? warning)
-        : warning;
-    for (const warning of warnings) env.out.note(t("cmd.warning", { warning: said(warning) }));
+    const warning = platformWarning(platform, locale);
+    if (warning !== undefined) env.out.note(t("cmd.warning", { warning }));
     return EXIT.ok;
   },
 };

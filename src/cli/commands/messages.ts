@@ -431,10 +431,6 @@ export const commandMessages = defineMessages({
     en: "{file}: {reason} Nothing was sent.",
     ko: "{file}: {reason} 아무것도 보내지 않았어요.",
   },
-  "cmd.play.refusedWhy": {
-    en: "The motion cannot be played as it is.",
-    ko: "이 모션은 지금 그대로는 재생할 수 없어요.",
-  },
   "cmd.play.summary": {
     en: '{file}: motion "{name}", {servos} servos, {scenes} scenes. Playing {playing}: {frames} frames, {duration}.',
     ko: '{file}: 모션 "{name}", 서보 {servos}개, 장면 {scenes}개. {playing} 재생: 프레임 {frames}개, {duration}.',

@@ -3,6 +3,7 @@ import { basename, resolve } from "node:path";
 import { TetheredPlayError, type TetheredPlayProgress, type TetheredPlayResult } from "../../device/index.ts";
 import type { Locale } from "../../i18n/locale.ts";
 import { nothingSentText } from "../../i18n/outcomes/device.ts";
+import { motionRefusalText } from "../../i18n/outcomes/motion/motion-words.ts";
 import { sceneText } from "../../i18n/outcomes/motion/position-words.ts";
 import { playStoppedText } from "../../i18n/outcomes/stop-words.ts";
 import { inEveryLanguage, said, saidBy, saidText } from "../../i18n/said.ts";
@@ -200,12 +201,10 @@ export const playCommand: CommandDef = {
       plan = playFrames(doc, { range, robotZeros: STANDARD_ZEROS, platform: PLATFORM_PF2 });
     } catch (e) {
       if (!(e instanceof MotionError)) throw e;
-      // The motion core's reason is English; in Korean the sentence says the file cannot be played.
+      // The motion core's reason, from the outcome catalogue, in every language.
       const words = said(commandMessages, "cmd.play.refused", {
         file: basename(file),
-        reason: inEveryLanguage((l) =>
-          l === "en" ? e.message : translator(commandMessages, l)("cmd.play.refusedWhy"),
-        ),
+        reason: inEveryLanguage((l) => motionRefusalText(e, l)),
       });
       throw new CliError("motion-refused", words);
     }

@@ -1,9 +1,9 @@
 import { RbcError } from "../../device/errors.ts";
 import { errorSaid } from "../../i18n/error-said.ts";
 import type { Locale } from "../../i18n/locale.ts";
+import { distanceWarning } from "../../i18n/outcomes/plausibility.ts";
 import { said, saidTogether } from "../../i18n/said.ts";
 import { translator } from "../../i18n/translate.ts";
-import { distanceWarning } from "../../protocol/plausibility.ts";
 import type { Clock } from "../../shared/clock.ts";
 import { intOption, noExtraArguments, parseCommand } from "../args.ts";
 import { type CommandDef, localeOf } from "../command.ts";

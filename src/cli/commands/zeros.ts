@@ -5,6 +5,7 @@ import type { ZeroWriteResult } from "../../device/types.ts";
 import { errorSaid } from "../../i18n/error-said.ts";
 import { jointOf } from "../../i18n/joint-names/joint-name.ts";
 import type { Locale } from "../../i18n/locale.ts";
+import { serialMismatchWarning, zerosNotWrittenText } from "../../i18n/outcomes/zero-words.ts";
 import { type Said, said, saidBy, saidTogether, wordOf } from "../../i18n/said.ts";
 import { translator } from "../../i18n/translate.ts";
 import { formatDateTime } from "../../i18n/units.ts";
@@ -16,9 +17,7 @@ import {
   ZERO_TOLERANCE,
   zeroProblems,
   zeroRange,
-  zerosNotWrittenText,
 } from "../../protocol/zeros.ts";
-import { serialMismatchWarning } from "../../protocol/zeros-backup.ts";
 import { formatFirmware } from "../../shared/format.ts";
 import { type GlobalValues, noExtraArguments, parseCommand } from "../args.ts";
 import { type CommandDef, localeOf, type RunEnv } from "../command.ts";

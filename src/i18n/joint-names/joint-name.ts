@@ -49,3 +49,9 @@ export function jointOf(id: number, locale: Locale = "en"): string | undefined {
 export function sidesNote(locale: Locale = "en"): string {
   return translator(jointMessages, locale)("joint.sides");
 }
+
+/** "servo 3 (Left ankle pitch)" for HUNO ids, "servo 20" otherwise: English, for technical lines and scripts. */
+export function servoLabel(id: number): string {
+  const name = jointOf(id, "en");
+  return name === undefined ? `servo ${id}` : `servo ${id} (${name})`;
+}

@@ -33,6 +33,7 @@ import {
   zerosBackupKeptText,
 } from "./device.ts";
 import { firmwareFailureText } from "./firmware/firmware-words.ts";
+import { lowerErrorText } from "./lower-error-text.ts";
 import {
   busyReadText,
   emptySlotText,
@@ -70,6 +71,9 @@ function fromFacts(e: unknown, locale: Locale, hint: string): string {
       e.situation &&
       situationText(e.situation, locale, () => errorText(e.cause, locale, { detailHint: hint }));
     if (worded !== undefined) return worded;
+    // A lower layer's error the device passed on (a link that failed, a reply or motion refused) is its cause.
+    const lower = e.situation === undefined ? lowerErrorText(e.cause, locale) : undefined;
+    if (lower !== undefined) return lower;
     if (e.situation === undefined && locale === "en") return e.message;
     return codeNeedsDetail(e.code) ? withHint(codeText(e.code, locale)) : codeText(e.code, locale);
   };
@@ -112,5 +116,7 @@ function fromFacts(e: unknown, locale: Locale, hint: string): string {
 
 /** The sentence a person reads about `e` in `locale`, from its code and facts (the outcome catalogue). */
 export function errorText(e: unknown, locale: Locale, options: ErrorTextOptions = {}): string {
+  const lower = lowerErrorText(e, locale);
+  if (lower !== undefined) return lower;
   return fromFacts(e, locale, options.detailHint ?? seeDetailText(locale));
 }

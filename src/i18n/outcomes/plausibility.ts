@@ -1,3 +1,9 @@
+import {
+  DISTANCE_MAX_CM,
+  DISTANCE_MIN_CM,
+  isKnownPlatform,
+  isPlausibleDistance,
+} from "../../protocol/plausibility.ts";
 import { defineMessages } from "../catalogue.ts";
 import type { Locale } from "../locale.ts";
 import { translator } from "../translate.ts";
@@ -27,4 +33,16 @@ export function platformUnknownText(platform: number, locale: Locale): string {
 /** A distance outside the `min`-`max` cm the sensor can measure. */
 export function distanceImplausibleText(cm: number, min: number, max: number, locale: Locale): string {
   return t(locale)("outcome.distanceImplausible", { cm: String(cm), min: String(min), max: String(max) });
+}
+
+/** A distance reading outside 10-50 cm in words (in English unless `locale` says otherwise), or undefined. */
+export function distanceWarning(cm: number, locale: Locale = "en"): string | undefined {
+  return isPlausibleDistance(cm)
+    ? undefined
+    : distanceImplausibleText(cm, DISTANCE_MIN_CM, DISTANCE_MAX_CM, locale);
+}
+
+/** A platform byte outside 1-4 in words (in English unless `locale` says otherwise), or undefined. */
+export function platformWarning(platform: number, locale: Locale = "en"): string | undefined {
+  return isKnownPlatform(platform) ? undefined : platformUnknownText(platform, locale);
 }

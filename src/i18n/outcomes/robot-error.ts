@@ -66,3 +66,8 @@ export function robotErrorTitle(code: number, locale: Locale): string {
   const text = robotErrorText(code, locale);
   return text.charAt(0).toUpperCase() + text.slice(1);
 }
+
+/** Error code `code` in English words ("checksum error (…)", "unknown error code 12"). */
+export function errorCodeText(code: number): string {
+  return robotErrorText(code, "en");
+}

@@ -1,6 +1,5 @@
 import type { ActivityRefusedError } from "../../device/activity.ts";
 import type { FrameIndex, RbcSituation } from "../../device/errors.ts";
-import { zerosNotWrittenText } from "../../protocol/zeros.ts";
 import type { Locale } from "../locale.ts";
 import { translator } from "../translate.ts";
 import {
@@ -15,9 +14,11 @@ import {
   zerosCancelledBeforeWriteText,
   zerosNotReadText,
 } from "./device.ts";
+import { linkReasonText } from "./link-words.ts";
 import { rbmIssueText } from "./rbm/rbm-issue-text.ts";
 import { situationMessages as messages } from "./situation-messages.ts";
 import { areaText, uploadCancelledEarlyText } from "./upload-words.ts";
+import { zerosNotWrittenText } from "./zero-words.ts";
 
 /** A device error's situation (`RbcError.situation`, src/device/situation.ts) in words, in either language. */
 
@@ -117,9 +118,11 @@ export function situationText(s: RbcSituation, locale: Locale, causeText: () => 
     case "connection-closed":
       return say("outcome.connectionClosed");
     case "link-lost": {
-      // The link reports in English (src/link): an English reader reads its report; another reads the
-      // catalogue's, and the report stays in the technical detail.
-      const lead = locale === "en" ? s.reported : say("outcome.linkLost");
+      // The link's facts in the catalogue's words; without them, its report in English (another language reads
+      // the catalogue's sentence), and the report stays in the technical detail.
+      const lead =
+        (s.cause && linkReasonText(s.cause, locale)) ??
+        (locale === "en" ? s.reported : say("outcome.linkLost"));
       const advice = say(
         s.advice === "check-cable" ? "outcome.linkLost.checkCable" : "outcome.linkLost.connectAgain",
       );

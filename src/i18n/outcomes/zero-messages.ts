@@ -2,7 +2,7 @@ import { defineMessages } from "../catalogue.ts";
 
 /**
  * Why the RBC would refuse a zero table (docs/protocol.md §4, §3 0x0E): the outcome catalogue's words, used by
- * `zeroProblemText` in src/protocol/zeros.ts for the device's errors and `rbc zeros write` alike.
+ * `zeroProblemText` and `backupRefusalText` (zero-words.ts) for the device's errors, the panel and `rbc zeros` alike.
  */
 export const zeroOutcomeMessages = defineMessages({
   "outcome.zeros.notWritten": {
@@ -29,4 +29,44 @@ export const zeroOutcomeMessages = defineMessages({
   "outcome.value.empty": { en: "an empty value", ko: "빈 값" },
   "outcome.value.list": { en: "a list", ko: "목록" },
   "outcome.value.object": { en: "an object", ko: "객체" },
+  "outcome.zeros.backup.hint": {
+    en: "Choose a file saved by this panel, named like rbc-zeros-<serial>-<date>.json.",
+    ko: "이 패널이 저장한 파일을 골라 주세요. 이름은 rbc-zeros-<시리얼 번호>-<날짜>.json 같은 모양이에요.",
+  },
+  "outcome.zeros.backup.notJson": {
+    en: "This file is not a zero backup: it is not JSON text. {hint}",
+    ko: "영점 백업 파일이 아니에요(JSON 텍스트가 아님). {hint}",
+  },
+  "outcome.zeros.backup.wrongFormat": {
+    en: "This file is JSON but not an RBC zero backup. {hint}",
+    ko: "JSON 파일이지만 RBC 영점 백업이 아니에요. {hint}",
+  },
+  "outcome.zeros.backup.otherFormat": {
+    en: 'This file is JSON but not an RBC zero backup (its format is "{format}"). {hint}',
+    ko: 'JSON 파일이지만 RBC 영점 백업이 아니에요(형식: "{format}"). {hint}',
+  },
+  "outcome.zeros.backup.wrongVersion": {
+    en: "This backup is version {version}; this panel reads version {readable}.",
+    ko: "이 백업은 버전 {version} 형식이에요. 이 패널은 버전 {readable} 형식만 읽을 수 있어요.",
+  },
+  "outcome.zeros.backup.wrongCount": {
+    en: "This backup holds {values} values; a zero table has exactly 16, one per servo 0-15.",
+    ko: "이 백업에는 값이 {values}개 있어요. 영점 표에는 서보 0-15마다 하나씩 정확히 16개가 있어야 해요.",
+  },
+  "outcome.zeros.backup.noList": {
+    en: "This backup holds no list of values; a zero table has exactly 16, one per servo 0-15.",
+    ko: "이 백업에는 값 목록이 없어요. 영점 표에는 서보 0-15마다 하나씩 정확히 16개가 있어야 해요.",
+  },
+  "outcome.zeros.backup.outOfRange": {
+    en: "The robot would refuse this backup's zeros: {problems}",
+    ko: "로봇이 이 백업의 영점을 거부할 거예요: {problems}",
+  },
+  "outcome.zeros.backup.damaged": {
+    en: "This backup file is damaged: {issue}.",
+    ko: "이 백업 파일은 손상됐어요: {issue}.",
+  },
+  "outcome.zeros.backup.damagedAt": {
+    en: "This backup file is damaged ({path}): {issue}.",
+    ko: "이 백업 파일은 손상됐어요({path}): {issue}.",
+  },
 });

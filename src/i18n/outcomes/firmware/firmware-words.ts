@@ -1,16 +1,17 @@
 import type { BootloaderFailure, RobotHolds } from "../../../protocol/bootloader.ts";
-import type { IntelHexErrorCode } from "../../../protocol/intel-hex.ts";
+import type { IntelHexErrorCode, IntelHexFacts } from "../../../protocol/intel-hex.ts";
 import { formatFirmware } from "../../../shared/format.ts";
 import type { KeysWithoutParams } from "../../catalogue.ts";
 import type { Locale } from "../../locale.ts";
-import { translator } from "../../translate.ts";
+import { type Translator, translator } from "../../translate.ts";
 import { formatMilliseconds, formatSeconds } from "../../units.ts";
 import { firmwareOutcomeMessages as messages } from "./messages.ts";
 
 /**
  * A firmware update's outcomes in words (docs/protocol.md §11), from their facts, in either language: the
- * device's `FirmwareUpdateError` is worded by `firmwareFailureText` (and the protocol's `BootloaderError` takes
- * its English `message` from it); `rbc flash` and the panel's Firmware view show the same sentences.
+ * device's `FirmwareUpdateError`, the protocol's `BootloaderError` (through `lowerErrorText`) and a refused
+ * HEX file (`hexProblemText`) are said from their facts, and `rbc flash` and the panel's Firmware view show the
+ * same sentences.
  */
 
 type Key = KeysWithoutParams<typeof messages>;
@@ -173,36 +174,70 @@ export function firmwareRestartedText(locale: Locale): string {
   return translator(messages, locale)("outcome.firmware.afterUpdate");
 }
 
-const HEX = {
-  "too-large": "outcome.hex.tooLarge",
-  "no-records": "outcome.hex.noRecords",
-  "no-colon": "outcome.hex.noColon",
-  "not-hex": "outcome.hex.notHex",
-  "length-mismatch": "outcome.hex.lengthMismatch",
-  checksum: "outcome.hex.checksum",
-  "record-type": "outcome.hex.recordType",
-  "bad-record": "outcome.hex.badRecord",
-  "crosses-64k": "outcome.hex.crosses64k",
-  "outside-flash": "outcome.hex.outsideFlash",
-  "boot-section": "outcome.hex.bootSection",
-  overlap: "outcome.hex.overlap",
-  "after-end": "outcome.hex.afterEnd",
-  "no-end": "outcome.hex.noEnd",
-} as const satisfies Readonly<Record<IntelHexErrorCode, Key>>;
+/** A fact of a refused HEX file as text (`IntelHexFacts`), or "?" when the file did not give it. */
+function fact(facts: IntelHexFacts, key: string): string {
+  const value = facts[key];
+  return value === undefined ? "?" : String(value);
+}
 
-/**
- * Why a HEX file is refused (an `IntelHexError`'s facts). In English the protocol's own sentence (it names the
- * line's bytes and addresses); in Korean a sentence from the code and the line.
- */
+/** What is wrong with the refused file's line (or the file), from the error's code and facts. */
+function hexProblem(t: Translator<typeof messages>, code: IntelHexErrorCode, facts: IntelHexFacts): string {
+  const f = (key: string) => fact(facts, key);
+  switch (code) {
+    case "too-large":
+      return t("outcome.hex.tooLarge", {
+        characters: Number(facts.characters ?? 0),
+        max: Number(facts.max ?? 0),
+      });
+    case "no-records":
+      return t("outcome.hex.noRecords");
+    case "no-colon":
+      return t("outcome.hex.noColon");
+    case "not-hex":
+      return t("outcome.hex.notHex");
+    case "length-mismatch":
+      return t("outcome.hex.lengthMismatch", { declared: f("declared"), holds: f("holds") });
+    case "checksum":
+      return t("outcome.hex.checksum", { got: f("got"), expected: f("expected") });
+    case "record-type": {
+      const name = facts.name;
+      if (name === "start-segment" || name === "start-linear") {
+        const words =
+          name === "start-segment"
+            ? t("outcome.hex.record.startSegment")
+            : t("outcome.hex.record.startLinear");
+        return t("outcome.hex.recordTypeNamed", { type: f("type"), name: words });
+      }
+      return t("outcome.hex.recordType", { type: f("type") });
+    }
+    case "bad-record":
+      return facts.kind === "end"
+        ? t("outcome.hex.badEnd")
+        : t("outcome.hex.badExtended", { type: f("type") });
+    case "crosses-64k":
+      return t("outcome.hex.crosses64k");
+    case "outside-flash":
+      return t("outcome.hex.outsideFlash", { from: f("from"), to: f("to") });
+    case "boot-section":
+      return t("outcome.hex.bootSection", { from: f("from"), to: f("to") });
+    case "overlap":
+      return t("outcome.hex.overlap", { address: f("address") });
+    case "after-end":
+      return t("outcome.hex.afterEnd", { endLine: f("endLine") });
+    case "no-end":
+      return t("outcome.hex.noEnd");
+  }
+}
+
+/** Why a HEX file is refused, in `locale`, from an `IntelHexError`'s code, line and facts. */
 export function hexProblemText(
-  e: { readonly code: IntelHexErrorCode; readonly line: number | undefined; readonly message: string },
+  e: { readonly code: IntelHexErrorCode; readonly line: number | undefined; readonly facts?: IntelHexFacts },
   locale: Locale,
 ): string {
-  if (locale === "en") return e.message;
   const t = translator(messages, locale);
   // "no-end" without a line: there was no line at all.
   if (e.code === "no-end" && e.line === undefined) return t("outcome.hex.empty");
-  const problem = t(HEX[e.code]);
+  const problem = hexProblem(t, e.code, e.facts ?? {});
   return e.line === undefined ? problem : t("outcome.hex.onLine", { line: String(e.line), problem });
 }
 

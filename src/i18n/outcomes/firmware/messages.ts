@@ -154,8 +154,8 @@ export const firmwareOutcomeMessages = defineMessages({
   // Why a HEX file is refused (IntelHexError): English is the protocol's sentence, which names the bytes
   "outcome.hex.onLine": { en: "Line {line}: {problem}", ko: "{line}번째 줄: {problem}" },
   "outcome.hex.tooLarge": {
-    en: "The file is far too long for a firmware of the RBC.",
-    ko: "파일이 RBC 펌웨어라기에는 너무 길어요.",
+    en: "The file is {characters} characters long; a firmware for the RBC's 120 KiB of application flash is under {max}. It is not an RBC firmware file.",
+    ko: "파일이 {characters}자예요. RBC의 응용 프로그램 플래시 120KiB에 맞는 펌웨어는 {max}자보다 짧아요. RBC 펌웨어 파일이 아니에요.",
   },
   "outcome.hex.noRecords": {
     en: "The file holds no data records: there is nothing to write.",
@@ -164,41 +164,57 @@ export const firmwareOutcomeMessages = defineMessages({
   "outcome.hex.empty": { en: "The file is empty.", ko: "파일이 비어 있어요." },
   "outcome.hex.noColon": { en: "a record starts with ':'.", ko: "레코드는 ':'로 시작해야 해요." },
   "outcome.hex.notHex": {
-    en: "a record is ':' followed by pairs of hex digits.",
-    ko: "레코드는 ':' 뒤에 16진수가 두 자리씩 와야 해요.",
+    en: "a record is ':' followed by pairs of hex digits (at least 5 bytes).",
+    ko: "레코드는 ':' 뒤에 16진수가 두 자리씩 와야 해요 (최소 5바이트).",
   },
   "outcome.hex.lengthMismatch": {
-    en: "the record's length does not match its data.",
-    ko: "레코드에 적힌 길이와 실제 데이터 길이가 달라요.",
+    en: "the record says {declared} data bytes but holds {holds}.",
+    ko: "레코드에는 데이터가 {declared}바이트라고 적혀 있지만, 실제로는 {holds}바이트예요.",
   },
-  "outcome.hex.checksum": { en: "the record's checksum is wrong.", ko: "레코드의 체크섬이 맞지 않아요." },
+  "outcome.hex.checksum": {
+    en: "the checksum is {got} but the record's bytes add up to need {expected}.",
+    ko: "체크섬이 {got}인데, 레코드의 바이트를 더하면 {expected}이어야 해요.",
+  },
   "outcome.hex.recordType": {
-    en: "the record type is not accepted: the RBC bootloader takes only types 00, 01, 02 and 04.",
-    ko: "받을 수 없는 레코드 종류예요. RBC 부트로더는 00, 01, 02, 04 종류만 받아요.",
+    en: "record type {type} is not accepted: the RBC bootloader takes only types 00, 01, 02 and 04.",
+    ko: "레코드 종류 {type}은(는) 받을 수 없어요. RBC 부트로더는 00, 01, 02, 04 종류만 받아요.",
   },
-  "outcome.hex.badRecord": { en: "the record is malformed.", ko: "레코드의 형식이 잘못됐어요." },
+  "outcome.hex.recordTypeNamed": {
+    en: "record type {type} ({name}) is not accepted: the RBC bootloader takes only types 00, 01, 02 and 04.",
+    ko: "레코드 종류 {type}({name})은(는) 받을 수 없어요. RBC 부트로더는 00, 01, 02, 04 종류만 받아요.",
+  },
+  "outcome.hex.record.startSegment": { en: "start segment address", ko: "시작 세그먼트 주소" },
+  "outcome.hex.record.startLinear": { en: "start linear address", ko: "시작 선형 주소" },
+  "outcome.hex.badEnd": {
+    en: "an end-of-file record carries no data (:00000001FF).",
+    ko: "파일 끝 레코드에는 데이터가 없어야 해요 (:00000001FF).",
+  },
+  "outcome.hex.badExtended": {
+    en: "an extended address record (type {type}) has 2 data bytes and address 0000.",
+    ko: "확장 주소 레코드(종류 {type})는 데이터가 2바이트이고 주소가 0000이어야 해요.",
+  },
   "outcome.hex.crosses64k": {
     en: "the record runs past the end of its 64 KiB segment.",
     ko: "레코드가 64KiB 구간의 끝을 넘어가요.",
   },
   "outcome.hex.outsideFlash": {
-    en: "the record writes outside the ATmega128's flash.",
-    ko: "레코드가 ATmega128의 플래시 밖에 쓰려고 해요.",
+    en: "the record writes {from}-{to}, outside the ATmega128's 128 KiB of flash (0x00000-0x1FFFF).",
+    ko: "레코드가 {from}-{to}에 쓰려고 하는데, ATmega128의 128KiB 플래시(0x00000-0x1FFFF) 밖이에요.",
   },
   "outcome.hex.bootSection": {
-    en: "the record writes inside the boot section, where the bootloader lives.",
-    ko: "레코드가 부트로더가 있는 부트 영역에 쓰려고 해요. RBC 펌웨어는 부트 영역 아래에서 끝나야 해요.",
+    en: "the record writes {from}-{to}, inside the boot section (from 0x1E000) where the bootloader lives. A firmware for the RBC must end below 0x1E000.",
+    ko: "레코드가 {from}-{to}에 쓰려고 하는데, 부트로더가 있는 부트 영역(0x1E000부터) 안이에요. RBC 펌웨어는 0x1E000 아래에서 끝나야 해요.",
   },
   "outcome.hex.overlap": {
-    en: "the record writes an address an earlier line wrote.",
-    ko: "레코드가 앞의 줄에서 이미 쓴 주소에 다시 쓰려고 해요.",
+    en: "the record writes {address} again; an earlier line wrote it.",
+    ko: "레코드가 {address}에 다시 쓰려고 해요. 앞의 줄에서 이미 쓴 주소예요.",
   },
   "outcome.hex.afterEnd": {
-    en: "there is more after the end-of-file record.",
-    ko: "파일 끝 레코드 뒤에 내용이 더 있어요.",
+    en: "there is more after the end-of-file record on line {endLine}.",
+    ko: "{endLine}번째 줄의 파일 끝 레코드 뒤에 내용이 더 있어요.",
   },
   "outcome.hex.noEnd": {
-    en: "the file ends without an end-of-file record; it may have been cut short.",
+    en: "the file ends without an end-of-file record (:00000001FF); it may have been cut short.",
     ko: "파일 끝 레코드(:00000001FF)가 없어요. 파일이 중간에 잘렸을 수 있어요.",
   },
   "outcome.firmware.afterUpdate": {

@@ -9,8 +9,8 @@ import { motionOutcomeMessages } from "./messages.ts";
 
 /**
  * A refusal of the motion layer (src/motion/errors.ts) in words, from its code and facts, in either language.
- * `MotionError`'s English `message` is `motionRefusalText(…, "en")`; the Editor says the same in the panel's
- * language. Types only from src/motion (this folder stays pure).
+ * The Editor, `rbc play` and `lowerErrorText` say it in every language, English included (a `MotionError`'s own
+ * `message` is a technical line). Types only from src/motion (this folder stays pure).
  */
 
 /** What a refusal is: its stable code and the facts behind it (a `MotionError` is one). */

@@ -1,5 +1,5 @@
 import type { IssueTranslator } from "./messages.ts";
-import { type IssueValues, subject } from "./subject.ts";
+import { type IssueValues, initial, subject } from "./subject.ts";
 
 /** The reader's issues (protocol/rbm.ts `readRbm`): a text that is not a motion file, or not a whole one. */
 export function fromParser(t: IssueTranslator, code: string, r: IssueValues): string | undefined {
@@ -34,16 +34,17 @@ export function fromParser(t: IssueTranslator, code: string, r: IssueValues): st
     case "rbm-field-too-long": {
       const kind = r.text("kind");
       const sizes = { what: subject(t, r), length: r.number("length"), max: r.number("max") };
-      if (kind === "text") return t("outcome.rbm.fieldTooLong.text", sizes);
+      if (kind === "text") {
+        return initial(t("outcome.rbm.fieldTooLong.text", sizes));
+      }
       return kind === "name" ? t("outcome.rbm.fieldTooLong.name", sizes) : undefined;
     }
-    case "rbm-length-mismatch":
-      return t("outcome.rbm.lengthMismatch", {
-        what: subject(t, r),
-        text: r.text("text"),
-        length: r.number("length"),
-        declared: r.number("declared"),
-      });
+    case "rbm-length-mismatch": {
+      const sizes = { text: r.text("text"), length: r.number("length"), declared: r.number("declared") };
+      if (r.has("scene"))
+        return t("outcome.rbm.lengthMismatch.scene", { scene: r.ordinal("scene"), ...sizes });
+      return initial(t("outcome.rbm.lengthMismatch", { what: subject(t, r), ...sizes }));
+    }
     default:
       return undefined;
   }

@@ -3,11 +3,10 @@ import type { Translator } from "../../translate.ts";
 
 /**
  * The motion file checker's sentences (protocol/rbm.ts, rbm-validate.ts, motion-image.ts), one per issue code
- * and kind, filled from the issue's `values` (`rbmIssueSentence`). English shows the protocol's `issue.message`:
- * protocol/rbm*.ts take it from here where the sentence is the same (`en(...)` there); where the protocol
- * builds its own subject or formats numbers differently, its sentence is still its own and the English here
- * mirrors it. Korean shows the Korean here, in the panel and in `rbc` alike. A servo is "서보 2번(왼쪽 무릎)": its head word is 번, so "{servo}의" and
- * "{servo}이" read right.
+ * and kind, filled from the issue's `values` (`rbmIssueSentence`), in every language, in the panel and in `rbc`
+ * alike (the issue's own `message` is a technical line for logs). A servo is "서보 2번(왼쪽 무릎)": its head
+ * word is 번, so "{servo}의" and "{servo}이" read right. English capitalises a sentence that begins with its
+ * subject (`initial`); the fields of the motion itself are named with "the" ("the motion index").
  */
 export const rbmIssueMessages = defineMessages({
   // Who a value belongs to, and the fields by name.
@@ -24,24 +23,25 @@ export const rbmIssueMessages = defineMessages({
   "outcome.rbm.ofRecord": { en: "servo record {record}: {field}", ko: "서보 레코드 {record}번의 {field}" },
   "outcome.rbm.ofServo": { en: "the {field} of {servo}", ko: "{servo}의 {field}" },
   "outcome.rbm.ofScene": { en: "scene {scene}: {field}", ko: "장면 {scene}의 {field}" },
-  "outcome.rbm.numberedField": { en: "field {index} ({field})", ko: "{index}번 필드({field})" },
-  "outcome.rbm.field.format": { en: "format", ko: "형식" },
-  "outcome.rbm.field.serialNumber": { en: "serial number", ko: "시리얼 번호" },
-  "outcome.rbm.field.serialNumberLength": { en: "length of the serial number", ko: "시리얼 번호의 길이" },
+  "outcome.rbm.numberedField.format": { en: "field 0 (format)", ko: "0번 필드(형식)" },
+  "outcome.rbm.numberedField.platform": { en: "field 8 (platform)", ko: "8번 필드(플랫폼)" },
+  "outcome.rbm.field.format": { en: "the format", ko: "형식" },
+  "outcome.rbm.field.serialNumber": { en: "the serial number", ko: "시리얼 번호" },
+  "outcome.rbm.field.serialNumberLength": { en: "the length of the serial number", ko: "시리얼 번호의 길이" },
   "outcome.rbm.field.text1": {
     en: "field 3 (the 10-character text)",
     ko: "3번 필드(10글자 텍스트)",
   },
   "outcome.rbm.field.text2": { en: "field 4 (the text)", ko: "4번 필드(텍스트)" },
-  "outcome.rbm.field.motionName": { en: "motion name", ko: "모션 이름" },
-  "outcome.rbm.field.motionNameLength": { en: "length of the motion name", ko: "모션 이름의 길이" },
-  "outcome.rbm.field.motionIndex": { en: "motion index", ko: "모션 번호" },
-  "outcome.rbm.field.platform": { en: "platform", ko: "플랫폼" },
-  "outcome.rbm.field.sceneCount": { en: "number of scenes", ko: "장면 수" },
-  "outcome.rbm.field.servoCount": { en: "number of servos", ko: "서보 수" },
+  "outcome.rbm.field.motionName": { en: "the motion name", ko: "모션 이름" },
+  "outcome.rbm.field.motionNameLength": { en: "the length of the motion name", ko: "모션 이름의 길이" },
+  "outcome.rbm.field.motionIndex": { en: "the motion index", ko: "모션 번호" },
+  "outcome.rbm.field.platform": { en: "the platform", ko: "플랫폼" },
+  "outcome.rbm.field.sceneCount": { en: "the number of scenes", ko: "장면 수" },
+  "outcome.rbm.field.servoCount": { en: "the number of servos", ko: "서보 수" },
   "outcome.rbm.field.unknown10": { en: "field 10", ko: "10번 필드" },
   "outcome.rbm.field.unknown12": { en: "field 12", ko: "12번 필드" },
-  "outcome.rbm.field.imageSize": { en: "image size", ko: "이미지 크기" },
+  "outcome.rbm.field.imageSize": { en: "the image size", ko: "이미지 크기" },
   "outcome.rbm.field.index": { en: "index", ko: "번호" },
   "outcome.rbm.field.name": { en: "name", ko: "이름" },
   "outcome.rbm.field.nameLength": { en: "length of the name", ko: "이름의 길이" },
@@ -58,6 +58,8 @@ export const rbmIssueMessages = defineMessages({
   "outcome.rbm.field.end": { en: "end position", ko: "끝 위치" },
   "outcome.rbm.field.torque": { en: "torque", ko: "토크" },
   "outcome.rbm.field.port": { en: "port value", ko: "포트 값" },
+  "outcome.rbm.place.scene": { en: "scene {scene}", ko: "장면 {scene}" },
+  "outcome.rbm.place.record": { en: "servo record {record}", ko: "서보 레코드 {record}번" },
   "outcome.rbm.got.missing": { en: "it is missing", ko: "값이 없음" },
   "outcome.rbm.got.list": { en: "it is a list", ko: "목록임" },
   "outcome.rbm.got.object": { en: "it is an object", ko: "객체임" },
@@ -106,6 +108,10 @@ export const rbmIssueMessages = defineMessages({
     en: '{what} contains ":", which would split the field in an .rbm file.',
     ko: '{what}에 ":" 문자가 있어서, .rbm 파일에 쓰면 필드가 둘로 나뉘어요.',
   },
+  "outcome.rbm.text.scene": {
+    en: 'The name of scene {scene} contains ":", which would split it.',
+    ko: '장면 {scene}의 이름에 ":" 문자가 있어서, .rbm 파일에 쓰면 필드가 둘로 나뉘어요.',
+  },
   "outcome.rbm.servoCount.declared": {
     en: "The motion says it has {declared} servos but lists {listed}.",
     ko: "모션에 서보가 {declared}개라고 적혀 있지만, 실제로 나열된 서보는 {listed}개예요.",
@@ -127,8 +133,8 @@ export const rbmIssueMessages = defineMessages({
     ko: "모션에 장면이 {declared}개라고 적혀 있지만, 실제로 나열된 장면은 {listed}개예요.",
   },
   "outcome.rbm.noScenes": {
-    en: "The motion has no scenes; a motion needs at least {min}.",
-    ko: "모션에 장면이 없어요. 모션에는 장면이 {min}개 이상 있어야 해요.",
+    en: "The motion has no scenes; a motion needs at least one.",
+    ko: "모션에 장면이 없어요. 모션에는 장면이 1개 이상 있어야 해요.",
   },
   "outcome.rbm.servoId.range": {
     en: "Servo record {record} has id {id}; servo ids go from 0 to {max}.",
@@ -246,6 +252,14 @@ export const rbmIssueMessages = defineMessages({
   "outcome.rbm.fieldTooLong.name": {
     en: "The length of {what} is {length}; a name in a motion file has at most {max} characters.",
     ko: "{what}의 길이가 {length}(으)로 적혀 있어요. 모션 파일의 이름은 최대 {max}글자예요.",
+  },
+  "outcome.rbm.lengthMismatch.scene": {
+    en: "The name of scene {scene}, {text} has {length} characters, but its length field says {declared}.",
+    ko: "장면 {scene}의 이름 {text}의 길이는 {length}글자인데, 길이 필드에는 {declared}글자로 적혀 있어요.",
+  },
+  "outcome.rbm.moreProblems": {
+    en: { one: "{first} ({count} more problem found)", other: "{first} ({count} more problems found)" },
+    ko: "{first} (문제가 {count}개 더 있어요)",
   },
   "outcome.rbm.lengthMismatch": {
     en: "{what} {text} has {length} characters, but its length field says {declared}.",

@@ -3,7 +3,7 @@ import type { Locale } from "../../locale.ts";
 import { translator } from "../../translate.ts";
 import { fromParser } from "./file-sentences.ts";
 import { type IssueTranslator, rbmIssueMessages } from "./messages.ts";
-import { IssueValues, servoName, subject } from "./subject.ts";
+import { IssueValues, initial, servoName, subject } from "./subject.ts";
 
 /**
  * The motion file checker's issues (protocol/rbm.ts, rbm-validate.ts, motion-image.ts) said from their code and
@@ -30,16 +30,39 @@ function got(t: IssueTranslator, r: IssueValues): string {
   }
 }
 
+/**
+ * Where in a motion built in code a value is, from its path: "scenes.2.servos.3.end" → "scene 2, servo record 3,
+ * end".
+ */
+function place(t: IssueTranslator, r: IssueValues): string {
+  const keys = r.text("path").split(".");
+  const parts: string[] = [];
+  for (let i = 0; i < keys.length; i++) {
+    const [key, next] = [keys[i], keys[i + 1]];
+    if ((key === "scenes" || key === "servos") && next !== undefined && /^[0-9]+$/.test(next)) {
+      parts.push(
+        key === "scenes"
+          ? t("outcome.rbm.place.scene", { scene: next })
+          : t("outcome.rbm.place.record", { record: next }),
+      );
+      i++;
+    } else {
+      parts.push(key ?? "");
+    }
+  }
+  return parts.join(", ");
+}
+
 function shape(t: IssueTranslator, r: IssueValues): string | undefined {
   switch (r.text("kind")) {
     case "motion":
       return t("outcome.rbm.shape.motion");
     case "list":
-      return t("outcome.rbm.shape.list", { path: r.text("path"), got: got(t, r) });
+      return t("outcome.rbm.shape.list", { path: place(t, r), got: got(t, r) });
     case "text":
-      return t("outcome.rbm.shape.text", { path: r.text("path"), got: got(t, r) });
+      return t("outcome.rbm.shape.text", { path: place(t, r), got: got(t, r) });
     case "form":
-      return t("outcome.rbm.shape.form", { path: r.text("path") });
+      return t("outcome.rbm.shape.form", { path: place(t, r) });
     default:
       return undefined;
   }
@@ -48,7 +71,7 @@ function shape(t: IssueTranslator, r: IssueValues): string | undefined {
 function notANumber(t: IssueTranslator, r: IssueValues): string | undefined {
   switch (r.text("kind")) {
     case "shape":
-      return t("outcome.rbm.shape.number", { path: r.text("path"), got: got(t, r) });
+      return t("outcome.rbm.shape.number", { path: place(t, r), got: got(t, r) });
     case "field":
       return t("outcome.rbm.notANumber", {
         index: r.ordinal("index"),
@@ -64,7 +87,9 @@ function outOfRange(t: IssueTranslator, r: IssueValues): string | undefined {
   const max = r.number("max");
   switch (r.text("kind")) {
     case "byte":
-      return t("outcome.rbm.outOfRange.byte", { what: subject(t, r), value: r.number("value"), max });
+      return initial(
+        t("outcome.rbm.outOfRange.byte", { what: subject(t, r), value: r.number("value"), max }),
+      );
     case "scenes":
       return t("outcome.rbm.outOfRange.scenes", { scenes: r.number("scenes"), max });
     case "timing":
@@ -133,11 +158,15 @@ function servoId(t: IssueTranslator, r: IssueValues): string | undefined {
 /** A header field that is not what Motionbuilder writes: "0번 필드(형식)", "10번 필드". */
 function headerConstant(t: IssueTranslator, r: IssueValues): string {
   const field = r.text("field");
-  const named = field === "format" || field === "platform";
-  const what = named
-    ? t("outcome.rbm.numberedField", { index: r.ordinal("index"), field: subject(t, r) })
-    : subject(t, r);
-  return t("outcome.rbm.headerConstant", { what, value: r.number("value"), usual: r.number("usual") });
+  const what =
+    field === "format"
+      ? t("outcome.rbm.numberedField.format")
+      : field === "platform"
+        ? t("outcome.rbm.numberedField.platform")
+        : subject(t, r);
+  return initial(
+    t("outcome.rbm.headerConstant", { what, value: r.number("value"), usual: r.number("usual") }),
+  );
 }
 
 function timing(r: IssueValues) {
@@ -158,19 +187,19 @@ function fromRules(t: IssueTranslator, code: string, r: IssueValues): string | u
     case "rbm-out-of-range":
       return outOfRange(t, r);
     case "rbm-position":
-      return t("outcome.rbm.position", {
-        what: subject(t, r),
-        value: r.number("value"),
-        max: r.number("max"),
-      });
+      return initial(
+        t("outcome.rbm.position", { what: subject(t, r), value: r.number("value"), max: r.number("max") }),
+      );
     case "rbm-text":
-      return t("outcome.rbm.text", { what: subject(t, r) });
+      return r.has("scene")
+        ? t("outcome.rbm.text.scene", { scene: r.ordinal("scene") })
+        : initial(t("outcome.rbm.text", { what: subject(t, r) }));
     case "rbm-servo-count":
       return servoCount(t, r);
     case "rbm-scene-count":
       return t("outcome.rbm.sceneCount", { declared: r.number("declared"), listed: r.number("listed") });
     case "rbm-no-scenes":
-      return t("outcome.rbm.noScenes", { min: r.number("min") });
+      return t("outcome.rbm.noScenes");
     case "rbm-servo-id":
       return servoId(t, r);
     case "rbm-scene-index":
@@ -200,11 +229,9 @@ function fromRules(t: IssueTranslator, code: string, r: IssueValues): string | u
       return code === "rbm-torque" ? t("outcome.rbm.torque", params) : t("outcome.rbm.port", params);
     }
     case "rbm-image-range":
-      return t("outcome.rbm.imageRange", {
-        what: subject(t, r),
-        value: r.value("value"),
-        max: r.number("max"),
-      });
+      return initial(
+        t("outcome.rbm.imageRange", { what: subject(t, r), value: r.value("value"), max: r.number("max") }),
+      );
     default:
       return fromWarnings(t, code, r);
   }
@@ -257,12 +284,12 @@ function fromWarnings(t: IssueTranslator, code: string, r: IssueValues): string 
   }
 }
 
-/** What the words of an issue come from: its code, its facts, and the protocol's English sentence. */
+/** What the words of an issue come from: its code and its facts (`message` is the technical line, kept for logs). */
 export type RbmIssueFacts = Pick<RbmIssue, "code" | "message" | "values">;
 
 /**
  * An issue's sentence in `locale` from its code and values, or undefined when there is none (a code this does
- * not know, or values missing): then the English `issue.message` is shown, marked as English.
+ * not know, or values missing): then the technical `issue.message` is shown, marked as English.
  */
 export function rbmIssueSentence(issue: RbmIssueFacts, locale: Locale): string | undefined {
   if (issue.values === undefined) return undefined;
@@ -271,18 +298,17 @@ export function rbmIssueSentence(issue: RbmIssueFacts, locale: Locale): string |
   return r.complete ? text : undefined;
 }
 
-/** The issue's sentence and the language it is in: "en" for an English sentence kept in another language. */
+/** The issue's sentence and the language it is in: "en" for an English line kept in another language. */
 export interface RbmIssueWords {
   text: string;
   lang: Locale;
 }
 
 /**
- * A motion file's problem in `locale`: in English the protocol's own sentence (`issue.message`); in Korean the
- * catalogue's sentence with the issue's facts, or the English sentence (and `lang: "en"`) when it has none.
+ * A motion file's problem in `locale`: the catalogue's sentence with the issue's facts, or the issue's technical
+ * line (and `lang: "en"`) when there is none.
  */
 export function rbmIssueWords(issue: RbmIssueFacts, locale: Locale): RbmIssueWords {
-  if (locale === "en") return { text: issue.message, lang: "en" };
   const text = rbmIssueSentence(issue, locale);
   return text === undefined ? { text: issue.message, lang: "en" } : { text, lang: locale };
 }
@@ -290,4 +316,16 @@ export function rbmIssueWords(issue: RbmIssueFacts, locale: Locale): RbmIssueWor
 /** A motion file's problem in `locale` (`rbmIssueWords`'s text). */
 export function rbmIssueText(issue: RbmIssueFacts, locale: Locale): string {
   return rbmIssueWords(issue, locale).text;
+}
+
+/** A file refused for its issues: the first one's sentence, and how many more were found. */
+export function rbmErrorText(issues: readonly RbmIssueFacts[], locale: Locale): string | undefined {
+  const [first, ...rest] = issues;
+  if (first === undefined) return undefined;
+  const text = rbmIssueText(first, locale);
+  if (rest.length === 0) return text;
+  return translator(rbmIssueMessages, locale)("outcome.rbm.moreProblems", {
+    first: text,
+    count: rest.length,
+  });
 }

@@ -124,3 +124,8 @@ export function subject(t: IssueTranslator, r: IssueValues): string {
   if (record !== undefined) return t("outcome.rbm.ofRecord", { record, field });
   return field;
 }
+
+/** A sentence that begins with its subject ("the P gain of servo 3 …"), with a capital letter where it has one. */
+export function initial(text: string): string {
+  return text.charAt(0).toUpperCase() + text.slice(1);
+}

@@ -12,7 +12,7 @@ export interface RestampRefusal {
   readonly facts: RestampErrorFacts;
 }
 
-/** Why a restamp was refused, in `locale` (the `RestampError`'s English message is this, in English). */
+/** Why a restamp was refused, in `locale`, from its code and facts (the `RestampError`'s message is technical). */
 export function restampRefusalText(refusal: RestampRefusal, locale: Locale): string {
   const t = translator(restampOutcomeMessages, locale);
   switch (refusal.code) {

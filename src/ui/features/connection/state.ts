@@ -5,6 +5,7 @@ import type {
   LinkKind,
   SubscriptionKind,
 } from "../../../device/index.ts";
+import type { LinkFacts } from "../../../link/index.ts";
 import type { Notice, RunningLabel } from "../../notices.ts";
 import type { PortInfo } from "../../serial-ports.ts";
 
@@ -53,8 +54,10 @@ export interface ConnectionState {
   platform?: number;
   /** What the robot reported that is implausible (a platform outside 1-4), shown on the device card. */
   identityWarnings?: string[];
-  /** Why the link was lost (cable pulled, …), shown on the disconnected card. */
+  /** Why the link was lost (cable pulled, …): the device's technical line, the disconnected card's detail. */
   lostReason?: string;
+  /** Why, as the link's facts when it gave them: the disconnected card words them. */
+  lostCause?: LinkFacts;
   /** Operations that were running when the link was lost and so did not finish. */
   interrupted: RunningLabel[];
   /** Why the last connect attempt failed. */

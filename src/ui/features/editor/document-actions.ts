@@ -1,4 +1,5 @@
 import { errorSaid } from "../../../i18n/error-said.ts";
+import { lowerErrorText } from "../../../i18n/outcomes/lower-error-text.ts";
 import { inEveryLanguage, type LocalText, type Said, said, wordOf } from "../../../i18n/said.ts";
 import { MotionError, newMotion, openMotion, saveMotion } from "../../../motion/index.ts";
 import type { Notice } from "../../app-state.ts";
@@ -20,8 +21,9 @@ import { docOf, editorOf, patchEditor, startDocument } from "./state.ts";
 /** Far above any motion file (the largest motion that fits the robot is about 90 KB as text). */
 export const MAX_RBM_BYTES = 1_000_000;
 
+/** The error in English words: the outcome catalogue's for the lower layers' errors (a file the parser refused). */
 function message(e: unknown): string {
-  return e instanceof Error ? e.message : String(e);
+  return lowerErrorText(e, "en") ?? (e instanceof Error ? e.message : String(e));
 }
 
 /**

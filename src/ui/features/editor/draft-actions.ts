@@ -1,4 +1,5 @@
 import { errorSaid } from "../../../i18n/error-said.ts";
+import { lowerErrorText } from "../../../i18n/outcomes/lower-error-text.ts";
 import { inEveryLanguage, type Said, said, wordOf } from "../../../i18n/said.ts";
 import { type Motion, newMotion, openMotion, saveMotion } from "../../../motion/index.ts";
 import { noticeOf } from "../../app-state.ts";
@@ -24,8 +25,9 @@ import { docOf, editorOf, patchEditor, startDocument } from "./state.ts";
 
 /** Drafts: autosave, the draft restored when the editor opens, and the Drafts list (open, rename, export, delete). */
 
+/** The error in English words: the outcome catalogue's for the lower layers' errors (a file the parser refused). */
 function message(e: unknown): string {
-  return e instanceof Error ? e.message : String(e);
+  return lowerErrorText(e, "en") ?? (e instanceof Error ? e.message : String(e));
 }
 
 function randomUnit(): number {
@@ -62,8 +64,8 @@ export function flushAutosave(ctx: AppContext): Promise<void> {
 }
 
 /**
- * "Its motion cannot be read: …" as a message. The parser's sentence is English: in another language the panel
- * says what it means, the sentence apart (the technical detail).
+ * "Its motion cannot be read: …" as a message: in English the parser's refusal in the catalogue's words; in
+ * another language the panel says what it means, the sentence apart (the technical detail).
  */
 export function unreadableProblem(e: unknown): Said {
   const parser = message(e);

@@ -332,7 +332,7 @@ export async function startRecovery(ctx: AppContext): Promise<void> {
 /**
  * A failed or cancelled update, in the outcome catalogue's words (what went wrong, what the robot holds, what to
  * do) after the panel's lead; a cancel says so itself. What the robot holds decides the tone (nothing written: a
- * warning). In Korean the device's English sentence is the technical detail.
+ * warning). The device's technical line is the technical detail.
  */
 function failureNotice(e: unknown, locale: Locale): Notice {
   if (!(e instanceof FirmwareUpdateError))

@@ -9,7 +9,7 @@ import { firmwareMessages } from "./messages.ts";
 
 /**
  * Why a file was not opened as firmware, kept as a message and worded when drawn (the reason in the outcome
- * catalogue's words, `hexProblemText`, in every language). The parser's English sentence is the technical detail.
+ * catalogue's words, `hexProblemText`, in every language). The parser's technical line is the technical detail.
  */
 
 /** A file whose text could not be read as firmware: with the line to blame when there is one. */

@@ -4,10 +4,10 @@ import type { RbmIssue } from "../../../protocol/rbm-validate.ts";
 import { PANEL_ISSUE_CODES } from "./files.ts";
 
 /**
- * A motion file's issue in words, for the Motions view and the Editor. The checker (protocol/rbm*.ts) words its
- * issues in English (`message`, also the CLI's and the tests'); in another language the sentence is made from
- * the issue's code and `values` (the outcome catalogue, src/i18n/outcomes/rbm/). An issue without such a sentence keeps its English one,
- * which the view marks with `lang="en"`.
+ * A motion file's issue in words, for the Motions view and the Editor: the checker (protocol/rbm*.ts) gives
+ * its issues a code and `values`, and the sentence in every language is the outcome catalogue's
+ * (src/i18n/outcomes/rbm/). An issue without such a sentence keeps its technical English line, which the view
+ * marks with `lang="en"`.
  */
 export interface IssueWords {
   text: string;
@@ -17,12 +17,12 @@ export interface IssueWords {
 
 /** The issue's sentence in `locale`, and the language it is actually in. */
 export function issueWords(issue: RbmIssue, locale: Locale): IssueWords {
-  // English, and the panel's own issues (already worded in the panel's language), are shown as they are.
-  if (locale === "en" || PANEL_ISSUE_CODES.includes(issue.code)) return { text: issue.message, lang: locale };
+  // The panel's own issues (already worded in the panel's language) are shown as they are.
+  if (PANEL_ISSUE_CODES.includes(issue.code)) return { text: issue.message, lang: locale };
   return rbmIssueWords(issue, locale);
 }
 
-/** The issue's sentence in `locale`: English `issue.message` unchanged; Korean from its code and values. */
+/** The issue's sentence in `locale`, from its code and values. */
 export function issueText(issue: RbmIssue, locale: Locale): string {
   return issueWords(issue, locale).text;
 }

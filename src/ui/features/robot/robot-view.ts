@@ -1,9 +1,10 @@
 import { html, nothing, type TemplateResult } from "lit-html";
+import { platformWarning } from "../../../i18n/outcomes/plausibility.ts";
 import { robotErrorTitle } from "../../../i18n/outcomes/robot-error.ts";
 import { robotFactText, unknownPlatformText } from "../../../i18n/outcomes/robot-facts.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { ACTION_AREA_BYTES, MOTION_AREA_BYTES, NO_ERROR } from "../../../protocol/catalog.ts";
-import { platformWarning } from "../../../protocol/plausibility.ts";
+import { isKnownPlatform } from "../../../protocol/plausibility.ts";
 import { formatFirmware } from "../../../shared/format.ts";
 import { formatTime } from "../../format.ts";
 import { shellMessages } from "../../shell/messages.ts";
@@ -40,18 +41,13 @@ function errorCodeLine(t: RobotTranslator, code: number | undefined): TemplateRe
 }
 
 /**
- * What the robot reported about itself that looks wrong. In English, the device's sentences. In Korean, the
- * same facts in Korean (the platform is the one the device checks), with the device's sentences one click away.
+ * What the robot reported about itself that looks wrong: the facts in the catalogue's words (the platform is the
+ * one the device checks), with the device's technical lines one click away.
  */
 function identityWarnings(ctx: ViewContext, t: RobotTranslator): TemplateResult | typeof nothing {
   const { identityWarnings: warnings, platform } = ctx.state.connection;
   if (!warnings?.length) return nothing;
-  if (t.locale === "en") {
-    return html`<div class="notice notice--warning" data-testid="identity-warnings">
-      ${warnings.map((w) => html`<p>${w}</p>`)}
-    </div>`;
-  }
-  const unknownPlatform = platform !== undefined && (platform < 1 || platform > 4);
+  const unknownPlatform = platform !== undefined && !isKnownPlatform(platform);
   return html`<div class="notice notice--warning" data-testid="identity-warnings">
     <p>
       ${unknownPlatform ? platformWarning(platform, t.locale) : t("robot.identityWarning")}

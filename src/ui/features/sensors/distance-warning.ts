@@ -1,4 +1,4 @@
-import { distanceWarning } from "../../../protocol/plausibility.ts";
+import { distanceWarning } from "../../../i18n/outcomes/plausibility.ts";
 import type { SensorsTranslator } from "./messages.ts";
 
 /**

@@ -9,13 +9,13 @@ import type { ParamArgs } from "../../../i18n/catalogue.ts";
 import { errorSaid } from "../../../i18n/error-said.ts";
 import type { Locale } from "../../../i18n/locale.ts";
 import { deviceOutcomeMessages } from "../../../i18n/outcomes/messages.ts";
+import { serialMismatchWarning } from "../../../i18n/outcomes/zero-words.ts";
 import { inEveryLanguage, type LocalText, type Said, said } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { ZERO_COUNT } from "../../../protocol/zeros.ts";
 import {
   createZerosBackup,
   parseZerosBackup,
-  serialMismatchWarning,
   type ZerosBackup,
   zerosBackupFileName,
 } from "../../../protocol/zeros-backup.ts";
@@ -239,7 +239,7 @@ export async function restoreFromFile(ctx: AppContext, file: File): Promise<void
   }
   const parsed = parseZerosBackup(text);
   if (!parsed.ok) {
-    patchZeros(store, { fileNotice: refusal(file, text, parsed, t.locale) });
+    patchZeros(store, { fileNotice: refusal(file, parsed, t.locale) });
     return;
   }
   const { backup } = parsed;

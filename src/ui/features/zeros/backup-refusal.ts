@@ -1,55 +1,26 @@
 import type { Locale } from "../../../i18n/locale.ts";
-import { seeDetailText } from "../../../i18n/outcomes/device.ts";
-import { zerosBackupRefusalText } from "../../../i18n/outcomes/zero-backup-words.ts";
+import { backupRefusalText } from "../../../i18n/outcomes/zero-words.ts";
 import { inEveryLanguage, said } from "../../../i18n/said.ts";
-import { ZERO_COUNT, zeroProblems } from "../../../protocol/zeros.ts";
 import type { ParsedBackup } from "../../../protocol/zeros-backup.ts";
 import { type Notice, noticeOf } from "../../app-state.ts";
 import { zerosMessages } from "./messages.ts";
 
 /**
- * A backup file the parser refused, as a notice. The parser (protocol/zeros-backup.ts, shared with the CLI)
- * explains in English; in Korean the panel says it from the parser's code, the English sentence one click away.
+ * A backup file the parser refused, as a notice. The parser (protocol/zeros-backup.ts, shared with the CLI) gives
+ * its problem and facts; the outcome catalogue words them (`backupRefusalText`), in every language, the English
+ * sentence one click away as the technical detail.
  */
-
-/** The servos whose zeros in a backup's text the robot would refuse ("5, 7"), or "" when none is found. */
-function refusedServos(text: string): string {
-  try {
-    const data: unknown = JSON.parse(text);
-    const zeros = typeof data === "object" && data !== null && "zeros" in data ? data.zeros : undefined;
-    return Array.isArray(zeros) && zeros.length === ZERO_COUNT
-      ? zeroProblems(zeros)
-          .map((p) => p.id)
-          .join(", ")
-      : "";
-  } catch {
-    return "";
-  }
-}
-
-/** Why the parser refused the file, in `locale`: its own sentence in English, a sentence from its code otherwise. */
-function reasonIn(text: string, parsed: Extract<ParsedBackup, { ok: false }>, locale: Locale): string {
-  return zerosBackupRefusalText(parsed, locale, {
-    servos: refusedServos(text),
-    detailHint: seeDetailText(locale),
-  });
-}
 
 /**
  * "… was not loaded." with the reason, kept as a message (worded when drawn, so it follows a language switch).
- * The detail carries the parser's code and English sentence.
+ * The detail carries the parser's code and the English sentence.
  */
-export function refusal(
-  file: File,
-  text: string,
-  parsed: Extract<ParsedBackup, { ok: false }>,
-  locale: Locale,
-): Notice {
-  const reason = inEveryLanguage((l) => reasonIn(text, parsed, l));
+export function refusal(file: File, parsed: Extract<ParsedBackup, { ok: false }>, locale: Locale): Notice {
+  const reason = inEveryLanguage((l) => backupRefusalText(parsed, l));
   return noticeOf(
     "danger",
     locale,
     [said(zerosMessages, "zeros.fileRefused", { file: file.name, reason })],
-    `${parsed.problem}: ${parsed.message}`,
+    `${parsed.problem}: ${backupRefusalText(parsed, "en")}`,
   );
 }

@@ -3,7 +3,6 @@ import { restampChangeText, restampRefusalText } from "../../../../i18n/outcomes
 import { inEveryLanguage, type LocalText, type Said, said, saidBy } from "../../../../i18n/said.ts";
 import { translator } from "../../../../i18n/translate.ts";
 import { RestampError, restampedFileName, restampRbm, restampRbmBytes } from "../../../../motion/restamp.ts";
-import { RbmError } from "../../../../protocol/rbm.ts";
 import { type Notice, noticeOf } from "../../../app-state.ts";
 import { errorMessage, technicalDetail } from "../../../error-text.ts";
 import { saveFile } from "../../../save-file.ts";
@@ -29,11 +28,7 @@ export async function saveRestampedCopy(
     change = saidBy((l) => restampChangeText(result, l));
   } catch (e) {
     const why = inEveryLanguage((l) =>
-      e instanceof RestampError
-        ? restampRefusalText(e, l)
-        : e instanceof RbmError && l === "en"
-          ? e.message
-          : errorMessage(e, l),
+      e instanceof RestampError ? restampRefusalText(e, l) : errorMessage(e, l),
     );
     return failed(locale, why, e);
   }

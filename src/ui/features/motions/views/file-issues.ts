@@ -24,7 +24,8 @@ function issueText(t: MotionsTranslator, issue: RbmIssue): (string | TemplateRes
   const english = words.lang !== t.locale;
   const message = english ? html`<span lang="en">${words.text}</span>` : words.text;
   // A place the sentence already names is not said twice.
-  const said = (what: string) => !english && new RegExp(`\\b${what}\\b`, "i").test(issue.message);
+  const said = (what: string) =>
+    !english && new RegExp(`\\b${what}\\b`, "i").test(issueWords(issue, "en").text);
   const scene = issue.scene === undefined || said(`scene ${issue.scene}`) ? undefined : String(issue.scene);
   const servo = issue.servo === undefined || said(`servo ${issue.servo}`) ? undefined : String(issue.servo);
   if (scene !== undefined && servo !== undefined) {

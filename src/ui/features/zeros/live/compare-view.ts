@@ -1,7 +1,7 @@
 import { html, nothing, type TemplateResult } from "lit-html";
 import { jointName } from "../../../../i18n/joint-names/joint-name.ts";
+import { serialMismatchWarning } from "../../../../i18n/outcomes/zero-words.ts";
 import { translator } from "../../../../i18n/translate.ts";
-import { serialMismatchWarning } from "../../../../protocol/zeros-backup.ts";
 import { formatDateTime, formatDelta } from "../../../format.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
 import type { KeptBackup } from "../backup-store.ts";
