@@ -4,11 +4,13 @@ import type { DirectUse } from "./activity.ts";
 import { probeBusy } from "./busy-probe.ts";
 import type { ClientCore } from "./client-core.ts";
 import { RbcNotIdleError } from "./direct-mode-errors.ts";
-import { RbcBadReplyError, RbcError, RbcTimeoutError } from "./errors.ts";
+import { RbcBadReplyError, RbcCancelledError, RbcError, RbcTimeoutError } from "./errors.ts";
 import { WIRE_BYTE_MS } from "./raw-channel.ts";
 
 /** The log's note for 0xFF sent to leave direct mode when the RBC did not answer (it may have switched). */
 const BLIND_EXIT_NOTE = "leave direct mode (blind, after no reply)";
+/** The log's note for 0xFF sent when Stop or Limp came while direct mode was being entered. */
+const STOPPED_EXIT_NOTE = "leave direct mode (Stop or Limp came while entering)";
 
 /**
  * The 0x10 request and its reply on the wire (15 + 1 bytes each way): a paced link takes at least this (less a
@@ -19,7 +21,9 @@ const ENTER_WIRE_MS = 32 * WIRE_BYTE_MS - 0.1;
 /**
  * Enters direct mode (0x10, docs/protocol.md §5) for `use`, within the caller's turn. Only when the robot is
  * idle (§3.6 [decision], `requireIdleRobot`): refused before anything reaches the servo bus otherwise.
- * Already in direct mode, `use` takes it over.
+ * Already in direct mode, `use` takes it over. Stop or Limp pressed while it switches (§3.6 [decision, turn 4])
+ * wins at its next step: nothing more is sent, a switch already made is undone at once (the exit sequence),
+ * and it rejects with `RbcCancelledError` (by which of them), so that their own turn finds packet mode.
  */
 export async function enterDirect(core: ClientCore, use: DirectUse): Promise<void> {
   const { c, activity } = core;
@@ -27,18 +31,26 @@ export async function enterDirect(core: ClientCore, use: DirectUse): Promise<voi
     activity.handDirect(use);
     return;
   }
+  const epoch = c.epoch;
   await requireIdleRobot(core, use);
+  if (c.epoch !== epoch) throw c.cancelledSince(epoch);
   const sentAt = c.clock.now();
   try {
     await c.request(COMMANDS.enterDirectMode, undefined);
   } catch (e) {
-    // The RBC may have switched even though its `01` was lost or garbled; it would then relay every later
-    // packet to the servo bus. The exit sequence is harmless garbage in packet mode, so send it blindly.
-    if (e instanceof RbcTimeoutError || e instanceof RbcBadReplyError) {
+    // The RBC may have switched even though its `01` was lost, garbled or no longer waited for (Limp ends the
+    // wait); it would then relay every later packet to the servo bus. The exit sequence is harmless garbage in
+    // packet mode, so send it blindly.
+    if (e instanceof RbcTimeoutError || e instanceof RbcBadReplyError || e instanceof RbcCancelledError) {
       await c.writeRaw(EXIT_DIRECT_MODE, BLIND_EXIT_NOTE).catch(() => {});
       c.parser.reset();
     }
     throw e;
+  }
+  if (c.epoch !== epoch) {
+    await c.writeRaw(EXIT_DIRECT_MODE, STOPPED_EXIT_NOTE).catch(() => {});
+    c.parser.reset();
+    throw c.cancelledSince(epoch);
   }
   startDirect(core, use, c.clock.now() - sentAt);
 }

@@ -4,7 +4,7 @@ import { RbcCancelledError, RbcError, RbcInvalidArgumentError } from "../errors.
 import type { RbcClient } from "../rbc-client.ts";
 import type { Heard } from "./collect-reply.ts";
 import { scanFindings } from "./findings.ts";
-import { cleanStatus, ServoDoctorStoppedError } from "./servo-bus.ts";
+import { cleanStatus, type ServoBusSession, ServoDoctorStoppedError } from "./servo-bus.ts";
 import type { ScanResult, ServoReading, StopCode } from "./types.ts";
 
 export interface ScanOptions {
@@ -43,10 +43,13 @@ export function readingOf(id: number, heard: Heard): ServoReading {
   return { id, status: "garbled", bytes };
 }
 
-/** Why an operation stopped, from the error that stopped it. */
-export function stopCodeOf(e: unknown, client: RbcClient): StopCode {
+/**
+ * Why an operation stopped, from the error that stopped it; with its `session`, Stop or Limp pressed at any
+ * moment since the operation was asked for (entering direct mode included) is "stop-pressed".
+ */
+export function stopCodeOf(e: unknown, client: RbcClient, session?: ServoBusSession): StopCode {
   if (client.mode === "disconnected") return "disconnected";
-  if (e instanceof ServoDoctorStoppedError) return "stop-pressed";
+  if (e instanceof ServoDoctorStoppedError || session?.stopped()) return "stop-pressed";
   if (e instanceof RbcCancelledError) return "cancelled";
   if (e instanceof RbcError && e.code === "disconnected") return "disconnected";
   if (e instanceof RbcError && e.code === "wrong-mode") return "left-direct-mode";
@@ -63,11 +66,14 @@ export async function scanServos(client: RbcClient, options: ScanOptions = {}): 
   const ids = checkServoIds(options.ids ?? HUNO_SCAN_IDS);
   const expected = ids.filter((id) => id < HUNO_SERVO_COUNT);
   if (options.signal?.aborted) throw new RbcCancelledError();
-  await client.enterDirectMode("servo-control");
+  let entered = false;
+  // Stop counts from the moment the scan is asked for, not from when direct mode is entered (§3.6).
   const bus = client.servoBus.session();
   const servos: ServoReading[] = [];
   let stopped: ScanResult["stopped"];
   try {
+    await client.enterDirectMode("servo-control");
+    entered = true;
     for (const id of ids) {
       let reading = readingOf(id, await bus.readStatus(id, options.signal));
       // Bytes that are not one pair can be two servos at this id, or a late reply to the id before: read
@@ -79,7 +85,9 @@ export async function scanServos(client: RbcClient, options: ScanOptions = {}): 
       options.onProgress?.({ done: servos.length, total: ids.length, reading });
     }
   } catch (e) {
-    stopped = { code: stopCodeOf(e, client), unread: ids.slice(servos.length) };
+    // A refusal to enter (not idle, an upload under way) is the caller's to handle; Stop or Limp is an outcome.
+    if (!entered && !bus.stopped()) throw e;
+    stopped = { code: stopCodeOf(e, client, bus), unread: ids.slice(servos.length) };
   } finally {
     await leaveDirect(client);
   }

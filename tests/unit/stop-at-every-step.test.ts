@@ -1,0 +1,86 @@
+import { describe, expect, it } from "vitest";
+import type { LogEntry, StopActivityResult } from "../../src/device/index.ts";
+import { scanServos, wiggleServo } from "../../src/device/servo-doctor/index.ts";
+import { toHex } from "../../src/protocol/index.ts";
+import { bluetoothLinkOptions } from "../../src/sim/index.ts";
+import { makeRig, type Rig } from "../support/rig.ts";
+
+/**
+ * Stop wins at every instant of a servo-doctor operation (docs/protocol.md §3.6): pressed at any step of entering
+ * direct mode, of the work in it, or of leaving it, on a wired and a Bluetooth link model, it resolves (never a
+ * mode error), the operation sends no servo command after the press, and the robot ends in packet mode with its
+ * servos holding (none passive). A step is one line of the packet log (every write and every reply is an await
+ * point of the operation); Stop is pressed right after line k, for every k of the operation's own run.
+ */
+
+const LINKS = [
+  { link: "wired", port: { latencyMs: 16, baudPacing: true } },
+  { link: "Bluetooth", port: bluetoothLinkOptions({ baudPacing: true }) },
+] as const;
+
+const OPERATIONS: { op: string; start: (r: Rig) => Promise<{ stopped?: unknown } | { outcome: string }> }[] =
+  [
+    { op: "wiggle", start: (r) => wiggleServo(r.client, 4) },
+    { op: "scan", start: (r) => scanServos(r.client, { ids: [0, 1, 2] }) },
+  ];
+
+/** A servo command on the bus: raw bytes written, but not the leave sequence (FF E0 FB 01 00 1A). */
+const servoCommand = (e: LogEntry) =>
+  e.direction === "out" && e.kind === "raw" && toHex(e.bytes) !== "FF E0 FB 01 00 1A";
+
+async function stepsOf(port: (typeof LINKS)[number]["port"], start: (r: Rig) => Promise<unknown>) {
+  const rig = await makeRig({ port });
+  let steps = 0;
+  rig.client.log.on(() => steps++);
+  await rig.run(start(rig));
+  return steps;
+}
+
+describe.each(LINKS)("Stop at every step on the $link link", ({ port }) => {
+  it.each(OPERATIONS)(
+    "of a $op: resolves, nothing more is sent to the servos, packet mode, servos holding",
+    async ({ start }) => {
+      const n = await stepsOf(port, start);
+      expect(n).toBeGreaterThan(4);
+      for (let k = 0; k <= n; k++) {
+        const rig = await makeRig({ port });
+        const { client, sim, run } = rig;
+        const log: LogEntry[] = [];
+        let pressedAt = -1;
+        let stop: Promise<StopActivityResult> | undefined;
+        const press = () => {
+          pressedAt = log.length;
+          stop = client.stopActivity();
+        };
+        client.log.on((e) => {
+          log.push(e);
+          if (log.length === k && !stop) press();
+        });
+        const operation = start(rig);
+        if (k === 0) press();
+        const outcome = await run(operation);
+        if (!stop) press();
+        await run(stop!);
+        // The leave sequence has no reply: give its bytes the time to cross the wire.
+        await rig.clock.advance(1000);
+        const after = log.slice(pressedAt).filter(servoCommand);
+        expect({ k, servoCommandsAfterStop: after.map((e) => toHex(e.bytes)) }).toEqual({
+          k,
+          servoCommandsAfterStop: [],
+        });
+        expect({ k, mode: client.mode, direct: sim.directMode }).toEqual({
+          k,
+          mode: "packet",
+          direct: false,
+        });
+        expect({ k, passive: sim.servos.filter((s) => s.passive).length }).toEqual({ k, passive: 0 });
+        // Stopped before its end, the operation says Stop stopped it (never a mode error, never "cancelled").
+        const code =
+          "stopped" in outcome ? (outcome.stopped as { code: string } | undefined)?.code : undefined;
+        const wiggleCode = "code" in outcome ? outcome.code : undefined;
+        for (const c of [code, wiggleCode])
+          if (c !== undefined) expect({ k, code: c }).toEqual({ k, code: "stop-pressed" });
+      }
+    },
+  );
+});
