@@ -41,6 +41,8 @@ export const VARIANT_OPTIONS = {
   "servo-replacement": { type: "string", multiple: true },
   "servo-loaded": { type: "string", multiple: true },
   "in-bootloader": { type: "boolean" },
+  // Old servo replies the controller relays as direct mode begins (docs/protocol.md §3.6): how many bytes.
+  "stale-servo-bytes": { type: "string" },
 } as const;
 
 /** The demo robot's variant switches (same syntax as `rbc sim`'s). */
@@ -68,6 +70,7 @@ export type SimVariant = Pick<
   | "servosSilent"
   | "soundReplyAtOnce"
   | "servoFaults"
+  | "staleServoBytes"
 > & {
   /** The robot waits in its bootloader (docs/protocol.md §11): `^` again and again, no packet answered. */
   inBootloader?: boolean;
@@ -98,6 +101,7 @@ interface VariantValues {
   "servo-replacement"?: string[];
   "servo-loaded"?: string[];
   "in-bootloader"?: boolean;
+  "stale-servo-bytes"?: string;
 }
 
 /** The servo-fault switches, the `ServoFaults` field each sets, and the lowest id it takes. */
@@ -131,6 +135,14 @@ function parseBusyMotion(text: string, command: string): number {
   const n = Number(text);
   if (!/^\d{1,2}$/.test(text.trim()) || n < 1 || n > 11) {
     throw new UsageError(said(cliMessages, "cli.variant.busyMotion", { value: text }), command);
+  }
+  return n;
+}
+
+function parseStaleBytes(text: string, command: string): number {
+  const n = Number(text);
+  if (!/^\d{1,2}$/.test(text.trim()) || n > 64) {
+    throw new UsageError(said(cliMessages, "cli.variant.staleServoBytes", { value: text }), command);
   }
   return n;
 }
@@ -192,6 +204,8 @@ export function variantFromValues(values: VariantValues, command: string, paced 
   if (values["no-memory-read"]) variant.answersMemoryRead = false;
   if (values["servos-silent"]) variant.servosSilent = true;
   if (values["sound-reply-at-once"]) variant.soundReplyAtOnce = true;
+  if (values["stale-servo-bytes"] !== undefined)
+    variant.staleServoBytes = parseStaleBytes(values["stale-servo-bytes"], command);
   const servoFaults = servoFaultsFromValues(values, command);
   if (servoFaults) variant.servoFaults = servoFaults;
   // --repeat-distance names the homebrew port's own bug: the 0x16 reply, the default of --repeat-replies.
@@ -260,6 +274,9 @@ export function describeVariant(variant: SimVariant, locale: Locale = "en"): str
   if (variant.answersMemoryRead === false) words.push(t("cli.variant.noMemoryRead"));
   if (variant.servosSilent) words.push(t("cli.variant.servosSilent"));
   if (variant.soundReplyAtOnce) words.push(t("cli.variant.soundReplyAtOnce"));
+  if (variant.staleServoBytes) {
+    words.push(t("cli.variant.staleServoBytes.words", { count: variant.staleServoBytes }));
+  }
   const faults = variant.servoFaults;
   const ids = (list: readonly number[] | undefined) =>
     list && list.length > 0 ? list.join(", ") : undefined;

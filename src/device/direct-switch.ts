@@ -53,6 +53,16 @@ export async function enterDirect(core: ClientCore, use: DirectUse): Promise<voi
     throw c.cancelledSince(epoch);
   }
   startDirect(core, use, c.clock.now() - sentAt);
+  await drainStale(core);
+}
+
+/**
+ * Waits out the settle time after entering direct mode (docs/protocol.md §3.6 [decision, turn 4]): the old servo
+ * replies the controller's servo-side buffer relays as direct mode begins come meanwhile, and are drained and
+ * logged, not judged (`RawChannel.guardServoBus`). The first servo command is written after it.
+ */
+export function drainStale(core: ClientCore): Promise<void> {
+  return core.c.sleep(core.c.timeouts.settleMs);
 }
 
 /**
@@ -84,6 +94,7 @@ export function startDirect(core: ClientCore, use: DirectUse, enterMs: number | 
     paced: enterMs !== undefined && enterMs >= ENTER_WIRE_MS,
     leave: () => leaveStillPlaying(core),
     fence: () => fenceServoBus(core),
+    settleMs: c.timeouts.settleMs,
   });
 }
 

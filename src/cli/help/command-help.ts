@@ -163,6 +163,7 @@ export const COMMAND_HELP = {
       ["--servo-duplicate N", t("cliHelp.sim.servoDuplicate")],
       ["--servo-replacement N", t("cliHelp.sim.servoReplacement")],
       ["--servo-loaded N", t("cliHelp.sim.servoLoaded")],
+      ["--stale-servo-bytes N", t("cliHelp.sim.staleServoBytes")],
       ["--quiet", t("cliHelp.sim.quiet")],
       ["-p, --port PATH", t("cliHelp.sim.port")],
     ],
