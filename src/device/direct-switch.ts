@@ -9,8 +9,6 @@ import { WIRE_BYTE_MS } from "./raw-channel.ts";
 
 /** The log's note for 0xFF sent to leave direct mode when the RBC did not answer (it may have switched). */
 const BLIND_EXIT_NOTE = "leave direct mode (blind, after no reply)";
-/** The log's note for 0xFF sent when Stop or Limp came while direct mode was being entered. */
-const STOPPED_EXIT_NOTE = "leave direct mode (Stop or Limp came while entering)";
 
 /**
  * The 0x10 request and its reply on the wire (15 + 1 bytes each way): a paced link takes at least this (less a
@@ -22,8 +20,8 @@ const ENTER_WIRE_MS = 32 * WIRE_BYTE_MS - 0.1;
  * Enters direct mode (0x10, docs/protocol.md §5) for `use`, within the caller's turn. Only when the robot is
  * idle (§3.6 [decision], `requireIdleRobot`): refused before anything reaches the servo bus otherwise.
  * Already in direct mode, `use` takes it over. Stop or Limp pressed while it switches (§3.6 [decision, turn 4])
- * wins at its next step: nothing more is sent, a switch already made is undone at once (the exit sequence),
- * and it rejects with `RbcCancelledError` (by which of them), so that their own turn finds packet mode.
+ * wins at its next step: nothing more is sent and it rejects with `RbcCancelledError` (by which of them); their
+ * own turn, next in the queue, finds the mode the robot is in (Stop leaves direct mode, Limp uses it).
  */
 export async function enterDirect(core: ClientCore, use: DirectUse): Promise<void> {
   const { c, activity } = core;
@@ -47,12 +45,9 @@ export async function enterDirect(core: ClientCore, use: DirectUse): Promise<voi
     }
     throw e;
   }
-  if (c.epoch !== epoch) {
-    await c.writeRaw(EXIT_DIRECT_MODE, STOPPED_EXIT_NOTE).catch(() => {});
-    c.parser.reset();
-    throw c.cancelledSince(epoch);
-  }
   startDirect(core, use, c.clock.now() - sentAt);
+  // The RBC has switched: Stop or Limp, pressed meanwhile, finds direct mode in its own turn (Stop leaves it).
+  if (c.epoch !== epoch) throw c.cancelledSince(epoch);
   await drainStale(core);
 }
 
@@ -62,7 +57,8 @@ export async function enterDirect(core: ClientCore, use: DirectUse): Promise<voi
  * logged, not judged (`RawChannel.guardServoBus`). The first servo command is written after it.
  */
 export function drainStale(core: ClientCore): Promise<void> {
-  return core.c.sleep(core.c.timeouts.settleMs);
+  const left = core.c.raw.settleLeftMs;
+  return left > 0 ? core.c.sleep(left) : Promise.resolve();
 }
 
 /**

@@ -52,6 +52,8 @@ export async function runLimp(core: ClientCore): Promise<LimpResult> {
   return c.exclusive(async () => {
     if (c.mode === "direct") {
       activity.handDirect("limp");
+      // Entered just before (an entry Limp overtook): what the servo-side buffer relays is drained first.
+      await drainStale(core);
       return servos.limpAll();
     }
     if (sound) await c.sleep(Math.max(0, sound.startedAt + sound.expectedMs - c.clock.now()) + 50);

@@ -182,6 +182,11 @@ export class RawChannel {
     return bus !== undefined && !bus.fault && !this.waiter && this.clock.now() < bus.drainUntil;
   }
 
+  /** What is left of the settle time after entering, before the first command (0 after it; `guardServoBus`). */
+  get settleLeftMs(): number {
+    return this.bus ? Math.max(0, this.bus.drainUntil - this.clock.now()) : 0;
+  }
+
   /** Whether the servo bus's rules are on (direct mode, see `guardServoBus`). */
   get servoBus(): boolean {
     return this.bus !== undefined;

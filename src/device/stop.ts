@@ -113,7 +113,16 @@ export async function runStop(core: ClientCore): Promise<StopActivityResult> {
   }
   // Started nothing here: ask the robot whether something started elsewhere plays (issue 21 item 4).
   if ((doing.kind === "idle" || doing.kind === "busy") && mode === "packet" && plays.length === 0) {
-    result.found = await c.exclusive(() => stopElsewhere(core), epoch);
+    await c.exclusive(async () => {
+      // An entry into direct mode that this Stop overtook switched the robot (docs/protocol.md §3.6): Stop leaves
+      // it. The robot was idle (the entry's probe said so), so nothing else is asked.
+      if (c.mode === "direct") {
+        await exitDirect(core);
+        result.leftDirectMode = true;
+        return;
+      }
+      result.found = await stopElsewhere(core);
+    }, epoch);
   }
   const play = plays.find((p) => p.framesSent > 0) ?? plays[0];
   if (play) {
