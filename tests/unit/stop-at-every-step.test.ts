@@ -84,3 +84,44 @@ describe.each(LINKS)("Stop at every step on the $link link", ({ port }) => {
     },
   );
 });
+
+/** A doctor command (a mode-5 read FF Ax or a move FF 8x), not Limp's passive commands (FF Cx). */
+const doctorCommand = (e: LogEntry) =>
+  servoCommand(e) && (e.bytes[1]! & 0xe0) !== 0xc0 && e.bytes[0] === 0xff && e.bytes.length === 4;
+
+describe.each(LINKS)("Limp at every step on the $link link", ({ port }) => {
+  it.each(OPERATIONS)(
+    "of a $op: every servo passive, the operation sends nothing more",
+    async ({ start }) => {
+      const n = await stepsOf(port, start);
+      for (let k = 0; k <= n; k++) {
+        const rig = await makeRig({ port });
+        const { client, sim, run } = rig;
+        const log: LogEntry[] = [];
+        let pressedAt = -1;
+        let limp: ReturnType<typeof client.limp> | undefined;
+        const press = () => {
+          pressedAt = log.length;
+          limp = client.limp();
+        };
+        client.log.on((e) => {
+          log.push(e);
+          if (log.length === k && !limp) press();
+        });
+        const operation = start(rig);
+        if (k === 0) press();
+        await run(operation);
+        if (!limp) press();
+        const result = await run(limp!);
+        await rig.clock.advance(1000);
+        expect({ k, confirmed: result.confirmed.length }).toEqual({ k, confirmed: 16 });
+        expect({ k, passive: sim.servos.filter((s) => s.passive).length }).toEqual({ k, passive: 16 });
+        const after = log.slice(pressedAt).filter(doctorCommand);
+        expect({ k, doctorCommandsAfterLimp: after.map((e) => toHex(e.bytes)) }).toEqual({
+          k,
+          doctorCommandsAfterLimp: [],
+        });
+      }
+    },
+  );
+});
