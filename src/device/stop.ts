@@ -103,7 +103,8 @@ export async function runStop(core: ClientCore): Promise<StopActivityResult> {
   // describes a robot that is done; then leave direct mode (issue 22 item 6): Stop ends servo control too.
   if (upload || mode === "direct" || plays.length > 0)
     await c.exclusive(async () => {}, epoch, { rearm: false }).catch(() => {});
-  if (mode === "direct" && c.mode === "direct") {
+  // A play that was still entering direct mode when Stop came may have entered it: Stop leaves it all the same.
+  if ((mode === "direct" || plays.length > 0) && c.mode === "direct") {
     result.leftDirectMode = await c
       .exclusive(() => exitDirect(core), epoch, { rearm: false })
       .then(

@@ -1,6 +1,7 @@
 import { describe, expect, it } from "vitest";
 import type { LogEntry, StopActivityResult } from "../../src/device/index.ts";
 import { scanServos, wiggleServo } from "../../src/device/servo-doctor/index.ts";
+import { openMotion } from "../../src/motion/index.ts";
 import { toHex } from "../../src/protocol/index.ts";
 import { bluetoothLinkOptions } from "../../src/sim/index.ts";
 import { makeRig, type Rig } from "../support/rig.ts";
@@ -18,11 +19,31 @@ const LINKS = [
   { link: "Bluetooth", port: bluetoothLinkOptions({ baudPacing: true }) },
 ] as const;
 
-const OPERATIONS: { op: string; start: (r: Rig) => Promise<{ stopped?: unknown } | { outcome: string }> }[] =
-  [
-    { op: "wiggle", start: (r) => wiggleServo(r.client, 4) },
-    { op: "scan", start: (r) => scanServos(r.client, { ids: [0, 1, 2] }) },
-  ];
+const OPERATIONS: {
+  op: string;
+  start: (r: Rig) => Promise<{ stopped?: unknown } | { outcome: string }>;
+  /** The bytes the operation must not send after Stop (default: any servo command). */
+  watched?: (e: LogEntry) => boolean;
+}[] = [
+  { op: "wiggle", start: (r) => wiggleServo(r.client, 4) },
+  { op: "scan", start: (r) => scanServos(r.client, { ids: [0, 1, 2] }) },
+];
+
+/** A two-scene motion of servos 0 and 2 (tests/unit/tethered-play.test.ts's PAIR), for tethered play. */
+const PAIR =
+  "1:13:0000000000000:XXXXXXXXXX:XXXXXXXXXXXXXXXXXXXX:4:Pair:0:1:2:2:2:4:" +
+  "00:020:030:000:0:125:02:020:030:000:0:160:" +
+  "000:01:A:2:50:0:00:126:120:2:0:0:02:197:201:3:0:" +
+  "001:01:B:3:70:0:00:120:130:0:0:0:02:201:205:2:0:";
+/**
+ * Tethered play: no frame after Stop. (Its read-back after the last frame, a read that moves nothing, is asked
+ * for with no cancel: a play Stop comes after its last frame has finished, and confirms it.)
+ */
+const PLAY = {
+  op: "tethered play",
+  start: (r: Rig) => r.client.playTethered(openMotion(PAIR)),
+  watched: (e: LogEntry) => servoCommand(e) && e.name.startsWith("tethered play"),
+};
 
 /** A servo command on the bus: raw bytes written, but not the leave sequence (FF E0 FB 01 00 1A). */
 const servoCommand = (e: LogEntry) =>
@@ -37,9 +58,9 @@ async function stepsOf(port: (typeof LINKS)[number]["port"], start: (r: Rig) => 
 }
 
 describe.each(LINKS)("Stop at every step on the $link link", ({ port }) => {
-  it.each(OPERATIONS)(
+  it.each([...OPERATIONS, PLAY])(
     "of a $op: resolves, nothing more is sent to the servos, packet mode, servos holding",
-    async ({ start }) => {
+    async ({ start, watched }: (typeof OPERATIONS)[number]) => {
       const n = await stepsOf(port, start);
       expect(n).toBeGreaterThan(4);
       for (let k = 0; k <= n; k++) {
@@ -63,7 +84,7 @@ describe.each(LINKS)("Stop at every step on the $link link", ({ port }) => {
         await run(stop!);
         // The leave sequence has no reply: give its bytes the time to cross the wire.
         await rig.clock.advance(1000);
-        const after = log.slice(pressedAt).filter(servoCommand);
+        const after = log.slice(pressedAt).filter(watched ?? servoCommand);
         expect({ k, servoCommandsAfterStop: after.map((e) => toHex(e.bytes)) }).toEqual({
           k,
           servoCommandsAfterStop: [],
