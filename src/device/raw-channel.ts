@@ -77,8 +77,6 @@ interface ServoBusGuard {
   last: string;
   /** Until this clock time (and the first command), unasked bytes are drained (`ServoBusHost.settleMs`). */
   drainUntil: number;
-  /** Bytes drained so far. */
-  drained: number;
 }
 
 /** The strict count of acknowledgements during a download (see `RawChannel.guardAcks`). */
@@ -163,7 +161,6 @@ export class RawChannel {
       fault: undefined,
       last: "direct mode",
       drainUntil,
-      drained: 0,
     };
     this.busFault = undefined;
     this.buffer = [];
@@ -407,8 +404,9 @@ export class RawChannel {
     const waiter = this.waiter;
     if (bus.fault) return;
     if (!waiter) {
-      if (this.clock.now() < bus.drainUntil) bus.drained += bytes.length;
-      else if (bus.unsettled) bus.late += bytes.length;
+      // Drained (the connection logged them as such): old servo replies relayed as direct mode began.
+      if (this.clock.now() < bus.drainUntil) return;
+      if (bus.unsettled) bus.late += bytes.length;
       else this.unasked(bus, "unasked");
       return;
     }
