@@ -1,4 +1,5 @@
 import { describe, expect, it } from "vitest";
+import { describeVariant, variantFromValues } from "../../src/cli/sim-variant.ts";
 import type { LogEntry } from "../../src/device/index.ts";
 import { toHex } from "../../src/protocol/index.ts";
 import { runInProcess } from "../cli/in-process.ts";
@@ -84,5 +85,19 @@ describe("rbc limp on the demo robot with 3 stale servo bytes (in process)", () 
       "Limp: all 16 servos confirmed passive. Hold the robot, it cannot stand on its own now.\n",
     );
     expect(r.stderr).toContain("00 7D 00");
+  });
+});
+
+describe("the simulator switch --stale-servo-bytes N", () => {
+  it("takes 0-64 bytes, says what it does in English and Korean, and refuses anything else", () => {
+    const variant = variantFromValues({ "stale-servo-bytes": "3" }, "sim");
+    expect(variant).toEqual({ staleServoBytes: 3 });
+    expect(describeVariant(variant, "en")).toEqual(["3 old servo bytes relayed as direct mode begins"]);
+    expect(describeVariant(variant, "ko")).toEqual(["직접 모드를 시작할 때 예전 서보 바이트 3개를 전달함"]);
+    for (const bad of ["-1", "65", "x", "1.5"]) {
+      expect(() => variantFromValues({ "stale-servo-bytes": bad }, "sim")).toThrow(
+        `--stale-servo-bytes must be a number of bytes from 0 to 64, got "${bad}".`,
+      );
+    }
   });
 });
