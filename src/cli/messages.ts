@@ -246,6 +246,14 @@ export const cliMessages = defineMessages({
     en: "events at the firmware's pace (0x17 about every 3.5 ms)",
     ko: "펌웨어 속도의 이벤트 (0x17 약 3.5ms마다)",
   },
+  "cli.variant.staleServoBytes": {
+    en: '--stale-servo-bytes must be a number of bytes from 0 to 64, got "{value}".',
+    ko: '--stale-servo-bytes에는 0부터 64까지의 바이트 수를 써 주세요. 받은 값: "{value}".',
+  },
+  "cli.variant.staleServoBytes.words": {
+    en: "{count} old servo bytes relayed as direct mode begins",
+    ko: "직접 모드를 시작할 때 예전 서보 바이트 {count}개를 전달함",
+  },
   "cli.variant.busyMotion.words": {
     en: "busy with motion {number} from the remote at connect",
     ko: "연결하면 IR 리모컨으로 시작한 모션 {number}번을 재생 중",

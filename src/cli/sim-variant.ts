@@ -44,6 +44,8 @@ export const VARIANT_OPTIONS = {
   "servo-loaded": { type: "string", multiple: true },
   "servo-late": { type: "string", multiple: true },
   "in-bootloader": { type: "boolean" },
+  // Old servo replies the controller relays as direct mode begins (docs/protocol.md §3.6): how many bytes.
+  "stale-servo-bytes": { type: "string" },
 } as const;
 
 /** The demo robot's variant switches (same syntax as `rbc sim`'s). */
@@ -73,6 +75,7 @@ export type SimVariant = Pick<
   | "quickRepeatPosture"
   | "answersZeroWrite"
   | "servoFaults"
+  | "staleServoBytes"
 > & {
   /** The robot waits in its bootloader (docs/protocol.md §11): `^` again and again, no packet answered. */
   inBootloader?: boolean;
@@ -106,6 +109,7 @@ interface VariantValues {
   "servo-loaded"?: string[];
   "servo-late"?: string[];
   "in-bootloader"?: boolean;
+  "stale-servo-bytes"?: string;
 }
 
 /** The servo-fault switches, the `ServoFaults` field each sets, and the lowest id it takes. */
@@ -139,6 +143,14 @@ function parseBusyMotion(text: string, command: string): number {
   const n = Number(text);
   if (!/^\d{1,2}$/.test(text.trim()) || n < 1 || n > 11) {
     throw new UsageError(said(cliMessages, "cli.variant.busyMotion", { value: text }), command);
+  }
+  return n;
+}
+
+function parseStaleBytes(text: string, command: string): number {
+  const n = Number(text);
+  if (!/^\d{1,2}$/.test(text.trim()) || n > 64) {
+    throw new UsageError(said(cliMessages, "cli.variant.staleServoBytes", { value: text }), command);
   }
   return n;
 }
@@ -218,6 +230,8 @@ export function variantFromValues(values: VariantValues, command: string, paced 
   if (values["sound-reply-at-once"]) variant.soundReplyAtOnce = true;
   if (values["quick-repeat-posture"]) variant.quickRepeatPosture = true;
   if (values["no-zero-write"]) variant.answersZeroWrite = false;
+  if (values["stale-servo-bytes"] !== undefined)
+    variant.staleServoBytes = parseStaleBytes(values["stale-servo-bytes"], command);
   const servoFaults = servoFaultsFromValues(values, command);
   if (servoFaults) variant.servoFaults = servoFaults;
   // --repeat-distance names the homebrew port's own bug: the 0x16 reply, the default of --repeat-replies.
@@ -288,6 +302,9 @@ export function describeVariant(variant: SimVariant, locale: Locale = "en"): str
   if (variant.soundReplyAtOnce) words.push(t("cli.variant.soundReplyAtOnce"));
   if (variant.quickRepeatPosture) words.push(t("cli.variant.quickRepeatPosture"));
   if (variant.answersZeroWrite === false) words.push(t("cli.variant.noZeroWrite"));
+  if (variant.staleServoBytes) {
+    words.push(t("cli.variant.staleServoBytes.words", { count: variant.staleServoBytes }));
+  }
   const faults = variant.servoFaults;
   const ids = (list: readonly number[] | undefined) =>
     list && list.length > 0 ? list.join(", ") : undefined;

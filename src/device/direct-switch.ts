@@ -4,7 +4,7 @@ import type { DirectUse } from "./activity.ts";
 import { probeBusy } from "./busy-probe.ts";
 import type { ClientCore } from "./client-core.ts";
 import { RbcNotIdleError } from "./direct-mode-errors.ts";
-import { RbcBadReplyError, RbcError, RbcTimeoutError } from "./errors.ts";
+import { RbcBadReplyError, RbcCancelledError, RbcError, RbcTimeoutError } from "./errors.ts";
 import { WIRE_BYTE_MS } from "./raw-channel.ts";
 
 /** The log's note for 0xFF sent to leave direct mode when the RBC did not answer (it may have switched). */
@@ -19,7 +19,9 @@ const ENTER_WIRE_MS = 32 * WIRE_BYTE_MS - 0.1;
 /**
  * Enters direct mode (0x10, docs/protocol.md §5) for `use`, within the caller's turn. Only when the robot is
  * idle (§3.6 [decision], `requireIdleRobot`): refused before anything reaches the servo bus otherwise.
- * Already in direct mode, `use` takes it over.
+ * Already in direct mode, `use` takes it over. Stop or Limp pressed while it switches (§3.6 [decision, turn 4])
+ * wins at its next step: nothing more is sent and it rejects with `RbcCancelledError` (by which of them); their
+ * own turn, next in the queue, finds the mode the robot is in (Stop leaves direct mode, Limp uses it).
  */
 export async function enterDirect(core: ClientCore, use: DirectUse): Promise<void> {
   const { c, activity } = core;
@@ -27,20 +29,36 @@ export async function enterDirect(core: ClientCore, use: DirectUse): Promise<voi
     activity.handDirect(use);
     return;
   }
+  const epoch = c.epoch;
   await requireIdleRobot(core, use);
+  if (c.epoch !== epoch) throw c.cancelledSince(epoch);
   const sentAt = c.clock.now();
   try {
     await c.request(COMMANDS.enterDirectMode, undefined);
   } catch (e) {
-    // The RBC may have switched even though its `01` was lost or garbled; it would then relay every later
-    // packet to the servo bus. The exit sequence is harmless garbage in packet mode, so send it blindly.
-    if (e instanceof RbcTimeoutError || e instanceof RbcBadReplyError) {
+    // The RBC may have switched even though its `01` was lost, garbled or no longer waited for (Limp ends the
+    // wait); it would then relay every later packet to the servo bus. The exit sequence is harmless garbage in
+    // packet mode, so send it blindly.
+    if (e instanceof RbcTimeoutError || e instanceof RbcBadReplyError || e instanceof RbcCancelledError) {
       await c.writeRaw(EXIT_DIRECT_MODE, BLIND_EXIT_NOTE).catch(() => {});
       c.parser.reset();
     }
     throw e;
   }
   startDirect(core, use, c.clock.now() - sentAt);
+  // The RBC has switched: Stop or Limp, pressed meanwhile, finds direct mode in its own turn (Stop leaves it).
+  if (c.epoch !== epoch) throw c.cancelledSince(epoch);
+  await drainStale(core);
+}
+
+/**
+ * Waits out the settle time after entering direct mode (docs/protocol.md §3.6 [decision, turn 4]): the old servo
+ * replies the controller's servo-side buffer relays as direct mode begins come meanwhile, and are drained and
+ * logged, not judged (`RawChannel.guardServoBus`). The first servo command is written after it.
+ */
+export function drainStale(core: ClientCore): Promise<void> {
+  const left = core.c.raw.settleLeftMs;
+  return left > 0 ? core.c.sleep(left) : Promise.resolve();
 }
 
 /**
@@ -72,6 +90,7 @@ export function startDirect(core: ClientCore, use: DirectUse, enterMs: number | 
     paced: enterMs !== undefined && enterMs >= ENTER_WIRE_MS,
     leave: () => leaveStillPlaying(core),
     fence: () => fenceServoBus(core),
+    settleMs: c.timeouts.settleMs,
   });
 }
 

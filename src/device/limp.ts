@@ -5,7 +5,7 @@ import { probeBusy } from "./busy-probe.ts";
 import type { ClientCore } from "./client-core.ts";
 import { SERVO_IDS } from "./direct-mode.ts";
 import { RbcCannotLimpError } from "./direct-mode-errors.ts";
-import { startDirect } from "./direct-switch.ts";
+import { drainStale, startDirect } from "./direct-switch.ts";
 import { RbcCancelledError, RbcError, RbcNotConnectedError, RbcTimeoutError } from "./errors.ts";
 import { endPlayingMotion, postureDurationMs, SCENE_END_MS } from "./motion-end.ts";
 
@@ -52,6 +52,8 @@ export async function runLimp(core: ClientCore): Promise<LimpResult> {
   return c.exclusive(async () => {
     if (c.mode === "direct") {
       activity.handDirect("limp");
+      // Entered just before (an entry Limp overtook): what the servo-side buffer relays is drained first.
+      await drainStale(core);
       return servos.limpAll();
     }
     if (sound) await c.sleep(Math.max(0, sound.startedAt + sound.expectedMs - c.clock.now()) + 50);
@@ -65,6 +67,7 @@ export async function runLimp(core: ClientCore): Promise<LimpResult> {
     );
     // Its `01` may have been lost while the RBC did switch: direct mode is assumed until shown otherwise.
     startDirect(core, "limp", entered ? c.clock.now() - sentAt : undefined);
+    await drainStale(core);
     const done = (r: { confirmed: number[]; silent: number[] }): LimpResult =>
       stoppedMotionFirst ? { ...r, stoppedMotionFirst } : r;
     if (entered) return done(await servos.limpAll());

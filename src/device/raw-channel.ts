@@ -56,6 +56,12 @@ export interface ServoBusHost {
    * cannot be made quiet; the next command is then not sent.
    */
   fence: () => Promise<void>;
+  /**
+   * The settle time after entering (docs/protocol.md §3.6): bytes that come meanwhile, before the first servo
+   * command, are old servo replies the controller's buffer relayed as direct mode began. They are drained, not
+   * judged (the entry waits it out: `drainStale`).
+   */
+  settleMs: number;
 }
 
 /** The servo bus's state in direct mode (see `RawChannel.guardServoBus`). */
@@ -69,6 +75,8 @@ interface ServoBusGuard {
   fault: RbcStillPlayingError | undefined;
   /** The command in flight or last written, for the messages. */
   last: string;
+  /** Until this clock time (and the first command), unasked bytes are drained (`ServoBusHost.settleMs`). */
+  drainUntil: number;
 }
 
 /** The strict count of acknowledgements during a download (see `RawChannel.guardAcks`). */
@@ -141,9 +149,19 @@ export class RawChannel {
    *   order, so once the fence's packet reply has come, every servo byte sent before it has come too (the
    *   parser discarded it) or never will: a reply can never answer a command sent after it, the same guarantee
    *   as packet mode's fences. A fence that fails fails the command, unsent.
+   * - Bytes within the settle time after entering, before the first command, are stale (`host.settleMs`,
+   *   §3.6 [decision, turn 4]): drained and logged, not judged. "Still playing" is only what comes after.
    */
   guardServoBus(host: ServoBusHost): void {
-    this.bus = { host, unsettled: false, late: 0, fault: undefined, last: "direct mode" };
+    const drainUntil = this.clock.now() + host.settleMs;
+    this.bus = {
+      host,
+      unsettled: false,
+      late: 0,
+      fault: undefined,
+      last: "direct mode",
+      drainUntil,
+    };
     this.busFault = undefined;
     this.buffer = [];
   }
@@ -153,6 +171,17 @@ export class RawChannel {
     const late = this.bus?.late ?? 0;
     this.bus = undefined;
     return { late };
+  }
+
+  /** Whether bytes arriving now are drained: the settle time after entering, no command yet (`guardServoBus`). */
+  get draining(): boolean {
+    const bus = this.bus;
+    return bus !== undefined && !bus.fault && !this.waiter && this.clock.now() < bus.drainUntil;
+  }
+
+  /** What is left of the settle time after entering, before the first command (0 after it; `guardServoBus`). */
+  get settleLeftMs(): number {
+    return this.bus ? Math.max(0, this.bus.drainUntil - this.clock.now()) : 0;
   }
 
   /** Whether the servo bus's rules are on (direct mode, see `guardServoBus`). */
@@ -308,6 +337,8 @@ export class RawChannel {
       );
     }
     if (signal?.aborted) throw new RbcCancelledError();
+    // The first command ends the drain: what comes from now on is judged.
+    bus.drainUntil = 0;
     if (bus.unsettled) {
       try {
         await bus.host.fence();
@@ -389,6 +420,8 @@ export class RawChannel {
     const waiter = this.waiter;
     if (bus.fault) return;
     if (!waiter) {
+      // Drained (the connection logged them as such): old servo replies relayed as direct mode began.
+      if (this.clock.now() < bus.drainUntil) return;
       if (bus.unsettled) bus.late += bytes.length;
       else this.unasked(bus, "unasked");
       return;

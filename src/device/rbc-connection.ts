@@ -66,6 +66,8 @@ export const MAIN_LOOP_REPLY_TYPES: ReadonlySet<number> = new Set([COMMANDS.read
 
 /** `ClientState.reason` of a link lost without a word from the link (technical; the error is worded by code). */
 const LINK_LOST = "link lost (no reason given)";
+/** The log's note for servo bytes drained as direct mode began (docs/protocol.md §3.6). */
+const DRAINED_NOTE = "drained: old servo replies relayed as direct mode began";
 
 const SUBSCRIPTION_BY_TYPE = new Map<number, SubscriptionKind>(
   Object.entries(SUBSCRIPTIONS).map(([kind, spec]) => [spec.type, kind as SubscriptionKind]),
@@ -540,6 +542,12 @@ export class RbcConnection {
   }
 
   private onBytes(bytes: Uint8Array): void {
+    if (this.mode === "direct" && this.raw.draining) {
+      // Old servo replies relayed as direct mode began (docs/protocol.md §3.6): drained, not judged.
+      this.emitLog({ direction: "in", kind: "discard", name: "drained", bytes, note: DRAINED_NOTE });
+      this.raw.receive(bytes);
+      return;
+    }
     if (this.mode === "download" || this.mode === "direct") {
       this.emitLog({
         direction: "in",

@@ -103,7 +103,8 @@ export async function runStop(core: ClientCore): Promise<StopActivityResult> {
   // describes a robot that is done; then leave direct mode (issue 22 item 6): Stop ends servo control too.
   if (upload || mode === "direct" || plays.length > 0)
     await c.exclusive(async () => {}, epoch, { rearm: false }).catch(() => {});
-  if (mode === "direct" && c.mode === "direct") {
+  // A play that was still entering direct mode when Stop came may have entered it: Stop leaves it all the same.
+  if ((mode === "direct" || plays.length > 0) && c.mode === "direct") {
     result.leftDirectMode = await c
       .exclusive(() => exitDirect(core), epoch, { rearm: false })
       .then(
@@ -113,7 +114,16 @@ export async function runStop(core: ClientCore): Promise<StopActivityResult> {
   }
   // Started nothing here: ask the robot whether something started elsewhere plays (issue 21 item 4).
   if ((doing.kind === "idle" || doing.kind === "busy") && mode === "packet" && plays.length === 0) {
-    result.found = await c.exclusive(() => stopElsewhere(core), epoch);
+    await c.exclusive(async () => {
+      // An entry into direct mode that this Stop overtook switched the robot (docs/protocol.md §3.6): Stop leaves
+      // it. The robot was idle (the entry's probe said so), so nothing else is asked.
+      if (c.mode === "direct") {
+        await exitDirect(core);
+        result.leftDirectMode = true;
+        return;
+      }
+      result.found = await stopElsewhere(core);
+    }, epoch);
   }
   const play = plays.find((p) => p.framesSent > 0) ?? plays[0];
   if (play) {

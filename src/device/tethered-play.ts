@@ -132,7 +132,13 @@ export async function runTetheredPlay(
     if (signal.aborted) return result("stopped");
     let entered = false;
     if (c.mode !== "direct") {
-      await host.enterDirect();
+      try {
+        await host.enterDirect();
+      } catch (e) {
+        // Stop or Limp came while direct mode was being entered: the entry yielded to it (§3.6).
+        if (signal.aborted) return result("stopped");
+        throw e;
+      }
       entered = true;
     }
     const read = await readPose(c, busIds, signal);

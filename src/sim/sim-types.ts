@@ -73,6 +73,12 @@ export interface SimulatedRbcOptions {
    */
   servoFaults?: ServoFaults;
   /**
+   * Old servo replies left in the controller's servo-side receive buffer (docs/protocol.md §3.6): this many
+   * bytes (default 0; an ATmega128 holds up to 3) are relayed to the PC the moment direct mode begins, just
+   * after the `01`. The buffer is full at power-up and fills again whenever a motion ends.
+   */
+  staleServoBytes?: number;
+  /**
    * The servos, kept by the caller so that they outlast this RBC: the demo robot keeps one set for the page,
    * so that an id set survives a reconnect (a new RBC is a power-up: bounds go back to 1..254). Its faults are
    * given to the ServoBus itself: not together with `servoFaults`.
@@ -152,6 +158,7 @@ export function resolveOptions(options: SimulatedRbcOptions) {
     busyMotion: checkedBusyMotion(options.busyMotion),
     servoFaults: checkServoFaults(options.servoFaults),
     servoBus: checkedServoBus(options),
+    staleServoBytes: checkedStaleBytes(options.staleServoBytes),
   };
 }
 
@@ -160,6 +167,13 @@ function checkedServoBus(options: SimulatedRbcOptions): ServoBus | undefined {
     throw new RangeError("sim: servoFaults and servoBus both given (give the faults to the ServoBus)");
   }
   return options.servoBus;
+}
+
+function checkedStaleBytes(n: number | undefined): number {
+  if (n !== undefined && !(Number.isInteger(n) && n >= 0 && n <= 64)) {
+    throw new RangeError(`The stale servo bytes must be a whole number, 0 to 64, got ${n}.`);
+  }
+  return n ?? 0;
 }
 
 function checkedBusyMotion(n: number | undefined): number | undefined {

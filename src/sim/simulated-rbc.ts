@@ -72,7 +72,10 @@ export class SimulatedRbc {
     | "soundReplyAtOnce"
     | "answersZeroWrite"
     | "busyMotion"
+    | "staleServoBytes"
   >;
+  /** Old servo reply bytes waiting in the servo-side receive buffer (`staleServoBytes`). */
+  private stale: number;
   private readonly keys: SimRunKeys;
   /** The busy motion (`busyMotion`) has been started since power-up. */
   private busyStarted = false;
@@ -89,6 +92,7 @@ export class SimulatedRbc {
     this.zeroTable = o.zeros;
     this.postureDone = o.basicPostureDone;
     this.variant = o;
+    this.stale = o.staleServoBytes;
     this.servoBus = o.servoBus ?? new ServoBus(o.servoFaults);
     // Servos kept from an earlier connection see this RBC start: a power-up.
     if (o.servoBus) this.servoBus.powerUp();
@@ -357,6 +361,7 @@ export class SimulatedRbc {
     this.receiver.packetMode();
     this.downloader.powerCycle();
     this.direct = false;
+    this.stale = this.variant.staleServoBytes;
     this.postureDone = false;
     this.error = NO_ERROR;
     this.servoBus.powerUp();
@@ -500,6 +505,16 @@ export class SimulatedRbc {
 
   private enterDirectMode(): void {
     this.reply(DIRECT_MODE_TYPE, Uint8Array.of(1));
+    // What the servo-side buffer held is relayed at once, behind the `01` (docs/protocol.md §3.6).
+    if (this.stale > 0)
+      this.send(
+        Uint8Array.from(
+          this.servoPositions()
+            .flatMap((p) => [0, p])
+            .slice(0, this.stale),
+        ),
+      );
+    this.stale = 0;
     this.direct = true;
     this.servoBus.resetDecoder();
     this.receiver.rawMode((b) => {
@@ -530,6 +545,8 @@ export class SimulatedRbc {
     }
     if (positions) for (const [id, p] of positions) this.servoBus.setPosition(id, p);
     this.servoWatch.changed();
+    // The motion's servo replies fill the servo-side receive buffer again.
+    this.stale = this.variant.staleServoBytes;
     this.mainLoopFree(this.keys.takeOwed());
   }
 

@@ -269,6 +269,33 @@ describe("Servo check on the demo robot", () => {
     // Stop keeps the robot standing: no servo was made passive.
     const passive = await page.evaluate(() => window.__rbcDemoSim?.servos.map((s) => s.passive));
     expect(passive).toEqual(Array(16).fill(false));
+
+    // Stop while the next scan is still entering direct mode (docs/protocol.md §3.6): the robot's clock is held
+    // the moment the robot answers the 0x10, before that answer reaches the page. Stop wins: the top bar says
+    // what it did (servo control ended), not "Stop failed", and the scan says Stop stopped it, no id read.
+    await page.evaluate(() => {
+      const sim = window.__rbcDemoSim;
+      const unwatch = sim?.onTransmit((bytes) => {
+        if (bytes[8] !== 0x10) return;
+        window.__rbcTest?.clock.hold();
+        unwatch?.();
+      });
+    });
+    await page.getByTestId("doctor-scan").click();
+    await page.waitForFunction(() => window.__rbcDemoSim?.directMode === true);
+    await page.getByRole("button", { name: "Stop", exact: true }).click();
+    await page.evaluate(() => window.__rbcTest?.clock.release());
+    const banner = page.getByTestId("stop-banner");
+    await banner.filter({ hasText: "Servo control ended" }).waitFor();
+    expect(await text(banner)).not.toContain("Stop failed");
+    const entryStopped = await text(
+      page.getByTestId("doctor-scan-status").filter({ hasText: "The scan stopped (Stop was pressed)" }),
+    );
+    expect(entryStopped).toContain("Not read: 0, 1, 2,");
+    expect(await readIds(page)).toEqual([]);
+    await expect.poll(() => page.evaluate(() => window.__rbcDemoSim?.directMode)).toBe(false);
+    const stillHolding = await page.evaluate(() => window.__rbcDemoSim?.servos.map((s) => s.passive));
+    expect(stillHolding).toEqual(Array(16).fill(false));
     await context.close();
   });
 

@@ -166,6 +166,7 @@ export const COMMAND_HELP = {
       ["--servo-replacement N", t("cliHelp.sim.servoReplacement")],
       ["--servo-loaded N", t("cliHelp.sim.servoLoaded")],
       ["--servo-late N:MS", t("cliHelp.sim.servoLate")],
+      ["--stale-servo-bytes N", t("cliHelp.sim.staleServoBytes")],
       ["--quiet", t("cliHelp.sim.quiet")],
       ["-p, --port PATH", t("cliHelp.sim.port")],
     ],

@@ -374,6 +374,10 @@ export const helpMessages = defineMessages({
     en: "Servos that do not answer: a Run holds error 11 for 4.5 s, then replies and clears it.",
     ko: "응답하지 않는 서보: 모션을 실행하면 4.5초 동안 오류 11을 유지한 뒤 응답하고 지워요.",
   },
+  "cliHelp.sim.staleServoBytes": {
+    en: "Relay N old servo bytes (0-64) the moment direct mode begins, as a controller's servo-side buffer does.",
+    ko: "직접 모드가 시작되는 순간 예전 서보 바이트 N개(0-64)를 보내요. 컨트롤러의 서보 쪽 버퍼가 그렇게 해요.",
+  },
   "cliHelp.sim.soundReplyAtOnce": {
     en: "Answer Run Sound (0x15) at once, before the sound plays.",
     ko: "소리 재생(0x15)에 소리가 나기 전에 바로 응답해요.",

@@ -5,7 +5,7 @@ import { RbcCancelledError, RbcError, RbcInvalidArgumentError } from "../errors.
 import type { RbcClient } from "../rbc-client.ts";
 import { scanFindings } from "./findings.ts";
 import { FirmwarePacketsSeen, readId } from "./read-id.ts";
-import { SERVO_REPLY_WINDOW_MS, ServoDoctorStoppedError } from "./servo-bus.ts";
+import { SERVO_REPLY_WINDOW_MS, type ServoBusSession, ServoDoctorStoppedError } from "./servo-bus.ts";
 import type { ScanResult, ServoReading, StopCode } from "./types.ts";
 
 export { readingOf } from "./read-id.ts";
@@ -37,10 +37,13 @@ export function checkServoIds(ids: readonly number[]): number[] {
   return [...ids];
 }
 
-/** Why an operation stopped, from the error that stopped it. */
-export function stopCodeOf(e: unknown, client: RbcClient): StopCode {
+/**
+ * Why an operation stopped, from the error that stopped it; with its `session`, Stop or Limp pressed at any
+ * moment since the operation was asked for (entering direct mode included) is "stop-pressed".
+ */
+export function stopCodeOf(e: unknown, client: RbcClient, session?: ServoBusSession): StopCode {
   if (client.mode === "disconnected") return "disconnected";
-  if (e instanceof ServoDoctorStoppedError) return "stop-pressed";
+  if (e instanceof ServoDoctorStoppedError || session?.stopped()) return "stop-pressed";
   if (e instanceof FirmwarePacketsSeen) return "firmware-sends-packets";
   if (e instanceof RbcCancelledError) return "cancelled";
   if (e instanceof RbcError && e.code === "disconnected") return "disconnected";
@@ -61,23 +64,30 @@ export async function scanServos(client: RbcClient, options: ScanOptions = {}): 
   const ids = checkServoIds(options.ids ?? HUNO_SCAN_IDS);
   const expected = ids.filter((id) => id < HUNO_SERVO_COUNT);
   if (options.signal?.aborted) throw new RbcCancelledError();
-  const unasked = await unaskedPacketType(client, options.signal);
-  if (unasked !== undefined) {
-    const stopped = { code: "firmware-sends-packets" as const, unread: ids, type: unasked ?? undefined };
-    return { servos: [], findings: [], ids, expected, stopped };
-  }
-  await client.enterDirectMode("servo-control");
+  // Stop counts from the moment the scan is asked for, not from when direct mode is entered (§3.6).
   const bus = client.servoBus.session();
+  let entered = false;
   const servos: ServoReading[] = [];
   let stopped: ScanResult["stopped"];
   try {
+    const unasked = await unaskedPacketType(client, options.signal);
+    if (unasked !== undefined) {
+      stopped = { code: "firmware-sends-packets", unread: ids, type: unasked ?? undefined };
+      return { servos, findings: [], ids, expected, stopped };
+    }
+    // Stop pressed while the line was watched: nothing enters direct mode.
+    if (bus.stopped()) throw new RbcCancelledError();
+    await client.enterDirectMode("servo-control");
+    entered = true;
     for (const id of ids) {
       const reading = await readId(bus, id, options.signal);
       servos.push(reading);
       options.onProgress?.({ done: servos.length, total: ids.length, reading });
     }
   } catch (e) {
-    stopped = { code: stopCodeOf(e, client), unread: ids.slice(servos.length) };
+    // A refusal to enter (not idle, an upload under way) is the caller's to handle; Stop or Limp is an outcome.
+    if (!entered && !bus.stopped()) throw e;
+    stopped = { code: stopCodeOf(e, client, bus), unread: ids.slice(servos.length) };
     if (e instanceof FirmwarePacketsSeen && e.type !== undefined) stopped.type = e.type;
     if (stopped.code === "failed") stopped.error = e;
   } finally {

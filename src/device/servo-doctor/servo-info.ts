@@ -57,10 +57,13 @@ export async function servoInfo(
     throw new RbcInvalidArgumentError(undefined, { kind: "servo-id-range", id, max: WCK_MAX_ID });
   }
   if (options.signal?.aborted) throw new RbcCancelledError();
-  await client.enterDirectMode("servo-control");
+  let entered = false;
+  // Stop counts from the moment the read is asked for, not from when direct mode is entered (§3.6).
   const bus = client.servoBus.session();
   const info: ServoInfo = { id, status: { id, status: "silent" }, parameters: {} };
   try {
+    await client.enterDirectMode("servo-control");
+    entered = true;
     info.status = readingOf(id, await bus.readStatus(id, options.signal));
     if (info.status.status !== "answered") return info;
     for (const parameter of INFO_PARAMETERS) {
@@ -70,7 +73,9 @@ export async function servoInfo(
       );
     }
   } catch (e) {
-    info.stopped = { code: stopCodeOf(e, client) };
+    // A refusal to enter (not idle, an upload under way) is the caller's to handle; Stop or Limp is an outcome.
+    if (!entered && !bus.stopped()) throw e;
+    info.stopped = { code: stopCodeOf(e, client, bus) };
   } finally {
     await leaveDirect(client);
   }

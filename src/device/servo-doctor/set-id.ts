@@ -75,10 +75,13 @@ export async function setServoId(
     const first = readingOf(id, await bus.readStatus(id, options.signal));
     return first.status === "garbled" ? readingOf(id, await bus.readStatus(id, options.signal)) : first;
   };
-  await client.enterDirectMode("servo-control");
+  let entered = false;
+  // Stop counts from the moment the fix is asked for, not from when direct mode is entered (§3.6).
   const bus = client.servoBus.session();
   let sent = false;
   try {
+    await client.enterDirectMode("servo-control");
+    entered = true;
     const atFrom = await read(from);
     if (atFrom.status !== "answered") {
       const reason = atFrom.status === "silent" ? "from-silent" : "from-garbled";
@@ -108,8 +111,9 @@ export async function setServoId(
           : "unclear";
     return { outcome: "failed", reason, from, to, after };
   } catch (e) {
-    if (e instanceof RbcInvalidArgumentError) throw e;
-    return { outcome: "stopped", code: stopCodeOf(e, client), from, to, sent };
+    // A refusal to enter (not idle, an upload under way) is the caller's to handle; Stop or Limp is an outcome.
+    if (e instanceof RbcInvalidArgumentError || (!entered && !bus.stopped())) throw e;
+    return { outcome: "stopped", code: stopCodeOf(e, client, bus), from, to, sent };
   } finally {
     await leaveDirect(client);
   }

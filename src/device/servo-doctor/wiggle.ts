@@ -70,9 +70,12 @@ export async function wiggleServo(
   if (options.signal?.aborted) throw new RbcCancelledError();
   const { signal } = options;
   const steps: WiggleStep[] = [];
-  await client.enterDirectMode("servo-control");
+  let entered = false;
+  // Stop counts from the moment the wiggle is asked for, not from when direct mode is entered (§3.6).
   const bus = client.servoBus.session();
   try {
+    await client.enterDirectMode("servo-control");
+    entered = true;
     const first = readingOf(id, await bus.readStatus(id, signal));
     if (first.status !== "answered") return { outcome: "not-read", id, reading: first };
     const start = first.position;
@@ -89,8 +92,9 @@ export async function wiggleServo(
     }
     return { outcome: "done", id, start, steps, ...followSummary(start, steps) };
   } catch (e) {
-    if (e instanceof RbcInvalidArgumentError) throw e;
-    return { outcome: "stopped", id, code: stopCodeOf(e, client), steps };
+    // A refusal to enter (not idle, an upload under way) is the caller's to handle; Stop or Limp is an outcome.
+    if (e instanceof RbcInvalidArgumentError || (!entered && !bus.stopped())) throw e;
+    return { outcome: "stopped", id, code: stopCodeOf(e, client, bus), steps };
   } finally {
     await leaveDirect(client);
   }
