@@ -37,6 +37,8 @@ async function inViewport(page: Page, testId: string, within?: string): Promise<
 
 /** The panel that shows the motion playing now. */
 const RUNNING = '[data-testid="running-motion"]';
+/** The same once the robot was seen busy with it ("Running", docs/protocol.md §3.1): the Run has gone out. */
+const RUNNING_CONFIRMED = '[data-testid="running-motion"][data-confirmed="yes"]';
 
 describe("motions view: running motions and sounds", () => {
   it("guides to basic posture first, asks once before moving, and both Stop motion and Stop end a motion with 7, the robot standing", async () => {
@@ -80,9 +82,10 @@ describe("motions view: running motions and sounds", () => {
     // Stop motion sends 7: the robot ends the scene and holds that pose (no basic posture, docs/protocol.md §3.6).
     await page.locator('[data-motion="2"]').click();
     const motion2Started = await robotNow(page);
-    // Held from the frame the motion shows as running until Stop motion is pressed: motion 2's 6.6 s are
+    // Held from the frame the motion shows as running (the robot seen busy with it) until Stop motion is pressed:
+    // motion 2's 6.6 s are
     // 1.65 s of real time at FAST, which a loaded machine can spend before the click lands.
-    await holdRobotWhenShown(page, RUNNING, /Get up B/);
+    await holdRobotWhenShown(page, RUNNING_CONFIRMED, /Get up B/);
     await page.getByTestId("stop-motion").click();
     await releaseRobot(page);
     await page
@@ -158,7 +161,10 @@ describe("motions view: running motions and sounds", () => {
   it("says a Run was sent and is being checked (no 'Running', no bar) until the robot is seen busy, and an ignored Run as soon as its reply comes", async () => {
     // Issue 33 item 5: the base showed "Running motion 12 … 3.2 s of 3.2 s" for a Run the robot had ignored.
     // The official "user" firmware: 12 holds nothing and its reply comes at once (docs/protocol.md §3.1).
-    const { page, context } = await app.newPage({ options: { ...FAST, variant: { userFirmware: true } } });
+    const { page, context } = await app.newPage({
+      start: CABLE,
+      options: { ...FAST, variant: { userFirmware: true } },
+    });
     await openTab(page, "Run");
     const running = page.getByTestId("running-motion");
     // Held at the first frame the run shows: the busy check (asked 250 ms into the Run) has not answered yet.

@@ -35,7 +35,10 @@ async function blur(page: Page): Promise<void> {
 async function startMotion(page: Page, n: number, name: string): Promise<void> {
   await page.locator(`[data-motion="${n}"]`).click();
   const confirm = page.locator("#confirm-move");
-  const running = page.getByTestId("running-motion").filter({ hasText: name });
+  // Running once the robot was seen busy with it (docs/protocol.md §3.1): the Run and its busy check have gone out.
+  const running = page
+    .locator('[data-testid="running-motion"][data-confirmed="yes"]')
+    .filter({ hasText: name });
   // The click's own effect first: the question or the motion running (a count read at once sees neither).
   await confirm.or(running).first().waitFor();
   if (await confirm.count()) await confirm.click();

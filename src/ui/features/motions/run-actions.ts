@@ -18,6 +18,8 @@ import { type AppState, type Notice, noticeOf } from "../../app-state.ts";
 import type { AppContext } from "../../context.ts";
 import { errorNotice, technicalDetail } from "../../error-text.ts";
 import { focusSoon } from "../../focus.ts";
+import { stopAll } from "../../stop-all.ts";
+import { playingMotion } from "../connection/index.ts";
 import { remoteKeyWords } from "../shelf/index.ts";
 import { type MotionRun, motionsController } from "./controllers.ts";
 import { motionsMessages } from "./messages.ts";
@@ -224,7 +226,9 @@ type RunFailureKey =
 
 /**
  * "Stop motion": the client sends 7, which the RBC obeys at the end of the current scene (docs/protocol.md §3.6). It
- * answers once, `07`, and does not play basic posture: the robot holds the pose it stopped in.
+ * answers once, `07`, and does not play basic posture: the robot holds the pose it stopped in. Pressed before the
+ * Run has gone out (its own checks come first), it is the page's Stop, which cancels the Run before it is sent:
+ * the client's Stop motion would run Basic posture after it instead.
  */
 export async function stopMotion(ctx: AppContext): Promise<void> {
   const { store, session } = ctx;
@@ -232,6 +236,10 @@ export async function stopMotion(ctx: AppContext): Promise<void> {
   const run = controller.run;
   const shown = motionsOf(store.get()).run;
   if (!run || run.stopRequested || !shown) return;
+  if (!playingMotion(store.get().connection)) {
+    await stopAll(ctx);
+    return;
+  }
   run.stopRequested = true;
   const then = store.get();
   const { locale } = then;
