@@ -213,6 +213,19 @@ describe("motions view: running motions and sounds", () => {
     expect(
       await page.evaluate(() => (window as unknown as { __sawRunning12?: boolean }).__sawRunning12),
     ).toBe(false);
+
+    // Stop motion while the Run has not gone out yet (its busy probe waits on the held robot): the Run is
+    // cancelled and never sent, instead of playing whole with Basic posture after it.
+    await holdRobot(page);
+    await page.locator('[data-motion="2"]').click();
+    await running.filter({ hasText: /sent: checking/ }).waitFor();
+    await page.getByTestId("stop-motion").click();
+    await releaseRobot(page);
+    await page
+      .getByText(/Motion 2 was not started: Stop came first/)
+      .first()
+      .waitFor({ timeout: 10_000 });
+    expect(await page.evaluate(() => window.__rbcTest?.sim.playingMotion)).toBeUndefined();
     await context.close();
   });
 

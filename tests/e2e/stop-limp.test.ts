@@ -141,9 +141,11 @@ describe("Stop keeps the robot standing; Limp asks first", () => {
     await expect.poll(() => question.count()).toBe(0);
     expect(await robot(page)).toMatchObject({ passive: NONE_PASSIVE, direct: false });
 
-    // Escape inside the question closes it: it is neither Limp nor Stop.
+    // Escape inside the question closes it: it is neither Limp nor Stop. (Pressed once the focus is in it, as a
+    // person would: before that, the focus is still on "Limp…", where Escape is the page's Stop.)
     await limp.click();
     await question.waitFor();
+    await expect.poll(() => page.evaluate(() => document.activeElement?.textContent?.trim())).toBe("Cancel");
     await page.keyboard.press("Escape");
     await expect.poll(() => question.count()).toBe(0);
     await expectText(page.getByTestId("stop-banner"), "");
