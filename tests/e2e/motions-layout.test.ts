@@ -95,6 +95,8 @@ describe("motions view layout", () => {
     await expect.poll(() => page.evaluate(() => document.activeElement?.id)).toBe("motions-tab-uploads");
     await page.keyboard.press("End");
     await page.locator("#motions-panel-sounds").waitFor();
+    // The focus follows the tab on the next frame: the next key goes to the tab that has it.
+    await expect.poll(() => page.evaluate(() => document.activeElement?.id)).toBe("motions-tab-sounds");
     await page.keyboard.press("ArrowRight");
     await page.locator("#motions-panel-files").waitFor();
     await context.close();

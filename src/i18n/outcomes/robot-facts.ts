@@ -4,14 +4,13 @@ import { translator } from "../translate.ts";
 
 /**
  * What a robot reports about itself, named the same by `rbc info`, `rbc flash`, the Robot view, the top bar and
- * the Class view: the facts' names, a fact the robot did not report, a platform byte the RBC does not know
- * (docs/protocol.md §3.5), the firmware the demo robot reports.
+ * the Class view: the facts' names, a fact the robot did not report, the firmware the demo robot reports (and a
+ * platform byte the RBC does not know, from platform-words.ts).
  */
 export const robotFactMessages = defineMessages({
   "fact.serialNumber": { en: "Serial number", ko: "시리얼 번호" },
   "fact.errorCode": { en: "Error code", ko: "오류 코드" },
   "fact.notReported": { en: "not reported", ko: "알려 주지 않음" },
-  "fact.platformUnknown": { en: "unknown ({platform})", ko: "알 수 없음 ({platform})" },
   "fact.demoFirmware": {
     en: "The demo robot reports firmware {version}.",
     ko: "데모 로봇이 알려 준 펌웨어 버전: {version}",
@@ -31,10 +30,7 @@ export function robotFactText(fact: keyof typeof NAMES, locale: Locale): string 
   return t(locale)(NAMES[fact]);
 }
 
-/** A platform byte the RBC does not know: "unknown (9)". */
-export function unknownPlatformText(platform: number, locale: Locale): string {
-  return t(locale)("fact.platformUnknown", { platform: String(platform) });
-}
+export { unknownPlatformText } from "./platform-words.ts";
 
 /** "The demo robot reports firmware 1.23.", in parts so that `version` may be markup (`Translator.parts`). */
 export function demoFirmwareParts<V>(version: V, locale: Locale): (string | V)[] {

@@ -1,12 +1,9 @@
 import { html, nothing, type TemplateResult } from "lit-html";
-import { linkReasonText } from "../../../i18n/outcomes/link-words.ts";
 import { translator } from "../../../i18n/translate.ts";
-import { runningWords } from "../../app-state.ts";
 import { lazyPart } from "../../lazy-part.ts";
 import { hrefFor } from "../../router.ts";
 import { describePort, linkKindOf } from "../../serial-ports.ts";
 import { redraw } from "../../shell/actions.ts";
-import { shellMessages } from "../../shell/messages.ts";
 import { notice } from "../../shell/notice.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
 import {
@@ -61,34 +58,18 @@ function progress(
 }
 
 /**
- * The link was lost. Why, in the catalogue's words when the link gave its facts (in every language); the
- * device's technical line one click away. Without the facts, the line follows the heading in English, and is
- * the technical detail in another language (docs/i18n.md, errors).
+ * The link was lost (lost-notice.ts, loaded with the first lost link: its words, the link's reasons in every
+ * language, are not in the first page load). Drawn a moment later than the card, once it has loaded.
  */
-function lostNotice(c: ConnectionState, t: ConnectionTranslator): TemplateResult | typeof nothing {
+const lost = lazyPart(() => import("./lost-notice.ts"));
+
+function lostNotice(
+  ctx: ViewContext,
+  c: ConnectionState,
+  t: ConnectionTranslator,
+): TemplateResult | typeof nothing {
   if (!c.lostReason) return nothing;
-  const lost = c.robot?.kind === "demo" ? t("connection.lostDemo") : t("connection.lost");
-  const why = c.lostCause && linkReasonText(c.lostCause, t.locale);
-  const rawShown = why === undefined && t.locale === "en";
-  return html`
-    <div class="notice notice--danger" data-testid="lost-notice">
-      <p><strong>${lost}</strong> ${why ?? (rawShown ? c.lostReason : nothing)}</p>
-      ${
-        c.interrupted.length > 0
-          ? html`<p>${t("connection.didNotFinish", { list: runningWords(c.interrupted, t.locale).join(", ") })}</p>`
-          : nothing
-      }
-      <p>${t("connection.checkCable")}</p>
-      ${
-        rawShown
-          ? nothing
-          : html`<details class="detail">
-              <summary>${translator(shellMessages, t.locale)("shell.technicalDetail")}</summary>
-              <pre lang="en">${c.lostReason}</pre>
-            </details>`
-      }
-    </div>
-  `;
+  return lost.get(() => redraw(ctx.store))?.lostNotice(c, t) ?? nothing;
 }
 
 function knownPorts(
@@ -172,7 +153,7 @@ export function connectCard(ctx: ViewContext): TemplateResult {
   return html`
     <section class="card connect-card" aria-labelledby="connect-title" data-testid="connect-card">
       <h1 id="connect-title">${t("connection.title")}</h1>
-      ${lostNotice(c, t)} ${notice(c.problem, locale)} ${recoverOffer(c, t)}
+      ${lostNotice(ctx, c, t)} ${notice(c.problem, locale)} ${recoverOffer(c, t)}
       <p>${t("connection.intro")}</p>
       <div class="actions">
         <button type="button" class="btn btn--primary" ?disabled=${busy} @click=${() => chooseAndConnect(ctx)}>

@@ -1,6 +1,6 @@
 import { html, nothing, type TemplateResult } from "lit-html";
 import type { Locale } from "../../../i18n/locale.ts";
-import { unknownPlatformText } from "../../../i18n/outcomes/robot-facts.ts";
+import { unknownPlatformText } from "../../../i18n/outcomes/platform-words.ts";
 import { type Said, wordOf } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { platformName } from "../../../protocol/platform.ts";
