@@ -123,7 +123,12 @@ export class RbcClient {
    * Counters of the conversation: replies no request took (late ones and unasked repeats, discarded), fence
    * reads sent before a request whose type had a reply outstanding, and timeouts.
    */
-  get stats(): Readonly<{ unansweredReplies: number; fences: number; timeouts: number }> {
+  get stats(): Readonly<{
+    unansweredReplies: number;
+    unaskedReplies: number;
+    fences: number;
+    timeouts: number;
+  }> {
     return { ...this.#c.stats };
   }
 

@@ -132,7 +132,12 @@ export class RbcConnection {
   /** Told about every reply the RBC's main loop sent (0x14, 0x16): the main loop is free at that moment. */
   mainLoopAnswered: ((type: number) => void) | undefined;
   /** Replies no request took: late ones (discarded after a fence or a timeout) and unasked repeats. */
-  readonly stats = { unansweredReplies: 0, fences: 0, timeouts: 0 };
+  /**
+   * `unansweredReplies`: replies no request in flight took, a late one paying an abandoned request's debt
+   * included; `unaskedReplies`: only those nothing ever asked for (no debt paid), such as a firmware that repeats
+   * its reply (docs/protocol.md §3.5).
+   */
+  readonly stats = { unansweredReplies: 0, unaskedReplies: 0, fences: 0, timeouts: 0 };
 
   constructor(
     readonly transport: Transport,
@@ -592,6 +597,7 @@ export class RbcConnection {
     // unless that claims it, counted and its type fenced before its next request (a repeat may follow).
     if (this.unsolicited?.(packet) === true) return;
     this.stats.unansweredReplies++;
+    this.stats.unaskedReplies++;
     // An unasked main-loop reply with nothing owed (a firmware that repeats it): fenced as before.
     if (MAIN_LOOP_REPLY_TYPES.has(packet.type)) this.suspect.add(packet.type);
     else this.expectLate(packet.type);

@@ -156,3 +156,16 @@ describe("a scan that stops names why", () => {
     expect(scanStoppedText(result, "ko")).toMatch(/^검사를 멈췄어요\. .+ 읽은 ID: 0\. 읽지 못한 ID: 1\.$/);
   });
 });
+
+describe("a late reply the client owes is not a packet nobody asked for", () => {
+  it("a scan right after Stop ended a motion started elsewhere reads every servo: the busy probe's 0x16, answered when the motion ended, paid its own debt", async () => {
+    const rig = await makeRig({ port: PORT, sim: { busyMotion: 2 } });
+    // The busy probe's 0x16 goes unanswered while the motion plays (docs/protocol.md §3.6): one reply is owed.
+    expect(await rig.run(rig.client.probeBusy())).toBe("busy");
+    await rig.run(rig.client.stopActivity());
+    expect(rig.sim.playingMotion).toBeUndefined();
+    const result = await rig.run(scanServos(rig.client, { ids: [0, 1, 2] }));
+    expect(result.stopped).toBeUndefined();
+    expect(result.servos.map((s) => s.status)).toEqual(["answered", "answered", "answered"]);
+  });
+});

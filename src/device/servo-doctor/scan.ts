@@ -106,7 +106,7 @@ async function unaskedPacketType(
   client: RbcClient,
   signal?: AbortSignal,
 ): Promise<number | null | undefined> {
-  const before = client.stats.unansweredReplies;
+  const before = client.stats.unaskedReplies;
   const types: number[] = [];
   const off = client.log.on((e) => {
     if (e.direction === "in" && e.kind === "packet" && e.type !== undefined) types.push(e.type);
@@ -123,7 +123,7 @@ async function unaskedPacketType(
   } finally {
     off();
   }
-  if (client.stats.unansweredReplies === before) return undefined;
+  if (client.stats.unaskedReplies === before) return undefined;
   return types[0] ?? null;
 }
 
