@@ -296,7 +296,7 @@ describe("the whole flow over a Bluetooth link (300 ± 150 ms, 20 ms bursts)", (
     expect(rig.client.timeouts.quickMs).toBe(1500);
     const result = await flow(rig);
     expect(result.error).toBeUndefined();
-    expect(rig.client.stats).toEqual({ timeouts: 0, unansweredReplies: 0, fences: 0 });
+    expect(rig.client.stats).toEqual({ timeouts: 0, unansweredReplies: 0, unaskedReplies: 0, fences: 0 });
     // The link was measured and the timeouts follow it: well above 400 ms, below the ceiling.
     const link = result.link!;
     expect(link.kind).toBe("bluetooth");
@@ -316,7 +316,7 @@ describe("the whole flow over a Bluetooth link (300 ± 150 ms, 20 ms bursts)", (
     const rig = await rigOver(bluetoothLinkOptions({ seed, baudPacing: true }), { link: "bluetooth" });
     const result = await flow(rig);
     expect(result.error).toBeUndefined();
-    expect(rig.client.stats).toEqual({ timeouts: 0, unansweredReplies: 0, fences: 0 });
+    expect(rig.client.stats).toEqual({ timeouts: 0, unansweredReplies: 0, unaskedReplies: 0, fences: 0 });
   });
 
   it("completes on a port that does not say what it is (an unknown link starts generous too)", async () => {
@@ -363,7 +363,7 @@ describe("a USB-like link (115200 baud, 16 ms adapter latency) keeps its fixed t
     expect(rig.client.timeouts).toMatchObject(FIXED);
     const result = await flow(rig);
     expect(result.error).toBeUndefined();
-    expect(rig.client.stats).toEqual({ timeouts: 0, unansweredReplies: 0, fences: 0 });
+    expect(rig.client.stats).toEqual({ timeouts: 0, unansweredReplies: 0, unaskedReplies: 0, fences: 0 });
     expect(result.timeouts).toHaveLength(5);
     for (const t of result.timeouts) expect(t).toEqual(FIXED);
     expect(result.link).toMatchObject({ kind: "wired", quickTimeoutMs: 400, extraMs: 0 });
