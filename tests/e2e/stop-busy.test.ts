@@ -1,7 +1,7 @@
 import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
 import { CABLE, loadConnected } from "./connected-page.ts";
-import { expectText, FAST, holdRobot, releaseRobot, squash, useApp } from "./harness.ts";
+import { expectText, FAST, holdRobot, releaseRobot, robotTime, squash, useApp } from "./harness.ts";
 import { axeProblems } from "./i18n-checks.ts";
 import "./rbc-test-globals.ts";
 
@@ -28,6 +28,15 @@ const packetsIn = (page: Page) =>
   page.evaluate(() => window.__rbcTest?.sim.stats.packetsReceived ?? Number.NaN);
 
 const banner = (page: Page) => page.getByTestId("stop-banner");
+
+/**
+ * The Robot view has read the robot, and half a second of the robot's time has passed with the connection's own
+ * requests done (the connect-time busy probe, the view's reads): packets counted after this are the test's.
+ */
+async function settled(page: Page): Promise<void> {
+  await page.getByTestId("device-card").waitFor();
+  await robotTime(page, 500);
+}
 
 describe("a robot busy with a motion started by the remote", () => {
   it("on connect the top bar says the robot is busy (not gone) with a Stop right there; that Stop sends 7 and says what the robot answered", async () => {
@@ -73,6 +82,7 @@ describe("a robot busy with a motion started by the remote", () => {
   it("a motion started from the remote after connecting: the top bar's Stop asks the robot, sends 7 once and reports the 07", async () => {
     const { page, context } = await app.newPage({ start: CABLE, options: FAST });
     await loadConnected(page, app.url);
+    await settled(page);
     // The test hook: the simulated robot's remote starts Walk backward (10, 2.45 s), not the panel.
     const received = await packetsIn(page);
     // Held, so that the 2.45 s walk is still playing when Stop reaches the robot however slowly the test runs.
@@ -91,6 +101,7 @@ describe("a robot busy with a motion started by the remote", () => {
   it("an idle robot: Stop says what the robot answered and sends nothing else", async () => {
     const { page, context } = await app.newPage({ start: CABLE, options: FAST });
     await loadConnected(page, app.url);
+    await settled(page);
     await expect.poll(() => robot(page).then((r) => r.playing)).toBeUndefined();
     const received = await packetsIn(page);
     await page.getByRole("button", { name: "Stop", exact: true }).click();
