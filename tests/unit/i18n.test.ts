@@ -31,6 +31,7 @@ import { formatCount, formatDelta } from "../../src/ui/format.ts";
 import { pageTitle } from "../../src/ui/shell/app-view.ts";
 import { LOCALE_STORAGE_KEY, saveLocale, startLocale } from "../../src/ui/shell/locale-choice.ts";
 import { versionText } from "../../src/ui/version.ts";
+import { isCatalogue } from "../support/catalogue-shape.ts";
 
 /**
  * The panel's two languages (issue #14 item 1, docs/i18n.md): every catalogue (a `messages.ts` under src/) is
@@ -50,19 +51,6 @@ function sourceFiles(dir: string): string[] {
 
 const SOURCES = sourceFiles(SRC);
 const CATALOGUE_FILES = SOURCES.filter((path) => path.endsWith("/messages.ts"));
-
-function isMessage(value: unknown): value is Message {
-  return typeof value === "object" && value !== null && LOCALES.every((l) => l in value);
-}
-
-function isCatalogue(value: unknown): value is Catalogue {
-  return (
-    typeof value === "object" &&
-    value !== null &&
-    Object.values(value).length > 0 &&
-    Object.values(value).every(isMessage)
-  );
-}
 
 /** Every catalogue exported by every messages.ts, with the file it is in. */
 const catalogues: { file: string; name: string; messages: Catalogue }[] = [];

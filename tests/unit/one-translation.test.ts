@@ -1,7 +1,8 @@
 import { readFileSync } from "node:fs";
 import { join, relative } from "node:path";
 import { describe, expect, it } from "vitest";
-import { type Catalogue, LOCALES, type Message, type MessageText } from "../../src/i18n/index.ts";
+import type { MessageText } from "../../src/i18n/index.ts";
+import { isCatalogue } from "../support/catalogue-shape.ts";
 import { tsFiles } from "../support/source-files.ts";
 
 /**
@@ -27,19 +28,6 @@ interface Entry {
   readonly key: string;
   readonly en: string;
   readonly ko: string;
-}
-
-function isMessage(value: unknown): value is Message {
-  return typeof value === "object" && value !== null && LOCALES.every((l) => l in value);
-}
-
-function isCatalogue(value: unknown): value is Catalogue {
-  return (
-    typeof value === "object" &&
-    value !== null &&
-    Object.values(value).length > 0 &&
-    Object.values(value).every(isMessage)
-  );
 }
 
 /** A text, its plural forms one after the other. */
