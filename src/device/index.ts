@@ -24,6 +24,7 @@ export {
   type FirmwareIo,
   type FirmwareTimeouts,
   FirmwareUpdateError,
+  type FirmwareUpdateFacts,
   type FirmwareUpdateOptions,
   type FirmwareUpdatePhase,
   type FirmwareUpdateProgress,

@@ -1,4 +1,5 @@
-import type { BootloaderFailure, RobotHolds } from "../../../protocol/bootloader.ts";
+import type { FirmwareUpdateFacts } from "../../../device/firmware-update.ts";
+import type { RobotHolds } from "../../../protocol/bootloader.ts";
 import type { IntelHexErrorCode, IntelHexFacts } from "../../../protocol/intel-hex.ts";
 import { formatFirmware } from "../../../shared/format.ts";
 import type { KeysWithoutParams } from "../../catalogue.ts";
@@ -16,17 +17,8 @@ import { firmwareOutcomeMessages as messages } from "./messages.ts";
 
 type Key = KeysWithoutParams<typeof messages>;
 
-/** What a failed or cancelled update knows: what went wrong, what the flash holds, and where and how long. */
-export interface FirmwareFailureFacts {
-  readonly failure: BootloaderFailure;
-  readonly holds: RobotHolds;
-  /** The file's line (1-based) the failure is about, when there is one. */
-  readonly line?: number | undefined;
-  /** How long the update waited for the answer that did not come, when it waited. */
-  readonly waitedMs?: number | undefined;
-  /** How many times a line was sent before a checksum failure gave up (MAX_LINE_RESENDS + 1). */
-  readonly tries?: number | undefined;
-}
+/** What a failed or cancelled update knows (the device's `FirmwareUpdateFacts`, under the words' name). */
+export type FirmwareFailureFacts = FirmwareUpdateFacts;
 
 /** 60000 → "60 s", 1500 → "1.5 s", 400 → "400 ms" (and Korean units). */
 function waitText(ms: number | undefined, locale: Locale): string {
