@@ -70,6 +70,9 @@ const sims = (page: Page) =>
 const rows = (page: Page) => page.getByTestId("class-robot");
 const row = (page: Page, i: number): Locator => rows(page).nth(i);
 
+/** Run on all and Upload ask once for the class first (issue 33 item 2): the answer that goes ahead. */
+const confirm = (page: Page) => page.getByTestId("class-confirm").click();
+
 async function addDemos(page: Page, count: number, label = "Add demo robot", connected = "Connected") {
   for (let i = 0; i < count; i++) await page.getByRole("button", { name: label, exact: true }).click();
   await expect.poll(() => rows(page).count()).toBe(count);
@@ -125,6 +128,7 @@ describe("the Class view with four demo robots", () => {
       });
     expect(await leaveAsks()).toBe(false);
     await page.getByRole("button", { name: "Upload to 4 robots" }).click();
+    await confirm(page);
     await expect.poll(leaveAsks, { interval: 5 }).toBe(true);
     const summary = page.getByTestId("class-summary");
     await summary.filter({ hasText: "Pack upload finished" }).waitFor({ timeout: 30_000 });
@@ -146,6 +150,7 @@ describe("the Class view with four demo robots", () => {
     // Run on all: Basic posture first (the RBC ignores other motions until 7 has run), then the pack's motion 12.
     await page.getByLabel("Motion", { exact: true }).selectOption("7");
     await page.getByRole("button", { name: "Run on all 3 robots" }).click();
+    await confirm(page);
     const skew = page.getByTestId("class-skew");
     await skew.filter({ hasText: "Motion 7 was sent to 3 robots" }).waitFor({ timeout: 20_000 });
     for (const i of [0, 1, 3]) {
@@ -157,6 +162,7 @@ describe("the Class view with four demo robots", () => {
 
     await page.getByLabel("Motion", { exact: true }).selectOption("12");
     await page.getByRole("button", { name: "Run on all 3 robots" }).click();
+    await confirm(page);
     await expect.poll(async () => (await sims(page)).map((s) => s.playing)).toEqual([12, 12, undefined, 12]);
     await page.getByRole("button", { name: "Stop all" }).click();
     for (const i of [0, 1, 3]) {
@@ -185,6 +191,7 @@ describe("the Class view with four demo robots", () => {
     await page.getByTestId("device-card").waitFor();
     await page.getByRole("link", { name: "Class", exact: true }).click();
     await page.getByRole("button", { name: "Run on all 3 robots" }).click();
+    await confirm(page);
     await expect.poll(async () => (await sims(page)).map((s) => s.playing)).toEqual([12, 12, undefined, 12]);
     await page.getByRole("button", { name: "Stop", exact: true }).click();
     for (const i of [0, 1, 3]) {
@@ -213,6 +220,7 @@ describe("the Class view in Korean", () => {
     await page.getByTestId("class-rbm-input").setInputFiles([rbmFile("wave.rbm", exampleText("wave.rbm"))]);
     await page.getByText("검사했어요", { exact: false }).waitFor();
     await page.getByRole("button", { name: "로봇 2대에 업로드" }).click();
+    await confirm(page);
     await page.getByTestId("class-summary").filter({ hasText: "저장 2대" }).waitFor({ timeout: 30_000 });
     for (const i of [0, 1]) {
       await expectText(
@@ -222,6 +230,7 @@ describe("the Class view in Korean", () => {
     }
     // Run on all in Korean, then Escape (nothing focused, no robot in the top bar) stops every class robot.
     await page.getByRole("button", { name: "로봇 2대에서 실행" }).click();
+    await confirm(page);
     for (const i of [0, 1]) {
       await row(page, i)
         .getByTestId("class-result")
@@ -230,6 +239,7 @@ describe("the Class view in Korean", () => {
     }
     await page.getByLabel("모션", { exact: true }).selectOption("12");
     await page.getByRole("button", { name: "로봇 2대에서 실행" }).click();
+    await confirm(page);
     await expect.poll(async () => (await sims(page)).map((s) => s.playing)).toEqual([12, 12]);
     await page.evaluate(() => (document.activeElement as HTMLElement | null)?.blur());
     await page.keyboard.press("Escape");
@@ -262,6 +272,7 @@ describe("the Class view's demo robots keep their memory", () => {
     await page.getByTestId("class-rbm-input").setInputFiles([rbmFile("wave.rbm", exampleText("wave.rbm"))]);
     await page.getByText("Checked: the pack takes", { exact: false }).waitFor();
     await page.getByRole("button", { name: "Upload to 1 robot" }).click();
+    await confirm(page);
     await page.getByTestId("class-summary").filter({ hasText: "Pack upload finished" }).waitFor();
     await expect.poll(async () => squash(await free())).toBe("23,936 of 24,576 bytes free");
 

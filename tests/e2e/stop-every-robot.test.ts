@@ -35,6 +35,8 @@ const runButton = (page: Page) => page.getByRole("button", { name: "Run on all 2
 async function runOnBoth(page: Page, n: number): Promise<void> {
   await page.getByLabel("Motion", { exact: true }).selectOption(String(n));
   await runButton(page).click();
+  // Run on all asks once for the class first (issue 33 item 2).
+  await page.getByTestId("class-confirm").click();
   await expect.poll(async () => (await sims(page)).map((s) => s.playing)).toEqual([n, n]);
 }
 
@@ -69,6 +71,9 @@ describe("Stop reaches every robot of the page, also with no robot in the top ba
 
     // Basic posture first (a robot ignores other motions until 7 has run), then motion 2 (6.6 s).
     await runButton(page).click();
+    await page.getByTestId("class-confirm").click();
+    // Run on all asks once for the class first (issue 33 item 2).
+    await page.getByTestId("class-confirm").click();
     for (let i = 0; i < 2; i++)
       await row(page, i)
         .getByTestId("class-result")

@@ -212,14 +212,15 @@ export function clearPack(ctx: AppContext): void {
 
 // ---- Together ------------------------------------------------------------------------------------------
 
-/** Upload pressed: robots on a cable are asked about first (docs/protocol.md §6.3); demo robots upload at once. */
+/**
+ * Upload pressed: it resets every chosen robot's motion memory, so it asks once for the class first, naming the
+ * robots and what is erased (demo robots too: their memory is kept as a real robot's is). Nothing is sent yet.
+ */
 export function askUpload(ctx: AppContext): void {
   const c = classOf(ctx.store.get());
   if (!packCheck(ctx, c).uploadable || chosenRobots(c).length === 0) return;
-  if (chosenRobots(c).some((r) => !r.demo)) {
-    patchClass(ctx.store, { asking: "upload" });
-    focusSoon("class-cancel-question");
-  } else void uploadNow(ctx);
+  patchClass(ctx.store, { asking: "upload" });
+  focusSoon("class-cancel-question");
 }
 
 export async function uploadNow(ctx: AppContext): Promise<void> {
@@ -242,14 +243,16 @@ export function setRunNumber(ctx: AppContext, number: number): void {
   patchClass(ctx.store, { runNumber: number });
 }
 
-/** Run on all pressed: robots on a cable will move, so it asks once; demo robots run at once. */
+/**
+ * Run on all pressed: the robots will move, so it asks once for the class first, as the Motions view asks one
+ * robot (demo robots too), naming the robots and warning when they are not known to have run Basic posture.
+ * Asked every time: the robots chosen change between runs. Nothing is sent yet.
+ */
 export function askRun(ctx: AppContext): void {
   const c = classOf(ctx.store.get());
   if (chosenRobots(c).length === 0) return;
-  if (chosenRobots(c).some((r) => !r.demo)) {
-    patchClass(ctx.store, { asking: "run" });
-    focusSoon("class-cancel-question");
-  } else void runNow(ctx);
+  patchClass(ctx.store, { asking: "run" });
+  focusSoon("class-cancel-question");
 }
 
 export async function runNow(ctx: AppContext): Promise<void> {

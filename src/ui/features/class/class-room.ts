@@ -153,6 +153,7 @@ export class ClassRoom implements Controller {
     link.detach.push(
       client.stateChanges.on((s) => {
         if (s.mode === "disconnected" && s.reason && this.links.get(id) === link) this.lost(link, s.reason);
+        else if (this.links.get(id) === link) this.mirrorPosture(id, s.basicPostureConfirmed);
       }),
       client.activityChanges.on((activity) => patchRobot(this.store, id, { activity })),
     );
@@ -165,6 +166,7 @@ export class ClassRoom implements Controller {
         firmware: identity.firmware,
         platform: identity.platform,
         activity: client.activity,
+        postureConfirmed: client.state.basicPostureConfirmed,
       });
       await this.readFacts(id);
     } catch (e) {
@@ -175,6 +177,14 @@ export class ClassRoom implements Controller {
         phase: "failed",
         problem: failureNotice(said(classMessages, "class.connectFailed"), e, this.store.get().locale),
       });
+    }
+  }
+
+  /** The robot's client learned (or forgot) that motion 7 answered: the row follows, changed only when it differs. */
+  private mirrorPosture(id: number, confirmed: boolean): void {
+    const row = classOf(this.store.get()).robots.find((r) => r.id === id);
+    if (row && row.phase === "connected" && (row.postureConfirmed ?? false) !== confirmed) {
+      patchRobot(this.store, id, { postureConfirmed: confirmed });
     }
   }
 
@@ -281,8 +291,12 @@ export class ClassRoom implements Controller {
     await runOnEach(this, this.chosenLinks(), number, this.options.now);
   }
 
-  /** Stop for every connected robot (7 to each one playing a motion); never Limp. */
+  /**
+   * Stop for every connected robot (7 to each one playing a motion); never Limp. The page's Stop wins over a
+   * question the view is asking (Run on all, Upload, Limp all): it closes unanswered, so nothing starts after Stop.
+   */
   async stopAll(): Promise<RobotStop[]> {
+    if (classOf(this.store.get()).asking) patchClass(this.store, { asking: undefined });
     return stopEach(this, [...this.links.values()]);
   }
 

@@ -166,9 +166,20 @@ export const classMessages = defineMessages({
   "class.upload.bytes": { en: "{acknowledged} / {total} bytes", ko: "{acknowledged} / {total}바이트" },
   "class.upload.progressLabel": { en: "Upload of {file}", ko: "{file} 업로드" },
   "class.upload.question": {
-    en: { one: "Upload the pack to {count} robot?", other: "Upload the pack to {count} robots?" },
-    ko: "로봇 {count}대에 묶음을 업로드할까요?",
+    en: {
+      one: "Upload the pack to {count} robot, {robots}?",
+      other: "Upload the pack to {count} robots: {robots}?",
+    },
+    ko: "로봇 {count}대({robots})에 묶음을 업로드할까요?",
   },
+  /** What the reset will erase, robot by robot (the motion memory each one last reported in use). */
+  "class.upload.heldNow": {
+    en: "In motion memory now: {list}.",
+    ko: "지금 모션 메모리에 있는 것: {list}.",
+  },
+  "class.upload.heldBytes": { en: "{robot}, {bytes} bytes", ko: "{robot}, {bytes}바이트" },
+  "class.upload.heldEmpty": { en: "{robot}, nothing", ko: "{robot}, 없음" },
+  "class.upload.heldUnknown": { en: "{robot}, not known", ko: "{robot}, 알 수 없음" },
   "class.upload.confirm": {
     en: { one: "Upload to {count} robot", other: "Upload to {count} robots" },
     ko: "로봇 {count}대에 업로드",
@@ -185,12 +196,19 @@ export const classMessages = defineMessages({
     ko: "모션 20번과 21번은 여기에서 실행할 수 없어요. 어떤 펌웨어에서는 20번이 로봇을 꺼야만 끝나는 걷기를 시작해요. 모션 화면에서 로봇 하나씩 실행해 주세요.",
   },
   "class.run.question": {
-    en: { one: "Run motion {number} on {count} robot?", other: "Run motion {number} on {count} robots?" },
-    ko: "로봇 {count}대에서 모션 {number}번을 실행할까요?",
+    en: {
+      one: "Run motion {number} ({name}) on {count} robot, {robots}?",
+      other: "Run motion {number} ({name}) on {count} robots: {robots}?",
+    },
+    ko: "로봇 {count}대({robots})에서 모션 {number}번({name})을 실행할까요?",
   },
-  "class.run.explain": {
-    en: "The robots will move. Clear the table around them and be ready to hold them; Stop all ends the motion.",
-    ko: "로봇이 움직여요. 주변을 비우고 잡을 준비를 해 주세요. 모두 정지를 누르면 모션이 끝나요.",
+  /** After the Motions view's Basic-posture warning: which robots it is about. */
+  "class.run.postureRobots": {
+    en: {
+      one: "{count} robot has not run it on this connection: {robots}.",
+      other: "{count} robots have not run it on this connection: {robots}.",
+    },
+    ko: "이번 연결에서 기본 자세를 실행하지 않은 로봇 {count}대: {robots}.",
   },
   "class.run.confirm": {
     en: { one: "Run on {count} robot", other: "Run on {count} robots" },

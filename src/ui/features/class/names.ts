@@ -65,3 +65,9 @@ export function robotNamed(c: ClassState, id: number): LocalText {
   const r = c.robots.find((robot) => robot.id === id);
   return inEveryLanguage((l) => (r ? robotTitle(translator(classMessages, l), c, r) : `#${id}`));
 }
+
+/** Robots named in a sentence, in the language's own way of listing: "Demo robot 1 and Mina's robot". */
+export function robotList(t: ClassTranslator, c: ClassState, robots: readonly ClassRobot[]): string {
+  const names = robots.map((r) => robotTitle(t, c, r));
+  return new Intl.ListFormat(t.locale, { style: "long", type: "conjunction" }).format(names);
+}

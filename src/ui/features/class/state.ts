@@ -42,6 +42,12 @@ export interface ClassRobot {
   task?: ClassRobotTask;
   /** What the robot is doing, as its client's activity machine tells it (`RbcClient.activityChanges`). */
   activity?: ActivitySnapshot;
+  /**
+   * Motion 7 (Basic posture) answered on this connection, as its client's state says
+   * (`ClientState.basicPostureConfirmed`): until then the robot may ignore every other motion (docs/protocol.md
+   * §3.1), and "Run on all" warns about it.
+   */
+  postureConfirmed?: boolean;
   serialNumber?: string;
   firmware?: { major: number; minor: number };
   platform?: number;

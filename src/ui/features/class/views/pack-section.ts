@@ -18,8 +18,12 @@ import type { ClassTranslator } from "../messages.ts";
 import type { CheckedPackFile, PackCheck } from "../pack-check.ts";
 import { robotTask } from "../robot-task.ts";
 import { type ClassState, chosenRobots } from "../state.ts";
+import { classQuestion } from "./class-question.ts";
 
-/** One motion pack to all: the .rbm files, checked once, and the upload to every selected robot. */
+/**
+ * One motion pack to all: the .rbm files, checked once, and the upload to every selected robot, after one question
+ * under its button naming the robots and what the reset erases.
+ */
 
 function pickFiles(id: string): void {
   document.getElementById(id)?.click();
@@ -133,6 +137,7 @@ export function packSection(ctx: ViewContext, t: ClassTranslator, c: ClassState)
       </button>
       <button type="button" class="btn" ?disabled=${!uploading} @click=${() => cancelAll(ctx)}>${t("class.upload.cancelAll")}</button>
     </div>
+    ${classQuestion(ctx, t, c, ["upload"])}
     ${
       uploading
         ? html`<p class="small num" data-testid="class-upload-overall">${t("class.upload.overall", {

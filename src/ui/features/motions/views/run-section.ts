@@ -147,8 +147,15 @@ export function confirmMove(
   const offer = offerFor(s, number);
   // Motions 20 and 21: the hazard, from the outcome catalogue, every time (docs/protocol.md §3.1).
   const hazard = motionHazardText(number, s.locale);
+  // Escape inside the question cancels it, as in every question of the panel (it is not Stop there).
+  const onKey = (e: KeyboardEvent) => {
+    if (e.key !== "Escape") return;
+    e.preventDefault();
+    e.stopPropagation();
+    cancelMovement(ctx);
+  };
   return html`
-    <div class="confirm confirm--warning" role="alertdialog" aria-labelledby="move-title" aria-describedby="move-stop" data-testid="move-confirm">
+    <div class="confirm confirm--warning" role="alertdialog" aria-labelledby="move-title" aria-describedby="move-stop" data-testid="move-confirm" @keydown=${onKey}>
       <p id="move-title"><strong>${t("motions.run.movementWarning")}</strong></p>
       ${hazard ? html`<p data-testid="motion-hazard"><strong>${hazard}</strong></p>` : nothing}
       <p id="move-stop">${hazard ? "" : t("motions.run.asksOnce")} ${t("motions.run.stopSentence")}</p>
