@@ -8,7 +8,8 @@ import "./rbc-test-globals.ts";
  * The Class view asks what one robot is asked (issue 33 item 2): "Run on all" and "Upload to N robots" ask once
  * for the class, in the Motions view's words (the robot will move; Basic posture first; the reset forgets every
  * earlier download), naming the robots and what the reset erases, before any byte goes to any robot. Cancel and
- * Escape (inside the question) send nothing; the page's Stop closes an open question and stops a class run.
+ * Escape (inside the question) send nothing; the page's Stop closes an open question and stops a class run. The
+ * Motions view's own question takes Escape the same way.
  * English and Korean on one page (the language switch).
  */
 
@@ -120,6 +121,20 @@ describe("the Class view asks before the robots move or their memory is erased",
     expect(runKo).toContain(POSTURE_KO);
     expect(runKo).toContain("이번 연결에서 기본 자세를 실행하지 않은 로봇 2대:");
     expect(runKo).not.toMatch(/\b(the|robots?|motion|run|will|hold|posture|demo)\b/i);
+    // On a phone the question fits the screen: nothing sticks out of it or of the page.
+    await page.setViewportSize({ width: 390, height: 844 });
+    await question(page).scrollIntoViewIfNeeded();
+    const fits = () =>
+      question(page).evaluate((q) => {
+        const box = q.getBoundingClientRect();
+        const inside = [...q.querySelectorAll("*")].every(
+          (e) => e.getBoundingClientRect().right <= box.right + 1,
+        );
+        return box.left >= 0 && box.right <= 390 && inside && document.documentElement.scrollWidth <= 390;
+      });
+    await expect.poll(fits).toBe(true);
+    if (process.env.CLASS_Q_SHOTS) await page.screenshot({ path: "/tmp/class-q-phone.png", fullPage: false });
+    await page.setViewportSize({ width: 1280, height: 800 });
     await page.getByRole("button", { name: "취소", exact: true }).click();
     await expect.poll(() => question(page).count()).toBe(0);
     await page.getByRole("button", { name: "로봇 2대에 업로드" }).click();
@@ -186,6 +201,19 @@ describe("the Class view asks before the robots move or their memory is erased",
     await page.getByRole("button", { name: "Cancel", exact: true }).click();
     await expect.poll(() => question(page).count()).toBe(0);
     expect(await robots(page)).toEqual(stored);
+
+    // The Motions view's own question takes Escape the same way: it cancels, nothing runs.
+    await page.getByRole("link", { name: "Robot", exact: true }).click();
+    await page.getByRole("button", { name: "Try the demo robot" }).click();
+    await page.getByTestId("device-card").waitFor();
+    await page.getByRole("link", { name: "Motions", exact: true }).click();
+    await page.getByRole("tab", { name: "Run" }).click();
+    await page.locator('[data-motion="7"]').click();
+    await page.getByTestId("move-confirm").waitFor();
+    await expect.poll(() => focusedId(page)).toBe("confirm-move");
+    await page.keyboard.press("Escape");
+    await expect.poll(() => page.getByTestId("move-confirm").count()).toBe(0);
+    expect(await page.getByTestId("running-motion").count()).toBe(0);
     await context.close();
   });
 });
