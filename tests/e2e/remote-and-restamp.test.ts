@@ -90,7 +90,7 @@ describe("the Remote card", () => {
     await expect.poll(() => card.getByTestId("remote-key").count()).toBe(33);
     await expectText(
       card.getByTestId("remote-firmware"),
-      "This robot reports firmware 2.23: its number keys play the downloaded motions. On the official “user” firmware (which reports 9.99) key 9 instead starts an endless walk that only switching the robot off ends.",
+      "This robot reports firmware 2.23: its number keys play the uploaded motions. On the official “user” firmware (which reports 9.99) key 9 instead starts an endless walk that only switching the robot off ends.",
     );
     // Built-in 4, key 1 (the motion memory reads wholly free), key 9's hazard, and the # keys.
     await expectText(tile(page, 4), "code 4 Walk forward");

@@ -16,13 +16,24 @@ import "./rbc-test-globals.ts";
 
 const app = useApp();
 
-/** The demo robot's stored motions (count) and the bytes the panel has sent it. */
+/**
+ * The files the demo robot's memory has received (its EEPROM slots written since it was new: a reset makes the
+ * robot forget them, docs/protocol.md §6.1, but leaves their bytes until overwritten).
+ */
 const demoMotions = (page: Page) => page.evaluate(() => window.__rbcDemoSim?.motions.length ?? -1);
+
+/** How many motions the robot holds, as its free memory counts them (Memory tab), then back to Files. */
+async function motionCount(page: Page): Promise<string> {
+  await showTabById(page, "uploads");
+  const count = squash(await page.getByTestId("mem-motion-count").textContent());
+  await showTabById(page, "files");
+  return count;
+}
 
 const TABS = ["files", "uploads", "run", "sounds"] as const;
 
 async function showTabById(page: Page, id: (typeof TABS)[number]): Promise<void> {
-  await page.locator(`[role=tab][aria-controls="motions-panel-${id}"]`).click();
+  await page.locator(`#motions-tab-${id}`).click();
   await page.locator(`#motions-panel-${id}`).waitFor();
 }
 
@@ -113,6 +124,7 @@ describe("the same motion uploaded twice (English)", () => {
     await wave.getByText(/^Uploaded wave\.rbm/).filter({ hasText: "Stored as motion 13 (key 2)" }).waitFor();
     expect(await demoMotions(page)).toBe(2);
     await expectText(page.getByTestId("mem-motion-text"), "23,296 of 24,576 bytes free");
+    expect(await motionCount(page)).toMatch(/^2 of 20 motions/);
 
     // Replace: the question names the first copy, says the second is erased too; one copy is left.
     await upload.click();
@@ -125,7 +137,11 @@ describe("the same motion uploaded twice (English)", () => {
       .filter({ hasText: "Free motion memory: 23,936 of" })
       .waitFor();
     await expectText(wave, "Stored as motion 12 (key 1)", { contains: true });
-    expect(await demoMotions(page)).toBe(1);
+    await expectText(wave, "The motion memory had been reset first", { contains: true });
+    expect(await motionCount(page)).toMatch(/^1 of 20 motions/);
+    await expectText(page.getByTestId("mem-motion-text"), "23,936 of 24,576 bytes free");
+    // Slot 1 holds the image again (a reset forgets slot 2 without erasing its bytes).
+    expect(await demoMotions(page)).toBe(2);
 
     // A file with errors: the list is below the refusal that points to it.
     await page
@@ -162,7 +178,7 @@ describe("the same motion uploaded twice (Korean)", () => {
     await upload.click();
     const question = page.getByTestId("already-stored");
     await question.waitFor();
-    await expectText(question, "같은 모션을 이 브라우저에서 업로드했을 때 모션 12번(키 1)으로 저장했어요.", {
+    await expectText(question, "같은 모션을 이 브라우저에서 업로드했을 때 모션 12번(1번 키)으로 저장했어요.", {
       contains: true,
     });
     await question.getByRole("button", { name: "모션 12번 바꾸기" }).waitFor();

@@ -309,15 +309,15 @@ export const motionsMessages = defineMessages({
     ko: "같은 모션을 이 브라우저에서 업로드했을 때 모션 {number}번({key})으로 저장했어요.",
   },
   "motions.upload.sameReplace": {
-    en: "Replace: the robot cannot erase a single motion, so its whole motion memory is reset first (every motion on it is erased) and this upload is stored as motion {number} again.",
+    en: "Replace: the robot cannot forget a single motion, so its motion memory is reset first (the robot forgets every motion on it) and this upload is stored as motion {number} again.",
     ko: "바꾸기: 로봇은 모션 하나만 지울 수 없어서, 먼저 모션 메모리 전체를 초기화하고(로봇의 모션이 모두 지워져요) 이번 업로드를 다시 모션 {number}번으로 저장해요.",
   },
   "motions.upload.sameReplaceLater": {
-    en: "Replace: the robot cannot erase a single motion, so its whole motion memory is reset first (every motion on it is erased, motions {later} too) and this upload is stored as motion {number} again.",
+    en: "Replace: the robot cannot forget a single motion, so its motion memory is reset first (the robot forgets every motion on it, motions {later} too) and this upload is stored as motion {number} again.",
     ko: "바꾸기: 로봇은 모션 하나만 지울 수 없어서, 먼저 모션 메모리 전체를 초기화하고(로봇의 모션이 모두 지워지고, 모션 {later}번도 지워져요) 이번 업로드를 다시 모션 {number}번으로 저장해요.",
   },
   "motions.upload.sameNoReplace": {
-    en: "Replace is not possible: the robot cannot erase a single motion, only its whole motion memory, which would also erase the motions stored before motion {number}.",
+    en: "Replace is not possible: the robot cannot forget a single motion, only every motion at once, which would also forget the motions stored before motion {number}.",
     ko: "바꿀 수 없어요. 로봇은 모션 하나만 지울 수 없고 모션 메모리 전체만 지울 수 있어서, 모션 {number}번 앞에 저장된 모션도 지워져요.",
   },
   "motions.upload.sameKeep": {

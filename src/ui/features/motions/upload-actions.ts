@@ -294,7 +294,7 @@ export async function startUpload(ctx: AppContext, target: UploadTarget): Promis
   } finally {
     if (controller.upload === abort) controller.upload = undefined;
   }
-  return uploadSucceeded(ctx, payload, result, real);
+  return uploadSucceeded(ctx, payload, result, real, didReset);
 }
 
 export function setResetFirst(ctx: AppContext, area: "motion" | "action", on: boolean): void {
