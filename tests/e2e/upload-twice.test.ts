@@ -99,9 +99,13 @@ describe("the same motion uploaded twice (English)", () => {
     await expectText(question, "uploaded now; the robot's memory accounting showed it stored", {
       contains: true,
     });
-    await expectText(question, "Keep both: this upload is stored as the next motion and takes 640 more bytes", {
-      contains: true,
-    });
+    await expectText(
+      question,
+      "Keep both: this upload is stored as the next motion and takes 640 more bytes",
+      {
+        contains: true,
+      },
+    );
     const replace = question.getByRole("button", { name: "Replace motion 12" });
     const keep = question.getByRole("button", { name: "Keep both" });
     const cancel = question.getByRole("button", { name: "Cancel", exact: true });
@@ -121,7 +125,10 @@ describe("the same motion uploaded twice (English)", () => {
     await upload.click();
     await question.waitFor();
     await keep.click();
-    await wave.getByText(/^Uploaded wave\.rbm/).filter({ hasText: "Stored as motion 13 (key 2)" }).waitFor();
+    await wave
+      .getByText(/^Uploaded wave\.rbm/)
+      .filter({ hasText: "Stored as motion 13 (key 2)" })
+      .waitFor();
     expect(await demoMotions(page)).toBe(2);
     await expectText(page.getByTestId("mem-motion-text"), "23,296 of 24,576 bytes free");
     expect(await motionCount(page)).toMatch(/^2 of 20 motions/);
@@ -173,14 +180,21 @@ describe("the same motion uploaded twice (Korean)", () => {
     await expectText(upload, "로봇에 업로드");
     await upload.click();
     await expect.poll(() => demoMotions(page)).toBe(1);
-    await wave.getByText(/모션 12번/).first().waitFor();
+    await wave
+      .getByText(/모션 12번/)
+      .first()
+      .waitFor();
 
     await upload.click();
     const question = page.getByTestId("already-stored");
     await question.waitFor();
-    await expectText(question, "같은 모션을 이 브라우저에서 업로드했을 때 모션 12번(1번 키)으로 저장했어요.", {
-      contains: true,
-    });
+    await expectText(
+      question,
+      "같은 모션을 이 브라우저에서 업로드했을 때 모션 12번(1번 키)으로 저장했어요.",
+      {
+        contains: true,
+      },
+    );
     await question.getByRole("button", { name: "모션 12번 바꾸기" }).waitFor();
     await question.getByRole("button", { name: "둘 다 두기" }).waitFor();
     await question.getByRole("button", { name: "취소", exact: true }).click();
