@@ -217,3 +217,38 @@ describe("the same motion uploaded twice (Korean)", () => {
     await context.close();
   });
 });
+
+describe("the same motion uploaded twice from the Editor", () => {
+  it("asks in the Editor's card, Cancel sends nothing, and Replace leaves one copy that the card knows", async () => {
+    const { page, context } = await openConnected(app, { options: FAST });
+    await page.getByTestId("memory-motion-text").filter({ hasText: "24,576" }).waitFor();
+    await page.getByRole("link", { name: "Editor", exact: true }).click();
+    await page.getByTestId("editor").waitFor();
+    await page.getByRole("button", { name: "Add after" }).click();
+    await page.locator("#scene-opt-1[aria-current=true]").waitFor();
+    await page.locator("#editor-tab-play").click();
+    const editorCard = page.getByTestId("editor-upload");
+    await editorCard.waitFor();
+    const upload = page.getByRole("button", { name: "Upload to robot" });
+    const copy = editorCard.getByTestId("editor-robot-copy");
+    await upload.click();
+    await expectText(copy, "The robot holds this motion as motion 12 (remote key 1).");
+
+    await upload.click();
+    const question = editorCard.getByTestId("already-stored");
+    await question.waitFor();
+    await expectText(question, "stored as motion 12 (key 1)", { contains: true });
+    await question.getByRole("button", { name: "Cancel", exact: true }).click();
+    await expect.poll(() => question.count()).toBe(0);
+    expect(await demoMotions(page)).toBe(1);
+
+    await upload.click();
+    await question.getByRole("button", { name: "Replace motion 12" }).click();
+    await editorCard
+      .locator(".upload-in-place .notice")
+      .filter({ hasText: "The motion memory had been reset first" })
+      .waitFor();
+    await expectText(copy, "The robot holds this motion as motion 12 (remote key 1).");
+    await context.close();
+  });
+});
