@@ -464,7 +464,7 @@ describe("in Korean (ko-KR)", () => {
         await expectText(edited.locator(".issue--error"), /^오류 장면 0의 프레임 간격이 10ms예요 /);
         await expectText(
           edited.getByTestId("upload-why"),
-          "업로드할 수 없어요. 파일에 오류가 1개 있어요 (위 목록). 아무것도 보내지 않아요.",
+          "업로드할 수 없어요. 파일에 오류가 1개 있어요 (아래 목록). 아무것도 보내지 않아요.",
         );
         await expectGood(page, "files-checked", viewport);
 

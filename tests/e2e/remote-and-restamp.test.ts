@@ -146,7 +146,7 @@ describe("the Remote card", () => {
       "This robot reports firmware 9.99, as the official “user” firmware (and a homebrew port of it) does",
       { contains: true },
     );
-    await expectText(tile(page, 12), "1 key 1 · code 12 Nothing on this firmware (it plays no downloads)");
+    await expectText(tile(page, 12), "1 key 1 · code 12 Nothing on this firmware (it plays no uploads)");
     await expectText(
       tile(page, 20),
       "9 key 9 · code 20 Hazard: An endless walk: only switching the robot off ends it",
