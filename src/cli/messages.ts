@@ -161,7 +161,7 @@ export const cliMessages = defineMessages({
     ko: "모션 파일에 문제가 있어요.",
   },
 
-  "cli.motion.downloaded": { en: "{motion} (downloaded, {key})", ko: "{motion} (다운로드한 모션, {key})" },
+  "cli.motion.downloaded": { en: "{motion} (uploaded, {key})", ko: "{motion} (업로드한 모션, {key})" },
   "cli.motion.recorded": { en: "{motion} ({name}, {key})", ko: "{motion} ({name}, {key})" },
 
   "cli.play.moveWarning": {

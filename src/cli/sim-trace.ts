@@ -30,11 +30,11 @@ const DROP_WORDS: Record<DropReason, string> = {
   contents: "dropped: unexpected contents",
   busy: "ignored: a motion or a sound is playing",
   "needs-basic-posture": "ignored: motion 7 has not run since power-up",
-  "empty-slot": "ignored: no downloaded motion in that slot (error 3)",
+  "empty-slot": "ignored: no uploaded motion in that slot (error 3)",
   "not-modelled": "ignored: not modelled by the simulator",
   "download-refused": "refused: no room, or too many files (error 3/4)",
-  "download-chunk-checksum": "chunk checksum wrong: download abandoned (error 2)",
-  "download-timeout": "download abandoned after silence",
+  "download-chunk-checksum": "chunk checksum wrong: upload abandoned (error 2)",
+  "download-timeout": "upload abandoned after silence",
   "zero-out-of-range": "refused: a zero value is out of range (error 7)",
 };
 

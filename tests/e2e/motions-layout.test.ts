@@ -141,7 +141,7 @@ describe("motions view layout", () => {
         await showTab(page, tab);
         if (tab === "Run") {
           await page.locator('[data-testid="downloaded-motions"] [data-motion="12"]').waitFor();
-          await page.getByText(/Other download slots/).click();
+          await page.getByText(/Other upload slots/).click();
         }
         expect(await overflowingButtons(page), `${tab} at ${viewport.width} px`).toEqual([]);
         // Nor does the page scroll sideways.

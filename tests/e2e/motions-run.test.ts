@@ -127,7 +127,7 @@ describe("motions view: running motions and sounds", () => {
     await page.getByText("Motion 7 (Basic posture) finished. The robot now accepts every motion.").waitFor({
       timeout: 6000,
     });
-    await page.getByText(/Other download slots/).click();
+    await page.getByText(/Other upload slots/).click();
     // The click happens while the robot's time stands still, so `started` is the robot's time of the click
     // however long the click takes on a busy machine.
     await holdRobot(page);
@@ -198,7 +198,7 @@ describe("motions view: running motions and sounds", () => {
         }
       }).observe(document.body, { subtree: true, childList: true, characterData: true });
     });
-    await page.getByText(/Other download slots/).click();
+    await page.getByText(/Other upload slots/).click();
     await holdRobot(page);
     const started = await robotNow(page);
     const ignored = await watchText(

@@ -71,7 +71,7 @@ describe("motions view", () => {
     await expectText(card, "RbcPanel_Wave", { contains: true });
     await expectText(card, /Scenes\s*6 Servos\s*16/);
     await expectText(card, /Plays for\s*3\.2 s/);
-    await expectText(card, /Sent to the robot\s*624 bytes/);
+    await expectText(card, /To send to the robot\s*624 bytes/);
     await expectText(card, /Memory it takes\s*640 bytes/);
     // The scene table and the chart (uPlot, loaded on demand).
     await page.getByTestId("scene-section").waitFor();
@@ -185,7 +185,7 @@ describe("motions view", () => {
     await expect.poll(() => upload.isDisabled()).toBe(true);
     await expectText(
       page.getByTestId("upload-why"),
-      "Cannot upload: the file has 1 error (listed above). Nothing is sent.",
+      "Cannot upload: the file has 1 error (listed below). Nothing is sent.",
     );
     await upload.click({ force: true }).catch(() => {});
     await robotTime(page, 200);
@@ -266,7 +266,7 @@ describe("motions view", () => {
     await fact("Scenes", motion.scenes.length);
     await fact("Servos", motion.servos.length);
     await fact("Plays for", formatSeconds(motionDurationMs(motion)));
-    await fact("Sent to the robot", `${image.length.toLocaleString("en-US")} bytes`);
+    await fact("To send to the robot", `${image.length.toLocaleString("en-US")} bytes`);
     await fact("Memory it takes", `${memoryFootprint(image.length).toLocaleString("en-US")} bytes`);
     await expectText(card, "Checked: no errors, no warnings.", { contains: true });
     await expect.poll(() => page.locator(".scene-table tbody tr").count()).toBe(motion.scenes.length);
@@ -464,7 +464,7 @@ describe("in Korean (ko-KR)", () => {
         await expectText(edited.locator(".issue--error"), /^오류 장면 0의 프레임 간격이 10ms예요 /);
         await expectText(
           edited.getByTestId("upload-why"),
-          "업로드할 수 없어요. 파일에 오류가 1개 있어요 (위 목록). 아무것도 보내지 않아요.",
+          "업로드할 수 없어요. 파일에 오류가 1개 있어요 (아래 목록). 아무것도 보내지 않아요.",
         );
         await expectGood(page, "files-checked", viewport);
 
@@ -523,7 +523,7 @@ describe("in Korean (ko-KR)", () => {
         const action = page.getByTestId("action-card");
         await action.getByText("wave.act, 100바이트").waitFor();
         await action.getByRole("button", { name: "액션 파일 업로드" }).waitFor();
-        await action.getByLabel("먼저 액션 메모리 초기화 (다운로드한 액션을 모두 지워요)").waitFor();
+        await action.getByLabel("먼저 액션 메모리 초기화 (업로드한 액션을 모두 지워요)").waitFor();
         await expectText(action.locator("label.file-button"), "액션 파일 고르기…");
         await expectGood(page, "memory", viewport);
 
@@ -534,14 +534,14 @@ describe("in Korean (ko-KR)", () => {
         await expectText(run.getByRole("heading", { level: 2 }), "모션 실행");
         await expect
           .poll(() => texts(run.getByRole("heading", { level: 3 })))
-          .toEqual(["내장 모션", "다운로드한 모션"]);
+          .toEqual(["내장 모션", "업로드한 모션"]);
         await expectText(
           page.getByTestId("posture-guidance"),
           "로봇을 켠 뒤에는 기본 자세(7)만 받아들여요. 먼저 기본 자세를 실행해 주세요. 그 전까지는 다른 모션을 모두 아무 말 없이 무시해요.",
         );
         await expectText(run.locator('[data-motion="7"]'), "7 기본 자세 1.8초 먼저 실행");
         await expectText(run.locator('[data-motion="12"]'), "12 RbcPanel_Wave 1번 키 3.2초");
-        await run.getByText("다른 다운로드 슬롯 (19)").click();
+        await run.getByText("다른 업로드 슬롯 (19)").click();
         // The slot button shows its number and key; a screen reader hears "모션 13번 실행" and the key.
         await run.getByRole("button", { name: /^모션 13\s?번 실행 2번 키$/ }).waitFor();
         await run.locator('[data-motion="7"]').click();

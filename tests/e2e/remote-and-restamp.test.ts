@@ -90,7 +90,7 @@ describe("the Remote card", () => {
     await expect.poll(() => card.getByTestId("remote-key").count()).toBe(33);
     await expectText(
       card.getByTestId("remote-firmware"),
-      "This robot reports firmware 2.23: its number keys play the downloaded motions. On the official “user” firmware (which reports 9.99) key 9 instead starts an endless walk that only switching the robot off ends.",
+      "This robot reports firmware 2.23: its number keys play the uploaded motions. On the official “user” firmware (which reports 9.99) key 9 instead starts an endless walk that only switching the robot off ends.",
     );
     // Built-in 4, key 1 (the motion memory reads wholly free), key 9's hazard, and the # keys.
     await expectText(tile(page, 4), "code 4 Walk forward");
@@ -146,7 +146,7 @@ describe("the Remote card", () => {
       "This robot reports firmware 9.99, as the official “user” firmware (and a homebrew port of it) does",
       { contains: true },
     );
-    await expectText(tile(page, 12), "1 key 1 · code 12 Nothing on this firmware (it plays no downloads)");
+    await expectText(tile(page, 12), "1 key 1 · code 12 Nothing on this firmware (it plays no uploads)");
     await expectText(
       tile(page, 20),
       "9 key 9 · code 20 Hazard: An endless walk: only switching the robot off ends it",

@@ -74,7 +74,7 @@ describe("the robot's shelf on the demo robot", () => {
       page.locator('[data-testid="downloaded-motions"] [data-motion="12"]'),
       "12 RbcPanel_Wave key 1 3.2 s",
     );
-    await expectText(page.locator(".other-slots summary"), "Other download slots (19)");
+    await expectText(page.locator(".other-slots summary"), "Other upload slots (19)");
     await expectText(page.locator('[data-slot-motion="33"]'), "Run motion 33 * then 1");
     // Basic posture first (a new robot ignores the rest until it has run, docs/protocol.md §3.1).
     await page.locator('[data-motion="7"]').click();
@@ -97,7 +97,7 @@ describe("the robot's shelf on the demo robot", () => {
     await entry.getByTestId("run-now").click();
     await page.locator("#confirm-move").click();
     await page.getByText("Motion 12 (RbcPanel_Wave) finished.").waitFor();
-    await expectText(page.locator(".other-slots summary"), "Other download slots (19)");
+    await expectText(page.locator(".other-slots summary"), "Other upload slots (19)");
     await expectPageOk(page, "the Run tab after a reload", { lang: "en" });
     // The Remote card names key 1 from the shelf too (not only from this connection's uploads).
     await page.getByRole("link", { name: "Sensors", exact: true }).click();

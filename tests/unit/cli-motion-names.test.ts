@@ -12,11 +12,11 @@ describe("rbc's motion names", () => {
   });
 
   it("a downloaded motion by the number Run takes and its remote key, never the slot's own count", () => {
-    expect(motionName(12)).toBe("12 (downloaded, key 1)");
-    expect(motionName(21)).toBe("21 (downloaded, key 0)");
-    expect(motionName(33)).toBe("33 (downloaded, * then 1)");
-    expect(motionName(42, "ko")).toBe("42 (다운로드한 모션, * 다음 0번 키)");
-    expect(motionName(12, "ko")).toBe("12 (다운로드한 모션, 1번 키)");
+    expect(motionName(12)).toBe("12 (uploaded, key 1)");
+    expect(motionName(21)).toBe("21 (uploaded, key 0)");
+    expect(motionName(33)).toBe("33 (uploaded, * then 1)");
+    expect(motionName(42, "ko")).toBe("42 (업로드한 모션, * 다음 0번 키)");
+    expect(motionName(12, "ko")).toBe("12 (업로드한 모션, 1번 키)");
   });
 
   it("with the name rbc recorded uploading it (rbc shelf)", () => {

@@ -175,7 +175,7 @@ describe("the Editor's upload on the demo robot", () => {
     expect(motionIssues(bad).errors.length).toBe(1);
     const payload = uploadPayload(ctx, editorUploadTarget(bad));
     expect(payload).toEqual({
-      refused: "Cannot upload: the file has 1 error (listed above). Nothing is sent.",
+      refused: "Cannot upload: the file has 1 error (listed below). Nothing is sent.",
     });
     const before = packetLog.size;
     const state = ctx.store.get();

@@ -24,10 +24,10 @@ const STOPPED: UploadFailureFacts = {
 describe("an upload's failure in words", () => {
   it("says where it stopped, what the robot reports and what its memory shows, in both languages", () => {
     expect(uploadFailureText(STOPPED, "en")).toBe(
-      "The robot stopped acknowledging (128 of 624 bytes were acknowledged). The robot reports: checksum error (a download chunk was corrupted) (which this program's own abandon bytes also cause). The robot recorded nothing: its free motion memory is unchanged (24,576 bytes). Upload it again.",
+      "The robot stopped acknowledging (128 of 624 bytes were acknowledged). The robot reports: checksum error (an upload chunk was corrupted) (which this program's own abandon bytes also cause). The robot recorded nothing: its free motion memory is unchanged (24,576 bytes). Upload it again.",
     );
     expect(uploadFailureText(STOPPED, "ko")).toBe(
-      "로봇이 확인 응답을 멈췄어요 (624바이트 중 128바이트를 받았다고 확인했어요). 로봇이 알려 온 오류: 체크섬 오류 (다운로드한 조각이 손상됨) (이 프로그램이 업로드를 그만둘 때 보내는 바이트도 이 오류를 일으켜요). 로봇은 아무것도 기록하지 않았어요. 남은 모션 메모리가 그대로예요 (24,576바이트). 다시 업로드해 주세요.",
+      "로봇이 확인 응답을 멈췄어요 (624바이트 중 128바이트를 받았다고 확인했어요). 로봇이 알려 온 오류: 체크섬 오류 (업로드한 조각이 손상됨) (이 프로그램이 업로드를 그만둘 때 보내는 바이트도 이 오류를 일으켜요). 로봇은 아무것도 기록하지 않았어요. 남은 모션 메모리가 그대로예요 (24,576바이트). 다시 업로드해 주세요.",
     );
   });
 

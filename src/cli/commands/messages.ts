@@ -161,12 +161,12 @@ export const commandMessages = defineMessages({
     ko: "로봇이 시리얼 번호를 알려 주지 않아서 파일이 이 로봇용인지는 확인하지 않았어요.",
   },
   "cmd.upload.resetWarnMotion": {
-    en: "--reset will first forget every downloaded motion on the robot.",
-    ko: "--reset은 먼저 로봇에 다운로드한 모션을 모두 지워요.",
+    en: "--reset will first forget every uploaded motion on the robot.",
+    ko: "--reset은 먼저 로봇에 업로드한 모션을 모두 지워요.",
   },
   "cmd.upload.resetWarnAction": {
-    en: "--reset will first forget every downloaded action on the robot.",
-    ko: "--reset은 먼저 로봇에 다운로드한 액션을 모두 지워요.",
+    en: "--reset will first forget every uploaded action on the robot.",
+    ko: "--reset은 먼저 로봇에 업로드한 액션을 모두 지워요.",
   },
   "cmd.upload.question": {
     en: "Upload {file} to the robot on {robot}?",
@@ -177,12 +177,12 @@ export const commandMessages = defineMessages({
     ko: "업로드를 확인하지 않아서 아무것도 보내지 않았어요.",
   },
   "cmd.upload.resetMotion": {
-    en: "Reset the motion memory pointer: the robot's downloaded motions are forgotten.",
-    ko: "모션 메모리 포인터를 초기화했어요. 로봇에 다운로드한 모션은 모두 지워졌어요.",
+    en: "Reset the motion memory pointer: the robot's uploaded motions are forgotten.",
+    ko: "모션 메모리 포인터를 초기화했어요. 로봇에 업로드한 모션은 모두 지워졌어요.",
   },
   "cmd.upload.resetAction": {
-    en: "Reset the action memory pointer: the robot's downloaded actions are forgotten.",
-    ko: "액션 메모리 포인터를 초기화했어요. 로봇에 다운로드한 액션은 모두 지워졌어요.",
+    en: "Reset the action memory pointer: the robot's uploaded actions are forgotten.",
+    ko: "액션 메모리 포인터를 초기화했어요. 로봇에 업로드한 액션은 모두 지워졌어요.",
   },
   "cmd.upload.interrupted": {
     en: "upload interrupted: {acknowledged} of {total} bytes were acknowledged (outcome: {outcome}). {what}",
@@ -222,8 +222,8 @@ export const commandMessages = defineMessages({
     ko: "저장된 번호: 모션 {motion} (리모컨: {key}). 재생하려면: `rbc run {motion}`. 처음에는 로봇을 잡거나 눕힌 채로 실행해 주세요.",
   },
   "cmd.upload.numberUnknown": {
-    en: "The robot already held downloaded motions and does not say how many, so this one's number is not known: the first 10 uploads play with `rbc run 12` … `rbc run 21`, the next 10 with 33 … 42. Upload with --reset to make it motion 12 (the others are forgotten).",
-    ko: "로봇에 이미 다운로드한 모션이 있었고 몇 개인지 알려 주지 않아서, 이 모션의 번호는 알 수 없어요. 처음 10개는 `rbc run 12` … `rbc run 21`로, 그다음 10개는 33 … 42로 재생해요. --reset을 붙여 업로드하면 모션 12가 돼요 (다른 모션은 지워져요).",
+    en: "The robot already held uploaded motions and does not say how many, so this one's number is not known: the first 10 uploads play with `rbc run 12` … `rbc run 21`, the next 10 with 33 … 42. Upload with --reset to make it motion 12 (the others are forgotten).",
+    ko: "로봇에 이미 업로드한 모션이 있었고 몇 개인지 알려 주지 않아서, 이 모션의 번호는 알 수 없어요. 처음 10개는 `rbc run 12` … `rbc run 21`로, 그다음 10개는 33 … 42로 재생해요. --reset을 붙여 업로드하면 모션 12가 돼요 (다른 모션은 지워져요).",
   },
 
   "cmd.run.noMotion": {

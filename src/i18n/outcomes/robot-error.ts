@@ -12,8 +12,8 @@ export const robotErrorMessages = defineMessages({
   "outcome.robotError.none": { en: "no error", ko: "오류 없음" },
   "outcome.robotError.eeprom": { en: "serial EEPROM write error", ko: "시리얼 EEPROM 쓰기 오류" },
   "outcome.robotError.checksum": {
-    en: "checksum error (a download chunk was corrupted)",
-    ko: "체크섬 오류 (다운로드한 조각이 손상됨)",
+    en: "checksum error (an upload chunk was corrupted)",
+    ko: "체크섬 오류 (업로드한 조각이 손상됨)",
   },
   "outcome.robotError.motionsFull": {
     en: "too many motions, or motion memory full",

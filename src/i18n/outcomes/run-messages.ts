@@ -75,8 +75,8 @@ export const runOutcomeMessages = defineMessages({
     ko: "모션 20은 리모컨 키 9예요. 공식 펌웨어에서는 끝나지 않는 장애물 회피 걷기를 시작하고, 정지나 모션 7로도 멈추지 않아요. 로봇의 전원을 꺼야만 멈춰요.",
   },
   "outcome.run.hazard21": {
-    en: "Motion 21 is remote key 0: on the official firmware it plays a demo motion kept in the controller, not a download; on other firmware what it does is not known.",
-    ko: "모션 21은 리모컨 키 0이에요. 공식 펌웨어에서는 다운로드한 모션이 아니라 컨트롤러에 들어 있는 데모 모션을 재생해요. 다른 펌웨어에서는 무엇을 하는지 알 수 없어요.",
+    en: "Motion 21 is remote key 0: on the official firmware it plays a demo motion kept in the controller, not an upload; on other firmware what it does is not known.",
+    ko: "모션 21은 리모컨 키 0이에요. 공식 펌웨어에서는 업로드한 모션이 아니라 컨트롤러에 들어 있는 데모 모션을 재생해요. 다른 펌웨어에서는 무엇을 하는지 알 수 없어요.",
   },
   "outcome.notSupported": {
     en: "This robot's firmware does not support the request.",

@@ -27,7 +27,7 @@ export const situationMessages = defineMessages({
     ko: "소리 번호는 1-25여야 해요. 받은 값: {sound}. 아무것도 보내지 않았어요.",
   },
   "outcome.notEnoughMemory": {
-    en: "Not enough {area} memory: the file has {total} bytes, {free} are free. Reset the {area} memory (this forgets every downloaded {area}) and try again. Nothing was sent.",
+    en: "Not enough {area} memory: the file has {total} bytes, {free} are free. Reset the {area} memory (this forgets every uploaded {area}) and try again. Nothing was sent.",
     ko: "{area} 메모리가 부족해요. 파일은 {total}바이트인데 남은 공간은 {free}바이트예요. {area} 메모리를 초기화하고 다시 해 주세요 (초기화하면 내려받은 {area}을(를) 모두 잊어요). 아무것도 보내지 않았어요.",
   },
   "outcome.alreadyConnected": { en: "Already connected.", ko: "이미 연결되어 있어요." },

@@ -25,8 +25,8 @@ export const uploadOutcomeMessages = defineMessages({
     ko: "업로드를 취소했어요 ({total}바이트 중 {acknowledged}바이트를 받았다고 확인했어요).",
   },
   "outcome.uploadStop.startNotAcknowledged": {
-    en: "The robot did not acknowledge the start of the download ({acknowledged} of {total} bytes were acknowledged); it may have refused it.",
-    ko: "로봇이 다운로드 시작을 확인하지 않았어요 ({total}바이트 중 {acknowledged}바이트를 받았다고 확인했어요). 거부했을 수도 있어요.",
+    en: "The robot did not acknowledge the start of the upload ({acknowledged} of {total} bytes were acknowledged); it may have refused it.",
+    ko: "로봇이 업로드 시작을 확인하지 않았어요 ({total}바이트 중 {acknowledged}바이트를 받았다고 확인했어요). 거부했을 수도 있어요.",
   },
   "outcome.uploadStop.stoppedAcknowledging": {
     en: "The robot stopped acknowledging ({acknowledged} of {total} bytes were acknowledged).",

@@ -106,8 +106,8 @@ export const classMessages = defineMessages({
     ko: "파일 {count}개에 로봇이 거부할 오류가 있어요. 먼저 빼거나 고쳐 주세요. 묶음에 있는 동안은 아무것도 보내지 않아요.",
   },
   "class.pack.tooMany": {
-    en: "The pack has {count} files; a robot has 20 download slots.",
-    ko: "묶음에 파일이 {count}개 있어요. 로봇의 다운로드 슬롯은 20개예요.",
+    en: "The pack has {count} files; a robot has 20 upload slots.",
+    ko: "묶음에 파일이 {count}개 있어요. 로봇의 업로드 슬롯은 20개예요.",
   },
   "class.pack.doesNotFit": {
     en: "The pack takes {bytes} bytes: more than the {size} bytes of motion memory.",

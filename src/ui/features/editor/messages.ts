@@ -923,8 +923,8 @@ export const editorMessages = defineMessages({
     ko: "이전 버전 실행: 모션 {number}번({key})",
   },
   "editor.robot.numberUnknown": {
-    en: "The robot stored it, but in which slot is not known (it held downloads the panel did not see arrive), so there is no number to run it by. Tick “Reset motion memory first” above and upload again to know it.",
-    ko: "로봇에 저장했지만 어느 슬롯인지 알 수 없어요(패널이 모르는 다운로드가 이미 있었어요). 그래서 실행할 번호가 없어요. 번호를 알려면 위의 “먼저 모션 메모리 초기화”를 선택하고 다시 업로드해 주세요.",
+    en: "The robot stored it, but in which slot is not known (it held uploads the panel did not see arrive), so there is no number to run it by. Tick “Reset motion memory first” above and upload again to know it.",
+    ko: "로봇에 저장했지만 어느 슬롯인지 알 수 없어요(패널이 모르는 업로드가 이미 있었어요). 그래서 실행할 번호가 없어요. 번호를 알려면 위의 “먼저 모션 메모리 초기화”를 선택하고 다시 업로드해 주세요.",
   },
 });
 

@@ -75,7 +75,7 @@ export const motionsMessages = defineMessages({
   "motions.files.playsFor": { en: "Plays for", ko: "재생 시간" },
   // What the robot receives (the motion image, docs/protocol.md §6.3) and the memory it then takes (whole
   // 64-byte chunks, §6.2), in plain words.
-  "motions.files.image": { en: "Sent to the robot", ko: "로봇에 보낼 크기" },
+  "motions.files.image": { en: "To send to the robot", ko: "로봇에 보낼 크기" },
   "motions.files.onRobot": { en: "Memory it takes", ko: "차지할 메모리" },
   "motions.files.bytes": { en: "{bytes} bytes", ko: "{bytes}바이트" },
   "motions.files.unusable": {
@@ -222,28 +222,28 @@ export const motionsMessages = defineMessages({
     ko: "마지막 초기화나 전원을 켠 뒤로 액션 {max}개 중 {stored}개 저장됨",
   },
   "motions.memory.resetMotion": {
-    en: "Reset motion memory first (forgets earlier downloads; the upload becomes motion 12)",
-    ko: "먼저 모션 메모리 초기화 (이전 다운로드를 지우고, 이번 업로드가 모션 12번이 돼요)",
+    en: "Reset motion memory first (forgets earlier uploads; this upload becomes motion 12)",
+    ko: "먼저 모션 메모리 초기화 (이전에 업로드한 모션을 지우고, 이번 업로드가 모션 12번이 돼요)",
   },
 
   "motions.upload.listTitle": { en: "Motions stored on this robot", ko: "이 로봇에 저장된 모션" },
   "motions.upload.actionSlot": { en: "action {slot}", ko: "액션 {slot}" },
   "motions.upload.howCounted": { en: "How the memory is counted", ko: "메모리를 세는 방법" },
   "motions.upload.howCountedText": {
-    en: "The robot keeps up to {motions} downloaded motions ({motionBytes} bytes) and {actions} actions ({actionBytes} bytes). Each file starts on a {block}-byte block, so it takes its size rounded up to the next block (a size that is already a multiple of {block} takes one block more).",
-    ko: "로봇은 다운로드한 모션을 {motions}개({motionBytes}바이트)까지, 액션을 {actions}개({actionBytes}바이트)까지 보관해요. 파일은 {block}바이트 블록의 처음부터 시작하므로, 크기를 다음 블록까지 올림한 만큼 차지해요 (크기가 이미 {block}의 배수이면 블록 하나를 더 차지해요).",
+    en: "The robot keeps up to {motions} uploaded motions ({motionBytes} bytes) and {actions} actions ({actionBytes} bytes). Each file starts on a {block}-byte block, so it takes its size rounded up to the next block (a size that is already a multiple of {block} takes one block more).",
+    ko: "로봇은 업로드한 모션을 {motions}개({motionBytes}바이트)까지, 액션을 {actions}개({actionBytes}바이트)까지 보관해요. 파일은 {block}바이트 블록의 처음부터 시작하므로, 크기를 다음 블록까지 올림한 만큼 차지해요 (크기가 이미 {block}의 배수이면 블록 하나를 더 차지해요).",
   },
   "motions.upload.actionTitle": { en: "Action files", ko: "액션 파일" },
   "motions.upload.chooseAction": { en: "Choose action file…", ko: "액션 파일 고르기…" },
   "motions.upload.actionFile": { en: "{file}, {size} bytes", ko: "{file}, {size}바이트" },
   "motions.upload.resetAction": {
-    en: "Reset action memory first (forgets every downloaded action)",
-    ko: "먼저 액션 메모리 초기화 (다운로드한 액션을 모두 지워요)",
+    en: "Reset action memory first (forgets every uploaded action)",
+    ko: "먼저 액션 메모리 초기화 (업로드한 액션을 모두 지워요)",
   },
   "motions.upload.uploadAction": { en: "Upload action file", ko: "액션 파일 업로드" },
   "motions.upload.slotUnknown": {
-    en: "number not known (the robot held other downloads)",
-    ko: "번호 알 수 없음 (로봇에 다른 다운로드가 있었음)",
+    en: "number not known (the robot held other uploads)",
+    ko: "번호 알 수 없음 (로봇에 다른 업로드가 있었음)",
   },
   "motions.upload.rateUnknown": { en: "— bytes/s", ko: "— 바이트/초" },
   "motions.upload.rate": { en: "{rate} bytes/s", ko: "초당 {rate}바이트" },
@@ -289,20 +289,43 @@ export const motionsMessages = defineMessages({
     ko: "먼저 모션 메모리를 초기화해요:",
   },
   "motions.upload.resetMotionText": {
-    en: "{lead} every motion downloaded before is forgotten.",
-    ko: "{lead} 전에 다운로드한 모션은 모두 지워져요.",
+    en: "{lead} every motion uploaded before is forgotten.",
+    ko: "{lead} 전에 업로드한 모션은 모두 지워져요.",
   },
   "motions.upload.resetActionLead": {
     en: "The action memory is reset first:",
     ko: "먼저 액션 메모리를 초기화해요:",
   },
   "motions.upload.resetActionText": {
-    en: "{lead} every action downloaded before is forgotten.",
-    ko: "{lead} 전에 다운로드한 액션은 모두 지워져요.",
+    en: "{lead} every action uploaded before is forgotten.",
+    ko: "{lead} 전에 업로드한 액션은 모두 지워져요.",
   },
   "motions.upload.confirm": { en: "Upload (experimental)", ko: "업로드 (실험 기능)" },
   "motions.upload.cancelConfirm": { en: "Cancel", ko: "취소" },
   "motions.upload.resultLabel": { en: "Upload result", ko: "업로드 결과" },
+  // The same motion uploaded again (issue 33 item 8): what this browser's records say, and the three answers.
+  "motions.upload.sameStored": {
+    en: "The same motion was stored as motion {number} ({key}) when it was uploaded from this browser.",
+    ko: "같은 모션을 이 브라우저에서 업로드했을 때 모션 {number}번({key})으로 저장했어요.",
+  },
+  "motions.upload.sameReplace": {
+    en: "Replace: the robot cannot forget a single motion, so its motion memory is reset first (the robot forgets every motion on it) and this upload is stored as motion {number} again.",
+    ko: "바꾸기: 로봇은 모션 하나만 지울 수 없어서, 먼저 모션 메모리 전체를 초기화하고(로봇의 모션이 모두 지워져요) 이번 업로드를 다시 모션 {number}번으로 저장해요.",
+  },
+  "motions.upload.sameReplaceLater": {
+    en: "Replace: the robot cannot forget a single motion, so its motion memory is reset first (the robot forgets every motion on it, motions {later} too) and this upload is stored as motion {number} again.",
+    ko: "바꾸기: 로봇은 모션 하나만 지울 수 없어서, 먼저 모션 메모리 전체를 초기화하고(로봇의 모션이 모두 지워지고, 모션 {later}번도 지워져요) 이번 업로드를 다시 모션 {number}번으로 저장해요.",
+  },
+  "motions.upload.sameNoReplace": {
+    en: "Replace is not possible: the robot cannot forget a single motion, only every motion at once, which would also forget the motions stored before motion {number}.",
+    ko: "바꿀 수 없어요. 로봇은 모션 하나만 지울 수 없고 모션 메모리 전체만 지울 수 있어서, 모션 {number}번 앞에 저장된 모션도 지워져요.",
+  },
+  "motions.upload.sameKeep": {
+    en: "Keep both: this upload is stored as the next motion and takes {bytes} more bytes of motion memory.",
+    ko: "둘 다 두기: 이번 업로드를 다음 모션으로 저장하고, 모션 메모리를 {bytes}바이트 더 써요.",
+  },
+  "motions.upload.sameReplaceButton": { en: "Replace motion {number}", ko: "모션 {number}번 바꾸기" },
+  "motions.upload.sameKeepButton": { en: "Keep both", ko: "둘 다 두기" },
 
   "motions.upload.chooseActionFirst": {
     en: "Choose an action file first.",
@@ -319,10 +342,10 @@ export const motionsMessages = defineMessages({
   "motions.upload.fileClosed": { en: "The file is no longer open.", ko: "파일이 더 이상 열려 있지 않아요." },
   "motions.upload.hasErrors": {
     en: {
-      one: "Cannot upload: the file has {count} error (listed above). Nothing is sent.",
-      other: "Cannot upload: the file has {count} errors (listed above). Nothing is sent.",
+      one: "Cannot upload: the file has {count} error (listed below). Nothing is sent.",
+      other: "Cannot upload: the file has {count} errors (listed below). Nothing is sent.",
     },
-    ko: "업로드할 수 없어요. 파일에 오류가 {count}개 있어요 (위 목록). 아무것도 보내지 않아요.",
+    ko: "업로드할 수 없어요. 파일에 오류가 {count}개 있어요 (아래 목록). 아무것도 보내지 않아요.",
   },
   "motions.upload.task": { en: "Uploading {file}", ko: "{file} 업로드" },
   "motions.upload.readingFree": { en: "Reading free memory", ko: "남은 메모리 읽기" },
@@ -331,10 +354,10 @@ export const motionsMessages = defineMessages({
     en: "Uploaded {file}: {bytes} bytes in {chunks} chunks in {time} ({rate}), every chunk acknowledged.",
     ko: "{file}을(를) 업로드했어요. {bytes}바이트를 조각 {chunks}개로 {time} 동안 보냈고 ({rate}), 로봇이 모든 조각을 받았다고 확인했어요.",
   },
-  "motions.upload.isAction": { en: "It is downloaded action {slot}.", ko: "다운로드된 액션 {slot}번이에요." },
+  "motions.upload.isAction": { en: "It is uploaded action {slot}.", ko: "업로드된 액션 {slot}번이에요." },
   "motions.upload.numberUnknown": {
-    en: "The robot already held downloads the panel did not see arrive, so its motion number is not known; tick “Reset motion memory first” next time to know it.",
-    ko: "로봇에 패널이 모르는 다운로드가 이미 있어서 이 모션의 번호를 알 수 없어요. 번호를 알려면 다음에는 “먼저 모션 메모리 초기화”를 선택해 주세요.",
+    en: "The robot already held uploads the panel did not see arrive, so its motion number is not known; tick “Reset motion memory first” next time to know it.",
+    ko: "로봇에 패널이 모르는 업로드가 이미 있어서 이 모션의 번호를 알 수 없어요. 번호를 알려면 다음에는 “먼저 모션 메모리 초기화”를 선택해 주세요.",
   },
   "motions.upload.freeNotReadMotion": {
     en: "Free motion memory was not read afterwards (the robot did not answer); press Refresh on the Robot view.",
@@ -362,11 +385,11 @@ export const motionsMessages = defineMessages({
   },
   "motions.upload.errorCode": { en: "{text} (code {code})", ko: "{text} (코드 {code})" },
   "motions.upload.resetForgotMotion": {
-    en: "The motion memory had been reset first, so the robot's earlier downloaded motions are forgotten.",
-    ko: "먼저 모션 메모리를 초기화했기 때문에, 로봇에 전에 다운로드한 모션은 지워졌어요.",
+    en: "The motion memory had been reset first, so the robot's earlier uploaded motions are forgotten.",
+    ko: "먼저 모션 메모리를 초기화했기 때문에, 로봇에 전에 업로드한 모션은 지워졌어요.",
   },
   "motions.upload.resetForgotAction": {
-    en: "The action memory had been reset first, so the robot's earlier downloaded actions are forgotten.",
+    en: "The action memory had been reset first, so the robot's earlier uploaded actions are forgotten.",
     ko: "먼저 액션 메모리를 초기화했기 때문에, 로봇에 전에 다운로드한 액션은 지워졌어요.",
   },
   "motions.upload.refused": { en: "Upload refused.", ko: "로봇이 업로드를 거부했어요." },
@@ -413,8 +436,8 @@ export const motionsMessages = defineMessages({
     ko: "모션 {number}번({name})을 끝까지 하지 못했어요.",
   },
   "motions.run.noEnd": {
-    en: "The robot did not report the end of motion {number} ({name}). If nothing was downloaded into that slot, the robot ignores the number (error 3).",
-    ko: "로봇이 모션 {number}번({name})이 끝났다고 알려 주지 않았어요. 그 슬롯에 다운로드한 것이 없으면 로봇은 그 번호를 무시해요 (오류 3).",
+    en: "The robot did not report the end of motion {number} ({name}). If nothing was uploaded into that slot, the robot ignores the number (error 3).",
+    ko: "로봇이 모션 {number}번({name})이 끝났다고 알려 주지 않았어요. 그 슬롯에 업로드한 것이 없으면 로봇은 그 번호를 무시해요 (오류 3).",
   },
   "motions.run.failed": {
     en: "Motion {number} ({name}) failed.",
@@ -439,7 +462,7 @@ export const motionsMessages = defineMessages({
     ko: "그 전까지는 다른 모션을 모두 아무 말 없이 무시해요.",
   },
   "motions.run.builtInTitle": { en: "Built-in motions", ko: "내장 모션" },
-  "motions.run.downloadedTitle": { en: "Downloaded motions", ko: "다운로드한 모션" },
+  "motions.run.downloadedTitle": { en: "Uploaded motions", ko: "업로드한 모션" },
   "motions.run.downloadedNone": {
     en: "Motions you upload in this connection appear here with their names and motion numbers.",
     ko: "이번 연결에서 업로드한 모션이 이름, 모션 번호와 함께 여기에 나타나요.",
@@ -473,10 +496,10 @@ export const motionsMessages = defineMessages({
   "motions.run.confirm": { en: "Run motion {number}", ko: "모션 {number}번 실행" },
   "motions.run.cancel": { en: "Cancel", ko: "취소" },
   "motions.run.resultLabel": { en: "Motion result", ko: "모션 결과" },
-  "motions.run.otherSlots": { en: "Other download slots ({slots})", ko: "다른 다운로드 슬롯 ({slots})" },
+  "motions.run.otherSlots": { en: "Other upload slots ({slots})", ko: "다른 업로드 슬롯 ({slots})" },
   "motions.run.otherSlotsText": {
-    en: "Numbers of motions this browser has no record of (downloaded e.g. with Motionbuilder): the panel does not know their names or lengths. The robot ignores the number of an empty slot.",
-    ko: "이 브라우저에 기록이 없는 모션의 번호예요(예를 들어 Motionbuilder로 다운로드한 모션). 패널은 이름이나 길이를 몰라요. 빈 슬롯의 번호는 로봇이 무시해요.",
+    en: "Numbers of motions this browser has no record of (uploaded e.g. with Motionbuilder): the panel does not know their names or lengths. The robot ignores the number of an empty slot.",
+    ko: "이 브라우저에 기록이 없는 모션의 번호예요(예를 들어 Motionbuilder로 업로드한 모션). 패널은 이름이나 길이를 몰라요. 빈 슬롯의 번호는 로봇이 무시해요.",
   },
   "motions.run.textVersion": {
     en: "the Servos view lists the positions in numbers",

@@ -87,6 +87,21 @@ export interface UploadRun {
   sendingSince?: number;
 }
 
+/** A motion upload whose bytes this browser's records (the robot's shelf) have as stored: where, and how known. */
+export interface AlreadyStored {
+  target: UploadTarget;
+  /** The number Run takes for the stored copy. */
+  number: number;
+  /** Its download slot (docs/protocol.md §6.1): Replace is possible only for slot 1 (see `replaceBlocked`). */
+  slot: number;
+  /** Stored by an upload of this connection (the robot's memory accounting showed it), or recorded earlier. */
+  stored: { kind: "now" } | { kind: "recorded"; at: string; checked: boolean };
+  /** The numbers of the motions this browser has recorded after it (erased too by a reset). */
+  later: number[];
+  /** Memory a second copy takes (bytes). */
+  footprint: number;
+}
+
 /** A motion the panel is waiting on. */
 export interface RunningMotion {
   number: number;
@@ -103,6 +118,13 @@ export interface MotionsState {
   actionFile?: ActionFile;
   /** An upload waiting for the user's confirmation (always for actions and for a real robot). */
   confirming?: UploadTarget;
+  /**
+   * An upload whose motion image this browser's records say is stored already (issue 33 item 8): the question
+   * "Replace motion N / Keep both / Cancel" is shown where it was started, and nothing is sent until answered.
+   */
+  alreadyStored?: AlreadyStored;
+  /** The upload asked for replaces a stored copy: it resets the motion memory first (the robot's only way). */
+  replacing?: boolean;
   upload?: UploadRun;
   uploadResult?: Notice;
   /** The number Run takes for the motion whose upload `uploadResult` tells ("Run now" beside it). */

@@ -1,21 +1,25 @@
 import { RbcCancelledError } from "../../../device/errors.ts";
 import type { UploadPhase } from "../../../device/motion-upload.ts";
 import type { RbcClient } from "../../../device/rbc-client.ts";
+import { imageHash } from "../../../device/shelf.ts";
 import type { UploadOptions, UploadResult } from "../../../device/types.ts";
 import { said } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
-import { ACTION_AREA_BYTES } from "../../../protocol/catalog.ts";
+import { ACTION_AREA_BYTES, memoryFootprint } from "../../../protocol/catalog.ts";
 import { motionImage } from "../../../protocol/motion-image.ts";
 import { RbmError, type RbmMotion } from "../../../protocol/rbm.ts";
 import { validateRbm } from "../../../protocol/rbm-validate.ts";
 import type { AppContext } from "../../context.ts";
 import { focusSoon } from "../../focus.ts";
+import { shelfKeyOf } from "../shelf/index.ts";
 import { motionsController } from "./controllers.ts";
 import { checkEntry, checkedEntry, entryFacts } from "./files.ts";
 import { motionsMessages } from "./messages.ts";
+import { watchShelf } from "./shelf-watch.ts";
 import { afterReset, type BookEntry } from "./slot-book.ts";
 import {
   type ActionFile,
+  type AlreadyStored,
   type MotionFileEntry,
   motionsOf,
   patchMotions,
@@ -96,18 +100,38 @@ export function uploadBlocked(ctx: AppContext, target: UploadTarget): string | u
   return robotBusyReason(ctx.store.get());
 }
 
+/** What starts an upload once asked for: `startUpload`, or a caller's wrapper that also wants its outcome. */
+export type UploadStarter<C extends AppContext = AppContext> = (
+  ctx: C,
+  target: UploadTarget,
+) => Promise<unknown>;
+
 /**
- * Upload pressed: a real robot asks first (§6.3); the demo robot uploads at once. `start` is what starts it
- * (`startUpload`, or a caller's wrapper that also wants its outcome, as the Editor does).
+ * Upload pressed: when this browser's records say the same motion is stored already, ask first (Replace /
+ * Keep both / Cancel, `answerAlreadyStored`); then a real robot asks (§6.3) and the demo robot uploads at once.
+ * `start` is what starts it (`startUpload`, or a caller's wrapper that also wants its outcome, as the Editor does).
  */
 export function requestUpload(
   ctx: AppContext,
   target: UploadTarget,
-  start: (ctx: AppContext, target: UploadTarget) => Promise<unknown> = startUpload,
+  start: UploadStarter = startUpload,
 ): void {
-  const s = ctx.store.get();
   if (uploadBlocked(ctx, target)) return;
-  if (s.connection.robot?.kind === "demo") {
+  patchMotions(ctx.store, { alreadyStored: undefined, replacing: undefined });
+  void storedAlready(ctx, target).then((stored) => {
+    if (uploadBlocked(ctx, target)) return;
+    if (stored === undefined) {
+      askOrStart(ctx, target, start);
+      return;
+    }
+    patchMotions(ctx.store, { alreadyStored: stored, uploadResult: undefined, resultFor: target });
+    focusSoon("already-stored-cancel");
+  });
+}
+
+/** The §6.3 question on a real robot; the demo robot uploads at once. */
+function askOrStart<C extends AppContext>(ctx: C, target: UploadTarget, start: UploadStarter<C>): void {
+  if (ctx.store.get().connection.robot?.kind === "demo") {
     void start(ctx, target);
   } else {
     patchMotions(ctx.store, { confirming: target, uploadResult: undefined, resultFor: target });
@@ -115,8 +139,63 @@ export function requestUpload(
   }
 }
 
+/**
+ * The motion `target` would send, when this browser's records (the robot's shelf: this connection's uploads and
+ * earlier ones still allowed by the robot's free memory) have the same image stored; the lowest slot if several.
+ */
+async function storedAlready(ctx: AppContext, target: UploadTarget): Promise<AlreadyStored | undefined> {
+  // A reset first erases every motion: nothing stays to be the same.
+  if (target.area !== "motion" || motionsOf(ctx.store.get()).resetMotionFirst) return undefined;
+  const payload = uploadPayload(ctx, target);
+  if ("refused" in payload) return undefined;
+  await watchShelf(ctx);
+  const s = ctx.store.get();
+  const shelf = s.shelf;
+  if (!shelf || shelf.key !== shelfKeyOf(s) || shelf.slots.length === 0) return undefined;
+  const hash = await imageHash(payload.bytes);
+  const slots = [...shelf.slots].sort((a, b) => a.slot - b.slot);
+  const same = slots.find((x) => x.hash === hash);
+  if (!same) return undefined;
+  const now = motionsOf(s).motionBook.entries.some((e) => e.slot === same.slot);
+  return {
+    target,
+    number: same.motionNumber,
+    slot: same.slot,
+    stored: now ? { kind: "now" } : { kind: "recorded", at: same.storedAt, checked: shelf.checked },
+    later: slots.filter((x) => x.slot > same.slot).map((x) => x.motionNumber),
+    footprint: memoryFootprint(payload.bytes.length),
+  };
+}
+
+/**
+ * Why "Replace motion N" cannot be done, or undefined. The robot cannot erase one motion: only its whole motion
+ * memory (docs/protocol.md §6.1), after which the next upload is motion 12. So a copy in slot 1 can be replaced
+ * (the motions after it are erased too, and the question says so); a later one cannot without erasing the ones
+ * before it.
+ */
+export function replaceBlocked(stored: AlreadyStored): boolean {
+  return stored.slot !== 1;
+}
+
+/** The answer to "the same motion is already stored as motion N". Cancel sends nothing. */
+export function answerAlreadyStored<C extends AppContext>(
+  ctx: C,
+  answer: "replace" | "keep" | "cancel",
+  start: UploadStarter<C> = startUpload,
+): void {
+  const stored = motionsOf(ctx.store.get()).alreadyStored;
+  patchMotions(ctx.store, { alreadyStored: undefined });
+  if (!stored || answer === "cancel") return;
+  if (answer === "replace") {
+    if (replaceBlocked(stored)) return;
+    patchMotions(ctx.store, { replacing: true });
+  }
+  if (uploadBlocked(ctx, stored.target)) return;
+  askOrStart(ctx, stored.target, start);
+}
+
 export function cancelConfirm(ctx: AppContext): void {
-  patchMotions(ctx.store, { confirming: undefined });
+  patchMotions(ctx.store, { confirming: undefined, replacing: undefined });
 }
 
 /** Cancel: the device's machine marks the upload `cancelling` (the view reads it there) until it ends. */
@@ -154,7 +233,11 @@ export async function startUpload(ctx: AppContext, target: UploadTarget): Promis
   const payload = uploadPayload(ctx, target);
   if ("refused" in payload || robotBusyReason(s)) return undefined;
   const { area, bytes, fileName } = payload;
-  const reset = area === "motion" ? motionsOf(s).resetMotionFirst : motionsOf(s).resetActionFirst;
+  // "Replace motion 12" (`answerAlreadyStored`) resets the motion memory first, once.
+  const reset =
+    area === "motion"
+      ? motionsOf(s).resetMotionFirst || motionsOf(s).replacing === true
+      : motionsOf(s).resetActionFirst;
   const real = s.connection.robot?.kind !== "demo";
   const abort = new AbortController();
   const controller = motionsController(ctx);
@@ -162,6 +245,8 @@ export async function startUpload(ctx: AppContext, target: UploadTarget): Promis
   let didReset = false;
   patchMotions(store, {
     confirming: undefined,
+    alreadyStored: undefined,
+    replacing: undefined,
     uploadResult: undefined,
     uploadStored: undefined,
     resultFor: target,
@@ -209,7 +294,7 @@ export async function startUpload(ctx: AppContext, target: UploadTarget): Promis
   } finally {
     if (controller.upload === abort) controller.upload = undefined;
   }
-  return uploadSucceeded(ctx, payload, result, real);
+  return uploadSucceeded(ctx, payload, result, real, didReset);
 }
 
 export function setResetFirst(ctx: AppContext, area: "motion" | "action", on: boolean): void {

@@ -68,6 +68,7 @@ export async function uploadSucceeded(
   payload: Payload,
   result: UploadResult,
   real: boolean,
+  didReset = false,
 ): Promise<BookEntry | undefined> {
   const { store } = ctx;
   const { area } = payload;
@@ -127,6 +128,15 @@ export async function uploadSucceeded(
       rate: inEveryLanguage((l) => formatRate(rate, l)),
     }),
     ...where,
+    // A reset first (the option, or "Replace motion 12"): the robot forgot what it held before.
+    ...(didReset
+      ? [
+          said(
+            motionsMessages,
+            area === "motion" ? "motions.upload.resetForgotMotion" : "motions.upload.resetForgotAction",
+          ),
+        ]
+      : []),
     free,
     said(motionsMessages, "motions.upload.errorAfter", { words: errorCodeSaid(result.errorCode) }),
   ];

@@ -14,4 +14,4 @@ export {
 } from "./shelf-actions.ts";
 export { type RunNow, runNowButton, shelfDropNotice, shelfList, shelfRecordedNote } from "./shelf-list.ts";
 export { panelShelfKey, type ShelfStorage } from "./shelf-store.ts";
-export { remoteKeyWords, storedSentence } from "./shelf-words.ts";
+export { remoteKeyWords, type StoredWay, storedSentence, storedWords } from "./shelf-words.ts";

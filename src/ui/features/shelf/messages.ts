@@ -45,13 +45,13 @@ export const shelfMessages = defineMessages({
   },
   "shelf.demoResetTitle": { en: "Reset the demo robot", ko: "데모 로봇 초기화" },
   "shelf.demoResetAsk": {
-    en: "Like a real robot, the demo robot keeps its zeros, downloaded motions and servo ids when it is disconnected, and after the page is reloaded. Start it fresh, as if new? It is disconnected and connected again.",
-    ko: "데모 로봇은 진짜 로봇처럼 연결을 끊거나 페이지를 새로 고쳐도 영점, 다운로드한 모션, 서보 ID를 기억해요. 새것처럼 처음부터 시작할까요? 연결을 끊었다가 다시 연결해요.",
+    en: "Like a real robot, the demo robot keeps its zeros, uploaded motions and servo ids when it is disconnected, and after the page is reloaded. Start it fresh, as if new? It is disconnected and connected again.",
+    ko: "데모 로봇은 진짜 로봇처럼 연결을 끊거나 페이지를 새로 고쳐도 영점, 업로드한 모션, 서보 ID를 기억해요. 새것처럼 처음부터 시작할까요? 연결을 끊었다가 다시 연결해요.",
   },
   "shelf.demoResetYes": { en: "Reset and connect again", ko: "초기화하고 다시 연결" },
   "shelf.demoReset": {
-    en: "The demo robot was reset and connected again as new: factory zeros, no downloaded motions, each servo at its own id.",
-    ko: "데모 로봇을 초기화하고 새것처럼 다시 연결했어요. 공장 영점, 다운로드한 모션 없음, 서보는 각자 원래 ID예요.",
+    en: "The demo robot was reset and connected again as new: factory zeros, no uploaded motions, each servo at its own id.",
+    ko: "데모 로봇을 초기화하고 새것처럼 다시 연결했어요. 공장 영점, 업로드한 모션 없음, 서보는 각자 원래 ID예요.",
   },
   "shelf.demoResetFailed": {
     en: "The demo robot was connected again as new, but this browser could not forget what it kept ({why}): after a reload it may come back.",

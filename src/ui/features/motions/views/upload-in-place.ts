@@ -5,11 +5,17 @@ import type { AppState } from "../../../app-state.ts";
 import { liveNotice } from "../../../shell/notice.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
 import { isCancelling } from "../../connection/index.ts";
-import { runNowButton, shelfMessages } from "../../shelf/index.ts";
+import { remoteKeyWords, runNowButton, shelfMessages, storedWords } from "../../shelf/index.ts";
 import { type MotionsTranslator, motionsMessages } from "../messages.ts";
 import { offerFor } from "../run-actions.ts";
-import { motionsOf, type UploadRun, type UploadTarget } from "../state.ts";
-import { cancelConfirm, cancelUpload, startUpload } from "../upload-actions.ts";
+import { type AlreadyStored, motionsOf, type UploadRun, type UploadTarget } from "../state.ts";
+import {
+  answerAlreadyStored,
+  cancelConfirm,
+  cancelUpload,
+  replaceBlocked,
+  startUpload,
+} from "../upload-actions.ts";
 import { formatRate, formatTimeLeft, uploadFigures } from "../upload-rate.ts";
 import { runNow } from "../view-actions.ts";
 import { keepInView } from "./keep-in-view.ts";
@@ -94,7 +100,7 @@ function confirmBlock(
       : "place" in target
         ? target.fileName
         : s.motionFiles?.entries.find((e) => e.id === target.entryId)?.fileName;
-  const reset = target.area === "motion" ? m.resetMotionFirst : m.resetActionFirst;
+  const reset = target.area === "motion" ? m.resetMotionFirst || m.replacing === true : m.resetActionFirst;
   const resetNote =
     target.area === "motion"
       ? t.parts("motions.upload.resetMotionText", {
@@ -121,6 +127,55 @@ function confirmBlock(
   `;
 }
 
+/**
+ * "The same motion is already stored as motion N" (issue 33 item 8), said as surely as the panel knows it (this
+ * browser's record of its uploads, never the robot's word: the robot keeps only bytes), with Replace (when the
+ * robot can: `replaceBlocked`), Keep both and Cancel. Nothing is sent before an answer.
+ */
+function alreadyStoredBlock(
+  ctx: ViewContext,
+  t: MotionsTranslator,
+  stored: AlreadyStored,
+  start: UploadStart,
+): TemplateResult {
+  const { locale } = t;
+  const key = remoteKeyWords(stored.number, locale);
+  const cannotReplace = replaceBlocked(stored);
+  const replaceWhy = cannotReplace
+    ? t("motions.upload.sameNoReplace", { number: stored.number })
+    : stored.later.length > 0
+      ? t("motions.upload.sameReplaceLater", { number: stored.number, later: stored.later.join(", ") })
+      : t("motions.upload.sameReplace", { number: stored.number });
+  return html`
+    <div class="confirm confirm--warning" role="group" aria-labelledby="already-stored-title" data-testid="already-stored" data-motion=${stored.number}>
+      <p id="already-stored-title">
+        <strong>${t("motions.upload.sameStored", { number: stored.number, key })}</strong>
+      </p>
+      <p class="small" data-testid="already-stored-how">${storedWords(stored.stored, locale)}</p>
+      <p class="small" id="already-stored-replace">${replaceWhy}</p>
+      <p class="small">${t("motions.upload.sameKeep", { bytes: stored.footprint })}</p>
+      <div class="actions">
+        <button
+          type="button"
+          class="btn btn--primary"
+          data-testid="already-stored-replace"
+          aria-describedby="already-stored-replace"
+          ?disabled=${cannotReplace}
+          @click=${() => answerAlreadyStored(ctx, "replace", start)}
+        >
+          ${t("motions.upload.sameReplaceButton", { number: stored.number })}
+        </button>
+        <button type="button" class="btn" data-testid="already-stored-keep" @click=${() => answerAlreadyStored(ctx, "keep", start)}>
+          ${t("motions.upload.sameKeepButton")}
+        </button>
+        <button type="button" class="btn" id="already-stored-cancel" data-testid="already-stored-cancel" @click=${() => answerAlreadyStored(ctx, "cancel")}>
+          ${t("motions.upload.cancelConfirm")}
+        </button>
+      </div>
+    </div>
+  `;
+}
+
 /** What starts an upload once confirmed: `startUpload`, or a caller's wrapper that also wants its outcome. */
 export type UploadStart = (ctx: ViewContext, target: UploadTarget) => Promise<unknown>;
 
@@ -134,18 +189,23 @@ export function uploadInPlace(
   const t = translator(motionsMessages, s.locale);
   const m = motionsOf(s);
   const confirming = !m.upload && sameTarget(m.confirming, target);
+  const stored =
+    !m.upload && m.alreadyStored && sameTarget(m.alreadyStored.target, target) ? m.alreadyStored : undefined;
   const uploading = m.upload && sameTarget(m.upload.target, target) ? m.upload : undefined;
   const result = sameTarget(m.resultFor, target) ? m.uploadResult : undefined;
   // Scrolled into view when it appears and when the upload ends (not on every progress report).
-  const shown = confirming
-    ? "confirm"
-    : uploading
-      ? `upload-${uploading.fileName}`
-      : result
-        ? `result-${result.text}`
-        : undefined;
+  const shown = stored
+    ? `stored-${stored.number}`
+    : confirming
+      ? "confirm"
+      : uploading
+        ? `upload-${uploading.fileName}`
+        : result
+          ? `result-${result.text}`
+          : undefined;
   return html`
     <div class="upload-in-place" ${keepInView(shown)}>
+      ${stored ? alreadyStoredBlock(ctx, t, stored, start) : nothing}
       ${confirming ? confirmBlock(ctx, t, s, target, start) : nothing} ${uploading ? progress(ctx, t, uploading) : nothing}
       ${liveNotice(result, t("motions.upload.resultLabel"), s.locale)}
       ${

@@ -29,8 +29,8 @@ export const remoteMessages = defineMessages({
 
   "sensors.remote.group.builtin": { en: "Built-in motions (codes 1-11)", ko: "내장 모션 (코드 1-11)" },
   "sensors.remote.group.number": {
-    en: "Number keys: the first ten downloaded motions (codes 12-21)",
-    ko: "숫자 키: 처음 다운로드한 모션 10개 (코드 12-21)",
+    en: "Number keys: the first ten uploaded motions (codes 12-21)",
+    ko: "숫자 키: 처음 업로드한 모션 10개 (코드 12-21)",
   },
   "sensors.remote.group.star": {
     en: "* + number key: the next ten (codes 33-42)",
@@ -49,8 +49,8 @@ export const remoteMessages = defineMessages({
     ko: "{name} (이번 연결에서 업로드함)",
   },
   "sensors.remote.plays.unknown": {
-    en: "A downloaded motion, if the robot holds one: it does not say which",
-    ko: "로봇에 있다면 다운로드한 모션. 로봇은 어떤 모션인지 알려 주지 않아요",
+    en: "An uploaded motion, if the robot holds one: it does not say which",
+    ko: "로봇에 있다면 업로드한 모션. 로봇은 어떤 모션인지 알려 주지 않아요",
   },
   "sensors.remote.plays.empty": {
     en: "Nothing stored",
@@ -61,8 +61,8 @@ export const remoteMessages = defineMessages({
     ko: "공식 “user” 펌웨어에서는 로봇을 꺼야만 멈추는 끝없는 걷기",
   },
   "sensors.remote.plays.userNothing": {
-    en: "Nothing on this firmware (it plays no downloads)",
-    ko: "이 펌웨어에서는 없음 (다운로드한 모션을 재생하지 않아요)",
+    en: "Nothing on this firmware (it plays no uploads)",
+    ko: "이 펌웨어에서는 없음 (업로드한 모션을 재생하지 않아요)",
   },
   "sensors.remote.plays.userFlashDemo": {
     en: "A demo motion kept in the firmware",
@@ -87,8 +87,8 @@ export const remoteMessages = defineMessages({
     ko: "이 로봇은 펌웨어 9.99를 알려 와요. 공식 “user” 펌웨어(와 그것을 옮긴 자작 펌웨어)가 알려 주는 버전이에요. 그 펌웨어에서는 1-8 키와 모든 * 키가 아무것도 재생하지 않고, 0은 펌웨어에 들어 있는 데모 모션을, 9는 장애물을 피하며 끝없이 걷기를 시작해요. 이 걷기는 정지나 다른 어떤 요청으로도 멈추지 않고, 로봇을 꺼야만 멈춰요.",
   },
   "sensors.remote.firmwareOther": {
-    en: "This robot reports firmware {version}: its number keys play the downloaded motions. On the official “user” firmware (which reports 9.99) key 9 instead starts an endless walk that only switching the robot off ends.",
-    ko: "이 로봇은 펌웨어 {version}을(를) 알려 와요. 숫자 키는 다운로드한 모션을 재생해요. 공식 “user” 펌웨어(9.99를 알려 줘요)에서는 9 키가 로봇을 꺼야만 멈추는 끝없는 걷기를 시작해요.",
+    en: "This robot reports firmware {version}: its number keys play the uploaded motions. On the official “user” firmware (which reports 9.99) key 9 instead starts an endless walk that only switching the robot off ends.",
+    ko: "이 로봇은 펌웨어 {version}을(를) 알려 와요. 숫자 키는 업로드한 모션을 재생해요. 공식 “user” 펌웨어(9.99를 알려 줘요)에서는 9 키가 로봇을 꺼야만 멈추는 끝없는 걷기를 시작해요.",
   },
   "sensors.remote.firmwareUnknown": {
     en: "The firmware version is not known yet. On the official “user” firmware (which reports 9.99) key 9 starts an endless walk that only switching the robot off ends.",
