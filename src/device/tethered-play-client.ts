@@ -35,12 +35,16 @@ export function playTethered(
   };
   return core.c
     .exclusive(async () => {
+      // What held direct mode before (servo control, teach-in) holds it again after; a play that entered it
+      // itself, or that drove servos Limp had made passive, leaves it held by tethered play: the servos hold the
+      // last frame and direct mode stays until Stop (or servo control) leaves it. The panel names that holder.
+      const before = core.activity.direct?.use;
       if (core.activity.direct) core.activity.handDirect("tethered-play");
       try {
         return await runTetheredPlay(host, doc, options, control);
       } finally {
-        // The servos hold the last frame; direct mode stays for servo control.
-        if (core.activity.direct) core.activity.handDirect("servo-control");
+        const after = before === "servo-control" || before === "teach-in" ? before : "tethered-play";
+        if (core.activity.direct) core.activity.handDirect(after);
       }
     })
     .catch((e: unknown) => {

@@ -4,6 +4,7 @@
  * earlier version), and the upload itself through the Motions upload path on the demo robot, on a virtual clock.
  */
 import { afterEach, beforeAll, describe, expect, it } from "vitest";
+import type { DirectUse } from "../../src/device/index.ts";
 import { translator } from "../../src/i18n/translate.ts";
 import { type Motion, motionIssues, newMotion, setPosition } from "../../src/motion/index.ts";
 import { initialState } from "../../src/ui/app-state.ts";
@@ -14,6 +15,7 @@ import {
   requestEditorUpload,
   robotRefusal,
   startEditorUpload,
+  stopEndsIt,
 } from "../../src/ui/features/editor/robot-actions.ts";
 import {
   copyInBook,
@@ -126,11 +128,46 @@ describe("why the Editor's robot buttons refuse", () => {
       "A motion is playing: the robot ignores everything but Basic posture (7) until it ends.",
     );
     expect(motionPlaying(busy)).toBe(true);
+    // Direct mode with no activity telling what holds it (not expected): the generic sentence, with Stop.
     const direct = { ...base, connection: { ...connected, mode: "direct" as const } };
-    expect(robotRefusal(direct)).toBe(
-      "The robot is in servo control (direct mode): end teach-in, or servo control in the Servos view, first.",
-    );
+    expect(robotRefusal(direct)).toBe("The robot is in direct mode: press Stop to leave it.");
     expect(motionPlaying(direct)).toBe(false);
+    expect(stopEndsIt(direct)).toBe(true);
+  });
+
+  it("names what holds the robot in direct mode, from the device's activity, and whether Stop ends it (issue 33 item 4)", () => {
+    const held = (use: DirectUse) => ({
+      ...base,
+      connection: {
+        ...connected,
+        mode: "direct" as const,
+        activity: {
+          doing: { kind: "direct" as const, use, since: 0 },
+          halt: undefined,
+          limp: use === "limp",
+        },
+      },
+    });
+    expect(robotRefusal(held("tethered-play"))).toBe(
+      "Tethered play (Play on robot) keeps the robot in direct mode: press Stop to end it. The servos keep their pose.",
+    );
+    expect(robotRefusal({ ...held("tethered-play"), locale: "ko" })).toBe(
+      "로봇에서 재생 때문에 로봇이 직접 모드에 있어요. 끝내려면 정지를 눌러 주세요. 서보는 자세를 그대로 유지해요.",
+    );
+    expect(robotRefusal(held("teach-in"))).toBe(
+      "Teach-in keeps the robot in direct mode: press End teach-in on the Teach-in tab to end it.",
+    );
+    expect(robotRefusal(held("servo-control"))).toBe(
+      "Servo control keeps the robot in direct mode: press Stop, or Leave servo control in the Servos view, to end it. The servos keep their pose.",
+    );
+    expect(robotRefusal(held("limp"))).toBe(
+      "Limp left the robot in direct mode with its servos limp: press Stop to leave direct mode (the servos stay limp).",
+    );
+    // Stop beside the sentence where the sentence says Stop; teach-in ends by its own button (it holds first).
+    expect(
+      ["tethered-play", "servo-control", "limp", "teach-in"].map((u) => stopEndsIt(held(u as DirectUse))),
+    ).toEqual([true, true, true, false]);
+    expect(stopEndsIt({ ...base, connection: connected })).toBe(false);
   });
 });
 

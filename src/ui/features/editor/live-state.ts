@@ -90,7 +90,15 @@ export interface EditorLiveState {
   robotCopy?: RobotCopy;
   /** The motion number last run from the Editor, so that its question, progress and result show there. */
   runFrom?: number;
+  /**
+   * Which of the Editor's Run buttons it was, so that they show right under it: "Run now" under the upload's
+   * result (`result`), Basic posture's (`posture`), or "Run on robot" (`card`, the default).
+   */
+  runAt?: EditorRunPlace;
 }
+
+/** Where in the Editor's "Store on the robot" card a Run was pressed (`EditorLiveState.runAt`). */
+export type EditorRunPlace = "result" | "posture" | "card";
 
 /** Servo ids 0-15, by id. */
 export const LIVE_SERVO_COUNT = 16;

@@ -901,9 +901,26 @@ export const editorMessages = defineMessages({
     },
     ko: "업로드할 수 없어요. 모션에 오류가 {count}개 있어요(검사 탭). 아무것도 보내지 않아요.",
   },
+  // What holds the robot in direct mode (the device's activity), and the button that ends it (issue 33 item 4).
+  "editor.robot.heldByPlay": {
+    en: "Tethered play (Play on robot) keeps the robot in direct mode: press Stop to end it. The servos keep their pose.",
+    ko: "로봇에서 재생 때문에 로봇이 직접 모드에 있어요. 끝내려면 정지를 눌러 주세요. 서보는 자세를 그대로 유지해요.",
+  },
+  "editor.robot.heldByTeachIn": {
+    en: "Teach-in keeps the robot in direct mode: press End teach-in on the Teach-in tab to end it.",
+    ko: "티칭 때문에 로봇이 직접 모드에 있어요. 끝내려면 티칭 탭에서 ‘티칭 끝내기’를 눌러 주세요.",
+  },
+  "editor.robot.heldByServoControl": {
+    en: "Servo control keeps the robot in direct mode: press Stop, or Leave servo control in the Servos view, to end it. The servos keep their pose.",
+    ko: "서보 제어 때문에 로봇이 직접 모드에 있어요. 끝내려면 정지나 서보 화면의 ‘서보 제어 끝내기’를 눌러 주세요. 서보는 자세를 그대로 유지해요.",
+  },
+  "editor.robot.heldByLimp": {
+    en: "Limp left the robot in direct mode with its servos limp: press Stop to leave direct mode (the servos stay limp).",
+    ko: "힘 빼기 때문에 로봇이 서보 힘이 빠진 채로 직접 모드에 있어요. 직접 모드를 끝내려면 정지를 눌러 주세요 (서보는 힘이 빠진 채로 있어요).",
+  },
   "editor.robot.direct": {
-    en: "The robot is in servo control (direct mode): end teach-in, or servo control in the Servos view, first.",
-    ko: "로봇이 서보 제어(직접 모드) 중이에요. 티칭이나 서보 화면의 서보 제어를 먼저 끝내 주세요.",
+    en: "The robot is in direct mode: press Stop to leave it.",
+    ko: "로봇이 직접 모드에 있어요. 끝내려면 정지를 눌러 주세요.",
   },
   "editor.robot.remoteKey": { en: "remote {key}", ko: "리모컨 {key}" },
   "editor.robot.holds": {

@@ -18,14 +18,14 @@ import {
   uploadPayload,
 } from "../motions/index.ts";
 import { editorController } from "./controller.ts";
-import { liveOf } from "./live-state.ts";
+import { type EditorRunPlace, liveOf } from "./live-state.ts";
 import { type EditorTranslator, editorMessages } from "./messages.ts";
 import {
-  motionPlaying,
   requestEditorUpload,
   robotRefusal,
   runOnRobot,
   startEditorUpload,
+  stopEndsIt,
 } from "./robot-actions.ts";
 import {
   type CopyStatus,
@@ -105,20 +105,21 @@ function postureBlock(ctx: ViewContext, mt: MotionsTranslator, refused: boolean)
   return html`<div class="notice notice--warning" data-testid="editor-posture">
     <p><strong>${mt("motions.run.postureGuidance")}</strong> ${mt("motions.run.ignoresOthers")}</p>
     <div class="actions">
-      <button type="button" class="btn btn--wrap" ?disabled=${refused} @click=${() => runOnRobot(ctx, BASIC_POSTURE_MOTION)}>
+      <button type="button" class="btn btn--wrap" ?disabled=${refused} @click=${() => runOnRobot(ctx, BASIC_POSTURE_MOTION, "posture")}>
         ${mt("motions.run.confirmNamed", { number: BASIC_POSTURE_MOTION, name })}
       </button>
     </div>
   </div>`;
 }
 
-/** The question, progress and result of a Run pressed here (the Run tab's own parts). */
-function runInPlace(ctx: ViewContext, mt: MotionsTranslator): TemplateResult {
+/** The question, progress and result of a Run pressed at `at` (the Run tab's own parts), right under its button. */
+function runInPlace(ctx: ViewContext, mt: MotionsTranslator, at: EditorRunPlace): TemplateResult {
   const s = ctx.state;
   const m = motionsOf(s);
-  const from = liveOf(s).runFrom;
-  const here = from !== undefined && m.runFrom === from;
-  return html`<div class="run-in-place" data-testid="editor-run-place">
+  const live = liveOf(s);
+  const from = live.runFrom;
+  const here = from !== undefined && m.runFrom === from && (live.runAt ?? "card") === at;
+  return html`<div class="run-in-place" data-testid=${`editor-run-place-${at}`}>
     ${here && m.confirmMove !== undefined ? confirmMove(ctx, mt, s, m.confirmMove) : nothing}
     ${here && m.run ? runningPanel(ctx, mt, m.run) : nothing}
     ${liveNotice(here ? m.runNotice : undefined, mt("motions.run.resultLabel"), mt.locale)}
@@ -173,11 +174,23 @@ export function robotCard(ctx: ViewContext, doc: Motion): TemplateResult {
                 }
               </span>
             </div>
-            ${busy && showBusy ? busyLine(ctx, busy, motionPlaying(s) && !ownRun) : nothing}
-            ${uploadInPlace(ctx, editorUploadTarget(doc), startEditorUpload)}
-            ${status.kind !== "none" && !s.connection.basicPostureConfirmed ? postureBlock(ctx, mt, busy !== undefined || confirming) : nothing}
+            ${busy && showBusy ? busyLine(ctx, busy, stopEndsIt(s) && !ownRun) : nothing}
+            ${uploadInPlace(ctx, editorUploadTarget(doc), startEditorUpload, {
+              busy: busy !== undefined || confirming,
+              run: (number) => runOnRobot(ctx, number, "result"),
+              place: runInPlace(ctx, mt, "result"),
+            })}
+            ${
+              // A question about another motion says "Basic posture first" itself while it is asked.
+              status.kind !== "none" &&
+              !s.connection.basicPostureConfirmed &&
+              !(confirming && m.confirmMove !== BASIC_POSTURE_MOTION)
+                ? postureBlock(ctx, mt, busy !== undefined || confirming)
+                : nothing
+            }
+            ${runInPlace(ctx, mt, "posture")}
             ${status.kind !== "none" ? copyBlock(ctx, t, status, busy !== undefined || confirming, showBusy) : nothing}
-            ${runInPlace(ctx, mt)}
+            ${runInPlace(ctx, mt, "card")}
           `
       }
     </section>

@@ -17,4 +17,4 @@ export { requestUpload, startUpload, uploadPayload } from "./upload-actions.ts";
 export { pressRun } from "./view-actions.ts";
 export { motionMemoryStrip } from "./views/memory-card.ts";
 export { confirmMove, runningPanel } from "./views/run-section.ts";
-export { uploadInPlace } from "./views/upload-in-place.ts";
+export { type RunHere, uploadInPlace } from "./views/upload-in-place.ts";

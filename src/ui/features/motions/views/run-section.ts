@@ -154,10 +154,19 @@ export function confirmMove(
     e.stopPropagation();
     cancelMovement(ctx);
   };
+  // Before Basic posture the robot ignores every other motion (docs/protocol.md §3.1): said in the question too,
+  // wherever it is asked (the Run tab, the Editor), so that the answer is given knowing it.
+  const c = s.connection;
+  const postureFirst = c.phase === "connected" && !c.basicPostureConfirmed && number !== BASIC_POSTURE_MOTION;
   return html`
     <div class="confirm confirm--warning" role="alertdialog" aria-labelledby="move-title" aria-describedby="move-stop" data-testid="move-confirm" @keydown=${onKey}>
       <p id="move-title"><strong>${t("motions.run.movementWarning")}</strong></p>
       ${hazard ? html`<p data-testid="motion-hazard"><strong>${hazard}</strong></p>` : nothing}
+      ${
+        postureFirst
+          ? html`<p data-testid="move-posture-first">${t("motions.run.postureGuidance")} ${t("motions.run.ignoresOthers")}</p>`
+          : nothing
+      }
       <p id="move-stop">${hazard ? "" : t("motions.run.asksOnce")} ${t("motions.run.stopSentence")}</p>
       <div class="actions">
         <button type="button" class="btn btn--primary long-label" id="confirm-move" @click=${() => confirmMovement(ctx)}>

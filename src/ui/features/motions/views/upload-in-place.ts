@@ -5,7 +5,7 @@ import type { AppState } from "../../../app-state.ts";
 import { liveNotice } from "../../../shell/notice.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
 import { isCancelling } from "../../connection/index.ts";
-import { remoteKeyWords, runNowButton, shelfMessages, storedWords } from "../../shelf/index.ts";
+import { type RunNow, remoteKeyWords, runNowButton, shelfMessages, storedWords } from "../../shelf/index.ts";
 import { type MotionsTranslator, motionsMessages } from "../messages.ts";
 import { offerFor } from "../run-actions.ts";
 import { type AlreadyStored, motionsOf, type UploadRun, type UploadTarget } from "../state.ts";
@@ -179,11 +179,21 @@ function alreadyStoredBlock(
 /** What starts an upload once confirmed: `startUpload`, or a caller's wrapper that also wants its outcome. */
 export type UploadStart = (ctx: ViewContext, target: UploadTarget) => Promise<unknown>;
 
+/**
+ * How "Run now" under a stored upload's result runs where it was started: `run` and `busy` as the place's own Run
+ * buttons, and `place` (the run's question, progress and result) drawn right under it. The Motions view's own
+ * uploads leave it out: their "Run now" shows the Run tab, where the run is asked and shown.
+ */
+export interface RunHere extends RunNow {
+  place: TemplateResult;
+}
+
 /** Confirmation, progress and result of an upload started at `target`, or only the (empty) live region. */
 export function uploadInPlace(
   ctx: ViewContext,
   target: UploadTarget,
   start: UploadStart = startUpload,
+  runHere?: RunHere,
 ): TemplateResult {
   const s = ctx.state;
   const t = translator(motionsMessages, s.locale);
@@ -213,10 +223,11 @@ export function uploadInPlace(
           ? html`<div class="actions">${runNowButton(
               translator(shelfMessages, s.locale),
               { number: m.uploadStored, name: offerFor(s, m.uploadStored)?.name ?? "" },
-              runNow(ctx),
+              runHere ?? runNow(ctx),
             )}</div>`
           : nothing
       }
+      ${runHere?.place ?? nothing}
     </div>
   `;
 }
