@@ -4,6 +4,7 @@ import { FACTORY_ZEROS } from "../../src/protocol/index.ts";
 import { openConnected } from "./connected-page.ts";
 import { expectText, squash, useApp } from "./harness.ts";
 import "./rbc-test-globals.ts";
+import { connectDemo, PHONE, type Size } from "./i18n-checks.ts";
 
 /**
  * Issue 33 item 7: unwritten zero changes are not lost without a word. Read from robot (and every load that
@@ -14,9 +15,16 @@ import "./rbc-test-globals.ts";
 const app = useApp();
 
 /** Opens the Zeros view with the robot on the cable connected, once its zeros are read. */
-async function openZeros(locale: string): Promise<{ page: Page; close: () => Promise<void> }> {
-  const { page, context } = await openConnected(app, { robot: "cable", view: "zeros", locale });
-  await expect.poll(() => page.locator("#zero-0").inputValue()).toBe(String(FACTORY_ZEROS[0]));
+async function openZeros(
+  locale: string,
+  robot: "cable" | "demo" = "cable",
+  size?: Size,
+): Promise<{ page: Page; close: () => Promise<void> }> {
+  const { page, context } = await openConnected(app, { robot, view: "zeros", locale, size });
+  // The robot on the cable holds the factory zeros; the demo robot its own.
+  if (robot === "cable")
+    await expect.poll(() => page.locator("#zero-0").inputValue()).toBe(String(FACTORY_ZEROS[0]));
+  else await expect.poll(() => page.locator("#zero-0").inputValue()).not.toBe("");
   return { page, close: () => context.close() };
 }
 
@@ -93,8 +101,8 @@ describe("Unwritten zeros (issue 33 item 7)", () => {
     await close();
   });
 
-  it("speaks Korean: the question, the changes offered back after a reload, and their Discard", async () => {
-    const { page, close } = await openZeros("ko-KR");
+  it("speaks Korean on a phone: the question (inside its card), the changes offered back after a reload, and their Discard", async () => {
+    const { page, close } = await openZeros("ko-KR", "cable", PHONE);
     await page.locator("#zero-0").fill(changed);
     await page.getByRole("button", { name: "로봇에서 읽기" }).click();
     const question = page.getByTestId("zeros-discard");
@@ -103,6 +111,19 @@ describe("Unwritten zeros (issue 33 item 7)", () => {
       "로봇에 아직 쓰지 않은 변경이 있는 서보가 1개 있어요(서보 0). 버릴까요? 로봇에서 읽으면 그 자리에 로봇의 영점이 들어가요.",
     );
     await question.getByRole("button", { name: "버리고 읽기" }).waitFor();
+    // On a phone the question stays inside the Zeros card, and the page does not scroll sideways.
+    const inside = await page.evaluate(() => {
+      const q = document.querySelector("[data-testid=zeros-discard]")?.getBoundingClientRect();
+      const card = document.querySelector("[data-testid=zeros-card]")?.getBoundingClientRect();
+      return (
+        q !== undefined &&
+        card !== undefined &&
+        q.left >= card.left &&
+        q.right <= card.right &&
+        document.documentElement.scrollWidth <= window.innerWidth
+      );
+    });
+    expect(inside).toBe(true);
     await question.getByRole("button", { name: "계속 편집하기" }).click();
     expect(await page.locator("#zero-0").inputValue()).toBe(changed);
 
@@ -117,6 +138,22 @@ describe("Unwritten zeros (issue 33 item 7)", () => {
     await expect.poll(() => page.locator("#zero-0").inputValue()).toBe(stored);
     await expect.poll(() => back.count()).toBe(0);
     expect(await asksBeforeLeaving(page)).toBe(false);
+    await close();
+  });
+
+  it("keeps unwritten changes across a disconnect: the same robot, connected again, gets them back", async () => {
+    const { page, close } = await openZeros("en-US", "demo");
+    const demoStored = await page.locator("#zero-0").inputValue();
+    const demoChanged = String(Number(demoStored) + 2);
+    await page.locator("#zero-0").fill(demoChanged);
+    await page.getByTestId("change-summary").filter({ hasText: "not yet written" }).waitFor();
+    await page.getByRole("link", { name: "Robot", exact: true }).click();
+    await page.getByRole("button", { name: "Disconnect" }).click();
+    await connectDemo(page);
+    await page.getByRole("link", { name: "Zeros", exact: true }).click();
+    await expect.poll(() => page.locator("#zero-0").inputValue()).toBe(demoChanged);
+    await expectText(page.locator('tr[data-servo="0"] .zero-stored'), demoStored);
+    await page.getByTestId("zeros-draft-back").waitFor();
     await close();
   });
 });
