@@ -3,7 +3,7 @@ import { describe, expect, it } from "vitest";
 import { openConnected } from "./connected-page.ts";
 import { expectText, squash, useApp } from "./harness.ts";
 import "./rbc-test-globals.ts";
-import { text } from "./i18n-checks.ts";
+import { PHONE, type Size, text } from "./i18n-checks.ts";
 
 /**
  * Issue 33 item 11: the guided id fix ends with the steps left (plug back in the servo it had asked to unplug,
@@ -30,6 +30,7 @@ async function scanWith(page: Page, button: string, done: RegExp): Promise<strin
 
 interface Words {
   locale: string;
+  size?: Size;
   fault: string;
   scanned: RegExp;
   refused: string;
@@ -61,6 +62,8 @@ const EN: Words = {
 
 const KO: Words = {
   locale: "ko-KR",
+  // Korean on a phone: the steps left fit the narrow screen.
+  size: PHONE,
   fault: "교체한 서보 (아직 ID 0), 서보 7번",
   scanned: /ID 16개를 검사했어요/,
   refused: "바꾸지 않았어요",
@@ -115,6 +118,7 @@ describe("The guided id fix ends with the steps left and a fresh scan (issue 33 
       expect(await page.getByTestId("doctor-table").count()).toBe(0);
       expect(await page.getByTestId("doctor-fix-suggested").count()).toBe(0);
       await expectText(page.getByTestId("doctor-fix-scan"), w.scanNow);
+      expect(await page.evaluate(() => document.documentElement.scrollWidth <= window.innerWidth)).toBe(true);
 
       // Servo 0 plugged back in, then the guide's own button scans: every servo answers.
       await page.getByTestId("doctor-demo-plug-back").click();
