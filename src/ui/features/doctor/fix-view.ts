@@ -28,6 +28,7 @@ function nextSteps(ctx: ViewContext, t: DoctorTranslator, result: SetIdResult): 
     (result.outcome === "refused" && result.reason === "from-silent") ||
     (result.outcome === "failed" && result.reason === "answers-nowhere");
   const demo = demoBusOf(ctx);
+  const cleared = doctorOf(ctx.state).scanCleared !== undefined;
   const other = garbled ? demo?.servos[result.from] : undefined;
   const scanAgain =
     garbled ||
@@ -36,7 +37,10 @@ function nextSteps(ctx: ViewContext, t: DoctorTranslator, result: SetIdResult): 
     result.outcome === "failed" ||
     result.outcome === "stopped";
   return html`
-    ${result.outcome === "done" ? stepsLeft(ctx, t, result.to) : nothing}
+    ${
+      // Until the next scan: what the guide leaves to do (after that scan, the scan says how the bus is).
+      result.outcome === "done" && cleared ? stepsLeft(ctx, t, result.to) : nothing
+    }
     ${
       // The failed "answers nowhere" outcome already carries the hardware reset; a silent FROM gets it here.
       result.outcome === "refused" && result.reason === "from-silent"
@@ -54,7 +58,7 @@ function nextSteps(ctx: ViewContext, t: DoctorTranslator, result: SetIdResult): 
       ${
         scanAgain
           ? html`<button type="button" class="btn" data-testid="doctor-fix-scan" ?disabled=${doctorOf(ctx.state).busy !== undefined} @click=${() => void scan(ctx)}>
-              ${result.outcome === "done" ? t("doctor.fix.scanNow") : t("doctor.scan.again")}
+              ${cleared ? t("doctor.fix.scanNow") : t("doctor.scan.again")}
             </button>`
           : nothing
       }
