@@ -4,7 +4,7 @@ import { FACTORY_ZEROS } from "../../src/protocol/index.ts";
 import { openConnected } from "./connected-page.ts";
 import { expectText, squash, useApp } from "./harness.ts";
 import "./rbc-test-globals.ts";
-import { connectDemo, PHONE, type Size } from "./i18n-checks.ts";
+import { axeProblems, connectDemo, PHONE, type Size } from "./i18n-checks.ts";
 
 /**
  * Issue 33 item 7: unwritten zero changes are not lost without a word. Read from robot (and every load that
@@ -62,6 +62,7 @@ describe("Unwritten zeros (issue 33 item 7)", () => {
       "1 servo has a change not yet written to the robot (servo 0). Discard it? Reading from the robot puts the robot's zeros in their place.",
     );
     await expect.poll(() => page.evaluate(() => document.activeElement?.id)).toBe("keep-editing");
+    expect(await axeProblems(page, { within: "[data-testid=zeros-card]" })).toEqual([]);
     await question.getByRole("button", { name: "Keep editing" }).click();
     await expect.poll(() => question.count()).toBe(0);
     expect(await page.locator("#zero-0").inputValue()).toBe(changed);
@@ -87,6 +88,7 @@ describe("Unwritten zeros (issue 33 item 7)", () => {
       /^1 change not yet written, kept in this browser since .+, is back in the table \(servo 0, marked as changed\)\. The robot does not hold it until you write it\.$/,
     );
     expect(await asksBeforeLeaving(page)).toBe(true);
+    expect(await axeProblems(page, { within: "[data-testid=zeros-card]" })).toEqual([]);
 
     // Discard and read: the robot's value, nothing kept, no leave question; a reload shows the robot's zeros.
     await page.getByRole("button", { name: "Read from robot" }).click();
