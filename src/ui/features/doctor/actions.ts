@@ -1,4 +1,4 @@
-import type { ScanResult } from "../../../device/servo-doctor/index.ts";
+import type { ScanResult, SetIdResult } from "../../../device/servo-doctor/index.ts";
 import { type Said, said } from "../../../i18n/said.ts";
 import type { AppContext } from "../../context.ts";
 import { type Controller, controllerKey } from "../../scope.ts";
@@ -135,10 +135,14 @@ export async function scan(ctx: AppContext): Promise<void> {
     patchDoctor(ctx.store, (d) => {
       const fix = suggestedFix(result);
       const empty = d.fix.from === "" && d.fix.to === "";
+      const garbled = result.servos.filter((r) => r.status === "garbled").map((r) => r.id);
       return {
         busy: undefined,
         scanning: undefined,
         scan: result,
+        scanCleared: undefined,
+        // A scan with nothing to report ends what was asked to be unplugged (it is all back, or never was).
+        shared: result.findings.length === 0 ? [] : [...new Set([...(d.shared ?? []), ...garbled])],
         fix: fix && empty ? { from: String(fix.from), to: String(fix.to) } : d.fix,
       };
     });
@@ -233,11 +237,38 @@ export async function fixId(ctx: AppContext): Promise<void> {
         }),
       { packetMode: false },
     );
-    patchDoctor(ctx.store, (x) => ({ busy: undefined, fix: { ...x.fix, asking: undefined, result } }));
+    patchDoctor(ctx.store, (x) => ({
+      busy: undefined,
+      fix: { ...x.fix, asking: undefined, result },
+      // More than one servo at FROM: the guide asks to unplug the others (its ending names them again).
+      ...(result.outcome === "refused" && result.reason === "from-garbled"
+        ? { shared: [...new Set([...(x.shared ?? []), result.from])] }
+        : {}),
+      // An id set was sent: the scan taken before it no longer shows the bus, and is cleared (the view says so).
+      ...(idSetSent(result)
+        ? {
+            scan: undefined,
+            scanCleared: {
+              from: result.from,
+              to: result.to,
+              silent: (x.scan?.servos ?? [])
+                .filter((r) => r.status === "silent" && r.id !== result.from && r.id !== result.to)
+                .map((r) => r.id),
+            },
+          }
+        : {}),
+    }));
   } catch (e) {
     patchDoctor(ctx.store, (x) => ({ fix: { ...x.fix, asking: undefined } }));
     await failed(ctx, e);
   }
+}
+
+/** Whether the id fix sent its id set (the servos may have changed since the last scan). */
+function idSetSent(result: SetIdResult): boolean {
+  return (
+    result.outcome === "done" || result.outcome === "failed" || (result.outcome === "stopped" && result.sent)
+  );
 }
 
 /** The answer to the id fix's one question. */

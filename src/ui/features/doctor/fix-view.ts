@@ -28,6 +28,7 @@ function nextSteps(ctx: ViewContext, t: DoctorTranslator, result: SetIdResult): 
     (result.outcome === "refused" && result.reason === "from-silent") ||
     (result.outcome === "failed" && result.reason === "answers-nowhere");
   const demo = demoBusOf(ctx);
+  const cleared = doctorOf(ctx.state).scanCleared !== undefined;
   const other = garbled ? demo?.servos[result.from] : undefined;
   const scanAgain =
     garbled ||
@@ -36,6 +37,10 @@ function nextSteps(ctx: ViewContext, t: DoctorTranslator, result: SetIdResult): 
     result.outcome === "failed" ||
     result.outcome === "stopped";
   return html`
+    ${
+      // Until the next scan: what the guide leaves to do (after that scan, the scan says how the bus is).
+      result.outcome === "done" && cleared ? stepsLeft(ctx, t, result.to) : nothing
+    }
     ${
       // The failed "answers nowhere" outcome already carries the hardware reset; a silent FROM gets it here.
       result.outcome === "refused" && result.reason === "from-silent"
@@ -52,13 +57,36 @@ function nextSteps(ctx: ViewContext, t: DoctorTranslator, result: SetIdResult): 
       }
       ${
         scanAgain
-          ? html`<button type="button" class="btn" ?disabled=${doctorOf(ctx.state).busy !== undefined} @click=${() => void scan(ctx)}>
-              ${t("doctor.scan.again")}
+          ? html`<button type="button" class="btn" data-testid="doctor-fix-scan" ?disabled=${doctorOf(ctx.state).busy !== undefined} @click=${() => void scan(ctx)}>
+              ${cleared ? t("doctor.fix.scanNow") : t("doctor.scan.again")}
             </button>`
           : nothing
       }
     </div>
   `;
+}
+
+/**
+ * After a done fix, what is left: the servos unplugged for it back in (named when the page knows them: the ids
+ * heard answered by two servos on this connection, and those the scan before the fix found silent), then a scan.
+ */
+function stepsLeft(ctx: ViewContext, t: DoctorTranslator, to: number): TemplateResult {
+  const { locale } = ctx.state;
+  const d = doctorOf(ctx.state);
+  const named = [
+    ...new Set([...(d.shared ?? []).filter((id) => id !== to), ...(d.scanCleared?.silent ?? [])]),
+  ].sort((a, b) => a - b);
+  return html`<div data-testid="doctor-fix-left">
+    <h3 class="small">${t("doctor.fix.leftTitle")}</h3>
+    <ol class="small">
+      <li>${
+        named.length > 0
+          ? t("doctor.fix.plugBackNamed", { servos: named.map((id) => servoText(id, locale)).join(", ") })
+          : t("doctor.fix.plugBack")
+      }</li>
+      <li>${t("doctor.fix.scanAfter", { to: String(to) })}</li>
+    </ol>
+  </div>`;
 }
 
 export function fixCard(ctx: ViewContext, t: DoctorTranslator): TemplateResult {

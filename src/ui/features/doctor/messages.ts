@@ -129,6 +129,24 @@ export const doctorMessages = defineMessages({
   "doctor.fix.confirm": { en: "Give it id {to}", ko: "ID {to} 주기" },
   "doctor.fix.cancel": { en: "Don't change", ko: "바꾸지 않기" },
   "doctor.fix.resultLabel": { en: "Id fix result", ko: "ID 고치기 결과" },
+  "doctor.fix.leftTitle": { en: "Steps left", ko: "남은 단계" },
+  "doctor.fix.plugBackNamed": {
+    en: "Plug back in the servos you unplugged for the fix: {servos}.",
+    ko: "ID 고치기 때문에 뺀 서보를 다시 꽂아 주세요: {servos}.",
+  },
+  "doctor.fix.plugBack": {
+    en: "Plug back in any servo you unplugged for the fix.",
+    ko: "ID 고치기 때문에 뺀 서보가 있으면 다시 꽂아 주세요.",
+  },
+  "doctor.fix.scanAfter": {
+    en: "Then scan again: every servo should answer, the fixed one at id {to}.",
+    ko: "그다음 다시 검사해 주세요. 모든 서보가 응답해야 하고, 고친 서보는 ID {to}에서 응답해야 해요.",
+  },
+  "doctor.fix.scanNow": { en: "Scan now", ko: "지금 검사" },
+  "doctor.scan.cleared": {
+    en: "The scan from before the id change (id {from} → id {to}) was cleared: it no longer shows the servos as they are. Scan again.",
+    ko: "ID 바꾸기(ID {from} → ID {to}) 전에 한 검사 결과는 지웠어요. 지금의 서보 상태가 아니에요. 다시 검사해 주세요.",
+  },
 
   "doctor.demo.title": { en: "Demo robot: simulate a fault", ko: "데모 로봇: 고장 흉내 내기" },
   "doctor.demo.intro": {

@@ -105,6 +105,9 @@ function liveText(t: DoctorTranslator, d: DoctorState, locale: Locale, lost?: Sc
       total: String(d.scanning.ids.length),
     });
   }
+  if (!d.scan && d.scanCleared) {
+    return t("doctor.scan.cleared", { from: String(d.scanCleared.from), to: String(d.scanCleared.to) });
+  }
   if (!d.scan) return lost ? `${t("doctor.scan.lost")} ${scanStoppedText(lost, locale) ?? ""}` : "";
   const stopped = scanStoppedText(d.scan, locale);
   return stopped ? `${stopped} ${summary(t, d.scan)}` : summary(t, d.scan);

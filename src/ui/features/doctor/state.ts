@@ -22,6 +22,13 @@ export interface DoctorState {
   scanning?: { ids: number[]; readings: ServoReading[] };
   /** The last scan's result (also one stopped early: `stopped`). */
   scan?: ScanResult;
+  /**
+   * The id fix sent an id set (from → to): the scan taken before it was cleared, since it no longer shows the
+   * bus; the view says so until the next scan. `silent`: the ids that scan found silent (besides the two).
+   */
+  scanCleared?: { from: number; to: number; silent: number[] };
+  /** Ids heard answered by more than one servo (garbled) on this connection: the guide asked to unplug one. */
+  shared?: number[];
   /** The servo picked for a closer look (from the table or the figure). */
   picked?: number;
   info?: ServoInfo;

@@ -34,6 +34,7 @@ import { checkDraft, draftTable, factoryDraft, toDraft } from "./editor.ts";
 import { trimChanged, trimWriteBegins, trimWriteEnded } from "./live/trim-live.ts";
 import { zerosMessages } from "./messages.ts";
 import type { ZerosState } from "./state.ts";
+import { discardFirst, offerKeptDraft } from "./unwritten.ts";
 
 /** What the zeros view does: read, edit, back up, write (after a backup), restore, factory zeros. */
 
@@ -59,10 +60,17 @@ export function cancelWrite(ctx: AppContext): void {
   patchZeros(ctx.store, { confirming: false });
 }
 
+/** "Read from robot": asks first when it would replace unwritten changes (unwritten.ts). */
+export function askToRead(ctx: AppContext): void {
+  discardFirst(ctx, { kind: "read" }, () => void readZerosFromRobot(ctx));
+}
+
 export async function readZerosFromRobot(ctx: AppContext): Promise<void> {
   const { session, store } = ctx;
   const { zeros: z, locale } = store.get();
   if (z.busy) return;
+  // The first read of this connection: unwritten changes kept for this robot are offered back.
+  const first = z.stored === undefined;
   patchZeros(store, { busy: "reading", result: undefined, confirming: false });
   try {
     const zeros = await session.run(said(zerosMessages, "zeros.runReading"), (client) => client.readZeros());
@@ -72,6 +80,7 @@ export async function readZerosFromRobot(ctx: AppContext): Promise<void> {
       draft: toDraft(zeros),
       source: { kind: "robot" },
       fileNotice: undefined,
+      ...(first ? offerKeptDraft(ctx, zeros) : undefined),
     });
   } catch (e) {
     patchZeros(store, {
@@ -82,13 +91,15 @@ export async function readZerosFromRobot(ctx: AppContext): Promise<void> {
 }
 
 export function useFactoryZeros(ctx: AppContext): void {
-  patchZeros(ctx.store, {
-    draft: factoryDraft(),
-    source: { kind: "factory" },
-    confirming: false,
-    result: undefined,
-    fileNotice: noticeOf("info", ctx.store.get().locale, [say("zeros.factoryLoaded")]),
-  });
+  discardFirst(ctx, { kind: "factory" }, () =>
+    patchZeros(ctx.store, {
+      draft: factoryDraft(),
+      source: { kind: "factory" },
+      confirming: false,
+      result: undefined,
+      fileNotice: noticeOf("info", ctx.store.get().locale, [say("zeros.factoryLoaded")]),
+    }),
+  );
 }
 
 /** Where a backup went: kept in this browser (or not), and its file, never more than the page knows. */
@@ -189,8 +200,10 @@ export async function backUpZeros(ctx: AppContext): Promise<void> {
   patchZeros(store, {
     busy: undefined,
     stored: zeros,
-    // Before the first read the editor is empty: fill it with what was read.
-    ...(z.draft.length === ZERO_COUNT ? {} : { draft: toDraft(zeros), source: { kind: "robot" } }),
+    // Before the first read the editor is empty: fill it with what was read (and what was kept unwritten).
+    ...(z.draft.length === ZERO_COUNT
+      ? {}
+      : { draft: toDraft(zeros), source: { kind: "robot" }, ...offerKeptDraft(ctx, zeros) }),
     fileNotice: noticeOf(sure ? "ok" : "warning", locale, [
       say("zeros.backupDone", { count: zeros.length }),
       whereSaid(saved),
@@ -200,6 +213,10 @@ export async function backUpZeros(ctx: AppContext): Promise<void> {
 
 /** "Restore" in the list of backups kept in this browser: into the editor; nothing is written. */
 export function restoreKeptBackup(ctx: AppContext, kept: KeptBackup): void {
+  discardFirst(ctx, { kind: "kept", savedAt: kept.backup.savedAt }, () => putKeptBackup(ctx, kept));
+}
+
+function putKeptBackup(ctx: AppContext, kept: KeptBackup): void {
   const { store } = ctx;
   const { backup } = kept;
   const serial = store.get().connection.serialNumber;
@@ -257,13 +274,15 @@ export async function restoreFromFile(ctx: AppContext, file: File): Promise<void
           }),
         ])
       : noticeOf("info", locale, [say("zeros.loaded", { file: file.name, saved })]);
-  patchZeros(store, {
-    draft: toDraft(backup.zeros),
-    source: { kind: "backup", file: file.name },
-    confirming: false,
-    result: undefined,
-    fileNotice,
-  });
+  discardFirst(ctx, { kind: "file", file: file.name }, () =>
+    patchZeros(store, {
+      draft: toDraft(backup.zeros),
+      source: { kind: "backup", file: file.name },
+      confirming: false,
+      result: undefined,
+      fileNotice,
+    }),
+  );
 }
 
 /** Why the backup step ended the write (the Save dialog closed): nothing was written. */

@@ -69,3 +69,16 @@ export function clampZero(id: number, value: number): number {
   const { min, max } = zeroRange(id);
   return Math.min(max, Math.max(min, Math.round(value)));
 }
+
+/**
+ * The servos whose field differs from what the robot holds (a changed value, or a field left empty or invalid):
+ * the unwritten changes a Read, a load or a reload would lose. None before the zeros are read.
+ */
+export function unwrittenIds(stored: readonly number[] | undefined, draft: readonly string[]): number[] {
+  if (!stored || draft.length !== ZERO_COUNT) return [];
+  const ids: number[] = [];
+  for (let id = 0; id < ZERO_COUNT; id++) {
+    if ((draft[id] ?? "").trim() !== String(stored[id])) ids.push(id);
+  }
+  return ids;
+}

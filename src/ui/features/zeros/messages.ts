@@ -39,6 +39,53 @@ export const zerosMessages = defineMessages({
     ko: "바뀐 영점을 로봇에 쓰기…",
   },
   "zeros.sourceCapture": { en: "the pose captured by hand", ko: "손으로 잡은 자세" },
+  "zeros.sourceDraft": {
+    en: "changes not yet written, kept in this browser since {saved}",
+    ko: "이 브라우저에 {saved}부터 보관한, 아직 쓰지 않은 변경",
+  },
+
+  // Unwritten changes: asked before they are replaced, kept across a reload (unwritten.ts).
+  "zeros.discardQuestion": {
+    en: {
+      one: "{count} servo has a change not yet written to the robot (servo {ids}). Discard it?",
+      other: "{count} servos have changes not yet written to the robot (servos {ids}). Discard them?",
+    },
+    ko: "로봇에 아직 쓰지 않은 변경이 있는 서보가 {count}개 있어요(서보 {ids}). 버릴까요?",
+  },
+  "zeros.discardRead": {
+    en: "Reading from the robot puts the robot's zeros in their place.",
+    ko: "로봇에서 읽으면 그 자리에 로봇의 영점이 들어가요.",
+  },
+  "zeros.discardFactory": {
+    en: "Loading the factory zeros puts them in their place.",
+    ko: "공장 영점을 불러오면 그 자리에 공장 영점이 들어가요.",
+  },
+  "zeros.discardFile": {
+    en: 'Loading "{file}" puts its zeros in their place.',
+    ko: '"{file}" 파일을 불러오면 그 자리에 파일의 영점이 들어가요.',
+  },
+  "zeros.discardKept": {
+    en: "Restoring the backup saved {saved} puts its zeros in their place.",
+    ko: "{saved}에 저장한 백업을 복원하면 그 자리에 백업의 영점이 들어가요.",
+  },
+  "zeros.discardCapture": {
+    en: "Using the captured pose puts it in their place.",
+    ko: "잡은 자세를 쓰면 그 자리에 그 자세가 들어가요.",
+  },
+  "zeros.discardAndRead": { en: "Discard and read", ko: "버리고 읽기" },
+  "zeros.discardAndLoad": { en: "Discard and load", ko: "버리고 불러오기" },
+  "zeros.discardAndRestore": { en: "Discard and restore", ko: "버리고 복원하기" },
+  "zeros.discardAndUse": { en: "Discard and use the pose", ko: "버리고 자세 쓰기" },
+  "zeros.keepEditing": { en: "Keep editing", ko: "계속 편집하기" },
+  "zeros.draftBack": {
+    en: {
+      one: "{count} change not yet written, kept in this browser since {saved}, is back in the table (servo {ids}, marked as changed). The robot does not hold it until you write it.",
+      other:
+        "{count} changes not yet written, kept in this browser since {saved}, are back in the table (servos {ids}, marked as changed). The robot does not hold them until you write them.",
+    },
+    ko: "이 브라우저에 {saved}부터 보관한, 아직 쓰지 않은 변경 {count}개를 표에 다시 넣었어요(서보 {ids}, 바뀐 것으로 표시). 쓰기 전에는 로봇에 들어 있지 않아요.",
+  },
+  "zeros.discardDraft": { en: "Discard the unwritten changes", ko: "쓰지 않은 변경 버리기" },
   "zeros.tablesTitle": {
     en: "Factory zeros and the reference the robot checks against",
     ko: "공장 영점과 로봇이 비교하는 기준 영점",

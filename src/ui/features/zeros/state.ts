@@ -11,6 +11,16 @@ export type ZerosSource =
   /** A backup kept in this browser, by its time stamp (ISO). */
   | { kind: "kept"; savedAt: string }
   /** A pose read from the limp robot ("Capture zeros"), by the robot clock's time it was read. */
+  | { kind: "capture" }
+  /** Unwritten changes kept in this browser (before a reload, or the last connection), by their time (epoch ms). */
+  | { kind: "draft"; savedAt: number };
+
+/** What would replace the table's unwritten changes, waiting for "Discard and …" (unwritten.ts). */
+export type DiscardAction =
+  | { kind: "read" }
+  | { kind: "factory" }
+  | { kind: "file"; file: string }
+  | { kind: "kept"; savedAt: string }
   | { kind: "capture" };
 
 /** The Zeros view's part of the app state. Reset with every connection. */
@@ -23,6 +33,8 @@ export interface ZerosState {
   source?: ZerosSource;
   busy?: "reading" | "writing" | "backing-up";
   confirming: boolean;
+  /** Asked before unwritten changes are replaced: the action, and the servos whose changes it would discard. */
+  discarding?: { action: DiscardAction; ids: number[] };
   result?: Notice;
   fileNotice?: Notice;
   /** The backups kept in this browser, newest first (read when the view opens and after each backup). */

@@ -18,6 +18,7 @@ import { liveNotice } from "../../shell/notice.ts";
 import type { AppView, ViewContext } from "../../shell/view-types.ts";
 import { connectPlace } from "../connection/index.ts";
 import {
+  askToRead,
   askToWrite,
   backUpZeros,
   cancelWrite,
@@ -32,7 +33,8 @@ import { checkDraft, type DraftCheck, draftTable, pendingChanges } from "./edito
 import { keptList } from "./kept-list-view.ts";
 import { captureResultPanel, livePanel, liveStart, lostTrimPanel, trimOnBox } from "./live/live-view.ts";
 import { type ZerosTranslator, zerosMessages } from "./messages.ts";
-import type { ZerosSource } from "./state.ts";
+import type { DiscardAction, ZerosSource } from "./state.ts";
+import { answerDiscard, discardUnwritten, unwrittenOf, watchUnwritten } from "./unwritten.ts";
 
 function row(
   ctx: ViewContext,
@@ -237,7 +239,76 @@ function sourceText(t: ZerosTranslator, source: ZerosSource): string {
       return t("zeros.sourceKept", { saved: formatDateTime(new Date(source.savedAt), t.locale) });
     case "capture":
       return t("zeros.sourceCapture");
+    case "draft":
+      return t("zeros.sourceDraft", { saved: formatDateTime(new Date(source.savedAt), t.locale) });
   }
+}
+
+/** What the waiting action would put in place of the unwritten changes, and its button. */
+function discardWords(t: ZerosTranslator, action: DiscardAction): { what: string; button: string } {
+  switch (action.kind) {
+    case "read":
+      return { what: t("zeros.discardRead"), button: t("zeros.discardAndRead") };
+    case "factory":
+      return { what: t("zeros.discardFactory"), button: t("zeros.discardAndLoad") };
+    case "file":
+      return { what: t("zeros.discardFile", { file: action.file }), button: t("zeros.discardAndLoad") };
+    case "kept":
+      return {
+        what: t("zeros.discardKept", { saved: formatDateTime(new Date(action.savedAt), t.locale) }),
+        button: t("zeros.discardAndRestore"),
+      };
+    case "capture":
+      return { what: t("zeros.discardCapture"), button: t("zeros.discardAndUse") };
+  }
+}
+
+/**
+ * Asked before an action replaces unwritten changes, beside the control that asked: the backups kept in this
+ * browser ("kept") below their list, every other one below the controls at the top.
+ */
+function discardQuestion(
+  ctx: ViewContext,
+  t: ZerosTranslator,
+  place: "top" | "kept",
+): TemplateResult | typeof nothing {
+  const asking = ctx.state.zeros.discarding;
+  if (!asking || (asking.action.kind === "kept") !== (place === "kept")) return nothing;
+  const { what, button } = discardWords(t, asking.action);
+  return html`
+    <div class="confirm confirm--warning" role="group" aria-labelledby="discard-title" data-testid="zeros-discard">
+      <p id="discard-title">
+        <strong>${t("zeros.discardQuestion", { count: asking.ids.length, ids: asking.ids.join(", ") })}</strong>
+        ${what}
+      </p>
+      <div class="actions">
+        <button type="button" class="btn btn--danger" data-testid="zeros-discard-yes" @click=${() => answerDiscard(ctx, true)}>
+          ${button}
+        </button>
+        <button id="keep-editing" type="button" class="btn" @click=${() => answerDiscard(ctx, false)}>
+          ${t("zeros.keepEditing")}
+        </button>
+      </div>
+    </div>
+  `;
+}
+
+/** Unwritten changes kept from before (a reload, the last connection), back in the table: said, with Discard. */
+function draftBack(ctx: ViewContext, t: ZerosTranslator, busy: boolean): TemplateResult | typeof nothing {
+  const z = ctx.state.zeros;
+  const ids = unwrittenOf(z);
+  if (z.source?.kind !== "draft" || ids.length === 0) return nothing;
+  const saved = formatDateTime(new Date(z.source.savedAt), t.locale);
+  return html`
+    <div class="notice notice--warning" data-testid="zeros-draft-back">
+      <p>${t("zeros.draftBack", { count: ids.length, ids: ids.join(", "), saved })}</p>
+      <div class="actions">
+        <button type="button" class="btn" ?disabled=${busy} @click=${() => discardUnwritten(ctx)}>
+          ${t("zeros.discardDraft")}
+        </button>
+      </div>
+    </div>
+  `;
 }
 
 function render(ctx: ViewContext): TemplateResult {
@@ -263,7 +334,7 @@ function renderConnected(ctx: ViewContext): TemplateResult {
       <div class="card-head">
         <h1 id="view-title">${t("zeros.title")}</h1>
         <div class="row-actions">
-          <button type="button" class="btn" ?disabled=${busy} @click=${() => void readZerosFromRobot(ctx)}>
+          <button type="button" class="btn" ?disabled=${busy} @click=${() => askToRead(ctx)}>
             ${z.busy === "reading" ? t("zeros.reading") : t("zeros.readFromRobot")}
           </button>
           <button
@@ -305,6 +376,8 @@ function renderConnected(ctx: ViewContext): TemplateResult {
       </p>
       ${ready ? html`<p class="muted small sides-note" data-testid="sides-note">${sidesNote(locale)}</p>` : nothing}
       ${zeroTables(busy || !ready, ctx, t)}
+      ${discardQuestion(ctx, t, "top")}
+      ${ready ? draftBack(ctx, t, busy) : nothing}
       ${liveNotice(z.fileNotice, t("zeros.fileNoticeLabel"), locale)}
       ${ready ? html`${livePanel(ctx)}${captureResultPanel(ctx)}` : nothing}
       ${
@@ -340,6 +413,7 @@ function renderConnected(ctx: ViewContext): TemplateResult {
               ${liveNotice(z.result, t("zeros.resultLabel"), locale)}`
       }
       ${keptList(ctx, t, busy || !ready)}
+      ${discardQuestion(ctx, t, "kept")}
     </section>
   `;
 }
@@ -349,6 +423,7 @@ const zerosView: AppView = {
   needsRobot: false,
   render,
   activate(ctx) {
+    watchUnwritten(ctx);
     if (ctx.state.zeros.stored === undefined) void readZerosFromRobot(ctx);
     void loadKeptBackups(ctx);
   },

@@ -9,6 +9,7 @@ import type { Store } from "../../../store.ts";
 import { isLimp, limpAll } from "../../connection/index.ts";
 import { toDraft } from "../editor.ts";
 import { patchZeros } from "../state.ts";
+import { discardFirst } from "../unwritten.ts";
 import type { CaptureState } from "./live-state.ts";
 import { say } from "./say.ts";
 import { checkCapture } from "./trim-model.ts";
@@ -149,13 +150,16 @@ export function useCapture(ctx: AppContext): void {
   const { store } = ctx;
   const table = store.get().zeros.capture?.check?.table;
   if (!table) return;
-  patchZeros(store, {
-    draft: toDraft(table),
-    source: { kind: "capture" },
-    confirming: false,
-    result: undefined,
-    capture: undefined,
-    fileNotice: noticeOf("info", store.get().locale, [say("capture.used")]),
+  // It replaces the table: unwritten changes there are asked about first.
+  discardFirst(ctx, { kind: "capture" }, () => {
+    patchZeros(store, {
+      draft: toDraft(table),
+      source: { kind: "capture" },
+      confirming: false,
+      result: undefined,
+      capture: undefined,
+      fileNotice: noticeOf("info", store.get().locale, [say("capture.used")]),
+    });
+    focusSoon("zero-0");
   });
-  focusSoon("zero-0");
 }
