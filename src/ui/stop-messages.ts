@@ -37,8 +37,8 @@ export const stopMessages = defineMessages({
   },
   // What to do after the outcome catalogue's sentence of what Stop did to a motion (src/i18n/outcomes).
   "stop.outcome.straighten": {
-    en: "Basic posture (7) straightens it.",
-    ko: "기본 자세(7)로 똑바로 세울 수 있어요.",
+    en: "Basic posture (7) brings it back to standing.",
+    ko: "기본 자세(7)로 다시 세울 수 있어요.",
   },
   "stop.outcome.holdHint": {
     en: "If it still moves, hold it (Limp makes every servo passive).",

@@ -1,6 +1,7 @@
 import { html, nothing, type TemplateResult } from "lit-html";
 import type { Locale } from "../../../i18n/locale.ts";
 import { unknownPlatformText } from "../../../i18n/outcomes/platform-words.ts";
+import { stopHoldsPoseText } from "../../../i18n/outcomes/stop-pose.ts";
 import { type Said, wordOf } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { platformName } from "../../../protocol/platform.ts";
@@ -81,7 +82,7 @@ export function topBar(ctx: ViewContext): TemplateResult {
                 type="button"
                 class="btn btn--danger stop"
                 aria-keyshortcuts="Escape"
-                title=${t("connection.stopTitle")}
+                title=${`${t("connection.stopTitle")} ${stopHoldsPoseText(locale)}`}
                 @click=${() => void stopAll(ctx)}
               >
                 <span aria-hidden="true">■</span> ${t("connection.stop")} <kbd aria-hidden="true">Esc</kbd>
@@ -152,7 +153,7 @@ function limpQuestion(ctx: ViewContext, t: ConnectionTranslator, warning: Said):
       @keydown=${onKey}
     >
       <p id="limp-title"><strong>${wordOf(warning, ctx.state.locale)}</strong></p>
-      <p id="limp-text" class="small">${t("connection.limpExplain")}</p>
+      <p id="limp-text" class="small">${t("connection.stopSentence")} ${stopHoldsPoseText(t.locale)} ${t("connection.limpExplain")}</p>
       <div class="actions">
         <button type="button" class="btn" id="cancel-limp" @click=${() => cancelLimp(ctx)}>${t("connection.cancel")}</button>
         <button type="button" class="btn btn--danger" id="confirm-limp" @click=${() => void limpAll(ctx)}>

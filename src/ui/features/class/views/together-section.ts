@@ -2,6 +2,7 @@ import { html, nothing, type TemplateResult } from "lit-html";
 import { isHazardousMotion } from "../../../../device/run-outcome.ts";
 import { builtInMotionName } from "../../../../i18n/motion-names/built-in-motion-name.ts";
 import { uploadNoticeText } from "../../../../i18n/outcomes/device.ts";
+import { stopHoldsPoseText } from "../../../../i18n/outcomes/stop-pose.ts";
 import { formatDecimal } from "../../../../i18n/translate.ts";
 import { BUILT_IN_MOTIONS } from "../../../../protocol/catalog.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
@@ -61,7 +62,7 @@ function question(ctx: ViewContext, t: ClassTranslator, c: ClassState): Template
       : c.asking === "run"
         ? [
             t("class.run.question", { count, number: c.runNumber }),
-            t("class.run.explain"),
+            `${t("class.run.explain")} ${stopHoldsPoseText(t.locale)}`,
             t("class.run.confirm", { count }),
             () => void runNow(ctx),
             false,
