@@ -68,7 +68,10 @@ function foundWorded(found: StopFound): Worded {
       return { said: [said(stopOutcomeMessages, "outcome.stop.idle")], more: [] };
     case "stopped":
       return {
-        said: [said(stopOutcomeMessages, "outcome.stop.busyStopped"), said(stopPoseMessages, "outcome.stop.holdsPose")],
+        said: [
+          said(stopOutcomeMessages, "outcome.stop.busyStopped"),
+          said(stopPoseMessages, "outcome.stop.holdsPose"),
+        ],
         more: [
           said(stopOutcomeMessages, "outcome.stop.busyStopped.detail", { elapsed: seconds(found.elapsedMs) }),
         ],

@@ -210,7 +210,9 @@ export const runCommand: CommandDef = {
       else if (report.verdict === "not-known") {
         env.out.line(t("cmd.run.notKnown", { motion: shown, what: what(locale) }));
       } else {
-        env.out.line(t("cmd.run.played", { motion: shown, duration: formatSeconds(report.elapsedMs / 1000, locale) }));
+        env.out.line(
+          t("cmd.run.played", { motion: shown, duration: formatSeconds(report.elapsedMs / 1000, locale) }),
+        );
       }
     }
     env.out.result({ ok: true, completed: results });
