@@ -62,7 +62,7 @@ describe("a robot busy with a motion started by the remote", () => {
     await said.filter({ hasText: "It took Stop" }).waitFor();
     await expectText(
       said.locator(".banner-text > p"),
-      "The robot was busy with a motion started with the remote or another program. It took Stop: it finishes the current scene and stands in that pose. Which motion it was, the robot does not say.",
+      "The robot was busy with a motion started with the remote or another program (which one, the robot does not say). It took Stop: the motion ended at the end of the scene it was in. The robot holds the pose it stopped in, its servos on: it does not fall, but it is not necessarily standing.",
     );
     // The 7 and the 07 are the technical detail, one click away.
     const detail = said.getByTestId("notice-more");

@@ -15,7 +15,8 @@ const app = useApp();
 
 const HOLDS_EN =
   "The robot holds the pose it stopped in, its servos on: it does not fall, but it is not necessarily standing.";
-const HOLDS_KO = "로봇은 서보에 힘이 들어간 채로 멈춘 자세를 유지해요. 넘어지지는 않지만, 꼭 서 있는 자세는 아니에요.";
+const HOLDS_KO =
+  "로봇은 서보에 힘이 들어간 채로 멈춘 자세를 유지해요. 넘어지지는 않지만, 꼭 서 있는 자세는 아니에요.";
 
 /** The old claims, in either language. */
 const STANDING = /keeps? (the robot |it )?standing|stands in that pose|선 채로|그 자세로 서 있/;
@@ -104,7 +105,10 @@ describe("Stop says the same everywhere: the robot holds the pose it stopped in,
     await page.keyboard.press("Escape");
     await releaseRobot(page);
     const banner = page.getByTestId("stop-banner").locator(".banner-text > p");
-    await page.getByTestId("stop-banner").filter({ hasText: "The robot took Stop" }).waitFor({ timeout: 8000 });
+    await page
+      .getByTestId("stop-banner")
+      .filter({ hasText: "The robot took Stop" })
+      .waitFor({ timeout: 8000 });
     await expectText(
       banner,
       `The robot took Stop: the motion ended at the end of the scene it was in. ${HOLDS_EN} Basic posture (7) brings it back to standing.`,
