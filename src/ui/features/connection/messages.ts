@@ -104,12 +104,6 @@ export const connectionMessages = defineMessages({
     en: "End what the robot is doing (Escape).",
     ko: "로봇이 하던 일을 끝내요 (Esc).",
   },
-  // What Stop does to a motion, as the panel says it before one starts (the Motions view's question) and in
-  // Limp's question; the outcome catalogue's sentence of the pose it leaves follows it.
-  "connection.stopSentence": {
-    en: "Stop (Esc) ends a motion at the end of its current scene.",
-    ko: "정지(Esc)를 누르면 모션이 지금 장면이 끝날 때 멈춰요.",
-  },
   "connection.limpAsk": { en: "Limp…", ko: "힘 빼기…" },
   "connection.limpTitle": {
     en: "Make every servo passive: the robot falls unless someone holds it (asks first)",

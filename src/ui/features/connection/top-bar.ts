@@ -1,7 +1,6 @@
 import { html, nothing, type TemplateResult } from "lit-html";
 import type { Locale } from "../../../i18n/locale.ts";
 import { unknownPlatformText } from "../../../i18n/outcomes/platform-words.ts";
-import { stopHoldsPoseText } from "../../../i18n/outcomes/stop-pose.ts";
 import { type Said, wordOf } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { platformName } from "../../../protocol/platform.ts";
@@ -82,7 +81,7 @@ export function topBar(ctx: ViewContext): TemplateResult {
                 type="button"
                 class="btn btn--danger stop"
                 aria-keyshortcuts="Escape"
-                title=${`${t("connection.stopTitle")} ${stopHoldsPoseText(locale)}`}
+                title=${stopTitle(ctx, t)}
                 @click=${() => void stopAll(ctx)}
               >
                 <span aria-hidden="true">■</span> ${t("connection.stop")} <kbd aria-hidden="true">Esc</kbd>
@@ -95,6 +94,27 @@ export function topBar(ctx: ViewContext): TemplateResult {
       ${stopResult(ctx)}
     </header>
   `;
+}
+
+/**
+ * What Stop does and leaves (`stop-hint.ts`), loaded beside the first Stop button rather than with the first page:
+ * until it has come, the hint and Limp's question say only their own part.
+ */
+const stopHint = lazyPart(() => import("../../stop-hint.ts"));
+
+/** The Stop button's hint: "End what the robot is doing (Escape). The robot holds the pose it stopped in, …" */
+function stopTitle(ctx: ViewContext, t: ConnectionTranslator): string {
+  const hint = stopHint.get(() => redraw(ctx.store));
+  return hint
+    ? `${t("connection.stopTitle")} ${hint.stopHoldsPoseText(t.locale)}`
+    : t("connection.stopTitle");
+}
+
+/** Limp's question sets Stop beside it: what Stop does and leaves, then what Limp is for. */
+function limpExplained(ctx: ViewContext, t: ConnectionTranslator): string {
+  const hint = stopHint.get(() => redraw(ctx.store));
+  const limp = t("connection.limpExplain");
+  return hint ? `${hint.stopSentenceText(t.locale)} ${hint.stopHoldsPoseText(t.locale)} ${limp}` : limp;
 }
 
 /** Limp is the top-bar robot's (the Class view asks "Limp all…" for its own robots). */
@@ -153,7 +173,7 @@ function limpQuestion(ctx: ViewContext, t: ConnectionTranslator, warning: Said):
       @keydown=${onKey}
     >
       <p id="limp-title"><strong>${wordOf(warning, ctx.state.locale)}</strong></p>
-      <p id="limp-text" class="small">${t("connection.stopSentence")} ${stopHoldsPoseText(t.locale)} ${t("connection.limpExplain")}</p>
+      <p id="limp-text" class="small">${limpExplained(ctx, t)}</p>
       <div class="actions">
         <button type="button" class="btn" id="cancel-limp" @click=${() => cancelLimp(ctx)}>${t("connection.cancel")}</button>
         <button type="button" class="btn btn--danger" id="confirm-limp" @click=${() => void limpAll(ctx)}>

@@ -1,6 +1,5 @@
 import { html, nothing, type TemplateResult } from "lit-html";
 import { motionHazardText, runCheckingText } from "../../../../i18n/outcomes/run-words.ts";
-import { stopHoldsPoseText } from "../../../../i18n/outcomes/stop-pose.ts";
 import { soundName } from "../../../../i18n/sound-names/sound-name.ts";
 import { translator } from "../../../../i18n/translate.ts";
 import { BASIC_POSTURE_MOTION, SOUND_LENGTHS_MS, soundLengthMs } from "../../../../protocol/catalog.ts";
@@ -10,6 +9,7 @@ import { nameWithBreaks } from "../../../shell/name-breaks.ts";
 import { liveNotice } from "../../../shell/notice.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
 import { stopAll } from "../../../stop-all.ts";
+import { stopHoldsPoseText, stopSentenceText } from "../../../stop-hint.ts";
 import {
   connectionMessages,
   isPlaying,
@@ -152,7 +152,7 @@ export function confirmMove(
     <div class="confirm confirm--warning" role="alertdialog" aria-labelledby="move-title" aria-describedby="move-stop" data-testid="move-confirm">
       <p id="move-title"><strong>${t("motions.run.movementWarning")}</strong></p>
       ${hazard ? html`<p data-testid="motion-hazard"><strong>${hazard}</strong></p>` : nothing}
-      <p id="move-stop">${hazard ? "" : t("motions.run.asksOnce")} ${translator(connectionMessages, s.locale)("connection.stopSentence")} ${stopHoldsPoseText(s.locale)}</p>
+      <p id="move-stop">${hazard ? "" : t("motions.run.asksOnce")} ${stopSentenceText(s.locale)} ${stopHoldsPoseText(s.locale)}</p>
       <div class="actions">
         <button type="button" class="btn btn--primary long-label" id="confirm-move" @click=${() => confirmMovement(ctx)}>
           ${offer ? t("motions.run.confirmNamed", { number, name: offer.name }) : t("motions.run.confirm", { number })}
