@@ -97,14 +97,12 @@ export function topBar(ctx: ViewContext): TemplateResult {
 }
 
 /**
- * What Stop does and leaves (`stop-hint.ts`), loaded beside the first Stop button rather than with the first page:
- * until it has come, the hint and Limp's question say only their own part.
+ * The Stop button's hint: "End what the robot is doing (Escape). The robot holds the pose it stopped in, …". What
+ * Stop does and leaves (`stop-hint.ts`) comes with the result region's part, loaded beside the first Stop button
+ * rather than with the first page: until it has come, the hint and Limp's question say only their own part.
  */
-const stopHint = lazyPart(() => import("../../stop-hint.ts"));
-
-/** The Stop button's hint: "End what the robot is doing (Escape). The robot holds the pose it stopped in, …" */
 function stopTitle(ctx: ViewContext, t: ConnectionTranslator): string {
-  const hint = stopHint.get(() => redraw(ctx.store));
+  const hint = banner.get(() => redraw(ctx.store));
   return hint
     ? `${t("connection.stopTitle")} ${hint.stopHoldsPoseText(t.locale)}`
     : t("connection.stopTitle");
@@ -112,7 +110,7 @@ function stopTitle(ctx: ViewContext, t: ConnectionTranslator): string {
 
 /** Limp's question sets Stop beside it: what Stop does and leaves, then what Limp is for. */
 function limpExplained(ctx: ViewContext, t: ConnectionTranslator): string {
-  const hint = stopHint.get(() => redraw(ctx.store));
+  const hint = banner.get(() => redraw(ctx.store));
   const limp = t("connection.limpExplain");
   return hint ? `${hint.stopSentenceText(t.locale)} ${hint.stopHoldsPoseText(t.locale)} ${limp}` : limp;
 }
