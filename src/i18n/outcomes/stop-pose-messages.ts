@@ -5,8 +5,8 @@ import { defineMessages } from "../catalogue.ts";
  * Stop button, the questions before a motion, what Stop did (the panel's and `rbc stop`'s, `rbc run`'s Ctrl-C)
  * and the help. The firmware ends a motion at the end of its current scene and holds that pose with the servos
  * on (docs/protocol.md §3.6): the robot does not fall, but nothing makes it stand; only Basic posture (7) does.
- * Its own small module, as the top bar (first page load) says it too. Part of the one outcome catalogue
- * (docs/i18n.md "Outcomes").
+ * Its own small module, so that the top bar's Stop hint (src/ui/stop-hint.ts) brings nothing else. Part of the one
+ * outcome catalogue (docs/i18n.md "Outcomes").
  */
 export const stopPoseMessages = defineMessages({
   "outcome.stop.holdsPose": {
