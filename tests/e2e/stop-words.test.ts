@@ -2,6 +2,7 @@ import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
 import { CABLE, loadMotions } from "./connected-page.ts";
 import { expectText, FAST, holdRobotWhenShown, releaseRobot, squash, useApp } from "./harness.ts";
+import { DESKTOP, overflowing, PHONE, scrollsSideways } from "./i18n-checks.ts";
 import "./rbc-test-globals.ts";
 
 // Issue 33 item 6: Stop contradicted itself. The question said Stop "ends the motion and keeps the robot
@@ -58,6 +59,12 @@ describe("Stop says the same everywhere: the robot holds the pose it stopped in,
       `정지(Esc)를 누르면 모션이 지금 장면이 끝날 때 멈춰요. ${HOLDS_KO} 힘 빼기는 로봇의 힘을 완전히 빼야 할 때 써요.`,
     );
     await expectStopTitle(page, "로봇이 하던 일을 끝내요 (Esc).", HOLDS_KO);
+    // The longer question still fits a phone: nothing sticks out of the top bar, the page never scrolls sideways.
+    await page.setViewportSize({ ...PHONE });
+    await expect.poll(() => page.locator("#limp-confirm").isVisible()).toBe(true);
+    expect(await overflowing(page, ".top-bar")).toEqual([]);
+    expect(await scrollsSideways(page)).toEqual([]);
+    await page.setViewportSize({ ...DESKTOP });
     await page.locator("#cancel-limp").click();
     await switchLanguage(page, "en");
 
