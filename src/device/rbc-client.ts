@@ -65,7 +65,7 @@ export type { StopActivityResult } from "./stop.ts";
 /**
  * The RBC as typed operations (docs/protocol.md §3-6): reads, zero writes with read-back, motions and sounds that
  * resolve when the robot reports them finished, uploads, event subscriptions, direct servo control, Stop (ends
- * what runs, the robot keeps standing) and Limp (every servo passive).
+ * what runs, the robot holds its pose) and Limp (every servo passive).
  * The conversation underneath (one request at a time, timeouts, retries, events) is an `RbcConnection` held
  * in a private field: every request goes through an operation here, which validates what it sends.
  */
@@ -450,7 +450,8 @@ export class RbcClient {
   }
 
   /**
-   * Stop: ends what the robot is doing and keeps it standing. Never makes a servo passive (that is `limp()`).
+   * Stop: ends what the robot is doing; it holds the pose it stopped in, not necessarily standing. Never makes a
+   * servo passive (that is `limp()`).
    * - A motion ends with 7, the only request the RBC takes while playing (docs/protocol.md §3.6): it stops at the end
    *   of the current scene and answers once, `07`; the robot holds that pose. The `runMotion` waiting for it
    *   rejects with `RbcCancelledError`. Basic posture (7) itself cannot be stopped and is waited out.

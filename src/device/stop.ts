@@ -67,7 +67,7 @@ export interface StopActivityResult {
 
 /**
  * `RbcClient.stopActivity`, the Stop under way (the activity machine joins a second press to it): ends what the
- * robot is doing and keeps it standing; never makes a servo passive.
+ * robot is doing, which then holds the pose it stopped in (not necessarily standing); never makes a servo passive.
  */
 export async function runStop(core: ClientCore): Promise<StopActivityResult> {
   const { c, activity } = core;

@@ -101,7 +101,7 @@ function startApp(root: HTMLElement, locale: Locale): void {
     if (route) showRoute(store, route);
   });
 
-  // Escape = Stop for every robot of the page (each ends what runs and keeps standing) while one is connected,
+  // Escape = Stop for every robot of the page (each ends what runs and holds its pose) while one is connected,
   // the top-bar robot or a Class view robot, unless a field, a dialog, a menu or an open popup takes it. Never
   // Limp.
   document.addEventListener("keydown", (e) => {

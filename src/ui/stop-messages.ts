@@ -9,6 +9,12 @@ import { defineMessages } from "../i18n/catalogue.ts";
  * (docs/protocol.md §3.1, §3.6).
  */
 export const stopMessages = defineMessages({
+  // What Stop does to a motion, said before it is pressed (src/ui/stop-hint.ts): Limp's question, the Motions
+  // view's question; the outcome catalogue's sentence of the pose it leaves follows it.
+  "stop.sentence": {
+    en: "Stop (Esc) ends a motion at the end of its current scene.",
+    ko: "정지(Esc)를 누르면 모션이 지금 장면이 끝날 때 멈춰요.",
+  },
   "stop.stopping": { en: "Stopping…", ko: "정지하는 중…" },
   "stop.robot": { en: "{robot}:", ko: "{robot}:" },
   "stop.stopping.sound": {
@@ -37,8 +43,8 @@ export const stopMessages = defineMessages({
   },
   // What to do after the outcome catalogue's sentence of what Stop did to a motion (src/i18n/outcomes).
   "stop.outcome.straighten": {
-    en: "Basic posture (7) straightens it.",
-    ko: "기본 자세(7)로 똑바로 세울 수 있어요.",
+    en: "Basic posture (7) brings it back to standing.",
+    ko: "기본 자세(7)로 다시 세울 수 있어요.",
   },
   "stop.outcome.holdHint": {
     en: "If it still moves, hold it (Limp makes every servo passive).",

@@ -5,6 +5,7 @@ import { limpStoppedMotionFirstText } from "../i18n/outcomes/device.ts";
 import { type LimpFacts, limpResultText, limpWarningText } from "../i18n/outcomes/limp-words.ts";
 import { noReplyCauseText } from "../i18n/outcomes/run-words.ts";
 import { stopOutcomeMessages } from "../i18n/outcomes/stop-messages.ts";
+import { stopPoseMessages } from "../i18n/outcomes/stop-pose-messages.ts";
 import {
   playStoppedText,
   type StoppedMotion,
@@ -67,7 +68,10 @@ function foundWorded(found: StopFound): Worded {
       return { said: [said(stopOutcomeMessages, "outcome.stop.idle")], more: [] };
     case "stopped":
       return {
-        said: [said(stopOutcomeMessages, "outcome.stop.busyStopped")],
+        said: [
+          said(stopOutcomeMessages, "outcome.stop.busyStopped"),
+          said(stopPoseMessages, "outcome.stop.holdsPose"),
+        ],
         more: [
           said(stopOutcomeMessages, "outcome.stop.busyStopped.detail", { elapsed: seconds(found.elapsedMs) }),
         ],

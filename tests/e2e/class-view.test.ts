@@ -173,7 +173,7 @@ describe("the Class view with four demo robots", () => {
     }
     const after = await sims(page);
     expect(after.map((s) => s.playing)).toEqual([undefined, undefined, undefined, undefined]);
-    // Stop keeps them standing: no servo was made passive.
+    // Stop leaves the servos holding: no servo was made passive.
     expect(after.map((s) => s.passive)).toEqual([0, 0, 0, 0]);
 
     // Limp all asks once, naming how many robots will fall; Cancel changes nothing.

@@ -41,7 +41,7 @@ const RUNNING = '[data-testid="running-motion"]';
 const RUNNING_CONFIRMED = '[data-testid="running-motion"][data-confirmed="yes"]';
 
 describe("motions view: running motions and sounds", () => {
-  it("guides to basic posture first, asks once before moving, and both Stop motion and Stop end a motion with 7, the robot standing", async () => {
+  it("guides to basic posture first, asks once before moving, and both Stop motion and Stop end a motion with 7, the robot holding its pose", async () => {
     const { page, context } = await app.newPage({ start: CABLE, options: FAST });
     await openTab(page, "Run");
     const guidance = page.getByTestId("posture-guidance");
@@ -103,7 +103,11 @@ describe("motions view: running motions and sounds", () => {
     const running = page.getByTestId("running-motion");
     // Held likewise while the test reads the running panel and presses Stop.
     await holdRobotWhenShown(page, RUNNING, /./);
-    await expectText(running, "Stop (Esc) ends the motion and keeps the robot standing", { contains: true });
+    await expectText(
+      running,
+      "The robot holds the pose it stopped in, its servos on: it does not fall, but it is not necessarily standing.",
+      { contains: true },
+    );
     expect(await running.textContent().then(squash)).not.toContain("Stop — limp");
     await page.getByRole("button", { name: "Stop", exact: true }).click();
     await releaseRobot(page);

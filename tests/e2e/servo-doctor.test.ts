@@ -266,7 +266,7 @@ describe("Servo check on the demo robot", () => {
     expect(after.slice(0, read.length)).toEqual(read);
     expect(after.length).toBeLessThan(31);
     expect(stopped).toContain(`Read: ${after.join(", ")}. Not read: ${after.length}, `);
-    // Stop keeps the robot standing: no servo was made passive.
+    // Stop leaves the servos holding: no servo was made passive.
     const passive = await page.evaluate(() => window.__rbcDemoSim?.servos.map((s) => s.passive));
     expect(passive).toEqual(Array(16).fill(false));
 

@@ -62,7 +62,7 @@ describe("a robot busy with a motion started by the remote", () => {
     await said.filter({ hasText: "It took Stop" }).waitFor();
     await expectText(
       said.locator(".banner-text > p"),
-      "The robot was busy with a motion started with the remote or another program. It took Stop: it finishes the current scene and stands in that pose. Which motion it was, the robot does not say.",
+      "The robot was busy with a motion started with the remote or another program (which one, the robot does not say). It took Stop: the motion ended at the end of the scene it was in. The robot holds the pose it stopped in, its servos on: it does not fall, but it is not necessarily standing.",
     );
     // The 7 and the 07 are the technical detail, one click away.
     const detail = said.getByTestId("notice-more");
@@ -136,7 +136,7 @@ describe("in Korean", () => {
     await banner(page).filter({ hasText: "로봇이 정지를 받았어요" }).waitFor();
     await expectText(
       banner(page).locator(".banner-text > p"),
-      "어떤 모션이었는지는 로봇이 알려 주지 않아요.",
+      "(어떤 모션인지는 로봇이 알려 주지 않아요). 로봇이 정지를 받았어요. 모션은 하던 장면이 끝날 때 멈췄어요. 로봇은 서보에 힘이 들어간 채로 멈춘 자세를 유지해요. 넘어지지는 않지만, 꼭 서 있는 자세는 아니에요.",
       { contains: true },
     );
     // The 7 and the 07, one click away, in Korean too.

@@ -49,7 +49,7 @@ async function expectStopLines(page: Page, expected: string[]): Promise<void> {
 }
 
 const STOPPED =
-  "The robot took Stop: it finishes the current scene and stands in that pose. Basic posture (7) straightens it.";
+  "The robot took Stop: the motion ended at the end of the scene it was in. The robot holds the pose it stopped in, its servos on: it does not fall, but it is not necessarily standing. Basic posture (7) brings it back to standing.";
 
 describe("Stop reaches every robot of the page, also with no robot in the top bar", () => {
   it("the top bar's Stop and Escape stop both class robots and say each one's outcome", async () => {

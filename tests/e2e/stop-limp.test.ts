@@ -5,7 +5,7 @@ import { connectRobot, expectText, FAST, squash, useApp } from "./harness.ts";
 import "./rbc-test-globals.ts";
 
 // Stop and Limp are two things (issue #11 item 1): Stop ends what the robot is doing
-// and keeps it standing (a motion ends with 7); Limp makes every servo passive, only after asking. Escape keeps
+// and the servos hold the pose it stopped in (a motion ends with 7); Limp makes every servo passive, only after asking. Escape keeps
 // its meaning in a text field, a dialog or an open menu/list, and otherwise (a number field too) means Stop, never Limp.
 
 const app = useApp();
@@ -46,7 +46,7 @@ async function startMotion(page: Page, n: number, name: string): Promise<void> {
   await expect.poll(() => robot(page).then((r) => r.playing)).toBe(n);
 }
 
-describe("Stop keeps the robot standing; Limp asks first", () => {
+describe("Stop leaves the servos holding; Limp asks first", () => {
   it("Escape in a zero field (a number stepper, not a text field) is Stop: no servo passive, the robot stays in packet mode", async () => {
     const { page, context } = await app.newPage();
     await connectRobot(page, app.url);
@@ -89,7 +89,7 @@ describe("Stop keeps the robot standing; Limp asks first", () => {
     await banner.filter({ hasText: "The robot took Stop" }).waitFor({ timeout: 8000 });
     await expectText(
       banner.locator(".banner-text > p"),
-      "The robot took Stop: it finishes the current scene and stands in that pose.",
+      "The robot took Stop: the motion ended at the end of the scene it was in. The robot holds the pose it stopped in, its servos on: it does not fall, but it is not necessarily standing.",
       { contains: true },
     );
     await expectText(

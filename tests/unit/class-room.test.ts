@@ -153,7 +153,8 @@ describe("the class of robots", () => {
     const [stops] = await clock.run(Promise.all([room.stopAll(), running]));
     for (const d of demos) expect(d.sim.playingMotion).toBeUndefined();
     // Each robot's Stop outcome comes back named, for the top bar to say one line per robot.
-    const tookStop = "The robot took Stop: it finishes the current scene and stands in that pose.";
+    const tookStop =
+      "The robot took Stop: the motion ended at the end of the scene it was in. The robot holds the pose it stopped in, its servos on: it does not fall, but it is not necessarily standing.";
     expect(stops.map((s) => [s.robot.en, s.robot.ko, wordOf(s.notice.said![0]!, "en")])).toEqual([
       ["Demo robot 1", "데모 로봇 1", tookStop],
       ["Demo robot 2", "데모 로봇 2", tookStop],

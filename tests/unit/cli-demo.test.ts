@@ -177,7 +177,7 @@ describe.concurrent("rbc --demo", () => {
       /`rbc ports` takes neither;\s+`rbc sim` takes --port PATH[\s\S]*refuses\s+--demo/,
     );
     expect(global.stdout).toContain("RBC_DEMO_TIME_SCALE=N runs the demo robot N times faster");
-    // Ctrl-C stops the motion and keeps the robot standing (issue #11 item 1; run.ts belongs to the stop work).
+    // Ctrl-C stops the motion, the servos holding (issue #11 item 1; run.ts belongs to the stop work).
     expect(run.stdout).toContain("No servo is made passive");
     expect(run.stdout).not.toContain("`rbc run 7` ends");
     expect(upload.code).toBe(0);
@@ -204,10 +204,10 @@ describe.concurrent("rbc --demo", () => {
   it("a reader that goes away between two motions: the second one is not started", {
     timeout: T,
   }, async () => {
-    // The reader leaves after "Running 7": rbc's next write ("Done: 7 …") fails, as EPIPE does.
-    const r = await runCli(["run", "7", "4", "--demo"], { readerLeavesAfter: /Running 7/ });
+    // The reader leaves after "7 … sent: checking …": rbc's next write ("Played: 7 …") fails, as EPIPE does.
+    const r = await runCli(["run", "7", "4", "--demo"], { readerLeavesAfter: /sent: checking/ });
     expect(r.code, r.stderr).toBe(130);
-    expect(r.stdout).toBe("Running 7 (Basic posture)…\n");
+    expect(r.stdout).toBe("7 (Basic posture) sent: checking that the robot plays it…\n");
     expect(r.stderr).toBe("rbc: stopped before motion 4 (Walk forward); it was not started.\n");
     // Motion 7 played to its end (about 1.8 s of robot time) and nothing after it.
     expect(r.robotMs).toBeGreaterThanOrEqual(1700);
@@ -423,7 +423,12 @@ describe.concurrent("rbc --demo", () => {
     // Robot time: the basic posture takes about 1.8 s.
     expect(done[0].elapsedMs).toBeGreaterThanOrEqual(1700);
     expect(done[0].elapsedMs).toBeLessThan(1800 + 2000); // its timeout: expected time + 2 s margin
-    expect(text.stdout).toMatch(/^Running 7 \(Basic posture\)…\nDone: 7 \(Basic posture\) in 1\.\d s\.\n$/);
+    // Issue 33 item 5 for rbc: "sent, checking" when the Run goes out (never "Running" before anything is seen),
+    // then the verdict as the robot showed it (busy with it, then its end reported).
+    expect(text.stdout).toMatch(
+      /^7 \(Basic posture\) sent: checking that the robot plays it…\nPlayed: 7 \(Basic posture\); the robot reported its end after 1\.\d s\.\n$/,
+    );
+    expect(text.stdout).not.toContain("Running");
     expect(four.code).toBe(1);
     expect(four.stderr).toMatch(/run motion 7 first/i);
     expect(four.stderr).toContain("rbc run 7 4 --demo");

@@ -276,7 +276,9 @@ describe.concurrent("rbc in Korean", () => {
       runCli(["sound", "30", "--demo", "--lang", "ko"]),
     ]);
     expect(run.code, run.stderr).toBe(0);
-    expect(run.stdout).toMatch(/^7 \(기본 자세\) 실행 중…\n완료: 7 \(기본 자세\), 1\.\d초 걸렸어요\.\n$/);
+    expect(run.stdout).toMatch(
+      /^7 \(기본 자세\) 보냄: 로봇이 재생하는지 확인하는 중…\n재생함: 7 \(기본 자세\)\. 로봇이 1\.\d초 뒤에 끝났다고 알려 줬어요\.\n$/,
+    );
     expect(ignored.code).toBe(1);
     expect(ignored.stderr).toBe(
       // The facts in Korean (docs/protocol.md §3.1: no reply, the robot idle, no 7 yet), then the demo's hint.

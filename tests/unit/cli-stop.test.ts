@@ -5,8 +5,8 @@ import { runInProcess } from "../cli/in-process.ts";
 
 /**
  * `rbc stop`, `rbc limp` and Ctrl-C in `rbc run` against the built-in demo robot. Stop ends a motion with 7 and
- * keeps the robot standing; Limp makes every servo passive and asks first; Ctrl-C during a motion is Stop,
- * never Limp. All run in this process on the demo robot's virtual clock.
+ * leaves the robot holding the pose it stopped in; Limp makes every servo passive and asks first; Ctrl-C during a
+ * motion is Stop, never Limp. All run in this process on the demo robot's virtual clock.
  */
 
 describe("rbc stop and rbc limp", () => {
@@ -37,7 +37,7 @@ describe("rbc stop and rbc limp", () => {
     const json = await runInProcess(["stop", "--demo", "--json"], { env });
     expect(text.code, text.stderr).toBe(0);
     expect(text.stdout).toMatch(
-      /^Asking the demo robot whether it is playing something…\nThe robot was busy with a motion started with the remote or another program\. It took Stop: it finishes the current scene and stands in that pose\. Which motion it was, the robot does not say\. Stop sent 7; the robot answered 07 after 0\.\d s\. No servo was made passive\.\n$/,
+      /^Asking the demo robot whether it is playing something…\nThe robot was busy with a motion started with the remote or another program \(which one, the robot does not say\)\. It took Stop: the motion ended at the end of the scene it was in\. The robot holds the pose it stopped in, its servos on: it does not fall, but it is not necessarily standing\. Stop sent 7; the robot answered 07 after 0\.\d s\. No servo was made passive\.\n$/,
     );
     // One Run motion 7 out and its 07 back (docs/protocol.md §8), after the probe; nothing for the servos.
     expect(text.stderr.match(/FF FF AA 55 AA 55 37 BA 14 00 00 00 00 01 07 07/g)).toHaveLength(1);
@@ -78,7 +78,7 @@ describe("rbc stop and rbc limp", () => {
       "Limp: all 16 servos confirmed passive. Hold the robot, it cannot stand on its own now.\n",
     );
     const help = globalHelp(COMMAND_LIST, "en");
-    expect(help).toMatch(/\n\s+stop\s+end a running motion with 7; the robot keeps standing/);
+    expect(help).toMatch(/\n\s+stop\s+end a running motion with 7; the robot holds the pose it stopped in/);
     expect(help).toMatch(/\n\s+limp\s+make every servo passive/);
   });
 });
@@ -88,12 +88,12 @@ describe("Ctrl-C in rbc run", () => {
     // Robot time: 7 (Basic posture, 1.8 s) then motion 2 (Get up B, 6.6 s); Ctrl-C 3 s into motion 2, on the
     // demo robot's virtual clock (main's SIGINT wiring itself is covered by the spawned tests of cli-play).
     const result = await runInProcess(["run", "7", "2", "--demo", "--log"], { interruptAtMs: 4_800 });
-    expect(result.stdout).toMatch(/Running 2 /);
+    expect(result.stdout).toContain("2 (Get up B (from back)) sent: checking that the robot plays it…");
     expect(result.code, result.stderr).toBe(130);
     expect(result.stderr).toContain(
-      "rbc: interrupted: The robot took Stop: it finishes the current scene and stands in that pose. `rbc run 7` straightens it. Stop sent 7 while motion 2, started here, was playing, and the robot answered 07. That reply says that what the robot was playing ended at the end of a scene; it does not say which motion that was.",
+      "rbc: interrupted: The robot took Stop: the motion ended at the end of the scene it was in. The robot holds the pose it stopped in, its servos on: it does not fall, but it is not necessarily standing. `rbc run 7` brings it back to standing. Stop sent 7 while motion 2, started here, was playing, and the robot answered 07. That reply says that what the robot was playing ended at the end of a scene; it does not say which motion that was.",
     );
-    expect(result.stdout).not.toContain("Done: 2");
+    expect(result.stdout).not.toContain("Played: 2");
     expect(result.stderr).not.toMatch(/Direct control mode on|limp/i);
     // The robot's own clock: motion 2 did not play to its end (1.8 + 6.6 s).
     expect(result.robotMs).toBeLessThan(8_400);

@@ -80,12 +80,14 @@ describe("the busy check during a Run, on the simulator", () => {
 });
 
 describe("rbc run: exit 1 only for a Run known not to have played", () => {
-  it("rbc run 7, the demo robot standing in basic posture: replied after 0.9 s and played: Done, exit 0", {
+  it("rbc run 7, the demo robot standing in basic posture: replied after 0.9 s and played, exit 0", {
     timeout: T,
   }, async () => {
     const r = await rbc(["run", "7", "--demo"], "--quick-repeat-posture");
     expect(r.code, r.stderr).toBe(0);
-    expect(r.stdout).toContain("Done: 7 (Basic posture) in 0.9 s.");
+    expect(r.stdout).toBe(
+      "7 (Basic posture) sent: checking that the robot plays it…\nPlayed: 7 (Basic posture); the robot reported its end after 0.9 s.\n",
+    );
     expect(r.stderr).not.toContain("far sooner");
   });
 
@@ -94,7 +96,9 @@ describe("rbc run: exit 1 only for a Run known not to have played", () => {
   }, async () => {
     const r = await rbc(["run", "7", "12", "--demo"], "--user-firmware");
     expect(r.code).toBe(1);
-    expect(r.stdout).toContain("Done: 7 (Basic posture) in 1.8 s.");
+    expect(r.stdout).toBe(
+      "7 (Basic posture) sent: checking that the robot plays it…\nPlayed: 7 (Basic posture); the robot reported its end after 1.8 s.\n12 (downloaded, key 1) sent: checking that the robot plays it…\n",
+    );
     expect(r.stderr).toContain(
       "The robot ignored motion 12: its reply came at once (after 0.0 s) and it was never busy.",
     );

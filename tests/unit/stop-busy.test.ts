@@ -49,12 +49,12 @@ describe("Stop when this client started nothing (busy probe, docs/protocol.md §
     expect(elapsedMs).toBeLessThanOrEqual(1000);
     expect(result.motion).toBeUndefined();
     expect(rig.sim.playingMotion).toBeUndefined();
-    // Stop keeps it standing: no servo passive, no direct mode.
+    // Stop leaves the servos holding: no servo passive, no direct mode.
     expect(rig.sim.servos.some((s) => s.passive)).toBe(false);
     expect(rig.sim.directMode).toBe(false);
     expect(rig.client.activity.doing.kind).toBe("idle");
     expect(stopFoundText(result.found!, "en")).toMatch(
-      /^The robot was busy with a motion started with the remote or another program\. It took Stop: it finishes the current scene and stands in that pose\. Which motion it was, the robot does not say\. Stop sent 7; the robot answered 07 after 0\.\d s\.$/,
+      /^The robot was busy with a motion started with the remote or another program \(which one, the robot does not say\)\. It took Stop: the motion ended at the end of the scene it was in\. The robot holds the pose it stopped in, its servos on: it does not fall, but it is not necessarily standing\. Stop sent 7; the robot answered 07 after 0\.\d s\.$/,
     );
   });
 

@@ -72,10 +72,10 @@ describe("Stop's outcome sentence", () => {
   it("says first in plain words what Stop meant for the robot; the 7 and the 07 are the detail, which names no stopped motion", () => {
     const stopped = stopOutcome({ ...base, motion: { number: 2, outcome: "stopped" } }, false);
     expect(noticeText(stopped, "en")).toBe(
-      "The robot took Stop: it finishes the current scene and stands in that pose. Basic posture (7) straightens it. Servo moves stopped: no further move is sent, and the servos hold their last position.",
+      "The robot took Stop: the motion ended at the end of the scene it was in. The robot holds the pose it stopped in, its servos on: it does not fall, but it is not necessarily standing. Basic posture (7) brings it back to standing. Servo moves stopped: no further move is sent, and the servos hold their last position.",
     );
     expect(noticeText(stopped, "ko")).toMatch(
-      /^로봇이 정지를 받았어요\. 지금 장면까지 마치고 그 자세로 서 있어요\./,
+      /^로봇이 정지를 받았어요\. 모션은 하던 장면이 끝날 때 멈췄어요\. 로봇은 서보에 힘이 들어간 채로 멈춘 자세를 유지해요\. 넘어지지는 않지만, 꼭 서 있는 자세는 아니에요\./,
     );
     for (const locale of ["en", "ko"] as const) expect(noticeText(stopped, locale)).not.toMatch(/\b07\b/);
     // docs/protocol.md §3.1: a 07 reply says that what played ended, not which motion it was.

@@ -238,7 +238,6 @@ export const commandMessages = defineMessages({
     en: "stopped before motion {motion}; it was not started.",
     ko: "모션 {motion} 전에 멈췄어요. 그 모션은 시작하지 않았어요.",
   },
-  "cmd.run.running": { en: "Running {motion}…", ko: "{motion} 실행 중…" },
   "cmd.run.stoppingUnknown": {
     en: "motion {motion} was being stopped with 7; whether the robot confirmed is not known. If it still moves, hold it (rbc limp makes every servo passive).",
     ko: "모션 {motion}을(를) 7로 멈추는 중이었어요. 로봇이 확인했는지는 알 수 없어요. 아직 움직이면 로봇을 잡아 주세요 (rbc limp로 모든 서보의 힘을 뺄 수 있어요).",
@@ -262,11 +261,16 @@ export const commandMessages = defineMessages({
     en: "To end it: rbc stop.",
     ko: "멈추려면: rbc stop.",
   },
-  "cmd.run.done": { en: "Done: {motion} in {duration}.", ko: "완료: {motion}, {duration} 걸렸어요." },
+  // The verdicts after "… sent: checking that the robot plays it…" (the outcome catalogue's): played (seen busy,
+  // then its end reported), not known, or stopped; a Run not played is an error (outcome.run.ignored, …).
+  "cmd.run.played": {
+    en: "Played: {motion}; the robot reported its end after {duration}.",
+    ko: "재생함: {motion}. 로봇이 {duration} 뒤에 끝났다고 알려 줬어요.",
+  },
 
   "cmd.stop.straighten": {
-    en: "`rbc run 7` straightens it.",
-    ko: "`rbc run 7`로 똑바로 세울 수 있어요.",
+    en: "`rbc run 7` brings it back to standing.",
+    ko: "`rbc run 7`로 다시 세울 수 있어요.",
   },
   "cmd.stop.asking": {
     en: "Asking {robot} whether it is playing something…",

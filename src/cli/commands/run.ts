@@ -4,7 +4,7 @@ import { isHazardousMotion, type RunReport } from "../../device/run-outcome.ts";
 import { reconcile, shelfKey } from "../../device/shelf.ts";
 import { errorSaid } from "../../i18n/error-said.ts";
 import type { Locale } from "../../i18n/locale.ts";
-import { motionHazardText, runReportText } from "../../i18n/outcomes/run-words.ts";
+import { motionHazardText, runCheckingText, runReportText } from "../../i18n/outcomes/run-words.ts";
 import { said, saidBy, saidTogether } from "../../i18n/said.ts";
 import { translator } from "../../i18n/translate.ts";
 import { formatSeconds } from "../../i18n/units.ts";
@@ -115,9 +115,8 @@ export const runCommand: CommandDef = {
         });
         return EXIT.interrupted;
       }
-      env.out.line(t("cmd.run.running", { motion: shown }));
       const started = robot.clock.now();
-      // Ctrl-C: end the motion with 7 (Stop), never limp; the robot keeps standing.
+      // Ctrl-C: end the motion with 7 (Stop), never limp; the robot holds the pose it stopped in.
       let stopping: Promise<StopActivityResult | undefined> | undefined;
       const onInterrupt = () => {
         env.setExitNote(t("cmd.run.stoppingUnknown", { motion: shown }));
@@ -128,7 +127,16 @@ export const runCommand: CommandDef = {
       let report: RunReport | undefined;
       try {
         const expectedMs = record?.durationMs;
-        report = await robot.client.runMotionReport(motion, expectedMs === undefined ? {} : { expectedMs });
+        // "Sent: checking" once the Run's checks are done and its packet is being written (never before: a Run
+        // the busy probe refuses is not sent), then the verdict as the robot showed it (docs/protocol.md §3.1).
+        const ready = () => {
+          env.out.line(`${runCheckingText(shown, locale)}…`);
+          return Promise.resolve();
+        };
+        report = await robot.client.runMotionReport(
+          motion,
+          expectedMs === undefined ? { ready } : { expectedMs, ready },
+        );
       } catch (e) {
         failure = e;
       } finally {
@@ -202,7 +210,9 @@ export const runCommand: CommandDef = {
       else if (report.verdict === "not-known") {
         env.out.line(t("cmd.run.notKnown", { motion: shown, what: what(locale) }));
       } else {
-        env.out.line(t("cmd.run.done", { motion: shown, duration: formatSeconds(elapsedMs / 1000, locale) }));
+        env.out.line(
+          t("cmd.run.played", { motion: shown, duration: formatSeconds(report.elapsedMs / 1000, locale) }),
+        );
       }
     }
     env.out.result({ ok: true, completed: results });

@@ -1,4 +1,5 @@
 import type { Locale } from "../../i18n/locale.ts";
+import { stopHoldsPoseText } from "../../i18n/outcomes/stop-pose.ts";
 import { type Translator, translator } from "../../i18n/translate.ts";
 import { FACTORY_ZEROS, STANDARD_ZEROS } from "../../protocol/zeros.ts";
 import type { CommandHelp } from "../command.ts";
@@ -70,7 +71,10 @@ export const COMMAND_HELP = {
   }),
   run: (t) => ({
     summary: t("cliHelp.run.summary"),
-    description: t("cliHelp.run.description", { motions: builtInMotionList(t.locale) }),
+    description: t("cliHelp.run.description", {
+      motions: builtInMotionList(t.locale),
+      holds: stopHoldsPoseText(t.locale),
+    }),
     options: [["-y, --yes", t("cliHelp.run.yes")]],
   }),
   play: (t) => ({
@@ -83,7 +87,7 @@ export const COMMAND_HELP = {
   }),
   stop: (t) => ({
     summary: t("cliHelp.stop.summary"),
-    description: t("cliHelp.stop.description"),
+    description: t("cliHelp.stop.description", { holds: stopHoldsPoseText(t.locale) }),
     options: [],
   }),
   limp: (t) => ({

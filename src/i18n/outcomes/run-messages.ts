@@ -18,6 +18,12 @@ export const runOutcomeMessages = defineMessages({
     en: "The robot did not confirm that the motion played.",
     ko: "로봇이 모션을 재생했다고 확인하지 않았어요.",
   },
+  // Said from the Run's write until the robot is seen busy with it (or its reply says otherwise): the panel's
+  // running strip ("Motion 7 — Basic posture sent: …") and `rbc run` ("7 (Basic posture) sent: …").
+  "outcome.run.checking": {
+    en: "{motion} sent: checking that the robot plays it",
+    ko: "{motion} 보냄: 로봇이 재생하는지 확인하는 중",
+  },
   "outcome.run.ignored": {
     en: "The robot ignored motion {motion}: its reply came at once (after {elapsed}) and it was never busy.",
     ko: "로봇이 모션 {motion}을(를) 무시했어요. 응답이 바로({elapsed} 뒤) 왔고 로봇은 한 번도 바쁘지 않았어요.",
@@ -35,8 +41,8 @@ export const runOutcomeMessages = defineMessages({
     ko: "모션 {motion}은(는) 재생되지 않았어요. 로봇이 이미 다른 곳에서 시작한 모션을 재생하고 있었고, {elapsed} 뒤의 응답은 그 모션이 끝났다는 뜻이에요 (로봇은 마지막으로 받은 번호로 응답해요).",
   },
   "outcome.run.stoppedBusy": {
-    en: "The motion that was playing ended at the end of its scene (the robot said so after {elapsed}); the robot holds that pose. Basic posture was not played.",
-    ko: "재생 중이던 모션이 현재 장면이 끝날 때 멈췄어요 ({elapsed} 뒤에 로봇이 알려 줬어요). 로봇은 그 자세를 유지해요. 기본 자세는 재생되지 않았어요.",
+    en: "The motion that was playing ended at the end of its scene (the robot said so after {elapsed}), and Basic posture was not played.",
+    ko: "재생 중이던 모션이 현재 장면이 끝날 때 멈췄고 ({elapsed} 뒤에 로봇이 알려 줬어요), 기본 자세는 재생되지 않았어요.",
   },
   "outcome.run.emptySlot": {
     en: "Motion {motion} did not run: the robot holds no motion under that number (it reports error 3). Upload a motion first.",

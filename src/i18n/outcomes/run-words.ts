@@ -3,6 +3,7 @@ import type { Locale } from "../locale.ts";
 import { translator } from "../translate.ts";
 import { formatMilliseconds, formatSeconds } from "../units.ts";
 import { runOutcomeMessages as messages } from "./run-messages.ts";
+import { stopHoldsPoseText } from "./stop-pose.ts";
 
 /** The words of a Run's verdict, a Run with no reply and a busy robot (docs/protocol.md §3.1, §3.6). */
 
@@ -12,6 +13,14 @@ const seconds = (ms: number, locale: Locale) => formatSeconds(ms / 1000, locale)
 /** Run Motion of a download number the robot holds nothing under: it set error 3 (docs/protocol.md §3.1). */
 export function emptySlotText(motion: number, locale: Locale): string {
   return t(locale)("outcome.run.emptySlot", { motion: String(motion) });
+}
+
+/**
+ * "{motion} sent: checking that the robot plays it": a Run written, not yet seen to play (docs/protocol.md §3.1,
+ * §3.6). `motion` is the motion as the front end names it.
+ */
+export function runCheckingText(motion: string, locale: Locale): string {
+  return t(locale)("outcome.run.checking", { motion });
 }
 
 /** The sentence for a Run not seen to play (docs/protocol.md §3.1 [decision, turn 4]); undefined for `played`. */
@@ -26,7 +35,7 @@ export function runReportText(report: RunReport, locale: Locale): string | undef
     case "after-busy":
       return t(locale)("outcome.run.afterBusy", { motion, elapsed });
     case "stopped-busy":
-      return t(locale)("outcome.run.stoppedBusy", { elapsed });
+      return `${t(locale)("outcome.run.stoppedBusy", { elapsed })} ${stopHoldsPoseText(locale)}`;
     case "not-known":
       return report.busySeen === "no-answer"
         ? t(locale)("outcome.run.notKnownNoAnswer", { motion, elapsed })

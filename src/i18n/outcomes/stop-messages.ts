@@ -13,8 +13,8 @@ export const stopOutcomeMessages = defineMessages({
     ko: "로봇이 바로 응답했어요. 쉬고 있어서 멈출 것이 없어요. 아무것도 보내지 않았어요.",
   },
   "outcome.stop.busyStopped": {
-    en: "The robot was busy with a motion started with the remote or another program. It took Stop: it finishes the current scene and stands in that pose. Which motion it was, the robot does not say.",
-    ko: "로봇이 리모컨이나 다른 프로그램으로 시작한 모션을 하고 있었어요. 로봇이 정지를 받았어요. 지금 장면까지 마치고 그 자세로 서 있어요. 어떤 모션이었는지는 로봇이 알려 주지 않아요.",
+    en: "The robot was busy with a motion started with the remote or another program (which one, the robot does not say). It took Stop: the motion ended at the end of the scene it was in.",
+    ko: "로봇이 리모컨이나 다른 프로그램으로 시작한 모션을 하고 있었어요 (어떤 모션인지는 로봇이 알려 주지 않아요). 로봇이 정지를 받았어요. 모션은 하던 장면이 끝날 때 멈췄어요.",
   },
   "outcome.stop.busyStopped.detail": {
     en: "Stop sent 7; the robot answered 07 after {elapsed}.",
@@ -35,8 +35,8 @@ export const stopOutcomeMessages = defineMessages({
   // What Stop did to a motion this program started (StopActivityResult.motion): `rbc run` on Ctrl-C, the panel's
   // Stop. A 07 reply never says which motion stopped (docs/protocol.md §3.1, §3.6).
   "outcome.stop.motionStopped": {
-    en: "The robot took Stop: it finishes the current scene and stands in that pose.",
-    ko: "로봇이 정지를 받았어요. 지금 장면까지 마치고 그 자세로 서 있어요.",
+    en: "The robot took Stop: the motion ended at the end of the scene it was in.",
+    ko: "로봇이 정지를 받았어요. 모션은 하던 장면이 끝날 때 멈췄어요.",
   },
   "outcome.stop.motionStopped.detail": {
     en: "Stop sent 7 while motion {motion}, started here, was playing, and the robot answered 07. That reply says that what the robot was playing ended at the end of a scene; it does not say which motion that was.",

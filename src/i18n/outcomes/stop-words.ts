@@ -4,6 +4,7 @@ import { translator } from "../translate.ts";
 import { formatMilliseconds, formatSeconds } from "../units.ts";
 import { noReplyCauseText } from "./run-words.ts";
 import { stopOutcomeMessages as messages } from "./stop-messages.ts";
+import { stopHoldsPoseText } from "./stop-pose.ts";
 
 /** The words of Stop when the program had started nothing, and of a robot found busy (docs/protocol.md §3.6). */
 
@@ -20,7 +21,8 @@ export function stopFoundText(found: StopFound, locale: Locale): string {
       return t(locale)("outcome.stop.idle");
     case "stopped": {
       const elapsed = seconds(found.elapsedMs, locale);
-      return `${t(locale)("outcome.stop.busyStopped")} ${t(locale)("outcome.stop.busyStopped.detail", { elapsed })}`;
+      const stopped = `${t(locale)("outcome.stop.busyStopped")} ${stopHoldsPoseText(locale)}`;
+      return `${stopped} ${t(locale)("outcome.stop.busyStopped.detail", { elapsed })}`;
     }
     case "unconfirmed": {
       const wait = seconds(found.noReply.waitedMs, locale);
@@ -44,11 +46,13 @@ const MOTION_KEYS = {
 } as const satisfies Record<StoppedMotion["outcome"], keyof typeof messages>;
 
 /**
- * What Stop did to a motion this program started, never more certain than the robot's reply. The front end adds
- * what to do next: straighten the robot after `stopped`, hold it after `unconfirmed`.
+ * What Stop did to a motion this program started, never more certain than the robot's reply (after `stopped`,
+ * that the robot holds the pose it stopped in). The front end adds what to do next: Basic posture to stand the
+ * robot up after `stopped`, hold it after `unconfirmed`.
  */
 export function stoppedMotionText(motion: StoppedMotion, locale: Locale): string {
-  return t(locale)(MOTION_KEYS[motion.outcome]);
+  const said = t(locale)(MOTION_KEYS[motion.outcome]);
+  return motion.outcome === "stopped" ? `${said} ${stopHoldsPoseText(locale)}` : said;
 }
 
 /** Its technical detail: the 7 sent and the 07 answered. */

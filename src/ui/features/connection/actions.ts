@@ -78,8 +78,8 @@ export function disconnect(ctx: AppContext): void {
 
 /**
  * Stop for the top-bar robot (the page's Stop, `stopAll` in src/ui/stop-all.ts, runs it beside the class
- * robots' own): ends what the robot is doing and keeps it standing (`RbcClient.stopActivity`). It never makes a
- * servo passive: that is Limp. Stop is asked of the robot first; its words load beside it (`stop-outcome.ts`,
+ * robots' own): ends what the robot is doing, which then holds the pose it stopped in, not necessarily standing
+ * (`RbcClient.stopActivity`). It never makes a servo passive: that is Limp. Stop is asked of the robot first; its words load beside it (`stop-outcome.ts`,
  * not in the first page load). The top bar says the outcome (`stopNotice`).
  */
 export async function stopSessionRobot(ctx: AppContext): Promise<void> {

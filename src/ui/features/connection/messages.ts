@@ -101,8 +101,8 @@ export const connectionMessages = defineMessages({
   "connection.stop": { en: "Stop", ko: "정지" },
   "connection.dismiss": { en: "Dismiss", ko: "닫기" },
   "connection.stopTitle": {
-    en: "End what the robot is doing; it keeps standing (Escape)",
-    ko: "로봇이 하던 일을 끝내요. 로봇은 선 채로 있어요 (Esc)",
+    en: "End what the robot is doing (Escape).",
+    ko: "로봇이 하던 일을 끝내요 (Esc).",
   },
   "connection.limpAsk": { en: "Limp…", ko: "힘 빼기…" },
   "connection.limpTitle": {
@@ -110,8 +110,8 @@ export const connectionMessages = defineMessages({
     ko: "모든 서보의 힘을 빼요. 누가 잡고 있지 않으면 로봇이 넘어져요 (먼저 물어봐요)",
   },
   "connection.limpExplain": {
-    en: "Stop (Esc) ends a motion and keeps the robot standing; Limp is for when the robot must go slack.",
-    ko: "정지(Esc)는 모션을 끝내고 로봇을 선 채로 두어요. 힘 빼기는 로봇의 힘을 완전히 빼야 할 때 써요.",
+    en: "Limp is for when the robot must go slack.",
+    ko: "힘 빼기는 로봇의 힘을 완전히 빼야 할 때 써요.",
   },
   "connection.limp": { en: "Limp", ko: "힘 빼기" },
 });

@@ -10,6 +10,9 @@ import { busyElsewhere } from "./activity.ts";
 import { connectionMessages } from "./messages.ts";
 import { robotName } from "./robot-name.ts";
 
+/** What Stop does and leaves, for the Stop button's hint and Limp's question (top-bar.ts loads them with this). */
+export { stopHoldsPoseText, stopSentenceText } from "../../stop-hint.ts";
+
 /**
  * What the top bar's result region says (top-bar.ts draws the region; this, loaded with the first thing to say,
  * its content): a robot found busy with a motion started elsewhere, with a Stop right there; what Stop or Limp

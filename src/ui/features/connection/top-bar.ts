@@ -81,7 +81,7 @@ export function topBar(ctx: ViewContext): TemplateResult {
                 type="button"
                 class="btn btn--danger stop"
                 aria-keyshortcuts="Escape"
-                title=${t("connection.stopTitle")}
+                title=${stopTitle(ctx, t)}
                 @click=${() => void stopAll(ctx)}
               >
                 <span aria-hidden="true">■</span> ${t("connection.stop")} <kbd aria-hidden="true">Esc</kbd>
@@ -94,6 +94,25 @@ export function topBar(ctx: ViewContext): TemplateResult {
       ${stopResult(ctx)}
     </header>
   `;
+}
+
+/**
+ * The Stop button's hint: "End what the robot is doing (Escape). The robot holds the pose it stopped in, …". What
+ * Stop does and leaves (`stop-hint.ts`) comes with the result region's part, loaded beside the first Stop button
+ * rather than with the first page: until it has come, the hint and Limp's question say only their own part.
+ */
+function stopTitle(ctx: ViewContext, t: ConnectionTranslator): string {
+  const hint = banner.get(() => redraw(ctx.store));
+  return hint
+    ? `${t("connection.stopTitle")} ${hint.stopHoldsPoseText(t.locale)}`
+    : t("connection.stopTitle");
+}
+
+/** Limp's question sets Stop beside it: what Stop does and leaves, then what Limp is for. */
+function limpExplained(ctx: ViewContext, t: ConnectionTranslator): string {
+  const hint = banner.get(() => redraw(ctx.store));
+  const limp = t("connection.limpExplain");
+  return hint ? `${hint.stopSentenceText(t.locale)} ${hint.stopHoldsPoseText(t.locale)} ${limp}` : limp;
 }
 
 /** Limp is the top-bar robot's (the Class view asks "Limp all…" for its own robots). */
@@ -152,7 +171,7 @@ function limpQuestion(ctx: ViewContext, t: ConnectionTranslator, warning: Said):
       @keydown=${onKey}
     >
       <p id="limp-title"><strong>${wordOf(warning, ctx.state.locale)}</strong></p>
-      <p id="limp-text" class="small">${t("connection.limpExplain")}</p>
+      <p id="limp-text" class="small">${limpExplained(ctx, t)}</p>
       <div class="actions">
         <button type="button" class="btn" id="cancel-limp" @click=${() => cancelLimp(ctx)}>${t("connection.cancel")}</button>
         <button type="button" class="btn btn--danger" id="confirm-limp" @click=${() => void limpAll(ctx)}>

@@ -404,10 +404,6 @@ export const motionsMessages = defineMessages({
     en: "The robot will move. Hold it or give it room.",
     ko: "로봇이 움직여요. 로봇을 잡거나 주변에 공간을 비워 주세요.",
   },
-  "motions.run.stopSentence": {
-    en: "Stop (Esc) ends the motion and keeps the robot standing.",
-    ko: "정지(Esc)는 모션을 끝내고 로봇을 선 채로 유지해요.",
-  },
   "motions.run.limpSentence": {
     en: "Limp, in the top bar, makes every servo passive: hold the robot first.",
     ko: "상단 바의 힘 빼기를 누르면 모든 서보의 힘이 빠져요. 먼저 로봇을 잡아 주세요.",
@@ -444,8 +440,8 @@ export const motionsMessages = defineMessages({
     ko: "모션 {number}번({name})을 실행하지 못했어요.",
   },
   "motions.run.stopped": {
-    en: "Motion {number} ({name}) stopped at the end of its scene. The robot holds the pose it stopped in; run Basic posture (7) to bring it back to standing.",
-    ko: "모션 {number}번({name})이 장면 끝에서 멈췄어요. 로봇은 멈춘 자세를 유지해요. 다시 세우려면 기본 자세(7)를 실행해 주세요.",
+    en: "Motion {number} ({name}) stopped at the end of its scene.",
+    ko: "모션 {number}번({name})이 장면 끝에서 멈췄어요.",
   },
   "motions.run.endedByStop": {
     en: "Motion {number} was ended by Stop or Limp; the banner under the top bar says what the robot confirmed.",
@@ -469,10 +465,8 @@ export const motionsMessages = defineMessages({
   },
   "motions.run.runFirst": { en: "Run first", ko: "먼저 실행" },
   "motions.run.running": { en: "Running motion {number} — {name}", ko: "모션 {number}번 실행 중 — {name}" },
-  "motions.run.checking": {
-    en: "Motion {number} — {name} sent: checking that the robot plays it",
-    ko: "모션 {number}번 — {name} 보냄: 로봇이 재생하는지 확인하는 중",
-  },
+  // The motion in the running strip's "… sent: checking that the robot plays it" (the outcome catalogue's).
+  "motions.run.named": { en: "Motion {number} — {name}", ko: "모션 {number}번 — {name}" },
   "motions.run.stopping": {
     en: "Stopping motion {number} — {name}",
     ko: "모션 {number}번 멈추는 중 — {name}",
@@ -485,8 +479,8 @@ export const motionsMessages = defineMessages({
   "motions.run.progressLabel": { en: "Motion {number}", ko: "모션 {number}번" },
   "motions.run.stop": { en: "Stop motion", ko: "모션 멈추기" },
   "motions.run.stopExplained": {
-    en: "Stop motion, like Stop (Esc) ends the motion and keeps the robot standing: it sends Basic posture (7), and the robot finishes the scene it is in and holds that pose with its servos on.",
-    ko: "모션 멈추기도 정지(Esc)처럼 모션을 끝내고 로봇을 선 채로 유지해요. 기본 자세(7)를 보내면 로봇은 지금 장면을 마치고 서보에 힘이 들어간 채로 그 자세를 유지해요.",
+    en: "Stop motion does what Stop (Esc) does: it sends Basic posture (7), and the robot finishes the scene it is in.",
+    ko: "모션 멈추기는 정지(Esc)와 같아요. 기본 자세(7)를 보내면 로봇은 지금 장면을 마쳐요.",
   },
   "motions.run.asksOnce": {
     en: "The panel asks this once per connection.",

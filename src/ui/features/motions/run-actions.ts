@@ -5,6 +5,7 @@ import type { Locale } from "../../../i18n/locale.ts";
 import { builtInMotionName } from "../../../i18n/motion-names/built-in-motion-name.ts";
 import { runReportText } from "../../../i18n/outcomes/run-words.ts";
 import { soundOutcomeMessages } from "../../../i18n/outcomes/sound-messages.ts";
+import { stopPoseMessages } from "../../../i18n/outcomes/stop-pose-messages.ts";
 import { inEveryLanguage, type LocalText, said, saidBy } from "../../../i18n/said.ts";
 import { translator } from "../../../i18n/translate.ts";
 import {
@@ -19,6 +20,7 @@ import type { AppContext } from "../../context.ts";
 import { errorNotice, technicalDetail } from "../../error-text.ts";
 import { focusSoon } from "../../focus.ts";
 import { stopAll } from "../../stop-all.ts";
+import { stopMessages } from "../../stop-messages.ts";
 import { playingMotion } from "../connection/index.ts";
 import { remoteKeyWords } from "../shelf/index.ts";
 import { type MotionRun, motionsController } from "./controllers.ts";
@@ -226,9 +228,10 @@ type RunFailureKey =
 
 /**
  * "Stop motion": the client sends 7, which the RBC obeys at the end of the current scene (docs/protocol.md §3.6). It
- * answers once, `07`, and does not play basic posture: the robot holds the pose it stopped in. Pressed before the
- * Run has gone out (its own checks come first), it is the page's Stop, which cancels the Run before it is sent:
- * the client's Stop motion would run Basic posture after it instead.
+ * answers once, `07`, and does not play basic posture: the robot holds the pose it stopped in, not necessarily
+ * standing (`outcome.stop.holdsPose`). Pressed before the Run has gone out (its own checks come first), it is the
+ * page's Stop, which cancels the Run before it is sent: the client's Stop motion would run Basic posture after it
+ * instead.
  */
 export async function stopMotion(ctx: AppContext): Promise<void> {
   const { store, session } = ctx;
@@ -251,6 +254,8 @@ export async function stopMotion(ctx: AppContext): Promise<void> {
           number: run.number,
           name: inEveryLanguage((l) => offerFor({ ...then, locale: l }, run.number)?.name ?? shown.name),
         }),
+        said(stopPoseMessages, "outcome.stop.holdsPose"),
+        said(stopMessages, "stop.outcome.straighten"),
       ]),
     });
   } catch (e) {

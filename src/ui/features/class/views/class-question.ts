@@ -5,6 +5,7 @@ import { motionHazardText } from "../../../../i18n/outcomes/run-words.ts";
 import { translator } from "../../../../i18n/translate.ts";
 import { BASIC_POSTURE_MOTION, MOTION_AREA_BYTES } from "../../../../protocol/catalog.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
+import { stopHoldsPoseText, stopSentenceText } from "../../../stop-hint.ts";
 import { motionsMessages } from "../../motions/index.ts";
 import { cancelQuestion, classRoom, limpNow, packCheck, runNow, uploadNow } from "../actions.ts";
 import type { ClassTranslator } from "../messages.ts";
@@ -63,7 +64,7 @@ function runQuestion(ctx: ViewContext, t: ClassTranslator, c: ClassState): Asked
       ${t("class.run.postureRobots", { count: unsure.length, robots: robotList(t, c, unsure) })}
     </span>`);
   }
-  lines.push(mt("motions.run.stopSentence"));
+  lines.push(`${stopSentenceText(t.locale)} ${stopHoldsPoseText(t.locale)}`);
   return {
     title: t("class.run.question", {
       count,

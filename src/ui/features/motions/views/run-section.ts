@@ -1,5 +1,5 @@
 import { html, nothing, type TemplateResult } from "lit-html";
-import { motionHazardText } from "../../../../i18n/outcomes/run-words.ts";
+import { motionHazardText, runCheckingText } from "../../../../i18n/outcomes/run-words.ts";
 import { soundName } from "../../../../i18n/sound-names/sound-name.ts";
 import { translator } from "../../../../i18n/translate.ts";
 import { BASIC_POSTURE_MOTION, SOUND_LENGTHS_MS, soundLengthMs } from "../../../../protocol/catalog.ts";
@@ -9,6 +9,7 @@ import { nameWithBreaks } from "../../../shell/name-breaks.ts";
 import { liveNotice } from "../../../shell/notice.ts";
 import type { ViewContext } from "../../../shell/view-types.ts";
 import { stopAll } from "../../../stop-all.ts";
+import { stopHoldsPoseText, stopSentenceText } from "../../../stop-hint.ts";
 import {
   connectionMessages,
   isPlaying,
@@ -97,7 +98,7 @@ export function runningPanel(ctx: ViewContext, t: MotionsTranslator, run: Runnin
     ? t("motions.run.stopping", named)
     : confirmed
       ? t("motions.run.running", named)
-      : t("motions.run.checking", named);
+      : runCheckingText(t("motions.run.named", named), locale);
   return html`
     <div class="progress-block running" data-testid="running-motion" data-confirmed=${confirmed ? "yes" : "no"}>
       <p>
@@ -132,7 +133,7 @@ export function runningPanel(ctx: ViewContext, t: MotionsTranslator, run: Runnin
                 ${t("motions.run.stop")}
               </button>
             </div>
-            <p class="muted small">${t("motions.run.stopExplained")} ${t("motions.run.limpSentence")}</p>`
+            <p class="muted small">${t("motions.run.stopExplained")} ${stopHoldsPoseText(locale)} ${t("motions.run.limpSentence")}</p>`
       }
     </div>
   `;
@@ -167,7 +168,7 @@ export function confirmMove(
           ? html`<p data-testid="move-posture-first">${t("motions.run.postureGuidance")} ${t("motions.run.ignoresOthers")}</p>`
           : nothing
       }
-      <p id="move-stop">${hazard ? "" : t("motions.run.asksOnce")} ${t("motions.run.stopSentence")}</p>
+            <p id="move-stop">${hazard ? "" : t("motions.run.asksOnce")} ${stopSentenceText(s.locale)} ${stopHoldsPoseText(s.locale)}</p>
       <div class="actions">
         <button type="button" class="btn btn--primary long-label" id="confirm-move" @click=${() => confirmMovement(ctx)}>
           ${offer ? t("motions.run.confirmNamed", { number, name: offer.name }) : t("motions.run.confirm", { number })}
