@@ -4,8 +4,8 @@ import type { Motion, MotionScene } from "../../../motion/index.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
 import { chooseSceneTorque, typeSceneName, typeTiming } from "./actions.ts";
 import { type EditorTranslator, editorMessages } from "./messages.ts";
-import { shownSceneName } from "./scene-name.ts";
 import { detachBoundary, joinSelected } from "./pose-actions.ts";
+import { shownSceneName } from "./scene-name.ts";
 import type { EditorState } from "./state.ts";
 import { inputValue, problemText, torqueWords } from "./view-parts.ts";
 

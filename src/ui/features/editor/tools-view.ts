@@ -3,8 +3,8 @@ import { translator } from "../../../i18n/translate.ts";
 import { HUNO_PLATFORM, type Motion } from "../../../motion/index.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
 import { type EditorTranslator, editorMessages } from "./messages.ts";
-import { shownSceneName } from "./scene-name.ts";
 import { copyPoseFrom, mirrorSelected, type RetimeRequest, retimeFromForm } from "./pose-actions.ts";
+import { shownSceneName } from "./scene-name.ts";
 import type { EditorState } from "./state.ts";
 import { problemText } from "./view-parts.ts";
 

@@ -18,9 +18,9 @@ import {
   togglePause,
 } from "./actions.ts";
 import { rowNote } from "./log-note.ts";
-import { packetName } from "./packet-names.ts";
 import { type LogTranslator, logMessages } from "./messages.ts";
 import type { LogLine, PacketLog } from "./packet-log.ts";
+import { packetName } from "./packet-names.ts";
 
 /** A packet's name in the page's language; other bytes by the device's English name. */
 function nameOf(line: LogLine, locale: Locale): TemplateResult | string {
