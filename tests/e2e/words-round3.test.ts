@@ -26,7 +26,8 @@ const WORDS = {
     locale: "en-US",
     zerosSource: "The values in the zero table come from the robot.",
     zerosStale: /\bthe editor\b/i,
-    notHex: "random.bin is not an Intel HEX firmware file: the RBC's firmware is a text file (.hex) of lines that start with ':'.",
+    notHex:
+      "random.bin is not an Intel HEX firmware file: the RBC's firmware is a text file (.hex) of lines that start with ':'.",
     technical: "Line 1: a record starts with ':'.",
     openFirst: "Open a firmware file first.",
     openHex: "Open an Intel HEX firmware file (.hex) to update the robot.",
@@ -39,7 +40,8 @@ const WORDS = {
     locale: "ko-KR",
     zerosSource: "영점 표의 값은 로봇에서 가져왔어요.",
     zerosStale: /편집 표|편집기/,
-    notHex: "random.bin은(는) Intel HEX 펌웨어 파일이 아니에요. RBC 펌웨어는 ':'로 시작하는 줄로 된 텍스트 파일(.hex)이에요.",
+    notHex:
+      "random.bin은(는) Intel HEX 펌웨어 파일이 아니에요. RBC 펌웨어는 ':'로 시작하는 줄로 된 텍스트 파일(.hex)이에요.",
     technical: "1번째 줄: 레코드는 ':'로 시작해야 해요.",
     openFirst: "먼저 펌웨어 파일을 열어 주세요.",
     openHex: "로봇을 업데이트하려면 Intel HEX 펌웨어 파일(.hex)을 열어 주세요.",
@@ -89,8 +91,7 @@ for (const [language, w] of Object.entries(WORDS)) {
       await show(page(), "log", "log-card");
       const names = page().getByTestId("log-card").locator("td.log-name");
       await names.filter({ hasText: w.packet }).first().waitFor();
-      if (w.englishPacket)
-        expect(await names.filter({ hasText: w.englishPacket }).count()).toBe(0);
+      if (w.englishPacket) expect(await names.filter({ hasText: w.englishPacket }).count()).toBe(0);
     });
 
     it("the Editor shows a new scene's default name in the page's language; the file keeps Scene_0", async () => {

@@ -1,5 +1,10 @@
 import { describe, expect, it } from "vitest";
-import { COMMAND_BY_TYPE, commandName, WRITE_ACTION_TYPE, WRITE_MOTION_TYPE } from "../../src/protocol/commands.ts";
+import {
+  COMMAND_BY_TYPE,
+  commandName,
+  WRITE_ACTION_TYPE,
+  WRITE_MOTION_TYPE,
+} from "../../src/protocol/commands.ts";
 import { packetName, packetNameMessages } from "../../src/ui/features/log/packet-names.ts";
 
 describe("the Log view's packet names (issue 33)", () => {
