@@ -5,6 +5,7 @@ import { fileURLToPath } from "node:url";
 import { defineConfig, type Plugin } from "vite";
 import { VitePWA } from "vite-plugin-pwa";
 import { viteSingleFile } from "vite-plugin-singlefile";
+import { CHANGELOG_HREF, SINGLE_FILE_CHANGELOG_HREF, shippedChangelog } from "./scripts/vite-changelog.ts";
 import { wordsPerLanguage } from "./scripts/vite-words-per-language.ts";
 
 /** The policy of the built app: everything from our own origin, nothing inline, no eval. */
@@ -181,32 +182,26 @@ function git(args: string[]): string | undefined {
 
 /**
  * What the page says about itself (src/ui/version.ts): the package version, the commit it was built from and
- * where its changes are listed. On GitHub Actions the repository comes from the environment; elsewhere from
- * a GitHub remote, if there is one (otherwise the page shows no link).
+ * where its changes are listed: the changelog shipped with the build (scripts/vite-changelog.ts), a page beside
+ * the hosted panel or a section inside the one-file panel, so the link works offline and needs no repository.
  */
-function buildInfo(): { version: string; commit: string; changelogUrl: string } {
+function buildInfo(single: boolean): { version: string; commit: string; changelogUrl: string } {
   const pkg = JSON.parse(readFileSync(new URL("package.json", import.meta.url), "utf8")) as {
     version: string;
   };
   const commit = process.env.GITHUB_SHA?.slice(0, 7) ?? git(["rev-parse", "--short=7", "HEAD"]) ?? "unknown";
-  let repository: string | undefined;
-  if (process.env.GITHUB_REPOSITORY)
-    repository = `${process.env.GITHUB_SERVER_URL ?? "https://github.com"}/${process.env.GITHUB_REPOSITORY}`;
-  else {
-    const remote = git(["remote", "get-url", "origin"]);
-    const m = remote && /github\.com[:/]([\w.-]+\/[\w.-]+?)(?:\.git)?$/.exec(remote);
-    if (m) repository = `https://github.com/${m[1]}`;
-  }
-  const changelogUrl = repository
-    ? `${repository}/blob/${commit === "unknown" ? "HEAD" : commit}/CHANGELOG.md`
-    : "";
-  return { version: pkg.version, commit, changelogUrl };
+  return {
+    version: pkg.version,
+    commit,
+    changelogUrl: single ? SINGLE_FILE_CHANGELOG_HREF : CHANGELOG_HREF,
+  };
 }
 
 export default defineConfig(({ command, mode }) => {
   const devNonce = command === "serve" ? randomBytes(16).toString("base64") : undefined;
   const single = mode === SINGLE_FILE_MODE;
-  const info = buildInfo();
+  const info = buildInfo(single);
+  const changelog = shippedChangelog({ file: `${ROOT}/CHANGELOG.md`, single });
   return {
     // Relative paths, so the built app works from any folder of a static host (GitHub Pages: /<repository>/).
     base: "./",
@@ -258,9 +253,11 @@ export default defineConfig(({ command, mode }) => {
           // `codeSplitting: false`), so the lazily loaded views and the demo robot are in the page too.
           viteSingleFile(),
           singleFilePage(),
+          changelog,
         ]
       : [
           contentSecurityPolicy(devNonce),
+          changelog,
           // Each catalogue's languages in chunks of their own: the first load carries only the words of the
           // page's language (docs/i18n.md, "One language at a time"). Not in the one-file panel, which works
           // offline and so carries both.

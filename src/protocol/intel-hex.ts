@@ -131,6 +131,20 @@ const hex2 = (n: number) => n.toString(16).toUpperCase().padStart(2, "0");
 const hexAddress = (n: number) => `0x${n.toString(16).toUpperCase().padStart(5, "0")}`;
 
 /**
+ * Whether a text is Intel HEX at all: its first line that is not blank is a record (':' and hex digits). A file
+ * that is not (a binary, a document) is refused by `parseIntelHex` on that line too, but it is no damaged
+ * firmware file: it is no firmware file, and is said so first (issue 33).
+ */
+export function looksLikeIntelHex(text: string): boolean {
+  const first = text
+    .replace(/^\uFEFF/, "")
+    .slice(0, 4096)
+    .split(/\r\n|\n|\r/)
+    .find((line) => line.trim() !== "");
+  return first !== undefined && /^:[0-9A-Fa-f]+$/.test(first.trim());
+}
+
+/**
  * Reads and checks a whole HEX file for the ATmega128's application flash. Throws an `IntelHexError` naming
  * the line and what is wrong with it; a file that passes can be sent to the bootloader as it is.
  */

@@ -5,8 +5,9 @@ import { uiMessages } from "./messages.ts";
 
 /**
  * Which panel this is: the package version and the commit it was built from, and where its changes are
- * listed (CHANGELOG.md in the repository at that commit). vite.config.ts fills these in at build time
- * (`define`); where they are not defined (unit tests), the panel says "development".
+ * listed: the CHANGELOG.md shipped with this build (scripts/vite-changelog.ts: `./changelog.html` beside the
+ * hosted panel, `#changelog` inside the one-file panel; both open offline). vite.config.ts fills these in at
+ * build time (`define`); where they are not defined (unit tests), the panel says "development".
  */
 declare const __RBC_VERSION__: string;
 declare const __RBC_COMMIT__: string;
@@ -15,7 +16,7 @@ declare const __RBC_CHANGELOG_URL__: string;
 export interface PanelVersion {
   version: string;
   commit: string;
-  /** Empty when the build did not know its repository (a local build without a GitHub remote). */
+  /** The shipped changelog; empty where there is none (unit tests). */
   changelogUrl: string;
 }
 
@@ -33,14 +34,19 @@ export function versionText(info: PanelVersion = PANEL_VERSION, locale: Locale =
     : t("version.numberCommit", { version: info.version, commit: info.commit });
 }
 
-/** A small line for the foot of the side navigation or the Robot view: the version and "What changed". */
+/**
+ * A small line for the foot of the page: the version and "What changed". The changelog page opens in a new tab
+ * (leaving the panel would drop the robot's connection); the one-file panel's section is in the page itself.
+ */
 export function versionFooter(info: PanelVersion = PANEL_VERSION, locale: Locale = "en"): TemplateResult {
   const t = translator(uiMessages, locale);
   return html`
     <p class="muted panel-version" data-testid="panel-version">
       ${t("panel.name")} · ${versionText(info, locale)}${
         info.changelogUrl
-          ? html` · <a href=${info.changelogUrl} target="_blank" rel="noopener noreferrer">${t("version.whatChanged")}</a>`
+          ? info.changelogUrl.startsWith("#")
+            ? html` · <a href=${info.changelogUrl} data-testid="changelog-link">${t("version.whatChanged")}</a>`
+            : html` · <a href=${info.changelogUrl} target="_blank" rel="noopener" data-testid="changelog-link">${t("version.whatChanged")}</a>`
           : nothing
       }
     </p>

@@ -482,7 +482,7 @@ describe("in Korean (ko-KR)", () => {
 
         // Pose: the table in Korean, and a value the motion file cannot hold, refused beside its field.
         await expect
-          .poll(() => page.getByRole("heading", { level: 2, name: "장면 1: Scene_1" }).count())
+          .poll(() => page.getByRole("heading", { level: 2, name: "장면 1: 장면_1" }).count())
           .toBe(1);
         await typeInto(page, "end-3", "300");
         const problem = page.getByTestId("field-problem");

@@ -35,6 +35,8 @@ const INPUTS = [
   "index.html",
   "vite.config.ts",
   "scripts/vite-words-per-language.ts",
+  "scripts/vite-changelog.ts",
+  "CHANGELOG.md",
   "package-lock.json",
   "tests/e2e/fake-serial-entry.ts",
   "tests/e2e/rbc-test-globals.ts",

@@ -74,7 +74,7 @@ describe("zero backups say where they went, and are kept in this browser", () =>
     await expectText(row.locator("td").nth(1), "8958899989309");
     await expectText(row.locator("td").nth(2), FACTORY_ZEROS.join(" "));
 
-    // Restore puts the backup into the editor; nothing is written until Write.
+    // Restore puts the backup into the zero table; nothing is written until Write.
     const written = await page.evaluate(() => window.__rbcTest?.port.written.length);
     await row.getByRole("button", { name: "Restore" }).click();
     await page.getByText(/Loaded the backup kept in this browser/).waitFor();

@@ -208,12 +208,13 @@ describe("in Korean (ko-KR)", () => {
         await pages.getByRole("button", { name: "더 이전" }).waitFor();
         await page.getByRole("region", { name: "패킷 (최신순)" }).waitFor();
 
-        // The view's words are Korean; the packets' names come from the device, in English, marked so.
+        // The view's words are Korean, the packets' names too (issue 33); the copied log stays English.
         const directions = async () =>
           new Set((await card.locator("tbody .log-dir").allTextContents()).map(squash));
         await expect.poll(directions).toEqual(new Set(["→ 보냄", "← 받음"]));
-        const named = card.locator("tbody tr.log-packet .log-name span[lang='en']").first();
-        await expectText(named, /^[A-Z][A-Za-z ()0-9-]+$/);
+        const named = card.locator("tbody tr.log-packet .log-name").first();
+        await expectText(named, /^[가-힣 ]+$/);
+        expect(await card.locator("tbody tr.log-packet .log-name span[lang='en']").count()).toBe(0);
         await expectPageOk(page, "the Log view", { shot: `log-ko-${size(viewport)}` });
 
         // The run of discarded bytes is on an older page.

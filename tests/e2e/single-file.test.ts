@@ -1,9 +1,10 @@
 import { readFile, rm } from "node:fs/promises";
+import { join } from "node:path";
 import { pathToFileURL } from "node:url";
 import type { Browser } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { launchChromium } from "../support/chromium.ts";
-import { buildOnce } from "./harness.ts";
+import { buildOnce, ROOT } from "./harness.ts";
 import { buildSingleFile, cspViolations, injectedPage, walkPanel, watchRequests } from "./single-harness.ts";
 import "./rbc-test-globals.ts";
 
@@ -60,6 +61,28 @@ describe("the one-file panel (npm run build:single)", () => {
 
     expect(seen.unexpected).toEqual([]);
     expect(seen.requests.filter((u) => !u.startsWith("data:") && !u.startsWith("blob:"))).toEqual([fileUrl]);
+    expect(seen.errors).toEqual([]);
+    expect(await cspViolations(page)).toEqual([]);
+    await context.close();
+  });
+
+  it("its version links to the changelog inside the page, which opens from disk with no request", async () => {
+    const { page, context } = await injectedPage(browser, fakeSerial);
+    const fileUrl = pathToFileURL(built.file).href;
+    const seen = watchRequests(page, (url) => url === fileUrl || url.startsWith(`${fileUrl}#`));
+    await page.goto(fileUrl);
+    const firstHeading = /^# (.+)$/m.exec(await readFile(join(ROOT, "CHANGELOG.md"), "utf8"))?.[1] ?? "";
+    expect(firstHeading).not.toBe("");
+    const changelog = page.getByRole("heading", { level: 1, name: firstHeading, exact: true });
+    expect(await changelog.isVisible()).toBe(false);
+    await page.getByTestId("panel-version").getByRole("link", { name: "What changed" }).click();
+    await changelog.waitFor();
+    expect(new URL(page.url()).hash).toBe("#changelog");
+    // Back to the panel, on the view it was on.
+    await page.getByRole("link", { name: "← RBC Panel" }).click();
+    await changelog.waitFor({ state: "hidden" });
+    await page.getByRole("button", { name: "Try the demo robot" }).waitFor();
+    expect(seen.unexpected).toEqual([]);
     expect(seen.errors).toEqual([]);
     expect(await cspViolations(page)).toEqual([]);
     await context.close();

@@ -77,6 +77,14 @@ describe("the hosted panel under a sub-path", () => {
     await page.getByText("Open an example motion").click();
     await page.getByRole("button", { name: "Open bow.rbm" }).click();
     await page.getByText("Opened the example bow.rbm.").waitFor();
+    // The version's link to what changed opens offline too: the changelog page is precached with the panel.
+    const [changelog] = await Promise.all([
+      page.waitForEvent("popup"),
+      page.getByTestId("panel-version").getByRole("link", { name: "What changed" }).click(),
+    ]);
+    await changelog.getByRole("heading", { level: 1, name: "Changelog", exact: true }).waitFor();
+    expect(changelog.url()).toBe(`${server.url}changelog.html`);
+    await changelog.close();
     expect(seen.unexpected).toEqual([]);
     expect(seen.errors).toEqual([]);
     expect(await cspViolations(page)).toEqual([]);

@@ -321,7 +321,7 @@ describe("capture zeros on the demo robot", () => {
     );
     expect(await axeProblems(page, { within: '[data-testid="zeros-card"]' })).toEqual([]);
 
-    // Again, the knee within its window this time: the pose goes into the editor, and Write is the editor's.
+    // Again, the knee within its window this time: the pose goes into the zero table, and Write is the Zeros view's.
     await page.getByRole("button", { name: "Capture again…" }).click();
     const again = await watchText(page, COUNTDOWN, /Reading in/, { hold: true });
     await page.getByRole("button", { name: "Make it limp and start the countdown" }).click();

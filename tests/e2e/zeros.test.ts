@@ -144,7 +144,7 @@ describe("zeros editor", () => {
     await context.close();
   });
 
-  it("restores a backup into the editor, warning when it comes from another robot; the factory zeros fill it", async () => {
+  it("restores a backup into the zero table, warning when it comes from another robot; the factory zeros fill it", async () => {
     const { page, context } = await openZeros();
     const zeros = FACTORY_ZEROS.map((v, i) => (i === 0 ? v + 3 : v));
     const backup = {
@@ -169,7 +169,7 @@ describe("zeros editor", () => {
     await page.getByRole("button", { name: "Load factory zeros" }).click();
     // The change is not written: loading the factory zeros over it asks first (issue 33 item 7).
     await page.getByRole("button", { name: "Discard and load" }).click();
-    await page.getByText(/The factory zeros are in the editor/).waitFor();
+    await page.getByText(/The factory zeros are in the zero table/).waitFor();
     await expect.poll(() => page.locator("#zero-0").inputValue()).toBe(String(FACTORY_ZEROS[0]));
     await context.close();
   });
@@ -201,7 +201,7 @@ describe("zeros editor", () => {
       zeros: onRobot,
     });
 
-    // Only the read went out (one request): nothing was written, and the edit is still in the editor.
+    // Only the read went out (one request): nothing was written, and the edit is still in the zero table.
     expect(await simZeros(page)).toEqual(onRobot);
     const sent = await page.evaluate((from) => window.__rbcTest?.port.written.slice(from), written);
     expect(sent?.map((bytes) => bytes[8])).toEqual([0x0b]);
@@ -306,7 +306,7 @@ describe("in Korean (ko-KR)", () => {
         await expect
           .poll(() => intro(page))
           .toBe(
-            "로봇은 모션을 재생할 때마다 각 서보의 영점을 더해요. '영점 백업'은 로봇의 지금 영점을 이 브라우저에 보관하고 파일로도 저장해요. 나중에 어느 쪽으로든 복원할 수 있어요. 편집 표의 값은 로봇에서 가져왔어요.",
+            "로봇은 모션을 재생할 때마다 각 서보의 영점을 더해요. '영점 백업'은 로봇의 지금 영점을 이 브라우저에 보관하고 파일로도 저장해요. 나중에 어느 쪽으로든 복원할 수 있어요. 영점 표의 값은 로봇에서 가져왔어요.",
           );
         await expectText(
           page.getByTestId("zero-tables"),
@@ -314,7 +314,7 @@ describe("in Korean (ko-KR)", () => {
           { contains: true },
         );
         await expectText(page.locator('tr[data-servo="1"] .zero-diff .sr-only'), "변경 없음");
-        await expectText(page.getByTestId("change-summary"), "편집 표가 로봇에 저장된 영점과 같아요.");
+        await expectText(page.getByTestId("change-summary"), "영점 표가 로봇에 저장된 영점과 같아요.");
         await expectText(page.getByTestId("write-why"), "아직 쓸 것이 없어요. 먼저 값을 바꿔 주세요.");
         await expectPageOk(page, "the Zeros view", { shot: `zeros-ko-${size(viewport)}` });
 
@@ -431,7 +431,7 @@ describe("in Korean (ko-KR)", () => {
         buffer: backupOf("1111111111111", zeros),
       });
       const other = page.getByText(
-        /^"other\.json" 파일\(2026년 11월 21일 \d\d:\d\d에 저장\)을 편집 표에 불러왔어요\./,
+        /^"other\.json" 파일\(2026년 11월 21일 \d\d:\d\d에 저장\)을 영점 표에 불러왔어요\./,
       );
       await other.waitFor();
       await expectText(
@@ -440,13 +440,13 @@ describe("in Korean (ko-KR)", () => {
         { contains: true },
       );
       await expect.poll(() => page.locator("#zero-0").inputValue()).toBe(String(zeros[0]));
-      await expect.poll(() => intro(page)).toContain("편집 표의 값은 백업 파일 other.json에서 가져왔어요.");
+      await expect.poll(() => intro(page)).toContain("영점 표의 값은 백업 파일 other.json에서 가져왔어요.");
 
       await page.getByRole("button", { name: "공장 영점 불러오기" }).click();
       // The loaded backup is not written: loading the factory zeros over it asks first (issue 33 item 7).
       await page.getByRole("button", { name: "버리고 불러오기" }).click();
       await page
-        .getByText("공장 영점을 편집 표에 넣었어요. '로봇에 쓰기'를 누르기 전에는 아무것도 쓰지 않아요.")
+        .getByText("공장 영점을 영점 표에 넣었어요. '로봇에 쓰기'를 누르기 전에는 아무것도 쓰지 않아요.")
         .waitFor();
       expect(await keysShown(page)).toEqual([]);
       await context.close();

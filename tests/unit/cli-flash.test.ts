@@ -76,6 +76,18 @@ describe("rbc flash --demo", () => {
     expect(r.stdout).toMatch(/^Firmware updated: the robot now reports 2\.60\. 65 lines in/m);
   });
 
+  it("says a file that is not Intel HEX at all is not an Intel HEX firmware file, the parser's line second", async () => {
+    const file = await write("photo.bin", "\u0089PNG\r\n\u001a\n\u0000\u0000binary");
+    const r = await runInProcess(["flash", file, "--port", "/dev/rbc-no-such-port", "--yes"]);
+    expect(r.code).toBe(1);
+    const notHex =
+      "photo.bin is not an Intel HEX firmware file: the RBC's firmware is a text file (.hex) of lines that start with ':'.";
+    expect(r.stderr).toContain(notHex);
+    expect(r.stderr.indexOf("Line 1: a record starts with ':'.")).toBeGreaterThan(r.stderr.indexOf(notHex));
+    expect(r.stderr).toContain("Nothing was sent.");
+    expect(r.stderr).not.toContain("bootloader can take");
+  });
+
   it("refuses a bad file naming the line, before opening any port", async () => {
     const lines = firmwareHex("2.50", 512).split("\r\n");
     // Line 5 moves to the second 64 KiB; line 6 writes 0x1E000, inside the bootloader's section.

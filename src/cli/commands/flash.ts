@@ -19,12 +19,18 @@ import {
   firmwareResultText,
   firmwareSummaryText,
   hexProblemText,
+  notIntelHexText,
 } from "../../i18n/outcomes/firmware/firmware-words.ts";
 import { demoFirmwareParts } from "../../i18n/outcomes/robot-facts.ts";
-import { inEveryLanguage, said, saidBy, saidText } from "../../i18n/said.ts";
+import { inEveryLanguage, said, saidBy, saidText, saidTogether } from "../../i18n/said.ts";
 import { formatNumber, translator } from "../../i18n/translate.ts";
 import { declaredVersion } from "../../protocol/firmware-marker.ts";
-import { IntelHexError, type IntelHexImage, parseIntelHex } from "../../protocol/intel-hex.ts";
+import {
+  IntelHexError,
+  type IntelHexImage,
+  looksLikeIntelHex,
+  parseIntelHex,
+} from "../../protocol/intel-hex.ts";
 import { formatFirmware } from "../../shared/format.ts";
 import { noExtraArguments, parseCommand } from "../args.ts";
 import { type CommandDef, localeOf } from "../command.ts";
@@ -57,10 +63,16 @@ async function readHex(file: string, cwd: string): Promise<IntelHexImage> {
     return parseIntelHex(text);
   } catch (e) {
     if (!(e instanceof IntelHexError)) throw e;
-    const words = said(commandMessages, "cmd.flash.notFirmware", {
-      file: basename(file),
-      reason: inEveryLanguage((l) => hexProblemText(e, l)),
-    });
+    const reason = inEveryLanguage((l) => hexProblemText(e, l));
+    // Not Intel HEX at all (a binary, a document): said first, the parser's complaint second (issue 33).
+    const words =
+      (e.code === "no-colon" || e.code === "not-hex") && !looksLikeIntelHex(text)
+        ? saidTogether([
+            saidBy((l) => notIntelHexText(basename(file), l)),
+            saidText(reason),
+            saidBy(nothingSentText),
+          ])
+        : said(commandMessages, "cmd.flash.notFirmware", { file: basename(file), reason });
     throw new CliError("hex-invalid", words, EXIT.failed, { file, reason: e.code, line: e.line ?? null });
   }
 }

@@ -221,6 +221,14 @@ function hexProblem(t: Translator<typeof messages>, code: IntelHexErrorCode, fac
   }
 }
 
+/**
+ * A file that is not Intel HEX at all (a binary, a document: `looksLikeIntelHex` in src/protocol is false), said
+ * before the parser's complaint about its first line.
+ */
+export function notIntelHexText(file: string, locale: Locale): string {
+  return translator(messages, locale)("outcome.hex.notIntelHex", { file });
+}
+
 /** Why a HEX file is refused, in `locale`, from an `IntelHexError`'s code, line and facts. */
 export function hexProblemText(
   e: { readonly code: IntelHexErrorCode; readonly line: number | undefined; readonly facts?: IntelHexFacts },

@@ -162,6 +162,10 @@ export const firmwareOutcomeMessages = defineMessages({
     ko: "데이터 레코드가 없어서 쓸 내용이 없어요.",
   },
   "outcome.hex.empty": { en: "The file is empty.", ko: "파일이 비어 있어요." },
+  "outcome.hex.notIntelHex": {
+    en: "{file} is not an Intel HEX firmware file: the RBC's firmware is a text file (.hex) of lines that start with ':'.",
+    ko: "{file}은(는) Intel HEX 펌웨어 파일이 아니에요. RBC 펌웨어는 ':'로 시작하는 줄로 된 텍스트 파일(.hex)이에요.",
+  },
   "outcome.hex.noColon": { en: "a record starts with ':'.", ko: "레코드는 ':'로 시작해야 해요." },
   "outcome.hex.notHex": {
     en: "a record is ':' followed by pairs of hex digits (at least 5 bytes).",

@@ -150,6 +150,11 @@ export const editorMessages = defineMessages({
 
   // ---- Scene tab ---------------------------------------------------------------------------------------
   "editor.scene.name": { en: "Name", ko: "이름" },
+  "editor.scene.defaultName": { en: "Scene_{n}", ko: "장면_{n}" },
+  "editor.scene.storedAs": {
+    en: "Stored in the motion file as {name}: a scene name in a motion file takes only Latin letters, digits and signs.",
+    ko: "모션 파일에는 {name}(으)로 저장돼요. 모션 파일의 장면 이름에는 영문, 숫자, 기호만 쓸 수 있어요.",
+  },
   "editor.scene.frames": { en: "Frames", ko: "프레임 수" },
   "editor.scene.time": { en: "Time (ms)", ko: "시간 (ms)" },
   "editor.scene.torque": { en: "Torque (all servos)", ko: "토크 (모든 서보)" },

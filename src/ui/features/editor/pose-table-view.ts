@@ -14,6 +14,7 @@ import {
   typePosition,
 } from "./actions.ts";
 import { type EditorTranslator, editorMessages } from "./messages.ts";
+import { shownSceneName } from "./scene-name.ts";
 import type { EditorState, FieldProblem, PoseColumns } from "./state.ts";
 import { inputValue, PORT_VALUES, problemText, TORQUE_VALUES } from "./view-parts.ts";
 
@@ -185,7 +186,7 @@ export function poseCard(ctx: ViewContext, s: EditorState, doc: Motion): Templat
   const scene = doc.scenes[s.scene]!;
   return html`
     <section class="card editor-pose" aria-labelledby="pose-title" data-testid="pose-card">
-      <h2 id="pose-title" class="card-title long-text">${t("editor.sceneHeading", { scene: String(s.scene), name: scene.name })}</h2>
+      <h2 id="pose-title" class="card-title long-text">${t("editor.sceneHeading", { scene: String(s.scene), name: shownSceneName(scene.name, t) })}</h2>
       <p class="muted small sides-note" data-testid="sides-note">${sidesNote(t.locale)}</p>
       ${poseTable(ctx, s, doc, scene)}
     </section>

@@ -9,6 +9,7 @@ import type { ViewContext } from "../../shell/view-types.ts";
 import { formatSeconds } from "../motions/index.ts";
 import { addSceneAfter, chooseScene, deleteSelected, duplicateSelected, moveSelected } from "./actions.ts";
 import { type EditorTranslator, editorMessages } from "./messages.ts";
+import { shownSceneName } from "./scene-name.ts";
 import type { EditorState } from "./state.ts";
 import { problemText } from "./view-parts.ts";
 
@@ -59,7 +60,7 @@ function sceneOption(
       @keydown=${(e: KeyboardEvent) => sceneKey(ctx, k, count, e)}
     >
       <span class="num scene-k"><span class="sr-only">${t("editor.scenes.optionScene")} </span>${k}</span>
-      <span class="scene-name name-text">${nameWithBreaks(scene.name)}</span>
+      <span class="scene-name name-text">${nameWithBreaks(shownSceneName(scene.name, t))}</span>
       <span class="num muted scene-timing">
         <span aria-hidden="true">${t("editor.scenes.timingShort", timing)}</span
         ><span class="sr-only">${t("editor.scenes.timingSpoken", timing)}</span>

@@ -5,6 +5,7 @@ import type { ViewContext } from "../../shell/view-types.ts";
 import { chooseSceneTorque, typeSceneName, typeTiming } from "./actions.ts";
 import { type EditorTranslator, editorMessages } from "./messages.ts";
 import { detachBoundary, joinSelected } from "./pose-actions.ts";
+import { shownSceneName } from "./scene-name.ts";
 import type { EditorState } from "./state.ts";
 import { inputValue, problemText, torqueWords } from "./view-parts.ts";
 
@@ -93,7 +94,14 @@ function fields(ctx: ViewContext, t: EditorTranslator, s: EditorState, scene: Mo
   const p = s.problems;
   const torque = sceneTorque(scene);
   const every = scene.frames > 0 ? Math.floor(scene.timeMs / scene.frames) : 0;
+  // A default name shown in the page's language: the file keeps its ASCII name (scene-name.ts).
+  const stored = shownSceneName(scene.name, t) !== scene.name;
   return html`
+    ${
+      stored
+        ? html`<p class="muted small" id="scene-name-stored" data-testid="scene-name-stored">${t("editor.scene.storedAs", { name: scene.name })}</p>`
+        : nothing
+    }
     <div class="scene-fields">
       <label class="editor-field scene-name-field">
         <span>${t("editor.scene.name")}</span>
@@ -103,7 +111,7 @@ function fields(ctx: ViewContext, t: EditorTranslator, s: EditorState, scene: Mo
           maxlength="99"
           spellcheck="false"
           aria-invalid=${p["scene-name"] ? "true" : "false"}
-          aria-describedby=${p["scene-name"] ? "scene-name-problem" : nothing}
+          aria-describedby=${p["scene-name"] ? "scene-name-problem" : stored ? "scene-name-stored" : nothing}
           .value=${p["scene-name"]?.text ?? scene.name}
           @change=${(e: Event) => typeSceneName(ctx, inputValue(e))}
         />
@@ -155,7 +163,7 @@ export function sceneCard(ctx: ViewContext, s: EditorState, doc: Motion): Templa
   const scene = doc.scenes[s.scene]!;
   return html`
     <section class="card editor-scene" aria-labelledby="scene-title" data-testid="scene-card">
-      <h2 id="scene-title" class="card-title long-text">${t("editor.sceneHeading", { scene: String(s.scene), name: scene.name })}</h2>
+      <h2 id="scene-title" class="card-title long-text">${t("editor.sceneHeading", { scene: String(s.scene), name: shownSceneName(scene.name, t) })}</h2>
       ${fields(ctx, t, s, scene)} ${boundaries(ctx, t, s, doc)}
     </section>
   `;

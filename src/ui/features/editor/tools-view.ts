@@ -4,6 +4,7 @@ import { HUNO_PLATFORM, type Motion } from "../../../motion/index.ts";
 import type { ViewContext } from "../../shell/view-types.ts";
 import { type EditorTranslator, editorMessages } from "./messages.ts";
 import { copyPoseFrom, mirrorSelected, type RetimeRequest, retimeFromForm } from "./pose-actions.ts";
+import { shownSceneName } from "./scene-name.ts";
 import type { EditorState } from "./state.ts";
 import { problemText } from "./view-parts.ts";
 
@@ -59,7 +60,7 @@ function copyTools(
             ${doc.scenes.map((scene, k) =>
               k === s.scene
                 ? nothing
-                : html`<option value=${k} ?selected=${k === fallback}>${t("editor.sceneHeading", { scene: String(k), name: scene.name })}</option>`,
+                : html`<option value=${k} ?selected=${k === fallback}>${t("editor.sceneHeading", { scene: String(k), name: shownSceneName(scene.name, t) })}</option>`,
             )}
           </select>
         </label>

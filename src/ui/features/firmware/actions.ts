@@ -70,7 +70,7 @@ export function openFirmwareText(ctx: AppContext, fileName: string, text: string
   } catch (e) {
     patchFirmware(ctx.store, {
       loadingFile: false,
-      fileProblem: hexProblem(fileName, e, ctx.store.get().locale),
+      fileProblem: hexProblem(fileName, e, ctx.store.get().locale, text),
     });
   }
 }

@@ -1,7 +1,7 @@
 import type { Locale } from "../../../i18n/locale.ts";
-import { hexProblemText } from "../../../i18n/outcomes/firmware/firmware-words.ts";
-import { inEveryLanguage, said } from "../../../i18n/said.ts";
-import { IntelHexError } from "../../../protocol/intel-hex.ts";
+import { hexProblemText, notIntelHexText } from "../../../i18n/outcomes/firmware/firmware-words.ts";
+import { inEveryLanguage, said, saidBy, saidText } from "../../../i18n/said.ts";
+import { IntelHexError, looksLikeIntelHex } from "../../../protocol/intel-hex.ts";
 import { type Notice, noticeOf } from "../../app-state.ts";
 import { technicalDetail } from "../../error-text.ts";
 import { formatKilobytes } from "../../format.ts";
@@ -12,15 +12,22 @@ import { firmwareMessages } from "./messages.ts";
  * catalogue's words, `hexProblemText`, in every language). The parser's technical line is the technical detail.
  */
 
-/** A file whose text could not be read as firmware: with the line to blame when there is one. */
-export function hexProblem(fileName: string, e: unknown, locale: Locale): Notice {
-  const sentence =
-    e instanceof IntelHexError
-      ? said(firmwareMessages, "firmware.notHexFile", {
-          file: fileName,
-          reason: inEveryLanguage((l) => hexProblemText(e, l)),
-        })
-      : said(firmwareMessages, "firmware.notRead", { file: fileName, error: String(e) });
+/**
+ * A file whose text could not be read as firmware: with the line to blame when there is one. A file that is not
+ * Intel HEX at all (a binary, a document: its first line is no record) is said to be that first, in plain words;
+ * the parser's complaint about its first line comes second.
+ */
+export function hexProblem(fileName: string, e: unknown, locale: Locale, text = ""): Notice {
+  if (!(e instanceof IntelHexError)) {
+    const sentence = said(firmwareMessages, "firmware.notRead", { file: fileName, error: String(e) });
+    return noticeOf("danger", locale, [sentence], technicalDetail(e));
+  }
+  const reason = inEveryLanguage((l) => hexProblemText(e, l));
+  if ((e.code === "no-colon" || e.code === "not-hex") && !looksLikeIntelHex(text)) {
+    const notHex = saidBy((l) => notIntelHexText(fileName, l));
+    return noticeOf("danger", locale, [notHex, saidText(reason)], technicalDetail(e));
+  }
+  const sentence = said(firmwareMessages, "firmware.notHexFile", { file: fileName, reason });
   return noticeOf("danger", locale, [sentence], technicalDetail(e));
 }
 

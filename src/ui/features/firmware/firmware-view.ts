@@ -276,7 +276,11 @@ function runOrStart(ctx: ViewContext, t: FirmwareTranslator, recover: boolean): 
     >
       ${recover ? t("firmware.recover") : t("firmware.updateEllipsis")}
     </button>
-    ${f.file ? nothing : html`<span class="muted">${t("firmware.openFirst")}</span>`}
+    ${
+      f.file
+        ? nothing
+        : html`<span class="muted">${t(f.fileProblem ? "firmware.openHex" : "firmware.openFirst")}</span>`
+    }
   </div>`;
 }
 

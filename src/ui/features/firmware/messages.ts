@@ -158,6 +158,10 @@ export const firmwareMessages = defineMessages({
   "firmware.recover": { en: "Recover…", ko: "복구…" },
   "firmware.updateEllipsis": { en: "Update firmware…", ko: "펌웨어 업데이트…" },
   "firmware.openFirst": { en: "Open a firmware file first.", ko: "먼저 펌웨어 파일을 열어 주세요." },
+  "firmware.openHex": {
+    en: "Open an Intel HEX firmware file (.hex) to update the robot.",
+    ko: "로봇을 업데이트하려면 Intel HEX 펌웨어 파일(.hex)을 열어 주세요.",
+  },
   "firmware.recoverTitle": {
     en: "Recover: update a robot that does not answer",
     ko: "복구: 응답하지 않는 로봇 업데이트",

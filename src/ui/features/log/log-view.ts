@@ -2,6 +2,7 @@
 import "../../styles/log.css";
 import { html, nothing, type TemplateResult } from "lit-html";
 import { repeat } from "lit-html/directives/repeat.js";
+import type { Locale } from "../../../i18n/locale.ts";
 import { translator } from "../../../i18n/translate.ts";
 import { formatBytes, formatClockTime, formatCount, formatKilobytes } from "../../format.ts";
 import { liveNotice } from "../../shell/notice.ts";
@@ -19,10 +20,17 @@ import {
 import { rowNote } from "./log-note.ts";
 import { type LogTranslator, logMessages } from "./messages.ts";
 import type { LogLine, PacketLog } from "./packet-log.ts";
+import { packetName } from "./packet-names.ts";
+
+/** A packet's name in the page's language; other bytes by the device's English name. */
+function nameOf(line: LogLine, locale: Locale): TemplateResult | string {
+  const name = line.type === undefined ? undefined : packetName(line.type, locale);
+  return name ?? html`<span lang="en">${line.name}</span>`;
+}
 
 /**
- * One row; its hex is rendered here, for the rows of the page on screen only. A packet's name comes from the
- * device, in English (marked so); the view's own words are in the panel's language.
+ * One row; its hex is rendered here, for the rows of the page on screen only. A packet's name is in the panel's
+ * language (packet-names.ts); raw bytes keep the device's English name (marked so).
  */
 function logRow(line: LogLine, t: LogTranslator): TemplateResult {
   const out = line.direction === "out";
@@ -33,7 +41,7 @@ function logRow(line: LogLine, t: LogTranslator): TemplateResult {
       <td class="num log-time">${formatClockTime(line.at)}</td>
       <td class="log-dir"><span aria-hidden="true">${out ? "→" : "←"}</span> ${out ? t("log.out") : t("log.in")}</td>
       <td class="log-name">
-        ${discard ? t("log.discarded") : html`<span lang="en">${line.name}</span>`}${
+        ${discard ? t("log.discarded") : nameOf(line, t.locale)}${
           note ? html`<span class="muted small log-note"> ${note}</span>` : nothing
         }
         ${discard ? html`<span class="muted small"> (${formatBytes(line.byteCount, t.locale)})</span>` : nothing}

@@ -2,7 +2,7 @@ import { defineMessages } from "../../../i18n/catalogue.ts";
 import type { Translator } from "../../../i18n/translate.ts";
 
 /**
- * The Log view. The packets' names and the device's notes stay in English (they come from the device, like
+ * The Log view. The device's notes and raw bytes' names stay in English (they come from the device, like
  * the technical detail), and so does the exported log (a packet trace, like the CLI's).
  */
 export const logMessages = defineMessages({

@@ -62,6 +62,8 @@ export class LogLine {
     public byteCount: number,
     /** What the device said about the bytes ("chunk 3 (255 bytes)"), in English like the packet's name. */
     readonly givenNote?: string,
+    /** A packet's type byte: the view names it in the panel's language (packet-names.ts). */
+    readonly type?: number,
   ) {}
 
   /** The bytes kept, oldest first: a view of the log's store, valid until the next push (copy to keep). */
@@ -217,6 +219,7 @@ export class PacketLog {
         entry.name,
         entry.bytes.length,
         entry.note,
+        entry.kind === "packet" ? entry.type : undefined,
       );
       this.append(line, entry.bytes.subarray(0, ENTRY_BYTES));
     }

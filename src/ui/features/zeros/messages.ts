@@ -18,8 +18,8 @@ export const zerosMessages = defineMessages({
     ko: "'영점 백업'은 로봇의 지금 영점을 이 브라우저에 보관하고 파일로도 저장해요. 나중에 어느 쪽으로든 복원할 수 있어요.",
   },
   "zeros.source": {
-    en: "Values in the editor come from {source}.",
-    ko: "편집 표의 값은 {source}에서 가져왔어요.",
+    en: "The values in the zero table come from {source}.",
+    ko: "영점 표의 값은 {source}에서 가져왔어요.",
   },
   "zeros.sourceRobot": { en: "the robot", ko: "로봇" },
   "zeros.sourceFactory": { en: "the factory zeros", ko: "공장 영점" },
@@ -105,8 +105,8 @@ export const zerosMessages = defineMessages({
   "zeros.fileNoticeLabel": { en: "Backup file", ko: "백업 파일" },
   "zeros.resultLabel": { en: "Write result", ko: "쓰기 결과" },
   "zeros.caption": {
-    en: "Zero position of each servo, the value stored in the robot, and the change",
-    ko: "서보마다의 영점 위치, 로봇에 저장된 값, 변경",
+    en: "Zero table: the zero position of each servo, the value stored in the robot, and the change",
+    ko: "영점 표: 서보마다의 영점 위치, 로봇에 저장된 값, 변경",
   },
   "zeros.colId": { en: "ID", ko: "ID" },
   "zeros.colJoint": { en: "Joint", ko: "관절" },
@@ -124,8 +124,8 @@ export const zerosMessages = defineMessages({
   "zeros.notRead": { en: "The zeros have not been read yet.", ko: "아직 영점을 읽지 않았어요." },
   "zeros.readingZeros": { en: "Reading the zeros from the robot…", ko: "로봇에서 영점을 읽는 중…" },
   "zeros.noChanges": {
-    en: "The editor matches the zeros stored in the robot.",
-    ko: "편집 표가 로봇에 저장된 영점과 같아요.",
+    en: "The zero table matches the zeros stored in the robot.",
+    ko: "영점 표가 로봇에 저장된 영점과 같아요.",
   },
   "zeros.noOtherChanges": {
     en: {
@@ -187,8 +187,8 @@ export const zerosMessages = defineMessages({
   "zeros.runWriting": { en: "Writing zeros", ko: "영점 쓰기" },
   "zeros.readFailed": { en: "Reading the zeros failed.", ko: "영점을 읽지 못했어요." },
   "zeros.factoryLoaded": {
-    en: "The factory zeros are in the editor. Nothing is written until you press Write.",
-    ko: "공장 영점을 편집 표에 넣었어요. '로봇에 쓰기'를 누르기 전에는 아무것도 쓰지 않아요.",
+    en: "The factory zeros are in the zero table. Nothing is written until you press Write.",
+    ko: "공장 영점을 영점 표에 넣었어요. '로봇에 쓰기'를 누르기 전에는 아무것도 쓰지 않아요.",
   },
   "zeros.backupReadFailed": {
     en: "No backup was saved: the zeros could not be read from the robot.",
@@ -238,16 +238,16 @@ export const zerosMessages = defineMessages({
   "zeros.keptColValues": { en: "Zeros (servo 0-15)", ko: "영점 (서보 0-15)" },
   "zeros.keptRestore": { en: "Restore", ko: "복원" },
   "zeros.keptRestoreLabel": {
-    en: "Restore the backup saved {saved} into the editor",
-    ko: "{saved}에 저장한 백업을 편집 표로 복원",
+    en: "Restore the backup saved {saved} into the zero table",
+    ko: "{saved}에 저장한 백업을 영점 표로 복원",
   },
   "zeros.keptLoaded": {
-    en: "Loaded the backup kept in this browser (saved {saved}) into the editor. Nothing is written until you press Write.",
-    ko: "이 브라우저에 보관한 백업({saved}에 저장)을 편집 표에 불러왔어요. '로봇에 쓰기'를 누르기 전에는 아무것도 쓰지 않아요.",
+    en: "Loaded the backup kept in this browser (saved {saved}) into the zero table. Nothing is written until you press Write.",
+    ko: "이 브라우저에 보관한 백업({saved}에 저장)을 영점 표에 불러왔어요. '로봇에 쓰기'를 누르기 전에는 아무것도 쓰지 않아요.",
   },
   "zeros.keptLoadedOtherRobot": {
-    en: "Loaded the backup kept in this browser (saved {saved}) into the editor. It was saved from robot {backupSerial}, not the connected robot {serial}. Zeros are calibrated per robot: check each value before writing.",
-    ko: "이 브라우저에 보관한 백업({saved}에 저장)을 편집 표에 불러왔어요. 이 백업은 연결된 로봇({serial})이 아니라 다른 로봇({backupSerial})에서 저장했어요. 영점은 로봇마다 따로 맞춰요. 쓰기 전에 값을 하나하나 확인해 주세요.",
+    en: "Loaded the backup kept in this browser (saved {saved}) into the zero table. It was saved from robot {backupSerial}, not the connected robot {serial}. Zeros are calibrated per robot: check each value before writing.",
+    ko: "이 브라우저에 보관한 백업({saved}에 저장)을 영점 표에 불러왔어요. 이 백업은 연결된 로봇({serial})이 아니라 다른 로봇({backupSerial})에서 저장했어요. 영점은 로봇마다 따로 맞춰요. 쓰기 전에 값을 하나하나 확인해 주세요.",
   },
   "zeros.fileUnreadable": { en: '"{file}" could not be read.', ko: '"{file}" 파일을 읽지 못했어요.' },
   "zeros.fileRefused": {
@@ -255,12 +255,12 @@ export const zerosMessages = defineMessages({
     ko: '"{file}" 파일을 불러오지 않았어요. {reason}',
   },
   "zeros.loaded": {
-    en: 'Loaded "{file}" (saved {saved}) into the editor. Nothing is written until you press Write.',
-    ko: "\"{file}\" 파일({saved}에 저장)을 편집 표에 불러왔어요. '로봇에 쓰기'를 누르기 전에는 아무것도 쓰지 않아요.",
+    en: 'Loaded "{file}" (saved {saved}) into the zero table. Nothing is written until you press Write.',
+    ko: "\"{file}\" 파일({saved}에 저장)을 영점 표에 불러왔어요. '로봇에 쓰기'를 누르기 전에는 아무것도 쓰지 않아요.",
   },
   "zeros.loadedOtherRobot": {
-    en: 'Loaded "{file}" (saved {saved}) into the editor. This backup was saved from robot {backupSerial}, not the connected robot {serial}. Zeros are calibrated per robot: check each value before writing.',
-    ko: '"{file}" 파일({saved}에 저장)을 편집 표에 불러왔어요. 이 백업은 연결된 로봇({serial})이 아니라 다른 로봇({backupSerial})에서 저장했어요. 영점은 로봇마다 따로 맞춘 값이니, 쓰기 전에 값을 하나하나 확인해 주세요.',
+    en: 'Loaded "{file}" (saved {saved}) into the zero table. This backup was saved from robot {backupSerial}, not the connected robot {serial}. Zeros are calibrated per robot: check each value before writing.',
+    ko: '"{file}" 파일({saved}에 저장)을 영점 표에 불러왔어요. 이 백업은 연결된 로봇({serial})이 아니라 다른 로봇({backupSerial})에서 저장했어요. 영점은 로봇마다 따로 맞춘 값이니, 쓰기 전에 값을 하나하나 확인해 주세요.',
   },
   "zeros.unknownRobot": { en: "(unknown)", ko: "(알 수 없음)" },
   "zeros.verifyFailed": {

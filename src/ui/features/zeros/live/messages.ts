@@ -156,10 +156,10 @@ export const zerosLiveMessages = defineMessages({
     en: "Cannot write: servo {ids} did not answer, so its position is not known.",
     ko: "쓸 수 없어요: 서보 {ids}번이 응답하지 않아 위치를 알 수 없어요.",
   },
-  "capture.use": { en: "Put into the editor", ko: "편집 표에 넣기" },
+  "capture.use": { en: "Put into the zero table", ko: "영점 표에 넣기" },
   "capture.used": {
-    en: "The captured positions are in the editor: check the changes, then Write.",
-    ko: "잡은 위치를 편집 표에 넣었어요. 변경을 확인한 뒤 '쓰기'를 눌러 주세요.",
+    en: "The captured positions are in the zero table: check the changes, then Write.",
+    ko: "잡은 위치를 영점 표에 넣었어요. 변경을 확인한 뒤 '쓰기'를 눌러 주세요.",
   },
   "capture.again": { en: "Capture again…", ko: "다시 잡기…" },
   "capture.close": { en: "Close", ko: "닫기" },
