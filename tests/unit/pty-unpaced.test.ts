@@ -30,20 +30,23 @@ describe("a link that takes no wire time", () => {
     expect(rig.client.mode).toBe("direct");
   });
 
-  it.skipIf(!HAS_SOCAT)("knows socat's pseudo terminals, and a link to one, from a serial device", async () => {
-    const pty = await createPtyPair();
-    const dir = await mkdtemp(join(tmpdir(), "rbc-pty-"));
-    try {
-      expect(isPseudoTerminal(pty.clientPath)).toBe(true);
-      expect(isPseudoTerminal(pty.simPath)).toBe(true);
-      const link = join(dir, "ttyRBC");
-      await symlink(pty.clientPath, link);
-      expect(isPseudoTerminal(link)).toBe(true);
-      expect(isPseudoTerminal("/dev/ttyUSB0")).toBe(false);
-      expect(isPseudoTerminal("/dev/ttyS0")).toBe(false);
-    } finally {
-      await pty.close();
-      await rm(dir, { recursive: true, force: true });
-    }
-  });
+  it.skipIf(!HAS_SOCAT)(
+    "knows socat's pseudo terminals, and a link to one, from a serial device",
+    async () => {
+      const pty = await createPtyPair();
+      const dir = await mkdtemp(join(tmpdir(), "rbc-pty-"));
+      try {
+        expect(isPseudoTerminal(pty.clientPath)).toBe(true);
+        expect(isPseudoTerminal(pty.simPath)).toBe(true);
+        const link = join(dir, "ttyRBC");
+        await symlink(pty.clientPath, link);
+        expect(isPseudoTerminal(link)).toBe(true);
+        expect(isPseudoTerminal("/dev/ttyUSB0")).toBe(false);
+        expect(isPseudoTerminal("/dev/ttyS0")).toBe(false);
+      } finally {
+        await pty.close();
+        await rm(dir, { recursive: true, force: true });
+      }
+    },
+  );
 });
