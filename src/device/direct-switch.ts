@@ -87,7 +87,9 @@ export function startDirect(core: ClientCore, use: DirectUse, enterMs: number | 
   activity.enterDirect(use);
   c.setState({ mode: "direct", subscription: undefined });
   c.raw.guardServoBus({
-    paced: enterMs !== undefined && enterMs >= ENTER_WIRE_MS,
+    // A link known to take no wire time (a pseudo terminal) is never paced, however slowly a loaded machine
+    // answered the switch: its replies can come sooner than their bytes' wire time, and must not count as early.
+    paced: c.transport.unpaced !== true && enterMs !== undefined && enterMs >= ENTER_WIRE_MS,
     leave: () => leaveStillPlaying(core),
     fence: () => fenceServoBus(core),
     settleMs: c.timeouts.settleMs,

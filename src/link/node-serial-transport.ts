@@ -2,6 +2,7 @@
  * Transport over a serial device in Node, using the `serialport` package. Loaded only by the command line
  * (`src/cli/`, started by `bin/rbc.mjs`); the web app never imports it (`src/link/index.ts` does not export it).
  */
+import { realpathSync } from "node:fs";
 import { SerialPort } from "serialport";
 import { type LinkFacts, linkError, linkLine, type Transport, TransportBase } from "./transport.ts";
 
@@ -17,6 +18,20 @@ export interface SerialPortListing {
 }
 
 type CloseError = (Error & { disconnected?: boolean }) | null;
+
+/**
+ * Whether `path` is (or links to) a pseudo terminal rather than a serial line: Linux's /dev/pts/N, macOS's
+ * /dev/ttysNNN (socat's `pty` ends, and the links its `link=` option makes to them).
+ */
+export function isPseudoTerminal(path: string): boolean {
+  let real = path;
+  try {
+    real = realpathSync(path);
+  } catch {
+    // A path that cannot be resolved is judged as written.
+  }
+  return /^\/dev\/pts\/\d+$/.test(real) || /^\/dev\/ttys\d+$/.test(real);
+}
 
 /**
  * `serialport` options for the RBC link (docs/protocol.md §1): 115200 8N1 and no flow control of either kind. With
@@ -39,6 +54,8 @@ export function rbcSerialPortOptions(path: string, baudRate = 115200) {
 
 export class NodeSerialTransport extends TransportBase implements Transport {
   private port: SerialPort | undefined;
+  /** A pseudo terminal: bytes cross at once, with no wire time (`Transport.unpaced`); known once open. */
+  unpaced = false;
 
   constructor(
     readonly path: string,
@@ -85,6 +102,7 @@ export class NodeSerialTransport extends TransportBase implements Transport {
           return;
         }
         this.port = port;
+        this.unpaced = isPseudoTerminal(this.path);
         port.on("data", (chunk: Buffer) => {
           if (this.port !== port) return;
           // A copy: the chunk is a view into serialport's 64 KiB read pool, which listeners must not pin.

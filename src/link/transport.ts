@@ -56,6 +56,11 @@ export interface TransportStatusEvent {
 
 export interface Transport {
   readonly status: TransportStatus;
+  /**
+   * True when the link is known to take no wire time: a pseudo terminal (socat's pair to `rbc sim`), where a
+   * reply can come sooner than its bytes would take at 115200 baud. Unset for a serial line, which always does.
+   */
+  readonly unpaced?: boolean;
   /** Opens the link at 115200 8N1. Rejects with a LinkError if it cannot. */
   open(): Promise<void>;
   /** Sends bytes; resolves when they were handed to the port. Rejects with a LinkError if the link is down. */

@@ -2,7 +2,7 @@ import { describe, expect, it } from "vitest";
 import { connectRobot, cspViolations, expectText, FAST, squash, useApp, watchPage } from "./harness.ts";
 import "./rbc-test-globals.ts";
 import type { Page } from "playwright-core";
-import { expectPageOk, newLocalePage, SIZES, type Size } from "./i18n-checks.ts";
+import { expectPageOkAtSizes, newLocalePage, PHONE } from "./i18n-checks.ts";
 import type { RbcTestOptions } from "./rbc-test-globals.ts";
 
 const app = useApp();
@@ -200,199 +200,200 @@ describe("connecting a robot", () => {
  */
 describe("in Korean (ko-KR)", () => {
   /** The panel in a Korean browser, with the fake serial port (`options`) or, with `noSerial`, no Web Serial. */
-  const koreanPage = (size: Size, setup: { options?: RbcTestOptions; noSerial?: boolean } = {}) =>
-    newLocalePage(app, "ko-KR", { size, ...setup });
+  const koreanPage = (setup: { options?: RbcTestOptions; noSerial?: boolean } = {}) =>
+    newLocalePage(app, "ko-KR", { size: PHONE, ...setup });
 
   /** The top bar's status, part by part (the dot and the separators are decoration). */
   const status = (page: Page) =>
     page.getByTestId("connection-status").locator(".status-part, .demo-tag").allTextContents();
   const banner = (page: Page) => page.getByTestId("stop-banner");
 
-  /** What every state of every view must satisfy, in Korean, at `size`; a screenshot named `name`. */
-  const checkKorean = (page: Page, size: Size, name: string) =>
-    expectPageOk(page, name, { lang: "ko", shot: `connection-${name}-${size.width}` });
+  /**
+   * What every state of every view must satisfy, in Korean, at both sizes (the window resized on the same page);
+   * a screenshot named `name` at each.
+   */
+  const checkKorean = (page: Page, name: string) =>
+    expectPageOkAtSizes(page, name, { lang: "ko", shot: (size) => `connection-${name}-${size.width}` });
 
+  // One page per state, for both sizes: the flow once at 390×844 (the phone, where Korean labels are tightest),
+  // each page check at 1280×800 and at 390×844.
   describe("the connection in Korean", () => {
-    for (const size of SIZES) {
-      const at = `${size.width}×${size.height}`;
+    const at = "1280×800 and 390×844";
 
-      it(`the start card with its help open and the ports used before, at ${at}`, async () => {
-        const { page, context } = await koreanPage(size, { options: { granted: true } });
-        const card = page.getByTestId("connect-card");
-        await card.waitFor();
-        await expectText(card.getByRole("heading", { level: 1 }), "로봇 연결하기");
-        await card.getByRole("button", { name: "로봇 연결", exact: true }).waitFor();
-        await card.getByRole("button", { name: "데모 로봇 써 보기", exact: true }).waitFor();
-        await card.getByRole("button", { name: "가상 블루투스 연결로 데모 로봇 써 보기" }).waitFor();
-        await expectText(
-          card.locator(".demo-bluetooth p"),
-          "블루투스처럼 응답이 300 ± 150ms 늦게, 몰려서 와요.",
-        );
-        await expect
-          .poll(() => card.getByLabel("모든 시리얼 포트 보기 (다른 어댑터, 내장 포트)").isChecked())
-          .toBe(false);
-        await expect.poll(() => status(page)).toEqual(["연결 안 됨"]);
+    it(`the start card with its help open and the ports used before, at ${at}`, async () => {
+      const { page, context } = await koreanPage({ options: { granted: true } });
+      const card = page.getByTestId("connect-card");
+      await card.waitFor();
+      await expectText(card.getByRole("heading", { level: 1 }), "로봇 연결하기");
+      await card.getByRole("button", { name: "로봇 연결", exact: true }).waitFor();
+      await card.getByRole("button", { name: "데모 로봇 써 보기", exact: true }).waitFor();
+      await card.getByRole("button", { name: "가상 블루투스 연결로 데모 로봇 써 보기" }).waitFor();
+      await expectText(
+        card.locator(".demo-bluetooth p"),
+        "블루투스처럼 응답이 300 ± 150ms 늦게, 몰려서 와요.",
+      );
+      await expect
+        .poll(() => card.getByLabel("모든 시리얼 포트 보기 (다른 어댑터, 내장 포트)").isChecked())
+        .toBe(false);
+      await expect.poll(() => status(page)).toEqual(["연결 안 됨"]);
 
-        // The port granted on an earlier visit, named in Korean, with its buttons.
-        await card.getByRole("heading", { name: "전에 쓴 포트" }).waitFor();
-        await expect
-          .poll(() => card.locator(".port-label").allTextContents())
-          .toEqual(["FTDI USB 시리얼 어댑터 (0403:6001)"]);
-        await card.getByRole("button", { name: "FTDI USB 시리얼 어댑터 (0403:6001)에 연결" }).waitFor();
-        await card.getByRole("button", { name: "FTDI USB 시리얼 어댑터 (0403:6001) 지우기" }).waitFor();
+      // The port granted on an earlier visit, named in Korean, with its buttons.
+      await card.getByRole("heading", { name: "전에 쓴 포트" }).waitFor();
+      await expect
+        .poll(() => card.locator(".port-label").allTextContents())
+        .toEqual(["FTDI USB 시리얼 어댑터 (0403:6001)"]);
+      await card.getByRole("button", { name: "FTDI USB 시리얼 어댑터 (0403:6001)에 연결" }).waitFor();
+      await card.getByRole("button", { name: "FTDI USB 시리얼 어댑터 (0403:6001) 지우기" }).waitFor();
 
-        // The help, opened.
-        await card.getByText("로봇을 찾을 수 없나요?").click();
-        await expectText(
-          page.getByTestId("bluetooth-help"),
-          /^블루투스 모듈: 먼저 로봇을 켜고 컴퓨터의 블루투스 설정에서 모듈을 페어링해 주세요\./,
-        );
-        await expectText(page.getByTestId("bluetooth-help"), "PIN을 물으면 1234 또는 0000인 경우가 많아요.", {
-          contains: true,
-        });
-        await expectText(page.getByTestId("bluetooth-help"), '"블루투스 시리얼 포트"로 나와요', {
-          contains: true,
-        });
-        await expect
-          .poll(() => page.getByTestId("connect-help").locator("code").allTextContents())
-          .toEqual([
-            "dialout",
-            "sudo usermod -aG dialout $USER",
-            "sudo apt remove brltty",
-            "sudo snap connect chromium:raw-usb",
-            "1234",
-            "0000",
-          ]);
-        await checkKorean(page, size, "start-card");
-        await context.close();
+      // The help, opened.
+      await card.getByText("로봇을 찾을 수 없나요?").click();
+      await expectText(
+        page.getByTestId("bluetooth-help"),
+        /^블루투스 모듈: 먼저 로봇을 켜고 컴퓨터의 블루투스 설정에서 모듈을 페어링해 주세요\./,
+      );
+      await expectText(page.getByTestId("bluetooth-help"), "PIN을 물으면 1234 또는 0000인 경우가 많아요.", {
+        contains: true,
       });
-
-      it(`the top bar with the demo robot over Bluetooth, the Limp question and Stop's outcome, at ${at}`, async () => {
-        const { page, context } = await koreanPage(size, { options: FAST });
-        await page.getByTestId("demo-bluetooth").click();
-        const card = page.getByTestId("device-card");
-        await card.waitFor({ timeout: 15_000 });
-        await expect
-          .poll(() => status(page), { timeout: 15_000 })
-          .toEqual(["데모 로봇 (블루투스)", "연결됨", "HUNO", "펌웨어 2.23", "시리얼 번호 8958899989309"]);
-        await expectText(card.getByRole("heading", { level: 1 }), "데모 로봇 (블루투스)");
-        await expectText(
-          card.locator("dd").first(),
-          "가상 블루투스로 연결한 데모 로봇 (이 페이지 안의 가상 RBC이며, 실제 하드웨어가 아니에요)",
-        );
-        await expect.poll(() => page.title()).toBe("로봇 · 데모 로봇 (블루투스) · RBC 패널");
-        await expectText(page.locator(".brand"), "RBC 패널");
-
-        // Stop with nothing running: the robot keeps its pose.
-        const stop = page.getByRole("button", { name: "정지", exact: true });
-        await expect
-          .poll(() => stop.getAttribute("title"))
-          .toBe("로봇이 하던 일을 끝내요. 로봇은 선 채로 있어요 (Esc)");
-        await stop.click();
-        await banner(page).filter({ hasText: "쉬고 있어서 멈출 것이 없어요." }).waitFor({ timeout: 15_000 });
-        await expectText(
-          banner(page),
-          "로봇이 바로 응답했어요. 쉬고 있어서 멈출 것이 없어요. 아무것도 보내지 않았어요. 닫기",
-        );
-
-        // The Limp question, with the safe choice focused.
-        await page.getByRole("button", { name: "힘 빼기…" }).click();
-        const question = page.getByRole("alertdialog", {
-          name: "로봇을 잡아 주세요. 모든 서보의 힘이 빠져서, 아무도 잡고 있지 않으면 로봇이 넘어져요.",
-        });
-        await question.waitFor();
-        await expect
-          .poll(() => page.evaluate(() => document.activeElement?.textContent?.trim()))
-          .toBe("취소");
-        await question.getByRole("button", { name: "힘 빼기", exact: true }).waitFor();
-        await checkKorean(page, size, "bluetooth-demo-limp-question");
-        await context.close();
+      await expectText(page.getByTestId("bluetooth-help"), '"블루투스 시리얼 포트"로 나와요', {
+        contains: true,
       });
+      await expect
+        .poll(() => page.getByTestId("connect-help").locator("code").allTextContents())
+        .toEqual([
+          "dialout",
+          "sudo usermod -aG dialout $USER",
+          "sudo apt remove brltty",
+          "sudo snap connect chromium:raw-usb",
+          "1234",
+          "0000",
+        ]);
+      await checkKorean(page, "start-card");
+      await context.close();
+    });
 
-      it(`the demo robot: Limp's outcome, servos limp in the top bar, then Stop, at ${at}`, async () => {
-        const { page, context } = await koreanPage(size, { options: FAST });
-        await page.getByRole("button", { name: "데모 로봇 써 보기", exact: true }).click();
-        await page.getByTestId("device-card").waitFor();
-        await expect
-          .poll(() => status(page))
-          .toEqual(["데모 로봇", "연결됨", "HUNO", "펌웨어 2.23", "시리얼 번호 8958899989309"]);
-        await expect.poll(() => page.title()).toBe("로봇 · 데모 로봇 · RBC 패널");
+    it(`the top bar with the demo robot over Bluetooth, the Limp question and Stop's outcome, at ${at}`, async () => {
+      const { page, context } = await koreanPage({ options: FAST });
+      await page.getByTestId("demo-bluetooth").click();
+      const card = page.getByTestId("device-card");
+      await card.waitFor({ timeout: 15_000 });
+      await expect
+        .poll(() => status(page), { timeout: 15_000 })
+        .toEqual(["데모 로봇 (블루투스)", "연결됨", "HUNO", "펌웨어 2.23", "시리얼 번호 8958899989309"]);
+      await expectText(card.getByRole("heading", { level: 1 }), "데모 로봇 (블루투스)");
+      await expectText(
+        card.locator("dd").first(),
+        "가상 블루투스로 연결한 데모 로봇 (이 페이지 안의 가상 RBC이며, 실제 하드웨어가 아니에요)",
+      );
+      await expect.poll(() => page.title()).toBe("로봇 · 데모 로봇 (블루투스) · RBC 패널");
+      await expectText(page.locator(".brand"), "RBC 패널");
 
-        await page.getByRole("button", { name: "힘 빼기…" }).click();
-        await page.getByRole("alertdialog").getByRole("button", { name: "힘 빼기", exact: true }).click();
-        await banner(page).filter({ hasText: "서보 16개 모두" }).waitFor({ timeout: 15_000 });
-        await expectText(
-          banner(page).locator("p").first(),
-          "힘 빼기: 서보 16개 모두 힘이 빠졌다고 확인했어요. 로봇을 잡아 주세요. 이제 혼자 서 있을 수 없어요.",
-        );
-        await expect.poll(() => status(page).then((parts) => parts.at(-1))).toBe("서보 힘 빠짐");
+      // Stop with nothing running: the robot keeps its pose.
+      const stop = page.getByRole("button", { name: "정지", exact: true });
+      await expect
+        .poll(() => stop.getAttribute("title"))
+        .toBe("로봇이 하던 일을 끝내요. 로봇은 선 채로 있어요 (Esc)");
+      await stop.click();
+      await banner(page).filter({ hasText: "쉬고 있어서 멈출 것이 없어요." }).waitFor({ timeout: 15_000 });
+      await expectText(
+        banner(page),
+        "로봇이 바로 응답했어요. 쉬고 있어서 멈출 것이 없어요. 아무것도 보내지 않았어요. 닫기",
+      );
 
-        await page.getByRole("button", { name: "정지", exact: true }).click();
-        await banner(page).filter({ hasText: "서보는 힘이 빠진 채로 있어요" }).waitFor({ timeout: 15_000 });
-        await expectText(
-          banner(page).locator("p").first(),
-          "서보 제어를 끝냈어요 (로봇이 일반 모드로 돌아왔어요). 서보는 힘이 빠진 채로 있어요 (힘 빼기).",
-        );
-        await checkKorean(page, size, "demo-limp-stop");
-        await context.close();
+      // The Limp question, with the safe choice focused.
+      await page.getByRole("button", { name: "힘 빼기…" }).click();
+      const question = page.getByRole("alertdialog", {
+        name: "로봇을 잡아 주세요. 모든 서보의 힘이 빠져서, 아무도 잡고 있지 않으면 로봇이 넘어져요.",
       });
+      await question.waitFor();
+      await expect.poll(() => page.evaluate(() => document.activeElement?.textContent?.trim())).toBe("취소");
+      await question.getByRole("button", { name: "힘 빼기", exact: true }).waitFor();
+      await checkKorean(page, "bluetooth-demo-limp-question");
+      await context.close();
+    });
 
-      it(`a robot on a USB adapter, then its link lost, at ${at}`, async () => {
-        const { page, context } = await koreanPage(size);
-        await page.getByRole("button", { name: "로봇 연결", exact: true }).click();
-        const card = page.getByTestId("device-card");
-        await card.waitFor();
-        await expect
-          .poll(() => status(page))
-          .toEqual(["연결됨", "HUNO", "펌웨어 2.23", "시리얼 번호 8958899989309"]);
-        await expectText(card.getByRole("heading", { level: 1 }), "로봇");
-        await expectText(card.locator("dd").first(), "FTDI USB 시리얼 어댑터 (0403:6001)");
-        await expect.poll(() => page.title()).toBe("로봇 · RBC 패널");
-        await card.getByTestId("memory-action-note").filter({ hasText: "8,192" }).waitFor();
-        await checkKorean(page, size, "usb-robot");
+    it(`the demo robot: Limp's outcome, servos limp in the top bar, then Stop, at ${at}`, async () => {
+      const { page, context } = await koreanPage({ options: FAST });
+      await page.getByRole("button", { name: "데모 로봇 써 보기", exact: true }).click();
+      await page.getByTestId("device-card").waitFor();
+      await expect
+        .poll(() => status(page))
+        .toEqual(["데모 로봇", "연결됨", "HUNO", "펌웨어 2.23", "시리얼 번호 8958899989309"]);
+      await expect.poll(() => page.title()).toBe("로봇 · 데모 로봇 · RBC 패널");
 
-        // The cable is pulled: the link's reason in Korean (from its facts), its technical line the detail.
-        await page.evaluate(() => window.__rbcTest?.port.unplug());
-        const lost = page.getByTestId("lost-notice");
-        await lost.waitFor();
-        await expectText(
-          lost.locator("p").first(),
-          "로봇과의 연결이 끊겼어요. USB 케이블이 뽑혔거나 어댑터가 빠졌어요.",
-        );
-        await expectText(
-          lost.locator("p").last(),
-          "케이블과 로봇의 전원 스위치를 확인한 뒤 다시 연결해 주세요.",
-        );
-        await expectText(lost.locator("summary"), "기술 정보");
-        await expect.poll(() => lost.locator("pre").getAttribute("lang")).toBe("en");
-        await expectText(lost.locator("pre"), "unplugged", { contains: true });
-        await expect.poll(() => status(page)).toEqual(["연결 끊김 — 통신이 끊어짐"]);
-        await lost.locator("summary").click();
-        await checkKorean(page, size, "link-lost");
-        await context.close();
-      });
+      await page.getByRole("button", { name: "힘 빼기…" }).click();
+      await page.getByRole("alertdialog").getByRole("button", { name: "힘 빼기", exact: true }).click();
+      await banner(page).filter({ hasText: "서보 16개 모두" }).waitFor({ timeout: 15_000 });
+      await expectText(
+        banner(page).locator("p").first(),
+        "힘 빼기: 서보 16개 모두 힘이 빠졌다고 확인했어요. 로봇을 잡아 주세요. 이제 혼자 서 있을 수 없어요.",
+      );
+      await expect.poll(() => status(page).then((parts) => parts.at(-1))).toBe("서보 힘 빠짐");
 
-      it(`a browser without Web Serial, then the demo robot from it, at ${at}`, async () => {
-        const { page, context } = await koreanPage(size, { noSerial: true });
-        const card = page.getByTestId("unsupported-card");
-        await card.waitFor();
-        await expectText(card.getByRole("heading", { level: 1 }), "이 브라우저로는 로봇에 연결할 수 없어요");
-        await expectText(
-          card.locator("p").first(),
-          "패널은 Web Serial을 통해 로봇의 컨트롤러와 통신해요. 사용자가 고른 USB 시리얼 포트를 웹 페이지가 열 수 있게 해 주는 기능으로, 데스크톱용 Chrome, Edge, Opera (버전 89 이상)에서 쓸 수 있어요.",
-        );
-        await expect
-          .poll(() => card.locator("strong").allTextContents())
-          .toEqual(["Web Serial", "Chrome, Edge, Opera (버전 89 이상)"]);
-        await checkKorean(page, size, "no-web-serial");
+      await page.getByRole("button", { name: "정지", exact: true }).click();
+      await banner(page).filter({ hasText: "서보는 힘이 빠진 채로 있어요" }).waitFor({ timeout: 15_000 });
+      await expectText(
+        banner(page).locator("p").first(),
+        "서보 제어를 끝냈어요 (로봇이 일반 모드로 돌아왔어요). 서보는 힘이 빠진 채로 있어요 (힘 빼기).",
+      );
+      await checkKorean(page, "demo-limp-stop");
+      await context.close();
+    });
 
-        await card.getByRole("button", { name: "데모 로봇 써 보기", exact: true }).click();
-        await page.getByTestId("device-card").waitFor();
-        await expect
-          .poll(() => status(page).then((parts) => parts.slice(0, 2)))
-          .toEqual(["데모 로봇", "연결됨"]);
-        await context.close();
-      });
-    }
+    it(`a robot on a USB adapter, then its link lost, at ${at}`, async () => {
+      const { page, context } = await koreanPage();
+      await page.getByRole("button", { name: "로봇 연결", exact: true }).click();
+      const card = page.getByTestId("device-card");
+      await card.waitFor();
+      await expect
+        .poll(() => status(page))
+        .toEqual(["연결됨", "HUNO", "펌웨어 2.23", "시리얼 번호 8958899989309"]);
+      await expectText(card.getByRole("heading", { level: 1 }), "로봇");
+      await expectText(card.locator("dd").first(), "FTDI USB 시리얼 어댑터 (0403:6001)");
+      await expect.poll(() => page.title()).toBe("로봇 · RBC 패널");
+      await card.getByTestId("memory-action-note").filter({ hasText: "8,192" }).waitFor();
+      await checkKorean(page, "usb-robot");
+
+      // The cable is pulled: the link's reason in Korean (from its facts), its technical line the detail.
+      await page.evaluate(() => window.__rbcTest?.port.unplug());
+      const lost = page.getByTestId("lost-notice");
+      await lost.waitFor();
+      await expectText(
+        lost.locator("p").first(),
+        "로봇과의 연결이 끊겼어요. USB 케이블이 뽑혔거나 어댑터가 빠졌어요.",
+      );
+      await expectText(
+        lost.locator("p").last(),
+        "케이블과 로봇의 전원 스위치를 확인한 뒤 다시 연결해 주세요.",
+      );
+      await expectText(lost.locator("summary"), "기술 정보");
+      await expect.poll(() => lost.locator("pre").getAttribute("lang")).toBe("en");
+      await expectText(lost.locator("pre"), "unplugged", { contains: true });
+      await expect.poll(() => status(page)).toEqual(["연결 끊김 — 통신이 끊어짐"]);
+      await lost.locator("summary").click();
+      await checkKorean(page, "link-lost");
+      await context.close();
+    });
+
+    it(`a browser without Web Serial, then the demo robot from it, at ${at}`, async () => {
+      const { page, context } = await koreanPage({ noSerial: true });
+      const card = page.getByTestId("unsupported-card");
+      await card.waitFor();
+      await expectText(card.getByRole("heading", { level: 1 }), "이 브라우저로는 로봇에 연결할 수 없어요");
+      await expectText(
+        card.locator("p").first(),
+        "패널은 Web Serial을 통해 로봇의 컨트롤러와 통신해요. 사용자가 고른 USB 시리얼 포트를 웹 페이지가 열 수 있게 해 주는 기능으로, 데스크톱용 Chrome, Edge, Opera (버전 89 이상)에서 쓸 수 있어요.",
+      );
+      await expect
+        .poll(() => card.locator("strong").allTextContents())
+        .toEqual(["Web Serial", "Chrome, Edge, Opera (버전 89 이상)"]);
+      await checkKorean(page, "no-web-serial");
+
+      await card.getByRole("button", { name: "데모 로봇 써 보기", exact: true }).click();
+      await page.getByTestId("device-card").waitFor();
+      await expect
+        .poll(() => status(page).then((parts) => parts.slice(0, 2)))
+        .toEqual(["데모 로봇", "연결됨"]);
+      await context.close();
+    });
   });
 });

@@ -8,7 +8,7 @@ import { DEMO, loadConnected } from "./connected-page.ts";
 import { cspViolations, expectText, FAST, squash, useApp, watchPage } from "./harness.ts";
 import { rbmFile } from "./motion-fixtures.ts";
 import "./rbc-test-globals.ts";
-import { DESKTOP, expectPageOk, pageLang as lang, PHONE } from "./i18n-checks.ts";
+import { DESKTOP, expectPageOkAtSizes, pageLang as lang, PHONE, resizeTo } from "./i18n-checks.ts";
 
 /**
  * The motion editor in the browser, without a robot (editing needs none): a three-scene motion made from the
@@ -409,8 +409,6 @@ describe.each(VIEWPORTS)("motion editor at $name", ({ width, height }) => {
  * violation (tests/e2e/i18n-checks.ts). Screenshots of every tab at both sizes with RBC_SHOTS=<dir>.
  */
 describe("in Korean (ko-KR)", () => {
-  const VIEWPORTS = [DESKTOP, PHONE] as const;
-
   const size = (viewport: { width: number; height: number }) => `${viewport.width}x${viewport.height}`;
 
   type Tab = "pose" | "scene" | "tools" | "teach" | "play" | "check";
@@ -445,186 +443,189 @@ describe("in Korean (ko-KR)", () => {
     await page.locator('[data-testid="editor-robot3d"][data-state="ready"]').waitFor({ timeout: 20_000 });
   }
 
-  /** The layout checks of one state of the Editor (tests/e2e/i18n-checks.ts), its screenshot, and axe. */
-  async function expectTidy(
-    page: Page,
-    where: string,
-    viewport: { width: number; height: number },
-  ): Promise<void> {
-    await expectPageOk(page, where, { lang: "ko", shot: `editor-${where}-ko-${size(viewport)}` });
+  /**
+   * The layout checks of one state of the Editor (tests/e2e/i18n-checks.ts), its screenshot, and axe, at both
+   * sizes on the same page (the window resized, then put back).
+   */
+  async function expectTidy(page: Page, where: string, ready?: () => Promise<void>): Promise<void> {
+    await expectPageOkAtSizes(page, where, {
+      lang: "ko",
+      shot: (viewport) => `editor-${where}-ko-${size(viewport)}`,
+      ...(ready ? { ready } : {}),
+    });
   }
 
+  // One page for both sizes: the flow once at 390×844 (the phone, where Korean labels are tightest), each
+  // state's checks at 1280×800 and at 390×844 (`expectTidy`).
   describe("the Editor in Korean", () => {
-    for (const viewport of VIEWPORTS) {
-      it(`is in Korean in every tab, fits and passes axe at ${viewport.width}×${viewport.height}`, async () => {
-        const { page, context } = await app.newPage({
-          locale: "ko-KR",
-          start: DEMO,
-          viewport,
-          options: FAST,
-        });
-        await openEditor(page);
-        await expect.poll(() => lang(page)).toBe("ko");
-        await expectText(page.getByRole("heading", { level: 1 }), "모션 편집기");
-        await expect
-          .poll(() =>
-            page
-              .getByRole("tab")
-              .allTextContents()
-              .then((t) => t.map(squash)),
-          )
-          .toEqual(["자세", "장면", "도구", "티칭", "재생", "검사"]);
-        await page.getByRole("tablist", { name: "선택한 장면 작업" }).waitFor();
-        await expect.poll(() => notice(page, "editor-toolbar")).toBe("완료: 장면 1 추가.");
-        await expectText(page.getByTestId("editor-undo"), "실행 취소: 장면 1 추가");
-        await expectText(page.getByTestId("scene-total"), "장면 2개 · 1.0초");
-        await page.getByRole("img", { name: /^장면 1의 끝 자세를 보여 주는 3D 화면/ }).waitFor();
-
-        // Pose: the table in Korean, and a value the motion file cannot hold, refused beside its field.
-        await expect
-          .poll(() => page.getByRole("heading", { level: 2, name: "장면 1: 장면_1" }).count())
-          .toBe(1);
-        await typeInto(page, "end-3", "300");
-        const problem = page.getByTestId("field-problem");
-        await problem.waitFor();
-        await expectText(
-          problem,
-          "왼쪽 발목 앞뒤(서보 3)의 끝 위치에는 0에서 254 사이의 정수만 쓸 수 있어요. 입력한 값: 300.",
-        );
-        await expect
-          .poll(() => page.getByLabel("왼쪽 발목 앞뒤 (서보 3), 끝 위치", { exact: true }).inputValue())
-          .toBe("300");
-        if (viewport === DESKTOP) {
-          await expect
-            .poll(() => page.locator('[data-testid="pose-table"] thead th').allTextContents())
-            .toEqual(["ID", "관절", "시작", "끝", "끝 위치 슬라이더", "토크", "출력"]);
-        }
-        await expectTidy(page, "pose", viewport);
-        await typeInto(page, "end-3", "");
-        await problem.filter({ hasText: "써 주세요" }).waitFor();
-        await expectText(problem, "왼쪽 발목 앞뒤(서보 3)의 끝 위치에는 0에서 254 사이의 정수를 써 주세요.");
-
-        // Scene: its fields, continuity, and frames closer than the RBC plays them.
-        await showTab(page, "scene");
-        await page.getByRole("heading", { level: 3, name: "장면 사이 이어짐" }).waitFor();
-        await expectText(
-          page.getByTestId("boundary-start"),
-          "장면 0의 끝에서 시작해요. 서보 16개 모두 부드럽게 이어져요.",
-        );
-        const time = Number(await page.getByTestId("scene-time").inputValue());
-        await typeInto(page, "scene-frames", String(time));
-        await page.locator("#frames-problem").waitFor();
-        await expectText(
-          page.locator("#frames-problem"),
-          /^프레임 [\d,]+개를 [\d,]+ms에 재생하면 프레임 사이가 1\.0ms예요\. RBC는 20ms 이상이 필요해요\. 프레임을 \d+개 이하로 하거나 시간을 [\d,]+ms 이상으로 해 주세요\.$/,
-        );
-        await expectTidy(page, "scene", viewport);
-
-        // Tools: mirror, copy and retime, and a factor that is not a number.
-        await showTab(page, "tools");
-        await page.getByRole("button", { name: "좌우 바꾸기" }).waitFor();
-        await page.getByRole("button", { name: "장면 1에 복사" }).waitFor();
-        await page.getByTestId("retime-value").fill("빠르게");
-        await page.getByTestId("retime-apply").click();
-        await page.locator("#retime-problem").waitFor();
-        await expectText(
-          page.locator("#retime-problem"),
-          '시간 배수는 0보다 큰 수여야 해요 (2 = 절반 속도, 0.5 = 두 배 속도). 입력한 값: "빠르게".',
-        );
-        await expectTidy(page, "tools", viewport);
-
-        // Teach-in: the question, a limb made limp, its slider, the pose read into the scene, the end.
-        await showTab(page, "teach");
-        await page.getByRole("button", { name: "티칭 시작…" }).click();
-        const question = page.getByTestId("teach-in-confirm");
-        await expectText(
-          question.locator("#teach-in-question"),
-          "로봇을 잡아 주세요. 고른 서보의 힘이 빠져요.",
-        );
-        await question.getByRole("button", { name: "티칭 시작", exact: true }).click();
-        await page.getByTestId("teach-in-status").waitFor();
-        await expectText(
-          page.getByTestId("teach-in-status"),
-          "모든 서보가 제자리를 유지해요. 팔다리를 고르고 힘 빼기를 눌러 주세요.",
-        );
-        await page.getByRole("checkbox", { name: "왼쪽 팔 (서보 10–12)" }).check();
-        await page.getByRole("button", { name: "왼쪽 팔 힘 빼기" }).click();
-        await page.getByTestId("teach-in").getByText("서보 10–12의 힘이 빠졌어요 (확인함).").waitFor();
-        await expectText(
-          page.getByTestId("teach-in-status"),
-          "힘 빠짐: 서보 10–12. 나머지 서보는 제자리를 유지해요.",
-        );
-        await page.getByRole("tab", { name: "티칭 (켜짐)", exact: true }).waitFor();
-        await page.getByRole("heading", { level: 3, name: "손으로 자세 잡기 (데모 로봇)" }).waitFor();
-        await page.getByLabel("왼쪽 팔꿈치 (서보 12)").fill("120");
-        await page.getByTestId("teach-pos-12").filter({ hasText: "120" }).waitFor();
-        await expectTidy(page, "teach", viewport);
-        await page.getByRole("button", { name: "장면 1에 자세 읽기" }).click();
-        await page
-          .getByTestId("teach-in")
-          .getByText("서보 0–15의 위치를 장면 1의 끝 자세로 읽어 넣었어요")
-          .waitFor();
-        await page.getByRole("button", { name: "티칭 끝내기" }).click();
-        await page.getByTestId("teach-in").getByText("티칭을 끝냈어요.").waitFor();
-        await expect
-          .poll(() => notice(page, "teach-in"))
-          .toBe(
-            "서보 10–12을(를) 자세를 잡은 자리에 고정했어요 (토크 켜짐, 확인함). 티칭을 끝냈어요. 로봇이 일반 모드로 돌아왔고, 모든 서보가 제자리를 유지해요.",
-          );
-
-        // Play: the choice, the question before the robot moves, and what the robot confirmed.
-        await showTab(page, "play");
-        await page.getByRole("radio", { name: "선택한 장면 (1)" }).waitFor();
-        await page.getByRole("radio", { name: "모션 전체 (장면 2개)" }).waitFor();
-        await expectText(page.getByTestId("play-summary"), /^장면 1: 프레임 \d+개, [\d.]+초\.$/);
-        await page.getByRole("button", { name: "로봇에서 재생…" }).click();
-        const ask = page.getByTestId("play-confirm");
-        await ask.waitFor();
-        await expectText(
-          ask.locator("#play-question"),
-          /^로봇이 장면 1을\(를\) 따라 움직여요 \([\d.]+초\)\. 로봇을 잡거나 혼자 설 수 있는지 확인해 주세요\.$/,
-        );
-        await ask.getByRole("button", { name: "취소" }).waitFor();
-        await expectTidy(page, "play", viewport);
-        await ask.getByRole("button", { name: "장면 1 재생" }).click();
-        await page.getByTestId("play-panel").getByText("재생했어요").waitFor({ timeout: 20_000 });
-        await expect
-          .poll(() => notice(page, "play-panel"))
-          .toMatch(
-            /^장면 1을\(를\) 재생했어요 \(프레임 \d+개, [\d.]+초\)\. 서보는 마지막 프레임 자세를 유지해요\.$/,
-          );
-
-        // Check: a position outside the joint's safe range is a warning, counted on the tab, worded in Korean.
-        await showTab(page, "pose");
-        await typeInto(page, "end-3", "254");
-        const check = page.getByRole("tab", { name: /^검사 \(경고 \d+개\)$/ });
-        await check.waitFor();
-        await check.click();
-        await expectText(page.getByTestId("editor-check"), /^오류 0개, 경고 \d+개\.$/);
-        const warning = page.locator('[data-testid="editor-warning"][data-code="rbm-unsafe-position"]');
-        await expectText(warning.locator(".warning-head"), /^심각 관절의 안전 범위를 벗어난 위치 \(\d+\)$/);
-        await warning.locator("summary").click();
-        await warning.getByRole("button", { name: "장면 1, 서보 3" }).waitFor();
-        // The checker's own sentence is Korean too (motions/issue-text.ts), with the value typed.
-        expect(await warning.locator('.issue span[lang="en"]').count()).toBe(0);
-        await expectText(warning.locator(".issue").first(), /[가-힣].*254/);
-        await expectTidy(page, "check", viewport);
-
-        // Drafts: the list and the question before a draft is deleted.
-        const drafts = page.getByTestId("drafts-card");
-        await drafts.getByRole("heading", { level: 2, name: "임시 저장본" }).waitFor();
-        const draft = drafts.getByTestId("draft");
-        await expectText(draft.locator(".draft-open"), "편집기에서 열려 있음");
-        await expectText(draft.locator("p.num"), /^장면 2개 · \d\d:\d\d 저장$/);
-        await draft.getByRole("button", { name: "NewMotion 지우기" }).click();
-        const confirm = drafts.getByRole("alertdialog");
-        await expectText(confirm, "임시 저장본 NewMotion을(를) 지울까요?", { contains: true });
-        await confirm.getByRole("button", { name: "임시 저장본 지우기" }).waitFor();
-        await drafts.scrollIntoViewIfNeeded();
-        await expectTidy(page, "drafts", viewport);
-        await confirm.getByRole("button", { name: "취소" }).click();
-        await context.close();
+    it("is in Korean in every tab, fits and passes axe at 1280×800 and at 390×844", async () => {
+      const { page, context } = await app.newPage({
+        locale: "ko-KR",
+        start: DEMO,
+        viewport: PHONE,
+        options: FAST,
       });
-    }
+      await openEditor(page);
+      await expect.poll(() => lang(page)).toBe("ko");
+      await expectText(page.getByRole("heading", { level: 1 }), "모션 편집기");
+      await expect
+        .poll(() =>
+          page
+            .getByRole("tab")
+            .allTextContents()
+            .then((t) => t.map(squash)),
+        )
+        .toEqual(["자세", "장면", "도구", "티칭", "재생", "검사"]);
+      await page.getByRole("tablist", { name: "선택한 장면 작업" }).waitFor();
+      await expect.poll(() => notice(page, "editor-toolbar")).toBe("완료: 장면 1 추가.");
+      await expectText(page.getByTestId("editor-undo"), "실행 취소: 장면 1 추가");
+      await expectText(page.getByTestId("scene-total"), "장면 2개 · 1.0초");
+      await page.getByRole("img", { name: /^장면 1의 끝 자세를 보여 주는 3D 화면/ }).waitFor();
+
+      // Pose: the table in Korean, and a value the motion file cannot hold, refused beside its field.
+      await expect
+        .poll(() => page.getByRole("heading", { level: 2, name: "장면 1: 장면_1" }).count())
+        .toBe(1);
+      await typeInto(page, "end-3", "300");
+      const problem = page.getByTestId("field-problem");
+      await problem.waitFor();
+      await expectText(
+        problem,
+        "왼쪽 발목 앞뒤(서보 3)의 끝 위치에는 0에서 254 사이의 정수만 쓸 수 있어요. 입력한 값: 300.",
+      );
+      await expect
+        .poll(() => page.getByLabel("왼쪽 발목 앞뒤 (서보 3), 끝 위치", { exact: true }).inputValue())
+        .toBe("300");
+      // The table's head is shown on a wide window.
+      await resizeTo(page, DESKTOP);
+      await expect
+        .poll(() => page.locator('[data-testid="pose-table"] thead th').allTextContents())
+        .toEqual(["ID", "관절", "시작", "끝", "끝 위치 슬라이더", "토크", "출력"]);
+      await resizeTo(page, PHONE);
+      await expectTidy(page, "pose");
+      await typeInto(page, "end-3", "");
+      await problem.filter({ hasText: "써 주세요" }).waitFor();
+      await expectText(problem, "왼쪽 발목 앞뒤(서보 3)의 끝 위치에는 0에서 254 사이의 정수를 써 주세요.");
+
+      // Scene: its fields, continuity, and frames closer than the RBC plays them.
+      await showTab(page, "scene");
+      await page.getByRole("heading", { level: 3, name: "장면 사이 이어짐" }).waitFor();
+      await expectText(
+        page.getByTestId("boundary-start"),
+        "장면 0의 끝에서 시작해요. 서보 16개 모두 부드럽게 이어져요.",
+      );
+      const time = Number(await page.getByTestId("scene-time").inputValue());
+      await typeInto(page, "scene-frames", String(time));
+      await page.locator("#frames-problem").waitFor();
+      await expectText(
+        page.locator("#frames-problem"),
+        /^프레임 [\d,]+개를 [\d,]+ms에 재생하면 프레임 사이가 1\.0ms예요\. RBC는 20ms 이상이 필요해요\. 프레임을 \d+개 이하로 하거나 시간을 [\d,]+ms 이상으로 해 주세요\.$/,
+      );
+      await expectTidy(page, "scene");
+
+      // Tools: mirror, copy and retime, and a factor that is not a number.
+      await showTab(page, "tools");
+      await page.getByRole("button", { name: "좌우 바꾸기" }).waitFor();
+      await page.getByRole("button", { name: "장면 1에 복사" }).waitFor();
+      await page.getByTestId("retime-value").fill("빠르게");
+      await page.getByTestId("retime-apply").click();
+      await page.locator("#retime-problem").waitFor();
+      await expectText(
+        page.locator("#retime-problem"),
+        '시간 배수는 0보다 큰 수여야 해요 (2 = 절반 속도, 0.5 = 두 배 속도). 입력한 값: "빠르게".',
+      );
+      await expectTidy(page, "tools");
+
+      // Teach-in: the question, a limb made limp, its slider, the pose read into the scene, the end.
+      await showTab(page, "teach");
+      await page.getByRole("button", { name: "티칭 시작…" }).click();
+      const question = page.getByTestId("teach-in-confirm");
+      await expectText(
+        question.locator("#teach-in-question"),
+        "로봇을 잡아 주세요. 고른 서보의 힘이 빠져요.",
+      );
+      await question.getByRole("button", { name: "티칭 시작", exact: true }).click();
+      await page.getByTestId("teach-in-status").waitFor();
+      await expectText(
+        page.getByTestId("teach-in-status"),
+        "모든 서보가 제자리를 유지해요. 팔다리를 고르고 힘 빼기를 눌러 주세요.",
+      );
+      await page.getByRole("checkbox", { name: "왼쪽 팔 (서보 10–12)" }).check();
+      await page.getByRole("button", { name: "왼쪽 팔 힘 빼기" }).click();
+      await page.getByTestId("teach-in").getByText("서보 10–12의 힘이 빠졌어요 (확인함).").waitFor();
+      await expectText(
+        page.getByTestId("teach-in-status"),
+        "힘 빠짐: 서보 10–12. 나머지 서보는 제자리를 유지해요.",
+      );
+      await page.getByRole("tab", { name: "티칭 (켜짐)", exact: true }).waitFor();
+      await page.getByRole("heading", { level: 3, name: "손으로 자세 잡기 (데모 로봇)" }).waitFor();
+      await page.getByLabel("왼쪽 팔꿈치 (서보 12)").fill("120");
+      await page.getByTestId("teach-pos-12").filter({ hasText: "120" }).waitFor();
+      await expectTidy(page, "teach");
+      await page.getByRole("button", { name: "장면 1에 자세 읽기" }).click();
+      await page
+        .getByTestId("teach-in")
+        .getByText("서보 0–15의 위치를 장면 1의 끝 자세로 읽어 넣었어요")
+        .waitFor();
+      await page.getByRole("button", { name: "티칭 끝내기" }).click();
+      await page.getByTestId("teach-in").getByText("티칭을 끝냈어요.").waitFor();
+      await expect
+        .poll(() => notice(page, "teach-in"))
+        .toBe(
+          "서보 10–12을(를) 자세를 잡은 자리에 고정했어요 (토크 켜짐, 확인함). 티칭을 끝냈어요. 로봇이 일반 모드로 돌아왔고, 모든 서보가 제자리를 유지해요.",
+        );
+
+      // Play: the choice, the question before the robot moves, and what the robot confirmed.
+      await showTab(page, "play");
+      await page.getByRole("radio", { name: "선택한 장면 (1)" }).waitFor();
+      await page.getByRole("radio", { name: "모션 전체 (장면 2개)" }).waitFor();
+      await expectText(page.getByTestId("play-summary"), /^장면 1: 프레임 \d+개, [\d.]+초\.$/);
+      await page.getByRole("button", { name: "로봇에서 재생…" }).click();
+      const ask = page.getByTestId("play-confirm");
+      await ask.waitFor();
+      await expectText(
+        ask.locator("#play-question"),
+        /^로봇이 장면 1을\(를\) 따라 움직여요 \([\d.]+초\)\. 로봇을 잡거나 혼자 설 수 있는지 확인해 주세요\.$/,
+      );
+      await ask.getByRole("button", { name: "취소" }).waitFor();
+      await expectTidy(page, "play");
+      await ask.getByRole("button", { name: "장면 1 재생" }).click();
+      await page.getByTestId("play-panel").getByText("재생했어요").waitFor({ timeout: 20_000 });
+      await expect
+        .poll(() => notice(page, "play-panel"))
+        .toMatch(
+          /^장면 1을\(를\) 재생했어요 \(프레임 \d+개, [\d.]+초\)\. 서보는 마지막 프레임 자세를 유지해요\.$/,
+        );
+
+      // Check: a position outside the joint's safe range is a warning, counted on the tab, worded in Korean.
+      await showTab(page, "pose");
+      await typeInto(page, "end-3", "254");
+      const check = page.getByRole("tab", { name: /^검사 \(경고 \d+개\)$/ });
+      await check.waitFor();
+      await check.click();
+      await expectText(page.getByTestId("editor-check"), /^오류 0개, 경고 \d+개\.$/);
+      const warning = page.locator('[data-testid="editor-warning"][data-code="rbm-unsafe-position"]');
+      await expectText(warning.locator(".warning-head"), /^심각 관절의 안전 범위를 벗어난 위치 \(\d+\)$/);
+      await warning.locator("summary").click();
+      await warning.getByRole("button", { name: "장면 1, 서보 3" }).waitFor();
+      // The checker's own sentence is Korean too (motions/issue-text.ts), with the value typed.
+      expect(await warning.locator('.issue span[lang="en"]').count()).toBe(0);
+      await expectText(warning.locator(".issue").first(), /[가-힣].*254/);
+      await expectTidy(page, "check");
+
+      // Drafts: the list and the question before a draft is deleted.
+      const drafts = page.getByTestId("drafts-card");
+      await drafts.getByRole("heading", { level: 2, name: "임시 저장본" }).waitFor();
+      const draft = drafts.getByTestId("draft");
+      await expectText(draft.locator(".draft-open"), "편집기에서 열려 있음");
+      await expectText(draft.locator("p.num"), /^장면 2개 · \d\d:\d\d 저장$/);
+      await draft.getByRole("button", { name: "NewMotion 지우기" }).click();
+      const confirm = drafts.getByRole("alertdialog");
+      await expectText(confirm, "임시 저장본 NewMotion을(를) 지울까요?", { contains: true });
+      await confirm.getByRole("button", { name: "임시 저장본 지우기" }).waitFor();
+      await expectTidy(page, "drafts", () => drafts.scrollIntoViewIfNeeded());
+      await confirm.getByRole("button", { name: "취소" }).click();
+      await context.close();
+    });
   });
 });

@@ -260,3 +260,40 @@ export async function expectPageOk(page: Page, where: string, check: PageCheck &
   const found = await pageProblems(page, check);
   expect(found, `${found.length} problem(s) on ${where}:\n${found.join("\n")}\n`).toEqual([]);
 }
+
+/**
+ * The window at `size` on the page as it is (`setViewportSize`), once the panel has drawn at that size (two
+ * animation frames: resize listeners run before the first). The Korean/size tables switch sizes this way on one
+ * page instead of opening a page per size.
+ */
+export async function resizeTo(page: Page, size: Size): Promise<void> {
+  await page.setViewportSize({ ...size });
+  await page.evaluate(
+    () => new Promise<void>((r) => requestAnimationFrame(() => requestAnimationFrame(() => r()))),
+  );
+}
+
+/**
+ * `expectPageOk` at each of `sizes` (1280×800 and 390×844 by default) on the same page, the window resized for
+ * each (`resizeTo`) and put back to the size it had afterwards. `where` and the screenshot's name (`shot`, given
+ * the size) name the size; `ready` runs after each resize, before the checks (e.g. scrolls a card into view, takes
+ * close-ups).
+ */
+export async function expectPageOkAtSizes(
+  page: Page,
+  where: string,
+  check: PageCheck & { shot?: (size: Size) => string; ready?: (size: Size) => Promise<unknown> } = {},
+  sizes: readonly Size[] = SIZES,
+): Promise<void> {
+  const before = page.viewportSize();
+  const { shot: shotName, ready, ...rest } = check;
+  for (const size of sizes) {
+    await resizeTo(page, size);
+    await ready?.(size);
+    await expectPageOk(page, `${where} at ${size.width}×${size.height}`, {
+      ...rest,
+      ...(shotName ? { shot: shotName(size) } : {}),
+    });
+  }
+  if (before) await resizeTo(page, before);
+}

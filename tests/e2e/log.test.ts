@@ -7,11 +7,11 @@ import "./rbc-test-globals.ts";
 import type { Page } from "playwright-core";
 import {
   connectCable,
-  expectPageOk,
+  expectPageOkAtSizes,
   keysShown,
   pageLang as lang,
   newLocalePage,
-  SIZES,
+  PHONE,
   sizeName as size,
 } from "./i18n-checks.ts";
 
@@ -168,80 +168,72 @@ describe("in Korean (ko-KR)", () => {
       await context.close();
     });
 
-    for (const viewport of SIZES) {
-      it(`is in Korean, fits and passes axe at ${viewport.width}×${viewport.height}`, async () => {
-        const { page, context } = await newLocalePage(app, "ko-KR", { size: viewport, options: FAST });
-        await connectCable(page);
-        // Stray bytes and a frame too long for its type before the next reply: one row of discarded bytes.
-        await page.evaluate(() => {
-          const stray = Array.from({ length: 3000 }, (_, i) => (i * 13 + 1) & 0x7f);
-          const oversize = [
-            0xff, 0xff, 0xaa, 0x55, 0xaa, 0x55, 0x37, 0xba, 0x11, 0x01, 0x00, 0x00, 0x0f, 0x00,
-          ];
-          window.__rbcTest?.port.faults.garbageBeforeReply([...stray, ...oversize, 0, 0]);
-        });
-        await refreshTimes(page, 20);
-        await page.getByRole("link", { name: "로그", exact: true }).click();
-        const card = page.getByTestId("log-card");
-        await card.locator("tbody tr").first().waitFor();
-        await expect.poll(() => lang(page)).toBe("ko");
-
-        await expectText(card.getByRole("heading", { level: 1 }), "패킷 로그");
-        for (const name of ["일시 정지", "지우기", "복사", "다운로드 (.txt)"]) {
-          await card.getByRole("button", { name, exact: true }).waitFor();
-        }
-        await expect
-          .poll(() => card.locator("thead th").allTextContents())
-          .toEqual(["시간", "방향", "종류", "바이트 (16진수)"]);
-        await expect.poll(() => entries(page)).toBeGreaterThan(100);
-        const total = await entries(page);
-        await expectText(
-          page.getByTestId("log-count"),
-          `항목 ${total.toLocaleString("ko")}개 (최근 항목 5,000개까지, 바이트는 최대 1,024KB까지 보관해요). 연달아 버린 바이트는 한 항목으로 묶어요. 한 쪽에 100개씩 보여요. '복사'와 '다운로드'는 전체를 가져가요.`,
-        );
-        await expectText(
-          page.getByTestId("log-page"),
-          `${total.toLocaleString("ko")}개 중 1–100번째 (최신순)`,
-        );
-        const pages = page.getByRole("navigation", { name: "로그 쪽" });
-        await pages.getByRole("button", { name: "더 최근" }).waitFor();
-        await pages.getByRole("button", { name: "더 이전" }).waitFor();
-        await page.getByRole("region", { name: "패킷 (최신순)" }).waitFor();
-
-        // The view's words are Korean, the packets' names too (issue 33); the copied log stays English.
-        const directions = async () =>
-          new Set((await card.locator("tbody .log-dir").allTextContents()).map(squash));
-        await expect.poll(directions).toEqual(new Set(["→ 보냄", "← 받음"]));
-        const named = card.locator("tbody tr.log-packet .log-name").first();
-        await expectText(named, /^[가-힣 ]+$/);
-        expect(await card.locator("tbody tr.log-packet .log-name span[lang='en']").count()).toBe(0);
-        await expectPageOk(page, "the Log view", { shot: `log-ko-${size(viewport)}` });
-
-        // The run of discarded bytes is on an older page.
-        await pages.getByRole("button", { name: "더 이전" }).click();
-        const discard = card.locator("tr.log-discard");
-        await discard.first().waitFor();
-        await expectText(
-          discard.first(),
-          "버린 바이트 종류에 비해 너무 긴 프레임 1개, 프레임이 아닌 바이트",
-          { contains: true },
-        );
-        await expectText(discard.first(), "(3,016바이트)", { contains: true });
-        await expectText(discard.first(), "01 0E 1B 28", { contains: true });
-
-        // Paused: the button says what it will do, and the line says what happens meanwhile.
-        await card.getByRole("button", { name: "일시 정지", exact: true }).click();
-        const resume = card.getByRole("button", { name: "계속", exact: true });
-        await resume.waitFor();
-        await expect.poll(() => resume.getAttribute("aria-pressed")).toBe("true");
-        await expectText(
-          page.getByTestId("log-count"),
-          /일시 정지됨: 새 패킷은 계속 기록하지만 화면에는 보여 주지 않아요\.$/,
-        );
-        await expectPageOk(page, "the Log view, paused", { axe: false });
-        await context.close();
+    // One page for both sizes: the flow once at 390×844, each page check at 1280×800 and at 390×844 (`expectPageOkAtSizes`).
+    it("is in Korean, fits and passes axe at 1280×800 and at 390×844", async () => {
+      const { page, context } = await newLocalePage(app, "ko-KR", { size: PHONE, options: FAST });
+      await connectCable(page);
+      // Stray bytes and a frame too long for its type before the next reply: one row of discarded bytes.
+      await page.evaluate(() => {
+        const stray = Array.from({ length: 3000 }, (_, i) => (i * 13 + 1) & 0x7f);
+        const oversize = [0xff, 0xff, 0xaa, 0x55, 0xaa, 0x55, 0x37, 0xba, 0x11, 0x01, 0x00, 0x00, 0x0f, 0x00];
+        window.__rbcTest?.port.faults.garbageBeforeReply([...stray, ...oversize, 0, 0]);
       });
-    }
+      await refreshTimes(page, 20);
+      await page.getByRole("link", { name: "로그", exact: true }).click();
+      const card = page.getByTestId("log-card");
+      await card.locator("tbody tr").first().waitFor();
+      await expect.poll(() => lang(page)).toBe("ko");
+
+      await expectText(card.getByRole("heading", { level: 1 }), "패킷 로그");
+      for (const name of ["일시 정지", "지우기", "복사", "다운로드 (.txt)"]) {
+        await card.getByRole("button", { name, exact: true }).waitFor();
+      }
+      await expect
+        .poll(() => card.locator("thead th").allTextContents())
+        .toEqual(["시간", "방향", "종류", "바이트 (16진수)"]);
+      await expect.poll(() => entries(page)).toBeGreaterThan(100);
+      const total = await entries(page);
+      await expectText(
+        page.getByTestId("log-count"),
+        `항목 ${total.toLocaleString("ko")}개 (최근 항목 5,000개까지, 바이트는 최대 1,024KB까지 보관해요). 연달아 버린 바이트는 한 항목으로 묶어요. 한 쪽에 100개씩 보여요. '복사'와 '다운로드'는 전체를 가져가요.`,
+      );
+      await expectText(page.getByTestId("log-page"), `${total.toLocaleString("ko")}개 중 1–100번째 (최신순)`);
+      const pages = page.getByRole("navigation", { name: "로그 쪽" });
+      await pages.getByRole("button", { name: "더 최근" }).waitFor();
+      await pages.getByRole("button", { name: "더 이전" }).waitFor();
+      await page.getByRole("region", { name: "패킷 (최신순)" }).waitFor();
+
+      // The view's words are Korean, the packets' names too (issue 33); the copied log stays English.
+      const directions = async () =>
+        new Set((await card.locator("tbody .log-dir").allTextContents()).map(squash));
+      await expect.poll(directions).toEqual(new Set(["→ 보냄", "← 받음"]));
+      const named = card.locator("tbody tr.log-packet .log-name").first();
+      await expectText(named, /^[가-힣 ]+$/);
+      expect(await card.locator("tbody tr.log-packet .log-name span[lang='en']").count()).toBe(0);
+      await expectPageOkAtSizes(page, "the Log view", { shot: (viewport) => `log-ko-${size(viewport)}` });
+
+      // The run of discarded bytes is on an older page.
+      await pages.getByRole("button", { name: "더 이전" }).click();
+      const discard = card.locator("tr.log-discard");
+      await discard.first().waitFor();
+      await expectText(discard.first(), "버린 바이트 종류에 비해 너무 긴 프레임 1개, 프레임이 아닌 바이트", {
+        contains: true,
+      });
+      await expectText(discard.first(), "(3,016바이트)", { contains: true });
+      await expectText(discard.first(), "01 0E 1B 28", { contains: true });
+
+      // Paused: the button says what it will do, and the line says what happens meanwhile.
+      await card.getByRole("button", { name: "일시 정지", exact: true }).click();
+      const resume = card.getByRole("button", { name: "계속", exact: true });
+      await resume.waitFor();
+      await expect.poll(() => resume.getAttribute("aria-pressed")).toBe("true");
+      await expectText(
+        page.getByTestId("log-count"),
+        /일시 정지됨: 새 패킷은 계속 기록하지만 화면에는 보여 주지 않아요\.$/,
+      );
+      await expectPageOkAtSizes(page, "the Log view, paused", { axe: false });
+      await context.close();
+    });
 
     it("says in Korean what Copy did; the copied log stays a packet trace in English", async () => {
       const { page, context } = await newLocalePage(app, "ko-KR", { options: FAST });

@@ -28,7 +28,15 @@ import {
 } from "./motion-fixtures.ts";
 import type { RbcTestOptions } from "./rbc-test-globals.ts";
 import "./rbc-test-globals.ts";
-import { expectPageOk, SIZES, type Size, shot, sizeName as size, sizeName, texts } from "./i18n-checks.ts";
+import {
+  expectPageOkAtSizes,
+  PHONE,
+  type Size,
+  shot,
+  sizeName as size,
+  sizeName,
+  texts,
+} from "./i18n-checks.ts";
 
 const app = useApp();
 
@@ -380,191 +388,194 @@ describe("in Korean (ko-KR)", () => {
    * One state of the view: Korean, no overflowing label, no sideways scroll, no key shown, nothing for axe; and a
    * screenshot of the whole page (with RBC_SHOTS).
    */
-  const expectGood = (page: Page, where: string, size: Size) =>
-    expectPageOk(page, where, { lang: "ko", shot: `motions-${where}-ko-${sizeName(size)}` });
+  const expectGood = (page: Page, where: string, ready?: () => Promise<void>) =>
+    expectPageOkAtSizes(page, where, {
+      lang: "ko",
+      shot: (size) => `motions-${where}-ko-${sizeName(size)}`,
+      ...(ready ? { ready } : {}),
+    });
 
+  // One page per test for both sizes: the flow once at 390×844 (the phone, where Korean labels are tightest),
+  // each state's checks at 1280×800 and at 390×844 (`expectGood`).
   describe("the Motions view in Korean", () => {
-    for (const viewport of SIZES) {
-      it(`shows the Files tab in Korean with an example open, fitting at ${viewport.width}×${viewport.height}`, async () => {
-        const { page, context } = await openMotions(viewport);
-        await expectText(page.getByRole("heading", { level: 1 }), "모션");
-        await expect.poll(() => texts(page.getByRole("tab"))).toEqual(["파일", "메모리", "실행", "소리"]);
-        await expect.poll(() => page.getByRole("tablist").getAttribute("aria-label")).toBe("모션");
-        const files = page.getByTestId("motion-files");
-        await expectText(files.getByRole("heading", { level: 2 }), "모션 파일");
-        await expectText(files.locator(".drop-title"), "모션 파일 열기 (.rbm)");
-        await expectText(page.getByTestId("mem-motion-used"), "0바이트 사용");
-        await page.getByLabel("먼저 모션 메모리 초기화", { exact: false }).waitFor();
+    it("shows the Files tab in Korean with an example open, fitting at 1280×800 and at 390×844", async () => {
+      const { page, context } = await openMotions(PHONE);
+      await expectText(page.getByRole("heading", { level: 1 }), "모션");
+      await expect.poll(() => texts(page.getByRole("tab"))).toEqual(["파일", "메모리", "실행", "소리"]);
+      await expect.poll(() => page.getByRole("tablist").getAttribute("aria-label")).toBe("모션");
+      const files = page.getByTestId("motion-files");
+      await expectText(files.getByRole("heading", { level: 2 }), "모션 파일");
+      await expectText(files.locator(".drop-title"), "모션 파일 열기 (.rbm)");
+      await expectText(page.getByTestId("mem-motion-used"), "0바이트 사용");
+      await page.getByLabel("먼저 모션 메모리 초기화", { exact: false }).waitFor();
 
-        // An example, opened from the disclosure: its facts, its check, its scenes and chart.
-        await page.getByText("예제 모션 열기").click();
-        await page.getByRole("button", { name: "wave.rbm 열기" }).click();
-        await page.getByText("예제 wave.rbm을(를) 열었어요.").waitFor();
-        const card = page.getByTestId("motion-file").filter({ hasText: "wave.rbm" });
-        await expect
-          .poll(() => texts(card.locator(".file-facts dt")))
-          .toEqual(["장면", "서보", "재생 시간", "로봇에 보낼 크기", "차지할 메모리"]);
-        await expect
-          .poll(() => texts(card.locator(".file-facts dd")))
-          .toEqual(["6", "16", "3.2초", "624바이트", "640바이트"]);
-        await expectText(card.locator(".check-ok"), "확인함: 오류 없음, 경고 없음.");
-        await expectText(card.getByTestId("scenes-toggle"), "장면과 차트 숨기기");
-        await expectText(card.getByTestId("preview-toggle"), "3D 미리 보기");
-        await expectText(card.getByRole("button", { name: "wave.rbm 닫기" }), "닫기");
-        await expectText(
-          card.getByTestId("upload-why"),
-          "먼저 확인을 받아요. 실제 로봇에 업로드하는 기능은 실험 단계예요.",
-        );
-        const scenes = page.getByTestId("scene-section");
-        await expectText(scenes.getByRole("heading"), "RbcPanel_Wave의 장면");
-        await expect
-          .poll(() => texts(scenes.locator(".scene-table th")))
-          .toEqual(["#", "이름", "프레임", "시작", "길이", "프레임 간격"]);
-        await expect
-          .poll(() => texts(scenes.locator(".scene-table tbody tr").nth(1).locator("td")))
-          .toEqual(["1", expect.any(String), "10", "0.8초", "0.4초", "40ms"]);
-        await page.locator('[data-testid="motion-chart"][data-chart="drawn"]').waitFor();
-        await expectText(page.locator('[data-testid="motion-chart"] .u-legend'), "2 왼쪽 무릎", {
-          contains: true,
-        });
-        await expectGood(page, "files", viewport);
-
-        // A file with warnings and one with an error: the panel's words and the checker's sentences in Korean
-        // (the motion file checker's Korean block at the end of this file has more of them).
-        await page
-          .getByTestId("rbm-files")
-          .setInputFiles([
-            rbmFile("Jumpy.rbm", withJumps(exampleText("wave.rbm"), 2)),
-            rbmFile("Edited.rbm", withShortFrames(exampleText("wave.rbm"))),
-          ]);
-        await page.getByText("파일 2개를 열었어요.").waitFor();
-        const jumpy = page.getByTestId("motion-file").filter({ hasText: "Jumpy.rbm" });
-        await expectText(
-          jumpy.getByTestId("check-summary"),
-          "확인함: 오류 0개, 경고 16개 (1종류, 심각한 경고 없음).",
-        );
-        const group = jumpy.getByTestId("warning-group");
-        await expectText(group.locator(".weight"), "사소함");
-        await expectText(group.locator("strong"), "장면 사이에서 서보가 튐");
-        await expectText(
-          group.locator(".warning-meaning"),
-          "가장 크게 튀는 폭은 2단계로, 거의 보이지 않는 작은 떨림이에요.",
-          { contains: true },
-        );
-        await group.getByText("16개 모두 보기").click();
-        const first = group.locator(".issues li").first();
-        await expectText(
-          first,
-          "장면 0에서 서보 0번(왼쪽 엉덩이 좌우)의 끝 위치는 125인데, 장면 1에서는 127에서 시작해서 서보가 튀어요.",
-        );
-        expect(await first.locator('[lang="en"]').count()).toBe(0);
-        const edited = page.getByTestId("motion-file").filter({ hasText: "Edited.rbm" });
-        await expectText(edited.getByTestId("check-summary"), /^확인함: 오류 1개, 경고 0개\.$/);
-        await expectText(edited.locator(".issue--error .issue-kind"), "오류");
-        await expectText(edited.locator(".issue--error"), /^오류 장면 0의 프레임 간격이 10ms예요 /);
-        await expectText(
-          edited.getByTestId("upload-why"),
-          "업로드할 수 없어요. 파일에 오류가 1개 있어요 (아래 목록). 아무것도 보내지 않아요.",
-        );
-        await expectGood(page, "files-checked", viewport);
-
-        // The upload: its question and its result, in Korean.
-        await card.getByTestId("upload-motion").click();
-        const confirm = card.getByTestId("upload-confirm");
-        await expectText(confirm.locator("#upload-confirm-title"), "wave.rbm을(를) 로봇에 업로드할까요?");
-        await confirm.getByRole("button", { name: "취소" }).waitFor();
-        await confirm.scrollIntoViewIfNeeded();
-        await expectGood(page, "upload-confirm", viewport);
-        await confirm.getByRole("button", { name: "업로드 (실험 기능)" }).click();
-        const result = card.getByText(/^wave\.rbm을\(를\) 업로드했어요\./);
-        await result.waitFor({ timeout: 15_000 });
-        await expectText(
-          result,
-          /^wave\.rbm을\(를\) 업로드했어요\. 624바이트를 조각 \d+개로 [\d.]+초 동안 보냈고 \(초당 [\d,]+바이트\), 로봇이 모든 조각을 받았다고 확인했어요\./,
-        );
-        await expectText(result, "모션 12번(1번 키)으로 저장했어요. 실행할 때 이 번호를 써요.", {
-          contains: true,
-        });
-        await expectText(result, "남은 모션 메모리: 24,576바이트 중 23,936바이트 (전에는 24,576바이트", {
-          contains: true,
-        });
-        await expectText(result, "업로드 후 오류 코드: 오류 없음.", { contains: true });
-        await expectGood(page, "uploaded", viewport);
-        await context.close();
+      // An example, opened from the disclosure: its facts, its check, its scenes and chart.
+      await page.getByText("예제 모션 열기").click();
+      await page.getByRole("button", { name: "wave.rbm 열기" }).click();
+      await page.getByText("예제 wave.rbm을(를) 열었어요.").waitFor();
+      const card = page.getByTestId("motion-file").filter({ hasText: "wave.rbm" });
+      await expect
+        .poll(() => texts(card.locator(".file-facts dt")))
+        .toEqual(["장면", "서보", "재생 시간", "로봇에 보낼 크기", "차지할 메모리"]);
+      await expect
+        .poll(() => texts(card.locator(".file-facts dd")))
+        .toEqual(["6", "16", "3.2초", "624바이트", "640바이트"]);
+      await expectText(card.locator(".check-ok"), "확인함: 오류 없음, 경고 없음.");
+      await expectText(card.getByTestId("scenes-toggle"), "장면과 차트 숨기기");
+      await expectText(card.getByTestId("preview-toggle"), "3D 미리 보기");
+      await expectText(card.getByRole("button", { name: "wave.rbm 닫기" }), "닫기");
+      await expectText(
+        card.getByTestId("upload-why"),
+        "먼저 확인을 받아요. 실제 로봇에 업로드하는 기능은 실험 단계예요.",
+      );
+      const scenes = page.getByTestId("scene-section");
+      await expectText(scenes.getByRole("heading"), "RbcPanel_Wave의 장면");
+      await expect
+        .poll(() => texts(scenes.locator(".scene-table th")))
+        .toEqual(["#", "이름", "프레임", "시작", "길이", "프레임 간격"]);
+      await expect
+        .poll(() => texts(scenes.locator(".scene-table tbody tr").nth(1).locator("td")))
+        .toEqual(["1", expect.any(String), "10", "0.8초", "0.4초", "40ms"]);
+      await page.locator('[data-testid="motion-chart"][data-chart="drawn"]').waitFor();
+      await expectText(page.locator('[data-testid="motion-chart"] .u-legend'), "2 왼쪽 무릎", {
+        contains: true,
       });
+      await expectGood(page, "files");
 
-      it(`shows Memory, Run and Sounds in Korean, fitting at ${viewport.width}×${viewport.height}`, async () => {
-        const { page, context } = await openMotions(viewport);
-        await page.getByTestId("rbm-files").setInputFiles(rbmFile("wave.rbm", exampleText("wave.rbm")));
-        await page.getByTestId("upload-motion").click();
-        await page.getByRole("button", { name: "업로드 (실험 기능)" }).click();
-        await page.getByText(/^wave\.rbm을\(를\) 업로드했어요\./).waitFor({ timeout: 15_000 });
+      // A file with warnings and one with an error: the panel's words and the checker's sentences in Korean
+      // (the motion file checker's Korean block at the end of this file has more of them).
+      await page
+        .getByTestId("rbm-files")
+        .setInputFiles([
+          rbmFile("Jumpy.rbm", withJumps(exampleText("wave.rbm"), 2)),
+          rbmFile("Edited.rbm", withShortFrames(exampleText("wave.rbm"))),
+        ]);
+      await page.getByText("파일 2개를 열었어요.").waitFor();
+      const jumpy = page.getByTestId("motion-file").filter({ hasText: "Jumpy.rbm" });
+      await expectText(
+        jumpy.getByTestId("check-summary"),
+        "확인함: 오류 0개, 경고 16개 (1종류, 심각한 경고 없음).",
+      );
+      const group = jumpy.getByTestId("warning-group");
+      await expectText(group.locator(".weight"), "사소함");
+      await expectText(group.locator("strong"), "장면 사이에서 서보가 튐");
+      await expectText(
+        group.locator(".warning-meaning"),
+        "가장 크게 튀는 폭은 2단계로, 거의 보이지 않는 작은 떨림이에요.",
+        { contains: true },
+      );
+      await group.getByText("16개 모두 보기").click();
+      const first = group.locator(".issues li").first();
+      await expectText(
+        first,
+        "장면 0에서 서보 0번(왼쪽 엉덩이 좌우)의 끝 위치는 125인데, 장면 1에서는 127에서 시작해서 서보가 튀어요.",
+      );
+      expect(await first.locator('[lang="en"]').count()).toBe(0);
+      const edited = page.getByTestId("motion-file").filter({ hasText: "Edited.rbm" });
+      await expectText(edited.getByTestId("check-summary"), /^확인함: 오류 1개, 경고 0개\.$/);
+      await expectText(edited.locator(".issue--error .issue-kind"), "오류");
+      await expectText(edited.locator(".issue--error"), /^오류 장면 0의 프레임 간격이 10ms예요 /);
+      await expectText(
+        edited.getByTestId("upload-why"),
+        "업로드할 수 없어요. 파일에 오류가 1개 있어요 (아래 목록). 아무것도 보내지 않아요.",
+      );
+      await expectGood(page, "files-checked");
 
-        // Memory: the areas as used, the uploads of this connection, an action file.
-        await showTab(page, "uploads");
-        const memory = page.getByTestId("memory-card");
-        await expectText(memory.getByRole("heading"), "로봇 메모리");
-        await expectText(page.getByTestId("mem-motion-used"), "24,576바이트 중 640바이트 사용");
-        await expectText(page.getByTestId("mem-motion-text"), "24,576바이트 중 23,936바이트 남음");
-        await expectText(
-          page.getByTestId("mem-motion-count"),
-          "마지막 초기화나 전원을 켠 뒤로 모션 20개 중 1개 저장됨",
-        );
-        await expectText(
-          page.locator('[data-testid="shelf-entry"][data-motion="12"]'),
-          "12 RbcPanel_Wave 리모컨: 1번 키 · 재생 시간 3.2초 방금 업로드했고, 로봇의 메모리 계산에서 저장된 게 확인됐어요 지금 실행",
-        );
-        await expectText(page.getByTestId("uploads-card").locator("summary"), "메모리를 세는 방법");
-        await page.getByTestId("action-file").setInputFiles({
-          name: "wave.act",
-          mimeType: "application/octet-stream",
-          buffer: Buffer.alloc(100, 1),
-        });
-        const action = page.getByTestId("action-card");
-        await action.getByText("wave.act, 100바이트").waitFor();
-        await action.getByRole("button", { name: "액션 파일 업로드" }).waitFor();
-        await action.getByLabel("먼저 액션 메모리 초기화 (업로드한 액션을 모두 지워요)").waitFor();
-        await expectText(action.locator("label.file-button"), "액션 파일 고르기…");
-        await expectGood(page, "memory", viewport);
-
-        // Run: the basic-posture guidance, the built-in and downloaded motions, the other slots, the question
-        // before the robot moves, and the result.
-        await showTab(page, "run");
-        const run = page.getByTestId("run-card");
-        await expectText(run.getByRole("heading", { level: 2 }), "모션 실행");
-        await expect
-          .poll(() => texts(run.getByRole("heading", { level: 3 })))
-          .toEqual(["내장 모션", "업로드한 모션"]);
-        await expectText(
-          page.getByTestId("posture-guidance"),
-          "로봇을 켠 뒤에는 기본 자세(7)만 받아들여요. 먼저 기본 자세를 실행해 주세요. 그 전까지는 다른 모션을 모두 아무 말 없이 무시해요.",
-        );
-        await expectText(run.locator('[data-motion="7"]'), "7 기본 자세 1.8초 먼저 실행");
-        await expectText(run.locator('[data-motion="12"]'), "12 RbcPanel_Wave 1번 키 3.2초");
-        await run.getByText("다른 업로드 슬롯 (19)").click();
-        // The slot button shows its number and key; a screen reader hears "모션 13번 실행" and the key.
-        await run.getByRole("button", { name: /^모션 13\s?번 실행 2번 키$/ }).waitFor();
-        await run.locator('[data-motion="7"]').click();
-        const ask = page.getByTestId("move-confirm");
-        await expectText(
-          ask,
-          "로봇이 움직여요. 로봇을 잡거나 주변에 공간을 비워 주세요. 패널은 연결할 때마다 한 번만 물어봐요. 정지(Esc)는 모션을 끝내고 로봇을 선 채로 유지해요. 모션 7번(기본 자세) 실행 취소",
-        );
-        await expectGood(page, "run-confirm", viewport);
-        await page.locator("#confirm-move").click();
-        await page.getByText("모션 7번(기본 자세)을 마쳤어요. 이제 로봇이 모든 모션을 받아들여요.").waitFor();
-        await expectGood(page, "run", viewport);
-
-        // Sounds: the buttons' names, and what a sound did.
-        await showTab(page, "sounds");
-        const sounds = page.getByTestId("sound-card");
-        await expectText(sounds.getByRole("heading"), "소리");
-        await sounds.getByRole("button", { name: "소리 4 아주 짧은 소리 0.4초" }).click();
-        await sounds.getByText("소리 4번을 재생했어요 (0.4초).").waitFor();
-        await expectGood(page, "sounds", viewport);
-        await context.close();
+      // The upload: its question and its result, in Korean.
+      await card.getByTestId("upload-motion").click();
+      const confirm = card.getByTestId("upload-confirm");
+      await expectText(confirm.locator("#upload-confirm-title"), "wave.rbm을(를) 로봇에 업로드할까요?");
+      await confirm.getByRole("button", { name: "취소" }).waitFor();
+      await expectGood(page, "upload-confirm", () => confirm.scrollIntoViewIfNeeded());
+      await confirm.getByRole("button", { name: "업로드 (실험 기능)" }).click();
+      const result = card.getByText(/^wave\.rbm을\(를\) 업로드했어요\./);
+      await result.waitFor({ timeout: 15_000 });
+      await expectText(
+        result,
+        /^wave\.rbm을\(를\) 업로드했어요\. 624바이트를 조각 \d+개로 [\d.]+초 동안 보냈고 \(초당 [\d,]+바이트\), 로봇이 모든 조각을 받았다고 확인했어요\./,
+      );
+      await expectText(result, "모션 12번(1번 키)으로 저장했어요. 실행할 때 이 번호를 써요.", {
+        contains: true,
       });
-    }
+      await expectText(result, "남은 모션 메모리: 24,576바이트 중 23,936바이트 (전에는 24,576바이트", {
+        contains: true,
+      });
+      await expectText(result, "업로드 후 오류 코드: 오류 없음.", { contains: true });
+      await expectGood(page, "uploaded");
+      await context.close();
+    });
+
+    it("shows Memory, Run and Sounds in Korean, fitting at 1280×800 and at 390×844", async () => {
+      const { page, context } = await openMotions(PHONE);
+      await page.getByTestId("rbm-files").setInputFiles(rbmFile("wave.rbm", exampleText("wave.rbm")));
+      await page.getByTestId("upload-motion").click();
+      await page.getByRole("button", { name: "업로드 (실험 기능)" }).click();
+      await page.getByText(/^wave\.rbm을\(를\) 업로드했어요\./).waitFor({ timeout: 15_000 });
+
+      // Memory: the areas as used, the uploads of this connection, an action file.
+      await showTab(page, "uploads");
+      const memory = page.getByTestId("memory-card");
+      await expectText(memory.getByRole("heading"), "로봇 메모리");
+      await expectText(page.getByTestId("mem-motion-used"), "24,576바이트 중 640바이트 사용");
+      await expectText(page.getByTestId("mem-motion-text"), "24,576바이트 중 23,936바이트 남음");
+      await expectText(
+        page.getByTestId("mem-motion-count"),
+        "마지막 초기화나 전원을 켠 뒤로 모션 20개 중 1개 저장됨",
+      );
+      await expectText(
+        page.locator('[data-testid="shelf-entry"][data-motion="12"]'),
+        "12 RbcPanel_Wave 리모컨: 1번 키 · 재생 시간 3.2초 방금 업로드했고, 로봇의 메모리 계산에서 저장된 게 확인됐어요 지금 실행",
+      );
+      await expectText(page.getByTestId("uploads-card").locator("summary"), "메모리를 세는 방법");
+      await page.getByTestId("action-file").setInputFiles({
+        name: "wave.act",
+        mimeType: "application/octet-stream",
+        buffer: Buffer.alloc(100, 1),
+      });
+      const action = page.getByTestId("action-card");
+      await action.getByText("wave.act, 100바이트").waitFor();
+      await action.getByRole("button", { name: "액션 파일 업로드" }).waitFor();
+      await action.getByLabel("먼저 액션 메모리 초기화 (업로드한 액션을 모두 지워요)").waitFor();
+      await expectText(action.locator("label.file-button"), "액션 파일 고르기…");
+      await expectGood(page, "memory");
+
+      // Run: the basic-posture guidance, the built-in and downloaded motions, the other slots, the question
+      // before the robot moves, and the result.
+      await showTab(page, "run");
+      const run = page.getByTestId("run-card");
+      await expectText(run.getByRole("heading", { level: 2 }), "모션 실행");
+      await expect
+        .poll(() => texts(run.getByRole("heading", { level: 3 })))
+        .toEqual(["내장 모션", "업로드한 모션"]);
+      await expectText(
+        page.getByTestId("posture-guidance"),
+        "로봇을 켠 뒤에는 기본 자세(7)만 받아들여요. 먼저 기본 자세를 실행해 주세요. 그 전까지는 다른 모션을 모두 아무 말 없이 무시해요.",
+      );
+      await expectText(run.locator('[data-motion="7"]'), "7 기본 자세 1.8초 먼저 실행");
+      await expectText(run.locator('[data-motion="12"]'), "12 RbcPanel_Wave 1번 키 3.2초");
+      await run.getByText("다른 업로드 슬롯 (19)").click();
+      // The slot button shows its number and key; a screen reader hears "모션 13번 실행" and the key.
+      await run.getByRole("button", { name: /^모션 13\s?번 실행 2번 키$/ }).waitFor();
+      await run.locator('[data-motion="7"]').click();
+      const ask = page.getByTestId("move-confirm");
+      await expectText(
+        ask,
+        "로봇이 움직여요. 로봇을 잡거나 주변에 공간을 비워 주세요. 패널은 연결할 때마다 한 번만 물어봐요. 정지(Esc)는 모션을 끝내고 로봇을 선 채로 유지해요. 모션 7번(기본 자세) 실행 취소",
+      );
+      await expectGood(page, "run-confirm");
+      await page.locator("#confirm-move").click();
+      await page.getByText("모션 7번(기본 자세)을 마쳤어요. 이제 로봇이 모든 모션을 받아들여요.").waitFor();
+      await expectGood(page, "run");
+
+      // Sounds: the buttons' names, and what a sound did.
+      await showTab(page, "sounds");
+      const sounds = page.getByTestId("sound-card");
+      await expectText(sounds.getByRole("heading"), "소리");
+      await sounds.getByRole("button", { name: "소리 4 아주 짧은 소리 0.4초" }).click();
+      await sounds.getByText("소리 4번을 재생했어요 (0.4초).").waitFor();
+      await expectGood(page, "sounds");
+      await context.close();
+    });
   });
 });
 
@@ -608,80 +619,81 @@ describe("in Korean (ko-KR): the motion file checker", () => {
     return opened;
   }
 
+  // One page for both sizes: the files opened once at 390×844, the page checked at 1280×800 and at 390×844.
   describe("the motion file checker's sentences in Korean", () => {
-    for (const viewport of SIZES) {
-      it(`says every problem of the opened files in Korean, fitting at ${viewport.width}×${viewport.height}`, async () => {
-        const { page, context } = await openMotions(viewport);
-        await page.getByTestId("rbm-files").setInputFiles(FILES);
-        await page
-          .getByText(/^파일 4개를 열었어요\./)
-          .first()
-          .waitFor();
-        const card = (name: string) => page.getByTestId("motion-file").filter({ hasText: name });
+    it("says every problem of the opened files in Korean, fitting at 1280×800 and at 390×844", async () => {
+      const { page, context } = await openMotions(PHONE);
+      await page.getByTestId("rbm-files").setInputFiles(FILES);
+      await page
+        .getByText(/^파일 4개를 열었어요\./)
+        .first()
+        .waitFor();
+      const card = (name: string) => page.getByTestId("motion-file").filter({ hasText: name });
 
-        // An error the RBC refuses: the sentence names the scene itself, so no place is said before it.
-        await expect
-          .poll(() => texts(card("Edited.rbm").locator(".issue--error")))
-          .toEqual([
-            "오류 장면 0의 프레임 간격이 10ms예요 (200ms / 프레임 20개). RBC에는 20ms 이상이 필요해요. 프레임 수를 줄여 주세요.",
-          ]);
+      // An error the RBC refuses: the sentence names the scene itself, so no place is said before it.
+      await expect
+        .poll(() => texts(card("Edited.rbm").locator(".issue--error")))
+        .toEqual([
+          "오류 장면 0의 프레임 간격이 10ms예요 (200ms / 프레임 20개). RBC에는 20ms 이상이 필요해요. 프레임 수를 줄여 주세요.",
+        ]);
 
-        // A file that cannot be read: the field, by its number and what it holds.
-        await expect
-          .poll(() => texts(card("Broken.rbm").locator(".issue--error")))
-          .toEqual(['오류 128번 필드(장면 0, 서보 레코드 2번의 시작 위치)는 정수여야 해요 (지금 값: "x1").']);
+      // A file that cannot be read: the field, by its number and what it holds.
+      await expect
+        .poll(() => texts(card("Broken.rbm").locator(".issue--error")))
+        .toEqual(['오류 128번 필드(장면 0, 서보 레코드 2번의 시작 위치)는 정수여야 해요 (지금 값: "x1").']);
 
-        // Warnings, grouped by kind; each single warning in Korean.
-        const jumps = card("Jumpy.rbm").getByTestId("warning-group");
-        await jumps.getByText("16개 모두 보기").click();
-        await expectText(
-          jumps.locator(".issues li").first(),
-          "장면 0에서 서보 0번(왼쪽 엉덩이 좌우)의 끝 위치는 125인데, 장면 1에서는 127에서 시작해서 서보가 튀어요.",
+      // Warnings, grouped by kind; each single warning in Korean.
+      const jumps = card("Jumpy.rbm").getByTestId("warning-group");
+      await jumps.getByText("16개 모두 보기").click();
+      await expectText(
+        jumps.locator(".issues li").first(),
+        "장면 0에서 서보 0번(왼쪽 엉덩이 좌우)의 끝 위치는 125인데, 장면 1에서는 127에서 시작해서 서보가 튀어요.",
+      );
+      const odd = card("Odd.rbm");
+      for (const summary of await odd.locator(".warning-details summary").all()) await summary.click();
+      const said = () => texts(odd.locator(".warning-details .issues li"));
+      await expect
+        .poll(said)
+        .toContainEqual(
+          expect.stringMatching(
+            /^장면 0에서 서보 0번\(왼쪽 엉덩이 좌우\)이 안전 범위\(\d+-174\) 밖인 254 위치로 가요\.$/,
+          ),
         );
-        const odd = card("Odd.rbm");
-        for (const summary of await odd.locator(".warning-details summary").all()) await summary.click();
-        const said = () => texts(odd.locator(".warning-details .issues li"));
-        await expect
-          .poll(said)
-          .toContainEqual(
-            expect.stringMatching(
-              /^장면 0에서 서보 0번\(왼쪽 엉덩이 좌우\)이 안전 범위\(\d+-174\) 밖인 254 위치로 가요\.$/,
-            ),
-          );
-        await expect
-          .poll(said)
-          .toContainEqual(
-            expect.stringMatching(
-              /^이 모션은 시리얼 번호 1234567890123 로봇용으로 만들었는데, 지금 연결된 로봇은 시리얼 번호 \d{13} 로봇이에요\. Motionbuilder는 이런 파일을 거부해요\. 이 로봇에 맞는 모션인지 확인해 주세요\.$/,
-            ),
-          );
-        await expect.poll(said).toContain("10번 필드 값이 5인데, Motionbuilder는 항상 2(으)로 써요.");
-        await expect
-          .poll(said)
-          .toContainEqual(
-            expect.stringMatching(/^장면 0에서 서보 0번\(왼쪽 엉덩이 좌우\)의 끝 위치는 254인데/),
-          );
+      await expect
+        .poll(said)
+        .toContainEqual(
+          expect.stringMatching(
+            /^이 모션은 시리얼 번호 1234567890123 로봇용으로 만들었는데, 지금 연결된 로봇은 시리얼 번호 \d{13} 로봇이에요\. Motionbuilder는 이런 파일을 거부해요\. 이 로봇에 맞는 모션인지 확인해 주세요\.$/,
+          ),
+        );
+      await expect.poll(said).toContain("10번 필드 값이 5인데, Motionbuilder는 항상 2(으)로 써요.");
+      await expect
+        .poll(said)
+        .toContainEqual(
+          expect.stringMatching(/^장면 0에서 서보 0번\(왼쪽 엉덩이 좌우\)의 끝 위치는 254인데/),
+        );
 
-        // Nothing is left in English: no sentence marked as English, no English sentence unmarked.
-        const lists = page.locator('[data-testid="rbm-issues"], [data-testid="rbm-warnings"]');
-        expect(await lists.locator('[lang="en"]').count()).toBe(0);
-        const all = await texts(page.locator(".issues li"));
-        expect(all.length).toBeGreaterThan(20);
-        expect(
-          all.filter((s) => !/\p{Script=Hangul}/u.test(s) || /\b(Scene|servo|must|the)\b/.test(s)),
-        ).toEqual([]);
+      // Nothing is left in English: no sentence marked as English, no English sentence unmarked.
+      const lists = page.locator('[data-testid="rbm-issues"], [data-testid="rbm-warnings"]');
+      expect(await lists.locator('[lang="en"]').count()).toBe(0);
+      const all = await texts(page.locator(".issues li"));
+      expect(all.length).toBeGreaterThan(20);
+      expect(
+        all.filter((s) => !/\p{Script=Hangul}/u.test(s) || /\b(Scene|servo|must|the)\b/.test(s)),
+      ).toEqual([]);
 
-        // Close-ups of each file's check, to be read (the whole page at 390 px is too tall to read).
-        for (const name of ["Jumpy", "Edited", "Broken", "Odd"]) {
-          await shot(card(`${name}.rbm`), `motion-issues-${name.toLowerCase()}-ko-${size(viewport)}`);
-        }
-        await card("Jumpy.rbm").scrollIntoViewIfNeeded();
-        await expectPageOk(page, "the files", {
-          lang: "ko",
-          shot: `motion-issues-files-ko-${size(viewport)}`,
-        });
-        await context.close();
+      await expectPageOkAtSizes(page, "the files", {
+        lang: "ko",
+        shot: (viewport) => `motion-issues-files-ko-${size(viewport)}`,
+        ready: async (viewport) => {
+          // Close-ups of each file's check, to be read (the whole page at 390 px is too tall to read).
+          for (const name of ["Jumpy", "Edited", "Broken", "Odd"]) {
+            await shot(card(`${name}.rbm`), `motion-issues-${name.toLowerCase()}-ko-${size(viewport)}`);
+          }
+          await card("Jumpy.rbm").scrollIntoViewIfNeeded();
+        },
       });
-    }
+      await context.close();
+    });
   });
 });

@@ -11,7 +11,7 @@ import type { Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
 import { CABLE, loadMotions } from "./connected-page.ts";
 import { connectRobot, expectText, FAST, useApp } from "./harness.ts";
-import { axeProblems, connectCable, expectPageOk, newLocalePage, SIZES } from "./i18n-checks.ts";
+import { axeProblems, connectCable, expectPageOkAtSizes, newLocalePage, PHONE } from "./i18n-checks.ts";
 import "./rbc-test-globals.ts";
 
 const app = useApp();
@@ -228,44 +228,43 @@ describe("Make this motion usable on this robot", () => {
 });
 
 describe("in Korean (ko-KR)", () => {
-  for (const size of SIZES) {
-    it(`the Remote card with a lit key, and the restamp offer, at ${size.width}×${size.height}`, async () => {
-      const { page, context } = await newLocalePage(app, "ko-KR", { size, options: FAST });
-      await withSavePicker(page);
-      await page.reload({ waitUntil: "domcontentloaded" });
-      await connectCable(page);
-      await openSensors(page, "센서");
-      const card = page.getByTestId("remote-card");
-      await expectText(card.locator("h2"), "리모컨");
-      await expectText(tile(page, 12), "1 1 키 · 코드 12 저장된 모션 없음");
-      await page.getByRole("radio", { name: "IR 리모컨" }).check();
-      await pressKey(page, 34);
-      await tile(page, 34).and(page.locator(".is-lit")).waitFor();
-      await expectText(card.getByTestId("remote-last"), /^마지막 키: \* \+ 2 \(코드 34\), /);
-      await card.scrollIntoViewIfNeeded();
-      await expectPageOk(page, `the Sensors view in Korean at ${size.width}`, {
-        lang: "ko",
-        shot: `remote-card-ko-${size.width}`,
-      });
-
-      await page.getByRole("link", { name: "모션", exact: true }).click();
-      await page.getByTestId("rbm-files").setInputFiles(rbm("dance.rbm", DANCE));
-      const file = page.getByTestId("motion-file");
-      await file.getByTestId("restamp-offer").waitFor();
-      await file.getByRole("button", { name: "이 로봇에서 쓸 수 있게 만들기" }).click();
-      await file
-        .locator(".notice--ok")
-        .filter({
-          hasText:
-            "dance-8958899989309.rbm(으)로 저장했어요. 시리얼 번호(2번 필드)만 1111122222333에서 8958899989309(으)로 바뀌었어요.",
-        })
-        .waitFor();
-      expect(await saved(page)).toEqual([[...DANCE_FOR_THIS_ROBOT]]);
-      await expectPageOk(page, `the Motions view's restamp offer in Korean at ${size.width}`, {
-        lang: "ko",
-        shot: `restamp-ko-${size.width}`,
-      });
-      await context.close();
+  // One page for both sizes: the flow once at 390×844, each page check at 1280×800 and at 390×844 (`expectPageOkAtSizes`).
+  it("the Remote card with a lit key, and the restamp offer, at 1280×800 and at 390×844", async () => {
+    const { page, context } = await newLocalePage(app, "ko-KR", { size: PHONE, options: FAST });
+    await withSavePicker(page);
+    await page.reload({ waitUntil: "domcontentloaded" });
+    await connectCable(page);
+    await openSensors(page, "센서");
+    const card = page.getByTestId("remote-card");
+    await expectText(card.locator("h2"), "리모컨");
+    await expectText(tile(page, 12), "1 1 키 · 코드 12 저장된 모션 없음");
+    await page.getByRole("radio", { name: "IR 리모컨" }).check();
+    await pressKey(page, 34);
+    await tile(page, 34).and(page.locator(".is-lit")).waitFor();
+    await expectText(card.getByTestId("remote-last"), /^마지막 키: \* \+ 2 \(코드 34\), /);
+    await expectPageOkAtSizes(page, "the Sensors view in Korean", {
+      lang: "ko",
+      shot: (size) => `remote-card-ko-${size.width}`,
+      ready: () => card.scrollIntoViewIfNeeded(),
     });
-  }
+
+    await page.getByRole("link", { name: "모션", exact: true }).click();
+    await page.getByTestId("rbm-files").setInputFiles(rbm("dance.rbm", DANCE));
+    const file = page.getByTestId("motion-file");
+    await file.getByTestId("restamp-offer").waitFor();
+    await file.getByRole("button", { name: "이 로봇에서 쓸 수 있게 만들기" }).click();
+    await file
+      .locator(".notice--ok")
+      .filter({
+        hasText:
+          "dance-8958899989309.rbm(으)로 저장했어요. 시리얼 번호(2번 필드)만 1111122222333에서 8958899989309(으)로 바뀌었어요.",
+      })
+      .waitFor();
+    expect(await saved(page)).toEqual([[...DANCE_FOR_THIS_ROBOT]]);
+    await expectPageOkAtSizes(page, "the Motions view's restamp offer in Korean", {
+      lang: "ko",
+      shot: (size) => `restamp-ko-${size.width}`,
+    });
+    await context.close();
+  });
 });

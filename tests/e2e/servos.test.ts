@@ -4,7 +4,7 @@ import { HUNO_BASIC_POSTURE } from "../../src/protocol/index.ts";
 import { connectRobot, cspViolations, expectText, useApp } from "./harness.ts";
 import "./rbc-test-globals.ts";
 import { CABLE, loadConnected, openConnected } from "./connected-page.ts";
-import { expectPageOk, SIZES, type Size, shot, text } from "./i18n-checks.ts";
+import { expectPageOkAtSizes, PHONE, type Size, shot, text } from "./i18n-checks.ts";
 import { exampleText, rbmFile } from "./motion-fixtures.ts";
 
 const app = useApp();
@@ -180,199 +180,196 @@ describe("in Korean (ko-KR)", () => {
   const openKorean = (size: Size, robot: "demo" | "cable", view: string) =>
     openConnected(app, { robot, view, locale: "ko-KR", size });
 
-  /** The checks every view gets (the page's lang, keys, labels, sideways scrolling, axe), and its screenshot. */
-  const checkLayout = (page: Page, name: string, size: Size) =>
-    expectPageOk(page, name, { lang: "ko", shot: `sensors-servos-${name}-${size.width}` });
+  /**
+   * The checks every view gets (the page's lang, keys, labels, sideways scrolling, axe), and its screenshot, at
+   * both sizes on the same page (the window resized, then put back).
+   */
+  const checkLayout = (page: Page, name: string) =>
+    expectPageOkAtSizes(page, name, { lang: "ko", shot: (size) => `sensors-servos-${name}-${size.width}` });
 
-  for (const viewport of SIZES) {
-    const size = `${viewport.width}×${viewport.height}`;
+  // One page per test for both sizes: the flow once at 390×844 (the phone, where Korean labels are tightest),
+  // each state's checks at 1280×800 and at 390×844 (`checkLayout`).
+  describe("in Korean at 1280×800 and at 390×844", () => {
+    it("the Sensors view: readings, events and the demo robot's world", async () => {
+      const { page, context } = await openKorean(PHONE, "demo", "sensors");
+      await page.getByRole("heading", { level: 1, name: "센서" }).waitFor();
+      const status = page.getByTestId("poll-status");
+      await status.filter({ hasText: "마지막으로" }).waitFor();
+      await expectText(status, /^1초에 5번 읽고 있어요\. 마지막으로 \d\d:\d\d:\d\d에 읽었어요\.$/);
+      await page.getByTestId("distance-value").filter({ hasText: "10cm" }).waitFor();
+      await expectText(page.getByTestId("distance-value"), "10cm");
+      await expect.poll(() => page.getByRole("heading", { level: 2, name: "거리와 가속도" }).count()).toBe(1);
+      await expect.poll(() => page.getByRole("button", { name: "일시 정지" }).count()).toBe(1);
+      await expect
+        .poll(() => page.getByTestId("poll-rate").locator("option").allTextContents())
+        .toEqual(["1초에 2번", "1초에 5번", "1초에 10번"]);
+      // The charts are named in Korean, their axes too.
+      const distanceChart = page.locator('[data-testid="distance-chart"][data-chart="drawn"]');
+      await distanceChart.waitFor();
+      await expect
+        .poll(() => distanceChart.locator('[role="img"]').getAttribute("aria-label"))
+        .toBe("최근 30초 동안의 거리 (cm)");
+      // The legend names the line (the axes' labels are drawn on the canvas).
+      await expectText(distanceChart.locator(".u-legend"), "거리 (cm)", { contains: true });
+      await page.locator('[data-testid="accel-chart"][data-chart="drawn"]').waitFor();
 
-    describe(`in Korean at ${size}`, () => {
-      it("the Sensors view: readings, events and the demo robot's world", async () => {
-        const { page, context } = await openKorean(viewport, "demo", "sensors");
-        await page.getByRole("heading", { level: 1, name: "센서" }).waitFor();
-        const status = page.getByTestId("poll-status");
-        await status.filter({ hasText: "마지막으로" }).waitFor();
-        await expectText(status, /^1초에 5번 읽고 있어요\. 마지막으로 \d\d:\d\d:\d\d에 읽었어요\.$/);
-        await page.getByTestId("distance-value").filter({ hasText: "10cm" }).waitFor();
-        await expectText(page.getByTestId("distance-value"), "10cm");
-        await expect
-          .poll(() => page.getByRole("heading", { level: 2, name: "거리와 가속도" }).count())
-          .toBe(1);
-        await expect.poll(() => page.getByRole("button", { name: "일시 정지" }).count()).toBe(1);
-        await expect
-          .poll(() => page.getByTestId("poll-rate").locator("option").allTextContents())
-          .toEqual(["1초에 2번", "1초에 5번", "1초에 10번"]);
-        // The charts are named in Korean, their axes too.
-        const distanceChart = page.locator('[data-testid="distance-chart"][data-chart="drawn"]');
-        await distanceChart.waitFor();
-        await expect
-          .poll(() => distanceChart.locator('[role="img"]').getAttribute("aria-label"))
-          .toBe("최근 30초 동안의 거리 (cm)");
-        // The legend names the line (the axes' labels are drawn on the canvas).
-        await expectText(distanceChart.locator(".u-legend"), "거리 (cm)", { contains: true });
-        await page.locator('[data-testid="accel-chart"][data-chart="drawn"]').waitFor();
+      // The events: listening to the PF buttons, a press of the demo robot's PF2.
+      await expect.poll(() => page.getByText("아직 이벤트가 없어요.").count()).toBe(1);
+      await page.getByRole("radio", { name: "PF 버튼" }).check();
+      await page.getByTestId("listen-status").filter({ hasText: "PF 버튼을 듣고 있어요." }).waitFor();
+      await page.getByRole("button", { name: "PF2 누르기" }).click();
+      await page.getByTestId("event-list").filter({ hasText: "PF2 눌림" }).waitFor();
 
-        // The events: listening to the PF buttons, a press of the demo robot's PF2.
-        await expect.poll(() => page.getByText("아직 이벤트가 없어요.").count()).toBe(1);
-        await page.getByRole("radio", { name: "PF 버튼" }).check();
-        await page.getByTestId("listen-status").filter({ hasText: "PF 버튼을 듣고 있어요." }).waitFor();
-        await page.getByRole("button", { name: "PF2 누르기" }).click();
-        await page.getByTestId("event-list").filter({ hasText: "PF2 눌림" }).waitFor();
+      // The demo robot's world.
+      const world = page.getByTestId("demo-world");
+      await expectText(world.getByRole("heading", { level: 2 }), "데모 로봇의 주변 환경");
+      await expectText(world.locator('label[for="demo-distance"]'), "앞에 있는 물체: 10cm");
+      await expectText(world.locator("select option:checked"), "7 기본 자세");
+      await expect.poll(() => world.getByRole("button", { name: "IR 키 보내기" }).count()).toBe(1);
 
-        // The demo robot's world.
-        const world = page.getByTestId("demo-world");
-        await expectText(world.getByRole("heading", { level: 2 }), "데모 로봇의 주변 환경");
-        await expectText(world.locator('label[for="demo-distance"]'), "앞에 있는 물체: 10cm");
-        await expectText(world.locator("select option:checked"), "7 기본 자세");
-        await expect.poll(() => world.getByRole("button", { name: "IR 키 보내기" }).count()).toBe(1);
+      // Sound: the threshold and its level.
+      await page.getByRole("radio", { name: "소리 크기" }).check();
+      await page.getByTestId("listen-status").filter({ hasText: "소리 크기를 듣고 있어요." }).waitFor();
+      await expectText(page.getByTestId("sound-level"), "아직 들린 소리 없음");
+      // Asked for 10 a second while listening to sound, it reads at most 5, and says why.
+      await page.getByTestId("poll-rate").selectOption("10");
+      await status.filter({ hasText: "최대 5번" }).waitFor();
+      await expectText(
+        status,
+        /^1초에 5번 읽고 있어요 \(소리를 듣는 동안에는 로봇이 소리를 알려 줄 수 있도록 최대 5번\)\. 마지막으로 \d\d:\d\d:\d\d에 읽었어요\.$/,
+      );
 
-        // Sound: the threshold and its level.
-        await page.getByRole("radio", { name: "소리 크기" }).check();
-        await page.getByTestId("listen-status").filter({ hasText: "소리 크기를 듣고 있어요." }).waitFor();
-        await expectText(page.getByTestId("sound-level"), "아직 들린 소리 없음");
-        // Asked for 10 a second while listening to sound, it reads at most 5, and says why.
-        await page.getByTestId("poll-rate").selectOption("10");
-        await status.filter({ hasText: "최대 5번" }).waitFor();
-        await expectText(
-          status,
-          /^1초에 5번 읽고 있어요 \(소리를 듣는 동안에는 로봇이 소리를 알려 줄 수 있도록 최대 5번\)\. 마지막으로 \d\d:\d\d:\d\d에 읽었어요\.$/,
-        );
+      await checkLayout(page, "sensors");
 
-        await checkLayout(page, "sensors", viewport);
-
-        // Switched to English, the view and its charts (drawn anew with the new words) speak English.
-        await page.getByLabel("언어 / Language").selectOption("en");
-        await page.getByRole("heading", { level: 1, name: "Sensors" }).waitFor();
-        await expect
-          .poll(() => page.locator('[data-testid="distance-chart"] [role="img"]').getAttribute("aria-label"))
-          .toBe("Distance in cm over the last 30 seconds");
-        await page
-          .getByTestId("poll-status")
-          .filter({ hasText: /^Reading 5 times a second \(at most 5/ })
-          .waitFor();
-        await context.close();
-      });
-
-      it("the Servos view, with the demo robot in 3D", async () => {
-        const { page, context } = await openKorean(viewport, "demo", "servos");
-        await page.getByRole("heading", { level: 1, name: "서보" }).waitFor();
-        const safety = page.getByTestId("servo-safety");
-        await expectText(safety.getByRole("heading", { level: 2 }), "서보를 움직이기 전에");
-        await expectText(
-          safety.locator("li").first(),
-          "로봇을 받쳐 주세요: 손으로 잡거나 등을 바닥에 대고 눕혀서, 관절이 움직이거나 힘이 빠져도 넘어지지 않게 해 주세요.",
-        );
-        await checkLayout(page, "servos-safety", viewport);
-
-        await page.getByRole("button", { name: "알겠어요: 로봇을 받쳐 두었어요" }).click();
-        await page.getByRole("button", { name: "서보 제어 시작" }).click();
-        await page.getByText("서보 16개를 모두 읽었어요.").waitFor();
-        await expect
-          .poll(() => page.locator(".servo-table thead th").allTextContents())
-          .toEqual(["ID", "관절", "위치", "목표", "슬라이더", "토크"]);
-        await expectText(page.locator('label[for="servo-12"]'), "왼쪽 팔꿈치");
-        await expect.poll(() => page.getByLabel("왼쪽 팔꿈치 (서보 12번), 목표 1~198").count()).toBe(1);
-        // A refused value says why, in Korean; nothing is sent.
-        await page.locator("#servo-12").fill("300");
-        await page.locator("#servo-12").press("Enter");
-        await expectText(
-          page.getByTestId("servo-refused-12"),
-          "서보 12번: 300은(는) 안전 범위(1–198) 밖이에요. 아무것도 보내지 않았고, 서보는 그대로 있어요.",
-        );
-
-        // The robot in 3D: the demo robot, live.
-        const toggle = page.getByTestId("live-robot-toggle");
-        await expectText(toggle, "로봇을 3D로 보기");
-        await toggle.click();
-        await page.locator('[data-testid="live-robot-view"][data-state="ready"]').waitFor();
-        await expectText(toggle, "3D 로봇 숨기기");
-        await expectText(page.getByTestId("live-robot-caption"), "데모 로봇, 실시간");
-        await expect
-          .poll(() => page.getByTestId("live-robot-view").locator("canvas").getAttribute("aria-label"))
-          .toBe(
-            "데모 로봇의 실시간 3D 보기: 가상 서보가 움직이는 대로 따라가요; 서보 표에 읽은 위치가 숫자로 나와 있어요",
-          );
-
-        // The basic posture, asked in place.
-        await page.getByRole("button", { name: "모두 기본 자세로…" }).click();
-        await page.getByText("서보 16개가 모두 기본 자세로 움직여요 (속도 4). 로봇을 잡아 주세요.").waitFor();
-        await expect.poll(() => page.getByRole("button", { name: "모든 서보 움직이기" }).count()).toBe(1);
-        await checkLayout(page, "servos", viewport);
-        await context.close();
-      });
+      // Switched to English, the view and its charts (drawn anew with the new words) speak English.
+      await page.getByLabel("언어 / Language").selectOption("en");
+      await page.getByRole("heading", { level: 1, name: "Sensors" }).waitFor();
+      await expect
+        .poll(() => page.locator('[data-testid="distance-chart"] [role="img"]').getAttribute("aria-label"))
+        .toBe("Distance in cm over the last 30 seconds");
+      await page
+        .getByTestId("poll-status")
+        .filter({ hasText: /^Reading 5 times a second \(at most 5/ })
+        .waitFor();
+      await context.close();
     });
-  }
+
+    it("the Servos view, with the demo robot in 3D", async () => {
+      const { page, context } = await openKorean(PHONE, "demo", "servos");
+      await page.getByRole("heading", { level: 1, name: "서보" }).waitFor();
+      const safety = page.getByTestId("servo-safety");
+      await expectText(safety.getByRole("heading", { level: 2 }), "서보를 움직이기 전에");
+      await expectText(
+        safety.locator("li").first(),
+        "로봇을 받쳐 주세요: 손으로 잡거나 등을 바닥에 대고 눕혀서, 관절이 움직이거나 힘이 빠져도 넘어지지 않게 해 주세요.",
+      );
+      await checkLayout(page, "servos-safety");
+
+      await page.getByRole("button", { name: "알겠어요: 로봇을 받쳐 두었어요" }).click();
+      await page.getByRole("button", { name: "서보 제어 시작" }).click();
+      await page.getByText("서보 16개를 모두 읽었어요.").waitFor();
+      await expect
+        .poll(() => page.locator(".servo-table thead th").allTextContents())
+        .toEqual(["ID", "관절", "위치", "목표", "슬라이더", "토크"]);
+      await expectText(page.locator('label[for="servo-12"]'), "왼쪽 팔꿈치");
+      await expect.poll(() => page.getByLabel("왼쪽 팔꿈치 (서보 12번), 목표 1~198").count()).toBe(1);
+      // A refused value says why, in Korean; nothing is sent.
+      await page.locator("#servo-12").fill("300");
+      await page.locator("#servo-12").press("Enter");
+      await expectText(
+        page.getByTestId("servo-refused-12"),
+        "서보 12번: 300은(는) 안전 범위(1–198) 밖이에요. 아무것도 보내지 않았고, 서보는 그대로 있어요.",
+      );
+
+      // The robot in 3D: the demo robot, live.
+      const toggle = page.getByTestId("live-robot-toggle");
+      await expectText(toggle, "로봇을 3D로 보기");
+      await toggle.click();
+      await page.locator('[data-testid="live-robot-view"][data-state="ready"]').waitFor();
+      await expectText(toggle, "3D 로봇 숨기기");
+      await expectText(page.getByTestId("live-robot-caption"), "데모 로봇, 실시간");
+      await expect
+        .poll(() => page.getByTestId("live-robot-view").locator("canvas").getAttribute("aria-label"))
+        .toBe(
+          "데모 로봇의 실시간 3D 보기: 가상 서보가 움직이는 대로 따라가요; 서보 표에 읽은 위치가 숫자로 나와 있어요",
+        );
+
+      // The basic posture, asked in place.
+      await page.getByRole("button", { name: "모두 기본 자세로…" }).click();
+      await page.getByText("서보 16개가 모두 기본 자세로 움직여요 (속도 4). 로봇을 잡아 주세요.").waitFor();
+      await expect.poll(() => page.getByRole("button", { name: "모든 서보 움직이기" }).count()).toBe(1);
+      await checkLayout(page, "servos");
+      await context.close();
+    });
+  });
 
   describe("in Korean, the 3D robot of a robot on a cable and the motion preview", () => {
-    for (const viewport of SIZES) {
-      it(`says what it draws of a robot on a cable, ${viewport.width}×${viewport.height}`, async () => {
-        const { page, context } = await openKorean(viewport, "cable", "servos");
-        await page.getByTestId("live-robot-toggle").click();
-        await page.locator('[data-testid="live-robot-view"][data-state="ready"]').waitFor();
-        await expectText(
-          page.getByTestId("live-robot-caption"),
-          "아직 읽은 위치가 없어요: 기본 자세로 그렸어요",
-        );
-        await expectText(
-          page.getByTestId("live-robot-unread"),
-          "모든 관절을 로봇의 실제 자세가 아니라 기본 자세로 그렸어요",
-          { contains: true },
-        );
-        await expectText(
-          page.getByTestId("live-robot"),
-          "이번 연결에서 이 로봇의 영점을 읽지 않아서, 각도는 표준 영점 표를 기준으로 재요.",
-          { contains: true },
-        );
-        await page.getByRole("button", { name: "알겠어요: 로봇을 받쳐 두었어요" }).click();
-        await page.getByRole("button", { name: "서보 제어 시작" }).click();
-        await page.getByText("서보 16개를 모두 읽었어요.").waitFor();
-        await expectText(page.getByTestId("live-robot-caption"), /^마지막으로 읽은 위치, \d\d:\d\d:\d\d$/);
-        await expect
-          .poll(() => page.getByTestId("live-robot-view").locator("canvas").getAttribute("aria-label"))
-          .toMatch(/^마지막으로 읽은 위치\(\d\d:\d\d:\d\d\)에 있는 로봇의 3D 보기; 서보 표에/);
-        await checkLayout(page, "servos-cable", viewport);
-        await context.close();
-      });
+    it("says what it draws of a robot on a cable, 1280×800 and 390×844", async () => {
+      const { page, context } = await openKorean(PHONE, "cable", "servos");
+      await page.getByTestId("live-robot-toggle").click();
+      await page.locator('[data-testid="live-robot-view"][data-state="ready"]').waitFor();
+      await expectText(
+        page.getByTestId("live-robot-caption"),
+        "아직 읽은 위치가 없어요: 기본 자세로 그렸어요",
+      );
+      await expectText(
+        page.getByTestId("live-robot-unread"),
+        "모든 관절을 로봇의 실제 자세가 아니라 기본 자세로 그렸어요",
+        { contains: true },
+      );
+      await expectText(
+        page.getByTestId("live-robot"),
+        "이번 연결에서 이 로봇의 영점을 읽지 않아서, 각도는 표준 영점 표를 기준으로 재요.",
+        { contains: true },
+      );
+      await page.getByRole("button", { name: "알겠어요: 로봇을 받쳐 두었어요" }).click();
+      await page.getByRole("button", { name: "서보 제어 시작" }).click();
+      await page.getByText("서보 16개를 모두 읽었어요.").waitFor();
+      await expectText(page.getByTestId("live-robot-caption"), /^마지막으로 읽은 위치, \d\d:\d\d:\d\d$/);
+      await expect
+        .poll(() => page.getByTestId("live-robot-view").locator("canvas").getAttribute("aria-label"))
+        .toMatch(/^마지막으로 읽은 위치\(\d\d:\d\d:\d\d\)에 있는 로봇의 3D 보기; 서보 표에/);
+      await checkLayout(page, "servos-cable");
+      await context.close();
+    });
 
-      it(`plays a motion preview with Korean controls, ${viewport.width}×${viewport.height}`, async () => {
-        const { page, context } = await openKorean(viewport, "cable", "motions");
-        await page.getByTestId("rbm-files").setInputFiles(rbmFile("wave.rbm", exampleText("wave.rbm")));
-        const card = page.getByTestId("motion-file");
-        await card.getByTestId("preview-toggle").click();
-        const preview = card.getByTestId("motion-preview");
-        await preview.locator('[data-state="ready"]').waitFor();
-        // The page prefers reduced motion: the preview steps from scene to scene.
-        const play = preview.getByTestId("preview-play");
-        await expectText(play, "다음 장면");
-        await expectText(preview.getByTestId("preview-clock"), "0.0초 / 3.2초");
-        await expectText(preview.locator("label"), "시간");
-        await expectText(
-          preview.locator(".robot3d-hint"),
-          "동작 줄이기가 켜져 있어요. '다음 장면'을 누르면 움직이는 화면 없이 각 장면의 자세를 보여 줘요. " +
-            "시간: 화살표 키로 0.1초씩, Page Up과 Page Down으로 한 장면씩 움직여요. 로봇 돌리기: 로봇을 끌거나, 로봇을 선택한 뒤 화살표 키를 눌러 주세요.",
-        );
-        await play.click();
-        await expect.poll(() => preview.getAttribute("data-time")).toBe("800");
-        await expectText(preview.getByTestId("preview-clock"), "0.8초 / 3.2초");
-        await expect
-          .poll(() => preview.getByTestId("preview-time").getAttribute("aria-valuetext"))
-          .toBe("0.8초 / 3.2초, 장면 0 끝, RaiseArm");
-        // To the end: the button goes back to the start.
-        await preview.getByTestId("preview-time").evaluate((input: HTMLInputElement) => {
-          input.value = input.max;
-          input.dispatchEvent(new Event("input", { bubbles: true }));
-        });
-        await expect.poll(() => text(play)).toBe("처음으로");
-
-        // Labels and axe in the preview; the page's lang, keys and sideways scrolling.
-        await expectPageOk(page, "the motion preview", {
-          lang: "ko",
-          within: '[data-testid="motion-preview"]',
-        });
-        await shot(preview, `sensors-servos-motion-preview-${viewport.width}`);
-        await context.close();
+    it("plays a motion preview with Korean controls, 1280×800 and 390×844", async () => {
+      const { page, context } = await openKorean(PHONE, "cable", "motions");
+      await page.getByTestId("rbm-files").setInputFiles(rbmFile("wave.rbm", exampleText("wave.rbm")));
+      const card = page.getByTestId("motion-file");
+      await card.getByTestId("preview-toggle").click();
+      const preview = card.getByTestId("motion-preview");
+      await preview.locator('[data-state="ready"]').waitFor();
+      // The page prefers reduced motion: the preview steps from scene to scene.
+      const play = preview.getByTestId("preview-play");
+      await expectText(play, "다음 장면");
+      await expectText(preview.getByTestId("preview-clock"), "0.0초 / 3.2초");
+      await expectText(preview.locator("label"), "시간");
+      await expectText(
+        preview.locator(".robot3d-hint"),
+        "동작 줄이기가 켜져 있어요. '다음 장면'을 누르면 움직이는 화면 없이 각 장면의 자세를 보여 줘요. " +
+          "시간: 화살표 키로 0.1초씩, Page Up과 Page Down으로 한 장면씩 움직여요. 로봇 돌리기: 로봇을 끌거나, 로봇을 선택한 뒤 화살표 키를 눌러 주세요.",
+      );
+      await play.click();
+      await expect.poll(() => preview.getAttribute("data-time")).toBe("800");
+      await expectText(preview.getByTestId("preview-clock"), "0.8초 / 3.2초");
+      await expect
+        .poll(() => preview.getByTestId("preview-time").getAttribute("aria-valuetext"))
+        .toBe("0.8초 / 3.2초, 장면 0 끝, RaiseArm");
+      // To the end: the button goes back to the start.
+      await preview.getByTestId("preview-time").evaluate((input: HTMLInputElement) => {
+        input.value = input.max;
+        input.dispatchEvent(new Event("input", { bubbles: true }));
       });
-    }
+      await expect.poll(() => text(play)).toBe("처음으로");
+
+      // Labels and axe in the preview; the page's lang, keys and sideways scrolling.
+      await expectPageOkAtSizes(page, "the motion preview", {
+        lang: "ko",
+        within: '[data-testid="motion-preview"]',
+        ready: (size) => shot(preview, `sensors-servos-motion-preview-${size.width}`),
+      });
+      await context.close();
+    });
   });
 });
