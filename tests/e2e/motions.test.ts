@@ -560,7 +560,7 @@ describe("in Korean (ko-KR)", () => {
       const ask = page.getByTestId("move-confirm");
       await expectText(
         ask,
-        "로봇이 움직여요. 로봇을 잡거나 주변에 공간을 비워 주세요. 패널은 연결할 때마다 한 번만 물어봐요. 정지(Esc)는 모션을 끝내고 로봇을 선 채로 유지해요. 모션 7번(기본 자세) 실행 취소",
+        "로봇이 움직여요. 로봇을 잡거나 주변에 공간을 비워 주세요. 패널은 연결할 때마다 한 번만 물어봐요. 정지(Esc)를 누르면 모션이 지금 장면이 끝날 때 멈춰요. 로봇은 서보에 힘이 들어간 채로 멈춘 자세를 유지해요. 넘어지지는 않지만, 꼭 서 있는 자세는 아니에요. 모션 7번(기본 자세) 실행 취소",
       );
       await expectGood(page, "run-confirm");
       await page.locator("#confirm-move").click();
