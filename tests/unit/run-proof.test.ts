@@ -97,7 +97,7 @@ describe("rbc run: exit 1 only for a Run known not to have played", () => {
     const r = await rbc(["run", "7", "12", "--demo"], "--user-firmware");
     expect(r.code).toBe(1);
     expect(r.stdout).toBe(
-      "7 (Basic posture) sent: checking that the robot plays it…\nPlayed: 7 (Basic posture); the robot reported its end after 1.8 s.\n12 (downloaded, key 1) sent: checking that the robot plays it…\n",
+      "7 (Basic posture) sent: checking that the robot plays it…\nPlayed: 7 (Basic posture); the robot reported its end after 1.8 s.\n12 (uploaded, key 1) sent: checking that the robot plays it…\n",
     );
     expect(r.stderr).toContain(
       "The robot ignored motion 12: its reply came at once (after 0.0 s) and it was never busy.",
