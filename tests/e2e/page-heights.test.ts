@@ -32,93 +32,108 @@ async function show(page: Page, view: string): Promise<void> {
 }
 
 /** Each view in its usual state: shown, and its usual action done (once; the page keeps the result). */
-const VIEWS: readonly { name: string; open(page: Page): Promise<void> }[] = [
-  {
-    name: "robot",
-    async open(page) {
-      await show(page, "robot");
-      await page.getByTestId("device-card").waitFor();
+const VIEWS: readonly { name: string; open(page: Page): Promise<void>; leave?(page: Page): Promise<void> }[] =
+  [
+    {
+      name: "robot",
+      async open(page) {
+        await show(page, "robot");
+        await page.getByTestId("device-card").waitFor();
+      },
     },
-  },
-  {
-    name: "zeros",
-    async open(page) {
-      await show(page, "zeros");
-      await page.locator("#zero-15").waitFor();
+    {
+      name: "zeros",
+      async open(page) {
+        await show(page, "zeros");
+        await page.locator("#zero-15").waitFor();
+      },
     },
-  },
-  ...(["files", "uploads", "run", "sounds"] as const).map((tab) => ({
-    name: `motions-${tab}`,
-    async open(page: Page) {
-      await show(page, "motions");
-      await page.locator(`#motions-tab-${tab}`).click();
-      await page.locator(`#motions-panel-${tab}`).waitFor();
+    ...(["files", "uploads", "run", "sounds"] as const).map((tab) => ({
+      name: `motions-${tab}`,
+      async open(page: Page) {
+        await show(page, "motions");
+        await page.getByTestId("motions-panel").waitFor();
+        await page.locator(`#motions-tab-${tab}`).click();
+        await page.locator(`#motions-panel-${tab}`).waitFor();
+      },
+    })),
+    {
+      name: "editor",
+      async open(page) {
+        await show(page, "editor");
+        await page.getByTestId("editor").waitFor();
+        await page.locator("#editor-tab-play").click();
+        await page.locator("#editor-panel-play").waitFor();
+        const result = page.locator('[data-testid="editor-upload"] .upload-in-place .notice');
+        if ((await result.count()) === 0) {
+          await page.getByRole("button", { name: "Upload to robot" }).click();
+          await result.filter({ hasText: "Stored as motion" }).waitFor();
+        }
+      },
     },
-  })),
-  {
-    name: "editor",
-    async open(page) {
-      await show(page, "editor");
-      await page.locator("#editor-tab-play").click();
-      await page.locator("#editor-panel-play").waitFor();
-      const result = page.locator('[data-testid="editor-upload"] .upload-in-place .notice');
-      if ((await result.count()) === 0) {
-        await page.getByRole("button", { name: "Upload to robot" }).click();
-        await result.filter({ hasText: "Stored as motion" }).waitFor();
-      }
+    {
+      name: "sensors",
+      async open(page) {
+        await show(page, "sensors");
+        await expect
+          .poll(async () => Number(await page.getByTestId("distance-chart").getAttribute("data-samples")))
+          .toBeGreaterThan(2);
+      },
     },
-  },
-  {
-    name: "sensors",
-    async open(page) {
-      await show(page, "sensors");
-      await expect.poll(async () => Number(await page.getByTestId("distance-chart").getAttribute("data-samples"))).toBeGreaterThan(2);
+    {
+      name: "servos",
+      async open(page) {
+        await show(page, "servos");
+        await page.getByTestId("servo-card").waitFor();
+        const understood = page.getByRole("button", { name: "I understand: the robot is supported" });
+        if ((await understood.count()) > 0) await understood.click();
+        if ((await page.getByTestId("enter-direct").count()) > 0) {
+          await page.getByTestId("enter-direct").click();
+          await page.getByText("Read all 16 servos.").waitFor();
+        }
+      },
+      // Servo control ends before the next view (the Servo check scans only outside it).
+      async leave(page) {
+        await page.getByTestId("leave-direct").click();
+        await page.getByTestId("enter-direct").waitFor();
+      },
     },
-  },
-  {
-    name: "servos",
-    async open(page) {
-      await show(page, "servos");
-      const understood = page.getByRole("button", { name: "I understand: the robot is supported" });
-      if ((await understood.count()) > 0) await understood.click();
-      if ((await page.getByTestId("enter-direct").count()) > 0) {
-        await page.getByTestId("enter-direct").click();
-        await page.getByTestId("leave-direct").waitFor();
-      }
-      await page.getByTestId("servo-pos-15").filter({ hasText: /\d/ }).waitFor();
+    {
+      name: "doctor",
+      async open(page) {
+        await show(page, "doctor");
+        await page.getByTestId("doctor-scan-card").waitFor();
+        if ((await page.getByTestId("doctor-table").count()) === 0) {
+          await page.getByTestId("doctor-scan").click();
+          await page.getByTestId("doctor-table").waitFor();
+          await page.getByTestId("doctor-scan").and(page.locator(":enabled")).waitFor();
+        }
+      },
     },
-  },
-  {
-    name: "doctor",
-    async open(page) {
-      await show(page, "doctor");
-      if ((await page.getByTestId("doctor-table").count()) === 0) {
-        await page.getByTestId("doctor-scan").click();
-        await page.getByTestId("doctor-table").waitFor();
-        await page.getByTestId("doctor-scan").and(page.locator(":enabled")).waitFor();
-      }
+    {
+      name: "firmware",
+      async open(page) {
+        await show(page, "firmware");
+        await page.getByTestId("fw-drop").waitFor();
+      },
     },
-  },
-  {
-    name: "firmware",
-    async open(page) {
-      await show(page, "firmware");
+    {
+      name: "log",
+      async open(page) {
+        await show(page, "log");
+        await expect
+          .poll(() => page.locator('[data-testid="log-scroll"] tbody tr').count())
+          .toBeGreaterThan(50);
+      },
     },
-  },
-  {
-    name: "log",
-    async open(page) {
-      await show(page, "log");
-      await expect.poll(() => page.locator('[data-testid="log-scroll"] tbody tr').count()).toBeGreaterThan(50);
+    {
+      name: "class",
+      async open(page) {
+        await show(page, "class");
+        await page.locator('main [aria-busy="true"]').waitFor({ state: "detached" });
+      },
     },
-  },
-  {
-    name: "class",
-    async open(page) {
-      await show(page, "class");
-    },
-  },
-];
+  ];
 
 async function heights(page: Page, size: Size): Promise<Record<string, number>> {
   await page.setViewportSize(size);
@@ -128,18 +143,20 @@ async function heights(page: Page, size: Size): Promise<Record<string, number>> 
     await page.evaluate(() => window.scrollTo(0, 0));
     out[view.name] = await pageHeight(page);
     await shot(page, `page-heights-${view.name}-${sizeName(size)}`);
+    await view.leave?.(page);
   }
   return out;
 }
 
 describe("every view's height in its usual state (demo robot)", () => {
-  const page = sharedConnectedPage(app, { options: FAST });
+  const page = sharedConnectedPage(app);
   let desktop: Record<string, number> = {};
 
   it(`is at most ${MAX_DESKTOP} px at 1280×800`, async () => {
     desktop = await heights(page(), DESKTOP);
     console.info(`page heights at 1280×800: ${JSON.stringify(desktop)}`);
-    for (const [view, height] of Object.entries(desktop)) expect(height, view).toBeLessThanOrEqual(MAX_DESKTOP);
+    for (const [view, height] of Object.entries(desktop))
+      expect(height, view).toBeLessThanOrEqual(MAX_DESKTOP);
   });
 
   it(`is at most ${PHONE_FACTOR} times that at 390×844`, async () => {
@@ -244,5 +261,26 @@ describe.each([
     const robotBox = await boxOf(p, robot);
     expect(robotBox.top, "3D robot").toBeGreaterThanOrEqual(bar.bottom - 0.5);
     await shot(p, `top-bar-result-scrolled-${view}`, { fullPage: false });
+  });
+});
+
+describe("the Sensors view's remote keys, folded", () => {
+  const page = sharedConnectedPage(app, { view: "sensors", locale: "ko-KR", size: PHONE });
+
+  it("are closed until asked for (or until the IR remote is listened to), named in Korean", async () => {
+    const p = page();
+    const fold = p.getByTestId("remote-fold");
+    await fold.waitFor();
+    await expect.poll(() => fold.evaluate((el) => (el as HTMLDetailsElement).open)).toBe(false);
+    expect((await fold.locator("summary").textContent())?.trim()).toBe("리모컨 키 33개");
+    await p.getByRole("radio", { name: "IR 리모컨" }).check();
+    await expect.poll(() => fold.evaluate((el) => (el as HTMLDetailsElement).open)).toBe(true);
+    await p.locator('[data-testid="remote-key"][data-code="12"]').waitFor();
+    await p.getByRole("radio", { name: "없음" }).check();
+    await expect.poll(() => fold.evaluate((el) => (el as HTMLDetailsElement).open)).toBe(false);
+    // From the keyboard too.
+    await fold.locator("summary").focus();
+    await p.keyboard.press("Enter");
+    await expect.poll(() => fold.evaluate((el) => (el as HTMLDetailsElement).open)).toBe(true);
   });
 });
