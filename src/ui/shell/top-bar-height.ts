@@ -5,7 +5,7 @@
  */
 export function watchTopBarHeight(root: HTMLElement): void {
   const bar = root.querySelector<HTMLElement>(".top-bar");
-  if (!bar || typeof ResizeObserver === "undefined") return;
+  if (!bar) return;
   new ResizeObserver(() => {
     document.documentElement.style.setProperty("--top-bar-height", `${bar.offsetHeight}px`);
   }).observe(bar);
