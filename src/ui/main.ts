@@ -17,6 +17,7 @@ import { appView, pageTitle } from "./shell/app-view.ts";
 import { escapeTakenElsewhere } from "./shell/escape.ts";
 import { pageStartLocale } from "./shell/locale-choice.ts";
 import { DEFAULT_VIEW, VIEWS } from "./shell/registry.ts";
+import { watchTopBarHeight } from "./shell/top-bar-height.ts";
 import type { AppView, ViewContext } from "./shell/view-types.ts";
 import { anyRobotConnected, stopAll } from "./stop-all.ts";
 import { createStore, frameScheduler } from "./store.ts";
@@ -64,11 +65,16 @@ function startApp(root: HTMLElement, locale: Locale): void {
   /** The view activated last, until it is deactivated (another view, or no robot). */
   let active: { key: string; view: AppView } | undefined;
   let renderedPhase = lastPhase;
+  let barWatched = false;
 
   const renderNow = (): void => {
     const state = store.get();
     const ctx: ViewContext = { ...app, state };
     render(appView(ctx, loader), root);
+    if (!barWatched) {
+      barWatched = true;
+      watchTopBarHeight(root);
+    }
     const title = pageTitle(ctx);
     if (document.title !== title) document.title = title;
     if (document.documentElement.lang !== state.locale) document.documentElement.lang = state.locale;

@@ -101,6 +101,7 @@ describe("the robot's shelf on the demo robot", () => {
     await expectPageOk(page, "the Run tab after a reload", { lang: "en" });
     // The Remote card names key 1 from the shelf too (not only from this connection's uploads).
     await page.getByRole("link", { name: "Sensors", exact: true }).click();
+    await page.getByTestId("remote-fold").locator("summary").click();
     await page
       .locator('[data-testid="remote-key"][data-code="12"]')
       .filter({ hasText: "RbcPanel_Wave" })

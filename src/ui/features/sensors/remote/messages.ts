@@ -24,6 +24,7 @@ export const remoteMessages = defineMessages({
     en: "Last key: code {code} at {time}, a code this key map does not list.",
     ko: "마지막 키: 코드 {code}, {time}. 이 키 배치에 없는 코드예요.",
   },
+  "sensors.remote.keysFold": { en: "The remote's {count} keys", ko: "리모컨 키 {count}개" },
   "sensors.remote.noKeyYet": { en: "No key pressed yet.", ko: "아직 누른 키가 없어요." },
   "sensors.remote.pressed": { en: "pressed", ko: "눌림" },
 

@@ -178,7 +178,10 @@ export function remoteCard(ctx: ViewContext): TemplateResult {
         </p>
         ${listening ? html`<p class="small num" data-testid="remote-last">${lastKeyText(t, last)}</p>` : nothing}
       </div>
-      ${GROUPS.map((group) => keyGroup(t, group, facts, last?.code))}
+      <details class="remote-fold" data-testid="remote-fold" ?open=${listening}>
+        <summary>${t("sensors.remote.keysFold", { count: REMOTE_KEYS.length })}</summary>
+        ${GROUPS.map((group) => keyGroup(t, group, facts, last?.code))}
+      </details>
     </section>
   `;
 }

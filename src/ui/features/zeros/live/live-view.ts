@@ -20,26 +20,17 @@ import { type CaptureCheck, type CapturedJoint, trimRange, windowFraction } from
 type T = ReturnType<typeof translator<typeof zerosLiveMessages>>;
 
 /**
- * The Zeros view's "on the standing robot" panel: Trim live and Capture zeros (their questions, state and
- * results), and what a lost link left behind. The editor's table below is where the values change.
+ * Above the Zeros view's table: what a lost link left behind during trim live, and the last trim or capture
+ * notice (with Stop when trim live was refused). The questions and the progress of Trim live and Capture zeros
+ * are asked under their buttons, in the Write panel (`liveStart`), under the one heading "Trim on the standing
+ * robot" (issue 33: asked 400 px above its button, under the same heading twice).
  */
 export function livePanel(ctx: ViewContext): TemplateResult {
   const { zeros: z, locale } = ctx.state;
   const t = translator(zerosLiveMessages, locale);
   const lost = lostTrimPanel(ctx);
-  const asking = z.live !== undefined && z.live.phase !== "on";
-  const capturing = z.capture !== undefined && z.capture.phase !== "checked";
-  // Only while something is asked or under way does it take room above the table (issue 21 item 7: one screen).
   return html`
-    ${
-      lost !== nothing || asking || capturing
-        ? html`<section class="zeros-live" aria-labelledby="zeros-live-title" data-testid="zeros-live">
-            <h2 id="zeros-live-title" class="zeros-subtitle">${t("live.title")}</h2>
-            ${lost}
-            ${asking ? trimPart(ctx, t) : capturing ? capturePart(ctx, t) : nothing}
-          </section>`
-        : nothing
-    }
+    ${lost !== nothing ? html`<section class="zeros-live" aria-label=${t("live.title")} data-testid="zeros-live">${lost}</section>` : nothing}
     ${liveNotice(z.liveNotice, t("live.noticeLabel"), locale)}
     ${
       z.liveRefused && z.liveNotice
@@ -74,11 +65,16 @@ export function captureResultPanel(ctx: ViewContext): TemplateResult | typeof no
   `;
 }
 
-/** Trim live… and Capture zeros…, in the Write panel beside the values (nothing asked or under way). */
+/**
+ * Trim live… and Capture zeros…, in the Write panel beside the values; a question asked, or what is under way,
+ * right under the button that started it (trim live's own status, once on, is `trimOnBox`).
+ */
 export function liveStart(ctx: ViewContext, disabled: boolean): TemplateResult {
   const z = ctx.state.zeros;
   const t = translator(zerosLiveMessages, ctx.state.locale);
-  const off = disabled || z.live !== undefined || (z.capture !== undefined && z.capture.phase !== "checked");
+  const asking = z.live !== undefined && z.live.phase !== "on";
+  const capturing = z.capture !== undefined && z.capture.phase !== "checked";
+  const off = disabled || z.live !== undefined || capturing;
   return html`
     <div class="zeros-live-start" role="group" aria-labelledby="live-start-title" aria-describedby="live-start-intro">
     <p id="live-start-title" class="zeros-subtitle">${t("live.title")}</p>
@@ -91,6 +87,7 @@ export function liveStart(ctx: ViewContext, disabled: boolean): TemplateResult {
         ${t("capture.button")}
       </button>
     </div>
+    ${asking ? trimPart(ctx, t) : capturing ? capturePart(ctx, t) : nothing}
     </div>
   `;
 }
