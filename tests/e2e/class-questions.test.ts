@@ -45,10 +45,10 @@ const asked = async (page: Page) => squash(await question(page).textContent());
 
 const MOVE = "The robot will move. Hold it or give it room.";
 const POSTURE = "After switching on, the robot only accepts Basic posture (7). Run it first.";
-const RESET = "The motion memory is reset first: every motion downloaded before is forgotten.";
+const RESET = "The motion memory is reset first: every motion uploaded before is forgotten.";
 const MOVE_KO = "로봇이 움직여요. 로봇을 잡거나 주변에 공간을 비워 주세요.";
 const POSTURE_KO = "로봇을 켠 뒤에는 기본 자세(7)만 받아들여요. 먼저 기본 자세를 실행해 주세요.";
-const RESET_KO = "먼저 모션 메모리를 초기화해요: 전에 다운로드한 모션은 모두 지워져요.";
+const RESET_KO = "먼저 모션 메모리를 초기화해요: 전에 업로드한 모션은 모두 지워져요.";
 
 describe("the Class view asks before the robots move or their memory is erased", () => {
   it("Run on all and Upload ask once, naming the robots; Cancel and Escape send nothing; Stop wins", async () => {

@@ -291,7 +291,9 @@ describe("in Korean (ko-KR)", () => {
       const stop = page.getByRole("button", { name: "정지", exact: true });
       await expect
         .poll(() => stop.getAttribute("title"))
-        .toBe("로봇이 하던 일을 끝내요. 로봇은 선 채로 있어요 (Esc)");
+        .toBe(
+          "로봇이 하던 일을 끝내요 (Esc). 로봇은 서보에 힘이 들어간 채로 멈춘 자세를 유지해요. 넘어지지는 않지만, 꼭 서 있는 자세는 아니에요.",
+        );
       await stop.click();
       await banner(page).filter({ hasText: "쉬고 있어서 멈출 것이 없어요." }).waitFor({ timeout: 15_000 });
       await expectText(
