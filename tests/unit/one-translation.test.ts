@@ -1,9 +1,5 @@
-import { readFileSync } from "node:fs";
-import { join, relative } from "node:path";
 import { describe, expect, it } from "vitest";
-import type { MessageText } from "../../src/i18n/index.ts";
-import { isCatalogue } from "../support/catalogue-shape.ts";
-import { tsFiles } from "../support/source-files.ts";
+import { type CatalogueEntry, catalogueEntries } from "../support/catalogue-entries.ts";
 
 /**
  * Issue 31's rule for the words of both front ends: one fact, one entry. The command line's catalogues
@@ -20,18 +16,7 @@ import { tsFiles } from "../support/source-files.ts";
  * two words or more, with words besides their placeholders, are compared.
  */
 
-const ROOT = join(import.meta.dirname, "../../src");
-
-interface Entry {
-  /** The file, relative to src/ ("cli/messages.ts"). */
-  readonly file: string;
-  readonly key: string;
-  readonly en: string;
-  readonly ko: string;
-}
-
-/** A text, its plural forms one after the other. */
-const textOf = (text: MessageText) => (typeof text === "string" ? text : `${text.one} | ${text.other}`);
+type Entry = CatalogueEntry;
 
 /** The front end an entry belongs to: "cli", "ui", or "i18n" (shared by both). */
 const sideOf = (file: string) => file.split("/")[0] ?? file;
@@ -66,20 +51,7 @@ function wordedTwice(entries: readonly Entry[]): string[] {
     .map(([en, es]) => `${en} → ${where(es)}`);
 }
 
-const files = tsFiles(ROOT).filter(
-  (path) =>
-    /^(i18n|ui|cli)\//.test(relative(ROOT, path)) && readFileSync(path, "utf8").includes("defineMessages("),
-);
-const entries: Entry[] = [];
-for (const path of files) {
-  const module = (await import(path)) as Record<string, unknown>;
-  for (const value of Object.values(module)) {
-    if (!isCatalogue(value)) continue;
-    for (const [key, m] of Object.entries(value)) {
-      entries.push({ file: relative(ROOT, path), key, en: textOf(m.en), ko: textOf(m.ko) });
-    }
-  }
-}
+const entries = await catalogueEntries();
 
 describe("one translation, one entry", () => {
   it("finds an English text translated twice, and one text written by both front ends", () => {

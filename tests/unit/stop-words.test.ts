@@ -1,10 +1,8 @@
 import { readdirSync, readFileSync } from "node:fs";
 import { join, relative } from "node:path";
 import { describe, expect, it } from "vitest";
-import type { MessageText } from "../../src/i18n/index.ts";
 import { stopPoseMessages } from "../../src/i18n/outcomes/stop-pose-messages.ts";
-import { isCatalogue } from "../support/catalogue-shape.ts";
-import { tsFiles } from "../support/source-files.ts";
+import { catalogueEntries } from "../support/catalogue-entries.ts";
 
 /**
  * Issue 33 item 6: Stop contradicted itself ("ends the motion and keeps the robot standing", then "the robot
@@ -23,28 +21,7 @@ const STANDING_EN =
 /** The same in Korean ("선 채로 유지해요", "계속 서 있어요", "그 자세로 서 있어요", "로봇을 세워 두려면"). */
 const STANDING_KO = /선 채로|계속 서 있|그 자세로 서 있|로봇을 세워 두/;
 
-const textOf = (text: MessageText) => (typeof text === "string" ? text : `${text.one} | ${text.other}`);
-
-interface Entry {
-  readonly where: string;
-  readonly en: string;
-  readonly ko: string;
-}
-
-const files = tsFiles(ROOT).filter(
-  (path) =>
-    /^(i18n|ui|cli)\//.test(relative(ROOT, path)) && readFileSync(path, "utf8").includes("defineMessages("),
-);
-const entries: Entry[] = [];
-for (const path of files) {
-  const module = (await import(path)) as Record<string, unknown>;
-  for (const value of Object.values(module)) {
-    if (!isCatalogue(value)) continue;
-    for (const [key, m] of Object.entries(value)) {
-      entries.push({ where: `${relative(ROOT, path)} ${key}`, en: textOf(m.en), ko: textOf(m.ko) });
-    }
-  }
-}
+const entries = (await catalogueEntries()).map((e) => ({ where: `${e.file} ${e.key}`, en: e.en, ko: e.ko }));
 
 /** The user-facing docs: the README and docs/*.md. */
 const DOCS = [
