@@ -180,6 +180,20 @@ const boxOf = (page: Page, selector: string): Promise<Box> =>
       return { top: r.top, bottom: r.bottom, left: r.left, right: r.right };
     });
 
+/** The boxes of two elements (the first match of each selector), measured in the same frame. */
+async function twoBoxesOf(page: Page, first: string, second: string): Promise<[Box, Box]> {
+  const [a, b] = await page.evaluate(
+    (selectors) =>
+      selectors.map((selector) => {
+        const r = document.querySelector(selector)?.getBoundingClientRect();
+        return r ? { top: r.top, bottom: r.bottom, left: r.left, right: r.right } : undefined;
+      }),
+    [first, second],
+  );
+  if (!a || !b) throw new Error(`nothing matches ${a ? second : first}`);
+  return [a, b];
+}
+
 const inside = (inner: Box, outer: Box) =>
   inner.top >= outer.top - 0.5 &&
   inner.bottom <= outer.bottom + 0.5 &&
@@ -199,8 +213,11 @@ describe.each([DESKTOP, PHONE])("the Zeros view's questions at %o", (size) => {
     await p.locator("#confirm-write").waitFor();
     for (const y of [0, 100_000]) {
       await p.evaluate((top) => window.scrollTo(0, top), y);
-      const question = await boxOf(p, '[data-testid="zeros-write"] .confirm');
-      const card = await boxOf(p, '[data-testid="zeros-card"]');
+      const [question, card] = await twoBoxesOf(
+        p,
+        '[data-testid="zeros-write"] .confirm',
+        '[data-testid="zeros-card"]',
+      );
       expect(inside(question, card), JSON.stringify({ question, card })).toBe(true);
     }
     await shot(p, `zeros-write-question-${sizeName(size)}`, { fullPage: false });
@@ -214,8 +231,10 @@ describe.each([DESKTOP, PHONE])("the Zeros view's questions at %o", (size) => {
     await p.locator("#trim-live").scrollIntoViewIfNeeded();
     await p.locator("#trim-live").click();
     await p.getByTestId("trim-question").waitFor();
-    const button = await boxOf(p, "#trim-live");
-    const question = await boxOf(p, '[data-testid="trim-question"]');
+    // The question takes the focus (on Cancel), so the keyboard answers it; the page may scroll to it then, so
+    // both boxes are measured after that, in one go.
+    await expect.poll(() => p.evaluate(() => document.activeElement?.id)).toBe("live-cancel");
+    const [button, question] = await twoBoxesOf(p, "#trim-live", '[data-testid="trim-question"]');
     // Right under its button (and Capture zeros beside or under it): it was 400 px above it at 1280×800, and
     // 600 px at 390×844.
     const gap = question.top - button.bottom;
@@ -227,8 +246,6 @@ describe.each([DESKTOP, PHONE])("the Zeros view's questions at %o", (size) => {
       .getByText("Trim on the standing robot", { exact: true })
       .count();
     expect(headings).toBe(1);
-    // The question takes the focus (on Cancel), so the keyboard answers it.
-    await expect.poll(() => p.evaluate(() => document.activeElement?.id)).toBe("live-cancel");
     await shot(p, `zeros-trim-question-${sizeName(size)}`, { fullPage: false });
     await p.locator("#live-cancel").click();
     await p.locator("#trim-live").waitFor();
@@ -256,10 +273,14 @@ describe.each([
     await expect.poll(() => p.evaluate(() => window.scrollY)).toBeGreaterThan(0);
     const bar = await boxOf(p, ".top-bar");
     expect(bar.bottom).toBeGreaterThan(100);
-    const nav = await boxOf(p, ".side-nav");
-    expect(nav.top, "side menu").toBeGreaterThanOrEqual(bar.bottom - 0.5);
-    const robotBox = await boxOf(p, robot);
-    expect(robotBox.top, "3D robot").toBeGreaterThanOrEqual(bar.bottom - 0.5);
+    // How far below the bar's bottom each one starts, measured in one frame (the sticky offsets follow the
+    // bar's height once its ResizeObserver has told the page).
+    const below = async (selector: string) => {
+      const [barNow, box] = await twoBoxesOf(p, ".top-bar", selector);
+      return box.top - barNow.bottom;
+    };
+    await expect.poll(() => below(".side-nav"), { message: "side menu" }).toBeGreaterThanOrEqual(-0.5);
+    await expect.poll(() => below(robot), { message: "3D robot" }).toBeGreaterThanOrEqual(-0.5);
     await shot(p, `top-bar-result-scrolled-${view}`, { fullPage: false });
   });
 });
